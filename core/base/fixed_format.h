@@ -1,0 +1,13 @@
+#pragma once
+
+#include <string>
+
+namespace kerf {
+
+// Appends value with exactly `decimals` fraction digits (0..9), rounded half away from zero, never
+// "-0.000". Used by traces and reports, whose text must be stable across runs and platforms.
+void appendFixed(std::string& out, double value, int decimals);
+
+std::string formatFixed(double value, int decimals);
+
+}  // namespace kerf
