@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace kerf::machine {
+
+enum class AxisType : uint8_t { Linear, Rotary };
+
+// One programmed axis. Positions and their derivatives are in axis units: millimetres for linear
+// axes, degrees for rotary axes (so `maxVelocityPerS` is mm/s or deg/s).
+//
+// Default member values are the schema defaults (core/machine/machine_schema.h reads them from a
+// default-constructed AxisConfig), so they are written here and nowhere else.
+struct AxisConfig {
+    char letter = 'X';
+    AxisType type = AxisType::Linear;
+    double minLimit = -100.0;  // soft limit, machine coordinates
+    double maxLimit = 100.0;
+    double maxVelocityPerS = 100.0;
+    double maxAccelerationPerS2 = 1000.0;
+    double maxJerkPerS3 = 10000.0;
+    double homePosition = 0.0;
+    bool optional = false;  // may be switched off in the file (a removable rotary table)
+    bool enabled = true;
+    bool diameterMode = false;  // lathe X: programmed and displayed as a diameter
+
+    friend bool operator==(const AxisConfig&, const AxisConfig&) = default;
+};
+
+// The axis letters of ISO 841 / DIN 66025 in display order: X Y Z A B C U V W.
+std::string_view axisLetters();
+
+bool isAxisLetter(char letter);
+
+// Position of the letter in axisLetters(), used to keep axis lists in display order.
+int axisLetterRank(char letter);
+
+// A, B and C turn about X, Y and Z; every other letter moves along a line.
+AxisType defaultAxisType(char letter);
+
+// Schema defaults for a new axis with this letter (rotary for A, B and C).
+AxisConfig defaultAxis(char letter);
+
+}  // namespace kerf::machine

@@ -1,0 +1,11 @@
+#pragma once
+
+#include <string_view>
+
+namespace kerf::machine::detail {
+
+// Texts of core/machine/presets/*.toml; defined in a file generated from builtin_presets.cpp.in.
+std::string_view millPresetToml();
+std::string_view lathePresetToml();
+
+}  // namespace kerf::machine::detail

@@ -1,0 +1,251 @@
+#include "core/machine/machine_schema.h"
+
+#include <algorithm>
+
+#include "core/machine/detail/field_binding.h"
+
+namespace kerf::machine {
+
+namespace {
+
+using detail::bindField;
+using detail::FieldBinding;
+
+constexpr auto kMachine = ParameterScope::Machine;
+constexpr auto kAxis = ParameterScope::Axis;
+
+const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
+    static const std::vector<FieldBinding<MachineConfig>> table{
+        bindField<&MachineConfig::name>(
+            kMachine, {.key = "name", .description = KERF_TR_NOOP("Name shown to the operator")}),
+        bindField<&MachineConfig::kind>(
+            kMachine, {.key = "kind",
+                       .description = KERF_TR_NOOP(
+                           "Machine kind; selects the program dialects and lathe conventions")}),
+        bindField<&MachineConfig::toolAxis>(
+            kMachine, {.key = "tool_axis",
+                       .description = KERF_TR_NOOP(
+                           "Axis the tool points along; tool length compensation acts on it")}),
+        bindField<&MachineConfig::rapidVelocityMmPerS>(
+            kMachine, {.key = "rapid_velocity",
+                       .unit = "mm/s",
+                       .minimum = 0.1,
+                       .maximum = 5000.0,
+                       .description = KERF_TR_NOOP("Path velocity of rapid moves")}),
+        bindField<&MachineConfig::maxFeedMmPerS>(
+            kMachine, {.key = "max_feed",
+                       .unit = "mm/s",
+                       .minimum = 0.1,
+                       .maximum = 5000.0,
+                       .description = KERF_TR_NOOP("Highest programmable feed rate")}),
+        bindField<&MachineConfig::servoPeriodMs>(
+            kMachine, {.key = "servo_period",
+                       .unit = "ms",
+                       .minimum = 0.1,
+                       .maximum = 100.0,
+                       .description = KERF_TR_NOOP("Period of the servo cycle")}),
+        bindField<&MachineConfig::pathToleranceMm>(
+            kMachine,
+            {.key = "path_tolerance",
+             .unit = "mm",
+             .minimum = 0.0,
+             .maximum = 10.0,
+             .description = KERF_TR_NOOP(
+                 "Default path deviation allowed when blending corners; 0 stops exactly")}),
+        bindField<&MachineConfig::spindle, &SpindleConfig::minRpm>(
+            kMachine, {.key = "spindle.min_rpm",
+                       .unit = "rpm",
+                       .minimum = 0.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP("Lowest spindle speed")}),
+        bindField<&MachineConfig::spindle, &SpindleConfig::maxRpm>(
+            kMachine, {.key = "spindle.max_rpm",
+                       .unit = "rpm",
+                       .minimum = 0.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP("Highest spindle speed")}),
+    };
+    return table;
+}
+
+const std::vector<FieldBinding<AxisConfig>>& axisBindings() {
+    static const std::vector<FieldBinding<AxisConfig>> table{
+        bindField<&AxisConfig::type>(
+            kAxis, {.key = "type",
+                    .description = KERF_TR_NOOP("Linear or rotary; A, B and C default to rotary")}),
+        bindField<&AxisConfig::minLimit>(
+            kAxis, {.key = "min_limit",
+                    .unit = "mm",
+                    .rotaryUnit = "deg",
+                    .minimum = -100000.0,
+                    .maximum = 100000.0,
+                    .description = KERF_TR_NOOP(
+                        "Lower soft limit in machine coordinates (a radius on a lathe)")}),
+        bindField<&AxisConfig::maxLimit>(
+            kAxis, {.key = "max_limit",
+                    .unit = "mm",
+                    .rotaryUnit = "deg",
+                    .minimum = -100000.0,
+                    .maximum = 100000.0,
+                    .description = KERF_TR_NOOP(
+                        "Upper soft limit in machine coordinates (a radius on a lathe)")}),
+        bindField<&AxisConfig::maxVelocityPerS>(
+            kAxis, {.key = "max_velocity",
+                    .unit = "mm/s",
+                    .rotaryUnit = "deg/s",
+                    .minimum = 0.1,
+                    .maximum = 100000.0,
+                    .description = KERF_TR_NOOP("Highest velocity of the axis")}),
+        bindField<&AxisConfig::maxAccelerationPerS2>(
+            kAxis, {.key = "max_acceleration",
+                    .unit = "mm/s^2",
+                    .rotaryUnit = "deg/s^2",
+                    .minimum = 1.0,
+                    .maximum = 100000.0,
+                    .description = KERF_TR_NOOP("Highest acceleration of the axis")}),
+        bindField<&AxisConfig::maxJerkPerS3>(
+            kAxis, {.key = "max_jerk",
+                    .unit = "mm/s^3",
+                    .rotaryUnit = "deg/s^3",
+                    .minimum = 1.0,
+                    .maximum = 10000000.0,
+                    .description = KERF_TR_NOOP("Highest jerk of the axis")}),
+        bindField<&AxisConfig::homePosition>(
+            kAxis, {.key = "home",
+                    .unit = "mm",
+                    .rotaryUnit = "deg",
+                    .minimum = -100000.0,
+                    .maximum = 100000.0,
+                    .description = KERF_TR_NOOP(
+                        "Machine position after homing; must lie within the soft limits")}),
+        bindField<&AxisConfig::optional>(
+            kAxis, {.key = "optional",
+                    .description = KERF_TR_NOOP(
+                        "The axis may be absent and is then switched off with enabled = false")}),
+        bindField<&AxisConfig::enabled>(
+            kAxis, {.key = "enabled",
+                    .description =
+                        KERF_TR_NOOP("The axis is present; only optional axes may be disabled")}),
+        bindField<&AxisConfig::diameterMode>(
+            kAxis, {.key = "diameter_mode",
+                    .description =
+                        KERF_TR_NOOP("Lathe: the axis is programmed and displayed as a diameter")}),
+    };
+    return table;
+}
+
+template <typename Owner>
+std::vector<ParameterDescriptor> descriptorsOf(const std::vector<FieldBinding<Owner>>& bindings) {
+    std::vector<ParameterDescriptor> list;
+    list.reserve(bindings.size());
+    for (const auto& b : bindings)
+        list.push_back(b.descriptor);
+    return list;
+}
+
+template <typename Owner>
+const FieldBinding<Owner>* findBinding(const std::vector<FieldBinding<Owner>>& bindings,
+                                       std::string_view key) {
+    auto it = std::find_if(bindings.begin(), bindings.end(),
+                           [key](const auto& b) { return b.descriptor.key == key; });
+    return it == bindings.end() ? nullptr : &*it;
+}
+
+// Splits "axes.X.rest" into 'X' and "rest"; false when the key has another shape.
+bool splitAxisKey(std::string_view fullKey, char& letter, std::string_view& rest) {
+    constexpr std::string_view prefix = "axes.";
+    if (fullKey.size() < prefix.size() + 3 || fullKey.substr(0, prefix.size()) != prefix ||
+        fullKey[prefix.size() + 1] != '.') {
+        return false;
+    }
+    letter = fullKey[prefix.size()];
+    rest = fullKey.substr(prefix.size() + 2);
+    return isAxisLetter(letter);
+}
+
+Diagnostic schemaError(std::string messageTemplate, std::string_view key) {
+    return Diagnostic::make(Severity::Error, "config", "", 0, 0, std::move(messageTemplate),
+                            std::string(key));
+}
+
+}  // namespace
+
+const std::vector<ParameterDescriptor>& machineParameters() {
+    static const std::vector<ParameterDescriptor> list = descriptorsOf(machineBindings());
+    return list;
+}
+
+const std::vector<ParameterDescriptor>& axisParameters() {
+    static const std::vector<ParameterDescriptor> list = descriptorsOf(axisBindings());
+    return list;
+}
+
+std::string axisParameterKey(char letter, std::string_view axisKey) {
+    std::string key = "axes.";
+    key += letter;
+    key += '.';
+    key += axisKey;
+    return key;
+}
+
+const ParameterDescriptor* findParameter(std::string_view fullKey, char* axisLetter) {
+    char letter = 0;
+    std::string_view rest;
+    if (splitAxisKey(fullKey, letter, rest)) {
+        const auto* binding = findBinding(axisBindings(), rest);
+        if (binding && axisLetter) *axisLetter = letter;
+        return binding ? &binding->descriptor : nullptr;
+    }
+    const auto* binding = findBinding(machineBindings(), fullKey);
+    return binding ? &binding->descriptor : nullptr;
+}
+
+std::vector<std::string> parameterKeys(const MachineConfig& config) {
+    std::vector<std::string> keys;
+    for (const auto& d : machineParameters())
+        keys.emplace_back(d.key);
+    for (const AxisConfig& axis : config.axes) {
+        for (const auto& d : axisParameters())
+            keys.push_back(axisParameterKey(axis.letter, d.key));
+    }
+    return keys;
+}
+
+Expected<ParameterValue> getParameter(const MachineConfig& config, std::string_view fullKey) {
+    char letter = 0;
+    std::string_view rest;
+    if (splitAxisKey(fullKey, letter, rest)) {
+        const auto* binding = findBinding(axisBindings(), rest);
+        if (!binding) return schemaError(KERF_TR_NOOP("unknown key {1}"), fullKey);
+        const AxisConfig* axis = config.axis(letter);
+        if (!axis) return schemaError(KERF_TR_NOOP("the machine has no axis for {1}"), fullKey);
+        return binding->get(*axis);
+    }
+    const auto* binding = findBinding(machineBindings(), fullKey);
+    if (!binding) return schemaError(KERF_TR_NOOP("unknown key {1}"), fullKey);
+    return binding->get(config);
+}
+
+MaybeError setParameter(MachineConfig& config, std::string_view fullKey,
+                        const ParameterValue& value) {
+    char letter = 0;
+    std::string_view rest;
+    if (splitAxisKey(fullKey, letter, rest)) {
+        const auto* binding = findBinding(axisBindings(), rest);
+        if (!binding) return schemaError(KERF_TR_NOOP("unknown key {1}"), fullKey);
+        AxisConfig* axis = config.axis(letter);
+        if (!axis) return schemaError(KERF_TR_NOOP("the machine has no axis for {1}"), fullKey);
+        if (auto error = checkParameterValue(binding->descriptor, fullKey, value, axis->type)) {
+            return error;
+        }
+        binding->set(*axis, value);
+        return std::nullopt;
+    }
+    const auto* binding = findBinding(machineBindings(), fullKey);
+    if (!binding) return schemaError(KERF_TR_NOOP("unknown key {1}"), fullKey);
+    if (auto error = checkParameterValue(binding->descriptor, fullKey, value)) return error;
+    binding->set(config, value);
+    return std::nullopt;
+}
+
+}  // namespace kerf::machine

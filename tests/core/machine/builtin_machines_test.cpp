@@ -1,0 +1,110 @@
+#include "core/machine/builtin_machines.h"
+
+#include <gtest/gtest.h>
+
+#include "core/base/atomic_file.h"
+#include "core/machine/machine_loader.h"
+
+namespace kerf::machine {
+namespace {
+
+MachineConfig load(std::string_view name) {
+    DiagnosticList problems;
+    Expected<MachineConfig> config = loadMachine(name, &problems);
+    EXPECT_TRUE(problems.empty()) << problems.front().format();
+    return config.ok() ? *config : MachineConfig{};
+}
+
+void expectAxis(const MachineConfig& machine, char letter, double minLimit, double maxLimit,
+                double velocity, double acceleration, double jerk) {
+    SCOPED_TRACE(std::string("axis ") + letter);
+    const AxisConfig* axis = machine.axis(letter);
+    ASSERT_NE(axis, nullptr);
+    EXPECT_EQ(axis->letter, letter);
+    EXPECT_EQ(axis->minLimit, minLimit);
+    EXPECT_EQ(axis->maxLimit, maxLimit);
+    EXPECT_EQ(axis->maxVelocityPerS, velocity);
+    EXPECT_EQ(axis->maxAccelerationPerS2, acceleration);
+    EXPECT_EQ(axis->maxJerkPerS3, jerk);
+    EXPECT_EQ(axis->homePosition, 0.0);
+}
+
+TEST(BuiltinMachines, NamesAreMillAndLathe) {
+    EXPECT_EQ(builtinMachineNames(), (std::vector<std::string_view>{"mill", "lathe"}));
+    EXPECT_TRUE(builtinMachineToml("router").empty());
+}
+
+TEST(BuiltinMachines, MillIsAVertical3AxisMill) {
+    MachineConfig mill = load("mill");
+    EXPECT_EQ(mill.name, "Kerf vertical mill");
+    EXPECT_EQ(mill.kind, MachineKind::Mill);
+    ASSERT_EQ(mill.axes.size(), 3u);
+    EXPECT_EQ(mill.enabledAxisLetters(), "XYZ");
+    EXPECT_EQ(mill.toolAxis, 'Z');
+    EXPECT_EQ(mill.rapidVelocityMmPerS, 500.0);
+    EXPECT_EQ(mill.maxFeedMmPerS, 250.0);
+    EXPECT_EQ(mill.spindle.minRpm, 0);
+    EXPECT_EQ(mill.spindle.maxRpm, 12000);
+    EXPECT_EQ(mill.servoPeriodMs, 1.0);
+    EXPECT_EQ(mill.pathToleranceMm, 0.01);
+    expectAxis(mill, 'X', -400.0, 400.0, 500.0, 2000.0, 50000.0);
+    expectAxis(mill, 'Y', -300.0, 300.0, 500.0, 2000.0, 50000.0);
+    expectAxis(mill, 'Z', -500.0, 50.0, 500.0, 2000.0, 50000.0);
+    for (const AxisConfig& axis : mill.axes) {
+        EXPECT_EQ(axis.type, AxisType::Linear);
+        EXPECT_TRUE(axis.enabled);
+        EXPECT_FALSE(axis.optional);
+        EXPECT_FALSE(axis.diameterMode);
+    }
+    EXPECT_EQ(mill.axis('A'), nullptr);
+}
+
+TEST(BuiltinMachines, LatheHasDiameterXAndADisabledC) {
+    MachineConfig lathe = load("lathe");
+    EXPECT_EQ(lathe.name, "Kerf lathe");
+    EXPECT_EQ(lathe.kind, MachineKind::Lathe);
+    ASSERT_EQ(lathe.axes.size(), 3u);
+    EXPECT_EQ(lathe.axes[0].letter, 'X');
+    EXPECT_EQ(lathe.axes[1].letter, 'Z');
+    EXPECT_EQ(lathe.axes[2].letter, 'C');
+    EXPECT_EQ(lathe.enabledAxisLetters(), "XZ");
+    EXPECT_EQ(lathe.toolAxis, 'Z');
+    EXPECT_EQ(lathe.rapidVelocityMmPerS, 300.0);
+    EXPECT_EQ(lathe.maxFeedMmPerS, 200.0);
+    EXPECT_EQ(lathe.spindle.minRpm, 0);
+    EXPECT_EQ(lathe.spindle.maxRpm, 4000);
+    EXPECT_EQ(lathe.servoPeriodMs, 1.0);
+    EXPECT_EQ(lathe.pathToleranceMm, 0.01);
+    expectAxis(lathe, 'X', -10.0, 300.0, 300.0, 1500.0, 30000.0);
+    expectAxis(lathe, 'Z', -600.0, 50.0, 300.0, 1500.0, 30000.0);
+    expectAxis(lathe, 'C', -36000.0, 36000.0, 720.0, 1500.0, 30000.0);
+    EXPECT_TRUE(lathe.axis('X')->diameterMode);
+    EXPECT_FALSE(lathe.axis('Z')->diameterMode);
+    EXPECT_TRUE(lathe.axis('X')->enabled);
+    EXPECT_TRUE(lathe.axis('Z')->enabled);
+    const AxisConfig* c = lathe.axis('C');
+    EXPECT_EQ(c->type, AxisType::Rotary);
+    EXPECT_TRUE(c->optional);
+    EXPECT_FALSE(c->enabled);
+    EXPECT_FALSE(c->diameterMode);
+}
+
+TEST(BuiltinMachines, AFileCanEnableTheLatheCAxis) {
+    Expected<MachineConfig> lathe =
+        parseMachine("base = \"lathe\"\n[axes.C]\nenabled = true\n", "c.toml");
+    ASSERT_TRUE(lathe.ok()) << lathe.error().format();
+    EXPECT_EQ(lathe->enabledAxisLetters(), "XZC");
+}
+
+TEST(BuiltinMachines, EmbeddedTextIsThePresetFile) {
+    for (std::string_view name : builtinMachineNames()) {
+        std::string path =
+            std::string(KERF_SOURCE_DIR) + "/core/machine/presets/" + std::string(name) + ".toml";
+        Expected<std::string> file = readWholeFile(path);
+        ASSERT_TRUE(file.ok()) << file.error().format();
+        EXPECT_EQ(*file, builtinMachineToml(name)) << "rebuild after editing " << path;
+    }
+}
+
+}  // namespace
+}  // namespace kerf::machine
