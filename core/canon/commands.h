@@ -1,0 +1,152 @@
+#pragma once
+
+#include <string>
+#include <variant>
+
+#include "core/base/source_location.h"
+#include "core/geometry/axes.h"
+#include "core/geometry/plane.h"
+
+// The canonical command stream: what every dialect front end produces and every consumer (motion,
+// graphics, reports, golden traces) reads. Positions are in the workpiece coordinate system of the
+// active preset, in mm (linear) and degrees (rotary), for the tool tip; lathe X is a radius here.
+namespace kerf::canon {
+
+struct RapidMove {
+    Pose target;
+};
+
+// Feed is mm/min, or mm/rev when the feed mode is per revolution.
+struct LinearMove {
+    Pose target;
+    double feed = 0.0;
+};
+
+// Circular or helical move: the centre's in-plane coordinates define the circle, the signed sweep
+// (radians, positive = counter-clockwise about the plane normal) its extent; the target's normal
+// coordinate (and other axes) move linearly along it.
+struct ArcMove {
+    Pose target;
+    Vec3 center;
+    Plane plane = Plane::XY;
+    double sweepRad = 0.0;
+    double feed = 0.0;
+};
+
+struct Dwell {
+    double seconds = 0.0;
+};
+
+enum class SpindleDirection : uint8_t { Stopped, Clockwise, CounterClockwise };
+
+struct SpindleControl {
+    SpindleDirection direction = SpindleDirection::Stopped;
+    double speedRpm = 0.0;
+};
+
+struct SpindleOrient {
+    double angleDeg = 0.0;
+};
+
+struct CoolantControl {
+    bool flood = false;
+    bool mist = false;
+};
+
+// Effective tool geometry, table values plus the deltas of the call.
+struct ToolGeometry {
+    double lengthMm = 0.0;
+    double radiusMm = 0.0;
+    double radius2Mm = 0.0;
+    friend bool operator==(const ToolGeometry&, const ToolGeometry&) = default;
+};
+
+struct ToolChange {
+    int number = 0;
+    std::string name;
+    ToolGeometry geometry;
+    Axis toolAxis = Axis::Z;
+};
+
+// New deltas (DL, DR, DR2) or tool axis for the tool already in the spindle.
+struct ToolUpdate {
+    ToolGeometry geometry;
+    Axis toolAxis = Axis::Z;
+};
+
+enum class FeedMode : uint8_t { PerMinute, PerRevolution };
+
+struct SetFeedMode {
+    FeedMode mode = FeedMode::PerMinute;
+};
+
+struct ProbeMove {
+    Pose target;
+    double feed = 0.0;
+};
+
+enum class SyncReason : uint8_t { ReadPosition, ProbeResult, Inputs };
+
+// The interpreter needs live machine data: motion must drain before it continues.
+struct SyncPoint {
+    SyncReason reason = SyncReason::ReadPosition;
+};
+
+enum class MessageKind : uint8_t { Info, Print, Error };
+
+struct Message {
+    MessageKind kind = MessageKind::Info;
+    std::string text;
+};
+
+enum class StopKind : uint8_t { Program, Optional, End };
+
+struct ProgramStop {
+    StopKind kind = StopKind::Program;
+    int mCode = 0;  // 0 for STOP, 0/1/2/30 for M0/M1/M2/M30
+};
+
+// A miscellaneous function the interpreter does not act on itself; the machine integrator may.
+struct MachineFunction {
+    int number = 0;
+};
+
+// The blank for graphics and material removal (TNC BLK FORM).
+struct StockBox {
+    Vec3 min;
+    Vec3 max;
+};
+struct StockCylinder {
+    Axis axis = Axis::Z;
+    double radiusMm = 0.0;
+    double innerRadiusMm = 0.0;
+    double lengthMm = 0.0;
+    double distanceMm = 0.0;  // length beyond the datum on the positive side (TNC DIST)
+};
+struct StockDefinition {
+    std::variant<StockBox, StockCylinder> shape;
+};
+
+// Contour tolerance for corner blending (TNC cycle 32, Fagor G51); 0 restores the machine default.
+struct PathTolerance {
+    double toleranceMm = 0.0;
+};
+
+using CommandBody =
+    std::variant<RapidMove, LinearMove, ArcMove, Dwell, SpindleControl, SpindleOrient,
+                 CoolantControl, ToolChange, ToolUpdate, SetFeedMode, ProbeMove, SyncPoint,
+                 Message, ProgramStop, MachineFunction, StockDefinition, PathTolerance>;
+
+struct Command {
+    SourceLocation location;
+    CommandBody body;
+};
+
+// Consumer of the canonical stream.
+class Sink {
+public:
+    virtual ~Sink() = default;
+    virtual void consume(const Command& command) = 0;
+};
+
+}  // namespace kerf::canon

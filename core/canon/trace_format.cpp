@@ -1,0 +1,240 @@
+#include "core/canon/trace_format.h"
+
+#include <charconv>
+
+#include "core/base/fixed_format.h"
+#include "core/geometry/arc_math.h"
+
+namespace kerf::canon {
+
+namespace {
+
+constexpr int kLengthDecimals = 4;
+constexpr int kFeedDecimals = 3;
+
+void appendInt(std::string& out, int64_t value) {
+    char buffer[24];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    out.append(buffer, result.ptr);
+}
+
+void appendPose(std::string& out, const Pose& pose, AxisMask axes) {
+    for (int i = 0; i < kAxisCount; ++i) {
+        auto axis = static_cast<Axis>(i);
+        if ((axes & axisBit(axis)) == 0) continue;
+        out += ' ';
+        out += axisLetter(axis);
+        appendFixed(out, pose[axis], kLengthDecimals);
+    }
+}
+
+void appendWord(std::string& out, const char* word, double value, int decimals) {
+    out += ' ';
+    out += word;
+    appendFixed(out, value, decimals);
+}
+
+void appendQuoted(std::string& out, const std::string& text) {
+    out += '"';
+    for (char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else {
+            out += c;
+        }
+    }
+    out += '"';
+}
+
+const char* spindleName(SpindleDirection direction) {
+    switch (direction) {
+        case SpindleDirection::Clockwise:
+            return "CW";
+        case SpindleDirection::CounterClockwise:
+            return "CCW";
+        case SpindleDirection::Stopped:
+            break;
+    }
+    return "STOP";
+}
+
+const char* messageKindName(MessageKind kind) {
+    switch (kind) {
+        case MessageKind::Print:
+            return "PRINT";
+        case MessageKind::Error:
+            return "ERROR";
+        case MessageKind::Info:
+            break;
+    }
+    return "INFO";
+}
+
+const char* syncName(SyncReason reason) {
+    switch (reason) {
+        case SyncReason::ProbeResult:
+            return "PROBE";
+        case SyncReason::Inputs:
+            return "INPUTS";
+        case SyncReason::ReadPosition:
+            break;
+    }
+    return "POSITION";
+}
+
+void appendGeometry(std::string& out, const ToolGeometry& g, Axis toolAxis) {
+    appendWord(out, "L", g.lengthMm, kLengthDecimals);
+    appendWord(out, "R", g.radiusMm, kLengthDecimals);
+    appendWord(out, "R2", g.radius2Mm, kLengthDecimals);
+    out += " AXIS ";
+    out += axisLetter(toolAxis);
+}
+
+struct BodyPrinter {
+    std::string& out;
+    AxisMask axes;
+
+    void operator()(const RapidMove& m) {
+        out += "RAPID";
+        appendPose(out, m.target, axes);
+    }
+    void operator()(const LinearMove& m) {
+        out += "LINE";
+        appendPose(out, m.target, axes);
+        appendWord(out, "F", m.feed, kFeedDecimals);
+    }
+    void operator()(const ArcMove& m) {
+        out += "ARC";
+        appendPose(out, m.target, axes);
+        PlaneAxes plane = planeAxes(m.plane);
+        out += " CENTER ";
+        out += axisLetter(plane.first);
+        appendFixed(out, m.center[axisIndex(plane.first)], kLengthDecimals);
+        out += ' ';
+        out += axisLetter(plane.second);
+        appendFixed(out, m.center[axisIndex(plane.second)], kLengthDecimals);
+        out += " PLANE ";
+        out += planeName(m.plane);
+        appendWord(out, "SWEEP ", radToDeg(m.sweepRad), kLengthDecimals);
+        appendWord(out, "F", m.feed, kFeedDecimals);
+    }
+    void operator()(const Dwell& m) { appendWord(out, "DWELL ", m.seconds, kFeedDecimals); }
+    void operator()(const SpindleControl& m) {
+        out += "SPINDLE ";
+        out += spindleName(m.direction);
+        appendWord(out, "S", m.speedRpm, kFeedDecimals);
+    }
+    void operator()(const SpindleOrient& m) {
+        appendWord(out, "ORIENT ", m.angleDeg, kLengthDecimals);
+    }
+    void operator()(const CoolantControl& m) {
+        out += "COOLANT ";
+        if (m.flood && m.mist) {
+            out += "FLOOD+MIST";
+        } else if (m.flood) {
+            out += "FLOOD";
+        } else if (m.mist) {
+            out += "MIST";
+        } else {
+            out += "OFF";
+        }
+    }
+    void operator()(const ToolChange& m) {
+        out += "TOOL T";
+        appendInt(out, m.number);
+        if (!m.name.empty()) {
+            out += ' ';
+            appendQuoted(out, m.name);
+        }
+        appendGeometry(out, m.geometry, m.toolAxis);
+    }
+    void operator()(const ToolUpdate& m) {
+        out += "TOOLDATA";
+        appendGeometry(out, m.geometry, m.toolAxis);
+    }
+    void operator()(const SetFeedMode& m) {
+        out += m.mode == FeedMode::PerRevolution ? "FEEDMODE PER-REV" : "FEEDMODE PER-MIN";
+    }
+    void operator()(const ProbeMove& m) {
+        out += "PROBE";
+        appendPose(out, m.target, axes);
+        appendWord(out, "F", m.feed, kFeedDecimals);
+    }
+    void operator()(const SyncPoint& m) {
+        out += "SYNC ";
+        out += syncName(m.reason);
+    }
+    void operator()(const Message& m) {
+        out += "MSG ";
+        out += messageKindName(m.kind);
+        out += ' ';
+        appendQuoted(out, m.text);
+    }
+    void operator()(const ProgramStop& m) {
+        switch (m.kind) {
+            case StopKind::Program:
+                out += "STOP";
+                break;
+            case StopKind::Optional:
+                out += "OPTIONAL-STOP";
+                break;
+            case StopKind::End:
+                out += "END";
+                break;
+        }
+        out += " M";
+        appendInt(out, m.mCode);
+    }
+    void operator()(const MachineFunction& m) {
+        out += "MFUNC M";
+        appendInt(out, m.number);
+    }
+    void operator()(const StockDefinition& m) {
+        if (const auto* box = std::get_if<StockBox>(&m.shape)) {
+            out += "STOCK BOX";
+            Pose lo, hi;
+            lo.setXyz(box->min);
+            hi.setXyz(box->max);
+            appendPose(out, lo, kXyzMask);
+            appendPose(out, hi, kXyzMask);
+        } else {
+            const auto& cylinder = std::get<StockCylinder>(m.shape);
+            out += "STOCK CYLINDER ";
+            out += axisLetter(cylinder.axis);
+            appendWord(out, "R", cylinder.radiusMm, kLengthDecimals);
+            appendWord(out, "RI", cylinder.innerRadiusMm, kLengthDecimals);
+            appendWord(out, "L", cylinder.lengthMm, kLengthDecimals);
+            appendWord(out, "DIST", cylinder.distanceMm, kLengthDecimals);
+        }
+    }
+    void operator()(const PathTolerance& m) {
+        appendWord(out, "TOLERANCE ", m.toleranceMm, kLengthDecimals);
+    }
+};
+
+}  // namespace
+
+void appendCommand(std::string& out, const Command& command, const TraceFormat& format) {
+    const SourceLocation& at = command.location;
+    if (at.fileId != 0 && format.fileName) {
+        out += format.fileName(at.fileId);
+        out += ':';
+    }
+    appendInt(out, at.line);
+    out += ':';
+    appendInt(out, at.column);
+    out += ' ';
+    if (at.blockNumber >= 0) {
+        out += 'N';
+        appendInt(out, at.blockNumber);
+        out += ' ';
+    }
+    std::visit(BodyPrinter{out, format.axes}, command.body);
+}
+
+}  // namespace kerf::canon
