@@ -33,15 +33,27 @@ struct ArcMove {
     double feed = 0.0;
 };
 
+// Move locked to the spindle angle (threading, rigid tapping): the axes advance `leadMmPerRev`
+// along the path per spindle revolution, from the spindle angle `startAngleDeg`.
+struct SpindleSyncedMove {
+    Pose target;
+    double leadMmPerRev = 0.0;
+    double startAngleDeg = 0.0;
+};
+
 struct Dwell {
     double seconds = 0.0;
 };
 
 enum class SpindleDirection : uint8_t { Stopped, Clockwise, CounterClockwise };
 
+// Spindle on/off and speed. With a surface speed (lathe G96) the speed follows the X radius,
+// limited to maxRpm; speedRpm is then the speed at the current position.
 struct SpindleControl {
     SpindleDirection direction = SpindleDirection::Stopped;
     double speedRpm = 0.0;
+    double surfaceSpeedMPerMin = 0.0;  // 0: constant speed
+    double maxRpm = 0.0;               // 0: machine limit
 };
 
 struct SpindleOrient {
@@ -103,7 +115,7 @@ enum class StopKind : uint8_t { Program, Optional, End };
 
 struct ProgramStop {
     StopKind kind = StopKind::Program;
-    int mCode = 0;  // 0 for STOP, 0/1/2/30 for M0/M1/M2/M30
+    int mCode = -1;  // -1: no M function (TNC STOP, END PGM); else 0, 1, 2, 30 ...
 };
 
 // A miscellaneous function the interpreter does not act on itself; the machine integrator may.
@@ -127,15 +139,21 @@ struct StockDefinition {
     std::variant<StockBox, StockCylinder> shape;
 };
 
+// How the X axis is shown (lathe G151/G152): positions stay radii in the stream.
+struct DiameterMode {
+    bool xInDiameter = false;
+};
+
 // Contour tolerance for corner blending (TNC cycle 32, Fagor G51); 0 restores the machine default.
 struct PathTolerance {
     double toleranceMm = 0.0;
 };
 
 using CommandBody =
-    std::variant<RapidMove, LinearMove, ArcMove, Dwell, SpindleControl, SpindleOrient,
-                 CoolantControl, ToolChange, ToolUpdate, SetFeedMode, ProbeMove, SyncPoint,
-                 Message, ProgramStop, MachineFunction, StockDefinition, PathTolerance>;
+    std::variant<RapidMove, LinearMove, ArcMove, SpindleSyncedMove, Dwell, SpindleControl,
+                 SpindleOrient, CoolantControl, ToolChange, ToolUpdate, SetFeedMode, ProbeMove,
+                 SyncPoint, Message, ProgramStop, MachineFunction, StockDefinition, DiameterMode,
+                 PathTolerance>;
 
 struct Command {
     SourceLocation location;

@@ -75,6 +75,16 @@ void PathStatistics::consume(const Command& command) {
         corner[axes.second] = box.max.y();
         addFeedPoint(corner);
         m_position = arc->target;
+    } else if (const auto* synced = std::get_if<SpindleSyncedMove>(&body)) {
+        double length = (synced->target.xyz() - m_position.xyz()).norm();
+        ++m_feedCount;
+        m_feedLength += length;
+        if (synced->leadMmPerRev > 0.0 && m_spindleRpm > 0.0) {
+            m_timeS += length / (synced->leadMmPerRev * m_spindleRpm) * 60.0;
+        }
+        addFeedPoint(m_position);
+        addFeedPoint(synced->target);
+        m_position = synced->target;
     } else if (const auto* probe = std::get_if<ProbeMove>(&body)) {
         double length = (probe->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;

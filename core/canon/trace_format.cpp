@@ -123,11 +123,24 @@ struct BodyPrinter {
         appendWord(out, "SWEEP ", radToDeg(m.sweepRad), kLengthDecimals);
         appendWord(out, "F", m.feed, kFeedDecimals);
     }
+    void operator()(const SpindleSyncedMove& m) {
+        out += "SYNCMOVE";
+        appendPose(out, m.target, axes);
+        appendWord(out, "LEAD ", m.leadMmPerRev, kLengthDecimals);
+        appendWord(out, "ANGLE ", m.startAngleDeg, kLengthDecimals);
+    }
+    void operator()(const DiameterMode& m) {
+        out += m.xInDiameter ? "XMODE DIAMETER" : "XMODE RADIUS";
+    }
     void operator()(const Dwell& m) { appendWord(out, "DWELL ", m.seconds, kFeedDecimals); }
     void operator()(const SpindleControl& m) {
         out += "SPINDLE ";
         out += spindleName(m.direction);
         appendWord(out, "S", m.speedRpm, kFeedDecimals);
+        if (m.surfaceSpeedMPerMin > 0.0) {
+            appendWord(out, "CSS ", m.surfaceSpeedMPerMin, kFeedDecimals);
+            appendWord(out, "MAX ", m.maxRpm, kFeedDecimals);
+        }
     }
     void operator()(const SpindleOrient& m) {
         appendWord(out, "ORIENT ", m.angleDeg, kLengthDecimals);
@@ -187,8 +200,10 @@ struct BodyPrinter {
                 out += "END";
                 break;
         }
-        out += " M";
-        appendInt(out, m.mCode);
+        if (m.mCode >= 0) {
+            out += " M";
+            appendInt(out, m.mCode);
+        }
     }
     void operator()(const MachineFunction& m) {
         out += "MFUNC M";
