@@ -88,9 +88,9 @@ const char* syncName(SyncReason reason) {
 }
 
 void appendGeometry(std::string& out, const ToolGeometry& g, Axis toolAxis) {
-    appendWord(out, "L", g.lengthMm, kLengthDecimals);
-    appendWord(out, "R", g.radiusMm, kLengthDecimals);
-    appendWord(out, "R2", g.radius2Mm, kLengthDecimals);
+    appendWord(out, "L=", g.lengthMm, kLengthDecimals);
+    appendWord(out, "R=", g.radiusMm, kLengthDecimals);
+    appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);
     out += " AXIS ";
     out += axisLetter(toolAxis);
 }

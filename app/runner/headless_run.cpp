@@ -1,0 +1,127 @@
+#include "app/runner/headless_run.h"
+
+#include <cstdio>
+#include <memory>
+#include <ostream>
+
+#include "app/runner/run_report.h"
+#include "app/runner/session.h"
+#include "core/base/atomic_file.h"
+#include "core/canon/tee_sink.h"
+#include "core/canon/trace_printer.h"
+
+namespace kerf::app {
+
+namespace {
+
+constexpr uint64_t kBlocksPerSlice = 1u << 16;
+
+void printDiagnostics(const DiagnosticList& diagnostics, std::ostream& out) {
+    for (const Diagnostic& d : diagnostics) out << d.format() << '\n';
+}
+
+AxisMask axisMaskOf(const machine::MachineConfig& machine) {
+    AxisMask mask = 0;
+    for (char letter : machine.enabledAxisLetters()) {
+        if (auto axis = axisFromLetter(letter)) mask |= axisBit(*axis);
+    }
+    return mask;
+}
+
+bool diameterByDefault(const machine::MachineConfig& machine) {
+    const machine::AxisConfig* x = machine.axis('X');
+    return x != nullptr && x->diameterMode;
+}
+
+}  // namespace
+
+int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
+    auto session = openSession(options);
+    DiagnosticList all = session->allDiagnostics();
+    printDiagnostics(all, diagnostics);
+    return hasErrors(all) ? 1 : 0;
+}
+
+int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
+    auto session = openSession(options);
+    canon::PathStatistics statistics(session->machine.rapidVelocityMmPerS);
+    DisplayModeTracker displayMode(diameterByDefault(session->machine));
+    canon::TeeSink sinks;
+    sinks.add(statistics);
+    sinks.add(displayMode);
+
+    std::FILE* traceStream = nullptr;
+    std::unique_ptr<canon::TracePrinter> trace;
+    DiagnosticList runProblems;
+    if (options.traceFile) {
+        if (*options.traceFile == "-") {
+            traceStream = stdout;
+        } else {
+            traceStream = std::fopen(options.traceFile->c_str(), "wb");
+            if (traceStream == nullptr) {
+                runProblems.push_back(Diagnostic::make(Severity::Error, "io",
+                                                       options.traceFile->string(), 0, 0,
+                                                       KERF_TR_NOOP("cannot write the trace")));
+            }
+        }
+        if (traceStream != nullptr) {
+            canon::TraceFormat format;
+            format.axes = axisMaskOf(session->machine);
+            const program::SourceRegistry* sources = &session->sources;
+            format.fileName = [sources](uint32_t id) { return sources->displayName(id); };
+            trace = std::make_unique<canon::TracePrinter>(traceStream, std::move(format));
+            sinks.add(*trace);
+        }
+    }
+
+    uint64_t blocks = 0;
+    if (session->ready) {
+        interp::Interpreter& interpreter = *session->interpreter;
+        statistics.setStart(interpreter.nominalPosition());
+        for (;;) {
+            interp::RunStatus status = interpreter.run(sinks, kBlocksPerSlice);
+            if (status == interp::RunStatus::NeedsSync) {
+                // Without motion the machine is exactly where the program put it.
+                interp::WorldSnapshot world;
+                world.position = statistics.position();
+                interpreter.resume(world);
+                continue;
+            }
+            if (status != interp::RunStatus::BudgetUsed) break;
+            if (interpreter.blocksExecuted() >= options.maxBlocks) {
+                runProblems.push_back(Diagnostic::make(
+                    Severity::Error, "block-limit", options.program.string(), 0, 0,
+                    KERF_TR_NOOP("stopped after {1} blocks: endless loop? (--max-blocks)"),
+                    std::to_string(options.maxBlocks)));
+                break;
+            }
+        }
+        blocks = interpreter.blocksExecuted();
+    }
+    if (trace && !trace->flush()) {
+        runProblems.push_back(Diagnostic::make(Severity::Error, "io", options.traceFile->string(), 0,
+                                               0, KERF_TR_NOOP("cannot write the trace")));
+    }
+    trace.reset();
+    if (traceStream != nullptr && traceStream != stdout) std::fclose(traceStream);
+
+    RunSummary summary;
+    summary.diagnostics = session->allDiagnostics();
+    summary.diagnostics.insert(summary.diagnostics.end(), runProblems.begin(), runProblems.end());
+    summary.ok = session->ready && !hasErrors(summary.diagnostics);
+    summary.dialect = program::dialectName(session->dialect);
+    summary.blocksExecuted = blocks;
+    summary.xInDiameter = displayMode.xInDiameter();
+    printDiagnostics(summary.diagnostics, diagnostics);
+
+    if (options.reportFile) {
+        nlohmann::json report = buildRunReport(summary, statistics, session->machine);
+        if (auto error = writeFileAtomically(*options.reportFile, report.dump(2) + "\n")) {
+            diagnostics << error->format() << '\n';
+            return 1;
+        }
+    }
+    return summary.ok ? 0 : 1;
+}
+
+}  // namespace kerf::app

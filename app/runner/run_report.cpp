@@ -1,0 +1,70 @@
+#include "app/runner/run_report.h"
+
+#include <cmath>
+
+namespace kerf::app {
+
+namespace {
+
+// Rounds to 6 decimals and never writes -0, so reports compare cleanly.
+double clean(double value) {
+    double rounded = std::round(value * 1e6) / 1e6;
+    return rounded == 0.0 ? 0.0 : rounded;
+}
+
+double displayed(char letter, double value, bool xInDiameter) {
+    return (letter == 'X' && xInDiameter) ? value * 2.0 : value;
+}
+
+}  // namespace
+
+nlohmann::json diagnosticsJson(const DiagnosticList& diagnostics) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Diagnostic& d : diagnostics) {
+        list.push_back({{"severity", std::string(severityName(d.severity))},
+                        {"file", d.file},
+                        {"line", d.line},
+                        {"column", d.column},
+                        {"code", d.code},
+                        {"message", d.message()}});
+    }
+    return list;
+}
+
+nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatistics& statistics,
+                              const machine::MachineConfig& machine) {
+    nlohmann::json report;
+    report["ok"] = summary.ok;
+    report["dialect"] = summary.dialect;
+    report["diagnostics"] = diagnosticsJson(summary.diagnostics);
+    report["blocks_executed"] = summary.blocksExecuted;
+    report["moves"] = {
+        {"rapid",
+         {{"count", statistics.rapidCount()}, {"length_mm", clean(statistics.rapidLengthMm())}}},
+        {"feed",
+         {{"count", statistics.feedCount()}, {"length_mm", clean(statistics.feedLengthMm())}}}};
+    nlohmann::json lower = nlohmann::json::object();
+    nlohmann::json upper = nlohmann::json::object();
+    nlohmann::json position = nlohmann::json::object();
+    const auto& bounds = statistics.feedBounds();
+    for (char letter : machine.enabledAxisLetters()) {
+        auto axis = axisFromLetter(letter);
+        if (!axis) continue;
+        const size_t i = static_cast<size_t>(axisIndex(*axis));
+        const std::string key(1, letter);
+        position[key] = clean(displayed(letter, statistics.position().values[i], summary.xInDiameter));
+        if (!bounds.empty) {
+            double a = displayed(letter, bounds.min[i], summary.xInDiameter);
+            double b = displayed(letter, bounds.max[i], summary.xInDiameter);
+            lower[key] = clean(std::min(a, b));
+            upper[key] = clean(std::max(a, b));
+        }
+    }
+    report["feed_bounds"] = {{"min", lower}, {"max", upper}};
+    report["final_position"] = position;
+    report["tool_changes"] = statistics.toolChanges();
+    report["machining_time_s"] = clean(statistics.machiningTimeS());
+    return report;
+}
+
+}  // namespace kerf::app

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/base/diagnostic.h"
+#include "core/canon/path_statistics.h"
+#include "core/machine/machine_config.h"
+
+namespace kerf::app {
+
+// Follows the lathe's X display mode through the stream (G151/G152).
+class DisplayModeTracker final : public canon::Sink {
+public:
+    explicit DisplayModeTracker(bool xInDiameter) : m_diameter(xInDiameter) {}
+    void consume(const canon::Command& command) override {
+        if (const auto* mode = std::get_if<canon::DiameterMode>(&command.body)) {
+            m_diameter = mode->xInDiameter;
+        }
+    }
+    bool xInDiameter() const { return m_diameter; }
+
+private:
+    bool m_diameter;
+};
+
+struct RunSummary {
+    bool ok = false;
+    std::string dialect;
+    DiagnosticList diagnostics;
+    uint64_t blocksExecuted = 0;
+    bool xInDiameter = false;
+};
+
+// The JSON report of `kerf run` (keys documented in docs/headless.md).
+nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatistics& statistics,
+                              const machine::MachineConfig& machine);
+
+nlohmann::json diagnosticsJson(const DiagnosticList& diagnostics);
+
+}  // namespace kerf::app

@@ -1,0 +1,95 @@
+#include "app/runner/session.h"
+
+#include <cstdlib>
+
+#include "core/interp/klartext/klartext_interpreter.h"
+#include "core/machine/machine_loader.h"
+
+namespace kerf::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Diagnostic setupError(const std::string& file, const char* text, std::string arg = {}) {
+    return Diagnostic::make(Severity::Error, "setup", file, 0, 0, text, std::move(arg));
+}
+
+fs::path defaultStateDir() {
+    if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg) return fs::path(xdg) / "kerf";
+    if (const char* home = std::getenv("HOME"); home && *home) {
+        return fs::path(home) / ".local" / "share" / "kerf";
+    }
+    return {};
+}
+
+}  // namespace
+
+DiagnosticList Session::allDiagnostics() const {
+    DiagnosticList all = diagnostics;
+    if (interpreter) {
+        all.insert(all.end(), interpreter->diagnostics().begin(), interpreter->diagnostics().end());
+    }
+    return all;
+}
+
+std::unique_ptr<Session> openSession(const RunOptions& options) {
+    auto session = std::make_unique<Session>();
+    DiagnosticList machineProblems;
+    auto machine = machine::loadMachine(options.machine, &machineProblems);
+    if (!machine) {
+        session->diagnostics = machineProblems.empty() ? DiagnosticList{machine.error()}
+                                                       : machineProblems;
+        return session;
+    }
+    session->machine = *machine;
+    const bool lathe = session->machine.kind == machine::MachineKind::Lathe;
+    if (options.dialect) {
+        auto dialect = program::dialectFromName(*options.dialect);
+        if (!dialect) {
+            session->diagnostics.push_back(
+                setupError("", KERF_TR_NOOP("unknown dialect '{1}' (klartext, tnciso, fagor)"),
+                           *options.dialect));
+            return session;
+        }
+        session->dialect = *dialect;
+    } else {
+        session->dialect = program::dialectForFile(options.program.string(), lathe);
+    }
+    const fs::path programPath = fs::absolute(options.program);
+    const fs::path ncRoot = options.ncRoot ? fs::absolute(*options.ncRoot) : programPath.parent_path();
+    std::optional<fs::path> toolFile = options.toolTable;
+    if (!toolFile && fs::exists(ncRoot / "TOOL.T")) toolFile = ncRoot / "TOOL.T";
+    if (toolFile) {
+        auto tools = tables::ToolTable::load(*toolFile);
+        if (!tools) {
+            session->diagnostics.push_back(tools.error());
+            return session;
+        }
+        session->tools = std::move(*tools);
+    }
+    if (session->dialect != program::Dialect::Klartext) {
+        session->diagnostics.push_back(
+            setupError(programPath.string(), KERF_TR_NOOP("the {1} dialect is not supported yet"),
+                       program::dialectName(session->dialect)));
+        return session;
+    }
+    klartext::KlartextSettings settings;
+    settings.machine = &session->machine;
+    settings.tools = session->tools ? &*session->tools : nullptr;
+    settings.ncRoot = ncRoot;
+    settings.blockSkip = options.blockSkip;
+    fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
+    if (!stateDir.empty()) {
+        std::error_code ignored;
+        fs::create_directories(stateDir, ignored);
+        settings.remanentFile = stateDir / "qr_parameters.txt";
+    }
+    auto interpreter =
+        std::make_unique<klartext::KlartextInterpreter>(session->sources, std::move(settings));
+    session->ready = interpreter->load(programPath);
+    session->interpreter = std::move(interpreter);
+    return session;
+}
+
+}  // namespace kerf::app

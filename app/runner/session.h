@@ -1,0 +1,32 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "app/runner/run_options.h"
+#include "core/base/diagnostic.h"
+#include "core/interp/interpreter.h"
+#include "core/machine/machine_config.h"
+#include "core/program/dialect.h"
+#include "core/program/source_registry.h"
+#include "core/tables/tool_table.h"
+
+namespace kerf::app {
+
+// Everything one headless run needs: the machine, the tool table, the loaded program and its
+// interpreter. Problems found while setting up (machine, tables, dialect) are in `diagnostics`;
+// the program's own are in interpreter->diagnostics().
+struct Session {
+    machine::MachineConfig machine;
+    std::optional<tables::ToolTable> tools;
+    program::SourceRegistry sources;
+    program::Dialect dialect = program::Dialect::Klartext;
+    std::unique_ptr<interp::Interpreter> interpreter;
+    DiagnosticList diagnostics;
+    DiagnosticList allDiagnostics() const;
+    bool ready = false;  // the program loaded without errors and can run
+};
+
+std::unique_ptr<Session> openSession(const RunOptions& options);
+
+}  // namespace kerf::app

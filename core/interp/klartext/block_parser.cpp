@@ -1,0 +1,1093 @@
+#include "core/interp/klartext/block_parser.h"
+
+#include <cmath>
+
+#include "core/base/translate.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+// Flags for the words a block may contain after its head.
+enum WordFlag : uint32_t {
+    kAxes = 1u << 0,
+    kComp = 1u << 1,
+    kFeed = 1u << 2,
+    kM = 1u << 3,
+    kDirection = 1u << 4,
+    kRadius = 1u << 5,
+    kPolar = 1u << 6,
+    kLength = 1u << 7,
+    kAngle = 1u << 8,
+};
+
+struct Words {
+    Coordinates* coords = nullptr;
+    CommonWords* common = nullptr;
+    Direction* direction = nullptr;
+    std::optional<double>* radius = nullptr;
+    PolarWords* polar = nullptr;
+    std::optional<double>* length = nullptr;
+    std::optional<double>* angle = nullptr;
+};
+
+bool startsValue(char c) {
+    return c == '+' || c == '-' || c == '(' || isDigit(c) || c == '.' || c == 'Q' || c == 'q';
+}
+
+std::string upperCopy(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = upper(c);
+    return out;
+}
+
+}  // namespace
+
+struct BlockParser::Context {
+    Cursor cursor;
+    FormulaParser formula;
+    ParseProblem& problem;
+    bool failed = false;
+
+    Context(std::string_view text, FormulaEnvironment* env, ParseProblem& p)
+        : cursor(text), formula(cursor, env), problem(p) {}
+
+    bool fail(std::string code, std::string messageTemplate, std::vector<std::string> args = {}) {
+        if (!failed) {
+            failed = true;
+            problem = ParseProblem{cursor.position(), std::move(code), std::move(messageTemplate),
+                                   std::move(args)};
+        }
+        return false;
+    }
+    // Moves a problem reported by the formula parser into ours.
+    bool formulaFailed() {
+        if (!failed && formula.problem()) {
+            failed = true;
+            problem = *formula.problem();
+        }
+        return false;
+    }
+    bool value(double& out) {
+        auto v = formula.wordValue();
+        if (!v) return formulaFailed();
+        out = *v;
+        return true;
+    }
+    bool unexpected() {
+        std::string_view rest = cursor.rest();
+        size_t end = rest.find_first_of(" \t;");
+        std::string token(rest.substr(0, end == std::string_view::npos ? rest.size() : end));
+        return fail("syntax", KERF_TR_NOOP("unexpected '{1}'"), {token});
+    }
+    bool expectEnd() {
+        if (cursor.atEnd()) return true;
+        return unexpected();
+    }
+
+    bool parseFeed(FeedWord& feed) {
+        if (cursor.acceptKeyword("FMAX")) {
+            feed.kind = FeedWord::Kind::Max;
+            return true;
+        }
+        if (cursor.acceptKeyword("FAUTO")) {
+            feed.kind = FeedWord::Kind::Auto;
+            return true;
+        }
+        if (cursor.acceptPrefix("FU")) {
+            feed.kind = FeedWord::Kind::PerRevolution;
+            return value(feed.value);
+        }
+        if (cursor.acceptPrefix("FZ")) {
+            feed.kind = FeedWord::Kind::PerTooth;
+            return value(feed.value);
+        }
+        cursor.acceptPrefix("F");
+        feed.kind = FeedWord::Kind::Value;
+        if (!value(feed.value)) return false;
+        if (feed.value < 0.0) return fail("range", KERF_TR_NOOP("the feed rate must not be negative"));
+        return true;
+    }
+
+    bool parseM(MWords& m) {
+        size_t at = cursor.position();
+        cursor.acceptPrefix("M");
+        auto number = cursor.unsignedInteger();
+        if (!number || *number > 9999) {
+            cursor.setPosition(at);
+            return fail("syntax", KERF_TR_NOOP("M function number expected"));
+        }
+        if (m.count >= m.list.size()) {
+            cursor.setPosition(at);
+            return fail("syntax", KERF_TR_NOOP("too many M functions in one block"));
+        }
+        MWord& word = m.list[m.count++];
+        word.number = static_cast<int>(*number);
+        if (cursor.acceptKeyword("MB")) {
+            if (cursor.acceptKeyword("MAX")) {
+                word.maxParameter = true;
+            } else {
+                double v = 0.0;
+                if (!value(v)) return false;
+                word.parameter = v;
+            }
+        }
+        return true;
+    }
+
+    bool parseAxis(Coordinates& coords, bool incremental) {
+        char letter = upper(cursor.peekRaw());
+        auto axis = axisFromLetter(letter);
+        size_t at = cursor.position();
+        cursor.setPosition(at + 1);
+        if (coords.has(*axis)) {
+            cursor.setPosition(at);
+            return fail("syntax", KERF_TR_NOOP("axis {1} is programmed twice"),
+                        {std::string(1, letter)});
+        }
+        AxisWord& word = coords.axes[static_cast<size_t>(*axis)];
+        word.present = true;
+        word.incremental = incremental;
+        coords.present |= axisBit(*axis);
+        return value(word.value);
+    }
+
+    bool parseWords(uint32_t allowed, Words w) {
+        bool radiusRead = false;
+        while (!cursor.atEnd()) {
+            char c = upper(cursor.peek());
+            char next = upper(cursor.text().size() > cursor.position() + 1
+                                  ? cursor.text()[cursor.position() + 1]
+                                  : '\0');
+            if ((allowed & kPolar) != 0) {
+                bool inc = c == 'I' && (next == 'P');
+                size_t at = cursor.position();
+                if (inc) cursor.setPosition(at + 1);
+                if (cursor.acceptPrefix("PR")) {
+                    double v = 0.0;
+                    if (!value(v)) return false;
+                    w.polar->radius = v;
+                    w.polar->radiusIncremental = inc;
+                    continue;
+                }
+                if (cursor.acceptPrefix("PA")) {
+                    double v = 0.0;
+                    if (!value(v)) return false;
+                    w.polar->angle = v;
+                    w.polar->angleIncremental = inc;
+                    continue;
+                }
+                cursor.setPosition(at);
+            }
+            if ((allowed & kLength) != 0 && cursor.acceptPrefix("LEN")) {
+                double v = 0.0;
+                if (!value(v)) return false;
+                *w.length = v;
+                continue;
+            }
+            if ((allowed & kAngle) != 0 && cursor.acceptPrefix("CCA")) {
+                double v = 0.0;
+                if (!value(v)) return false;
+                *w.angle = v;
+                continue;
+            }
+            if ((allowed & kDirection) != 0 && c == 'D' && next == 'R') {
+                size_t at = cursor.position();
+                cursor.setPosition(at + 2);
+                char sign = cursor.peek();
+                if (sign == '+' || sign == '-') {
+                    cursor.setPosition(cursor.position() + 1);
+                    *w.direction = sign == '+' ? Direction::Ccw : Direction::Cw;
+                    continue;
+                }
+                cursor.setPosition(at);
+                return fail("syntax", KERF_TR_NOOP("DR+ or DR- expected"));
+            }
+            if (c == 'R' && (allowed & kComp) != 0) {
+                if (cursor.acceptKeyword("RL")) {
+                    w.common->comp = CompWord::Left;
+                    continue;
+                }
+                if (cursor.acceptKeyword("RR")) {
+                    w.common->comp = CompWord::Right;
+                    continue;
+                }
+                bool radiusExpected = (allowed & kRadius) != 0 && !radiusRead;
+                if (next == '0' && !radiusExpected) {
+                    size_t at = cursor.position();
+                    cursor.setPosition(at + 2);
+                    char after = cursor.peekRaw();
+                    if (!isDigit(after) && after != '.' && after != ',') {
+                        w.common->comp = CompWord::Off;
+                        continue;
+                    }
+                    cursor.setPosition(at);
+                }
+            }
+            if (c == 'R' && (allowed & kRadius) != 0 && !radiusRead) {
+                cursor.setPosition(cursor.position() + 1);
+                double v = 0.0;
+                if (!value(v)) return false;
+                *w.radius = v;
+                radiusRead = true;
+                continue;
+            }
+            if (c == 'F' && (allowed & kFeed) != 0) {
+                if (!parseFeed(w.common->feed)) return false;
+                continue;
+            }
+            if (c == 'M' && isDigit(next) && (allowed & kM) != 0) {
+                if (!parseM(w.common->m)) return false;
+                continue;
+            }
+            if ((allowed & kAxes) != 0) {
+                bool inc = c == 'I' && axisFromLetter(next).has_value();
+                size_t at = cursor.position();
+                if (inc) cursor.setPosition(at + 1);
+                char letter = upper(cursor.peekRaw());
+                if (axisFromLetter(letter)) {
+                    char after = cursor.text().size() > cursor.position() + 1
+                                     ? cursor.text()[cursor.position() + 1]
+                                     : '\0';
+                    if (startsValue(after) || after == ' ') {
+                        if (!parseAxis(*w.coords, inc)) return false;
+                        continue;
+                    }
+                }
+                cursor.setPosition(at);
+            }
+            return unexpected();
+        }
+        return true;
+    }
+};
+
+std::string_view BlockParser::headWord(std::string_view text) {
+    Cursor c(text);
+    c.skipBlanks();
+    if (isDigit(c.peekRaw())) {
+        c.unsignedInteger();
+    }
+    c.skipBlanks();
+    if (c.peekRaw() == '/') {
+        c.setPosition(c.position() + 1);
+        c.unsignedInteger();
+    }
+    c.skipBlanks();
+    size_t start = c.position();
+    size_t end = start;
+    while (end < text.size() && isLetter(text[end])) ++end;
+    return text.substr(start, end - start);
+}
+
+bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
+    out.statement = Empty{};
+    out.blockNumber = -1;
+    out.hidden = false;
+    Context c(line.text, m_env, m_problem);
+    Cursor& cur = c.cursor;
+    cur.skipBlanks();
+    if (isDigit(cur.peekRaw())) {
+        size_t at = cur.position();
+        auto number = cur.unsignedInteger();
+        char after = cur.peekRaw();
+        if (!number || (after != ' ' && after != '\t' && after != '\0' && after != ';')) {
+            cur.setPosition(at);
+            return c.unexpected();
+        }
+        out.blockNumber = *number;
+    }
+    if (cur.peek() == '/') {
+        cur.setPosition(cur.position() + 1);
+        cur.unsignedInteger();
+        out.hidden = true;
+    }
+    if (cur.atEnd() || cur.peek() == '*') return true;
+    return parseStatement(c, line, out);
+}
+
+namespace {
+
+bool parseLabelTarget(BlockParser::Context& c, LabelTarget& target, bool allowZero);
+
+std::optional<Axis> parseToolAxis(Cursor& cur) {
+    size_t at = cur.position();
+    char letter = upper(cur.peek());
+    auto axis = axisFromLetter(letter);
+    if (!axis) return std::nullopt;
+    cur.setPosition(cur.position() + 1);
+    char after = cur.peekRaw();
+    if (after != ' ' && after != '\t' && after != '\0' && after != ';') {
+        cur.setPosition(at);
+        return std::nullopt;
+    }
+    return axis;
+}
+
+}  // namespace
+
+// Splits out the head word and dispatches; one branch per kind of block.
+bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, ParsedBlock& out) {
+    Cursor& cur = c.cursor;
+    const size_t headAt = cur.position();
+    size_t end = headAt;
+    const std::string_view text = cur.text();
+    while (end < text.size() && isLetter(text[end])) ++end;
+    const std::string head = upperCopy(text.substr(headAt, end - headAt));
+    cur.setPosition(end);
+
+    auto deferred = [&](std::string feature) {
+        out.statement = Deferred{std::move(feature), std::string(line.text)};
+        return true;
+    };
+
+    if (head == "L") {
+        LinearBlock b;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM, {&b.coords, &b.words})) return false;
+        if (b.coords.present == 0 && b.words.comp == CompWord::None) {
+            out.statement = MFunctionBlock{b.words};
+        } else {
+            out.statement = b;
+        }
+        return true;
+    }
+    if (head == "CC") {
+        CircleCenter b;
+        if (!c.parseWords(kAxes, {&b.coords})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "C") {
+        CircleBlock b;
+        Words w{&b.coords, &b.words, &b.direction};
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kDirection, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CR") {
+        CircleRadiusBlock b;
+        std::optional<double> radius;
+        Words w{&b.coords, &b.words, &b.direction, &radius};
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kDirection | kRadius, w)) return false;
+        if (!radius) return c.fail("syntax", KERF_TR_NOOP("CR needs a radius R"));
+        b.radius = *radius;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CT") {
+        CircleTangentBlock b;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM, {&b.coords, &b.words})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "LP") {
+        LinePolarBlock b;
+        Words w{&b.coords, &b.words};
+        w.polar = &b.polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CP") {
+        CirclePolarBlock b;
+        Words w{&b.coords, &b.words, &b.direction};
+        w.polar = &b.polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar | kDirection, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CTP") {
+        CircleTangentPolarBlock b;
+        Words w{&b.coords, &b.words};
+        w.polar = &b.polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "RND" || head == "CHF") {
+        bool round = head == "RND";
+        if (round) cur.acceptPrefix("R");
+        double value = 0.0;
+        if (!c.value(value)) return false;
+        FeedWord feed;
+        if (upper(cur.peek()) == 'F' && !c.parseFeed(feed)) return false;
+        if (!c.expectEnd()) return false;
+        if (value <= 0.0) {
+            return c.fail("range", round ? KERF_TR_NOOP("the rounding radius must be positive")
+                                         : KERF_TR_NOOP("the chamfer length must be positive"));
+        }
+        if (feed.kind == FeedWord::Kind::Max) {
+            return c.fail("syntax", KERF_TR_NOOP("FMAX is not allowed here"));
+        }
+        if (round) {
+            out.statement = RoundBlock{value, feed};
+        } else {
+            out.statement = ChamferBlock{value, feed};
+        }
+        return true;
+    }
+    if (head == "APPR" || head == "DEP") {
+        ApproachBlock b;
+        b.depart = head == "DEP";
+        std::string_view kind = cur.word();
+        std::string k = upperCopy(kind);
+        if (!k.empty() && k[0] == 'P') {
+            b.polar = true;
+            k.erase(0, 1);
+        }
+        if (k == "LT") {
+            b.kind = ApproachKind::LT;
+        } else if (k == "LN") {
+            b.kind = ApproachKind::LN;
+        } else if (k == "CT") {
+            b.kind = ApproachKind::CT;
+        } else if (k == "LCT") {
+            b.kind = ApproachKind::LCT;
+        } else {
+            cur.setPosition(static_cast<size_t>(kind.data() - text.data()));
+            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"), {head});
+        }
+        Words w{&b.coords, &b.words};
+        w.polar = &b.polarWords;
+        w.length = &b.length;
+        w.angle = &b.angle;
+        w.radius = &b.radius;
+        uint32_t flags = kAxes | kComp | kFeed | kM | kPolar | kLength | kAngle | kRadius;
+        if (b.kind == ApproachKind::LT || b.kind == ApproachKind::LN) flags &= ~kRadius;
+        if (!c.parseWords(flags, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "LBL") {
+        Label b;
+        if (!parseLabelTarget(c, b.target, true)) return false;
+        if (!c.expectEnd()) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CALL") {
+        if (cur.acceptKeyword("LBL")) {
+            CallLabel b;
+            if (!parseLabelTarget(c, b.target, false)) return false;
+            if (cur.acceptKeyword("REP") || cur.acceptPrefix("REP")) {
+                double rep = 0.0;
+                if (!c.value(rep)) return false;
+                if (cur.acceptChar('/')) {  // "REP 2/2": the control shows repeats left/total
+                    double total = 0.0;
+                    if (!c.value(total)) return false;
+                    rep = total;
+                }
+                if (rep < 0.0 || rep > 65534.0) {
+                    return c.fail("range", KERF_TR_NOOP("REP must be between 0 and 65534"));
+                }
+                b.repeat = static_cast<int>(rep);
+            }
+            if (!c.expectEnd()) return false;
+            out.statement = b;
+            return true;
+        }
+        if (cur.acceptKeyword("PGM")) {
+            std::string_view path = cur.restUntilComment();
+            if (path.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
+            out.statement = CallPgm{std::string(path)};
+            return true;
+        }
+        if (cur.acceptKeyword("SELECTED")) return deferred("CALL SELECTED PGM");
+        return c.fail("syntax", KERF_TR_NOOP("LBL or PGM expected after CALL"));
+    }
+    if (head == "STOP") {
+        StopBlock b;
+        CommonWords words;
+        if (!c.parseWords(kM, {nullptr, &words})) return false;
+        b.m = words.m;
+        out.statement = b;
+        return true;
+    }
+    if (head == "M") {
+        cur.setPosition(headAt);
+        MFunctionBlock b;
+        if (!c.parseWords(kM | kFeed, {nullptr, &b.words})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "TOOL") {
+        if (cur.acceptKeyword("CALL")) {
+            ToolCall b;
+            if (auto name = cur.quoted()) {
+                b.name = std::string(*name);
+            } else if (isDigit(cur.peek())) {
+                auto number = cur.unsignedNumber();  // "5.1": tool 5, index 1
+                if (!number || *number > 32767) {
+                    return c.fail("range", KERF_TR_NOOP("tool number out of range"));
+                }
+                b.number = static_cast<int>(*number);
+            } else if (upper(cur.peek()) == 'Q') {
+                size_t at = cur.position();
+                auto ref = c.formula.parameter(true);
+                if (!ref) {
+                    cur.setPosition(at);
+                } else if (ref->kind == QKind::QS) {
+                    b.name = m_env ? m_env->string(ref->index) : std::string();
+                } else {
+                    double v = m_env ? m_env->number(*ref) : 0.0;
+                    b.number = static_cast<int>(std::lround(v));
+                }
+            }
+            if (auto axis = parseToolAxis(cur)) b.axis = axis;
+            while (!cur.atEnd()) {
+                double v = 0.0;
+                if (cur.acceptPrefix("DR2")) {
+                    if (!c.value(v)) return false;
+                    b.dr2 = v;
+                } else if (cur.acceptPrefix("DL")) {
+                    if (!c.value(v)) return false;
+                    b.dl = v;
+                } else if (cur.acceptPrefix("DR")) {
+                    if (!c.value(v)) return false;
+                    b.dr = v;
+                } else if (cur.acceptPrefix("S")) {
+                    if (!c.value(v)) return false;
+                    if (v < 0.0) return c.fail("range", KERF_TR_NOOP("the spindle speed must not be negative"));
+                    b.speed = v;
+                } else if (upper(cur.peek()) == 'F') {
+                    FeedWord feed;
+                    if (!c.parseFeed(feed)) return false;
+                    b.feed = feed.value;
+                } else {
+                    return c.unexpected();
+                }
+            }
+            out.statement = b;
+            return true;
+        }
+        if (cur.acceptKeyword("DEF")) {
+            ToolDef b;
+            if (auto name = cur.quoted()) {
+                b.name = std::string(*name);
+            } else if (isDigit(cur.peek())) {
+                auto number = cur.unsignedNumber();
+                b.number = static_cast<int>(number.value_or(0.0));
+            }
+            while (!cur.atEnd()) {
+                double v = 0.0;
+                if (cur.acceptPrefix("L")) {
+                    if (!c.value(v)) return false;
+                    b.length = v;
+                } else if (cur.acceptPrefix("R")) {
+                    if (!c.value(v)) return false;
+                    b.radius = v;
+                } else {
+                    return c.unexpected();
+                }
+            }
+            out.statement = b;
+            return true;
+        }
+        return c.fail("syntax", KERF_TR_NOOP("CALL or DEF expected after TOOL"));
+    }
+    if (head == "BEGIN" || head == "END") {
+        if (!cur.acceptKeyword("PGM")) return c.fail("syntax", KERF_TR_NOOP("PGM expected"));
+        std::string_view name = cur.word();
+        if (name.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
+        bool inch = false;
+        if (cur.acceptKeyword("INCH")) {
+            inch = true;
+        } else if (!cur.acceptKeyword("MM")) {
+            return c.fail("syntax", KERF_TR_NOOP("MM or INCH expected"));
+        }
+        if (!c.expectEnd()) return false;
+        if (head == "BEGIN") {
+            out.statement = BeginPgm{std::string(name), inch};
+        } else {
+            out.statement = EndPgm{std::string(name), inch};
+        }
+        return true;
+    }
+    if (head == "BLK") {
+        if (!cur.acceptKeyword("FORM")) return c.fail("syntax", KERF_TR_NOOP("FORM expected"));
+        BlkForm b;
+        if (cur.acceptKeyword("CYLINDER")) {
+            b.kind = BlkForm::Kind::Cylinder;
+            auto axis = parseToolAxis(cur);
+            if (!axis) return c.fail("syntax", KERF_TR_NOOP("axis expected"));
+            b.toolAxis = *axis;
+            while (!cur.atEnd()) {
+                double v = 0.0;
+                if (cur.acceptPrefix("RI")) {
+                    if (!c.value(v)) return false;
+                    b.innerRadius = v;
+                } else if (cur.acceptPrefix("DIST")) {
+                    if (!c.value(v)) return false;
+                    b.distance = v;
+                } else if (cur.acceptPrefix("D")) {
+                    if (!c.value(v)) return false;
+                    b.radius = v / 2.0;
+                } else if (cur.acceptPrefix("R")) {
+                    if (!c.value(v)) return false;
+                    b.radius = v;
+                } else if (cur.acceptPrefix("L")) {
+                    if (!c.value(v)) return false;
+                    b.length = v;
+                } else {
+                    return c.unexpected();
+                }
+            }
+            out.statement = b;
+            return true;
+        }
+        if (cur.peekKeyword("ROTATION")) return deferred("BLK FORM ROTATION");
+        auto kind = cur.unsignedNumber();
+        if (!kind || (*kind != 0.1 && *kind != 0.2)) {
+            return c.fail("syntax", KERF_TR_NOOP("0.1, 0.2 or CYLINDER expected"));
+        }
+        if (*kind == 0.1) {
+            b.kind = BlkForm::Kind::MinPoint;
+            auto axis = parseToolAxis(cur);
+            if (!axis) return c.fail("syntax", KERF_TR_NOOP("tool axis expected"));
+            b.toolAxis = *axis;
+        } else {
+            b.kind = BlkForm::Kind::MaxPoint;
+        }
+        if (!c.parseWords(kAxes, {&b.point})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "Q" || head == "QL" || head == "QR" || head == "QS" || head == "DECLARE") {
+        if (head == "DECLARE") {
+            if (!cur.acceptKeyword("STRING")) return deferred("DECLARE");
+        } else {
+            cur.setPosition(headAt);
+        }
+        size_t targetAt = cur.position();
+        auto ref = c.formula.parameter(true);
+        if (!ref) {
+            if (c.formula.problem()) return c.formulaFailed();
+            return c.fail("syntax", KERF_TR_NOOP("Q parameter expected"));
+        }
+        if (!cur.acceptChar('=')) return c.fail("syntax", KERF_TR_NOOP("'=' expected"));
+        if (ref->kind == QKind::QS) {
+            auto value = c.formula.stringExpression();
+            if (!value) return c.formulaFailed();
+            if (!c.expectEnd()) return false;
+            out.statement = QStringAssign{ref->index, std::move(*value)};
+            return true;
+        }
+        if (head == "DECLARE") {
+            cur.setPosition(targetAt);
+            return c.fail("syntax", KERF_TR_NOOP("DECLARE STRING needs a QS parameter"));
+        }
+        auto value = c.formula.expression();
+        if (!value) return c.formulaFailed();
+        if (!c.expectEnd()) return false;
+        out.statement = QAssign{*ref, *value};
+        return true;
+    }
+    if (head == "FN") {
+        auto fn = cur.unsignedInteger();
+        if (!fn) return c.fail("syntax", KERF_TR_NOOP("FN number expected"));
+        if (!cur.acceptChar(':')) return c.fail("syntax", KERF_TR_NOOP("':' expected after FN {1}"), {std::to_string(*fn)});
+        auto target = [&]() -> std::optional<QRef> {
+            auto ref = c.formula.parameter(false);
+            if (!ref) {
+                if (c.formula.problem()) {
+                    c.formulaFailed();
+                } else {
+                    c.fail("syntax", KERF_TR_NOOP("Q parameter expected"));
+                }
+                return std::nullopt;
+            }
+            if (!cur.acceptChar('=')) {
+                c.fail("syntax", KERF_TR_NOOP("'=' expected"));
+                return std::nullopt;
+            }
+            return ref;
+        };
+        auto operand = [&](double& v) {
+            auto value = c.formula.signedOperand();
+            if (!value) return c.formulaFailed();
+            v = *value;
+            return true;
+        };
+        switch (*fn) {
+            case 0:
+            case 1:
+            case 2:
+            case 3:
+            case 4:
+            case 8:
+            case 13: {
+                auto ref = target();
+                if (!ref) return false;
+                double a = 0.0, b = 0.0;
+                if (!operand(a)) return false;
+                size_t opAt = cur.position();
+                if (*fn != 0) {
+                    static const char* const kOps[] = {"", "+", "-", "*", "DIV", "", "", "", "LEN"};
+                    const char* op = *fn == 13 ? "ANG" : kOps[*fn];
+                    bool symbol = *fn >= 1 && *fn <= 3;
+                    bool ok = symbol ? cur.acceptChar(op[0]) : cur.acceptPrefix(op);
+                    if (!ok) return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {op});
+                    if (!operand(b)) return false;
+                }
+                double result = a;
+                switch (*fn) {
+                    case 1:
+                        result = a + b;
+                        break;
+                    case 2:
+                        result = a - b;
+                        break;
+                    case 3:
+                        result = a * b;
+                        break;
+                    case 4:
+                        if (b == 0.0 && m_env) {
+                            cur.setPosition(opAt);
+                            return c.fail("math", KERF_TR_NOOP("division by zero"));
+                        }
+                        result = b == 0.0 ? 0.0 : a / b;
+                        break;
+                    case 8:
+                        result = std::hypot(a, b);
+                        break;
+                    case 13: {
+                        result = std::atan2(b, a) * 180.0 / 3.14159265358979323846;
+                        if (result < 0.0) result += 360.0;
+                        break;
+                    }
+                    default:
+                        break;
+                }
+                if (!c.expectEnd()) return false;
+                out.statement = QAssign{*ref, result};
+                return true;
+            }
+            case 5:
+            case 6:
+            case 7: {
+                auto ref = target();
+                if (!ref) return false;
+                const char* op = *fn == 5 ? "SQRT" : (*fn == 6 ? "SIN" : "COS");
+                if (!cur.acceptKeyword(op)) return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {op});
+                double a = 0.0;
+                if (!operand(a)) return false;
+                double result;
+                if (*fn == 5) {
+                    if (a < 0.0 && m_env) return c.fail("math", KERF_TR_NOOP("square root of a negative number"));
+                    result = a < 0.0 ? 0.0 : std::sqrt(a);
+                } else {
+                    double rad = a * 3.14159265358979323846 / 180.0;
+                    result = *fn == 6 ? std::sin(rad) : std::cos(rad);
+                }
+                if (!c.expectEnd()) return false;
+                out.statement = QAssign{*ref, result};
+                return true;
+            }
+            case 9:
+            case 10:
+            case 11:
+            case 12: {
+                if (!cur.acceptKeyword("IF")) return c.fail("syntax", KERF_TR_NOOP("'IF' expected"));
+                ConditionalJump b;
+                if (!operand(b.left)) return false;
+                static const char* const kWords[] = {"EQU", "NE", "GT", "LT"};
+                const char* word = kWords[*fn - 9];
+                if (!cur.acceptKeyword(word)) return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {word});
+                b.comparison = static_cast<Comparison>(*fn - 9);
+                if (!operand(b.right)) return false;
+                if (!cur.acceptKeyword("GOTO")) return c.fail("syntax", KERF_TR_NOOP("'GOTO' expected"));
+                if (!cur.acceptKeyword("LBL") && !cur.acceptPrefix("LBL")) {
+                    return c.fail("syntax", KERF_TR_NOOP("'LBL' expected"));
+                }
+                if (!parseLabelTarget(c, b.target, false)) return false;
+                if (!c.expectEnd()) return false;
+                out.statement = b;
+                return true;
+            }
+            case 14: {
+                if (!cur.acceptKeyword("ERROR")) return c.fail("syntax", KERF_TR_NOOP("'ERROR' expected"));
+                if (!cur.acceptChar('=')) return c.fail("syntax", KERF_TR_NOOP("'=' expected"));
+                double number = 0.0;
+                if (!c.value(number)) return false;
+                if (!c.expectEnd()) return false;
+                out.statement = ErrorBlock{static_cast<int>(number)};
+                return true;
+            }
+            case 15: {
+                if (!cur.acceptKeyword("PRINT")) return c.fail("syntax", KERF_TR_NOOP("'PRINT' expected"));
+                PrintBlock b;
+                if (auto textValue = cur.quoted()) {
+                    b.text = std::string(*textValue);
+                } else {
+                    do {
+                        double v = 0.0;
+                        if (!operand(v)) return false;
+                        b.values.push_back(v);
+                    } while (cur.acceptChar('/'));
+                }
+                if (!c.expectEnd()) return false;
+                out.statement = b;
+                return true;
+            }
+            case 16: {
+                if (!cur.acceptKeyword("F-PRINT") && !cur.acceptPrefix("F-PRINT")) {
+                    return c.fail("syntax", KERF_TR_NOOP("'F-PRINT' expected"));
+                }
+                std::string_view rest = cur.restUntilComment();
+                size_t slash = rest.find(" / ");
+                if (slash == std::string_view::npos) slash = rest.find('/');
+                PrintBlock b;
+                b.formatted = true;
+                if (slash == std::string_view::npos) {
+                    return c.fail("syntax", KERF_TR_NOOP("'mask file / output file' expected"));
+                }
+                auto trim = [](std::string_view s) {
+                    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+                    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+                    return std::string(s);
+                };
+                b.maskFile = trim(rest.substr(0, slash));
+                b.outputFile = trim(rest.substr(slash + 1));
+                if (b.maskFile.empty() || b.outputFile.empty()) {
+                    return c.fail("syntax", KERF_TR_NOOP("'mask file / output file' expected"));
+                }
+                out.statement = b;
+                return true;
+            }
+            case 18: {
+                if (!cur.acceptKeyword("SYSREAD")) return c.fail("syntax", KERF_TR_NOOP("'SYSREAD' expected"));
+                SysRead b;
+                auto ref = target();
+                if (!ref) return false;
+                b.target = *ref;
+                double v = 0.0;
+                if (!cur.acceptPrefix("ID")) return c.fail("syntax", KERF_TR_NOOP("'ID' expected"));
+                if (!c.value(v)) return false;
+                b.id = static_cast<int>(v);
+                if (cur.acceptPrefix("NR")) {
+                    if (!c.value(v)) return false;
+                    b.nr = static_cast<int>(v);
+                }
+                if (cur.acceptPrefix("IDX")) {
+                    if (!c.value(v)) return false;
+                    b.idx = static_cast<int>(v);
+                    b.hasIdx = true;
+                }
+                if (!c.expectEnd()) return false;
+                out.statement = b;
+                return true;
+            }
+            case 23:
+            case 24: {
+                if (!cur.acceptKeyword("CDATA")) return c.fail("syntax", KERF_TR_NOOP("'CDATA' expected"));
+                CircleData b;
+                b.points = *fn == 23 ? 3 : 4;
+                auto ref = target();
+                if (!ref) return false;
+                b.target = *ref;
+                auto source = c.formula.parameter(false);
+                if (!source) return c.fail("syntax", KERF_TR_NOOP("Q parameter expected"));
+                b.source = *source;
+                if (b.target.index + 2 >= qLimit(b.target.kind) ||
+                    b.source.index + 2 * b.points - 1 >= qLimit(b.source.kind)) {
+                    return c.fail("range", KERF_TR_NOOP("the parameter range runs past the last Q parameter"));
+                }
+                if (!c.expectEnd()) return false;
+                out.statement = b;
+                return true;
+            }
+            case 26: {
+                if (!cur.acceptKeyword("TABOPEN")) return c.fail("syntax", KERF_TR_NOOP("'TABOPEN' expected"));
+                std::string_view path = cur.restUntilComment();
+                if (path.empty()) return c.fail("syntax", KERF_TR_NOOP("table name expected"));
+                out.statement = TableOpen{std::string(path)};
+                return true;
+            }
+            case 27:
+            case 28: {
+                TableAccess b;
+                b.write = *fn == 27;
+                if (!cur.acceptKeyword(b.write ? "TABWRITE" : "TABREAD")) {
+                    return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {b.write ? "TABWRITE" : "TABREAD"});
+                }
+                if (!b.write) {
+                    auto ref = target();
+                    if (!ref) return false;
+                    b.parameter = *ref;
+                }
+                double row = 0.0;
+                if (!c.value(row)) return false;
+                b.row = static_cast<int>(row);
+                if (!cur.acceptChar('/')) return c.fail("syntax", KERF_TR_NOOP("'/' expected"));
+                auto columns = cur.quoted();
+                if (!columns) return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
+                b.columns = std::string(*columns);
+                for (size_t start = 0; start <= columns->size();) {
+                    size_t comma = columns->find(',', start);
+                    if (comma == std::string_view::npos) comma = columns->size();
+                    if (columns->substr(start, comma - start).find_first_not_of(' ') !=
+                        std::string_view::npos) {
+                        ++b.columnCount;
+                    }
+                    start = comma + 1;
+                }
+                if (b.columnCount == 0) return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
+                if (b.write) {
+                    if (!cur.acceptChar('=')) return c.fail("syntax", KERF_TR_NOOP("'=' expected"));
+                    auto ref = c.formula.parameter(false);
+                    if (!ref) return c.fail("syntax", KERF_TR_NOOP("Q parameter expected"));
+                    b.parameter = *ref;
+                }
+                if (b.parameter.index + b.columnCount > static_cast<size_t>(qLimit(b.parameter.kind))) {
+                    return c.fail("range", KERF_TR_NOOP("the parameter range runs past the last Q parameter"));
+                }
+                if (!c.expectEnd()) return false;
+                out.statement = b;
+                return true;
+            }
+            case 17:
+            case 19:
+            case 20:
+            case 29:
+            case 31:
+            case 37:
+            case 38:
+                return deferred("FN " + std::to_string(*fn));
+            default:
+                return c.fail("syntax", KERF_TR_NOOP("FN {1} does not exist"), {std::to_string(*fn)});
+        }
+    }
+    if (head == "CYCL") {
+        if (cur.acceptKeyword("DEF")) {
+            CycleDefinition b;
+            auto number = cur.unsignedNumber();
+            if (!number || *number < 0.0 || *number > 9999.0) {
+                return c.fail("syntax", KERF_TR_NOOP("cycle number expected"));
+            }
+            double whole = std::floor(*number + 1e-9);
+            b.number = static_cast<int>(whole);
+            double fraction = *number - whole;
+            bool oldStyle = false;
+            std::string_view numberText = text.substr(0, cur.position());
+            if (numberText.find_last_of(".,") != std::string_view::npos &&
+                numberText.find_last_of(".,") > numberText.find_last_of(' ')) {
+                oldStyle = true;
+                b.subNumber = static_cast<int>(std::lround(fraction * 10.0));
+            }
+            // Only the first segment is the header; further segments are "Qnnn=value ;comment".
+            size_t headerEnd =
+                line.segments.size() > 1 ? line.segments[1].joinedOffset : text.size();
+            Cursor hc(text.substr(0, headerEnd), cur.position());
+            std::string header(hc.restUntilComment());
+            if (oldStyle) {
+                b.rest = std::move(header);
+            } else {
+                b.name = std::move(header);
+            }
+            for (size_t s = 1; s < line.segments.size(); ++s) {
+                size_t segmentEnd = s + 1 < line.segments.size()
+                                        ? line.segments[s + 1].joinedOffset
+                                        : text.size();
+                Cursor sc(text.substr(0, segmentEnd), line.segments[s].joinedOffset);
+                if (sc.atEnd()) continue;
+                CycleParameter p;
+                auto failAt = [&](const char* message) {
+                    cur.setPosition(sc.position());
+                    return c.fail("syntax", message);
+                };
+                if (!sc.acceptPrefix("Q")) return failAt(KERF_TR_NOOP("cycle parameter Qnnn= expected"));
+                if (sc.acceptPrefix("S")) p.isString = true;
+                auto q = sc.unsignedInteger();
+                if (!q || *q >= kQCount) return failAt(KERF_TR_NOOP("cycle parameter number expected"));
+                p.q = static_cast<uint16_t>(*q);
+                if (!sc.acceptChar('=')) return failAt(KERF_TR_NOOP("'=' expected"));
+                p.raw = std::string(sc.restUntilComment());
+                p.comment = std::string(sc.comment());
+                if (!p.isString) {
+                    // Plain numbers and Q references are evaluated now (the TNC captures cycle
+                    // parameters at definition); keywords such as PREDEF stay in `raw`.
+                    Cursor vc(p.raw);
+                    FormulaParser fp(vc, m_env);
+                    char lead = upper(vc.peek());
+                    if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
+                        lead == '.') {
+                        auto v = fp.wordValue();
+                        if (v && vc.atEnd()) p.value = *v;
+                    }
+                }
+                b.parameters.push_back(std::move(p));
+            }
+            out.statement = std::move(b);
+            return true;
+        }
+        if (cur.acceptKeyword("CALL")) {
+            CycleCall b;
+            uint32_t flags = kFeed | kM;
+            if (cur.acceptKeyword("PAT")) {
+                b.kind = CycleCall::Kind::Pattern;
+            } else if (cur.acceptKeyword("POS")) {
+                b.kind = CycleCall::Kind::Position;
+                flags |= kAxes;
+            }
+            if (!c.parseWords(flags, {&b.coords, &b.words})) return false;
+            out.statement = b;
+            return true;
+        }
+        return c.fail("syntax", KERF_TR_NOOP("DEF or CALL expected after CYCL"));
+    }
+    static const char* const kDeferredHeads[] = {
+        "PATTERN", "TCH", "SEL", "GLOBAL", "PLANE", "FUNCTION", "TRANS", "CONTOUR", "SPEC",
+        "FPOL", "FL", "FLT", "FC", "FCT", "FSELECT", "FSELCT", "LN", "PRESET", "POLARKIN",
+        "FACING", "TABDATA", "OPEN", "LIFTOFF", "WAIT", "ERROR", "MONITORING", "PARAXCOMP",
+        "PARAXMODE", "RESET", "SYSREAD", "CFGWRITE", "CFGREAD"};
+    for (const char* candidate : kDeferredHeads) {
+        if (head == candidate) {
+            std::string feature = head;
+            if (head == "TCH") feature = "TCH PROBE";
+            if (head == "PATTERN") feature = "PATTERN DEF";
+            if (head == "GLOBAL") feature = "GLOBAL DEF";
+            if (head == "SEL") {
+                std::string_view what = cur.word();
+                feature = "SEL " + upperCopy(what);
+            }
+            if (head[0] == 'F' && head != "FUNCTION" && head != "FACING") feature = "FK programming";
+            return deferred(feature);
+        }
+    }
+    cur.setPosition(headAt);
+    if (head.empty()) return c.unexpected();
+    return c.fail("syntax", KERF_TR_NOOP("unknown block '{1}'"), {head});
+}
+
+namespace {
+
+bool parseLabelTarget(BlockParser::Context& c, LabelTarget& target, bool allowZero) {
+    Cursor& cur = c.cursor;
+    if (auto name = cur.quoted()) {
+        if (name->empty()) return c.fail("syntax", KERF_TR_NOOP("label name must not be empty"));
+        target.name = std::string(*name);
+        return true;
+    }
+    char first = upper(cur.peek());
+    if (first == 'Q') {
+        auto ref = c.formula.parameter(true);
+        if (!ref) return c.formulaFailed() || c.fail("syntax", KERF_TR_NOOP("label expected"));
+        if (ref->kind == QKind::QS) {
+            target.stringParameter = ref->index;
+            return true;
+        }
+        return c.fail("syntax", KERF_TR_NOOP("label number or name expected"));
+    }
+    auto number = cur.unsignedInteger();
+    if (!number) return c.fail("syntax", KERF_TR_NOOP("label number or name expected"));
+    if (*number > 65535 || (*number == 0 && !allowZero)) {
+        return c.fail("range", KERF_TR_NOOP("label number must be between {1} and 65535"),
+                      {allowZero ? "0" : "1"});
+    }
+    target.number = static_cast<int>(*number);
+    return true;
+}
+
+}  // namespace
+
+}  // namespace kerf::klartext

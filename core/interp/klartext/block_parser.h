@@ -1,0 +1,32 @@
+#pragma once
+
+#include "core/interp/klartext/formula.h"
+#include "core/interp/klartext/statements.h"
+#include "core/program/line_reader.h"
+
+namespace kerf::klartext {
+
+// Parses one logical line of a conversational program into a statement, evaluating the values it
+// contains through `environment` (nullptr: syntax check only, values read as 0).
+class BlockParser {
+public:
+    explicit BlockParser(FormulaEnvironment* environment) : m_env(environment) {}
+
+    // False on a syntax error; problem() then says where (offset in line.text) and what.
+    bool parse(const program::LogicalLine& line, ParsedBlock& out);
+    const ParseProblem& problem() const { return m_problem; }
+
+    // The head word of a block (after its number), for callers that need to know the block kind
+    // before parsing it, e.g. "CYCL" or "LBL".
+    static std::string_view headWord(std::string_view text);
+
+    struct Context;  // parse state shared by the helpers in block_parser.cpp
+
+private:
+    bool parseStatement(Context& c, const program::LogicalLine& line, ParsedBlock& out);
+
+    FormulaEnvironment* m_env;
+    ParseProblem m_problem;
+};
+
+}  // namespace kerf::klartext

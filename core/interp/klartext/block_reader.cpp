@@ -1,0 +1,45 @@
+#include "core/interp/klartext/block_reader.h"
+
+#include "core/interp/klartext/block_parser.h"
+#include "core/interp/klartext/cursor.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+// "  Q200=2 ;..." or "  QS500=..." : an indented cycle parameter line.
+bool isIndentedParameterLine(std::string_view line) {
+    size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i == 0 || i >= line.size() || upper(line[i]) != 'Q') return false;
+    ++i;
+    if (i < line.size() && upper(line[i]) == 'S') ++i;
+    size_t digits = i;
+    while (i < line.size() && isDigit(line[i])) ++i;
+    if (i == digits) return false;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    return i < line.size() && line[i] == '=';
+}
+
+bool takesParameterLines(std::string_view head) {
+    return head == "CYCL" || head == "GLOBAL" || head == "PATTERN" || head == "TCH";
+}
+
+}  // namespace
+
+bool BlockReader::next(program::LogicalLine& line) {
+    if (!m_lines.next(line)) return false;
+    if (line.segments.size() == 1) {
+        std::string_view head = BlockParser::headWord(line.text);
+        if (head.size() >= 3 && head.size() <= 7) {
+            std::string upperHead(head);
+            for (char& c : upperHead) c = upper(c);
+            if (takesParameterLines(upperHead)) {
+                while (isIndentedParameterLine(m_lines.peekLine())) m_lines.appendNextLine(line);
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace kerf::klartext

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/interp/klartext/cursor.h"
+#include "core/interp/klartext/q_parameters.h"
+
+namespace kerf::klartext {
+
+// What a formula may read while it is evaluated.
+class FormulaEnvironment {
+public:
+    virtual ~FormulaEnvironment() = default;
+    virtual double number(QRef ref) = 0;
+    virtual const std::string& string(uint16_t index) = 0;
+    virtual bool stringDefined(uint16_t index) = 0;
+    // SYSSTR(ID.. NR..): system strings (program name, date); empty if unknown.
+    virtual std::optional<std::string> systemString(int id, int nr) = 0;
+};
+
+struct ParseProblem {
+    size_t offset = 0;
+    std::string code;
+    std::string messageTemplate;
+    std::vector<std::string> args;
+};
+
+// Parses and evaluates TNC formulas in one pass. Precedence, highest first: parentheses and
+// functions (SIN Q1 * 2 is (SIN Q1) * 2), signs, powers (^, left to right), * / %, + -. Angles in
+// degrees. Without an environment the parser only checks syntax and every value reads as 0.
+class FormulaParser {
+public:
+    FormulaParser(Cursor& cursor, FormulaEnvironment* environment)
+        : m_cursor(cursor), m_env(environment) {}
+
+    std::optional<double> expression();
+    std::optional<std::string> stringExpression();
+    // "+Q1", "-5", "Q2", "+QL3": the operands of FN 0..FN 13 and jump conditions.
+    std::optional<double> signedOperand();
+    // A Q/QL/QR/QS reference; `strings` allows QS.
+    std::optional<QRef> parameter(bool strings);
+    // A value after a keyword such as X, F or LEN: signed number, signed Q reference or
+    // "(formula)".
+    std::optional<double> wordValue();
+
+    const std::optional<ParseProblem>& problem() const { return m_problem; }
+    bool checkOnly() const { return m_env == nullptr; }
+
+private:
+    std::optional<double> additive();
+    std::optional<double> multiplicative();
+    std::optional<double> power();
+    std::optional<double> unary();
+    std::optional<double> primary();
+    std::optional<double> stringFunction(std::string_view name);
+    std::optional<std::string> stringTerm();
+    std::optional<std::string> stringSource(std::string_view prefix);
+    std::optional<double> tagValue(std::string_view tag);
+    double read(QRef ref);
+    std::optional<double> fail(std::string code, std::string messageTemplate,
+                               std::vector<std::string> args = {});
+    std::optional<double> domainCheck(double value, const char* what);
+
+    Cursor& m_cursor;
+    FormulaEnvironment* m_env;
+    std::optional<ParseProblem> m_problem;
+    size_t m_problemOffset = 0;
+};
+
+}  // namespace kerf::klartext

@@ -1,0 +1,96 @@
+#include <cmath>
+
+#include "core/base/translate.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+bool compare(Comparison comparison, double a, double b) {
+    // Decimal program values rarely add up exactly in binary: equality allows rounding noise.
+    const bool equal = std::fabs(a - b) <= 1e-9 * std::max({1.0, std::fabs(a), std::fabs(b)});
+    switch (comparison) {
+        case Comparison::Equal:
+            return equal;
+        case Comparison::NotEqual:
+            return !equal;
+        case Comparison::Greater:
+            return a > b && !equal;
+        case Comparison::Less:
+            return a < b && !equal;
+    }
+    return false;
+}
+
+}  // namespace
+
+void KlartextInterpreter::execute(const Statement& statement) {
+    struct Visitor {
+        KlartextInterpreter& self;
+
+        void operator()(const Empty&) {}
+        void operator()(const BeginPgm&) {}
+        void operator()(const EndPgm&) { self.endOfProgram(true); }
+        void operator()(const BlkForm& b) { self.executeBlkForm(b); }
+        void operator()(const ToolCall& b) { self.executeToolCall(b); }
+        void operator()(const ToolDef& b) { self.executeToolDef(b); }
+        void operator()(const LinearBlock& b) { self.executeLinear(b); }
+        void operator()(const CircleCenter& b) { self.executeCircleCenter(b); }
+        void operator()(const CircleBlock& b) {
+            self.executeCircle(b.coords, b.direction, b.words, std::nullopt);
+        }
+        void operator()(const CircleRadiusBlock& b) {
+            self.executeCircle(b.coords, b.direction, b.words, b.radius);
+        }
+        void operator()(const CircleTangentBlock& b) {
+            self.executeTangentCircle(b.coords, nullptr, b.words);
+        }
+        void operator()(const RoundBlock& b) { self.executeCorner(false, b.radius, b.feed); }
+        void operator()(const ChamferBlock& b) { self.executeCorner(true, b.length, b.feed); }
+        void operator()(const LinePolarBlock& b) { self.executeLinePolar(b); }
+        void operator()(const CirclePolarBlock& b) { self.executeCirclePolar(b); }
+        void operator()(const CircleTangentPolarBlock& b) {
+            self.executeTangentCircle(b.coords, &b.polar, b.words);
+        }
+        void operator()(const ApproachBlock& b) { self.executeApproach(b); }
+        void operator()(const Label& b) {
+            if (b.target.number && *b.target.number == 0) self.returnFromLabel();
+        }
+        void operator()(const CallLabel& b) { self.callLabel(b); }
+        void operator()(const CallPgm& b) { self.callProgram(b); }
+        void operator()(const StopBlock& b) {
+            if (!self.hasM(b.m, 0) && !self.hasM(b.m, 1)) {
+                self.emit(canon::ProgramStop{canon::StopKind::Program, -1});
+            }
+            CommonWords words;
+            words.m = b.m;
+            self.executeMOnly(words);
+        }
+        void operator()(const MFunctionBlock& b) { self.executeMOnly(b.words); }
+        void operator()(const QAssign& b) { self.m_q.set(b.target, b.value); }
+        void operator()(const QStringAssign& b) { self.m_q.setString(b.index, b.value); }
+        void operator()(const ConditionalJump& b) {
+            if (compare(b.comparison, b.left, b.right)) self.gotoLabel(b.target);
+        }
+        void operator()(const ErrorBlock& b) { self.executeError(b); }
+        void operator()(const PrintBlock& b) { self.executePrint(b); }
+        void operator()(const SysRead& b) { self.executeSysRead(b); }
+        void operator()(const CircleData& b) { self.executeCircleData(b); }
+        void operator()(const TableOpen& b) { self.executeTableOpen(b); }
+        void operator()(const TableAccess& b) { self.executeTableAccess(b); }
+        void operator()(const CycleDefinition& b) {
+            self.fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
+                      {std::to_string(b.number)});
+        }
+        void operator()(const CycleCall&) {
+            self.fail("not-supported", KERF_TR_NOOP("cycle calls are not supported yet"));
+        }
+        void operator()(const Deferred& b) {
+            self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
+        }
+    };
+    std::visit(Visitor{*this}, statement);
+}
+
+}  // namespace kerf::klartext

@@ -1,0 +1,392 @@
+#include "core/interp/klartext/klartext_interpreter.h"
+
+#include <algorithm>
+
+#include "core/base/translate.h"
+
+namespace kerf::klartext {
+
+// Gives formulas read access to the Q parameters and system strings.
+class KlartextInterpreter::Environment final : public FormulaEnvironment {
+public:
+    explicit Environment(KlartextInterpreter& owner) : m_owner(owner) {}
+    double number(QRef ref) override { return m_owner.m_q.get(ref); }
+    const std::string& string(uint16_t index) override { return m_owner.m_q.getString(index); }
+    bool stringDefined(uint16_t index) override { return m_owner.m_q.stringDefined(index); }
+    std::optional<std::string> systemString(int id, int nr) override {
+        if (id == 10010 && !m_owner.m_levels.empty()) {
+            const ProgramFile* program = m_owner.m_levels.back().program;
+            if (nr == 1) return program->source->path();              // program path
+            if (nr == 2) return program->folder.string();             // its folder
+        }
+        return std::nullopt;
+    }
+
+private:
+    KlartextInterpreter& m_owner;
+};
+
+KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
+                                         KlartextSettings settings)
+    : m_sources(sources),
+      m_settings(std::move(settings)),
+      m_root(m_settings.ncRoot.empty() ? std::filesystem::current_path() : m_settings.ncRoot),
+      m_environment(std::make_unique<Environment>(*this)),
+      m_parser(m_environment.get()),
+      m_path(m_out) {
+    if (m_settings.machine != nullptr) {
+        if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;
+    }
+    m_programmed = m_settings.startPosition;
+    m_path.reset(m_programmed);
+    if (!m_settings.remanentFile.empty()) {
+        if (auto error = m_q.loadRemanent(m_settings.remanentFile)) {
+            m_diagnostics.push_back(*error);
+        }
+    }
+}
+
+KlartextInterpreter::~KlartextInterpreter() = default;
+
+// ---- loading ---------------------------------------------------------------------------------
+
+ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
+                                              std::string* error) {
+    for (auto& p : m_programs) {
+        if (p->source->path() == path.string()) return p.get();
+    }
+    auto source = program::SourceText::load(path);
+    if (!source) {
+        if (error) *error = source.error().message();
+        return nullptr;
+    }
+    auto program = std::make_unique<ProgramFile>();
+    program->source = *source;
+    program->fileId = m_sources.add(path.string());
+    program->folder = path.parent_path();
+    checkProgram(*program);
+    m_programs.push_back(std::move(program));
+    return m_programs.back().get();
+}
+
+bool KlartextInterpreter::load(const std::filesystem::path& path) {
+    std::string error;
+    ProgramFile* program = loadProgram(path, &error);
+    if (program == nullptr) {
+        m_diagnostics.push_back(Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
+                                                 KERF_TR_NOOP("cannot read the program: {1}"),
+                                                 error));
+        return false;
+    }
+    m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
+                         program->diagnostics.end());
+    if (hasErrors(program->diagnostics)) return false;
+    startLevel(program, 0, 0);
+    m_status = interp::RunStatus::BudgetUsed;
+    return true;
+}
+
+bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
+    auto program = std::make_unique<ProgramFile>();
+    program->source = program::SourceText::fromString(std::move(text), path);
+    program->fileId = m_sources.add(path);
+    program->folder = std::filesystem::path(path).parent_path();
+    checkProgram(*program);
+    m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
+                         program->diagnostics.end());
+    bool ok = !hasErrors(program->diagnostics);
+    m_programs.push_back(std::move(program));
+    if (!ok) return false;
+    startLevel(m_programs.back().get(), 0, 0);
+    m_status = interp::RunStatus::BudgetUsed;
+    return true;
+}
+
+void KlartextInterpreter::startLevel(ProgramFile* program, size_t returnOffset,
+                                     uint32_t returnLine) {
+    Level level;
+    level.program = program;
+    level.returnOffset = returnOffset;
+    level.returnLine = returnLine;
+    level.inch = program->inch;
+    m_levels.push_back(level);
+    m_inch = program->inch;
+    m_reader.emplace(program->source->text());
+}
+
+// ---- diagnostics -----------------------------------------------------------------------------
+
+Diagnostic KlartextInterpreter::diagnosticAt(Severity severity, const char* code,
+                                             const char* messageTemplate,
+                                             std::vector<std::string> args) const {
+    Diagnostic d;
+    d.severity = severity;
+    d.code = code;
+    d.messageTemplate = messageTemplate;
+    d.args = std::move(args);
+    d.file = m_sources.path(m_at.fileId);
+    d.line = m_at.line;
+    d.column = m_at.column;
+    return d;
+}
+
+void KlartextInterpreter::fail(const char* code, const char* messageTemplate,
+                               std::vector<std::string> args) {
+    m_diagnostics.push_back(diagnosticAt(Severity::Error, code, messageTemplate, std::move(args)));
+    m_status = interp::RunStatus::Failed;
+}
+
+void KlartextInterpreter::warn(const char* code, const char* messageTemplate,
+                               std::vector<std::string> args) {
+    m_diagnostics.push_back(
+        diagnosticAt(Severity::Warning, code, messageTemplate, std::move(args)));
+}
+
+bool KlartextInterpreter::checkPathError(const std::optional<interp::PathError>& error) {
+    if (!error) return true;
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.code = error->code;
+    d.messageTemplate = error->messageTemplate;
+    d.file = m_sources.path(error->location.fileId);
+    d.line = error->location.line;
+    d.column = error->location.column;
+    m_diagnostics.push_back(std::move(d));
+    m_status = interp::RunStatus::Failed;
+    return false;
+}
+
+void KlartextInterpreter::emit(canon::CommandBody body) {
+    m_path.addCommand(canon::Command{m_at, std::move(body)});
+}
+
+// ---- the run loop ----------------------------------------------------------------------------
+
+interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudget) {
+    m_out.target = &sink;
+    if (m_status != interp::RunStatus::BudgetUsed) return m_status;
+    if (!m_started) {
+        m_started = true;
+        m_path.reset(m_programmed);
+    }
+    while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
+        m_blockOffset = m_reader->offset();
+        if (!m_reader->next(m_line)) {
+            endOfProgram(false);
+            continue;
+        }
+        ++m_blocks;
+        const ProgramFile& program = *m_levels.back().program;
+        m_at = SourceLocation{program.fileId, m_line.firstLine, 1, -1};
+        if (!m_parser.parse(m_line, m_block)) {
+            // The syntax was checked on load, so this is an evaluation error (division by zero,
+            // a function outside its domain ...).
+            const ParseProblem& p = m_parser.problem();
+            m_at.line = m_line.lineAt(p.offset);
+            m_at.column = m_line.columnAt(p.offset);
+            fail(p.code.c_str(), p.messageTemplate.c_str(), p.args);
+            break;
+        }
+        m_at.blockNumber = m_block.blockNumber;
+        m_currentM = MWords{};
+        if (m_block.hidden && m_settings.blockSkip) continue;
+        execute(m_block.statement);
+    }
+    m_out.target = nullptr;
+    return m_status;
+}
+
+void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
+    if (m_status != interp::RunStatus::NeedsSync || !m_pendingSync) return;
+    PendingSync pending = *m_pendingSync;
+    m_pendingSync.reset();
+    // The operator may have moved the machine at a stop: continue from where it really is.
+    if ((world.position.xyz() - m_path.toolPosition().xyz()).norm() > 1e-6) {
+        m_programmed = world.position;
+        m_path.reset(world.position);
+    }
+    SysRead read;
+    read.id = pending.id;
+    read.nr = pending.nr;
+    read.idx = pending.idx;
+    read.hasIdx = true;
+    int axis = pending.idx - 1;
+    double value = 0.0;
+    if (axis >= 0 && axis < kAxisCount) {
+        value = world.position.values[static_cast<size_t>(axis)];
+        if (pending.id == 240) value += m_settings.presetInMachine.values[static_cast<size_t>(axis)];
+    }
+    m_q.set(pending.target, value / lengthScale());
+    m_status = interp::RunStatus::BudgetUsed;
+}
+
+bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
+    if (m_levels.size() > 1) {
+        // Back to the calling program after its CALL PGM block.
+        Level finished = m_levels.back();
+        m_levels.pop_back();
+        m_q.popLocalLevel();
+        size_t level = m_levels.size() - 1;
+        while (!m_frames.empty() && m_frames.back().level > level) m_frames.pop_back();
+        const Level& caller = m_levels.back();
+        m_inch = caller.inch;
+        m_reader.emplace(caller.program->source->text());
+        m_reader->seek(finished.returnOffset, finished.returnLine);
+        return true;
+    }
+    if (!explicitEnd) {
+        // Ran off the end of the file without END PGM (the check warned about it).
+    }
+    finish(true, -1);
+    return false;
+}
+
+void KlartextInterpreter::finish(bool emitEnd, int mCode) {
+    if (!checkPathError(m_path.flush())) return;
+    if (emitEnd && !m_endEmitted) {
+        if (m_spindle != canon::SpindleDirection::Stopped) {
+            emit(canon::SpindleControl{canon::SpindleDirection::Stopped, m_spindleSpeed});
+            m_spindle = canon::SpindleDirection::Stopped;
+        }
+        if (m_coolant) {
+            emit(canon::CoolantControl{false, false});
+            m_coolant = false;
+        }
+        emit(canon::ProgramStop{canon::StopKind::End, mCode});
+        m_endEmitted = true;
+    }
+    if (m_q.remanentChanged() && !m_settings.remanentFile.empty()) {
+        if (auto error = m_q.saveRemanent(m_settings.remanentFile)) m_diagnostics.push_back(*error);
+    }
+    if (m_status != interp::RunStatus::Failed) m_status = interp::RunStatus::Finished;
+}
+
+// ---- labels and calls ------------------------------------------------------------------------
+
+void KlartextInterpreter::jumpTo(const LabelPosition& position) {
+    m_reader->seek(position.offset, position.line);
+}
+
+const LabelPosition* KlartextInterpreter::resolveLabel(const LabelTarget& target) {
+    const ProgramFile& program = *m_levels.back().program;
+    const LabelPosition* position = nullptr;
+    std::string shown;
+    if (target.number) {
+        position = program.findLabel(*target.number);
+        shown = std::to_string(*target.number);
+    } else if (target.name) {
+        position = program.findLabel(*target.name);
+        shown = "\"" + *target.name + "\"";
+    } else if (target.stringParameter) {
+        const std::string& name = m_q.getString(*target.stringParameter);
+        position = program.findLabel(name);
+        shown = "\"" + name + "\" (QS" + std::to_string(*target.stringParameter) + ")";
+    }
+    if (position == nullptr) fail("label", KERF_TR_NOOP("label {1} is not defined"), {shown});
+    return position;
+}
+
+void KlartextInterpreter::callLabel(const CallLabel& call) {
+    const size_t level = m_levels.size() - 1;
+    if (!m_frames.empty() && m_frames.back().level == level &&
+        m_frames.back().callOffset == m_blockOffset) {
+        // Execution came back to the CALL block of a program section repeat.
+        LabelFrame& frame = m_frames.back();
+        if (frame.remaining > 0) {
+            --frame.remaining;
+            jumpTo(frame.target);
+        } else {
+            m_frames.pop_back();
+        }
+        return;
+    }
+    const LabelPosition* target = resolveLabel(call.target);
+    if (target == nullptr) return;
+    if (static_cast<int>(m_frames.size()) >= m_settings.maxLabelNesting) {
+        fail("nesting", KERF_TR_NOOP("subprograms nested deeper than {1} levels"),
+             {std::to_string(m_settings.maxLabelNesting)});
+        return;
+    }
+    LabelFrame frame;
+    frame.level = level;
+    frame.callOffset = m_blockOffset;
+    frame.target = *target;
+    frame.returnOffset = m_reader->offset();
+    frame.returnLine = m_reader->line();
+    frame.remaining = std::max(1, call.repeat) - 1;
+    m_frames.push_back(frame);
+    jumpTo(*target);
+}
+
+void KlartextInterpreter::returnFromLabel() {
+    const size_t level = m_levels.size() - 1;
+    if (m_frames.empty() || m_frames.back().level != level) return;  // LBL 0 as a plain marker
+    LabelFrame& frame = m_frames.back();
+    if (frame.remaining > 0) {
+        --frame.remaining;
+        jumpTo(frame.target);
+        return;
+    }
+    m_reader->seek(frame.returnOffset, frame.returnLine);
+    m_frames.pop_back();
+}
+
+void KlartextInterpreter::gotoLabel(const LabelTarget& target) {
+    const LabelPosition* position = resolveLabel(target);
+    if (position == nullptr) return;
+    // Leaving a called section by a jump ends that call.
+    const size_t level = m_levels.size() - 1;
+    while (!m_frames.empty() && m_frames.back().level == level) {
+        const LabelFrame& f = m_frames.back();
+        const bool sectionRepeat = f.callOffset > f.target.offset;
+        const bool inside = position->offset >= f.target.offset &&
+                            (!sectionRepeat || position->offset <= f.callOffset);
+        if (inside) break;
+        m_frames.pop_back();
+    }
+    jumpTo(*position);
+}
+
+void KlartextInterpreter::callProgram(const CallPgm& call) {
+    const ProgramFile& caller = *m_levels.back().program;
+    auto path = m_root.resolve(call.path, caller.folder);
+    if (!path) {
+        fail("path", path.error().messageTemplate.c_str(), path.error().args);
+        return;
+    }
+    std::filesystem::path target = *path;
+    if (!std::filesystem::exists(target)) {
+        // The TNC accepts the name without its extension for conversational programs.
+        for (const char* ext : {".H", ".h"}) {
+            std::filesystem::path withExt = target;
+            withExt += ext;
+            if (std::filesystem::exists(withExt)) {
+                target = withExt;
+                break;
+            }
+        }
+    }
+    if (static_cast<int>(m_levels.size()) > m_settings.maxProgramNesting) {
+        fail("nesting", KERF_TR_NOOP("program calls nested deeper than {1} levels"),
+             {std::to_string(m_settings.maxProgramNesting)});
+        return;
+    }
+    std::string error;
+    ProgramFile* program = loadProgram(target, &error);
+    if (program == nullptr) {
+        fail("io", KERF_TR_NOOP("cannot call program {1}: {2}"), {call.path, error});
+        return;
+    }
+    if (hasErrors(program->diagnostics)) {
+        m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
+                             program->diagnostics.end());
+        fail("call", KERF_TR_NOOP("the called program {1} has errors"), {call.path});
+        return;
+    }
+    m_q.pushLocalLevel();
+    size_t returnOffset = m_reader->offset();
+    uint32_t returnLine = m_reader->line();
+    startLevel(program, returnOffset, returnLine);
+}
+
+}  // namespace kerf::klartext

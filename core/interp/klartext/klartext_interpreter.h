@@ -1,0 +1,206 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/interp/interpreter.h"
+#include "core/interp/klartext/block_parser.h"
+#include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/program_file.h"
+#include "core/interp/klartext/q_parameters.h"
+#include "core/interp/path/path_builder.h"
+#include "core/machine/machine_config.h"
+#include "core/program/nc_root.h"
+#include "core/program/source_registry.h"
+#include "core/tables/free_table.h"
+#include "core/tables/tool_table.h"
+
+namespace kerf::klartext {
+
+struct KlartextSettings {
+    const machine::MachineConfig* machine = nullptr;  // required
+    // Tool data for TOOL CALL. Without a table every tool is accepted with zero geometry and a
+    // warning, so that programs can be checked without the machine's tool table.
+    const tables::ToolTable* tools = nullptr;
+    std::filesystem::path ncRoot;         // CALL PGM, FN 16 and FN 26 stay inside it
+    std::filesystem::path remanentFile;   // QR parameters; empty: not kept between runs
+    Pose presetInMachine{};               // the active preset (workpiece datum), machine coords
+    Pose startPosition{};                 // tool tip at the start, workpiece coordinates
+    bool blockSkip = false;               // skip blocks marked with '/'
+    int maxLabelNesting = 19;
+    int maxProgramNesting = 19;
+};
+
+// The TNC 320 conversational ("Klartext") front end.
+class KlartextInterpreter final : public interp::Interpreter {
+public:
+    KlartextInterpreter(program::SourceRegistry& sources, KlartextSettings settings);
+    ~KlartextInterpreter() override;
+
+    // Loads and checks the main program. False if it cannot run (diagnostics() says why).
+    bool load(const std::filesystem::path& path);
+    bool loadText(std::string text, const std::string& path);
+
+    interp::RunStatus run(canon::Sink& sink, uint64_t blockBudget) override;
+    void resume(const interp::WorldSnapshot& world) override;
+    const DiagnosticList& diagnostics() const override { return m_diagnostics; }
+    uint64_t blocksExecuted() const override { return m_blocks; }
+    Pose nominalPosition() const override { return m_programmed; }
+
+    const QParameters& parameters() const { return m_q; }
+
+private:
+    class Environment;
+    class ForwardingSink final : public canon::Sink {
+    public:
+        void consume(const canon::Command& command) override {
+            if (target != nullptr) target->consume(command);
+        }
+        canon::Sink* target = nullptr;
+    };
+
+    struct Level {  // one program in the CALL PGM chain
+        ProgramFile* program = nullptr;
+        size_t returnOffset = 0;
+        uint32_t returnLine = 0;
+        bool inch = false;
+    };
+    struct LabelFrame {  // an active CALL LBL
+        size_t level = 0;
+        size_t callOffset = 0;
+        LabelPosition target;
+        size_t returnOffset = 0;
+        uint32_t returnLine = 0;
+        int remaining = 0;
+    };
+    struct ToolState {
+        int number = -1;
+        std::string name;
+        double length = 0.0, radius = 0.0, radius2 = 0.0;
+        double tableDl = 0.0, tableDr = 0.0, tableDr2 = 0.0;
+        double callDl = 0.0, callDr = 0.0, callDr2 = 0.0;
+        int cutterCount = 0;
+        double effectiveRadius() const { return radius + tableDr + callDr; }
+        double effectiveLength() const { return length + tableDl + callDl; }
+        canon::ToolGeometry geometry() const {
+            return {effectiveLength(), effectiveRadius(), radius2 + tableDr2 + callDr2};
+        }
+    };
+    struct Pole {
+        Vec2 point{0.0, 0.0};
+        Plane plane = Plane::XY;
+        bool set = false;
+    };
+    struct PendingSync {
+        QRef target;
+        int id = 0, nr = 0, idx = 0;
+    };
+
+    // Program flow (klartext_interpreter.cpp).
+    ProgramFile* loadProgram(const std::filesystem::path& path, std::string* error);
+    void startLevel(ProgramFile* program, size_t returnOffset, uint32_t returnLine);
+    bool endOfProgram(bool explicitEnd);
+    void finish(bool emitEnd, int mCode);
+    void execute(const Statement& statement);
+    void jumpTo(const LabelPosition& position);
+    const LabelPosition* resolveLabel(const LabelTarget& target);
+    void callLabel(const CallLabel& call);
+    void returnFromLabel();
+    void gotoLabel(const LabelTarget& target);
+    void callProgram(const CallPgm& call);
+
+    // Motion and machine functions (klartext_motion.cpp).
+    void executeLinear(const LinearBlock& block);
+    void executeCircle(const Coordinates& coords, Direction direction, const CommonWords& words,
+                       std::optional<double> radius);
+    void executeTangentCircle(const Coordinates& coords, const PolarWords* polar,
+                              const CommonWords& words);
+    void executeCircleCenter(const CircleCenter& block);
+    void executeLinePolar(const LinePolarBlock& block);
+    void executeCirclePolar(const CirclePolarBlock& block);
+    void executeApproach(const ApproachBlock& block);
+    void executeCorner(bool chamfer, double size, const FeedWord& feed);
+    bool resolveFeed(const FeedWord& word, bool& rapid, double& feed);
+    void executeToolCall(const ToolCall& call);
+    void executeToolDef(const ToolDef& def);
+    void executeBlkForm(const BlkForm& blk);
+    void executeMOnly(const CommonWords& words);
+    void applyMFunctions(const MWords& m, bool atStart);
+    bool hasM(const MWords& m, int number) const;
+    void submitMove(const ContourElement& element, bool rapid, double feed, const CommonWords& words);
+    void emit(canon::CommandBody body);
+    Pose targetOf(const Coordinates& coords) const;
+    Plane workingPlane() const;
+    double lengthScale() const { return m_inch ? 25.4 : 1.0; }
+    bool checkPathError(const std::optional<interp::PathError>& error);
+
+    // Q parameter functions and FN blocks (klartext_functions.cpp).
+    void executeSysRead(const SysRead& read);
+    std::optional<double> sysReadValue(const SysRead& read, bool& needsSync);
+    void executeCircleData(const CircleData& data);
+    void executePrint(const PrintBlock& print);
+    void executeTableOpen(const TableOpen& open);
+    void executeTableAccess(const TableAccess& access);
+    void executeError(const ErrorBlock& block);
+
+    void fail(const char* code, const char* messageTemplate, std::vector<std::string> args = {});
+    void warn(const char* code, const char* messageTemplate, std::vector<std::string> args = {});
+    Diagnostic diagnosticAt(Severity severity, const char* code, const char* messageTemplate,
+                            std::vector<std::string> args) const;
+
+    program::SourceRegistry& m_sources;
+    KlartextSettings m_settings;
+    program::NcRoot m_root;
+    std::unique_ptr<FormulaEnvironment> m_environment;  // an Environment
+    BlockParser m_parser;
+    ForwardingSink m_out;
+    interp::PathBuilder m_path;
+    QParameters m_q;
+
+    std::vector<std::unique_ptr<ProgramFile>> m_programs;
+    std::vector<Level> m_levels;
+    std::vector<LabelFrame> m_frames;
+    std::optional<BlockReader> m_reader;
+    program::LogicalLine m_line;
+    ParsedBlock m_block;
+    size_t m_blockOffset = 0;
+    SourceLocation m_at;
+
+    DiagnosticList m_diagnostics;
+    interp::RunStatus m_status = interp::RunStatus::Failed;
+    uint64_t m_blocks = 0;
+    bool m_started = false;
+    bool m_endEmitted = false;
+    std::optional<PendingSync> m_pendingSync;
+
+    // Modal state.
+    Pose m_programmed{};  // last programmed contour point, workpiece coordinates
+    bool m_inch = false;
+    double m_feed = 0.0;
+    bool m_feedSet = false;
+    canon::FeedMode m_feedMode = canon::FeedMode::PerMinute;
+    double m_toolCallFeed = 0.0;
+    CompWord m_comp = CompWord::Off;
+    Axis m_toolAxis = Axis::Z;
+    Pole m_pole;
+    Direction m_direction = Direction::None;
+    std::optional<Vec2> m_lastTangent;  // end tangent of the last contour element (CT)
+    Plane m_lastTangentPlane = Plane::XY;
+    canon::SpindleDirection m_spindle = canon::SpindleDirection::Stopped;
+    canon::SpindleDirection m_lastSpindleDirection = canon::SpindleDirection::Stopped;
+    double m_spindleSpeed = 0.0;
+    bool m_coolant = false;
+    ToolState m_tool;
+    int m_preparedTool = -1;
+    std::map<int, tables::ToolData> m_programTools;  // TOOL DEF n L.. R.. in old programs
+    std::optional<Vec3> m_blankMin;
+    MWords m_currentM;  // M functions of the block being executed (M91/M92 change coordinates)
+    std::optional<tables::FreeTable> m_openTable;
+    bool m_warnedNoToolTable = false;
+};
+
+}  // namespace kerf::klartext

@@ -1,0 +1,402 @@
+// Path functions: L, C, CR, CT, LP, CP, CTP, CC, RND, CHF, APPR and DEP.
+#include <cmath>
+
+#include "core/base/translate.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+// Difference allowed between the start and end radius of a C block.
+constexpr double kCircleTolerance = 0.01;
+
+interp::CompSide sideOf(CompWord comp) {
+    switch (comp) {
+        case CompWord::Left:
+            return interp::CompSide::Left;
+        case CompWord::Right:
+            return interp::CompSide::Right;
+        default:
+            return interp::CompSide::None;
+    }
+}
+
+Vec2 inPlane(Plane plane, const Pose& pose) {
+    PlaneAxes axes = planeAxes(plane);
+    return {pose[axes.first], pose[axes.second]};
+}
+
+void setInPlane(Plane plane, Pose& pose, const Vec2& p) {
+    PlaneAxes axes = planeAxes(plane);
+    pose[axes.first] = p.x();
+    pose[axes.second] = p.y();
+}
+
+}  // namespace
+
+Plane KlartextInterpreter::workingPlane() const { return planeForToolAxis(m_toolAxis); }
+
+Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
+    Pose target = m_programmed;
+    const double scale = lengthScale();
+    const bool machine = hasM(m_currentM, 91) || hasM(m_currentM, 92);
+    for (int i = 0; i < kAxisCount; ++i) {
+        const AxisWord& word = coords.axes[static_cast<size_t>(i)];
+        if (!word.present) continue;
+        auto axis = static_cast<Axis>(i);
+        const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
+        const double value = rotary ? word.value : word.value * scale;
+        double& out = target.values[static_cast<size_t>(i)];
+        if (machine) {
+            // Machine coordinates of the spindle reference: the tool length is not compensated.
+            out = value - m_settings.presetInMachine.values[static_cast<size_t>(i)];
+            if (axis == m_toolAxis) out -= m_tool.effectiveLength();
+        } else {
+            out = word.incremental ? out + value : value;
+        }
+    }
+    return target;
+}
+
+void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
+                                     const CommonWords& words) {
+    (void)words;
+    interp::PathMove move;
+    move.geometry = element;
+    move.rapid = rapid;
+    move.feed = feed;
+    move.side = sideOf(m_comp);
+    move.location = m_at;
+    if (!checkPathError(m_path.addMove(move))) return;
+    m_programmed = element.end;
+    if (element.movesInPlane()) {
+        m_lastTangent = element.endTangent();
+        m_lastTangentPlane = element.plane;
+    }
+}
+
+void KlartextInterpreter::executeLinear(const LinearBlock& block) {
+    bool rapid = false;
+    double feed = 0.0;
+    m_currentM = block.words.m;
+    if (!resolveFeed(block.words.feed, rapid, feed)) return;
+    if (block.words.comp != CompWord::None) m_comp = block.words.comp;
+    applyMFunctions(block.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    Pose target = targetOf(block.coords);
+    submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
+               block.words);
+    applyMFunctions(block.words.m, false);
+}
+
+void KlartextInterpreter::executeCircleCenter(const CircleCenter& block) {
+    Plane plane = workingPlane();
+    Axis first = Axis::X, second = Axis::Y;
+    int count = 0;
+    for (int i = 0; i < kAxisCount; ++i) {
+        if (!block.coords.axes[static_cast<size_t>(i)].present) continue;
+        if (count == 0) first = static_cast<Axis>(i);
+        if (count == 1) second = static_cast<Axis>(i);
+        ++count;
+    }
+    if (count == 2) {
+        auto p = planeFromAxes(first, second);
+        if (!p) {
+            fail("geometry", KERF_TR_NOOP("CC axes {1} and {2} do not span a plane"),
+                 {std::string(1, axisLetter(first)), std::string(1, axisLetter(second))});
+            return;
+        }
+        plane = *p;
+    } else if (count > 2) {
+        fail("geometry", KERF_TR_NOOP("CC takes two coordinates of a plane"));
+        return;
+    }
+    // Missing coordinates come from the last programmed position.
+    Pose point = targetOf(block.coords);
+    m_pole.point = inPlane(plane, point);
+    m_pole.plane = plane;
+    m_pole.set = true;
+}
+
+void KlartextInterpreter::executeCircle(const Coordinates& coords, Direction direction,
+                                        const CommonWords& words,
+                                        std::optional<double> radius) {
+    bool rapid = false;
+    double feed = 0.0;
+    m_currentM = words.m;
+    if (!resolveFeed(words.feed, rapid, feed)) return;
+    if (rapid) {
+        fail("feed", KERF_TR_NOOP("circular moves cannot use FMAX"));
+        return;
+    }
+    if (words.comp != CompWord::None) m_comp = words.comp;
+    if (direction == Direction::None) direction = m_direction;
+    if (direction == Direction::None) {
+        fail("geometry", KERF_TR_NOOP("direction of rotation DR+ or DR- missing"));
+        return;
+    }
+    m_direction = direction;
+    const bool ccw = direction == Direction::Ccw;
+    applyMFunctions(words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    Pose target = targetOf(coords);
+    Plane plane;
+    Vec2 center;
+    if (radius) {
+        plane = workingPlane();
+        auto c = arcCenterFromRadius(inPlane(plane, m_programmed), inPlane(plane, target),
+                                     *radius * lengthScale(), ccw);
+        if (!c) {
+            fail("geometry",
+                 KERF_TR_NOOP("no circle of radius {1} passes through the start and end point"),
+                 {std::to_string(*radius)});
+            return;
+        }
+        center = *c;
+    } else {
+        if (!m_pole.set) {
+            fail("geometry", KERF_TR_NOOP("circle centre CC is not defined"));
+            return;
+        }
+        plane = m_pole.plane;
+        center = m_pole.point;
+        double r0 = (inPlane(plane, m_programmed) - center).norm();
+        double r1 = (inPlane(plane, target) - center).norm();
+        if (std::fabs(r0 - r1) > kCircleTolerance) {
+            fail("geometry",
+                 KERF_TR_NOOP("the end point is not on the circle: radius {1} at the start, {2} at "
+                              "the end"),
+                 {std::to_string(r0), std::to_string(r1)});
+            return;
+        }
+    }
+    double sweep = arcSweep(inPlane(plane, m_programmed), inPlane(plane, target), center, ccw);
+    submitMove(ContourElement::arc(plane, m_programmed, target, center, sweep), false, feed,
+               words);
+    applyMFunctions(words.m, false);
+}
+
+void KlartextInterpreter::executeTangentCircle(const Coordinates& coords,
+                                               const PolarWords* polar,
+                                               const CommonWords& words) {
+    bool rapid = false;
+    double feed = 0.0;
+    m_currentM = words.m;
+    if (!resolveFeed(words.feed, rapid, feed)) return;
+    if (words.comp != CompWord::None) m_comp = words.comp;
+    const Plane plane = polar ? m_pole.plane : workingPlane();
+    if (!m_lastTangent || m_lastTangentPlane != plane) {
+        fail("geometry", KERF_TR_NOOP("a tangential arc needs a contour element before it"));
+        return;
+    }
+    applyMFunctions(words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    Pose target = targetOf(coords);
+    if (polar) {
+        if (!m_pole.set) {
+            fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
+            return;
+        }
+        Vec2 from = inPlane(plane, m_programmed) - m_pole.point;
+        double r = polar->radius ? *polar->radius * lengthScale() : from.norm();
+        if (polar->radius && polar->radiusIncremental) r += from.norm();
+        double a = polar->angle ? degToRad(*polar->angle) : std::atan2(from.y(), from.x());
+        if (polar->angle && polar->angleIncremental) a += std::atan2(from.y(), from.x());
+        setInPlane(plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+    }
+    auto arc = tangentArc(inPlane(plane, m_programmed), *m_lastTangent, inPlane(plane, target));
+    if (!arc) {
+        fail("geometry", KERF_TR_NOOP("the end point lies on the tangent: no arc possible"));
+        return;
+    }
+    submitMove(ContourElement::arc(plane, m_programmed, target, arc->center, arc->sweep), false,
+               feed, words);
+    applyMFunctions(words.m, false);
+}
+
+void KlartextInterpreter::executeLinePolar(const LinePolarBlock& block) {
+    bool rapid = false;
+    double feed = 0.0;
+    m_currentM = block.words.m;
+    if (!resolveFeed(block.words.feed, rapid, feed)) return;
+    if (block.words.comp != CompWord::None) m_comp = block.words.comp;
+    if (!m_pole.set) {
+        fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
+        return;
+    }
+    applyMFunctions(block.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    const Plane plane = m_pole.plane;
+    Pose target = targetOf(block.coords);
+    Vec2 from = inPlane(plane, m_programmed) - m_pole.point;
+    double r = block.polar.radius ? *block.polar.radius * lengthScale() : from.norm();
+    if (block.polar.radius && block.polar.radiusIncremental) r += from.norm();
+    double current = std::atan2(from.y(), from.x());
+    double a = block.polar.angle ? degToRad(*block.polar.angle) : current;
+    if (block.polar.angle && block.polar.angleIncremental) a += current;
+    setInPlane(plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+    submitMove(ContourElement::line(plane, m_programmed, target), rapid, feed, block.words);
+    applyMFunctions(block.words.m, false);
+}
+
+void KlartextInterpreter::executeCirclePolar(const CirclePolarBlock& block) {
+    bool rapid = false;
+    double feed = 0.0;
+    m_currentM = block.words.m;
+    if (!resolveFeed(block.words.feed, rapid, feed)) return;
+    if (rapid) {
+        fail("feed", KERF_TR_NOOP("circular moves cannot use FMAX"));
+        return;
+    }
+    if (block.words.comp != CompWord::None) m_comp = block.words.comp;
+    if (!m_pole.set) {
+        fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
+        return;
+    }
+    if (!block.polar.angle) {
+        fail("geometry", KERF_TR_NOOP("CP needs a polar angle PA or IPA"));
+        return;
+    }
+    Direction direction = block.direction;
+    if (block.polar.angleIncremental && direction == Direction::None) {
+        direction = *block.polar.angle >= 0.0 ? Direction::Ccw : Direction::Cw;
+    }
+    if (direction == Direction::None) direction = m_direction;
+    if (direction == Direction::None) {
+        fail("geometry", KERF_TR_NOOP("direction of rotation DR+ or DR- missing"));
+        return;
+    }
+    m_direction = direction;
+    const bool ccw = direction == Direction::Ccw;
+    if (block.polar.angleIncremental && *block.polar.angle != 0.0 &&
+        (*block.polar.angle > 0.0) != ccw) {
+        fail("geometry", KERF_TR_NOOP("the sign of IPA does not match DR"));
+        return;
+    }
+    applyMFunctions(block.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    const Plane plane = m_pole.plane;
+    Pose target = targetOf(block.coords);
+    Vec2 from = inPlane(plane, m_programmed) - m_pole.point;
+    const double r = from.norm();
+    const double current = std::atan2(from.y(), from.x());
+    double sweep;
+    Vec2 end;
+    if (block.polar.angleIncremental) {
+        sweep = degToRad(*block.polar.angle);
+        end = m_pole.point + r * Vec2(std::cos(current + sweep), std::sin(current + sweep));
+    } else {
+        double a = degToRad(*block.polar.angle);
+        end = m_pole.point + r * Vec2(std::cos(a), std::sin(a));
+        sweep = arcSweep(inPlane(plane, m_programmed), end, m_pole.point, ccw);
+    }
+    setInPlane(plane, target, end);
+    submitMove(ContourElement::arc(plane, m_programmed, target, m_pole.point, sweep), false, feed,
+               block.words);
+    applyMFunctions(block.words.m, false);
+}
+
+void KlartextInterpreter::executeCorner(bool chamfer, double size, const FeedWord& feedWord) {
+    std::optional<double> feed;
+    if (feedWord.kind != FeedWord::Kind::None) {
+        bool rapid = false;
+        double value = 0.0;
+        double modal = m_feed;
+        bool modalSet = m_feedSet;
+        if (!resolveFeed(feedWord, rapid, value)) return;
+        // The feed of RND/CHF applies to the rounding only.
+        m_feed = modal;
+        m_feedSet = modalSet;
+        feed = value;
+    }
+    size *= lengthScale();
+    auto error = chamfer ? m_path.addChamfer(size, feed, m_at) : m_path.addRounding(size, feed, m_at);
+    checkPathError(error);
+}
+
+void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
+    bool rapid = false;
+    double feed = 0.0;
+    m_currentM = block.words.m;
+    if (!resolveFeed(block.words.feed, rapid, feed)) return;
+    interp::ApproachSpec spec;
+    switch (block.kind) {
+        case ApproachKind::LT:
+            spec.kind = interp::ApproachKind::Tangent;
+            break;
+        case ApproachKind::LN:
+            spec.kind = interp::ApproachKind::Normal;
+            break;
+        case ApproachKind::CT:
+            spec.kind = interp::ApproachKind::Circle;
+            break;
+        case ApproachKind::LCT:
+            spec.kind = interp::ApproachKind::LineCircle;
+            break;
+    }
+    const char* name = block.depart ? "DEP" : "APPR";
+    const bool needsLength = block.kind == ApproachKind::LT || block.kind == ApproachKind::LN;
+    if (needsLength && (!block.length || *block.length <= 0.0)) {
+        fail("geometry", KERF_TR_NOOP("{1} needs a positive length LEN"), {name});
+        return;
+    }
+    if (block.kind == ApproachKind::CT && (!block.angle || !block.radius || *block.radius == 0.0 ||
+                                           *block.angle <= 0.0 || *block.angle > 360.0)) {
+        fail("geometry", KERF_TR_NOOP("{1} CT needs an angle CCA (0 to 360) and a radius R"),
+             {name});
+        return;
+    }
+    if (block.kind == ApproachKind::LCT && (!block.radius || *block.radius == 0.0)) {
+        fail("geometry", KERF_TR_NOOP("{1} LCT needs a radius R"), {name});
+        return;
+    }
+    spec.length = block.length.value_or(0.0) * lengthScale();
+    spec.angleDeg = block.angle.value_or(0.0);
+    spec.radius = block.radius.value_or(0.0) * lengthScale();
+    spec.feed = feed;
+    spec.rapidToHelper = rapid;
+    spec.location = m_at;
+    Pose target = targetOf(block.coords);
+    if (block.polar) {
+        if (!m_pole.set) {
+            fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
+            return;
+        }
+        Vec2 from = inPlane(m_pole.plane, m_programmed) - m_pole.point;
+        double r = block.polarWords.radius ? *block.polarWords.radius * lengthScale() : from.norm();
+        if (block.polarWords.radius && block.polarWords.radiusIncremental) r += from.norm();
+        double current = std::atan2(from.y(), from.x());
+        double a = block.polarWords.angle ? degToRad(*block.polarWords.angle) : current;
+        if (block.polarWords.angle && block.polarWords.angleIncremental) a += current;
+        setInPlane(m_pole.plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+    }
+    applyMFunctions(block.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    if (!block.depart) {
+        if (block.words.comp != CompWord::Left && block.words.comp != CompWord::Right) {
+            fail("geometry", KERF_TR_NOOP("APPR needs radius compensation RL or RR"));
+            return;
+        }
+        m_comp = block.words.comp;
+        spec.side = sideOf(m_comp);
+        spec.contourPoint = target;
+        spec.moveToolAxis = block.coords.has(m_toolAxis);
+        if (!checkPathError(m_path.addApproach(spec))) return;
+        m_programmed = target;
+    } else {
+        if (block.kind == ApproachKind::LCT && !block.polar &&
+            (block.coords.present & ~axisBit(m_toolAxis)) == 0) {
+            fail("geometry", KERF_TR_NOOP("DEP LCT needs the end point"));
+            return;
+        }
+        spec.endPoint = target;
+        if (!checkPathError(m_path.addDeparture(spec))) return;
+        m_comp = CompWord::Off;
+        m_programmed = m_path.toolPosition();
+        m_lastTangent.reset();
+    }
+    applyMFunctions(block.words.m, false);
+}
+
+}  // namespace kerf::klartext

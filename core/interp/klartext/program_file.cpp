@@ -1,0 +1,148 @@
+#include "core/interp/klartext/program_file.h"
+
+#include <set>
+#include <vector>
+
+#include "core/interp/klartext/block_parser.h"
+#include "core/interp/klartext/block_reader.h"
+
+namespace kerf::klartext {
+
+const LabelPosition* ProgramFile::findLabel(int number) const {
+    auto it = numberedLabels.find(number);
+    return it == numberedLabels.end() ? nullptr : &it->second;
+}
+
+const LabelPosition* ProgramFile::findLabel(const std::string& name) const {
+    auto it = namedLabels.find(name);
+    return it == namedLabels.end() ? nullptr : &it->second;
+}
+
+namespace {
+
+struct PendingTarget {
+    LabelTarget target;
+    uint32_t line;
+    uint32_t column;
+};
+
+std::string labelText(const LabelTarget& t) {
+    return t.number ? std::to_string(*t.number) : "\"" + t.name.value_or("") + "\"";
+}
+
+}  // namespace
+
+void checkProgram(ProgramFile& program) {
+    DiagnosticList& out = program.diagnostics;
+    out.clear();
+    program.numberedLabels.clear();
+    program.namedLabels.clear();
+    const std::string& file = program.source->path();
+    BlockReader reader(program.source->text());
+    program::LogicalLine line;
+    BlockParser parser(nullptr);
+    ParsedBlock block;
+    std::vector<PendingTarget> targets;
+    bool sawBegin = false, sawEnd = false, firstBlock = true;
+    std::string beginName;
+    int64_t lastNumber = -1;
+    size_t numbered = 0, unnumbered = 0;
+    uint32_t firstUnnumberedLine = 0;
+    bool reportedOrder = false;
+
+    auto diag = [&](Severity s, const char* code, uint32_t l, uint32_t c, const char* text,
+                    std::vector<std::string> args = {}) {
+        Diagnostic d = Diagnostic::make(s, code, file, l, c, text);
+        d.args = std::move(args);
+        out.push_back(std::move(d));
+    };
+
+    while (reader.next(line)) {
+        if (!parser.parse(line, block)) {
+            const ParseProblem& p = parser.problem();
+            Diagnostic d = Diagnostic::make(Severity::Error, p.code, file, line.lineAt(p.offset),
+                                            line.columnAt(p.offset), p.messageTemplate);
+            d.args = p.args;
+            out.push_back(std::move(d));
+            firstBlock = false;
+            continue;
+        }
+        const bool empty = std::holds_alternative<Empty>(block.statement);
+        if (block.blockNumber >= 0) {
+            ++numbered;
+            if (block.blockNumber <= lastNumber && !reportedOrder) {
+                diag(Severity::Warning, "block-number", line.firstLine, 1,
+                     KERF_TR_NOOP("block number {1} is out of order (after {2})"),
+                     {std::to_string(block.blockNumber), std::to_string(lastNumber)});
+                reportedOrder = true;
+            }
+            lastNumber = block.blockNumber;
+        } else if (!line.text.empty()) {
+            if (unnumbered++ == 0) firstUnnumberedLine = line.firstLine;
+        }
+        const Statement& s = block.statement;
+        if (const auto* begin = std::get_if<BeginPgm>(&s)) {
+            if (!firstBlock || sawBegin) {
+                diag(Severity::Error, "structure", line.firstLine, 1,
+                     KERF_TR_NOOP("BEGIN PGM must be the first block"));
+            }
+            sawBegin = true;
+            beginName = begin->name;
+            program.inch = begin->inch;
+        } else if (const auto* end = std::get_if<EndPgm>(&s)) {
+            if (sawBegin && end->name != beginName) {
+                diag(Severity::Warning, "structure", line.firstLine, 1,
+                     KERF_TR_NOOP("END PGM {1} does not match BEGIN PGM {2}"), {end->name, beginName});
+            }
+            sawEnd = true;
+        } else if (const auto* label = std::get_if<Label>(&s)) {
+            LabelPosition position{line.nextOffset, reader.line()};
+            bool duplicate = false;
+            if (label->target.number) {
+                if (*label->target.number != 0) {
+                    duplicate = !program.numberedLabels.emplace(*label->target.number, position).second;
+                }
+            } else if (label->target.name) {
+                duplicate = !program.namedLabels.emplace(*label->target.name, position).second;
+            }
+            if (duplicate) {
+                diag(Severity::Error, "label", line.firstLine, 1,
+                     KERF_TR_NOOP("label {1} is defined twice"), {labelText(label->target)});
+            }
+        } else if (const auto* call = std::get_if<CallLabel>(&s)) {
+            targets.push_back({call->target, line.firstLine, 1});
+        } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {
+            targets.push_back({jump->target, line.firstLine, 1});
+        } else if (const auto* deferred = std::get_if<Deferred>(&s)) {
+            diag(Severity::Warning, "not-supported", line.firstLine, 1,
+                 KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
+                 {deferred->feature});
+        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
+            diag(Severity::Warning, "not-supported", line.firstLine, 1,
+                 KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past this block"),
+                 {std::to_string(cycle->number)});
+        }
+        if (!empty) firstBlock = false;
+    }
+    for (const PendingTarget& t : targets) {
+        if (t.target.stringParameter) continue;  // resolved at run time
+        bool known = t.target.number ? program.findLabel(*t.target.number) != nullptr
+                                     : program.findLabel(*t.target.name) != nullptr;
+        if (!known) {
+            diag(Severity::Error, "label", t.line, t.column, KERF_TR_NOOP("label {1} is not defined"),
+                 {labelText(t.target)});
+        }
+    }
+    if (numbered > 0 && unnumbered > 0) {
+        diag(Severity::Warning, "block-number", firstUnnumberedLine, 1,
+             KERF_TR_NOOP("block has no number while others have"));
+    }
+    if (!sawBegin) {
+        diag(Severity::Warning, "structure", 1, 1, KERF_TR_NOOP("the program has no BEGIN PGM block"));
+    }
+    if (sawBegin && !sawEnd) {
+        diag(Severity::Warning, "structure", reader.line(), 1, KERF_TR_NOOP("the program has no END PGM block"));
+    }
+}
+
+}  // namespace kerf::klartext

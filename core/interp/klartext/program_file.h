@@ -1,0 +1,38 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include "core/base/diagnostic.h"
+#include "core/program/source_text.h"
+
+namespace kerf::klartext {
+
+// Where execution continues after a label: the line after the LBL block.
+struct LabelPosition {
+    size_t offset = 0;
+    uint32_t line = 0;
+};
+
+// A loaded conversational program with its label index, built by a full syntax check.
+struct ProgramFile {
+    std::shared_ptr<const program::SourceText> source;
+    uint32_t fileId = 0;
+    std::filesystem::path folder;
+    std::unordered_map<int, LabelPosition> numberedLabels;
+    std::unordered_map<std::string, LabelPosition> namedLabels;
+    bool inch = false;
+    DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
+
+    const LabelPosition* findLabel(int number) const;
+    const LabelPosition* findLabel(const std::string& name) const;
+};
+
+// Checks every block of the program's syntax, indexes its labels and reports what cannot run:
+// unknown jump targets, labels defined twice, missing BEGIN/END PGM, block numbers out of order,
+// and (as warnings) features this release parses but does not execute.
+void checkProgram(ProgramFile& program);
+
+}  // namespace kerf::klartext

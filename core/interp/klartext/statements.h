@@ -1,0 +1,274 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/geometry/axes.h"
+#include "core/interp/klartext/q_parameters.h"
+
+// One conversational block after parsing. Values are already evaluated (Q parameters read when the
+// block is parsed for execution; 0 when it is parsed only to check syntax).
+namespace kerf::klartext {
+
+struct AxisWord {
+    bool present = false;
+    bool incremental = false;
+    double value = 0.0;
+};
+
+struct Coordinates {
+    std::array<AxisWord, kAxisCount> axes{};
+    AxisMask present = 0;
+    bool has(Axis a) const { return (present & axisBit(a)) != 0; }
+    const AxisWord& operator[](Axis a) const { return axes[static_cast<size_t>(a)]; }
+};
+
+struct PolarWords {
+    std::optional<double> radius;  // PR
+    bool radiusIncremental = false;
+    std::optional<double> angle;  // PA
+    bool angleIncremental = false;
+};
+
+enum class CompWord : uint8_t { None, Off, Left, Right };  // (absent), R0, RL, RR
+
+struct FeedWord {
+    enum class Kind : uint8_t { None, Value, Max, Auto, PerRevolution, PerTooth };
+    Kind kind = Kind::None;
+    double value = 0.0;
+};
+
+struct MWord {
+    int number = 0;
+    std::optional<double> parameter;  // M140 MB value
+    bool maxParameter = false;        // M140 MB MAX
+};
+
+struct MWords {
+    std::array<MWord, 6> list{};
+    uint8_t count = 0;
+};
+
+enum class Direction : uint8_t { None, Ccw, Cw };  // DR+ / DR-
+
+struct CommonWords {
+    CompWord comp = CompWord::None;
+    FeedWord feed;
+    MWords m;
+};
+
+struct Empty {};  // blank line, ';' comment or '*' structure block
+
+struct BeginPgm {
+    std::string name;
+    bool inch = false;
+};
+struct EndPgm {
+    std::string name;
+    bool inch = false;
+};
+
+struct BlkForm {
+    enum class Kind : uint8_t { MinPoint, MaxPoint, Cylinder };
+    Kind kind = Kind::MinPoint;
+    Axis toolAxis = Axis::Z;
+    Coordinates point;
+    double radius = 0.0, innerRadius = 0.0, length = 0.0, distance = 0.0;
+};
+
+struct ToolCall {
+    std::optional<int> number;
+    std::optional<std::string> name;
+    std::optional<Axis> axis;
+    std::optional<double> speed;
+    std::optional<double> feed;
+    std::optional<double> dl, dr, dr2;
+};
+
+struct ToolDef {
+    std::optional<int> number;
+    std::optional<std::string> name;
+    std::optional<double> length, radius;  // old programs define the tool in the program
+};
+
+struct LinearBlock {  // L
+    Coordinates coords;
+    CommonWords words;
+};
+struct CircleCenter {  // CC
+    Coordinates coords;
+};
+struct CircleBlock {  // C
+    Coordinates coords;
+    Direction direction = Direction::None;
+    CommonWords words;
+};
+struct CircleRadiusBlock {  // CR
+    Coordinates coords;
+    double radius = 0.0;
+    Direction direction = Direction::None;
+    CommonWords words;
+};
+struct CircleTangentBlock {  // CT
+    Coordinates coords;
+    CommonWords words;
+};
+struct RoundBlock {  // RND
+    double radius = 0.0;
+    FeedWord feed;
+};
+struct ChamferBlock {  // CHF
+    double length = 0.0;
+    FeedWord feed;
+};
+struct LinePolarBlock {  // LP
+    PolarWords polar;
+    Coordinates coords;  // tool-axis coordinate
+    CommonWords words;
+};
+struct CirclePolarBlock {  // CP
+    PolarWords polar;
+    Coordinates coords;  // helix: tool-axis coordinate
+    Direction direction = Direction::None;
+    CommonWords words;
+};
+struct CircleTangentPolarBlock {  // CTP
+    PolarWords polar;
+    Coordinates coords;
+    CommonWords words;
+};
+
+enum class ApproachKind : uint8_t { LT, LN, CT, LCT };
+
+struct ApproachBlock {  // APPR / DEP
+    bool depart = false;
+    ApproachKind kind = ApproachKind::LT;
+    bool polar = false;
+    Coordinates coords;
+    PolarWords polarWords;
+    std::optional<double> length;  // LEN
+    std::optional<double> angle;   // CCA
+    std::optional<double> radius;  // R
+    CommonWords words;
+};
+
+struct LabelTarget {
+    std::optional<int> number;
+    std::optional<std::string> name;
+    std::optional<uint16_t> stringParameter;  // CALL LBL QS5: the name is QS5's value
+};
+
+struct Label {
+    LabelTarget target;
+};
+struct CallLabel {
+    LabelTarget target;
+    int repeat = 0;  // REP
+};
+struct CallPgm {
+    std::string path;
+};
+struct StopBlock {
+    MWords m;
+};
+struct MFunctionBlock {  // "M3 M8" or "L M6"-style blocks without motion
+    CommonWords words;
+};
+
+struct QAssign {
+    QRef target;
+    double value = 0.0;
+};
+struct QStringAssign {
+    uint16_t index = 0;
+    std::string value;
+};
+
+enum class Comparison : uint8_t { Equal, NotEqual, Greater, Less };
+
+struct ConditionalJump {  // FN 9..12
+    Comparison comparison = Comparison::Equal;
+    double left = 0.0;
+    double right = 0.0;
+    LabelTarget target;
+};
+struct ErrorBlock {  // FN 14
+    int number = 0;
+};
+struct PrintBlock {  // FN 15 (values) / FN 16 (format file to output file)
+    bool formatted = false;
+    std::vector<double> values;
+    std::string text;
+    std::string maskFile;
+    std::string outputFile;
+};
+struct SysRead {  // FN 18
+    QRef target;
+    int id = 0;
+    int nr = 0;
+    int idx = 0;
+    bool hasIdx = false;
+};
+struct CircleData {  // FN 23 / FN 24
+    int points = 3;
+    QRef target;
+    QRef source;
+};
+struct TableOpen {  // FN 26
+    std::string path;
+};
+struct TableAccess {  // FN 27 / FN 28
+    bool write = false;
+    int row = 0;
+    std::string columns;  // as written: "X,Y,Z"
+    size_t columnCount = 0;
+    QRef parameter;  // first parameter written or read
+};
+
+// Blocks that parse and are kept but that this release does not execute yet (fixed cycles,
+// patterns, probing, FK, PLANE ...). `feature` names them in the diagnostic.
+struct Deferred {
+    std::string feature;
+    std::string text;
+};
+
+// CYCL DEF, kept with its parameters for the cycle framework.
+struct CycleParameter {
+    uint16_t q = 0;
+    bool isString = false;
+    std::string raw;  // value text as written ("+5", "PREDEF", "FAUTO", "Q1")
+    std::optional<double> value;
+    std::string comment;
+};
+struct CycleDefinition {
+    int number = 0;
+    int subNumber = -1;  // old-style "7.1" blocks; -1 for parameter-list cycles
+    std::string name;    // language-dependent text after the number
+    std::string rest;    // old style: the text after "n.m "
+    std::vector<CycleParameter> parameters;
+};
+struct CycleCall {
+    enum class Kind : uint8_t { Plain, Pattern, Position };
+    Kind kind = Kind::Plain;
+    Coordinates coords;
+    CommonWords words;
+};
+
+using Statement =
+    std::variant<Empty, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, LinearBlock, CircleCenter,
+                 CircleBlock, CircleRadiusBlock, CircleTangentBlock, RoundBlock, ChamferBlock,
+                 LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock, ApproachBlock, Label,
+                 CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
+                 ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
+                 TableAccess, CycleDefinition, CycleCall, Deferred>;
+
+struct ParsedBlock {
+    Statement statement;
+    int64_t blockNumber = -1;
+    bool hidden = false;  // '/' block skip
+};
+
+}  // namespace kerf::klartext

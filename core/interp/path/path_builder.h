@@ -1,0 +1,93 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/canon/commands.h"
+#include "core/interp/path/path_move.h"
+
+namespace kerf::interp {
+
+// Turns programmed moves into tool-centre moves on the canonical stream. Two look-ahead stages of
+// one element each: the first applies roundings and chamfers to the programmed contour, the second
+// applies tool-radius compensation with the TNC/Fagor rules:
+//   - the block that switches compensation on ends perpendicular to the next element; the last
+//     compensated element ends perpendicular to itself before R0/G40 or a departure;
+//   - outside corners get a transition arc around the corner point with the tool radius;
+//   - inside corners end at the intersection of the offset elements, and an element that the
+//     offset swallows is the "tool radius too large" error;
+//   - moves along the tool axis only keep the compensation and wait for the next contour element.
+// Non-motion commands keep their place in the stream.
+class PathBuilder {
+public:
+    explicit PathBuilder(canon::Sink& sink) : m_sink(sink) {}
+
+    // Where the tool is at the start (no look-ahead pending).
+    void reset(const Pose& toolPosition);
+    // Effective tool radius used by compensation (R + DR); set it with nothing pending.
+    void setToolRadius(double radius) { m_radius = radius; }
+
+    std::optional<PathError> addMove(const PathMove& move);
+    std::optional<PathError> addRounding(double radius, std::optional<double> feed,
+                                         const SourceLocation& location);
+    std::optional<PathError> addChamfer(double length, std::optional<double> feed,
+                                        const SourceLocation& location);
+    std::optional<PathError> addApproach(const ApproachSpec& spec);
+    // Departs from the compensated contour; compensation is off afterwards.
+    std::optional<PathError> addDeparture(const ApproachSpec& spec);
+    void addCommand(canon::Command command);
+    // Resolves everything pending (program end, synchronisation, tool change).
+    std::optional<PathError> flush();
+
+    // The tool-centre position after every move emitted so far.
+    const Pose& toolPosition() const { return m_tool; }
+    CompSide activeSide() const { return m_side; }
+    bool pending() const { return m_held.has_value() || m_comp.has_value(); }
+
+private:
+    struct Corner {
+        bool chamfer = false;
+        double size = 0.0;
+        std::optional<double> feed;
+        SourceLocation location;
+    };
+    struct Compensated {
+        PathMove move;          // as programmed
+        ContourElement tool;    // tool-centre path; its end is provisional until resolved
+        bool activation = false;
+    };
+    struct Queued {
+        std::optional<canon::Command> command;
+        std::optional<PathMove> axialMove;
+    };
+
+    // Stage 1 (corners) hands its output to stage 2 through these.
+    std::optional<PathError> forwardHeld();
+    std::optional<PathError> compMove(const PathMove& move);
+    void compCommand(canon::Command command);
+    std::optional<PathError> compResolveApproach(const PathMove& move);
+    std::optional<PathError> compFinishHeld();
+    std::optional<PathError> compCorner(const PathMove& move);
+    void compFlushQueue();
+
+    double signedOffset(CompSide side) const;
+    void emitElement(const ContourElement& element, const PathMove& move);
+    void emitLine(const Pose& target, bool rapid, double feed, const SourceLocation& location);
+    void emitArc(Plane plane, const Pose& target, const Vec2& center, double sweep, double feed,
+                 const SourceLocation& location);
+
+    canon::Sink& m_sink;
+    double m_radius = 0.0;
+    Pose m_tool{};
+    // Stage 1.
+    std::optional<PathMove> m_held;
+    std::optional<Corner> m_corner;
+    std::vector<canon::Command> m_heldAfter;
+    // Stage 2.
+    std::optional<Compensated> m_comp;
+    std::vector<Queued> m_compAfter;
+    std::optional<ApproachSpec> m_approach;
+    CompSide m_side = CompSide::None;
+};
+
+}  // namespace kerf::interp
