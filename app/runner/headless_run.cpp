@@ -1,5 +1,6 @@
 #include "app/runner/headless_run.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <ostream>
@@ -79,7 +80,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         interp::Interpreter& interpreter = *session->interpreter;
         statistics.setStart(interpreter.nominalPosition());
         for (;;) {
-            interp::RunStatus status = interpreter.run(sinks, kBlocksPerSlice);
+            const uint64_t left = options.maxBlocks - interpreter.blocksExecuted();
+            interp::RunStatus status = interpreter.run(sinks, std::min(kBlocksPerSlice, left));
             if (status == interp::RunStatus::NeedsSync) {
                 // Without motion the machine is exactly where the program put it.
                 interp::WorldSnapshot world;

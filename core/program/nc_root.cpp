@@ -55,8 +55,7 @@ Expected<fs::path> NcRoot::resolve(std::string_view name, const fs::path& caller
     fs::path resolved = (base / text).lexically_normal();
     if (!contains(resolved)) {
         return Diagnostic::make(Severity::Error, "path", "", 0, 0,
-                                KERF_TR_NOOP("'{1}' is outside the NC root {2}"), std::string(name),
-                                m_root.string());
+                                KERF_TR_NOOP("'{1}' is outside the NC root"), std::string(name));
     }
     return resolved;
 }

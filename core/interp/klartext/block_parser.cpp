@@ -1,5 +1,6 @@
 #include "core/interp/klartext/block_parser.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/base/translate.h"
@@ -50,7 +51,15 @@ struct BlockParser::Context {
     bool failed = false;
 
     Context(std::string_view text, FormulaEnvironment* env, ParseProblem& p)
-        : cursor(text), formula(cursor, env), problem(p) {}
+        : cursor(text), formula(cursor, env), problem(p), evaluating(env != nullptr) {}
+
+    // Values computed from Q parameters are only known when the block runs: range errors are
+    // reported then, not when the program is checked.
+    bool evaluating;
+    bool valueError(const char* messageTemplate, std::vector<std::string> args = {}) {
+        if (!evaluating) return true;
+        return fail("range", messageTemplate, std::move(args));
+    }
 
     bool fail(std::string code, std::string messageTemplate, std::vector<std::string> args = {}) {
         if (!failed) {
@@ -103,9 +112,18 @@ struct BlockParser::Context {
             return value(feed.value);
         }
         cursor.acceptPrefix("F");
+        // Some listings separate the keyword: "F AUTO", "F MAX".
+        if (cursor.acceptKeyword("AUTO")) {
+            feed.kind = FeedWord::Kind::Auto;
+            return true;
+        }
+        if (cursor.acceptKeyword("MAX")) {
+            feed.kind = FeedWord::Kind::Max;
+            return true;
+        }
         feed.kind = FeedWord::Kind::Value;
         if (!value(feed.value)) return false;
-        if (feed.value < 0.0) return fail("range", KERF_TR_NOOP("the feed rate must not be negative"));
+        if (feed.value < 0.0) return valueError(KERF_TR_NOOP("the feed rate must not be negative"));
         return true;
     }
 
@@ -159,6 +177,17 @@ struct BlockParser::Context {
             char next = upper(cursor.text().size() > cursor.position() + 1
                                   ? cursor.text()[cursor.position() + 1]
                                   : '\0');
+            // Older controls list a word that was not entered as its bare letter ("R F M").
+            bool bare = next == '\0' || next == ' ' || next == '\t' || next == ';';
+            if (bare && c == 'F') {
+                Cursor ahead(cursor.text(), cursor.position() + 1);
+                bare = !ahead.peekKeyword("AUTO") && !ahead.peekKeyword("MAX");
+            }
+            if (bare && ((c == 'R' && (allowed & kComp) != 0) || (c == 'F' && (allowed & kFeed) != 0) ||
+                         (c == 'M' && (allowed & kM) != 0))) {
+                cursor.setPosition(cursor.position() + 1);
+                continue;
+            }
             if ((allowed & kPolar) != 0) {
                 bool inc = c == 'I' && (next == 'P');
                 size_t at = cursor.position();
@@ -412,9 +441,9 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         FeedWord feed;
         if (upper(cur.peek()) == 'F' && !c.parseFeed(feed)) return false;
         if (!c.expectEnd()) return false;
-        if (value <= 0.0) {
-            return c.fail("range", round ? KERF_TR_NOOP("the rounding radius must be positive")
-                                         : KERF_TR_NOOP("the chamfer length must be positive"));
+        if (value <= 0.0 && !c.valueError(round ? KERF_TR_NOOP("the rounding radius must be positive")
+                                                : KERF_TR_NOOP("the chamfer length must be positive"))) {
+            return false;
         }
         if (feed.kind == FeedWord::Kind::Max) {
             return c.fail("syntax", KERF_TR_NOOP("FMAX is not allowed here"));
@@ -469,7 +498,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         if (cur.acceptKeyword("LBL")) {
             CallLabel b;
             if (!parseLabelTarget(c, b.target, false)) return false;
-            if (cur.acceptKeyword("REP") || cur.acceptPrefix("REP")) {
+            if ((cur.acceptKeyword("REP") || cur.acceptPrefix("REP")) && !cur.atEnd()) {
                 double rep = 0.0;
                 if (!c.value(rep)) return false;
                 if (cur.acceptChar('/')) {  // "REP 2/2": the control shows repeats left/total
@@ -477,9 +506,11 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     if (!c.value(total)) return false;
                     rep = total;
                 }
-                if (rep < 0.0 || rep > 65534.0) {
-                    return c.fail("range", KERF_TR_NOOP("REP must be between 0 and 65534"));
+                if ((rep < 0.0 || rep > 65534.0) &&
+                    !c.valueError(KERF_TR_NOOP("REP must be between 0 and 65534"))) {
+                    return false;
                 }
+                rep = std::clamp(rep, 0.0, 65534.0);
                 b.repeat = static_cast<int>(rep);
             }
             if (!c.expectEnd()) return false;
@@ -547,7 +578,9 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     b.dr = v;
                 } else if (cur.acceptPrefix("S")) {
                     if (!c.value(v)) return false;
-                    if (v < 0.0) return c.fail("range", KERF_TR_NOOP("the spindle speed must not be negative"));
+                    if (v < 0.0 && !c.valueError(KERF_TR_NOOP("the spindle speed must not be negative"))) {
+                        return false;
+                    }
                     b.speed = v;
                 } else if (upper(cur.peek()) == 'F') {
                     FeedWord feed;
@@ -1056,6 +1089,9 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     }
     cur.setPosition(headAt);
     if (head.empty()) return c.unexpected();
+    if (head == "CYCLE") {
+        return c.fail("syntax", KERF_TR_NOOP("unknown block 'CYCLE' (the keyword is CYCL)"));
+    }
     return c.fail("syntax", KERF_TR_NOOP("unknown block '{1}'"), {head});
 }
 

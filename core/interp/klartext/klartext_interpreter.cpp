@@ -192,6 +192,10 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         if (m_block.hidden && m_settings.blockSkip) continue;
         execute(m_block.statement);
     }
+    if (m_status == interp::RunStatus::Failed) {
+        // The blocks before the error run; only the one that failed and those after it do not.
+        (void)m_path.flush();
+    }
     m_out.target = nullptr;
     return m_status;
 }

@@ -1,6 +1,7 @@
 // Path functions: L, C, CR, CT, LP, CP, CTP, CC, RND, CHF, APPR and DEP.
 #include <cmath>
 
+#include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 
@@ -150,7 +151,7 @@ void KlartextInterpreter::executeCircle(const Coordinates& coords, Direction dir
         if (!c) {
             fail("geometry",
                  KERF_TR_NOOP("no circle of radius {1} passes through the start and end point"),
-                 {std::to_string(*radius)});
+                 {formatFixed(*radius, 4)});
             return;
         }
         center = *c;
@@ -167,7 +168,7 @@ void KlartextInterpreter::executeCircle(const Coordinates& coords, Direction dir
             fail("geometry",
                  KERF_TR_NOOP("the end point is not on the circle: radius {1} at the start, {2} at "
                               "the end"),
-                 {std::to_string(r0), std::to_string(r1)});
+                 {formatFixed(r0, 4), formatFixed(r1, 4)});
             return;
         }
     }

@@ -117,7 +117,7 @@ void checkProgram(ProgramFile& program) {
             diag(Severity::Warning, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
                  {deferred->feature});
-        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
+        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s); cycle && cycle->subNumber <= 0) {
             diag(Severity::Warning, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past this block"),
                  {std::to_string(cycle->number)});
