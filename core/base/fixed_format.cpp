@@ -25,21 +25,23 @@ void appendFixed(std::string& out, double value, int decimals) {
         out.append(buffer, result.ptr);
         return;
     }
+    // Digits are written backwards into a small buffer: fraction, point, integral part, sign.
     auto units = static_cast<uint64_t>(scaled);
-    if (units != 0 && value < 0) out += '-';
-    const uint64_t integral = units / static_cast<uint64_t>(scale);
-    uint64_t fraction = units % static_cast<uint64_t>(scale);
+    const bool negative = units != 0 && value < 0;
     char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof buffer, integral);
-    out.append(buffer, result.ptr);
-    if (decimals == 0) return;
-    out += '.';
-    char digits[10];
-    for (int i = decimals - 1; i >= 0; --i) {
-        digits[i] = static_cast<char>('0' + fraction % 10);
-        fraction /= 10;
+    char* end = buffer + sizeof buffer;
+    char* p = end;
+    for (int i = 0; i < decimals; ++i) {
+        *--p = static_cast<char>('0' + units % 10);
+        units /= 10;
     }
-    out.append(digits, static_cast<size_t>(decimals));
+    if (decimals > 0) *--p = '.';
+    do {
+        *--p = static_cast<char>('0' + units % 10);
+        units /= 10;
+    } while (units != 0);
+    if (negative) *--p = '-';
+    out.append(p, static_cast<size_t>(end - p));
 }
 
 std::string formatFixed(double value, int decimals) {

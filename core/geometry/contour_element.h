@@ -33,7 +33,9 @@ struct ContourElement {
     double radius() const { return (start2() - center).norm(); }
     double planarLength() const;
     // True when the element moves in the working plane (not only along the tool axis).
-    bool movesInPlane() const { return planarLength() > 1e-9; }
+    bool movesInPlane() const {
+        return kind == Kind::Arc ? planarLength() > 1e-9 : (end2() - start2()).squaredNorm() > 1e-18;
+    }
     Vec2 startTangent() const;
     Vec2 endTangent() const;
     Vec2 pointAt(double t) const;

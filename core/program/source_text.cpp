@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -21,6 +22,26 @@ Diagnostic openError(const std::filesystem::path& path) {
 std::string_view withoutBom(std::string_view text) {
     if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") return text.substr(3);
     return text;
+}
+
+// Validates a mapped file chunk by chunk and releases each chunk after it, so that checking a
+// large program does not make it resident all at once.
+bool isValidUtf8InChunks(std::string_view bytes, void* mapping) {
+    constexpr size_t kChunk = 8u << 20;
+    const auto page = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
+    size_t start = 0;
+    while (start < bytes.size()) {
+        size_t end = std::min(bytes.size(), start + kChunk);
+        // Do not split a multi-byte character between chunks.
+        while (end < bytes.size() && end > start &&
+               (static_cast<unsigned char>(bytes[end]) & 0xC0) == 0x80) {
+            --end;
+        }
+        if (!isValidUtf8(bytes.substr(start, end - start))) return false;
+        if (end / page * page > 0) ::madvise(mapping, end / page * page, MADV_DONTNEED);
+        start = end;
+    }
+    return true;
 }
 
 }  // namespace
@@ -55,7 +76,8 @@ Expected<std::shared_ptr<const SourceText>> SourceText::load(const std::filesyst
     }
     ::close(fd);
     std::string_view bytes(static_cast<const char*>(source->m_mapping), size);
-    source->m_encoding = detectEncoding(bytes);
+    source->m_encoding = isValidUtf8InChunks(bytes, source->m_mapping) ? Encoding::Utf8
+                                                                       : detectEncoding(bytes);
     if (source->m_encoding == Encoding::Utf8) {
         source->m_view = withoutBom(bytes);
     } else {
@@ -75,6 +97,14 @@ std::shared_ptr<const SourceText> SourceText::fromString(std::string text, std::
                                                            : toUtf8(text, source->m_encoding);
     source->m_view = withoutBom(source->m_owned);
     return source;
+}
+
+void SourceText::releaseBefore(size_t offset) const {
+    if (m_mapping == nullptr) return;
+    const auto page = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
+    const size_t begin = static_cast<size_t>(m_view.data() - static_cast<const char*>(m_mapping));
+    const size_t end = std::min(begin + offset, m_mappingSize) / page * page;
+    if (end > 0) ::madvise(m_mapping, end, MADV_DONTNEED);
 }
 
 uint32_t columnOf(std::string_view line, size_t byteOffset) {

@@ -25,6 +25,11 @@ public:
     const std::string& path() const { return m_path; }
     Encoding encoding() const { return m_encoding; }
 
+    // Tells the kernel the text before `offset` is not needed soon, so a large program streams
+    // through memory instead of staying resident. Reading it again (a jump back) still works: the
+    // pages come back from the file.
+    void releaseBefore(size_t offset) const;
+
 private:
     SourceText() = default;
 

@@ -362,7 +362,11 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     size_t end = headAt;
     const std::string_view text = cur.text();
     while (end < text.size() && isLetter(text[end])) ++end;
-    const std::string head = upperCopy(text.substr(headAt, end - headAt));
+    // Heads are short keywords: compare an upper-case copy kept on the stack.
+    char headBuffer[16];
+    const size_t headLength = std::min(end - headAt, sizeof headBuffer);
+    for (size_t i = 0; i < headLength; ++i) headBuffer[i] = upper(text[headAt + i]);
+    const std::string_view head(headBuffer, end - headAt <= sizeof headBuffer ? headLength : 0);
     cur.setPosition(end);
 
     auto deferred = [&](std::string feature) {
@@ -474,7 +478,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             b.kind = ApproachKind::LCT;
         } else {
             cur.setPosition(static_cast<size_t>(kind.data() - text.data()));
-            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"), {head});
+            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"), {std::string(head)});
         }
         Words w{&b.coords, &b.words};
         w.polar = &b.polarWords;
@@ -1075,7 +1079,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         "PARAXMODE", "RESET", "SYSREAD", "CFGWRITE", "CFGREAD"};
     for (const char* candidate : kDeferredHeads) {
         if (head == candidate) {
-            std::string feature = head;
+            std::string feature(head);
             if (head == "TCH") feature = "TCH PROBE";
             if (head == "PATTERN") feature = "PATTERN DEF";
             if (head == "GLOBAL") feature = "GLOBAL DEF";
@@ -1092,7 +1096,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     if (head == "CYCLE") {
         return c.fail("syntax", KERF_TR_NOOP("unknown block 'CYCLE' (the keyword is CYCL)"));
     }
-    return c.fail("syntax", KERF_TR_NOOP("unknown block '{1}'"), {head});
+    return c.fail("syntax", KERF_TR_NOOP("unknown block '{1}'"), {std::string(head)});
 }
 
 namespace {

@@ -1,6 +1,8 @@
 #include "core/interp/klartext/cursor.h"
 
 #include <charconv>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace kerf::klartext {
@@ -54,34 +56,44 @@ bool Cursor::acceptKeyword(std::string_view keyword) {
 
 std::optional<double> Cursor::unsignedNumber() {
     skipBlanks();
-    size_t start = m_pos;
+    const size_t start = m_pos;
     size_t i = m_pos;
-    while (i < m_text.size() && isDigit(m_text[i])) ++i;
-    size_t intEnd = i;
-    bool fraction = false;
-    if (i < m_text.size() && (m_text[i] == '.' || m_text[i] == ',') && i + 1 <= m_text.size()) {
-        size_t j = i + 1;
-        while (j < m_text.size() && isDigit(m_text[j])) ++j;
-        // "5," followed by nothing numeric is not a decimal comma ("REP 2,"); "5." is 5.0.
-        if (j > i + 1 || m_text[i] == '.') {
-            fraction = true;
-            i = j;
-        }
+    const size_t n = m_text.size();
+    // Fast path: up to 15 significant digits and 15 decimals divide exactly-represented
+    // integers, so the result is correctly rounded (as from_chars would give).
+    uint64_t mantissa = 0;
+    int digits = 0;
+    while (i < n && isDigit(m_text[i])) {
+        mantissa = mantissa * 10 + static_cast<uint64_t>(m_text[i] - '0');
+        ++digits;
+        ++i;
     }
-    if (intEnd == start && !(fraction && i > intEnd + 1)) return std::nullopt;
-    double value = 0.0;
-    if (!fraction || m_text[intEnd] == '.') {
-        auto result = std::from_chars(m_text.data() + start, m_text.data() + i, value);
-        if (result.ec != std::errc()) return std::nullopt;
-        // from_chars stops before a trailing '.', which belongs to the number too.
-        m_pos = i;
-        return value;
+    const size_t intEnd = i;
+    int decimals = 0;
+    if (i < n && (m_text[i] == '.' || m_text[i] == ',')) {
+        size_t j = i + 1;
+        while (j < n && isDigit(m_text[j])) {
+            mantissa = mantissa * 10 + static_cast<uint64_t>(m_text[j] - '0');
+            ++digits;
+            ++decimals;
+            ++j;
+        }
+        // "5," followed by no digit is not a decimal comma ("REP 2,"); "5." is 5.0.
+        if (decimals > 0 || m_text[i] == '.') i = j;
+    }
+    if (intEnd == start && decimals == 0) return std::nullopt;
+    m_pos = i;
+    if (digits <= 15 && decimals <= 15) {
+        static constexpr double kPowers[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                             1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+        return static_cast<double>(mantissa) / kPowers[decimals];
     }
     std::string copy(m_text.substr(start, i - start));
-    copy[intEnd - start] = '.';
-    auto result = std::from_chars(copy.data(), copy.data() + copy.size(), value);
-    if (result.ec != std::errc()) return std::nullopt;
-    m_pos = i;
+    for (char& c : copy) {
+        if (c == ',') c = '.';
+    }
+    double value = 0.0;
+    std::from_chars(copy.data(), copy.data() + copy.size(), value);
     return value;
 }
 
@@ -103,13 +115,15 @@ std::optional<double> Cursor::signedNumber() {
 
 std::optional<long long> Cursor::unsignedInteger() {
     skipBlanks();
-    size_t start = m_pos;
+    size_t i = m_pos;
     long long value = 0;
-    auto result = std::from_chars(m_text.data() + m_pos, m_text.data() + m_text.size(), value);
-    if (result.ec != std::errc() || result.ptr == m_text.data() + start || value < 0) {
-        return std::nullopt;
+    while (i < m_text.size() && isDigit(m_text[i])) {
+        if (value > (std::numeric_limits<long long>::max() - 9) / 10) return std::nullopt;
+        value = value * 10 + (m_text[i] - '0');
+        ++i;
     }
-    m_pos = static_cast<size_t>(result.ptr - m_text.data());
+    if (i == m_pos) return std::nullopt;
+    m_pos = i;
     return value;
 }
 

@@ -123,9 +123,11 @@ std::optional<double> FormulaParser::wordValue() {
         if (!m_cursor.acceptChar(')')) return fail("syntax", KERF_TR_NOOP("')' expected"));
         return sign * *value;
     }
+    if (isDigit(c) || c == '.') {
+        if (auto number = m_cursor.unsignedNumber()) return sign * *number;
+    }
     if (auto ref = parameter(false)) return sign * read(*ref);
     if (m_problem) return std::nullopt;
-    if (auto number = m_cursor.unsignedNumber()) return sign * *number;
     return fail("syntax", KERF_TR_NOOP("number or Q parameter expected"));
 }
 
@@ -192,11 +194,34 @@ std::optional<double> FormulaParser::unary() {
         if (!value) return std::nullopt;
         return c == '-' ? -*value : *value;
     }
-    for (const FunctionEntry& f : kFunctions) {
-        if (m_cursor.acceptKeyword(f.name)) {
-            auto argument = unary();
-            if (!argument) return std::nullopt;
-            return domainCheck(f.apply(*argument), f.name.data());
+    if (isLetter(c) && upper(c) != 'Q') {
+        // One look at the word decides between a function, PI and a string function.
+        const size_t at = m_cursor.position();
+        const std::string_view text = m_cursor.text();
+        size_t end = at;
+        while (end < text.size() && isLetter(text[end])) ++end;
+        char word[8];
+        const size_t length = end - at;
+        if (length < sizeof word) {
+            for (size_t i = 0; i < length; ++i) word[i] = upper(text[at + i]);
+            const std::string_view name(word, length);
+            for (const FunctionEntry& f : kFunctions) {
+                if (f.name != name) continue;
+                m_cursor.setPosition(end);
+                auto argument = unary();
+                if (!argument) return std::nullopt;
+                return domainCheck(f.apply(*argument), f.name.data());
+            }
+            if (name == "PI") {
+                m_cursor.setPosition(end);
+                return kPi;
+            }
+            for (std::string_view function : {"STRLEN", "STRCOMP", "INSTR", "TONUMB"}) {
+                if (name == function) {
+                    m_cursor.setPosition(end);
+                    return stringFunction(function);
+                }
+            }
         }
     }
     return primary();
@@ -211,13 +236,11 @@ std::optional<double> FormulaParser::primary() {
         if (!m_cursor.acceptChar(')')) return fail("syntax", KERF_TR_NOOP("')' expected"));
         return value;
     }
-    if (m_cursor.acceptKeyword("PI")) return kPi;
-    for (std::string_view name : {"STRLEN", "STRCOMP", "INSTR", "TONUMB"}) {
-        if (m_cursor.acceptKeyword(name)) return stringFunction(name);
+    if (isDigit(c) || c == '.') {
+        if (auto number = m_cursor.unsignedNumber()) return number;
     }
     if (auto ref = parameter(false)) return read(*ref);
     if (m_problem) return std::nullopt;
-    if (auto number = m_cursor.unsignedNumber()) return number;
     if (m_cursor.atEnd()) return fail("syntax", KERF_TR_NOOP("incomplete formula"));
     return fail("syntax", KERF_TR_NOOP("unexpected '{1}' in formula"),
                 {std::string(1, m_cursor.peek())});

@@ -112,6 +112,7 @@ void KlartextInterpreter::startLevel(ProgramFile* program, size_t returnOffset,
     m_levels.push_back(level);
     m_inch = program->inch;
     m_reader.emplace(program->source->text());
+    m_releasedBefore = 0;
 }
 
 // ---- diagnostics -----------------------------------------------------------------------------
@@ -171,6 +172,10 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
         m_blockOffset = m_reader->offset();
+        if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
+            m_releasedBefore = m_blockOffset;
+            m_levels.back().program->source->releaseBefore(m_blockOffset);
+        }
         if (!m_reader->next(m_line)) {
             endOfProgram(false);
             continue;
@@ -235,6 +240,7 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
         const Level& caller = m_levels.back();
         m_inch = caller.inch;
         m_reader.emplace(caller.program->source->text());
+        m_releasedBefore = 0;
         m_reader->seek(finished.returnOffset, finished.returnLine);
         return true;
     }

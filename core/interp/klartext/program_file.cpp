@@ -27,7 +27,11 @@ struct PendingTarget {
 };
 
 std::string labelText(const LabelTarget& t) {
-    return t.number ? std::to_string(*t.number) : "\"" + t.name.value_or("") + "\"";
+    if (t.number) return std::to_string(*t.number);
+    std::string quoted(1, '"');
+    quoted.append(t.name.value_or(std::string()));
+    quoted.push_back('"');
+    return quoted;
 }
 
 }  // namespace
@@ -57,7 +61,13 @@ void checkProgram(ProgramFile& program) {
         out.push_back(std::move(d));
     };
 
+    constexpr size_t kReleaseStep = 8u << 20;
+    size_t released = 0;
     while (reader.next(line)) {
+        if (line.offset >= released + kReleaseStep) {
+            released = line.offset;
+            program.source->releaseBefore(released);
+        }
         if (!parser.parse(line, block)) {
             const ParseProblem& p = parser.problem();
             Diagnostic d = Diagnostic::make(Severity::Error, p.code, file, line.lineAt(p.offset),
