@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <ostream>
 
@@ -44,7 +45,9 @@ int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
 }
 
 int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
-    auto session = openSession(options);
+    // The check runs alongside execution unless the trace goes to a stream we cannot take back.
+    const bool traceToStdout = options.traceFile && *options.traceFile == "-";
+    auto session = openSession(options, !traceToStdout);
     canon::PathStatistics statistics(session->machine.rapidVelocityMmPerS);
     DisplayModeTracker displayMode(diameterByDefault(session->machine));
     canon::TeeSink sinks;
@@ -106,18 +109,29 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     }
     trace.reset();
     if (traceStream != nullptr && traceStream != stdout) std::fclose(traceStream);
+    const bool rejected = session->interpreter && session->interpreter->checkFailed();
+    canon::PathStatistics nothingRan(session->machine.rapidVelocityMmPerS);
+    if (rejected) {
+        // The program has errors: it counts as never started.
+        blocks = 0;
+        if (options.traceFile && !traceToStdout) {
+            std::error_code ignored;
+            std::filesystem::resize_file(*options.traceFile, 0, ignored);
+        }
+    }
+    const canon::PathStatistics& results = rejected ? nothingRan : statistics;
 
     RunSummary summary;
     summary.diagnostics = session->allDiagnostics();
     summary.diagnostics.insert(summary.diagnostics.end(), runProblems.begin(), runProblems.end());
-    summary.ok = session->ready && !hasErrors(summary.diagnostics);
+    summary.ok = session->ready && !rejected && !hasErrors(summary.diagnostics);
     summary.dialect = program::dialectName(session->dialect);
     summary.blocksExecuted = blocks;
     summary.xInDiameter = displayMode.xInDiameter();
     printDiagnostics(summary.diagnostics, diagnostics);
 
     if (options.reportFile) {
-        nlohmann::json report = buildRunReport(summary, statistics, session->machine);
+        nlohmann::json report = buildRunReport(summary, results, session->machine);
         if (auto error = writeFileAtomically(*options.reportFile, report.dump(2) + "\n")) {
             diagnostics << error->format() << '\n';
             return 1;

@@ -33,7 +33,7 @@ DiagnosticList Session::allDiagnostics() const {
     return all;
 }
 
-std::unique_ptr<Session> openSession(const RunOptions& options) {
+std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck) {
     auto session = std::make_unique<Session>();
     DiagnosticList machineProblems;
     auto machine = machine::loadMachine(options.machine, &machineProblems);
@@ -87,7 +87,9 @@ std::unique_ptr<Session> openSession(const RunOptions& options) {
     }
     auto interpreter =
         std::make_unique<klartext::KlartextInterpreter>(session->sources, std::move(settings));
-    session->ready = interpreter->load(programPath);
+    session->ready = interpreter->load(
+        programPath, backgroundCheck ? klartext::KlartextInterpreter::CheckMode::Background
+                                     : klartext::KlartextInterpreter::CheckMode::Inline);
     session->interpreter = std::move(interpreter);
     return session;
 }

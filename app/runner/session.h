@@ -27,6 +27,8 @@ struct Session {
     bool ready = false;  // the program loaded without errors and can run
 };
 
-std::unique_ptr<Session> openSession(const RunOptions& options);
+// With `backgroundCheck` the program's check runs alongside execution (see
+// KlartextInterpreter::CheckMode); the caller must then honour Interpreter::checkFailed().
+std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck = false);
 
 }  // namespace kerf::app

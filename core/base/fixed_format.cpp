@@ -26,20 +26,36 @@ void appendFixed(std::string& out, double value, int decimals) {
         return;
     }
     // Digits are written backwards into a small buffer: fraction, point, integral part, sign.
-    auto units = static_cast<uint64_t>(scaled);
+    const auto units = static_cast<uint64_t>(scaled);
     const bool negative = units != 0 && value < 0;
+    uint64_t integral = units / static_cast<uint64_t>(scale);
+    uint64_t fraction = units % static_cast<uint64_t>(scale);
     char buffer[32];
     char* end = buffer + sizeof buffer;
     char* p = end;
     for (int i = 0; i < decimals; ++i) {
-        *--p = static_cast<char>('0' + units % 10);
-        units /= 10;
+        *--p = static_cast<char>('0' + fraction % 10);
+        fraction /= 10;
     }
     if (decimals > 0) *--p = '.';
-    do {
-        *--p = static_cast<char>('0' + units % 10);
-        units /= 10;
-    } while (units != 0);
+    // The integral part is usually small: two digits per step.
+    static constexpr char kPairs[] =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+        "8081828384858687888990919293949596979899";
+    while (integral >= 100) {
+        const auto pair = static_cast<size_t>(integral % 100) * 2;
+        integral /= 100;
+        *--p = kPairs[pair + 1];
+        *--p = kPairs[pair];
+    }
+    if (integral >= 10) {
+        const auto pair = static_cast<size_t>(integral) * 2;
+        *--p = kPairs[pair + 1];
+        *--p = kPairs[pair];
+    } else {
+        *--p = static_cast<char>('0' + integral);
+    }
     if (negative) *--p = '-';
     out.append(p, static_cast<size_t>(end - p));
 }

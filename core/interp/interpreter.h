@@ -35,6 +35,9 @@ public:
     virtual uint64_t blocksExecuted() const = 0;
     // The tool position the interpreter assumes (workpiece coordinates).
     virtual Pose nominalPosition() const = 0;
+    // True when the program check (which may run alongside execution) found errors: then the
+    // program must be treated as never started and everything it emitted discarded.
+    virtual bool checkFailed() const = 0;
 };
 
 }  // namespace kerf::interp

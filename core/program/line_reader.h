@@ -43,6 +43,7 @@ public:
     bool appendNextLine(LogicalLine& out);
     // The next physical line without consuming it.
     std::string_view peekLine() const;
+    char peekByte() const { return m_offset < m_text.size() ? m_text[m_offset] : '\0'; }
 
     size_t offset() const { return m_offset; }
     uint32_t line() const { return m_line; }

@@ -177,6 +177,13 @@ struct BlockParser::Context {
             char next = upper(cursor.text().size() > cursor.position() + 1
                                   ? cursor.text()[cursor.position() + 1]
                                   : '\0');
+            // Axis words are by far the most common: try them first.
+            if ((allowed & kAxes) != 0 && axisFromLetter(c) &&
+                !(c == 'C' && next == 'C' && (allowed & kAngle) != 0) &&
+                (startsValue(next) || next == ' ')) {
+                if (!parseAxis(*w.coords, false)) return false;
+                continue;
+            }
             // Older controls list a word that was not entered as its bare letter ("R F M").
             bool bare = next == '\0' || next == ' ' || next == '\t' || next == ';';
             if (bare && c == 'F') {
@@ -375,12 +382,12 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     };
 
     if (head == "L") {
-        LinearBlock b;
+        // Parsed in place: this is the block CAM programs consist of.
+        LinearBlock& b = out.statement.emplace<LinearBlock>();
         if (!c.parseWords(kAxes | kComp | kFeed | kM, {&b.coords, &b.words})) return false;
         if (b.coords.present == 0 && b.words.comp == CompWord::None) {
-            out.statement = MFunctionBlock{b.words};
-        } else {
-            out.statement = b;
+            CommonWords words = b.words;
+            out.statement = MFunctionBlock{words};
         }
         return true;
     }

@@ -29,7 +29,8 @@ bool takesParameterLines(std::string_view head) {
 
 bool BlockReader::next(program::LogicalLine& line) {
     if (!m_lines.next(line)) return false;
-    if (line.segments.size() == 1) {
+    const char next = m_lines.peekByte();
+    if (line.segments.size() == 1 && (next == ' ' || next == '\t')) {
         std::string_view head = BlockParser::headWord(line.text);
         if (head.size() >= 3 && head.size() <= 7) {
             std::string upperHead(head);

@@ -56,39 +56,37 @@ bool Cursor::acceptKeyword(std::string_view keyword) {
 
 std::optional<double> Cursor::unsignedNumber() {
     skipBlanks();
-    const size_t start = m_pos;
-    size_t i = m_pos;
-    const size_t n = m_text.size();
+    const char* const begin = m_text.data() + m_pos;
+    const char* const end = m_text.data() + m_text.size();
+    const char* p = begin;
     // Fast path: up to 15 significant digits and 15 decimals divide exactly-represented
     // integers, so the result is correctly rounded (as from_chars would give).
     uint64_t mantissa = 0;
-    int digits = 0;
-    while (i < n && isDigit(m_text[i])) {
-        mantissa = mantissa * 10 + static_cast<uint64_t>(m_text[i] - '0');
-        ++digits;
-        ++i;
+    while (p != end && static_cast<unsigned>(*p - '0') < 10u) {
+        mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+        ++p;
     }
-    const size_t intEnd = i;
+    const char* const intEnd = p;
     int decimals = 0;
-    if (i < n && (m_text[i] == '.' || m_text[i] == ',')) {
-        size_t j = i + 1;
-        while (j < n && isDigit(m_text[j])) {
-            mantissa = mantissa * 10 + static_cast<uint64_t>(m_text[j] - '0');
-            ++digits;
-            ++decimals;
-            ++j;
+    if (p != end && (*p == '.' || *p == ',')) {
+        const char* q = p + 1;
+        while (q != end && static_cast<unsigned>(*q - '0') < 10u) {
+            mantissa = mantissa * 10 + static_cast<unsigned>(*q - '0');
+            ++q;
         }
+        decimals = static_cast<int>(q - p - 1);
         // "5," followed by no digit is not a decimal comma ("REP 2,"); "5." is 5.0.
-        if (decimals > 0 || m_text[i] == '.') i = j;
+        if (decimals > 0 || *p == '.') p = q;
     }
-    if (intEnd == start && decimals == 0) return std::nullopt;
-    m_pos = i;
+    if (intEnd == begin && decimals == 0) return std::nullopt;
+    m_pos += static_cast<size_t>(p - begin);
+    const auto digits = static_cast<int>(intEnd - begin) + decimals;
     if (digits <= 15 && decimals <= 15) {
         static constexpr double kPowers[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                              1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
         return static_cast<double>(mantissa) / kPowers[decimals];
     }
-    std::string copy(m_text.substr(start, i - start));
+    std::string copy(begin, p);
     for (char& c : copy) {
         if (c == ',') c = '.';
     }

@@ -46,12 +46,34 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
     }
 }
 
-KlartextInterpreter::~KlartextInterpreter() = default;
+KlartextInterpreter::~KlartextInterpreter() {
+    if (m_checkThread.joinable()) {
+        m_checking->executionOffset.store(SIZE_MAX);
+        m_checkThread.join();
+    }
+}
+
+bool KlartextInterpreter::waitForCheck() {
+    if (!m_checkThread.joinable()) return !m_checkFailed;
+    m_checking->executionOffset.store(SIZE_MAX);
+    m_checkThread.join();
+    const DiagnosticList& found = m_checking->diagnostics;
+    if (hasErrors(found)) {
+        // The program would not have started: only the check's findings count.
+        m_diagnostics.erase(m_diagnostics.begin() + static_cast<std::ptrdiff_t>(m_diagnosticsAtLoad),
+                            m_diagnostics.end());
+        m_checkFailed = true;
+        m_status = interp::RunStatus::Failed;
+    }
+    m_diagnostics.insert(m_diagnostics.begin() + static_cast<std::ptrdiff_t>(m_diagnosticsAtLoad),
+                         found.begin(), found.end());
+    return !m_checkFailed;
+}
 
 // ---- loading ---------------------------------------------------------------------------------
 
 ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
-                                              std::string* error) {
+                                              std::string* error, bool check) {
     for (auto& p : m_programs) {
         if (p->source->path() == path.string()) return p.get();
     }
@@ -64,23 +86,32 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
     program->source = *source;
     program->fileId = m_sources.add(path.string());
     program->folder = path.parent_path();
-    checkProgram(*program);
+    if (check) checkProgram(*program);
     m_programs.push_back(std::move(program));
     return m_programs.back().get();
 }
 
-bool KlartextInterpreter::load(const std::filesystem::path& path) {
+bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
     std::string error;
-    ProgramFile* program = loadProgram(path, &error);
+    ProgramFile* program = loadProgram(path, &error, mode == CheckMode::Inline);
     if (program == nullptr) {
         m_diagnostics.push_back(Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
                                                  KERF_TR_NOOP("cannot read the program: {1}"),
                                                  error));
         return false;
     }
-    m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
-                         program->diagnostics.end());
-    if (hasErrors(program->diagnostics)) return false;
+    m_diagnosticsAtLoad = m_diagnostics.size();
+    if (mode == CheckMode::Background) {
+        program->inch = programUsesInch(*program->source);
+        m_checking = program;
+        program->followExecution = true;
+        program->executionOffset.store(0);
+        m_checkThread = std::thread([program] { checkProgram(*program); });
+    } else {
+        m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
+                             program->diagnostics.end());
+        if (hasErrors(program->diagnostics)) return false;
+    }
     startLevel(program, 0, 0);
     m_status = interp::RunStatus::BudgetUsed;
     return true;
@@ -174,7 +205,11 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         m_blockOffset = m_reader->offset();
         if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
             m_releasedBefore = m_blockOffset;
-            m_levels.back().program->source->releaseBefore(m_blockOffset);
+            ProgramFile& program = *m_levels.back().program;
+            program.source->releaseBefore(m_blockOffset);
+            if (&program == m_checking && m_checkThread.joinable()) {
+                program.executionOffset.store(m_blockOffset);
+            }
         }
         if (!m_reader->next(m_line)) {
             endOfProgram(false);
@@ -197,7 +232,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         if (m_block.hidden && m_settings.blockSkip) continue;
         execute(m_block.statement);
     }
-    if (m_status == interp::RunStatus::Failed) {
+    if (m_status == interp::RunStatus::Failed && waitForCheck()) {
         // The blocks before the error run; only the one that failed and those after it do not.
         (void)m_path.flush();
     }
@@ -252,6 +287,7 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
 }
 
 void KlartextInterpreter::finish(bool emitEnd, int mCode) {
+    if (!waitForCheck()) return;
     if (!checkPathError(m_path.flush())) return;
     if (emitEnd && !m_endEmitted) {
         if (m_spindle != canon::SpindleDirection::Stopped) {
@@ -278,6 +314,7 @@ void KlartextInterpreter::jumpTo(const LabelPosition& position) {
 }
 
 const LabelPosition* KlartextInterpreter::resolveLabel(const LabelTarget& target) {
+    if (!waitForCheck()) return nullptr;
     const ProgramFile& program = *m_levels.back().program;
     const LabelPosition* position = nullptr;
     std::string shown;

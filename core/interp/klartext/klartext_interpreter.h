@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/interp/interpreter.h"
@@ -41,8 +42,13 @@ public:
     KlartextInterpreter(program::SourceRegistry& sources, KlartextSettings settings);
     ~KlartextInterpreter() override;
 
+    // Inline: the program is checked before load() returns. Background: the check runs in a
+    // second thread while execution starts; jumps and the program end wait for it, and if it
+    // finds errors checkFailed() becomes true and the run stops.
+    enum class CheckMode : uint8_t { Inline, Background };
+
     // Loads and checks the main program. False if it cannot run (diagnostics() says why).
-    bool load(const std::filesystem::path& path);
+    bool load(const std::filesystem::path& path, CheckMode mode = CheckMode::Inline);
     bool loadText(std::string text, const std::string& path);
 
     interp::RunStatus run(canon::Sink& sink, uint64_t blockBudget) override;
@@ -50,6 +56,7 @@ public:
     const DiagnosticList& diagnostics() const override { return m_diagnostics; }
     uint64_t blocksExecuted() const override { return m_blocks; }
     Pose nominalPosition() const override { return m_programmed; }
+    bool checkFailed() const override { return m_checkFailed; }
 
     const QParameters& parameters() const { return m_q; }
 
@@ -101,7 +108,9 @@ private:
     };
 
     // Program flow (klartext_interpreter.cpp).
-    ProgramFile* loadProgram(const std::filesystem::path& path, std::string* error);
+    bool waitForCheck();
+    ProgramFile* loadProgram(const std::filesystem::path& path, std::string* error,
+                             bool check = true);
     void startLevel(ProgramFile* program, size_t returnOffset, uint32_t returnLine);
     bool endOfProgram(bool explicitEnd);
     void finish(bool emitEnd, int mCode);
@@ -162,6 +171,10 @@ private:
     QParameters m_q;
 
     std::vector<std::unique_ptr<ProgramFile>> m_programs;
+    std::thread m_checkThread;
+    ProgramFile* m_checking = nullptr;  // program the background check works on
+    bool m_checkFailed = false;
+    size_t m_diagnosticsAtLoad = 0;
     std::vector<Level> m_levels;
     std::vector<LabelFrame> m_frames;
     std::optional<BlockReader> m_reader;

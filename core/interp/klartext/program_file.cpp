@@ -1,6 +1,8 @@
 #include "core/interp/klartext/program_file.h"
 
+#include <chrono>
 #include <set>
+#include <thread>
 #include <vector>
 
 #include "core/interp/klartext/block_parser.h"
@@ -36,6 +38,20 @@ std::string labelText(const LabelTarget& t) {
 
 }  // namespace
 
+bool programUsesInch(const program::SourceText& source) {
+    BlockReader reader(source.text());
+    program::LogicalLine line;
+    BlockParser parser(nullptr);
+    ParsedBlock block;
+    while (reader.next(line)) {
+        if (!parser.parse(line, block)) return false;
+        if (std::holds_alternative<Empty>(block.statement)) continue;
+        const auto* begin = std::get_if<BeginPgm>(&block.statement);
+        return begin != nullptr && begin->inch;
+    }
+    return false;
+}
+
 void checkProgram(ProgramFile& program) {
     DiagnosticList& out = program.diagnostics;
     out.clear();
@@ -62,9 +78,14 @@ void checkProgram(ProgramFile& program) {
     };
 
     constexpr size_t kReleaseStep = 8u << 20;
+    constexpr size_t kWindow = 16u << 20;
     size_t released = 0;
     while (reader.next(line)) {
-        if (line.offset >= released + kReleaseStep) {
+        if (program.followExecution) {
+            while (line.offset > kWindow && line.offset - kWindow > program.executionOffset.load()) {
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
+            }
+        } else if (line.offset >= released + kReleaseStep) {
             released = line.offset;
             program.source->releaseBefore(released);
         }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -26,6 +28,12 @@ struct ProgramFile {
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
 
+    // For a check running alongside execution: how far execution has read. The check stays
+    // within a window ahead of it so the text between them is all that is resident; SIZE_MAX lets
+    // it run freely (execution waits for it).
+    std::atomic<size_t> executionOffset{SIZE_MAX};
+    bool followExecution = false;
+
     const LabelPosition* findLabel(int number) const;
     const LabelPosition* findLabel(const std::string& name) const;
 };
@@ -34,5 +42,8 @@ struct ProgramFile {
 // unknown jump targets, labels defined twice, missing BEGIN/END PGM, block numbers out of order,
 // and (as warnings) features this release parses but does not execute.
 void checkProgram(ProgramFile& program);
+
+// Whether the program's BEGIN PGM block says INCH (its first block; MM otherwise).
+bool programUsesInch(const program::SourceText& source);
 
 }  // namespace kerf::klartext
