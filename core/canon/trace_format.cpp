@@ -132,7 +132,10 @@ struct BodyPrinter {
     void operator()(const DiameterMode& m) {
         out += m.xInDiameter ? "XMODE DIAMETER" : "XMODE RADIUS";
     }
-    void operator()(const Dwell& m) { appendWord(out, "DWELL ", m.seconds, kFeedDecimals); }
+    void operator()(const Dwell& m) {
+        out += "DWELL";
+        appendWord(out, "", m.seconds, kFeedDecimals);
+    }
     void operator()(const SpindleControl& m) {
         out += "SPINDLE ";
         out += spindleName(m.direction);
@@ -143,7 +146,8 @@ struct BodyPrinter {
         }
     }
     void operator()(const SpindleOrient& m) {
-        appendWord(out, "ORIENT ", m.angleDeg, kLengthDecimals);
+        out += "ORIENT";
+        appendWord(out, "", m.angleDeg, kLengthDecimals);
     }
     void operator()(const CoolantControl& m) {
         out += "COOLANT ";
@@ -228,7 +232,8 @@ struct BodyPrinter {
         }
     }
     void operator()(const PathTolerance& m) {
-        appendWord(out, "TOLERANCE ", m.toleranceMm, kLengthDecimals);
+        out += "TOLERANCE";
+        appendWord(out, "", m.toleranceMm, kLengthDecimals);
     }
 };
 

@@ -878,8 +878,14 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     return c.fail("syntax", KERF_TR_NOOP("'F-PRINT' expected"));
                 }
                 std::string_view rest = cur.restUntilComment();
+                // "mask / output": the separator is a slash between blanks (TNC names may
+                // contain forward slashes too).
                 size_t slash = rest.find(" / ");
-                if (slash == std::string_view::npos) slash = rest.find('/');
+                if (slash != std::string_view::npos) {
+                    ++slash;
+                } else {
+                    slash = rest.find('/');
+                }
                 PrintBlock b;
                 b.formatted = true;
                 if (slash == std::string_view::npos) {

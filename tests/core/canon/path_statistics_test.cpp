@@ -1,0 +1,49 @@
+#include "core/canon/path_statistics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace kerf::canon {
+namespace {
+
+Pose xyz(double x, double y, double z) {
+    Pose p;
+    p[Axis::X] = x;
+    p[Axis::Y] = y;
+    p[Axis::Z] = z;
+    return p;
+}
+
+TEST(PathStatistics, CountsLengthsBoundsAndTime) {
+    PathStatistics stats(500.0);
+    stats.setStart(xyz(0, 0, 0));
+    stats.consume({{}, RapidMove{xyz(0, 0, 50)}});
+    stats.consume({{}, LinearMove{xyz(30, 40, 50), 600}});  // 50 mm at 10 mm/s
+    // Half circle of radius 10 around (30,50) from (30,40) to (30,60), CCW, 3 mm down.
+    ArcMove arc{xyz(30, 60, 47), Vec3(30, 50, 0), Plane::XY, 3.14159265358979323846, 600};
+    stats.consume({{}, arc});
+    stats.consume({{}, Dwell{2}});
+    stats.consume({{}, ToolChange{1, "", {}, Axis::Z}});
+    EXPECT_EQ(stats.rapidCount(), 1);
+    EXPECT_DOUBLE_EQ(stats.rapidLengthMm(), 50);
+    EXPECT_EQ(stats.feedCount(), 2);
+    const double arcLength = std::hypot(10 * 3.14159265358979323846, 3.0);
+    EXPECT_NEAR(stats.feedLengthMm(), 50 + arcLength, 1e-9);
+    // The half circle from 270 to 90 degrees passes 0 degrees: x reaches 40.
+    EXPECT_NEAR(stats.feedBounds().max[0], 40, 1e-9);
+    EXPECT_NEAR(stats.feedBounds().min[2], 47, 1e-9);
+    EXPECT_NEAR(stats.machiningTimeS(), 50.0 / 500 + (50 + arcLength) / 10 + 2, 1e-9);
+    EXPECT_EQ(stats.toolChanges(), 1);
+}
+
+TEST(PathStatistics, FeedPerRevolutionUsesTheSpindleSpeed) {
+    PathStatistics stats(500.0);
+    stats.consume({{}, SpindleControl{SpindleDirection::Clockwise, 1000}});
+    stats.consume({{}, SetFeedMode{FeedMode::PerRevolution}});
+    stats.consume({{}, LinearMove{xyz(20, 0, 0), 0.2}});  // 200 mm/min: 20 mm in 6 s
+    EXPECT_NEAR(stats.machiningTimeS(), 6.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace kerf::canon

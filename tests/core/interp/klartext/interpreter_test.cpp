@@ -1,0 +1,183 @@
+#include "core/interp/klartext/klartext_interpreter.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/base/atomic_file.h"
+#include "core/machine/machine_loader.h"
+
+namespace kerf::klartext {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Recorder : public canon::Sink {
+public:
+    void consume(const canon::Command& c) override { commands.push_back(c); }
+    std::vector<canon::Command> commands;
+    template <typename T>
+    std::vector<T> all() const {
+        std::vector<T> out;
+        for (const auto& c : commands) {
+            if (const auto* t = std::get_if<T>(&c.body)) out.push_back(*t);
+        }
+        return out;
+    }
+};
+
+class InterpreterTest : public testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("kerf_interp_" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        machine = *machine::loadMachine("mill");
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    std::unique_ptr<KlartextInterpreter> make() {
+        KlartextSettings settings;
+        settings.machine = &machine;
+        settings.ncRoot = dir;
+        settings.remanentFile = dir / "qr.txt";
+        return std::make_unique<KlartextInterpreter>(sources, settings);
+    }
+    // Runs a program to its end, answering syncs with the given position.
+    interp::RunStatus runText(KlartextInterpreter& k, const std::string& text,
+                              const Pose* world = nullptr) {
+        const fs::path path = dir / "P.H";
+        writeFileAtomically(path, text);
+        if (!k.load(path)) return interp::RunStatus::Failed;
+        for (;;) {
+            auto status = k.run(out, 1000);
+            if (status == interp::RunStatus::NeedsSync) {
+                interp::WorldSnapshot w;
+                w.position = world ? *world : k.nominalPosition();
+                k.resume(w);
+                continue;
+            }
+            if (status != interp::RunStatus::BudgetUsed) return status;
+        }
+    }
+
+    fs::path dir;
+    machine::MachineConfig machine;
+    program::SourceRegistry sources;
+    Recorder out;
+};
+
+TEST_F(InterpreterTest, RemanentParametersSurviveARun) {
+    {
+        auto k = make();
+        EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 QR5 = 42\n2 END PGM A MM\n"),
+                  interp::RunStatus::Finished);
+    }
+    auto k = make();
+    EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 L X+QR5 Y+0 Z+0 R0 FMAX\n2 END PGM A MM\n"),
+              interp::RunStatus::Finished);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 42);
+}
+
+TEST_F(InterpreterTest, FPrintWritesInsideTheNcRoot) {
+    writeFileAtomically(dir / "MASK.A", "\"R = %5.2F\", Q1;\n");
+    auto k = make();
+    EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 Q1 = 2.5\n2 FN 16: F-PRINT MASK.A / OUT.TXT\n"
+                          "3 END PGM A MM\n"),
+              interp::RunStatus::Finished);
+    auto text = readWholeFile(dir / "OUT.TXT");
+    ASSERT_TRUE(text.ok());
+    EXPECT_EQ(*text, "R =  2.50\n");
+    auto bad = make();
+    EXPECT_EQ(runText(*bad, "0 BEGIN PGM A MM\n1 FN 16: F-PRINT MASK.A / ../../OUT.TXT\n"
+                            "2 END PGM A MM\n"),
+              interp::RunStatus::Failed);
+}
+
+TEST_F(InterpreterTest, ContinuesFromWhereTheOperatorMovedTheMachine) {
+    // After a stop the machine was jogged to X50: FN 18 reads it and L IX moves from there.
+    Pose jogged;
+    jogged[Axis::X] = 50;
+    auto k = make();
+    EXPECT_EQ(runText(*k,
+                      "0 BEGIN PGM A MM\n1 L X+10 Y+0 Z+0 R0 FMAX\n2 STOP\n"
+                      "3 FN 18: SYSREAD Q1 = ID270 NR1 IDX1\n4 L IX+5 FMAX\n5 END PGM A MM\n",
+                      &jogged),
+              interp::RunStatus::Finished);
+    EXPECT_DOUBLE_EQ(k->parameters().get({QKind::Q, 1}), 50);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 55);
+}
+
+TEST_F(InterpreterTest, BackgroundCheckGivesTheSameResult) {
+    const char* program =
+        "0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 LBL 1\n3 L IX+1 F100\n"
+        "4 CALL LBL 1 REP 3\n5 END PGM A MM\n";
+    writeFileAtomically(dir / "B.H", program);
+    auto k = make();
+    ASSERT_TRUE(k->load(dir / "B.H", KlartextInterpreter::CheckMode::Background));
+    while (k->run(out, 2) == interp::RunStatus::BudgetUsed) {
+    }
+    EXPECT_FALSE(k->checkFailed());
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 4);
+    // With an error near the end the run is rejected even though it started.
+    writeFileAtomically(dir / "C.H", "0 BEGIN PGM A MM\n1 L X+5 Y+0 Z+0 R0 FMAX\n2 BOGUS\n"
+                                     "3 END PGM A MM\n");
+    auto bad = make();
+    ASSERT_TRUE(bad->load(dir / "C.H", KlartextInterpreter::CheckMode::Background));
+    while (bad->run(out, 1) == interp::RunStatus::BudgetUsed) {
+    }
+    EXPECT_TRUE(bad->checkFailed());
+    ASSERT_FALSE(bad->diagnostics().empty());
+    EXPECT_EQ(bad->diagnostics().front().line, 3u);
+}
+
+TEST_F(InterpreterTest, ProgramCallsCannotRecurseForever) {
+    writeFileAtomically(dir / "SELF.H", "0 BEGIN PGM SELF MM\n1 CALL PGM SELF.H\n2 END PGM SELF MM\n");
+    auto k = make();
+    ASSERT_TRUE(k->load(dir / "SELF.H"));
+    while (k->run(out, 100) == interp::RunStatus::BudgetUsed) {
+    }
+    EXPECT_EQ(k->diagnostics().back().code, "nesting");
+}
+
+TEST_F(InterpreterTest, HelixSignMustMatchDirection) {
+    auto k = make();
+    EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 CC X+0 Y+0\n2 L X+5 Y+0 Z+0 R0 FMAX\n"
+                          "3 CP IPA-90 DR+ F100\n4 END PGM A MM\n"),
+              interp::RunStatus::Failed);
+    EXPECT_EQ(k->diagnostics().back().message(), "the sign of IPA does not match DR");
+}
+
+TEST_F(InterpreterTest, ToolAxisMovesWaitInsideCompensation) {
+    // L Z-moves between compensated elements stay at the corner's tool position.
+    writeFileAtomically(dir / "TOOL.T",
+                        "BEGIN TOOL.T MM\nT    NAME    L      R\n1    A       +10    +2\n[END]\n");
+    auto tools = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(tools.ok());
+    KlartextSettings settings;
+    settings.machine = &machine;
+    settings.ncRoot = dir;
+    settings.tools = &*tools;
+    KlartextInterpreter k(sources, settings);
+    writeFileAtomically(dir / "Z.H",
+                        "0 BEGIN PGM Z MM\n1 TOOL CALL 1 Z\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
+                        "3 L X+10 RL F100\n4 L X+20\n5 L IZ-1\n6 L Y+10\n7 L Y+20 R0\n"
+                        "8 END PGM Z MM\n");
+    ASSERT_TRUE(k.load(dir / "Z.H"));
+    while (k.run(out, 100) == interp::RunStatus::BudgetUsed) {
+    }
+    auto lines = out.all<canon::LinearMove>();
+    // Activation to (10,2); then (20,2)... the corner at (20,0) is a left turn (inside for RL):
+    // the offsets y=2 and x=18 meet at (18,2); Z goes down there; then up the side x=18.
+    ASSERT_GE(lines.size(), 4u);
+    EXPECT_NEAR(lines[1].target[Axis::X], 18, 1e-9);
+    EXPECT_NEAR(lines[1].target[Axis::Y], 2, 1e-9);
+    EXPECT_NEAR(lines[2].target[Axis::X], 18, 1e-9);
+    EXPECT_NEAR(lines[2].target[Axis::Z], -1, 1e-9);
+    EXPECT_NEAR(lines[3].target[Axis::X], 18, 1e-9);
+    EXPECT_NEAR(lines[3].target[Axis::Y], 10, 1e-9);
+}
+
+}  // namespace
+}  // namespace kerf::klartext
