@@ -9,6 +9,12 @@ target_compile_options(kerf_options INTERFACE
 if(KERF_WERROR)
   target_compile_options(kerf_options INTERFACE -Werror)
 endif()
+if(KERF_FUZZ)
+  # Coverage for libFuzzer plus the sanitizers that turn silent corruption into crashes.
+  target_compile_options(kerf_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined
+    -fno-omit-frame-pointer)
+  target_link_options(kerf_options INTERFACE -fsanitize=address,undefined)
+endif()
 if(KERF_SANITIZE)
   target_compile_options(kerf_options INTERFACE -fsanitize=${KERF_SANITIZE} -fno-omit-frame-pointer)
   target_link_options(kerf_options INTERFACE -fsanitize=${KERF_SANITIZE})

@@ -59,7 +59,8 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     const fs::path programPath = fs::absolute(options.program);
     const fs::path ncRoot = options.ncRoot ? fs::absolute(*options.ncRoot) : programPath.parent_path();
     std::optional<fs::path> toolFile = options.toolTable;
-    if (!toolFile && fs::exists(ncRoot / "TOOL.T")) toolFile = ncRoot / "TOOL.T";
+    std::error_code ignored;
+    if (!toolFile && fs::exists(ncRoot / "TOOL.T", ignored)) toolFile = ncRoot / "TOOL.T";
     if (toolFile) {
         auto tools = tables::ToolTable::load(*toolFile);
         if (!tools) {
@@ -81,7 +82,6 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     settings.blockSkip = options.blockSkip;
     fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
     if (!stateDir.empty()) {
-        std::error_code ignored;
         fs::create_directories(stateDir, ignored);
         settings.remanentFile = stateDir / "qr_parameters.txt";
     }

@@ -6,8 +6,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 namespace kerf {
 
@@ -63,10 +61,27 @@ MaybeError writeFileAtomically(const std::filesystem::path& path, std::string_vi
 }
 
 Expected<std::string> readWholeFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return ioError(path, "open the file");
-    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return ioError(path, "read the file");
+    // POSIX calls rather than streams: no exceptions, and a directory is an error, not a throw.
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return ioError(path, "open the file");
+    struct stat info {};
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+        if (errno == 0 || S_ISDIR(info.st_mode)) errno = EISDIR;
+        Diagnostic error = ioError(path, "read the file");
+        ::close(fd);
+        return error;
+    }
+    std::string content;
+    content.resize(static_cast<size_t>(info.st_size));
+    size_t done = 0;
+    while (done < content.size()) {
+        ssize_t n = ::read(fd, content.data() + done, content.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        done += static_cast<size_t>(n);
+    }
+    ::close(fd);
+    content.resize(done);
     return content;
 }
 

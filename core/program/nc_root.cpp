@@ -21,10 +21,24 @@ bool startsWithNoCase(std::string_view text, std::string_view prefix) {
 
 }  // namespace
 
-NcRoot::NcRoot(fs::path root) : m_root(fs::weakly_canonical(fs::absolute(root))) {}
+namespace {
+
+// weakly_canonical without exceptions: on an error (a name too long, a loop of links) the
+// lexically normal path stands in, which contains() then judges by its text.
+fs::path canonicalOrNormal(const fs::path& path) {
+    std::error_code error;
+    fs::path absolute = fs::absolute(path, error);
+    if (error) return path.lexically_normal();
+    fs::path real = fs::weakly_canonical(absolute, error);
+    return error ? absolute.lexically_normal() : real;
+}
+
+}  // namespace
+
+NcRoot::NcRoot(fs::path root) : m_root(canonicalOrNormal(root)) {}
 
 bool NcRoot::contains(const fs::path& path) const {
-    fs::path real = fs::weakly_canonical(path);
+    fs::path real = canonicalOrNormal(path);
     auto rootIt = m_root.begin();
     auto it = real.begin();
     for (; rootIt != m_root.end(); ++rootIt, ++it) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/base/saturating.h"
 #include "core/base/translate.h"
 
 namespace kerf::klartext {
@@ -572,7 +573,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     b.name = m_env ? m_env->string(ref->index) : std::string();
                 } else {
                     double v = m_env ? m_env->number(*ref) : 0.0;
-                    b.number = static_cast<int>(std::lround(v));
+                    b.number = saturatingInt(std::round(v));
                 }
             }
             if (auto axis = parseToolAxis(cur)) b.axis = axis;
@@ -610,7 +611,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 b.name = std::string(*name);
             } else if (isDigit(cur.peek())) {
                 auto number = cur.unsignedNumber();
-                b.number = static_cast<int>(number.value_or(0.0));
+                b.number = saturatingInt(number.value_or(0.0));
             }
             while (!cur.atEnd()) {
                 double v = 0.0;
@@ -854,7 +855,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 double number = 0.0;
                 if (!c.value(number)) return false;
                 if (!c.expectEnd()) return false;
-                out.statement = ErrorBlock{static_cast<int>(number)};
+                out.statement = ErrorBlock{saturatingInt(number)};
                 return true;
             }
             case 15: {
@@ -913,14 +914,14 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 double v = 0.0;
                 if (!cur.acceptPrefix("ID")) return c.fail("syntax", KERF_TR_NOOP("'ID' expected"));
                 if (!c.value(v)) return false;
-                b.id = static_cast<int>(v);
+                b.id = saturatingInt(v);
                 if (cur.acceptPrefix("NR")) {
                     if (!c.value(v)) return false;
-                    b.nr = static_cast<int>(v);
+                    b.nr = saturatingInt(v);
                 }
                 if (cur.acceptPrefix("IDX")) {
                     if (!c.value(v)) return false;
-                    b.idx = static_cast<int>(v);
+                    b.idx = saturatingInt(v);
                     b.hasIdx = true;
                 }
                 if (!c.expectEnd()) return false;
@@ -967,7 +968,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 }
                 double row = 0.0;
                 if (!c.value(row)) return false;
-                b.row = static_cast<int>(row);
+                b.row = saturatingInt(row);
                 if (!cur.acceptChar('/')) return c.fail("syntax", KERF_TR_NOOP("'/' expected"));
                 auto columns = cur.quoted();
                 if (!columns) return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
@@ -1027,7 +1028,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             // Only the first segment is the header; further segments are "Qnnn=value ;comment".
             size_t headerEnd =
                 line.segments.size() > 1 ? line.segments[1].joinedOffset : text.size();
-            Cursor hc(text.substr(0, headerEnd), cur.position());
+            Cursor hc(text.substr(0, std::max(headerEnd, cur.position())), cur.position());
             std::string header(hc.restUntilComment());
             if (oldStyle) {
                 b.rest = std::move(header);

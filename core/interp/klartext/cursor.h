@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string_view>
 
@@ -9,10 +10,11 @@ namespace kerf::klartext {
 // numbers accept a decimal comma (files from controls set to German or Portuguese).
 class Cursor {
 public:
-    explicit Cursor(std::string_view text, size_t position = 0) : m_text(text), m_pos(position) {}
+    explicit Cursor(std::string_view text, size_t position = 0)
+        : m_text(text), m_pos(std::min(position, text.size())) {}
 
     size_t position() const { return m_pos; }
-    void setPosition(size_t position) { m_pos = position; }
+    void setPosition(size_t position) { m_pos = std::min(position, m_text.size()); }
     std::string_view text() const { return m_text; }
     std::string_view rest() const { return m_text.substr(m_pos); }
 

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/base/saturating.h"
 #include "core/base/translate.h"
 #include "core/geometry/arc_math.h"
 
@@ -300,7 +301,7 @@ std::optional<double> FormulaParser::stringFunction(std::string_view name) {
             if (!value) return std::nullopt;
             begin = *value;
         }
-        size_t from = begin > 0.0 ? static_cast<size_t>(begin) : 0;
+        size_t from = saturatingCast<size_t>(begin);
         size_t found = from <= source->size() ? source->find(*search, from) : std::string::npos;
         result = static_cast<double>(found == std::string::npos ? source->size() : found);
     } else {  // TONUMB
@@ -384,9 +385,9 @@ std::optional<std::string> FormulaParser::stringTerm() {
             fail("math", KERF_TR_NOOP("SUBSTR needs BEG and LEN of at least 0"));
             return std::nullopt;
         }
-        auto from = static_cast<size_t>(*begin);
+        auto from = saturatingCast<size_t>(*begin);
         if (from > source->size()) return std::string();
-        return source->substr(from, static_cast<size_t>(*length));
+        return source->substr(from, saturatingCast<size_t>(*length));
     }
     if (m_cursor.acceptKeyword("SYSSTR")) {
         if (!m_cursor.acceptChar('(')) {
@@ -406,10 +407,10 @@ std::optional<std::string> FormulaParser::stringTerm() {
             return std::nullopt;
         }
         if (!m_env) return std::string();
-        auto text = m_env->systemString(static_cast<int>(*id), static_cast<int>(nr));
+        auto text = m_env->systemString(saturatingInt(*id), saturatingInt(nr));
         if (!text) {
             fail("not-supported", KERF_TR_NOOP("SYSSTR ID{1} NR{2} is not available"),
-                 {std::to_string(static_cast<int>(*id)), std::to_string(static_cast<int>(nr))});
+                 {std::to_string(saturatingInt(*id)), std::to_string(saturatingInt(nr))});
             return std::nullopt;
         }
         return text;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/base/saturating.h"
 #include "core/base/translate.h"
 
 namespace kerf::klartext {
@@ -45,7 +46,7 @@ std::string formatField(std::string spec, const Value& value) {
     } else if (conversion == 'D' || conversion == 'd' || conversion == 'I' || conversion == 'i') {
         spec += 'd';
         n = std::snprintf(buffer, sizeof buffer, spec.c_str(),
-                          static_cast<int>(value.isString ? 0.0 : value.number));
+                          saturatingInt(value.isString ? 0.0 : value.number));
     } else {
         spec += 'f';
         n = std::snprintf(buffer, sizeof buffer, spec.c_str(), value.isString ? 0.0 : value.number);

@@ -58,7 +58,8 @@ void KlartextInterpreter::executePrint(const PrintBlock& print) {
         return;
     }
     std::string content = formatted->text;
-    if (formatted->append && std::filesystem::exists(*outputPath)) {
+    std::error_code ignored;
+    if (formatted->append && std::filesystem::exists(*outputPath, ignored)) {
         auto previous = readWholeFile(*outputPath);
         if (previous) content = *previous + content;
     }

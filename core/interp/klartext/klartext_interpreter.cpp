@@ -30,7 +30,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
                                          KlartextSettings settings)
     : m_sources(sources),
       m_settings(std::move(settings)),
-      m_root(m_settings.ncRoot.empty() ? std::filesystem::current_path() : m_settings.ncRoot),
+      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot),
       m_environment(std::make_unique<Environment>(*this)),
       m_parser(m_environment.get()),
       m_path(m_out) {
@@ -402,12 +402,13 @@ void KlartextInterpreter::callProgram(const CallPgm& call) {
         return;
     }
     std::filesystem::path target = *path;
-    if (!std::filesystem::exists(target)) {
+    std::error_code ignored;
+    if (!std::filesystem::exists(target, ignored)) {
         // The TNC accepts the name without its extension for conversational programs.
         for (const char* ext : {".H", ".h"}) {
             std::filesystem::path withExt = target;
             withExt += ext;
-            if (std::filesystem::exists(withExt)) {
+            if (std::filesystem::exists(withExt, ignored)) {
                 target = withExt;
                 break;
             }

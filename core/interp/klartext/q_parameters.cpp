@@ -86,7 +86,8 @@ void QParameters::popLocalLevel() {
 }
 
 MaybeError QParameters::loadRemanent(const std::filesystem::path& file) {
-    if (!std::filesystem::exists(file)) return std::nullopt;
+    std::error_code ignored;
+    if (!std::filesystem::exists(file, ignored)) return std::nullopt;
     auto text = readWholeFile(file);
     if (!text) return text.error();
     size_t start = 0;

@@ -179,5 +179,31 @@ TEST_F(InterpreterTest, ToolAxisMovesWaitInsideCompensation) {
     EXPECT_NEAR(lines[3].target[Axis::Y], 10, 1e-9);
 }
 
+// Inputs the fuzzer found crashing the interpreter: they must give diagnostics instead.
+TEST_F(InterpreterTest, FuzzerFindingsGiveDiagnostics) {
+    const std::string longName(5000, 'x');
+    const std::vector<std::string> programs = {
+        "0 BEGIN PGM A MM\n1 CALL PGM ../" + longName + "\n2 END PGM A MM\n",
+        "0 BEGIN PGM A MM\n1 FN 14: ERROR = 99999999999999999999\n2 FN 18: SYSREAD Q1 = ID99999999999999 NR-99999999999999\n"
+        "3 END PGM A MM\n",
+        "0 BEGIN PGM A MM\n2 CYCL DEF ~\n 200 DRILLING\n3 END PGM A MM\n",
+        "0 BEGIN PGM A MM\n1 FN 26: TABOPEN .\n2 END PGM A MM\n",
+        "0 BEGIN PGM A MM\n1 QS1 = \"ab\"\n2 QS2 = SUBSTR ( SRC_QS1 BEG99999999999999 LEN99999999999999 )\n"
+        "3 END PGM A MM\n",
+    };
+    // The first four are errors; the fifth is a valid program (SUBSTR beyond the end is empty).
+    for (size_t i = 0; i < programs.size(); ++i) {
+        auto k = make();
+        auto status = runText(*k, programs[i]);
+        if (i < 4) {
+            EXPECT_EQ(status, interp::RunStatus::Failed) << programs[i].substr(0, 60);
+            EXPECT_TRUE(hasErrors(k->diagnostics()));
+        } else {
+            EXPECT_EQ(status, interp::RunStatus::Finished);
+            EXPECT_EQ(k->parameters().getString(2), "");
+        }
+    }
+}
+
 }  // namespace
 }  // namespace kerf::klartext
