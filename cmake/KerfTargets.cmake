@@ -4,7 +4,7 @@ add_library(kerf_options INTERFACE)
 target_include_directories(kerf_options INTERFACE ${PROJECT_SOURCE_DIR})
 target_compile_options(kerf_options INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
-  -Woverloaded-virtual -Wconversion -Wsign-conversion -Wnull-dereference -Wdouble-promotion
+  -Woverloaded-virtual -Wconversion -Wsign-conversion -Wdouble-promotion
   -Wimplicit-fallthrough)
 if(KERF_WERROR)
   target_compile_options(kerf_options INTERFACE -Werror)
