@@ -18,6 +18,12 @@ ParsedBlock parse(std::string_view text) {
     return block;
 }
 
+// The statement of the first block, as a value (the parsed block is a temporary).
+template <typename T>
+T first(std::string_view text) {
+    return std::get<T>(parse(text).statement);
+}
+
 // The offset and message of a syntax error in a single line.
 std::pair<size_t, std::string> problem(std::string_view text) {
     BlockReader reader(text);
@@ -45,86 +51,86 @@ TEST(BlockParser, LinearBlockWithEveryWord) {
 }
 
 TEST(BlockParser, FeedKeywordsAndOldListingForms) {
-    EXPECT_EQ(std::get<LinearBlock>(parse("L X+1 FMAX").statement).words.feed.kind,
+    EXPECT_EQ(first<LinearBlock>("L X+1 FMAX").words.feed.kind,
               FeedWord::Kind::Max);
-    EXPECT_EQ(std::get<LinearBlock>(parse("L X+1 F AUTO").statement).words.feed.kind,
+    EXPECT_EQ(first<LinearBlock>("L X+1 F AUTO").words.feed.kind,
               FeedWord::Kind::Auto);
-    EXPECT_EQ(std::get<LinearBlock>(parse("L X+1 FU0.1").statement).words.feed.kind,
+    EXPECT_EQ(first<LinearBlock>("L X+1 FU0.1").words.feed.kind,
               FeedWord::Kind::PerRevolution);
-    EXPECT_EQ(std::get<LinearBlock>(parse("L X+1 FZ0,05").statement).words.feed.kind,
+    EXPECT_EQ(first<LinearBlock>("L X+1 FZ0,05").words.feed.kind,
               FeedWord::Kind::PerTooth);
     // Values that were not entered are listed as bare letters by older controls.
-    const auto& bare = std::get<LinearBlock>(parse("L X+1,000 R F M").statement);
+    const auto bare = first<LinearBlock>("L X+1,000 R F M");
     EXPECT_EQ(bare.words.comp, CompWord::None);
     EXPECT_EQ(bare.words.feed.kind, FeedWord::Kind::None);
     EXPECT_EQ(bare.words.m.count, 0);
 }
 
 TEST(BlockParser, CircleRadiusAndCompensationWords) {
-    const auto& cr = std::get<CircleRadiusBlock>(parse("CR X+10 Y+0 R-20 DR- R0 F100").statement);
+    const auto cr = first<CircleRadiusBlock>("CR X+10 Y+0 R-20 DR- R0 F100");
     EXPECT_DOUBLE_EQ(cr.radius, -20);
     EXPECT_EQ(cr.direction, Direction::Cw);
     EXPECT_EQ(cr.words.comp, CompWord::Off);
-    EXPECT_DOUBLE_EQ(std::get<RoundBlock>(parse("RND R0,5").statement).radius, 0.5);
-    const auto& c = std::get<CircleBlock>(parse("C DR+").statement);
+    EXPECT_DOUBLE_EQ(first<RoundBlock>("RND R0,5").radius, 0.5);
+    const auto c = first<CircleBlock>("C DR+");
     EXPECT_EQ(c.coords.present, 0);
     EXPECT_EQ(c.direction, Direction::Ccw);
 }
 
 TEST(BlockParser, PolarAndApproachBlocks) {
-    const auto& lp = std::get<LinePolarBlock>(parse("LP IPR+5 PA-30 RR").statement);
+    const auto lp = first<LinePolarBlock>("LP IPR+5 PA-30 RR");
     EXPECT_TRUE(lp.polar.radiusIncremental);
     EXPECT_DOUBLE_EQ(*lp.polar.angle, -30);
-    const auto& cp = std::get<CirclePolarBlock>(parse("CP IPA+720 IZ-4 DR+").statement);
+    const auto cp = first<CirclePolarBlock>("CP IPA+720 IZ-4 DR+");
     EXPECT_TRUE(cp.polar.angleIncremental);
     EXPECT_TRUE(cp.coords[Axis::Z].incremental);
-    const auto& appr = std::get<ApproachBlock>(parse("APPR PCT PR+10 PA+0 CCA90 R+5 RL F100").statement);
+    const auto appr = first<ApproachBlock>("APPR PCT PR+10 PA+0 CCA90 R+5 RL F100");
     EXPECT_TRUE(appr.polar);
     EXPECT_EQ(appr.kind, ApproachKind::CT);
     EXPECT_DOUBLE_EQ(*appr.angle, 90);
     EXPECT_DOUBLE_EQ(*appr.radius, 5);
-    const auto& dep = std::get<ApproachBlock>(parse("DEP LT LEN12.5 R0").statement);
+    const auto dep = first<ApproachBlock>("DEP LT LEN12.5 R0");
     EXPECT_TRUE(dep.depart);
     EXPECT_DOUBLE_EQ(*dep.length, 12.5);
 }
 
 TEST(BlockParser, ToolCallForms) {
-    const auto& a = std::get<ToolCall>(parse("TOOL CALL 5 Z S3000 F200 DL+0.1 DR-0,2 DR2+0").statement);
+    const auto a = first<ToolCall>("TOOL CALL 5 Z S3000 F200 DL+0.1 DR-0,2 DR2+0");
     EXPECT_EQ(*a.number, 5);
     EXPECT_EQ(*a.axis, Axis::Z);
     EXPECT_DOUBLE_EQ(*a.dr, -0.2);
     EXPECT_DOUBLE_EQ(*a.dr2, 0);
-    const auto& b = std::get<ToolCall>(parse("TOOL CALL \"MILL_D10\" Y S1000").statement);
+    const auto b = first<ToolCall>("TOOL CALL \"MILL_D10\" Y S1000");
     EXPECT_EQ(*b.name, "MILL_D10");
     EXPECT_EQ(*b.axis, Axis::Y);
-    const auto& c = std::get<ToolCall>(parse("TOOL CALL  DL-Q108").statement);
+    const auto c = first<ToolCall>("TOOL CALL  DL-Q108");
     EXPECT_FALSE(c.number);
     EXPECT_TRUE(c.dl);
 }
 
 TEST(BlockParser, LabelsAndCalls) {
-    EXPECT_EQ(*std::get<Label>(parse("LBL1").statement).target.number, 1);
-    EXPECT_EQ(*std::get<Label>(parse("LBL \"start\"").statement).target.name, "start");
-    EXPECT_EQ(std::get<CallLabel>(parse("CALL LBL 1 REP 25/25").statement).repeat, 25);
-    EXPECT_EQ(std::get<CallLabel>(parse("CALL LBL 1 REP2").statement).repeat, 2);
-    EXPECT_EQ(*std::get<CallLabel>(parse("CALL LBL QS4").statement).target.stringParameter, 4);
+    EXPECT_EQ(*first<Label>("LBL1").target.number, 1);
+    EXPECT_EQ(*first<Label>("LBL \"start\"").target.name, "start");
+    EXPECT_EQ(first<CallLabel>("CALL LBL 1 REP 25/25").repeat, 25);
+    EXPECT_EQ(first<CallLabel>("CALL LBL 1 REP2").repeat, 2);
+    EXPECT_EQ(*first<CallLabel>("CALL LBL QS4").target.stringParameter, 4);
     EXPECT_EQ(std::get<CallPgm>(parse("CALL PGM TNC:\\dir\\SUB.H ;x").statement).path,
               "TNC:\\dir\\SUB.H");
 }
 
 TEST(BlockParser, FnBlocks) {
-    const auto& jump = std::get<ConditionalJump>(parse("FN 11: IF +Q1 GT Q31 GOTO LBL \"x\"").statement);
+    const auto jump = first<ConditionalJump>("FN 11: IF +Q1 GT Q31 GOTO LBL \"x\"");
     EXPECT_EQ(jump.comparison, Comparison::Greater);
     EXPECT_EQ(*jump.target.name, "x");
-    const auto& read = std::get<SysRead>(parse("FN18: SYSREAD QL28 = ID220 NR2 IDX1").statement);
+    const auto read = first<SysRead>("FN18: SYSREAD QL28 = ID220 NR2 IDX1");
     EXPECT_EQ(read.target.kind, QKind::QL);
     EXPECT_EQ(read.id, 220);
     EXPECT_EQ(read.idx, 1);
-    EXPECT_EQ(std::get<ErrorBlock>(parse("FN 14: ERROR = 1010").statement).number, 1010);
-    const auto& tab = std::get<TableAccess>(parse("FN 27: TABWRITE 2/\"X, Y\" = Q5").statement);
+    EXPECT_EQ(first<ErrorBlock>("FN 14: ERROR = 1010").number, 1010);
+    const auto tab = first<TableAccess>("FN 27: TABWRITE 2/\"X, Y\" = Q5");
     EXPECT_TRUE(tab.write);
     EXPECT_EQ(tab.columnCount, 2u);
-    EXPECT_EQ(std::get<PrintBlock>(parse("FN15: PRINT Q1/Q2/Q3").statement).values.size(), 3u);
+    EXPECT_EQ(first<PrintBlock>("FN15: PRINT Q1/Q2/Q3").values.size(), 3u);
     EXPECT_TRUE(std::holds_alternative<Deferred>(parse("FN 20: WAIT FOR xyz").statement));
 }
 
@@ -132,7 +138,7 @@ TEST(BlockParser, CycleDefinitionsInBothLayouts) {
     const char* tilde =
         "7 CYCL DEF 200 DRILLING ~\n  Q200=2 ;SET-UP CLEARANCE ~\n  Q201=-20 ;DEPTH ~\n"
         "  Q206=FAUTO ;FEED\n8 L X+0";
-    const auto& a = std::get<CycleDefinition>(parse(tilde).statement);
+    const auto a = first<CycleDefinition>(tilde);
     EXPECT_EQ(a.number, 200);
     EXPECT_EQ(a.name, "DRILLING");
     ASSERT_EQ(a.parameters.size(), 3u);
@@ -141,10 +147,10 @@ TEST(BlockParser, CycleDefinitionsInBothLayouts) {
     EXPECT_EQ(a.parameters[2].raw, "FAUTO");
     EXPECT_FALSE(a.parameters[2].value);
     // The manual's layout: indented parameter lines without '~'.
-    const auto& b = std::get<CycleDefinition>(
-        parse("7 CYCL DEF 200 FURAR\n  Q200=2 ;DISTANCIA\n  Q201=-3 ;PROFUNDIDADE\n8 L").statement);
+    const auto b = first<CycleDefinition>(
+        "7 CYCL DEF 200 FURAR\n  Q200=2 ;DISTANCIA\n  Q201=-3 ;PROFUNDIDADE\n8 L");
     EXPECT_EQ(b.parameters.size(), 2u);
-    const auto& old = std::get<CycleDefinition>(parse("CYCL DEF 7.1  X+10").statement);
+    const auto old = first<CycleDefinition>("CYCL DEF 7.1  X+10");
     EXPECT_EQ(old.number, 7);
     EXPECT_EQ(old.subNumber, 1);
     EXPECT_EQ(old.rest, "X+10");
