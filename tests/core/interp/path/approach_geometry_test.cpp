@@ -43,7 +43,7 @@ TEST(ApproachGeometry, LineIntoCircleIsTangentToTheLine) {
 }
 
 TEST(ApproachGeometry, DepartureNormal) {
-    auto m = departureMoves(ApproachKind::Normal, {40, 30}, {0, 1}, kOffset, 12, 0, 0, {});
+    auto m = departureMoves(ApproachKind::Normal, {40, 30}, {0, 1}, kOffset, 12, 0, 0, Vec2(0, 0));
     ASSERT_TRUE(m);
     EXPECT_NEAR((*m)[0].end.x(), 57, 1e-12);
     EXPECT_NEAR((*m)[0].end.y(), 30, 1e-12);
