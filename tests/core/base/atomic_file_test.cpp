@@ -4,15 +4,15 @@
 
 #include <filesystem>
 
+#include "test_paths.h"
+
 namespace kerf {
 namespace {
 
 namespace fs = std::filesystem;
 
 TEST(AtomicFile, ReplacesContentAndLeavesNoTemporary) {
-    fs::path dir = fs::temp_directory_path() / "kerf_atomic_test";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    fs::path dir = test::uniqueTempDir("atomic");
     fs::path file = dir / "table.T";
     ASSERT_FALSE(writeFileAtomically(file, "first").has_value());
     ASSERT_FALSE(writeFileAtomically(file, "second\n").has_value());

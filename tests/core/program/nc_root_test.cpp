@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include "test_paths.h"
+
 namespace kerf::program {
 namespace {
 
@@ -12,8 +14,7 @@ namespace fs = std::filesystem;
 class NcRootTest : public testing::Test {
 protected:
     void SetUp() override {
-        root = fs::temp_directory_path() / "kerf_ncroot_test";
-        fs::remove_all(root);
+        root = test::uniqueTempDir("ncroot");
         fs::create_directories(root / "parts" / "a");
     }
     void TearDown() override { fs::remove_all(root); }

@@ -5,12 +5,14 @@
 #include <vector>
 
 #include "core/base/atomic_file.h"
+#include "test_paths.h"
 
 namespace kerf::tables::test {
 
 // The shared corpus of real TNC files; tests read it in place, never copy it.
 inline std::filesystem::path corpusDir() {
-    return std::filesystem::path(KERF_SHARED_DIR) / "corpus" / "heidenhain";
+    const std::filesystem::path shared = kerf::test::sharedDir();
+    return shared.empty() ? std::filesystem::path() : shared / "corpus" / "heidenhain";
 }
 
 inline std::filesystem::path corpusFile(const std::string& name) {
@@ -29,10 +31,7 @@ inline const std::string kCuttingData = "drunsinn__pyLSV2__tests__test_files__FR
 
 // A fresh empty folder under the system temporary folder.
 inline std::filesystem::path freshTempDir(const std::string& name) {
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("kerf_tables_" + name);
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
+    return kerf::test::uniqueTempDir("tables_" + name);
 }
 
 }  // namespace kerf::tables::test
