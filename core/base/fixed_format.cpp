@@ -17,8 +17,8 @@ void appendFixed(std::string& out, double value, int decimals) {
     if (decimals < 0) decimals = 0;
     if (decimals > 9) decimals = 9;
     const int64_t scale = kPowersOfTen[decimals];
-    const double scaled = std::round(std::fabs(value) * static_cast<double>(scale));
-    if (!std::isfinite(value) || scaled > 9.0e17) {
+    const double magnitude = std::fabs(value) * static_cast<double>(scale);
+    if (!(magnitude < 9.0e15)) {  // also NaN and infinity
         char buffer[64];
         auto result = std::to_chars(buffer, buffer + sizeof buffer, value,
                                     std::chars_format::fixed, decimals);
@@ -26,7 +26,10 @@ void appendFixed(std::string& out, double value, int decimals) {
         return;
     }
     // Digits are written backwards into a small buffer: fraction, point, integral part, sign.
-    const auto units = static_cast<uint64_t>(scaled);
+    // Round half away from zero without a libm call: below 2^53 the truncation and the
+    // remainder are exact.
+    auto units = static_cast<uint64_t>(magnitude);
+    if (magnitude - static_cast<double>(units) >= 0.5) ++units;
     const bool negative = units != 0 && value < 0;
     uint64_t integral = units / static_cast<uint64_t>(scale);
     uint64_t fraction = units % static_cast<uint64_t>(scale);
