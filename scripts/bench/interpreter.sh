@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Interpreter throughput of Kerf, side by side with LinuxCNC's rs274 when it is installed
+# (apt-get install --no-install-recommends linuxcnc-uspace). Median of RUNS runs each.
+# Usage: scripts/bench/interpreter.sh [RUNS]     (needs a release build: scripts/setup.sh release)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+runs=${1:-5}
+kerf="$root/build/release/app/kerf"
+gen="$root/../shared/tools/gen_nc.py"
+[[ -f $gen ]] || gen=/work/shared/tools/gen_nc.py
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# median TIME and max RSS of a command over $runs runs: prints "seconds rss_kb"
+measure() {
+  local times=() rss=0 t r
+  for ((i = 0; i < runs; i++)); do
+    read -r t r < <( { /usr/bin/time -f "%e %M" "$@" >/dev/null 2>/dev/null; } 2>&1 | tail -1)
+    times+=("$t")
+    ((r > rss)) && rss=$r
+  done
+  printf '%s %s\n' "$(printf '%s\n' "${times[@]}" | sort -n | sed -n "$(((runs + 1) / 2))p")" "$rss"
+}
+
+printf '%-34s %10s %12s %10s %12s\n' program blocks "kerf blk/s" "kerf RSS" "rs274 blk/s"
+for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q 1000000" "fagor 200000" "fagor 1000000"; do
+  read -r dialect blocks <<<"$spec"
+  ext=H; args=(); [[ $dialect == fagor ]] && { ext=pim; args=(--machine lathe --dialect fagor); }
+  python3 "$gen" "$blocks" --dialect "$dialect" -o "$work/p.$ext"
+  read -r kt kr < <(measure "$kerf" run "$work/p.$ext" "${args[@]}" --trace "$work/t.txt" --state-dir "$work")
+  line=$(printf '%-34s %10s %12.0f %9sK' "$dialect $blocks" "$blocks" "$(echo "$blocks / $kt" | bc -l)" "$kr")
+  if command -v rs274 >/dev/null && [[ $dialect != fagor ]]; then
+    if [[ $dialect == klartext ]]; then
+      python3 "$gen" "$blocks" --dialect rs274 -o "$work/p.ngc"
+    else
+      python3 "$root/scripts/bench/rs274_loops.py" "$blocks" -o "$work/p.ngc"
+    fi
+    read -r rt rr < <(measure rs274 -g "$work/p.ngc")
+    line+=$(printf ' %12.0f  (rs274 %ss, kerf %ss, ratio %.1f)' "$(echo "$blocks / $rt" | bc -l)" "$rt" "$kt" "$(echo "$rt / $kt" | bc -l)")
+  fi
+  echo "$line"
+done
