@@ -1,5 +1,6 @@
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
 
 #include "app/runner/headless_run.h"
@@ -36,8 +37,13 @@ int main(int argc, char** argv) {
     run->add_option("--state-dir", runOptions.stateDir, "folder for remanent QR parameters");
     run->add_option("--max-blocks", runOptions.maxBlocks, "stop after this many blocks");
 
-    std::string hmiMachine = "mill";
-    app.add_option("--machine", hmiMachine, "machine for the HMI: mill, lathe or a TOML file");
+#ifdef KERF_WITH_UI
+    kerf::ui::HmiOptions hmi;
+    app.add_option("--machine", hmi.machine, "machine for the HMI: mill, lathe or a TOML file");
+    app.add_option("--screenshot", hmi.screenshot, "save a picture of the HMI to this PNG and exit");
+    std::string size;
+    app.add_option("--size", size, "window size WxH for --screenshot (default 1280x800)");
+#endif
 
     try {
         app.parse(argc, argv);
@@ -48,7 +54,11 @@ int main(int argc, char** argv) {
     if (*check) return kerf::app::checkProgramCommand(checkOptions, std::cerr);
     if (*run) return kerf::app::runProgramCommand(runOptions, std::cerr);
 #ifdef KERF_WITH_UI
-    return kerf::ui::runHmi(argc, argv, hmiMachine);
+    if (!size.empty() && std::sscanf(size.c_str(), "%dx%d", &hmi.width, &hmi.height) != 2) {
+        std::cerr << "kerf: --size must be WIDTHxHEIGHT\n";
+        return 2;
+    }
+    return kerf::ui::runHmi(argc, argv, hmi);
 #else
     std::cerr << "kerf: built without the HMI; use 'kerf check' or 'kerf run'\n";
     return 2;

@@ -4,8 +4,14 @@
 
 namespace kerf::ui {
 
-// Starts the operator panel on the given machine (built-in name or TOML file) and runs the Qt
-// event loop; returns the process exit code.
-int runHmi(int argc, char** argv, const std::string& machine);
+struct HmiOptions {
+    std::string machine = "mill";  // built-in name or TOML file
+    std::string screenshot;        // if set: save a picture of the window there and exit
+    int width = 1280;
+    int height = 800;
+};
+
+// Starts the operator panel and runs the Qt event loop; returns the process exit code.
+int runHmi(int argc, char** argv, const HmiOptions& options);
 
 }  // namespace kerf::ui
