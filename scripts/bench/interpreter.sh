@@ -15,7 +15,8 @@ trap 'rm -rf "$work"' EXIT
 measure() {
   local times=() rss=0 t r
   for ((i = 0; i < runs; i++)); do
-    read -r t r < <( { /usr/bin/time -f "%e %M" "$@" >/dev/null 2>/dev/null; } 2>&1 | tail -1)
+    /usr/bin/time -o "$work/time.txt" -f "%e %M" "$@" >/dev/null 2>&1 || true
+    read -r t r < <(tail -1 "$work/time.txt")
     times+=("$t")
     ((r > rss)) && rss=$r
   done
