@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+
+#include "core/canon/commands.h"
+#include "core/interp/interpreter.h"
+
+namespace kerf::task {
+
+// What the task needs from motion (implemented over the real-time motion thread, simulated
+// time, or nothing at all for a test run). Called from the task thread only.
+class MotionPort {
+public:
+    enum class State : uint8_t { Idle, Running, Held, Stopped, Faulted };
+
+    struct Progress {
+        State state = State::Idle;
+        SourceLocation block;  // the block being executed
+        std::string fault;     // why, when Faulted
+    };
+
+    virtual ~MotionPort() = default;
+
+    // Plans a command; false when motion refuses it (fault() then says why).
+    virtual bool submit(const canon::Command& command) = 0;
+    // Whether more commands may be submitted now (bounded queues).
+    virtual bool hasRoom() const = 0;
+    // Releases what the look-ahead holds back (sync points, program end).
+    virtual void flush() = 0;
+    // Moves planned work towards execution; call regularly.
+    virtual void pump() = 0;
+    // Everything submitted has been executed and the axes stand still.
+    virtual bool drained() const = 0;
+    virtual interp::WorldSnapshot world() const = 0;
+    virtual Progress progress() const = 0;
+
+    virtual void cycleStart() = 0;
+    virtual void feedHold() = 0;
+    virtual void quickStop() = 0;  // stop on the path and discard what is queued
+    virtual void setSingleBlock(bool on) = 0;
+};
+
+}  // namespace kerf::task
