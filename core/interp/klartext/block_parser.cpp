@@ -1009,68 +1009,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         }
     }
     if (head == "CYCL") {
-        if (cur.acceptKeyword("DEF")) {
-            CycleDefinition b;
-            auto number = cur.unsignedNumber();
-            if (!number || *number < 0.0 || *number > 9999.0) {
-                return c.fail("syntax", KERF_TR_NOOP("cycle number expected"));
-            }
-            double whole = std::floor(*number + 1e-9);
-            b.number = static_cast<int>(whole);
-            double fraction = *number - whole;
-            bool oldStyle = false;
-            std::string_view numberText = text.substr(0, cur.position());
-            if (numberText.find_last_of(".,") != std::string_view::npos &&
-                numberText.find_last_of(".,") > numberText.find_last_of(' ')) {
-                oldStyle = true;
-                b.subNumber = static_cast<int>(std::lround(fraction * 10.0));
-            }
-            // Only the first segment is the header; further segments are "Qnnn=value ;comment".
-            size_t headerEnd =
-                line.segments.size() > 1 ? line.segments[1].joinedOffset : text.size();
-            Cursor hc(text.substr(0, std::max(headerEnd, cur.position())), cur.position());
-            std::string header(hc.restUntilComment());
-            if (oldStyle) {
-                b.rest = std::move(header);
-            } else {
-                b.name = std::move(header);
-            }
-            for (size_t s = 1; s < line.segments.size(); ++s) {
-                size_t segmentEnd = s + 1 < line.segments.size()
-                                        ? line.segments[s + 1].joinedOffset
-                                        : text.size();
-                Cursor sc(text.substr(0, segmentEnd), line.segments[s].joinedOffset);
-                if (sc.atEnd()) continue;
-                CycleParameter p;
-                auto failAt = [&](const char* message) {
-                    cur.setPosition(sc.position());
-                    return c.fail("syntax", message);
-                };
-                if (!sc.acceptPrefix("Q")) return failAt(KERF_TR_NOOP("cycle parameter Qnnn= expected"));
-                if (sc.acceptPrefix("S")) p.isString = true;
-                auto q = sc.unsignedInteger();
-                if (!q || *q >= kQCount) return failAt(KERF_TR_NOOP("cycle parameter number expected"));
-                p.q = static_cast<uint16_t>(*q);
-                if (!sc.acceptChar('=')) return failAt(KERF_TR_NOOP("'=' expected"));
-                p.raw = std::string(sc.restUntilComment());
-                p.comment = std::string(sc.comment());
-                if (!p.isString) {
-                    // Plain numbers and Q references are evaluated now (the TNC captures cycle
-                    // parameters at definition); keywords such as PREDEF stay in `raw`.
-                    Cursor vc(p.raw);
-                    FormulaParser fp(vc, m_env);
-                    char lead = upper(vc.peek());
-                    if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
-                        lead == '.') {
-                        auto v = fp.wordValue();
-                        if (v && vc.atEnd()) p.value = *v;
-                    }
-                }
-                b.parameters.push_back(std::move(p));
-            }
-            out.statement = std::move(b);
-            return true;
-        }
+        if (cur.acceptKeyword("DEF")) return parseCycleDef(line, cur.position(), out);
         if (cur.acceptKeyword("CALL")) {
             CycleCall b;
             uint32_t flags = kFeed | kM;
@@ -1085,6 +1024,28 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             return true;
         }
         return c.fail("syntax", KERF_TR_NOOP("DEF or CALL expected after CYCL"));
+    }
+    if (head == "GLOBAL" && cur.acceptKeyword("DEF")) return parseGlobalDef(line, cur.position(), out);
+    if (head == "PATTERN" && cur.acceptKeyword("DEF")) {
+        return parsePatternDef(line, cur.position(), out);
+    }
+    if (head == "SEL" && (cur.peekKeyword("TABLE") || cur.peekKeyword("PATTERN"))) {
+        const bool table = cur.acceptKeyword("TABLE");
+        if (!table) cur.acceptKeyword("PATTERN");
+        std::string path;
+        if (auto quoted = cur.quoted()) {
+            path = std::string(*quoted);
+        } else {
+            path = std::string(cur.restUntilComment());
+        }
+        if (path.empty()) return c.fail("syntax", KERF_TR_NOOP("file name expected"));
+        if (!c.expectEnd()) return false;
+        if (table) {
+            out.statement = SelectTable{std::move(path)};
+        } else {
+            out.statement = SelectPattern{std::move(path)};
+        }
+        return true;
     }
     static const char* const kDeferredHeads[] = {
         "PATTERN", "TCH", "SEL", "GLOBAL", "PLANE", "FUNCTION", "TRANS", "CONTOUR", "SPEC",

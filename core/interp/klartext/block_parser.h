@@ -24,6 +24,15 @@ public:
 
 private:
     bool parseStatement(Context& c, const program::LogicalLine& line, ParsedBlock& out);
+    // Cycle blocks (block_parser_cycles.cpp). Each reports a problem in m_problem.
+    bool parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    bool parseCycleParameters(const program::LogicalLine& line, std::vector<CycleParameter>& out);
+    bool parseCycleWords(std::string_view text, size_t from, cycles::CycleWords& out);
+    bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    bool parsePatternDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    bool parseValue(Cursor& cursor, double& out);
+    bool failAt(size_t offset, const char* code, const char* messageTemplate,
+                std::vector<std::string> args = {});
 
     FormulaEnvironment* m_env;
     ParseProblem m_problem;

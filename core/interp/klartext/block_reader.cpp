@@ -1,5 +1,7 @@
 #include "core/interp/klartext/block_reader.h"
 
+#include <string>
+
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/cursor.h"
 
@@ -10,15 +12,34 @@ namespace {
 // "  Q200=2 ;..." or "  QS500=..." : an indented cycle parameter line.
 bool isIndentedParameterLine(std::string_view line) {
     size_t i = 0;
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+        ++i;
     if (i == 0 || i >= line.size() || upper(line[i]) != 'Q') return false;
     ++i;
     if (i < line.size() && upper(line[i]) == 'S') ++i;
     size_t digits = i;
-    while (i < line.size() && isDigit(line[i])) ++i;
+    while (i < line.size() && isDigit(line[i]))
+        ++i;
     if (i == digits) return false;
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+        ++i;
     return i < line.size() && line[i] == '=';
+}
+
+// "  POS2 (X+40 Y+30 Z+0)": an indented element of a multi-line PATTERN DEF.
+bool isIndentedPatternLine(std::string_view line) {
+    size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+        ++i;
+    if (i == 0) return false;
+    size_t end = i;
+    while (end < line.size() && isLetter(line[end]))
+        ++end;
+    std::string word(line.substr(i, end - i));
+    for (char& c : word)
+        c = upper(c);
+    return word == "POS" || word == "ROW" || word == "PAT" || word == "FRAME" || word == "CIRC" ||
+           word == "PITCHCIRC";
 }
 
 bool takesParameterLines(std::string_view head) {
@@ -34,9 +55,14 @@ bool BlockReader::next(program::LogicalLine& line) {
         std::string_view head = BlockParser::headWord(line.text);
         if (head.size() >= 3 && head.size() <= 7) {
             std::string upperHead(head);
-            for (char& c : upperHead) c = upper(c);
+            for (char& c : upperHead)
+                c = upper(c);
             if (takesParameterLines(upperHead)) {
-                while (isIndentedParameterLine(m_lines.peekLine())) m_lines.appendNextLine(line);
+                const bool pattern = upperHead == "PATTERN";
+                while (isIndentedParameterLine(m_lines.peekLine()) ||
+                       (pattern && isIndentedPatternLine(m_lines.peekLine()))) {
+                    m_lines.appendNextLine(line);
+                }
             }
         }
     }

@@ -79,13 +79,12 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const CircleData& b) { self.executeCircleData(b); }
         void operator()(const TableOpen& b) { self.executeTableOpen(b); }
         void operator()(const TableAccess& b) { self.executeTableAccess(b); }
-        void operator()(const CycleDefinition& b) {
-            self.fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
-                      {std::to_string(b.number)});
-        }
-        void operator()(const CycleCall&) {
-            self.fail("not-supported", KERF_TR_NOOP("cycle calls are not supported yet"));
-        }
+        void operator()(const CycleDefinition& b) { self.executeCycleDefinition(b); }
+        void operator()(const GlobalDefinition& b) { self.executeGlobalDef(b); }
+        void operator()(const PatternDefinition& b) { self.executePatternDef(b); }
+        void operator()(const SelectTable& b) { self.executeSelectTable(b); }
+        void operator()(const SelectPattern& b) { self.executeSelectPattern(b); }
+        void operator()(const CycleCall& b) { self.executeCycleCall(b); }
         void operator()(const Deferred& b) {
             self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
         }

@@ -199,7 +199,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
     if (m_status != interp::RunStatus::BudgetUsed) return m_status;
     if (!m_started) {
         m_started = true;
-        m_path.reset(m_programmed);
+        m_path.reset(m_frame.toWorkpiece(m_programmed));
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
         m_blockOffset = m_reader->offset();
@@ -216,6 +216,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
             continue;
         }
         ++m_blocks;
+        m_cycleMovesInBlock = 0;
         const ProgramFile& program = *m_levels.back().program;
         m_at = SourceLocation{program.fileId, m_line.firstLine, 1, -1};
         if (!m_parser.parse(m_line, m_block)) {
@@ -246,7 +247,7 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
     m_pendingSync.reset();
     // The operator may have moved the machine at a stop: continue from where it really is.
     if ((world.position.xyz() - m_path.toolPosition().xyz()).norm() > 1e-6) {
-        m_programmed = world.position;
+        m_programmed = m_frame.toProgram(world.position);
         m_path.reset(world.position);
     }
     SysRead read;

@@ -4,10 +4,15 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "core/cycles/cycle_descriptor.h"
+#include "core/cycles/cycle_values.h"
+#include "core/cycles/pattern/pattern_plan.h"
+#include "core/cycles/transform/coordinate_frame.h"
 #include "core/interp/interpreter.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
@@ -17,7 +22,9 @@
 #include "core/machine/machine_config.h"
 #include "core/program/nc_root.h"
 #include "core/program/source_registry.h"
+#include "core/tables/datum_table.h"
 #include "core/tables/free_table.h"
+#include "core/tables/preset_table.h"
 #include "core/tables/tool_table.h"
 
 namespace kerf::klartext {
@@ -27,11 +34,15 @@ struct KlartextSettings {
     // Tool data for TOOL CALL. Without a table every tool is accepted with zero geometry and a
     // warning, so that programs can be checked without the machine's tool table.
     const tables::ToolTable* tools = nullptr;
-    std::filesystem::path ncRoot;         // CALL PGM, FN 16 and FN 26 stay inside it
-    std::filesystem::path remanentFile;   // QR parameters; empty: not kept between runs
-    Pose presetInMachine{};               // the active preset (workpiece datum), machine coords
-    Pose startPosition{};                 // tool tip at the start, workpiece coordinates
-    bool blockSkip = false;               // skip blocks marked with '/'
+    std::filesystem::path ncRoot;        // CALL PGM, FN 16 and FN 26 stay inside it
+    std::filesystem::path remanentFile;  // QR parameters; empty: not kept between runs
+    Pose presetInMachine{};              // the active preset (workpiece datum), machine coords
+    Pose startPosition{};                // tool tip at the start, workpiece coordinates
+    bool blockSkip = false;              // skip blocks marked with '/'
+    // Cycle 247 reads presets from this table (PRESET.PR in the NC root when not given).
+    const tables::PresetTable* presets = nullptr;
+    // Machine parameter displayDepthErr: a positive cycle depth is an error.
+    bool positiveDepthIsError = true;
     int maxLabelNesting = 19;
     int maxProgramNesting = 19;
 };
@@ -55,13 +66,15 @@ public:
     void resume(const interp::WorldSnapshot& world) override;
     const DiagnosticList& diagnostics() const override { return m_diagnostics; }
     uint64_t blocksExecuted() const override { return m_blocks; }
-    Pose nominalPosition() const override { return m_programmed; }
+    // Workpiece coordinates of the start preset (the frame of the canonical stream).
+    Pose nominalPosition() const override { return m_frame.toWorkpiece(m_programmed); }
     bool checkFailed() const override { return m_checkFailed; }
 
     const QParameters& parameters() const { return m_q; }
 
 private:
     class Environment;
+    class CycleOutput;
     class ForwardingSink final : public canon::Sink {
     public:
         void consume(const canon::Command& command) override {
@@ -91,6 +104,7 @@ private:
         double tableDl = 0.0, tableDr = 0.0, tableDr2 = 0.0;
         double callDl = 0.0, callDr = 0.0, callDr2 = 0.0;
         int cutterCount = 0;
+        double pointAngle = 0.0, plungeAngle = 0.0, cuttingLength = 0.0, pitch = 0.0;
         double effectiveRadius() const { return radius + tableDr + callDr; }
         double effectiveLength() const { return length + tableDl + callDl; }
         canon::ToolGeometry geometry() const {
@@ -140,12 +154,61 @@ private:
     void executeMOnly(const CommonWords& words);
     void applyMFunctions(const MWords& m, bool atStart);
     bool hasM(const MWords& m, int number) const;
-    void submitMove(const ContourElement& element, bool rapid, double feed, const CommonWords& words);
+    void submitMove(const ContourElement& element, bool rapid, double feed,
+                    const CommonWords& words);
     void emit(canon::CommandBody body);
     Pose targetOf(const Coordinates& coords) const;
     Plane workingPlane() const;
     double lengthScale() const { return m_inch ? 25.4 : 1.0; }
     bool checkPathError(const std::optional<interp::PathError>& error);
+
+    // Cycle definitions, GLOBAL DEF, PATTERN DEF, point and datum tables (klartext_cycles.cpp).
+    struct StoredCycle {  // the last defined machining cycle
+        const cycles::CycleDescriptor* descriptor = nullptr;
+        cycles::CycleValues values;
+        std::vector<uint16_t> predef;  // parameters written PREDEF: GLOBAL DEF value at the call
+        std::string program;           // cycle 12
+    };
+    void executeCycleDefinition(const CycleDefinition& def);
+    void executeOldCycle(const CycleDefinition& def);
+    void executeGlobalDef(const GlobalDefinition& def);
+    void executePatternDef(const PatternDefinition& def);
+    void executeSelectTable(const SelectTable& select);
+    void executeSelectPattern(const SelectPattern& select);
+    bool resolveParameters(const std::string& owner,
+                           std::span<const cycles::ParameterDescriptor> descriptors,
+                           const std::vector<CycleParameter>& written, cycles::CycleValues& values,
+                           std::vector<uint16_t>* predef);
+    void failCycle(const cycles::CycleError& error);
+    std::optional<std::filesystem::path> tablePath(const std::string& name, const char* extension);
+    // Old-style sub-blocks (klartext_transform.cpp).
+    void datumShift(const CycleDefinition& def);
+    void mirrorImage(const CycleDefinition& def);
+    void rotation(const CycleDefinition& def);
+    void scaling(const CycleDefinition& def);
+    void axisScaling(const CycleDefinition& def);
+    void presetting(const cycles::CycleValues& values);
+    void workingPlane(const CycleDefinition& def);
+    void dwellTime(const CycleDefinition& def);
+    void programCall(const CycleDefinition& def);
+    void spindleOrientation(const CycleDefinition& def);
+    void threadCutting(const CycleDefinition& def);
+    void tolerance(const CycleDefinition& def);
+    std::optional<double> lastValue(const CycleDefinition& def, const char* what);
+    // Coordinate transformations of path functions and cycles alike.
+    std::optional<ContourElement> toWorkpiece(const ContourElement& element);
+    // Cycle calls (klartext_cycle_calls.cpp).
+    void executeCycleCall(const CycleCall& call);
+    void callCycleHere(const cycles::CycleValues* overrides = nullptr);
+    void callCyclePattern(const CycleCall& call);
+    void callCyclePosition(const CycleCall& call);
+    void runPatternCycle(const cycles::CycleDescriptor& pattern, const cycles::CycleValues& values);
+    bool runMachiningCycle(const cycles::CycleValues& values);
+    cycles::CycleValues callValues() const;
+    void moveProgrammed(const Pose& target, bool rapid, double feed);
+    void afterPositioning(const MWords& m);
+    Vec3 toLocal(const Pose& pose) const;
+    Pose fromLocal(const Vec3& local) const;
 
     // Q parameter functions and FN blocks (klartext_functions.cpp).
     void executeSysRead(const SysRead& read);
@@ -216,6 +279,20 @@ private:
     MWords m_currentM;  // M functions of the block being executed (M91/M92 change coordinates)
     std::optional<tables::FreeTable> m_openTable;
     bool m_warnedNoToolTable = false;
+
+    // Cycles.
+    std::optional<StoredCycle> m_cycle;  // last defined machining cycle
+    int m_oldCycle = -1;                 // old-style cycle whose sub-blocks are being read
+    bool m_modalCycleCall = false;       // M89
+    cycles::CycleValues m_globals;       // GLOBAL DEF values
+    std::vector<uint16_t> m_globalSet;
+    std::optional<std::vector<cycles::PatternPoint>> m_pattern;  // PATTERN DEF or point table
+    std::optional<tables::DatumTable> m_datumTable;
+    std::optional<tables::PresetTable> m_presetFile;
+    std::optional<double> m_orientAngle;  // cycle 13
+    cycles::CoordinateFrame m_frame;
+    // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
+    size_t m_cycleMovesInBlock = 0;
 };
 
 }  // namespace kerf::klartext

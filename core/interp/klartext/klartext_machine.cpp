@@ -112,15 +112,26 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
             case 91:
             case 92:
                 break;  // coordinates of this block, see targetOf()
-            case 89:
-            case 99:
-                fail("not-supported", KERF_TR_NOOP("M{1}: cycle calls are not supported yet"),
-                     {std::to_string(n)});
-                return;
+            case 89:  // modal cycle call, from this block on
+            case 99:  // cycle call in this block only
+                m_modalCycleCall = n == 89;
+                callCycleHere();
+                break;
+            case 19:
+                // Oriented spindle stop to the angle of cycle 13; without it the machine's own.
+                if (m_orientAngle) {
+                    m_spindle = canon::SpindleDirection::Stopped;
+                    emit(canon::SpindleOrient{*m_orientAngle});
+                } else {
+                    emit(canon::MachineFunction{n});
+                }
+                break;
             case 140: {
                 // Retract along the tool axis: MB by a distance, MB MAX to the soft limit.
                 if (!checkPathError(m_path.flush())) return;
-                Pose target = m_programmed;
+                // The retraction is along the machine's tool axis, whatever transformation is on.
+                Pose target = m_frame.toWorkpiece(m_programmed);
+                const Pose from = target;
                 double& axisValue = target[m_toolAxis];
                 if (word.maxParameter || !word.parameter) {
                     const machine::AxisConfig* axis =
@@ -136,12 +147,12 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                     axisValue += *word.parameter * lengthScale();
                 }
                 interp::PathMove move;
-                move.geometry = ContourElement::line(workingPlane(), m_programmed, target);
+                move.geometry = ContourElement::line(workingPlane(), from, target);
                 move.rapid = true;
                 move.feed = m_feed;
                 move.location = m_at;
                 if (!checkPathError(m_path.addMove(move))) return;
-                m_programmed = target;
+                m_programmed = m_frame.toProgram(target);
                 break;
             }
             default:
@@ -222,6 +233,10 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
         m_tool.tableDr = data->deltaRadius;
         m_tool.tableDr2 = data->deltaRadius2;
         m_tool.cutterCount = data->cutterCount;
+        m_tool.pointAngle = data->pointAngle;
+        m_tool.plungeAngle = data->plungeAngle;
+        m_tool.cuttingLength = data->cuttingLength;
+        m_tool.pitch = data->pitch;
         m_tool.callDl = m_tool.callDr = m_tool.callDr2 = 0.0;
     }
     if (call.dl) m_tool.callDl = *call.dl * scale;

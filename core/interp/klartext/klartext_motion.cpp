@@ -23,6 +23,12 @@ interp::CompSide sideOf(CompWord comp) {
     }
 }
 
+interp::CompSide flipped(interp::CompSide side) {
+    if (side == interp::CompSide::Left) return interp::CompSide::Right;
+    if (side == interp::CompSide::Right) return interp::CompSide::Left;
+    return side;
+}
+
 Vec2 inPlane(Plane plane, const Pose& pose) {
     PlaneAxes axes = planeAxes(plane);
     return {pose[axes.first], pose[axes.second]};
@@ -42,32 +48,39 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
     Pose target = m_programmed;
     const double scale = lengthScale();
     const bool machine = hasM(m_currentM, 91) || hasM(m_currentM, 92);
+    // Machine coordinates bypass the coordinate transformations: set them in the preset frame.
+    Pose work = m_frame.toWorkpiece(m_programmed);
     for (int i = 0; i < kAxisCount; ++i) {
         const AxisWord& word = coords.axes[static_cast<size_t>(i)];
         if (!word.present) continue;
         auto axis = static_cast<Axis>(i);
         const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
         const double value = rotary ? word.value : word.value * scale;
-        double& out = target.values[static_cast<size_t>(i)];
         if (machine) {
             // Machine coordinates of the spindle reference: the tool length is not compensated.
+            double& out = work.values[static_cast<size_t>(i)];
             out = value - m_settings.presetInMachine.values[static_cast<size_t>(i)];
             if (axis == m_toolAxis) out -= m_tool.effectiveLength();
         } else {
+            double& out = target.values[static_cast<size_t>(i)];
             out = word.incremental ? out + value : value;
         }
     }
-    return target;
+    return machine ? m_frame.toProgram(work) : target;
 }
 
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
+    auto transformed = toWorkpiece(element);
+    if (!transformed) return;
     interp::PathMove move;
-    move.geometry = element;
+    move.geometry = *transformed;
     move.rapid = rapid;
     move.feed = feed;
     move.side = sideOf(m_comp);
+    // A mirror image puts the tool on the other side of the mirrored contour.
+    if (m_frame.flipsOrientation(element.plane)) move.side = flipped(move.side);
     move.location = m_at;
     if (!checkPathError(m_path.addMove(move))) return;
     m_programmed = element.end;
@@ -89,6 +102,7 @@ void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
                block.words);
     applyMFunctions(block.words.m, false);
+    afterPositioning(block.words.m);
 }
 
 void KlartextInterpreter::executeCircleCenter(const CircleCenter& block) {
@@ -239,6 +253,7 @@ void KlartextInterpreter::executeLinePolar(const LinePolarBlock& block) {
     setInPlane(plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
     submitMove(ContourElement::line(plane, m_programmed, target), rapid, feed, block.words);
     applyMFunctions(block.words.m, false);
+    afterPositioning(block.words.m);
 }
 
 void KlartextInterpreter::executeCirclePolar(const CirclePolarBlock& block) {
@@ -311,7 +326,7 @@ void KlartextInterpreter::executeCorner(bool chamfer, double size, const FeedWor
         m_feedSet = modalSet;
         feed = value;
     }
-    size *= lengthScale();
+    size *= lengthScale() * m_frame.planeScale(workingPlane());
     auto error = chamfer ? m_path.addChamfer(size, feed, m_at) : m_path.addRounding(size, feed, m_at);
     checkPathError(error);
 }
@@ -352,9 +367,10 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
         fail("geometry", KERF_TR_NOOP("{1} LCT needs a radius R"), {name});
         return;
     }
-    spec.length = block.length.value_or(0.0) * lengthScale();
+    const double frameScale = m_frame.planeScale(workingPlane());
+    spec.length = block.length.value_or(0.0) * lengthScale() * frameScale;
     spec.angleDeg = block.angle.value_or(0.0);
-    spec.radius = block.radius.value_or(0.0) * lengthScale();
+    spec.radius = block.radius.value_or(0.0) * lengthScale() * frameScale;
     spec.feed = feed;
     spec.rapidToHelper = rapid;
     spec.location = m_at;
@@ -381,7 +397,8 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
         }
         m_comp = block.words.comp;
         spec.side = sideOf(m_comp);
-        spec.contourPoint = target;
+        if (m_frame.flipsOrientation(workingPlane())) spec.side = flipped(spec.side);
+        spec.contourPoint = m_frame.toWorkpiece(target);
         spec.moveToolAxis = block.coords.has(m_toolAxis);
         if (!checkPathError(m_path.addApproach(spec))) return;
         m_programmed = target;
@@ -391,10 +408,10 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
             fail("geometry", KERF_TR_NOOP("DEP LCT needs the end point"));
             return;
         }
-        spec.endPoint = target;
+        spec.endPoint = m_frame.toWorkpiece(target);
         if (!checkPathError(m_path.addDeparture(spec))) return;
         m_comp = CompWord::Off;
-        m_programmed = m_path.toolPosition();
+        m_programmed = m_frame.toProgram(m_path.toolPosition());
         m_lastTangent.reset();
     }
     applyMFunctions(block.words.m, false);

@@ -1,5 +1,7 @@
 #include "core/interp/klartext/program_file.h"
 
+#include "core/cycles/cycle_registry.h"
+
 #include <chrono>
 #include <set>
 #include <thread>
@@ -148,7 +150,8 @@ void checkProgram(ProgramFile& program) {
             diag(Severity::Warning, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
                  {deferred->feature});
-        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s); cycle && cycle->subNumber <= 0) {
+        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s);
+                   cycle && cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
             diag(Severity::Warning, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past this block"),
                  {std::to_string(cycle->number)});

@@ -6,6 +6,8 @@
 #include <variant>
 #include <vector>
 
+#include "core/cycles/cycle_word.h"
+#include "core/cycles/pattern/pattern_definition.h"
 #include "core/geometry/axes.h"
 #include "core/interp/klartext/q_parameters.h"
 
@@ -245,10 +247,25 @@ struct CycleParameter {
 };
 struct CycleDefinition {
     int number = 0;
-    int subNumber = -1;  // old-style "7.1" blocks; -1 for parameter-list cycles
-    std::string name;    // language-dependent text after the number
-    std::string rest;    // old style: the text after "n.m "
+    int subNumber = -1;        // old-style "7.1" blocks; -1 for parameter-list cycles
+    std::string name;          // language-dependent text after the number
+    std::string rest;          // old style: the text after "n.m "
+    cycles::CycleWords words;  // old style: `rest` as evaluated words (not for 12.1 PGM ...)
     std::vector<CycleParameter> parameters;
+};
+// GLOBAL DEF nnn with its parameter lines.
+struct GlobalDefinition {
+    int group = 0;
+    std::vector<CycleParameter> parameters;
+};
+struct PatternDefinition {
+    std::vector<cycles::PatternElement> elements;
+};
+struct SelectTable {  // SEL TABLE "datum table"
+    std::string path;
+};
+struct SelectPattern {  // SEL PATTERN "point table"
+    std::string path;
 };
 struct CycleCall {
     enum class Kind : uint8_t { Plain, Pattern, Position };
@@ -263,7 +280,8 @@ using Statement =
                  LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock, ApproachBlock, Label,
                  CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
                  ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
-                 TableAccess, CycleDefinition, CycleCall, Deferred>;
+                 TableAccess, CycleDefinition, GlobalDefinition, PatternDefinition, SelectTable,
+                 SelectPattern, CycleCall, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

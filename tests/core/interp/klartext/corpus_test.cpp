@@ -3,6 +3,7 @@
 // file must check without errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -29,6 +30,19 @@ const std::map<std::string, std::string> kKnownBad = {
     {"pgm_head_template.H", "fragment: its label \"end\" is in the foot template"},
     {"BewegBlv.klartext", "calls LBL 3, which the program does not define"},
 };
+
+// Programs that still stop at a feature not implemented yet; the others run to their end or to a
+// problem of their own (the cycles 7, 8, 9, 10, 26 and 32 they use all run).
+const std::vector<std::string> kStopAtUnsupported = {
+    "668.klartext",             // cycle 5 (obsolete circular pocket)
+    "SLII001.klartext",         // cycle 14 (SL contour)
+    "VESELYparametr.klartext",  // cycle 14 (SL contour)
+};
+
+bool endsWith(const std::string& name, const std::string& suffix) {
+    return name.size() >= suffix.size() &&
+           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
 
 bool knownBad(const std::string& name) {
     for (const auto& [suffix, why] : kKnownBad) {
@@ -76,6 +90,13 @@ TEST(Corpus, RealProgramsCheckAndRunWithoutCrashing) {
                 break;
             }
         }
+        bool unsupported = false;
+        for (const Diagnostic& d : interpreter.diagnostics()) {
+            unsupported = unsupported || (d.severity == Severity::Error && d.code == "not-supported");
+        }
+        const bool expected = std::any_of(kStopAtUnsupported.begin(), kStopAtUnsupported.end(),
+                                          [&](const std::string& s) { return endsWith(name, s); });
+        EXPECT_EQ(unsupported, expected) << name;
     }
     EXPECT_EQ(programs, 29);  // 16 .h, 3 .H and 10 .klartext files in INDEX.md
     EXPECT_EQ(clean, programs - static_cast<int>(kKnownBad.size()));

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/canon/commands.h"
+#include "core/cycles/cycle_values.h"
+#include "core/geometry/axes.h"
+
+// What a cycle reads and how it emits its moves. Cycles work in a local frame of the working
+// plane: u = main axis, v = secondary axis, w = tool axis (positive away from the workpiece), in
+// program coordinates; the interpreter maps them to axes and applies the active coordinate
+// transformations, so cycles and path functions are transformed alike.
+namespace kerf::cycles {
+
+struct ToolInfo {
+    int number = 0;
+    double radius = 0.0;  // R + DR (table) + DR (TOOL CALL)
+    double length = 0.0;
+    double radius2 = 0.0;
+    double pointAngleDeg = 0.0;   // T-ANGLE
+    double plungeAngleDeg = 0.0;  // ANGLE
+    double cuttingLength = 0.0;   // LCUTS
+    double pitch = 0.0;           // PITCH
+    int cutterCount = 0;          // CUT
+};
+
+struct CycleContext {
+    Vec3 start{0.0, 0.0, 0.0};  // tool position when the cycle starts (hole centre in the plane)
+    ToolInfo tool;
+    canon::SpindleDirection spindle = canon::SpindleDirection::Stopped;
+    double spindleRpm = 0.0;
+    bool positiveDepthIsError = true;  // machine parameter displayDepthErr
+    // Mirrored working-plane axes: 202/204 keep their disengaging direction unmirrored.
+    bool mirroredMain = false;
+    bool mirroredSecondary = false;
+};
+
+// A problem that stops the cycle; the interpreter adds the location of the calling block.
+struct CycleError {
+    std::string code;
+    std::string messageTemplate;  // English with {1}.. placeholders, marked with KERF_TR_NOOP
+    std::vector<std::string> args;
+};
+
+// Receives the moves of an expanded cycle (local coordinates, see above).
+class CycleEmitter {
+public:
+    virtual ~CycleEmitter() = default;
+    virtual void rapid(const Vec3& target) = 0;
+    virtual void line(const Vec3& target, const Feed& feed) = 0;
+    // Arc or helix about `center` (u, v) in the working plane; sweep signed, positive = DR+.
+    virtual void arc(const Vec3& target, const Vec2& center, double sweepRad, const Feed& feed) = 0;
+    // Spindle-synchronised move (rigid tapping, thread cutting): `leadMm` per revolution, its
+    // sign the hand of the thread (+ right-hand).
+    virtual void threadMove(const Vec3& target, double leadMm, double startAngleDeg) = 0;
+    virtual void dwell(double seconds) = 0;
+    virtual void spindle(canon::SpindleDirection direction, double rpm) = 0;
+    virtual void orientSpindle(double angleDeg) = 0;
+    // A miscellaneous function the cycle switches (coolant M8/M9 of cycle 241 ...).
+    virtual void miscFunction(int number) = 0;
+};
+
+}  // namespace kerf::cycles

@@ -1,0 +1,54 @@
+#include "core/cycles/cycle_registry.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "core/base/fixed_format.h"
+#include "core/base/translate.h"
+#include "core/cycles/detail/cycle_list.h"
+
+namespace kerf::cycles {
+
+namespace {
+
+const std::array<const CycleDescriptor*, 32> kCycles = {
+    &kCycle7,   &kCycle8,   &kCycle9,   &kCycle10,  &kCycle11,  &kCycle12,  &kCycle13,  &kCycle18,
+    &kCycle19,  &kCycle26,  &kCycle32,  &kCycle200, &kCycle201, &kCycle202, &kCycle203, &kCycle204,
+    &kCycle205, &kCycle206, &kCycle207, &kCycle208, &kCycle209, &kCycle220, &kCycle221, &kCycle232,
+    &kCycle240, &kCycle241, &kCycle247, &kCycle262, &kCycle263, &kCycle264, &kCycle265, &kCycle267};
+
+}  // namespace
+
+const ParameterDescriptor* CycleDescriptor::parameter(uint16_t q) const {
+    for (const ParameterDescriptor& p : parameters) {
+        if (p.q == q && q != 0) return &p;
+    }
+    return nullptr;
+}
+
+std::span<const CycleDescriptor* const> allCycles() {
+    return kCycles;
+}
+
+const CycleDescriptor* findCycle(int number) {
+    auto it = std::find_if(kCycles.begin(), kCycles.end(),
+                           [number](const CycleDescriptor* c) { return c->number == number; });
+    return it == kCycles.end() ? nullptr : *it;
+}
+
+std::optional<CycleError> checkParameter(const CycleDescriptor& cycle, const ParameterDescriptor& p,
+                                         double value) {
+    const bool whole = !p.integer || std::fabs(value - std::round(value)) < 1e-9;
+    if (value >= p.min - 1e-9 && value <= p.max + 1e-9 && whole) return std::nullopt;
+    const std::string name = p.q != 0 ? "Q" + std::to_string(p.q) : std::string(p.word);
+    return CycleError{"cycle-range",
+                      p.integer ? KERF_TR_NOOP("cycle {1}: {2} ({3}) = {4} must be a whole number "
+                                               "from {5} to {6}")
+                                : KERF_TR_NOOP("cycle {1}: {2} ({3}) = {4} is outside {5} to {6}"),
+                      {std::to_string(cycle.number), name, p.description, formatFixed(value, 4),
+                       formatFixed(p.min, 4), formatFixed(p.max, 4)}};
+}
+
+}  // namespace kerf::cycles

@@ -1,0 +1,15 @@
+#pragma once
+
+#include "core/cycles/cycle_descriptor.h"
+
+// Every implemented cycle's descriptor, each defined in its own file; cycle_registry.cpp lists
+// them in one table.
+namespace kerf::cycles {
+
+extern const CycleDescriptor kCycle7, kCycle8, kCycle9, kCycle10, kCycle11, kCycle12, kCycle13,
+    kCycle18, kCycle19, kCycle26, kCycle32;
+extern const CycleDescriptor kCycle200, kCycle201, kCycle202, kCycle203, kCycle204, kCycle205,
+    kCycle206, kCycle207, kCycle208, kCycle209, kCycle220, kCycle221, kCycle225, kCycle232,
+    kCycle240, kCycle241, kCycle247, kCycle262, kCycle263, kCycle264, kCycle265, kCycle267;
+
+}  // namespace kerf::cycles

@@ -1,0 +1,114 @@
+#include "core/cycles/transform/coordinate_frame.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace kerf::cycles {
+
+namespace {
+
+Axis axisAt(int i) {
+    return static_cast<Axis>(i);
+}
+
+void rotate(Pose& p, Plane plane, double degrees) {
+    if (degrees == 0.0) return;
+    const PlaneAxes axes = planeAxes(plane);
+    const double a = degrees * std::numbers::pi / 180.0;
+    const double c = std::cos(a), s = std::sin(a);
+    const double u = p[axes.first], v = p[axes.second];
+    p[axes.first] = c * u - s * v;
+    p[axes.second] = s * u + c * v;
+}
+
+}  // namespace
+
+bool isLinearAxis(Axis axis) {
+    return axis != Axis::A && axis != Axis::B && axis != Axis::C;
+}
+
+Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
+    Pose p = program;
+    for (int i = 0; i < kAxisCount; ++i) {
+        if (!isLinearAxis(axisAt(i))) continue;
+        const auto k = static_cast<size_t>(i);
+        const double c = m_axisScaleCentre.values[k];
+        p.values[k] = (c + m_axisScale[k] * (p.values[k] - c)) * m_scale;
+    }
+    rotate(p, m_rotationPlane, m_rotationDeg);
+    for (int i = 0; i < kAxisCount; ++i) {
+        const auto k = static_cast<size_t>(i);
+        if ((m_mirror & axisBit(axisAt(i))) != 0) p.values[k] = -p.values[k];
+        p.values[k] += m_shift.values[k] + m_preset.values[k];
+    }
+    return p;
+}
+
+Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
+    Pose p = workpiece;
+    for (int i = 0; i < kAxisCount; ++i) {
+        const auto k = static_cast<size_t>(i);
+        p.values[k] -= m_shift.values[k] + m_preset.values[k];
+        if ((m_mirror & axisBit(axisAt(i))) != 0) p.values[k] = -p.values[k];
+    }
+    rotate(p, m_rotationPlane, -m_rotationDeg);
+    for (int i = 0; i < kAxisCount; ++i) {
+        if (!isLinearAxis(axisAt(i))) continue;
+        const auto k = static_cast<size_t>(i);
+        const double c = m_axisScaleCentre.values[k];
+        p.values[k] = c + (p.values[k] / m_scale - c) / m_axisScale[k];
+    }
+    return p;
+}
+
+bool CoordinateFrame::flipsOrientation(Plane plane) const {
+    const PlaneAxes axes = planeAxes(plane);
+    const bool a = (m_mirror & axisBit(axes.first)) != 0;
+    const bool b = (m_mirror & axisBit(axes.second)) != 0;
+    return a != b;
+}
+
+bool CoordinateFrame::keepsArcs(Plane plane) const {
+    if (m_rotationDeg != 0.0 && plane != m_rotationPlane) return false;
+    const PlaneAxes axes = planeAxes(plane);
+    return m_axisScale[static_cast<size_t>(axes.first)] ==
+           m_axisScale[static_cast<size_t>(axes.second)];
+}
+
+double CoordinateFrame::planeScale(Plane plane) const {
+    return m_scale * m_axisScale[static_cast<size_t>(planeAxes(plane).first)];
+}
+
+bool CoordinateFrame::identity() const {
+    if (m_mirror != 0 || m_rotationDeg != 0.0 || m_scale != 1.0) return false;
+    for (size_t k = 0; k < static_cast<size_t>(kAxisCount); ++k) {
+        if (m_shift.values[k] != 0.0 || m_preset.values[k] != 0.0 || m_axisScale[k] != 1.0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void CoordinateFrame::setShift(Axis axis, double value, bool incremental) {
+    m_shift[axis] = incremental ? m_shift[axis] + value : value;
+}
+
+void CoordinateFrame::setRotation(double degrees, bool incremental, Plane plane) {
+    m_rotationDeg = incremental ? m_rotationDeg + degrees : degrees;
+    m_rotationPlane = plane;
+}
+
+void CoordinateFrame::setAxisScale(Axis axis, double factor) {
+    m_axisScale[static_cast<size_t>(axisIndex(axis))] = factor;
+}
+
+void CoordinateFrame::setAxisScaleCentre(Axis axis, double centre) {
+    m_axisScaleCentre[axis] = centre;
+}
+
+void CoordinateFrame::setPreset(const Pose& offset) {
+    *this = CoordinateFrame();
+    m_preset = offset;
+}
+
+}  // namespace kerf::cycles

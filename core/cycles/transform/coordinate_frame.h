@@ -1,0 +1,55 @@
+#pragma once
+
+#include <array>
+
+#include "core/geometry/plane.h"
+
+namespace kerf::cycles {
+
+// The coordinate transformations of cycles 7, 8, 10, 11, 26 and 247 (spec §9): maps program
+// coordinates to the workpiece coordinates of the preset the run started with (the frame of the
+// canonical stream). Applied innermost first:
+//   26 axis-specific scaling about its centre, 11 scaling about the datum, 10 rotation in the
+//   working plane about the datum, 8 mirroring about the datum, 7 datum shift, 247 preset.
+// Scaling acts on linear axes only, rotation on the two axes of its plane.
+class CoordinateFrame {
+public:
+    Pose toWorkpiece(const Pose& program) const;
+    Pose toProgram(const Pose& workpiece) const;
+    // True when an odd number of the plane's axes is mirrored: arcs turn the other way and
+    // radius compensation changes side.
+    bool flipsOrientation(Plane plane) const;
+    // An arc in `plane` stays an arc: no rotation about another axis, equal scales in the plane.
+    bool keepsArcs(Plane plane) const;
+    // Factor lengths in the working plane are scaled by (uniform scaling only).
+    double planeScale(Plane plane) const;
+    bool identity() const;
+
+    void setShift(Axis axis, double value, bool incremental);
+    void setMirror(AxisMask axes) { m_mirror = axes; }
+    void setRotation(double degrees, bool incremental, Plane plane);
+    void setScale(double factor) { m_scale = factor; }
+    void setAxisScale(Axis axis, double factor);
+    void setAxisScaleCentre(Axis axis, double centre);
+    // Cycle 247: a new preset, given as its offset from the start preset; clears 7, 8, 10, 11, 26.
+    void setPreset(const Pose& offset);
+
+    const Pose& shift() const { return m_shift; }
+    AxisMask mirror() const { return m_mirror; }
+    double rotationDeg() const { return m_rotationDeg; }
+    double scale() const { return m_scale; }
+
+private:
+    Pose m_shift{};
+    AxisMask m_mirror = 0;
+    double m_rotationDeg = 0.0;
+    Plane m_rotationPlane = Plane::XY;
+    double m_scale = 1.0;
+    std::array<double, kAxisCount> m_axisScale{1, 1, 1, 1, 1, 1, 1, 1, 1};
+    Pose m_axisScaleCentre{};
+    Pose m_preset{};
+};
+
+bool isLinearAxis(Axis axis);
+
+}  // namespace kerf::cycles

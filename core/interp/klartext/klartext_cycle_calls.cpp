@@ -1,0 +1,373 @@
+// CYCL CALL, CYCL CALL PAT, CYCL CALL POS, M99, M89 and the pattern cycles 220/221: the last
+// defined machining cycle expanded into ordinary moves at the calling block's location.
+#include <algorithm>
+#include <cmath>
+
+#include "core/base/translate.h"
+#include "core/cycles/drilling/hole_levels.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+
+namespace kerf::klartext {
+
+namespace {
+constexpr size_t kCycleMovesPerBlock = 2000000;
+}
+
+// Feeds the moves of an expanded cycle into the interpreter's path pipeline, where the
+// coordinate transformations apply to them as to programmed moves.
+class KlartextInterpreter::CycleOutput final : public cycles::CycleEmitter {
+public:
+    explicit CycleOutput(KlartextInterpreter& owner) : m(owner) {}
+
+    void rapid(const Vec3& target) override {
+        if (ok()) m.moveProgrammed(m.fromLocal(target), true, m.m_feed);
+    }
+    void line(const Vec3& target, const cycles::Feed& feed) override {
+        if (ok()) m.moveProgrammed(m.fromLocal(target), false, feedValue(feed));
+    }
+    void arc(const Vec3& target, const Vec2& center, double sweepRad,
+             const cycles::Feed& feed) override {
+        if (!ok()) return;
+        const double f = feedValue(feed);
+        m.submitMove(ContourElement::arc(m.workingPlane(), m.m_programmed, m.fromLocal(target),
+                                         center, sweepRad),
+                     false, f, CommonWords{});
+    }
+    void threadMove(const Vec3& target, double leadMm, double startAngleDeg) override {
+        if (!ok() || !m.checkPathError(m.m_path.flush())) return;
+        const Pose end = m.fromLocal(target);
+        const Plane plane = m.workingPlane();
+        // A mirror image reverses the hand of the thread; scaling scales its pitch.
+        double lead = leadMm * m.m_frame.scale();
+        if (m.m_frame.flipsOrientation(plane)) lead = -lead;
+        const Pose work = m.m_frame.toWorkpiece(end);
+        canon::SpindleSyncedMove move;
+        move.target = work;
+        move.leadMmPerRev = lead;
+        move.startAngleDeg = startAngleDeg;
+        m.emit(move);
+        m.m_path.reset(work);
+        m.m_programmed = end;
+    }
+    void dwell(double seconds) override {
+        if (ok()) m.emit(canon::Dwell{seconds});
+    }
+    void spindle(canon::SpindleDirection direction, double rpm) override {
+        if (ok()) m.emit(canon::SpindleControl{direction, rpm});
+    }
+    void orientSpindle(double angleDeg) override {
+        if (ok()) m.emit(canon::SpindleOrient{angleDeg});
+    }
+    void miscFunction(int number) override {
+        if (!ok()) return;
+        MWords words;
+        words.list[0].number = number;
+        words.count = 1;
+        m.applyMFunctions(words, true);
+        m.applyMFunctions(words, false);
+    }
+
+private:
+    bool ok() const { return m.m_status != interp::RunStatus::Failed; }
+    double feedValue(const cycles::Feed& feed) {
+        canon::FeedMode mode = feed.kind == cycles::Feed::Kind::PerRevolution
+                                   ? canon::FeedMode::PerRevolution
+                                   : canon::FeedMode::PerMinute;
+        if (mode != m.m_feedMode) {
+            m.m_feedMode = mode;
+            m.emit(canon::SetFeedMode{mode});
+        }
+        if (feed.isRapid()) {
+            // The stream has no rapid arcs: they run at the machine's rapid speed.
+            const double perS =
+                m.m_settings.machine ? m.m_settings.machine->rapidVelocityMmPerS : 250.0;
+            return perS * 60.0;
+        }
+        return feed.value;
+    }
+
+    KlartextInterpreter& m;
+};
+
+Vec3 KlartextInterpreter::toLocal(const Pose& pose) const {
+    const PlaneAxes a = planeAxes(workingPlane());
+    return {pose[a.first], pose[a.second], pose[a.normal]};
+}
+
+Pose KlartextInterpreter::fromLocal(const Vec3& local) const {
+    const PlaneAxes a = planeAxes(workingPlane());
+    Pose p = m_programmed;
+    p[a.first] = local.x();
+    p[a.second] = local.y();
+    p[a.normal] = local.z();
+    return p;
+}
+
+void KlartextInterpreter::moveProgrammed(const Pose& target, bool rapid, double feed) {
+    double moved = 0.0;
+    for (size_t i = 0; i < target.values.size(); ++i) {
+        moved = std::max(moved, std::fabs(target.values[i] - m_programmed.values[i]));
+    }
+    if (moved <= 1e-9) return;
+    submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
+               CommonWords{});
+}
+
+cycles::CycleValues KlartextInterpreter::callValues() const {
+    cycles::CycleValues values = m_cycle->values;
+    for (uint16_t q : m_cycle->predef) {
+        if (std::find(m_globalSet.begin(), m_globalSet.end(), q) != m_globalSet.end()) {
+            values.setFeed(q, m_globals.feed(q));
+        }
+    }
+    return values;
+}
+
+bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
+    if (m_comp == CompWord::Left || m_comp == CompWord::Right) {
+        fail("cycle-call",
+             KERF_TR_NOOP("a cycle cannot be called with radius compensation RL/RR: program R0"));
+        return false;
+    }
+    const cycles::CycleDescriptor& d = *m_cycle->descriptor;
+    if (d.number == 12) {
+        callProgram(CallPgm{m_cycle->program});
+        return m_status != interp::RunStatus::Failed;
+    }
+    cycles::CycleContext ctx;
+    ctx.start = toLocal(m_programmed);
+    ctx.tool.number = m_tool.number;
+    ctx.tool.radius = m_tool.effectiveRadius();
+    ctx.tool.length = m_tool.effectiveLength();
+    ctx.tool.radius2 = m_tool.radius2 + m_tool.tableDr2 + m_tool.callDr2;
+    ctx.tool.pointAngleDeg = m_tool.pointAngle;
+    ctx.tool.plungeAngleDeg = m_tool.plungeAngle;
+    ctx.tool.cuttingLength = m_tool.cuttingLength;
+    ctx.tool.pitch = m_tool.pitch;
+    ctx.tool.cutterCount = m_tool.cutterCount;
+    ctx.spindle = m_spindle;
+    ctx.spindleRpm = m_spindleSpeed;
+    ctx.positiveDepthIsError = m_settings.positiveDepthIsError;
+    const PlaneAxes axes = planeAxes(workingPlane());
+    ctx.mirroredMain = (m_frame.mirror() & axisBit(axes.first)) != 0;
+    ctx.mirroredSecondary = (m_frame.mirror() & axisBit(axes.second)) != 0;
+
+    if (m_cycleMovesInBlock > kCycleMovesPerBlock) {
+        fail("cycle-limit", KERF_TR_NOOP("the cycle calls of this block need more than {1} moves"),
+             {std::to_string(kCycleMovesPerBlock)});
+        return false;
+    }
+    const canon::FeedMode mode = m_feedMode;
+    CycleOutput out(*this);
+    cycles::CyclePath path(out, ctx.start);
+    auto error = d.expand(values, ctx, path);
+    if (!error && path.limitReached()) error = cycles::tooManyMoves(d.number);
+    m_cycleMovesInBlock += path.moves();
+    if (m_feedMode != mode && m_status != interp::RunStatus::Failed) {
+        m_feedMode = mode;
+        emit(canon::SetFeedMode{mode});
+    }
+    m_lastTangent.reset();
+    if (error) {
+        failCycle(*error);
+        return false;
+    }
+    return m_status != interp::RunStatus::Failed;
+}
+
+void KlartextInterpreter::callCycleHere(const cycles::CycleValues* overrides) {
+    if (!m_cycle) {
+        fail("cycle-call", KERF_TR_NOOP("no machining cycle is defined (CYCL DEF)"));
+        return;
+    }
+    runMachiningCycle(overrides ? *overrides : callValues());
+}
+
+void KlartextInterpreter::afterPositioning(const MWords& m) {
+    if (m_modalCycleCall && !hasM(m, 89) && !hasM(m, 99) && m_status != interp::RunStatus::Failed) {
+        callCycleHere();
+    }
+}
+
+void KlartextInterpreter::executeCycleCall(const CycleCall& call) {
+    m_currentM = call.words.m;
+    if (call.kind == CycleCall::Kind::Pattern) {
+        callCyclePattern(call);
+        return;
+    }
+    if (call.kind == CycleCall::Kind::Position) {
+        callCyclePosition(call);
+        return;
+    }
+    if (call.words.feed.kind != FeedWord::Kind::None) {
+        bool rapid = false;
+        double feed = 0.0;
+        if (!resolveFeed(call.words.feed, rapid, feed)) return;
+    }
+    applyMFunctions(call.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    callCycleHere();
+    if (m_status != interp::RunStatus::Failed) applyMFunctions(call.words.m, false);
+}
+
+void KlartextInterpreter::callCyclePattern(const CycleCall& call) {
+    if (!m_pattern) {
+        fail("cycle-call",
+             KERF_TR_NOOP("CYCL CALL PAT: no PATTERN DEF or point table (SEL PATTERN) is active"));
+        return;
+    }
+    if (!m_cycle) {
+        fail("cycle-call", KERF_TR_NOOP("no machining cycle is defined (CYCL DEF)"));
+        return;
+    }
+    if (m_cycle->descriptor->number == 12) {
+        fail("not-supported", KERF_TR_NOOP("cycle 12 with CYCL CALL PAT is not supported yet"));
+        return;
+    }
+    // Between the points the tool moves at rapid, or at the feed the call programs.
+    bool rapid = true;
+    double feed = m_feed;
+    if (call.words.feed.kind == FeedWord::Kind::Max) {
+        fail("feed", KERF_TR_NOOP("CYCL CALL PAT cannot use FMAX (without F it moves at rapid)"));
+        return;
+    }
+    if (call.words.feed.kind != FeedWord::Kind::None) {
+        if (!resolveFeed(call.words.feed, rapid, feed)) return;
+    }
+    applyMFunctions(call.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    const Axis toolAxis = planeAxes(workingPlane()).normal;
+    const PlaneAxes axes = planeAxes(workingPlane());
+    const double heightAtCall = m_programmed[toolAxis];
+    const bool secondClearance =
+        std::find(m_globalSet.begin(), m_globalSet.end(), 345) != m_globalSet.end() &&
+        m_globals.integer(345) == 1;
+    for (const cycles::PatternPoint& point : *m_pattern) {
+        cycles::CycleValues values = callValues();
+        values.set(203, point.surface ? *point.surface : values.number(203) + point.surfaceOffset);
+        const double second = values.number(203) + values.number(204);
+        const double height = secondClearance ? second : std::max(heightAtCall, second);
+        Pose up = m_programmed;
+        up[toolAxis] = height;
+        moveProgrammed(up, rapid, feed);
+        Pose over = up;
+        over[axes.first] = point.position.x();
+        over[axes.second] = point.position.y();
+        moveProgrammed(over, rapid, feed);
+        if (m_status == interp::RunStatus::Failed || !runMachiningCycle(values)) return;
+    }
+    applyMFunctions(call.words.m, false);
+}
+
+void KlartextInterpreter::callCyclePosition(const CycleCall& call) {
+    const PlaneAxes axes = planeAxes(workingPlane());
+    if (!call.coords.has(axes.first) || !call.coords.has(axes.second) ||
+        !call.coords.has(axes.normal)) {
+        fail("cycle-call", KERF_TR_NOOP("CYCL CALL POS needs all three coordinates"));
+        return;
+    }
+    if (!m_cycle) {
+        fail("cycle-call", KERF_TR_NOOP("no machining cycle is defined (CYCL DEF)"));
+        return;
+    }
+    bool rapid = true;
+    double feed = m_feed;
+    if (call.words.feed.kind != FeedWord::Kind::None) {
+        if (!resolveFeed(call.words.feed, rapid, feed)) return;
+    }
+    applyMFunctions(call.words.m, true);
+    if (m_status == interp::RunStatus::Failed) return;
+    const Pose target = targetOf(call.coords);
+    // The tool-axis coordinate acts as an additional datum shift of the cycle's surface.
+    cycles::CycleValues values = callValues();
+    values.set(203, values.number(203) + target[axes.normal]);
+    const double clearance = values.number(203) + values.number(200);
+    Pose inPlane = m_programmed;
+    inPlane[axes.first] = target[axes.first];
+    inPlane[axes.second] = target[axes.second];
+    if (m_programmed[axes.normal] > values.number(203)) {
+        moveProgrammed(inPlane, rapid, feed);
+        Pose down = m_programmed;
+        down[axes.normal] = clearance;
+        moveProgrammed(down, rapid, feed);
+    } else {
+        Pose up = m_programmed;
+        up[axes.normal] = clearance;
+        moveProgrammed(up, rapid, feed);
+        inPlane[axes.normal] = clearance;
+        moveProgrammed(inPlane, rapid, feed);
+    }
+    if (m_status == interp::RunStatus::Failed || !runMachiningCycle(values)) return;
+    applyMFunctions(call.words.m, false);
+}
+
+void KlartextInterpreter::runPatternCycle(const cycles::CycleDescriptor& pattern,
+                                          const cycles::CycleValues& values) {
+    cycles::PatternPlan plan;
+    if (auto error = pattern.pattern(values, plan)) {
+        failCycle(*error);
+        return;
+    }
+    const std::string number = std::to_string(pattern.number);
+    if (!m_cycle) {
+        fail("cycle-call", KERF_TR_NOOP("cycle {1} needs a machining cycle defined before it"),
+             {number});
+        return;
+    }
+    if (!m_cycle->descriptor->takesPatternClearances) {
+        fail("cycle-call", KERF_TR_NOOP("cycle {1} cannot call cycle {2}"),
+             {number, std::to_string(m_cycle->descriptor->number)});
+        return;
+    }
+    // The pattern's clearances and surface replace the machining cycle's, for later calls too.
+    StoredCycle& cycle = *m_cycle;
+    auto overwrite = [&](uint16_t q, double value) {
+        cycle.values.set(q, value);
+        cycle.predef.erase(std::remove(cycle.predef.begin(), cycle.predef.end(), q),
+                           cycle.predef.end());
+    };
+    overwrite(200, plan.setUpClearance);
+    overwrite(203, plan.surface);
+    overwrite(204, plan.secondClearance);
+    if (plan.rotationDeg && cycle.descriptor->parameter(224) != nullptr) {
+        overwrite(224, *plan.rotationDeg);
+    }
+    const cycles::CycleValues callWith = callValues();
+    const canon::FeedMode mode = m_feedMode;
+    const PlaneAxes axes = planeAxes(workingPlane());
+    const double setUp = plan.surface + plan.setUpClearance;
+    const double travel =
+        plan.surface + (plan.travelAtSecondClearance ? plan.secondClearance : plan.setUpClearance);
+    for (size_t i = 0; i < plan.points.size(); ++i) {
+        const Vec2 p = plan.points[i].position;
+        Pose at = m_programmed;
+        if (i == 0) {
+            at[axes.normal] = plan.surface + plan.secondClearance;
+            moveProgrammed(at, true, m_feed);
+            at[axes.first] = p.x();
+            at[axes.second] = p.y();
+            moveProgrammed(at, true, m_feed);
+        } else {
+            at[axes.normal] = travel;
+            moveProgrammed(at, true, m_feed);
+            at[axes.first] = p.x();
+            at[axes.second] = p.y();
+            if (plan.arcTraverse) {
+                CycleOutput out(*this);
+                const cycles::Feed rapid = cycles::Feed::rapid();
+                out.arc(toLocal(at), plan.arcCentre, plan.arcStepRad, rapid);
+            } else {
+                moveProgrammed(at, true, m_feed);
+            }
+        }
+        at[axes.normal] = setUp;
+        moveProgrammed(at, true, m_feed);
+        if (m_status == interp::RunStatus::Failed || !runMachiningCycle(callWith)) return;
+    }
+    if (m_feedMode != mode) {
+        m_feedMode = mode;
+        emit(canon::SetFeedMode{mode});
+    }
+}
+
+}  // namespace kerf::klartext

@@ -1,0 +1,331 @@
+// CYCL DEF (parameter capture, PREDEF, FAUTO/FMAX/FU/FZ), GLOBAL DEF, PATTERN DEF, SEL TABLE and
+// SEL PATTERN. Old-style sub-blocks are dispatched to klartext_transform.cpp.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/base/fixed_format.h"
+#include "core/base/translate.h"
+#include "core/cycles/cycle_registry.h"
+#include "core/cycles/global_def.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+#include "core/tables/point_table.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+std::string trimmedUpper(std::string_view text) {
+    size_t a = 0, b = text.size();
+    while (a < b && (text[a] == ' ' || text[a] == '\t'))
+        ++a;
+    while (b > a && (text[b - 1] == ' ' || text[b - 1] == '\t'))
+        --b;
+    std::string out(text.substr(a, b - a));
+    for (char& c : out)
+        c = upper(c);
+    return out;
+}
+
+std::string parameterName(const cycles::ParameterDescriptor& p) {
+    return p.q != 0 ? "Q" + std::to_string(p.q) : std::string(p.word);
+}
+
+bool scalesWithUnit(cycles::Unit unit) {
+    return unit == cycles::Unit::Millimetre || unit == cycles::Unit::FeedPerMinute;
+}
+
+// The number after FU / FZ in a cycle parameter ("FU0.15").
+std::optional<double> numberAfter(const std::string& raw, size_t at) {
+    Cursor c(raw, at);
+    auto v = c.signedNumber();
+    if (!v || !c.atEnd()) return std::nullopt;
+    return v;
+}
+
+}  // namespace
+
+void KlartextInterpreter::failCycle(const cycles::CycleError& error) {
+    fail(error.code.c_str(), error.messageTemplate.c_str(), error.args);
+}
+
+bool KlartextInterpreter::resolveParameters(
+    const std::string& owner, std::span<const cycles::ParameterDescriptor> descriptors,
+    const std::vector<CycleParameter>& written, cycles::CycleValues& values,
+    std::vector<uint16_t>* predef) {
+    for (const CycleParameter& p : written) {
+        const bool known = std::any_of(descriptors.begin(), descriptors.end(),
+                                       [&](const auto& d) { return d.q == p.q; });
+        if (!known) {
+            warn("cycle-parameter", KERF_TR_NOOP("{1} has no parameter Q{2}: it is ignored"),
+                 {owner, std::to_string(p.q)});
+        }
+    }
+    const double scale = lengthScale();
+    for (const cycles::ParameterDescriptor& d : descriptors) {
+        auto it = std::find_if(written.rbegin(), written.rend(),
+                               [&](const CycleParameter& p) { return p.q == d.q; });
+        const std::string name = parameterName(d);
+        const std::string meaning = d.description;
+        if (it == written.rend()) {
+            if (!d.optional) {
+                fail("cycle-parameter", KERF_TR_NOOP("{1}: parameter {2} ({3}) is missing"),
+                     {owner, name, meaning});
+                return false;
+            }
+            values.set(d.q, d.defaultValue * (scalesWithUnit(d.unit) ? scale : 1.0));
+            continue;
+        }
+        if (it->isString || d.unit == cycles::Unit::Text) {
+            std::string text = it->raw;
+            if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
+                text = text.substr(1, text.size() - 2);
+            }
+            values.setText(d.q, std::move(text));
+            continue;
+        }
+        const std::string raw = trimmedUpper(it->raw);
+        auto refuse = [&](const std::string& keyword) {
+            fail("cycle-parameter", KERF_TR_NOOP("{1}: parameter {2} ({3}) does not accept {4}"),
+                 {owner, name, meaning, keyword});
+            return false;
+        };
+        if (raw == "PREDEF") {
+            if (!d.predef || predef == nullptr) return refuse("PREDEF");
+            predef->push_back(d.q);
+            values.set(d.q, d.defaultValue * (scalesWithUnit(d.unit) ? scale : 1.0));
+            continue;
+        }
+        if (raw == "FMAX") {
+            if ((d.keywords & cycles::kFeedMax) == 0) return refuse("FMAX");
+            values.setFeed(d.q, cycles::Feed::rapid());
+            continue;
+        }
+        if (raw == "FAUTO") {
+            if ((d.keywords & cycles::kFeedAuto) == 0) return refuse("FAUTO");
+            if (m_toolCallFeed <= 0.0) {
+                fail("feed", KERF_TR_NOOP("FAUTO: the TOOL CALL block gave no feed rate F"));
+                return false;
+            }
+            values.setFeed(d.q, cycles::Feed::perMinute(m_toolCallFeed));
+            continue;
+        }
+        if (raw.rfind("FU", 0) == 0 || raw.rfind("FZ", 0) == 0) {
+            const bool tooth = raw[1] == 'Z';
+            if ((d.keywords & (tooth ? cycles::kFeedPerTooth : cycles::kFeedPerRev)) == 0) {
+                return refuse(raw.substr(0, 2));
+            }
+            auto v = numberAfter(raw, 2);
+            if (!v || *v < 0.0) {
+                fail("cycle-parameter", KERF_TR_NOOP("{1}: {2} needs a feed value after {3}"),
+                     {owner, name, raw.substr(0, 2)});
+                return false;
+            }
+            if (tooth && m_tool.cutterCount <= 0) {
+                fail("feed", KERF_TR_NOOP("FZ needs the number of teeth (CUT) of the tool"));
+                return false;
+            }
+            const double perRev = *v * scale * (tooth ? m_tool.cutterCount : 1);
+            values.setFeed(d.q, cycles::Feed::perRevolution(perRev));
+            continue;
+        }
+        if (!it->value) {
+            fail("cycle-parameter", KERF_TR_NOOP("{1}: parameter {2} ({3}) = '{4}' is not a value"),
+                 {owner, name, meaning, it->raw});
+            return false;
+        }
+        const double value = *it->value;
+        const bool whole = !d.integer || std::fabs(value - std::round(value)) < 1e-9;
+        if (!(value >= d.min - 1e-9 && value <= d.max + 1e-9) || !whole) {
+            fail("cycle-range",
+                 d.integer ? KERF_TR_NOOP("{1}: parameter {2} ({3}) = {4} must be a whole number "
+                                          "from {5} to {6}")
+                           : KERF_TR_NOOP("{1}: parameter {2} ({3}) = {4} is outside {5} to {6}"),
+                 {owner, name, meaning, formatFixed(value, 4), formatFixed(d.min, 4),
+                  formatFixed(d.max, 4)});
+            return false;
+        }
+        values.set(d.q, value * (scalesWithUnit(d.unit) ? scale : 1.0));
+    }
+    return true;
+}
+
+void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
+    if (def.subNumber >= 0) {
+        executeOldCycle(def);
+        return;
+    }
+    const cycles::CycleDescriptor* d = cycles::findCycle(def.number);
+    if (d == nullptr || d->oldStyle) {
+        fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
+             {std::to_string(def.number)});
+        return;
+    }
+    const std::string owner = "cycle " + std::to_string(def.number);
+    StoredCycle stored;
+    stored.descriptor = d;
+    if (!resolveParameters(owner, d->parameters, def.parameters, stored.values, &stored.predef)) {
+        return;
+    }
+    if (d->activation == cycles::Activation::Call) {
+        m_cycle = std::move(stored);
+        m_modalCycleCall = false;  // a new machining cycle cancels M89
+        return;
+    }
+    for (uint16_t q : stored.predef) {
+        if (std::find(m_globalSet.begin(), m_globalSet.end(), q) != m_globalSet.end()) {
+            stored.values.setFeed(q, m_globals.feed(q));
+        }
+    }
+    if (d->pattern != nullptr) {
+        runPatternCycle(*d, stored.values);
+    } else if (def.number == 247) {
+        const Pose at = m_frame.toWorkpiece(m_programmed);
+        presetting(stored.values);
+        m_programmed = m_frame.toProgram(at);
+    }
+}
+
+void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
+    using Handler = void (KlartextInterpreter::*)(const CycleDefinition&);
+    struct Entry {
+        int number;
+        Handler handler;
+    };
+    static constexpr std::array<Entry, 11> kHandlers = {{
+        {7, &KlartextInterpreter::datumShift},
+        {8, &KlartextInterpreter::mirrorImage},
+        {9, &KlartextInterpreter::dwellTime},
+        {10, &KlartextInterpreter::rotation},
+        {11, &KlartextInterpreter::scaling},
+        {12, &KlartextInterpreter::programCall},
+        {13, &KlartextInterpreter::spindleOrientation},
+        {18, &KlartextInterpreter::threadCutting},
+        {19, &KlartextInterpreter::workingPlane},
+        {26, &KlartextInterpreter::axisScaling},
+        {32, &KlartextInterpreter::tolerance},
+    }};
+    auto it = std::find_if(kHandlers.begin(), kHandlers.end(),
+                           [&](const Entry& e) { return e.number == def.number; });
+    if (it == kHandlers.end()) {
+        // Obsolete cycles (1 pecking, 5 circular pocket ...) and SL cycles: the header stops.
+        if (def.subNumber == 0) {
+            fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
+                 {std::to_string(def.number)});
+        }
+        return;
+    }
+    if (def.subNumber == 0) {
+        m_oldCycle = def.number;
+    } else if (m_oldCycle != def.number) {
+        fail("cycle-syntax", KERF_TR_NOOP("CYCL DEF {1}.{2} without CYCL DEF {1}.0 before it"),
+             {std::to_string(def.number), std::to_string(def.subNumber)});
+        return;
+    }
+    // A transformation changes coordinates, not where the tool is: keep its position.
+    const Pose at = m_frame.toWorkpiece(m_programmed);
+    (this->*(it->handler))(def);
+    m_programmed = m_frame.toProgram(at);
+}
+
+void KlartextInterpreter::executeGlobalDef(const GlobalDefinition& def) {
+    const cycles::GlobalDefGroup* group = cycles::findGlobalDefGroup(def.group);
+    if (group == nullptr) {
+        fail("cycle-syntax", KERF_TR_NOOP("GLOBAL DEF {1} does not exist"),
+             {std::to_string(def.group)});
+        return;
+    }
+    // Only the parameters written in the block are set; the others keep their values.
+    std::vector<cycles::ParameterDescriptor> written;
+    for (const cycles::ParameterDescriptor& d : group->parameters) {
+        const bool present = std::any_of(def.parameters.begin(), def.parameters.end(),
+                                         [&](const CycleParameter& p) { return p.q == d.q; });
+        if (present) written.push_back(d);
+    }
+    cycles::CycleValues values;
+    if (!resolveParameters("GLOBAL DEF " + std::to_string(def.group), written, def.parameters,
+                           values, nullptr)) {
+        return;
+    }
+    for (const cycles::ParameterDescriptor& d : written) {
+        m_globals.setFeed(d.q, values.feed(d.q));
+        if (std::find(m_globalSet.begin(), m_globalSet.end(), d.q) == m_globalSet.end()) {
+            m_globalSet.push_back(d.q);
+        }
+    }
+}
+
+void KlartextInterpreter::executePatternDef(const PatternDefinition& def) {
+    std::vector<cycles::PatternElement> elements = def.elements;
+    const double scale = lengthScale();
+    for (cycles::PatternElement& e : elements) {
+        for (auto* w : {&e.x, &e.y, &e.z, &e.d, &e.dx, &e.dy})
+            w->value *= scale;
+    }
+    std::vector<cycles::PatternPoint> points;
+    if (auto error = cycles::patternPoints(elements, points)) {
+        failCycle(*error);
+        return;
+    }
+    m_pattern = std::move(points);
+}
+
+std::optional<std::filesystem::path> KlartextInterpreter::tablePath(const std::string& name,
+                                                                    const char* extension) {
+    const ProgramFile& caller = *m_levels.back().program;
+    auto path = m_root.resolve(name, caller.folder);
+    if (!path) {
+        fail("path", path.error().messageTemplate.c_str(), path.error().args);
+        return std::nullopt;
+    }
+    std::filesystem::path target = *path;
+    std::error_code ignored;
+    if (!std::filesystem::exists(target, ignored)) {
+        for (std::string ext : {std::string(extension), trimmedUpper(extension)}) {
+            std::filesystem::path withExt = target;
+            withExt += ext;
+            if (std::filesystem::exists(withExt, ignored)) return withExt;
+        }
+    }
+    return target;
+}
+
+void KlartextInterpreter::executeSelectTable(const SelectTable& select) {
+    auto path = tablePath(select.path, ".d");
+    if (!path) return;
+    auto table = tables::DatumTable::load(*path);
+    if (!table) {
+        fail("io", KERF_TR_NOOP("cannot read the datum table {1}: {2}"),
+             {select.path, table.error().message()});
+        return;
+    }
+    m_datumTable = std::move(*table);
+}
+
+void KlartextInterpreter::executeSelectPattern(const SelectPattern& select) {
+    auto path = tablePath(select.path, ".pnt");
+    if (!path) return;
+    auto table = tables::PointTable::load(*path);
+    if (!table) {
+        fail("io", KERF_TR_NOOP("cannot read the point table {1}: {2}"),
+             {select.path, table.error().message()});
+        return;
+    }
+    // Plane coordinates are the hole centres, the tool-axis value shifts the surface; a column
+    // that is off keeps the position where the tool is now. Faded rows are skipped.
+    const PlaneAxes axes = planeAxes(workingPlane());
+    const double scale = lengthScale();
+    std::vector<cycles::PatternPoint> points;
+    for (const tables::PointData& p : table->points()) {
+        if (p.fade) continue;
+        cycles::PatternPoint point;
+        point.position = {
+            p.axis(axisLetter(axes.first)).value_or(m_programmed[axes.first] / scale) * scale,
+            p.axis(axisLetter(axes.second)).value_or(m_programmed[axes.second] / scale) * scale};
+        point.surfaceOffset = p.axis(axisLetter(axes.normal)).value_or(0.0) * scale;
+        points.push_back(point);
+    }
+    m_pattern = std::move(points);
+}
+
+}  // namespace kerf::klartext

@@ -1,0 +1,78 @@
+#include "core/cycles/transform/coordinate_frame.h"
+
+#include <gtest/gtest.h>
+
+#include "core/cycles/transform/transformation_cycles.h"
+
+namespace kerf::cycles {
+namespace {
+
+Pose xyz(double x, double y, double z) {
+    Pose p;
+    p.setXyz({x, y, z});
+    return p;
+}
+
+TEST(CoordinateFrame, ScaleRotateMirrorShiftInThisOrder) {
+    CoordinateFrame f;
+    f.setShift(Axis::X, 50.0, false);
+    f.setRotation(90.0, false, Plane::XY);
+    f.setMirror(axisBit(Axis::X));
+    f.setScale(0.5);
+    // (10, 0, -2) -> scale (5, 0, -1) -> rotate (0, 5) -> mirror X (0, 5) -> shift (50, 5).
+    Pose w = f.toWorkpiece(xyz(10.0, 0.0, -2.0));
+    EXPECT_NEAR(w[Axis::X], 50.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Y], 5.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Z], -1.0, 1e-12);
+    Pose back = f.toProgram(w);
+    EXPECT_NEAR(back[Axis::X], 10.0, 1e-12);
+    EXPECT_NEAR(back[Axis::Y], 0.0, 1e-12);
+    EXPECT_NEAR(back[Axis::Z], -2.0, 1e-12);
+    EXPECT_TRUE(f.flipsOrientation(Plane::XY));
+    EXPECT_FALSE(f.keepsArcs(Plane::ZX));  // rotated about Z
+}
+
+TEST(CoordinateFrame, AxisScalingAboutItsCentre) {
+    CoordinateFrame f;
+    CycleWords words = {
+        {"X", false, 1.4}, {"Y", false, 0.6}, {"CCX", false, 15.0}, {"CCY", false, 20.0}};
+    ASSERT_FALSE(applyAxisScaling(f, words));
+    Pose w = f.toWorkpiece(xyz(25.0, 30.0, 0.0));
+    EXPECT_NEAR(w[Axis::X], 15.0 + 1.4 * 10.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Y], 20.0 + 0.6 * 10.0, 1e-12);
+    EXPECT_FALSE(f.keepsArcs(Plane::XY));  // different factors in the plane
+}
+
+TEST(CoordinateFrame, IncrementalShiftAndRotationAdd) {
+    CoordinateFrame f;
+    ASSERT_FALSE(applyDatumShift(f, {{"X", false, 10.0}, {"X", true, 5.0}}));
+    EXPECT_DOUBLE_EQ(f.shift()[Axis::X], 15.0);
+    ASSERT_FALSE(applyRotation(f, {{"ROT", false, 30.0}, {"ROT", true, 15.0}}, Plane::XY));
+    EXPECT_DOUBLE_EQ(f.rotationDeg(), 45.0);
+    EXPECT_TRUE(applyRotation(f, {{"ROT", false, 400.0}}, Plane::XY));
+}
+
+TEST(CoordinateFrame, ScalingFactorRangeAndMirrorOfTheToolAxis) {
+    CoordinateFrame f;
+    EXPECT_TRUE(applyScaling(f, {{"SCL", false, 0.0}}));
+    EXPECT_TRUE(applyScaling(f, {{"SCL", false, 100.0}}));
+    bool ignored = false;
+    ASSERT_FALSE(applyMirror(f, {{"X", false, {}}, {"Z", false, {}}}, Axis::Z, ignored));
+    EXPECT_TRUE(ignored);
+    EXPECT_EQ(f.mirror(), axisBit(Axis::X));
+}
+
+TEST(CoordinateFrame, PresetClearsTheOtherTransformations) {
+    CoordinateFrame f;
+    f.setShift(Axis::X, 10.0, false);
+    f.setScale(2.0);
+    Pose offset;
+    offset[Axis::Y] = 7.0;
+    f.setPreset(offset);
+    Pose w = f.toWorkpiece(xyz(1.0, 1.0, 1.0));
+    EXPECT_DOUBLE_EQ(w[Axis::X], 1.0);
+    EXPECT_DOUBLE_EQ(w[Axis::Y], 8.0);
+}
+
+}  // namespace
+}  // namespace kerf::cycles
