@@ -135,12 +135,25 @@ std::optional<double> KlartextInterpreter::sysReadValue(const SysRead& read, boo
             }
             break;
         }
-        case 210:  // transformations: none are active in this release
-            if (read.nr == 4) return 1.0;  // scaling factor
-            if (read.nr >= 1 && read.nr <= 5) return 0.0;
+        case 210:  // active transformations
+            switch (read.nr) {
+                case 1:  // basic rotation (manual operation): none in this release
+                case 5:  // 3D ROT: needs tilting kinematics
+                    return 0.0;
+                case 2:
+                    return m_frame.rotationDeg();
+                case 3:  // mirrored axes, bit 0 = X, bit 1 = Y, ...
+                    return static_cast<double>(m_frame.mirror());
+                case 4:
+                    return m_frame.scale();
+                default:
+                    break;
+            }
             break;
-        case 220:  // active datum shift
-            if (read.nr == 2 && validAxis) return 0.0;
+        case 220:  // active datum shift (cycle 7)
+            if (read.nr == 2 && validAxis) {
+                return m_frame.shift().values[static_cast<size_t>(axisIndexValue)] / scale;
+            }
             break;
         case 230:  // traverse range (software limits, machine coordinates)
             if ((read.nr == 2 || read.nr == 3) && validAxis && m_settings.machine) {

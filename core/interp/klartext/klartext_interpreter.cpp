@@ -258,8 +258,14 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
     int axis = pending.idx - 1;
     double value = 0.0;
     if (axis >= 0 && axis < kAxisCount) {
-        value = world.position.values[static_cast<size_t>(axis)];
-        if (pending.id == 240) value += m_settings.presetInMachine.values[static_cast<size_t>(axis)];
+        const auto i = static_cast<size_t>(axis);
+        if (pending.id == 240) {
+            // REF: machine coordinates of the tool tip.
+            value = world.position.values[i] + m_settings.presetInMachine.values[i];
+        } else {
+            // The active coordinate system: through the inverse of the transformations.
+            value = m_frame.toProgram(world.position).values[i];
+        }
     }
     m_q.set(pending.target, value / lengthScale());
     m_status = interp::RunStatus::BudgetUsed;

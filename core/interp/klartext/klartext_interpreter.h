@@ -158,6 +158,8 @@ private:
                     const CommonWords& words);
     void emit(canon::CommandBody body);
     Pose targetOf(const Coordinates& coords) const;
+    // Sets the working-plane coordinates of `target` from polar words about the pole CC.
+    void applyPolar(const PolarWords& polar, Pose& target) const;
     Plane workingPlane() const;
     double lengthScale() const { return m_inch ? 25.4 : 1.0; }
     bool checkPathError(const std::optional<interp::PathError>& error);

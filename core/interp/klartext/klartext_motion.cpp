@@ -44,6 +44,18 @@ void setInPlane(Plane plane, Pose& pose, const Vec2& p) {
 
 Plane KlartextInterpreter::workingPlane() const { return planeForToolAxis(m_toolAxis); }
 
+void KlartextInterpreter::applyPolar(const PolarWords& polar, Pose& target) const {
+    // Missing PR/PA keep the current polar coordinates about the pole; I prefixes add to them.
+    const Vec2 from = inPlane(m_pole.plane, m_programmed) - m_pole.point;
+    const double currentRadius = from.norm();
+    const double currentAngle = std::atan2(from.y(), from.x());
+    double r = polar.radius ? *polar.radius * lengthScale() : currentRadius;
+    if (polar.radius && polar.radiusIncremental) r += currentRadius;
+    double a = polar.angle ? degToRad(*polar.angle) : currentAngle;
+    if (polar.angle && polar.angleIncremental) a += currentAngle;
+    setInPlane(m_pole.plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+}
+
 Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
     Pose target = m_programmed;
     const double scale = lengthScale();
@@ -213,12 +225,7 @@ void KlartextInterpreter::executeTangentCircle(const Coordinates& coords,
             fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
             return;
         }
-        Vec2 from = inPlane(plane, m_programmed) - m_pole.point;
-        double r = polar->radius ? *polar->radius * lengthScale() : from.norm();
-        if (polar->radius && polar->radiusIncremental) r += from.norm();
-        double a = polar->angle ? degToRad(*polar->angle) : std::atan2(from.y(), from.x());
-        if (polar->angle && polar->angleIncremental) a += std::atan2(from.y(), from.x());
-        setInPlane(plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+        applyPolar(*polar, target);
     }
     auto arc = tangentArc(inPlane(plane, m_programmed), *m_lastTangent, inPlane(plane, target));
     if (!arc) {
@@ -244,13 +251,7 @@ void KlartextInterpreter::executeLinePolar(const LinePolarBlock& block) {
     if (m_status == interp::RunStatus::Failed) return;
     const Plane plane = m_pole.plane;
     Pose target = targetOf(block.coords);
-    Vec2 from = inPlane(plane, m_programmed) - m_pole.point;
-    double r = block.polar.radius ? *block.polar.radius * lengthScale() : from.norm();
-    if (block.polar.radius && block.polar.radiusIncremental) r += from.norm();
-    double current = std::atan2(from.y(), from.x());
-    double a = block.polar.angle ? degToRad(*block.polar.angle) : current;
-    if (block.polar.angle && block.polar.angleIncremental) a += current;
-    setInPlane(plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+    applyPolar(block.polar, target);
     submitMove(ContourElement::line(plane, m_programmed, target), rapid, feed, block.words);
     applyMFunctions(block.words.m, false);
     afterPositioning(block.words.m);
@@ -380,13 +381,7 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
             fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
             return;
         }
-        Vec2 from = inPlane(m_pole.plane, m_programmed) - m_pole.point;
-        double r = block.polarWords.radius ? *block.polarWords.radius * lengthScale() : from.norm();
-        if (block.polarWords.radius && block.polarWords.radiusIncremental) r += from.norm();
-        double current = std::atan2(from.y(), from.x());
-        double a = block.polarWords.angle ? degToRad(*block.polarWords.angle) : current;
-        if (block.polarWords.angle && block.polarWords.angleIncremental) a += current;
-        setInPlane(m_pole.plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
+        applyPolar(block.polarWords, target);
     }
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
