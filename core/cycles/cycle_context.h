@@ -26,6 +26,16 @@ struct ToolInfo {
     int cutterCount = 0;          // CUT
 };
 
+// A local date and time (cycle 225 %time).
+struct DateTime {
+    int year = 2000;
+    int month = 1;
+    int day = 1;
+    int hour = 0;
+    int minute = 0;
+    int second = 0;
+};
+
 struct CycleContext {
     Vec3 start{0.0, 0.0, 0.0};  // tool position when the cycle starts (hole centre in the plane)
     ToolInfo tool;
@@ -35,6 +45,8 @@ struct CycleContext {
     // Mirrored working-plane axes: 202/204 keep their disengaging direction unmirrored.
     bool mirroredMain = false;
     bool mirroredSecondary = false;
+    DateTime now;                    // cycle 225 %time
+    unsigned long long counter = 0;  // cycle 225 %count: the MOD counter (0 in test run)
 };
 
 // A problem that stops the cycle; the interpreter adds the location of the calling block.

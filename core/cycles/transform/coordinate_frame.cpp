@@ -29,6 +29,8 @@ bool isLinearAxis(Axis axis) {
 
 Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
     Pose p = program;
+    for (size_t k = 0; k < p.values.size(); ++k)
+        p.values[k] += m_pointShift.values[k];
     for (int i = 0; i < kAxisCount; ++i) {
         if (!isLinearAxis(axisAt(i))) continue;
         const auto k = static_cast<size_t>(i);
@@ -58,6 +60,8 @@ Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
         const double c = m_axisScaleCentre.values[k];
         p.values[k] = c + (p.values[k] / m_scale - c) / m_axisScale[k];
     }
+    for (size_t k = 0; k < p.values.size(); ++k)
+        p.values[k] -= m_pointShift.values[k];
     return p;
 }
 
@@ -82,7 +86,8 @@ double CoordinateFrame::planeScale(Plane plane) const {
 bool CoordinateFrame::identity() const {
     if (m_mirror != 0 || m_rotationDeg != 0.0 || m_scale != 1.0) return false;
     for (size_t k = 0; k < static_cast<size_t>(kAxisCount); ++k) {
-        if (m_shift.values[k] != 0.0 || m_preset.values[k] != 0.0 || m_axisScale[k] != 1.0) {
+        if (m_shift.values[k] != 0.0 || m_preset.values[k] != 0.0 || m_axisScale[k] != 1.0 ||
+            m_pointShift.values[k] != 0.0) {
             return false;
         }
     }
@@ -107,8 +112,10 @@ void CoordinateFrame::setAxisScaleCentre(Axis axis, double centre) {
 }
 
 void CoordinateFrame::setPreset(const Pose& offset) {
+    const Pose pointShift = m_pointShift;  // belongs to the running program call, not to 247
     *this = CoordinateFrame();
     m_preset = offset;
+    m_pointShift = pointShift;
 }
 
 }  // namespace kerf::cycles

@@ -33,6 +33,10 @@ public:
     void setAxisScaleCentre(Axis axis, double centre);
     // Cycle 247: a new preset, given as its offset from the start preset; clears 7, 8, 10, 11, 26.
     void setPreset(const Pose& offset);
+    // Cycle 12 at a pattern point: the point is an additional datum shift of the called program,
+    // applied before every other transformation (in the coordinates of the calling program).
+    void setPointShift(const Pose& shift) { m_pointShift = shift; }
+    const Pose& pointShift() const { return m_pointShift; }
 
     const Pose& shift() const { return m_shift; }
     AxisMask mirror() const { return m_mirror; }
@@ -48,6 +52,7 @@ private:
     std::array<double, kAxisCount> m_axisScale{1, 1, 1, 1, 1, 1, 1, 1, 1};
     Pose m_axisScaleCentre{};
     Pose m_preset{};
+    Pose m_pointShift{};
 };
 
 bool isLinearAxis(Axis axis);

@@ -2,6 +2,7 @@
 // defined machining cycle expanded into ordinary moves at the calling block's location.
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 
 #include "core/base/translate.h"
 #include "core/cycles/drilling/hole_levels.h"
@@ -11,7 +12,14 @@ namespace kerf::klartext {
 
 namespace {
 constexpr size_t kCycleMovesPerBlock = 2000000;
+
+cycles::DateTime localNow() {
+    const std::time_t now = std::time(nullptr);
+    std::tm t{};
+    localtime_r(&now, &t);
+    return {t.tm_year + 1900, t.tm_mon + 1, t.tm_mday, t.tm_hour, t.tm_min, t.tm_sec};
 }
+}  // namespace
 
 // Feeds the moves of an expanded cycle into the interpreter's path pipeline, where the
 // coordinate transformations apply to them as to programmed moves.
@@ -148,6 +156,10 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
     ctx.spindle = m_spindle;
     ctx.spindleRpm = m_spindleSpeed;
     ctx.positiveDepthIsError = m_settings.positiveDepthIsError;
+    if (d.number == 225) {  // only engraving reads the clock
+        ctx.now = m_settings.engravingTime ? *m_settings.engravingTime : localNow();
+        ctx.counter = m_settings.partCounter;
+    }
     const PlaneAxes axes = planeAxes(workingPlane());
     ctx.mirroredMain = (m_frame.mirror() & axisBit(axes.first)) != 0;
     ctx.mirroredSecondary = (m_frame.mirror() & axisBit(axes.second)) != 0;
@@ -220,10 +232,6 @@ void KlartextInterpreter::callCyclePattern(const CycleCall& call) {
         fail("cycle-call", KERF_TR_NOOP("no machining cycle is defined (CYCL DEF)"));
         return;
     }
-    if (m_cycle->descriptor->number == 12) {
-        fail("not-supported", KERF_TR_NOOP("cycle 12 with CYCL CALL PAT is not supported yet"));
-        return;
-    }
     // Between the points the tool moves at rapid, or at the feed the call programs.
     bool rapid = true;
     double feed = m_feed;
@@ -239,6 +247,17 @@ void KlartextInterpreter::callCyclePattern(const CycleCall& call) {
     const Axis toolAxis = planeAxes(workingPlane()).normal;
     const PlaneAxes axes = planeAxes(workingPlane());
     const double heightAtCall = m_programmed[toolAxis];
+    if (m_cycle->descriptor->number == 12) {
+        // The program has no clearance of its own: the tool travels at the height of the call.
+        ProgramAtPoints run;
+        run.points = *m_pattern;
+        run.rapid = rapid;
+        run.feed = feed;
+        run.height = heightAtCall;
+        run.after = call.words.m;
+        startProgramAtPoints(std::move(run));
+        return;
+    }
     const bool secondClearance =
         std::find(m_globalSet.begin(), m_globalSet.end(), 345) != m_globalSet.end() &&
         m_globals.integer(345) == 1;
@@ -314,6 +333,12 @@ void KlartextInterpreter::runPatternCycle(const cycles::CycleDescriptor& pattern
              {number});
         return;
     }
+    if (m_cycle->descriptor->number == 12) {
+        ProgramAtPoints run;
+        run.plan = std::move(plan);
+        startProgramAtPoints(std::move(run));
+        return;
+    }
     if (!m_cycle->descriptor->takesPatternClearances) {
         fail("cycle-call", KERF_TR_NOOP("cycle {1} cannot call cycle {2}"),
              {number, std::to_string(m_cycle->descriptor->number)});
@@ -334,40 +359,40 @@ void KlartextInterpreter::runPatternCycle(const cycles::CycleDescriptor& pattern
     }
     const cycles::CycleValues callWith = callValues();
     const canon::FeedMode mode = m_feedMode;
-    const PlaneAxes axes = planeAxes(workingPlane());
-    const double setUp = plan.surface + plan.setUpClearance;
-    const double travel =
-        plan.surface + (plan.travelAtSecondClearance ? plan.secondClearance : plan.setUpClearance);
     for (size_t i = 0; i < plan.points.size(); ++i) {
-        const Vec2 p = plan.points[i].position;
-        Pose at = m_programmed;
-        if (i == 0) {
-            at[axes.normal] = plan.surface + plan.secondClearance;
-            moveProgrammed(at, true, m_feed);
-            at[axes.first] = p.x();
-            at[axes.second] = p.y();
-            moveProgrammed(at, true, m_feed);
-        } else {
-            at[axes.normal] = travel;
-            moveProgrammed(at, true, m_feed);
-            at[axes.first] = p.x();
-            at[axes.second] = p.y();
-            if (plan.arcTraverse) {
-                CycleOutput out(*this);
-                const cycles::Feed rapid = cycles::Feed::rapid();
-                out.arc(toLocal(at), plan.arcCentre, plan.arcStepRad, rapid);
-            } else {
-                moveProgrammed(at, true, m_feed);
-            }
-        }
-        at[axes.normal] = setUp;
-        moveProgrammed(at, true, m_feed);
+        approachPatternPoint(plan, i);
         if (m_status == interp::RunStatus::Failed || !runMachiningCycle(callWith)) return;
     }
+    restoreFeedMode(mode);
+}
+
+void KlartextInterpreter::restoreFeedMode(canon::FeedMode mode) {
     if (m_feedMode != mode) {
         m_feedMode = mode;
         emit(canon::SetFeedMode{mode});
     }
+}
+
+// Cycles 220/221: the first point from the 2nd set-up clearance, the others at the travel
+// height (a line, or an arc on the pitch circle), then down to the set-up clearance.
+void KlartextInterpreter::approachPatternPoint(const cycles::PatternPlan& plan, size_t index) {
+    const PlaneAxes axes = planeAxes(workingPlane());
+    const double travel =
+        plan.surface + (plan.travelAtSecondClearance ? plan.secondClearance : plan.setUpClearance);
+    const Vec2 p = plan.points[index].position;
+    Pose at = m_programmed;
+    at[axes.normal] = index == 0 ? plan.surface + plan.secondClearance : travel;
+    moveProgrammed(at, true, m_feed);
+    at[axes.first] = p.x();
+    at[axes.second] = p.y();
+    if (index > 0 && plan.arcTraverse) {
+        CycleOutput out(*this);
+        out.arc(toLocal(at), plan.arcCentre, plan.arcStepRad, cycles::Feed::rapid());
+    } else {
+        moveProgrammed(at, true, m_feed);
+    }
+    at[axes.normal] = plan.surface + plan.setUpClearance;
+    moveProgrammed(at, true, m_feed);
 }
 
 }  // namespace kerf::klartext

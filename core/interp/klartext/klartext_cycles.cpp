@@ -45,6 +45,30 @@ std::optional<double> numberAfter(const std::string& raw, size_t at) {
 
 }  // namespace
 
+// A text parameter: "text" in quotes, or the string parameter QSn (cycle 225 QS500=QS10).
+std::optional<std::string> KlartextInterpreter::cycleText(std::string_view raw) const {
+    size_t a = 0, b = raw.size();
+    while (a < b && (raw[a] == ' ' || raw[a] == '\t'))
+        ++a;
+    while (b > a && (raw[b - 1] == ' ' || raw[b - 1] == '\t'))
+        --b;
+    const std::string_view text = raw.substr(a, b - a);
+    if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
+        return std::string(text.substr(1, text.size() - 2));
+    }
+    if (text.size() > 2 && upper(text[0]) == 'Q' && upper(text[1]) == 'S') {
+        unsigned index = 0;
+        for (char c : text.substr(2)) {
+            if (!isDigit(c) || index >= static_cast<unsigned>(kQCount)) return std::nullopt;
+            index = index * 10 + static_cast<unsigned>(c - '0');
+        }
+        if (index < static_cast<unsigned>(kQCount)) {
+            return m_q.getString(static_cast<uint16_t>(index));
+        }
+    }
+    return std::nullopt;
+}
+
 void KlartextInterpreter::failCycle(const cycles::CycleError& error) {
     fail(error.code.c_str(), error.messageTemplate.c_str(), error.args);
 }
@@ -77,11 +101,15 @@ bool KlartextInterpreter::resolveParameters(
             continue;
         }
         if (it->isString || d.unit == cycles::Unit::Text) {
-            std::string text = it->raw;
-            if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
-                text = text.substr(1, text.size() - 2);
+            auto text = cycleText(it->raw);
+            if (!text) {
+                fail("cycle-parameter",
+                     KERF_TR_NOOP("{1}: parameter {2} ({3}) needs a text in quotes or a QS "
+                                  "parameter"),
+                     {owner, name, meaning});
+                return false;
             }
-            values.setText(d.q, std::move(text));
+            values.setText(d.q, std::move(*text));
             continue;
         }
         const std::string raw = trimmedUpper(it->raw);

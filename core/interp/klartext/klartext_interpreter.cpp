@@ -284,6 +284,9 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
         m_reader.emplace(caller.program->source->text());
         m_releasedBefore = 0;
         m_reader->seek(finished.returnOffset, finished.returnLine);
+        if (!m_pointRuns.empty() && m_pointRuns.back().callerLevel == m_levels.size()) {
+            returnFromPointProgram();
+        }
         return true;
     }
     if (!explicitEnd) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct KlartextSettings {
     const tables::PresetTable* presets = nullptr;
     // Machine parameter displayDepthErr: a positive cycle depth is an error.
     bool positiveDepthIsError = true;
+    // Cycle 225: the date and time %time engraves (a fixed one for tests; unset: the local
+    // time of the computer) and the MOD counter %count engraves (0 in test run).
+    std::optional<cycles::DateTime> engravingTime;
+    unsigned long long partCounter = 0;
     int maxLabelNesting = 19;
     int maxProgramNesting = 19;
 };
@@ -182,6 +187,7 @@ private:
                            const std::vector<CycleParameter>& written, cycles::CycleValues& values,
                            std::vector<uint16_t>* predef);
     void failCycle(const cycles::CycleError& error);
+    std::optional<std::string> cycleText(std::string_view raw) const;
     std::optional<std::filesystem::path> tablePath(const std::string& name, const char* extension);
     // Old-style sub-blocks (klartext_transform.cpp).
     void datumShift(const CycleDefinition& def);
@@ -209,6 +215,28 @@ private:
     cycles::CycleValues callValues() const;
     void moveProgrammed(const Pose& target, bool rapid, double feed);
     void afterPositioning(const MWords& m);
+    void approachPatternPoint(const cycles::PatternPlan& plan, size_t index);
+    void restoreFeedMode(canon::FeedMode mode);
+    // Cycle 12 at the points of CYCL CALL PAT or of cycle 220/221 (klartext_program_points.cpp):
+    // the program runs once per point, with the point as an additional datum shift; when it
+    // returns, the next point follows.
+    struct ProgramAtPoints {
+        size_t callerLevel = 0;  // m_levels.size() of the calling program
+        SourceLocation at;       // the calling block: the moves between the points carry it
+        std::string program;
+        std::vector<cycles::PatternPoint> points;  // CYCL CALL PAT
+        std::optional<cycles::PatternPlan> plan;   // cycle 220/221: its points and heights
+        bool rapid = true;                         // CYCL CALL PAT: traverse and height
+        double feed = 0.0;
+        double height = 0.0;
+        MWords after;  // M functions of CYCL CALL PAT that act after the last point
+        Pose outerShift{};
+        size_t next = 0;
+    };
+    void startProgramAtPoints(ProgramAtPoints run);
+    void callProgramAtNextPoint();
+    void returnFromPointProgram();
+    void setPointShift(const Pose& shift);
     Vec3 toLocal(const Pose& pose) const;
     Pose fromLocal(const Vec3& local) const;
 
@@ -295,6 +323,7 @@ private:
     cycles::CoordinateFrame m_frame;
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;
+    std::vector<ProgramAtPoints> m_pointRuns;  // cycle 12 at pattern points, innermost last
 };
 
 }  // namespace kerf::klartext

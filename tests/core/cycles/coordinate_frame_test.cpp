@@ -74,5 +74,22 @@ TEST(CoordinateFrame, PresetClearsTheOtherTransformations) {
     EXPECT_DOUBLE_EQ(w[Axis::Y], 8.0);
 }
 
+TEST(CoordinateFrame, PointShiftOfCycle12ActsFirstAndOutlivesAPreset) {
+    CoordinateFrame f;
+    f.setRotation(90.0, false, Plane::XY);
+    f.setPointShift(xyz(10.0, 0.0, -5.0));
+    // (0, 0, 2) + point (10, 0, -5) = (10, 0, -3), then rotated by 90 degrees: (0, 10, -3).
+    Pose w = f.toWorkpiece(xyz(0.0, 0.0, 2.0));
+    EXPECT_NEAR(w[Axis::X], 0.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Y], 10.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Z], -3.0, 1e-12);
+    Pose back = f.toProgram(w);
+    EXPECT_NEAR(back[Axis::X], 0.0, 1e-12);
+    EXPECT_NEAR(back[Axis::Z], 2.0, 1e-12);
+    EXPECT_FALSE(f.identity());
+    f.setPreset(Pose{});  // cycle 247 inside the called program keeps the point's shift
+    EXPECT_DOUBLE_EQ(f.toWorkpiece(xyz(1.0, 0.0, 0.0))[Axis::X], 11.0);
+}
+
 }  // namespace
 }  // namespace kerf::cycles
