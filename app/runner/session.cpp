@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "core/interp/fagor/fagor_interpreter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
 
@@ -68,6 +69,23 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
             return session;
         }
         session->tools = std::move(*tools);
+    }
+    if (session->dialect == program::Dialect::Fagor) {
+        // The FAGOR tables live in the NC root (docs/fagor.md, "Tables").
+        fagor::FagorSettings settings;
+        settings.machine = &session->machine;
+        settings.ncRoot = ncRoot;
+        settings.toolOffsetFile = ncRoot / "fagor_tool_offsets.tab";
+        settings.zeroOffsetFile = ncRoot / "fagor_zero_offsets.tab";
+        settings.toolFile = ncRoot / "fagor_tools.tab";
+        settings.blockSkip = options.blockSkip ? 1 : 0;
+        auto interpreter =
+            std::make_unique<fagor::FagorInterpreter>(session->sources, std::move(settings));
+        session->ready = interpreter->load(
+            programPath, backgroundCheck ? fagor::FagorInterpreter::CheckMode::Background
+                                         : fagor::FagorInterpreter::CheckMode::Inline);
+        session->interpreter = std::move(interpreter);
+        return session;
     }
     if (session->dialect != program::Dialect::Klartext) {
         session->diagnostics.push_back(

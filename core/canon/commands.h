@@ -39,6 +39,8 @@ struct SpindleSyncedMove {
     Pose target;
     double leadMmPerRev = 0.0;
     double startAngleDeg = 0.0;
+    // Variable pitch (Fagor G34): the lead grows by this much per spindle revolution.
+    double leadChangeMmPerRev = 0.0;
 };
 
 struct Dwell {
@@ -70,6 +72,12 @@ struct ToolGeometry {
     double lengthMm = 0.0;
     double radiusMm = 0.0;
     double radius2Mm = 0.0;
+    // Lathe offsets (Fagor D): the vector from the holder reference to the theoretical tip along
+    // X (radius) and Z, wear included, and the tip location code 0-9 (-1: not a lathe offset).
+    double tipXMm = 0.0;
+    double tipZMm = 0.0;
+    int offsetNumber = 0;
+    int locationCode = -1;
     friend bool operator==(const ToolGeometry&, const ToolGeometry&) = default;
 };
 
@@ -144,6 +152,21 @@ struct DiameterMode {
     bool xInDiameter = false;
 };
 
+// Where the axes retract when a thread (Fagor G33) is stopped: incremental distances per axis
+// (lathe X as a radius); no axes = no retraction.
+struct ThreadRetraction {
+    Pose distance;
+    AxisMask axes = 0;
+};
+
+// Operator controls a program switches off for a while (Fagor ESBLK, DSTOP, DFHOLD): blocks run
+// as one in single-block mode, the stop key and the feed hold input are ignored.
+struct ControlLocks {
+    bool joinBlocks = false;
+    bool stopDisabled = false;
+    bool feedHoldDisabled = false;
+};
+
 // Contour tolerance for corner blending (TNC cycle 32, Fagor G51); 0 restores the machine default.
 struct PathTolerance {
     double toleranceMm = 0.0;
@@ -153,7 +176,7 @@ using CommandBody =
     std::variant<RapidMove, LinearMove, ArcMove, SpindleSyncedMove, Dwell, SpindleControl,
                  SpindleOrient, CoolantControl, ToolChange, ToolUpdate, SetFeedMode, ProbeMove,
                  SyncPoint, Message, ProgramStop, MachineFunction, StockDefinition, DiameterMode,
-                 PathTolerance>;
+                 PathTolerance, ThreadRetraction, ControlLocks>;
 
 struct Command {
     SourceLocation location;

@@ -93,6 +93,14 @@ void appendGeometry(std::string& out, const ToolGeometry& g, Axis toolAxis) {
     appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);
     out += " AXIS ";
     out += axisLetter(toolAxis);
+    if (g.locationCode >= 0) {
+        out += " D";
+        appendInt(out, g.offsetNumber);
+        appendWord(out, "TIPX=", g.tipXMm, kLengthDecimals);
+        appendWord(out, "TIPZ=", g.tipZMm, kLengthDecimals);
+        out += " LOC ";
+        appendInt(out, g.locationCode);
+    }
 }
 
 struct BodyPrinter {
@@ -128,6 +136,24 @@ struct BodyPrinter {
         appendPose(out, m.target, axes);
         appendWord(out, "LEAD ", m.leadMmPerRev, kLengthDecimals);
         appendWord(out, "ANGLE ", m.startAngleDeg, kLengthDecimals);
+        if (m.leadChangeMmPerRev != 0.0) {
+            appendWord(out, "LEADCHANGE ", m.leadChangeMmPerRev, kLengthDecimals);
+        }
+    }
+    void operator()(const ThreadRetraction& m) {
+        out += "THREADRETRACT";
+        if (m.axes == 0) {
+            out += " OFF";
+        } else {
+            appendPose(out, m.distance, m.axes);
+        }
+    }
+    void operator()(const ControlLocks& m) {
+        out += "LOCKS";
+        if (!m.joinBlocks && !m.stopDisabled && !m.feedHoldDisabled) out += " NONE";
+        if (m.joinBlocks) out += " JOIN-BLOCKS";
+        if (m.stopDisabled) out += " STOP-DISABLED";
+        if (m.feedHoldDisabled) out += " FEEDHOLD-DISABLED";
     }
     void operator()(const DiameterMode& m) {
         out += m.xInDiameter ? "XMODE DIAMETER" : "XMODE RADIUS";

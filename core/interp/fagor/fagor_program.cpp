@@ -1,0 +1,295 @@
+#include "core/interp/fagor/fagor_program.h"
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "core/base/translate.h"
+#include "core/interp/fagor/block_parser.h"
+#include "core/interp/fagor/g_rules.h"
+#include "core/interp/fagor/statement_runner.h"
+#include "core/program/line_reader.h"
+
+namespace kerf::fagor {
+
+const BlockPosition* FagorProgram::findLabel(int64_t label) const {
+    if (label < 0 || label > 99999999) return nullptr;
+    auto it = std::lower_bound(labels.begin(), labels.end(), static_cast<uint32_t>(label),
+                               [](const auto& entry, uint32_t l) { return entry.first < l; });
+    return it != labels.end() && it->first == label ? &it->second : nullptr;
+}
+
+const SubroutineEntry* FagorProgram::findSubroutine(int subroutine) const {
+    auto it = std::lower_bound(subroutines.begin(), subroutines.end(), subroutine,
+                               [](const SubroutineEntry& s, int n) { return s.number < n; });
+    return it != subroutines.end() && it->number == subroutine ? &*it : nullptr;
+}
+
+int programNumberOf(const std::filesystem::path& path) {
+    std::string stem = path.stem().string();
+    if (!stem.empty() && (stem[0] == 'P' || stem[0] == 'p')) stem.erase(0, 1);
+    if (stem.empty() || stem.size() > 6) return -1;
+    int n = 0;
+    for (char c : stem) {
+        if (c < '0' || c > '9') return -1;
+        n = n * 10 + (c - '0');
+    }
+    return n;
+}
+
+namespace {
+
+struct Reference {
+    int64_t label;
+    uint32_t line;
+    uint32_t column;
+};
+
+class Checker {
+public:
+    explicit Checker(FagorProgram& p) : m_program(p), m_file(p.source->path()) {}
+
+    void run();
+
+private:
+    void diag(Severity s, const char* code, uint32_t line, uint32_t column, const char* text,
+              std::vector<std::string> args = {}) {
+        Diagnostic d = Diagnostic::make(s, code, m_file, line, column, text);
+        d.args = std::move(args);
+        m_program.diagnostics.push_back(std::move(d));
+    }
+    void header(std::string_view text, uint32_t line);
+    void iso(const ParsedBlock& block, const program::LogicalLine& line);
+    void highLevel(const StatementInfo& info, const program::LogicalLine& line,
+                   const BlockPosition& next);
+    void finish();
+
+    FagorProgram& m_program;
+    std::string m_file;
+    std::vector<Reference> m_references;
+    struct OpenSub {
+        SubroutineEntry entry;
+        uint32_t line = 0;  // of the SUB statement
+        uint32_t column = 0;
+    };
+    std::vector<OpenSub> m_openSubs;
+    bool m_warnedOrder = false;
+    bool m_flow = false;
+};
+
+void Checker::header(std::string_view text, uint32_t line) {
+    // "%comment,attributes," : the comment has at most 20 characters.
+    const size_t first = text.find(',');
+    const size_t second = first == std::string_view::npos ? first : text.find(',', first + 1);
+    if (second == std::string_view::npos) {
+        diag(Severity::Warning, "header", line, 1,
+             KERF_TR_NOOP("the header should be %comment,attributes, (two commas)"));
+    }
+    const std::string_view comment =
+        text.substr(1, first == std::string_view::npos ? text.size() - 1 : first - 1);
+    if (program::columnOf(comment, comment.size()) > 21) {
+        diag(Severity::Warning, "header", line, 2,
+             KERF_TR_NOOP("the program comment has more than 20 characters"));
+    }
+    if (first != std::string_view::npos) {
+        const std::string_view attributes =
+            text.substr(first + 1, second == std::string_view::npos ? std::string_view::npos
+                                                                    : second - first - 1);
+        m_program.oem = attributes.find('O') != std::string_view::npos;
+    }
+}
+
+void Checker::iso(const ParsedBlock& block, const program::LogicalLine& line) {
+    const IsoBlock& iso = block.iso;
+    Problem problem;
+    bool literal = true;
+    for (uint8_t i = 0; i < iso.gCount; ++i)
+        literal = literal && !iso.g[i].parameter;
+    if (literal && !checkGFunctions(iso, problem)) {
+        const bool later = problem.code == "not-supported";
+        Diagnostic d = Diagnostic::make(
+            later ? Severity::Warning : Severity::Error, problem.code, m_file, line.firstLine,
+            program::columnOf(line.text, problem.offset), problem.messageTemplate);
+        d.args = problem.args;
+        m_program.diagnostics.push_back(std::move(d));
+    }
+    if (block.outOfOrder != 0 && !m_warnedOrder) {
+        m_warnedOrder = true;
+        diag(Severity::Warning, "word-order", line.firstLine,
+             program::columnOf(line.text, block.outOfOrder),
+             KERF_TR_NOOP("words out of the order G, coordinates, F, S, T, D, M"));
+    }
+}
+
+void Checker::highLevel(const StatementInfo& info, const program::LogicalLine& line,
+                        const BlockPosition& next) {
+    for (uint8_t i = 0; i < info.labelCount; ++i) {
+        m_references.push_back(
+            {info.labels[i], line.firstLine, program::columnOf(line.text, info.labelOffsets[i])});
+    }
+    m_flow = m_flow || info.flow;
+    switch (info.kind) {
+        case StatementInfo::Kind::Sub: {
+            const int n = static_cast<int>(info.number);
+            const uint32_t column = program::columnOf(line.text, info.keywordOffset);
+            if (!m_openSubs.empty()) {
+                diag(Severity::Error, "subroutine", line.firstLine, column,
+                     KERF_TR_NOOP("subroutine {1} starts before subroutine {2} has its RET"),
+                     {std::to_string(n), std::to_string(m_openSubs.back().entry.number)});
+            }
+            if (n >= 10000 && !m_program.oem) {
+                diag(
+                    Severity::Error, "subroutine", line.firstLine, column,
+                    KERF_TR_NOOP("error 63: program subroutine numbers from 1 to 9999 (10000-20000 "
+                                 "only in OEM programs)"));
+            }
+            SubroutineEntry entry;
+            entry.number = n;
+            entry.body = next;
+            m_openSubs.push_back({entry, line.firstLine, column});
+            break;
+        }
+        case StatementInfo::Kind::Ret:
+            if (!m_openSubs.empty()) {
+                const OpenSub open = m_openSubs.back();
+                SubroutineEntry entry = open.entry;
+                m_openSubs.pop_back();
+                entry.end = next;
+                if (std::any_of(
+                        m_program.subroutines.begin(), m_program.subroutines.end(),
+                        [&](const SubroutineEntry& s) { return s.number == entry.number; })) {
+                    diag(Severity::Error, "subroutine", open.line, open.column,
+                         KERF_TR_NOOP("subroutine {1} is defined twice"),
+                         {std::to_string(entry.number)});
+                }
+                m_program.subroutines.push_back(entry);
+            }
+            break;
+        case StatementInfo::Kind::Customization:
+            diag(Severity::Warning, "not-supported", line.firstLine,
+                 program::columnOf(line.text, info.keywordOffset),
+                 KERF_TR_NOOP("{1} is a screen customisation instruction: not supported; the "
+                              "program cannot run past this block"),
+                 {std::string(info.keyword)});
+            break;
+        case StatementInfo::Kind::DncDirectory:
+            diag(Severity::Warning, "not-available", line.firstLine,
+                 program::columnOf(line.text, info.keywordOffset),
+                 KERF_TR_NOOP("programs on a PC over DNC are not available; the program cannot run "
+                              "past this block"));
+            break;
+        case StatementInfo::Kind::Other:
+            break;
+    }
+}
+
+void Checker::finish() {
+    auto& labels = m_program.labels;
+    const auto byNumber = [](const auto& a, const auto& b) { return a.first < b.first; };
+    // Numbered programs are usually in order already: no sort (and no merge buffer) then.
+    if (!std::is_sorted(labels.begin(), labels.end(), byNumber)) {
+        std::stable_sort(labels.begin(), labels.end(), byNumber);
+    }
+    int duplicates = 0;
+    for (size_t i = 1; i < labels.size(); ++i) {
+        if (labels[i].first == labels[i - 1].first && ++duplicates <= 10) {
+            diag(Severity::Warning, "label", labels[i].second.line, 1,
+                 KERF_TR_NOOP("label N{1} is used more than once; jumps go to the first one"),
+                 {std::to_string(labels[i].first)});
+        }
+    }
+    labels.erase(std::unique(labels.begin(), labels.end(),
+                             [](const auto& a, const auto& b) { return a.first == b.first; }),
+                 labels.end());
+    for (const Reference& r : m_references) {
+        if (m_program.findLabel(r.label) == nullptr) {
+            diag(Severity::Error, "label", r.line, r.column,
+                 KERF_TR_NOOP("label N{1} is not defined in this program"),
+                 {std::to_string(r.label)});
+        }
+    }
+    for (const OpenSub& open : m_openSubs) {
+        diag(Severity::Error, "subroutine", open.line, open.column,
+             KERF_TR_NOOP("subroutine {1} has no RET"), {std::to_string(open.entry.number)});
+    }
+    std::sort(
+        m_program.subroutines.begin(), m_program.subroutines.end(),
+        [](const SubroutineEntry& a, const SubroutineEntry& b) { return a.number < b.number; });
+    if (!m_flow && !m_program.keepLabels) {
+        // Only jumps need the label index; a large program without them should not keep it.
+        // Another program's RPT into this one loads it again.
+        std::vector<std::pair<uint32_t, BlockPosition>>().swap(labels);
+    }
+}
+
+void Checker::run() {
+    const std::string_view text = m_program.source->text();
+    program::LineReader reader(text);
+    program::LogicalLine line;
+    BlockParser parser(nullptr);
+    StatementRunner runner(nullptr);
+    ParsedBlock block;
+    bool first = true;
+    constexpr size_t kReleaseStep = 8u << 20;
+    constexpr size_t kWindow = 16u << 20;
+    size_t released = 0;
+    while (reader.next(line, false)) {
+        if (m_program.followExecution) {
+            while (line.offset > kWindow &&
+                   line.offset - kWindow > m_program.executionOffset.load()) {
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
+            }
+        } else if (line.offset >= released + kReleaseStep) {
+            released = line.offset;
+            m_program.source->releaseBefore(released);
+        }
+        const bool firstLine = first;
+        first = false;
+        if (!parser.parse(line.text, firstLine, block)) {
+            const Problem& p = parser.problem();
+            diag(Severity::Error, p.code.c_str(), line.firstLine,
+                 program::columnOf(line.text, p.offset), p.messageTemplate.c_str(), p.args);
+            continue;
+        }
+        if (block.label >= 0) {
+            m_program.labels.push_back(
+                {static_cast<uint32_t>(block.label), BlockPosition{line.offset, line.firstLine}});
+        }
+        switch (block.kind) {
+            case ParsedBlock::Kind::Header:
+                header(line.text, line.firstLine);
+                break;
+            case ParsedBlock::Kind::Iso:
+                iso(block, line);
+                break;
+            case ParsedBlock::Kind::HighLevel:
+                if (!runner.run(line.text, block.highLevelOffset,
+                                block.highLevelOffset + block.highLevel.size(), block.repetition)) {
+                    const Problem& p = runner.problem();
+                    diag(Severity::Error, p.code.c_str(), line.firstLine,
+                         program::columnOf(line.text, p.offset), p.messageTemplate.c_str(), p.args);
+                } else {
+                    highLevel(runner.info(), line, BlockPosition{line.nextOffset, reader.line()});
+                }
+                break;
+            default:
+                break;
+        }
+        if (block.endOfFile) {
+            m_program.end = line.nextOffset;
+            break;
+        }
+    }
+    finish();
+}
+
+}  // namespace
+
+void checkProgram(FagorProgram& program) {
+    program.diagnostics.clear();
+    program.labels.clear();
+    program.subroutines.clear();
+    Checker(program).run();
+}
+
+}  // namespace kerf::fagor

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/base/diagnostic.h"
+#include "core/program/source_text.h"
+
+namespace kerf::fagor {
+
+// Where a block starts.
+struct BlockPosition {
+    size_t offset = 0;
+    uint32_t line = 0;
+};
+
+struct SubroutineEntry {
+    int number = 0;
+    BlockPosition body;  // the block after (SUB n)
+    BlockPosition end;   // the block after (RET)
+};
+
+// A loaded FAGOR program with its label and subroutine index, built by the program check.
+struct FagorProgram {
+    std::shared_ptr<const program::SourceText> source;
+    uint32_t fileId = 0;
+    std::filesystem::path path;
+    int number = -1;          // from the file name (P012345.PIM, 012345): -1 if it has none
+    bool oem = false;         // the header's attributes contain O
+    bool keepLabels = false;  // keep the label index even without jumps (RPT P, GPOS from others)
+    size_t end = SIZE_MAX;    // an end-of-file character stops the text here
+    std::vector<std::pair<uint32_t, BlockPosition>> labels;  // sorted; first occurrence only
+    std::vector<SubroutineEntry> subroutines;                // sorted by number
+    DiagnosticList diagnostics;                              // errors mean the program cannot run
+
+    // For a check running alongside execution (see FagorInterpreter::CheckMode).
+    std::atomic<size_t> executionOffset{SIZE_MAX};
+    bool followExecution = false;
+
+    const BlockPosition* findLabel(int64_t label) const;
+    const SubroutineEntry* findSubroutine(int subroutine) const;
+};
+
+// Checks every block's syntax and the static rules, indexes labels (a duplicate label warns: the
+// first one is used) and subroutines, and reports jumps to labels that do not exist,
+// subroutines without RET or defined twice, and (as warnings) what this release does not run.
+void checkProgram(FagorProgram& program);
+
+// The program number a file name gives ("P012345.PIM", "12345", "p7.pit"), or -1.
+int programNumberOf(const std::filesystem::path& path);
+
+}  // namespace kerf::fagor

@@ -1,0 +1,64 @@
+#include "core/interp/fagor/parameters.h"
+
+#include <string>
+
+#include "core/base/translate.h"
+
+namespace kerf::fagor {
+
+template <typename Self>
+auto Parameters::slotOf(Self& self, int number, Problem& problem) -> decltype(&self.m_globals[0]) {
+    auto fail = [&](const char* text) -> decltype(&self.m_globals[0]) {
+        problem.code = "parameter";
+        problem.messageTemplate = text;
+        problem.args = {std::to_string(number)};
+        return nullptr;
+    };
+    if (number >= 0 && number <= 25) {
+        if (!self.m_localsAllowed) {
+            return fail(
+                KERF_TR_NOOP("P{1}: an interrupt subroutine may only use global parameters"));
+        }
+        return &self.m_locals[static_cast<size_t>(self.m_level)][static_cast<size_t>(number)];
+    }
+    if (number >= 100 && number <= 299) return &self.m_globals[static_cast<size_t>(number - 100)];
+    if (number >= 1000 && number <= 1255) {
+        return &self.m_manufacturer[static_cast<size_t>(number - 1000)];
+    }
+    if (number >= 2000 && number <= 2255) {
+        if (!self.m_oemAllowed) {
+            return fail(
+                KERF_TR_NOOP("P{1}: OEM parameters are only for programs with the O attribute"));
+        }
+        return &self.m_oem[static_cast<size_t>(number - 2000)];
+    }
+    return fail(KERF_TR_NOOP("P{1} does not exist (P0-P25, P100-P299, P1000-P1255, P2000-P2255)"));
+}
+
+bool Parameters::get(int number, double& out, Problem& problem) const {
+    const double* p = slotOf(*this, number, problem);
+    if (p == nullptr) return false;
+    out = *p;
+    return true;
+}
+
+bool Parameters::set(int number, double value, Problem& problem) {
+    double* p = slotOf(*this, number, problem);
+    if (p == nullptr) return false;
+    *p = value;
+    return true;
+}
+
+bool Parameters::pushLocalLevel(const LocalAssignments& locals) {
+    if (m_level >= kMaxLocalLevels) return false;
+    ++m_level;
+    m_locals[static_cast<size_t>(m_level)] = locals.values;
+    m_defined[static_cast<size_t>(m_level)] = locals.defined;
+    return true;
+}
+
+void Parameters::popLocalLevel() {
+    if (m_level > 0) --m_level;
+}
+
+}  // namespace kerf::fagor

@@ -1,0 +1,273 @@
+// Interpreter features a golden case cannot reach: files a program writes, interrupts, the M06
+// subroutine, machine parameters other than the defaults, tables saved at the end. Expected
+// values come from spec parts 1 and 2 and hand geometry.
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/canon/trace_format.h"
+#include "core/interp/fagor/fagor_interpreter.h"
+#include "core/machine/machine_loader.h"
+
+namespace kerf::fagor {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Recorder final : public canon::Sink {
+public:
+    void consume(const canon::Command& c) override {
+        std::string line;
+        canon::TraceFormat format;
+        format.axes = axisBit(Axis::X) | axisBit(Axis::Z);
+        canon::appendCommand(line, c, format);
+        lines.push_back(line);
+    }
+    std::vector<std::string> lines;
+};
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class FagorRun : public testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        root = fs::temp_directory_path() /
+               ("kerf_fagor_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(root);
+        fs::create_directories(root);
+        auto loaded = machine::loadMachine("lathe");
+        ASSERT_TRUE(static_cast<bool>(loaded));
+        lathe = std::move(*loaded);
+        settings.machine = &lathe;
+        settings.ncRoot = root;
+        settings.toolOffsetFile = root / "fagor_tool_offsets.tab";
+        settings.zeroOffsetFile = root / "fagor_zero_offsets.tab";
+        settings.toolFile = root / "fagor_tools.tab";
+    }
+    void TearDown() override { fs::remove_all(root); }
+
+    void write(const std::string& name, const std::string& text) {
+        std::ofstream(root / name, std::ios::binary) << text;
+    }
+
+    // Runs program.pim one block at a time; `beforeBlock(n)` is called before block n (0-based).
+    interp::RunStatus run(const std::string& text,
+                          const std::function<void(FagorInterpreter&, int)>& beforeBlock = {}) {
+        write("program.pim", text);
+        interpreter = std::make_unique<FagorInterpreter>(sources, settings);
+        if (!interpreter->load(root / "program.pim")) return interp::RunStatus::Failed;
+        interp::RunStatus status = interp::RunStatus::BudgetUsed;
+        for (int block = 0; block < 100000; ++block) {
+            if (beforeBlock) beforeBlock(*interpreter, block);
+            status = interpreter->run(out, 1);
+            if (status == interp::RunStatus::NeedsSync) {
+                interp::WorldSnapshot world;
+                world.position = interpreter->nominalPosition();
+                interpreter->resume(world);
+            } else if (status != interp::RunStatus::BudgetUsed) {
+                break;
+            }
+        }
+        return status;
+    }
+
+    std::string diagnostics() const {
+        std::string text;
+        for (const Diagnostic& d : interpreter->diagnostics())
+            text += d.format() + "\n";
+        return text;
+    }
+
+    fs::path root;
+    machine::MachineConfig lathe;
+    FagorSettings settings;
+    program::SourceRegistry sources;
+    std::unique_ptr<FagorInterpreter> interpreter;
+    Recorder out;
+};
+
+TEST_F(FagorRun, WriteSubstitutesLikeTheManual) {
+    // Spec part 2 EX-12.11: ISO text always substituted, high-level text only after '?'.
+    const auto status =
+        run("(P100=10, P101=20, P102=55, P103=222, P104=25)\n"
+            "(OPEN P123, \"GENERATED\")\n"
+            "(WRITE G1 XP100 ZP101 F100)\n"
+            "(WRITE (SUB P102))\n"
+            "(WRITE (SUB ?P102))\n"
+            "(WRITE (ORGX54=P103))\n"
+            "(WRITE (ORGX54=?P103))\n"
+            "(WRITE (PCALL P104))\n"
+            "(WRITE (PCALL ?P104))\n"
+            "M30\n");
+    ASSERT_EQ(status, interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(readFile(root / "P000123.PIM"),
+              "%GENERATED,,\n"
+              "G1 X10 Z20 F100\n"
+              "(SUB P102)\n"
+              "(SUB 55)\n"
+              "(ORGX54=P103)\n"
+              "(ORGX54=222)\n"
+              "(PCALL P104)\n"
+              "(PCALL 25)\n");
+}
+
+TEST_F(FagorRun, OpenAppendsOrReplacesAnExistingProgram) {
+    // Spec part 2 §6.7: A appends, D starts anew, neither is an error when the program exists.
+    write("P000007.PIM", "%OLD,,\nG0 X1\n");
+    ASSERT_EQ(run("(OPEN P7, A)\n(WRITE G0 X2)\nM30\n"), interp::RunStatus::Finished)
+        << diagnostics();
+    EXPECT_EQ(readFile(root / "P000007.PIM"), "%OLD,,\nG0 X1\nG0 X2\n");
+    ASSERT_EQ(run("(OPEN P7, D)\n(WRITE G0 X3)\nM30\n"), interp::RunStatus::Finished)
+        << diagnostics();
+    EXPECT_EQ(readFile(root / "P000007.PIM"), "%,,\nG0 X3\n");
+    EXPECT_EQ(run("(OPEN P7)\nM30\n"), interp::RunStatus::Failed);
+}
+
+TEST_F(FagorRun, InterruptSubroutineAndRepos) {
+    // INT1SUB = 50: the subroutine runs before the next block, only with global parameters;
+    // REPOS X, Z brings the plane axes back together to where the program was interrupted.
+    settings.interruptSubroutines[0] = 50;
+    const auto status =
+        run("G152 G0 X10 Z0\n"
+            "G1 Z-20 F100\n"
+            "G1 X20\n"
+            "M30\n"
+            "(SUB 50)\n"
+            "G0 X40\n"
+            "(REPOS X, Z)\n"
+            "(RET)\n",
+            [](FagorInterpreter& in, int block) {
+                if (block == 2) in.raiseInterrupt(1);
+            });
+    ASSERT_EQ(status, interp::RunStatus::Finished) << diagnostics();
+    const std::vector<std::string> expected{"1:1 XMODE RADIUS",
+                                            "1:1 RAPID X10.0000 Z0.0000",
+                                            "2:1 LINE X10.0000 Z-20.0000 F100.000",
+                                            "6:1 RAPID X40.0000 Z-20.0000",
+                                            "7:1 RAPID X10.0000 Z-20.0000",
+                                            "3:1 LINE X20.0000 Z-20.0000 F100.000",
+                                            "4:1 END M30"};
+    EXPECT_EQ(out.lines, expected);
+}
+
+TEST_F(FagorRun, ReposOutsideAnInterruptIsAnError) {
+    EXPECT_EQ(run("(CALL 5)\nM30\n(SUB 5)\n(REPOS X)\n(RET)\n"), interp::RunStatus::Failed);
+    EXPECT_NE(diagnostics().find("REPOS is only allowed in an interrupt subroutine"),
+              std::string::npos);
+}
+
+TEST_F(FagorRun, ToolChangeSubroutineSeesNbtool) {
+    // Spec part 2 EX-11.7 with TOFFM06: T5 preselects, M06 runs its subroutine, in which NBTOOL
+    // is the tool asked for; the change happens when the subroutine ends (M06 after it).
+    settings.toolChangeByM06 = true;
+    for (MFunctionEntry& m : settings.mFunctions) {
+        if (m.number == 6) m.subroutine = 60;
+    }
+    write("fagor_tool_offsets.tab", "D5 X3 Z4 F3 R0.8\n");
+    const auto status =
+        run("T1 D1\n"
+            "M06\n"
+            "T5\n"
+            "M06\n"
+            "M30\n"
+            "(SUB 60)\n"
+            "(P103 = NBTOOL)\n"
+            "(MSG \"SELECIONAR T?P103 E PRESSIONAR SOFTKEY MARCHA\")\n"
+            "(RET)\n");
+    ASSERT_EQ(status, interp::RunStatus::Finished) << diagnostics();
+    const std::vector<std::string> expected{
+        "8:1 MSG INFO \"SELECIONAR T1 E PRESSIONAR SOFTKEY MARCHA\"",
+        "2:1 TOOL T1 L=0.0000 R=0.0000 R2=0.0000 AXIS Z D1 TIPX=0.0000 TIPZ=0.0000 LOC 0",
+        "8:1 MSG INFO \"SELECIONAR T5 E PRESSIONAR SOFTKEY MARCHA\"",
+        "4:1 TOOL T5 L=0.0000 R=0.8000 R2=0.0000 AXIS Z D5 TIPX=3.0000 TIPZ=4.0000 LOC 3",
+        "5:1 END M30"};
+    EXPECT_EQ(out.lines, expected);
+}
+
+TEST_F(FagorRun, CompModeTwoIntersectsOutsideCorners) {
+    // E29's outside corner at (Z40 X35 radius) with COMPMODE 2: the offset lines meet at
+    // X = 36, Z = 40 + (36 - 35) * tan(56.31 / 2) = 40.5352 (centre), tip (F3) one lower/left.
+    settings.compMode = 2;
+    write("fagor_tool_offsets.tab", "D1 X0 Z0 F3 R1\n");
+    ASSERT_EQ(run("T1 D1\nG0 G90 X110 Z100\nG1 G42 X10 Z60 F100\nX70 Z40\nX70 Z20\n"
+                  "G40 G0 X110 Z100\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    ASSERT_GE(out.lines.size(), 5u);
+    EXPECT_EQ(out.lines[3], "4:1 LINE X35.0000 Z39.5352 F100.000");
+    EXPECT_EQ(out.lines[4], "5:1 LINE X35.0000 Z19.0000 F100.000");
+}
+
+TEST_F(FagorRun, CompModeOneJoinsOutsideCornersWithArcs) {
+    // The same corner with COMPMODE 1: an arc of radius 1 about the corner, from the end
+    // normal of X70 Z40 to the start normal of X70 Z20 (the centre path), turning 56.31 deg.
+    // The tip is the centre path moved by (-1, -1), the arc's centre too.
+    settings.compMode = 1;
+    write("fagor_tool_offsets.tab", "D1 X0 Z0 F3 R1\n");
+    ASSERT_EQ(run("T1 D1\nG0 G90 X110 Z100\nG1 G42 X10 Z60 F100\nX70 Z40\nX70 Z20\n"
+                  "G40 G0 X110 Z100\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    ASSERT_GE(out.lines.size(), 6u);
+    EXPECT_EQ(out.lines[3], "4:1 LINE X34.5547 Z39.8321 F100.000");
+    EXPECT_EQ(out.lines[4],
+              "5:1 ARC X35.0000 Z39.0000 CENTER Z39.0000 X34.0000 PLANE ZX SWEEP 56.3099 F100.000");
+}
+
+TEST_F(FagorRun, TablesAreSavedWhenTheProgramChangesThem) {
+    write("fagor_tool_offsets.tab", "; offsets\nD1 X1 Z2 F3 R0.4\n");
+    write("fagor_zero_offsets.tab", "G54 X0 Z100\n");
+    ASSERT_EQ(run("(TOX1 = 1.5, TOF1 = 5)\n(ORGZ 55 = 240)\nG55\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    // Only the fields written change; comments stay; the selection is kept for the next run.
+    EXPECT_EQ(readFile(root / "fagor_tool_offsets.tab"), "; offsets\nD1 X1.5 Z2 F5 R0.4\n");
+    EXPECT_EQ(readFile(root / "fagor_zero_offsets.tab"), "G54 X0 Z100\nG55 Z240\nACTIVE G55\n");
+}
+
+TEST_F(FagorRun, ActiveZeroOffsetOfTheTableIsTheStreamFrame) {
+    // The offset active at the start is the stream's frame: X10 Z0 is (X5, Z0) in the stream
+    // even though G54 is Z100 in machine coordinates; G55 (Z240) is 140 further.
+    write("fagor_zero_offsets.tab", "G54 X0 Z100\nG55 X0 Z240\nACTIVE G54\n");
+    ASSERT_EQ(run("G0 X10 Z0\nG55\nG0 X10 Z0\nM30\n"), interp::RunStatus::Finished)
+        << diagnostics();
+    const std::vector<std::string> expected{"1:1 RAPID X5.0000 Z0.0000",
+                                            "3:1 RAPID X5.0000 Z140.0000", "4:1 END M30"};
+    EXPECT_EQ(out.lines, expected);
+}
+
+TEST_F(FagorRun, BlockSkipFollowsTheFirstPlcMark) {
+    settings.blockSkip = 1;
+    ASSERT_EQ(run("G152 G0 X1\n/ G0 X2\n/1 G0 X3\n/2 G0 X4\nM30\n"), interp::RunStatus::Finished)
+        << diagnostics();
+    const std::vector<std::string> expected{"1:1 XMODE RADIUS", "1:1 RAPID X1.0000 Z0.0000",
+                                            "4:1 RAPID X4.0000 Z0.0000", "5:1 END M30"};
+    EXPECT_EQ(out.lines, expected);
+}
+
+TEST_F(FagorRun, BackgroundCheckFailureIsReported) {
+    // With the check in a second thread, an error at the end still marks the run as failed.
+    write("program.pim", "G0 X10\nG0 X20\n(GOTO N99)\nM30\n");
+    FagorInterpreter in(sources, settings);
+    in.load(root / "program.pim", FagorInterpreter::CheckMode::Background);
+    interp::RunStatus status = interp::RunStatus::BudgetUsed;
+    while (status == interp::RunStatus::BudgetUsed)
+        status = in.run(out, 100);
+    EXPECT_EQ(status, interp::RunStatus::Failed);
+    EXPECT_TRUE(in.checkFailed());
+}
+
+}  // namespace
+}  // namespace kerf::fagor
