@@ -56,11 +56,23 @@ PathGeometry makeTangentArc(const AxisVector& from, const Vec3Array& tangent,
 // The same geometry with [s0, s1] of the original mapped onto [0, s1 - s0].
 PathGeometry trimmed(const PathGeometry& g, double s0, double s1) noexcept;
 
+// Distance from an XYZ point to the element's XYZ path over s in [s0, s1] (exact for lines and
+// circles; for helices the distance of a point found by Newton steps from the planar angle, never
+// less than the true distance).
+double distanceTo(const PathGeometry& g, const Vec3Array& p, double s0, double s1) noexcept;
+
+// Range of cos(phi - psi) for phi in [from, to] (from <= to).
+struct CosRange {
+    double lo = 0.0;
+    double hi = 0.0;
+};
+CosRange cosRange(double from, double to, double psi) noexcept;
+
 // Largest |component| over the element (bounds; exact for lines):
 struct AxisBounds {
-    AxisVector tangent{};       // |dp_i/ds|
-    AxisVector curvature{};     // |d2p_i/ds2|
-    AxisVector curvatureRate{}; // |d3p_i/ds3|
+    AxisVector tangent{};        // |dp_i/ds|
+    AxisVector curvature{};      // |d2p_i/ds2|
+    AxisVector curvatureRate{};  // |d3p_i/ds3|
 };
 AxisBounds axisBounds(const PathGeometry& g) noexcept;
 

@@ -4,15 +4,10 @@
 
 namespace kerf::motion {
 
-namespace {
-
-// The real root of x^3 + p x + q = 0 for p >= 0 (then there is exactly one).
-double cubicRoot(double p, double q) noexcept {
+double realCubicRoot(double p, double q) noexcept {
     double disc = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
     return std::cbrt(-q / 2.0 + disc) + std::cbrt(-q / 2.0 - disc);
 }
-
-}  // namespace
 
 double brakingEnvelope(double distance, double anchorVelocity, const Limits& limits) noexcept {
     if (distance <= 0.0) return anchorVelocity;
@@ -22,7 +17,7 @@ double brakingEnvelope(double distance, double anchorVelocity, const Limits& lim
     double rampDistance = anchorVelocity * rampTime + j * rampTime * rampTime * rampTime / 6.0;
     if (distance <= rampDistance) {
         // Backwards from the anchor: d = v tau + j tau^3 / 6, v = v_anchor + j tau^2 / 2.
-        double tau = cubicRoot(6.0 * anchorVelocity / j, -6.0 * distance / j);
+        double tau = realCubicRoot(6.0 * anchorVelocity / j, -6.0 * distance / j);
         return anchorVelocity + j * tau * tau / 2.0;
     }
     double rampVelocity = anchorVelocity + a * a / (2.0 * j);
@@ -39,7 +34,7 @@ double maxRestingVelocity(double distance, double anchorVelocity, const Limits& 
     double distanceFull = (2.0 * anchorVelocity + dvFull) * a / j;
     double dv = 0.0;
     if (distance <= distanceFull) {
-        double x = cubicRoot(2.0 * anchorVelocity, -distance * std::sqrt(j));
+        double x = realCubicRoot(2.0 * anchorVelocity, -distance * std::sqrt(j));
         dv = x * x;
     } else {
         // dv^2 / a + dv (a / j + 2 v / a) + 2 v a / j - 2 d = 0

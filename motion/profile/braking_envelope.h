@@ -14,6 +14,9 @@ double brakingEnvelope(double distance, double anchorVelocity, const Limits& lim
 // Highest velocity with a = 0 from which (anchorVelocity, a = 0) is met within `distance`.
 double maxRestingVelocity(double distance, double anchorVelocity, const Limits& limits) noexcept;
 
+// The real root of x^3 + p x + q = 0 for p >= 0 (there is exactly one).
+double realCubicRoot(double p, double q) noexcept;
+
 // Distance to brake from (velocity, a = 0) to (0, a = 0): the look-ahead window's length.
 double stoppingDistance(double velocity, const Limits& limits) noexcept;
 

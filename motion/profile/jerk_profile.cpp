@@ -24,7 +24,8 @@ void Profile::append(double duration, double jerk) noexcept {
 
 double Profile::duration() const noexcept {
     double total = 0.0;
-    for (int i = 0; i < count; ++i) total += phases[static_cast<size_t>(i)].duration;
+    for (int i = 0; i < count; ++i)
+        total += phases[static_cast<size_t>(i)].duration;
     return total;
 }
 
@@ -45,7 +46,27 @@ MotionState Profile::at(double t) const noexcept {
     return x;
 }
 
-MotionState Profile::end() const noexcept { return at(duration()); }
+MotionState Profile::end() const noexcept {
+    return at(duration());
+}
+
+Profile Profile::then(double t, const Profile& next) const noexcept {
+    Profile out;
+    out.start = start;
+    double left = t;
+    for (int i = 0; i < count && left > 0.0; ++i) {
+        const Phase& p = phases[static_cast<size_t>(i)];
+        double step = std::min(left, p.duration);
+        out.append(step, p.jerk);
+        left -= step;
+    }
+    if (left > 0.0) out.append(left, 0.0);  // cruising
+    for (int i = 0; i < next.count; ++i) {
+        out.append(next.phases[static_cast<size_t>(i)].duration,
+                   next.phases[static_cast<size_t>(i)].jerk);
+    }
+    return out;
+}
 
 double velocityAfterRampDown(const MotionState& state, double jerk) noexcept {
     return state.v + state.a * std::fabs(state.a) / (2.0 * jerk);

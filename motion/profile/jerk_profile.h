@@ -25,7 +25,7 @@ struct Profile {
         double jerk = 0.0;
     };
     MotionState start;
-    std::array<Phase, 5> phases{};
+    std::array<Phase, 8> phases{};
     int count = 0;
 
     double duration() const noexcept;
@@ -34,6 +34,8 @@ struct Profile {
     // State at the end of the phases.
     MotionState end() const noexcept;
     void append(double duration, double jerk) noexcept;
+    // The first `t` seconds of this profile followed by `next` (which starts where they end).
+    Profile then(double t, const Profile& next) const noexcept;
 };
 
 // Velocity reached if the acceleration is brought to zero at once (with full jerk).

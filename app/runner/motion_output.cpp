@@ -1,0 +1,197 @@
+#include "app/runner/motion_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/runner/session.h"
+#include "motion/kinematics/machine_model.h"
+#include "motion/planner/planner.h"
+#include "motion/sim/simulated_machine.h"
+
+namespace kerf::app {
+
+namespace {
+
+// Commands held back for the soft-limit check before they move. A longer program starts moving
+// after this many (memory stays bounded; the rest is still checked before it moves).
+constexpr size_t kMaxHeldCommands = 200'000;
+
+double clean(double value) {
+    const double rounded = std::round(value * 1e6) / 1e6;
+    return rounded == 0.0 ? 0.0 : rounded;
+}
+
+motion::MotionOptions motionOptions(const RunOptions& options) {
+    motion::MotionOptions motion;
+    if (options.workOffset) {
+        if (auto offset = parseWorkOffset(*options.workOffset)) motion.workOffset = offset->values;
+    }
+    return motion;
+}
+
+}  // namespace
+
+std::optional<Pose> parseWorkOffset(const std::string& text) {
+    Pose offset;
+    size_t at = 0;
+    while (at < text.size()) {
+        const size_t end = std::min(text.find(',', at), text.size());
+        const std::string item = text.substr(at, end - at);
+        const auto axis = item.empty() ? std::nullopt : axisFromLetter(item[0]);
+        if (!axis || item.size() < 2) return std::nullopt;
+        size_t used = 0;
+        try {
+            offset[*axis] = std::stod(item.substr(1), &used);
+        } catch (const std::exception&) {
+            return std::nullopt;
+        }
+        if (used != item.size() - 1 || !std::isfinite(offset[*axis])) return std::nullopt;
+        at = end + 1;
+    }
+    if (text.empty() || text.back() == ',') return std::nullopt;
+    return offset;
+}
+
+struct MotionOutput::State final : canon::Sink {
+    State(const RunOptions& runOptions, const Session& s)
+        : options(runOptions),
+          session(s),
+          model(motion::makeMachineModel(s.machine, motionOptions(runOptions))),
+          checker(model) {}
+
+    void consume(const canon::Command& command) override {
+        if (refusedAt) return;
+        if (checker.needsPosition()) checker.setPosition(checker.position());
+        if (!checker.add(command)) {
+            refusedAt = command.location;
+            return;
+        }
+        while (checker.next()) {
+        }
+        held.push_back(command);
+        if (held.size() >= kMaxHeldCommands) release();
+    }
+
+    // The held commands go to the simulated machine: they move.
+    void release() {
+        if (!machine) return;
+        for (const canon::Command& command : held)
+            machine->consume(command);
+        held.clear();
+    }
+
+    std::string fileOf(uint32_t fileId) const {
+        return fileId < session.sources.size() ? session.sources.path(fileId)
+                                               : options.program.string();
+    }
+
+    const RunOptions& options;
+    const Session& session;
+    motion::MachineModel model;
+    motion::Planner checker;  // soft limits and the planner's rules, before anything moves
+    std::unique_ptr<motion::SimulatedMachine> machine;
+    std::vector<canon::Command> held;
+    std::optional<SourceLocation> refusedAt;
+    std::optional<motion::MotionReport> report;
+};
+
+MotionOutput::MotionOutput(const RunOptions& options, const Session& session) {
+    if (options.motion || options.samples) m_state = std::make_unique<State>(options, session);
+}
+
+MotionOutput::~MotionOutput() = default;
+
+canon::Sink& MotionOutput::sink() {
+    return *m_state;
+}
+
+void MotionOutput::setStart(const Pose& start) {
+    if (!m_state) return;
+    State& s = *m_state;
+    motion::SimulationOptions simulation;
+    simulation.motion = motionOptions(s.options);
+    simulation.startPosition = start.values;
+    if (s.options.samples) simulation.samplesCsvPath = s.options.samples->string();
+    s.machine = std::make_unique<motion::SimulatedMachine>(s.session.machine, simulation);
+    s.checker.setPosition(start.values);
+}
+
+bool MotionOutput::refused() const {
+    return m_state && m_state->refusedAt.has_value();
+}
+
+interp::WorldSnapshot MotionOutput::drain() {
+    interp::WorldSnapshot world;
+    if (!m_state || !m_state->machine) return world;
+    State& s = *m_state;
+    if (s.refusedAt) {
+        world.position.values = s.checker.position();
+        return world;
+    }
+    s.release();
+    world = s.machine->drain();
+    // Plan on from where the machine is (after a probe move: where the probe stopped).
+    s.checker.flush();
+    while (s.checker.next()) {
+    }
+    s.checker.setPosition(world.position.values);
+    return world;
+}
+
+void MotionOutput::finish(bool programRan, DiagnosticList& problems) {
+    if (!m_state || !m_state->machine) return;
+    State& s = *m_state;
+    if (s.refusedAt) {
+        for (Diagnostic d : s.checker.diagnostics()) {
+            d.file = s.fileOf(s.refusedAt->fileId);
+            problems.push_back(std::move(d));
+        }
+    } else if (programRan) {
+        s.release();
+        s.machine->drain();
+    }
+    s.held.clear();
+    s.report = s.machine->report();
+    for (Diagnostic d : s.report->diagnostics) {
+        if (d.file.empty()) d.file = s.options.program.string();
+        problems.push_back(std::move(d));
+    }
+}
+
+void MotionOutput::addToReport(nlohmann::json& report, bool xInDiameter) const {
+    if (!m_state || !m_state->report) return;
+    const State& s = *m_state;
+    const motion::MotionReport& r = *s.report;
+    nlohmann::json motion;
+    motion["refused"] = s.refusedAt.has_value() || r.refused;
+    motion["duration_s"] = clean(r.durationS);
+    motion["feed_time_s"] = clean(r.feedTimeS);
+    motion["max_path_deviation_mm"] = clean(r.maxPathDeviationMm);
+    motion["max_following_error_mm"] = clean(r.maxFollowingErrorMm);
+    motion["servo_cycles"] = r.cycles;
+    motion["moves"] = r.programmedMoves;
+    nlohmann::json axes = nlohmann::json::object();
+    for (const motion::AxisReport& axis : r.axes) {
+        axes[std::string(1, axis.letter)] = {{"max_velocity", clean(axis.maxVelocity)},
+                                             {"max_accel", clean(axis.maxAccel)},
+                                             {"max_jerk", clean(axis.maxJerk)}};
+    }
+    motion["axes"] = axes;
+    nlohmann::json position = nlohmann::json::object();
+    for (char letter : s.session.machine.enabledAxisLetters()) {
+        const auto axis = axisFromLetter(letter);
+        if (!axis) continue;
+        double value = r.finalPosition[static_cast<size_t>(axisIndex(*axis))];
+        if (letter == 'X' && xInDiameter) value *= 2.0;
+        position[std::string(1, letter)] = clean(value);
+    }
+    motion["final_position"] = position;
+    if (s.options.samples) motion["samples"] = s.options.samples->string();
+    report["motion"] = motion;
+}
+
+}  // namespace kerf::app

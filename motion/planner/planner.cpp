@@ -1,0 +1,405 @@
+#include "motion/planner/planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/base/fixed_format.h"
+#include "core/geometry/arc_math.h"
+#include "core/geometry/plane.h"
+#include "motion/planner/corner_blend.h"
+#include "motion/planner/soft_limits.h"
+
+namespace kerf::motion {
+
+namespace {
+
+constexpr double kMaxBlendAngle = 175.0 * kPi / 180.0;
+
+AxisVector toAxes(const Pose& pose) {
+    return pose.values;
+}
+
+bool movesOnlyXyz(const PathGeometry& g) {
+    for (size_t i = 3; i < g.rate.size(); ++i) {
+        if (std::fabs(g.rate[i]) > 1e-12) return false;
+    }
+    return true;
+}
+
+std::string blockName(const SourceLocation& source) {
+    if (source.blockNumber >= 0) return std::to_string(source.blockNumber);
+    return "line " + std::to_string(source.line);
+}
+
+Diagnostic makeDiagnostic(const SourceLocation& source, std::string code, std::string text,
+                          std::vector<std::string> args) {
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.code = std::move(code);
+    d.messageTemplate = std::move(text);
+    d.args = std::move(args);
+    d.line = source.line;
+    d.column = source.column;
+    return d;
+}
+
+std::string mm(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f", value);
+    return buffer;
+}
+
+}  // namespace
+
+Planner::Planner(const MachineModel& model)
+    : m_model(model), m_lookahead(model), m_tolerance(model.toleranceMm) {}
+
+void Planner::setPosition(const AxisVector& tip) {
+    m_position = tip;
+    m_needsPosition = false;
+}
+
+void Planner::reset(const AxisVector& tip) {
+    m_lookahead.clear();
+    m_pending.reset();
+    m_synchronised = false;
+    m_refused = false;
+    setPosition(tip);
+}
+
+double Planner::pendingLength() const {
+    double pending = m_pending ? m_pending->geometry.length - m_pending->trimStart : 0.0;
+    return m_lookahead.pendingLength() + pending;
+}
+
+std::optional<MotionItem> Planner::next() {
+    MotionItem item;
+    if (m_lookahead.pop(item)) return item;
+    return std::nullopt;
+}
+
+void Planner::flush() {
+    exactStop();
+    m_lookahead.close();
+}
+
+void Planner::refuse(Diagnostic diagnostic) {
+    m_diagnostics.push_back(std::move(diagnostic));
+    m_refused = true;
+    flush();
+}
+
+bool Planner::acceptGeometry(const PathGeometry& geometry, const SourceLocation& source) {
+    auto violation = checkSoftLimits(m_model, geometry, m_toolLength);
+    if (!violation) return true;
+    std::string axis(1, axisLetter(static_cast<Axis>(violation->axis)));
+    if (violation->missingAxis) {
+        refuse(makeDiagnostic(source, "motion.missing-axis",
+                              KERF_TR_NOOP("Block {1}: the machine has no axis {2}."),
+                              {blockName(source), axis}));
+    } else {
+        refuse(makeDiagnostic(
+            source, "motion.soft-limit",
+            KERF_TR_NOOP("Block {1}: the move would take axis {2} to {3} (machine coordinates), "
+                         "beyond its soft limit {4}; the program is not run past this block."),
+            {blockName(source), axis, mm(violation->reached), mm(violation->limit)}));
+    }
+    return false;
+}
+
+std::optional<Planner::Move> Planner::feedMove(const AxisVector& target, double feed,
+                                               const SourceLocation& source) {
+    Move move;
+    move.geometry = makeLine(m_position, target);
+    move.feedMove = true;
+    if (m_feedMode == canon::FeedMode::PerRevolution) {
+        if (m_spindleRpm <= 0.0 || m_spindleDirection == canon::SpindleDirection::Stopped) {
+            refuse(makeDiagnostic(source, "motion.feed-per-rev-spindle-stopped",
+                                  KERF_TR_NOOP("Block {1}: feed per revolution with the spindle "
+                                               "stopped."),
+                                  {blockName(source)}));
+            return std::nullopt;
+        }
+        move.feedKind = FeedKind::PerRevolution;
+        move.feed = feed;
+    } else {
+        move.feedKind = FeedKind::PerMinute;
+        move.feed = std::min(feed / 60.0, m_model.maxFeed);
+    }
+    if (move.feed <= 0.0) {
+        refuse(makeDiagnostic(source, "motion.no-feed",
+                              KERF_TR_NOOP("Block {1}: feed move without a feed rate."),
+                              {blockName(source)}));
+        return std::nullopt;
+    }
+    return move;
+}
+
+bool Planner::add(const canon::Command& command) {
+    if (m_refused) return false;
+    const SourceLocation& source = command.location;
+    const canon::CommandBody& body = command.body;
+    if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) {
+        endSynchronisation(source);
+        Move move;
+        move.geometry = makeLine(m_position, toAxes(rapid->target));
+        move.feedKind = FeedKind::Rapid;
+        move.feed = m_model.rapidVelocity;
+        addMove(move, toAxes(rapid->target), source);
+    } else if (const auto* line = std::get_if<canon::LinearMove>(&body)) {
+        endSynchronisation(source);
+        if (auto move = feedMove(toAxes(line->target), line->feed, source)) {
+            addMove(*move, toAxes(line->target), source);
+        }
+    } else if (const auto* arc = std::get_if<canon::ArcMove>(&body)) {
+        endSynchronisation(source);
+        auto move = feedMove(toAxes(arc->target), arc->feed, source);
+        if (!move) return false;
+        PlaneAxes axes = planeAxes(arc->plane);
+        AxisVector to = toAxes(arc->target);
+        move->geometry =
+            makeHelix(m_position, to, {arc->center.x(), arc->center.y(), arc->center.z()},
+                      axes.first, axes.second, axes.normal, arc->sweepRad);
+        // The interpreter rounds end points: close a small gap linearly, refuse a real one.
+        AxisVector end = positionAt(move->geometry, move->geometry.length);
+        double gap = 0.0;
+        for (size_t i = 0; i < end.size(); ++i)
+            gap = std::max(gap, std::fabs(to[i] - end[i]));
+        if (gap > 1e-3 + 1e-6 * move->geometry.radius) {
+            refuse(makeDiagnostic(source, "motion.arc-end",
+                                  KERF_TR_NOOP("Block {1}: the arc's end point is {2} mm off its "
+                                               "circle."),
+                                  {blockName(source), mm(gap)}));
+            return false;
+        }
+        if (move->geometry.length > 0.0) {
+            for (size_t i = 0; i < end.size(); ++i) {
+                move->geometry.rate[i] += (to[i] - end[i]) / move->geometry.length;
+            }
+        }
+        addMove(*move, to, source);
+    } else if (const auto* synced = std::get_if<canon::SpindleSyncedMove>(&body)) {
+        if (synced->leadChangeMmPerRev != 0.0) {
+            // The servo cycle locks the spindle angle to the path with one lead per element.
+            refuse(makeDiagnostic(source, "motion.variable-lead",
+                                  KERF_TR_NOOP("Block {1}: threads with a variable lead (G34) "
+                                               "cannot be executed yet."),
+                                  {blockName(source)}));
+            return false;
+        }
+        AxisVector to = toAxes(synced->target);
+        double lead = std::fabs(synced->leadMmPerRev);
+        if (lead <= 0.0 || m_spindleRpm <= 0.0) {
+            refuse(makeDiagnostic(source, "motion.sync-no-speed",
+                                  KERF_TR_NOOP("Block {1}: spindle-synchronised move without a "
+                                               "lead or a spindle speed."),
+                                  {blockName(source)}));
+            return false;
+        }
+        Move move;
+        move.geometry = makeLine(m_position, to);
+        if (move.geometry.length <= 0.0) return true;
+        move.feedKind = FeedKind::SpindleSynced;
+        move.feed = lead;
+        move.feedMove = true;
+        Vec3Array direction{move.geometry.rate[0], move.geometry.rate[1], move.geometry.rate[2]};
+        double handed = synced->leadMmPerRev < 0.0 ? -1.0 : 1.0;
+        double turning =
+            m_spindleDirection == canon::SpindleDirection::CounterClockwise ? -1.0 : 1.0;
+        if (!m_synchronised) {
+            m_syncSign = handed * turning;
+            Action start;
+            start.kind = ActionKind::SyncStart;
+            start.value = synced->startAngleDeg;
+            emitAction(start, source);
+            m_synchronised = true;
+        } else {
+            double along = direction[0] * m_syncDirection[0] + direction[1] * m_syncDirection[1] +
+                           direction[2] * m_syncDirection[2];
+            // The thread is a helix: moving back along it turns the spindle back.
+            if (along < 0.0) m_syncSign = -m_syncSign;
+            if (along < 1.0 - 1e-9) exactStop();
+        }
+        m_syncDirection = direction;
+        move.spindleDegPerUnit = m_syncSign * 360.0 / lead;
+        addMove(move, to, source);
+    } else if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) {
+        endSynchronisation(source);
+        auto move = feedMove(toAxes(probe->target), probe->feed, source);
+        if (!move) return false;
+        move->probe = true;
+        exactStop();
+        addMove(*move, toAxes(probe->target), source);
+        exactStop();
+        m_needsPosition = true;
+    } else if (const auto* dwell = std::get_if<canon::Dwell>(&body)) {
+        emitAction({ActionKind::Dwell, std::max(0.0, dwell->seconds), 0.0, 0.0, 0}, source);
+    } else if (const auto* spindle = std::get_if<canon::SpindleControl>(&body)) {
+        endSynchronisation(source);
+        m_spindleDirection = spindle->direction;
+        m_spindleRpm = spindle->speedRpm;
+        int direction = spindle->direction == canon::SpindleDirection::Clockwise          ? 1
+                        : spindle->direction == canon::SpindleDirection::CounterClockwise ? -1
+                                                                                          : 0;
+        emitAction({ActionKind::Spindle, spindle->speedRpm, spindle->maxRpm,
+                    spindle->surfaceSpeedMPerMin, direction},
+                   source);
+    } else if (const auto* orient = std::get_if<canon::SpindleOrient>(&body)) {
+        endSynchronisation(source);
+        emitAction({ActionKind::SpindleOrient, orient->angleDeg, 0.0, 0.0, 0}, source);
+    } else if (const auto* coolant = std::get_if<canon::CoolantControl>(&body)) {
+        int bits = (coolant->flood ? 1 : 0) | (coolant->mist ? 2 : 0);
+        emitAction({ActionKind::Coolant, 0.0, 0.0, 0.0, bits}, source);
+    } else if (const auto* tool = std::get_if<canon::ToolChange>(&body)) {
+        endSynchronisation(source);
+        double length = tool->geometry.lengthMm;
+        // The joints stay where they are: the tip moves by the change of length.
+        m_position[static_cast<size_t>(m_model.toolAxis)] += m_toolLength - length;
+        m_toolLength = length;
+        emitAction({ActionKind::ToolChange, length, 0.0, static_cast<double>(tool->number),
+                    m_model.toolAxis},
+                   source);
+    } else if (const auto* update = std::get_if<canon::ToolUpdate>(&body)) {
+        double length = update->geometry.lengthMm;
+        m_position[static_cast<size_t>(m_model.toolAxis)] += m_toolLength - length;
+        m_toolLength = length;
+        emitAction({ActionKind::ToolChange, length, 0.0, -1.0, m_model.toolAxis}, source);
+    } else if (const auto* mode = std::get_if<canon::SetFeedMode>(&body)) {
+        m_feedMode = mode->mode;
+    } else if (const auto* sync = std::get_if<canon::SyncPoint>(&body)) {
+        emitAction({ActionKind::SyncPoint, 0.0, 0.0, 0.0, static_cast<int32_t>(sync->reason)},
+                   source);
+    } else if (const auto* stop = std::get_if<canon::ProgramStop>(&body)) {
+        if (stop->kind == canon::StopKind::End) endSynchronisation(source);
+        emitAction({ActionKind::ProgramStop, 0.0, 0.0, 0.0, static_cast<int32_t>(stop->kind)},
+                   source);
+    } else if (const auto* function = std::get_if<canon::MachineFunction>(&body)) {
+        emitAction({ActionKind::MachineFunction, 0.0, 0.0, 0.0, function->number}, source);
+    } else if (const auto* tolerance = std::get_if<canon::PathTolerance>(&body)) {
+        m_tolerance = tolerance->toleranceMm > 0.0 ? tolerance->toleranceMm : m_model.toleranceMm;
+    }
+    return !m_refused;
+}
+
+void Planner::addMove(Move move, const AxisVector& target, const SourceLocation& source) {
+    move.source = source;
+    move.tolerance = m_tolerance;
+    if (move.geometry.length <= 1e-9) {
+        m_position = target;
+        return;
+    }
+    if (!acceptGeometry(move.geometry, source)) return;
+    move.index = ++m_moveCount;
+    m_lastMoveGeometry = move.geometry;
+    move.blendable = !move.probe && move.feedKind != FeedKind::SpindleSynced &&
+                     movesOnlyXyz(move.geometry) && !m_exactStop;
+    if (m_pending) cornerTo(move);
+    m_pending = move;
+    m_position = target;
+}
+
+void Planner::cornerTo(Move& move) {
+    Move& before = *m_pending;
+    double theta = cornerAngle(before.geometry, move.geometry);
+    bool sameRegime = before.feedKind == move.feedKind;
+    if (theta < 1e-9 && sameRegime && !m_exactStop) {
+        emitPending(0.0);
+        return;
+    }
+    if (!before.blendable || !move.blendable || !sameRegime || theta > kMaxBlendAngle ||
+        move.tolerance <= 0.0) {
+        exactStop();
+        return;
+    }
+    // Half the tolerance for the blend, the other half for the servo filter's contour error.
+    double deviation = move.tolerance / 2.0;
+    double maxBefore =
+        std::min(before.geometry.length / 2.0, before.geometry.length - before.trimStart);
+    CornerBlend blend = blendCorner(before.geometry, move.geometry, deviation, maxBefore,
+                                    move.geometry.length / 2.0);
+    // A sliver left between two blends would only add curvature steps: take it into the blend.
+    double rest = before.geometry.length - before.trimStart - blend.trimBefore;
+    if (blend.arcCount > 0 && rest > 0.0 && rest < 0.1 * before.geometry.length) {
+        CornerBlend whole =
+            blendCornerFrom(before.geometry, move.geometry, deviation,
+                            before.geometry.length - before.trimStart, blend.trimAfter);
+        if (whole.arcCount > 0) blend = whole;
+    }
+    if (blend.arcCount == 0) {
+        exactStop();
+        return;
+    }
+    emitPending(blend.trimBefore);
+    Move corner = move;
+    corner.feed = std::min(before.feed, move.feed);
+    corner.feedMove = before.feedMove || move.feedMove;
+    for (int i = 0; i < blend.arcCount; ++i) {
+        emitElement(corner, blend.arcs[static_cast<size_t>(i)], move.tolerance - blend.deviation,
+                    false);
+    }
+    move.trimStart = blend.trimAfter;
+}
+
+void Planner::emitPending(double trimEnd) {
+    if (!m_pending) return;
+    const Move& move = *m_pending;
+    double end = move.geometry.length - trimEnd;
+    if (end - move.trimStart > 1e-9) {
+        emitElement(move, trimmed(move.geometry, move.trimStart, end), move.tolerance, true);
+    }
+    m_pending.reset();
+}
+
+void Planner::emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
+                          bool blockEnd) {
+    MotionItem item;
+    item.kind = MotionItem::Kind::Element;
+    item.sequence = ++m_sequence;
+    item.source = move.source;
+    PathElement& e = item.element;
+    e.geometry = geometry;
+    e.sStart = m_pathS;
+    e.feed = move.feed;
+    e.feedKind = move.feedKind;
+    e.feedMove = move.feedMove;
+    e.probe = move.probe;
+    e.blockEnd = blockEnd;
+    e.spindleDegPerUnit = move.spindleDegPerUnit;
+    e.moveIndex = move.index;
+    e.source = move.source;
+    if (move.feedKind == FeedKind::SpindleSynced) {
+        double lead = move.feed;
+        e.capVelocity = lead * m_model.spindleMaxRpm / 60.0;
+        e.limits = {m_model.options.spindleAccelRevPerS2 * lead,
+                    m_model.options.spindleJerkRevPerS3 * lead};
+    } else if (move.feedKind != FeedKind::Rapid) {
+        e.capVelocity = m_model.maxFeed;
+    }
+    m_pathS += geometry.length;
+    m_lookahead.push(item, contourBudget);
+}
+
+void Planner::exactStop() {
+    emitPending(0.0);
+    m_lookahead.stopHere();
+}
+
+void Planner::emitAction(const Action& action, const SourceLocation& source) {
+    // Every action happens with the axes at rest.
+    exactStop();
+    MotionItem item;
+    item.kind = MotionItem::Kind::Action;
+    item.sequence = ++m_sequence;
+    item.action = action;
+    item.source = source;
+    m_lookahead.push(item);
+}
+
+void Planner::endSynchronisation(const SourceLocation& source) {
+    if (!m_synchronised) return;
+    m_synchronised = false;
+    emitAction({ActionKind::SyncEnd, 0.0, 0.0, 0.0, 0}, source);
+}
+
+}  // namespace kerf::motion

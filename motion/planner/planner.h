@@ -1,0 +1,106 @@
+#pragma once
+
+#include <optional>
+
+#include "core/base/diagnostic.h"
+#include "core/canon/commands.h"
+#include "motion/kinematics/machine_model.h"
+#include "motion/planner/lookahead.h"
+#include "motion/port/motion_item.h"
+
+// The motion planner: turns the canonical command stream into path elements and actions for the
+// servo cycle. It blends corners within the path tolerance (TNC cycle 32 T, Fagor G51 E; machine
+// default otherwise), keeps tangent joins at speed, stops exactly where the program or the machine
+// needs it (stops, tool change, sync points, dwell, spindle and M functions, probing, reversals,
+// spindle-synchronised moves), checks soft limits before it accepts a move, and holds back only
+// as much path as the braking distance needs. Planner (task) thread only.
+namespace kerf::motion {
+
+class Planner {
+public:
+    explicit Planner(const MachineModel& model);
+
+    // Where the tool tip is (workpiece coordinates) before the next move: at start, after a probe
+    // move or after an abort.
+    void setPosition(const AxisVector& tip);
+    const AxisVector& position() const { return m_position; }
+
+    // Forgets everything planned and not yet taken (after a quick stop or an emergency stop);
+    // the next move starts at `tip`.
+    void reset(const AxisVector& tip);
+
+    // Adds one command. False when it is refused (diagnostics() says why, naming the block);
+    // after a refusal every further command is ignored.
+    bool add(const canon::Command& command);
+    // The stream pauses here (end, sync point, drain): the motion stops after what was added.
+    void flush();
+    // Next planned item, or nothing until more of the stream is known.
+    std::optional<MotionItem> next();
+
+    bool refused() const { return m_refused; }
+    // True after a probe move: the next move starts where the probe stopped (setPosition).
+    bool needsPosition() const { return m_needsPosition; }
+    const DiagnosticList& diagnostics() const { return m_diagnostics; }
+    double toolLength() const { return m_toolLength; }
+    // Path length held back in the look-ahead window.
+    double pendingLength() const;
+
+    // Programmed moves accepted so far, and the geometry of the last one (unblended): for
+    // measuring the path deviation of the executed motion.
+    uint32_t acceptedMoves() const { return m_moveCount; }
+    const PathGeometry& lastMoveGeometry() const { return m_lastMoveGeometry; }
+
+    // Exact stop after every block (Fagor G07). Not in the canonical stream yet: set by the task.
+    void setExactStopMode(bool on) { m_exactStop = on; }
+
+private:
+    struct Move {
+        PathGeometry geometry;
+        double trimStart = 0.0;
+        FeedKind feedKind = FeedKind::PerMinute;
+        double feed = 0.0;
+        bool feedMove = false;
+        bool probe = false;
+        bool blendable = false;
+        double spindleDegPerUnit = 0.0;
+        double tolerance = 0.0;
+        uint32_t index = 0;
+        SourceLocation source;
+    };
+
+    void addMove(Move move, const AxisVector& target, const SourceLocation& source);
+    bool acceptGeometry(const PathGeometry& geometry, const SourceLocation& source);
+    void emitPending(double trimEnd);
+    void cornerTo(Move& move);
+    void emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
+                     bool blockEnd);
+    void exactStop();
+    void emitAction(const Action& action, const SourceLocation& source);
+    void endSynchronisation(const SourceLocation& source);
+    void refuse(Diagnostic diagnostic);
+    std::optional<Move> feedMove(const AxisVector& target, double feed,
+                                 const SourceLocation& source);
+
+    const MachineModel& m_model;
+    Lookahead m_lookahead;
+    AxisVector m_position{};
+    double m_pathS = 0.0;
+    uint64_t m_sequence = 0;
+    std::optional<Move> m_pending;
+    double m_tolerance = 0.0;
+    double m_toolLength = 0.0;
+    canon::FeedMode m_feedMode = canon::FeedMode::PerMinute;
+    canon::SpindleDirection m_spindleDirection = canon::SpindleDirection::Stopped;
+    double m_spindleRpm = 0.0;
+    bool m_synchronised = false;
+    Vec3Array m_syncDirection{};
+    double m_syncSign = 1.0;
+    bool m_exactStop = false;
+    uint32_t m_moveCount = 0;
+    PathGeometry m_lastMoveGeometry;
+    bool m_refused = false;
+    bool m_needsPosition = false;
+    DiagnosticList m_diagnostics;
+};
+
+}  // namespace kerf::motion

@@ -1,0 +1,676 @@
+#include "motion/rt/servo_cycle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf::motion {
+
+namespace {
+
+constexpr double kFarVelocity = 1e11;
+constexpr size_t kSingleBlockScan = 8;
+constexpr size_t kLookItems = 8;
+
+}  // namespace
+
+ServoCycle::ServoCycle(const MachineModel& model, DriveBus& bus, ItemRing& items,
+                       CommandRing& commands, EventRing& events)
+    : m_model(model),
+      m_bus(bus),
+      m_items(items),
+      m_commands(commands),
+      m_events(events),
+      m_dt(model.periodS) {
+    m_spindle.configure(model);
+}
+
+void ServoCycle::start() noexcept {
+    readFeedback();
+    AxisVector tip = actualTip();
+    m_interpolated = tip;
+    m_setpoint = tip;
+    m_spindleSetpoint = m_model.spindleJoint >= 0
+                            ? m_feedback[static_cast<size_t>(m_model.spindleJoint)].position
+                            : 0.0;
+    m_filter.reset(m_model.filterTaps, tip);
+    m_spindleFilter.reset(m_model.filterTaps, {m_spindleSetpoint});
+    m_spindle.reset(m_spindleSetpoint);
+    if (m_model.options.startHomed) {
+        m_status.homedMask = static_cast<uint16_t>((1u << m_model.jointCount) - 1u);
+    }
+    m_bus.request(DriveRequest::Enable);
+    m_mode = MotionMode::Idle;
+}
+
+void ServoCycle::noteTiming(bool late, double cpuS) noexcept {
+    if (late) ++m_status.lateCycles;
+    m_status.maxCycleCpuS = std::max(m_status.maxCycleCpuS, cpuS);
+}
+
+AxisVector ServoCycle::actualTip() const noexcept {
+    AxisVector tip = m_setpoint;
+    for (int j = 0; j < m_model.jointCount; ++j) {
+        int axis = m_model.jointAxis[static_cast<size_t>(j)];
+        if (axis < 0) continue;
+        tip[static_cast<size_t>(axis)] =
+            axisFromJoint(m_model, axis, m_feedback[static_cast<size_t>(j)].position, m_toolLength);
+    }
+    return tip;
+}
+
+Limits ServoCycle::axisLimits(int axis) const noexcept {
+    const AxisModel& a = m_model.axes[static_cast<size_t>(axis)];
+    return {a.accel, a.jerk};
+}
+
+void ServoCycle::emit(MotionEventKind kind, int joint, double value,
+                      const AxisVector& position) noexcept {
+    MotionEvent event;
+    event.kind = kind;
+    event.joint = joint;
+    event.value = value;
+    event.timeS = m_status.timeS;
+    event.position = position;
+    event.sequence = m_status.itemSequence;
+    event.source = m_status.source;
+    m_events.push(event);
+}
+
+void ServoCycle::readFeedback() noexcept {
+    std::span<JointFeedback> feedback(m_feedback.data(), static_cast<size_t>(m_model.jointCount));
+    BusResult result = m_bus.read(feedback);
+    if (result == BusResult::Error && m_mode != MotionMode::Fault) {
+        emit(MotionEventKind::Error, -1, static_cast<double>(MotionError::BusError), m_setpoint);
+        abortProgram();
+        m_mode = MotionMode::Fault;
+    }
+}
+
+double ServoCycle::liveFeed(FeedKind kind, double feed) const noexcept {
+    switch (kind) {
+        case FeedKind::Rapid:
+            return feed * m_rapidOverride;
+        case FeedKind::PerMinute:
+            return feed * m_feedOverride;
+        case FeedKind::PerRevolution:
+            return feed * std::fabs(m_spindle.rpm()) / 60.0 * m_feedOverride;
+        case FeedKind::SpindleSynced:
+            return feed * m_spindle.commandedRpm() / 60.0;
+    }
+    return 0.0;
+}
+
+void ServoCycle::abortProgram() noexcept {
+    m_items.clear();
+    m_hold = m_stopping = m_waitingStart = false;
+    m_elementEntered = m_actionStarted = false;
+    m_onFeedMove = false;
+    if (m_probeArmed) m_bus.armProbe(false);
+    m_probeArmed = false;
+    m_gen.reset(0.0);
+    m_spindle.unlock();
+}
+
+void ServoCycle::handle(const OperatorCommand& command) noexcept {
+    switch (command.kind) {
+        case OperatorCommandKind::CycleStart:
+            m_hold = false;
+            m_waitingStart = false;
+            if (m_mode == MotionMode::Hold || m_mode == MotionMode::Stopped)
+                m_mode = MotionMode::Program;
+            break;
+        case OperatorCommandKind::FeedHold:
+            if (m_mode == MotionMode::Program) m_hold = true;
+            break;
+        case OperatorCommandKind::QuickStop:
+            if (m_mode == MotionMode::Program || m_mode == MotionMode::Hold ||
+                m_mode == MotionMode::Stopped) {
+                m_stopping = true;
+                m_mode = MotionMode::Stopping;
+            } else if (m_mode == MotionMode::Jog) {
+                m_mover.stop();
+            }
+            break;
+        case OperatorCommandKind::EmergencyStop:
+            m_bus.request(DriveRequest::QuickStop);
+            abortProgram();
+            m_mover = JointMover{};
+            m_homingPhase = HomingPhase::Off;
+            m_mode = MotionMode::EmergencyStop;
+            emit(MotionEventKind::Aborted, -1, 0.0, m_setpoint);
+            break;
+        case OperatorCommandKind::Reset:
+            if (m_mode == MotionMode::EmergencyStop || m_mode == MotionMode::Fault) {
+                m_bus.request(DriveRequest::FaultReset);
+                m_bus.request(DriveRequest::Enable);
+                m_mode = MotionMode::Idle;
+            }
+            break;
+        case OperatorCommandKind::FeedOverride:
+            m_feedOverride = std::clamp(command.value, 0.0, m_model.options.maxFeedOverride);
+            break;
+        case OperatorCommandKind::RapidOverride:
+            m_rapidOverride = std::clamp(command.value, 0.0, 1.0);
+            break;
+        case OperatorCommandKind::SpindleOverride:
+            m_spindle.setOverride(std::clamp(command.value, 0.0, 1.5));
+            m_status.spindleOverride = std::clamp(command.value, 0.0, 1.5);
+            break;
+        case OperatorCommandKind::SingleBlock:
+            m_singleBlock = command.flag;
+            break;
+        case OperatorCommandKind::OptionalStop:
+            m_optionalStop = command.flag;
+            break;
+        case OperatorCommandKind::JogContinuous:
+        case OperatorCommandKind::JogIncrement:
+        case OperatorCommandKind::Handwheel: {
+            if (m_mode != MotionMode::Idle && m_mode != MotionMode::Jog) break;
+            int joint = command.joint;
+            if (joint < 0 || joint >= m_model.jointCount) break;
+            int axis = m_model.jointAxis[static_cast<size_t>(joint)];
+            if (axis < 0) break;
+            const AxisModel& a = m_model.axes[static_cast<size_t>(axis)];
+            bool homed = (m_status.homedMask >> joint) & 1u;
+            double lo = homed ? axisFromJoint(m_model, axis, a.minLimit, m_toolLength) : -1e9;
+            double hi = homed ? axisFromJoint(m_model, axis, a.maxLimit, m_toolLength) : 1e9;
+            double position = m_interpolated[static_cast<size_t>(axis)];
+            if (m_mover.active() && m_mover.axis() != axis) break;
+            if (command.kind == OperatorCommandKind::JogContinuous) {
+                double velocity = std::clamp(command.value, -a.velocity, a.velocity);
+                m_mover.jog(axis, position, velocity, lo, hi);
+            } else {
+                double base = command.kind == OperatorCommandKind::Handwheel && m_mover.active()
+                                  ? m_mover.target()
+                                  : position;
+                double target = base + command.value;
+                if (target < lo || target > hi) {
+                    emit(MotionEventKind::Error, joint, static_cast<double>(MotionError::SoftLimit),
+                         m_setpoint);
+                    target = std::clamp(target, lo, hi);
+                }
+                double velocity =
+                    command.kind == OperatorCommandKind::JogIncrement && command.value2 > 0.0
+                        ? std::min(command.value2, a.velocity)
+                        : a.velocity * m_model.options.jogVelocityFraction;
+                if (command.kind == OperatorCommandKind::Handwheel && m_mover.active()) {
+                    m_mover.moveTarget(target);
+                } else {
+                    m_mover.moveTo(axis, position, target, velocity);
+                }
+            }
+            m_mode = MotionMode::Jog;
+            break;
+        }
+        case OperatorCommandKind::JogStop:
+            if (m_mover.active()) m_mover.stop();
+            break;
+        case OperatorCommandKind::Home:
+            if (m_mode != MotionMode::Idle) break;
+            m_homingOnly = command.joint;
+            m_homingJoint = command.joint >= 0 ? command.joint : 0;
+            m_homingPhase = HomingPhase::LeaveSwitch;
+            m_mode = MotionMode::Homing;
+            break;
+    }
+}
+
+void ServoCycle::processCommands() noexcept {
+    while (!m_commands.empty()) {
+        handle(m_commands.front());
+        m_commands.pop();
+    }
+}
+
+void ServoCycle::followFeedback() noexcept {
+    m_interpolated = actualTip();
+    if (m_model.spindleJoint >= 0) {
+        m_spindleSetpoint = m_feedback[static_cast<size_t>(m_model.spindleJoint)].position;
+    }
+    m_filter.reset(m_model.filterTaps, m_interpolated);
+    m_spindleFilter.reset(m_model.filterTaps, {m_spindleSetpoint});
+    m_spindle.reset(m_spindleSetpoint);
+    m_setpoint = m_interpolated;
+}
+
+void ServoCycle::enterElement(const PathElement& e) noexcept {
+    m_elementEntered = true;
+    // After a probe stop or an abort the path continues from where the machine stands.
+    if (m_gen.atRest() && std::fabs(m_gen.state().s - e.sStart) > 1e-9) m_gen.reset(e.sStart);
+    m_onFeedMove = e.feedMove;
+    if (e.feedKind == FeedKind::SpindleSynced) m_syncAngleStart = m_spindle.angle();
+    if (e.probe && !m_probeArmed) {
+        m_bus.armProbe(true);
+        m_probeArmed = true;
+        m_probeTriggered = false;
+    }
+}
+
+size_t ServoCycle::collectConstraints(size_t first, std::span<Constraint> out) const noexcept {
+    const MotionItem& current = m_items.peek(first);
+    const PathElement& e = current.element;
+    size_t count = 0;
+    // The binding point of this element, and of the next ones this period may reach.
+    const MotionState& x = m_gen.state();
+    double reach = x.s + (std::fabs(x.v) + e.limits.accel * m_dt) * m_dt * 2.0 + 1e-9;
+    double lastBind = -1.0;
+    size_t end = std::min(m_items.size(), first + kLookItems);
+    for (size_t i = first; i < end; ++i) {
+        const MotionItem& item = m_items.peek(i);
+        if (item.kind != MotionItem::Kind::Element) break;
+        const PathElement& p = item.element;
+        if (i > first && p.sStart > reach) break;
+        if (p.bindVelocity < kFarVelocity && p.bindS != lastBind && p.bindS >= x.s) {
+            out[count++] = {p.bindS,
+                            std::min(p.bindVelocity, liveFeed(p.bindFeedKind, p.bindFeed))};
+            lastBind = p.bindS;
+        }
+    }
+    const MotionItem& last = m_items.peek(m_items.size() - 1);
+    if (last.kind == MotionItem::Kind::Element) out[count++] = {last.element.sEnd(), 0.0};
+    if (m_singleBlock && m_singleBlockS >= 0.0) out[count++] = {m_singleBlockS, 0.0};
+    return count;
+}
+
+void ServoCycle::chooseSingleBlockStop() noexcept {
+    if (!m_singleBlock) {
+        m_singleBlockS = -1.0;
+        return;
+    }
+    if (m_singleBlockS >= 0.0) return;  // keep braking for the one chosen
+    size_t scan = std::min(m_items.size(), kSingleBlockScan);
+    for (size_t i = 0; i < scan; ++i) {
+        const MotionItem& item = m_items.peek(i);
+        if (item.kind != MotionItem::Kind::Element) return;
+        if (!item.element.blockEnd || item.sequence == m_singleBlockDone) continue;
+        // The first block end the motion can still stop at.
+        if (canMeet(m_gen.state(), {item.element.sEnd(), 0.0}, item.element.limits)) {
+            m_singleBlockS = item.element.sEnd();
+            return;
+        }
+    }
+}
+
+void ServoCycle::stepPath() noexcept {
+    chooseSingleBlockStop();
+    // Within one period the interpolator may pass several elements; it re-plans with the next
+    // element's limits and constraints where it passes a binding point.
+    double remaining = m_dt;
+    size_t index = 0;
+    std::array<Constraint, kLookItems + 2> constraints{};
+    for (int piece = 0; piece < 4 && remaining > 0.0; ++piece) {
+        const PathElement& e = m_items.peek(index).element;
+        size_t count = collectConstraints(index, constraints);
+        double target = std::min(e.capVelocity, liveFeed(e.feedKind, e.feed));
+        if (m_hold || m_stopping || m_probeTriggered) target = 0.0;
+        Profile plan = m_gen.plan(remaining, target, e.limits, {constraints.data(), count});
+        MotionState end = plan.at(remaining);
+        bool nextElement =
+            index + 1 < m_items.size() && m_items.peek(index + 1).kind == MotionItem::Kind::Element;
+        bool anchor = e.bindS <= e.sEnd() + 1e-12;
+        if (end.s >= e.sEnd() - 1e-9 && std::fabs(end.v) < 1e-6) {
+            // Came to rest at the end (a stop): the next period decides how to go on.
+            m_gen.setState({e.sEnd(), 0.0, 0.0});
+            break;
+        }
+        if (end.s <= e.sEnd() || !nextElement || !anchor) {
+            m_gen.setState(end);
+            break;
+        }
+        double lo = 0.0;
+        double hi = remaining;
+        for (int k = 0; k < 48; ++k) {
+            double mid = (lo + hi) / 2.0;
+            if (plan.at(mid).s < e.sEnd())
+                lo = mid;
+            else
+                hi = mid;
+        }
+        MotionState at = plan.at(hi);
+        at.s = e.sEnd();
+        m_gen.setState(at);
+        remaining -= hi;
+        ++index;
+    }
+    if (m_gen.state().v < 0.0 && m_gen.state().v > -1e-9)
+        m_gen.setState({m_gen.state().s, 0.0, m_gen.state().a});
+}
+
+bool ServoCycle::runAction(const MotionItem& item) noexcept {
+    const Action& a = item.action;
+    bool first = !m_actionStarted;
+    m_actionStarted = true;
+    m_status.itemSequence = item.sequence;
+    m_status.source = item.source;
+    switch (a.kind) {
+        case ActionKind::Dwell:
+            if (first) m_actionTimer = 0.0;
+            m_actionTimer += m_dt;
+            return m_actionTimer >= a.value - 1e-12;
+        case ActionKind::ProgramStop:
+            if (a.number == 2) {
+                if (!filterSettled()) return false;
+                emit(MotionEventKind::ProgramEnd, -1, 0.0, actualTip());
+                return true;
+            }
+            if (a.number == 1 && !m_optionalStop) return true;
+            if (first) {
+                m_waitingStart = true;
+                m_mode = MotionMode::Stopped;
+                emit(MotionEventKind::ProgramStopped, -1, 0.0, actualTip());
+            }
+            return !m_waitingStart;
+        case ActionKind::ToolChange: {
+            if (!filterSettled()) return false;
+            double delta = m_toolLength - a.value;
+            m_toolLength = a.value;
+            // The joints stay: the tip moves by the change of length.
+            auto axis = static_cast<size_t>(m_model.toolAxis);
+            m_filter.shift(axis, delta);
+            m_interpolated[axis] += delta;
+            m_setpoint[axis] += delta;
+            return true;
+        }
+        case ActionKind::Spindle:
+            if (first) m_spindle.command(a.number, a.value, a.aux, a.value2);
+            return m_spindle.settled();
+        case ActionKind::SpindleOrient:
+            if (first) m_spindle.orient(a.value);
+            return m_spindle.settled();
+        case ActionKind::SyncStart:
+            // Axes and spindle stand still, their setpoints too: the lock starts exactly.
+            if (first) m_spindle.orient(a.value);
+            if (!m_spindle.settled() || !filterSettled() || !m_spindleFilter.settled())
+                return false;
+            m_spindle.lock();
+            return true;
+        case ActionKind::SyncEnd:
+            m_spindle.unlock();
+            return true;
+        case ActionKind::SyncPoint:
+            if (!filterSettled()) return false;
+            emit(MotionEventKind::SyncReached, -1, static_cast<double>(a.number), actualTip());
+            return true;
+        case ActionKind::Coolant:
+        case ActionKind::MachineFunction:
+            return true;
+    }
+    return true;
+}
+
+void ServoCycle::runProgram() noexcept {
+    bool stepped = false;
+    m_currentMove = 0;
+    for (int guard = 0; guard < 64; ++guard) {
+        if (m_items.empty()) {
+            m_onFeedMove = false;
+            if (m_gen.atRest() && !m_hold) m_mode = MotionMode::Idle;
+            if (m_stopping) {
+                m_stopping = false;
+                m_mode = MotionMode::Idle;
+            }
+            return;
+        }
+        const MotionItem& item = m_items.front();
+        if (item.kind == MotionItem::Kind::Action) {
+            if (m_stopping) {
+                abortProgram();
+                emit(MotionEventKind::Aborted, -1, 0.0, actualTip());
+                m_mode = MotionMode::Idle;
+                return;
+            }
+            if (!runAction(item)) return;
+            m_items.pop();
+            m_actionStarted = false;
+            continue;
+        }
+        const PathElement& e = item.element;
+        if (!m_elementEntered) enterElement(e);
+        m_currentMove = e.moveIndex;
+        m_status.itemSequence = item.sequence;
+        m_status.source = item.source;
+        if (!stepped) {
+            if (m_waitingStart) return;
+            stepPath();
+            stepped = true;
+        }
+        if (m_probeArmed && !m_probeTriggered) {
+            for (int j = 0; j < m_model.jointCount; ++j) {
+                if (!m_feedback[static_cast<size_t>(j)].probeLatched) continue;
+                AxisVector latched = actualTip();
+                for (int k = 0; k < m_model.jointCount; ++k) {
+                    int axis = m_model.jointAxis[static_cast<size_t>(k)];
+                    if (axis < 0) continue;
+                    latched[static_cast<size_t>(axis)] = axisFromJoint(
+                        m_model, axis, m_feedback[static_cast<size_t>(k)].probePosition,
+                        m_toolLength);
+                }
+                m_probeTriggered = true;
+                emit(MotionEventKind::ProbeTriggered, -1, 0.0, latched);
+                break;
+            }
+        }
+        double s = m_gen.state().s;
+        double local = std::clamp(s - e.sStart, 0.0, e.geometry.length);
+        m_interpolated = positionAt(e.geometry, local);
+        if (e.feedKind == FeedKind::SpindleSynced) {
+            m_spindle.setLockedAngle(m_syncAngleStart + e.spindleDegPerUnit * local,
+                                     e.spindleDegPerUnit * m_gen.state().v);
+        }
+        bool stopped = m_gen.atRest() && (m_hold || m_stopping || m_probeTriggered);
+        if (stopped && m_probeTriggered) {
+            // The probe move ends where the machine stopped.
+            m_bus.armProbe(false);
+            m_probeArmed = m_probeTriggered = false;
+            m_items.pop();
+            m_elementEntered = false;
+            m_gen.reset(0.0);
+            continue;
+        }
+        if (stopped && m_stopping) {
+            abortProgram();
+            emit(MotionEventKind::Aborted, -1, 0.0, actualTip());
+            m_mode = MotionMode::Idle;
+            return;
+        }
+        if (stopped && m_hold) {
+            m_mode = MotionMode::Hold;
+            return;
+        }
+        bool nextIsElement =
+            m_items.size() > 1 && m_items.peek(1).kind == MotionItem::Kind::Element;
+        // Into the next element once past this one; before a stop, once at rest at its end.
+        const MotionState& x = m_gen.state();
+        bool landed = s >= e.sEnd() - 1e-9 && std::fabs(x.v) < 1e-4 && std::fabs(x.a) < 1.0;
+        // An exact stop between two elements: the motion must come to rest at the end of this
+        // one, and the smoothed setpoints with it, before the next starts (else the filter
+        // would round the corner).
+        bool exactStop = e.bindVelocity == 0.0 && e.bindS <= e.sEnd() + 1e-12;
+        if (s < e.sEnd() && !landed) return;
+        if (exactStop && !filterSettled()) {
+            m_gen.setState({e.sEnd(), 0.0, 0.0});
+            return;
+        }
+        if (!nextIsElement) {
+            if (!landed) {
+                // Planned items ran out while moving (the planner fell behind).
+                emit(MotionEventKind::Error, -1, static_cast<double>(MotionError::QueueStarved),
+                     m_interpolated);
+            }
+            m_gen.setState({e.sEnd(), 0.0, 0.0});
+        }
+        if (e.probe && m_probeArmed) {
+            m_bus.armProbe(false);
+            m_probeArmed = false;
+            emit(MotionEventKind::ProbeMissed, -1, 0.0, actualTip());
+        }
+        if (m_singleBlock && e.blockEnd && m_gen.atRest() && item.sequence != m_singleBlockDone) {
+            m_singleBlockDone = item.sequence;
+            m_singleBlockS = -1.0;
+            m_waitingStart = true;
+            m_mode = MotionMode::Stopped;
+            emit(MotionEventKind::ProgramStopped, -1, 0.0, actualTip());
+            return;
+        }
+        m_items.pop();
+        m_elementEntered = false;
+        if (!nextIsElement) m_onFeedMove = false;
+    }
+}
+
+void ServoCycle::runManual() noexcept {
+    int axis = m_mover.axis();
+    if (axis < 0 || !m_mover.active()) {
+        m_mode = MotionMode::Idle;
+        return;
+    }
+    double position = m_interpolated[static_cast<size_t>(axis)];
+    bool moving = m_mover.update(m_dt, axisLimits(axis), position);
+    m_interpolated[static_cast<size_t>(axis)] = position;
+    if (!moving) m_mode = MotionMode::Idle;
+}
+
+void ServoCycle::runHoming() noexcept {
+    if (m_homingJoint < 0 || m_homingJoint >= m_model.jointCount) {
+        m_homingPhase = HomingPhase::Off;
+        m_mode = MotionMode::Idle;
+        return;
+    }
+    int axis = m_model.jointAxis[static_cast<size_t>(m_homingJoint)];
+    if (axis < 0) {  // the spindle needs no homing
+        m_homingJoint = m_homingOnly >= 0 ? -1 : m_homingJoint + 1;
+        return;
+    }
+    const AxisModel& a = m_model.axes[static_cast<size_t>(axis)];
+    const JointFeedback& fb = m_feedback[static_cast<size_t>(m_homingJoint)];
+    auto index = static_cast<size_t>(axis);
+    double position = m_interpolated[index];
+    double search = a.velocity * 0.05;
+    switch (m_homingPhase) {
+        case HomingPhase::Off:
+            return;
+        case HomingPhase::LeaveSwitch:
+            if (!fb.homeSwitch) {
+                m_mover.jog(axis, position, -search, -1e9, 1e9);
+                m_homingPhase = HomingPhase::Search;
+            } else if (!m_mover.active()) {
+                m_mover.jog(axis, position, search, -1e9, 1e9);
+            }
+            if (fb.homeSwitch) break;
+            return;
+        case HomingPhase::Search:
+            if (fb.homeSwitch) {
+                m_homingLatch = fb.position;
+                m_mover.stop();
+                m_homingPhase = HomingPhase::Brake;
+            }
+            break;
+        case HomingPhase::Brake:
+            if (m_mover.active()) break;
+            if (filterSettled()) {
+                // The switch position becomes the home position.
+                double joint = fb.position - m_homingLatch + a.home;
+                m_bus.setPosition(m_homingJoint, joint);
+                double shift = joint - fb.position;
+                m_filter.shift(index, shift);
+                m_interpolated[index] += shift;
+                m_setpoint[index] += shift;
+                double home = axisFromJoint(m_model, axis, a.home, m_toolLength);
+                m_mover.moveTo(axis, m_interpolated[index], home, search * 4.0);
+                m_homingPhase = HomingPhase::Return;
+            }
+            return;
+        case HomingPhase::Return:
+            if (!m_mover.active() && filterSettled()) {
+                m_status.homedMask =
+                    static_cast<uint16_t>(m_status.homedMask | (1u << m_homingJoint));
+                emit(MotionEventKind::HomingDone, m_homingJoint, 0.0, m_setpoint);
+                m_homingJoint = m_homingOnly >= 0 ? -1 : m_homingJoint + 1;
+                m_homingPhase = HomingPhase::LeaveSwitch;
+                return;
+            }
+            break;
+    }
+    position = m_interpolated[index];
+    m_mover.update(m_dt, axisLimits(axis), position);
+    m_interpolated[index] = position;
+}
+
+void ServoCycle::writeOutputs() noexcept {
+    m_spindleSetpoint = m_spindle.angle();
+    m_setpoint = m_filter.push(m_interpolated);
+    m_spindleOutput = m_spindleFilter.push({m_spindleSetpoint})[0];
+    for (int j = 0; j < m_model.jointCount; ++j) {
+        int axis = m_model.jointAxis[static_cast<size_t>(j)];
+        double value =
+            axis < 0
+                ? m_spindleOutput
+                : jointFromAxis(m_model, axis, m_setpoint[static_cast<size_t>(axis)], m_toolLength);
+        m_setpoints[static_cast<size_t>(j)].position = value;
+    }
+    m_bus.write({m_setpoints.data(), static_cast<size_t>(m_model.jointCount)});
+}
+
+void ServoCycle::cycle() noexcept {
+    ++m_status.cycle;
+    m_status.timeS += m_dt;
+    readFeedback();
+    for (int j = 0; j < m_model.jointCount; ++j) {
+        const JointFeedback& fb = m_feedback[static_cast<size_t>(j)];
+        if (fb.state == DriveState::Fault && m_mode != MotionMode::Fault &&
+            m_mode != MotionMode::EmergencyStop) {
+            emit(MotionEventKind::Fault, j, fb.faultCode, m_setpoint);
+            abortProgram();
+            m_mover = JointMover{};
+            m_homingPhase = HomingPhase::Off;
+            m_mode = MotionMode::Fault;
+        }
+    }
+    processCommands();
+    if (m_mode == MotionMode::Idle && !m_items.empty()) m_mode = MotionMode::Program;
+    if (m_mode != MotionMode::Program && m_mode != MotionMode::Hold) m_currentMove = 0;
+    switch (m_mode) {
+        case MotionMode::Program:
+        case MotionMode::Hold:
+        case MotionMode::Stopped:
+        case MotionMode::Stopping:
+            runProgram();
+            break;
+        case MotionMode::Jog:
+            runManual();
+            break;
+        case MotionMode::Homing:
+            runHoming();
+            break;
+        case MotionMode::EmergencyStop:
+        case MotionMode::Fault:
+            followFeedback();
+            break;
+        case MotionMode::Idle:
+            break;
+    }
+    if (m_mode != MotionMode::EmergencyStop && m_mode != MotionMode::Fault) {
+        m_spindle.update(m_dt, std::fabs(m_interpolated[0]));
+        writeOutputs();
+    }
+    m_status.mode = m_mode;
+    m_status.commandedPosition = m_setpoint;
+    m_status.actualPosition = actualTip();
+    m_status.pathPosition = m_gen.state().s;
+    m_status.pathVelocity = m_gen.state().v;
+    m_status.feedOverride = m_feedOverride;
+    m_status.rapidOverride = m_rapidOverride;
+    m_status.spindleRpm = m_spindle.rpm();
+    m_status.spindleAngleDeg = m_spindleSetpoint;
+    m_status.queued = static_cast<uint32_t>(m_items.size());
+    m_status.singleBlock = m_singleBlock;
+    for (int j = 0; j < m_model.jointCount; ++j) {
+        double error = std::fabs(m_setpoints[static_cast<size_t>(j)].position -
+                                 m_feedback[static_cast<size_t>(j)].position);
+        if (m_model.jointAxis[static_cast<size_t>(j)] >= 0) {
+            m_status.maxFollowingError = std::max(m_status.maxFollowingError, error);
+        }
+    }
+}
+
+}  // namespace kerf::motion

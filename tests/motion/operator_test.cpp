@@ -1,0 +1,361 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/geometry/arc_math.h"
+#include "motion/profile/jerk_profile.h"
+#include "tests/motion/motion_test_run.h"
+
+namespace kerf::motion::test {
+namespace {
+
+Pose at(double x, double y, double z) {
+    Pose p;
+    p[Axis::X] = x;
+    p[Axis::Y] = y;
+    p[Axis::Z] = z;
+    return p;
+}
+
+canon::Command cmd(canon::CommandBody body, uint32_t line = 1) {
+    canon::Command c;
+    c.location.line = line;
+    c.location.blockNumber = line * 10;
+    c.body = std::move(body);
+    return c;
+}
+
+// A 200 mm line along X at 3000 mm/min (50 mm/s).
+std::vector<canon::Command> longLine() {
+    return {cmd(canon::LinearMove{at(200, 0, 0), 3000.0})};
+}
+
+TEST(FeedHold, StopsWithinTheBrakingDistanceAndResumesOnThePath) {
+    // On a straight line the tangential limits are 90 % of the axis limits (planner rule). From
+    // v at a = 0 the time-optimal stop is symmetric and covers v/2 times its duration: with
+    // v = 50 < A^2/J = 72 mm/s the deceleration never reaches A, so the duration is
+    // 2 sqrt(v/J) and the distance v sqrt(v/J) = 1.667 mm (with a constant phase it would be
+    // v/2 (v/A + A/J)).
+    const double a = 0.9 * 2000.0;
+    const double j = 0.9 * 50000.0;
+    const double v = 50.0;
+    ASSERT_LT(v, a * a / j);
+    const double expected = v * std::sqrt(v / j);
+    double holdAt = -1.0;
+    double stoppedAt = -1.0;
+    int cycles = 0;
+    TestRun run =
+        runCommands(millConfig(), longLine(), Pose{}, {},
+                    [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                        ++cycles;
+                        if (cycles == 2000) {
+                            ASSERT_NEAR(s.pathVelocity, v, 1e-9);
+                            holdAt = s.pathPosition;
+                            sim.command({OperatorCommandKind::FeedHold});
+                        }
+                        if (holdAt >= 0.0 && stoppedAt < 0.0 && s.mode == MotionMode::Hold) {
+                            stoppedAt = s.pathPosition;
+                        }
+                        if (cycles == 2600) sim.command({OperatorCommandKind::CycleStart});
+                    });
+    ASSERT_GE(stoppedAt, 0.0);
+    // The command is read at the start of the next cycle: one period of travel at v more.
+    EXPECT_LE(stoppedAt - holdAt, expected + v * 0.001 + 1e-9);
+    EXPECT_GE(stoppedAt - holdAt, expected - 1e-6);
+    EXPECT_NEAR(run.report.finalPosition[0], 200.0, 1e-6);
+    EXPECT_LE(run.checker->maxDeviation(), 1e-9);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+}
+
+TEST(QuickStop, StopsOnThePathAndAbortsTheProgram) {
+    int cycles = 0;
+    TestRun run = runCommands(millConfig(), longLine(), Pose{}, {},
+                              [&](SimulatedMachine& sim, const Sample&, const MotionStatus&) {
+                                  if (++cycles == 1500)
+                                      sim.command({OperatorCommandKind::QuickStop});
+                              });
+    EXPECT_EQ(run.sim->status().mode, MotionMode::Idle);
+    EXPECT_LT(run.report.finalPosition[0], 200.0);
+    EXPECT_GT(run.report.finalPosition[0], 50.0);
+    EXPECT_NEAR(run.report.finalPosition[1], 0.0, 1e-9);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+}
+
+TEST(EmergencyStop, DrivesStopThemselvesAndResetEnablesThemAgain) {
+    int cycles = 0;
+    TestRun run = runCommands(millConfig(), longLine(), Pose{}, {},
+                              [&](SimulatedMachine& sim, const Sample&, const MotionStatus&) {
+                                  if (++cycles == 1500)
+                                      sim.command({OperatorCommandKind::EmergencyStop});
+                              });
+    EXPECT_EQ(run.sim->status().mode, MotionMode::EmergencyStop);
+    double stopped = run.report.finalPosition[0];
+    EXPECT_LT(stopped, 200.0);
+    run.sim->command({OperatorCommandKind::Reset});
+    run.sim->runFor(0.05);
+    EXPECT_EQ(run.sim->status().mode, MotionMode::Idle);
+    // Re-enabled without a jump: the setpoints continue from where the drives stopped.
+    EXPECT_NEAR(run.sim->status().commandedPosition[0], run.sim->status().actualPosition[0], 1e-6);
+}
+
+TEST(Probing, StopsOnTriggerAndLatchesTheContactPoint) {
+    SimulationOptions options;
+    // The workpiece top is at Z = -2.5 under X 0..50.
+    options.probeSurface = [](const AxisVector& tip) {
+        return tip[2] <= -2.5 && tip[0] >= 0.0 && tip[0] <= 50.0;
+    };
+    std::vector<canon::Command> program = {
+        cmd(canon::RapidMove{at(10, 10, 5)}, 1),
+        cmd(canon::ProbeMove{at(10, 10, -20), 300.0}, 2),
+        cmd(canon::SyncPoint{canon::SyncReason::ProbeResult}, 3),
+        cmd(canon::RapidMove{at(10, 10, 5)}, 4),
+    };
+    TestRun run = runCommands(millConfig(), program, Pose{}, options);
+    // The simulation latches the crossing inside the period (touch probe): exact to rounding.
+    EXPECT_TRUE(run.world.probeTriggered);
+    EXPECT_NEAR(run.world.probePosition[Axis::Z], -2.5, 1e-6);
+    EXPECT_NEAR(run.world.probePosition[Axis::X], 10.0, 1e-9);
+    EXPECT_NEAR(run.report.finalPosition[2], 5.0, 1e-6);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+}
+
+TEST(Probing, ReportsAMissWhenNothingIsTouched) {
+    SimulationOptions options;
+    options.probeSurface = [](const AxisVector& tip) { return tip[2] <= -50.0; };
+    TestRun run =
+        runCommands(millConfig(), {cmd(canon::ProbeMove{at(0, 0, -5), 300.0})}, Pose{}, options);
+    EXPECT_FALSE(run.world.probeTriggered);
+    EXPECT_NEAR(run.report.finalPosition[2], -5.0, 1e-6);
+}
+
+// Records the spindle angle and Z during a synchronised move.
+struct SyncTrace {
+    std::vector<std::pair<double, double>> zAndAngle;  // during synchronised elements
+};
+
+TEST(Threading, PositionIsLockedToTheSpindleAngle) {
+    const double lead = 1.5;
+    std::vector<canon::Command> program = {
+        cmd(canon::SpindleControl{canon::SpindleDirection::Clockwise, 600.0}, 1),
+        cmd(canon::RapidMove{at(0, 0, 2)}, 2),
+        cmd(canon::SpindleSyncedMove{at(0, 0, -20), lead, 90.0}, 3),
+        cmd(canon::RapidMove{at(5, 0, -20)}, 4),
+    };
+    std::vector<std::pair<double, double>> locked;
+    SimulationOptions options;
+    options.onSample = [&](const Sample& s, const MotionStatus&) {
+        if (s.tip[2] < 2.0 - 1e-9 && s.tip[2] > -20.0 + 1e-9 && s.tip[0] < 1e-12) {
+            locked.emplace_back(s.tip[2], s.spindleDeg);
+        }
+    };
+    TestRun run = runCommands(millConfig(), program, at(0, 0, 10), options);
+    ASSERT_GT(locked.size(), 100u);
+    // The thread starts at spindle angle 90 deg (modulo 360) at Z = 2 and Z goes down 1.5 mm per
+    // turn: angle = start + (2 - z) / lead * 360 on every sample (smoothed setpoints included).
+    double start = locked.front().second + (locked.front().first - 2.0) / lead * 360.0;
+    EXPECT_NEAR(std::fmod(start, 360.0), 90.0, 1e-6);
+    for (const auto& [z, angle] : locked) {
+        EXPECT_NEAR(angle, start + (2.0 - z) / lead * 360.0, 1e-6) << "z " << z;
+    }
+    EXPECT_NEAR(run.report.finalPosition[2], -20.0, 1e-6);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+}
+
+TEST(Threading, AVariableLeadIsRefusedRatherThanCutWithTheWrongLead) {
+    canon::SpindleSyncedMove g34{at(0, 0, -20), 1.5, 0.0};
+    g34.leadChangeMmPerRev = 0.1;
+    std::vector<canon::Command> program = {
+        cmd(canon::SpindleControl{canon::SpindleDirection::Clockwise, 600.0}, 1),
+        cmd(canon::RapidMove{at(0, 0, 2)}, 2),
+        cmd(g34, 3),
+    };
+    TestRun run = runCommands(millConfig(), program, at(0, 0, 10), {});
+    ASSERT_TRUE(run.report.refused);
+    ASSERT_FALSE(run.report.diagnostics.empty());
+    EXPECT_EQ(run.report.diagnostics[0].code, "motion.variable-lead");
+    EXPECT_EQ(run.report.diagnostics[0].line, 3u);
+    EXPECT_NEAR(run.report.finalPosition[2], 2.0, 1e-6);
+}
+
+TEST(RigidTapping, TheSpindleTurnsBackOutOfTheThread) {
+    // Cycle 207 as canonical moves: down 10 mm and back with pitch 1 mm (M3, right hand).
+    const double pitch = 1.0;
+    std::vector<canon::Command> program = {
+        cmd(canon::SpindleControl{canon::SpindleDirection::Clockwise, 500.0}, 1),
+        cmd(canon::RapidMove{at(0, 0, 2)}, 2),
+        cmd(canon::SpindleSyncedMove{at(0, 0, -8), pitch, 0.0}, 3),
+        cmd(canon::SpindleSyncedMove{at(0, 0, 2), pitch, 0.0}, 4),
+        cmd(canon::SpindleControl{canon::SpindleDirection::Stopped, 0.0}, 5),
+    };
+    double angleAtTop = 0.0;
+    double angleAtBottom = 0.0;
+    double angleBackAtTop = 0.0;
+    bool down = true;
+    bool back = false;
+    SimulationOptions options;
+    options.onSample = [&](const Sample& s, const MotionStatus&) {
+        if (s.tip[2] <= -8.0 + 1e-9) {
+            angleAtBottom = s.spindleDeg;
+            down = false;
+        }
+        if (down && std::fabs(s.tip[2] - 2.0) < 1e-9) angleAtTop = s.spindleDeg;
+        if (!down && std::fabs(s.tip[2] - 2.0) < 1e-9 && !back) {
+            angleBackAtTop = s.spindleDeg;
+            back = true;
+        }
+    };
+    TestRun run = runCommands(millConfig(), program, at(0, 0, 10), options);
+    EXPECT_NEAR(angleAtBottom - angleAtTop, 10.0 / pitch * 360.0, 1e-6);
+    EXPECT_NEAR(angleBackAtTop, angleAtTop, 1e-6);
+    EXPECT_NEAR(run.report.finalPosition[2], 2.0, 1e-6);
+}
+
+TEST(FeedPerRevolution, FeedFollowsTheSpindleSpeed) {
+    std::vector<canon::Command> program = {
+        cmd(canon::SpindleControl{canon::SpindleDirection::Clockwise, 1200.0}, 1),
+        cmd(canon::SetFeedMode{canon::FeedMode::PerRevolution}, 2),
+        cmd(canon::LinearMove{at(20, 0, 0), 0.1}, 3),
+    };
+    TestRun run = runCommands(millConfig(), program, Pose{}, {});
+    // 0.1 mm/rev at 1200 rpm = 2 mm/s.
+    EXPECT_NEAR(run.checker->axis(0).velocity, 2.0, 1e-6);
+    EXPECT_NEAR(run.report.finalPosition[0], 20.0, 1e-6);
+}
+
+TEST(SoftLimits, AMoveLeavingTheWorkAreaIsRefusedBeforeItMoves) {
+    std::vector<canon::Command> program = {
+        cmd(canon::LinearMove{at(100, 0, 0), 3000.0}, 1),
+        cmd(canon::LinearMove{at(100, 0, 60), 3000.0}, 2),  // mill Z ends at +50
+        cmd(canon::LinearMove{at(0, 0, 0), 3000.0}, 3),
+    };
+    TestRun run = runCommands(millConfig(), program, Pose{}, {});
+    ASSERT_TRUE(run.report.refused);
+    ASSERT_FALSE(run.report.diagnostics.empty());
+    EXPECT_EQ(run.report.diagnostics[0].code, "motion.soft-limit");
+    EXPECT_EQ(run.report.diagnostics[0].line, 2u);
+    EXPECT_NE(run.report.diagnostics[0].message().find("20"), std::string::npos);  // block 20
+    // It stopped at the end of the last accepted block.
+    EXPECT_NEAR(run.report.finalPosition[0], 100.0, 1e-6);
+    EXPECT_NEAR(run.report.finalPosition[2], 0.0, 1e-6);
+}
+
+TEST(SoftLimits, ArcExtremesAndToolLengthCount) {
+    // A full circle of radius 30 about X 380 reaches X 410 > 400 although both ends are inside.
+    canon::ArcMove arc;
+    arc.target = at(350, 0, 0);
+    arc.center = Vec3(380, 0, 0);
+    arc.sweepRad = kTwoPi;
+    arc.feed = 3000.0;
+    TestRun circle = runCommands(
+        millConfig(), {cmd(canon::LinearMove{at(350, 0, 0), 6000.0}, 1), cmd(arc, 2)}, Pose{}, {});
+    ASSERT_TRUE(circle.report.refused);
+    EXPECT_EQ(circle.report.diagnostics[0].line, 2u);
+    // Z 45 plus a 10 mm tool is 55 in machine coordinates.
+    canon::ToolChange tool;
+    tool.number = 1;
+    tool.geometry.lengthMm = 10.0;
+    TestRun high = runCommands(
+        millConfig(), {cmd(tool, 1), cmd(canon::LinearMove{at(0, 0, 45), 3000.0}, 2)}, Pose{}, {});
+    ASSERT_TRUE(high.report.refused);
+}
+
+TEST(SingleBlock, StopsAtTheEndOfEveryBlock) {
+    std::vector<canon::Command> program;
+    for (int i = 1; i <= 5; ++i)
+        program.push_back(cmd(canon::LinearMove{at(10.0 * i, (i % 2) * 5.0, 0), 3000.0},
+                              static_cast<uint32_t>(i)));
+    int stops = 0;
+    bool armed = false;
+    TestRun run =
+        runCommands(millConfig(), program, Pose{}, {},
+                    [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                        if (!armed) {
+                            sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
+                            armed = true;
+                        }
+                        static MotionMode last = MotionMode::Idle;
+                        if (s.mode == MotionMode::Stopped && last != MotionMode::Stopped) ++stops;
+                        last = s.mode;
+                    });
+    EXPECT_EQ(stops, 5);
+    EXPECT_NEAR(run.report.finalPosition[0], 50.0, 1e-6);
+}
+
+TEST(ToolChange, JointsStayAndTheTipMovesByTheLengthChange) {
+    canon::ToolChange tool;
+    tool.number = 3;
+    tool.geometry.lengthMm = 25.0;
+    std::vector<canon::Command> program = {
+        cmd(canon::LinearMove{at(10, 0, 0), 3000.0}, 1),
+        cmd(tool, 2),
+        cmd(canon::LinearMove{at(10, 0, -5), 3000.0}, 3),
+    };
+    TestRun run = runCommands(millConfig(), program, Pose{}, {});
+    EXPECT_NEAR(run.report.finalPosition[2], -5.0, 1e-6);
+    // The joint is the tip plus the tool length.
+    EXPECT_NEAR(run.sim->drives().reportedPosition(2), 20.0, 1e-6);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+}
+
+TEST(Jog, ContinuousIncrementalAndHandwheel) {
+    TestRun run = runCommands(millConfig(), {}, Pose{}, {});
+    SimulatedMachine& sim = *run.sim;
+    auto settle = [&] { sim.runFor(0.002); };
+    sim.command({OperatorCommandKind::JogIncrement, 0, 12.5, 100.0});
+    settle();
+    ASSERT_TRUE(sim.runUntil(
+        [](const MotionStatus& s) { return s.mode == MotionMode::Idle && s.cycle > 5; }, 5.0));
+    sim.runFor(0.05);
+    EXPECT_NEAR(sim.status().commandedPosition[0], 12.5, 1e-9);
+    sim.command({OperatorCommandKind::JogContinuous, 1, -50.0});
+    sim.runFor(0.5);
+    sim.command({OperatorCommandKind::JogStop, 1});
+    settle();
+    ASSERT_TRUE(
+        sim.runUntil([](const MotionStatus& s) { return s.mode == MotionMode::Idle; }, 5.0));
+    EXPECT_LT(sim.status().commandedPosition[1], -15.0);
+    for (int i = 0; i < 10; ++i)
+        sim.command({OperatorCommandKind::Handwheel, 2, -0.01});
+    settle();
+    ASSERT_TRUE(
+        sim.runUntil([](const MotionStatus& s) { return s.mode == MotionMode::Idle; }, 5.0));
+    sim.runFor(0.05);
+    EXPECT_NEAR(sim.status().commandedPosition[2], -0.1, 1e-9);
+    // Past the soft limit (X max 400): clipped to it.
+    sim.command({OperatorCommandKind::JogIncrement, 0, 1000.0, 400.0});
+    settle();
+    ASSERT_TRUE(sim.runUntil(
+        [](const MotionStatus& s) { return s.mode == MotionMode::Idle && s.pathVelocity == 0.0; },
+        20.0));
+    sim.runFor(0.05);
+    EXPECT_NEAR(sim.status().commandedPosition[0], 400.0, 1e-9);
+}
+
+TEST(Homing, FindsTheSwitchAndEndsAtHome) {
+    SimulationOptions options;
+    options.motion.startHomed = false;
+    TestRun run = runCommands(millConfig(), {}, at(37.0, -12.0, 20.0), options);
+    SimulatedMachine& sim = *run.sim;
+    // The drives report the true position plus an unknown offset until homed.
+    sim.command({OperatorCommandKind::Home, -1});
+    sim.runFor(0.002);
+    ASSERT_TRUE(
+        sim.runUntil([](const MotionStatus& s) { return (s.homedMask & 0x7) == 0x7; }, 120.0));
+    sim.runFor(0.5);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(sim.status().actualPosition[static_cast<size_t>(i)], 0.0, 1e-6);  // home = 0
+        // The switch sits at home; it is read once per period, so the latch is late by up to one
+        // period of the search velocity (5 % of 500 mm/s: 0.025 mm).
+        EXPECT_NEAR(sim.drives().truePosition(i), 0.0, 0.025);
+    }
+}
+
+TEST(Dwell, WaitsTheProgrammedTime) {
+    std::vector<canon::Command> program = {cmd(canon::Dwell{0.5}, 1)};
+    TestRun run = runCommands(millConfig(), program, Pose{}, {});
+    EXPECT_GE(run.report.durationS, 0.5);
+    EXPECT_LT(run.report.durationS, 0.6);
+}
+
+}  // namespace
+}  // namespace kerf::motion::test
