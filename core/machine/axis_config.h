@@ -24,6 +24,10 @@ struct AxisConfig {
     bool optional = false;  // may be switched off in the file (a removable rotary table)
     bool enabled = true;
     bool diameterMode = false;  // lathe X: programmed and displayed as a diameter
+    // The axis's drive on the CANopen bus (drivers/).
+    int driveNode = 0;                    // node-ID; 0: none
+    double driveCountsPerUnit = 10000.0;  // drive position units per mm or degree
+    double followingErrorWindow = 1.0;    // mm or deg, the drive's 0x6065
 
     friend bool operator==(const AxisConfig&, const AxisConfig&) = default;
 };

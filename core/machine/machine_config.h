@@ -10,11 +10,33 @@ namespace kerf::machine {
 
 enum class MachineKind : uint8_t { Mill, Lathe };
 
+// CiA 402 mode of the spindle drive: cyclic synchronous velocity or profile velocity.
+enum class SpindleDriveMode : uint8_t { Csv, Pv };
+
 struct SpindleConfig {
     int minRpm = 0;
     int maxRpm = 6000;
+    int driveNode = 0;                 // CANopen node-ID of the spindle drive; 0: none
+    double driveCountsPerDeg = 100.0;  // drive position units per degree
+    SpindleDriveMode driveMode = SpindleDriveMode::Csv;
 
     friend bool operator==(const SpindleConfig&, const SpindleConfig&) = default;
+};
+
+// The CANopen drive bus (drivers/): used when the drives are CiA 402 nodes; the node of each
+// drive is in its axis (axes.<L>.drive_node) and in the spindle (spindle.drive_node).
+struct DrivesConfig {
+    std::string interface = "can0";  // SocketCAN interface
+    int bitrate = 1000000;           // bit/s
+    double cyclePeriodMs = 1.0;      // SYNC period, a whole multiple of the servo period
+    int heartbeatPeriodMs = 100;     // every drive's heartbeat (0x1017)
+    int heartbeatTimeoutMs = 250;    // master's consumer time per drive (0x1016)
+    int pdoLossCycles = 3;           // cycles without a drive's TPDO before it counts as lost
+    int masterNode = 127;            // node-ID of the master's heartbeat
+    std::string vendorId;            // expected 0x1018 sub 1 ("0x..."); empty: not checked
+    std::string productCode;         // expected 0x1018 sub 2; empty: not checked
+
+    friend bool operator==(const DrivesConfig&, const DrivesConfig&) = default;
 };
 
 // The machine configuration. Every field except `axes[i].letter` is a parameter of the schema in
@@ -30,6 +52,7 @@ struct MachineConfig {
     SpindleConfig spindle;
     double servoPeriodMs = 1.0;
     double pathToleranceMm = 0.01;  // default corner-blending tolerance
+    DrivesConfig drives;
 
     // The axis with this letter (enabled or not), or nullptr.
     const AxisConfig* axis(char letter) const;

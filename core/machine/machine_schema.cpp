@@ -64,6 +64,78 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .minimum = 0.0,
                        .maximum = 100000.0,
                        .description = KERF_TR_NOOP("Highest spindle speed")}),
+        bindField<&MachineConfig::spindle, &SpindleConfig::driveNode>(
+            kMachine, {.key = "spindle.drive_node",
+                       .unit = "node-ID",
+                       .minimum = 0.0,
+                       .maximum = 127.0,
+                       .description = KERF_TR_NOOP(
+                           "CANopen node-ID of the spindle drive; 0: the spindle has none")}),
+        bindField<&MachineConfig::spindle, &SpindleConfig::driveCountsPerDeg>(
+            kMachine, {.key = "spindle.drive_scale",
+                       .unit = "counts/deg",
+                       .minimum = 0.001,
+                       .maximum = 1.0e9,
+                       .description = KERF_TR_NOOP("Spindle drive position units per degree")}),
+        bindField<&MachineConfig::spindle, &SpindleConfig::driveMode>(
+            kMachine, {.key = "spindle.drive_mode",
+                       .description = KERF_TR_NOOP(
+                           "CiA 402 mode of the spindle drive: cyclic synchronous or profile "
+                           "velocity")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::interface>(
+            kMachine, {.key = "drives.interface",
+                       .description = KERF_TR_NOOP("SocketCAN interface of the drive bus")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::bitrate>(
+            kMachine, {.key = "drives.bitrate",
+                       .unit = "bit/s",
+                       .minimum = 10000.0,
+                       .maximum = 1000000.0,
+                       .description = KERF_TR_NOOP("Bit rate of the drive bus (a CiA 301 rate)")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::cyclePeriodMs>(
+            kMachine, {.key = "drives.cycle_period",
+                       .unit = "ms",
+                       .minimum = 0.1,
+                       .maximum = 100.0,
+                       .description = KERF_TR_NOOP(
+                           "SYNC period of the drive bus; a whole multiple of servo_period")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::heartbeatPeriodMs>(
+            kMachine, {.key = "drives.heartbeat_period",
+                       .unit = "ms",
+                       .minimum = 1.0,
+                       .maximum = 10000.0,
+                       .description = KERF_TR_NOOP("Heartbeat period of every drive (0x1017)")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::heartbeatTimeoutMs>(
+            kMachine, {.key = "drives.heartbeat_timeout",
+                       .unit = "ms",
+                       .minimum = 1.0,
+                       .maximum = 65535.0,
+                       .description = KERF_TR_NOOP(
+                           "A drive whose heartbeat is missing this long is lost; above "
+                           "heartbeat_period")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::pdoLossCycles>(
+            kMachine, {.key = "drives.pdo_loss_cycles",
+                       .unit = "cycles",
+                       .minimum = 1.0,
+                       .maximum = 100.0,
+                       .description = KERF_TR_NOOP(
+                           "A drive whose feedback PDO is missing this many cycles is lost")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::masterNode>(
+            kMachine, {.key = "drives.master_node",
+                       .unit = "node-ID",
+                       .minimum = 1.0,
+                       .maximum = 127.0,
+                       .description = KERF_TR_NOOP(
+                           "CANopen node-ID of the control's heartbeat, watched by the drives")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::vendorId>(
+            kMachine, {.key = "drives.vendor_id",
+                       .description = KERF_TR_NOOP(
+                           "Vendor-ID every drive must report (0x1018 sub 1), hexadecimal like "
+                           "0x0000029C; empty: not checked")}),
+        bindField<&MachineConfig::drives, &DrivesConfig::productCode>(
+            kMachine, {.key = "drives.product_code",
+                       .description = KERF_TR_NOOP(
+                           "Product code every drive must report (0x1018 sub 2); empty: not "
+                           "checked")}),
     };
     return table;
 }
@@ -130,6 +202,28 @@ const std::vector<FieldBinding<AxisConfig>>& axisBindings() {
             kAxis, {.key = "diameter_mode",
                     .description =
                         KERF_TR_NOOP("Lathe: the axis is programmed and displayed as a diameter")}),
+        bindField<&AxisConfig::driveNode>(
+            kAxis, {.key = "drive_node",
+                    .unit = "node-ID",
+                    .rotaryUnit = "node-ID",
+                    .minimum = 0.0,
+                    .maximum = 127.0,
+                    .description = KERF_TR_NOOP("CANopen node-ID of the axis drive; 0: none")}),
+        bindField<&AxisConfig::driveCountsPerUnit>(
+            kAxis, {.key = "drive_scale",
+                    .unit = "counts/mm",
+                    .rotaryUnit = "counts/deg",
+                    .minimum = 0.001,
+                    .maximum = 1.0e9,
+                    .description = KERF_TR_NOOP("Drive position units per millimetre or degree")}),
+        bindField<&AxisConfig::followingErrorWindow>(
+            kAxis, {.key = "following_error_window",
+                    .unit = "mm",
+                    .rotaryUnit = "deg",
+                    .minimum = 0.001,
+                    .maximum = 1000.0,
+                    .description = KERF_TR_NOOP(
+                        "Following error the drive allows (0x6065) before it faults")}),
     };
     return table;
 }

@@ -1,6 +1,10 @@
 #include "core/machine/machine_validation.h"
 
+#include <algorithm>
+#include <cmath>
 #include <initializer_list>
+#include <iterator>
+#include <string>
 
 #include "core/machine/machine_schema.h"
 
@@ -139,7 +143,93 @@ void checkMachine(const MachineConfig& config, Validator& v) {
     }
 }
 
+// The drive nodes in use: enabled axes and the spindle with a non-zero drive_node.
+struct NodeUse {
+    std::string key;
+    int node = 0;
+};
+
+std::vector<NodeUse> driveNodes(const MachineConfig& config) {
+    std::vector<NodeUse> nodes;
+    for (const AxisConfig& axis : config.axes) {
+        if (axis.enabled && axis.driveNode != 0) {
+            nodes.push_back({axisParameterKey(axis.letter, "drive_node"), axis.driveNode});
+        }
+    }
+    if (config.spindle.driveNode != 0)
+        nodes.push_back({"spindle.drive_node", config.spindle.driveNode});
+    return nodes;
+}
+
+// The CANopen rules apply once some drive has a node: unique node-IDs that are not the master's,
+// a bus cycle that is a whole number of servo periods, a heartbeat timeout above the period, a
+// CiA 301 bit rate and identities written as numbers.
+void checkDrives(const MachineConfig& config, Validator& v) {
+    std::vector<NodeUse> nodes = driveNodes(config);
+    if (nodes.empty()) return;
+    const DrivesConfig& d = config.drives;
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        if (nodes[i].node == d.masterNode) {
+            v.report({nodes[i].key, "drives.master_node"},
+                     KERF_TR_NOOP("{1} = {2} is the node-ID of drives.master_node"), nodes[i].key,
+                     std::to_string(nodes[i].node));
+        }
+        for (size_t k = 0; k < i; ++k) {
+            if (nodes[k].node == nodes[i].node) {
+                v.report({nodes[i].key}, KERF_TR_NOOP("{1} = {2} is already the node of {3}"),
+                         nodes[i].key, std::to_string(nodes[i].node), nodes[k].key);
+            }
+        }
+    }
+    double ratio = d.cyclePeriodMs / config.servoPeriodMs;
+    if (ratio < 1.0 - 1e-9 || std::fabs(ratio - std::round(ratio)) > 1e-9) {
+        v.report({"drives.cycle_period", "servo_period"},
+                 KERF_TR_NOOP(
+                     "drives.cycle_period = {1} must be a whole multiple of servo_period = {2}"),
+                 formatNumber(d.cyclePeriodMs), formatNumber(config.servoPeriodMs));
+    }
+    if (d.heartbeatTimeoutMs <= d.heartbeatPeriodMs) {
+        v.report({"drives.heartbeat_timeout", "drives.heartbeat_period"},
+                 KERF_TR_NOOP(
+                     "drives.heartbeat_timeout = {1} must exceed drives.heartbeat_period = {2}"),
+                 std::to_string(d.heartbeatTimeoutMs), std::to_string(d.heartbeatPeriodMs));
+    }
+    constexpr int kRates[] = {10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000};
+    if (std::find(std::begin(kRates), std::end(kRates), d.bitrate) == std::end(kRates)) {
+        v.report(
+            {"drives.bitrate"},
+            KERF_TR_NOOP("drives.bitrate = {1} is not a CiA 301 bit rate (10000, 20000, 50000, "
+                         "125000, 250000, 500000, 800000, 1000000)"),
+            std::to_string(d.bitrate));
+    }
+    const std::pair<const char*, const std::string*> identities[] = {
+        {"drives.vendor_id", &d.vendorId}, {"drives.product_code", &d.productCode}};
+    for (const auto& [key, text] : identities) {
+        if (!text->empty() && !parseDriveIdentity(*text)) {
+            v.report({key}, KERF_TR_NOOP("{1} = \"{2}\" is not a 32-bit number such as 0x0000029C"),
+                     std::string(key), *text);
+        }
+    }
+}
+
 }  // namespace
+
+std::optional<uint32_t> parseDriveIdentity(std::string_view text) {
+    bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
+    std::string_view digits = hex ? text.substr(2) : text;
+    if (digits.empty() || digits.size() > (hex ? 8u : 10u)) return std::nullopt;
+    uint64_t value = 0;
+    for (char c : digits) {
+        int d = c >= '0' && c <= '9'          ? c - '0'
+                : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
+                : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                              : -1;
+        if (d < 0) return std::nullopt;
+        value = value * (hex ? 16u : 10u) + static_cast<uint64_t>(d);
+    }
+    if (value > 0xFFFFFFFFu) return std::nullopt;
+    return static_cast<uint32_t>(value);
+}
 
 DiagnosticList validateMachine(const MachineConfig& config, std::string_view file,
                                const KeyPositions& positions) {
@@ -147,6 +237,7 @@ DiagnosticList validateMachine(const MachineConfig& config, std::string_view fil
     checkRanges(config, v);
     checkAxes(config, v);
     checkMachine(config, v);
+    checkDrives(config, v);
     return v.take();
 }
 

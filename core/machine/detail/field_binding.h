@@ -87,6 +87,14 @@ struct FieldCodec<AxisType> : EnumCodec<AxisType> {
     }
 };
 
+template <>
+struct FieldCodec<SpindleDriveMode> : EnumCodec<SpindleDriveMode> {
+    static const std::vector<std::string_view>& names() {
+        static const std::vector<std::string_view> list{"csv", "pv"};
+        return list;
+    }
+};
+
 // A char member holds an axis letter, written as a one-letter string.
 template <>
 struct FieldCodec<char> {

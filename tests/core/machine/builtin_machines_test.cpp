@@ -4,6 +4,7 @@
 
 #include "core/base/atomic_file.h"
 #include "core/machine/machine_loader.h"
+#include "core/machine/machine_validation.h"
 
 namespace kerf::machine {
 namespace {
@@ -57,6 +58,31 @@ TEST(BuiltinMachines, MillIsAVertical3AxisMill) {
         EXPECT_FALSE(axis.diameterMode);
     }
     EXPECT_EQ(mill.axis('A'), nullptr);
+}
+
+TEST(BuiltinMachines, MillWithCanUsesFourNodesAtTwoMilliseconds) {
+    MachineConfig mill = load("mill");
+    EXPECT_EQ(mill.axis('X')->driveNode, 1);
+    EXPECT_EQ(mill.axis('Y')->driveNode, 2);
+    EXPECT_EQ(mill.axis('Z')->driveNode, 3);
+    EXPECT_EQ(mill.spindle.driveNode, 4);
+    EXPECT_EQ(mill.spindle.driveMode, SpindleDriveMode::Csv);
+    EXPECT_EQ(mill.drives.interface, "can0");
+    EXPECT_EQ(mill.drives.bitrate, 1000000);
+    EXPECT_EQ(mill.drives.cyclePeriodMs, 2.0);
+    EXPECT_EQ(mill.drives.heartbeatPeriodMs, 100);
+    EXPECT_EQ(mill.drives.heartbeatTimeoutMs, 250);
+    EXPECT_EQ(parseDriveIdentity(mill.drives.vendorId), 0x4B455246u);
+    EXPECT_EQ(parseDriveIdentity(mill.drives.productCode), 0x402u);
+}
+
+TEST(BuiltinMachines, LatheDrivesAreXZAndTheSpindleWithCAsNodeThree) {
+    MachineConfig lathe = load("lathe");
+    EXPECT_EQ(lathe.axis('X')->driveNode, 1);
+    EXPECT_EQ(lathe.axis('Z')->driveNode, 2);
+    EXPECT_EQ(lathe.axis('C')->driveNode, 3);
+    EXPECT_EQ(lathe.spindle.driveNode, 4);
+    EXPECT_EQ(lathe.drives.cyclePeriodMs, 2.0);
 }
 
 TEST(BuiltinMachines, LatheHasDiameterXAndADisabledC) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/base/atomic_file.h"
+#include "core/machine/machine_validation.h"
 
 namespace kerf::machine {
 namespace {
@@ -193,6 +194,57 @@ TEST(MachineLoaderErrors, SpindleMinAboveMax) {
                          "min_rpm = 5000\n"),
               Lines{"mymill.toml:3:11: error: spindle.min_rpm = 5000 must not exceed "
                     "spindle.max_rpm = 4000"});
+}
+
+TEST(MachineLoaderErrors, DriveNodesAreUniqueAndNotTheMasters) {
+    EXPECT_EQ(problemsOf("base = \"mill\"\n"
+                         "[drives]\n"
+                         "master_node = 4\n"
+                         "[axes.Y]\n"
+                         "drive_node = 1\n"),
+              (Lines{"mymill.toml:3:15: error: spindle.drive_node = 4 is the node-ID of "
+                     "drives.master_node",
+                     "mymill.toml:5:14: error: axes.Y.drive_node = 1 is already the node of "
+                     "axes.X.drive_node"}));
+}
+
+TEST(MachineLoaderErrors, DriveCycleIsAWholeNumberOfServoPeriods) {
+    EXPECT_EQ(problemsOf("base = \"mill\"\n"
+                         "[drives]\n"
+                         "cycle_period = 1.5\n"),
+              (Lines{"mymill.toml:3:16: error: drives.cycle_period = 1.5 must be a whole multiple "
+                     "of servo_period = 1"}));
+}
+
+TEST(MachineLoaderErrors, DriveBusRules) {
+    EXPECT_EQ(problemsOf("base = \"mill\"\n"
+                         "[drives]\n"
+                         "bitrate = 600000\n"
+                         "heartbeat_timeout = 100\n"
+                         "vendor_id = \"acme\"\n"),
+              (Lines{"mymill.toml:3:11: error: drives.bitrate = 600000 is not a CiA 301 bit rate "
+                     "(10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)",
+                     "mymill.toml:4:21: error: drives.heartbeat_timeout = 100 must exceed "
+                     "drives.heartbeat_period = 100",
+                     "mymill.toml:5:13: error: drives.vendor_id = \"acme\" is not a 32-bit number "
+                     "such as 0x0000029C"}));
+}
+
+TEST(MachineLoader, DriveRulesApplyOnlyWithDriveNodes) {
+    // Without any drive node the bus settings are not used, so they are not checked together.
+    Expected<MachineConfig> config = parseMachine(
+        "tool_axis = \"X\"\n[axes.X]\n[drives]\ncycle_period = 1.5\nbitrate = 600000\n", "m.toml");
+    EXPECT_TRUE(config.ok()) << config.error().format();
+}
+
+TEST(MachineLoader, DriveIdentityIsHexadecimalOrDecimal) {
+    EXPECT_EQ(parseDriveIdentity("0x0000029C"), 0x29Cu);
+    EXPECT_EQ(parseDriveIdentity("668"), 668u);
+    EXPECT_EQ(parseDriveIdentity("0xFFFFFFFF"), 0xFFFFFFFFu);
+    EXPECT_FALSE(parseDriveIdentity("0x100000000"));
+    EXPECT_FALSE(parseDriveIdentity("4294967296"));
+    EXPECT_FALSE(parseDriveIdentity("0x"));
+    EXPECT_FALSE(parseDriveIdentity("12a"));
 }
 
 TEST(MachineLoaderErrors, TomlSyntaxErrorUsesTomlPosition) {

@@ -97,7 +97,7 @@ TEST(MachineSchema, ListsEveryKeyOfAMachine) {
     std::vector<std::string> keys = parameterKeys(lathe);
     EXPECT_EQ(keys.size(), machineParameters().size() + 3 * axisParameters().size());
     EXPECT_EQ(keys.front(), "name");
-    EXPECT_EQ(keys.back(), "axes.C.diameter_mode");
+    EXPECT_EQ(keys.back(), "axes.C.following_error_window");
     for (const std::string& key : keys)
         EXPECT_TRUE(getParameter(lathe, key).ok()) << key;
 }
