@@ -1,0 +1,178 @@
+#include "graphics/stock/cutter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/geometry/arc_math.h"
+
+namespace kerf::graphics {
+
+const char* cutterKindName(CutterKind kind) {
+    switch (kind) {
+        case CutterKind::Flat:
+            return "flat";
+        case CutterKind::Ball:
+            return "ball";
+        case CutterKind::BullNose:
+            return "bull-nose";
+        case CutterKind::Drill:
+            return "drill";
+    }
+    return "?";
+}
+
+MillCutter MillCutter::fromGeometry(double radiusMm, double radius2Mm, double pointAngleDeg) {
+    MillCutter cutter;
+    cutter.radiusMm = std::isfinite(radiusMm) ? std::max(0.0, radiusMm) : 0.0;
+    const double r2 = std::isfinite(radius2Mm) ? std::clamp(radius2Mm, 0.0, cutter.radiusMm) : 0.0;
+    if (std::isfinite(pointAngleDeg) && pointAngleDeg > 0.0 && pointAngleDeg < 180.0) {
+        cutter.kind = CutterKind::Drill;
+        cutter.pointAngleDeg = pointAngleDeg;
+    } else if (r2 > 0.0 && r2 >= cutter.radiusMm - 1e-9) {
+        cutter.kind = CutterKind::Ball;
+        cutter.cornerRadiusMm = cutter.radiusMm;
+    } else if (r2 > 0.0) {
+        cutter.kind = CutterKind::BullNose;
+        cutter.cornerRadiusMm = r2;
+    }
+    return cutter;
+}
+
+double MillCutter::heightAt(double rho) const {
+    if (rho > radiusMm) return std::numeric_limits<double>::infinity();
+    switch (kind) {
+        case CutterKind::Flat:
+            return 0.0;
+        case CutterKind::Ball:
+        case CutterKind::BullNose: {
+            const double r2 = cornerRadiusMm;
+            const double flat = radiusMm - r2;
+            if (rho <= flat) return 0.0;
+            const double d = rho - flat;
+            return r2 - std::sqrt(std::max(0.0, r2 * r2 - d * d));
+        }
+        case CutterKind::Drill:
+            return rho / std::tan(degToRad(pointAngleDeg) * 0.5);
+    }
+    return 0.0;
+}
+
+double MillCutter::profileHeight() const {
+    return heightAt(radiusMm);
+}
+
+double MillCutter::volumeBelow(double h) const {
+    if (!(h > 0.0) || !cuts()) return 0.0;
+    const double r = radiusMm;
+    switch (kind) {
+        case CutterKind::Flat:
+            return kPi * r * r * h;
+        case CutterKind::Drill: {
+            const double cone = profileHeight();
+            if (h <= cone) {
+                const double rh = r * h / cone;
+                return kPi * rh * rh * h / 3.0;
+            }
+            return kPi * r * r * cone / 3.0 + kPi * r * r * (h - cone);
+        }
+        case CutterKind::Ball:
+        case CutterKind::BullNose: {
+            // Integrate the disc areas of the profile: radius(z) for 0 <= z <= h.
+            const double r2 = cornerRadiusMm;
+            const double flat = r - r2;
+            const double top = std::min(h, r2);
+            // radius(z) = flat + sqrt(r2^2 - (r2 - z)^2) for z in [0, r2]
+            // pi * integral (flat + s)^2 dz with s = sqrt(r2^2 - (r2 - z)^2)
+            auto primitive = [&](double z) {
+                const double u = z - r2;                               // from -r2 to 0
+                const double s2int = r2 * r2 * z - (u * u * u) / 3.0;  // integral of s^2
+                const double sint = 0.5 * (u * std::sqrt(std::max(0.0, r2 * r2 - u * u)) +
+                                           r2 * r2 * std::asin(std::clamp(u / r2, -1.0, 1.0)));
+                return flat * flat * z + 2.0 * flat * sint + s2int;
+            };
+            double volume = kPi * (primitive(top) - primitive(0.0));
+            if (h > r2) volume += kPi * r * r * (h - r2);
+            return volume;
+        }
+    }
+    return 0.0;
+}
+
+std::pair<double, double> LatheInsert::tipDirection(int code) {
+    switch (code) {
+        case 1:
+            return {1.0, -1.0};
+        case 2:
+            return {0.0, -1.0};
+        case 3:
+            return {-1.0, -1.0};
+        case 4:
+            return {-1.0, 0.0};
+        case 5:
+            return {-1.0, 1.0};
+        case 6:
+            return {0.0, 1.0};
+        case 7:
+            return {1.0, 1.0};
+        case 8:
+            return {1.0, 0.0};
+        default:
+            return {0.0, 0.0};
+    }
+}
+
+std::pair<double, double> LatheInsert::noseCentreOffset() const {
+    auto [ux, uz] = tipDirection(locationCode);
+    const double r = std::isfinite(noseRadiusMm) ? std::max(0.0, noseRadiusMm) : 0.0;
+    return {-r * ux, -r * uz};
+}
+
+std::vector<std::pair<double, double>> LatheInsert::outline(int arcPoints) const {
+    const double r = std::isfinite(noseRadiusMm) ? std::max(0.0, noseRadiusMm) : 0.0;
+    const auto [cx, cz] = noseCentreOffset();
+    std::vector<std::pair<double, double>> points;
+    const int n = std::max(arcPoints, 8);
+    const bool body = includedAngleDeg > 0.0 && includedAngleDeg < 180.0 && edgeLengthMm > 0.0 &&
+                      std::isfinite(edgeLengthMm);
+    if (!body) {
+        for (int i = 0; i < n; ++i) {
+            const double a = kTwoPi * i / n;
+            points.emplace_back(cx + r * std::cos(a), cz + r * std::sin(a));
+        }
+        return points;
+    }
+    // Direction (X, Z) in which the tip points; centre codes point along -X, -Z like code 3.
+    auto [dx, dz] = tipDirection(locationCode);
+    if (dx == 0.0 && dz == 0.0) {
+        dx = -1.0;
+        dz = -1.0;
+    }
+    const double norm = std::hypot(dx, dz);
+    dx /= norm;
+    dz /= norm;
+    // Sharp corner V of the rhombus ahead of the nose centre; edges e1, e2 run back from it at
+    // +-half the included angle; the nose arc is tangent to both.
+    const double half = degToRad(includedAngleDeg) * 0.5;
+    const double vx = cx + dx * r / std::sin(half);
+    const double vz = cz + dz * r / std::sin(half);
+    const double back = std::atan2(-dz, -dx);  // angle of the backward direction in (X, Z)
+    const double e1 = back + half;
+    const double e2 = back - half;
+    // Nose arc from the tangent point on edge 1 round the front to the one on edge 2 (the outward
+    // normals of the edges), spanning 180 degrees less the included angle.
+    const double arcFrom = e1 + kPi * 0.5;
+    const double sweep = kPi - 2.0 * half;
+    for (int i = 0; i <= n; ++i) {
+        const double a = arcFrom + sweep * i / n;
+        points.emplace_back(cx + r * std::cos(a), cz + r * std::sin(a));
+    }
+    const double l = edgeLengthMm;
+    points.emplace_back(vx + l * std::cos(e2), vz + l * std::sin(e2));
+    points.emplace_back(vx + l * (std::cos(e1) + std::cos(e2)),
+                        vz + l * (std::sin(e1) + std::sin(e2)));
+    points.emplace_back(vx + l * std::cos(e1), vz + l * std::sin(e1));
+    return points;
+}
+
+}  // namespace kerf::graphics

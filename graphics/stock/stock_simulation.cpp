@@ -1,0 +1,231 @@
+#include "graphics/stock/stock_simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "graphics/toolpath/arc_tessellation.h"
+
+namespace kerf::graphics {
+
+StockSimulation::StockSimulation(StockOptions options) : m_options(std::move(options)) {
+    if (!m_options.millCutter) {
+        m_options.millCutter = [](const canon::ToolChange& tool) {
+            return MillCutter::fromGeometry(tool.geometry.radiusMm, tool.geometry.radius2Mm);
+        };
+    }
+    if (!m_options.latheInsert) {
+        m_options.latheInsert = [](const canon::ToolChange& tool) {
+            LatheInsert insert;
+            insert.noseRadiusMm = std::max(0.0, tool.geometry.radiusMm);
+            if (tool.geometry.locationCode >= 0) insert.locationCode = tool.geometry.locationCode;
+            return insert;
+        };
+    }
+    if (!(m_options.resolutionMm > 0.0) || !std::isfinite(m_options.resolutionMm)) {
+        m_options.resolutionMm = 0.1;
+    }
+    if (m_options.machine == StockMachine::Lathe && m_options.bar) {
+        createBar(*m_options.bar, "bar");
+    }
+}
+
+StockSimulation::~StockSimulation() = default;
+
+void StockSimulation::note(const std::string& text) {
+    if (std::find(m_notes.begin(), m_notes.end(), text) == m_notes.end()) m_notes.push_back(text);
+}
+
+void StockSimulation::createStock(const canon::StockDefinition& definition,
+                                  const std::string& source) {
+    const double cell = m_options.resolutionMm;
+    if (m_options.machine == StockMachine::Lathe) {
+        if (const auto* cylinder = std::get_if<canon::StockCylinder>(&definition.shape)) {
+            LatheBar bar;
+            bar.radiusMm = cylinder->radiusMm;
+            bar.innerRadiusMm = cylinder->innerRadiusMm;
+            bar.zMax = cylinder->distanceMm;
+            bar.zMin = cylinder->distanceMm - cylinder->lengthMm;
+            createBar(bar, source);
+        } else if (const auto* box = std::get_if<canon::StockBox>(&definition.shape)) {
+            LatheBar bar;
+            bar.radiusMm = std::max(std::fabs(box->min.x()), std::fabs(box->max.x()));
+            bar.zMin = box->min.z();
+            bar.zMax = box->max.z();
+            createBar(bar, source);
+        }
+        return;
+    }
+    if (const auto* box = std::get_if<canon::StockBox>(&definition.shape)) {
+        m_mill = std::make_unique<HeightFieldStock>(box->min, box->max, cell, m_options.maxCells);
+    } else if (const auto* cylinder = std::get_if<canon::StockCylinder>(&definition.shape)) {
+        if (cylinder->axis != Axis::Z) {
+            note("stock: only cylinders along Z are simulated on the mill");
+            return;
+        }
+        const double top = cylinder->distanceMm;
+        m_mill = std::make_unique<HeightFieldStock>(
+            HeightFieldStock::cylinder(0.0, 0.0, cylinder->radiusMm, cylinder->innerRadiusMm,
+                                       top - cylinder->lengthMm, top, cell, m_options.maxCells));
+    }
+    if (m_mill) {
+        m_source = source;
+        if (m_mill->cellMm() > cell * 1.0001) {
+            note("stock: resolution coarsened to " + std::to_string(m_mill->cellMm()) +
+                 " mm to stay within the cell budget");
+        }
+    }
+}
+
+void StockSimulation::createBar(const LatheBar& bar, const std::string& source) {
+    m_lathe = std::make_unique<LatheStock>(bar, m_options.resolutionMm, m_options.maxCells);
+    m_source = source;
+    if (m_lathe->cellMm() > m_options.resolutionMm * 1.0001) {
+        note("stock: resolution coarsened to " + std::to_string(m_lathe->cellMm()) +
+             " mm to stay within the cell budget");
+    }
+}
+
+void StockSimulation::cutWithTool(const Vec3& from, const Vec3& to, bool rapid, size_t tool) {
+    bool removed = false;
+    if (m_mill) {
+        if (m_toolAxes[tool] != Axis::Z) {
+            note("stock: only tool axis Z is simulated on the mill");
+            return;
+        }
+        removed = m_mill->cut(from, to, m_cutters[tool]);
+    } else if (m_lathe) {
+        removed = m_lathe->cut(from.x(), from.z(), to.x(), to.z(), m_inserts[tool]);
+    }
+    if (removed) {
+        ++m_version;
+        if (rapid) ++m_rapidCuts;
+    }
+}
+
+void StockSimulation::cutSegment(const Vec3& from, const Vec3& to, bool rapid) {
+    if (!from.allFinite() || !to.allFinite()) return;
+    if (!rapid) {
+        m_feedBounds.add(from);
+        m_feedBounds.add(to);
+    }
+    if (!hasStock()) {
+        if (!m_options.deriveStockFromPath) return;
+        if (m_deferred.size() >= m_options.maxDeferredMoves) {
+            m_deferOverflow = true;
+            return;
+        }
+        m_deferred.push_back({from, to, static_cast<uint32_t>(m_tool), rapid});
+        return;
+    }
+    cutWithTool(from, to, rapid, m_tool);
+}
+
+void StockSimulation::consume(const canon::Command& command) {
+    const canon::CommandBody& body = command.body;
+    auto line = [&](const Pose& target, bool rapid) {
+        if (!finiteXyz(target)) return;
+        ++m_moves;
+        cutSegment(m_position.xyz(), target.xyz(), rapid);
+        m_position = target;
+    };
+    if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) {
+        line(rapid->target, true);
+    } else if (const auto* linear = std::get_if<canon::LinearMove>(&body)) {
+        line(linear->target, false);
+    } else if (const auto* synced = std::get_if<canon::SpindleSyncedMove>(&body)) {
+        line(synced->target, false);
+    } else if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) {
+        line(probe->target, false);
+    } else if (const auto* arc = std::get_if<canon::ArcMove>(&body)) {
+        if (!finiteXyz(arc->target)) return;
+        ++m_moves;
+        m_scratch.clear();
+        tessellateArc(m_position, *arc, std::max(1e-4, resolutionMm() * 0.25), 4096, m_scratch);
+        Vec3 from = m_position.xyz();
+        for (const Vec3& p : m_scratch) {
+            cutSegment(from, p, false);
+            from = p;
+        }
+        m_position = arc->target;
+    } else if (const auto* tool = std::get_if<canon::ToolChange>(&body)) {
+        m_cutters.push_back(m_options.millCutter(*tool));
+        m_inserts.push_back(m_options.latheInsert(*tool));
+        m_toolAxes.push_back(tool->toolAxis);
+        m_tool = m_cutters.size() - 1;
+        m_maxToolRadius = std::max(m_maxToolRadius, m_cutters.back().radiusMm);
+    } else if (const auto* update = std::get_if<canon::ToolUpdate>(&body)) {
+        canon::ToolChange changed;
+        changed.geometry = update->geometry;
+        changed.toolAxis = update->toolAxis;
+        MillCutter cutter = m_options.millCutter(changed);
+        if (m_cutters[m_tool].kind == CutterKind::Drill) {
+            cutter.kind = CutterKind::Drill;
+            cutter.pointAngleDeg = m_cutters[m_tool].pointAngleDeg;
+        }
+        m_cutters.push_back(cutter);
+        m_inserts.push_back(m_options.latheInsert(changed));
+        m_toolAxes.push_back(update->toolAxis);
+        m_tool = m_cutters.size() - 1;
+        m_maxToolRadius = std::max(m_maxToolRadius, cutter.radiusMm);
+    } else if (const auto* stock = std::get_if<canon::StockDefinition>(&body)) {
+        if (!hasStock()) createStock(*stock, "program");
+    }
+}
+
+void StockSimulation::finish() {
+    if (!hasStock() && m_options.fallbackStock) createStock(*m_options.fallbackStock, "fallback");
+    if (!hasStock() && m_options.deriveStockFromPath && !m_feedBounds.empty) {
+        const Bounds3& f = m_feedBounds;
+        if (m_options.machine == StockMachine::Lathe) {
+            LatheBar bar;
+            bar.radiusMm = std::max(std::fabs(f.min.x()), std::fabs(f.max.x()));
+            bar.zMin = f.min.z();
+            bar.zMax = std::max(0.0, f.max.z());
+            createBar(bar, "derived");
+        } else {
+            canon::StockBox box;
+            const double r = m_maxToolRadius;
+            box.min = Vec3(f.min.x() - r, f.min.y() - r, f.min.z());
+            box.max = Vec3(f.max.x() + r, f.max.y() + r, std::max(0.0, f.max.z()));
+            if (box.max.z() - box.min.z() < 1e-6) box.min.z() -= 1.0;
+            createStock(canon::StockDefinition{box}, "derived");
+        }
+        if (hasStock()) {
+            note("stock: no blank in the program; derived from the feed path");
+            for (const Deferred& move : m_deferred)
+                cutWithTool(move.from, move.to, move.rapid, move.tool);
+        }
+    }
+    if (m_deferOverflow)
+        note("stock: too many moves before a blank was known; some were not simulated");
+    if (!hasStock()) note("stock: no blank defined (BLK FORM), nothing simulated");
+    m_deferred.clear();
+    m_deferred.shrink_to_fit();
+}
+
+double StockSimulation::removedVolumeMm3() const {
+    if (m_mill) return m_mill->removedVolumeMm3();
+    if (m_lathe) return m_lathe->removedVolumeMm3();
+    return 0.0;
+}
+
+double StockSimulation::initialVolumeMm3() const {
+    if (m_mill) return m_mill->initialVolumeMm3();
+    if (m_lathe) return m_lathe->initialVolumeMm3();
+    return 0.0;
+}
+
+double StockSimulation::resolutionMm() const {
+    if (m_mill) return m_mill->cellMm();
+    if (m_lathe) return m_lathe->cellMm();
+    return m_options.resolutionMm;
+}
+
+Mesh StockSimulation::mesh(int maxSide) const {
+    if (m_mill) return m_mill->mesh(maxSide);
+    if (m_lathe) return m_lathe->mesh(180.0, 48, maxSide);
+    return {};
+}
+
+}  // namespace kerf::graphics
