@@ -1,29 +1,82 @@
 #include "ui/shell/hmi_main.h"
 
 #include <QApplication>
-
+#include <QStandardPaths>
 #include <iostream>
+#include <system_error>
 
 #include "core/machine/machine_loader.h"
 #include "ui/shell/main_window.h"
+#include "ui/shell/mode_controller.h"
 
 namespace kerf::ui {
 
+namespace {
+
+bool applyStartMode(ModeController& modes, const std::string& mode) {
+    using task::MachineMode;
+    if (mode.empty() || mode == "manual") return modes.requestMachineMode(MachineMode::Manual);
+    if (mode == "handwheel") return modes.requestMachineMode(MachineMode::Handwheel);
+    if (mode == "mdi") return modes.requestMachineMode(MachineMode::Mdi);
+    if (mode == "single") return modes.requestMachineMode(MachineMode::SingleBlock);
+    if (mode == "full") return modes.requestMachineMode(MachineMode::FullSequence);
+    if (mode == "programming")
+        modes.requestProgrammingMode(task::ProgrammingMode::Programming);
+    else if (mode == "testrun")
+        modes.requestProgrammingMode(task::ProgrammingMode::TestRun);
+    else
+        return false;
+    return true;
+}
+
+}  // namespace
+
 int runHmi(int argc, char** argv, const HmiOptions& options) {
+    // A screenshot needs no display: render offscreen unless the caller chose a platform.
+    if (!options.screenshot.empty() && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
     QApplication application(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("kerf"));
     DiagnosticList problems;
     auto machine = machine::loadMachine(options.machine, &problems);
     if (!machine) {
-        for (const Diagnostic& d : problems) std::cerr << d.format() << '\n';
+        for (const Diagnostic& d : problems)
+            std::cerr << d.format() << '\n';
         if (problems.empty()) std::cerr << machine.error().format() << '\n';
         return 1;
     }
-    MainWindow window(QString::fromStdString(machine->name));
+    const std::filesystem::path data =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation).toStdString();
+    HmiContext context;
+    context.machine = *machine;
+    context.ncRoot =
+        options.ncRoot.empty() ? data / "nc_prog" : std::filesystem::path(options.ncRoot);
+    context.recoveryFolder = data / "recovery";
+    std::error_code error;
+    std::filesystem::create_directories(context.ncRoot, error);
+
+    MainWindow window(std::move(context));
+    if (!options.language.empty() &&
+        !window.setLanguage(QString::fromStdString(options.language))) {
+        std::cerr << "kerf: no translation for language " << options.language << '\n';
+        return 2;
+    }
+    if (!applyStartMode(window.modes(), options.mode)) {
+        std::cerr << "kerf: unknown mode " << options.mode
+                  << " (manual, handwheel, mdi, single, full, programming, testrun)\n";
+        return 2;
+    }
+    if (!options.program.empty() && !window.openProgram(options.program)) {
+        std::cerr << "kerf: cannot open " << options.program << '\n';
+        return 1;
+    }
     window.resize(options.width, options.height);
     window.show();
     if (!options.screenshot.empty()) {
         // Let the window lay itself out and paint before taking the picture.
-        for (int i = 0; i < 5; ++i) application.processEvents();
+        for (int i = 0; i < 5; ++i)
+            application.processEvents();
         const QString file = QString::fromStdString(options.screenshot);
         if (!window.grab().save(file)) {
             std::cerr << "kerf: cannot write " << options.screenshot << '\n';

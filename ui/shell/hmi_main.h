@@ -9,6 +9,11 @@ struct HmiOptions {
     std::string screenshot;        // if set: save a picture of the window there and exit
     int width = 1280;
     int height = 800;
+    std::string ncRoot;   // empty: <user data folder>/nc_prog
+    std::string program;  // opened at start
+    std::string
+        mode;  // screen at start: manual, handwheel, mdi, single, full, programming, testrun
+    std::string language;  // en, pt, pl; empty: the system's
 };
 
 // Starts the operator panel and runs the Qt event loop; returns the process exit code.

@@ -1,41 +1,290 @@
 #include "ui/shell/main_window.h"
 
+#include <QCloseEvent>
+#include <QEvent>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
-#include <QPushButton>
+#include <QTreeWidget>
 #include <QVBoxLayout>
+
+#include "core/base/atomic_file.h"
+#include "core/tables/preset_table.h"
+#include "core/tables/tool_table.h"
+#include "ui/common/diagnostic_text.h"
+#include "ui/editor/find_bar.h"
+#include "ui/editor/program_editor.h"
+#include "ui/editor/program_panel.h"
+#include "ui/files/file_manager.h"
+#include "ui/shell/machine_keys.h"
+#include "ui/shell/message_panel.h"
+#include "ui/shell/mode_controller.h"
+#include "ui/shell/ui_language.h"
+#include "ui/shell/workspace.h"
+#include "ui/tables/table_editor.h"
 
 namespace kerf::ui {
 
-MainWindow::MainWindow(const QString& machineName, QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle(tr("Kerf - %1").arg(machineName));
+namespace {
+
+QLabel* makeModeLabel(const QString& name, QWidget* parent) {
+    auto* label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setMinimumHeight(36);
+    label->setMargin(6);
+    return label;
+}
+
+QLabel* makePanel(const QString& name, QWidget* parent) {
+    auto* label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setAlignment(Qt::AlignCenter);
+    label->setFrameShape(QFrame::StyledPanel);
+    label->setMinimumWidth(200);
+    return label;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(HmiContext context, QWidget* parent)
+    : QMainWindow(parent), m_context(std::move(context)) {
+    m_modes = new ModeController(this);
     auto* central = new QWidget(this);
     auto* layout = new QVBoxLayout(central);
+    layout->setContentsMargins(6, 6, 6, 6);
 
     auto* header = new QHBoxLayout();
-    m_machineMode = new QLabel(tr("Manual operation"), central);
-    m_programmingMode = new QLabel(tr("Programming"), central);
-    m_machineMode->setObjectName("machineMode");
-    m_programmingMode->setObjectName("programmingMode");
-    header->addWidget(m_machineMode);
-    header->addStretch();
-    header->addWidget(m_programmingMode);
+    m_machineMode = makeModeLabel("machineMode", central);
+    m_programmingMode = makeModeLabel("programmingMode", central);
+    header->addWidget(m_machineMode, 1);
+    header->addWidget(m_programmingMode, 1);
     layout->addLayout(header);
 
-    auto* workspace = new QLabel(tr("Simulated machine: %1").arg(machineName), central);
-    workspace->setAlignment(Qt::AlignCenter);
-    workspace->setObjectName("workspace");
-    layout->addWidget(workspace, 1);
+    m_messages = new MessagePanel(central);
+    layout->addWidget(m_messages);
 
-    auto* softkeys = new QHBoxLayout();
-    for (int i = 1; i <= 8; ++i) {
-        auto* key = new QPushButton(QStringLiteral("F%1").arg(i), central);
-        key->setMinimumHeight(48);
-        softkeys->addWidget(key);
-    }
-    layout->addLayout(softkeys);
+    ProgramPanel::Settings programSettings;
+    programSettings.machine = m_context.machine;
+    programSettings.ncRoot = m_context.ncRoot;
+    programSettings.recoveryFolder = m_context.recoveryFolder;
+    m_program = new ProgramPanel(programSettings, central);
+    m_graphics = makePanel("graphicsPanel", central);
+    m_status = makePanel("statusPanel", central);
+    m_positions = makePanel("positionsPanel", central);
+    m_workspace = new Workspace(m_program, m_graphics, m_status, m_positions, central);
+
+    auto* middle = new QHBoxLayout();
+    m_machineKeys = new MachineKeys(*m_modes, central);
+    middle->addWidget(m_workspace, 1);
+    middle->addWidget(m_machineKeys);
+    layout->addLayout(middle, 1);
+
+    m_files = new FileManager(m_context.ncRoot, central);
+    m_tables = new TableEditor(central);
+    m_files->hide();
+    m_tables->hide();
+    auto relay = [this](Severity severity, const QString& text) {
+        m_messages->addMessage(severity, text);
+    };
+    connect(m_files, &FileManager::message, m_messages, relay);
+    connect(m_tables, &TableEditor::message, m_messages, relay);
+    connect(m_files, &FileManager::openRequested, this,
+            [this](const std::filesystem::path& path) { openFile(path); });
+
+    m_softkeys = new SoftkeyBar(central);
+    layout->addWidget(m_softkeys);
     setCentralWidget(central);
+
+    connect(m_modes, &ModeController::modesChanged, this, [this] {
+        refreshHeader();
+        showPanels();
+    });
+    connect(m_modes, &ModeController::refused, this,
+            [this](const QString& text) { m_messages->addMessage(Severity::Error, text); });
+    connect(m_messages, &MessagePanel::lineActivated, this, [this](int line) {
+        showPanels();
+        m_program->editor()->goToLine(line);
+    });
+    connect(m_program, &ProgramPanel::diagnosticsChanged, m_messages,
+            &MessagePanel::setCheckDiagnostics);
+    connect(m_program, &ProgramPanel::message, m_messages, relay);
+    retranslate();
     resize(1280, 800);
+}
+
+MainWindow::~MainWindow() = default;
+
+bool MainWindow::openProgram(const std::filesystem::path& path) {
+    if (!m_program->open(path)) return false;
+    if (m_program->recoveryAvailable()) {
+        m_messages->addMessage(
+            Severity::Warning,
+            tr("%1 has unsaved changes from an earlier session: press \"Restore autosave\" to "
+               "get them back")
+                .arg(QString::fromStdString(path.filename().string())));
+    }
+    m_files->addRecent(path);
+    showPanels();
+    return true;
+}
+
+bool MainWindow::openFile(const std::filesystem::path& path) {
+    const QString extension = QString::fromStdString(path.extension().string()).toUpper();
+    static const QStringList kTables{".T", ".TCH", ".PR", ".D", ".PNT", ".TAB"};
+    if (kTables.contains(extension)) return showTable(path);
+    if (!openProgram(path)) return false;
+    m_modes->requestProgrammingMode(task::ProgrammingMode::Programming);
+    return true;
+}
+
+void MainWindow::showFiles() {
+    m_page = Page::Files;
+    m_workspace->showPage(m_files);
+    refreshSoftkeys();
+}
+
+bool MainWindow::showTable(const std::filesystem::path& path) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {
+        // A fresh NC root gets the standard tables, as a new control has them.
+        const QString extension = QString::fromStdString(path.extension().string()).toUpper();
+        std::string content;
+        if (extension == ".T") content = tables::ToolTable::createDefault();
+        if (extension == ".PR") content = tables::PresetTable::createDefault();
+        if (!content.empty()) {
+            if (const MaybeError failed = writeFileAtomically(path, content)) {
+                m_messages->addMessage(Severity::Error, translatedMessage(*failed));
+                return false;
+            }
+        }
+    }
+    if (!m_tables->open(path)) return false;
+    m_page = Page::Table;
+    m_workspace->showPage(m_tables);
+    refreshSoftkeys();
+    return true;
+}
+
+void MainWindow::showPanels() {
+    m_page = Page::Panels;
+    m_workspace->showPanels();
+    refreshSoftkeys();
+}
+
+bool MainWindow::setLanguage(const QString& code) {
+    return switchLanguage(code);
+}
+
+void MainWindow::cycleLayout() {
+    const int next = (static_cast<int>(m_workspace->layoutKind()) + 1) % 4;
+    m_workspace->setLayoutKind(static_cast<WorkspaceLayout>(next));
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    m_program->autosave();
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::retranslate() {
+    setWindowTitle(tr("Kerf - %1").arg(QString::fromStdString(m_context.machine.name)));
+    m_graphics->setText(tr("Graphics"));
+    m_status->setText(tr("Status"));
+    m_positions->setText(
+        tr("Positions: %1").arg(QString::fromStdString(m_context.machine.enabledAxisLetters())));
+    m_machineKeys->retranslate();
+    refreshHeader();
+    refreshSoftkeys();
+}
+
+void MainWindow::refreshHeader() {
+    // The mode on screen is highlighted; the other one stays named in the header.
+    const bool machineOnScreen = m_modes->screen() == ScreenMode::Machine;
+    const QString active = QStringLiteral("background: #1f4e79; color: white; font-weight: bold;");
+    const QString passive = QStringLiteral("background: #d9d9d9; color: #303030;");
+    m_machineMode->setText(ModeController::machineModeText(m_modes->machineMode()));
+    m_programmingMode->setText(ModeController::programmingModeText(m_modes->programmingMode()));
+    m_machineMode->setStyleSheet(machineOnScreen ? active : passive);
+    m_programmingMode->setStyleSheet(machineOnScreen ? passive : active);
+}
+
+SoftkeyRow MainWindow::commonRow() {
+    const std::filesystem::path root = m_context.ncRoot;
+    return {
+        {"layout", tr("Screen\nlayout"), [this] { cycleLayout(); }},
+        {"files", tr("Files"), [this] { showFiles(); }},
+        {"toolTable", tr("Tool\ntable"), [this, root] { showTable(root / "TOOL.T"); }},
+        {"presetTable", tr("Preset\ntable"), [this, root] { showTable(root / "PRESET.PR"); }},
+        {"messages", tr("Message\nlist"),
+         [this] { m_messages->setListVisible(m_messages->list()->isHidden()); }},
+        {"clearMessages", tr("Clear\nmessages"), [this] { m_messages->clearMessages(); }},
+        {"language", tr("Language\n%1").arg(currentLanguage().toUpper()),
+         [this] { nextLanguage(); }},
+    };
+}
+
+void MainWindow::nextLanguage() {
+    const QStringList languages = availableLanguages();
+    const int next = (static_cast<int>(languages.indexOf(currentLanguage())) + 1) %
+                     static_cast<int>(languages.size());
+    setLanguage(languages[next]);
+}
+
+std::vector<SoftkeyRow> MainWindow::fileRows() {
+    return {{
+        {"fileOpen", tr("Open"), [this] { m_files->openSelected(); }},
+        {"fileCopy", tr("Copy"), [this] { m_files->copySelected(); }},
+        {"fileMove", tr("Move"), [this] { m_files->moveSelected(); }},
+        {"fileRename", tr("Rename"), [this] { m_files->renameSelected(); }},
+        {"fileDelete", tr("Delete"), [this] { m_files->deleteSelected(); }},
+        {"fileProtect", tr("Protect /\nunprotect"), [this] { m_files->toggleProtection(); }},
+        {"fileNewFolder", tr("New\nfolder"), [this] { m_files->newFolder(); }},
+        {"back", tr("Back"), [this] { showPanels(); }},
+    }};
+}
+
+std::vector<SoftkeyRow> MainWindow::tableRows() {
+    return {{
+        {"tableSave", tr("Save"), [this] { m_tables->save(); }},
+        {"tableInsert", tr("Insert\nrow"), [this] { m_tables->insertRow(); }},
+        {"tableDelete", tr("Delete\nrow"), [this] { m_tables->deleteRow(); }},
+        {"tableUndo", tr("Undo"), [this] { m_tables->undo(); }},
+        {"back", tr("Back"), [this] { showPanels(); }},
+    }};
+}
+
+void MainWindow::refreshSoftkeys() {
+    if (m_page == Page::Files) return m_softkeys->setRows(fileRows());
+    if (m_page == Page::Table) return m_softkeys->setRows(tableRows());
+    std::vector<SoftkeyRow> rows;
+    if (m_modes->screen() == ScreenMode::Programming) {
+        ProgramEditor* editor = m_program->editor();
+        rows.push_back({
+            {"save", tr("Save"), [this] { m_program->save(); }},
+            {"find", tr("Find /\nreplace"), [this] { m_program->findBar()->open(); }},
+            {"undo", tr("Undo"), [editor] { editor->undo(); }},
+            {"redo", tr("Redo"), [editor] { editor->redo(); }},
+            {"goto", tr("Go to\nline"),
+             [this, editor] {
+                 bool ok = false;
+                 const int line =
+                     QInputDialog::getInt(this, tr("Go to line"), tr("Line"), editor->currentLine(),
+                                          1, editor->document()->blockCount(), 1, &ok);
+                 if (ok) editor->goToLine(line);
+             }},
+            {"renumber", tr("Renumber\nblocks"), [editor] { editor->renumber(); }},
+            {"check", tr("Check\nprogram"), [this] { m_program->checkNow(); }},
+            {"restore", tr("Restore\nautosave"), [this] { m_program->restoreRecovery(); }},
+        });
+        rows.push_back(commonRow());
+    } else {
+        rows.push_back(commonRow());
+    }
+    m_softkeys->setRows(std::move(rows));
 }
 
 }  // namespace kerf::ui

@@ -1,22 +1,94 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QString>
+#include <filesystem>
+
+#include "core/machine/machine_config.h"
+#include "ui/shell/softkey_bar.h"
 
 class QLabel;
 
 namespace kerf::ui {
 
-// The operator panel's frame: a header naming the machine and programming modes, the workspace
-// and the softkey row. The HMI issue fills the workspace; this is the minimal shell.
+class FileManager;
+class MachineKeys;
+class MessagePanel;
+class ModeController;
+class ProgramPanel;
+class TableEditor;
+class Workspace;
+
+// What the window needs from the outside: the machine and the folders it works in.
+struct HmiContext {
+    machine::MachineConfig machine;
+    std::filesystem::path ncRoot;          // programs and tables; the file manager stays inside
+    std::filesystem::path recoveryFolder;  // autosave copies of unsaved programs
+};
+
+// The operator panel: a header naming the machine mode and the programming mode, the message
+// line and list, the workspace in the chosen layout, the vertical mode keys and the softkey
+// bar whose rows follow the mode on screen.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
 public:
-    explicit MainWindow(const QString& machineName, QWidget* parent = nullptr);
+    explicit MainWindow(HmiContext context, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    ModeController& modes() const { return *m_modes; }
+    SoftkeyBar* softkeys() const { return m_softkeys; }
+    MachineKeys* machineKeys() const { return m_machineKeys; }
+    MessagePanel* messages() const { return m_messages; }
+    Workspace* workspace() const { return m_workspace; }
+    ProgramPanel* program() const { return m_program; }
+    FileManager* files() const { return m_files; }
+    TableEditor* tables() const { return m_tables; }
+
+    // Full-screen pages over the workspace panels.
+    void showFiles();
+    // Opens a table of the NC root (created with the standard columns if it does not exist).
+    bool showTable(const std::filesystem::path& path);
+    void showPanels();
+    // Opens a file chosen in the file manager: tables in the table editor, the rest as programs.
+    bool openFile(const std::filesystem::path& path);
+
+    bool openProgram(const std::filesystem::path& path);
+    // Switches the HMI to another language at run time ("en", "pt", "pl").
+    bool setLanguage(const QString& code);
+    void cycleLayout();
+
+protected:
+    void changeEvent(QEvent* event) override;
+    // Unsaved edits go to the recovery folder, so closing never loses work.
+    void closeEvent(QCloseEvent* event) override;
 
 private:
+    void retranslate();
+    void refreshHeader();
+    void refreshSoftkeys();
+    SoftkeyRow commonRow();
+    std::vector<SoftkeyRow> fileRows();
+    std::vector<SoftkeyRow> tableRows();
+    void nextLanguage();
+
+    enum class Page { Panels, Files, Table };
+
+    HmiContext m_context;
+    ModeController* m_modes = nullptr;
     QLabel* m_machineMode = nullptr;
     QLabel* m_programmingMode = nullptr;
+    MessagePanel* m_messages = nullptr;
+    Workspace* m_workspace = nullptr;
+    ProgramPanel* m_program = nullptr;
+    QLabel* m_graphics = nullptr;
+    QLabel* m_status = nullptr;
+    QLabel* m_positions = nullptr;
+    MachineKeys* m_machineKeys = nullptr;
+    SoftkeyBar* m_softkeys = nullptr;
+    FileManager* m_files = nullptr;
+    TableEditor* m_tables = nullptr;
+    Page m_page = Page::Panels;
 };
 
 }  // namespace kerf::ui

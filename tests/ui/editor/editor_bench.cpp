@@ -1,0 +1,140 @@
+// Opening and scrolling a million-block program in the editor: a manual benchmark, not a ctest
+// test (it takes seconds). Prints one line per step with its wall time.
+//   editor_bench [blocks]   (default 1000000)
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QScrollBar>
+#include <QTextBlock>
+#include <QTextDocument>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+#include <string>
+
+#include "core/base/atomic_file.h"
+#include "core/machine/machine_loader.h"
+#include "ui/editor/program_checker.h"
+#include "ui/editor/program_editor.h"
+#include "ui/editor/program_file.h"
+#include "ui/editor/program_panel.h"
+#include "ui/editor/visible_highlighter.h"
+
+namespace {
+
+std::string makeProgram(int blocks) {
+    std::string text = "0 BEGIN PGM BIG MM\n1 TOOL CALL 1 Z S3000\n2 L Z+50 R0 FMAX M3\n";
+    for (int i = 3; i < blocks - 2; ++i) {
+        text += std::to_string(i) + " L X+" + std::to_string(i % 100) + ".5 Y-" +
+                std::to_string(i % 37) + ".25 F800 ; pass\n";
+    }
+    text += std::to_string(blocks - 2) + " L Z+50 R0 FMAX M30\n" + std::to_string(blocks - 1) +
+            " END PGM BIG MM\n";
+    return text;
+}
+
+void report(const char* step, const QElapsedTimer& timer) {
+    std::printf("%-44s %8.1f ms\n", step, static_cast<double>(timer.nsecsElapsed()) / 1e6);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int blocks = argc > 1 ? std::atoi(argv[1]) : 1000000;
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / "kerf_editor_bench.H";
+    if (kerf::writeFileAtomically(file, makeProgram(blocks))) return 1;
+    std::printf("%d blocks, %.1f MB\n", blocks,
+                static_cast<double>(std::filesystem::file_size(file)) / 1e6);
+
+    kerf::ui::ProgramEditor editor;
+    editor.resize(1000, 700);
+    QElapsedTimer timer;
+    timer.start();
+    auto program = kerf::ui::readProgramFile(file);
+    report("read and decode the file", timer);
+    {
+        timer.restart();
+        QTextDocument bare;
+        bare.setUndoRedoEnabled(false);
+        bare.setPlainText(program->text);
+        report("QTextDocument::setPlainText, no editor", timer);
+    }
+    timer.restart();
+    editor.setPlainText(program->text);
+    report("ProgramEditor::setPlainText", timer);
+    timer.restart();
+    editor.show();
+    QCoreApplication::processEvents();
+    editor.grab();
+    report("first paint (visible lines coloured)", timer);
+
+    // Scrolling: 200 jumps to random lines and 200 page-downs, each painted.
+    std::mt19937 random(42);
+    std::uniform_int_distribution<int> line(1, blocks);
+    timer.restart();
+    for (int i = 0; i < 200; ++i) {
+        editor.goToLine(line(random));
+        editor.grab();
+    }
+    report("200 random jumps, each painted (total)", timer);
+    timer.restart();
+    QScrollBar* bar = editor.verticalScrollBar();
+    for (int i = 0; i < 200; ++i) {
+        bar->triggerAction(QAbstractSlider::SliderPageStepAdd);
+        editor.grab();
+    }
+    report("200 page-downs, each painted (total)", timer);
+
+    timer.restart();
+    editor.goToLine(blocks / 2);
+    editor.moveCursor(QTextCursor::EndOfBlock);
+    editor.insertBlock();
+    report("Enter in the middle (numbers renumbered on save)", timer);
+    timer.restart();
+    editor.renumber();
+    report("renumber all blocks", timer);
+
+    auto machine = kerf::machine::loadMachine("mill");
+    kerf::ui::ProgramChecker checker(*machine, file.parent_path());
+    bool done = false;
+    QObject::connect(&checker, &kerf::ui::ProgramChecker::checked,
+                     [&done](const kerf::DiagnosticList&) { done = true; });
+    timer.restart();
+    checker.check(editor.toPlainText(), file, kerf::program::Dialect::Klartext);
+    report("hand the text to the checker (UI thread)", timer);
+    while (!done)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    report("background check until diagnostics arrive", timer);
+
+    // The panel reads a large program in the background: the UI thread is only blocked for the
+    // hand-over of the finished document.
+    kerf::ui::ProgramPanel::Settings settings;
+    settings.machine = *machine;
+    settings.ncRoot = file.parent_path();
+    settings.recoveryFolder = file.parent_path() / "kerf_editor_bench_recovery";
+    kerf::ui::ProgramPanel panel(settings);
+    panel.resize(1000, 700);
+    panel.show();
+    bool opened = false;
+    QObject::connect(&panel, &kerf::ui::ProgramPanel::fileChanged, [&opened] { opened = true; });
+    timer.restart();
+    panel.open(file);
+    report("ProgramPanel::open returns (UI thread)", timer);
+    QElapsedTimer longestStall;
+    qint64 longest = 0;
+    while (!opened) {
+        longestStall.start();
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        longest = std::max(longest, longestStall.elapsed());
+    }
+    report("program shown in the panel", timer);
+    std::printf("%-44s %8lld ms\n", "longest UI-thread stall while loading",
+                static_cast<long long>(longest));
+    std::filesystem::remove(file);
+    return 0;
+}

@@ -1,0 +1,153 @@
+#include "ui/editor/program_editor.h"
+
+#include <QLineEdit>
+#include <QTest>
+#include <QTextBlock>
+#include <QTextLayout>
+
+#include <gtest/gtest.h>
+
+#include "qt_test_app.h"
+#include "ui/editor/find_bar.h"
+#include "ui/editor/visible_highlighter.h"
+
+namespace kerf::ui {
+namespace {
+
+using program::Dialect;
+
+QString lines(std::initializer_list<const char*> text) {
+    QStringList list;
+    for (const char* line : text)
+        list << QString::fromUtf8(line);
+    return list.join('\n');
+}
+
+void placeCursorAtEndOfLine(ProgramEditor& editor, int line) {
+    QTextCursor cursor(editor.document()->findBlockByNumber(line - 1));
+    cursor.movePosition(QTextCursor::EndOfBlock);
+    editor.setTextCursor(cursor);
+}
+
+TEST(ProgramEditor, EnterInsertsANumberedBlockAndRenumbersTheRest) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setPlainText(
+        lines({"0 BEGIN PGM A MM", "1 L Z+50 R0 FMAX", "2 L X+0 Y+0 R0 FMAX", "3 END PGM A MM"}));
+    placeCursorAtEndOfLine(editor, 2);
+    QTest::keyClick(&editor, Qt::Key_Return);
+    QTest::keyClicks(&editor, "L Z+2");
+    EXPECT_EQ(editor.toPlainText(), lines({"0 BEGIN PGM A MM", "1 L Z+50 R0 FMAX", "2 L Z+2",
+                                           "3 L X+0 Y+0 R0 FMAX", "4 END PGM A MM"}));
+    // The new block and the renumbering are one undo step; the typed text is another.
+    editor.undo();
+    editor.undo();
+    EXPECT_EQ(editor.toPlainText(), lines({"0 BEGIN PGM A MM", "1 L Z+50 R0 FMAX",
+                                           "2 L X+0 Y+0 R0 FMAX", "3 END PGM A MM"}));
+}
+
+TEST(ProgramEditor, ShiftEnterBreaksTheLineWithoutANumber) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setPlainText(lines({"0 BEGIN PGM A MM", "1 END PGM A MM"}));
+    placeCursorAtEndOfLine(editor, 1);
+    QTest::keyClick(&editor, Qt::Key_Return, Qt::ShiftModifier);
+    EXPECT_EQ(editor.toPlainText(), lines({"0 BEGIN PGM A MM", "", "1 END PGM A MM"}));
+    EXPECT_EQ(editor.document()->blockCount(), 3);
+}
+
+TEST(ProgramEditor, IsoBlocksKeepTheirStep) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    editor.setPlainText(lines({"N10 G90", "N20 G00 X0", "N30 M30"}));
+    placeCursorAtEndOfLine(editor, 2);
+    editor.insertBlock();
+    EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 G00 X0", "N30 ", "N40 M30"}));
+}
+
+TEST(ProgramEditor, LongProgramsAreRenumberedOnRequest) {
+    test::testApp();
+    ProgramEditor editor;
+    QStringList text;
+    for (int i = 0; i < ProgramEditor::kLiveRenumberLimit + 10; ++i)
+        text << QStringLiteral("%1 L X+%1").arg(i);
+    editor.setPlainText(text.join('\n'));
+    placeCursorAtEndOfLine(editor, 1);  // after "0 L X+0"
+    editor.insertBlock();
+    EXPECT_TRUE(editor.numbersStale());
+    EXPECT_EQ(editor.document()->findBlockByNumber(2).text(), QStringLiteral("1 L X+1"));
+    EXPECT_TRUE(editor.renumber());
+    EXPECT_FALSE(editor.numbersStale());
+    EXPECT_EQ(editor.document()->findBlockByNumber(1).text(), QStringLiteral("1 "));
+    EXPECT_EQ(editor.document()->findBlockByNumber(2).text(), QStringLiteral("2 L X+1"));
+    const int last = editor.document()->blockCount() - 1;
+    EXPECT_EQ(editor.document()->findBlockByNumber(last).text(),
+              QStringLiteral("%1 L X+%2").arg(last).arg(last - 1));
+}
+
+TEST(ProgramEditor, GoToLineMovesTheCursor) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setPlainText(lines({"0 A", "1 B", "2 C", "3 D"}));
+    editor.goToLine(3);
+    EXPECT_EQ(editor.currentLine(), 3);
+    EXPECT_EQ(editor.textCursor().block().text(), QStringLiteral("2 C"));
+}
+
+TEST(ProgramEditor, OnlyVisibleLinesAreColoured) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.resize(600, 400);
+    QStringList text;
+    for (int i = 0; i < 50000; ++i)
+        text << QStringLiteral("%1 L X+%1 FMAX").arg(i);
+    editor.setPlainText(text.join('\n'));
+    editor.show();
+    QCoreApplication::processEvents();
+    editor.highlighter().highlightVisible();
+    const QTextBlock first = editor.document()->firstBlock();
+    ASSERT_FALSE(first.layout()->formats().isEmpty());
+    // "0 L X+0 FMAX": block number, L, X, +0, FMAX.
+    EXPECT_EQ(first.layout()->formats().size(), 5);
+    EXPECT_EQ(first.layout()->formats()[0].format.foreground(),
+              VisibleHighlighter::formatOf(NcToken::BlockNumber).foreground());
+    EXPECT_TRUE(editor.document()->findBlockByNumber(40000).layout()->formats().isEmpty());
+    // Scrolling there colours it.
+    editor.goToLine(40001);
+    QCoreApplication::processEvents();
+    editor.highlighter().highlightVisible();
+    EXPECT_EQ(editor.document()->findBlockByNumber(40000).layout()->formats().size(), 5);
+}
+
+TEST(FindBar, ReplaceAllIsOneUndoStep) {
+    test::testApp();
+    ProgramEditor editor;
+    FindBar bar(&editor);
+    editor.setPlainText(lines({"0 L X+10 F100", "1 L X+20 F100", "2 L X+30 F200"}));
+    bar.findField()->setText("F100");
+    bar.replaceField()->setText("F150");
+    EXPECT_EQ(bar.replaceAll(), 2);
+    EXPECT_EQ(editor.toPlainText(), lines({"0 L X+10 F150", "1 L X+20 F150", "2 L X+30 F200"}));
+    editor.undo();
+    EXPECT_EQ(editor.toPlainText(), lines({"0 L X+10 F100", "1 L X+20 F100", "2 L X+30 F200"}));
+}
+
+TEST(FindBar, FindWrapsAround) {
+    test::testApp();
+    ProgramEditor editor;
+    FindBar bar(&editor);
+    editor.setPlainText(lines({"0 TOOL CALL 1 Z", "1 L X+0", "2 TOOL CALL 2 Z"}));
+    bar.findField()->setText("tool call");
+    ASSERT_TRUE(bar.findNext());
+    EXPECT_EQ(editor.currentLine(), 1);
+    ASSERT_TRUE(bar.findNext());
+    EXPECT_EQ(editor.currentLine(), 3);
+    ASSERT_TRUE(bar.findNext());
+    EXPECT_EQ(editor.currentLine(), 1);
+    bar.setCaseSensitive(true);
+    EXPECT_FALSE(bar.findNext());
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,163 @@
+#include "ui/editor/program_panel.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QTextBlock>
+
+#include <gtest/gtest.h>
+
+#include "core/base/atomic_file.h"
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "test_paths.h"
+#include "ui/common/diagnostic_text.h"
+#include "ui/editor/program_editor.h"
+
+namespace kerf::ui {
+namespace {
+
+ProgramPanel::Settings settingsIn(const std::filesystem::path& dir) {
+    ProgramPanel::Settings settings;
+    settings.machine = *machine::loadMachine("mill");
+    settings.ncRoot = dir;
+    settings.recoveryFolder = dir / "recovery";
+    settings.autosaveDelayMs = 60000;  // the tests autosave explicitly
+    return settings;
+}
+
+void writeFile(const std::filesystem::path& path, std::string_view bytes) {
+    ASSERT_FALSE(writeFileAtomically(path, bytes).has_value());
+}
+
+std::string readFile(const std::filesystem::path& path) {
+    return readWholeFile(path).value();
+}
+
+TEST(ProgramPanel, SaveKeepsLineEndsAndEncoding) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_save");
+    // CRLF line ends and a cp1252 "é" (0xE9) in a comment, as a PC-written TNC file has them.
+    writeFile(dir / "A.H", "0 BEGIN PGM A MM\r\n1 L Z+50 R0 FMAX ; caf\xE9\r\n2 END PGM A MM\r\n");
+    ProgramPanel panel(settingsIn(dir));
+    ASSERT_TRUE(panel.open(dir / "A.H"));
+    EXPECT_EQ(panel.editor()->document()->findBlockByNumber(1).text(),
+              QStringLiteral("1 L Z+50 R0 FMAX ; caf\u00e9"));
+    QTextCursor cursor(panel.editor()->document()->findBlockByNumber(1));
+    cursor.movePosition(QTextCursor::EndOfBlock);
+    cursor.insertText("!");
+    EXPECT_TRUE(panel.modified());
+    ASSERT_TRUE(panel.save());
+    EXPECT_FALSE(panel.modified());
+    EXPECT_EQ(readFile(dir / "A.H"),
+              "0 BEGIN PGM A MM\r\n1 L Z+50 R0 FMAX ; caf\xE9!\r\n2 END PGM A MM\r\n");
+}
+
+TEST(ProgramPanel, AutosaveSurvivesACrashAndIsOfferedOnReopen) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_recovery");
+    const std::string original = "0 BEGIN PGM B MM\n1 END PGM B MM\n";
+    writeFile(dir / "B.H", original);
+    {
+        ProgramPanel panel(settingsIn(dir));
+        ASSERT_TRUE(panel.open(dir / "B.H"));
+        EXPECT_FALSE(panel.recoveryAvailable());
+        panel.editor()->goToLine(1);
+        panel.editor()->moveCursor(QTextCursor::EndOfBlock);
+        panel.editor()->insertBlock();
+        panel.editor()->insertPlainText("L Z+100 R0 FMAX");
+        panel.autosave();
+        // The panel goes away without saving, as in a crash.
+    }
+    EXPECT_EQ(readFile(dir / "B.H"), original);
+    ProgramPanel panel(settingsIn(dir));
+    ASSERT_TRUE(panel.open(dir / "B.H"));
+    ASSERT_TRUE(panel.recoveryAvailable());
+    panel.restoreRecovery();
+    EXPECT_EQ(panel.editor()->toPlainText(),
+              QStringLiteral("0 BEGIN PGM B MM\n1 L Z+100 R0 FMAX\n2 END PGM B MM\n"));
+    ASSERT_TRUE(panel.save());
+    EXPECT_EQ(readFile(dir / "B.H"), "0 BEGIN PGM B MM\n1 L Z+100 R0 FMAX\n2 END PGM B MM\n");
+    // Saved: the copy is gone, so the next opening offers nothing.
+    ProgramPanel again(settingsIn(dir));
+    ASSERT_TRUE(again.open(dir / "B.H"));
+    EXPECT_FALSE(again.recoveryAvailable());
+}
+
+TEST(ProgramPanel, RecoveryCopyOfAnotherProgramIsNotOffered) {
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_owner");
+    RecoveryStore store(dir / "recovery");
+    ASSERT_FALSE(store.store(dir / "C.H", "text").has_value());
+    EXPECT_EQ(store.recover(dir / "C.H"), QStringLiteral("text"));
+    EXPECT_FALSE(store.recover(dir / "D.H").has_value());
+    store.discard(dir / "C.H");
+    EXPECT_FALSE(store.recover(dir / "C.H").has_value());
+}
+
+TEST(ProgramPanel, CheckReportsTheLineOfAnError) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_check");
+    // Line 3 (block 2) holds a word that is no Klartext function.
+    writeFile(dir / "E.H", "0 BEGIN PGM E MM\n1 L Z+50 R0 FMAX\n2 BOGUS WORD\n3 END PGM E MM\n");
+    ProgramPanel panel(settingsIn(dir));
+    QSignalSpy spy(&panel, &ProgramPanel::diagnosticsChanged);
+    ASSERT_TRUE(panel.open(dir / "E.H"));
+    ASSERT_TRUE(spy.wait(10000));
+    bool errorOnLine3 = false;
+    for (const Diagnostic& d : panel.diagnostics())
+        errorOnLine3 |= d.severity == Severity::Error && d.line == 3;
+    EXPECT_TRUE(errorOnLine3);
+    // Fixing the line and checking again clears the error.
+    QTextCursor cursor(panel.editor()->document()->findBlockByNumber(2));
+    cursor.select(QTextCursor::BlockUnderCursor);
+    cursor.movePosition(QTextCursor::StartOfBlock);
+    cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+    cursor.insertText("2 L X+0 R0 FMAX");
+    panel.checkNow();
+    ASSERT_TRUE(spy.wait(10000));
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));
+}
+
+TEST(ProgramPanel, LargeFilesLoadInTheBackground) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_background");
+    writeFile(dir / "F.H", "0 BEGIN PGM F MM\n1 L Z+50 R0 FMAX\n2 END PGM F MM\n");
+    auto settings = settingsIn(dir);
+    settings.backgroundLoadBytes = 0;  // every file counts as large
+    ProgramPanel panel(settings);
+    QSignalSpy opened(&panel, &ProgramPanel::fileChanged);
+    ASSERT_TRUE(panel.open(dir / "F.H"));
+    EXPECT_TRUE(panel.loading());
+    EXPECT_TRUE(panel.editor()->isReadOnly());
+    ASSERT_TRUE(opened.wait(10000));
+    EXPECT_FALSE(panel.loading());
+    EXPECT_FALSE(panel.editor()->isReadOnly());
+    EXPECT_EQ(panel.path(), dir / "F.H");
+    EXPECT_EQ(panel.editor()->toPlainText(),
+              QStringLiteral("0 BEGIN PGM F MM\n1 L Z+50 R0 FMAX\n2 END PGM F MM\n"));
+    EXPECT_FALSE(panel.modified());
+    // The adopted document is edited, undone and saved like any other.
+    panel.editor()->goToLine(2);
+    panel.editor()->moveCursor(QTextCursor::EndOfBlock);
+    panel.editor()->insertBlock();
+    EXPECT_TRUE(panel.modified());
+    EXPECT_EQ(panel.editor()->document()->findBlockByNumber(3).text(),
+              QStringLiteral("3 END PGM F MM"));
+    ASSERT_TRUE(panel.save());
+    EXPECT_EQ(readFile(dir / "F.H"), "0 BEGIN PGM F MM\n1 L Z+50 R0 FMAX\n2 \n3 END PGM F MM\n");
+    panel.editor()->undo();
+    EXPECT_EQ(panel.editor()->document()->findBlockByNumber(2).text(),
+              QStringLiteral("2 END PGM F MM"));
+}
+
+TEST(ProgramPanel, MissingFileIsAMessageNotACrash) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_missing");
+    ProgramPanel panel(settingsIn(dir));
+    QSignalSpy spy(&panel, &ProgramPanel::message);
+    EXPECT_FALSE(panel.open(dir / "NONE.H"));
+    ASSERT_EQ(spy.count(), 1);
+    EXPECT_EQ(spy.at(0).at(0).value<Severity>(), Severity::Error);
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,59 @@
+#include "ui/editor/program_checker.h"
+
+#include <QMetaObject>
+
+#include "ui/editor/klartext_check.h"
+
+namespace kerf::ui {
+
+ProgramChecker::ProgramChecker(machine::MachineConfig machine, std::filesystem::path ncRoot,
+                               QObject* parent)
+    : QObject(parent), m_machine(std::move(machine)), m_ncRoot(std::move(ncRoot)) {
+    m_worker = std::thread([this] { work(); });
+}
+
+ProgramChecker::~ProgramChecker() {
+    {
+        std::lock_guard lock(m_mutex);
+        m_quit = true;
+        m_pending.reset();
+    }
+    m_wake.notify_one();
+    m_worker.join();
+}
+
+void ProgramChecker::check(const QString& text, const std::filesystem::path& path,
+                           program::Dialect dialect) {
+    {
+        std::lock_guard lock(m_mutex);
+        m_pending = Request{text.toStdString(), path, dialect, ++m_generation};
+    }
+    m_wake.notify_one();
+}
+
+void ProgramChecker::work() {
+    for (;;) {
+        Request request;
+        {
+            std::unique_lock lock(m_mutex);
+            m_wake.wait(lock, [this] { return m_quit || m_pending.has_value(); });
+            if (m_quit) return;
+            request = std::move(*m_pending);
+            m_pending.reset();
+        }
+        DiagnosticList diagnostics = checkText(request);
+        std::lock_guard lock(m_mutex);
+        if (request.generation != m_generation || m_quit) continue;  // the text changed meanwhile
+        // Queued to the UI thread; dropped by Qt if this object is gone by then.
+        QMetaObject::invokeMethod(
+            this, [this, diagnostics = std::move(diagnostics)] { emit checked(diagnostics); },
+            Qt::QueuedConnection);
+    }
+}
+
+DiagnosticList ProgramChecker::checkText(const Request& request) const {
+    if (request.dialect != program::Dialect::Klartext) return {};
+    return checkKlartextText(request.text, request.path.string(), m_machine, m_ncRoot);
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <condition_variable>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "core/base/diagnostic.h"
+#include "core/machine/machine_config.h"
+#include "core/program/dialect.h"
+
+namespace kerf::ui {
+
+// Checks the program being edited in a worker thread and reports its diagnostics back on the
+// UI thread. A new request replaces one not started yet; results of an outdated text are
+// dropped. Klartext programs are checked by the conversational interpreter; other dialects
+// are not checked yet and report nothing.
+class ProgramChecker : public QObject {
+    Q_OBJECT
+
+public:
+    ProgramChecker(machine::MachineConfig machine, std::filesystem::path ncRoot,
+                   QObject* parent = nullptr);
+    ~ProgramChecker() override;
+
+    void check(const QString& text, const std::filesystem::path& path, program::Dialect dialect);
+
+signals:
+    void checked(const kerf::DiagnosticList& diagnostics);
+
+private:
+    struct Request {
+        std::string text;
+        std::filesystem::path path;
+        program::Dialect dialect = program::Dialect::Klartext;
+        uint64_t generation = 0;
+    };
+    void work();
+    DiagnosticList checkText(const Request& request) const;
+
+    machine::MachineConfig m_machine;
+    std::filesystem::path m_ncRoot;
+    mutable std::mutex m_mutex;
+    std::condition_variable m_wake;
+    std::optional<Request> m_pending;
+    bool m_quit = false;
+    uint64_t m_generation = 0;
+    std::thread m_worker;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <QString>
+#include <filesystem>
+
+#include "core/base/expected.h"
+#include "core/program/encoding.h"
+
+namespace kerf::ui {
+
+// A program's text as the editor holds it (UTF-8, '\n' line ends) and how to write it back the
+// way it was read: same encoding, same line ends.
+struct ProgramText {
+    QString text;
+    program::Encoding encoding = program::Encoding::Utf8;
+    bool crlf = false;
+};
+
+Expected<ProgramText> readProgramFile(const std::filesystem::path& path);
+// Atomic: a crash leaves the old file or the new one.
+MaybeError writeProgramFile(const std::filesystem::path& path, const ProgramText& program);
+
+}  // namespace kerf::ui

@@ -1,0 +1,198 @@
+#include "ui/editor/program_panel.h"
+
+#include <QEvent>
+#include <QLabel>
+#include <QTextDocument>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include "ui/common/diagnostic_text.h"
+#include "ui/editor/find_bar.h"
+#include "ui/editor/program_checker.h"
+#include "ui/editor/program_editor.h"
+#include "ui/editor/program_loader.h"
+
+namespace kerf::ui {
+
+namespace {
+
+QString fileText(const std::filesystem::path& path) {
+    return QString::fromStdString(path.string());
+}
+
+bool isLathe(const machine::MachineConfig& machine) {
+    const machine::AxisConfig* x = machine.axis('X');
+    return x != nullptr && x->diameterMode;
+}
+
+}  // namespace
+
+ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
+    : QWidget(parent), m_settings(std::move(settings)), m_recovery(m_settings.recoveryFolder) {
+    setObjectName("programPanel");
+    registerDiagnosticMetaTypes();
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_title = new QLabel(this);
+    m_title->setObjectName("programTitle");
+    m_editor = new ProgramEditor(this);
+    m_findBar = new FindBar(m_editor, this);
+    layout->addWidget(m_title);
+    layout->addWidget(m_editor, 1);
+    layout->addWidget(m_findBar);
+
+    m_checker = new ProgramChecker(m_settings.machine, m_settings.ncRoot, this);
+    connect(m_checker, &ProgramChecker::checked, this, [this](const DiagnosticList& diagnostics) {
+        m_diagnostics.clear();
+        // Only messages about this file point at editor lines; those about called programs are
+        // listed without a line.
+        const std::string self = m_path.string();
+        for (Diagnostic d : diagnostics) {
+            if (!d.file.empty() && d.file != self) d.line = 0;
+            m_diagnostics.push_back(std::move(d));
+        }
+        m_editor->setDiagnostics(m_diagnostics);
+        emit diagnosticsChanged(m_diagnostics);
+    });
+    m_autosaveTimer = new QTimer(this);
+    m_autosaveTimer->setSingleShot(true);
+    m_autosaveTimer->setInterval(m_settings.autosaveDelayMs);
+    connect(m_autosaveTimer, &QTimer::timeout, this, &ProgramPanel::autosave);
+    m_checkTimer = new QTimer(this);
+    m_checkTimer->setSingleShot(true);
+    m_checkTimer->setInterval(m_settings.checkDelayMs);
+    connect(m_checkTimer, &QTimer::timeout, this, &ProgramPanel::checkNow);
+    m_loader = new ProgramLoader(this);
+    connect(m_loader, &ProgramLoader::loaded, this,
+            [this](QTextDocument* document, const ProgramText& format,
+                   const std::filesystem::path& path) {
+                m_file = format;
+                m_editor->adoptDocument(document);
+                m_editor->setReadOnly(false);
+                watchDocument();
+                finishOpen(path);
+            });
+    connect(m_loader, &ProgramLoader::failed, this, [this](const Diagnostic& error) {
+        m_editor->setReadOnly(false);
+        emit message(Severity::Error, translatedMessage(error) + QStringLiteral(" (") +
+                                          QString::fromStdString(error.file) + ')');
+        refreshTitle();
+    });
+    watchDocument();
+    refreshTitle();
+}
+
+void ProgramPanel::watchDocument() {
+    // Connections to a replaced document go away with it.
+    connect(m_editor->document(), &QTextDocument::contentsChanged, this, &ProgramPanel::onEdited);
+    connect(m_editor->document(), &QTextDocument::modificationChanged, this,
+            &ProgramPanel::refreshTitle);
+}
+
+bool ProgramPanel::loading() const {
+    return m_loader->busy();
+}
+
+ProgramPanel::~ProgramPanel() = default;
+
+bool ProgramPanel::open(const std::filesystem::path& path) {
+    if (loading()) return false;
+    std::error_code sizeError;
+    const uintmax_t size = std::filesystem::file_size(path, sizeError);
+    m_editor->setDialect(program::dialectForFile(path.string(), isLathe(m_settings.machine)));
+    if (!sizeError && size >= m_settings.backgroundLoadBytes) {
+        m_editor->setReadOnly(true);
+        m_title->setText(tr("Loading %1 ...").arg(fileText(path.filename())));
+        m_loader->load(path);
+        return true;
+    }
+    auto file = readProgramFile(path);
+    if (!file) {
+        emit message(Severity::Error,
+                     translatedMessage(file.error()) + QStringLiteral(" (") + fileText(path) + ')');
+        return false;
+    }
+    m_file = std::move(*file);
+    m_loading = true;
+    m_editor->setPlainText(m_file.text);
+    m_editor->document()->setModified(false);
+    m_loading = false;
+    m_file.text.clear();  // the document holds the text; no second copy of a large program
+    finishOpen(path);
+    return true;
+}
+
+void ProgramPanel::finishOpen(const std::filesystem::path& path) {
+    m_path = path;
+    m_recovered = m_recovery.recover(path);
+    refreshTitle();
+    emit fileChanged();
+    checkNow();
+}
+
+bool ProgramPanel::save() {
+    if (m_path.empty()) return false;
+    if (m_editor->numbersStale()) m_editor->renumber();
+    m_file.text = m_editor->toPlainText();
+    const MaybeError error = writeProgramFile(m_path, m_file);
+    m_file.text.clear();
+    if (error) {
+        emit message(Severity::Error,
+                     translatedMessage(*error) + QStringLiteral(" (") + fileText(m_path) + ')');
+        return false;
+    }
+    m_editor->document()->setModified(false);
+    m_autosaveTimer->stop();
+    m_recovery.discard(m_path);
+    m_recovered.reset();
+    emit message(Severity::Note, tr("Saved %1").arg(fileText(m_path.filename())));
+    return true;
+}
+
+bool ProgramPanel::modified() const {
+    return m_editor->document()->isModified();
+}
+
+void ProgramPanel::restoreRecovery() {
+    if (!m_recovered) return;
+    // As one edit, so that undo returns to the saved file.
+    QTextCursor cursor(m_editor->document());
+    cursor.select(QTextCursor::Document);
+    cursor.insertText(*m_recovered);
+    m_recovered.reset();
+}
+
+void ProgramPanel::discardRecovery() {
+    m_recovery.discard(m_path);
+    m_recovered.reset();
+}
+
+void ProgramPanel::autosave() {
+    if (m_path.empty() || !modified()) return;
+    if (const MaybeError error = m_recovery.store(m_path, m_editor->toPlainText())) {
+        emit message(Severity::Warning, tr("Autosave failed: %1").arg(translatedMessage(*error)));
+    }
+}
+
+void ProgramPanel::checkNow() {
+    m_checkTimer->stop();
+    if (!m_path.empty()) m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect());
+}
+
+void ProgramPanel::onEdited() {
+    if (m_loading) return;
+    m_autosaveTimer->start();
+    m_checkTimer->start();
+}
+
+void ProgramPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange && !loading()) refreshTitle();
+    QWidget::changeEvent(event);
+}
+
+void ProgramPanel::refreshTitle() {
+    const QString name = m_path.empty() ? tr("No program") : fileText(m_path.filename());
+    m_title->setText(modified() ? name + QStringLiteral(" *") : name);
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <QString>
+#include <QWidget>
+#include <filesystem>
+#include <optional>
+
+#include "core/base/diagnostic.h"
+#include "core/machine/machine_config.h"
+#include "ui/editor/program_file.h"
+#include "ui/editor/recovery_store.h"
+
+class QLabel;
+class QTimer;
+
+namespace kerf::ui {
+
+class FindBar;
+class ProgramChecker;
+class ProgramLoader;
+class ProgramEditor;
+
+// The program panel of the workspace: the open program's name, the editor and its find bar.
+// It checks the text a moment after each edit, autosaves unsaved edits to the recovery store
+// and saves atomically in the file's own encoding and line ends.
+class ProgramPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    struct Settings {
+        machine::MachineConfig machine;
+        std::filesystem::path ncRoot;
+        std::filesystem::path recoveryFolder;
+        int autosaveDelayMs = 3000;  // after the last edit
+        int checkDelayMs = 400;      // after the last edit
+        // Files from this size on are read in the background (ProgramLoader); open() returns at
+        // once and fileChanged() follows when the program is there.
+        uintmax_t backgroundLoadBytes = 1u << 20;
+    };
+
+    ProgramPanel(Settings settings, QWidget* parent = nullptr);
+    ~ProgramPanel() override;
+
+    // False (and message()) if the file cannot be read.
+    bool open(const std::filesystem::path& path);
+    bool loading() const;
+    bool save();
+    const std::filesystem::path& path() const { return m_path; }
+    bool modified() const;
+
+    // An autosaved copy newer than the file was found when it was opened.
+    bool recoveryAvailable() const { return m_recovered.has_value(); }
+    void restoreRecovery();
+    void discardRecovery();
+    // Writes the autosave copy now (the timer does this after each pause in typing).
+    void autosave();
+
+    void checkNow();
+    const DiagnosticList& diagnostics() const { return m_diagnostics; }
+
+    ProgramEditor* editor() const { return m_editor; }
+    FindBar* findBar() const { return m_findBar; }
+    ProgramChecker* checker() const { return m_checker; }
+
+signals:
+    void message(kerf::Severity severity, const QString& text);
+    void diagnosticsChanged(const kerf::DiagnosticList& diagnostics);
+    void fileChanged();
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void onEdited();
+    void watchDocument();
+    void finishOpen(const std::filesystem::path& path);
+    void refreshTitle();
+
+    Settings m_settings;
+    RecoveryStore m_recovery;
+    std::filesystem::path m_path;
+    ProgramText m_file;
+    std::optional<QString> m_recovered;
+    DiagnosticList m_diagnostics;
+    QLabel* m_title = nullptr;
+    ProgramEditor* m_editor = nullptr;
+    FindBar* m_findBar = nullptr;
+    ProgramChecker* m_checker = nullptr;
+    ProgramLoader* m_loader = nullptr;
+    QTimer* m_autosaveTimer = nullptr;
+    QTimer* m_checkTimer = nullptr;
+    bool m_loading = false;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,147 @@
+#include "ui/shell/message_panel.h"
+
+#include <QEvent>
+#include <QHeaderView>
+#include <QPushButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include "ui/common/diagnostic_text.h"
+#include "ui/shell/softkey_bar.h"
+
+namespace kerf::ui {
+
+namespace {
+
+constexpr int kSeverityRole = Qt::UserRole;
+constexpr int kLineRole = Qt::UserRole + 1;
+constexpr int kFromCheckRole = Qt::UserRole + 2;
+
+QColor severityColor(Severity severity) {
+    switch (severity) {
+        case Severity::Error:
+            return QColor(0xc0, 0x1c, 0x1c);
+        case Severity::Warning:
+            return QColor(0xa0, 0x60, 0x00);
+        case Severity::Note:
+            return QColor(0x30, 0x50, 0x90);
+    }
+    return {};
+}
+
+}  // namespace
+
+MessagePanel::MessagePanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("messagePanel");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_line = new QPushButton(this);
+    m_line->setObjectName("messageLine");
+    m_line->setFlat(true);
+    m_line->setMinimumHeight(SoftkeyBar::kMinimumKeyHeight);
+    m_line->setFocusPolicy(Qt::NoFocus);
+    m_line->setStyleSheet(QStringLiteral("text-align: left; padding-left: 8px;"));
+    connect(m_line, &QPushButton::clicked, this, [this] { setListVisible(m_list->isHidden()); });
+    layout->addWidget(m_line);
+
+    m_list = new QTreeWidget(this);
+    m_list->setObjectName("messageList");
+    m_list->setRootIsDecorated(false);
+    m_list->setColumnCount(3);
+    m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Line")});
+    m_list->header()->setSectionResizeMode(1, QHeaderView::Stretch);
+    m_list->header()->setStretchLastSection(false);
+    m_list->setMaximumHeight(180);
+    m_list->hide();
+    connect(m_list, &QTreeWidget::itemActivated, this,
+            [this](QTreeWidgetItem* item) { activate(m_list->indexOfTopLevelItem(item)); });
+    connect(m_list, &QTreeWidget::itemClicked, this,
+            [this](QTreeWidgetItem* item) { activate(m_list->indexOfTopLevelItem(item)); });
+    layout->addWidget(m_list);
+    refreshLine();
+}
+
+QTreeWidgetItem* MessagePanel::makeItem(Severity severity, const QString& text, int line,
+                                        bool fromCheck) {
+    auto* item = new QTreeWidgetItem(
+        {severityText(severity), text, line > 0 ? QString::number(line) : QString()});
+    item->setData(0, kSeverityRole, static_cast<int>(severity));
+    item->setData(0, kLineRole, line);
+    item->setData(0, kFromCheckRole, fromCheck);
+    item->setForeground(0, severityColor(severity));
+    return item;
+}
+
+void MessagePanel::setCheckDiagnostics(const DiagnosticList& diagnostics) {
+    for (int i = m_list->topLevelItemCount() - 1; i >= 0; --i) {
+        if (m_list->topLevelItem(i)->data(0, kFromCheckRole).toBool())
+            delete m_list->takeTopLevelItem(i);
+    }
+    for (const Diagnostic& d : diagnostics) {
+        m_list->addTopLevelItem(
+            makeItem(d.severity, translatedMessage(d), static_cast<int>(d.line), true));
+    }
+    refreshLine();
+}
+
+void MessagePanel::addMessage(Severity severity, const QString& text, int line) {
+    m_list->addTopLevelItem(makeItem(severity, text, line, false));
+    refreshLine();
+}
+
+void MessagePanel::clearMessages() {
+    m_list->clear();
+    refreshLine();
+}
+
+int MessagePanel::messageCount() const {
+    return m_list->topLevelItemCount();
+}
+
+void MessagePanel::activate(int row) {
+    QTreeWidgetItem* item = m_list->topLevelItem(row);
+    if (item == nullptr) return;
+    const int line = item->data(0, kLineRole).toInt();
+    if (line > 0) emit lineActivated(line);
+}
+
+void MessagePanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Line")});
+        refreshLine();
+    }
+    QWidget::changeEvent(event);
+}
+
+void MessagePanel::setListVisible(bool visible) {
+    m_list->setVisible(visible);
+}
+
+void MessagePanel::refreshLine() {
+    // The line shows the most severe message (the first of them) and how many there are.
+    QTreeWidgetItem* worst = nullptr;
+    int worstSeverity = -1;
+    for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = m_list->topLevelItem(i);
+        const int severity = item->data(0, kSeverityRole).toInt();
+        if (severity > worstSeverity) {
+            worst = item;
+            worstSeverity = severity;
+        }
+    }
+    if (worst == nullptr) {
+        m_line->setText(tr("No messages"));
+        m_line->setStyleSheet(QStringLiteral("text-align: left; padding-left: 8px;"));
+        return;
+    }
+    const QString block =
+        worst->text(2).isEmpty() ? QString() : tr("line %1: ").arg(worst->text(2));
+    const int others = m_list->topLevelItemCount() - 1;
+    QString text = tr("%1 - %2%3").arg(worst->text(0), block, worst->text(1));
+    if (others > 0) text += tr(" (%n more)", nullptr, others);
+    m_line->setText(text);
+    m_line->setStyleSheet(QStringLiteral("text-align: left; padding-left: 8px; color: %1;")
+                              .arg(severityColor(static_cast<Severity>(worstSeverity)).name()));
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <QString>
+#include <QWidget>
+
+#include "core/base/diagnostic.h"
+
+class QPushButton;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace kerf::ui {
+
+// The message line under the header and the message list it opens: each message has a
+// severity, a text and the block (line) it refers to. Activating a message that names a line
+// asks the editor to jump there.
+class MessagePanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit MessagePanel(QWidget* parent = nullptr);
+
+    // Replaces the program check's messages (messages from other sources stay).
+    void setCheckDiagnostics(const DiagnosticList& diagnostics);
+    // Adds one message from the HMI itself (refused mode change, save error ...).
+    void addMessage(Severity severity, const QString& text, int line = 0);
+    void clearMessages();
+
+    int messageCount() const;
+    QTreeWidget* list() const { return m_list; }
+    QPushButton* line() const { return m_line; }
+    // Activates message `row` of the list as a click would.
+    void activate(int row);
+    void setListVisible(bool visible);
+
+signals:
+    void lineActivated(int line);
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    QTreeWidgetItem* makeItem(Severity severity, const QString& text, int line, bool fromCheck);
+    void refreshLine();
+
+    QPushButton* m_line = nullptr;
+    QTreeWidget* m_list = nullptr;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <functional>
+
+#include "core/task/operating_mode.h"
+
+namespace kerf::ui {
+
+// Which of the two active modes fills the screen: a TNC shows one machine mode and one
+// programming mode, and the operator switches the screen between them.
+enum class ScreenMode { Machine, Programming };
+
+// The UI side of core/task's ModeMachine: forwards the operator's mode requests, reports refusals
+// as translated messages and tells the window what to show.
+class ModeController : public QObject {
+    Q_OBJECT
+
+public:
+    explicit ModeController(QObject* parent = nullptr);
+
+    // Asked on every machine-mode request: is a program or MDI block moving the machine?
+    void setMovingQuery(std::function<bool()> moving) { m_moving = std::move(moving); }
+
+    task::MachineMode machineMode() const { return m_modes.machineMode(); }
+    task::ProgrammingMode programmingMode() const { return m_modes.programmingMode(); }
+    ScreenMode screen() const { return m_screen; }
+
+    // Both bring the requested mode to the screen. False (and refused()) if the task refuses.
+    bool requestMachineMode(task::MachineMode mode);
+    void requestProgrammingMode(task::ProgrammingMode mode);
+
+    static QString machineModeText(task::MachineMode mode);
+    static QString programmingModeText(task::ProgrammingMode mode);
+
+signals:
+    void modesChanged();
+    void refused(const QString& message);
+
+private:
+    task::ModeMachine m_modes;
+    ScreenMode m_screen = ScreenMode::Machine;
+    std::function<bool()> m_moving;
+};
+
+}  // namespace kerf::ui
