@@ -3,7 +3,10 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/runner/drive_output.h"
 #include "app/runner/headless_run.h"
+#include "app/runner/motion_output.h"
+#include "app/runner/picture_output.h"
 
 #ifdef KERF_WITH_UI
 #include "ui/shell/hmi_main.h"
@@ -36,6 +39,22 @@ int main(int argc, char** argv) {
     run->add_option("--trace", runOptions.traceFile, "write the canonical trace ('-' for stdout)");
     run->add_option("--state-dir", runOptions.stateDir, "folder for remanent QR parameters");
     run->add_option("--max-blocks", runOptions.maxBlocks, "stop after this many blocks");
+    run->add_option("--png", runOptions.png, "write a picture of the toolpath (and stock) as PNG");
+    run->add_option("--view", runOptions.view, "view of the picture: 3d, top, front, side, section")
+        ->check(CLI::IsMember({"3d", "top", "front", "side", "section"}));
+    run->add_option("--size", runOptions.size, "picture size WxH (default 1280x800)");
+    run->add_flag("--stock", runOptions.stock, "simulate material removal (picture and report)");
+    run->add_option("--drives", runOptions.drives,
+                    "run through the drive chain: can-sim (CANopen master, simulated drives)");
+    run->add_option("--can-trace", runOptions.canTrace, "write every CAN frame as a candump log");
+    run->add_flag("--motion", runOptions.motion,
+                  "execute through planner and servo cycle in simulated time (report: motion)");
+    run->add_option("--samples", runOptions.samples,
+                    "with --motion: write every servo cycle's setpoints as CSV");
+    run->add_option("--work-offset", runOptions.workOffset,
+                    "with --motion: machine coordinates of the workpiece origin, e.g. Z-300");
+    run->add_option("--inject-fault", runOptions.injectFaults,
+                    "NODE:KIND@SECONDS, e.g. 2:heartbeat@1.5 (repeatable; see docs/drives.md)");
 
 #ifdef KERF_WITH_UI
     kerf::ui::HmiOptions hmi;
@@ -43,6 +62,12 @@ int main(int argc, char** argv) {
     app.add_option("--screenshot", hmi.screenshot, "save a picture of the HMI to this PNG and exit");
     std::string size;
     app.add_option("--size", size, "window size WxH for --screenshot (default 1280x800)");
+    app.add_option("--nc-root", hmi.ncRoot,
+                   "folder of programs and tables (default: user data folder)");
+    app.add_option("--program", hmi.program, "program to open at start");
+    app.add_option("--mode", hmi.mode,
+                   "mode on screen: manual, handwheel, mdi, single, full, programming, testrun");
+    app.add_option("--language", hmi.language, "HMI language: en, pt, pl");
 #endif
 
     try {
@@ -52,7 +77,21 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     if (*check) return kerf::app::checkProgramCommand(checkOptions, std::cerr);
-    if (*run) return kerf::app::runProgramCommand(runOptions, std::cerr);
+    if (*run) {
+        if (runOptions.size && !kerf::app::parsePictureSize(*runOptions.size)) {
+            std::cerr << "kerf: --size must be WIDTHxHEIGHT (16..8192 each)\n";
+            return 2;
+        }
+        if (runOptions.workOffset && !kerf::app::parseWorkOffset(*runOptions.workOffset)) {
+            std::cerr << "kerf: --work-offset must be axis letters with values, e.g. X10,Z-300\n";
+            return 2;
+        }
+        if (auto error = kerf::app::checkDriveOptions(runOptions)) {
+            std::cerr << "kerf: " << *error << '\n';
+            return 2;
+        }
+        return kerf::app::runProgramCommand(runOptions, std::cerr);
+    }
 #ifdef KERF_WITH_UI
     if (!size.empty() && std::sscanf(size.c_str(), "%dx%d", &hmi.width, &hmi.height) != 2) {
         std::cerr << "kerf: --size must be WIDTHxHEIGHT\n";

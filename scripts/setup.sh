@@ -29,5 +29,7 @@ if ((${#missing[@]})); then
 fi
 
 cd "$root"
+# Let clones in other folders (CI uses a fresh clone) share ccache's results.
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset"

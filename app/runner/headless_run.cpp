@@ -6,6 +6,9 @@
 #include <memory>
 #include <ostream>
 
+#include "app/runner/drive_output.h"
+#include "app/runner/motion_output.h"
+#include "app/runner/picture_output.h"
 #include "app/runner/run_report.h"
 #include "app/runner/session.h"
 #include "core/base/atomic_file.h"
@@ -53,6 +56,12 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     canon::TeeSink sinks;
     sinks.add(statistics);
     sinks.add(displayMode);
+    PictureOutput picture(options, *session);
+    if (picture.active()) sinks.add(picture.sink());
+    DriveOutput drives(options, *session);
+    if (drives.active()) sinks.add(drives.sink());
+    MotionOutput motion(options, *session);
+    if (motion.active()) sinks.add(motion.sink());
 
     std::FILE* traceStream = nullptr;
     std::unique_ptr<canon::TracePrinter> trace;
@@ -82,13 +91,21 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     if (session->ready) {
         interp::Interpreter& interpreter = *session->interpreter;
         statistics.setStart(interpreter.nominalPosition());
+        picture.setStart(interpreter.nominalPosition());
+        drives.setStart(interpreter.nominalPosition(), runProblems);
+        motion.setStart(interpreter.nominalPosition());
         for (;;) {
+            if (drives.stopped()) break;  // a drive fault ends the program
+            if (motion.refused()) break;  // e.g. beyond a soft limit: nothing moved
             const uint64_t left = options.maxBlocks - interpreter.blocksExecuted();
-            interp::RunStatus status = interpreter.run(sinks, std::min(kBlocksPerSlice, left));
+            interp::RunStatus status =
+                interpreter.run(sinks, std::min(drives.blocksPerSlice(kBlocksPerSlice), left));
             if (status == interp::RunStatus::NeedsSync) {
                 // Without motion the machine is exactly where the program put it.
                 interp::WorldSnapshot world;
                 world.position = statistics.position();
+                if (motion.active()) world = motion.drain();
+                if (drives.active()) world = drives.drain();
                 interpreter.resume(world);
                 continue;
             }
@@ -120,6 +137,9 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         }
     }
     const canon::PathStatistics& results = rejected ? nothingRan : statistics;
+    picture.finish(session->ready && !rejected, runProblems);
+    drives.finish(runProblems);
+    motion.finish(session->ready && !rejected, runProblems);
 
     RunSummary summary;
     summary.diagnostics = session->allDiagnostics();
@@ -132,6 +152,9 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
 
     if (options.reportFile) {
         nlohmann::json report = buildRunReport(summary, results, session->machine);
+        picture.addToReport(report);
+        drives.addToReport(report, summary.xInDiameter);
+        motion.addToReport(report, summary.xInDiameter);
         if (auto error = writeFileAtomically(*options.reportFile, report.dump(2) + "\n")) {
             diagnostics << error->format() << '\n';
             return 1;

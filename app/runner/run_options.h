@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace kerf::app {
 
@@ -19,6 +20,20 @@ struct RunOptions {
     std::optional<std::filesystem::path> stateDir;   // where QR parameters are kept
     uint64_t maxBlocks = 2'000'000'000;  // guard against endless loops
     bool blockSkip = false;
+    // Pictures and material removal (app/runner/picture_output.h, docs/graphics.md).
+    std::optional<std::filesystem::path> png;
+    std::optional<std::string> view;  // 3d, top, front, side, section
+    std::optional<std::string> size;  // WIDTHxHEIGHT
+    bool stock = false;
+    // The drive chain (app/runner/drive_output.h, docs/drives.md): "can-sim" runs planner, servo
+    // cycle, CANopen master and simulated drives on the virtual bus.
+    std::optional<std::string> drives;
+    std::optional<std::filesystem::path> canTrace;  // candump log of every frame
+    std::vector<std::string> injectFaults;          // NODE:KIND@SECONDS
+    // Motion in simulated time (app/runner/motion_output.h, docs/motion.md); --samples implies it.
+    bool motion = false;
+    std::optional<std::filesystem::path> samples;  // CSV of every servo cycle's setpoints
+    std::optional<std::string> workOffset;  // "X0,Y0,Z-300": workpiece origin, machine coords
 };
 
 }  // namespace kerf::app
