@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Klartext test paths for the graphics benchmark (docs/benchmarks-graphics.md).
+"""Klartext test paths for the graphics benchmark (docs/benchmarks.md).
 
 Usage: gen_paths.py MODE BLOCKS -o FILE
   raster  rows of 1000 L blocks 0.1 mm long, rows 0.1 mm apart, never over the same place twice,

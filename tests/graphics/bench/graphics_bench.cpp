@@ -1,6 +1,6 @@
 // Graphics benchmark: toolpath load (canonical stream -> compact arrays -> levels of detail ->
 // VTK buffers -> first frame), frame rate on the machine's OpenGL (llvmpipe here) and stock
-// simulation throughput. Figures in docs/benchmarks-graphics.md;
+// simulation throughput. Figures in docs/benchmarks.md;
 // programs from bench/gen_paths.py.
 //
 //   graphics_bench PROGRAM [--size WxH] [--frames N] [--resolution MM] [--tool-radius R]
