@@ -2,55 +2,22 @@
 // for a bounded number of blocks without crashing, hanging or leaking.
 #include <cstddef>
 #include <cstdint>
-#include <filesystem>
 #include <string>
 
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
-
-namespace {
-
-class NullSink final : public kerf::canon::Sink {
-public:
-    void consume(const kerf::canon::Command&) override {}
-};
-
-const kerf::machine::MachineConfig& mill() {
-    static const kerf::machine::MachineConfig config = *kerf::machine::loadMachine("mill");
-    return config;
-}
-
-const std::filesystem::path& root() {
-    static const std::filesystem::path path = [] {
-        auto p = std::filesystem::temp_directory_path() / "kerf_fuzz_root";
-        std::filesystem::create_directories(p);
-        return p;
-    }();
-    return path;
-}
-
-}  // namespace
+#include "fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    static const kerf::machine::MachineConfig machine = *kerf::machine::loadMachine("mill");
+    static const std::filesystem::path root = kerf::fuzz::sandbox("kerf_fuzz_root");
     kerf::program::SourceRegistry sources;
     kerf::klartext::KlartextSettings settings;
-    settings.machine = &mill();
-    settings.ncRoot = root();
+    settings.machine = &machine;
+    settings.ncRoot = root;
     kerf::klartext::KlartextInterpreter interpreter(sources, settings);
     std::string text(reinterpret_cast<const char*>(data), size);
-    if (!interpreter.loadText(std::move(text), (root() / "FUZZ.H").string())) return 0;
-    NullSink sink;
-    uint64_t budget = 20000;
-    while (budget > 0) {
-        auto status = interpreter.run(sink, 1000);
-        budget = budget > 1000 ? budget - 1000 : 0;
-        if (status == kerf::interp::RunStatus::NeedsSync) {
-            kerf::interp::WorldSnapshot world;
-            world.position = interpreter.nominalPosition();
-            interpreter.resume(world);
-            continue;
-        }
-        if (status != kerf::interp::RunStatus::BudgetUsed) break;
-    }
+    if (!interpreter.loadText(std::move(text), (root / "FUZZ.H").string())) return 0;
+    kerf::fuzz::runBounded(interpreter, 20000);
     return 0;
 }
