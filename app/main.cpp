@@ -1,7 +1,7 @@
-#include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <iostream>
+
+#include <CLI/CLI.hpp>
 
 #include "app/runner/drive_output.h"
 #include "app/runner/headless_run.h"
@@ -17,9 +17,11 @@ namespace {
 void addProgramOptions(CLI::App& command, kerf::app::RunOptions& options) {
     command.add_option("program", options.program, "NC program")->required();
     command.add_option("--machine", options.machine, "mill, lathe or a machine TOML file");
-    command.add_option("--dialect", options.dialect, "klartext, tnciso or fagor (default: from the file)");
+    command.add_option("--dialect", options.dialect,
+                       "klartext, tnciso or fagor (default: from the file)");
     command.add_option("--tool-table", options.toolTable, "TNC tool table (.T)");
-    command.add_option("--nc-root", options.ncRoot, "folder the program may read and write (default: its folder)");
+    command.add_option("--nc-root", options.ncRoot,
+                       "folder the program may read and write (default: its folder)");
     command.add_flag("--block-skip", options.blockSkip, "skip blocks marked with /");
 }
 
@@ -59,7 +61,8 @@ int main(int argc, char** argv) {
 #ifdef KERF_WITH_UI
     kerf::ui::HmiOptions hmi;
     app.add_option("--machine", hmi.machine, "machine for the HMI: mill, lathe or a TOML file");
-    app.add_option("--screenshot", hmi.screenshot, "save a picture of the HMI to this PNG and exit");
+    app.add_option("--screenshot", hmi.screenshot,
+                   "save a picture of the HMI to this PNG and exit");
     std::string size;
     app.add_option("--size", size, "window size WxH for --screenshot (default 1280x800)");
     app.add_option("--nc-root", hmi.ncRoot,

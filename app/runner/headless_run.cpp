@@ -22,7 +22,8 @@ namespace {
 constexpr uint64_t kBlocksPerSlice = 1u << 16;
 
 void printDiagnostics(const DiagnosticList& diagnostics, std::ostream& out) {
-    for (const Diagnostic& d : diagnostics) out << d.format() << '\n';
+    for (const Diagnostic& d : diagnostics)
+        out << d.format() << '\n';
 }
 
 AxisMask axisMaskOf(const machine::MachineConfig& machine) {
@@ -121,8 +122,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         blocks = interpreter.blocksExecuted();
     }
     if (trace && !trace->flush()) {
-        runProblems.push_back(Diagnostic::make(Severity::Error, "io", options.traceFile->string(), 0,
-                                               0, KERF_TR_NOOP("cannot write the trace")));
+        runProblems.push_back(Diagnostic::make(Severity::Error, "io", options.traceFile->string(),
+                                               0, 0, KERF_TR_NOOP("cannot write the trace")));
     }
     trace.reset();
     if (traceStream != nullptr && traceStream != stdout) std::fclose(traceStream);

@@ -52,7 +52,8 @@ nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatis
         if (!axis) continue;
         const size_t i = static_cast<size_t>(axisIndex(*axis));
         const std::string key(1, letter);
-        position[key] = clean(displayed(letter, statistics.position().values[i], summary.xInDiameter));
+        position[key] =
+            clean(displayed(letter, statistics.position().values[i], summary.xInDiameter));
         if (!bounds.empty) {
             double a = displayed(letter, bounds.min[i], summary.xInDiameter);
             double b = displayed(letter, bounds.max[i], summary.xInDiameter);

@@ -39,8 +39,8 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     DiagnosticList machineProblems;
     auto machine = machine::loadMachine(options.machine, &machineProblems);
     if (!machine) {
-        session->diagnostics = machineProblems.empty() ? DiagnosticList{machine.error()}
-                                                       : machineProblems;
+        session->diagnostics =
+            machineProblems.empty() ? DiagnosticList{machine.error()} : machineProblems;
         return session;
     }
     session->machine = *machine;
@@ -58,7 +58,8 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         session->dialect = program::dialectForFile(options.program.string(), lathe);
     }
     const fs::path programPath = fs::absolute(options.program);
-    const fs::path ncRoot = options.ncRoot ? fs::absolute(*options.ncRoot) : programPath.parent_path();
+    const fs::path ncRoot =
+        options.ncRoot ? fs::absolute(*options.ncRoot) : programPath.parent_path();
     std::optional<fs::path> toolFile = options.toolTable;
     std::error_code ignored;
     if (!toolFile && fs::exists(ncRoot / "TOOL.T", ignored)) toolFile = ncRoot / "TOOL.T";

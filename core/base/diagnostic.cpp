@@ -36,7 +36,9 @@ std::string substituteArgs(std::string_view messageTemplate, const std::vector<s
     return out;
 }
 
-std::string Diagnostic::message() const { return substituteArgs(messageTemplate, args); }
+std::string Diagnostic::message() const {
+    return substituteArgs(messageTemplate, args);
+}
 
 std::string Diagnostic::format() const {
     std::string out = file.empty() ? std::string("kerf") : file;

@@ -20,8 +20,8 @@ void appendFixed(std::string& out, double value, int decimals) {
     const double magnitude = std::fabs(value) * static_cast<double>(scale);
     if (!(magnitude < 9.0e15)) {  // also NaN and infinity
         char buffer[64];
-        auto result = std::to_chars(buffer, buffer + sizeof buffer, value,
-                                    std::chars_format::fixed, decimals);
+        auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed,
+                                    decimals);
         out.append(buffer, result.ptr);
         return;
     }

@@ -18,6 +18,8 @@ Int saturatingCast(double value) {
     return static_cast<Int>(value);
 }
 
-inline int saturatingInt(double value) { return saturatingCast<int>(value); }
+inline int saturatingInt(double value) {
+    return saturatingCast<int>(value);
+}
 
 }  // namespace kerf

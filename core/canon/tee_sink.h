@@ -11,7 +11,8 @@ class TeeSink final : public Sink {
 public:
     void add(Sink& sink) { m_sinks.push_back(&sink); }
     void consume(const Command& command) override {
-        for (Sink* sink : m_sinks) sink->consume(command);
+        for (Sink* sink : m_sinks)
+            sink->consume(command);
     }
 
 private:

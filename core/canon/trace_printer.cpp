@@ -11,7 +11,9 @@ TracePrinter::TracePrinter(std::FILE* stream, TraceFormat format)
     m_buffer.reserve(kFlushThreshold + 512);
 }
 
-TracePrinter::~TracePrinter() { flush(); }
+TracePrinter::~TracePrinter() {
+    flush();
+}
 
 void TracePrinter::consume(const Command& command) {
     appendCommand(m_buffer, command, m_format);

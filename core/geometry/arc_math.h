@@ -8,12 +8,20 @@ namespace kerf {
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kTwoPi = 2.0 * kPi;
-inline double degToRad(double deg) { return deg * (kPi / 180.0); }
-inline double radToDeg(double rad) { return rad * (180.0 / kPi); }
+inline double degToRad(double deg) {
+    return deg * (kPi / 180.0);
+}
+inline double radToDeg(double rad) {
+    return rad * (180.0 / kPi);
+}
 
-inline double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross2(const Vec2& a, const Vec2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
 // Left normal of a direction (rotated +90 degrees).
-inline Vec2 leftNormal(const Vec2& d) { return {-d.y(), d.x()}; }
+inline Vec2 leftNormal(const Vec2& d) {
+    return {-d.y(), d.x()};
+}
 
 // Signed sweep in radians (positive counter-clockwise) from start to end around center. When start
 // and end coincide the arc is a full circle (+-2 pi).

@@ -17,7 +17,9 @@ inline constexpr int kAxisCount = 9;
 
 char axisLetter(Axis axis);
 std::optional<Axis> axisFromLetter(char letter);
-inline constexpr int axisIndex(Axis axis) { return static_cast<int>(axis); }
+inline constexpr int axisIndex(Axis axis) {
+    return static_cast<int>(axis);
+}
 
 // A position of every programmed axis (linear in mm, rotary in degrees).
 struct Pose {
@@ -36,7 +38,9 @@ struct Pose {
 
 // Bit set of axes (bit i = Axis i).
 using AxisMask = uint16_t;
-inline constexpr AxisMask axisBit(Axis axis) { return static_cast<AxisMask>(1u << axisIndex(axis)); }
+inline constexpr AxisMask axisBit(Axis axis) {
+    return static_cast<AxisMask>(1u << axisIndex(axis));
+}
 inline constexpr AxisMask kXyzMask = axisBit(Axis::X) | axisBit(Axis::Y) | axisBit(Axis::Z);
 
 }  // namespace kerf

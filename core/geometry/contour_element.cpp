@@ -10,8 +10,10 @@ namespace {
 constexpr double kEps = 1e-9;
 
 double normalizeAngle(double a) {
-    while (a <= -kPi) a += kTwoPi;
-    while (a > kPi) a -= kTwoPi;
+    while (a <= -kPi)
+        a += kTwoPi;
+    while (a > kPi)
+        a -= kTwoPi;
     return a;
 }
 

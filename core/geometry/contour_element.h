@@ -34,7 +34,8 @@ struct ContourElement {
     double planarLength() const;
     // True when the element moves in the working plane (not only along the tool axis).
     bool movesInPlane() const {
-        return kind == Kind::Arc ? planarLength() > 1e-9 : (end2() - start2()).squaredNorm() > 1e-18;
+        return kind == Kind::Arc ? planarLength() > 1e-9
+                                 : (end2() - start2()).squaredNorm() > 1e-18;
     }
     Vec2 startTangent() const;
     Vec2 endTangent() const;

@@ -18,7 +18,7 @@ enum class RunStatus : uint8_t {
     BudgetUsed,  // more blocks to run; call run() again
     NeedsSync,   // drain motion, then resume() with fresh machine data
     Finished,
-    Failed,      // diagnostics() says why
+    Failed,  // diagnostics() says why
 };
 
 // A dialect front end: interprets a loaded program into canonical commands. The interpreter never

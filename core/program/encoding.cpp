@@ -1,10 +1,10 @@
 #include "core/program/encoding.h"
 
-#include <iconv.h>
-
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+
+#include <iconv.h>
 
 namespace kerf::program {
 
@@ -51,7 +51,8 @@ std::string convert(std::string_view input, const char* to, const char* from,
             outPtr = out.data() + used;
             outLeft = out.size() - used;
         }
-        for (char c : replacement) *outPtr++ = c;
+        for (char c : replacement)
+            *outPtr++ = c;
         outLeft -= replacement.size();
         ++in;
         --inLeft;

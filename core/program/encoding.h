@@ -5,8 +5,8 @@
 
 namespace kerf::program {
 
-// Text encodings seen in NC files: comments written on controls and PCs in Europe (cp1252) and China
-// (GBK). Syntax is ASCII, so only comments, strings and messages depend on it.
+// Text encodings seen in NC files: comments written on controls and PCs in Europe (cp1252) and
+// China (GBK). Syntax is ASCII, so only comments, strings and messages depend on it.
 enum class Encoding : uint8_t { Utf8, Cp1252, Gbk };
 
 const char* encodingName(Encoding encoding);

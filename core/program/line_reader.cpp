@@ -8,15 +8,19 @@ namespace kerf::program {
 
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t'; }
+bool isBlank(char c) {
+    return c == ' ' || c == '\t';
+}
 
 // Strips a trailing '~' (and the blanks before it); true if there was one.
 bool stripContinuation(std::string_view& line) {
     size_t end = line.size();
-    while (end > 0 && isBlank(line[end - 1])) --end;
+    while (end > 0 && isBlank(line[end - 1]))
+        --end;
     if (end == 0 || line[end - 1] != '~') return false;
     --end;
-    while (end > 0 && isBlank(line[end - 1])) --end;
+    while (end > 0 && isBlank(line[end - 1]))
+        --end;
     line = line.substr(0, end);
     return true;
 }

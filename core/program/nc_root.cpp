@@ -61,10 +61,10 @@ Expected<fs::path> NcRoot::resolve(std::string_view name, const fs::path& caller
         base = m_root;
     }
     if (!text.empty() && text.front() == '/') base = m_root;
-    while (!text.empty() && text.front() == '/') text.erase(0, 1);
+    while (!text.empty() && text.front() == '/')
+        text.erase(0, 1);
     if (text.empty()) {
-        return Diagnostic::make(Severity::Error, "path", "", 0, 0,
-                                KERF_TR_NOOP("empty file name"));
+        return Diagnostic::make(Severity::Error, "path", "", 0, 0, KERF_TR_NOOP("empty file name"));
     }
     fs::path resolved = (base / text).lexically_normal();
     if (!contains(resolved)) {

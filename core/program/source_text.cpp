@@ -1,13 +1,13 @@
 #include "core/program/source_text.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-#include <algorithm>
-#include <cerrno>
-#include <cstring>
 
 namespace kerf::program {
 
@@ -76,8 +76,8 @@ Expected<std::shared_ptr<const SourceText>> SourceText::load(const std::filesyst
     }
     ::close(fd);
     std::string_view bytes(static_cast<const char*>(source->m_mapping), size);
-    source->m_encoding = isValidUtf8InChunks(bytes, source->m_mapping) ? Encoding::Utf8
-                                                                       : detectEncoding(bytes);
+    source->m_encoding =
+        isValidUtf8InChunks(bytes, source->m_mapping) ? Encoding::Utf8 : detectEncoding(bytes);
     if (source->m_encoding == Encoding::Utf8) {
         source->m_view = withoutBom(bytes);
     } else {
@@ -93,8 +93,8 @@ std::shared_ptr<const SourceText> SourceText::fromString(std::string text, std::
     std::shared_ptr<SourceText> source(new SourceText());
     source->m_path = std::move(path);
     source->m_encoding = detectEncoding(text);
-    source->m_owned = source->m_encoding == Encoding::Utf8 ? std::move(text)
-                                                           : toUtf8(text, source->m_encoding);
+    source->m_owned =
+        source->m_encoding == Encoding::Utf8 ? std::move(text) : toUtf8(text, source->m_encoding);
     source->m_view = withoutBom(source->m_owned);
     return source;
 }

@@ -42,7 +42,9 @@ bool BlockScan::consume(const canon::Command& command) {
 
 std::vector<canon::Command> BlockScan::restore(const Pose& current, Axis toolAxis) const {
     std::vector<canon::Command> out;
-    auto add = [&](canon::CommandBody body) { out.push_back(canon::Command{m_at, std::move(body)}); };
+    auto add = [&](canon::CommandBody body) {
+        out.push_back(canon::Command{m_at, std::move(body)});
+    };
     if (m_tool) add(*m_tool);
     if (m_tolerance) add(*m_tolerance);
     if (m_feedMode != canon::FeedMode::PerMinute) add(canon::SetFeedMode{m_feedMode});

@@ -8,7 +8,8 @@ bool InstantMotion::submit(const canon::Command& command) {
     if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) m_position = rapid->target;
     if (const auto* line = std::get_if<canon::LinearMove>(&body)) m_position = line->target;
     if (const auto* arc = std::get_if<canon::ArcMove>(&body)) m_position = arc->target;
-    if (const auto* synced = std::get_if<canon::SpindleSyncedMove>(&body)) m_position = synced->target;
+    if (const auto* synced = std::get_if<canon::SpindleSyncedMove>(&body))
+        m_position = synced->target;
     if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) m_position = probe->target;
     m_sink.consume(command);
     return true;

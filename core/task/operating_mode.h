@@ -11,7 +11,7 @@ namespace kerf::task {
 enum class MachineMode : uint8_t { Manual, Handwheel, Mdi, SingleBlock, FullSequence };
 enum class ProgrammingMode : uint8_t { Programming, TestRun };
 
-const char* machineModeName(MachineMode mode);          // English, translated by the UI
+const char* machineModeName(MachineMode mode);  // English, translated by the UI
 const char* programmingModeName(ProgrammingMode mode);
 
 // Why a mode change is refused, or nothing when it is allowed.

@@ -79,7 +79,8 @@ bool ProgramRun::submitQueued() {
     while (!m_queue.empty() && m_motion.hasRoom()) {
         if (!m_motion.submit(m_queue.front())) {
             m_motion.quickStop();
-            fail("motion", KERF_TR_NOOP("motion refused the block: {1}"), {m_motion.progress().fault});
+            fail("motion", KERF_TR_NOOP("motion refused the block: {1}"),
+                 {m_motion.progress().fault});
             return false;
         }
         m_queue.pop_front();

@@ -15,12 +15,12 @@ namespace kerf::task {
 enum class RunState : uint8_t {
     Idle,
     Running,
-    Held,           // feed hold
-    Stopped,        // M0/M1, single block or after a quick stop of a still-open program
-    WaitingForSync, // motion drains before the interpreter reads machine data
+    Held,            // feed hold
+    Stopped,         // M0/M1, single block or after a quick stop of a still-open program
+    WaitingForSync,  // motion drains before the interpreter reads machine data
     Finished,
-    Failed,         // diagnostics() says why
-    Aborted,        // the operator stopped the program
+    Failed,   // diagnostics() says why
+    Aborted,  // the operator stopped the program
 };
 
 const char* runStateName(RunState state);
@@ -50,7 +50,9 @@ public:
     void abort();
 
     RunState state() const { return m_state; }
-    bool moving() const { return m_state == RunState::Running || m_state == RunState::WaitingForSync; }
+    bool moving() const {
+        return m_state == RunState::Running || m_state == RunState::WaitingForSync;
+    }
     SourceLocation executingBlock() const { return m_motion.progress().block; }
     const DiagnosticList& diagnostics() const { return m_diagnostics; }
     uint64_t blocksExecuted() const { return m_interpreter ? m_interpreter->blocksExecuted() : 0; }

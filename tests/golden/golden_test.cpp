@@ -7,13 +7,12 @@
 //   expected.trace  the exact canonical trace
 //   expected.diag   the exact diagnostics, one per line, paths relative to the case folder
 // Each case runs in a temporary copy of its folder, so programs may write files.
-#include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "app/runner/headless_run.h"
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include <unistd.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+
+#include <unistd.h>
 
 namespace kerf::test {
 
@@ -23,8 +23,8 @@ inline std::filesystem::path sharedDir() {
 
 // A fresh empty folder for this test process (tests run in parallel, one process each).
 inline std::filesystem::path uniqueTempDir(const std::string& name) {
-    std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("kerf_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                ("kerf_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -39,7 +39,8 @@ bool startsValue(char c) {
 
 std::string upperCopy(std::string_view text) {
     std::string out(text);
-    for (char& c : out) c = upper(c);
+    for (char& c : out)
+        c = upper(c);
     return out;
 }
 
@@ -191,8 +192,9 @@ struct BlockParser::Context {
                 Cursor ahead(cursor.text(), cursor.position() + 1);
                 bare = !ahead.peekKeyword("AUTO") && !ahead.peekKeyword("MAX");
             }
-            if (bare && ((c == 'R' && (allowed & kComp) != 0) || (c == 'F' && (allowed & kFeed) != 0) ||
-                         (c == 'M' && (allowed & kM) != 0))) {
+            if (bare &&
+                ((c == 'R' && (allowed & kComp) != 0) || (c == 'F' && (allowed & kFeed) != 0) ||
+                 (c == 'M' && (allowed & kM) != 0))) {
                 cursor.setPosition(cursor.position() + 1);
                 continue;
             }
@@ -313,7 +315,8 @@ std::string_view BlockParser::headWord(std::string_view text) {
     c.skipBlanks();
     size_t start = c.position();
     size_t end = start;
-    while (end < text.size() && isLetter(text[end])) ++end;
+    while (end < text.size() && isLetter(text[end]))
+        ++end;
     return text.substr(start, end - start);
 }
 
@@ -369,11 +372,13 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     const size_t headAt = cur.position();
     size_t end = headAt;
     const std::string_view text = cur.text();
-    while (end < text.size() && isLetter(text[end])) ++end;
+    while (end < text.size() && isLetter(text[end]))
+        ++end;
     // Heads are short keywords: compare an upper-case copy kept on the stack.
     char headBuffer[16];
     const size_t headLength = std::min(end - headAt, sizeof headBuffer);
-    for (size_t i = 0; i < headLength; ++i) headBuffer[i] = upper(text[headAt + i]);
+    for (size_t i = 0; i < headLength; ++i)
+        headBuffer[i] = upper(text[headAt + i]);
     const std::string_view head(headBuffer, end - headAt <= sizeof headBuffer ? headLength : 0);
     cur.setPosition(end);
 
@@ -453,8 +458,9 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         FeedWord feed;
         if (upper(cur.peek()) == 'F' && !c.parseFeed(feed)) return false;
         if (!c.expectEnd()) return false;
-        if (value <= 0.0 && !c.valueError(round ? KERF_TR_NOOP("the rounding radius must be positive")
-                                                : KERF_TR_NOOP("the chamfer length must be positive"))) {
+        if (value <= 0.0 &&
+            !c.valueError(round ? KERF_TR_NOOP("the rounding radius must be positive")
+                                : KERF_TR_NOOP("the chamfer length must be positive"))) {
             return false;
         }
         if (feed.kind == FeedWord::Kind::Max) {
@@ -486,7 +492,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             b.kind = ApproachKind::LCT;
         } else {
             cur.setPosition(static_cast<size_t>(kind.data() - text.data()));
-            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"), {std::string(head)});
+            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"),
+                          {std::string(head)});
         }
         Words w{&b.coords, &b.words};
         w.polar = &b.polarWords;
@@ -590,7 +597,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     b.dr = v;
                 } else if (cur.acceptPrefix("S")) {
                     if (!c.value(v)) return false;
-                    if (v < 0.0 && !c.valueError(KERF_TR_NOOP("the spindle speed must not be negative"))) {
+                    if (v < 0.0 &&
+                        !c.valueError(KERF_TR_NOOP("the spindle speed must not be negative"))) {
                         return false;
                     }
                     b.speed = v;
@@ -730,7 +738,9 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     if (head == "FN") {
         auto fn = cur.unsignedInteger();
         if (!fn) return c.fail("syntax", KERF_TR_NOOP("FN number expected"));
-        if (!cur.acceptChar(':')) return c.fail("syntax", KERF_TR_NOOP("':' expected after FN {1}"), {std::to_string(*fn)});
+        if (!cur.acceptChar(':'))
+            return c.fail("syntax", KERF_TR_NOOP("':' expected after FN {1}"),
+                          {std::to_string(*fn)});
         auto target = [&]() -> std::optional<QRef> {
             auto ref = c.formula.parameter(false);
             if (!ref) {
@@ -813,12 +823,14 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 auto ref = target();
                 if (!ref) return false;
                 const char* op = *fn == 5 ? "SQRT" : (*fn == 6 ? "SIN" : "COS");
-                if (!cur.acceptKeyword(op)) return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {op});
+                if (!cur.acceptKeyword(op))
+                    return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {op});
                 double a = 0.0;
                 if (!operand(a)) return false;
                 double result;
                 if (*fn == 5) {
-                    if (a < 0.0 && m_env) return c.fail("math", KERF_TR_NOOP("square root of a negative number"));
+                    if (a < 0.0 && m_env)
+                        return c.fail("math", KERF_TR_NOOP("square root of a negative number"));
                     result = a < 0.0 ? 0.0 : std::sqrt(a);
                 } else {
                     double rad = a * 3.14159265358979323846 / 180.0;
@@ -832,15 +844,18 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             case 10:
             case 11:
             case 12: {
-                if (!cur.acceptKeyword("IF")) return c.fail("syntax", KERF_TR_NOOP("'IF' expected"));
+                if (!cur.acceptKeyword("IF"))
+                    return c.fail("syntax", KERF_TR_NOOP("'IF' expected"));
                 ConditionalJump b;
                 if (!operand(b.left)) return false;
                 static const char* const kWords[] = {"EQU", "NE", "GT", "LT"};
                 const char* word = kWords[*fn - 9];
-                if (!cur.acceptKeyword(word)) return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {word});
+                if (!cur.acceptKeyword(word))
+                    return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {word});
                 b.comparison = static_cast<Comparison>(*fn - 9);
                 if (!operand(b.right)) return false;
-                if (!cur.acceptKeyword("GOTO")) return c.fail("syntax", KERF_TR_NOOP("'GOTO' expected"));
+                if (!cur.acceptKeyword("GOTO"))
+                    return c.fail("syntax", KERF_TR_NOOP("'GOTO' expected"));
                 if (!cur.acceptKeyword("LBL") && !cur.acceptPrefix("LBL")) {
                     return c.fail("syntax", KERF_TR_NOOP("'LBL' expected"));
                 }
@@ -850,7 +865,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 return true;
             }
             case 14: {
-                if (!cur.acceptKeyword("ERROR")) return c.fail("syntax", KERF_TR_NOOP("'ERROR' expected"));
+                if (!cur.acceptKeyword("ERROR"))
+                    return c.fail("syntax", KERF_TR_NOOP("'ERROR' expected"));
                 if (!cur.acceptChar('=')) return c.fail("syntax", KERF_TR_NOOP("'=' expected"));
                 double number = 0.0;
                 if (!c.value(number)) return false;
@@ -859,7 +875,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 return true;
             }
             case 15: {
-                if (!cur.acceptKeyword("PRINT")) return c.fail("syntax", KERF_TR_NOOP("'PRINT' expected"));
+                if (!cur.acceptKeyword("PRINT"))
+                    return c.fail("syntax", KERF_TR_NOOP("'PRINT' expected"));
                 PrintBlock b;
                 if (auto textValue = cur.quoted()) {
                     b.text = std::string(*textValue);
@@ -893,8 +910,10 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     return c.fail("syntax", KERF_TR_NOOP("'mask file / output file' expected"));
                 }
                 auto trim = [](std::string_view s) {
-                    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-                    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+                    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+                        s.remove_prefix(1);
+                    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+                        s.remove_suffix(1);
                     return std::string(s);
                 };
                 b.maskFile = trim(rest.substr(0, slash));
@@ -906,7 +925,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 return true;
             }
             case 18: {
-                if (!cur.acceptKeyword("SYSREAD")) return c.fail("syntax", KERF_TR_NOOP("'SYSREAD' expected"));
+                if (!cur.acceptKeyword("SYSREAD"))
+                    return c.fail("syntax", KERF_TR_NOOP("'SYSREAD' expected"));
                 SysRead b;
                 auto ref = target();
                 if (!ref) return false;
@@ -930,7 +950,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             }
             case 23:
             case 24: {
-                if (!cur.acceptKeyword("CDATA")) return c.fail("syntax", KERF_TR_NOOP("'CDATA' expected"));
+                if (!cur.acceptKeyword("CDATA"))
+                    return c.fail("syntax", KERF_TR_NOOP("'CDATA' expected"));
                 CircleData b;
                 b.points = *fn == 23 ? 3 : 4;
                 auto ref = target();
@@ -941,14 +962,17 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 b.source = *source;
                 if (b.target.index + 2 >= qLimit(b.target.kind) ||
                     b.source.index + 2 * b.points - 1 >= qLimit(b.source.kind)) {
-                    return c.fail("range", KERF_TR_NOOP("the parameter range runs past the last Q parameter"));
+                    return c.fail(
+                        "range",
+                        KERF_TR_NOOP("the parameter range runs past the last Q parameter"));
                 }
                 if (!c.expectEnd()) return false;
                 out.statement = b;
                 return true;
             }
             case 26: {
-                if (!cur.acceptKeyword("TABOPEN")) return c.fail("syntax", KERF_TR_NOOP("'TABOPEN' expected"));
+                if (!cur.acceptKeyword("TABOPEN"))
+                    return c.fail("syntax", KERF_TR_NOOP("'TABOPEN' expected"));
                 std::string_view path = cur.restUntilComment();
                 if (path.empty()) return c.fail("syntax", KERF_TR_NOOP("table name expected"));
                 out.statement = TableOpen{std::string(path)};
@@ -959,7 +983,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 TableAccess b;
                 b.write = *fn == 27;
                 if (!cur.acceptKeyword(b.write ? "TABWRITE" : "TABREAD")) {
-                    return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"), {b.write ? "TABWRITE" : "TABREAD"});
+                    return c.fail("syntax", KERF_TR_NOOP("'{1}' expected"),
+                                  {b.write ? "TABWRITE" : "TABREAD"});
                 }
                 if (!b.write) {
                     auto ref = target();
@@ -971,7 +996,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 b.row = saturatingInt(row);
                 if (!cur.acceptChar('/')) return c.fail("syntax", KERF_TR_NOOP("'/' expected"));
                 auto columns = cur.quoted();
-                if (!columns) return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
+                if (!columns)
+                    return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
                 b.columns = std::string(*columns);
                 for (size_t start = 0; start <= columns->size();) {
                     size_t comma = columns->find(',', start);
@@ -982,15 +1008,19 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     }
                     start = comma + 1;
                 }
-                if (b.columnCount == 0) return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
+                if (b.columnCount == 0)
+                    return c.fail("syntax", KERF_TR_NOOP("column names in quotes expected"));
                 if (b.write) {
                     if (!cur.acceptChar('=')) return c.fail("syntax", KERF_TR_NOOP("'=' expected"));
                     auto ref = c.formula.parameter(false);
                     if (!ref) return c.fail("syntax", KERF_TR_NOOP("Q parameter expected"));
                     b.parameter = *ref;
                 }
-                if (b.parameter.index + b.columnCount > static_cast<size_t>(qLimit(b.parameter.kind))) {
-                    return c.fail("range", KERF_TR_NOOP("the parameter range runs past the last Q parameter"));
+                if (b.parameter.index + b.columnCount >
+                    static_cast<size_t>(qLimit(b.parameter.kind))) {
+                    return c.fail(
+                        "range",
+                        KERF_TR_NOOP("the parameter range runs past the last Q parameter"));
                 }
                 if (!c.expectEnd()) return false;
                 out.statement = b;
@@ -1005,7 +1035,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             case 38:
                 return deferred("FN " + std::to_string(*fn));
             default:
-                return c.fail("syntax", KERF_TR_NOOP("FN {1} does not exist"), {std::to_string(*fn)});
+                return c.fail("syntax", KERF_TR_NOOP("FN {1} does not exist"),
+                              {std::to_string(*fn)});
         }
     }
     if (head == "CYCL") {
@@ -1025,7 +1056,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         }
         return c.fail("syntax", KERF_TR_NOOP("DEF or CALL expected after CYCL"));
     }
-    if (head == "GLOBAL" && cur.acceptKeyword("DEF")) return parseGlobalDef(line, cur.position(), out);
+    if (head == "GLOBAL" && cur.acceptKeyword("DEF"))
+        return parseGlobalDef(line, cur.position(), out);
     if (head == "PATTERN" && cur.acceptKeyword("DEF")) {
         return parsePatternDef(line, cur.position(), out);
     }
@@ -1048,10 +1080,11 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         return true;
     }
     static const char* const kDeferredHeads[] = {
-        "PATTERN", "TCH", "SEL", "GLOBAL", "PLANE", "FUNCTION", "TRANS", "CONTOUR", "SPEC",
-        "FPOL", "FL", "FLT", "FC", "FCT", "FSELECT", "FSELCT", "LN", "PRESET", "POLARKIN",
-        "FACING", "TABDATA", "OPEN", "LIFTOFF", "WAIT", "ERROR", "MONITORING", "PARAXCOMP",
-        "PARAXMODE", "RESET", "SYSREAD", "CFGWRITE", "CFGREAD"};
+        "PATTERN", "TCH",     "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",
+        "CONTOUR", "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",
+        "FSELECT", "FSELCT",  "LN",       "PRESET", "POLARKIN",   "FACING",    "TABDATA",
+        "OPEN",    "LIFTOFF", "WAIT",     "ERROR",  "MONITORING", "PARAXCOMP", "PARAXMODE",
+        "RESET",   "SYSREAD", "CFGWRITE", "CFGREAD"};
     for (const char* candidate : kDeferredHeads) {
         if (head == candidate) {
             std::string feature(head);
@@ -1062,7 +1095,8 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 std::string_view what = cur.word();
                 feature = "SEL " + upperCopy(what);
             }
-            if (head[0] == 'F' && head != "FUNCTION" && head != "FACING") feature = "FK programming";
+            if (head[0] == 'F' && head != "FUNCTION" && head != "FACING")
+                feature = "FK programming";
             return deferred(feature);
         }
     }

@@ -8,7 +8,8 @@
 namespace kerf::klartext {
 
 void Cursor::skipBlanks() {
-    while (m_pos < m_text.size() && (m_text[m_pos] == ' ' || m_text[m_pos] == '\t')) ++m_pos;
+    while (m_pos < m_text.size() && (m_text[m_pos] == ' ' || m_text[m_pos] == '\t'))
+        ++m_pos;
 }
 
 bool Cursor::atEnd() {

@@ -20,28 +20,60 @@ struct FunctionEntry {
     UnaryFunction apply;
 };
 
-double sq(double x) { return x * x; }
-double sinDeg(double x) { return std::sin(degToRad(x)); }
-double cosDeg(double x) { return std::cos(degToRad(x)); }
-double tanDeg(double x) { return std::tan(degToRad(x)); }
-double asinDeg(double x) { return radToDeg(std::asin(x)); }
-double acosDeg(double x) { return radToDeg(std::acos(x)); }
-double atanDeg(double x) { return radToDeg(std::atan(x)); }
-double neg(double x) { return -x; }
-double integer(double x) { return std::trunc(x); }
-double fraction(double x) { return x - std::trunc(x); }
-double sgn(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
-double absolute(double x) { return std::fabs(x); }
-double squareRoot(double x) { return std::sqrt(x); }
-double naturalLog(double x) { return std::log(x); }
-double log10Of(double x) { return std::log10(x); }
-double expOf(double x) { return std::exp(x); }
+double sq(double x) {
+    return x * x;
+}
+double sinDeg(double x) {
+    return std::sin(degToRad(x));
+}
+double cosDeg(double x) {
+    return std::cos(degToRad(x));
+}
+double tanDeg(double x) {
+    return std::tan(degToRad(x));
+}
+double asinDeg(double x) {
+    return radToDeg(std::asin(x));
+}
+double acosDeg(double x) {
+    return radToDeg(std::acos(x));
+}
+double atanDeg(double x) {
+    return radToDeg(std::atan(x));
+}
+double neg(double x) {
+    return -x;
+}
+double integer(double x) {
+    return std::trunc(x);
+}
+double fraction(double x) {
+    return x - std::trunc(x);
+}
+double sgn(double x) {
+    return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+}
+double absolute(double x) {
+    return std::fabs(x);
+}
+double squareRoot(double x) {
+    return std::sqrt(x);
+}
+double naturalLog(double x) {
+    return std::log(x);
+}
+double log10Of(double x) {
+    return std::log10(x);
+}
+double expOf(double x) {
+    return std::exp(x);
+}
 
 // Longer names first so that "SQRT" is not read as "SQ" followed by "RT".
 constexpr FunctionEntry kFunctions[] = {
-    {"SQRT", squareRoot}, {"SQ", sq},        {"SIN", sinDeg},   {"COS", cosDeg},
-    {"TAN", tanDeg},      {"ASIN", asinDeg}, {"ACOS", acosDeg}, {"ATAN", atanDeg},
-    {"LN", naturalLog},   {"LOG", log10Of},  {"EXP", expOf},    {"NEG", neg},
+    {"SQRT", squareRoot}, {"SQ", sq},        {"SIN", sinDeg},    {"COS", cosDeg},
+    {"TAN", tanDeg},      {"ASIN", asinDeg}, {"ACOS", acosDeg},  {"ATAN", atanDeg},
+    {"LN", naturalLog},   {"LOG", log10Of},  {"EXP", expOf},     {"NEG", neg},
     {"INT", integer},     {"ABS", absolute}, {"FRAC", fraction}, {"SGN", sgn},
 };
 
@@ -61,7 +93,9 @@ std::optional<double> FormulaParser::domainCheck(double value, const char* what)
     return fail("math", KERF_TR_NOOP("{1} is not defined for this value"), {what});
 }
 
-double FormulaParser::read(QRef ref) { return m_env ? m_env->number(ref) : 0.0; }
+double FormulaParser::read(QRef ref) {
+    return m_env ? m_env->number(ref) : 0.0;
+}
 
 std::optional<QRef> FormulaParser::parameter(bool strings) {
     size_t saved = m_cursor.position();
@@ -132,7 +166,9 @@ std::optional<double> FormulaParser::wordValue() {
     return fail("syntax", KERF_TR_NOOP("number or Q parameter expected"));
 }
 
-std::optional<double> FormulaParser::expression() { return additive(); }
+std::optional<double> FormulaParser::expression() {
+    return additive();
+}
 
 std::optional<double> FormulaParser::additive() {
     auto left = multiplicative();
@@ -200,11 +236,13 @@ std::optional<double> FormulaParser::unary() {
         const size_t at = m_cursor.position();
         const std::string_view text = m_cursor.text();
         size_t end = at;
-        while (end < text.size() && isLetter(text[end])) ++end;
+        while (end < text.size() && isLetter(text[end]))
+            ++end;
         char word[8];
         const size_t length = end - at;
         if (length < sizeof word) {
-            for (size_t i = 0; i < length; ++i) word[i] = upper(text[at + i]);
+            for (size_t i = 0; i < length; ++i)
+                word[i] = upper(text[at + i]);
             const std::string_view name(word, length);
             for (const FunctionEntry& f : kFunctions) {
                 if (f.name != name) continue;

@@ -89,7 +89,8 @@ std::optional<double> KlartextInterpreter::sysReadValue(const SysRead& read, boo
                     if (m_spindle == canon::SpindleDirection::Clockwise) return 0.0;
                     if (m_spindle == canon::SpindleDirection::CounterClockwise) return 1.0;
                     if (m_lastSpindleDirection == canon::SpindleDirection::Clockwise) return 2.0;
-                    if (m_lastSpindleDirection == canon::SpindleDirection::CounterClockwise) return 3.0;
+                    if (m_lastSpindleDirection == canon::SpindleDirection::CounterClockwise)
+                        return 3.0;
                     return -1.0;
                 case 8:
                     return m_coolant ? 1.0 : 0.0;
@@ -273,7 +274,8 @@ void KlartextInterpreter::executeTableAccess(const TableAccess& access) {
         if (!error) error = m_openTable->save();
         if (error) {
             m_diagnostics.push_back(*error);
-            fail("table", KERF_TR_NOOP("FN 27: cannot write row {1}"), {std::to_string(access.row)});
+            fail("table", KERF_TR_NOOP("FN 27: cannot write row {1}"),
+                 {std::to_string(access.row)});
         }
         return;
     }

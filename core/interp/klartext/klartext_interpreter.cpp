@@ -16,8 +16,8 @@ public:
     std::optional<std::string> systemString(int id, int nr) override {
         if (id == 10010 && !m_owner.m_levels.empty()) {
             const ProgramFile* program = m_owner.m_levels.back().program;
-            if (nr == 1) return program->source->path();              // program path
-            if (nr == 2) return program->folder.string();             // its folder
+            if (nr == 1) return program->source->path();   // program path
+            if (nr == 2) return program->folder.string();  // its folder
         }
         return std::nullopt;
     }
@@ -60,8 +60,9 @@ bool KlartextInterpreter::waitForCheck() {
     const DiagnosticList& found = m_checking->diagnostics;
     if (hasErrors(found)) {
         // The program would not have started: only the check's findings count.
-        m_diagnostics.erase(m_diagnostics.begin() + static_cast<std::ptrdiff_t>(m_diagnosticsAtLoad),
-                            m_diagnostics.end());
+        m_diagnostics.erase(
+            m_diagnostics.begin() + static_cast<std::ptrdiff_t>(m_diagnosticsAtLoad),
+            m_diagnostics.end());
         m_checkFailed = true;
         m_status = interp::RunStatus::Failed;
     }
@@ -72,8 +73,8 @@ bool KlartextInterpreter::waitForCheck() {
 
 // ---- loading ---------------------------------------------------------------------------------
 
-ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
-                                              std::string* error, bool check) {
+ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path, std::string* error,
+                                              bool check) {
     for (auto& p : m_programs) {
         if (p->source->path() == path.string()) return p.get();
     }
@@ -278,7 +279,8 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
         m_levels.pop_back();
         m_q.popLocalLevel();
         size_t level = m_levels.size() - 1;
-        while (!m_frames.empty() && m_frames.back().level > level) m_frames.pop_back();
+        while (!m_frames.empty() && m_frames.back().level > level)
+            m_frames.pop_back();
         const Level& caller = m_levels.back();
         m_inch = caller.inch;
         m_reader.emplace(caller.program->source->text());

@@ -112,8 +112,8 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
             case 91:
             case 92:
                 break;  // coordinates of this block, see targetOf()
-            case 89:  // modal cycle call, from this block on
-            case 99:  // cycle call in this block only
+            case 89:    // modal cycle call, from this block on
+            case 99:    // cycle call in this block only
                 m_modalCycleCall = n == 89;
                 callCycleHere();
                 break;
@@ -210,8 +210,9 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
                 return;
             }
             if (m_settings.tools == nullptr && !m_warnedNoToolTable && call.number != 0) {
-                warn("tool", KERF_TR_NOOP("no tool table: tool {1} and the following tools are "
-                                          "used with length 0 and radius 0"),
+                warn("tool",
+                     KERF_TR_NOOP("no tool table: tool {1} and the following tools are "
+                                  "used with length 0 and radius 0"),
                      {shown});
                 m_warnedNoToolTable = true;
             }
@@ -258,7 +259,8 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
         m_spindleSpeed = *call.speed;
         if (m_settings.machine && m_spindleSpeed > m_settings.machine->spindle.maxRpm) {
             fail("spindle", KERF_TR_NOOP("spindle speed {1} exceeds the machine's {2} rpm"),
-                 {std::to_string(m_spindleSpeed), std::to_string(m_settings.machine->spindle.maxRpm)});
+                 {std::to_string(m_spindleSpeed),
+                  std::to_string(m_settings.machine->spindle.maxRpm)});
             return;
         }
         if (m_spindle != canon::SpindleDirection::Stopped) {

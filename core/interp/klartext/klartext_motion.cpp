@@ -42,7 +42,9 @@ void setInPlane(Plane plane, Pose& pose, const Vec2& p) {
 
 }  // namespace
 
-Plane KlartextInterpreter::workingPlane() const { return planeForToolAxis(m_toolAxis); }
+Plane KlartextInterpreter::workingPlane() const {
+    return planeForToolAxis(m_toolAxis);
+}
 
 void KlartextInterpreter::applyPolar(const PolarWords& polar, Pose& target) const {
     // Missing PR/PA keep the current polar coordinates about the pole; I prefixes add to them.
@@ -147,8 +149,7 @@ void KlartextInterpreter::executeCircleCenter(const CircleCenter& block) {
 }
 
 void KlartextInterpreter::executeCircle(const Coordinates& coords, Direction direction,
-                                        const CommonWords& words,
-                                        std::optional<double> radius) {
+                                        const CommonWords& words, std::optional<double> radius) {
     bool rapid = false;
     double feed = 0.0;
     m_currentM = words.m;
@@ -199,13 +200,11 @@ void KlartextInterpreter::executeCircle(const Coordinates& coords, Direction dir
         }
     }
     double sweep = arcSweep(inPlane(plane, m_programmed), inPlane(plane, target), center, ccw);
-    submitMove(ContourElement::arc(plane, m_programmed, target, center, sweep), false, feed,
-               words);
+    submitMove(ContourElement::arc(plane, m_programmed, target, center, sweep), false, feed, words);
     applyMFunctions(words.m, false);
 }
 
-void KlartextInterpreter::executeTangentCircle(const Coordinates& coords,
-                                               const PolarWords* polar,
+void KlartextInterpreter::executeTangentCircle(const Coordinates& coords, const PolarWords* polar,
                                                const CommonWords& words) {
     bool rapid = false;
     double feed = 0.0;
@@ -328,7 +327,8 @@ void KlartextInterpreter::executeCorner(bool chamfer, double size, const FeedWor
         feed = value;
     }
     size *= lengthScale() * m_frame.planeScale(workingPlane());
-    auto error = chamfer ? m_path.addChamfer(size, feed, m_at) : m_path.addRounding(size, feed, m_at);
+    auto error =
+        chamfer ? m_path.addChamfer(size, feed, m_at) : m_path.addRounding(size, feed, m_at);
     checkPathError(error);
 }
 

@@ -1,12 +1,11 @@
 #include "core/interp/klartext/program_file.h"
 
-#include "core/cycles/cycle_registry.h"
-
 #include <chrono>
 #include <set>
 #include <thread>
 #include <vector>
 
+#include "core/cycles/cycle_registry.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
 
@@ -84,7 +83,8 @@ void checkProgram(ProgramFile& program) {
     size_t released = 0;
     while (reader.next(line)) {
         if (program.followExecution) {
-            while (line.offset > kWindow && line.offset - kWindow > program.executionOffset.load()) {
+            while (line.offset > kWindow &&
+                   line.offset - kWindow > program.executionOffset.load()) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
         } else if (line.offset >= released + kReleaseStep) {
@@ -125,7 +125,8 @@ void checkProgram(ProgramFile& program) {
         } else if (const auto* end = std::get_if<EndPgm>(&s)) {
             if (sawBegin && end->name != beginName) {
                 diag(Severity::Warning, "structure", line.firstLine, 1,
-                     KERF_TR_NOOP("END PGM {1} does not match BEGIN PGM {2}"), {end->name, beginName});
+                     KERF_TR_NOOP("END PGM {1} does not match BEGIN PGM {2}"),
+                     {end->name, beginName});
             }
             sawEnd = true;
         } else if (const auto* label = std::get_if<Label>(&s)) {
@@ -133,7 +134,8 @@ void checkProgram(ProgramFile& program) {
             bool duplicate = false;
             if (label->target.number) {
                 if (*label->target.number != 0) {
-                    duplicate = !program.numberedLabels.emplace(*label->target.number, position).second;
+                    duplicate =
+                        !program.numberedLabels.emplace(*label->target.number, position).second;
                 }
             } else if (label->target.name) {
                 duplicate = !program.namedLabels.emplace(*label->target.name, position).second;
@@ -153,7 +155,8 @@ void checkProgram(ProgramFile& program) {
         } else if (const auto* cycle = std::get_if<CycleDefinition>(&s);
                    cycle && cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
             diag(Severity::Warning, "not-supported", line.firstLine, 1,
-                 KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past this block"),
+                 KERF_TR_NOOP(
+                     "cycle {1} is not supported yet; the program cannot run past this block"),
                  {std::to_string(cycle->number)});
         }
         if (!empty) firstBlock = false;
@@ -163,8 +166,8 @@ void checkProgram(ProgramFile& program) {
         bool known = t.target.number ? program.findLabel(*t.target.number) != nullptr
                                      : program.findLabel(*t.target.name) != nullptr;
         if (!known) {
-            diag(Severity::Error, "label", t.line, t.column, KERF_TR_NOOP("label {1} is not defined"),
-                 {labelText(t.target)});
+            diag(Severity::Error, "label", t.line, t.column,
+                 KERF_TR_NOOP("label {1} is not defined"), {labelText(t.target)});
         }
     }
     if (numbered > 0 && unnumbered > 0) {
@@ -172,10 +175,12 @@ void checkProgram(ProgramFile& program) {
              KERF_TR_NOOP("block has no number while others have"));
     }
     if (!sawBegin) {
-        diag(Severity::Warning, "structure", 1, 1, KERF_TR_NOOP("the program has no BEGIN PGM block"));
+        diag(Severity::Warning, "structure", 1, 1,
+             KERF_TR_NOOP("the program has no BEGIN PGM block"));
     }
     if (sawBegin && !sawEnd) {
-        diag(Severity::Warning, "structure", reader.line(), 1, KERF_TR_NOOP("the program has no END PGM block"));
+        diag(Severity::Warning, "structure", reader.line(), 1,
+             KERF_TR_NOOP("the program has no END PGM block"));
     }
 }
 

@@ -54,8 +54,8 @@ std::optional<Vec2> tangentPoint(const ToolCircle& circle, const Vec2& outside, 
 
 std::optional<std::vector<PlanarMove>> approachMoves(ApproachKind kind, const Vec2& start,
                                                      const Vec2& contourPoint, const Vec2& tangent,
-                                                     double offset, double length,
-                                                     double angleDeg, double radius) {
+                                                     double offset, double length, double angleDeg,
+                                                     double radius) {
     const Vec2 toolSide = leftNormal(tangent) * (offset >= 0.0 ? 1.0 : -1.0);
     const double reach = std::fabs(offset);
     const Vec2 contourStart = contourPoint + reach * toolSide;
@@ -100,8 +100,8 @@ std::optional<std::vector<PlanarMove>> approachMoves(ApproachKind kind, const Ve
 
 std::optional<std::vector<PlanarMove>> departureMoves(ApproachKind kind, const Vec2& contourPoint,
                                                       const Vec2& tangent, double offset,
-                                                      double length, double angleDeg,
-                                                      double radius, const Vec2& endPoint) {
+                                                      double length, double angleDeg, double radius,
+                                                      const Vec2& endPoint) {
     const Vec2 toolSide = leftNormal(tangent) * (offset >= 0.0 ? 1.0 : -1.0);
     const double reach = std::fabs(offset);
     const Vec2 contourEnd = contourPoint + reach * toolSide;

@@ -24,14 +24,14 @@ struct PlanarMove {
 // the tool side) over CCA degrees; LCT line tangent into an arc of radius R on the tool side.
 std::optional<std::vector<PlanarMove>> approachMoves(ApproachKind kind, const Vec2& start,
                                                      const Vec2& contourPoint, const Vec2& tangent,
-                                                     double offset, double length,
-                                                     double angleDeg, double radius);
+                                                     double offset, double length, double angleDeg,
+                                                     double radius);
 
 // Tool-centre moves of a departure from the contour end point `contourPoint` whose last element
 // arrives along `tangent`. LCT ends at `endPoint` (tool centre).
 std::optional<std::vector<PlanarMove>> departureMoves(ApproachKind kind, const Vec2& contourPoint,
                                                       const Vec2& tangent, double offset,
-                                                      double length, double angleDeg,
-                                                      double radius, const Vec2& endPoint);
+                                                      double length, double angleDeg, double radius,
+                                                      const Vec2& endPoint);
 
 }  // namespace kerf::interp

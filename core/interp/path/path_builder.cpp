@@ -169,7 +169,8 @@ std::optional<PathError> PathBuilder::forwardHeld() {
     PathMove move = *m_held;
     m_held.reset();
     if (auto e = compMove(move)) return e;
-    for (canon::Command& c : m_heldAfter) compCommand(std::move(c));
+    for (canon::Command& c : m_heldAfter)
+        compCommand(std::move(c));
     m_heldAfter.clear();
     return std::nullopt;
 }
@@ -276,8 +277,7 @@ std::optional<PathError> PathBuilder::compFinishHeld() {
         // Switching on and off in the same element: perpendicular to the element itself.
         const ContourElement& g = held.move.geometry;
         Vec2 end = g.end2() + signedOffset(held.move.side) * leftNormal(g.endTangent());
-        held.tool = ContourElement::line(g.plane, held.tool.start,
-                                         withPlanePoint(g, g.end, end));
+        held.tool = ContourElement::line(g.plane, held.tool.start, withPlanePoint(g, g.end, end));
     }
     emitElement(held.tool, held.move);
     compFlushQueue();
@@ -317,8 +317,8 @@ std::optional<PathError> PathBuilder::compMove(const PathMove& move) {
             return std::nullopt;
         }
         m_side = move.side;
-        Pose target = withPlanePoint(move.geometry, move.geometry.end,
-                                     move.geometry.inPlane(m_tool));
+        Pose target =
+            withPlanePoint(move.geometry, move.geometry.end, move.geometry.inPlane(m_tool));
         emitLine(target, move.rapid, move.feed, move.location);
         return std::nullopt;
     }
@@ -373,17 +373,20 @@ std::optional<PathError> PathBuilder::compCorner(const PathMove& move) {
                 if (!best || (p - corner).squaredNorm() < (*best - corner).squaredNorm()) best = &p;
             }
             if (!best) {
-                return error(move.location, "radius-too-large", KERF_TR_NOOP("tool radius too large"));
+                return error(move.location, "radius-too-large",
+                             KERF_TR_NOOP("tool radius too large"));
             }
             const double tHeld = held.tool.paramOf(*best);
             const double tNext = next->paramOf(*best);
             if (tHeld <= kEps) {
-                return error(held.move.location, "radius-too-large",
-                             KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
+                return error(
+                    held.move.location, "radius-too-large",
+                    KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
             }
             if (tNext >= 1.0 - kEps) {
-                return error(move.location, "radius-too-large",
-                             KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
+                return error(
+                    move.location, "radius-too-large",
+                    KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
             }
             held.tool = held.tool.sub(0.0, std::min(tHeld, 1.0));
             *next = next->sub(std::max(tNext, 0.0), 1.0);
@@ -410,9 +413,9 @@ std::optional<PathError> PathBuilder::compResolveApproach(const PathMove& move) 
     m_approach.reset();
     const ContourElement& first = move.geometry;
     const double offset = signedOffset(move.side);
-    auto moves = approachMoves(spec.kind, first.inPlane(m_tool), first.start2(),
-                               first.startTangent(), offset, spec.length, spec.angleDeg,
-                               spec.radius);
+    auto moves =
+        approachMoves(spec.kind, first.inPlane(m_tool), first.start2(), first.startTangent(),
+                      offset, spec.length, spec.angleDeg, spec.radius);
     if (!moves) {
         return error(spec.location, "contour",
                      KERF_TR_NOOP("the approach cannot be constructed with these values"));

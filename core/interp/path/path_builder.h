@@ -52,8 +52,8 @@ private:
         SourceLocation location;
     };
     struct Compensated {
-        PathMove move;          // as programmed
-        ContourElement tool;    // tool-centre path; its end is provisional until resolved
+        PathMove move;        // as programmed
+        ContourElement tool;  // tool-centre path; its end is provisional until resolved
         bool activation = false;
     };
     struct Queued {

@@ -34,12 +34,12 @@ enum class ApproachKind : uint8_t { Tangent, Normal, Circle, LineCircle };  // L
 // TNC APPR/DEP and Fagor G37/G38 parameters, resolved to workpiece coordinates.
 struct ApproachSpec {
     ApproachKind kind = ApproachKind::Tangent;
-    Pose contourPoint;   // APPR: first contour point P_A (with its tool-axis value)
+    Pose contourPoint;          // APPR: first contour point P_A (with its tool-axis value)
     bool moveToolAxis = false;  // APPR with a tool-axis coordinate
-    Pose endPoint;       // DEP LCT: end point P_N (tool centre, no compensation)
-    double length = 0.0;      // LEN
-    double angleDeg = 0.0;    // CCA
-    double radius = 0.0;      // R (signed for CT)
+    Pose endPoint;              // DEP LCT: end point P_N (tool centre, no compensation)
+    double length = 0.0;        // LEN
+    double angleDeg = 0.0;      // CCA
+    double radius = 0.0;        // R (signed for CT)
     CompSide side = CompSide::None;
     bool rapidToHelper = false;
     double feed = 0.0;

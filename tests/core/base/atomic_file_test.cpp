@@ -1,8 +1,8 @@
 #include "core/base/atomic_file.h"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
+
+#include <gtest/gtest.h>
 
 #include "test_paths.h"
 
@@ -20,7 +20,8 @@ TEST(AtomicFile, ReplacesContentAndLeavesNoTemporary) {
     ASSERT_TRUE(content.ok());
     EXPECT_EQ(*content, "second\n");
     int entries = 0;
-    for ([[maybe_unused]] auto& entry : fs::directory_iterator(dir)) ++entries;
+    for ([[maybe_unused]] auto& entry : fs::directory_iterator(dir))
+        ++entries;
     EXPECT_EQ(entries, 1);
     fs::remove_all(dir);
 }

@@ -1,8 +1,8 @@
 #include "core/canon/path_statistics.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace kerf::canon {
 namespace {

@@ -1,8 +1,8 @@
 #include "core/geometry/arc_math.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace kerf {
 namespace {

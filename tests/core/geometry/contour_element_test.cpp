@@ -1,8 +1,8 @@
 #include "core/geometry/contour_element.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace kerf {
 namespace {

@@ -8,8 +8,13 @@ namespace kerf::program {
 namespace {
 
 TEST(Encoding, DetectsUtf8Cp1252AndGbk) {
-    EXPECT_EQ(detectEncoding("L X+1 ; Werkst\xC3\xBC" "ck"), Encoding::Utf8);
-    EXPECT_EQ(detectEncoding("; Werkst\xFC" "ck \xE4" "ndern"), Encoding::Cp1252);
+    EXPECT_EQ(detectEncoding("L X+1 ; Werkst\xC3\xBC"
+                             "ck"),
+              Encoding::Utf8);
+    EXPECT_EQ(detectEncoding("; Werkst\xFC"
+                             "ck \xE4"
+                             "ndern"),
+              Encoding::Cp1252);
     // "加工" (machining) in GBK: two pairs of high bytes.
     EXPECT_EQ(detectEncoding("; \xBC\xD3\xB9\xA4 L X+1"), Encoding::Gbk);
 }

@@ -1,10 +1,11 @@
 #include "core/program/line_reader.h"
-#include "core/program/source_text.h"
-
-#include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/program/source_text.h"
 
 namespace kerf::program {
 namespace {
@@ -13,7 +14,8 @@ std::vector<std::string> readAll(std::string_view text, bool join = true) {
     LineReader reader(text);
     LogicalLine line;
     std::vector<std::string> out;
-    while (reader.next(line, join)) out.emplace_back(line.text);
+    while (reader.next(line, join))
+        out.emplace_back(line.text);
     return out;
 }
 

@@ -1,8 +1,8 @@
 #include "core/program/nc_root.h"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
+
+#include <gtest/gtest.h>
 
 #include "test_paths.h"
 

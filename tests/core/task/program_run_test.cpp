@@ -86,8 +86,10 @@ protected:
     std::vector<double> xs(const FakeMotion& m) {
         std::vector<double> out;
         for (const auto& c : m.executed) {
-            if (const auto* r = std::get_if<canon::RapidMove>(&c.body)) out.push_back(r->target[Axis::X]);
-            if (const auto* l = std::get_if<canon::LinearMove>(&c.body)) out.push_back(l->target[Axis::X]);
+            if (const auto* r = std::get_if<canon::RapidMove>(&c.body))
+                out.push_back(r->target[Axis::X]);
+            if (const auto* l = std::get_if<canon::LinearMove>(&c.body))
+                out.push_back(l->target[Axis::X]);
         }
         return out;
     }
@@ -100,7 +102,8 @@ protected:
 TEST_F(ProgramRunTest, RunsToTheEndThroughABoundedQueue) {
     ProgramRun run(motion);
     std::string program = "0 BEGIN PGM A MM\n";
-    for (int i = 1; i <= 20; ++i) program += std::to_string(i) + " L X+" + std::to_string(i) + " Y+0 Z+0 R0 FMAX\n";
+    for (int i = 1; i <= 20; ++i)
+        program += std::to_string(i) + " L X+" + std::to_string(i) + " Y+0 Z+0 R0 FMAX\n";
     program += "21 END PGM A MM\n";
     run.start(load(program));
     serviceUntilDone(run);
@@ -113,8 +116,9 @@ TEST_F(ProgramRunTest, SyncReadsTheMachineAfterMotionDrained) {
     // The machine stands 0.25 mm further than programmed when the program reads it.
     ProgramRun run(motion);
     motion.jogAtSync = 0.25;
-    run.start(load("0 BEGIN PGM A MM\n1 L X+10 Y+0 Z+0 R0 FMAX\n"
-                   "2 FN 18: SYSREAD Q1 = ID270 NR1 IDX1\n3 L X+Q1 Y+1 FMAX\n4 END PGM A MM\n"));
+    run.start(
+        load("0 BEGIN PGM A MM\n1 L X+10 Y+0 Z+0 R0 FMAX\n"
+             "2 FN 18: SYSREAD Q1 = ID270 NR1 IDX1\n3 L X+Q1 Y+1 FMAX\n4 END PGM A MM\n"));
     serviceUntilDone(run);
     EXPECT_EQ(run.state(), RunState::Finished);
     EXPECT_DOUBLE_EQ(xs(motion).back(), 10.25);
@@ -122,7 +126,8 @@ TEST_F(ProgramRunTest, SyncReadsTheMachineAfterMotionDrained) {
 
 TEST_F(ProgramRunTest, StopsAtM0AndContinuesOnCycleStart) {
     ProgramRun run(motion);
-    run.start(load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 STOP\n3 L X+2 FMAX\n4 END PGM A MM\n"));
+    run.start(
+        load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 STOP\n3 L X+2 FMAX\n4 END PGM A MM\n"));
     serviceUntilDone(run);
     EXPECT_EQ(run.state(), RunState::Stopped);
     EXPECT_DOUBLE_EQ(xs(motion).back(), 1);
@@ -134,8 +139,9 @@ TEST_F(ProgramRunTest, StopsAtM0AndContinuesOnCycleStart) {
 
 TEST_F(ProgramRunTest, FeedHoldAndFaults) {
     ProgramRun run(motion);
-    run.start(load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 L X+2 FMAX\n3 L X+3 FMAX\n"
-                   "4 END PGM A MM\n"));
+    run.start(
+        load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 L X+2 FMAX\n3 L X+3 FMAX\n"
+             "4 END PGM A MM\n"));
     run.service();
     run.feedHold();
     EXPECT_EQ(run.state(), RunState::Held);
@@ -150,8 +156,9 @@ TEST_F(ProgramRunTest, FeedHoldAndFaults) {
 
 TEST_F(ProgramRunTest, AnErrorStopsAfterTheBlocksBeforeIt) {
     ProgramRun run(motion);
-    run.start(load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 Q1 = 1 / Q2\n3 L X+2 FMAX\n"
-                   "4 END PGM A MM\n"));
+    run.start(
+        load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 Q1 = 1 / Q2\n3 L X+2 FMAX\n"
+             "4 END PGM A MM\n"));
     serviceUntilDone(run);
     ASSERT_EQ(run.state(), RunState::Failed);
     EXPECT_EQ(xs(motion), std::vector<double>{1});

@@ -51,14 +51,10 @@ TEST(BlockParser, LinearBlockWithEveryWord) {
 }
 
 TEST(BlockParser, FeedKeywordsAndOldListingForms) {
-    EXPECT_EQ(first<LinearBlock>("L X+1 FMAX").words.feed.kind,
-              FeedWord::Kind::Max);
-    EXPECT_EQ(first<LinearBlock>("L X+1 F AUTO").words.feed.kind,
-              FeedWord::Kind::Auto);
-    EXPECT_EQ(first<LinearBlock>("L X+1 FU0.1").words.feed.kind,
-              FeedWord::Kind::PerRevolution);
-    EXPECT_EQ(first<LinearBlock>("L X+1 FZ0,05").words.feed.kind,
-              FeedWord::Kind::PerTooth);
+    EXPECT_EQ(first<LinearBlock>("L X+1 FMAX").words.feed.kind, FeedWord::Kind::Max);
+    EXPECT_EQ(first<LinearBlock>("L X+1 F AUTO").words.feed.kind, FeedWord::Kind::Auto);
+    EXPECT_EQ(first<LinearBlock>("L X+1 FU0.1").words.feed.kind, FeedWord::Kind::PerRevolution);
+    EXPECT_EQ(first<LinearBlock>("L X+1 FZ0,05").words.feed.kind, FeedWord::Kind::PerTooth);
     // Values that were not entered are listed as bare letters by older controls.
     const auto bare = first<LinearBlock>("L X+1,000 R F M");
     EXPECT_EQ(bare.words.comp, CompWord::None);

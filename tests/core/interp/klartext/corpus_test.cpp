@@ -1,11 +1,11 @@
 // The real TNC programs of the shared corpus: each one is checked and run (bounded) without a
 // crash or hang. Files that are not valid TNC programs are listed with the reason; every other
 // file must check without errors.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <map>
+
+#include <gtest/gtest.h>
 
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
@@ -73,10 +73,10 @@ TEST(Corpus, RealProgramsCheckAndRunWithoutCrashing) {
         KlartextInterpreter interpreter(sources, settings);
         const bool loaded = interpreter.load(entry.path());
         const bool errors = hasErrors(interpreter.diagnostics());
-        EXPECT_EQ(errors, knownBad(name)) << name << ": "
-                                           << (interpreter.diagnostics().empty()
-                                                   ? std::string()
-                                                   : interpreter.diagnostics().front().format());
+        EXPECT_EQ(errors, knownBad(name))
+            << name << ": "
+            << (interpreter.diagnostics().empty() ? std::string()
+                                                  : interpreter.diagnostics().front().format());
         if (!errors) ++clean;
         if (!loaded) continue;
         NullSink sink;
@@ -92,7 +92,8 @@ TEST(Corpus, RealProgramsCheckAndRunWithoutCrashing) {
         }
         bool unsupported = false;
         for (const Diagnostic& d : interpreter.diagnostics()) {
-            unsupported = unsupported || (d.severity == Severity::Error && d.code == "not-supported");
+            unsupported =
+                unsupported || (d.severity == Severity::Error && d.code == "not-supported");
         }
         const bool expected = std::any_of(kStopAtUnsupported.begin(), kStopAtUnsupported.end(),
                                           [&](const std::string& s) { return endsWith(name, s); });

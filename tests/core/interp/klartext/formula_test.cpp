@@ -1,9 +1,9 @@
 #include "core/interp/klartext/formula.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <map>
+
+#include <gtest/gtest.h>
 
 namespace kerf::klartext {
 namespace {
@@ -23,20 +23,19 @@ double eval(const std::string& text, FakeEnvironment* env = nullptr) {
     Cursor c(text);
     FormulaParser p(c, env ? env : &local);
     auto v = p.expression();
-    EXPECT_TRUE(v.has_value()) << text << ": "
-                               << (p.problem() ? p.problem()->messageTemplate : "");
+    EXPECT_TRUE(v.has_value()) << text << ": " << (p.problem() ? p.problem()->messageTemplate : "");
     EXPECT_TRUE(c.atEnd()) << text;
     return v.value_or(NAN);
 }
 
 TEST(Formula, PrecedenceAsTheTncManualDescribes) {
     EXPECT_DOUBLE_EQ(eval("5 * 3 + 2 * 10"), 35);
-    EXPECT_DOUBLE_EQ(eval("SQ 10 ^ 3"), 1e6);     // function first, then power
+    EXPECT_DOUBLE_EQ(eval("SQ 10 ^ 3"), 1e6);  // function first, then power
     EXPECT_NEAR(eval("SIN 30 ^ 2"), 0.25, 1e-15);
-    EXPECT_DOUBLE_EQ(eval("2 ^ 3 ^ 2"), 64);      // same priority: left to right
+    EXPECT_DOUBLE_EQ(eval("2 ^ 3 ^ 2"), 64);  // same priority: left to right
     EXPECT_DOUBLE_EQ(eval("10 - 4 - 3"), 3);
     EXPECT_DOUBLE_EQ(eval("( 1 + 2 ) * 3"), 9);
-    EXPECT_DOUBLE_EQ(eval("-2 ^ 2"), 4);          // a sign binds like a function
+    EXPECT_DOUBLE_EQ(eval("-2 ^ 2"), 4);  // a sign binds like a function
     EXPECT_DOUBLE_EQ(eval("7 % 3"), 1);
 }
 
@@ -83,8 +82,8 @@ TEST(Formula, StringFunctions) {
 
 TEST(Formula, Errors) {
     FakeEnvironment env;
-    for (const char* bad : {"1 / 0", "SQRT -1", "ACOS 2", "LN 0", "(1 + 2", "1 +", "Q2000",
-                            "QS1 + 1", "FOO 2"}) {
+    for (const char* bad :
+         {"1 / 0", "SQRT -1", "ACOS 2", "LN 0", "(1 + 2", "1 +", "Q2000", "QS1 + 1", "FOO 2"}) {
         Cursor c(bad);
         FormulaParser p(c, &env);
         auto v = p.expression();

@@ -1,8 +1,8 @@
 #include "core/interp/klartext/fprint_formatter.h"
 
-#include <gtest/gtest.h>
-
 #include <map>
+
+#include <gtest/gtest.h>
 
 namespace kerf::klartext {
 namespace {

@@ -1,11 +1,10 @@
-#include "core/interp/klartext/klartext_interpreter.h"
-
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 
+#include <gtest/gtest.h>
+
 #include "core/base/atomic_file.h"
+#include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
 
 namespace kerf::klartext {
@@ -83,15 +82,17 @@ TEST_F(InterpreterTest, RemanentParametersSurviveARun) {
 TEST_F(InterpreterTest, FPrintWritesInsideTheNcRoot) {
     writeFileAtomically(dir / "MASK.A", "\"R = %5.2F\", Q1;\n");
     auto k = make();
-    EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 Q1 = 2.5\n2 FN 16: F-PRINT MASK.A / OUT.TXT\n"
-                          "3 END PGM A MM\n"),
+    EXPECT_EQ(runText(*k,
+                      "0 BEGIN PGM A MM\n1 Q1 = 2.5\n2 FN 16: F-PRINT MASK.A / OUT.TXT\n"
+                      "3 END PGM A MM\n"),
               interp::RunStatus::Finished);
     auto text = readWholeFile(dir / "OUT.TXT");
     ASSERT_TRUE(text.ok());
     EXPECT_EQ(*text, "R =  2.50\n");
     auto bad = make();
-    EXPECT_EQ(runText(*bad, "0 BEGIN PGM A MM\n1 FN 16: F-PRINT MASK.A / ../../OUT.TXT\n"
-                            "2 END PGM A MM\n"),
+    EXPECT_EQ(runText(*bad,
+                      "0 BEGIN PGM A MM\n1 FN 16: F-PRINT MASK.A / ../../OUT.TXT\n"
+                      "2 END PGM A MM\n"),
               interp::RunStatus::Failed);
 }
 
@@ -121,8 +122,9 @@ TEST_F(InterpreterTest, BackgroundCheckGivesTheSameResult) {
     EXPECT_FALSE(k->checkFailed());
     EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 4);
     // With an error near the end the run is rejected even though it started.
-    writeFileAtomically(dir / "C.H", "0 BEGIN PGM A MM\n1 L X+5 Y+0 Z+0 R0 FMAX\n2 BOGUS\n"
-                                     "3 END PGM A MM\n");
+    writeFileAtomically(dir / "C.H",
+                        "0 BEGIN PGM A MM\n1 L X+5 Y+0 Z+0 R0 FMAX\n2 BOGUS\n"
+                        "3 END PGM A MM\n");
     auto bad = make();
     ASSERT_TRUE(bad->load(dir / "C.H", KlartextInterpreter::CheckMode::Background));
     while (bad->run(out, 1) == interp::RunStatus::BudgetUsed) {
@@ -133,7 +135,8 @@ TEST_F(InterpreterTest, BackgroundCheckGivesTheSameResult) {
 }
 
 TEST_F(InterpreterTest, ProgramCallsCannotRecurseForever) {
-    writeFileAtomically(dir / "SELF.H", "0 BEGIN PGM SELF MM\n1 CALL PGM SELF.H\n2 END PGM SELF MM\n");
+    writeFileAtomically(dir / "SELF.H",
+                        "0 BEGIN PGM SELF MM\n1 CALL PGM SELF.H\n2 END PGM SELF MM\n");
     auto k = make();
     ASSERT_TRUE(k->load(dir / "SELF.H"));
     while (k->run(out, 100) == interp::RunStatus::BudgetUsed) {
@@ -143,8 +146,9 @@ TEST_F(InterpreterTest, ProgramCallsCannotRecurseForever) {
 
 TEST_F(InterpreterTest, HelixSignMustMatchDirection) {
     auto k = make();
-    EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 CC X+0 Y+0\n2 L X+5 Y+0 Z+0 R0 FMAX\n"
-                          "3 CP IPA-90 DR+ F100\n4 END PGM A MM\n"),
+    EXPECT_EQ(runText(*k,
+                      "0 BEGIN PGM A MM\n1 CC X+0 Y+0\n2 L X+5 Y+0 Z+0 R0 FMAX\n"
+                      "3 CP IPA-90 DR+ F100\n4 END PGM A MM\n"),
               interp::RunStatus::Failed);
     EXPECT_EQ(k->diagnostics().back().message(), "the sign of IPA does not match DR");
 }
@@ -184,11 +188,13 @@ TEST_F(InterpreterTest, FuzzerFindingsGiveDiagnostics) {
     const std::string longName(5000, 'x');
     const std::vector<std::string> programs = {
         "0 BEGIN PGM A MM\n1 CALL PGM ../" + longName + "\n2 END PGM A MM\n",
-        "0 BEGIN PGM A MM\n1 FN 14: ERROR = 99999999999999999999\n2 FN 18: SYSREAD Q1 = ID99999999999999 NR-99999999999999\n"
+        "0 BEGIN PGM A MM\n1 FN 14: ERROR = 99999999999999999999\n2 FN 18: SYSREAD Q1 = "
+        "ID99999999999999 NR-99999999999999\n"
         "3 END PGM A MM\n",
         "0 BEGIN PGM A MM\n2 CYCL DEF ~\n 200 DRILLING\n3 END PGM A MM\n",
         "0 BEGIN PGM A MM\n1 FN 26: TABOPEN .\n2 END PGM A MM\n",
-        "0 BEGIN PGM A MM\n1 QS1 = \"ab\"\n2 QS2 = SUBSTR ( SRC_QS1 BEG99999999999999 LEN99999999999999 )\n"
+        "0 BEGIN PGM A MM\n1 QS1 = \"ab\"\n2 QS2 = SUBSTR ( SRC_QS1 BEG99999999999999 "
+        "LEN99999999999999 )\n"
         "3 END PGM A MM\n",
     };
     // The first four are errors; the fifth is a valid program (SUBSTR beyond the end is empty).

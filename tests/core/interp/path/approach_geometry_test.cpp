@@ -1,8 +1,8 @@
 #include "core/interp/path/approach_geometry.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace kerf::interp {
 namespace {
@@ -39,7 +39,8 @@ TEST(ApproachGeometry, LineIntoCircleIsTangentToTheLine) {
     EXPECT_NEAR((touch - Vec2(-20, -20)).dot(touch - center), 0, 1e-9);
     EXPECT_NEAR((touch - center).norm(), 5, 1e-12);
     // Start inside the circle: impossible.
-    EXPECT_FALSE(approachMoves(ApproachKind::LineCircle, {0, -9}, {0, 0}, {1, 0}, kOffset, 0, 0, 10));
+    EXPECT_FALSE(
+        approachMoves(ApproachKind::LineCircle, {0, -9}, {0, 0}, {1, 0}, kOffset, 0, 0, 10));
 }
 
 TEST(ApproachGeometry, DepartureNormal) {

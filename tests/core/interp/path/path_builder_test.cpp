@@ -1,8 +1,8 @@
 #include "core/interp/path/path_builder.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace kerf::interp {
 namespace {
