@@ -95,6 +95,15 @@ PictureOutput::PictureOutput(const RunOptions& options, const Session& session)
         stockOptions.machine =
             s.lathe ? graphics::StockMachine::Lathe : graphics::StockMachine::Mill;
         stockOptions.deriveStockFromPath = true;
+        const machine::BarConfig& bar = session.machine.bar;
+        if (s.lathe && bar.diameterMm > 0.0) {
+            graphics::LatheBar blank;
+            blank.radiusMm = bar.diameterMm / 2.0;
+            blank.innerRadiusMm = bar.boreDiameterMm / 2.0;
+            blank.zMax = bar.faceZMm;
+            blank.zMin = bar.faceZMm - bar.lengthMm;
+            stockOptions.bar = blank;
+        }
         stockOptions.millCutter = s.millCutter;
         s.stock = std::make_unique<graphics::StockSimulation>(std::move(stockOptions));
         s.tee.add(*s.stock);

@@ -39,6 +39,17 @@ struct DrivesConfig {
     friend bool operator==(const DrivesConfig&, const DrivesConfig&) = default;
 };
 
+// The bar a lathe turns when the program defines no blank (graphics' stock simulation): a cylinder
+// about Z from faceZ down to faceZ - length, in workpiece coordinates. Diameter 0: no bar.
+struct BarConfig {
+    double diameterMm = 0.0;
+    double lengthMm = 100.0;
+    double faceZMm = 0.0;
+    double boreDiameterMm = 0.0;  // a tube's inner diameter; 0: solid
+
+    friend bool operator==(const BarConfig&, const BarConfig&) = default;
+};
+
 // The machine configuration. Every field except `axes[i].letter` is a parameter of the schema in
 // core/machine/machine_schema.h, which loads, checks and writes it; the default member values are
 // the schema defaults. New sections (drives, ...) become new member structs plus schema entries.
@@ -53,6 +64,7 @@ struct MachineConfig {
     double servoPeriodMs = 1.0;
     double pathToleranceMm = 0.01;  // default corner-blending tolerance
     DrivesConfig drives;
+    BarConfig bar;  // lathe only
 
     // The axis with this letter (enabled or not), or nullptr.
     const AxisConfig* axis(char letter) const;

@@ -82,6 +82,35 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "CiA 402 mode of the spindle drive: cyclic synchronous or profile "
                            "velocity")}),
+        bindField<&MachineConfig::bar, &BarConfig::diameterMm>(
+            kMachine, {.key = "bar.diameter",
+                       .unit = "mm",
+                       .minimum = 0.0,
+                       .maximum = 10000.0,
+                       .description = KERF_TR_NOOP(
+                           "Lathe: diameter of the bar simulated when the program defines no "
+                           "blank; 0: none")}),
+        bindField<&MachineConfig::bar, &BarConfig::lengthMm>(
+            kMachine, {.key = "bar.length",
+                       .unit = "mm",
+                       .minimum = 0.1,
+                       .maximum = 10000.0,
+                       .description = KERF_TR_NOOP("Lathe: length of the simulated bar")}),
+        bindField<&MachineConfig::bar, &BarConfig::faceZMm>(
+            kMachine, {.key = "bar.face_z",
+                       .unit = "mm",
+                       .minimum = -10000.0,
+                       .maximum = 10000.0,
+                       .description = KERF_TR_NOOP(
+                           "Lathe: workpiece Z of the bar's face; the bar reaches down to "
+                           "face_z - length")}),
+        bindField<&MachineConfig::bar, &BarConfig::boreDiameterMm>(
+            kMachine,
+            {.key = "bar.bore_diameter",
+             .unit = "mm",
+             .minimum = 0.0,
+             .maximum = 10000.0,
+             .description = KERF_TR_NOOP("Lathe: inner diameter of a tube; 0: a solid bar")}),
         bindField<&MachineConfig::drives, &DrivesConfig::interface>(
             kMachine, {.key = "drives.interface",
                        .description = KERF_TR_NOOP("SocketCAN interface of the drive bus")}),

@@ -141,6 +141,12 @@ void checkMachine(const MachineConfig& config, Validator& v) {
                  std::to_string(config.spindle.minRpm), "spindle.max_rpm",
                  std::to_string(config.spindle.maxRpm));
     }
+    if (config.bar.diameterMm > 0.0 && config.bar.boreDiameterMm >= config.bar.diameterMm) {
+        v.report({"bar.bore_diameter", "bar.diameter"},
+                 KERF_TR_NOOP("{1} = {2} must be smaller than {3} = {4}"), "bar.bore_diameter",
+                 formatNumber(config.bar.boreDiameterMm), "bar.diameter",
+                 formatNumber(config.bar.diameterMm));
+    }
 }
 
 // The drive nodes in use: enabled axes and the spindle with a non-zero drive_node.

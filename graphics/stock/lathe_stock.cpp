@@ -95,11 +95,17 @@ bool LatheStock::cut(double ax, double az, double bx, double bz, const LatheInse
     if (!std::isfinite(ax) || !std::isfinite(az) || !std::isfinite(bx) || !std::isfinite(bz)) {
         return false;
     }
-    const double nose =
+    // A sharp insert (R 0) gets a nose of just over half a cell: its degenerate outline would miss
+    // every cell centre when the path runs along cell borders. The cut may then reach one cell
+    // (the resolution) beyond the path.
+    LatheInsert shape = insert;
+    const double given =
         std::isfinite(insert.noseRadiusMm) ? std::max(0.0, insert.noseRadiusMm) : 0.0;
-    const auto [ox, oz] = insert.noseCentreOffset();
-    const auto outline = insert.outline(24);
-    const bool body = insert.includedAngleDeg > 0.0 && insert.edgeLengthMm > 0.0;
+    shape.noseRadiusMm = std::max(given, 0.5 * m_cell * 1.0001);
+    const double nose = shape.noseRadiusMm;
+    const auto [ox, oz] = shape.noseCentreOffset();
+    const auto outline = shape.outline(24);
+    const bool body = shape.includedAngleDeg > 0.0 && shape.edgeLengthMm > 0.0;
     // Reach of the shape around the programmed point.
     double reach = nose + std::hypot(ox, oz);
     double orientation = 1.0;

@@ -427,6 +427,25 @@ TEST(KerfRun, HeldOutPocketRendersFromTheTopAndMatchesItsVolume) {
     expectMatchesBaseline("heldout_pocket_top", *rgb, w, h);
 }
 
+TEST(KerfRun, LatheWithoutBlankTurnsTheConfiguredBar) {
+    const fs::path dir = outputDir();
+    const fs::path report = dir / "face_bar.json";
+    const fs::path program = kTests / "programs" / "face_bar.pim";
+    ASSERT_EQ(
+        runKerf(program.string() + " --machine lathe --stock --png " +
+                (dir / "face_bar.png").string() + " --size 320x200 --report " + report.string()),
+        0);
+    const nlohmann::json r = readJson(report);
+    // The built-in lathe's bar: D60, 120 mm long, face at Z0; the sharp tool (no offset table:
+    // R 0, location code 0) faces it 1 mm deep from X70 to the axis: a disc of radius 30, 1 mm
+    // thick, and at most one 0.1 mm cell more, as a sharp tool's cut may reach one cell further.
+    EXPECT_EQ(r["stock"]["source"], "bar");
+    EXPECT_NEAR(r["stock"]["initial_volume_mm3"].get<double>(), kPi * 30 * 30 * 120, 1.0);
+    const double removed = r["stock"]["removed_volume_mm3"].get<double>();
+    EXPECT_GE(removed, kPi * 30 * 30 * 1.0 * 0.999);
+    EXPECT_LE(removed, kPi * 30 * 30 * 1.1 * 1.001);
+}
+
 TEST(KerfRun, StartsItsOwnXvfbWhenNoDisplayIsSet) {
     const fs::path png = outputDir() / "own_display.png";
     const fs::path program = kTests / "programs" / "drill3.H";

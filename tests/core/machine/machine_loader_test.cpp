@@ -196,6 +196,26 @@ TEST(MachineLoaderErrors, SpindleMinAboveMax) {
                     "spindle.max_rpm = 4000"});
 }
 
+TEST(MachineLoaderErrors, BarBoreMustBeSmallerThanTheBar) {
+    EXPECT_EQ(problemsOf("base = \"lathe\"\n"
+                         "[bar]\n"
+                         "bore_diameter = 60\n"),
+              Lines{"mymill.toml:3:17: error: bar.bore_diameter = 60 must be smaller than "
+                    "bar.diameter = 60"});
+}
+
+TEST(MachineLoader, LatheBarFromTheFile) {
+    DiagnosticList problems;
+    auto config = parseMachine("base = \"lathe\"\n[bar]\ndiameter = 80\nlength = 200.5\n"
+                               "face_z = 2\nbore_diameter = 20\n",
+                               "mylathe.toml", &problems);
+    ASSERT_TRUE(config) << (problems.empty() ? "" : problems.front().format());
+    EXPECT_EQ(config->bar.diameterMm, 80.0);
+    EXPECT_EQ(config->bar.lengthMm, 200.5);
+    EXPECT_EQ(config->bar.faceZMm, 2.0);
+    EXPECT_EQ(config->bar.boreDiameterMm, 20.0);
+}
+
 TEST(MachineLoaderErrors, DriveNodesAreUniqueAndNotTheMasters) {
     EXPECT_EQ(problemsOf("base = \"mill\"\n"
                          "[drives]\n"
