@@ -148,7 +148,13 @@ void MotionOutput::finish(bool programRan, DiagnosticList& problems) {
     if (s.refusedAt) {
         for (Diagnostic d : s.checker.diagnostics()) {
             d.file = s.fileOf(s.refusedAt->fileId);
+            const bool softLimit = d.code == "motion.soft-limit";
+            Diagnostic hint = Diagnostic::make(
+                Severity::Note, "motion.work-offset", d.file, d.line, d.column,
+                KERF_TR_NOOP("the workpiece origin is at the machine origin; give its machine "
+                             "coordinates with --work-offset, e.g. Z-300"));
             problems.push_back(std::move(d));
+            if (softLimit && !s.options.workOffset) problems.push_back(std::move(hint));
         }
     } else if (programRan) {
         s.release();

@@ -125,6 +125,9 @@ TEST(KerfRunMotion, ASoftLimitRefusesTheProgramBeforeAnythingMoves) {
     EXPECT_NE(run.errors.find("limit.H:3:"), std::string::npos) << run.errors;
     EXPECT_NE(run.errors.find("error: Block 2"), std::string::npos) << run.errors;
     EXPECT_NE(run.errors.find("soft limit"), std::string::npos) << run.errors;
+    EXPECT_NE(run.errors.find("note: the workpiece origin is at the machine origin"),
+              std::string::npos)
+        << run.errors;
     const nlohmann::json& motion = run.report["motion"];
     ASSERT_TRUE(motion.is_object()) << run.report.dump(2);
     EXPECT_TRUE(motion["refused"].get<bool>());
@@ -135,6 +138,7 @@ TEST(KerfRunMotion, ASoftLimitRefusesTheProgramBeforeAnythingMoves) {
     // With the workpiece origin at machine X -200, X+500 is machine X 300: inside, and it runs.
     KerfRun shifted = runKerf(program, "--work-offset X-200");
     EXPECT_EQ(shifted.exitCode, 0) << shifted.errors;
+    EXPECT_EQ(shifted.errors.find("--work-offset"), std::string::npos) << shifted.errors;
     EXPECT_NEAR(shifted.report["motion"]["final_position"]["X"].get<double>(), 500.0, 1e-6);
 }
 
