@@ -71,6 +71,8 @@ int main(int argc, char** argv) {
     app.add_option("--mode", hmi.mode,
                    "mode on screen: manual, handwheel, mdi, single, full, programming, testrun");
     app.add_option("--language", hmi.language, "HMI language: en, pt, pl");
+    app.add_flag("--programming-station", hmi.programmingStation,
+                 "no machine: edit, simulate and test-run programs only");
 #endif
 
     try {

@@ -102,6 +102,10 @@
 <context>
     <name>kerf::ui::MainWindow</name>
     <message>
+        <source>Programming station</source>
+        <translation>Stanowisko programowania</translation>
+    </message>
+    <message>
         <source>%1 has unsaved changes from an earlier session: press &quot;Restore autosave&quot; to get them back</source>
         <translation>%1 ma niezapisane zmiany z poprzedniej sesji: naciśnij &quot;Przywróć autozapis&quot;, aby je odzyskać</translation>
     </message>
@@ -369,6 +373,10 @@ status</translation>
 </context>
 <context>
     <name>kerf</name>
+    <message>
+        <source>programming station: no machine is connected, only Programming and Test run are available</source>
+        <translation>stanowisko programowania: brak podłączonej maszyny, dostępne są tylko Programowanie i Test programu</translation>
+    </message>
     <message>
         <source>Note</source>
         <translation>Uwaga</translation>

@@ -101,6 +101,10 @@
 <context>
     <name>kerf::ui::MainWindow</name>
     <message>
+        <source>Programming station</source>
+        <translation>Posto de programação</translation>
+    </message>
+    <message>
         <source>%1 has unsaved changes from an earlier session: press &quot;Restore autosave&quot; to get them back</source>
         <translation>%1 tem alterações não guardadas de uma sessão anterior: prima &quot;Repor cópia automática&quot; para as recuperar</translation>
     </message>
@@ -367,6 +371,10 @@ estado</translation>
 </context>
 <context>
     <name>kerf</name>
+    <message>
+        <source>programming station: no machine is connected, only Programming and Test run are available</source>
+        <translation>posto de programação: nenhuma máquina ligada, só estão disponíveis Programação e Teste do programa</translation>
+    </message>
     <message>
         <source>Note</source>
         <translation>Nota</translation>

@@ -26,6 +26,11 @@ const char* programmingModeName(ProgrammingMode mode) {
 }
 
 std::optional<ModeRefusal> ModeMachine::setMachineMode(MachineMode mode, bool moving) {
+    if (!m_connected) {
+        return ModeRefusal{
+            KERF_TR_NOOP("programming station: no machine is connected, only Programming and "
+                         "Test run are available")};
+    }
     if (mode == m_machine) return std::nullopt;
     // Between the two program-run modes the switch is allowed at any time (the TNC changes
     // single block on the fly); away from them only when nothing moves.

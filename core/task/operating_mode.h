@@ -22,8 +22,14 @@ struct ModeRefusal {
 // Keeps the active modes and enforces when they may change: the machine mode may not change
 // while a program or MDI block is moving the machine (it may while the program is stopped, to
 // jog away and return to the contour); the programming modes are always free.
+//
+// On a programming station (no machine connected) the machine modes are refused: only the
+// programming modes (Programming, Test run) are available.
 class ModeMachine {
 public:
+    explicit ModeMachine(bool machineConnected = true) : m_connected(machineConnected) {}
+
+    bool machineConnected() const { return m_connected; }
     MachineMode machineMode() const { return m_machine; }
     ProgrammingMode programmingMode() const { return m_programming; }
 
@@ -32,6 +38,7 @@ public:
     void setProgrammingMode(ProgrammingMode mode) { m_programming = mode; }
 
 private:
+    bool m_connected = true;
     MachineMode m_machine = MachineMode::Manual;
     ProgrammingMode m_programming = ProgrammingMode::Programming;
 };

@@ -15,6 +15,10 @@ namespace {
 
 bool applyStartMode(ModeController& modes, const std::string& mode) {
     using task::MachineMode;
+    if (mode.empty() && !modes.machineConnected()) {
+        modes.requestProgrammingMode(task::ProgrammingMode::Programming);
+        return true;
+    }
     if (mode.empty() || mode == "manual") return modes.requestMachineMode(MachineMode::Manual);
     if (mode == "handwheel") return modes.requestMachineMode(MachineMode::Handwheel);
     if (mode == "mdi") return modes.requestMachineMode(MachineMode::Mdi);
@@ -53,6 +57,7 @@ int runHmi(int argc, char** argv, const HmiOptions& options) {
     context.ncRoot =
         options.ncRoot.empty() ? data / "nc_prog" : std::filesystem::path(options.ncRoot);
     context.recoveryFolder = data / "recovery";
+    context.programmingStation = options.programmingStation;
     std::error_code error;
     std::filesystem::create_directories(context.ncRoot, error);
 
@@ -64,7 +69,9 @@ int runHmi(int argc, char** argv, const HmiOptions& options) {
     }
     if (!applyStartMode(window.modes(), options.mode)) {
         std::cerr << "kerf: unknown mode " << options.mode
-                  << " (manual, handwheel, mdi, single, full, programming, testrun)\n";
+                  << (options.programmingStation
+                          ? " (a programming station has: programming, testrun)\n"
+                          : " (manual, handwheel, mdi, single, full, programming, testrun)\n");
         return 2;
     }
     if (!options.program.empty() && !window.openProgram(options.program)) {

@@ -13,7 +13,8 @@ struct HmiOptions {
     std::string program;  // opened at start
     std::string
         mode;  // screen at start: manual, handwheel, mdi, single, full, programming, testrun
-    std::string language;  // en, pt, pl; empty: the system's
+    std::string language;             // en, pt, pl; empty: the system's
+    bool programmingStation = false;  // no machine: Programming and Test run only
 };
 
 // Starts the operator panel and runs the Qt event loop; returns the process exit code.

@@ -97,7 +97,8 @@ void MachineKeys::retranslate() {
 
 void MachineKeys::refresh() {
     for (task::MachineMode mode : kMachineModes) {
-        machineKey(mode)->setChecked(mode == m_modes.machineMode());
+        machineKey(mode)->setChecked(m_modes.machineConnected() && mode == m_modes.machineMode());
+        machineKey(mode)->setEnabled(m_modes.machineConnected());
     }
     for (task::ProgrammingMode mode : kProgrammingModes) {
         programmingKey(mode)->setChecked(mode == m_modes.programmingMode());

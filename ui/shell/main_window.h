@@ -24,6 +24,7 @@ struct HmiContext {
     machine::MachineConfig machine;
     std::filesystem::path ncRoot;          // programs and tables; the file manager stays inside
     std::filesystem::path recoveryFolder;  // autosave copies of unsaved programs
+    bool programmingStation = false;       // no machine: Programming and Test run only
 };
 
 // The operator panel: a header naming the machine mode and the programming mode, the message

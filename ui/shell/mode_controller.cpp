@@ -17,11 +17,17 @@ namespace {
     QT_TRANSLATE_NOOP("kerf", "Programming"),
     QT_TRANSLATE_NOOP("kerf", "Test run"),
     QT_TRANSLATE_NOOP("kerf", "stop the program before changing the operating mode"),
+    QT_TRANSLATE_NOOP("kerf",
+                      "programming station: no machine is connected, only Programming and "
+                      "Test run are available"),
 };
 
 }  // namespace
 
-ModeController::ModeController(QObject* parent) : QObject(parent) {}
+ModeController::ModeController(bool machineConnected, QObject* parent)
+    : QObject(parent),
+      m_modes(machineConnected),
+      m_screen(machineConnected ? ScreenMode::Machine : ScreenMode::Programming) {}
 
 bool ModeController::requestMachineMode(task::MachineMode mode) {
     const bool moving = m_moving ? m_moving() : false;

@@ -18,7 +18,11 @@ class ModeController : public QObject {
     Q_OBJECT
 
 public:
-    explicit ModeController(QObject* parent = nullptr);
+    // A programming station has no machine: the machine modes are refused and the
+    // programming mode fills the screen.
+    explicit ModeController(bool machineConnected = true, QObject* parent = nullptr);
+
+    bool machineConnected() const { return m_modes.machineConnected(); }
 
     // Asked on every machine-mode request: is a program or MDI block moving the machine?
     void setMovingQuery(std::function<bool()> moving) { m_moving = std::move(moving); }

@@ -20,5 +20,18 @@ TEST(ModeMachine, MachineModeChangesOnlyWhenNothingMoves) {
     EXPECT_STREQ(machineModeName(MachineMode::Mdi), "Positioning with manual data input");
 }
 
+TEST(ModeMachine, ProgrammingStationRefusesEveryMachineMode) {
+    ModeMachine station(false);
+    EXPECT_FALSE(station.machineConnected());
+    for (MachineMode mode : {MachineMode::Manual, MachineMode::Handwheel, MachineMode::Mdi,
+                             MachineMode::SingleBlock, MachineMode::FullSequence}) {
+        auto refusal = station.setMachineMode(mode, false);
+        ASSERT_TRUE(refusal);
+        EXPECT_NE(refusal->messageTemplate.find("programming station"), std::string::npos);
+    }
+    station.setProgrammingMode(ProgrammingMode::TestRun);
+    EXPECT_EQ(station.programmingMode(), ProgrammingMode::TestRun);
+}
+
 }  // namespace
 }  // namespace kerf::task

@@ -79,6 +79,29 @@ TEST(MainWindow, HeaderFollowsModeKeys) {
               QStringLiteral("Positioning with manual data input"));
 }
 
+TEST(MainWindow, ProgrammingStationOffersOnlyTheProgrammingModes) {
+    test::testApp();
+    HmiContext context = contextIn(kerf::test::uniqueTempDir("hmi_window_station"));
+    context.programmingStation = true;
+    MainWindow window(std::move(context));
+    window.show();
+    EXPECT_EQ(window.modes().screen(), ScreenMode::Programming);
+    EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("Programming station"));
+    for (MachineMode mode : {MachineMode::Manual, MachineMode::Handwheel, MachineMode::Mdi,
+                             MachineMode::SingleBlock, MachineMode::FullSequence}) {
+        EXPECT_FALSE(window.machineKeys()->machineKey(mode)->isEnabled());
+        EXPECT_FALSE(window.machineKeys()->machineKey(mode)->isChecked());
+    }
+    // Asked anyway (e.g. by a shortcut): refused with a message, the screen stays.
+    EXPECT_FALSE(window.modes().requestMachineMode(MachineMode::FullSequence));
+    EXPECT_EQ(window.modes().screen(), ScreenMode::Programming);
+    ASSERT_EQ(window.messages()->messageCount(), 1);
+    QTest::mouseClick(window.machineKeys()->programmingKey(ProgrammingMode::TestRun),
+                      Qt::LeftButton);
+    EXPECT_EQ(window.modes().programmingMode(), ProgrammingMode::TestRun);
+    EXPECT_EQ(labelText(window, "programmingMode"), QStringLiteral("Test run"));
+}
+
 TEST(MainWindow, ModeChangeWhileMovingIsRefusedWithAMessage) {
     test::testApp();
     MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_window_refuse")));
