@@ -46,10 +46,7 @@ bool endsWith(const std::string& name, const std::string& suffix) {
 
 bool knownBad(const std::string& name) {
     for (const auto& [suffix, why] : kKnownBad) {
-        if (name.size() >= suffix.size() &&
-            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
-            return true;
-        }
+        if (endsWith(name, suffix)) return true;
     }
     return false;
 }
