@@ -29,6 +29,14 @@ void* operator new(std::size_t size) {
 void* operator new[](std::size_t size) {
     return operator new(size);
 }
+// The nothrow forms too (std::stable_sort's buffer): every new must pair with the free below.
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    if (t_counting) ++g_allocations;
+    return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept {
+    return operator new(size, tag);
+}
 void operator delete(void* p) noexcept {
     std::free(p);
 }
