@@ -12,7 +12,10 @@ dpkg-query -W clang-14 libclang-rt-14-dev >/dev/null 2>&1 ||
 cd "$root"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target "fuzz_$target"
+# Seeds: the golden programs of the dialect (each case's program.*), named after their case.
 work=$(mktemp -d)
-cp tests/fuzz/corpus/"$target"/* "$work/"
+for program in tests/golden/"$target"/*/program.*; do
+  cp "$program" "$work/$(basename "$(dirname "$program")")"
+done
 exec build/fuzz/tests/fuzz/"fuzz_$target" "$work" -max_total_time="$seconds" -timeout=10 \
   -rss_limit_mb=2048 -max_len=4096
