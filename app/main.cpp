@@ -9,6 +9,7 @@
 #include "app/runner/picture_output.h"
 
 #ifdef KERF_WITH_UI
+#include "motion/runtime/realtime_motion_port.h"
 #include "ui/shell/hmi_main.h"
 #endif
 
@@ -54,12 +55,19 @@ int main(int argc, char** argv) {
     run->add_option("--samples", runOptions.samples,
                     "with --motion: write every servo cycle's setpoints as CSV");
     run->add_option("--work-offset", runOptions.workOffset,
-                    "with --motion: machine coordinates of the workpiece origin, e.g. Z-300");
+                    "machine coordinates of the workpiece origin on the axes named, e.g. "
+                    "Z-300 (default: the machine file's presets)");
     run->add_option("--inject-fault", runOptions.injectFaults,
                     "NODE:KIND@SECONDS, e.g. 2:heartbeat@1.5 (repeatable; see docs/drives.md)");
 
 #ifdef KERF_WITH_UI
     kerf::ui::HmiOptions hmi;
+    // The HMI runs programs on the simulated drives in real time.
+    hmi.connectMachine = [](const kerf::machine::MachineConfig& config) {
+        return std::unique_ptr<kerf::task::MotionPort>(
+            std::make_unique<kerf::motion::RealtimeMotionPort>(config,
+                                                               kerf::motion::RealtimeOptions{}));
+    };
     app.add_option("--machine", hmi.machine, "machine for the HMI: mill, lathe or a TOML file");
     app.add_option("--screenshot", hmi.screenshot,
                    "save a picture of the HMI to this PNG and exit");
@@ -70,7 +78,9 @@ int main(int argc, char** argv) {
     app.add_option("--program", hmi.program, "program to open at start");
     app.add_option("--mode", hmi.mode,
                    "mode on screen: manual, handwheel, mdi, single, full, programming, testrun");
-    app.add_option("--language", hmi.language, "HMI language: en, pt, pl");
+    app.add_option("--language", hmi.language, "HMI language: en, de, es, pl, pt");
+    app.add_option("--layout", hmi.layout,
+                   "workspace at start: program, graphics, status (program + status), positions");
     app.add_flag("--programming-station", hmi.programmingStation,
                  "no machine: edit, simulate and test-run programs only");
 #endif

@@ -2,6 +2,51 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pl_PL">
 <context>
+    <name>kerf::ui::CycleCatalogueDialog</name>
+    <message>
+        <source>There is no cycle %1</source>
+        <translation>Nie ma cyklu %1</translation>
+    </message>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Definicja cyklu</translation>
+    </message>
+    <message>
+        <source>Cycle number</source>
+        <translation>Numer cyklu</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::CycleDialog</name>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Definicja cyklu</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FagorTableModel</name>
+    <message>
+        <source>Key</source>
+        <translation>Klucz</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::FileManager</name>
     <message>
         <source>All files</source>
@@ -100,6 +145,40 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::GraphicsPanel</name>
+    <message>
+        <source>The 3D graphics need a display</source>
+        <translation>Grafika 3D wymaga wyświetlacza</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Prędkość</translation>
+    </message>
+    <message>
+        <source>Machining time %1 / %2</source>
+        <translation>Czas obróbki %1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineSession</name>
+    <message>
+        <source>The machine is busy: stop the program or wait until the axes stand still</source>
+        <translation>Maszyna jest zajęta: zatrzymaj program lub poczekaj, aż osie staną</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot be started</source>
+        <translation>Program zawiera błędy i nie może zostać uruchomiony</translation>
+    </message>
+    <message>
+        <source>Program finished</source>
+        <translation>Program zakończony</translation>
+    </message>
+    <message>
+        <source>Program stopped</source>
+        <translation>Program zatrzymany</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MainWindow</name>
     <message>
         <source>Programming station</source>
@@ -112,18 +191,6 @@
     <message>
         <source>Kerf - %1</source>
         <translation>Kerf - %1</translation>
-    </message>
-    <message>
-        <source>Graphics</source>
-        <translation>Grafika</translation>
-    </message>
-    <message>
-        <source>Status</source>
-        <translation>Status</translation>
-    </message>
-    <message>
-        <source>Positions: %1</source>
-        <translation>Pozycje: %1</translation>
     </message>
     <message>
         <source>Screen
@@ -140,12 +207,6 @@ ekranu</translation>
 table</source>
         <translation>Tabela
 narzędzi</translation>
-    </message>
-    <message>
-        <source>Preset
-table</source>
-        <translation>Tabela punktów
-odniesienia</translation>
     </message>
     <message>
         <source>Message
@@ -264,6 +325,58 @@ autosave</source>
         <translation>Przywróć
 autozapis</translation>
     </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tabele</translation>
+    </message>
+    <message>
+        <source>MOD</source>
+        <translation>MOD</translation>
+    </message>
+    <message>
+        <source>No program is open: open one in Files</source>
+        <translation>Żaden program nie jest otwarty: otwórz program w Plikach</translation>
+    </message>
+    <message>
+        <source>Machine
+parameters</source>
+        <translation>Parametry
+maszynowe</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Speed
+%1</source>
+        <translation>Prędkość
+%1</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Widok</translation>
+    </message>
+    <message>
+        <source>Zoom
++</source>
+        <translation>Powiększ
++</translation>
+    </message>
+    <message>
+        <source>Zoom
+-</source>
+        <translation>Pomniejsz
+-</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -301,6 +414,116 @@ autozapis</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ModPage</name>
+    <message>
+        <source>MOD functions</source>
+        <translation>Funkcje MOD</translation>
+    </message>
+    <message>
+        <source>Position display</source>
+        <translation>Wyświetlanie położenia</translation>
+    </message>
+    <message>
+        <source>Unit of the position display</source>
+        <translation>Jednostka wyświetlania położenia</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Język</translation>
+    </message>
+    <message>
+        <source>Software: Kerf %1 (Qt %2)
+Machine: %3</source>
+        <translation>Oprogramowanie: Kerf %1 (Qt %2)
+Maszyna: %3</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::OverrideControls</name>
+    <message>
+        <source>Feed</source>
+        <translation>Posuw</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Bieg szybki</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Wrzeciono</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PathFunctionDialog</name>
+    <message>
+        <source>Path function</source>
+        <translation>Funkcja toru</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PositionDisplay</name>
+    <message>
+        <source>ACTL.</source>
+        <translation>RZECZ.</translation>
+    </message>
+    <message>
+        <source>NOML.</source>
+        <translation>ZAD.</translation>
+    </message>
+    <message>
+        <source>REF ACTL.</source>
+        <translation>REF RZECZ.</translation>
+    </message>
+    <message>
+        <source>REF NOML.</source>
+        <translation>REF ZAD.</translation>
+    </message>
+    <message>
+        <source>LAG</source>
+        <translation>UCHYB</translation>
+    </message>
+    <message>
+        <source>DIST.</source>
+        <translation>ODL.</translation>
+    </message>
+    <message>
+        <source>Program: %1   Machine: %2</source>
+        <translation>Program: %1   Maszyna: %2</translation>
+    </message>
+    <message>
+        <source>   Line %1</source>
+        <translation>   Wiersz %1</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>F %1 (actual %2) %3</source>
+        <translation>F %1 (rzeczywisty %2) %3</translation>
+    </message>
+    <message>
+        <source>inch/min</source>
+        <translation>inch/min</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>S %1 (actual %2) rpm</source>
+        <translation>S %1 (rzeczywista %2) obr/min</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Saved %1</source>
@@ -317,6 +540,332 @@ autozapis</translation>
     <message>
         <source>Loading %1 ...</source>
         <translation>Wczytywanie %1 ...</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsModel</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maszyna</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Oś %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parametr</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wartość</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednostka</translation>
+    </message>
+    <message>
+        <source>Allowed</source>
+        <translation>Dozwolone</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Domyślnie</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Opis</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsPage</name>
+    <message>
+        <source>Not saved: correct the parameters first</source>
+        <translation>Nie zapisano: najpierw popraw parametry</translation>
+    </message>
+    <message>
+        <source>Saved %1: the changes apply when Kerf is restarted</source>
+        <translation>Zapisano %1: zmiany obowiązują po ponownym uruchomieniu Kerf</translation>
+    </message>
+    <message>
+        <source>Machine parameters</source>
+        <translation>Parametry maszynowe</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes apply after a restart. This is a built-in machine: the parameters are saved to %1; start Kerf with --machine %1 to use them.</source>
+        <translation>Kerf wczytuje parametry maszynowe przy starcie: zapisane zmiany obowiązują po ponownym uruchomieniu. To jest maszyna wbudowana: parametry zostaną zapisane w %1; uruchom Kerf z --machine %1, aby ich użyć.</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
+        <translation>Kerf wczytuje parametry maszynowe przy starcie: zmiany zapisane w %1 obowiązują po ponownym uruchomieniu.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::StatusTabs</name>
+    <message>
+        <source>PGM</source>
+        <translation>PGM</translation>
+    </message>
+    <message>
+        <source>TOOL</source>
+        <translation>TOOL</translation>
+    </message>
+    <message>
+        <source>TRANS</source>
+        <translation>TRANS</translation>
+    </message>
+    <message>
+        <source>PROBE</source>
+        <translation>PROBE</translation>
+    </message>
+    <message>
+        <source>%1PARA</source>
+        <translation>%1PARA</translation>
+    </message>
+    <message>
+        <source>Filter, e.g. %1</source>
+        <translation>Filtr, np. %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Called program</source>
+        <translation>Wywołany program</translation>
+    </message>
+    <message>
+        <source>Label</source>
+        <translation>Etykieta</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Cykl</translation>
+    </message>
+    <message>
+        <source>M functions</source>
+        <translation>Funkcje M</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Wiersz</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednostka</translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation>inch</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Narzędzie</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nazwa</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Korekcja</translation>
+    </message>
+    <message>
+        <source>X (radius)</source>
+        <translation>X (promień)</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Wear X (I)</source>
+        <translation>Zużycie X (I)</translation>
+    </message>
+    <message>
+        <source>Wear Z (K)</source>
+        <translation>Zużycie Z (K)</translation>
+    </message>
+    <message>
+        <source>Location code (F)</source>
+        <translation>Kod położenia (F)</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>DL</source>
+        <translation>DL</translation>
+    </message>
+    <message>
+        <source>DR</source>
+        <translation>DR</translation>
+    </message>
+    <message>
+        <source>Tool axis</source>
+        <translation>Oś narzędzia</translation>
+    </message>
+    <message>
+        <source>Zero offset</source>
+        <translation>Przesunięcie punktu zerowego</translation>
+    </message>
+    <message>
+        <source>Datum shift %1</source>
+        <translation>Przesunięcie punktu zerowego %1</translation>
+    </message>
+    <message>
+        <source>Mirrored axes</source>
+        <translation>Odbite osie</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Obrót</translation>
+    </message>
+    <message>
+        <source>Scaling</source>
+        <translation>Skalowanie</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wartość</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Rodzaj</translation>
+    </message>
+    <message>
+        <source>global</source>
+        <translation>globalny</translation>
+    </message>
+    <message>
+        <source>local, level %1</source>
+        <translation>lokalny, poziom %1</translation>
+    </message>
+    <message>
+        <source>local</source>
+        <translation>lokalny</translation>
+    </message>
+    <message>
+        <source>remanent</source>
+        <translation>remanentny</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>tekst</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Sonda</translation>
+    </message>
+    <message>
+        <source>no result</source>
+        <translation>brak wyniku</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>zetknięcie</translation>
+    </message>
+    <message>
+        <source>not touched</source>
+        <translation>brak zetknięcia</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TableChooser</name>
+    <message>
+        <source>Tool
+table</source>
+        <translation>Tabela
+narzędzi</translation>
+    </message>
+    <message>
+        <source>Preset
+table</source>
+        <translation>Tabela punktów
+odniesienia</translation>
+    </message>
+    <message>
+        <source>Datum
+table</source>
+        <translation>Tabela punktów
+zerowych</translation>
+    </message>
+    <message>
+        <source>Point
+table</source>
+        <translation>Tabela
+punktów</translation>
+    </message>
+    <message>
+        <source>Touch probe
+table</source>
+        <translation>Tabela
+sond</translation>
+    </message>
+    <message>
+        <source>Tool
+offsets</source>
+        <translation>Korekcje
+narzędzi</translation>
+    </message>
+    <message>
+        <source>Zero
+offsets</source>
+        <translation>Przesunięcia
+punktu zerowego</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabela</translation>
+    </message>
+    <message>
+        <source>Lengths, radii, wear and life of the tools</source>
+        <translation>Długości, promienie, zużycie i okres trwałości narzędzi</translation>
+    </message>
+    <message>
+        <source>Reference points of the workpieces, in machine coordinates</source>
+        <translation>Punkty odniesienia obrabianych przedmiotów we współrzędnych maszyny</translation>
+    </message>
+    <message>
+        <source>Zero offsets relative to the active preset (CYCL DEF 7)</source>
+        <translation>Punkty zerowe względem aktywnego punktu odniesienia (CYCL DEF 7)</translation>
+    </message>
+    <message>
+        <source>Machining positions for patterns (SEL PATTERN)</source>
+        <translation>Pozycje obróbki dla wzorów (SEL PATTERN)</translation>
+    </message>
+    <message>
+        <source>Workpiece touch probes: centre offset, feeds, probing path</source>
+        <translation>Sondy przedmiotowe: przesunięcie środka, posuwy, droga próbkowania</translation>
+    </message>
+    <message>
+        <source>Tool offsets D: X, Z, nose radius R, location code F, wear I, K</source>
+        <translation>Korekcje narzędzi D: X, Z, promień ostrza R, kod położenia F, zużycie I, K</translation>
+    </message>
+    <message>
+        <source>Zero offsets G54-G59, G159 N7-N20 and the PLC offset, from machine zero</source>
+        <translation>Przesunięcia punktu zerowego G54-G59, G159 N7-N20 i przesunięcie PLC, od zera maszyny</translation>
+    </message>
+    <message>
+        <source>Tools T: offset D, family, tool life, nose angle and width</source>
+        <translation>Narzędzia T: korekcja D, rodzina, okres trwałości, kąt i szerokość ostrza</translation>
+    </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tabele</translation>
     </message>
 </context>
 <context>
@@ -344,6 +893,44 @@ autozapis</translation>
     <message>
         <source>Table</source>
         <translation>Tabela</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TestRunController</name>
+    <message>
+        <source>max</source>
+        <translation>maks.</translation>
+    </message>
+    <message>
+        <source>Test run: %1</source>
+        <translation>Test programu: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ViewportWidget</name>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Z góry</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Z przodu</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Z boku</translation>
+    </message>
+    <message>
+        <source>Section</source>
+        <translation>Przekrój</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Dopasuj</translation>
     </message>
 </context>
 <context>
@@ -420,6 +1007,4199 @@ status</translation>
     <message>
         <source>stop the program before changing the operating mode</source>
         <translation>zatrzymaj program przed zmianą trybu pracy</translation>
+    </message>
+    <message>
+        <source>cannot {1}: {2}</source>
+        <translation>nie można {1}: {2}</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip to workpiece surface</source>
+        <translation>Odstęp bezpieczeństwa: wierzchołek narzędzia do powierzchni obrabianego przedmiotu</translation>
+    </message>
+    <message>
+        <source>Depth: workpiece surface to bottom (sign = direction)</source>
+        <translation>Głębokość: powierzchnia obrabianego przedmiotu do dna (znak = kierunek)</translation>
+    </message>
+    <message>
+        <source>Thread depth: workpiece surface to thread end</source>
+        <translation>Głębokość gwintu: powierzchnia obrabianego przedmiotu do końca gwintu</translation>
+    </message>
+    <message>
+        <source>Plunging depth per infeed</source>
+        <translation>Głębokość dosuwu na jedno wcięcie</translation>
+    </message>
+    <message>
+        <source>Workpiece surface coordinate</source>
+        <translation>Współrzędne powierzchni obrabianego przedmiotu</translation>
+    </message>
+    <message>
+        <source>2nd set-up clearance: no collision above this height</source>
+        <translation>2. odstęp bezpieczeństwa: brak kolizji powyżej tej wysokości</translation>
+    </message>
+    <message>
+        <source>Minimum plunging depth when decreasing</source>
+        <translation>Minimalna głębokość dosuwu przy zmniejszaniu</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging</source>
+        <translation>Posuw wcięcia w materiał</translation>
+    </message>
+    <message>
+        <source>Feed rate for milling</source>
+        <translation>Posuw frezowania</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: plunging feed)</source>
+        <translation>Posuw powrotu (0: posuw wcięcia)</translation>
+    </message>
+    <message>
+        <source>Dwell time at the top</source>
+        <translation>Czas przerwy u góry</translation>
+    </message>
+    <message>
+        <source>Dwell time at depth</source>
+        <translation>Czas przerwy na dole</translation>
+    </message>
+    <message>
+        <source>Decrement of the plunging depth after each infeed</source>
+        <translation>Zmniejszenie głębokości dosuwu po każdym wcięciu</translation>
+    </message>
+    <message>
+        <source>Feed rate for pre-positioning</source>
+        <translation>Posuw pozycjonowania wstępnego</translation>
+    </message>
+    <message>
+        <source>Feed rate for countersinking</source>
+        <translation>Posuw pogłębiania</translation>
+    </message>
+    <message>
+        <source>Retraction distance for chip breaking</source>
+        <translation>Odcinek powrotu przy łamaniu wióra</translation>
+    </message>
+    <message>
+        <source>Depth for chip breaking (0: none)</source>
+        <translation>Głębokość łamania wióra (0: brak)</translation>
+    </message>
+    <message>
+        <source>Upper advanced stop distance</source>
+        <translation>Górny odstęp wyprzedzenia</translation>
+    </message>
+    <message>
+        <source>Angle for spindle orientation</source>
+        <translation>Kąt orientacji wrzeciona</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (0 none, 1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Kierunek odsunięcia (0 brak, 1 -oś główna, 2 -oś pomocnicza, 3 +oś główna, 4 +oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>Nominal diameter</source>
+        <translation>Średnica nominalna</translation>
+    </message>
+    <message>
+        <source>Thread pitch (+ right-hand, - left-hand)</source>
+        <translation>Skok gwintu (+ prawy, - lewy)</translation>
+    </message>
+    <message>
+        <source>Climb (+1) or up-cut (-1) milling with M3</source>
+        <translation>Frezowanie współbieżne (+1) lub przeciwbieżne (-1) z M3</translation>
+    </message>
+    <message>
+        <source>Threads per step (0 one 360° helix, 1 continuous)</source>
+        <translation>Liczba zwojów na krok (0 jedna linia śrubowa 360°, 1 ciągle)</translation>
+    </message>
+    <message>
+        <source>Countersinking depth: surface to tool tip</source>
+        <translation>Głębokość pogłębienia: powierzchnia do wierzchołka narzędzia</translation>
+    </message>
+    <message>
+        <source>Total hole depth</source>
+        <translation>Całkowita głębokość otworu</translation>
+    </message>
+    <message>
+        <source>Clearance to side: tool edge to hole wall</source>
+        <translation>Odstęp z boku: krawędź narzędzia do ścianki otworu</translation>
+    </message>
+    <message>
+        <source>Depth at front: surface to tool tip</source>
+        <translation>Głębokość czołowo: powierzchnia do wierzchołka narzędzia</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front (tool centre)</source>
+        <translation>Przesunięcie pogłębienia czołowo (środek narzędzia)</translation>
+    </message>
+    <message>
+        <source>Feed rate for approaching (0: milling feed)</source>
+        <translation>Posuw najazdu (0: posuw frezowania)</translation>
+    </message>
+    <message>
+        <source>Deepened starting point below the surface</source>
+        <translation>Pogłębiony punkt startu poniżej powierzchni</translation>
+    </message>
+    <message>
+        <source>Depth reference (0 tool tip, 1 cylindrical part)</source>
+        <translation>Odniesienie głębokości (0 wierzchołek narzędzia, 1 część cylindryczna)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>cykl {1}: {2} ({3}) = {4} musi być liczbą całkowitą od {5} do {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>cykl {1}: {2} ({3}) = {4} leży poza zakresem {5} do {6}</translation>
+    </message>
+    <message>
+        <source>DRILLING</source>
+        <translation>WIERCENIE</translation>
+    </message>
+    <message>
+        <source>REAMING</source>
+        <translation>ROZWIERCANIE DOKŁADNE OTWORU</translation>
+    </message>
+    <message>
+        <source>BORING</source>
+        <translation>WYTACZANIE</translation>
+    </message>
+    <message>
+        <source>Number of chip breaks before retracting</source>
+        <translation>Liczba łamań wióra przed wycofaniem</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL DRILLING</source>
+        <translation>WIERCENIE UNIWERSALNE</translation>
+    </message>
+    <message>
+        <source>Depth of counterbore from the underside (+ upwards)</source>
+        <translation>Głębokość pogłębienia od dolnej strony (+ w górę)</translation>
+    </message>
+    <message>
+        <source>Material thickness</source>
+        <translation>Grubość materiału</translation>
+    </message>
+    <message>
+        <source>Off-centre distance of the boring bar</source>
+        <translation>Wymiar mimośrodu wytaczadła</translation>
+    </message>
+    <message>
+        <source>Tool edge height above the underside of the bar</source>
+        <translation>Wysokość ostrza narzędzia nad dolną krawędzią wytaczadła</translation>
+    </message>
+    <message>
+        <source>Feed rate for counterboring</source>
+        <translation>Posuw pogłębiania</translation>
+    </message>
+    <message>
+        <source>Dwell time at the counterbore floor</source>
+        <translation>Czas przerwy na dnie pogłębienia</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Kierunek odsunięcia (1 -oś główna, 2 -oś pomocnicza, 3 +oś główna, 4 +oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>BACK BORING</source>
+        <translation>POGŁĘBIANIE WSTECZNE</translation>
+    </message>
+    <message>
+        <source>Lower advanced stop distance</source>
+        <translation>Dolny odstęp wyprzedzenia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q379 lies at or below the depth</source>
+        <translation>cykl {1}: punkt startu Q379 leży na głębokości lub poniżej niej</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL PECKING</source>
+        <translation>WIERCENIE GŁĘBOKIE UNIWERSALNE</translation>
+    </message>
+    <message>
+        <source>Feed rate for helical drilling</source>
+        <translation>Posuw wiercenia po linii śrubowej</translation>
+    </message>
+    <message>
+        <source>Infeed per helix revolution</source>
+        <translation>Dosuw na jeden obrót linii śrubowej</translation>
+    </message>
+    <message>
+        <source>Roughing (pre-drilled) diameter</source>
+        <translation>Średnica wstępnie obrobiona (nawiercona)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter {2} is smaller than the tool diameter {3}</source>
+        <translation>cykl {1}: średnica nominalna {2} jest mniejsza od średnicy narzędzia {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter is more than twice the tool diameter; enter the roughing diameter Q342</source>
+        <translation>cykl {1}: średnica nominalna jest ponad dwa razy większa od średnicy narzędzia; podaj średnicę wstępnej obróbki Q342</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per helix Q334 must be greater than 0</source>
+        <translation>cykl {1}: dosuw na linię śrubową Q334 musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>BORE MILLING</source>
+        <translation>FREZOWANIE OTWORU</translation>
+    </message>
+    <message>
+        <source>Select depth (0) or diameter (1)</source>
+        <translation>Wybór głębokości (0) lub średnicy (1)</translation>
+    </message>
+    <message>
+        <source>Countersink diameter (sign = direction)</source>
+        <translation>Średnica pogłębienia (znak = kierunek)</translation>
+    </message>
+    <message>
+        <source>CENTERING</source>
+        <translation>NAKIEŁKOWANIE</translation>
+    </message>
+    <message>
+        <source>Direction of rotation for entry and exit (3 M3, 4 M4, 5 stationary)</source>
+        <translation>Kierunek obrotów przy wejściu i wyjściu (3 M3, 4 M4, 5 stop)</translation>
+    </message>
+    <message>
+        <source>Spindle speed for entry and exit</source>
+        <translation>Prędkość obrotowa wrzeciona przy wejściu i wyjściu</translation>
+    </message>
+    <message>
+        <source>Spindle speed for drilling</source>
+        <translation>Prędkość obrotowa wrzeciona przy wierceniu</translation>
+    </message>
+    <message>
+        <source>M function for coolant on (0: none)</source>
+        <translation>Funkcja M włączenia chłodziwa (0: brak)</translation>
+    </message>
+    <message>
+        <source>M function for coolant off (0: none)</source>
+        <translation>Funkcja M wyłączenia chłodziwa (0: brak)</translation>
+    </message>
+    <message>
+        <source>Dwell depth where the feed reduction begins (0: none)</source>
+        <translation>Głębokość przerwy, od której zaczyna się redukcja posuwu (0: brak)</translation>
+    </message>
+    <message>
+        <source>Feed rate factor beyond the dwell depth</source>
+        <translation>Współczynnik posuwu poza głębokością przerwy</translation>
+    </message>
+    <message>
+        <source>Maximum plunging depth</source>
+        <translation>Maksymalna głębokość dosuwu</translation>
+    </message>
+    <message>
+        <source>SINGLE-LIP DEEP-HOLE DRILLING</source>
+        <translation>WIERCENIE GŁĘBOKICH OTWORÓW WIERTŁEM JEDNOOSTRZOWYM</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the depth Q{2} = {3} is positive (the machine parameter displayDepthErr forbids it)</source>
+        <translation>cykl {1}: głębokość Q{2} = {3} jest dodatnia (parametr maszynowy displayDepthErr tego zabrania)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} infeeds; increase the plunging depth</source>
+        <translation>cykl {1}: ponad {2} dosuwów; zwiększ głębokość dosuwu</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the point angle T-ANGLE of the tool in the tool table</source>
+        <translation>cykl {1} potrzebuje kąta wierzchołkowego T-ANGLE narzędzia w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs more than {2} moves</source>
+        <translation>cykl {1} potrzebuje ponad {2} ruchów</translation>
+    </message>
+    <message>
+        <source>Path overlap factor</source>
+        <translation>Współczynnik nakładania się torów</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical, 2 reciprocating)</source>
+        <translation>Strategia wcięcia (0 pionowo, 1 po linii śrubowej, 2 ruchem wahadłowym)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance</source>
+        <translation>Odstęp bezpieczeństwa</translation>
+    </message>
+    <message>
+        <source>Clearance height (absolute)</source>
+        <translation>Bezpieczna wysokość (absolutnie)</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (+1 climb, -1 up-cut)</source>
+        <translation>Kierunek obrotu (+1 współbieżnie, -1 przeciwbieżnie)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance of the probe</source>
+        <translation>Odstęp bezpieczeństwa sondy</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>Bezpieczna wysokość</translation>
+    </message>
+    <message>
+        <source>Move to clearance height between points</source>
+        <translation>Przejazd na bezpieczną wysokość między punktami</translation>
+    </message>
+    <message>
+        <source>Height between pattern points: 2nd set-up clearance (1) or the position at the start (0)</source>
+        <translation>Wysokość między punktami wzorca: 2. odstęp bezpieczeństwa (1) lub pozycja na starcie (0)</translation>
+    </message>
+    <message>
+        <source>GENERAL</source>
+        <translation>OGÓLNE</translation>
+    </message>
+    <message>
+        <source>POCKET MILLING</source>
+        <translation>FREZOWANIE KIESZENI</translation>
+    </message>
+    <message>
+        <source>CONTOUR MILLING</source>
+        <translation>FREZOWANIE KONTURU</translation>
+    </message>
+    <message>
+        <source>PROBING</source>
+        <translation>PRÓBKOWANIE</translation>
+    </message>
+    <message>
+        <source>POSITIONING</source>
+        <translation>POZYCJONOWANIE</translation>
+    </message>
+    <message>
+        <source>Centre in the 1st axis</source>
+        <translation>Środek w 1. osi</translation>
+    </message>
+    <message>
+        <source>Centre in the 2nd axis</source>
+        <translation>Środek w 2. osi</translation>
+    </message>
+    <message>
+        <source>Pitch circle diameter</source>
+        <translation>Średnica koła podziałowego</translation>
+    </message>
+    <message>
+        <source>Starting angle</source>
+        <translation>Kąt startu</translation>
+    </message>
+    <message>
+        <source>Stopping angle</source>
+        <translation>Kąt końcowy</translation>
+    </message>
+    <message>
+        <source>Stepping angle (0: from start, stop and count)</source>
+        <translation>Krok kąta (0: z kąta startu, końcowego i liczby)</translation>
+    </message>
+    <message>
+        <source>Number of operations</source>
+        <translation>Liczba obróbek</translation>
+    </message>
+    <message>
+        <source>Move between operations at set-up clearance (0) or at the 2nd set-up clearance (1)</source>
+        <translation>Przejazd między obróbkami na odstępie bezpieczeństwa (0) lub na 2. odstępie bezpieczeństwa (1)</translation>
+    </message>
+    <message>
+        <source>Type of traverse: straight line (0) or arc on the pitch circle (1)</source>
+        <translation>Rodzaj przejazdu: prosta (0) lub łuk na kole podziałowym (1)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the stopping angle Q246 must differ from the starting angle Q245</source>
+        <translation>cykl {1}: kąt końcowy Q246 musi różnić się od kąta startu Q245</translation>
+    </message>
+    <message>
+        <source>POLAR PATTERN</source>
+        <translation>WZÓR PUNKTÓW NA OKRĘGU</translation>
+    </message>
+    <message>
+        <source>Starting point in the 1st axis</source>
+        <translation>Punkt startu w 1. osi</translation>
+    </message>
+    <message>
+        <source>Starting point in the 2nd axis</source>
+        <translation>Punkt startu w 2. osi</translation>
+    </message>
+    <message>
+        <source>Spacing in the 1st axis</source>
+        <translation>Odstęp w 1. osi</translation>
+    </message>
+    <message>
+        <source>Spacing in the 2nd axis</source>
+        <translation>Odstęp w 2. osi</translation>
+    </message>
+    <message>
+        <source>Number of columns</source>
+        <translation>Liczba kolumn</translation>
+    </message>
+    <message>
+        <source>Number of lines</source>
+        <translation>Liczba wierszy</translation>
+    </message>
+    <message>
+        <source>Angle of rotation about the starting point</source>
+        <translation>Kąt obrotu wokół punktu startu</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} positions</source>
+        <translation>cykl {1}: ponad {2} pozycji</translation>
+    </message>
+    <message>
+        <source>CARTESIAN PATTERN</source>
+        <translation>WZÓR PUNKTÓW NA LINIACH</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: {1} must be a whole number from 1 to 99999</source>
+        <translation>PATTERN DEF: {1} musi być liczbą całkowitą od 1 do 99999</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: more than {1} positions</source>
+        <translation>PATTERN DEF: ponad {1} pozycji</translation>
+    </message>
+    <message>
+        <source>Engraving text</source>
+        <translation>Tekst do grawerowania</translation>
+    </message>
+    <message>
+        <source>Character height (0: scaled to the text length Q574)</source>
+        <translation>Wysokość znaków (0: dopasowana do długości tekstu Q574)</translation>
+    </message>
+    <message>
+        <source>Spacing factor between the characters (0: as the font)</source>
+        <translation>Współczynnik odstępu między znakami (0: wg czcionki)</translation>
+    </message>
+    <message>
+        <source>Font (without function)</source>
+        <translation>Czcionka (bez funkcji)</translation>
+    </message>
+    <message>
+        <source>Text on a line (0), an arc (1) or an arc, continuous (2)</source>
+        <translation>Tekst na prostej (0), na łuku (1) lub na łuku, ciągle (2)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (centre angle on an arc)</source>
+        <translation>Kąt obrotu (kąt środkowy na łuku)</translation>
+    </message>
+    <message>
+        <source>Radius of the arc the text is on</source>
+        <translation>Promień łuku, na którym leży tekst</translation>
+    </message>
+    <message>
+        <source>Reference of the text position (0-6)</source>
+        <translation>Odniesienie położenia tekstu (0-6)</translation>
+    </message>
+    <message>
+        <source>Maximum text length (0: no limit)</source>
+        <translation>Maksymalna długość tekstu (0: bez ograniczenia)</translation>
+    </message>
+    <message>
+        <source>ENGRAVING</source>
+        <translation>GRAWEROWANIE</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line)</source>
+        <translation>Strategia (0 meandrowo na zewnątrz, 1 meandrowo na krawędzi, 2 wierszami)</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis (surface)</source>
+        <translation>Punkt startu w 3. osi (powierzchnia)</translation>
+    </message>
+    <message>
+        <source>End point in the 3rd axis</source>
+        <translation>Punkt końcowy w 3. osi</translation>
+    </message>
+    <message>
+        <source>First side length (sign = direction)</source>
+        <translation>Długość 1. boku (znak = kierunek)</translation>
+    </message>
+    <message>
+        <source>Second side length (sign = direction)</source>
+        <translation>Długość 2. boku (znak = kierunek)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the floor</source>
+        <translation>Naddatek na obróbkę wykańczającą dna</translation>
+    </message>
+    <message>
+        <source>Maximum path overlap factor</source>
+        <translation>Maksymalny współczynnik nakładania się torów</translation>
+    </message>
+    <message>
+        <source>Feed rate for finishing</source>
+        <translation>Posuw obróbki wykańczającej</translation>
+    </message>
+    <message>
+        <source>Lateral clearance to the workpiece</source>
+        <translation>Odstęp boczny od obrabianego przedmiotu</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q227 must be above the end point Q386</source>
+        <translation>cykl {1}: punkt startu Q227 musi leżeć powyżej punktu końcowego Q386</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool radius R greater than R2</source>
+        <translation>cykl {1} potrzebuje promienia narzędzia R większego od R2</translation>
+    </message>
+    <message>
+        <source>FACE MILLING</source>
+        <translation>FREZOWANIE PŁASZCZYZN</translation>
+    </message>
+    <message>
+        <source>cycle 225: with the character height Q513 = 0 the text length Q574 must be given</source>
+        <translation>cykl 225: przy wysokości znaków Q513 = 0 należy podać długość tekstu Q574</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text has no length that Q574 could scale</source>
+        <translation>cykl 225: tekst nie ma długości, którą Q574 mógłby skalować</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text is {1} mm long, longer than the maximum text length Q574 = {2}</source>
+        <translation>cykl 225: tekst ma długość {1} mm, większą od maksymalnej długości tekstu Q574 = {2}</translation>
+    </message>
+    <message>
+        <source>cycle 225: text on a circle needs the radius Q517</source>
+        <translation>cykl 225: tekst na okręgu potrzebuje promienia Q517</translation>
+    </message>
+    <message>
+        <source>cycle 225: the character &apos;{1}&apos; cannot be engraved</source>
+        <translation>cykl 225: znaku &apos;{1}&apos; nie można wygrawerować</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown formatting character &apos;\{1}&apos; in the text (write \\ for a backslash)</source>
+        <translation>cykl 225: nieznany znak formatowania &apos;\{1}&apos; w tekście (napisz \\ dla ukośnika wstecznego)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%time{1}&apos; is not a date format (use %time00 to %time15)</source>
+        <translation>cykl 225: &apos;%time{1}&apos; nie jest formatem daty (użyj %time00 do %time15)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%count&apos; needs the number of digits (1 to 9)</source>
+        <translation>cykl 225: &apos;%count&apos; potrzebuje liczby cyfr (1 do 9)</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown escape &apos;%{1}&apos; in the text (write %% for a percent sign)</source>
+        <translation>cykl 225: nieznana sekwencja &apos;%{1}&apos; w tekście (napisz %% dla znaku procentu)</translation>
+    </message>
+    <message>
+        <source>Dwell time</source>
+        <translation>Czas przerwy</translation>
+    </message>
+    <message>
+        <source>Program to call as a machining cycle</source>
+        <translation>Program wywoływany jako cykl obróbki</translation>
+    </message>
+    <message>
+        <source>Orientation angle of the spindle</source>
+        <translation>Kąt orientacji wrzeciona</translation>
+    </message>
+    <message>
+        <source>Tolerance (0: machine default)</source>
+        <translation>Tolerancja (0: wartość domyślna maszyny)</translation>
+    </message>
+    <message>
+        <source>Filter: finishing (0) or roughing (1)</source>
+        <translation>Filtr: obróbka wykańczająca (0) lub zgrubna (1)</translation>
+    </message>
+    <message>
+        <source>Tolerance of rotary axes (0: machine default)</source>
+        <translation>Tolerancja osi obrotowych (0: wartość domyślna maszyny)</translation>
+    </message>
+    <message>
+        <source>DWELL TIME</source>
+        <translation>CZAS PRZERWY</translation>
+    </message>
+    <message>
+        <source>PGM CALL</source>
+        <translation>PGM CALL</translation>
+    </message>
+    <message>
+        <source>ORIENTED SPINDLE STOP</source>
+        <translation>ORIENTACJA WRZECIONA</translation>
+    </message>
+    <message>
+        <source>TOLERANCE</source>
+        <translation>TOLERANCJA</translation>
+    </message>
+    <message>
+        <source>Total hole depth from the current position</source>
+        <translation>Całkowita głębokość otworu od aktualnej pozycji</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch is 0</source>
+        <translation>cykl {1}: skok gwintu wynosi 0</translation>
+    </message>
+    <message>
+        <source>THREAD CUTTING</source>
+        <translation>GWINTOWANIE</translation>
+    </message>
+    <message>
+        <source>Feed rate for tapping (spindle speed x pitch)</source>
+        <translation>Posuw gwintowania (prędkość obrotowa x skok)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the spindle running (M3 or M4)</source>
+        <translation>cykl {1} wymaga obracającego się wrzeciona (M3 lub M4)</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH A FLOATING TAP HOLDER</source>
+        <translation>GWINTOWANIE Z UCHWYTEM WYRÓWNAWCZYM</translation>
+    </message>
+    <message>
+        <source>RIGID TAPPING</source>
+        <translation>GWINTOWANIE BEZ UCHWYTU WYRÓWNAWCZEGO</translation>
+    </message>
+    <message>
+        <source>Retraction for chip breaking in pitches (0: out of the hole)</source>
+        <translation>Powrót przy łamaniu wióra w skokach gwintu (0: z otworu)</translation>
+    </message>
+    <message>
+        <source>Spindle speed factor for retraction</source>
+        <translation>Współczynnik prędkości obrotowej przy wycofaniu</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH CHIP BREAKING</source>
+        <translation>GWINTOWANIE Z ŁAMANIEM WIÓRA</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch {2} differs from the pitch {3} of the tool in the tool table</source>
+        <translation>cykl {1}: skok gwintu {2} różni się od skoku {3} narzędzia w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch Q{2} is 0</source>
+        <translation>cykl {1}: skok gwintu Q{2} wynosi 0</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING</source>
+        <translation>FREZOWANIE GWINTÓW</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING/COUNTERSINKING</source>
+        <translation>FREZOWANIE GWINTÓW Z POGŁĘBIENIEM</translation>
+    </message>
+    <message>
+        <source>THREAD DRILLING/MILLING</source>
+        <translation>WIERCENIE I FREZOWANIE GWINTÓW</translation>
+    </message>
+    <message>
+        <source>Countersink before (0) or after (1) the thread</source>
+        <translation>Pogłębienie przed (0) lub po (1) gwincie</translation>
+    </message>
+    <message>
+        <source>HELICAL THREAD DRILLING/MILLING</source>
+        <translation>WIERCENIE I FREZOWANIE GWINTÓW PO LINII ŚRUBOWEJ</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front: stud centre to tool centre</source>
+        <translation>Przesunięcie pogłębienia czołowo: środek czopu do środka narzędzia</translation>
+    </message>
+    <message>
+        <source>OUTSIDE THREAD MILLING</source>
+        <translation>FREZOWANIE GWINTÓW ZEWNĘTRZNYCH</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter {2} is too large for the nominal diameter {3}</source>
+        <translation>cykl {1}: średnica narzędzia {2} jest za duża dla średnicy nominalnej {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: unexpected &apos;{2}&apos;</source>
+        <translation>cykl {1}: nieoczekiwane &apos;{2}&apos;</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} needs a value</source>
+        <translation>cykl {1}: {2} wymaga wartości</translation>
+    </message>
+    <message>
+        <source>cycle {1}: scaling factor {2} = {3} is outside 0.000001 to 99.999999</source>
+        <translation>cykl {1}: współczynnik skalowania {2} = {3} leży poza zakresem 0.000001 do 99.999999</translation>
+    </message>
+    <message>
+        <source>Datum shift per axis (IX: incremental), or #n: datum number of the datum table</source>
+        <translation>Przesunięcie punktu zerowego dla każdej osi (IX: przyrostowo) lub #n: numer punktu zerowego z tabeli punktów zerowych</translation>
+    </message>
+    <message>
+        <source>Mirrored axes (none: mirroring off)</source>
+        <translation>Osie odbite (brak: odbicie wyłączone)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (IROT: incremental)</source>
+        <translation>Kąt obrotu (IROT: przyrostowo)</translation>
+    </message>
+    <message>
+        <source>Scaling factor</source>
+        <translation>Współczynnik skalowania</translation>
+    </message>
+    <message>
+        <source>Scaling factor per axis</source>
+        <translation>Współczynnik skalowania dla każdej osi</translation>
+    </message>
+    <message>
+        <source>Centre of the scaling per axis</source>
+        <translation>Środek skalowania dla każdej osi</translation>
+    </message>
+    <message>
+        <source>Number of the preset to activate</source>
+        <translation>Numer aktywowanego punktu odniesienia</translation>
+    </message>
+    <message>
+        <source>Tilt angles of the rotary axes</source>
+        <translation>Kąty nachylenia osi obrotowych</translation>
+    </message>
+    <message>
+        <source>Feed rate for automatic positioning</source>
+        <translation>Posuw automatycznego pozycjonowania</translation>
+    </message>
+    <message>
+        <source>Set-up clearance for automatic positioning</source>
+        <translation>Odstęp bezpieczeństwa dla automatycznego pozycjonowania</translation>
+    </message>
+    <message>
+        <source>cycle {1}: angle of rotation ROT = {2} is outside -360 to 360</source>
+        <translation>cykl {1}: kąt obrotu ROT = {2} leży poza zakresem -360 do 360</translation>
+    </message>
+    <message>
+        <source>DATUM SHIFT</source>
+        <translation>PRZESUNIĘCIE PUNKTU ZEROWEGO</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE</source>
+        <translation>ODBICIE LUSTRZANE</translation>
+    </message>
+    <message>
+        <source>ROTATION</source>
+        <translation>OBRÓT</translation>
+    </message>
+    <message>
+        <source>SCALING</source>
+        <translation>WSPÓŁCZYNNIK WYMIAROWY</translation>
+    </message>
+    <message>
+        <source>AXIS-SPECIFIC SCALING</source>
+        <translation>WSPÓŁCZYNNIK WYMIAROWY SPECYFICZNY DLA OSI</translation>
+    </message>
+    <message>
+        <source>PRESETTING</source>
+        <translation>WYZNACZENIE PUNKTU ODNIESIENIA</translation>
+    </message>
+    <message>
+        <source>WORKING PLANE</source>
+        <translation>PŁASZCZYZNA OBRÓBKI</translation>
+    </message>
+    <message>
+        <source>the block is longer than 60000 characters</source>
+        <translation>blok jest dłuższy niż 60000 znaków</translation>
+    </message>
+    <message>
+        <source>empty block: a block needs at least a comment</source>
+        <translation>pusty blok: blok wymaga co najmniej komentarza</translation>
+    </message>
+    <message>
+        <source>a block has at most 3 skip marks</source>
+        <translation>blok ma co najwyżej 3 znaki pominięcia</translation>
+    </message>
+    <message>
+        <source>a block label cannot be a parameter</source>
+        <translation>etykieta bloku nie może być parametrem</translation>
+    </message>
+    <message>
+        <source>label number expected after N</source>
+        <translation>po N oczekiwano numeru etykiety</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits (N0-N99999999)</source>
+        <translation>etykieta ma co najwyżej 8 cyfr (N0-N99999999)</translation>
+    </message>
+    <message>
+        <source>missing &apos;)&apos; at the end of the high-level block</source>
+        <translation>brak &apos;)&apos; na końcu bloku wysokiego poziomu</translation>
+    </message>
+    <message>
+        <source>repetition count expected after N</source>
+        <translation>po N oczekiwano liczby powtórzeń</translation>
+    </message>
+    <message>
+        <source>a repetition count has at most 4 digits (N0-N9999)</source>
+        <translation>liczba powtórzeń ma co najwyżej 4 cyfry (N0-N9999)</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; at the end of the block</source>
+        <translation>nieoczekiwane &apos;{1}&apos; na końcu bloku</translation>
+    </message>
+    <message>
+        <source>expressions are not allowed in ISO blocks</source>
+        <translation>wyrażenia nie są dozwolone w blokach ISO</translation>
+    </message>
+    <message>
+        <source>parameter number expected after P</source>
+        <translation>po P oczekiwano numeru parametru</translation>
+    </message>
+    <message>
+        <source>number expected after the sign of {1}</source>
+        <translation>po znaku {1} oczekiwano liczby</translation>
+    </message>
+    <message>
+        <source>{1} cannot be negative</source>
+        <translation>{1} nie może być ujemne</translation>
+    </message>
+    <message>
+        <source>{1} value {2} is outside the format {3}.{4}</source>
+        <translation>wartość {2} słowa {1} wykracza poza format {3}.{4}</translation>
+    </message>
+    <message>
+        <source>{1} is outside the format {2}.{3}</source>
+        <translation>{1} wykracza poza format {2}.{3}</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}</source>
+        <translation>{1} musi być liczbą całkowitą od {2} do {3}</translation>
+    </message>
+    <message>
+        <source>{1} is programmed twice</source>
+        <translation>{1} zaprogramowano dwukrotnie</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos;: words are written in upper case</source>
+        <translation>&apos;{1}&apos;: słowa pisze się wielkimi literami</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos;</source>
+        <translation>nieoczekiwane &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>G functions are written at the start of the block</source>
+        <translation>funkcje G pisze się na początku bloku</translation>
+    </message>
+    <message>
+        <source>too many G functions in one block</source>
+        <translation>zbyt wiele funkcji G w jednym bloku</translation>
+    </message>
+    <message>
+        <source>axis letters after G14, G16 or G74 take no value</source>
+        <translation>litery osi po G14, G16 lub G74 nie przyjmują wartości</translation>
+    </message>
+    <message>
+        <source>I is programmed more than twice</source>
+        <translation>I zaprogramowano więcej niż dwukrotnie</translation>
+    </message>
+    <message>
+        <source>at most 7 M functions in one block</source>
+        <translation>co najwyżej 7 funkcji M w jednym bloku</translation>
+    </message>
+    <message>
+        <source>E belongs to G51</source>
+        <translation>E należy do G51</translation>
+    </message>
+    <message>
+        <source>unknown word &apos;{1}&apos;</source>
+        <translation>nieznane słowo &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 cannot be used in a thread</source>
+        <translation>G36, G37, G38 i G39 nie mogą być użyte w gwincie</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a move in the plane</source>
+        <translation>G36, G37, G38 i G39 wymagają ruchu w płaszczyźnie</translation>
+    </message>
+    <message>
+        <source>the next block must be a contour element in the plane</source>
+        <translation>następny blok musi być elementem konturu w płaszczyźnie</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01)</source>
+        <translation>G37 wymaga prostej (G00 lub G01)</translation>
+    </message>
+    <message>
+        <source>G37: the start point lies inside the entry circle</source>
+        <translation>G37: punkt startu leży wewnątrz okręgu wejścia</translation>
+    </message>
+    <message>
+        <source>G36: the rounding radius does not fit between the elements</source>
+        <translation>G36: promień zaokrąglenia nie mieści się między elementami</translation>
+    </message>
+    <message>
+        <source>G39 needs straight lines on both sides</source>
+        <translation>G39 wymaga prostych po obu stronach</translation>
+    </message>
+    <message>
+        <source>G39: the chamfer is longer than an adjacent line</source>
+        <translation>G39: faza jest dłuższa od przyległej prostej</translation>
+    </message>
+    <message>
+        <source>the block after G38 must be a straight line (G00 or G01)</source>
+        <translation>blok po G38 musi być prostą (G00 lub G01)</translation>
+    </message>
+    <message>
+        <source>G38: the end point lies inside the exit circle</source>
+        <translation>G38: punkt końcowy leży wewnątrz okręgu wyjścia</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a following contour element</source>
+        <translation>G36, G37, G38 i G39 wymagają następnego elementu konturu</translation>
+    </message>
+    <message>
+        <source>division by zero</source>
+        <translation>dzielenie przez zero</translation>
+    </message>
+    <message>
+        <source>EXP: {1} to the power {2} has no value</source>
+        <translation>EXP: {1} do potęgi {2} nie ma wartości</translation>
+    </message>
+    <message>
+        <source>MOD by zero</source>
+        <translation>MOD przez zero</translation>
+    </message>
+    <message>
+        <source>&apos;)&apos; expected</source>
+        <translation>oczekiwano &apos;)&apos;</translation>
+    </message>
+    <message>
+        <source>a function argument needs parentheses unless it is a number</source>
+        <translation>argument funkcji wymaga nawiasów, chyba że jest liczbą</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is outside its domain</source>
+        <translation>{1}: {2} leży poza dziedziną</translation>
+    </message>
+    <message>
+        <source>a hexadecimal constant has 1 to 8 digits</source>
+        <translation>stała szesnastkowa ma od 1 do 8 cyfr</translation>
+    </message>
+    <message>
+        <source>number expected</source>
+        <translation>oczekiwano liczby</translation>
+    </message>
+    <message>
+        <source>a constant has at most 6 integer and 5 decimal digits</source>
+        <translation>stała ma co najwyżej 6 cyfr całkowitych i 5 dziesiętnych</translation>
+    </message>
+    <message>
+        <source>an index must be a whole number, not {1}</source>
+        <translation>indeks musi być liczbą całkowitą, nie {1}</translation>
+    </message>
+    <message>
+        <source>number or (expression) expected</source>
+        <translation>oczekiwano liczby lub (wyrażenia)</translation>
+    </message>
+    <message>
+        <source>GPOS needs N&lt;block&gt;</source>
+        <translation>GPOS wymaga N&lt;blok&gt;</translation>
+    </message>
+    <message>
+        <source>GPOS needs P&lt;program&gt;</source>
+        <translation>GPOS wymaga P&lt;program&gt;</translation>
+    </message>
+    <message>
+        <source>{1} needs a number</source>
+        <translation>{1} wymaga liczby</translation>
+    </message>
+    <message>
+        <source>value expected</source>
+        <translation>oczekiwano wartości</translation>
+    </message>
+    <message>
+        <source>&apos;(&apos; expected</source>
+        <translation>oczekiwano &apos;(&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;,&apos; expected</source>
+        <translation>oczekiwano &apos;,&apos;</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in this program</source>
+        <translation>etykieta N{1} nie jest zdefiniowana w tym programie</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in the program</source>
+        <translation>etykieta N{1} nie jest zdefiniowana w programie</translation>
+    </message>
+    <message>
+        <source>RPT: block N{1} comes before block N{2}</source>
+        <translation>RPT: blok N{1} występuje przed blokiem N{2}</translation>
+    </message>
+    <message>
+        <source>more than {1} nested levels</source>
+        <translation>ponad {1} poziomów zagnieżdżenia</translation>
+    </message>
+    <message>
+        <source>cannot read program {1}: {2}</source>
+        <translation>nie można odczytać programu {1}: {2}</translation>
+    </message>
+    <message>
+        <source>program {1} has errors</source>
+        <translation>program {1} zawiera błędy</translation>
+    </message>
+    <message>
+        <source>program {1} is not in the NC root</source>
+        <translation>programu {1} nie ma w katalogu głównym NC</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is not defined</source>
+        <translation>podprogram {1} nie jest zdefiniowany</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined in more than one program</source>
+        <translation>podprogram {1} jest zdefiniowany w więcej niż jednym programie</translation>
+    </message>
+    <message>
+        <source>the program with subroutine {1} has errors</source>
+        <translation>program z podprogramem {1} zawiera błędy</translation>
+    </message>
+    <message>
+        <source>error 1255: subroutine restricted to OEM programs</source>
+        <translation>błąd 1255: podprogram zastrzeżony dla programów OEM</translation>
+    </message>
+    <message>
+        <source>more than 6 nested levels of local parameters</source>
+        <translation>ponad 6 poziomów zagnieżdżenia parametrów lokalnych</translation>
+    </message>
+    <message>
+        <source>subroutine {1} has no RET</source>
+        <translation>podprogram {1} nie ma RET</translation>
+    </message>
+    <message>
+        <source>RET outside a subroutine</source>
+        <translation>RET poza podprogramem</translation>
+    </message>
+    <message>
+        <source>error 1064: program cannot be executed (MEXEC inside the modal program)</source>
+        <translation>błąd 1064: programu nie można wykonać (MEXEC wewnątrz programu modalnego)</translation>
+    </message>
+    <message>
+        <source>REPOS is only allowed in an interrupt subroutine</source>
+        <translation>REPOS jest dozwolone tylko w podprogramie przerwania</translation>
+    </message>
+    <message>
+        <source>REPOS failed</source>
+        <translation>REPOS nie powiodło się</translation>
+    </message>
+    <message>
+        <source>collision detection removed a loop of the compensated path</source>
+        <translation>wykrywanie kolizji usunęło pętlę ze skorygowanego toru</translation>
+    </message>
+    <message>
+        <source>the program ends before the last block of the RPT</source>
+        <translation>program kończy się przed ostatnim blokiem RPT</translation>
+    </message>
+    <message>
+        <source>the program ends inside a subroutine (RET missing)</source>
+        <translation>program kończy się wewnątrz podprogramu (brak RET)</translation>
+    </message>
+    <message>
+        <source>axis {1} is not available on this machine</source>
+        <translation>oś {1} nie jest dostępna na tej maszynie</translation>
+    </message>
+    <message>
+        <source>N{1}: only a motion block under a modal subroutine (MCALL, MEXEC) or a canned cycle can be repeated</source>
+        <translation>N{1}: powtórzyć można tylko blok ruchu pod podprogramem modalnym (MCALL, MEXEC) lub cyklem stałym</translation>
+    </message>
+    <message>
+        <source>incompatible G functions G51 and {1} (error 7)</source>
+        <translation>niezgodne funkcje G: G51 i {1} (błąd 7)</translation>
+    </message>
+    <message>
+        <source>G40, G41 and G42 need G00 or G01 active, not G02/G03</source>
+        <translation>G40, G41 i G42 wymagają aktywnej G00 lub G01, nie G02/G03</translation>
+    </message>
+    <message>
+        <source>radius compensation works in the ZX plane only (PLACOMP 0)</source>
+        <translation>korekcja promienia działa tylko w płaszczyźnie ZX (PLACOMP 0)</translation>
+    </message>
+    <message>
+        <source>{1} needs R greater than 0 right after it</source>
+        <translation>{1} wymaga bezpośrednio po sobie R większego od 0</translation>
+    </message>
+    <message>
+        <source>G37 needs R greater than 0 right after it</source>
+        <translation>G37 wymaga bezpośrednio po sobie R większego od 0</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01), not G02/G03</source>
+        <translation>G37 wymaga prostej (G00 lub G01), nie G02/G03</translation>
+    </message>
+    <message>
+        <source>G06 belongs in a circular interpolation block</source>
+        <translation>G06 należy do bloku interpolacji kołowej</translation>
+    </message>
+    <message>
+        <source>G16 needs two axis letters: abscissa and ordinate</source>
+        <translation>G16 wymaga dwóch liter osi: odciętej i rzędnej</translation>
+    </message>
+    <message>
+        <source>G16 {1}{2}: only planes of two of the axes X, Y and Z are supported</source>
+        <translation>G16 {1}{2}: obsługiwane są tylko płaszczyzny z dwóch osi X, Y i Z</translation>
+    </message>
+    <message>
+        <source>the plane cannot change under radius compensation</source>
+        <translation>płaszczyzna nie może zmieniać się przy aktywnej korekcji promienia</translation>
+    </message>
+    <message>
+        <source>G51 needs E, the permitted contour error</source>
+        <translation>G51 wymaga E, dopuszczalnego błędu konturu</translation>
+    </message>
+    <message>
+        <source>G72 S: the scale factor must be greater than 0</source>
+        <translation>G72 S: współczynnik skalowania musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>G72 needs S or axis factors</source>
+        <translation>G72 wymaga S lub współczynników osi</translation>
+    </message>
+    <message>
+        <source>G72: the scale factor of {1} must be greater than 0</source>
+        <translation>G72: współczynnik skalowania {1} musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>{1} needs K, the zone number 1-4</source>
+        <translation>{1} wymaga K, numeru strefy 1-4</translation>
+    </message>
+    <message>
+        <source>G22 needs S0 (off), S1 (no entry) or S2 (no exit)</source>
+        <translation>G22 wymaga S0 (wył.), S1 (zakaz wjazdu) lub S2 (zakaz wyjazdu)</translation>
+    </message>
+    <message>
+        <source>G74 alone runs the subroutine of REFPSUB, which is not set</source>
+        <translation>samo G74 wykonuje podprogram z REFPSUB, który nie jest ustawiony</translation>
+    </message>
+    <message>
+        <source>G159 needs N1-N20</source>
+        <translation>G159 wymaga N1-N20</translation>
+    </message>
+    <message>
+        <source>G96 needs S: no cutting speed was programmed before</source>
+        <translation>G96 wymaga S: wcześniej nie zaprogramowano prędkości skrawania</translation>
+    </message>
+    <message>
+        <source>G96 needs a spindle gear range (M41-M44) first</source>
+        <translation>G96 wymaga najpierw zakresu biegów wrzeciona (M41-M44)</translation>
+    </message>
+    <message>
+        <source>S{1} is above the spindle limit of {2} rpm</source>
+        <translation>S{1} przekracza limit wrzeciona {2} obr/min</translation>
+    </message>
+    <message>
+        <source>M{1} has a subroutine: it must be alone in its block</source>
+        <translation>M{1} ma podprogram: musi stać sama w bloku</translation>
+    </message>
+    <message>
+        <source>polar coordinates (R, Q) and Cartesian coordinates of the plane in one block</source>
+        <translation>współrzędne biegunowe (R, Q) i kartezjańskie współrzędne płaszczyzny w jednym bloku</translation>
+    </message>
+    <message>
+        <source>the polar radius becomes negative</source>
+        <translation>promień biegunowy staje się ujemny</translation>
+    </message>
+    <message>
+        <source>an angle Q with both coordinates of the plane</source>
+        <translation>kąt Q z obiema współrzędnymi płaszczyzny</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that abscissa</source>
+        <translation>kąt Q {1}: tor nie może osiągnąć tej odciętej</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that ordinate</source>
+        <translation>kąt Q {1}: tor nie może osiągnąć tej rzędnej</translation>
+    </message>
+    <message>
+        <source>J is the centre of the Y axis: the ZX plane uses I and K</source>
+        <translation>J to środek w osi Y: płaszczyzna ZX używa I i K</translation>
+    </message>
+    <message>
+        <source>G08 needs a previous path in the plane to be tangent to</source>
+        <translation>G08 wymaga poprzedniego toru w płaszczyźnie, do którego ma być styczny</translation>
+    </message>
+    <message>
+        <source>G08 cannot program a full circle</source>
+        <translation>G08 nie może programować pełnego okręgu</translation>
+    </message>
+    <message>
+        <source>G08: the end point lies on the tangent of the previous path</source>
+        <translation>G08: punkt końcowy leży na stycznej poprzedniego toru</translation>
+    </message>
+    <message>
+        <source>G09 cannot program a full circle</source>
+        <translation>G09 nie może programować pełnego okręgu</translation>
+    </message>
+    <message>
+        <source>G09: the three points lie on a line</source>
+        <translation>G09: trzy punkty leżą na jednej prostej</translation>
+    </message>
+    <message>
+        <source>a full circle cannot be programmed with R</source>
+        <translation>pełnego okręgu nie można programować z R</translation>
+    </message>
+    <message>
+        <source>the arc radius R is too small for the end point</source>
+        <translation>promień łuku R jest za mały dla punktu końcowego</translation>
+    </message>
+    <message>
+        <source>the start and end radii differ by {1} mm (more than CIRINERR)</source>
+        <translation>promienie na początku i końcu różnią się o {1} mm (więcej niż CIRINERR)</translation>
+    </message>
+    <message>
+        <source>the arc has no radius</source>
+        <translation>łuk nie ma promienia</translation>
+    </message>
+    <message>
+        <source>arc centre or radius beyond 214748.3647 mm</source>
+        <translation>środek lub promień łuku powyżej 214748.3647 mm</translation>
+    </message>
+    <message>
+        <source>Q (spindle angle) needs M19TYPE = 1</source>
+        <translation>Q (kąt wrzeciona) wymaga M19TYPE = 1</translation>
+    </message>
+    <message>
+        <source>only the first thread of a joined chain may have Q</source>
+        <translation>tylko pierwszy gwint połączonego łańcucha może mieć Q</translation>
+    </message>
+    <message>
+        <source>Q must be within +-359.9999 degrees</source>
+        <translation>Q musi mieścić się w +-359.9999 stopni</translation>
+    </message>
+    <message>
+        <source>a thread needs its pitch L</source>
+        <translation>gwint wymaga skoku L</translation>
+    </message>
+    <message>
+        <source>two variable-pitch threads cannot be joined; end one with G34 L0 K0</source>
+        <translation>dwóch gwintów o zmiennym skoku nie można łączyć; zakończ jeden przez G34 L0 K0</translation>
+    </message>
+    <message>
+        <source>G34 joined to G33 must start with the pitch of the G33</source>
+        <translation>G34 połączone z G33 musi zaczynać się ze skokiem G33</translation>
+    </message>
+    <message>
+        <source>after G34 a constant pitch is programmed with G34 L0 K0</source>
+        <translation>po G34 stały skok programuje się przez G34 L0 K0</translation>
+    </message>
+    <message>
+        <source>the thread pitch must be greater than 0</source>
+        <translation>skok gwintu musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>the variable pitch reaches zero before the end point</source>
+        <translation>zmienny skok osiąga zero przed punktem końcowym</translation>
+    </message>
+    <message>
+        <source>G53 works with G00 and G01 moves only</source>
+        <translation>G53 działa tylko z ruchami G00 i G01</translation>
+    </message>
+    <message>
+        <source>G52 moves one axis</source>
+        <translation>G52 przesuwa jedną oś</translation>
+    </message>
+    <message>
+        <source>no tool offset table: offset D{1} and the following ones are all zero</source>
+        <translation>brak tabeli korekcji narzędzi: korekcja D{1} i następne są zerowe</translation>
+    </message>
+    <message>
+        <source>the header should be %comment,attributes, (two commas)</source>
+        <translation>nagłówek powinien mieć postać %komentarz,atrybuty, (dwa przecinki)</translation>
+    </message>
+    <message>
+        <source>the program comment has more than 20 characters</source>
+        <translation>komentarz programu ma ponad 20 znaków</translation>
+    </message>
+    <message>
+        <source>words out of the order G, coordinates, F, S, T, D, M</source>
+        <translation>słowa w kolejności innej niż G, współrzędne, F, S, T, D, M</translation>
+    </message>
+    <message>
+        <source>subroutine {1} starts before subroutine {2} has its RET</source>
+        <translation>podprogram {1} zaczyna się, zanim podprogram {2} ma swoje RET</translation>
+    </message>
+    <message>
+        <source>error 63: program subroutine numbers from 1 to 9999 (10000-20000 only in OEM programs)</source>
+        <translation>błąd 63: numery podprogramów od 1 do 9999 (10000-20000 tylko w programach OEM)</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined twice</source>
+        <translation>podprogram {1} jest zdefiniowany dwukrotnie</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
+        <translation>{1} jest instrukcją dostosowania ekranu: nieobsługiwana; program nie może wykonać się poza ten blok</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
+        <translation>programy na PC przez DNC nie są dostępne; program nie może wykonać się poza ten blok</translation>
+    </message>
+    <message>
+        <source>label N{1} is used more than once; jumps go to the first one</source>
+        <translation>etykieta N{1} jest użyta więcej niż raz; skoki prowadzą do pierwszej</translation>
+    </message>
+    <message>
+        <source>incompatible G functions</source>
+        <translation>niezgodne funkcje G</translation>
+    </message>
+    <message>
+        <source>program subroutine number from 1 to 9999</source>
+        <translation>numer podprogramu od 1 do 9999</translation>
+    </message>
+    <message>
+        <source>the S that changes the gear range must be alone in its block</source>
+        <translation>S zmieniające zakres biegów musi stać samo w bloku</translation>
+    </message>
+    <message>
+        <source>program cannot be executed</source>
+        <translation>programu nie można wykonać</translation>
+    </message>
+    <message>
+        <source>subroutine restricted to OEM program</source>
+        <translation>podprogram zastrzeżony dla programu OEM</translation>
+    </message>
+    <message>
+        <source>{1}</source>
+        <translation>{1}</translation>
+    </message>
+    <message>
+        <source>error {1}</source>
+        <translation>błąd {1}</translation>
+    </message>
+    <message>
+        <source>error {1}: {2}</source>
+        <translation>błąd {1}: {2}</translation>
+    </message>
+    <message>
+        <source>DGWZ: Z minimum &lt; Z maximum and 0 &lt;= inner &lt; outer</source>
+        <translation>DGWZ: Z minimum &lt; Z maksimum i 0 &lt;= wewnętrzna &lt; zewnętrzna</translation>
+    </message>
+    <message>
+        <source>program {1} exists: OPEN needs A (append) or D (delete)</source>
+        <translation>program {1} istnieje: OPEN wymaga A (dopisz) lub D (usuń)</translation>
+    </message>
+    <message>
+        <source>program {1} is running: it cannot be opened</source>
+        <translation>program {1} jest wykonywany: nie można go otworzyć</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}</source>
+        <translation>nie można zapisać programu {1}</translation>
+    </message>
+    <message>
+        <source>WRITE needs a program opened with OPEN</source>
+        <translation>WRITE wymaga programu otwartego przez OPEN</translation>
+    </message>
+    <message>
+        <source>cannot write to the opened program</source>
+        <translation>nie można pisać do otwartego programu</translation>
+    </message>
+    <message>
+        <source>GPOS: program {1} has no block N{2}</source>
+        <translation>GPOS: program {1} nie ma bloku N{2}</translation>
+    </message>
+    <message>
+        <source>GPOS: block not found</source>
+        <translation>GPOS: nie znaleziono bloku</translation>
+    </message>
+    <message>
+        <source>{1} is not available on the simulated machine</source>
+        <translation>{1} nie jest dostępne na symulowanej maszynie</translation>
+    </message>
+    <message>
+        <source>{1} cannot be read from a part program (PLC or DNC only)</source>
+        <translation>{1} nie może być odczytane z programu obróbki (tylko PLC lub DNC)</translation>
+    </message>
+    <message>
+        <source>{1}: the simulated machine has no tool magazine</source>
+        <translation>{1}: symulowana maszyna nie ma magazynu narzędzi</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are numbered 0-255</source>
+        <translation>{1}: korekcje mają numery 0-255</translation>
+    </message>
+    <message>
+        <source>{1}: zero offsets are 54-59 and 1-20</source>
+        <translation>{1}: przesunięcia punktu zerowego to 54-59 i 1-20</translation>
+    </message>
+    <message>
+        <source>NBTOOL can only be read in the tool change subroutine</source>
+        <translation>NBTOOL można odczytać tylko w podprogramie wymiany narzędzia</translation>
+    </message>
+    <message>
+        <source>MS{1}: the state is kept for M00-M06, M08, M09, M19, M30 and M41-M44</source>
+        <translation>MS{1}: stan jest przechowywany dla M00-M06, M08, M09, M19, M30 i M41-M44</translation>
+    </message>
+    <message>
+        <source>{1}: outputs 1-8</source>
+        <translation>{1}: wyjścia 1-8</translation>
+    </message>
+    <message>
+        <source>{1} is read-only in a part program</source>
+        <translation>{1} jest tylko do odczytu w programie obróbki</translation>
+    </message>
+    <message>
+        <source>PRGFRO: 0-255 %</source>
+        <translation>PRGFRO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>PRGSSO: 0-255 %</source>
+        <translation>PRGSSO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are D1-D255 and F is 0-9</source>
+        <translation>{1}: korekcje to D1-D255, a F to 0-9</translation>
+    </message>
+    <message>
+        <source>{1}: value out of range</source>
+        <translation>{1}: wartość poza zakresem</translation>
+    </message>
+    <message>
+        <source>KEY can only be written in a customisation program</source>
+        <translation>KEY można zapisać tylko w programie dostosowania</translation>
+    </message>
+    <message>
+        <source>KEYSRC can only be changed while it is 0</source>
+        <translation>KEYSRC można zmienić tylko, gdy wynosi 0</translation>
+    </message>
+    <message>
+        <source>{1}: free outputs 1-4, -10 to 10 V</source>
+        <translation>{1}: wolne wyjścia 1-4, -10 do 10 V</translation>
+    </message>
+    <message>
+        <source>rapid positioning</source>
+        <translation>pozycjonowanie szybkie</translation>
+    </message>
+    <message>
+        <source>linear interpolation</source>
+        <translation>interpolacja liniowa</translation>
+    </message>
+    <message>
+        <source>circular interpolation clockwise</source>
+        <translation>interpolacja kołowa zgodnie z ruchem wskazówek zegara</translation>
+    </message>
+    <message>
+        <source>circular interpolation counter-clockwise</source>
+        <translation>interpolacja kołowa przeciwnie do ruchu wskazówek zegara</translation>
+    </message>
+    <message>
+        <source>dwell / stop block preparation</source>
+        <translation>przerwa / zatrzymanie przygotowania bloków</translation>
+    </message>
+    <message>
+        <source>round corner</source>
+        <translation>zaokrąglony narożnik</translation>
+    </message>
+    <message>
+        <source>arc centre in absolute coordinates</source>
+        <translation>środek łuku we współrzędnych absolutnych</translation>
+    </message>
+    <message>
+        <source>sharp corner</source>
+        <translation>ostry narożnik</translation>
+    </message>
+    <message>
+        <source>arc tangent to the previous path</source>
+        <translation>łuk styczny do poprzedniego toru</translation>
+    </message>
+    <message>
+        <source>arc through three points</source>
+        <translation>łuk przez trzy punkty</translation>
+    </message>
+    <message>
+        <source>mirror image off</source>
+        <translation>odbicie lustrzane wył.</translation>
+    </message>
+    <message>
+        <source>mirror image in X</source>
+        <translation>odbicie lustrzane w X</translation>
+    </message>
+    <message>
+        <source>mirror image in Y</source>
+        <translation>odbicie lustrzane w Y</translation>
+    </message>
+    <message>
+        <source>mirror image in Z</source>
+        <translation>odbicie lustrzane w Z</translation>
+    </message>
+    <message>
+        <source>mirror image in the programmed axes</source>
+        <translation>odbicie lustrzane w zaprogramowanych osiach</translation>
+    </message>
+    <message>
+        <source>main plane by two axes</source>
+        <translation>płaszczyzna główna przez dwie osie</translation>
+    </message>
+    <message>
+        <source>main plane XY</source>
+        <translation>płaszczyzna główna XY</translation>
+    </message>
+    <message>
+        <source>main plane ZX</source>
+        <translation>płaszczyzna główna ZX</translation>
+    </message>
+    <message>
+        <source>main plane YZ</source>
+        <translation>płaszczyzna główna YZ</translation>
+    </message>
+    <message>
+        <source>work zone lower limits</source>
+        <translation>dolne granice strefy roboczej</translation>
+    </message>
+    <message>
+        <source>work zone upper limits</source>
+        <translation>górne granice strefy roboczej</translation>
+    </message>
+    <message>
+        <source>work zone enable/disable</source>
+        <translation>włączenie/wyłączenie strefy roboczej</translation>
+    </message>
+    <message>
+        <source>feed as inverse of time</source>
+        <translation>posuw jako odwrotność czasu</translation>
+    </message>
+    <message>
+        <source>electronic threading</source>
+        <translation>gwintowanie elektroniczne</translation>
+    </message>
+    <message>
+        <source>variable-pitch threading</source>
+        <translation>gwintowanie o zmiennym skoku</translation>
+    </message>
+    <message>
+        <source>corner rounding</source>
+        <translation>zaokrąglanie narożników</translation>
+    </message>
+    <message>
+        <source>tangential entry</source>
+        <translation>wejście styczne</translation>
+    </message>
+    <message>
+        <source>tangential exit</source>
+        <translation>wyjście styczne</translation>
+    </message>
+    <message>
+        <source>chamfer</source>
+        <translation>faza</translation>
+    </message>
+    <message>
+        <source>radius compensation off</source>
+        <translation>korekcja promienia wył.</translation>
+    </message>
+    <message>
+        <source>radius compensation left</source>
+        <translation>korekcja promienia z lewej</translation>
+    </message>
+    <message>
+        <source>radius compensation right</source>
+        <translation>korekcja promienia z prawej</translation>
+    </message>
+    <message>
+        <source>inclined-axis transformation</source>
+        <translation>transformacja osi nachylonej</translation>
+    </message>
+    <message>
+        <source>controlled round corner</source>
+        <translation>kontrolowany zaokrąglony narożnik</translation>
+    </message>
+    <message>
+        <source>look-ahead</source>
+        <translation>przetwarzanie z wyprzedzeniem (look-ahead)</translation>
+    </message>
+    <message>
+        <source>move to hard stop</source>
+        <translation>przejazd do zderzaka</translation>
+    </message>
+    <message>
+        <source>coordinates from machine zero</source>
+        <translation>współrzędne od zera maszyny</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 1</source>
+        <translation>absolutne przesunięcie punktu zerowego 1</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 2</source>
+        <translation>absolutne przesunięcie punktu zerowego 2</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 3</source>
+        <translation>absolutne przesunięcie punktu zerowego 3</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 4</source>
+        <translation>absolutne przesunięcie punktu zerowego 4</translation>
+    </message>
+    <message>
+        <source>additive zero offset 1</source>
+        <translation>addytywne przesunięcie punktu zerowego 1</translation>
+    </message>
+    <message>
+        <source>additive zero offset 2</source>
+        <translation>addytywne przesunięcie punktu zerowego 2</translation>
+    </message>
+    <message>
+        <source>pattern repeat cycle</source>
+        <translation>cykl powtarzania profilu</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along X</source>
+        <translation>cykl skrawania wzdłuż X</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along Z</source>
+        <translation>cykl skrawania wzdłuż Z</translation>
+    </message>
+    <message>
+        <source>programming in inches</source>
+        <translation>programowanie w calach</translation>
+    </message>
+    <message>
+        <source>programming in millimetres</source>
+        <translation>programowanie w milimetrach</translation>
+    </message>
+    <message>
+        <source>scaling factor</source>
+        <translation>współczynnik skalowania</translation>
+    </message>
+    <message>
+        <source>machine reference search</source>
+        <translation>szukanie punktu referencyjnego maszyny</translation>
+    </message>
+    <message>
+        <source>probing move until touching</source>
+        <translation>ruch próbkowania do zetknięcia</translation>
+    </message>
+    <message>
+        <source>probing move until no longer touching</source>
+        <translation>ruch próbkowania do utraty styku</translation>
+    </message>
+    <message>
+        <source>turning cycle, straight sections</source>
+        <translation>cykl toczenia, odcinki proste</translation>
+    </message>
+    <message>
+        <source>facing cycle, straight sections</source>
+        <translation>cykl planowania, odcinki proste</translation>
+    </message>
+    <message>
+        <source>drilling cycle</source>
+        <translation>cykl wiercenia</translation>
+    </message>
+    <message>
+        <source>turning cycle, curved sections</source>
+        <translation>cykl toczenia, odcinki łukowe</translation>
+    </message>
+    <message>
+        <source>facing cycle, curved sections</source>
+        <translation>cykl planowania, odcinki łukowe</translation>
+    </message>
+    <message>
+        <source>longitudinal threading cycle</source>
+        <translation>cykl gwintowania wzdłużnego</translation>
+    </message>
+    <message>
+        <source>face threading cycle</source>
+        <translation>cykl gwintowania czołowego</translation>
+    </message>
+    <message>
+        <source>grooving cycle along X</source>
+        <translation>cykl toczenia rowków wzdłuż X</translation>
+    </message>
+    <message>
+        <source>grooving cycle along Z</source>
+        <translation>cykl toczenia rowków wzdłuż Z</translation>
+    </message>
+    <message>
+        <source>absolute programming</source>
+        <translation>programowanie absolutne</translation>
+    </message>
+    <message>
+        <source>incremental programming</source>
+        <translation>programowanie przyrostowe</translation>
+    </message>
+    <message>
+        <source>coordinate preset / spindle speed limit</source>
+        <translation>ustawienie współrzędnych / ograniczenie prędkości obrotowej wrzeciona</translation>
+    </message>
+    <message>
+        <source>polar origin preset</source>
+        <translation>ustawienie początku układu biegunowego</translation>
+    </message>
+    <message>
+        <source>feed per minute</source>
+        <translation>posuw na minutę</translation>
+    </message>
+    <message>
+        <source>feed per revolution</source>
+        <translation>posuw na obrót</translation>
+    </message>
+    <message>
+        <source>constant surface speed</source>
+        <translation>stała prędkość skrawania</translation>
+    </message>
+    <message>
+        <source>spindle speed in rpm</source>
+        <translation>prędkość obrotowa wrzeciona w obr/min</translation>
+    </message>
+    <message>
+        <source>X in diameter</source>
+        <translation>X jako średnica</translation>
+    </message>
+    <message>
+        <source>X in radius</source>
+        <translation>X jako promień</translation>
+    </message>
+    <message>
+        <source>absolute zero offset N1-N20</source>
+        <translation>absolutne przesunięcie punktu zerowego N1-N20</translation>
+    </message>
+    <message>
+        <source>axis retraction when threading stops</source>
+        <translation>wycofanie osi przy zatrzymaniu gwintowania</translation>
+    </message>
+    <message>
+        <source>{1} does not exist on the 8035 T</source>
+        <translation>{1} nie istnieje w 8035 T</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported yet</source>
+        <translation>{1} ({2}) nie jest jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported</source>
+        <translation>{1} ({2}) nie jest obsługiwane</translation>
+    </message>
+    <message>
+        <source>incompatible G functions {1} and {2} (error 7)</source>
+        <translation>niezgodne funkcje G {1} i {2} (błąd 7)</translation>
+    </message>
+    <message>
+        <source>{1} must be alone in its block</source>
+        <translation>{1} musi stać samo w bloku</translation>
+    </message>
+    <message>
+        <source>tool radius too large</source>
+        <translation>za duży promień narzędzia</translation>
+    </message>
+    <message>
+        <source>tool radius too large: the offset swallows this element</source>
+        <translation>za duży promień narzędzia: korekcja pochłania ten element</translation>
+    </message>
+    <message>
+        <source>tool radius too large for this arc</source>
+        <translation>za duży promień narzędzia dla tego łuku</translation>
+    </message>
+    <message>
+        <source>G40 needs a straight line (G00 or G01)</source>
+        <translation>G40 wymaga prostej (G00 lub G01)</translation>
+    </message>
+    <message>
+        <source>48 blocks without motion in the plane under radius compensation</source>
+        <translation>48 bloków bez ruchu w płaszczyźnie przy korekcji promienia</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 1</source>
+        <translation>ruch narusza strefę roboczą 1</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 2</source>
+        <translation>ruch narusza strefę roboczą 2</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 3</source>
+        <translation>ruch narusza strefę roboczą 3</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 4</source>
+        <translation>ruch narusza strefę roboczą 4</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 5</source>
+        <translation>ruch narusza strefę roboczą 5</translation>
+    </message>
+    <message>
+        <source>an arc cannot be scaled differently along the two axes of its plane (G72)</source>
+        <translation>łuku nie można skalować różnie w dwóch osiach jego płaszczyzny (G72)</translation>
+    </message>
+    <message>
+        <source>P{1}: an interrupt subroutine may only use global parameters</source>
+        <translation>P{1}: podprogram przerwania może używać tylko parametrów globalnych</translation>
+    </message>
+    <message>
+        <source>P{1}: OEM parameters are only for programs with the O attribute</source>
+        <translation>P{1}: parametry OEM są tylko dla programów z atrybutem O</translation>
+    </message>
+    <message>
+        <source>P{1} does not exist (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</source>
+        <translation>P{1} nie istnieje (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; expected</source>
+        <translation>oczekiwano &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}, not {4}</source>
+        <translation>{1} musi być liczbą całkowitą od {2} do {3}, nie {4}</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits</source>
+        <translation>etykieta ma co najwyżej 8 cyfr</translation>
+    </message>
+    <message>
+        <source>text in quotes expected</source>
+        <translation>oczekiwano tekstu w cudzysłowie</translation>
+    </message>
+    <message>
+        <source>missing closing quote</source>
+        <translation>brak zamykającego cudzysłowu</translation>
+    </message>
+    <message>
+        <source>empty high-level block</source>
+        <translation>pusty blok wysokiego poziomu</translation>
+    </message>
+    <message>
+        <source>IF cannot be nested</source>
+        <translation>IF nie może być zagnieżdżone</translation>
+    </message>
+    <message>
+        <source>SUB cannot be the action of an IF</source>
+        <translation>SUB nie może być akcją IF</translation>
+    </message>
+    <message>
+        <source>subroutine number 0-20000 expected after SUB</source>
+        <translation>po SUB oczekiwano numeru podprogramu 0-20000</translation>
+    </message>
+    <message>
+        <source>at most 26 assignments to different targets</source>
+        <translation>co najwyżej 26 przypisań do różnych celów</translation>
+    </message>
+    <message>
+        <source>parameter or variable expected</source>
+        <translation>oczekiwano parametru lub zmiennej</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters (P0-P25, A-Z)</source>
+        <translation>wywołanie podprogramu przekazuje parametry lokalne (P0-P25, A-Z)</translation>
+    </message>
+    <message>
+        <source>&apos;=&apos; expected</source>
+        <translation>oczekiwano &apos;=&apos;</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters P0-P25, not P{1}</source>
+        <translation>wywołanie podprogramu przekazuje parametry lokalne P0-P25, nie P{1}</translation>
+    </message>
+    <message>
+        <source>error number expected</source>
+        <translation>oczekiwano numeru błędu</translation>
+    </message>
+    <message>
+        <source>ERROR takes a number, a parameter P0-P299 or a text</source>
+        <translation>ERROR przyjmuje liczbę, parametr P0-P299 lub tekst</translation>
+    </message>
+    <message>
+        <source>CALL passes no parameters: use PCALL or MCALL</source>
+        <translation>CALL nie przekazuje parametrów: użyj PCALL lub MCALL</translation>
+    </message>
+    <message>
+        <source>at most 26 parameters</source>
+        <translation>co najwyżej 26 parametrów</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available: only programs in the NC root</source>
+        <translation>programy na PC przez DNC nie są dostępne: tylko programy w katalogu głównym NC</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in {2}</source>
+        <translation>nieoczekiwane &apos;{1}&apos; w {2}</translation>
+    </message>
+    <message>
+        <source>axis letter expected in REPOS</source>
+        <translation>w REPOS oczekiwano litery osi</translation>
+    </message>
+    <message>
+        <source>too many axes in REPOS</source>
+        <translation>zbyt wiele osi w REPOS</translation>
+    </message>
+    <message>
+        <source>INPUT expected</source>
+        <translation>oczekiwano INPUT</translation>
+    </message>
+    <message>
+        <source>input format expected</source>
+        <translation>oczekiwano formatu wejścia</translation>
+    </message>
+    <message>
+        <source>DW expected</source>
+        <translation>oczekiwano DW</translation>
+    </message>
+    <message>
+        <source>SK expected</source>
+        <translation>oczekiwano SK</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
+        <translation>{1} jest instrukcją dostosowania ekranu: nieobsługiwana (należy do programów dostosowania użytkownika)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a row key</source>
+        <translation>&apos;{1}&apos; nie jest kluczem wiersza</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a field (letters and a number)</source>
+        <translation>&apos;{1}&apos; nie jest polem (litery i liczba)</translation>
+    </message>
+    <message>
+        <source>row {1} appears twice</source>
+        <translation>wiersz {1} występuje dwukrotnie</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool offset (D0-D255)</source>
+        <translation>&apos;{1}&apos; nie jest korekcją narzędzia (D0-D255)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (X Z F R I K)</source>
+        <translation>nieznane pole &apos;{1}&apos; (X Z F R I K)</translation>
+    </message>
+    <message>
+        <source>the location code F must be a whole number 0-9</source>
+        <translation>kod położenia F musi być liczbą całkowitą 0-9</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool (T&lt;number&gt;)</source>
+        <translation>&apos;{1}&apos; nie jest narzędziem (T&lt;numer&gt;)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</source>
+        <translation>nieznane pole &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number 0-255</source>
+        <translation>{1} musi być liczbą całkowitą 0-255</translation>
+    </message>
+    <message>
+        <source>G159 selects offsets N1-N20</source>
+        <translation>G159 wybiera przesunięcia N1-N20</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; cannot be part of the ACTIVE selection</source>
+        <translation>&apos;{1}&apos; nie może być częścią wyboru ACTIVE</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a zero offset (G54-G59, G159N7-G159N20, PLC, ACTIVE)</source>
+        <translation>&apos;{1}&apos; nie jest przesunięciem punktu zerowego (G54-G59, G159N7-G159N20, PLC, ACTIVE)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not an axis</source>
+        <translation>&apos;{1}&apos; nie jest osią</translation>
+    </message>
+    <message>
+        <source>the feed rate must not be negative</source>
+        <translation>posuw nie może być ujemny</translation>
+    </message>
+    <message>
+        <source>M function number expected</source>
+        <translation>oczekiwano numeru funkcji M</translation>
+    </message>
+    <message>
+        <source>too many M functions in one block</source>
+        <translation>zbyt wiele funkcji M w jednym bloku</translation>
+    </message>
+    <message>
+        <source>axis {1} is programmed twice</source>
+        <translation>oś {1} zaprogramowano dwukrotnie</translation>
+    </message>
+    <message>
+        <source>DR+ or DR- expected</source>
+        <translation>oczekiwano DR+ lub DR-</translation>
+    </message>
+    <message>
+        <source>CR needs a radius R</source>
+        <translation>CR wymaga promienia R</translation>
+    </message>
+    <message>
+        <source>the rounding radius must be positive</source>
+        <translation>promień zaokrąglenia musi być dodatni</translation>
+    </message>
+    <message>
+        <source>the chamfer length must be positive</source>
+        <translation>długość fazy musi być dodatnia</translation>
+    </message>
+    <message>
+        <source>FMAX is not allowed here</source>
+        <translation>FMAX nie jest tu dozwolone</translation>
+    </message>
+    <message>
+        <source>LT, LN, CT or LCT expected after {1}</source>
+        <translation>po {1} oczekiwano LT, LN, CT lub LCT</translation>
+    </message>
+    <message>
+        <source>REP must be between 0 and 65534</source>
+        <translation>REP musi leżeć między 0 a 65534</translation>
+    </message>
+    <message>
+        <source>program name expected</source>
+        <translation>oczekiwano nazwy programu</translation>
+    </message>
+    <message>
+        <source>LBL or PGM expected after CALL</source>
+        <translation>po CALL oczekiwano LBL lub PGM</translation>
+    </message>
+    <message>
+        <source>tool number out of range</source>
+        <translation>numer narzędzia poza zakresem</translation>
+    </message>
+    <message>
+        <source>the spindle speed must not be negative</source>
+        <translation>prędkość obrotowa wrzeciona nie może być ujemna</translation>
+    </message>
+    <message>
+        <source>CALL or DEF expected after TOOL</source>
+        <translation>po TOOL oczekiwano CALL lub DEF</translation>
+    </message>
+    <message>
+        <source>PGM expected</source>
+        <translation>oczekiwano PGM</translation>
+    </message>
+    <message>
+        <source>MM or INCH expected</source>
+        <translation>oczekiwano MM lub INCH</translation>
+    </message>
+    <message>
+        <source>FORM expected</source>
+        <translation>oczekiwano FORM</translation>
+    </message>
+    <message>
+        <source>axis expected</source>
+        <translation>oczekiwano osi</translation>
+    </message>
+    <message>
+        <source>0.1, 0.2 or CYLINDER expected</source>
+        <translation>oczekiwano 0.1, 0.2 lub CYLINDER</translation>
+    </message>
+    <message>
+        <source>tool axis expected</source>
+        <translation>oczekiwano osi narzędzia</translation>
+    </message>
+    <message>
+        <source>Q parameter expected</source>
+        <translation>oczekiwano parametru Q</translation>
+    </message>
+    <message>
+        <source>DECLARE STRING needs a QS parameter</source>
+        <translation>DECLARE STRING wymaga parametru QS</translation>
+    </message>
+    <message>
+        <source>FN number expected</source>
+        <translation>oczekiwano numeru FN</translation>
+    </message>
+    <message>
+        <source>&apos;:&apos; expected after FN {1}</source>
+        <translation>po FN {1} oczekiwano &apos;:&apos;</translation>
+    </message>
+    <message>
+        <source>square root of a negative number</source>
+        <translation>pierwiastek kwadratowy z liczby ujemnej</translation>
+    </message>
+    <message>
+        <source>&apos;IF&apos; expected</source>
+        <translation>oczekiwano &apos;IF&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;GOTO&apos; expected</source>
+        <translation>oczekiwano &apos;GOTO&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;LBL&apos; expected</source>
+        <translation>oczekiwano &apos;LBL&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;ERROR&apos; expected</source>
+        <translation>oczekiwano &apos;ERROR&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;PRINT&apos; expected</source>
+        <translation>oczekiwano &apos;PRINT&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;F-PRINT&apos; expected</source>
+        <translation>oczekiwano &apos;F-PRINT&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;mask file / output file&apos; expected</source>
+        <translation>oczekiwano &apos;plik maski / plik wyjściowy&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;SYSREAD&apos; expected</source>
+        <translation>oczekiwano &apos;SYSREAD&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;ID&apos; expected</source>
+        <translation>oczekiwano &apos;ID&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;CDATA&apos; expected</source>
+        <translation>oczekiwano &apos;CDATA&apos;</translation>
+    </message>
+    <message>
+        <source>the parameter range runs past the last Q parameter</source>
+        <translation>zakres parametrów wykracza poza ostatni parametr Q</translation>
+    </message>
+    <message>
+        <source>&apos;TABOPEN&apos; expected</source>
+        <translation>oczekiwano &apos;TABOPEN&apos;</translation>
+    </message>
+    <message>
+        <source>table name expected</source>
+        <translation>oczekiwano nazwy tabeli</translation>
+    </message>
+    <message>
+        <source>&apos;/&apos; expected</source>
+        <translation>oczekiwano &apos;/&apos;</translation>
+    </message>
+    <message>
+        <source>column names in quotes expected</source>
+        <translation>oczekiwano nazw kolumn w cudzysłowie</translation>
+    </message>
+    <message>
+        <source>FN {1} does not exist</source>
+        <translation>FN {1} nie istnieje</translation>
+    </message>
+    <message>
+        <source>DEF or CALL expected after CYCL</source>
+        <translation>po CYCL oczekiwano DEF lub CALL</translation>
+    </message>
+    <message>
+        <source>file name expected</source>
+        <translation>oczekiwano nazwy pliku</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;CYCLE&apos; (the keyword is CYCL)</source>
+        <translation>nieznany blok &apos;CYCLE&apos; (słowo kluczowe to CYCL)</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;{1}&apos;</source>
+        <translation>nieznany blok &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>label name must not be empty</source>
+        <translation>nazwa etykiety nie może być pusta</translation>
+    </message>
+    <message>
+        <source>label expected</source>
+        <translation>oczekiwano etykiety</translation>
+    </message>
+    <message>
+        <source>label number or name expected</source>
+        <translation>oczekiwano numeru lub nazwy etykiety</translation>
+    </message>
+    <message>
+        <source>label number must be between {1} and 65535</source>
+        <translation>numer etykiety musi leżeć między {1} a 65535</translation>
+    </message>
+    <message>
+        <source>cycle number expected</source>
+        <translation>oczekiwano numeru cyklu</translation>
+    </message>
+    <message>
+        <source>cycle parameter Qnnn= expected</source>
+        <translation>oczekiwano parametru cyklu Qnnn=</translation>
+    </message>
+    <message>
+        <source>cycle parameter number expected</source>
+        <translation>oczekiwano numeru parametru cyklu</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF group number expected</source>
+        <translation>oczekiwano numeru grupy GLOBAL DEF</translation>
+    </message>
+    <message>
+        <source>pattern element POS, ROW, PAT, FRAME, CIRC or PITCHCIRC expected</source>
+        <translation>oczekiwano elementu wzorca POS, ROW, PAT, FRAME, CIRC lub PITCHCIRC</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF needs at least one pattern element</source>
+        <translation>PATTERN DEF wymaga co najmniej jednego elementu wzorca</translation>
+    </message>
+    <message>
+        <source>Spindle?</source>
+        <translation>Wrzeciono?</translation>
+    </message>
+    <message>
+        <source>Tool axis is missing</source>
+        <translation>Brak osi narzędzia</translation>
+    </message>
+    <message>
+        <source>Tool radius too small</source>
+        <translation>Promień narzędzia za mały</translation>
+    </message>
+    <message>
+        <source>Tool radius too large</source>
+        <translation>Promień narzędzia za duży</translation>
+    </message>
+    <message>
+        <source>Range exceeded</source>
+        <translation>Zakres przekroczony</translation>
+    </message>
+    <message>
+        <source>Start position incorrect</source>
+        <translation>Nieprawidłowa pozycja startowa</translation>
+    </message>
+    <message>
+        <source>ROTATION not permitted</source>
+        <translation>OBRÓT niedozwolony</translation>
+    </message>
+    <message>
+        <source>SCALING FACTOR not permitted</source>
+        <translation>WSPÓŁCZYNNIK WYMIAROWY niedozwolony</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE not permitted</source>
+        <translation>ODBICIE LUSTRZANE niedozwolone</translation>
+    </message>
+    <message>
+        <source>Datum shift not permitted</source>
+        <translation>Przesunięcie punktu zerowego niedozwolone</translation>
+    </message>
+    <message>
+        <source>Feed rate is missing</source>
+        <translation>Brak posuwu</translation>
+    </message>
+    <message>
+        <source>Input value incorrect</source>
+        <translation>Nieprawidłowa wartość wprowadzona</translation>
+    </message>
+    <message>
+        <source>Incorrect sign</source>
+        <translation>Nieprawidłowy znak liczby</translation>
+    </message>
+    <message>
+        <source>Entered angle not permitted</source>
+        <translation>Wprowadzony kąt niedozwolony</translation>
+    </message>
+    <message>
+        <source>Touch point inaccessible</source>
+        <translation>Punkt próbkowania nieosiągalny</translation>
+    </message>
+    <message>
+        <source>Too many points</source>
+        <translation>Zbyt wiele punktów</translation>
+    </message>
+    <message>
+        <source>Contradictory input</source>
+        <translation>Sprzeczne dane wejściowe</translation>
+    </message>
+    <message>
+        <source>CYCL incomplete</source>
+        <translation>CYCL niekompletny</translation>
+    </message>
+    <message>
+        <source>Plane wrongly defined</source>
+        <translation>Płaszczyzna błędnie zdefiniowana</translation>
+    </message>
+    <message>
+        <source>Wrong axis programmed</source>
+        <translation>Zaprogramowano niewłaściwą oś</translation>
+    </message>
+    <message>
+        <source>Wrong RPM</source>
+        <translation>Niewłaściwa prędkość obrotowa</translation>
+    </message>
+    <message>
+        <source>Radius comp. undefined</source>
+        <translation>Korekcja promienia nieokreślona</translation>
+    </message>
+    <message>
+        <source>Rounding-off undefined</source>
+        <translation>Zaokrąglenie nieokreślone</translation>
+    </message>
+    <message>
+        <source>Rounding radius too large</source>
+        <translation>Promień zaokrąglenia za duży</translation>
+    </message>
+    <message>
+        <source>Program start undefined</source>
+        <translation>Start programu nieokreślony</translation>
+    </message>
+    <message>
+        <source>Excessive nesting</source>
+        <translation>Zbyt głębokie zagnieżdżenie</translation>
+    </message>
+    <message>
+        <source>Angle reference missing</source>
+        <translation>Brak odniesienia kąta</translation>
+    </message>
+    <message>
+        <source>No fixed cycle defined</source>
+        <translation>Nie zdefiniowano cyklu obróbki</translation>
+    </message>
+    <message>
+        <source>Slot width too small</source>
+        <translation>Szerokość rowka za mała</translation>
+    </message>
+    <message>
+        <source>Pocket too small</source>
+        <translation>Kieszeń za mała</translation>
+    </message>
+    <message>
+        <source>Q202 not defined</source>
+        <translation>Q202 nie zdefiniowany</translation>
+    </message>
+    <message>
+        <source>Q205 not defined</source>
+        <translation>Q205 nie zdefiniowany</translation>
+    </message>
+    <message>
+        <source>Q218 must be greater than Q219</source>
+        <translation>Q218 musi być większy od Q219</translation>
+    </message>
+    <message>
+        <source>CYCL 210 not permitted</source>
+        <translation>CYCL 210 niedozwolony</translation>
+    </message>
+    <message>
+        <source>CYCL 211 not permitted</source>
+        <translation>CYCL 211 niedozwolony</translation>
+    </message>
+    <message>
+        <source>Q220 too large</source>
+        <translation>Q220 za duży</translation>
+    </message>
+    <message>
+        <source>Q222 must be greater than Q223</source>
+        <translation>Q222 musi być większy od Q223</translation>
+    </message>
+    <message>
+        <source>Q244 must be greater than 0</source>
+        <translation>Q244 musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>Q245 must not equal Q246</source>
+        <translation>Q245 nie może być równy Q246</translation>
+    </message>
+    <message>
+        <source>Angle range must be under 360 degrees</source>
+        <translation>Zakres kąta musi być mniejszy niż 360 stopni</translation>
+    </message>
+    <message>
+        <source>Q223 must be greater than Q222</source>
+        <translation>Q223 musi być większy od Q222</translation>
+    </message>
+    <message>
+        <source>Q214: 0 not permitted</source>
+        <translation>Q214: 0 niedozwolone</translation>
+    </message>
+    <message>
+        <source>Traverse direction not defined</source>
+        <translation>Kierunek przemieszczenia nie zdefiniowany</translation>
+    </message>
+    <message>
+        <source>No datum table active</source>
+        <translation>Brak aktywnej tabeli punktów zerowych</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 1</source>
+        <translation>Błąd położenia: środek w osi 1</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 2</source>
+        <translation>Błąd położenia: środek w osi 2</translation>
+    </message>
+    <message>
+        <source>Hole diameter too small</source>
+        <translation>Średnica odwiertu za mała</translation>
+    </message>
+    <message>
+        <source>Hole diameter too large</source>
+        <translation>Średnica odwiertu za duża</translation>
+    </message>
+    <message>
+        <source>Stud diameter too small</source>
+        <translation>Średnica czopu za mała</translation>
+    </message>
+    <message>
+        <source>Stud diameter too large</source>
+        <translation>Średnica czopu za duża</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 1</source>
+        <translation>Kieszeń za mała: do poprawki, oś 1</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 2</source>
+        <translation>Kieszeń za mała: do poprawki, oś 2</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 1</source>
+        <translation>Kieszeń za duża: wyrób wadliwy, oś 1</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 2</source>
+        <translation>Kieszeń za duża: wyrób wadliwy, oś 2</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 1</source>
+        <translation>Czop za mały: wyrób wadliwy, oś 1</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 2</source>
+        <translation>Czop za mały: wyrób wadliwy, oś 2</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 1</source>
+        <translation>Czop za duży: do poprawki, oś 1</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 2</source>
+        <translation>Czop za duży: do poprawki, oś 2</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length exceeds max</source>
+        <translation>TCHPROBE 425: długość powyżej maksimum</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length below min</source>
+        <translation>TCHPROBE 425: długość poniżej minimum</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length exceeds max</source>
+        <translation>TCHPROBE 426: długość powyżej maksimum</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length below min</source>
+        <translation>TCHPROBE 426: długość poniżej minimum</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too large</source>
+        <translation>TCHPROBE 430: średnica za duża</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too small</source>
+        <translation>TCHPROBE 430: średnica za mała</translation>
+    </message>
+    <message>
+        <source>No measuring axis defined</source>
+        <translation>Nie zdefiniowano osi pomiarowej</translation>
+    </message>
+    <message>
+        <source>Tool breakage tolerance exceeded</source>
+        <translation>Przekroczona tolerancja pęknięcia narzędzia</translation>
+    </message>
+    <message>
+        <source>Enter Q247 unequal 0</source>
+        <translation>Wprowadzić Q247 różne od 0</translation>
+    </message>
+    <message>
+        <source>Enter Q247 greater than 5</source>
+        <translation>Wprowadzić Q247 większe od 5</translation>
+    </message>
+    <message>
+        <source>Datum table?</source>
+        <translation>Tabela punktów zerowych?</translation>
+    </message>
+    <message>
+        <source>Enter Q351 unequal 0</source>
+        <translation>Wprowadzić Q351 różne od 0</translation>
+    </message>
+    <message>
+        <source>Thread depth too large</source>
+        <translation>Głębokość gwintu za duża</translation>
+    </message>
+    <message>
+        <source>Missing calibration data</source>
+        <translation>Brak danych kalibrowania</translation>
+    </message>
+    <message>
+        <source>Tolerance exceeded</source>
+        <translation>Tolerancja przekroczona</translation>
+    </message>
+    <message>
+        <source>Block scan active</source>
+        <translation>Przebieg do bloku aktywny</translation>
+    </message>
+    <message>
+        <source>ORIENTATION not permitted</source>
+        <translation>ORIENTACJA niedozwolona</translation>
+    </message>
+    <message>
+        <source>3DROT not permitted</source>
+        <translation>3DROT niedozwolony</translation>
+    </message>
+    <message>
+        <source>Activate 3DROT</source>
+        <translation>Aktywować 3DROT</translation>
+    </message>
+    <message>
+        <source>Enter depth as negative</source>
+        <translation>Wprowadzić głębokość ze znakiem ujemnym</translation>
+    </message>
+    <message>
+        <source>Q303 not defined in measuring cycle</source>
+        <translation>Q303 nie zdefiniowany w cyklu pomiarowym</translation>
+    </message>
+    <message>
+        <source>Tool axis not allowed</source>
+        <translation>Oś narzędzia niedozwolona</translation>
+    </message>
+    <message>
+        <source>Calculated values incorrect</source>
+        <translation>Obliczone wartości nieprawidłowe</translation>
+    </message>
+    <message>
+        <source>Contradictory measuring points</source>
+        <translation>Sprzeczne punkty pomiarowe</translation>
+    </message>
+    <message>
+        <source>Incorrect clearance height</source>
+        <translation>Nieprawidłowa bezpieczna wysokość</translation>
+    </message>
+    <message>
+        <source>Contradictory plunge type</source>
+        <translation>Sprzeczny rodzaj wcięcia</translation>
+    </message>
+    <message>
+        <source>This fixed cycle not allowed</source>
+        <translation>Ten cykl obróbki niedozwolony</translation>
+    </message>
+    <message>
+        <source>Line is write-protected</source>
+        <translation>Wiersz chroniony przed zapisem</translation>
+    </message>
+    <message>
+        <source>Oversize greater than depth</source>
+        <translation>Naddatek większy od głębokości</translation>
+    </message>
+    <message>
+        <source>No point angle defined</source>
+        <translation>Nie zdefiniowano kąta wierzchołkowego</translation>
+    </message>
+    <message>
+        <source>Contradictory data</source>
+        <translation>Sprzeczne dane</translation>
+    </message>
+    <message>
+        <source>Slot position 0 not allowed</source>
+        <translation>Pozycja rowka 0 niedozwolona</translation>
+    </message>
+    <message>
+        <source>Enter an infeed not equal to 0</source>
+        <translation>Wprowadzić dosuw różny od 0</translation>
+    </message>
+    <message>
+        <source>{1} is not defined for this value</source>
+        <translation>{1} nie jest zdefiniowane dla tej wartości</translation>
+    </message>
+    <message>
+        <source>a string parameter cannot be used as a number</source>
+        <translation>parametru tekstowego nie można użyć jako liczby</translation>
+    </message>
+    <message>
+        <source>{1}{2} does not exist (0 to {3})</source>
+        <translation>{1}{2} nie istnieje (0 do {3})</translation>
+    </message>
+    <message>
+        <source>number or Q parameter expected</source>
+        <translation>oczekiwano liczby lub parametru Q</translation>
+    </message>
+    <message>
+        <source>incomplete formula</source>
+        <translation>niekompletna formuła</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in formula</source>
+        <translation>nieoczekiwane &apos;{1}&apos; w formule</translation>
+    </message>
+    <message>
+        <source>string parameter QS expected</source>
+        <translation>oczekiwano parametru tekstowego QS</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a number</source>
+        <translation>&apos;{1}&apos; nie jest liczbą</translation>
+    </message>
+    <message>
+        <source>&apos;||&apos; expected</source>
+        <translation>oczekiwano &apos;||&apos;</translation>
+    </message>
+    <message>
+        <source>SUBSTR needs BEG and LEN of at least 0</source>
+        <translation>SUBSTR wymaga BEG i LEN co najmniej 0</translation>
+    </message>
+    <message>
+        <source>SYSSTR ID{1} NR{2} is not available</source>
+        <translation>SYSSTR ID{1} NR{2} nie jest dostępny</translation>
+    </message>
+    <message>
+        <source>string expected</source>
+        <translation>oczekiwano tekstu</translation>
+    </message>
+    <message>
+        <source>unknown keyword &apos;{1}&apos;</source>
+        <translation>nieznane słowo kluczowe &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>the format has no closing quote</source>
+        <translation>format nie ma zamykającego cudzysłowu</translation>
+    </message>
+    <message>
+        <source>unknown value &apos;{1}&apos;</source>
+        <translation>nieznana wartość &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>bad format field</source>
+        <translation>błędne pole formatu</translation>
+    </message>
+    <message>
+        <source>more fields than values</source>
+        <translation>więcej pól niż wartości</translation>
+    </message>
+    <message>
+        <source>a cycle cannot be called with radius compensation RL/RR: program R0</source>
+        <translation>cyklu nie można wywołać z korekcją promienia RL/RR: zaprogramuj R0</translation>
+    </message>
+    <message>
+        <source>the cycle calls of this block need more than {1} moves</source>
+        <translation>wywołania cykli w tym bloku wymagają ponad {1} ruchów</translation>
+    </message>
+    <message>
+        <source>no machining cycle is defined (CYCL DEF)</source>
+        <translation>nie zdefiniowano cyklu obróbki (CYCL DEF)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT: no PATTERN DEF or point table (SEL PATTERN) is active</source>
+        <translation>CYCL CALL PAT: brak aktywnego PATTERN DEF lub tabeli punktów (SEL PATTERN)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT cannot use FMAX (without F it moves at rapid)</source>
+        <translation>CYCL CALL PAT nie może używać FMAX (bez F przemieszcza się na biegu szybkim)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL POS needs all three coordinates</source>
+        <translation>CYCL CALL POS wymaga wszystkich trzech współrzędnych</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a machining cycle defined before it</source>
+        <translation>cykl {1} wymaga wcześniej zdefiniowanego cyklu obróbki</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot call cycle {2}</source>
+        <translation>cykl {1} nie może wywołać cyklu {2}</translation>
+    </message>
+    <message>
+        <source>{1} has no parameter Q{2}: it is ignored</source>
+        <translation>{1} nie ma parametru Q{2}: zostaje pominięty</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) is missing</source>
+        <translation>{1}: brak parametru {2} ({3})</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) needs a text in quotes or a QS parameter</source>
+        <translation>{1}: parametr {2} ({3}) wymaga tekstu w cudzysłowie lub parametru QS</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) does not accept {4}</source>
+        <translation>{1}: parametr {2} ({3}) nie przyjmuje {4}</translation>
+    </message>
+    <message>
+        <source>FAUTO: the TOOL CALL block gave no feed rate F</source>
+        <translation>FAUTO: blok TOOL CALL nie podał posuwu F</translation>
+    </message>
+    <message>
+        <source>{1}: {2} needs a feed value after {3}</source>
+        <translation>{1}: {2} wymaga wartości posuwu po {3}</translation>
+    </message>
+    <message>
+        <source>FZ needs the number of teeth (CUT) of the tool</source>
+        <translation>FZ wymaga liczby ostrzy (CUT) narzędzia</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = &apos;{4}&apos; is not a value</source>
+        <translation>{1}: parametr {2} ({3}) = &apos;{4}&apos; nie jest wartością</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>{1}: parametr {2} ({3}) = {4} musi być liczbą całkowitą od {5} do {6}</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>{1}: parametr {2} ({3}) = {4} leży poza zakresem {5} do {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet</source>
+        <translation>cykl {1} nie jest jeszcze obsługiwany</translation>
+    </message>
+    <message>
+        <source>CYCL DEF {1}.{2} without CYCL DEF {1}.0 before it</source>
+        <translation>CYCL DEF {1}.{2} bez poprzedzającego CYCL DEF {1}.0</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF {1} does not exist</source>
+        <translation>GLOBAL DEF {1} nie istnieje</translation>
+    </message>
+    <message>
+        <source>cannot read the datum table {1}: {2}</source>
+        <translation>nie można odczytać tabeli punktów zerowych {1}: {2}</translation>
+    </message>
+    <message>
+        <source>cannot read the point table {1}: {2}</source>
+        <translation>nie można odczytać tabeli punktów {1}: {2}</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet</source>
+        <translation>{1} nie jest jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}: {2}</source>
+        <translation>FN 14 błąd {1}: {2}</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}</source>
+        <translation>FN 14 błąd {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the F-PRINT mask {1}</source>
+        <translation>nie można odczytać maski F-PRINT {1}</translation>
+    </message>
+    <message>
+        <source>F-PRINT mask {1} has an error</source>
+        <translation>maska F-PRINT {1} zawiera błąd</translation>
+    </message>
+    <message>
+        <source>cannot write {1}</source>
+        <translation>nie można zapisać {1}</translation>
+    </message>
+    <message>
+        <source>FN 18: SYSREAD ID{1} NR{2} IDX{3} is not available</source>
+        <translation>FN 18: SYSREAD ID{1} NR{2} IDX{3} nie jest dostępny</translation>
+    </message>
+    <message>
+        <source>FN {1}: the points do not define a circle</source>
+        <translation>FN {1}: punkty nie określają okręgu</translation>
+    </message>
+    <message>
+        <source>FN 26: cannot open table {1}</source>
+        <translation>FN 26: nie można otworzyć tabeli {1}</translation>
+    </message>
+    <message>
+        <source>no table is open (FN 26: TABOPEN)</source>
+        <translation>żadna tabela nie jest otwarta (FN 26: TABOPEN)</translation>
+    </message>
+    <message>
+        <source>FN 27: cannot write row {1}</source>
+        <translation>FN 27: nie można zapisać wiersza {1}</translation>
+    </message>
+    <message>
+        <source>FN 28: cannot read row {1}</source>
+        <translation>FN 28: nie można odczytać wiersza {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the program: {1}</source>
+        <translation>nie można odczytać programu: {1}</translation>
+    </message>
+    <message>
+        <source>label {1} is not defined</source>
+        <translation>etykieta {1} nie jest zdefiniowana</translation>
+    </message>
+    <message>
+        <source>subprograms nested deeper than {1} levels</source>
+        <translation>podprogramy zagnieżdżone głębiej niż {1} poziomów</translation>
+    </message>
+    <message>
+        <source>program calls nested deeper than {1} levels</source>
+        <translation>wywołania programów zagnieżdżone głębiej niż {1} poziomów</translation>
+    </message>
+    <message>
+        <source>cannot call program {1}: {2}</source>
+        <translation>nie można wywołać programu {1}: {2}</translation>
+    </message>
+    <message>
+        <source>the called program {1} has errors</source>
+        <translation>wywołany program {1} zawiera błędy</translation>
+    </message>
+    <message>
+        <source>feed rate is missing</source>
+        <translation>brak posuwu</translation>
+    </message>
+    <message>
+        <source>M140 MB MAX: the tool axis has no limit</source>
+        <translation>M140 MB MAX: oś narzędzia nie ma ograniczenia</translation>
+    </message>
+    <message>
+        <source>tool {1} is not in the tool table</source>
+        <translation>narzędzia {1} nie ma w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>no tool table: tool {1} and the following tools are used with length 0 and radius 0</source>
+        <translation>brak tabeli narzędzi: narzędzie {1} i następne są używane z długością 0 i promieniem 0</translation>
+    </message>
+    <message>
+        <source>tool {1} is locked (TL)</source>
+        <translation>narzędzie {1} jest zablokowane (TL)</translation>
+    </message>
+    <message>
+        <source>spindle speed {1} exceeds the machine&apos;s {2} rpm</source>
+        <translation>prędkość obrotowa {1} przekracza {2} obr/min maszyny</translation>
+    </message>
+    <message>
+        <source>BLK FORM 0.2 needs BLK FORM 0.1 before it</source>
+        <translation>BLK FORM 0.2 wymaga wcześniej BLK FORM 0.1</translation>
+    </message>
+    <message>
+        <source>the blank has no volume</source>
+        <translation>półfabrykat nie ma objętości</translation>
+    </message>
+    <message>
+        <source>CC axes {1} and {2} do not span a plane</source>
+        <translation>osie CC {1} i {2} nie tworzą płaszczyzny</translation>
+    </message>
+    <message>
+        <source>CC takes two coordinates of a plane</source>
+        <translation>CC przyjmuje dwie współrzędne płaszczyzny</translation>
+    </message>
+    <message>
+        <source>circular moves cannot use FMAX</source>
+        <translation>ruchy kołowe nie mogą używać FMAX</translation>
+    </message>
+    <message>
+        <source>direction of rotation DR+ or DR- missing</source>
+        <translation>brak kierunku obrotu DR+ lub DR-</translation>
+    </message>
+    <message>
+        <source>no circle of radius {1} passes through the start and end point</source>
+        <translation>żaden okrąg o promieniu {1} nie przechodzi przez punkt startu i punkt końcowy</translation>
+    </message>
+    <message>
+        <source>circle centre CC is not defined</source>
+        <translation>środek okręgu CC nie jest zdefiniowany</translation>
+    </message>
+    <message>
+        <source>the end point is not on the circle: radius {1} at the start, {2} at the end</source>
+        <translation>punkt końcowy nie leży na okręgu: promień {1} na początku, {2} na końcu</translation>
+    </message>
+    <message>
+        <source>a tangential arc needs a contour element before it</source>
+        <translation>łuk styczny wymaga poprzedzającego elementu konturu</translation>
+    </message>
+    <message>
+        <source>pole CC is not defined</source>
+        <translation>biegun CC nie jest zdefiniowany</translation>
+    </message>
+    <message>
+        <source>the end point lies on the tangent: no arc possible</source>
+        <translation>punkt końcowy leży na stycznej: łuk niemożliwy</translation>
+    </message>
+    <message>
+        <source>CP needs a polar angle PA or IPA</source>
+        <translation>CP wymaga kąta biegunowego PA lub IPA</translation>
+    </message>
+    <message>
+        <source>the sign of IPA does not match DR</source>
+        <translation>znak IPA nie zgadza się z DR</translation>
+    </message>
+    <message>
+        <source>{1} needs a positive length LEN</source>
+        <translation>{1} wymaga dodatniej długości LEN</translation>
+    </message>
+    <message>
+        <source>{1} CT needs an angle CCA (0 to 360) and a radius R</source>
+        <translation>{1} CT wymaga kąta CCA (0 do 360) i promienia R</translation>
+    </message>
+    <message>
+        <source>{1} LCT needs a radius R</source>
+        <translation>{1} LCT wymaga promienia R</translation>
+    </message>
+    <message>
+        <source>APPR needs radius compensation RL or RR</source>
+        <translation>APPR wymaga korekcji promienia RL lub RR</translation>
+    </message>
+    <message>
+        <source>DEP LCT needs the end point</source>
+        <translation>DEP LCT wymaga punktu końcowego</translation>
+    </message>
+    <message>
+        <source>an arc in the {1} plane cannot be rotated out of its plane or scaled with different factors</source>
+        <translation>łuku w płaszczyźnie {1} nie można obrócić poza jego płaszczyznę ani skalować różnymi współczynnikami</translation>
+    </message>
+    <message>
+        <source>cycle 7: no datum table selected (SEL TABLE)</source>
+        <translation>cykl 7: nie wybrano tabeli punktów zerowych (SEL TABLE)</translation>
+    </message>
+    <message>
+        <source>cycle 7: datum {1} is not in the datum table</source>
+        <translation>cykl 7: punktu zerowego {1} nie ma w tabeli punktów zerowych</translation>
+    </message>
+    <message>
+        <source>cycle 8: the tool axis {1} cannot be mirrored; it is left out</source>
+        <translation>cykl 8: osi narzędzia {1} nie można odbić; zostaje pominięta</translation>
+    </message>
+    <message>
+        <source>cycle 247: no preset table (PRESET.PR) to read preset {1} from</source>
+        <translation>cykl 247: brak tabeli punktów odniesienia (PRESET.PR), z której można odczytać punkt odniesienia {1}</translation>
+    </message>
+    <message>
+        <source>cycle 247: preset {1} is not in the preset table</source>
+        <translation>cykl 247: punktu odniesienia {1} nie ma w tabeli punktów odniesienia</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
+        <translation>cykl 19 (płaszczyzna obróbki) wymaga osi obrotowych: ta maszyna ich nie ma</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
+        <translation>cykl 19 (płaszczyzna obróbki): kinematyka nachylenia nie jest jeszcze obsługiwana</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected</source>
+        <translation>cykl {1}: oczekiwano {2}</translation>
+    </message>
+    <message>
+        <source>cycle 12: program name expected</source>
+        <translation>cykl 12: oczekiwano nazwy programu</translation>
+    </message>
+    <message>
+        <source>cycle 18 has no sub-block 18.{1}</source>
+        <translation>cykl 18 nie ma podbloku 18.{1}</translation>
+    </message>
+    <message>
+        <source>cycle 32: unexpected &apos;{1}&apos;</source>
+        <translation>cykl 32: nieoczekiwane &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>block number {1} is out of order (after {2})</source>
+        <translation>numer bloku {1} poza kolejnością (po {2})</translation>
+    </message>
+    <message>
+        <source>BEGIN PGM must be the first block</source>
+        <translation>BEGIN PGM musi być pierwszym blokiem</translation>
+    </message>
+    <message>
+        <source>END PGM {1} does not match BEGIN PGM {2}</source>
+        <translation>END PGM {1} nie pasuje do BEGIN PGM {2}</translation>
+    </message>
+    <message>
+        <source>label {1} is defined twice</source>
+        <translation>etykieta {1} jest zdefiniowana dwukrotnie</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet; the program cannot run past this block</source>
+        <translation>{1} nie jest jeszcze obsługiwane; program nie może wykonać się poza ten blok</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet; the program cannot run past this block</source>
+        <translation>cykl {1} nie jest jeszcze obsługiwany; program nie może wykonać się poza ten blok</translation>
+    </message>
+    <message>
+        <source>block has no number while others have</source>
+        <translation>blok nie ma numeru, choć inne mają</translation>
+    </message>
+    <message>
+        <source>the program has no BEGIN PGM block</source>
+        <translation>program nie ma bloku BEGIN PGM</translation>
+    </message>
+    <message>
+        <source>the program has no END PGM block</source>
+        <translation>program nie ma bloku END PGM</translation>
+    </message>
+    <message>
+        <source>expected QRn=value</source>
+        <translation>oczekiwano QRn=wartość</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element in the working plane</source>
+        <translation>po zaokrągleniu lub fazie musi następować element konturu w płaszczyźnie obróbki</translation>
+    </message>
+    <message>
+        <source>a chamfer needs straight lines on both sides</source>
+        <translation>faza wymaga prostych po obu stronach</translation>
+    </message>
+    <message>
+        <source>the chamfer is longer than the adjacent element</source>
+        <translation>faza jest dłuższa od przyległego elementu</translation>
+    </message>
+    <message>
+        <source>the rounding radius does not fit between the elements</source>
+        <translation>promień zaokrąglenia nie mieści się między elementami</translation>
+    </message>
+    <message>
+        <source>a rounding needs a contour element before it</source>
+        <translation>zaokrąglenie wymaga poprzedzającego elementu konturu</translation>
+    </message>
+    <message>
+        <source>a chamfer needs a contour element before it</source>
+        <translation>faza wymaga poprzedzającego elementu konturu</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element</source>
+        <translation>po zaokrągleniu lub fazie musi następować element konturu</translation>
+    </message>
+    <message>
+        <source>an approach must be followed by a compensated contour element</source>
+        <translation>po dosunięciu musi następować skorygowany element konturu</translation>
+    </message>
+    <message>
+        <source>an approach needs RL or RR</source>
+        <translation>dosunięcie wymaga RL lub RR</translation>
+    </message>
+    <message>
+        <source>a departure needs a compensated contour element before it</source>
+        <translation>odsunięcie wymaga poprzedzającego skorygowanego elementu konturu</translation>
+    </message>
+    <message>
+        <source>the departure cannot be constructed with these values</source>
+        <translation>odsunięcia nie można skonstruować z tymi wartościami</translation>
+    </message>
+    <message>
+        <source>leave radius compensation with a straight line</source>
+        <translation>korekcję promienia należy zakończyć prostą</translation>
+    </message>
+    <message>
+        <source>switching between RL and RR needs a block with R0 between</source>
+        <translation>przełączenie między RL i RR wymaga bloku z R0 pomiędzy</translation>
+    </message>
+    <message>
+        <source>radius compensation must begin with a straight line</source>
+        <translation>korekcja promienia musi zaczynać się prostą</translation>
+    </message>
+    <message>
+        <source>the approach cannot be constructed with these values</source>
+        <translation>dosunięcia nie można skonstruować z tymi wartościami</translation>
+    </message>
+    <message>
+        <source>base = {1} is not a built-in machine ({2})</source>
+        <translation>base = {1} nie jest wbudowaną maszyną ({2})</translation>
+    </message>
+    <message>
+        <source>{1} must be a table</source>
+        <translation>{1} musi być tabelą</translation>
+    </message>
+    <message>
+        <source>axes must be a table of axes such as [axes.X]</source>
+        <translation>axes musi być tabelą osi, np. [axes.X]</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is not an axis letter; use one of {3}</source>
+        <translation>{1}: {2} nie jest literą osi; użyj jednej z {3}</translation>
+    </message>
+    <message>
+        <source>{1} is a table; expected {2}</source>
+        <translation>{1} jest tabelą; oczekiwano {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is {3}; expected {4}</source>
+        <translation>{1} = {2} to {3}; oczekiwano {4}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}</source>
+        <translation>nieznany klucz {1}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}; did you mean {2}?</source>
+        <translation>nieznany klucz {1}; czy chodziło o {2}?</translation>
+    </message>
+    <message>
+        <source>TOML syntax error: {1}</source>
+        <translation>błąd składni TOML: {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the machine configuration: {1}</source>
+        <translation>nie można odczytać konfiguracji maszyny: {1}</translation>
+    </message>
+    <message>
+        <source>Name shown to the operator</source>
+        <translation>Nazwa wyświetlana operatorowi</translation>
+    </message>
+    <message>
+        <source>Machine kind; selects the program dialects and lathe conventions</source>
+        <translation>Rodzaj maszyny; wybiera dialekty programów i konwencje tokarskie</translation>
+    </message>
+    <message>
+        <source>Axis the tool points along; tool length compensation acts on it</source>
+        <translation>Oś, wzdłuż której skierowane jest narzędzie; działa na nią korekcja długości narzędzia</translation>
+    </message>
+    <message>
+        <source>Path velocity of rapid moves</source>
+        <translation>Prędkość torowa ruchów szybkich</translation>
+    </message>
+    <message>
+        <source>Highest programmable feed rate</source>
+        <translation>Najwyższy programowalny posuw</translation>
+    </message>
+    <message>
+        <source>Period of the servo cycle</source>
+        <translation>Okres cyklu serwo</translation>
+    </message>
+    <message>
+        <source>Default path deviation allowed when blending corners; 0 stops exactly</source>
+        <translation>Domyślne dopuszczalne odchylenie toru przy wygładzaniu narożników; 0 zatrzymuje dokładnie</translation>
+    </message>
+    <message>
+        <source>Lowest spindle speed</source>
+        <translation>Najniższa prędkość obrotowa wrzeciona</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed</source>
+        <translation>Najwyższa prędkość obrotowa wrzeciona</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the spindle drive; 0: the spindle has none</source>
+        <translation>Node-ID CANopen napędu wrzeciona; 0: wrzeciono go nie ma</translation>
+    </message>
+    <message>
+        <source>Spindle drive position units per degree</source>
+        <translation>Jednostki położenia napędu wrzeciona na stopień</translation>
+    </message>
+    <message>
+        <source>CiA 402 mode of the spindle drive: cyclic synchronous or profile velocity</source>
+        <translation>Tryb CiA 402 napędu wrzeciona: cykliczny synchroniczny lub prędkość profilowa</translation>
+    </message>
+    <message>
+        <source>Lathe: diameter of the bar simulated when the program defines no blank; 0: none</source>
+        <translation>Tokarka: średnica symulowanego pręta, gdy program nie definiuje półfabrykatu; 0: brak</translation>
+    </message>
+    <message>
+        <source>Lathe: length of the simulated bar</source>
+        <translation>Tokarka: długość symulowanego pręta</translation>
+    </message>
+    <message>
+        <source>Lathe: workpiece Z of the bar&apos;s face; the bar reaches down to face_z - length</source>
+        <translation>Tokarka: Z obrabianego przedmiotu na czole pręta; pręt sięga w dół do face_z - length</translation>
+    </message>
+    <message>
+        <source>Lathe: inner diameter of a tube; 0: a solid bar</source>
+        <translation>Tokarka: średnica wewnętrzna rury; 0: pręt pełny</translation>
+    </message>
+    <message>
+        <source>SocketCAN interface of the drive bus</source>
+        <translation>Interfejs SocketCAN magistrali napędów</translation>
+    </message>
+    <message>
+        <source>Bit rate of the drive bus (a CiA 301 rate)</source>
+        <translation>Szybkość transmisji magistrali napędów (szybkość wg CiA 301)</translation>
+    </message>
+    <message>
+        <source>SYNC period of the drive bus; a whole multiple of servo_period</source>
+        <translation>Okres SYNC magistrali napędów; całkowita wielokrotność servo_period</translation>
+    </message>
+    <message>
+        <source>Heartbeat period of every drive (0x1017)</source>
+        <translation>Okres heartbeat każdego napędu (0x1017)</translation>
+    </message>
+    <message>
+        <source>A drive whose heartbeat is missing this long is lost; above heartbeat_period</source>
+        <translation>Napęd, którego heartbeat nie ma przez ten czas, jest utracony; powyżej heartbeat_period</translation>
+    </message>
+    <message>
+        <source>A drive whose feedback PDO is missing this many cycles is lost</source>
+        <translation>Napęd, którego PDO sprzężenia zwrotnego brakuje przez tyle cykli, jest utracony</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the control&apos;s heartbeat, watched by the drives</source>
+        <translation>Node-ID CANopen heartbeatu sterowania, nadzorowanego przez napędy</translation>
+    </message>
+    <message>
+        <source>Vendor-ID every drive must report (0x1018 sub 1), hexadecimal like 0x0000029C; empty: not checked</source>
+        <translation>Vendor-ID, który musi zgłosić każdy napęd (0x1018 sub 1), szesnastkowo, np. 0x0000029C; puste: nie sprawdzane</translation>
+    </message>
+    <message>
+        <source>Product code every drive must report (0x1018 sub 2); empty: not checked</source>
+        <translation>Kod produktu, który musi zgłosić każdy napęd (0x1018 sub 2); puste: nie sprawdzane</translation>
+    </message>
+    <message>
+        <source>Linear or rotary; A, B and C default to rotary</source>
+        <translation>Liniowa lub obrotowa; A, B i C są domyślnie obrotowe</translation>
+    </message>
+    <message>
+        <source>Lower soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Dolny wyłącznik programowy we współrzędnych maszyny (promień na tokarce)</translation>
+    </message>
+    <message>
+        <source>Upper soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Górny wyłącznik programowy we współrzędnych maszyny (promień na tokarce)</translation>
+    </message>
+    <message>
+        <source>Highest velocity of the axis</source>
+        <translation>Najwyższa prędkość osi</translation>
+    </message>
+    <message>
+        <source>Highest acceleration of the axis</source>
+        <translation>Najwyższe przyspieszenie osi</translation>
+    </message>
+    <message>
+        <source>Highest jerk of the axis</source>
+        <translation>Najwyższy jerk (udar) osi</translation>
+    </message>
+    <message>
+        <source>Machine position after homing; must lie within the soft limits</source>
+        <translation>Położenie maszyny po bazowaniu; musi leżeć w obrębie wyłączników programowych</translation>
+    </message>
+    <message>
+        <source>The axis may be absent and is then switched off with enabled = false</source>
+        <translation>Oś może nie występować i jest wtedy wyłączana przez enabled = false</translation>
+    </message>
+    <message>
+        <source>The axis is present; only optional axes may be disabled</source>
+        <translation>Oś jest obecna; wyłączać można tylko osie opcjonalne</translation>
+    </message>
+    <message>
+        <source>Lathe: the axis is programmed and displayed as a diameter</source>
+        <translation>Tokarka: oś jest programowana i wyświetlana jako średnica</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the axis drive; 0: none</source>
+        <translation>Node-ID CANopen napędu osi; 0: brak</translation>
+    </message>
+    <message>
+        <source>Drive position units per millimetre or degree</source>
+        <translation>Jednostki położenia napędu na milimetr lub stopień</translation>
+    </message>
+    <message>
+        <source>Following error the drive allows (0x6065) before it faults</source>
+        <translation>Uchyb nadążania dopuszczany przez napęd (0x6065), zanim zgłosi błąd</translation>
+    </message>
+    <message>
+        <source>the machine has no axis for {1}</source>
+        <translation>maszyna nie ma osi dla {1}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be less than {3} = {4}</source>
+        <translation>{1} = {2} musi być mniejsze niż {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the soft limits {3} … {4} {5}</source>
+        <translation>{1} = {2} leży poza wyłącznikami programowymi {3} … {4} {5}</translation>
+    </message>
+    <message>
+        <source>{1} = false is only allowed when {2} = true</source>
+        <translation>{1} = false jest dozwolone tylko, gdy {2} = true</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a linear axis of a lathe</source>
+        <translation>{1} = true jest dozwolone tylko na osi liniowej tokarki</translation>
+    </message>
+    <message>
+        <source>the machine has no axes; add [axes.X] tables or start from a built-in machine with base = &quot;mill&quot;</source>
+        <translation>maszyna nie ma osi; dodaj tabele [axes.X] lub zacznij od wbudowanej maszyny z base = &quot;mill&quot;</translation>
+    </message>
+    <message>
+        <source>axis letter {1} is not one of {2}</source>
+        <translation>litera osi {1} nie należy do {2}</translation>
+    </message>
+    <message>
+        <source>axis {1} is listed twice</source>
+        <translation>oś {1} występuje na liście dwukrotnie</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} is not an enabled axis of this machine ({2})</source>
+        <translation>tool_axis = {1} nie jest włączoną osią tej maszyny ({2})</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} must be a linear axis</source>
+        <translation>tool_axis = {1} musi być osią liniową</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must not exceed {3} = {4}</source>
+        <translation>{1} = {2} nie może przekraczać {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be smaller than {3} = {4}</source>
+        <translation>{1} = {2} musi być mniejsze od {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is the node-ID of drives.master_node</source>
+        <translation>{1} = {2} to node-ID drives.master_node</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is already the node of {3}</source>
+        <translation>{1} = {2} jest już węzłem {3}</translation>
+    </message>
+    <message>
+        <source>drives.cycle_period = {1} must be a whole multiple of servo_period = {2}</source>
+        <translation>drives.cycle_period = {1} musi być całkowitą wielokrotnością servo_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.heartbeat_timeout = {1} must exceed drives.heartbeat_period = {2}</source>
+        <translation>drives.heartbeat_timeout = {1} musi przekraczać drives.heartbeat_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.bitrate = {1} is not a CiA 301 bit rate (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</source>
+        <translation>drives.bitrate = {1} nie jest szybkością CiA 301 (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not a 32-bit number such as 0x0000029C</source>
+        <translation>{1} = &quot;{2}&quot; nie jest liczbą 32-bitową, np. 0x0000029C</translation>
+    </message>
+    <message>
+        <source>{1} = {2} has the wrong type; expected {3}</source>
+        <translation>{1} = {2} ma niewłaściwy typ; oczekiwano {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the allowed range {3}</source>
+        <translation>{1} = {2} leży poza dozwolonym zakresem {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is not one of {3}</source>
+        <translation>{1} = {2} nie jest żadną z wartości {3}</translation>
+    </message>
+    <message>
+        <source>empty file name</source>
+        <translation>pusta nazwa pliku</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is outside the NC root</source>
+        <translation>&apos;{1}&apos; leży poza katalogiem głównym NC</translation>
+    </message>
+    <message>
+        <source>datum {1} is not in the datum table</source>
+        <translation>punktu zerowego {1} nie ma w tabeli punktów zerowych</translation>
+    </message>
+    <message>
+        <source>datum {1} is already in the datum table</source>
+        <translation>punkt zerowy {1} jest już w tabeli punktów zerowych</translation>
+    </message>
+    <message>
+        <source>the table does not start with a BEGIN line</source>
+        <translation>tabela nie zaczyna się od wiersza BEGIN</translation>
+    </message>
+    <message>
+        <source>the BEGIN line names no table</source>
+        <translation>wiersz BEGIN nie podaje tabeli</translation>
+    </message>
+    <message>
+        <source>the BEGIN line gives no file type</source>
+        <translation>wiersz BEGIN nie podaje typu pliku</translation>
+    </message>
+    <message>
+        <source>the table has no column {1}</source>
+        <translation>tabela nie ma kolumny {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number &gt;= 0, not &quot;{2}&quot;</source>
+        <translation>kolumna {1} wymaga liczby całkowitej &gt;= 0, nie &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the table has no row {1}</source>
+        <translation>tabela nie ma wiersza {1}</translation>
+    </message>
+    <message>
+        <source>the table has no column &quot;{1}&quot;</source>
+        <translation>tabela nie ma kolumny &quot;{1}&quot;</translation>
+    </message>
+    <message>
+        <source>cell {1} of row {2} is empty</source>
+        <translation>komórka {1} wiersza {2} jest pusta</translation>
+    </message>
+    <message>
+        <source>column {1} needs a number, not &quot;{2}&quot;</source>
+        <translation>kolumna {1} wymaga liczby, nie &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} columns named but {2} values given</source>
+        <translation>podano {1} nazw kolumn, ale {2} wartości</translation>
+    </message>
+    <message>
+        <source>column {1} holds text, not numbers</source>
+        <translation>kolumna {1} zawiera tekst, nie liczby</translation>
+    </message>
+    <message>
+        <source>point {1} is not in the point table</source>
+        <translation>punktu {1} nie ma w tabeli punktów</translation>
+    </message>
+    <message>
+        <source>column {1} needs Y or nothing, not &quot;{2}&quot;</source>
+        <translation>kolumna {1} wymaga Y lub niczego, nie &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>point {1} is already in the point table</source>
+        <translation>punkt {1} jest już w tabeli punktów</translation>
+    </message>
+    <message>
+        <source>preset {1} is not in the preset table</source>
+        <translation>punktu odniesienia {1} nie ma w tabeli punktów odniesienia</translation>
+    </message>
+    <message>
+        <source>preset {1} is already in the preset table</source>
+        <translation>punkt odniesienia {1} jest już w tabeli punktów odniesienia</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number, not &quot;{2}&quot;</source>
+        <translation>kolumna {1} wymaga liczby całkowitej, nie &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the key column {1} is empty</source>
+        <translation>kolumna klucza {1} jest pusta</translation>
+    </message>
+    <message>
+        <source>{1} {2} appears twice (first in line {3})</source>
+        <translation>{1} {2} występuje dwukrotnie (pierwszy raz w wierszu {3})</translation>
+    </message>
+    <message>
+        <source>the table has no column header line</source>
+        <translation>tabela nie ma wiersza nagłówka kolumn</translation>
+    </message>
+    <message>
+        <source>the table has no cell at row {1}, column {2}</source>
+        <translation>tabela nie ma komórki w wierszu {1}, kolumnie {2}</translation>
+    </message>
+    <message>
+        <source>a cell of column {1} cannot hold a line break</source>
+        <translation>komórka kolumny {1} nie może zawierać podziału wiersza</translation>
+    </message>
+    <message>
+        <source>{2} does not fit into column {1} ({3} characters)</source>
+        <translation>{2} nie mieści się w kolumnie {1} ({3} znaków)</translation>
+    </message>
+    <message>
+        <source>column {1} cannot hold an infinite number</source>
+        <translation>kolumna {1} nie może zawierać liczby nieskończonej</translation>
+    </message>
+    <message>
+        <source>cannot insert a row at {1}: the table has {2} rows</source>
+        <translation>nie można wstawić wiersza w {1}: tabela ma {2} wierszy</translation>
+    </message>
+    <message>
+        <source>&quot;{2}&quot; cannot be a key of column {1}</source>
+        <translation>&quot;{2}&quot; nie może być kluczem kolumny {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs L, 1, 0 or nothing, not &quot;{2}&quot;</source>
+        <translation>kolumna {1} wymaga L, 1, 0 lub niczego, nie &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>tool {1} is already in the tool table</source>
+        <translation>narzędzie {1} jest już w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>bezczynny</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>w toku</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <translation>zatrzymanie posuwu</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>zatrzymany</translation>
+    </message>
+    <message>
+        <source>waiting for the machine</source>
+        <translation>oczekiwanie na maszynę</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <translation>zakończony</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>błąd</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>przerwany</translation>
+    </message>
+    <message>
+        <source>motion refused the block: {1}</source>
+        <translation>ruch odrzucił blok: {1}</translation>
+    </message>
+    <message>
+        <source>motion stopped: {1}</source>
+        <translation>ruch zatrzymany: {1}</translation>
+    </message>
+    <message>
+        <source>column {1} must be greater than 0, not {2}</source>
+        <translation>kolumna {1} musi być większa od 0, nie {2}</translation>
+    </message>
+    <message>
+        <source>column {1} must not be negative, not {2}</source>
+        <translation>kolumna {1} nie może być ujemna, nie {2}</translation>
+    </message>
+    <message>
+        <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
+        <translation>kolumna {1} wymaga {2} lub {3}, nie &quot;{4}&quot;</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>gotowy</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <translation>przesuw ręczny</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>bazowanie</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <translation>zatrzymywanie</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>wyłączenie awaryjne</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>usterka</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <translation>brak maszyny</translation>
+    </message>
+    <message>
+        <source>{1} needs the coordinates of its end point</source>
+        <translation>{1} wymaga współrzędnych swojego punktu końcowego</translation>
+    </message>
+    <message>
+        <source>{1} is a straight probing move in workpiece coordinates: not with G06, G08, G09, G36-G39 or G53</source>
+        <translation>{1} to prostoliniowy ruch próbkowania we współrzędnych obrabianego przedmiotu: nie z G06, G08, G09, G36-G39 ani G53</translation>
+    </message>
+    <message>
+        <source>G75 reached its end point without the probe touching</source>
+        <translation>G75 osiągnęło punkt końcowy bez zetknięcia sondy</translation>
+    </message>
+    <message>
+        <source>G76 reached its end point with the probe still touching</source>
+        <translation>G76 osiągnęło punkt końcowy, a sonda nadal dotyka</translation>
+    </message>
+    <message>
+        <source>Simulation: a box-shaped workpiece the touch probe touches (G75, probing cycles); the bounds below, machine coordinates of the tool tip</source>
+        <translation>Symulacja: prostopadłościenny obrabiany przedmiot, którego dotyka sonda (G75, cykle próbkowania); granice poniżej we współrzędnych maszyny wierzchołka narzędzia</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine X of the tool tip inside it</source>
+        <translation>Symulowany przedmiot do próbkowania: najmniejsze X maszyny wierzchołka narzędzia wewnątrz niego</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine X of the tool tip inside it</source>
+        <translation>Symulowany przedmiot do próbkowania: największe X maszyny wierzchołka narzędzia wewnątrz niego</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Y of the tool tip inside it</source>
+        <translation>Symulowany przedmiot do próbkowania: najmniejsze Y maszyny wierzchołka narzędzia wewnątrz niego</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Y of the tool tip inside it</source>
+        <translation>Symulowany przedmiot do próbkowania: największe Y maszyny wierzchołka narzędzia wewnątrz niego</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Z of the tool tip inside it</source>
+        <translation>Symulowany przedmiot do próbkowania: najmniejsze Z maszyny wierzchołka narzędzia wewnątrz niego</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Z of the tool tip inside it</source>
+        <translation>Symulowany przedmiot do próbkowania: największe Z maszyny wierzchołka narzędzia wewnątrz niego</translation>
+    </message>
+    <message>
+        <source>Machine coordinate of the workpiece origin (the default preset); kerf run --work-offset overrides it</source>
+        <translation>Współrzędna maszyny punktu zerowego obrabianego przedmiotu (domyślny punkt odniesienia); kerf run --work-offset ją zastępuje</translation>
+    </message>
+    <message>
+        <source>{1} needs a programmed feed F greater than 0</source>
+        <translation>{1} wymaga zaprogramowanego posuwu F większego od 0</translation>
+    </message>
+    <message>
+        <source>Drilling/
+thread</source>
+        <translation>Wiercenie/
+gwint</translation>
+    </message>
+    <message>
+        <source>Pockets/
+studs/slots</source>
+        <translation>Kieszenie/
+czopy/rowki</translation>
+    </message>
+    <message>
+        <source>Patterns</source>
+        <translation>Wzory</translation>
+    </message>
+    <message>
+        <source>SL cycles</source>
+        <translation>Cykle SL</translation>
+    </message>
+    <message>
+        <source>Coordinate
+transform.</source>
+        <translation>Przeliczanie
+współrzędnych</translation>
+    </message>
+    <message>
+        <source>Special
+cycles</source>
+        <translation>Cykle
+specjalne</translation>
+    </message>
+    <message>
+        <source>SET-UP CLEARANCE</source>
+        <translation>ODSTĘP BEZPIECZEŃSTWA</translation>
+    </message>
+    <message>
+        <source>DEPTH</source>
+        <translation>GŁĘBOKOŚĆ</translation>
+    </message>
+    <message>
+        <source>PLUNGING DEPTH</source>
+        <translation>GŁĘBOKOŚĆ DOSUWU</translation>
+    </message>
+    <message>
+        <source>SURFACE COORDINATE</source>
+        <translation>WSPÓŁ. POWIERZCHNI</translation>
+    </message>
+    <message>
+        <source>2ND SET-UP CLEARANCE</source>
+        <translation>2. ODSTĘP BEZPIECZ.</translation>
+    </message>
+    <message>
+        <source>MIN. PLUNGING DEPTH</source>
+        <translation>MIN. GŁĘB. DOSUWU</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR PLNGNG</source>
+        <translation>POSUW WCIĘCIA</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR MILLING</source>
+        <translation>POSUW FREZOWANIA</translation>
+    </message>
+    <message>
+        <source>RETRACTION FEED RATE</source>
+        <translation>POSUW POWROTU</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT TOP</source>
+        <translation>CZAS PRZERWY U GÓRY</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT DEPTH</source>
+        <translation>CZAS PRZERWY NA DOLE</translation>
+    </message>
+    <message>
+        <source>DECREMENT</source>
+        <translation>WARTOŚĆ ZMNIEJSZENIA</translation>
+    </message>
+    <message>
+        <source>NR OF BREAKS</source>
+        <translation>ŁAMANIA WIÓRA</translation>
+    </message>
+    <message>
+        <source>DISENGAGING DIRECTN</source>
+        <translation>KIERUNEK ODSUNIĘCIA</translation>
+    </message>
+    <message>
+        <source>CENTER IN 1ST AXIS</source>
+        <translation>ŚRODEK 1. OSI</translation>
+    </message>
+    <message>
+        <source>CENTER IN 2ND AXIS</source>
+        <translation>ŚRODEK 2. OSI</translation>
+    </message>
+    <message>
+        <source>FIRST SIDE LENGTH</source>
+        <translation>DŁUGOŚĆ 1. BOKU</translation>
+    </message>
+    <message>
+        <source>2ND SIDE LENGTH</source>
+        <translation>DŁUGOŚĆ 2. BOKU</translation>
+    </message>
+    <message>
+        <source>ANGLE OF ROTATION</source>
+        <translation>KĄT OBROTU</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 1ST AXIS</source>
+        <translation>PUNKT STARTU 1. OSI</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 2ND AXIS</source>
+        <translation>PUNKT STARTU 2. OSI</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 3RD AXIS</source>
+        <translation>PUNKT STARTU 3. OSI</translation>
+    </message>
+    <message>
+        <source>SPACING IN 1ST AXIS</source>
+        <translation>ODSTĘP 1. OSI</translation>
+    </message>
+    <message>
+        <source>SPACING IN 2ND AXIS</source>
+        <translation>ODSTĘP 2. OSI</translation>
+    </message>
+    <message>
+        <source>THREAD PITCH</source>
+        <translation>SKOK GWINTU</translation>
+    </message>
+    <message>
+        <source>NR OF REPETITIONS</source>
+        <translation>LICZBA POWTÓRZEŃ</translation>
+    </message>
+    <message>
+        <source>NUMBER OF COLUMNS</source>
+        <translation>LICZBA KOLUMN</translation>
+    </message>
+    <message>
+        <source>NUMBER OF LINES</source>
+        <translation>LICZBA WIERSZY</translation>
+    </message>
+    <message>
+        <source>PITCH CIRCLE DIAMETR</source>
+        <translation>ŚREDNICA KOŁA PODZ.</translation>
+    </message>
+    <message>
+        <source>STARTING ANGLE</source>
+        <translation>KĄT STARTU</translation>
+    </message>
+    <message>
+        <source>STOPPING ANGLE</source>
+        <translation>KĄT KOŃCOWY</translation>
+    </message>
+    <message>
+        <source>STEPPING ANGLE</source>
+        <translation>KROK KĄTA</translation>
+    </message>
+    <message>
+        <source>DEPTH OF COUNTERBORE</source>
+        <translation>GŁĘB. POGŁĘBIENIA</translation>
+    </message>
+    <message>
+        <source>MATERIAL THICKNESS</source>
+        <translation>GRUBOŚĆ MATERIAŁU</translation>
+    </message>
+    <message>
+        <source>OFF-CENTER DISTANCE</source>
+        <translation>WYMIAR MIMOŚRODU</translation>
+    </message>
+    <message>
+        <source>TOOL EDGE HEIGHT</source>
+        <translation>WYSOKOŚĆ OSTRZA</translation>
+    </message>
+    <message>
+        <source>F PRE-POSITIONING</source>
+        <translation>POSUW POZYC. WSTĘP.</translation>
+    </message>
+    <message>
+        <source>F COUNTERSINKING</source>
+        <translation>POSUW POGŁĘBIANIA</translation>
+    </message>
+    <message>
+        <source>DIST FOR CHIP BRKNG</source>
+        <translation>ODC. POWR. ŁAM. WIÓRA</translation>
+    </message>
+    <message>
+        <source>DEPTH FOR CHIP BRKNG</source>
+        <translation>GŁĘB. ŁAMANIA WIÓRA</translation>
+    </message>
+    <message>
+        <source>UPPER ADV STOP DIST</source>
+        <translation>GÓRNY ODST. WYPRZEDZ.</translation>
+    </message>
+    <message>
+        <source>LOWER ADV STOP DIST</source>
+        <translation>DOLNY ODST. WYPRZEDZ.</translation>
+    </message>
+    <message>
+        <source>MOVE TO CLEARANCE</source>
+        <translation>NA BEZPIECZNĄ WYS.</translation>
+    </message>
+    <message>
+        <source>NOMINAL DIAMETER</source>
+        <translation>ŚREDNICA NOMINALNA</translation>
+    </message>
+    <message>
+        <source>ANGLE OF SPINDLE</source>
+        <translation>KĄT WRZECIONA</translation>
+    </message>
+    <message>
+        <source>DATUM NUMBER</source>
+        <translation>NUMER PUNKTU ZER.</translation>
+    </message>
+    <message>
+        <source>ROUGHING DIAMETER</source>
+        <translation>ŚREDNICA WSTĘPNA</translation>
+    </message>
+    <message>
+        <source>SELECT DIA./DEPTH</source>
+        <translation>WYBÓR ŚRED./GŁĘB.</translation>
+    </message>
+    <message>
+        <source>DIAMETER</source>
+        <translation>ŚREDNICA</translation>
+    </message>
+    <message>
+        <source>SELECT POS. HEIGHT</source>
+        <translation>WYBÓR WYS. POZYCJI</translation>
+    </message>
+    <message>
+        <source>CLIMB OR UP-CUT</source>
+        <translation>WSPÓŁ-/PRZECIWBIEŻNIE</translation>
+    </message>
+    <message>
+        <source>THREADS PER STEP</source>
+        <translation>ZWOJE NA KROK</translation>
+    </message>
+    <message>
+        <source>COUNTERSINKING DEPTH</source>
+        <translation>GŁĘB. POGŁĘBIENIA</translation>
+    </message>
+    <message>
+        <source>CLEARANCE TO SIDE</source>
+        <translation>ODSTĘP Z BOKU</translation>
+    </message>
+    <message>
+        <source>DEPTH AT FRONT</source>
+        <translation>GŁĘBOKOŚĆ CZOŁOWO</translation>
+    </message>
+    <message>
+        <source>OFFSET AT FRONT</source>
+        <translation>PRZESUNIĘCIE CZOŁOWO</translation>
+    </message>
+    <message>
+        <source>COUNTERSINK PROCESS</source>
+        <translation>PROCES POGŁĘBIANIA</translation>
+    </message>
+    <message>
+        <source>TYPE OF TRAVERSE</source>
+        <translation>RODZAJ PRZEJAZDU</translation>
+    </message>
+    <message>
+        <source>TEXT POSITION</source>
+        <translation>POŁOŻENIE TEKSTU</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR FLOOR</source>
+        <translation>NADDATEK NA DNO</translation>
+    </message>
+    <message>
+        <source>MAX. OVERLAP</source>
+        <translation>MAKS. NAKŁADANIE</translation>
+    </message>
+    <message>
+        <source>STARTING POINT</source>
+        <translation>PUNKT STARTU</translation>
+    </message>
+    <message>
+        <source>FINISHING FEED RATE</source>
+        <translation>POSUW WYKAŃCZANIA</translation>
+    </message>
+    <message>
+        <source>END POINT 3RD AXIS</source>
+        <translation>PUNKT KOŃC. 3. OSI</translation>
+    </message>
+    <message>
+        <source>STRATEGY</source>
+        <translation>STRATEGIA</translation>
+    </message>
+    <message>
+        <source>DEPTH REFERENCE</source>
+        <translation>ODNIESIENIE GŁĘB.</translation>
+    </message>
+    <message>
+        <source>FEED RATE FACTOR</source>
+        <translation>WSPÓŁCZYNNIK POSUWU</translation>
+    </message>
+    <message>
+        <source>RPM FACTOR</source>
+        <translation>WSPÓŁ. PRĘDK. OBR.</translation>
+    </message>
+    <message>
+        <source>DIR. OF SPINDLE ROT.</source>
+        <translation>KIERUNEK OBROTÓW</translation>
+    </message>
+    <message>
+        <source>ROT.SPEED INFEED/OUT</source>
+        <translation>OBROTY WEJ./WYJ.</translation>
+    </message>
+    <message>
+        <source>ROT. SPEED DRILLING</source>
+        <translation>OBROTY WIERCENIA</translation>
+    </message>
+    <message>
+        <source>COOLANT ON</source>
+        <translation>CHŁODZIWO WŁ.</translation>
+    </message>
+    <message>
+        <source>COOLANT OFF</source>
+        <translation>CHŁODZIWO WYŁ.</translation>
+    </message>
+    <message>
+        <source>DWELL DEPTH</source>
+        <translation>GŁĘBOKOŚĆ PRZERWY</translation>
+    </message>
+    <message>
+        <source>ENGRAVING TEXT</source>
+        <translation>TEKST GRAWEROWANIA</translation>
+    </message>
+    <message>
+        <source>FEED FOR APPROACH</source>
+        <translation>POSUW NAJAZDU</translation>
+    </message>
+    <message>
+        <source>CHARACTER HEIGHT</source>
+        <translation>WYSOKOŚĆ ZNAKÓW</translation>
+    </message>
+    <message>
+        <source>SPACE FACTOR</source>
+        <translation>WSPÓŁ. ODSTĘPU</translation>
+    </message>
+    <message>
+        <source>FONT</source>
+        <translation>CZCIONKA</translation>
+    </message>
+    <message>
+        <source>TEXT LAYOUT</source>
+        <translation>UKŁAD TEKSTU</translation>
+    </message>
+    <message>
+        <source>CIRCLE RADIUS</source>
+        <translation>PROMIEŃ OKRĘGU</translation>
+    </message>
+    <message>
+        <source>MAX. TEXT LENGTH</source>
+        <translation>MAKS. DŁ. TEKSTU</translation>
+    </message>
+    <message>
+        <source>F COUNTERBORING</source>
+        <translation>POSUW POGŁ. WSTECZ.</translation>
+    </message>
+    <message>
+        <source>DEPTH OF THREAD</source>
+        <translation>GŁĘBOKOŚĆ GWINTU</translation>
+    </message>
+    <message>
+        <source>MAX. PLUNGING DEPTH</source>
+        <translation>MAKS. GŁĘB. DOSUWU</translation>
+    </message>
+    <message>
+        <source>TOTAL HOLE DEPTH</source>
+        <translation>CAŁK. GŁĘB. OTWORU</translation>
+    </message>
+    <message>
+        <source>%1: %2 needs a positive feed after it, e.g. %2 0.1</source>
+        <translation>%1: po %2 musi następować dodatni posuw, np. %2 0.1</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; enter a number</source>
+        <translation>%1: %2 nie jest tu dozwolone; wprowadź liczbę</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; allowed: a number, %3</source>
+        <translation>%1: %2 nie jest tu dozwolone; dozwolone: liczba, %3</translation>
+    </message>
+    <message>
+        <source>%1: enter a value</source>
+        <translation>%1: wprowadź wartość</translation>
+    </message>
+    <message>
+        <source>%1: the text must not contain &quot;</source>
+        <translation>%1: tekst nie może zawierać &quot;</translation>
+    </message>
+    <message>
+        <source>%1: enter axis letters separated by blanks, e.g. X Y</source>
+        <translation>%1: wprowadź litery osi rozdzielone spacjami, np. X Y</translation>
+    </message>
+    <message>
+        <source>%1: #n needs a datum number, e.g. #5</source>
+        <translation>%1: #n wymaga numeru punktu zerowego, np. #5</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number</source>
+        <translation>%1: &quot;%2&quot; nie jest liczbą</translation>
+    </message>
+    <message>
+        <source>%1: enter a whole number from %2 to %3</source>
+        <translation>%1: wprowadź liczbę całkowitą od %2 do %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the range %3 to %4</source>
+        <translation>%1: %2 leży poza zakresem %3 do %4</translation>
+    </message>
+    <message>
+        <source>%1 coordinate of the end point (I before the value: incremental)</source>
+        <translation>Współrzędna %1 punktu końcowego (I przed wartością: przyrostowo)</translation>
+    </message>
+    <message>
+        <source>Circle radius (negative: arc greater than 180°)</source>
+        <translation>Promień okręgu (ujemny: łuk większy niż 180°)</translation>
+    </message>
+    <message>
+        <source>Chamfer length</source>
+        <translation>Długość fazy</translation>
+    </message>
+    <message>
+        <source>Rounding radius</source>
+        <translation>Promień zaokrąglenia</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (DR-: clockwise, DR+: counterclockwise)</source>
+        <translation>Kierunek obrotu (DR-: zgodnie z ruchem wskazówek zegara, DR+: przeciwnie)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (RL left, RR right of the contour, R0 none)</source>
+        <translation>Korekcja promienia (RL z lewej, RR z prawej strony konturu, R0 brak)</translation>
+    </message>
+    <message>
+        <source>Feed rate (FMAX: rapid traverse, FAUTO: from TOOL CALL)</source>
+        <translation>Posuw (FMAX: bieg szybki, FAUTO: z TOOL CALL)</translation>
+    </message>
+    <message>
+        <source>Miscellaneous functions, e.g. 3 8</source>
+        <translation>Funkcje dodatkowe, np. 3 8</translation>
+    </message>
+    <message>
+        <source>Tool number or name</source>
+        <translation>Numer lub nazwa narzędzia</translation>
+    </message>
+    <message>
+        <source>Spindle axis</source>
+        <translation>Oś wrzeciona</translation>
+    </message>
+    <message>
+        <source>Spindle speed S [1/min]</source>
+        <translation>Prędkość obrotowa wrzeciona S [1/min]</translation>
+    </message>
+    <message>
+        <source>Delta length DL</source>
+        <translation>Delta długości DL</translation>
+    </message>
+    <message>
+        <source>Delta radius DR</source>
+        <translation>Delta promienia DR</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a coordinate</source>
+        <translation>%1: &quot;%2&quot; nie jest współrzędną</translation>
+    </message>
+    <message>
+        <source>%1: enter a radius other than 0</source>
+        <translation>%1: wprowadź promień różny od 0</translation>
+    </message>
+    <message>
+        <source>%1: enter a positive number</source>
+        <translation>%1: wprowadź liczbę dodatnią</translation>
+    </message>
+    <message>
+        <source>%1: enter a feed rate, FMAX or FAUTO</source>
+        <translation>%1: wprowadź posuw, FMAX lub FAUTO</translation>
+    </message>
+    <message>
+        <source>%1: enter M function numbers, e.g. 3 8</source>
+        <translation>%1: wprowadź numery funkcji M, np. 3 8</translation>
+    </message>
+    <message>
+        <source>%1: enter a tool number or a name</source>
+        <translation>%1: wprowadź numer lub nazwę narzędzia</translation>
+    </message>
+    <message>
+        <source>%1: choose one of %2</source>
+        <translation>%1: wybierz jedną z wartości %2</translation>
+    </message>
+    <message>
+        <source>%1: enter at least one coordinate</source>
+        <translation>%1: wprowadź co najmniej jedną współrzędną</translation>
+    </message>
+    <message>
+        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
+        <translation>Dialogi cykli i funkcji toru zapisują programy Klartext (.H).</translation>
+    </message>
+    <message>
+        <source>Cycle
+overview</source>
+        <translation>Przegląd
+cykli</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Powrót</translation>
+    </message>
+    <message>
+        <source>Edit
+cycle</source>
+        <translation>Edytuj
+cykl</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a CYCL DEF block to edit it.</source>
+        <translation>Ustaw kursor na bloku CYCL DEF, aby go edytować.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineRows</name>
+    <message>
+        <source>Increment
+continuous</source>
+        <translation>Krok
+ciągły</translation>
+    </message>
+    <message>
+        <source>Increment
+%1 mm</source>
+        <translation>Krok
+%1 mm</translation>
+    </message>
+    <message>
+        <source>Home
+all</source>
+        <translation>Bazuj
+wszystkie</translation>
+    </message>
+    <message>
+        <source>Spindle
+on</source>
+        <translation>Wrzeciono
+wł.</translation>
+    </message>
+    <message>
+        <source>Spindle
+off</source>
+        <translation>Wrzeciono
+wył.</translation>
+    </message>
+    <message>
+        <source>NC
+start</source>
+        <translation>NC
+start</translation>
+    </message>
+    <message>
+        <source>NC stop
+(feed hold)</source>
+        <translation>NC stop
+(stop posuwu)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Wznów</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Start at
+block</source>
+        <translation>Start od
+bloku</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Start od bloku</translation>
+    </message>
+    <message>
+        <source>Line of the first block</source>
+        <translation>Wiersz pierwszego bloku</translation>
+    </message>
+    <message>
+        <source>Single block
+on</source>
+        <translation>Pojedynczy blok
+wł.</translation>
+    </message>
+    <message>
+        <source>Single block
+off</source>
+        <translation>Pojedynczy blok
+wył.</translation>
+    </message>
+    <message>
+        <source>Execute
+block</source>
+        <translation>Wykonaj
+blok</translation>
+    </message>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Pozycjonowanie z MDI</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Blok</translation>
     </message>
 </context>
 </TS>

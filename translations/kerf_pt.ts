@@ -2,6 +2,51 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_PT">
 <context>
+    <name>kerf::ui::CycleCatalogueDialog</name>
+    <message>
+        <source>There is no cycle %1</source>
+        <translation>Não existe o ciclo %1</translation>
+    </message>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Definição de ciclo</translation>
+    </message>
+    <message>
+        <source>Cycle number</source>
+        <translation>Número de ciclo</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::CycleDialog</name>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Definição de ciclo</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FagorTableModel</name>
+    <message>
+        <source>Key</source>
+        <translation>Chave</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::FileManager</name>
     <message>
         <source>All files</source>
@@ -99,6 +144,40 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::GraphicsPanel</name>
+    <message>
+        <source>The 3D graphics need a display</source>
+        <translation>Os gráficos 3D precisam de um ecrã</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidade</translation>
+    </message>
+    <message>
+        <source>Machining time %1 / %2</source>
+        <translation>Tempo de maquinagem %1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineSession</name>
+    <message>
+        <source>The machine is busy: stop the program or wait until the axes stand still</source>
+        <translation>A máquina está ocupada: pare o programa ou espere até os eixos pararem</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot be started</source>
+        <translation>O programa tem erros e não pode ser iniciado</translation>
+    </message>
+    <message>
+        <source>Program finished</source>
+        <translation>Programa terminado</translation>
+    </message>
+    <message>
+        <source>Program stopped</source>
+        <translation>Programa parado</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MainWindow</name>
     <message>
         <source>Programming station</source>
@@ -111,18 +190,6 @@
     <message>
         <source>Kerf - %1</source>
         <translation>Kerf - %1</translation>
-    </message>
-    <message>
-        <source>Graphics</source>
-        <translation>Gráfico</translation>
-    </message>
-    <message>
-        <source>Status</source>
-        <translation>Estado</translation>
-    </message>
-    <message>
-        <source>Positions: %1</source>
-        <translation>Posições: %1</translation>
     </message>
     <message>
         <source>Screen
@@ -139,12 +206,6 @@ do ecrã</translation>
 table</source>
         <translation>Tabela de
 ferramentas</translation>
-    </message>
-    <message>
-        <source>Preset
-table</source>
-        <translation>Tabela de
-pontos de ref.</translation>
     </message>
     <message>
         <source>Message
@@ -263,6 +324,58 @@ autosave</source>
         <translation>Repor cópia
 automática</translation>
     </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tabelas</translation>
+    </message>
+    <message>
+        <source>MOD</source>
+        <translation>MOD</translation>
+    </message>
+    <message>
+        <source>No program is open: open one in Files</source>
+        <translation>Nenhum programa aberto: abra um em Ficheiros</translation>
+    </message>
+    <message>
+        <source>Machine
+parameters</source>
+        <translation>Parâmetros
+de máquina</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Repor</translation>
+    </message>
+    <message>
+        <source>Speed
+%1</source>
+        <translation>Velocidade
+%1</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Zoom
++</source>
+        <translation>Zoom
++</translation>
+    </message>
+    <message>
+        <source>Zoom
+-</source>
+        <translation>Zoom
+-</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -299,6 +412,116 @@ automática</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ModPage</name>
+    <message>
+        <source>MOD functions</source>
+        <translation>Funções MOD</translation>
+    </message>
+    <message>
+        <source>Position display</source>
+        <translation>Visualização de posição</translation>
+    </message>
+    <message>
+        <source>Unit of the position display</source>
+        <translation>Unidade da visualização de posição</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>Software: Kerf %1 (Qt %2)
+Machine: %3</source>
+        <translation>Software: Kerf %1 (Qt %2)
+Máquina: %3</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::OverrideControls</name>
+    <message>
+        <source>Feed</source>
+        <translation>Avanço</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Rápido</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Mandril</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PathFunctionDialog</name>
+    <message>
+        <source>Path function</source>
+        <translation>Função de trajetória</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PositionDisplay</name>
+    <message>
+        <source>ACTL.</source>
+        <translation>REAL</translation>
+    </message>
+    <message>
+        <source>NOML.</source>
+        <translation>NOM.</translation>
+    </message>
+    <message>
+        <source>REF ACTL.</source>
+        <translation>REF REAL</translation>
+    </message>
+    <message>
+        <source>REF NOML.</source>
+        <translation>REF NOM.</translation>
+    </message>
+    <message>
+        <source>LAG</source>
+        <translation>ERRO ARR.</translation>
+    </message>
+    <message>
+        <source>DIST.</source>
+        <translation>DIST.</translation>
+    </message>
+    <message>
+        <source>Program: %1   Machine: %2</source>
+        <translation>Programa: %1   Máquina: %2</translation>
+    </message>
+    <message>
+        <source>   Line %1</source>
+        <translation>   Linha %1</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>F %1 (actual %2) %3</source>
+        <translation>F %1 (real %2) %3</translation>
+    </message>
+    <message>
+        <source>inch/min</source>
+        <translation>inch/min</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>S %1 (actual %2) rpm</source>
+        <translation>S %1 (real %2) rpm</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Saved %1</source>
@@ -315,6 +538,331 @@ automática</translation>
     <message>
         <source>Loading %1 ...</source>
         <translation>A carregar %1 ...</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsModel</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Eixo %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parâmetro</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidade</translation>
+    </message>
+    <message>
+        <source>Allowed</source>
+        <translation>Permitido</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Por defeito</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Descrição</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsPage</name>
+    <message>
+        <source>Not saved: correct the parameters first</source>
+        <translation>Não guardado: corrija primeiro os parâmetros</translation>
+    </message>
+    <message>
+        <source>Saved %1: the changes apply when Kerf is restarted</source>
+        <translation>%1 guardado: as alterações aplicam-se quando o Kerf for reiniciado</translation>
+    </message>
+    <message>
+        <source>Machine parameters</source>
+        <translation>Parâmetros de máquina</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes apply after a restart. This is a built-in machine: the parameters are saved to %1; start Kerf with --machine %1 to use them.</source>
+        <translation>O Kerf lê os parâmetros de máquina ao arrancar: as alterações guardadas aplicam-se depois de reiniciar. Esta é uma máquina incorporada: os parâmetros são guardados em %1; inicie o Kerf com --machine %1 para os usar.</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
+        <translation>O Kerf lê os parâmetros de máquina ao arrancar: as alterações guardadas em %1 aplicam-se depois de reiniciar.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::StatusTabs</name>
+    <message>
+        <source>PGM</source>
+        <translation>PGM</translation>
+    </message>
+    <message>
+        <source>TOOL</source>
+        <translation>TOOL</translation>
+    </message>
+    <message>
+        <source>TRANS</source>
+        <translation>TRANS</translation>
+    </message>
+    <message>
+        <source>PROBE</source>
+        <translation>PROBE</translation>
+    </message>
+    <message>
+        <source>%1PARA</source>
+        <translation>%1PARA</translation>
+    </message>
+    <message>
+        <source>Filter, e.g. %1</source>
+        <translation>Filtro, p. ex. %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <source>Called program</source>
+        <translation>Programa chamado</translation>
+    </message>
+    <message>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>M functions</source>
+        <translation>Funções M</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Linha</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidade</translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation>inch</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Ferramenta</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Corretor</translation>
+    </message>
+    <message>
+        <source>X (radius)</source>
+        <translation>X (raio)</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Wear X (I)</source>
+        <translation>Desgaste X (I)</translation>
+    </message>
+    <message>
+        <source>Wear Z (K)</source>
+        <translation>Desgaste Z (K)</translation>
+    </message>
+    <message>
+        <source>Location code (F)</source>
+        <translation>Código de localização (F)</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>DL</source>
+        <translation>DL</translation>
+    </message>
+    <message>
+        <source>DR</source>
+        <translation>DR</translation>
+    </message>
+    <message>
+        <source>Tool axis</source>
+        <translation>Eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Zero offset</source>
+        <translation>Origem</translation>
+    </message>
+    <message>
+        <source>Datum shift %1</source>
+        <translation>Deslocação do ponto zero %1</translation>
+    </message>
+    <message>
+        <source>Mirrored axes</source>
+        <translation>Eixos espelhados</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Rotação</translation>
+    </message>
+    <message>
+        <source>Scaling</source>
+        <translation>Fator de escala</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>global</source>
+        <translation>global</translation>
+    </message>
+    <message>
+        <source>local, level %1</source>
+        <translation>local, nível %1</translation>
+    </message>
+    <message>
+        <source>local</source>
+        <translation>local</translation>
+    </message>
+    <message>
+        <source>remanent</source>
+        <translation>remanente</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>texto</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Apalpador</translation>
+    </message>
+    <message>
+        <source>no result</source>
+        <translation>sem resultado</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>tocou</translation>
+    </message>
+    <message>
+        <source>not touched</source>
+        <translation>não tocou</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TableChooser</name>
+    <message>
+        <source>Tool
+table</source>
+        <translation>Tabela de
+ferramentas</translation>
+    </message>
+    <message>
+        <source>Preset
+table</source>
+        <translation>Tabela de
+pontos ref.</translation>
+    </message>
+    <message>
+        <source>Datum
+table</source>
+        <translation>Tabela de
+pontos zero</translation>
+    </message>
+    <message>
+        <source>Point
+table</source>
+        <translation>Tabela de
+pontos</translation>
+    </message>
+    <message>
+        <source>Touch probe
+table</source>
+        <translation>Tabela de
+apalpadores</translation>
+    </message>
+    <message>
+        <source>Tool
+offsets</source>
+        <translation>Corretores
+ferramenta</translation>
+    </message>
+    <message>
+        <source>Zero
+offsets</source>
+        <translation>Origens</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabela</translation>
+    </message>
+    <message>
+        <source>Lengths, radii, wear and life of the tools</source>
+        <translation>Comprimentos, raios, desgaste e vida útil das ferramentas</translation>
+    </message>
+    <message>
+        <source>Reference points of the workpieces, in machine coordinates</source>
+        <translation>Pontos de referência das peças, em coordenadas de máquina</translation>
+    </message>
+    <message>
+        <source>Zero offsets relative to the active preset (CYCL DEF 7)</source>
+        <translation>Pontos zero relativos ao ponto de referência ativo (CYCL DEF 7)</translation>
+    </message>
+    <message>
+        <source>Machining positions for patterns (SEL PATTERN)</source>
+        <translation>Posições de maquinagem para padrões (SEL PATTERN)</translation>
+    </message>
+    <message>
+        <source>Workpiece touch probes: centre offset, feeds, probing path</source>
+        <translation>Apalpadores de peça: desvio do centro, avanços, percurso de apalpação</translation>
+    </message>
+    <message>
+        <source>Tool offsets D: X, Z, nose radius R, location code F, wear I, K</source>
+        <translation>Corretores de ferramenta D: X, Z, raio da ponta R, código de localização F, desgaste I, K</translation>
+    </message>
+    <message>
+        <source>Zero offsets G54-G59, G159 N7-N20 and the PLC offset, from machine zero</source>
+        <translation>Origens G54-G59, G159 N7-N20 e a origem do PLC, a partir do zero máquina</translation>
+    </message>
+    <message>
+        <source>Tools T: offset D, family, tool life, nose angle and width</source>
+        <translation>Ferramentas T: corretor D, família, vida útil, ângulo e largura da ponta</translation>
+    </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tabelas</translation>
     </message>
 </context>
 <context>
@@ -342,6 +890,44 @@ automática</translation>
     <message>
         <source>Table</source>
         <translation>Tabela</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TestRunController</name>
+    <message>
+        <source>max</source>
+        <translation>máx</translation>
+    </message>
+    <message>
+        <source>Test run: %1</source>
+        <translation>Teste do programa: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ViewportWidget</name>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Planta</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Frente</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Lado</translation>
+    </message>
+    <message>
+        <source>Section</source>
+        <translation>Corte</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Ajustar</translation>
     </message>
 </context>
 <context>
@@ -418,6 +1004,4199 @@ estado</translation>
     <message>
         <source>stop the program before changing the operating mode</source>
         <translation>pare o programa antes de mudar o modo de funcionamento</translation>
+    </message>
+    <message>
+        <source>cannot {1}: {2}</source>
+        <translation>não é possível {1}: {2}</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip to workpiece surface</source>
+        <translation>Distância de segurança: extremidade da ferramenta à superfície da peça</translation>
+    </message>
+    <message>
+        <source>Depth: workpiece surface to bottom (sign = direction)</source>
+        <translation>Profundidade: superfície da peça ao fundo (sinal = direção)</translation>
+    </message>
+    <message>
+        <source>Thread depth: workpiece surface to thread end</source>
+        <translation>Profundidade da rosca: superfície da peça ao fim da rosca</translation>
+    </message>
+    <message>
+        <source>Plunging depth per infeed</source>
+        <translation>Profundidade de passo por corte</translation>
+    </message>
+    <message>
+        <source>Workpiece surface coordinate</source>
+        <translation>Coordenada da superfície da peça</translation>
+    </message>
+    <message>
+        <source>2nd set-up clearance: no collision above this height</source>
+        <translation>2.ª distância de segurança: sem colisão acima desta altura</translation>
+    </message>
+    <message>
+        <source>Minimum plunging depth when decreasing</source>
+        <translation>Profundidade de passo mínima ao reduzir</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging</source>
+        <translation>Avanço de incremento em profundidade</translation>
+    </message>
+    <message>
+        <source>Feed rate for milling</source>
+        <translation>Avanço de fresagem</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: plunging feed)</source>
+        <translation>Avanço de retrocesso (0: avanço de incremento)</translation>
+    </message>
+    <message>
+        <source>Dwell time at the top</source>
+        <translation>Tempo de espera em cima</translation>
+    </message>
+    <message>
+        <source>Dwell time at depth</source>
+        <translation>Tempo de espera em baixo</translation>
+    </message>
+    <message>
+        <source>Decrement of the plunging depth after each infeed</source>
+        <translation>Redução da profundidade de passo após cada corte</translation>
+    </message>
+    <message>
+        <source>Feed rate for pre-positioning</source>
+        <translation>Avanço de posicionamento prévio</translation>
+    </message>
+    <message>
+        <source>Feed rate for countersinking</source>
+        <translation>Avanço de rebaixamento</translation>
+    </message>
+    <message>
+        <source>Retraction distance for chip breaking</source>
+        <translation>Distância de retrocesso na rotura de apara</translation>
+    </message>
+    <message>
+        <source>Depth for chip breaking (0: none)</source>
+        <translation>Profundidade para rotura de apara (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>Upper advanced stop distance</source>
+        <translation>Distância de paragem prévia superior</translation>
+    </message>
+    <message>
+        <source>Angle for spindle orientation</source>
+        <translation>Ângulo para a orientação do mandril</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (0 none, 1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Direção de afastamento (0 nenhuma, 1 -eixo principal, 2 -eixo secundário, 3 +eixo principal, 4 +eixo secundário)</translation>
+    </message>
+    <message>
+        <source>Nominal diameter</source>
+        <translation>Diâmetro nominal</translation>
+    </message>
+    <message>
+        <source>Thread pitch (+ right-hand, - left-hand)</source>
+        <translation>Passo de rosca (+ rosca direita, - rosca esquerda)</translation>
+    </message>
+    <message>
+        <source>Climb (+1) or up-cut (-1) milling with M3</source>
+        <translation>Fresagem sincronizada (+1) ou em contramarcha (-1) com M3</translation>
+    </message>
+    <message>
+        <source>Threads per step (0 one 360° helix, 1 continuous)</source>
+        <translation>Passos de rosca por passo (0 uma hélice de 360°, 1 contínuo)</translation>
+    </message>
+    <message>
+        <source>Countersinking depth: surface to tool tip</source>
+        <translation>Profundidade de rebaixamento: superfície à extremidade da ferramenta</translation>
+    </message>
+    <message>
+        <source>Total hole depth</source>
+        <translation>Profundidade total do furo</translation>
+    </message>
+    <message>
+        <source>Clearance to side: tool edge to hole wall</source>
+        <translation>Distância lateral: aresta da ferramenta à parede do furo</translation>
+    </message>
+    <message>
+        <source>Depth at front: surface to tool tip</source>
+        <translation>Profundidade frontal: superfície à extremidade da ferramenta</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front (tool centre)</source>
+        <translation>Desvio de rebaixamento frontal (centro da ferramenta)</translation>
+    </message>
+    <message>
+        <source>Feed rate for approaching (0: milling feed)</source>
+        <translation>Avanço de aproximação (0: avanço de fresagem)</translation>
+    </message>
+    <message>
+        <source>Deepened starting point below the surface</source>
+        <translation>Ponto inicial aprofundado abaixo da superfície</translation>
+    </message>
+    <message>
+        <source>Depth reference (0 tool tip, 1 cylindrical part)</source>
+        <translation>Referência da profundidade (0 extremidade da ferramenta, 1 parte cilíndrica)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>ciclo {1}: {2} ({3}) = {4} tem de ser um número inteiro de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>ciclo {1}: {2} ({3}) = {4} está fora de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>DRILLING</source>
+        <translation>FURAR</translation>
+    </message>
+    <message>
+        <source>REAMING</source>
+        <translation>ALARGAR FURO</translation>
+    </message>
+    <message>
+        <source>BORING</source>
+        <translation>MANDRILAR</translation>
+    </message>
+    <message>
+        <source>Number of chip breaks before retracting</source>
+        <translation>Número de roturas de apara antes de retroceder</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL DRILLING</source>
+        <translation>FURAR UNIVERSAL</translation>
+    </message>
+    <message>
+        <source>Depth of counterbore from the underside (+ upwards)</source>
+        <translation>Profundidade do rebaixamento a partir da face inferior (+ para cima)</translation>
+    </message>
+    <message>
+        <source>Material thickness</source>
+        <translation>Espessura do material</translation>
+    </message>
+    <message>
+        <source>Off-centre distance of the boring bar</source>
+        <translation>Distância excêntrica da barra de mandrilar</translation>
+    </message>
+    <message>
+        <source>Tool edge height above the underside of the bar</source>
+        <translation>Altura da aresta da ferramenta acima da face inferior da barra</translation>
+    </message>
+    <message>
+        <source>Feed rate for counterboring</source>
+        <translation>Avanço de rebaixamento</translation>
+    </message>
+    <message>
+        <source>Dwell time at the counterbore floor</source>
+        <translation>Tempo de espera no fundo do rebaixamento</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Direção de afastamento (1 -eixo principal, 2 -eixo secundário, 3 +eixo principal, 4 +eixo secundário)</translation>
+    </message>
+    <message>
+        <source>BACK BORING</source>
+        <translation>REBAIXAMENTO INVERTIDO</translation>
+    </message>
+    <message>
+        <source>Lower advanced stop distance</source>
+        <translation>Distância de paragem prévia inferior</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q379 lies at or below the depth</source>
+        <translation>ciclo {1}: o ponto inicial Q379 está à altura da profundidade ou abaixo dela</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL PECKING</source>
+        <translation>FURAR EM PROFUNDIDADE UNIVERSAL</translation>
+    </message>
+    <message>
+        <source>Feed rate for helical drilling</source>
+        <translation>Avanço de furação helicoidal</translation>
+    </message>
+    <message>
+        <source>Infeed per helix revolution</source>
+        <translation>Passo por rotação da hélice</translation>
+    </message>
+    <message>
+        <source>Roughing (pre-drilled) diameter</source>
+        <translation>Diâmetro de desbaste (pré-furado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter {2} is smaller than the tool diameter {3}</source>
+        <translation>ciclo {1}: o diâmetro nominal {2} é menor que o diâmetro da ferramenta {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter is more than twice the tool diameter; enter the roughing diameter Q342</source>
+        <translation>ciclo {1}: o diâmetro nominal é mais do dobro do diâmetro da ferramenta; introduza o diâmetro de desbaste Q342</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per helix Q334 must be greater than 0</source>
+        <translation>ciclo {1}: o passo por hélice Q334 tem de ser maior que 0</translation>
+    </message>
+    <message>
+        <source>BORE MILLING</source>
+        <translation>FRESAR FURO</translation>
+    </message>
+    <message>
+        <source>Select depth (0) or diameter (1)</source>
+        <translation>Selecionar profundidade (0) ou diâmetro (1)</translation>
+    </message>
+    <message>
+        <source>Countersink diameter (sign = direction)</source>
+        <translation>Diâmetro de rebaixamento (sinal = direção)</translation>
+    </message>
+    <message>
+        <source>CENTERING</source>
+        <translation>CENTRAR</translation>
+    </message>
+    <message>
+        <source>Direction of rotation for entry and exit (3 M3, 4 M4, 5 stationary)</source>
+        <translation>Sentido de rotação na entrada e na saída (3 M3, 4 M4, 5 parado)</translation>
+    </message>
+    <message>
+        <source>Spindle speed for entry and exit</source>
+        <translation>Velocidade do mandril na entrada e na saída</translation>
+    </message>
+    <message>
+        <source>Spindle speed for drilling</source>
+        <translation>Velocidade do mandril ao furar</translation>
+    </message>
+    <message>
+        <source>M function for coolant on (0: none)</source>
+        <translation>Função M para ligar o refrigerante (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>M function for coolant off (0: none)</source>
+        <translation>Função M para desligar o refrigerante (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>Dwell depth where the feed reduction begins (0: none)</source>
+        <translation>Profundidade de espera onde começa a redução do avanço (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>Feed rate factor beyond the dwell depth</source>
+        <translation>Fator de avanço além da profundidade de espera</translation>
+    </message>
+    <message>
+        <source>Maximum plunging depth</source>
+        <translation>Profundidade de passo máxima</translation>
+    </message>
+    <message>
+        <source>SINGLE-LIP DEEP-HOLE DRILLING</source>
+        <translation>FURAR EM PROFUNDIDADE COM UM SÓ GUME</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the depth Q{2} = {3} is positive (the machine parameter displayDepthErr forbids it)</source>
+        <translation>ciclo {1}: a profundidade Q{2} = {3} é positiva (o parâmetro de máquina displayDepthErr proíbe-o)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} infeeds; increase the plunging depth</source>
+        <translation>ciclo {1}: mais de {2} passos; aumente a profundidade de passo</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the point angle T-ANGLE of the tool in the tool table</source>
+        <translation>o ciclo {1} precisa do ângulo da ponta T-ANGLE da ferramenta na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs more than {2} moves</source>
+        <translation>o ciclo {1} precisa de mais de {2} movimentos</translation>
+    </message>
+    <message>
+        <source>Path overlap factor</source>
+        <translation>Fator de sobreposição de trajetória</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical, 2 reciprocating)</source>
+        <translation>Estratégia de afundamento (0 vertical, 1 helicoidal, 2 pendular)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance</source>
+        <translation>Distância de segurança</translation>
+    </message>
+    <message>
+        <source>Clearance height (absolute)</source>
+        <translation>Altura segura (absoluta)</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (+1 climb, -1 up-cut)</source>
+        <translation>Sentido de rotação (+1 sincronizado, -1 contramarcha)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance of the probe</source>
+        <translation>Distância de segurança do apalpador</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>Altura segura</translation>
+    </message>
+    <message>
+        <source>Move to clearance height between points</source>
+        <translation>Deslocar à altura segura entre pontos</translation>
+    </message>
+    <message>
+        <source>Height between pattern points: 2nd set-up clearance (1) or the position at the start (0)</source>
+        <translation>Altura entre os pontos do padrão: 2.ª distância de segurança (1) ou a posição no início (0)</translation>
+    </message>
+    <message>
+        <source>GENERAL</source>
+        <translation>GERAL</translation>
+    </message>
+    <message>
+        <source>POCKET MILLING</source>
+        <translation>FRESAR CAIXA</translation>
+    </message>
+    <message>
+        <source>CONTOUR MILLING</source>
+        <translation>FRESAR CONTORNO</translation>
+    </message>
+    <message>
+        <source>PROBING</source>
+        <translation>APALPAÇÃO</translation>
+    </message>
+    <message>
+        <source>POSITIONING</source>
+        <translation>POSICIONAMENTO</translation>
+    </message>
+    <message>
+        <source>Centre in the 1st axis</source>
+        <translation>Centro no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>Centre in the 2nd axis</source>
+        <translation>Centro no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>Pitch circle diameter</source>
+        <translation>Diâmetro do círculo teórico</translation>
+    </message>
+    <message>
+        <source>Starting angle</source>
+        <translation>Ângulo inicial</translation>
+    </message>
+    <message>
+        <source>Stopping angle</source>
+        <translation>Ângulo final</translation>
+    </message>
+    <message>
+        <source>Stepping angle (0: from start, stop and count)</source>
+        <translation>Incremento angular (0: a partir do início, do fim e do número)</translation>
+    </message>
+    <message>
+        <source>Number of operations</source>
+        <translation>Número de maquinagens</translation>
+    </message>
+    <message>
+        <source>Move between operations at set-up clearance (0) or at the 2nd set-up clearance (1)</source>
+        <translation>Deslocação entre maquinagens à distância de segurança (0) ou à 2.ª distância de segurança (1)</translation>
+    </message>
+    <message>
+        <source>Type of traverse: straight line (0) or arc on the pitch circle (1)</source>
+        <translation>Tipo de deslocação: reta (0) ou arco no círculo teórico (1)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the stopping angle Q246 must differ from the starting angle Q245</source>
+        <translation>ciclo {1}: o ângulo final Q246 tem de ser diferente do ângulo inicial Q245</translation>
+    </message>
+    <message>
+        <source>POLAR PATTERN</source>
+        <translation>PADRÃO DE PONTOS SOBRE CÍRCULO</translation>
+    </message>
+    <message>
+        <source>Starting point in the 1st axis</source>
+        <translation>Ponto inicial no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>Starting point in the 2nd axis</source>
+        <translation>Ponto inicial no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>Spacing in the 1st axis</source>
+        <translation>Distância no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>Spacing in the 2nd axis</source>
+        <translation>Distância no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>Number of columns</source>
+        <translation>Número de colunas</translation>
+    </message>
+    <message>
+        <source>Number of lines</source>
+        <translation>Número de linhas</translation>
+    </message>
+    <message>
+        <source>Angle of rotation about the starting point</source>
+        <translation>Ângulo de rotação em torno do ponto inicial</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} positions</source>
+        <translation>ciclo {1}: mais de {2} posições</translation>
+    </message>
+    <message>
+        <source>CARTESIAN PATTERN</source>
+        <translation>PADRÃO DE PONTOS SOBRE LINHAS</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: {1} must be a whole number from 1 to 99999</source>
+        <translation>PATTERN DEF: {1} tem de ser um número inteiro de 1 a 99999</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: more than {1} positions</source>
+        <translation>PATTERN DEF: mais de {1} posições</translation>
+    </message>
+    <message>
+        <source>Engraving text</source>
+        <translation>Texto a gravar</translation>
+    </message>
+    <message>
+        <source>Character height (0: scaled to the text length Q574)</source>
+        <translation>Altura dos caracteres (0: ajustada ao comprimento do texto Q574)</translation>
+    </message>
+    <message>
+        <source>Spacing factor between the characters (0: as the font)</source>
+        <translation>Fator de distância entre os caracteres (0: conforme a fonte)</translation>
+    </message>
+    <message>
+        <source>Font (without function)</source>
+        <translation>Fonte (sem função)</translation>
+    </message>
+    <message>
+        <source>Text on a line (0), an arc (1) or an arc, continuous (2)</source>
+        <translation>Texto numa reta (0), num arco (1) ou num arco, contínuo (2)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (centre angle on an arc)</source>
+        <translation>Ângulo de rotação (ângulo central num arco)</translation>
+    </message>
+    <message>
+        <source>Radius of the arc the text is on</source>
+        <translation>Raio do arco onde está o texto</translation>
+    </message>
+    <message>
+        <source>Reference of the text position (0-6)</source>
+        <translation>Referência da posição do texto (0-6)</translation>
+    </message>
+    <message>
+        <source>Maximum text length (0: no limit)</source>
+        <translation>Comprimento máximo do texto (0: sem limite)</translation>
+    </message>
+    <message>
+        <source>ENGRAVING</source>
+        <translation>GRAVAR</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line)</source>
+        <translation>Estratégia (0 meandro por fora, 1 meandro na aresta, 2 linha a linha)</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis (surface)</source>
+        <translation>Ponto inicial no 3.º eixo (superfície)</translation>
+    </message>
+    <message>
+        <source>End point in the 3rd axis</source>
+        <translation>Ponto final no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>First side length (sign = direction)</source>
+        <translation>Comprimento do 1.º lado (sinal = direção)</translation>
+    </message>
+    <message>
+        <source>Second side length (sign = direction)</source>
+        <translation>Comprimento do 2.º lado (sinal = direção)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the floor</source>
+        <translation>Sobre-medida de acabamento em profundidade</translation>
+    </message>
+    <message>
+        <source>Maximum path overlap factor</source>
+        <translation>Fator de sobreposição de trajetória máximo</translation>
+    </message>
+    <message>
+        <source>Feed rate for finishing</source>
+        <translation>Avanço de acabamento</translation>
+    </message>
+    <message>
+        <source>Lateral clearance to the workpiece</source>
+        <translation>Distância lateral à peça</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q227 must be above the end point Q386</source>
+        <translation>ciclo {1}: o ponto inicial Q227 tem de estar acima do ponto final Q386</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool radius R greater than R2</source>
+        <translation>o ciclo {1} precisa de um raio de ferramenta R maior que R2</translation>
+    </message>
+    <message>
+        <source>FACE MILLING</source>
+        <translation>FACEJAR</translation>
+    </message>
+    <message>
+        <source>cycle 225: with the character height Q513 = 0 the text length Q574 must be given</source>
+        <translation>ciclo 225: com a altura dos caracteres Q513 = 0 tem de ser indicado o comprimento do texto Q574</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text has no length that Q574 could scale</source>
+        <translation>ciclo 225: o texto não tem comprimento que Q574 possa escalar</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text is {1} mm long, longer than the maximum text length Q574 = {2}</source>
+        <translation>ciclo 225: o texto tem {1} mm de comprimento, mais do que o comprimento máximo Q574 = {2}</translation>
+    </message>
+    <message>
+        <source>cycle 225: text on a circle needs the radius Q517</source>
+        <translation>ciclo 225: texto num círculo precisa do raio Q517</translation>
+    </message>
+    <message>
+        <source>cycle 225: the character &apos;{1}&apos; cannot be engraved</source>
+        <translation>ciclo 225: o carácter &apos;{1}&apos; não pode ser gravado</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown formatting character &apos;\{1}&apos; in the text (write \\ for a backslash)</source>
+        <translation>ciclo 225: carácter de formatação desconhecido &apos;\{1}&apos; no texto (escreva \\ para uma barra invertida)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%time{1}&apos; is not a date format (use %time00 to %time15)</source>
+        <translation>ciclo 225: &apos;%time{1}&apos; não é um formato de data (use %time00 a %time15)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%count&apos; needs the number of digits (1 to 9)</source>
+        <translation>ciclo 225: &apos;%count&apos; precisa do número de algarismos (1 a 9)</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown escape &apos;%{1}&apos; in the text (write %% for a percent sign)</source>
+        <translation>ciclo 225: escape desconhecido &apos;%{1}&apos; no texto (escreva %% para um sinal de percentagem)</translation>
+    </message>
+    <message>
+        <source>Dwell time</source>
+        <translation>Tempo de espera</translation>
+    </message>
+    <message>
+        <source>Program to call as a machining cycle</source>
+        <translation>Programa a chamar como ciclo de maquinagem</translation>
+    </message>
+    <message>
+        <source>Orientation angle of the spindle</source>
+        <translation>Ângulo de orientação do mandril</translation>
+    </message>
+    <message>
+        <source>Tolerance (0: machine default)</source>
+        <translation>Tolerância (0: valor da máquina)</translation>
+    </message>
+    <message>
+        <source>Filter: finishing (0) or roughing (1)</source>
+        <translation>Filtro: acabamento (0) ou desbaste (1)</translation>
+    </message>
+    <message>
+        <source>Tolerance of rotary axes (0: machine default)</source>
+        <translation>Tolerância dos eixos rotativos (0: valor da máquina)</translation>
+    </message>
+    <message>
+        <source>DWELL TIME</source>
+        <translation>TEMPO DE ESPERA</translation>
+    </message>
+    <message>
+        <source>PGM CALL</source>
+        <translation>PGM CALL</translation>
+    </message>
+    <message>
+        <source>ORIENTED SPINDLE STOP</source>
+        <translation>ORIENTAÇÃO DO MANDRIL</translation>
+    </message>
+    <message>
+        <source>TOLERANCE</source>
+        <translation>TOLERÂNCIA</translation>
+    </message>
+    <message>
+        <source>Total hole depth from the current position</source>
+        <translation>Profundidade total do furo a partir da posição atual</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch is 0</source>
+        <translation>ciclo {1}: o passo de rosca é 0</translation>
+    </message>
+    <message>
+        <source>THREAD CUTTING</source>
+        <translation>ROSCAGEM</translation>
+    </message>
+    <message>
+        <source>Feed rate for tapping (spindle speed x pitch)</source>
+        <translation>Avanço de roscagem (velocidade do mandril x passo)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the spindle running (M3 or M4)</source>
+        <translation>o ciclo {1} precisa do mandril a rodar (M3 ou M4)</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH A FLOATING TAP HOLDER</source>
+        <translation>ROSCAGEM COM MANDRIL COMPENSADOR</translation>
+    </message>
+    <message>
+        <source>RIGID TAPPING</source>
+        <translation>ROSCAGEM SEM MANDRIL COMPENSADOR</translation>
+    </message>
+    <message>
+        <source>Retraction for chip breaking in pitches (0: out of the hole)</source>
+        <translation>Retrocesso na rotura de apara em passos de rosca (0: fora do furo)</translation>
+    </message>
+    <message>
+        <source>Spindle speed factor for retraction</source>
+        <translation>Fator de velocidade do mandril no retrocesso</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH CHIP BREAKING</source>
+        <translation>ROSCAGEM COM ROTURA DE APARA</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch {2} differs from the pitch {3} of the tool in the tool table</source>
+        <translation>ciclo {1}: o passo de rosca {2} é diferente do passo {3} da ferramenta na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch Q{2} is 0</source>
+        <translation>ciclo {1}: o passo de rosca Q{2} é 0</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING</source>
+        <translation>FRESAR ROSCA</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING/COUNTERSINKING</source>
+        <translation>FRESAR ROSCA EM REBAIXAMENTO</translation>
+    </message>
+    <message>
+        <source>THREAD DRILLING/MILLING</source>
+        <translation>FRESAR ROSCA EM FURO</translation>
+    </message>
+    <message>
+        <source>Countersink before (0) or after (1) the thread</source>
+        <translation>Rebaixar antes (0) ou depois (1) da rosca</translation>
+    </message>
+    <message>
+        <source>HELICAL THREAD DRILLING/MILLING</source>
+        <translation>FRESAR ROSCA DE HÉLICE EM FURO</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front: stud centre to tool centre</source>
+        <translation>Desvio de rebaixamento frontal: centro do pino ao centro da ferramenta</translation>
+    </message>
+    <message>
+        <source>OUTSIDE THREAD MILLING</source>
+        <translation>FRESAR ROSCA EXTERIOR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter {2} is too large for the nominal diameter {3}</source>
+        <translation>ciclo {1}: o diâmetro da ferramenta {2} é demasiado grande para o diâmetro nominal {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: unexpected &apos;{2}&apos;</source>
+        <translation>ciclo {1}: &apos;{2}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} needs a value</source>
+        <translation>ciclo {1}: {2} precisa de um valor</translation>
+    </message>
+    <message>
+        <source>cycle {1}: scaling factor {2} = {3} is outside 0.000001 to 99.999999</source>
+        <translation>ciclo {1}: o fator de escala {2} = {3} está fora de 0.000001 a 99.999999</translation>
+    </message>
+    <message>
+        <source>Datum shift per axis (IX: incremental), or #n: datum number of the datum table</source>
+        <translation>Deslocação do ponto zero por eixo (IX: incremental), ou #n: número do ponto zero na tabela de pontos zero</translation>
+    </message>
+    <message>
+        <source>Mirrored axes (none: mirroring off)</source>
+        <translation>Eixos espelhados (nenhum: espelho desligado)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (IROT: incremental)</source>
+        <translation>Ângulo de rotação (IROT: incremental)</translation>
+    </message>
+    <message>
+        <source>Scaling factor</source>
+        <translation>Fator de escala</translation>
+    </message>
+    <message>
+        <source>Scaling factor per axis</source>
+        <translation>Fator de escala por eixo</translation>
+    </message>
+    <message>
+        <source>Centre of the scaling per axis</source>
+        <translation>Centro da escala por eixo</translation>
+    </message>
+    <message>
+        <source>Number of the preset to activate</source>
+        <translation>Número do ponto de referência a ativar</translation>
+    </message>
+    <message>
+        <source>Tilt angles of the rotary axes</source>
+        <translation>Ângulos de inclinação dos eixos rotativos</translation>
+    </message>
+    <message>
+        <source>Feed rate for automatic positioning</source>
+        <translation>Avanço de posicionamento automático</translation>
+    </message>
+    <message>
+        <source>Set-up clearance for automatic positioning</source>
+        <translation>Distância de segurança para o posicionamento automático</translation>
+    </message>
+    <message>
+        <source>cycle {1}: angle of rotation ROT = {2} is outside -360 to 360</source>
+        <translation>ciclo {1}: o ângulo de rotação ROT = {2} está fora de -360 a 360</translation>
+    </message>
+    <message>
+        <source>DATUM SHIFT</source>
+        <translation>DESLOCAÇÃO DO PONTO ZERO</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE</source>
+        <translation>ESPELHO</translation>
+    </message>
+    <message>
+        <source>ROTATION</source>
+        <translation>ROTAÇÃO</translation>
+    </message>
+    <message>
+        <source>SCALING</source>
+        <translation>FATOR DE ESCALA</translation>
+    </message>
+    <message>
+        <source>AXIS-SPECIFIC SCALING</source>
+        <translation>FATOR DE ESCALA ESPECÍFICO DO EIXO</translation>
+    </message>
+    <message>
+        <source>PRESETTING</source>
+        <translation>MEMORIZAR PONTO DE REFERÊNCIA</translation>
+    </message>
+    <message>
+        <source>WORKING PLANE</source>
+        <translation>PLANO DE MAQUINAGEM</translation>
+    </message>
+    <message>
+        <source>the block is longer than 60000 characters</source>
+        <translation>o bloco tem mais de 60000 caracteres</translation>
+    </message>
+    <message>
+        <source>empty block: a block needs at least a comment</source>
+        <translation>bloco vazio: um bloco precisa pelo menos de um comentário</translation>
+    </message>
+    <message>
+        <source>a block has at most 3 skip marks</source>
+        <translation>um bloco tem no máximo 3 marcas de salto</translation>
+    </message>
+    <message>
+        <source>a block label cannot be a parameter</source>
+        <translation>um rótulo de bloco não pode ser um parâmetro</translation>
+    </message>
+    <message>
+        <source>label number expected after N</source>
+        <translation>número de rótulo esperado depois de N</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits (N0-N99999999)</source>
+        <translation>um rótulo tem no máximo 8 algarismos (N0-N99999999)</translation>
+    </message>
+    <message>
+        <source>missing &apos;)&apos; at the end of the high-level block</source>
+        <translation>falta &apos;)&apos; no fim do bloco de alto nível</translation>
+    </message>
+    <message>
+        <source>repetition count expected after N</source>
+        <translation>número de repetições esperado depois de N</translation>
+    </message>
+    <message>
+        <source>a repetition count has at most 4 digits (N0-N9999)</source>
+        <translation>um número de repetições tem no máximo 4 algarismos (N0-N9999)</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; at the end of the block</source>
+        <translation>&apos;{1}&apos; inesperado no fim do bloco</translation>
+    </message>
+    <message>
+        <source>expressions are not allowed in ISO blocks</source>
+        <translation>não são permitidas expressões em blocos ISO</translation>
+    </message>
+    <message>
+        <source>parameter number expected after P</source>
+        <translation>número de parâmetro esperado depois de P</translation>
+    </message>
+    <message>
+        <source>number expected after the sign of {1}</source>
+        <translation>número esperado depois do sinal de {1}</translation>
+    </message>
+    <message>
+        <source>{1} cannot be negative</source>
+        <translation>{1} não pode ser negativo</translation>
+    </message>
+    <message>
+        <source>{1} value {2} is outside the format {3}.{4}</source>
+        <translation>o valor {2} de {1} está fora do formato {3}.{4}</translation>
+    </message>
+    <message>
+        <source>{1} is outside the format {2}.{3}</source>
+        <translation>{1} está fora do formato {2}.{3}</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}</source>
+        <translation>{1} tem de ser um número inteiro de {2} a {3}</translation>
+    </message>
+    <message>
+        <source>{1} is programmed twice</source>
+        <translation>{1} está programado duas vezes</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos;: words are written in upper case</source>
+        <translation>&apos;{1}&apos;: as palavras escrevem-se em maiúsculas</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos;</source>
+        <translation>&apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>G functions are written at the start of the block</source>
+        <translation>as funções G escrevem-se no início do bloco</translation>
+    </message>
+    <message>
+        <source>too many G functions in one block</source>
+        <translation>demasiadas funções G num bloco</translation>
+    </message>
+    <message>
+        <source>axis letters after G14, G16 or G74 take no value</source>
+        <translation>as letras de eixo depois de G14, G16 ou G74 não levam valor</translation>
+    </message>
+    <message>
+        <source>I is programmed more than twice</source>
+        <translation>I está programado mais de duas vezes</translation>
+    </message>
+    <message>
+        <source>at most 7 M functions in one block</source>
+        <translation>no máximo 7 funções M num bloco</translation>
+    </message>
+    <message>
+        <source>E belongs to G51</source>
+        <translation>E pertence a G51</translation>
+    </message>
+    <message>
+        <source>unknown word &apos;{1}&apos;</source>
+        <translation>palavra desconhecida &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 cannot be used in a thread</source>
+        <translation>G36, G37, G38 e G39 não podem ser usadas numa rosca</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a move in the plane</source>
+        <translation>G36, G37, G38 e G39 precisam de um movimento no plano</translation>
+    </message>
+    <message>
+        <source>the next block must be a contour element in the plane</source>
+        <translation>o bloco seguinte tem de ser um elemento de contorno no plano</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01)</source>
+        <translation>G37 precisa de uma reta (G00 ou G01)</translation>
+    </message>
+    <message>
+        <source>G37: the start point lies inside the entry circle</source>
+        <translation>G37: o ponto inicial está dentro do círculo de entrada</translation>
+    </message>
+    <message>
+        <source>G36: the rounding radius does not fit between the elements</source>
+        <translation>G36: o raio de arredondamento não cabe entre os elementos</translation>
+    </message>
+    <message>
+        <source>G39 needs straight lines on both sides</source>
+        <translation>G39 precisa de retas de ambos os lados</translation>
+    </message>
+    <message>
+        <source>G39: the chamfer is longer than an adjacent line</source>
+        <translation>G39: o chanfre é mais comprido que uma reta adjacente</translation>
+    </message>
+    <message>
+        <source>the block after G38 must be a straight line (G00 or G01)</source>
+        <translation>o bloco depois de G38 tem de ser uma reta (G00 ou G01)</translation>
+    </message>
+    <message>
+        <source>G38: the end point lies inside the exit circle</source>
+        <translation>G38: o ponto final está dentro do círculo de saída</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a following contour element</source>
+        <translation>G36, G37, G38 e G39 precisam de um elemento de contorno seguinte</translation>
+    </message>
+    <message>
+        <source>division by zero</source>
+        <translation>divisão por zero</translation>
+    </message>
+    <message>
+        <source>EXP: {1} to the power {2} has no value</source>
+        <translation>EXP: {1} elevado a {2} não tem valor</translation>
+    </message>
+    <message>
+        <source>MOD by zero</source>
+        <translation>MOD por zero</translation>
+    </message>
+    <message>
+        <source>&apos;)&apos; expected</source>
+        <translation>&apos;)&apos; esperado</translation>
+    </message>
+    <message>
+        <source>a function argument needs parentheses unless it is a number</source>
+        <translation>o argumento de uma função precisa de parênteses, exceto se for um número</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is outside its domain</source>
+        <translation>{1}: {2} está fora do seu domínio</translation>
+    </message>
+    <message>
+        <source>a hexadecimal constant has 1 to 8 digits</source>
+        <translation>uma constante hexadecimal tem 1 a 8 algarismos</translation>
+    </message>
+    <message>
+        <source>number expected</source>
+        <translation>número esperado</translation>
+    </message>
+    <message>
+        <source>a constant has at most 6 integer and 5 decimal digits</source>
+        <translation>uma constante tem no máximo 6 algarismos inteiros e 5 decimais</translation>
+    </message>
+    <message>
+        <source>an index must be a whole number, not {1}</source>
+        <translation>um índice tem de ser um número inteiro, não {1}</translation>
+    </message>
+    <message>
+        <source>number or (expression) expected</source>
+        <translation>número ou (expressão) esperado</translation>
+    </message>
+    <message>
+        <source>GPOS needs N&lt;block&gt;</source>
+        <translation>GPOS precisa de N&lt;bloco&gt;</translation>
+    </message>
+    <message>
+        <source>GPOS needs P&lt;program&gt;</source>
+        <translation>GPOS precisa de P&lt;programa&gt;</translation>
+    </message>
+    <message>
+        <source>{1} needs a number</source>
+        <translation>{1} precisa de um número</translation>
+    </message>
+    <message>
+        <source>value expected</source>
+        <translation>valor esperado</translation>
+    </message>
+    <message>
+        <source>&apos;(&apos; expected</source>
+        <translation>&apos;(&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;,&apos; expected</source>
+        <translation>&apos;,&apos; esperado</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in this program</source>
+        <translation>o rótulo N{1} não está definido neste programa</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in the program</source>
+        <translation>o rótulo N{1} não está definido no programa</translation>
+    </message>
+    <message>
+        <source>RPT: block N{1} comes before block N{2}</source>
+        <translation>RPT: o bloco N{1} vem antes do bloco N{2}</translation>
+    </message>
+    <message>
+        <source>more than {1} nested levels</source>
+        <translation>mais de {1} níveis de imbricação</translation>
+    </message>
+    <message>
+        <source>cannot read program {1}: {2}</source>
+        <translation>não é possível ler o programa {1}: {2}</translation>
+    </message>
+    <message>
+        <source>program {1} has errors</source>
+        <translation>o programa {1} tem erros</translation>
+    </message>
+    <message>
+        <source>program {1} is not in the NC root</source>
+        <translation>o programa {1} não está na raiz NC</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is not defined</source>
+        <translation>a sub-rotina {1} não está definida</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined in more than one program</source>
+        <translation>a sub-rotina {1} está definida em mais de um programa</translation>
+    </message>
+    <message>
+        <source>the program with subroutine {1} has errors</source>
+        <translation>o programa com a sub-rotina {1} tem erros</translation>
+    </message>
+    <message>
+        <source>error 1255: subroutine restricted to OEM programs</source>
+        <translation>erro 1255: sub-rotina restrita a programas OEM</translation>
+    </message>
+    <message>
+        <source>more than 6 nested levels of local parameters</source>
+        <translation>mais de 6 níveis de imbricação de parâmetros locais</translation>
+    </message>
+    <message>
+        <source>subroutine {1} has no RET</source>
+        <translation>a sub-rotina {1} não tem RET</translation>
+    </message>
+    <message>
+        <source>RET outside a subroutine</source>
+        <translation>RET fora de uma sub-rotina</translation>
+    </message>
+    <message>
+        <source>error 1064: program cannot be executed (MEXEC inside the modal program)</source>
+        <translation>erro 1064: o programa não pode ser executado (MEXEC dentro do programa modal)</translation>
+    </message>
+    <message>
+        <source>REPOS is only allowed in an interrupt subroutine</source>
+        <translation>REPOS só é permitido numa sub-rotina de interrupção</translation>
+    </message>
+    <message>
+        <source>REPOS failed</source>
+        <translation>REPOS falhou</translation>
+    </message>
+    <message>
+        <source>collision detection removed a loop of the compensated path</source>
+        <translation>a deteção de colisões removeu um laço da trajetória compensada</translation>
+    </message>
+    <message>
+        <source>the program ends before the last block of the RPT</source>
+        <translation>o programa termina antes do último bloco do RPT</translation>
+    </message>
+    <message>
+        <source>the program ends inside a subroutine (RET missing)</source>
+        <translation>o programa termina dentro de uma sub-rotina (falta RET)</translation>
+    </message>
+    <message>
+        <source>axis {1} is not available on this machine</source>
+        <translation>o eixo {1} não existe nesta máquina</translation>
+    </message>
+    <message>
+        <source>N{1}: only a motion block under a modal subroutine (MCALL, MEXEC) or a canned cycle can be repeated</source>
+        <translation>N{1}: só se pode repetir um bloco de movimento sob uma sub-rotina modal (MCALL, MEXEC) ou um ciclo fixo</translation>
+    </message>
+    <message>
+        <source>incompatible G functions G51 and {1} (error 7)</source>
+        <translation>funções G incompatíveis G51 e {1} (erro 7)</translation>
+    </message>
+    <message>
+        <source>G40, G41 and G42 need G00 or G01 active, not G02/G03</source>
+        <translation>G40, G41 e G42 precisam de G00 ou G01 ativa, não G02/G03</translation>
+    </message>
+    <message>
+        <source>radius compensation works in the ZX plane only (PLACOMP 0)</source>
+        <translation>a compensação de raio só funciona no plano ZX (PLACOMP 0)</translation>
+    </message>
+    <message>
+        <source>{1} needs R greater than 0 right after it</source>
+        <translation>{1} precisa de R maior que 0 logo a seguir</translation>
+    </message>
+    <message>
+        <source>G37 needs R greater than 0 right after it</source>
+        <translation>G37 precisa de R maior que 0 logo a seguir</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01), not G02/G03</source>
+        <translation>G37 precisa de uma reta (G00 ou G01), não G02/G03</translation>
+    </message>
+    <message>
+        <source>G06 belongs in a circular interpolation block</source>
+        <translation>G06 pertence a um bloco de interpolação circular</translation>
+    </message>
+    <message>
+        <source>G16 needs two axis letters: abscissa and ordinate</source>
+        <translation>G16 precisa de duas letras de eixo: abcissa e ordenada</translation>
+    </message>
+    <message>
+        <source>G16 {1}{2}: only planes of two of the axes X, Y and Z are supported</source>
+        <translation>G16 {1}{2}: só são suportados planos formados por dois dos eixos X, Y e Z</translation>
+    </message>
+    <message>
+        <source>the plane cannot change under radius compensation</source>
+        <translation>o plano não pode mudar com a compensação de raio ativa</translation>
+    </message>
+    <message>
+        <source>G51 needs E, the permitted contour error</source>
+        <translation>G51 precisa de E, o erro de contorno admissível</translation>
+    </message>
+    <message>
+        <source>G72 S: the scale factor must be greater than 0</source>
+        <translation>G72 S: o fator de escala tem de ser maior que 0</translation>
+    </message>
+    <message>
+        <source>G72 needs S or axis factors</source>
+        <translation>G72 precisa de S ou de fatores por eixo</translation>
+    </message>
+    <message>
+        <source>G72: the scale factor of {1} must be greater than 0</source>
+        <translation>G72: o fator de escala de {1} tem de ser maior que 0</translation>
+    </message>
+    <message>
+        <source>{1} needs K, the zone number 1-4</source>
+        <translation>{1} precisa de K, o número da zona 1-4</translation>
+    </message>
+    <message>
+        <source>G22 needs S0 (off), S1 (no entry) or S2 (no exit)</source>
+        <translation>G22 precisa de S0 (desligada), S1 (sem entrada) ou S2 (sem saída)</translation>
+    </message>
+    <message>
+        <source>G74 alone runs the subroutine of REFPSUB, which is not set</source>
+        <translation>G74 sozinha executa a sub-rotina de REFPSUB, que não está definida</translation>
+    </message>
+    <message>
+        <source>G159 needs N1-N20</source>
+        <translation>G159 precisa de N1-N20</translation>
+    </message>
+    <message>
+        <source>G96 needs S: no cutting speed was programmed before</source>
+        <translation>G96 precisa de S: não foi programada velocidade de corte antes</translation>
+    </message>
+    <message>
+        <source>G96 needs a spindle gear range (M41-M44) first</source>
+        <translation>G96 precisa primeiro de uma gama de velocidades do mandril (M41-M44)</translation>
+    </message>
+    <message>
+        <source>S{1} is above the spindle limit of {2} rpm</source>
+        <translation>S{1} está acima do limite do mandril de {2} rpm</translation>
+    </message>
+    <message>
+        <source>M{1} has a subroutine: it must be alone in its block</source>
+        <translation>M{1} tem uma sub-rotina: tem de estar sozinha no seu bloco</translation>
+    </message>
+    <message>
+        <source>polar coordinates (R, Q) and Cartesian coordinates of the plane in one block</source>
+        <translation>coordenadas polares (R, Q) e coordenadas cartesianas do plano no mesmo bloco</translation>
+    </message>
+    <message>
+        <source>the polar radius becomes negative</source>
+        <translation>o raio polar torna-se negativo</translation>
+    </message>
+    <message>
+        <source>an angle Q with both coordinates of the plane</source>
+        <translation>um ângulo Q com ambas as coordenadas do plano</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that abscissa</source>
+        <translation>ângulo Q {1}: a trajetória não consegue atingir essa abcissa</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that ordinate</source>
+        <translation>ângulo Q {1}: a trajetória não consegue atingir essa ordenada</translation>
+    </message>
+    <message>
+        <source>J is the centre of the Y axis: the ZX plane uses I and K</source>
+        <translation>J é o centro do eixo Y: o plano ZX usa I e K</translation>
+    </message>
+    <message>
+        <source>G08 needs a previous path in the plane to be tangent to</source>
+        <translation>G08 precisa de uma trajetória anterior no plano à qual ser tangente</translation>
+    </message>
+    <message>
+        <source>G08 cannot program a full circle</source>
+        <translation>G08 não pode programar um círculo completo</translation>
+    </message>
+    <message>
+        <source>G08: the end point lies on the tangent of the previous path</source>
+        <translation>G08: o ponto final está na tangente da trajetória anterior</translation>
+    </message>
+    <message>
+        <source>G09 cannot program a full circle</source>
+        <translation>G09 não pode programar um círculo completo</translation>
+    </message>
+    <message>
+        <source>G09: the three points lie on a line</source>
+        <translation>G09: os três pontos estão numa reta</translation>
+    </message>
+    <message>
+        <source>a full circle cannot be programmed with R</source>
+        <translation>um círculo completo não pode ser programado com R</translation>
+    </message>
+    <message>
+        <source>the arc radius R is too small for the end point</source>
+        <translation>o raio R do arco é demasiado pequeno para o ponto final</translation>
+    </message>
+    <message>
+        <source>the start and end radii differ by {1} mm (more than CIRINERR)</source>
+        <translation>os raios inicial e final diferem em {1} mm (mais do que CIRINERR)</translation>
+    </message>
+    <message>
+        <source>the arc has no radius</source>
+        <translation>o arco não tem raio</translation>
+    </message>
+    <message>
+        <source>arc centre or radius beyond 214748.3647 mm</source>
+        <translation>centro ou raio do arco além de 214748.3647 mm</translation>
+    </message>
+    <message>
+        <source>Q (spindle angle) needs M19TYPE = 1</source>
+        <translation>Q (ângulo do mandril) precisa de M19TYPE = 1</translation>
+    </message>
+    <message>
+        <source>only the first thread of a joined chain may have Q</source>
+        <translation>só a primeira rosca de uma cadeia encadeada pode ter Q</translation>
+    </message>
+    <message>
+        <source>Q must be within +-359.9999 degrees</source>
+        <translation>Q tem de estar dentro de +-359.9999 graus</translation>
+    </message>
+    <message>
+        <source>a thread needs its pitch L</source>
+        <translation>uma rosca precisa do seu passo L</translation>
+    </message>
+    <message>
+        <source>two variable-pitch threads cannot be joined; end one with G34 L0 K0</source>
+        <translation>duas roscas de passo variável não podem ser encadeadas; termine uma com G34 L0 K0</translation>
+    </message>
+    <message>
+        <source>G34 joined to G33 must start with the pitch of the G33</source>
+        <translation>G34 encadeada com G33 tem de começar com o passo da G33</translation>
+    </message>
+    <message>
+        <source>after G34 a constant pitch is programmed with G34 L0 K0</source>
+        <translation>depois de G34 programa-se um passo constante com G34 L0 K0</translation>
+    </message>
+    <message>
+        <source>the thread pitch must be greater than 0</source>
+        <translation>o passo de rosca tem de ser maior que 0</translation>
+    </message>
+    <message>
+        <source>the variable pitch reaches zero before the end point</source>
+        <translation>o passo variável chega a zero antes do ponto final</translation>
+    </message>
+    <message>
+        <source>G53 works with G00 and G01 moves only</source>
+        <translation>G53 só funciona com movimentos G00 e G01</translation>
+    </message>
+    <message>
+        <source>G52 moves one axis</source>
+        <translation>G52 move um eixo</translation>
+    </message>
+    <message>
+        <source>no tool offset table: offset D{1} and the following ones are all zero</source>
+        <translation>sem tabela de corretores de ferramenta: o corretor D{1} e os seguintes são todos zero</translation>
+    </message>
+    <message>
+        <source>the header should be %comment,attributes, (two commas)</source>
+        <translation>o cabeçalho deve ser %comentário,atributos, (duas vírgulas)</translation>
+    </message>
+    <message>
+        <source>the program comment has more than 20 characters</source>
+        <translation>o comentário do programa tem mais de 20 caracteres</translation>
+    </message>
+    <message>
+        <source>words out of the order G, coordinates, F, S, T, D, M</source>
+        <translation>palavras fora da ordem G, coordenadas, F, S, T, D, M</translation>
+    </message>
+    <message>
+        <source>subroutine {1} starts before subroutine {2} has its RET</source>
+        <translation>a sub-rotina {1} começa antes de a sub-rotina {2} ter o seu RET</translation>
+    </message>
+    <message>
+        <source>error 63: program subroutine numbers from 1 to 9999 (10000-20000 only in OEM programs)</source>
+        <translation>erro 63: programe números de sub-rotina de 1 a 9999 (10000-20000 só em programas OEM)</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined twice</source>
+        <translation>a sub-rotina {1} está definida duas vezes</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
+        <translation>{1} é uma instrução de personalização de ecrã: não suportada; o programa não pode continuar para além deste bloco</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
+        <translation>não há programas num PC por DNC; o programa não pode continuar para além deste bloco</translation>
+    </message>
+    <message>
+        <source>label N{1} is used more than once; jumps go to the first one</source>
+        <translation>o rótulo N{1} é usado mais de uma vez; os saltos vão para o primeiro</translation>
+    </message>
+    <message>
+        <source>incompatible G functions</source>
+        <translation>funções G incompatíveis</translation>
+    </message>
+    <message>
+        <source>program subroutine number from 1 to 9999</source>
+        <translation>programe o número de sub-rotina de 1 a 9999</translation>
+    </message>
+    <message>
+        <source>the S that changes the gear range must be alone in its block</source>
+        <translation>o S que muda a gama de velocidades tem de estar sozinho no seu bloco</translation>
+    </message>
+    <message>
+        <source>program cannot be executed</source>
+        <translation>o programa não pode ser executado</translation>
+    </message>
+    <message>
+        <source>subroutine restricted to OEM program</source>
+        <translation>sub-rotina restrita a programas OEM</translation>
+    </message>
+    <message>
+        <source>{1}</source>
+        <translation>{1}</translation>
+    </message>
+    <message>
+        <source>error {1}</source>
+        <translation>erro {1}</translation>
+    </message>
+    <message>
+        <source>error {1}: {2}</source>
+        <translation>erro {1}: {2}</translation>
+    </message>
+    <message>
+        <source>DGWZ: Z minimum &lt; Z maximum and 0 &lt;= inner &lt; outer</source>
+        <translation>DGWZ: Z mínimo &lt; Z máximo e 0 &lt;= interior &lt; exterior</translation>
+    </message>
+    <message>
+        <source>program {1} exists: OPEN needs A (append) or D (delete)</source>
+        <translation>o programa {1} existe: OPEN precisa de A (acrescentar) ou D (apagar)</translation>
+    </message>
+    <message>
+        <source>program {1} is running: it cannot be opened</source>
+        <translation>o programa {1} está em execução: não pode ser aberto</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}</source>
+        <translation>não é possível escrever o programa {1}</translation>
+    </message>
+    <message>
+        <source>WRITE needs a program opened with OPEN</source>
+        <translation>WRITE precisa de um programa aberto com OPEN</translation>
+    </message>
+    <message>
+        <source>cannot write to the opened program</source>
+        <translation>não é possível escrever no programa aberto</translation>
+    </message>
+    <message>
+        <source>GPOS: program {1} has no block N{2}</source>
+        <translation>GPOS: o programa {1} não tem o bloco N{2}</translation>
+    </message>
+    <message>
+        <source>GPOS: block not found</source>
+        <translation>GPOS: bloco não encontrado</translation>
+    </message>
+    <message>
+        <source>{1} is not available on the simulated machine</source>
+        <translation>{1} não está disponível na máquina simulada</translation>
+    </message>
+    <message>
+        <source>{1} cannot be read from a part program (PLC or DNC only)</source>
+        <translation>{1} não pode ser lida num programa de peça (só PLC ou DNC)</translation>
+    </message>
+    <message>
+        <source>{1}: the simulated machine has no tool magazine</source>
+        <translation>{1}: a máquina simulada não tem armazém de ferramentas</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are numbered 0-255</source>
+        <translation>{1}: os corretores são numerados 0-255</translation>
+    </message>
+    <message>
+        <source>{1}: zero offsets are 54-59 and 1-20</source>
+        <translation>{1}: as origens são 54-59 e 1-20</translation>
+    </message>
+    <message>
+        <source>NBTOOL can only be read in the tool change subroutine</source>
+        <translation>NBTOOL só pode ser lida na sub-rotina de troca de ferramenta</translation>
+    </message>
+    <message>
+        <source>MS{1}: the state is kept for M00-M06, M08, M09, M19, M30 and M41-M44</source>
+        <translation>MS{1}: o estado é mantido para M00-M06, M08, M09, M19, M30 e M41-M44</translation>
+    </message>
+    <message>
+        <source>{1}: outputs 1-8</source>
+        <translation>{1}: saídas 1-8</translation>
+    </message>
+    <message>
+        <source>{1} is read-only in a part program</source>
+        <translation>{1} é só de leitura num programa de peça</translation>
+    </message>
+    <message>
+        <source>PRGFRO: 0-255 %</source>
+        <translation>PRGFRO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>PRGSSO: 0-255 %</source>
+        <translation>PRGSSO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are D1-D255 and F is 0-9</source>
+        <translation>{1}: os corretores são D1-D255 e F é 0-9</translation>
+    </message>
+    <message>
+        <source>{1}: value out of range</source>
+        <translation>{1}: valor fora dos limites</translation>
+    </message>
+    <message>
+        <source>KEY can only be written in a customisation program</source>
+        <translation>KEY só pode ser escrita num programa de personalização</translation>
+    </message>
+    <message>
+        <source>KEYSRC can only be changed while it is 0</source>
+        <translation>KEYSRC só pode ser alterada enquanto vale 0</translation>
+    </message>
+    <message>
+        <source>{1}: free outputs 1-4, -10 to 10 V</source>
+        <translation>{1}: saídas livres 1-4, -10 a 10 V</translation>
+    </message>
+    <message>
+        <source>rapid positioning</source>
+        <translation>posicionamento rápido</translation>
+    </message>
+    <message>
+        <source>linear interpolation</source>
+        <translation>interpolação linear</translation>
+    </message>
+    <message>
+        <source>circular interpolation clockwise</source>
+        <translation>interpolação circular no sentido horário</translation>
+    </message>
+    <message>
+        <source>circular interpolation counter-clockwise</source>
+        <translation>interpolação circular no sentido anti-horário</translation>
+    </message>
+    <message>
+        <source>dwell / stop block preparation</source>
+        <translation>temporização / paragem da preparação de blocos</translation>
+    </message>
+    <message>
+        <source>round corner</source>
+        <translation>aresta arredondada</translation>
+    </message>
+    <message>
+        <source>arc centre in absolute coordinates</source>
+        <translation>centro do arco em coordenadas absolutas</translation>
+    </message>
+    <message>
+        <source>sharp corner</source>
+        <translation>aresta viva</translation>
+    </message>
+    <message>
+        <source>arc tangent to the previous path</source>
+        <translation>arco tangente à trajetória anterior</translation>
+    </message>
+    <message>
+        <source>arc through three points</source>
+        <translation>arco por três pontos</translation>
+    </message>
+    <message>
+        <source>mirror image off</source>
+        <translation>imagem espelho desligada</translation>
+    </message>
+    <message>
+        <source>mirror image in X</source>
+        <translation>imagem espelho em X</translation>
+    </message>
+    <message>
+        <source>mirror image in Y</source>
+        <translation>imagem espelho em Y</translation>
+    </message>
+    <message>
+        <source>mirror image in Z</source>
+        <translation>imagem espelho em Z</translation>
+    </message>
+    <message>
+        <source>mirror image in the programmed axes</source>
+        <translation>imagem espelho nos eixos programados</translation>
+    </message>
+    <message>
+        <source>main plane by two axes</source>
+        <translation>plano principal por dois eixos</translation>
+    </message>
+    <message>
+        <source>main plane XY</source>
+        <translation>plano principal XY</translation>
+    </message>
+    <message>
+        <source>main plane ZX</source>
+        <translation>plano principal ZX</translation>
+    </message>
+    <message>
+        <source>main plane YZ</source>
+        <translation>plano principal YZ</translation>
+    </message>
+    <message>
+        <source>work zone lower limits</source>
+        <translation>limites inferiores da zona de trabalho</translation>
+    </message>
+    <message>
+        <source>work zone upper limits</source>
+        <translation>limites superiores da zona de trabalho</translation>
+    </message>
+    <message>
+        <source>work zone enable/disable</source>
+        <translation>ativar/desativar zona de trabalho</translation>
+    </message>
+    <message>
+        <source>feed as inverse of time</source>
+        <translation>avanço como inverso do tempo</translation>
+    </message>
+    <message>
+        <source>electronic threading</source>
+        <translation>roscagem eletrónica</translation>
+    </message>
+    <message>
+        <source>variable-pitch threading</source>
+        <translation>roscagem de passo variável</translation>
+    </message>
+    <message>
+        <source>corner rounding</source>
+        <translation>arredondamento de arestas</translation>
+    </message>
+    <message>
+        <source>tangential entry</source>
+        <translation>entrada tangencial</translation>
+    </message>
+    <message>
+        <source>tangential exit</source>
+        <translation>saída tangencial</translation>
+    </message>
+    <message>
+        <source>chamfer</source>
+        <translation>chanfre</translation>
+    </message>
+    <message>
+        <source>radius compensation off</source>
+        <translation>compensação de raio desligada</translation>
+    </message>
+    <message>
+        <source>radius compensation left</source>
+        <translation>compensação de raio à esquerda</translation>
+    </message>
+    <message>
+        <source>radius compensation right</source>
+        <translation>compensação de raio à direita</translation>
+    </message>
+    <message>
+        <source>inclined-axis transformation</source>
+        <translation>transformação de eixo inclinado</translation>
+    </message>
+    <message>
+        <source>controlled round corner</source>
+        <translation>aresta arredondada controlada</translation>
+    </message>
+    <message>
+        <source>look-ahead</source>
+        <translation>antecipação (look-ahead)</translation>
+    </message>
+    <message>
+        <source>move to hard stop</source>
+        <translation>deslocação até batente</translation>
+    </message>
+    <message>
+        <source>coordinates from machine zero</source>
+        <translation>coordenadas a partir do zero máquina</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 1</source>
+        <translation>origem absoluta 1</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 2</source>
+        <translation>origem absoluta 2</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 3</source>
+        <translation>origem absoluta 3</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 4</source>
+        <translation>origem absoluta 4</translation>
+    </message>
+    <message>
+        <source>additive zero offset 1</source>
+        <translation>origem aditiva 1</translation>
+    </message>
+    <message>
+        <source>additive zero offset 2</source>
+        <translation>origem aditiva 2</translation>
+    </message>
+    <message>
+        <source>pattern repeat cycle</source>
+        <translation>ciclo de seguimento de perfil</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along X</source>
+        <translation>ciclo de desbaste ao longo de X</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along Z</source>
+        <translation>ciclo de desbaste ao longo de Z</translation>
+    </message>
+    <message>
+        <source>programming in inches</source>
+        <translation>programação em polegadas</translation>
+    </message>
+    <message>
+        <source>programming in millimetres</source>
+        <translation>programação em milímetros</translation>
+    </message>
+    <message>
+        <source>scaling factor</source>
+        <translation>fator de escala</translation>
+    </message>
+    <message>
+        <source>machine reference search</source>
+        <translation>procura de referência máquina</translation>
+    </message>
+    <message>
+        <source>probing move until touching</source>
+        <translation>movimento de apalpação até tocar</translation>
+    </message>
+    <message>
+        <source>probing move until no longer touching</source>
+        <translation>movimento de apalpação até deixar de tocar</translation>
+    </message>
+    <message>
+        <source>turning cycle, straight sections</source>
+        <translation>ciclo de torneamento, troços retos</translation>
+    </message>
+    <message>
+        <source>facing cycle, straight sections</source>
+        <translation>ciclo de facejamento, troços retos</translation>
+    </message>
+    <message>
+        <source>drilling cycle</source>
+        <translation>ciclo de furação</translation>
+    </message>
+    <message>
+        <source>turning cycle, curved sections</source>
+        <translation>ciclo de torneamento, troços curvos</translation>
+    </message>
+    <message>
+        <source>facing cycle, curved sections</source>
+        <translation>ciclo de facejamento, troços curvos</translation>
+    </message>
+    <message>
+        <source>longitudinal threading cycle</source>
+        <translation>ciclo de roscagem longitudinal</translation>
+    </message>
+    <message>
+        <source>face threading cycle</source>
+        <translation>ciclo de roscagem frontal</translation>
+    </message>
+    <message>
+        <source>grooving cycle along X</source>
+        <translation>ciclo de ranhuragem ao longo de X</translation>
+    </message>
+    <message>
+        <source>grooving cycle along Z</source>
+        <translation>ciclo de ranhuragem ao longo de Z</translation>
+    </message>
+    <message>
+        <source>absolute programming</source>
+        <translation>programação absoluta</translation>
+    </message>
+    <message>
+        <source>incremental programming</source>
+        <translation>programação incremental</translation>
+    </message>
+    <message>
+        <source>coordinate preset / spindle speed limit</source>
+        <translation>pré-seleção de coordenadas / limite de velocidade do mandril</translation>
+    </message>
+    <message>
+        <source>polar origin preset</source>
+        <translation>pré-seleção da origem polar</translation>
+    </message>
+    <message>
+        <source>feed per minute</source>
+        <translation>avanço por minuto</translation>
+    </message>
+    <message>
+        <source>feed per revolution</source>
+        <translation>avanço por rotação</translation>
+    </message>
+    <message>
+        <source>constant surface speed</source>
+        <translation>velocidade de corte constante</translation>
+    </message>
+    <message>
+        <source>spindle speed in rpm</source>
+        <translation>velocidade do mandril em rpm</translation>
+    </message>
+    <message>
+        <source>X in diameter</source>
+        <translation>X em diâmetro</translation>
+    </message>
+    <message>
+        <source>X in radius</source>
+        <translation>X em raio</translation>
+    </message>
+    <message>
+        <source>absolute zero offset N1-N20</source>
+        <translation>origem absoluta N1-N20</translation>
+    </message>
+    <message>
+        <source>axis retraction when threading stops</source>
+        <translation>retrocesso do eixo quando a roscagem para</translation>
+    </message>
+    <message>
+        <source>{1} does not exist on the 8035 T</source>
+        <translation>{1} não existe no 8035 T</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported yet</source>
+        <translation>{1} ({2}) ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported</source>
+        <translation>{1} ({2}) não é suportado</translation>
+    </message>
+    <message>
+        <source>incompatible G functions {1} and {2} (error 7)</source>
+        <translation>funções G incompatíveis {1} e {2} (erro 7)</translation>
+    </message>
+    <message>
+        <source>{1} must be alone in its block</source>
+        <translation>{1} tem de estar sozinho no seu bloco</translation>
+    </message>
+    <message>
+        <source>tool radius too large</source>
+        <translation>raio da ferramenta demasiado grande</translation>
+    </message>
+    <message>
+        <source>tool radius too large: the offset swallows this element</source>
+        <translation>raio da ferramenta demasiado grande: a compensação engole este elemento</translation>
+    </message>
+    <message>
+        <source>tool radius too large for this arc</source>
+        <translation>raio da ferramenta demasiado grande para este arco</translation>
+    </message>
+    <message>
+        <source>G40 needs a straight line (G00 or G01)</source>
+        <translation>G40 precisa de uma reta (G00 ou G01)</translation>
+    </message>
+    <message>
+        <source>48 blocks without motion in the plane under radius compensation</source>
+        <translation>48 blocos sem movimento no plano com compensação de raio</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 1</source>
+        <translation>o movimento viola a zona de trabalho 1</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 2</source>
+        <translation>o movimento viola a zona de trabalho 2</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 3</source>
+        <translation>o movimento viola a zona de trabalho 3</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 4</source>
+        <translation>o movimento viola a zona de trabalho 4</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 5</source>
+        <translation>o movimento viola a zona de trabalho 5</translation>
+    </message>
+    <message>
+        <source>an arc cannot be scaled differently along the two axes of its plane (G72)</source>
+        <translation>um arco não pode ter escalas diferentes nos dois eixos do seu plano (G72)</translation>
+    </message>
+    <message>
+        <source>P{1}: an interrupt subroutine may only use global parameters</source>
+        <translation>P{1}: uma sub-rotina de interrupção só pode usar parâmetros globais</translation>
+    </message>
+    <message>
+        <source>P{1}: OEM parameters are only for programs with the O attribute</source>
+        <translation>P{1}: os parâmetros OEM são só para programas com o atributo O</translation>
+    </message>
+    <message>
+        <source>P{1} does not exist (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</source>
+        <translation>P{1} não existe (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; expected</source>
+        <translation>&apos;{1}&apos; esperado</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}, not {4}</source>
+        <translation>{1} tem de ser um número inteiro de {2} a {3}, não {4}</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits</source>
+        <translation>um rótulo tem no máximo 8 algarismos</translation>
+    </message>
+    <message>
+        <source>text in quotes expected</source>
+        <translation>texto entre aspas esperado</translation>
+    </message>
+    <message>
+        <source>missing closing quote</source>
+        <translation>falta a aspa de fecho</translation>
+    </message>
+    <message>
+        <source>empty high-level block</source>
+        <translation>bloco de alto nível vazio</translation>
+    </message>
+    <message>
+        <source>IF cannot be nested</source>
+        <translation>IF não pode ser imbricado</translation>
+    </message>
+    <message>
+        <source>SUB cannot be the action of an IF</source>
+        <translation>SUB não pode ser a ação de um IF</translation>
+    </message>
+    <message>
+        <source>subroutine number 0-20000 expected after SUB</source>
+        <translation>número de sub-rotina 0-20000 esperado depois de SUB</translation>
+    </message>
+    <message>
+        <source>at most 26 assignments to different targets</source>
+        <translation>no máximo 26 atribuições a destinos diferentes</translation>
+    </message>
+    <message>
+        <source>parameter or variable expected</source>
+        <translation>parâmetro ou variável esperado</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters (P0-P25, A-Z)</source>
+        <translation>uma chamada de sub-rotina passa parâmetros locais (P0-P25, A-Z)</translation>
+    </message>
+    <message>
+        <source>&apos;=&apos; expected</source>
+        <translation>&apos;=&apos; esperado</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters P0-P25, not P{1}</source>
+        <translation>uma chamada de sub-rotina passa parâmetros locais P0-P25, não P{1}</translation>
+    </message>
+    <message>
+        <source>error number expected</source>
+        <translation>número de erro esperado</translation>
+    </message>
+    <message>
+        <source>ERROR takes a number, a parameter P0-P299 or a text</source>
+        <translation>ERROR aceita um número, um parâmetro P0-P299 ou um texto</translation>
+    </message>
+    <message>
+        <source>CALL passes no parameters: use PCALL or MCALL</source>
+        <translation>CALL não passa parâmetros: use PCALL ou MCALL</translation>
+    </message>
+    <message>
+        <source>at most 26 parameters</source>
+        <translation>no máximo 26 parâmetros</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available: only programs in the NC root</source>
+        <translation>não há programas num PC por DNC: só programas na raiz NC</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in {2}</source>
+        <translation>&apos;{1}&apos; inesperado em {2}</translation>
+    </message>
+    <message>
+        <source>axis letter expected in REPOS</source>
+        <translation>letra de eixo esperada em REPOS</translation>
+    </message>
+    <message>
+        <source>too many axes in REPOS</source>
+        <translation>demasiados eixos em REPOS</translation>
+    </message>
+    <message>
+        <source>INPUT expected</source>
+        <translation>INPUT esperado</translation>
+    </message>
+    <message>
+        <source>input format expected</source>
+        <translation>formato de entrada esperado</translation>
+    </message>
+    <message>
+        <source>DW expected</source>
+        <translation>DW esperado</translation>
+    </message>
+    <message>
+        <source>SK expected</source>
+        <translation>SK esperado</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
+        <translation>{1} é uma instrução de personalização de ecrã: não suportada (pertence aos programas de personalização do utilizador)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a row key</source>
+        <translation>&apos;{1}&apos; não é uma chave de linha</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a field (letters and a number)</source>
+        <translation>&apos;{1}&apos; não é um campo (letras e um número)</translation>
+    </message>
+    <message>
+        <source>row {1} appears twice</source>
+        <translation>a linha {1} aparece duas vezes</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool offset (D0-D255)</source>
+        <translation>&apos;{1}&apos; não é um corretor de ferramenta (D0-D255)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (X Z F R I K)</source>
+        <translation>campo desconhecido &apos;{1}&apos; (X Z F R I K)</translation>
+    </message>
+    <message>
+        <source>the location code F must be a whole number 0-9</source>
+        <translation>o código de localização F tem de ser um número inteiro 0-9</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool (T&lt;number&gt;)</source>
+        <translation>&apos;{1}&apos; não é uma ferramenta (T&lt;número&gt;)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</source>
+        <translation>campo desconhecido &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number 0-255</source>
+        <translation>{1} tem de ser um número inteiro 0-255</translation>
+    </message>
+    <message>
+        <source>G159 selects offsets N1-N20</source>
+        <translation>G159 seleciona as origens N1-N20</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; cannot be part of the ACTIVE selection</source>
+        <translation>&apos;{1}&apos; não pode fazer parte da seleção ACTIVE</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a zero offset (G54-G59, G159N7-G159N20, PLC, ACTIVE)</source>
+        <translation>&apos;{1}&apos; não é uma origem (G54-G59, G159N7-G159N20, PLC, ACTIVE)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not an axis</source>
+        <translation>&apos;{1}&apos; não é um eixo</translation>
+    </message>
+    <message>
+        <source>the feed rate must not be negative</source>
+        <translation>o avanço não pode ser negativo</translation>
+    </message>
+    <message>
+        <source>M function number expected</source>
+        <translation>número de função M esperado</translation>
+    </message>
+    <message>
+        <source>too many M functions in one block</source>
+        <translation>demasiadas funções M num bloco</translation>
+    </message>
+    <message>
+        <source>axis {1} is programmed twice</source>
+        <translation>o eixo {1} está programado duas vezes</translation>
+    </message>
+    <message>
+        <source>DR+ or DR- expected</source>
+        <translation>DR+ ou DR- esperado</translation>
+    </message>
+    <message>
+        <source>CR needs a radius R</source>
+        <translation>CR precisa de um raio R</translation>
+    </message>
+    <message>
+        <source>the rounding radius must be positive</source>
+        <translation>o raio de arredondamento tem de ser positivo</translation>
+    </message>
+    <message>
+        <source>the chamfer length must be positive</source>
+        <translation>o comprimento do chanfre tem de ser positivo</translation>
+    </message>
+    <message>
+        <source>FMAX is not allowed here</source>
+        <translation>FMAX não é permitido aqui</translation>
+    </message>
+    <message>
+        <source>LT, LN, CT or LCT expected after {1}</source>
+        <translation>LT, LN, CT ou LCT esperado depois de {1}</translation>
+    </message>
+    <message>
+        <source>REP must be between 0 and 65534</source>
+        <translation>REP tem de estar entre 0 e 65534</translation>
+    </message>
+    <message>
+        <source>program name expected</source>
+        <translation>nome de programa esperado</translation>
+    </message>
+    <message>
+        <source>LBL or PGM expected after CALL</source>
+        <translation>LBL ou PGM esperado depois de CALL</translation>
+    </message>
+    <message>
+        <source>tool number out of range</source>
+        <translation>número de ferramenta fora dos limites</translation>
+    </message>
+    <message>
+        <source>the spindle speed must not be negative</source>
+        <translation>a velocidade do mandril não pode ser negativa</translation>
+    </message>
+    <message>
+        <source>CALL or DEF expected after TOOL</source>
+        <translation>CALL ou DEF esperado depois de TOOL</translation>
+    </message>
+    <message>
+        <source>PGM expected</source>
+        <translation>PGM esperado</translation>
+    </message>
+    <message>
+        <source>MM or INCH expected</source>
+        <translation>MM ou INCH esperado</translation>
+    </message>
+    <message>
+        <source>FORM expected</source>
+        <translation>FORM esperado</translation>
+    </message>
+    <message>
+        <source>axis expected</source>
+        <translation>eixo esperado</translation>
+    </message>
+    <message>
+        <source>0.1, 0.2 or CYLINDER expected</source>
+        <translation>0.1, 0.2 ou CYLINDER esperado</translation>
+    </message>
+    <message>
+        <source>tool axis expected</source>
+        <translation>eixo da ferramenta esperado</translation>
+    </message>
+    <message>
+        <source>Q parameter expected</source>
+        <translation>parâmetro Q esperado</translation>
+    </message>
+    <message>
+        <source>DECLARE STRING needs a QS parameter</source>
+        <translation>DECLARE STRING precisa de um parâmetro QS</translation>
+    </message>
+    <message>
+        <source>FN number expected</source>
+        <translation>número de FN esperado</translation>
+    </message>
+    <message>
+        <source>&apos;:&apos; expected after FN {1}</source>
+        <translation>&apos;:&apos; esperado depois de FN {1}</translation>
+    </message>
+    <message>
+        <source>square root of a negative number</source>
+        <translation>raiz quadrada de um número negativo</translation>
+    </message>
+    <message>
+        <source>&apos;IF&apos; expected</source>
+        <translation>&apos;IF&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;GOTO&apos; expected</source>
+        <translation>&apos;GOTO&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;LBL&apos; expected</source>
+        <translation>&apos;LBL&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;ERROR&apos; expected</source>
+        <translation>&apos;ERROR&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;PRINT&apos; expected</source>
+        <translation>&apos;PRINT&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;F-PRINT&apos; expected</source>
+        <translation>&apos;F-PRINT&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;mask file / output file&apos; expected</source>
+        <translation>&apos;ficheiro de máscara / ficheiro de saída&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;SYSREAD&apos; expected</source>
+        <translation>&apos;SYSREAD&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;ID&apos; expected</source>
+        <translation>&apos;ID&apos; esperado</translation>
+    </message>
+    <message>
+        <source>&apos;CDATA&apos; expected</source>
+        <translation>&apos;CDATA&apos; esperado</translation>
+    </message>
+    <message>
+        <source>the parameter range runs past the last Q parameter</source>
+        <translation>a gama de parâmetros ultrapassa o último parâmetro Q</translation>
+    </message>
+    <message>
+        <source>&apos;TABOPEN&apos; expected</source>
+        <translation>&apos;TABOPEN&apos; esperado</translation>
+    </message>
+    <message>
+        <source>table name expected</source>
+        <translation>nome de tabela esperado</translation>
+    </message>
+    <message>
+        <source>&apos;/&apos; expected</source>
+        <translation>&apos;/&apos; esperado</translation>
+    </message>
+    <message>
+        <source>column names in quotes expected</source>
+        <translation>nomes de colunas entre aspas esperados</translation>
+    </message>
+    <message>
+        <source>FN {1} does not exist</source>
+        <translation>FN {1} não existe</translation>
+    </message>
+    <message>
+        <source>DEF or CALL expected after CYCL</source>
+        <translation>DEF ou CALL esperado depois de CYCL</translation>
+    </message>
+    <message>
+        <source>file name expected</source>
+        <translation>nome de ficheiro esperado</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;CYCLE&apos; (the keyword is CYCL)</source>
+        <translation>bloco desconhecido &apos;CYCLE&apos; (a palavra-chave é CYCL)</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;{1}&apos;</source>
+        <translation>bloco desconhecido &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>label name must not be empty</source>
+        <translation>o nome do label não pode estar vazio</translation>
+    </message>
+    <message>
+        <source>label expected</source>
+        <translation>label esperado</translation>
+    </message>
+    <message>
+        <source>label number or name expected</source>
+        <translation>número ou nome de label esperado</translation>
+    </message>
+    <message>
+        <source>label number must be between {1} and 65535</source>
+        <translation>o número de label tem de estar entre {1} e 65535</translation>
+    </message>
+    <message>
+        <source>cycle number expected</source>
+        <translation>número de ciclo esperado</translation>
+    </message>
+    <message>
+        <source>cycle parameter Qnnn= expected</source>
+        <translation>parâmetro de ciclo Qnnn= esperado</translation>
+    </message>
+    <message>
+        <source>cycle parameter number expected</source>
+        <translation>número de parâmetro de ciclo esperado</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF group number expected</source>
+        <translation>número de grupo GLOBAL DEF esperado</translation>
+    </message>
+    <message>
+        <source>pattern element POS, ROW, PAT, FRAME, CIRC or PITCHCIRC expected</source>
+        <translation>elemento de padrão POS, ROW, PAT, FRAME, CIRC ou PITCHCIRC esperado</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF needs at least one pattern element</source>
+        <translation>PATTERN DEF precisa de pelo menos um elemento de padrão</translation>
+    </message>
+    <message>
+        <source>Spindle?</source>
+        <translation>Mandril?</translation>
+    </message>
+    <message>
+        <source>Tool axis is missing</source>
+        <translation>Falta o eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Tool radius too small</source>
+        <translation>Raio da ferramenta demasiado pequeno</translation>
+    </message>
+    <message>
+        <source>Tool radius too large</source>
+        <translation>Raio da ferramenta demasiado grande</translation>
+    </message>
+    <message>
+        <source>Range exceeded</source>
+        <translation>Campo excedido</translation>
+    </message>
+    <message>
+        <source>Start position incorrect</source>
+        <translation>Posição inicial incorreta</translation>
+    </message>
+    <message>
+        <source>ROTATION not permitted</source>
+        <translation>ROTAÇÃO não permitida</translation>
+    </message>
+    <message>
+        <source>SCALING FACTOR not permitted</source>
+        <translation>FATOR DE ESCALA não permitido</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE not permitted</source>
+        <translation>ESPELHO não permitido</translation>
+    </message>
+    <message>
+        <source>Datum shift not permitted</source>
+        <translation>Deslocação do ponto zero não permitida</translation>
+    </message>
+    <message>
+        <source>Feed rate is missing</source>
+        <translation>Falta o avanço</translation>
+    </message>
+    <message>
+        <source>Input value incorrect</source>
+        <translation>Valor introduzido incorreto</translation>
+    </message>
+    <message>
+        <source>Incorrect sign</source>
+        <translation>Sinal incorreto</translation>
+    </message>
+    <message>
+        <source>Entered angle not permitted</source>
+        <translation>Ângulo introduzido não permitido</translation>
+    </message>
+    <message>
+        <source>Touch point inaccessible</source>
+        <translation>Ponto de apalpação inacessível</translation>
+    </message>
+    <message>
+        <source>Too many points</source>
+        <translation>Demasiados pontos</translation>
+    </message>
+    <message>
+        <source>Contradictory input</source>
+        <translation>Introdução contraditória</translation>
+    </message>
+    <message>
+        <source>CYCL incomplete</source>
+        <translation>CYCL incompleto</translation>
+    </message>
+    <message>
+        <source>Plane wrongly defined</source>
+        <translation>Plano mal definido</translation>
+    </message>
+    <message>
+        <source>Wrong axis programmed</source>
+        <translation>Eixo programado errado</translation>
+    </message>
+    <message>
+        <source>Wrong RPM</source>
+        <translation>Velocidade errada</translation>
+    </message>
+    <message>
+        <source>Radius comp. undefined</source>
+        <translation>Correção de raio indefinida</translation>
+    </message>
+    <message>
+        <source>Rounding-off undefined</source>
+        <translation>Arredondamento indefinido</translation>
+    </message>
+    <message>
+        <source>Rounding radius too large</source>
+        <translation>Raio de arredondamento demasiado grande</translation>
+    </message>
+    <message>
+        <source>Program start undefined</source>
+        <translation>Início do programa indefinido</translation>
+    </message>
+    <message>
+        <source>Excessive nesting</source>
+        <translation>Imbricação excessiva</translation>
+    </message>
+    <message>
+        <source>Angle reference missing</source>
+        <translation>Falta a referência angular</translation>
+    </message>
+    <message>
+        <source>No fixed cycle defined</source>
+        <translation>Nenhum ciclo fixo definido</translation>
+    </message>
+    <message>
+        <source>Slot width too small</source>
+        <translation>Largura da ranhura demasiado pequena</translation>
+    </message>
+    <message>
+        <source>Pocket too small</source>
+        <translation>Caixa demasiado pequena</translation>
+    </message>
+    <message>
+        <source>Q202 not defined</source>
+        <translation>Q202 não definido</translation>
+    </message>
+    <message>
+        <source>Q205 not defined</source>
+        <translation>Q205 não definido</translation>
+    </message>
+    <message>
+        <source>Q218 must be greater than Q219</source>
+        <translation>Q218 tem de ser maior que Q219</translation>
+    </message>
+    <message>
+        <source>CYCL 210 not permitted</source>
+        <translation>CYCL 210 não permitido</translation>
+    </message>
+    <message>
+        <source>CYCL 211 not permitted</source>
+        <translation>CYCL 211 não permitido</translation>
+    </message>
+    <message>
+        <source>Q220 too large</source>
+        <translation>Q220 demasiado grande</translation>
+    </message>
+    <message>
+        <source>Q222 must be greater than Q223</source>
+        <translation>Q222 tem de ser maior que Q223</translation>
+    </message>
+    <message>
+        <source>Q244 must be greater than 0</source>
+        <translation>Q244 tem de ser maior que 0</translation>
+    </message>
+    <message>
+        <source>Q245 must not equal Q246</source>
+        <translation>Q245 não pode ser igual a Q246</translation>
+    </message>
+    <message>
+        <source>Angle range must be under 360 degrees</source>
+        <translation>A gama angular tem de ser inferior a 360 graus</translation>
+    </message>
+    <message>
+        <source>Q223 must be greater than Q222</source>
+        <translation>Q223 tem de ser maior que Q222</translation>
+    </message>
+    <message>
+        <source>Q214: 0 not permitted</source>
+        <translation>Q214: 0 não permitido</translation>
+    </message>
+    <message>
+        <source>Traverse direction not defined</source>
+        <translation>Direção de deslocação não definida</translation>
+    </message>
+    <message>
+        <source>No datum table active</source>
+        <translation>Nenhuma tabela de pontos zero ativa</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 1</source>
+        <translation>Erro de posição: centro no eixo 1</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 2</source>
+        <translation>Erro de posição: centro no eixo 2</translation>
+    </message>
+    <message>
+        <source>Hole diameter too small</source>
+        <translation>Diâmetro do furo demasiado pequeno</translation>
+    </message>
+    <message>
+        <source>Hole diameter too large</source>
+        <translation>Diâmetro do furo demasiado grande</translation>
+    </message>
+    <message>
+        <source>Stud diameter too small</source>
+        <translation>Diâmetro da ilha demasiado pequeno</translation>
+    </message>
+    <message>
+        <source>Stud diameter too large</source>
+        <translation>Diâmetro da ilha demasiado grande</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 1</source>
+        <translation>Caixa demasiado pequena: retrabalhar eixo 1</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 2</source>
+        <translation>Caixa demasiado pequena: retrabalhar eixo 2</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 1</source>
+        <translation>Caixa demasiado grande: peça rejeitada eixo 1</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 2</source>
+        <translation>Caixa demasiado grande: peça rejeitada eixo 2</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 1</source>
+        <translation>Ilha demasiado pequena: peça rejeitada eixo 1</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 2</source>
+        <translation>Ilha demasiado pequena: peça rejeitada eixo 2</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 1</source>
+        <translation>Ilha demasiado grande: retrabalhar eixo 1</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 2</source>
+        <translation>Ilha demasiado grande: retrabalhar eixo 2</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length exceeds max</source>
+        <translation>TCHPROBE 425: comprimento acima do máximo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length below min</source>
+        <translation>TCHPROBE 425: comprimento abaixo do mínimo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length exceeds max</source>
+        <translation>TCHPROBE 426: comprimento acima do máximo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length below min</source>
+        <translation>TCHPROBE 426: comprimento abaixo do mínimo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too large</source>
+        <translation>TCHPROBE 430: diâmetro demasiado grande</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too small</source>
+        <translation>TCHPROBE 430: diâmetro demasiado pequeno</translation>
+    </message>
+    <message>
+        <source>No measuring axis defined</source>
+        <translation>Nenhum eixo de medição definido</translation>
+    </message>
+    <message>
+        <source>Tool breakage tolerance exceeded</source>
+        <translation>Tolerância de rotura da ferramenta excedida</translation>
+    </message>
+    <message>
+        <source>Enter Q247 unequal 0</source>
+        <translation>Introduzir Q247 diferente de 0</translation>
+    </message>
+    <message>
+        <source>Enter Q247 greater than 5</source>
+        <translation>Introduzir Q247 maior que 5</translation>
+    </message>
+    <message>
+        <source>Datum table?</source>
+        <translation>Tabela de pontos zero?</translation>
+    </message>
+    <message>
+        <source>Enter Q351 unequal 0</source>
+        <translation>Introduzir Q351 diferente de 0</translation>
+    </message>
+    <message>
+        <source>Thread depth too large</source>
+        <translation>Profundidade da rosca demasiado grande</translation>
+    </message>
+    <message>
+        <source>Missing calibration data</source>
+        <translation>Faltam dados de calibração</translation>
+    </message>
+    <message>
+        <source>Tolerance exceeded</source>
+        <translation>Tolerância excedida</translation>
+    </message>
+    <message>
+        <source>Block scan active</source>
+        <translation>Avanço até ao bloco ativo</translation>
+    </message>
+    <message>
+        <source>ORIENTATION not permitted</source>
+        <translation>ORIENTAÇÃO não permitida</translation>
+    </message>
+    <message>
+        <source>3DROT not permitted</source>
+        <translation>3DROT não permitido</translation>
+    </message>
+    <message>
+        <source>Activate 3DROT</source>
+        <translation>Ativar 3DROT</translation>
+    </message>
+    <message>
+        <source>Enter depth as negative</source>
+        <translation>Introduzir a profundidade com sinal negativo</translation>
+    </message>
+    <message>
+        <source>Q303 not defined in measuring cycle</source>
+        <translation>Q303 não definido no ciclo de medição</translation>
+    </message>
+    <message>
+        <source>Tool axis not allowed</source>
+        <translation>Eixo da ferramenta não permitido</translation>
+    </message>
+    <message>
+        <source>Calculated values incorrect</source>
+        <translation>Valores calculados incorretos</translation>
+    </message>
+    <message>
+        <source>Contradictory measuring points</source>
+        <translation>Pontos de medição contraditórios</translation>
+    </message>
+    <message>
+        <source>Incorrect clearance height</source>
+        <translation>Altura segura incorreta</translation>
+    </message>
+    <message>
+        <source>Contradictory plunge type</source>
+        <translation>Tipo de penetração contraditório</translation>
+    </message>
+    <message>
+        <source>This fixed cycle not allowed</source>
+        <translation>Este ciclo fixo não é permitido</translation>
+    </message>
+    <message>
+        <source>Line is write-protected</source>
+        <translation>Linha protegida contra escrita</translation>
+    </message>
+    <message>
+        <source>Oversize greater than depth</source>
+        <translation>Sobre-medida maior que a profundidade</translation>
+    </message>
+    <message>
+        <source>No point angle defined</source>
+        <translation>Nenhum ângulo da ponta definido</translation>
+    </message>
+    <message>
+        <source>Contradictory data</source>
+        <translation>Dados contraditórios</translation>
+    </message>
+    <message>
+        <source>Slot position 0 not allowed</source>
+        <translation>Posição da ranhura 0 não permitida</translation>
+    </message>
+    <message>
+        <source>Enter an infeed not equal to 0</source>
+        <translation>Introduzir um passo diferente de 0</translation>
+    </message>
+    <message>
+        <source>{1} is not defined for this value</source>
+        <translation>{1} não está definido para este valor</translation>
+    </message>
+    <message>
+        <source>a string parameter cannot be used as a number</source>
+        <translation>um parâmetro de texto não pode ser usado como número</translation>
+    </message>
+    <message>
+        <source>{1}{2} does not exist (0 to {3})</source>
+        <translation>{1}{2} não existe (0 a {3})</translation>
+    </message>
+    <message>
+        <source>number or Q parameter expected</source>
+        <translation>número ou parâmetro Q esperado</translation>
+    </message>
+    <message>
+        <source>incomplete formula</source>
+        <translation>fórmula incompleta</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in formula</source>
+        <translation>&apos;{1}&apos; inesperado na fórmula</translation>
+    </message>
+    <message>
+        <source>string parameter QS expected</source>
+        <translation>parâmetro de texto QS esperado</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a number</source>
+        <translation>&apos;{1}&apos; não é um número</translation>
+    </message>
+    <message>
+        <source>&apos;||&apos; expected</source>
+        <translation>&apos;||&apos; esperado</translation>
+    </message>
+    <message>
+        <source>SUBSTR needs BEG and LEN of at least 0</source>
+        <translation>SUBSTR precisa de BEG e LEN de pelo menos 0</translation>
+    </message>
+    <message>
+        <source>SYSSTR ID{1} NR{2} is not available</source>
+        <translation>SYSSTR ID{1} NR{2} não está disponível</translation>
+    </message>
+    <message>
+        <source>string expected</source>
+        <translation>texto esperado</translation>
+    </message>
+    <message>
+        <source>unknown keyword &apos;{1}&apos;</source>
+        <translation>palavra-chave desconhecida &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>the format has no closing quote</source>
+        <translation>o formato não tem aspa de fecho</translation>
+    </message>
+    <message>
+        <source>unknown value &apos;{1}&apos;</source>
+        <translation>valor desconhecido &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>bad format field</source>
+        <translation>campo de formato inválido</translation>
+    </message>
+    <message>
+        <source>more fields than values</source>
+        <translation>mais campos do que valores</translation>
+    </message>
+    <message>
+        <source>a cycle cannot be called with radius compensation RL/RR: program R0</source>
+        <translation>um ciclo não pode ser chamado com correção de raio RL/RR: programe R0</translation>
+    </message>
+    <message>
+        <source>the cycle calls of this block need more than {1} moves</source>
+        <translation>as chamadas de ciclo deste bloco precisam de mais de {1} movimentos</translation>
+    </message>
+    <message>
+        <source>no machining cycle is defined (CYCL DEF)</source>
+        <translation>nenhum ciclo de maquinagem definido (CYCL DEF)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT: no PATTERN DEF or point table (SEL PATTERN) is active</source>
+        <translation>CYCL CALL PAT: nenhum PATTERN DEF nem tabela de pontos (SEL PATTERN) ativo</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT cannot use FMAX (without F it moves at rapid)</source>
+        <translation>CYCL CALL PAT não pode usar FMAX (sem F desloca-se em marcha rápida)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL POS needs all three coordinates</source>
+        <translation>CYCL CALL POS precisa das três coordenadas</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a machining cycle defined before it</source>
+        <translation>o ciclo {1} precisa de um ciclo de maquinagem definido antes dele</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot call cycle {2}</source>
+        <translation>o ciclo {1} não pode chamar o ciclo {2}</translation>
+    </message>
+    <message>
+        <source>{1} has no parameter Q{2}: it is ignored</source>
+        <translation>{1} não tem o parâmetro Q{2}: é ignorado</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) is missing</source>
+        <translation>{1}: falta o parâmetro {2} ({3})</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) needs a text in quotes or a QS parameter</source>
+        <translation>{1}: o parâmetro {2} ({3}) precisa de um texto entre aspas ou de um parâmetro QS</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) does not accept {4}</source>
+        <translation>{1}: o parâmetro {2} ({3}) não aceita {4}</translation>
+    </message>
+    <message>
+        <source>FAUTO: the TOOL CALL block gave no feed rate F</source>
+        <translation>FAUTO: o bloco TOOL CALL não deu avanço F</translation>
+    </message>
+    <message>
+        <source>{1}: {2} needs a feed value after {3}</source>
+        <translation>{1}: {2} precisa de um valor de avanço depois de {3}</translation>
+    </message>
+    <message>
+        <source>FZ needs the number of teeth (CUT) of the tool</source>
+        <translation>FZ precisa do número de lâminas (CUT) da ferramenta</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = &apos;{4}&apos; is not a value</source>
+        <translation>{1}: o parâmetro {2} ({3}) = &apos;{4}&apos; não é um valor</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>{1}: o parâmetro {2} ({3}) = {4} tem de ser um número inteiro de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>{1}: o parâmetro {2} ({3}) = {4} está fora de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet</source>
+        <translation>o ciclo {1} ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>CYCL DEF {1}.{2} without CYCL DEF {1}.0 before it</source>
+        <translation>CYCL DEF {1}.{2} sem CYCL DEF {1}.0 antes</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF {1} does not exist</source>
+        <translation>GLOBAL DEF {1} não existe</translation>
+    </message>
+    <message>
+        <source>cannot read the datum table {1}: {2}</source>
+        <translation>não é possível ler a tabela de pontos zero {1}: {2}</translation>
+    </message>
+    <message>
+        <source>cannot read the point table {1}: {2}</source>
+        <translation>não é possível ler a tabela de pontos {1}: {2}</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet</source>
+        <translation>{1} ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}: {2}</source>
+        <translation>FN 14 erro {1}: {2}</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}</source>
+        <translation>FN 14 erro {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the F-PRINT mask {1}</source>
+        <translation>não é possível ler a máscara F-PRINT {1}</translation>
+    </message>
+    <message>
+        <source>F-PRINT mask {1} has an error</source>
+        <translation>a máscara F-PRINT {1} tem um erro</translation>
+    </message>
+    <message>
+        <source>cannot write {1}</source>
+        <translation>não é possível escrever {1}</translation>
+    </message>
+    <message>
+        <source>FN 18: SYSREAD ID{1} NR{2} IDX{3} is not available</source>
+        <translation>FN 18: SYSREAD ID{1} NR{2} IDX{3} não está disponível</translation>
+    </message>
+    <message>
+        <source>FN {1}: the points do not define a circle</source>
+        <translation>FN {1}: os pontos não definem um círculo</translation>
+    </message>
+    <message>
+        <source>FN 26: cannot open table {1}</source>
+        <translation>FN 26: não é possível abrir a tabela {1}</translation>
+    </message>
+    <message>
+        <source>no table is open (FN 26: TABOPEN)</source>
+        <translation>nenhuma tabela aberta (FN 26: TABOPEN)</translation>
+    </message>
+    <message>
+        <source>FN 27: cannot write row {1}</source>
+        <translation>FN 27: não é possível escrever a linha {1}</translation>
+    </message>
+    <message>
+        <source>FN 28: cannot read row {1}</source>
+        <translation>FN 28: não é possível ler a linha {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the program: {1}</source>
+        <translation>não é possível ler o programa: {1}</translation>
+    </message>
+    <message>
+        <source>label {1} is not defined</source>
+        <translation>o label {1} não está definido</translation>
+    </message>
+    <message>
+        <source>subprograms nested deeper than {1} levels</source>
+        <translation>subprogramas imbricados em mais de {1} níveis</translation>
+    </message>
+    <message>
+        <source>program calls nested deeper than {1} levels</source>
+        <translation>chamadas de programa imbricadas em mais de {1} níveis</translation>
+    </message>
+    <message>
+        <source>cannot call program {1}: {2}</source>
+        <translation>não é possível chamar o programa {1}: {2}</translation>
+    </message>
+    <message>
+        <source>the called program {1} has errors</source>
+        <translation>o programa chamado {1} tem erros</translation>
+    </message>
+    <message>
+        <source>feed rate is missing</source>
+        <translation>falta o avanço</translation>
+    </message>
+    <message>
+        <source>M140 MB MAX: the tool axis has no limit</source>
+        <translation>M140 MB MAX: o eixo da ferramenta não tem limite</translation>
+    </message>
+    <message>
+        <source>tool {1} is not in the tool table</source>
+        <translation>a ferramenta {1} não está na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>no tool table: tool {1} and the following tools are used with length 0 and radius 0</source>
+        <translation>sem tabela de ferramentas: a ferramenta {1} e as seguintes são usadas com comprimento 0 e raio 0</translation>
+    </message>
+    <message>
+        <source>tool {1} is locked (TL)</source>
+        <translation>a ferramenta {1} está bloqueada (TL)</translation>
+    </message>
+    <message>
+        <source>spindle speed {1} exceeds the machine&apos;s {2} rpm</source>
+        <translation>a velocidade do mandril {1} excede as {2} rpm da máquina</translation>
+    </message>
+    <message>
+        <source>BLK FORM 0.2 needs BLK FORM 0.1 before it</source>
+        <translation>BLK FORM 0.2 precisa de BLK FORM 0.1 antes</translation>
+    </message>
+    <message>
+        <source>the blank has no volume</source>
+        <translation>o bloco não tem volume</translation>
+    </message>
+    <message>
+        <source>CC axes {1} and {2} do not span a plane</source>
+        <translation>os eixos de CC {1} e {2} não formam um plano</translation>
+    </message>
+    <message>
+        <source>CC takes two coordinates of a plane</source>
+        <translation>CC leva duas coordenadas de um plano</translation>
+    </message>
+    <message>
+        <source>circular moves cannot use FMAX</source>
+        <translation>movimentos circulares não podem usar FMAX</translation>
+    </message>
+    <message>
+        <source>direction of rotation DR+ or DR- missing</source>
+        <translation>falta o sentido de rotação DR+ ou DR-</translation>
+    </message>
+    <message>
+        <source>no circle of radius {1} passes through the start and end point</source>
+        <translation>nenhum círculo de raio {1} passa pelo ponto inicial e final</translation>
+    </message>
+    <message>
+        <source>circle centre CC is not defined</source>
+        <translation>o centro do círculo CC não está definido</translation>
+    </message>
+    <message>
+        <source>the end point is not on the circle: radius {1} at the start, {2} at the end</source>
+        <translation>o ponto final não está no círculo: raio {1} no início, {2} no fim</translation>
+    </message>
+    <message>
+        <source>a tangential arc needs a contour element before it</source>
+        <translation>um arco tangencial precisa de um elemento de contorno antes</translation>
+    </message>
+    <message>
+        <source>pole CC is not defined</source>
+        <translation>o polo CC não está definido</translation>
+    </message>
+    <message>
+        <source>the end point lies on the tangent: no arc possible</source>
+        <translation>o ponto final está na tangente: arco impossível</translation>
+    </message>
+    <message>
+        <source>CP needs a polar angle PA or IPA</source>
+        <translation>CP precisa de um ângulo polar PA ou IPA</translation>
+    </message>
+    <message>
+        <source>the sign of IPA does not match DR</source>
+        <translation>o sinal de IPA não corresponde a DR</translation>
+    </message>
+    <message>
+        <source>{1} needs a positive length LEN</source>
+        <translation>{1} precisa de um comprimento LEN positivo</translation>
+    </message>
+    <message>
+        <source>{1} CT needs an angle CCA (0 to 360) and a radius R</source>
+        <translation>{1} CT precisa de um ângulo CCA (0 a 360) e de um raio R</translation>
+    </message>
+    <message>
+        <source>{1} LCT needs a radius R</source>
+        <translation>{1} LCT precisa de um raio R</translation>
+    </message>
+    <message>
+        <source>APPR needs radius compensation RL or RR</source>
+        <translation>APPR precisa de correção de raio RL ou RR</translation>
+    </message>
+    <message>
+        <source>DEP LCT needs the end point</source>
+        <translation>DEP LCT precisa do ponto final</translation>
+    </message>
+    <message>
+        <source>an arc in the {1} plane cannot be rotated out of its plane or scaled with different factors</source>
+        <translation>um arco no plano {1} não pode ser rodado para fora do seu plano nem escalado com fatores diferentes</translation>
+    </message>
+    <message>
+        <source>cycle 7: no datum table selected (SEL TABLE)</source>
+        <translation>ciclo 7: nenhuma tabela de pontos zero selecionada (SEL TABLE)</translation>
+    </message>
+    <message>
+        <source>cycle 7: datum {1} is not in the datum table</source>
+        <translation>ciclo 7: o ponto zero {1} não está na tabela de pontos zero</translation>
+    </message>
+    <message>
+        <source>cycle 8: the tool axis {1} cannot be mirrored; it is left out</source>
+        <translation>ciclo 8: o eixo da ferramenta {1} não pode ser espelhado; é omitido</translation>
+    </message>
+    <message>
+        <source>cycle 247: no preset table (PRESET.PR) to read preset {1} from</source>
+        <translation>ciclo 247: nenhuma tabela de pontos de referência (PRESET.PR) para ler o ponto de referência {1}</translation>
+    </message>
+    <message>
+        <source>cycle 247: preset {1} is not in the preset table</source>
+        <translation>ciclo 247: o ponto de referência {1} não está na tabela de pontos de referência</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
+        <translation>o ciclo 19 (plano de maquinagem) precisa de eixos rotativos: esta máquina não tem nenhum</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
+        <translation>ciclo 19 (plano de maquinagem): a cinemática de inclinação ainda não é suportada</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected</source>
+        <translation>ciclo {1}: {2} esperado</translation>
+    </message>
+    <message>
+        <source>cycle 12: program name expected</source>
+        <translation>ciclo 12: nome de programa esperado</translation>
+    </message>
+    <message>
+        <source>cycle 18 has no sub-block 18.{1}</source>
+        <translation>o ciclo 18 não tem o sub-bloco 18.{1}</translation>
+    </message>
+    <message>
+        <source>cycle 32: unexpected &apos;{1}&apos;</source>
+        <translation>ciclo 32: &apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>block number {1} is out of order (after {2})</source>
+        <translation>o número de bloco {1} está fora de ordem (depois de {2})</translation>
+    </message>
+    <message>
+        <source>BEGIN PGM must be the first block</source>
+        <translation>BEGIN PGM tem de ser o primeiro bloco</translation>
+    </message>
+    <message>
+        <source>END PGM {1} does not match BEGIN PGM {2}</source>
+        <translation>END PGM {1} não corresponde a BEGIN PGM {2}</translation>
+    </message>
+    <message>
+        <source>label {1} is defined twice</source>
+        <translation>o label {1} está definido duas vezes</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet; the program cannot run past this block</source>
+        <translation>{1} ainda não é suportado; o programa não pode continuar para além deste bloco</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet; the program cannot run past this block</source>
+        <translation>o ciclo {1} ainda não é suportado; o programa não pode continuar para além deste bloco</translation>
+    </message>
+    <message>
+        <source>block has no number while others have</source>
+        <translation>o bloco não tem número enquanto outros têm</translation>
+    </message>
+    <message>
+        <source>the program has no BEGIN PGM block</source>
+        <translation>o programa não tem bloco BEGIN PGM</translation>
+    </message>
+    <message>
+        <source>the program has no END PGM block</source>
+        <translation>o programa não tem bloco END PGM</translation>
+    </message>
+    <message>
+        <source>expected QRn=value</source>
+        <translation>esperado QRn=valor</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element in the working plane</source>
+        <translation>um arredondamento ou chanfre tem de ser seguido de um elemento de contorno no plano de maquinagem</translation>
+    </message>
+    <message>
+        <source>a chamfer needs straight lines on both sides</source>
+        <translation>um chanfre precisa de retas de ambos os lados</translation>
+    </message>
+    <message>
+        <source>the chamfer is longer than the adjacent element</source>
+        <translation>o chanfre é mais comprido que o elemento adjacente</translation>
+    </message>
+    <message>
+        <source>the rounding radius does not fit between the elements</source>
+        <translation>o raio de arredondamento não cabe entre os elementos</translation>
+    </message>
+    <message>
+        <source>a rounding needs a contour element before it</source>
+        <translation>um arredondamento precisa de um elemento de contorno antes</translation>
+    </message>
+    <message>
+        <source>a chamfer needs a contour element before it</source>
+        <translation>um chanfre precisa de um elemento de contorno antes</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element</source>
+        <translation>um arredondamento ou chanfre tem de ser seguido de um elemento de contorno</translation>
+    </message>
+    <message>
+        <source>an approach must be followed by a compensated contour element</source>
+        <translation>uma aproximação tem de ser seguida de um elemento de contorno corrigido</translation>
+    </message>
+    <message>
+        <source>an approach needs RL or RR</source>
+        <translation>uma aproximação precisa de RL ou RR</translation>
+    </message>
+    <message>
+        <source>a departure needs a compensated contour element before it</source>
+        <translation>uma saída precisa de um elemento de contorno corrigido antes</translation>
+    </message>
+    <message>
+        <source>the departure cannot be constructed with these values</source>
+        <translation>a saída não pode ser construída com estes valores</translation>
+    </message>
+    <message>
+        <source>leave radius compensation with a straight line</source>
+        <translation>termine a correção de raio com uma reta</translation>
+    </message>
+    <message>
+        <source>switching between RL and RR needs a block with R0 between</source>
+        <translation>mudar entre RL e RR precisa de um bloco com R0 no meio</translation>
+    </message>
+    <message>
+        <source>radius compensation must begin with a straight line</source>
+        <translation>a correção de raio tem de começar com uma reta</translation>
+    </message>
+    <message>
+        <source>the approach cannot be constructed with these values</source>
+        <translation>a aproximação não pode ser construída com estes valores</translation>
+    </message>
+    <message>
+        <source>base = {1} is not a built-in machine ({2})</source>
+        <translation>base = {1} não é uma máquina incorporada ({2})</translation>
+    </message>
+    <message>
+        <source>{1} must be a table</source>
+        <translation>{1} tem de ser uma tabela</translation>
+    </message>
+    <message>
+        <source>axes must be a table of axes such as [axes.X]</source>
+        <translation>axes tem de ser uma tabela de eixos como [axes.X]</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is not an axis letter; use one of {3}</source>
+        <translation>{1}: {2} não é uma letra de eixo; use uma de {3}</translation>
+    </message>
+    <message>
+        <source>{1} is a table; expected {2}</source>
+        <translation>{1} é uma tabela; esperado {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is {3}; expected {4}</source>
+        <translation>{1} = {2} é {3}; esperado {4}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}</source>
+        <translation>chave desconhecida {1}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}; did you mean {2}?</source>
+        <translation>chave desconhecida {1}; queria dizer {2}?</translation>
+    </message>
+    <message>
+        <source>TOML syntax error: {1}</source>
+        <translation>erro de sintaxe TOML: {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the machine configuration: {1}</source>
+        <translation>não é possível ler a configuração da máquina: {1}</translation>
+    </message>
+    <message>
+        <source>Name shown to the operator</source>
+        <translation>Nome mostrado ao operador</translation>
+    </message>
+    <message>
+        <source>Machine kind; selects the program dialects and lathe conventions</source>
+        <translation>Tipo de máquina; seleciona os dialetos de programa e as convenções de torno</translation>
+    </message>
+    <message>
+        <source>Axis the tool points along; tool length compensation acts on it</source>
+        <translation>Eixo segundo o qual a ferramenta aponta; a correção do comprimento da ferramenta atua nele</translation>
+    </message>
+    <message>
+        <source>Path velocity of rapid moves</source>
+        <translation>Velocidade de trajetória dos movimentos rápidos</translation>
+    </message>
+    <message>
+        <source>Highest programmable feed rate</source>
+        <translation>Avanço programável máximo</translation>
+    </message>
+    <message>
+        <source>Period of the servo cycle</source>
+        <translation>Período do ciclo de servo</translation>
+    </message>
+    <message>
+        <source>Default path deviation allowed when blending corners; 0 stops exactly</source>
+        <translation>Desvio de trajetória admitido por defeito ao arredondar esquinas; 0 para com exatidão</translation>
+    </message>
+    <message>
+        <source>Lowest spindle speed</source>
+        <translation>Velocidade mínima do mandril</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed</source>
+        <translation>Velocidade máxima do mandril</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the spindle drive; 0: the spindle has none</source>
+        <translation>Node-ID CANopen do acionamento do mandril; 0: o mandril não tem</translation>
+    </message>
+    <message>
+        <source>Spindle drive position units per degree</source>
+        <translation>Unidades de posição do acionamento do mandril por grau</translation>
+    </message>
+    <message>
+        <source>CiA 402 mode of the spindle drive: cyclic synchronous or profile velocity</source>
+        <translation>Modo CiA 402 do acionamento do mandril: síncrono cíclico ou velocidade de perfil</translation>
+    </message>
+    <message>
+        <source>Lathe: diameter of the bar simulated when the program defines no blank; 0: none</source>
+        <translation>Torno: diâmetro da barra simulada quando o programa não define bloco; 0: nenhuma</translation>
+    </message>
+    <message>
+        <source>Lathe: length of the simulated bar</source>
+        <translation>Torno: comprimento da barra simulada</translation>
+    </message>
+    <message>
+        <source>Lathe: workpiece Z of the bar&apos;s face; the bar reaches down to face_z - length</source>
+        <translation>Torno: Z da peça na face da barra; a barra vai até face_z - length</translation>
+    </message>
+    <message>
+        <source>Lathe: inner diameter of a tube; 0: a solid bar</source>
+        <translation>Torno: diâmetro interior de um tubo; 0: uma barra maciça</translation>
+    </message>
+    <message>
+        <source>SocketCAN interface of the drive bus</source>
+        <translation>Interface SocketCAN do barramento dos acionamentos</translation>
+    </message>
+    <message>
+        <source>Bit rate of the drive bus (a CiA 301 rate)</source>
+        <translation>Taxa de bits do barramento dos acionamentos (uma taxa CiA 301)</translation>
+    </message>
+    <message>
+        <source>SYNC period of the drive bus; a whole multiple of servo_period</source>
+        <translation>Período SYNC do barramento dos acionamentos; múltiplo inteiro de servo_period</translation>
+    </message>
+    <message>
+        <source>Heartbeat period of every drive (0x1017)</source>
+        <translation>Período de heartbeat de cada acionamento (0x1017)</translation>
+    </message>
+    <message>
+        <source>A drive whose heartbeat is missing this long is lost; above heartbeat_period</source>
+        <translation>Um acionamento cujo heartbeat falta durante este tempo está perdido; acima de heartbeat_period</translation>
+    </message>
+    <message>
+        <source>A drive whose feedback PDO is missing this many cycles is lost</source>
+        <translation>Um acionamento cujo PDO de retorno falta durante este número de ciclos está perdido</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the control&apos;s heartbeat, watched by the drives</source>
+        <translation>Node-ID CANopen do heartbeat do comando, vigiado pelos acionamentos</translation>
+    </message>
+    <message>
+        <source>Vendor-ID every drive must report (0x1018 sub 1), hexadecimal like 0x0000029C; empty: not checked</source>
+        <translation>Vendor-ID que cada acionamento tem de indicar (0x1018 sub 1), hexadecimal como 0x0000029C; vazio: não verificado</translation>
+    </message>
+    <message>
+        <source>Product code every drive must report (0x1018 sub 2); empty: not checked</source>
+        <translation>Código de produto que cada acionamento tem de indicar (0x1018 sub 2); vazio: não verificado</translation>
+    </message>
+    <message>
+        <source>Linear or rotary; A, B and C default to rotary</source>
+        <translation>Linear ou rotativo; A, B e C são rotativos por defeito</translation>
+    </message>
+    <message>
+        <source>Lower soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Limite de software inferior em coordenadas de máquina (um raio num torno)</translation>
+    </message>
+    <message>
+        <source>Upper soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Limite de software superior em coordenadas de máquina (um raio num torno)</translation>
+    </message>
+    <message>
+        <source>Highest velocity of the axis</source>
+        <translation>Velocidade máxima do eixo</translation>
+    </message>
+    <message>
+        <source>Highest acceleration of the axis</source>
+        <translation>Aceleração máxima do eixo</translation>
+    </message>
+    <message>
+        <source>Highest jerk of the axis</source>
+        <translation>Sobreaceleração (jerk) máxima do eixo</translation>
+    </message>
+    <message>
+        <source>Machine position after homing; must lie within the soft limits</source>
+        <translation>Posição de máquina depois da referenciação; tem de estar dentro dos limites de software</translation>
+    </message>
+    <message>
+        <source>The axis may be absent and is then switched off with enabled = false</source>
+        <translation>O eixo pode faltar e é então desligado com enabled = false</translation>
+    </message>
+    <message>
+        <source>The axis is present; only optional axes may be disabled</source>
+        <translation>O eixo está presente; só os eixos opcionais podem ser desativados</translation>
+    </message>
+    <message>
+        <source>Lathe: the axis is programmed and displayed as a diameter</source>
+        <translation>Torno: o eixo é programado e visualizado como diâmetro</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the axis drive; 0: none</source>
+        <translation>Node-ID CANopen do acionamento do eixo; 0: nenhum</translation>
+    </message>
+    <message>
+        <source>Drive position units per millimetre or degree</source>
+        <translation>Unidades de posição do acionamento por milímetro ou grau</translation>
+    </message>
+    <message>
+        <source>Following error the drive allows (0x6065) before it faults</source>
+        <translation>Erro de seguimento que o acionamento admite (0x6065) antes de entrar em falha</translation>
+    </message>
+    <message>
+        <source>the machine has no axis for {1}</source>
+        <translation>a máquina não tem eixo para {1}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be less than {3} = {4}</source>
+        <translation>{1} = {2} tem de ser menor que {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the soft limits {3} … {4} {5}</source>
+        <translation>{1} = {2} está fora dos limites de software {3} … {4} {5}</translation>
+    </message>
+    <message>
+        <source>{1} = false is only allowed when {2} = true</source>
+        <translation>{1} = false só é permitido quando {2} = true</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a linear axis of a lathe</source>
+        <translation>{1} = true só é permitido num eixo linear de um torno</translation>
+    </message>
+    <message>
+        <source>the machine has no axes; add [axes.X] tables or start from a built-in machine with base = &quot;mill&quot;</source>
+        <translation>a máquina não tem eixos; acrescente tabelas [axes.X] ou parta de uma máquina incorporada com base = &quot;mill&quot;</translation>
+    </message>
+    <message>
+        <source>axis letter {1} is not one of {2}</source>
+        <translation>a letra de eixo {1} não é uma de {2}</translation>
+    </message>
+    <message>
+        <source>axis {1} is listed twice</source>
+        <translation>o eixo {1} está listado duas vezes</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} is not an enabled axis of this machine ({2})</source>
+        <translation>tool_axis = {1} não é um eixo ativo desta máquina ({2})</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} must be a linear axis</source>
+        <translation>tool_axis = {1} tem de ser um eixo linear</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must not exceed {3} = {4}</source>
+        <translation>{1} = {2} não pode exceder {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be smaller than {3} = {4}</source>
+        <translation>{1} = {2} tem de ser menor que {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is the node-ID of drives.master_node</source>
+        <translation>{1} = {2} é o node-ID de drives.master_node</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is already the node of {3}</source>
+        <translation>{1} = {2} já é o nó de {3}</translation>
+    </message>
+    <message>
+        <source>drives.cycle_period = {1} must be a whole multiple of servo_period = {2}</source>
+        <translation>drives.cycle_period = {1} tem de ser um múltiplo inteiro de servo_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.heartbeat_timeout = {1} must exceed drives.heartbeat_period = {2}</source>
+        <translation>drives.heartbeat_timeout = {1} tem de exceder drives.heartbeat_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.bitrate = {1} is not a CiA 301 bit rate (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</source>
+        <translation>drives.bitrate = {1} não é uma taxa de bits CiA 301 (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not a 32-bit number such as 0x0000029C</source>
+        <translation>{1} = &quot;{2}&quot; não é um número de 32 bits como 0x0000029C</translation>
+    </message>
+    <message>
+        <source>{1} = {2} has the wrong type; expected {3}</source>
+        <translation>{1} = {2} tem o tipo errado; esperado {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the allowed range {3}</source>
+        <translation>{1} = {2} está fora da gama permitida {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is not one of {3}</source>
+        <translation>{1} = {2} não é um de {3}</translation>
+    </message>
+    <message>
+        <source>empty file name</source>
+        <translation>nome de ficheiro vazio</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is outside the NC root</source>
+        <translation>&apos;{1}&apos; está fora da raiz NC</translation>
+    </message>
+    <message>
+        <source>datum {1} is not in the datum table</source>
+        <translation>o ponto zero {1} não está na tabela de pontos zero</translation>
+    </message>
+    <message>
+        <source>datum {1} is already in the datum table</source>
+        <translation>o ponto zero {1} já está na tabela de pontos zero</translation>
+    </message>
+    <message>
+        <source>the table does not start with a BEGIN line</source>
+        <translation>a tabela não começa com uma linha BEGIN</translation>
+    </message>
+    <message>
+        <source>the BEGIN line names no table</source>
+        <translation>a linha BEGIN não indica nenhuma tabela</translation>
+    </message>
+    <message>
+        <source>the BEGIN line gives no file type</source>
+        <translation>a linha BEGIN não indica o tipo de ficheiro</translation>
+    </message>
+    <message>
+        <source>the table has no column {1}</source>
+        <translation>a tabela não tem a coluna {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number &gt;= 0, not &quot;{2}&quot;</source>
+        <translation>a coluna {1} precisa de um número inteiro &gt;= 0, não &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the table has no row {1}</source>
+        <translation>a tabela não tem a linha {1}</translation>
+    </message>
+    <message>
+        <source>the table has no column &quot;{1}&quot;</source>
+        <translation>a tabela não tem a coluna &quot;{1}&quot;</translation>
+    </message>
+    <message>
+        <source>cell {1} of row {2} is empty</source>
+        <translation>a célula {1} da linha {2} está vazia</translation>
+    </message>
+    <message>
+        <source>column {1} needs a number, not &quot;{2}&quot;</source>
+        <translation>a coluna {1} precisa de um número, não &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} columns named but {2} values given</source>
+        <translation>{1} colunas indicadas mas {2} valores dados</translation>
+    </message>
+    <message>
+        <source>column {1} holds text, not numbers</source>
+        <translation>a coluna {1} contém texto, não números</translation>
+    </message>
+    <message>
+        <source>point {1} is not in the point table</source>
+        <translation>o ponto {1} não está na tabela de pontos</translation>
+    </message>
+    <message>
+        <source>column {1} needs Y or nothing, not &quot;{2}&quot;</source>
+        <translation>a coluna {1} precisa de Y ou nada, não &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>point {1} is already in the point table</source>
+        <translation>o ponto {1} já está na tabela de pontos</translation>
+    </message>
+    <message>
+        <source>preset {1} is not in the preset table</source>
+        <translation>o ponto de referência {1} não está na tabela de pontos de referência</translation>
+    </message>
+    <message>
+        <source>preset {1} is already in the preset table</source>
+        <translation>o ponto de referência {1} já está na tabela de pontos de referência</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number, not &quot;{2}&quot;</source>
+        <translation>a coluna {1} precisa de um número inteiro, não &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the key column {1} is empty</source>
+        <translation>a coluna chave {1} está vazia</translation>
+    </message>
+    <message>
+        <source>{1} {2} appears twice (first in line {3})</source>
+        <translation>{1} {2} aparece duas vezes (primeiro na linha {3})</translation>
+    </message>
+    <message>
+        <source>the table has no column header line</source>
+        <translation>a tabela não tem linha de cabeçalho das colunas</translation>
+    </message>
+    <message>
+        <source>the table has no cell at row {1}, column {2}</source>
+        <translation>a tabela não tem célula na linha {1}, coluna {2}</translation>
+    </message>
+    <message>
+        <source>a cell of column {1} cannot hold a line break</source>
+        <translation>uma célula da coluna {1} não pode conter uma quebra de linha</translation>
+    </message>
+    <message>
+        <source>{2} does not fit into column {1} ({3} characters)</source>
+        <translation>{2} não cabe na coluna {1} ({3} caracteres)</translation>
+    </message>
+    <message>
+        <source>column {1} cannot hold an infinite number</source>
+        <translation>a coluna {1} não pode conter um número infinito</translation>
+    </message>
+    <message>
+        <source>cannot insert a row at {1}: the table has {2} rows</source>
+        <translation>não é possível inserir uma linha em {1}: a tabela tem {2} linhas</translation>
+    </message>
+    <message>
+        <source>&quot;{2}&quot; cannot be a key of column {1}</source>
+        <translation>&quot;{2}&quot; não pode ser uma chave da coluna {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs L, 1, 0 or nothing, not &quot;{2}&quot;</source>
+        <translation>a coluna {1} precisa de L, 1, 0 ou nada, não &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>tool {1} is already in the tool table</source>
+        <translation>a ferramenta {1} já está na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>inativo</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>em execução</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <translation>paragem do avanço</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>parado</translation>
+    </message>
+    <message>
+        <source>waiting for the machine</source>
+        <translation>à espera da máquina</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <translation>terminado</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>erro</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>interrompido</translation>
+    </message>
+    <message>
+        <source>motion refused the block: {1}</source>
+        <translation>o movimento recusou o bloco: {1}</translation>
+    </message>
+    <message>
+        <source>motion stopped: {1}</source>
+        <translation>o movimento parou: {1}</translation>
+    </message>
+    <message>
+        <source>column {1} must be greater than 0, not {2}</source>
+        <translation>a coluna {1} tem de ser maior que 0, não {2}</translation>
+    </message>
+    <message>
+        <source>column {1} must not be negative, not {2}</source>
+        <translation>a coluna {1} não pode ser negativa, não {2}</translation>
+    </message>
+    <message>
+        <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
+        <translation>a coluna {1} precisa de {2} ou {3}, não &quot;{4}&quot;</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>pronto</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <translation>em deslocação manual</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>a referenciar</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <translation>a parar</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>paragem de emergência</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>avaria</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <translation>sem máquina</translation>
+    </message>
+    <message>
+        <source>{1} needs the coordinates of its end point</source>
+        <translation>{1} precisa das coordenadas do seu ponto final</translation>
+    </message>
+    <message>
+        <source>{1} is a straight probing move in workpiece coordinates: not with G06, G08, G09, G36-G39 or G53</source>
+        <translation>{1} é um movimento de apalpação reto em coordenadas da peça: não com G06, G08, G09, G36-G39 ou G53</translation>
+    </message>
+    <message>
+        <source>G75 reached its end point without the probe touching</source>
+        <translation>G75 chegou ao ponto final sem que o apalpador tocasse</translation>
+    </message>
+    <message>
+        <source>G76 reached its end point with the probe still touching</source>
+        <translation>G76 chegou ao ponto final com o apalpador ainda em contacto</translation>
+    </message>
+    <message>
+        <source>Simulation: a box-shaped workpiece the touch probe touches (G75, probing cycles); the bounds below, machine coordinates of the tool tip</source>
+        <translation>Simulação: uma peça em forma de paralelepípedo em que o apalpador toca (G75, ciclos de apalpação); os limites abaixo, em coordenadas de máquina da extremidade da ferramenta</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine X of the tool tip inside it</source>
+        <translation>Peça simulada para apalpação: X de máquina mínimo da extremidade da ferramenta dentro dela</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine X of the tool tip inside it</source>
+        <translation>Peça simulada para apalpação: X de máquina máximo da extremidade da ferramenta dentro dela</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Y of the tool tip inside it</source>
+        <translation>Peça simulada para apalpação: Y de máquina mínimo da extremidade da ferramenta dentro dela</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Y of the tool tip inside it</source>
+        <translation>Peça simulada para apalpação: Y de máquina máximo da extremidade da ferramenta dentro dela</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Z of the tool tip inside it</source>
+        <translation>Peça simulada para apalpação: Z de máquina mínimo da extremidade da ferramenta dentro dela</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Z of the tool tip inside it</source>
+        <translation>Peça simulada para apalpação: Z de máquina máximo da extremidade da ferramenta dentro dela</translation>
+    </message>
+    <message>
+        <source>Machine coordinate of the workpiece origin (the default preset); kerf run --work-offset overrides it</source>
+        <translation>Coordenada de máquina da origem da peça (o ponto de referência por defeito); kerf run --work-offset sobrepõe-se a ela</translation>
+    </message>
+    <message>
+        <source>{1} needs a programmed feed F greater than 0</source>
+        <translation>{1} precisa de um avanço F programado maior que 0</translation>
+    </message>
+    <message>
+        <source>Drilling/
+thread</source>
+        <translation>Furar/
+roscar</translation>
+    </message>
+    <message>
+        <source>Pockets/
+studs/slots</source>
+        <translation>Caixas/
+ilhas/ranhuras</translation>
+    </message>
+    <message>
+        <source>Patterns</source>
+        <translation>Padrões</translation>
+    </message>
+    <message>
+        <source>SL cycles</source>
+        <translation>Ciclos SL</translation>
+    </message>
+    <message>
+        <source>Coordinate
+transform.</source>
+        <translation>Conversão de
+coordenadas</translation>
+    </message>
+    <message>
+        <source>Special
+cycles</source>
+        <translation>Ciclos
+especiais</translation>
+    </message>
+    <message>
+        <source>SET-UP CLEARANCE</source>
+        <translation>DISTÂNCIA SEGURANÇA</translation>
+    </message>
+    <message>
+        <source>DEPTH</source>
+        <translation>PROFUNDIDADE</translation>
+    </message>
+    <message>
+        <source>PLUNGING DEPTH</source>
+        <translation>PROFUNDIDADE DE PASSO</translation>
+    </message>
+    <message>
+        <source>SURFACE COORDINATE</source>
+        <translation>COORD. SUPERFÍCIE</translation>
+    </message>
+    <message>
+        <source>2ND SET-UP CLEARANCE</source>
+        <translation>2.ª DIST. SEGURANÇA</translation>
+    </message>
+    <message>
+        <source>MIN. PLUNGING DEPTH</source>
+        <translation>PROF. PASSO MÍNIMA</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR PLNGNG</source>
+        <translation>AVANÇO INCREMENTO</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR MILLING</source>
+        <translation>AVANÇO FRESAGEM</translation>
+    </message>
+    <message>
+        <source>RETRACTION FEED RATE</source>
+        <translation>AVANÇO RETROCESSO</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT TOP</source>
+        <translation>TEMPO ESPERA EM CIMA</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT DEPTH</source>
+        <translation>TEMPO ESPERA EM BAIXO</translation>
+    </message>
+    <message>
+        <source>DECREMENT</source>
+        <translation>VALOR DE REDUÇÃO</translation>
+    </message>
+    <message>
+        <source>NR OF BREAKS</source>
+        <translation>ROTURAS DE APARA</translation>
+    </message>
+    <message>
+        <source>DISENGAGING DIRECTN</source>
+        <translation>DIREÇÃO AFASTAMENTO</translation>
+    </message>
+    <message>
+        <source>CENTER IN 1ST AXIS</source>
+        <translation>CENTRO 1.º EIXO</translation>
+    </message>
+    <message>
+        <source>CENTER IN 2ND AXIS</source>
+        <translation>CENTRO 2.º EIXO</translation>
+    </message>
+    <message>
+        <source>FIRST SIDE LENGTH</source>
+        <translation>COMPRIMENTO 1.º LADO</translation>
+    </message>
+    <message>
+        <source>2ND SIDE LENGTH</source>
+        <translation>COMPRIMENTO 2.º LADO</translation>
+    </message>
+    <message>
+        <source>ANGLE OF ROTATION</source>
+        <translation>ÂNGULO DE ROTAÇÃO</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 1ST AXIS</source>
+        <translation>PONTO INICIAL 1.º EIXO</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 2ND AXIS</source>
+        <translation>PONTO INICIAL 2.º EIXO</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 3RD AXIS</source>
+        <translation>PONTO INICIAL 3.º EIXO</translation>
+    </message>
+    <message>
+        <source>SPACING IN 1ST AXIS</source>
+        <translation>DISTÂNCIA 1.º EIXO</translation>
+    </message>
+    <message>
+        <source>SPACING IN 2ND AXIS</source>
+        <translation>DISTÂNCIA 2.º EIXO</translation>
+    </message>
+    <message>
+        <source>THREAD PITCH</source>
+        <translation>PASSO DE ROSCA</translation>
+    </message>
+    <message>
+        <source>NR OF REPETITIONS</source>
+        <translation>N.º DE REPETIÇÕES</translation>
+    </message>
+    <message>
+        <source>NUMBER OF COLUMNS</source>
+        <translation>NÚMERO DE COLUNAS</translation>
+    </message>
+    <message>
+        <source>NUMBER OF LINES</source>
+        <translation>NÚMERO DE LINHAS</translation>
+    </message>
+    <message>
+        <source>PITCH CIRCLE DIAMETR</source>
+        <translation>DIÂM. CÍRC. TEÓRICO</translation>
+    </message>
+    <message>
+        <source>STARTING ANGLE</source>
+        <translation>ÂNGULO INICIAL</translation>
+    </message>
+    <message>
+        <source>STOPPING ANGLE</source>
+        <translation>ÂNGULO FINAL</translation>
+    </message>
+    <message>
+        <source>STEPPING ANGLE</source>
+        <translation>INCREMENTO ANGULAR</translation>
+    </message>
+    <message>
+        <source>DEPTH OF COUNTERBORE</source>
+        <translation>PROF. REBAIXAMENTO</translation>
+    </message>
+    <message>
+        <source>MATERIAL THICKNESS</source>
+        <translation>ESPESSURA MATERIAL</translation>
+    </message>
+    <message>
+        <source>OFF-CENTER DISTANCE</source>
+        <translation>DIST. EXCÊNTRICA</translation>
+    </message>
+    <message>
+        <source>TOOL EDGE HEIGHT</source>
+        <translation>ALTURA DA ARESTA</translation>
+    </message>
+    <message>
+        <source>F PRE-POSITIONING</source>
+        <translation>AVANÇO POSIC. PRÉVIO</translation>
+    </message>
+    <message>
+        <source>F COUNTERSINKING</source>
+        <translation>AVANÇO REBAIXAMENTO</translation>
+    </message>
+    <message>
+        <source>DIST FOR CHIP BRKNG</source>
+        <translation>RETROCESSO ROT. APARA</translation>
+    </message>
+    <message>
+        <source>DEPTH FOR CHIP BRKNG</source>
+        <translation>PROF. ROTURA APARA</translation>
+    </message>
+    <message>
+        <source>UPPER ADV STOP DIST</source>
+        <translation>PARAGEM PRÉVIA SUP.</translation>
+    </message>
+    <message>
+        <source>LOWER ADV STOP DIST</source>
+        <translation>PARAGEM PRÉVIA INF.</translation>
+    </message>
+    <message>
+        <source>MOVE TO CLEARANCE</source>
+        <translation>DESLOC. ALT. SEGURA</translation>
+    </message>
+    <message>
+        <source>NOMINAL DIAMETER</source>
+        <translation>DIÂMETRO NOMINAL</translation>
+    </message>
+    <message>
+        <source>ANGLE OF SPINDLE</source>
+        <translation>ÂNGULO DO MANDRIL</translation>
+    </message>
+    <message>
+        <source>DATUM NUMBER</source>
+        <translation>NÚMERO PONTO ZERO</translation>
+    </message>
+    <message>
+        <source>ROUGHING DIAMETER</source>
+        <translation>DIÂMETRO DESBASTE</translation>
+    </message>
+    <message>
+        <source>SELECT DIA./DEPTH</source>
+        <translation>SELEÇÃO DIÂM./PROF.</translation>
+    </message>
+    <message>
+        <source>DIAMETER</source>
+        <translation>DIÂMETRO</translation>
+    </message>
+    <message>
+        <source>SELECT POS. HEIGHT</source>
+        <translation>SELEÇÃO ALTURA POS.</translation>
+    </message>
+    <message>
+        <source>CLIMB OR UP-CUT</source>
+        <translation>SINCRON./CONTRAMARCHA</translation>
+    </message>
+    <message>
+        <source>THREADS PER STEP</source>
+        <translation>PASSOS POR VOLTA</translation>
+    </message>
+    <message>
+        <source>COUNTERSINKING DEPTH</source>
+        <translation>PROF. REBAIXAMENTO</translation>
+    </message>
+    <message>
+        <source>CLEARANCE TO SIDE</source>
+        <translation>DISTÂNCIA LATERAL</translation>
+    </message>
+    <message>
+        <source>DEPTH AT FRONT</source>
+        <translation>PROFUNDIDADE FRONTAL</translation>
+    </message>
+    <message>
+        <source>OFFSET AT FRONT</source>
+        <translation>DESVIO FRONTAL</translation>
+    </message>
+    <message>
+        <source>COUNTERSINK PROCESS</source>
+        <translation>PROCESSO REBAIXAMENTO</translation>
+    </message>
+    <message>
+        <source>TYPE OF TRAVERSE</source>
+        <translation>TIPO DE DESLOCAÇÃO</translation>
+    </message>
+    <message>
+        <source>TEXT POSITION</source>
+        <translation>POSIÇÃO DO TEXTO</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR FLOOR</source>
+        <translation>SOBRE-MEDIDA FUNDO</translation>
+    </message>
+    <message>
+        <source>MAX. OVERLAP</source>
+        <translation>SOBREPOSIÇÃO MÁX.</translation>
+    </message>
+    <message>
+        <source>STARTING POINT</source>
+        <translation>PONTO INICIAL</translation>
+    </message>
+    <message>
+        <source>FINISHING FEED RATE</source>
+        <translation>AVANÇO ACABAMENTO</translation>
+    </message>
+    <message>
+        <source>END POINT 3RD AXIS</source>
+        <translation>PONTO FINAL 3.º EIXO</translation>
+    </message>
+    <message>
+        <source>STRATEGY</source>
+        <translation>ESTRATÉGIA</translation>
+    </message>
+    <message>
+        <source>DEPTH REFERENCE</source>
+        <translation>REFERÊNCIA PROF.</translation>
+    </message>
+    <message>
+        <source>FEED RATE FACTOR</source>
+        <translation>FATOR DE AVANÇO</translation>
+    </message>
+    <message>
+        <source>RPM FACTOR</source>
+        <translation>FATOR DE VELOCIDADE</translation>
+    </message>
+    <message>
+        <source>DIR. OF SPINDLE ROT.</source>
+        <translation>SENTIDO ROT. MANDRIL</translation>
+    </message>
+    <message>
+        <source>ROT.SPEED INFEED/OUT</source>
+        <translation>VEL. ENTRADA/SAÍDA</translation>
+    </message>
+    <message>
+        <source>ROT. SPEED DRILLING</source>
+        <translation>VELOCIDADE FURAR</translation>
+    </message>
+    <message>
+        <source>COOLANT ON</source>
+        <translation>REFRIGERANTE LIGADO</translation>
+    </message>
+    <message>
+        <source>COOLANT OFF</source>
+        <translation>REFRIGERANTE DESLIG.</translation>
+    </message>
+    <message>
+        <source>DWELL DEPTH</source>
+        <translation>PROFUNDIDADE ESPERA</translation>
+    </message>
+    <message>
+        <source>ENGRAVING TEXT</source>
+        <translation>TEXTO A GRAVAR</translation>
+    </message>
+    <message>
+        <source>FEED FOR APPROACH</source>
+        <translation>AVANÇO APROXIMAÇÃO</translation>
+    </message>
+    <message>
+        <source>CHARACTER HEIGHT</source>
+        <translation>ALTURA CARACTERES</translation>
+    </message>
+    <message>
+        <source>SPACE FACTOR</source>
+        <translation>FATOR DE DISTÂNCIA</translation>
+    </message>
+    <message>
+        <source>FONT</source>
+        <translation>FONTE</translation>
+    </message>
+    <message>
+        <source>TEXT LAYOUT</source>
+        <translation>DISPOSIÇÃO DO TEXTO</translation>
+    </message>
+    <message>
+        <source>CIRCLE RADIUS</source>
+        <translation>RAIO DO CÍRCULO</translation>
+    </message>
+    <message>
+        <source>MAX. TEXT LENGTH</source>
+        <translation>COMPR. MÁX. TEXTO</translation>
+    </message>
+    <message>
+        <source>F COUNTERBORING</source>
+        <translation>AVANÇO REBAIX. INV.</translation>
+    </message>
+    <message>
+        <source>DEPTH OF THREAD</source>
+        <translation>PROFUNDIDADE ROSCA</translation>
+    </message>
+    <message>
+        <source>MAX. PLUNGING DEPTH</source>
+        <translation>PROF. PASSO MÁXIMA</translation>
+    </message>
+    <message>
+        <source>TOTAL HOLE DEPTH</source>
+        <translation>PROF. TOTAL FURO</translation>
+    </message>
+    <message>
+        <source>%1: %2 needs a positive feed after it, e.g. %2 0.1</source>
+        <translation>%1: %2 precisa de um avanço positivo a seguir, p. ex. %2 0.1</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; enter a number</source>
+        <translation>%1: %2 não é permitido aqui; introduza um número</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; allowed: a number, %3</source>
+        <translation>%1: %2 não é permitido aqui; permitido: um número, %3</translation>
+    </message>
+    <message>
+        <source>%1: enter a value</source>
+        <translation>%1: introduza um valor</translation>
+    </message>
+    <message>
+        <source>%1: the text must not contain &quot;</source>
+        <translation>%1: o texto não pode conter &quot;</translation>
+    </message>
+    <message>
+        <source>%1: enter axis letters separated by blanks, e.g. X Y</source>
+        <translation>%1: introduza letras de eixo separadas por espaços, p. ex. X Y</translation>
+    </message>
+    <message>
+        <source>%1: #n needs a datum number, e.g. #5</source>
+        <translation>%1: #n precisa de um número de ponto zero, p. ex. #5</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number</source>
+        <translation>%1: &quot;%2&quot; não é um número</translation>
+    </message>
+    <message>
+        <source>%1: enter a whole number from %2 to %3</source>
+        <translation>%1: introduza um número inteiro de %2 a %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the range %3 to %4</source>
+        <translation>%1: %2 está fora da gama %3 a %4</translation>
+    </message>
+    <message>
+        <source>%1 coordinate of the end point (I before the value: incremental)</source>
+        <translation>Coordenada %1 do ponto final (I antes do valor: incremental)</translation>
+    </message>
+    <message>
+        <source>Circle radius (negative: arc greater than 180°)</source>
+        <translation>Raio do círculo (negativo: arco maior que 180°)</translation>
+    </message>
+    <message>
+        <source>Chamfer length</source>
+        <translation>Comprimento do chanfre</translation>
+    </message>
+    <message>
+        <source>Rounding radius</source>
+        <translation>Raio de arredondamento</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (DR-: clockwise, DR+: counterclockwise)</source>
+        <translation>Sentido de rotação (DR-: horário, DR+: anti-horário)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (RL left, RR right of the contour, R0 none)</source>
+        <translation>Correção de raio (RL à esquerda, RR à direita do contorno, R0 nenhuma)</translation>
+    </message>
+    <message>
+        <source>Feed rate (FMAX: rapid traverse, FAUTO: from TOOL CALL)</source>
+        <translation>Avanço (FMAX: marcha rápida, FAUTO: do TOOL CALL)</translation>
+    </message>
+    <message>
+        <source>Miscellaneous functions, e.g. 3 8</source>
+        <translation>Funções auxiliares, p. ex. 3 8</translation>
+    </message>
+    <message>
+        <source>Tool number or name</source>
+        <translation>Número ou nome da ferramenta</translation>
+    </message>
+    <message>
+        <source>Spindle axis</source>
+        <translation>Eixo do mandril</translation>
+    </message>
+    <message>
+        <source>Spindle speed S [1/min]</source>
+        <translation>Velocidade do mandril S [1/min]</translation>
+    </message>
+    <message>
+        <source>Delta length DL</source>
+        <translation>Comprimento delta DL</translation>
+    </message>
+    <message>
+        <source>Delta radius DR</source>
+        <translation>Raio delta DR</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a coordinate</source>
+        <translation>%1: &quot;%2&quot; não é uma coordenada</translation>
+    </message>
+    <message>
+        <source>%1: enter a radius other than 0</source>
+        <translation>%1: introduza um raio diferente de 0</translation>
+    </message>
+    <message>
+        <source>%1: enter a positive number</source>
+        <translation>%1: introduza um número positivo</translation>
+    </message>
+    <message>
+        <source>%1: enter a feed rate, FMAX or FAUTO</source>
+        <translation>%1: introduza um avanço, FMAX ou FAUTO</translation>
+    </message>
+    <message>
+        <source>%1: enter M function numbers, e.g. 3 8</source>
+        <translation>%1: introduza números de funções M, p. ex. 3 8</translation>
+    </message>
+    <message>
+        <source>%1: enter a tool number or a name</source>
+        <translation>%1: introduza um número ou um nome de ferramenta</translation>
+    </message>
+    <message>
+        <source>%1: choose one of %2</source>
+        <translation>%1: escolha um de %2</translation>
+    </message>
+    <message>
+        <source>%1: enter at least one coordinate</source>
+        <translation>%1: introduza pelo menos uma coordenada</translation>
+    </message>
+    <message>
+        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
+        <translation>Os diálogos de ciclos e de funções de trajetória escrevem programas Klartext (.H).</translation>
+    </message>
+    <message>
+        <source>Cycle
+overview</source>
+        <translation>Resumo
+de ciclos</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Voltar</translation>
+    </message>
+    <message>
+        <source>Edit
+cycle</source>
+        <translation>Editar
+ciclo</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a CYCL DEF block to edit it.</source>
+        <translation>Coloque o cursor num bloco CYCL DEF para o editar.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineRows</name>
+    <message>
+        <source>Increment
+continuous</source>
+        <translation>Incremento
+contínuo</translation>
+    </message>
+    <message>
+        <source>Increment
+%1 mm</source>
+        <translation>Incremento
+%1 mm</translation>
+    </message>
+    <message>
+        <source>Home
+all</source>
+        <translation>Referenciar
+todos</translation>
+    </message>
+    <message>
+        <source>Spindle
+on</source>
+        <translation>Mandril
+ligado</translation>
+    </message>
+    <message>
+        <source>Spindle
+off</source>
+        <translation>Mandril
+desligado</translation>
+    </message>
+    <message>
+        <source>NC
+start</source>
+        <translation>Arranque
+NC</translation>
+    </message>
+    <message>
+        <source>NC stop
+(feed hold)</source>
+        <translation>Paragem NC
+(parar avanço)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Continuar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Start at
+block</source>
+        <translation>Iniciar no
+bloco</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Iniciar no bloco</translation>
+    </message>
+    <message>
+        <source>Line of the first block</source>
+        <translation>Linha do primeiro bloco</translation>
+    </message>
+    <message>
+        <source>Single block
+on</source>
+        <translation>Bloco a bloco
+ligado</translation>
+    </message>
+    <message>
+        <source>Single block
+off</source>
+        <translation>Bloco a bloco
+desligado</translation>
+    </message>
+    <message>
+        <source>Execute
+block</source>
+        <translation>Executar
+bloco</translation>
+    </message>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Posicionamento com MDI</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloco</translation>
     </message>
 </context>
 </TS>

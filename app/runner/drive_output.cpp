@@ -72,12 +72,9 @@ void DriveOutput::setStart(const Pose& start, DiagnosticList& problems) {
         m_bootFailed = true;
         return;
     }
-    // Where the workpiece lies on the machine, as for --motion (main() checked the text).
+    // Where the workpiece lies on the machine, as for --motion.
     motion::MotionOptions motionOptions;
-    if (m_options.workOffset) {
-        if (auto offset = parseWorkOffset(*m_options.workOffset))
-            motionOptions.workOffset = offset->values;
-    }
+    motionOptions.workOffset = m_session.workOffset.values;
     auto machine =
         CanMachine::create(m_session.machine, std::move(sim).value(), start.values, motionOptions);
     if (!machine) {

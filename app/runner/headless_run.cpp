@@ -102,9 +102,12 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
             interp::RunStatus status =
                 interpreter.run(sinks, std::min(drives.blocksPerSlice(kBlocksPerSlice), left));
             if (status == interp::RunStatus::NeedsSync) {
-                // Without motion the machine is exactly where the program put it.
+                // Without motion the machine is exactly where the program put it, and a probe
+                // move touches at its programmed end point.
                 interp::WorldSnapshot world;
                 world.position = statistics.position();
+                world.probeTriggered = true;
+                world.probePosition = world.position;
                 if (motion.active()) world = motion.drain();
                 if (drives.active()) world = drives.drain();
                 interpreter.resume(world);

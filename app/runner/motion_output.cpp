@@ -25,11 +25,9 @@ double clean(double value) {
     return rounded == 0.0 ? 0.0 : rounded;
 }
 
-motion::MotionOptions motionOptions(const RunOptions& options) {
+motion::MotionOptions motionOptions(const Session& session) {
     motion::MotionOptions motion;
-    if (options.workOffset) {
-        if (auto offset = parseWorkOffset(*options.workOffset)) motion.workOffset = offset->values;
-    }
+    motion.workOffset = session.workOffset.values;
     return motion;
 }
 
@@ -60,7 +58,7 @@ struct MotionOutput::State final : canon::Sink {
     State(const RunOptions& runOptions, const Session& s)
         : options(runOptions),
           session(s),
-          model(motion::makeMachineModel(s.machine, motionOptions(runOptions))),
+          model(motion::makeMachineModel(s.machine, motionOptions(s))),
           checker(model) {}
 
     void consume(const canon::Command& command) override {
@@ -72,6 +70,7 @@ struct MotionOutput::State final : canon::Sink {
         }
         while (checker.next()) {
         }
+        if (std::holds_alternative<canon::ProbeMove>(command.body)) ++probesSinceDrain;
         held.push_back(command);
         if (held.size() >= kMaxHeldCommands) release();
     }
@@ -97,6 +96,13 @@ struct MotionOutput::State final : canon::Sink {
     std::vector<canon::Command> held;
     std::optional<SourceLocation> refusedAt;
     std::optional<motion::MotionReport> report;
+    // The probe results the program waited for (one per sync after probe moves).
+    struct ProbeResult {
+        bool triggered = false;
+        Pose position;  // latched tool tip, workpiece coordinates
+    };
+    std::vector<ProbeResult> probes;
+    int probesSinceDrain = 0;
 };
 
 MotionOutput::MotionOutput(const RunOptions& options, const Session& session) {
@@ -113,7 +119,7 @@ void MotionOutput::setStart(const Pose& start) {
     if (!m_state) return;
     State& s = *m_state;
     motion::SimulationOptions simulation;
-    simulation.motion = motionOptions(s.options);
+    simulation.motion = motionOptions(s.session);
     simulation.startPosition = start.values;
     if (s.options.samples) simulation.samplesCsvPath = s.options.samples->string();
     s.machine = std::make_unique<motion::SimulatedMachine>(s.session.machine, simulation);
@@ -134,6 +140,10 @@ interp::WorldSnapshot MotionOutput::drain() {
     }
     s.release();
     world = s.machine->drain();
+    if (s.probesSinceDrain > 0) {
+        s.probes.push_back({world.probeTriggered, world.probePosition});
+        s.probesSinceDrain = 0;
+    }
     // Plan on from where the machine is (after a probe move: where the probe stopped).
     s.checker.flush();
     while (s.checker.next()) {
@@ -154,7 +164,8 @@ void MotionOutput::finish(bool programRan, DiagnosticList& problems) {
                 KERF_TR_NOOP("the workpiece origin is at the machine origin; give its machine "
                              "coordinates with --work-offset, e.g. Z-300"));
             problems.push_back(std::move(d));
-            if (softLimit && !s.options.workOffset) problems.push_back(std::move(hint));
+            const bool atMachineOrigin = s.session.workOffset.values == Pose{}.values;
+            if (softLimit && atMachineOrigin) problems.push_back(std::move(hint));
         }
     } else if (programRan) {
         s.release();
@@ -196,6 +207,23 @@ void MotionOutput::addToReport(nlohmann::json& report, bool xInDiameter) const {
         position[std::string(1, letter)] = clean(value);
     }
     motion["final_position"] = position;
+    nlohmann::json probes = nlohmann::json::array();
+    for (const State::ProbeResult& probe : s.probes) {
+        nlohmann::json entry = {{"triggered", probe.triggered}};
+        if (probe.triggered) {
+            nlohmann::json latched = nlohmann::json::object();
+            for (char letter : s.session.machine.enabledAxisLetters()) {
+                const auto axis = axisFromLetter(letter);
+                if (!axis) continue;
+                double value = probe.position[*axis];
+                if (letter == 'X' && xInDiameter) value *= 2.0;
+                latched[std::string(1, letter)] = clean(value);
+            }
+            entry["position"] = latched;
+        }
+        probes.push_back(entry);
+    }
+    motion["probes"] = probes;
     if (s.options.samples) motion["samples"] = s.options.samples->string();
     report["motion"] = motion;
 }

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "app/runner/workpiece_origin.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
@@ -44,6 +45,8 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         return session;
     }
     session->machine = *machine;
+    const Pose origin = workpieceOrigin(session->machine, options.workOffset);
+    session->workOffset = origin;
     const bool lathe = session->machine.kind == machine::MachineKind::Lathe;
     if (options.dialect) {
         auto dialect = program::dialectFromName(*options.dialect);
@@ -80,8 +83,10 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         settings.zeroOffsetFile = ncRoot / "fagor_zero_offsets.tab";
         settings.toolFile = ncRoot / "fagor_tools.tab";
         settings.blockSkip = options.blockSkip ? 1 : 0;
+        settings.presetInMachine = origin;
         auto interpreter =
             std::make_unique<fagor::FagorInterpreter>(session->sources, std::move(settings));
+        session->workOffset = interpreter->streamOrigin();
         session->ready = interpreter->load(
             programPath, backgroundCheck ? fagor::FagorInterpreter::CheckMode::Background
                                          : fagor::FagorInterpreter::CheckMode::Inline);
@@ -99,6 +104,7 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     settings.tools = session->tools ? &*session->tools : nullptr;
     settings.ncRoot = ncRoot;
     settings.blockSkip = options.blockSkip;
+    settings.presetInMachine = origin;
     fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
     if (!stateDir.empty()) {
         fs::create_directories(stateDir, ignored);

@@ -25,6 +25,9 @@ struct Session {
     DiagnosticList diagnostics;
     DiagnosticList allDiagnostics() const;
     bool ready = false;  // the program loaded without errors and can run
+    // Machine coordinates of the stream's origin, motion's work offset: the workpiece origin
+    // (machine file presets, --work-offset) or, for FAGOR, the zero offset active at the start.
+    Pose workOffset{};
 };
 
 // With `backgroundCheck` the program's check runs alongside execution (see

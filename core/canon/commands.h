@@ -100,9 +100,12 @@ struct SetFeedMode {
     FeedMode mode = FeedMode::PerMinute;
 };
 
+// Feed move that ends when the probe touches (or, with untilRelease, stops touching: Fagor G76);
+// the machine decides where it ends, so a SyncPoint follows before the program reads positions.
 struct ProbeMove {
     Pose target;
     double feed = 0.0;
+    bool untilRelease = false;
 };
 
 enum class SyncReason : uint8_t { ReadPosition, ProbeResult, Inputs };

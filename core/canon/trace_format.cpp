@@ -207,6 +207,7 @@ struct BodyPrinter {
         out += "PROBE";
         appendPose(out, m.target, axes);
         appendWord(out, "F", m.feed, kFeedDecimals);
+        if (m.untilRelease) out += " UNTIL-RELEASE";
     }
     void operator()(const SyncPoint& m) {
         out += "SYNC ";

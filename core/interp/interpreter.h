@@ -4,6 +4,7 @@
 
 #include "core/base/diagnostic.h"
 #include "core/canon/commands.h"
+#include "core/interp/program_status.h"
 
 namespace kerf::interp {
 
@@ -38,6 +39,9 @@ public:
     // True when the program check (which may run alongside execution) found errors: then the
     // program must be treated as never started and everything it emitted discarded.
     virtual bool checkFailed() const = 0;
+    // A copy of the state the HMI status tabs show (program, tool, transformations, parameters,
+    // probe). Front ends without one report an empty status.
+    virtual ProgramStatus programStatus() const { return {}; }
 };
 
 }  // namespace kerf::interp

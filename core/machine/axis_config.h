@@ -21,6 +21,9 @@ struct AxisConfig {
     double maxAccelerationPerS2 = 1000.0;
     double maxJerkPerS3 = 10000.0;
     double homePosition = 0.0;
+    // Machine coordinate of the workpiece origin (the default preset); kerf run --work-offset
+    // overrides it.
+    double presetPosition = 0.0;
     bool optional = false;  // may be switched off in the file (a removable rotary table)
     bool enabled = true;
     bool diameterMode = false;  // lathe X: programmed and displayed as a diameter

@@ -50,6 +50,21 @@ struct BarConfig {
     friend bool operator==(const BarConfig&, const BarConfig&) = default;
 };
 
+// A workpiece the simulated touch probe can touch (kerf run --motion): a box in machine
+// coordinates of the tool tip (lathe X a radius); the probe touches while the tip is inside it.
+// Sides left at their default are unbounded, so one bound makes a plane.
+struct ProbeWorkpieceConfig {
+    bool enabled = false;
+    double xMinMm = -100000.0;
+    double xMaxMm = 100000.0;
+    double yMinMm = -100000.0;
+    double yMaxMm = 100000.0;
+    double zMinMm = -100000.0;
+    double zMaxMm = 100000.0;
+
+    friend bool operator==(const ProbeWorkpieceConfig&, const ProbeWorkpieceConfig&) = default;
+};
+
 // The machine configuration. Every field except `axes[i].letter` is a parameter of the schema in
 // core/machine/machine_schema.h, which loads, checks and writes it; the default member values are
 // the schema defaults. New sections (drives, ...) become new member structs plus schema entries.
@@ -64,7 +79,8 @@ struct MachineConfig {
     double servoPeriodMs = 1.0;
     double pathToleranceMm = 0.01;  // default corner-blending tolerance
     DrivesConfig drives;
-    BarConfig bar;  // lathe only
+    BarConfig bar;                        // lathe only
+    ProbeWorkpieceConfig probeWorkpiece;  // simulation only
 
     // The axis with this letter (enabled or not), or nullptr.
     const AxisConfig* axis(char letter) const;

@@ -111,6 +111,60 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
              .minimum = 0.0,
              .maximum = 10000.0,
              .description = KERF_TR_NOOP("Lathe: inner diameter of a tube; 0: a solid bar")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::enabled>(
+            kMachine, {.key = "simulation.probe.enabled",
+                       .description = KERF_TR_NOOP(
+                           "Simulation: a box-shaped workpiece the touch probe touches (G75, "
+                           "probing cycles); the bounds below, machine coordinates of the tool "
+                           "tip")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::xMinMm>(
+            kMachine,
+            {.key = "simulation.probe.x_min",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated probe workpiece: lowest machine X of the tool tip inside it")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::xMaxMm>(
+            kMachine,
+            {.key = "simulation.probe.x_max",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated probe workpiece: highest machine X of the tool tip inside it")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::yMinMm>(
+            kMachine,
+            {.key = "simulation.probe.y_min",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated probe workpiece: lowest machine Y of the tool tip inside it")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::yMaxMm>(
+            kMachine,
+            {.key = "simulation.probe.y_max",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated probe workpiece: highest machine Y of the tool tip inside it")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::zMinMm>(
+            kMachine,
+            {.key = "simulation.probe.z_min",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated probe workpiece: lowest machine Z of the tool tip inside it")}),
+        bindField<&MachineConfig::probeWorkpiece, &ProbeWorkpieceConfig::zMaxMm>(
+            kMachine,
+            {.key = "simulation.probe.z_max",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated probe workpiece: highest machine Z of the tool tip inside it")}),
         bindField<&MachineConfig::drives, &DrivesConfig::interface>(
             kMachine, {.key = "drives.interface",
                        .description = KERF_TR_NOOP("SocketCAN interface of the drive bus")}),
@@ -219,6 +273,15 @@ const std::vector<FieldBinding<AxisConfig>>& axisBindings() {
                     .maximum = 100000.0,
                     .description = KERF_TR_NOOP(
                         "Machine position after homing; must lie within the soft limits")}),
+        bindField<&AxisConfig::presetPosition>(
+            kAxis, {.key = "preset",
+                    .unit = "mm",
+                    .rotaryUnit = "deg",
+                    .minimum = -100000.0,
+                    .maximum = 100000.0,
+                    .description = KERF_TR_NOOP(
+                        "Machine coordinate of the workpiece origin (the default preset); kerf "
+                        "run --work-offset overrides it")}),
         bindField<&AxisConfig::optional>(
             kAxis, {.key = "optional",
                     .description = KERF_TR_NOOP(

@@ -1,6 +1,7 @@
 #include "core/machine/machine_validation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <iterator>
@@ -140,6 +141,17 @@ void checkMachine(const MachineConfig& config, Validator& v) {
                  KERF_TR_NOOP("{1} = {2} must not exceed {3} = {4}"), "spindle.min_rpm",
                  std::to_string(config.spindle.minRpm), "spindle.max_rpm",
                  std::to_string(config.spindle.maxRpm));
+    }
+    const ProbeWorkpieceConfig& probe = config.probeWorkpiece;
+    const std::array<std::array<double, 2>, 3> bounds{
+        {{probe.xMinMm, probe.xMaxMm}, {probe.yMinMm, probe.yMaxMm}, {probe.zMinMm, probe.zMaxMm}}};
+    for (size_t i = 0; i < bounds.size(); ++i) {
+        if (!probe.enabled || bounds[i][0] < bounds[i][1]) continue;
+        const std::string axis(1, "xyz"[i]);
+        const std::string low = "simulation.probe." + axis + "_min";
+        const std::string high = "simulation.probe." + axis + "_max";
+        v.report({low, high}, KERF_TR_NOOP("{1} = {2} must be less than {3} = {4}"), low,
+                 formatNumber(bounds[i][0]), high, formatNumber(bounds[i][1]));
     }
     if (config.bar.diameterMm > 0.0 && config.bar.boreDiameterMm >= config.bar.diameterMm) {
         v.report({"bar.bore_diameter", "bar.diameter"},

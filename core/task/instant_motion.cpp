@@ -18,6 +18,9 @@ bool InstantMotion::submit(const canon::Command& command) {
 interp::WorldSnapshot InstantMotion::world() const {
     interp::WorldSnapshot world;
     world.position = m_position;
+    // Nothing moves: a probe move touches at its programmed end point.
+    world.probeTriggered = true;
+    world.probePosition = m_position;
     return world;
 }
 

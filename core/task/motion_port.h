@@ -1,9 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/canon/commands.h"
 #include "core/interp/interpreter.h"
+#include "core/task/machine_status.h"
 
 namespace kerf::task {
 
@@ -38,6 +40,25 @@ public:
     virtual void feedHold() = 0;
     virtual void quickStop() = 0;  // stop on the path and discard what is queued
     virtual void setSingleBlock(bool on) = 0;
+
+    // What the HMI needs beyond a program run. The defaults suit a port without a machine
+    // (test run, tests): overrides are ignored, manual motion is refused (false), and the status
+    // is derived from world() and progress().
+
+    // Fractions: feed 0..1.5, rapid 0..1, spindle 0..1.5; motion changes speed within its limits.
+    virtual void setFeedOverride(double) {}
+    virtual void setRapidOverride(double) {}
+    virtual void setSpindleOverride(double) {}
+    // Manual operation while nothing runs. Velocity as a fraction of the axis' maximum (signed).
+    virtual bool jogContinuous(Axis, double /*velocityFraction*/) { return false; }
+    virtual bool jogStop(Axis) { return false; }
+    virtual bool jogIncrement(Axis, double /*distance*/) { return false; }
+    // Every axis in the machine's order (nullopt) or one axis.
+    virtual bool home(std::optional<Axis>) { return false; }
+    // Spindle and coolant in manual operation: executed as canonical commands.
+    virtual bool manualSpindle(const canon::SpindleControl& spindle);
+    virtual bool manualCoolant(const canon::CoolantControl& coolant);
+    virtual MachineStatus status() const;
 };
 
 }  // namespace kerf::task

@@ -62,15 +62,15 @@ void ProgramRun::start(std::unique_ptr<interp::Interpreter> interpreter, StartOp
     m_state = RunState::Running;
 }
 
-void ProgramRun::fail(std::string code, std::string messageTemplate,
-                      std::vector<std::string> args) {
+void ProgramRun::fail(std::string code, std::string messageTemplate, std::vector<std::string> args,
+                      std::optional<SourceLocation> at) {
     Diagnostic d;
     d.code = std::move(code);
     d.messageTemplate = std::move(messageTemplate);
     d.args = std::move(args);
-    const SourceLocation at = m_motion.progress().block;
-    d.line = at.line;
-    d.column = at.column;
+    const SourceLocation where = at.value_or(m_motion.progress().block);
+    d.line = where.line;
+    d.column = where.column;
     m_diagnostics.push_back(std::move(d));
     m_state = RunState::Failed;
 }
@@ -78,9 +78,12 @@ void ProgramRun::fail(std::string code, std::string messageTemplate,
 bool ProgramRun::submitQueued() {
     while (!m_queue.empty() && m_motion.hasRoom()) {
         if (!m_motion.submit(m_queue.front())) {
+            // The message names the refused block, not the one motion is executing.
+            const SourceLocation refused = m_queue.front().location;
             m_motion.quickStop();
+            m_queue.clear();
             fail("motion", KERF_TR_NOOP("motion refused the block: {1}"),
-                 {m_motion.progress().fault});
+                 {m_motion.progress().fault}, refused);
             return false;
         }
         m_queue.pop_front();

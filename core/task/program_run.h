@@ -56,12 +56,15 @@ public:
     SourceLocation executingBlock() const { return m_motion.progress().block; }
     const DiagnosticList& diagnostics() const { return m_diagnostics; }
     uint64_t blocksExecuted() const { return m_interpreter ? m_interpreter->blocksExecuted() : 0; }
+    // The running program's interpreter (status tabs); nullptr before start and after abort.
+    const interp::Interpreter* interpreter() const { return m_interpreter.get(); }
 
 private:
     class Collector;
     void interpretAhead();
     bool submitQueued();
-    void fail(std::string code, std::string messageTemplate, std::vector<std::string> args = {});
+    void fail(std::string code, std::string messageTemplate, std::vector<std::string> args = {},
+              std::optional<SourceLocation> at = std::nullopt);
 
     MotionPort& m_motion;
     std::unique_ptr<interp::Interpreter> m_interpreter;

@@ -90,7 +90,7 @@ void SimDriveSet::setPosition(int joint, double position) noexcept {
 
 void SimDriveSet::armProbe(bool armed) noexcept {
     m_probeArmed = armed;
-    m_probeWasTouching = false;
+    m_probeWasHit = false;
 }
 
 void SimDriveSet::advance(double dt) noexcept {
@@ -124,10 +124,16 @@ void SimDriveSet::advance(double dt) noexcept {
                 break;
         }
     }
-    if (m_probeArmed && m_probeSurface) {
-        bool touching = m_probeSurface(m_true);
-        if (touching && !m_probeWasTouching) {
-            // Touch probe latch: find the crossing inside the period by bisection.
+    if (m_probeArmed) {
+        // Without a workpiece the probe never touches.
+        const bool touchWanted = m_probeEvent == ProbeEvent::Touch;
+        auto hit = [&](const std::array<double, kMaxJoints>& joints) {
+            return (m_probeSurface && m_probeSurface(joints)) == touchWanted;
+        };
+        bool nowHit = hit(m_true);
+        if (nowHit && !m_probeWasHit) {
+            // Touch probe latch: find the crossing inside the period by bisection (the joints
+            // move linearly within a period in this model, so the crossing is exact).
             double lo = 0.0;
             double hi = 1.0;
             std::array<double, kMaxJoints> p{};
@@ -135,7 +141,7 @@ void SimDriveSet::advance(double dt) noexcept {
                 double mid = (lo + hi) / 2.0;
                 for (size_t i = 0; i < p.size(); ++i)
                     p[i] = before[i] + (m_true[i] - before[i]) * mid;
-                if (m_probeSurface(p))
+                if (hit(p))
                     hi = mid;
                 else
                     lo = mid;
@@ -145,7 +151,7 @@ void SimDriveSet::advance(double dt) noexcept {
             m_latched = true;
             m_probeArmed = false;
         }
-        m_probeWasTouching = touching;
+        m_probeWasHit = nowHit;
     }
 }
 

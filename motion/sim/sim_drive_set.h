@@ -29,6 +29,11 @@ public:
     // Probe model: true when the tool tip (in joint space) touches the workpiece.
     using ProbeSurface = std::function<bool(const std::array<double, kMaxJoints>& joints)>;
     void setProbeSurface(ProbeSurface surface) { m_probeSurface = std::move(surface); }
+    // What ends the next probe moves: the probe touching (G75) or no longer touching (G76).
+    // Like a touch probe's level input: armed while already in that state, it latches at once.
+    enum class ProbeEvent : uint8_t { Touch, Release };
+    void setProbeEvent(ProbeEvent event) noexcept { m_probeEvent = event; }
+    ProbeEvent probeEvent() const noexcept { return m_probeEvent; }
     void injectFault(int joint, uint16_t code) noexcept;
 
     // One period of the drives (after the servo cycle wrote its setpoints).
@@ -58,7 +63,8 @@ private:
     std::array<double, kMaxJoints> m_latch{};
     int m_enableCountdown = -1;
     bool m_probeArmed = false;
-    bool m_probeWasTouching = false;
+    bool m_probeWasHit = false;  // the awaited probe state held at the last period's end
+    ProbeEvent m_probeEvent = ProbeEvent::Touch;
     bool m_latched = false;
     bool m_haveSetpoint = false;
     ProbeSurface m_probeSurface;

@@ -4,6 +4,7 @@
 
 #include "motion/planner/planner.h"
 #include "motion/rt/servo_cycle.h"
+#include "motion/sim/probe_workpiece.h"
 
 namespace kerf::motion {
 
@@ -25,6 +26,9 @@ struct SimulatedMachine::Impl {
             }
         }
         drives.setTruePositions(joints);
+        if (!options.probeSurface) {
+            options.probeSurface = probeWorkpiece(config, options.motion.workOffset);
+        }
         if (options.probeSurface) {
             drives.setProbeSurface([this](const std::array<double, kMaxJoints>& j) {
                 return options.probeSurface(tipOf(j));
@@ -173,6 +177,15 @@ SimulatedMachine::~SimulatedMachine() = default;
 void SimulatedMachine::consume(const canon::Command& command) {
     Impl& m = *m_impl;
     if (m.planner.refused()) return;
+    if (const auto* probe = std::get_if<canon::ProbeMove>(&command.body)) {
+        const auto event =
+            probe->untilRelease ? SimDriveSet::ProbeEvent::Release : SimDriveSet::ProbeEvent::Touch;
+        if (event != m.drives.probeEvent()) {
+            // The drives arm for the event when the move starts: finish what is queued first.
+            m.runToIdle();
+            m.drives.setProbeEvent(event);
+        }
+    }
     if (m.planner.needsPosition()) {
         // A probe move ended where the probe stopped it: plan on from there.
         m.runToIdle();

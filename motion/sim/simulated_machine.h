@@ -31,6 +31,7 @@ struct SimulationOptions {
     bool autoCycleStart = true;  // press cycle start at M0/M1/single-block stops
     double maxSimulatedS = 24.0 * 3600.0;
     // The workpiece for probing: true when the tool tip (workpiece coordinates) touches it.
+    // Empty: the machine file's [simulation.probe] box, if it enables one.
     std::function<bool(const AxisVector& tip)> probeSurface;
     // Called after every servo cycle (tests).
     std::function<void(const Sample& sample, const MotionStatus& status)> onSample;

@@ -2,6 +2,8 @@
 
 #include <QMetaObject>
 
+#include "core/base/translate.h"
+#include "ui/editor/fagor_check.h"
 #include "ui/editor/klartext_check.h"
 
 namespace kerf::ui {
@@ -52,8 +54,19 @@ void ProgramChecker::work() {
 }
 
 DiagnosticList ProgramChecker::checkText(const Request& request) const {
-    if (request.dialect != program::Dialect::Klartext) return {};
-    return checkKlartextText(request.text, request.path.string(), m_machine, m_ncRoot);
+    switch (request.dialect) {
+        case program::Dialect::Klartext:
+            return checkKlartextText(request.text, request.path.string(), m_machine, m_ncRoot);
+        case program::Dialect::Fagor:
+            return checkFagorText(request.text, request.path.string(), m_machine, m_ncRoot);
+        case program::Dialect::TncIso:
+            break;
+    }
+    // One note for the whole program, on no line (nothing to underline): the program may well be
+    // right, it is only not checked.
+    return {Diagnostic::make(Severity::Note, "check", request.path.string(), 0, 0,
+                             KERF_TR_NOOP("TNC ISO programs (.I) are not checked: Kerf does "
+                                          "not interpret this dialect yet"))};
 }
 
 }  // namespace kerf::ui

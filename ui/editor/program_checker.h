@@ -16,8 +16,8 @@ namespace kerf::ui {
 
 // Checks the program being edited in a worker thread and reports its diagnostics back on the
 // UI thread. A new request replaces one not started yet; results of an outdated text are
-// dropped. Klartext programs are checked by the conversational interpreter; other dialects
-// are not checked yet and report nothing.
+// dropped. Klartext and FAGOR programs are checked as `kerf check` does; TNC ISO, which Kerf
+// does not interpret yet, gets a single note saying so.
 class ProgramChecker : public QObject {
     Q_OBJECT
 

@@ -3,11 +3,14 @@
 #include <QApplication>
 #include <QStandardPaths>
 #include <iostream>
+#include <optional>
 #include <system_error>
 
 #include "core/machine/machine_loader.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/shell/test_run_screen.h"
+#include "ui/shell/workspace.h"
 
 namespace kerf::ui {
 
@@ -33,11 +36,22 @@ bool applyStartMode(ModeController& modes, const std::string& mode) {
     return true;
 }
 
+// --layout: program; program + graphics; program + status; positions + status.
+std::optional<WorkspaceLayout> layoutNamed(const std::string& name) {
+    if (name == "program") return WorkspaceLayout::Program;
+    if (name == "graphics") return WorkspaceLayout::ProgramGraphics;
+    if (name == "status") return WorkspaceLayout::ProgramStatus;
+    if (name == "positions") return WorkspaceLayout::PositionsStatus;
+    return std::nullopt;
+}
+
 }  // namespace
 
 int runHmi(int argc, char** argv, const HmiOptions& options) {
-    // A screenshot needs no display: render offscreen unless the caller chose a platform.
-    if (!options.screenshot.empty() && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+    // A screenshot needs no display: without one (and unless the caller chose a platform) it
+    // renders offscreen, the 3D graphics left out; under X (xvfb-run) they are in the picture.
+    if (!options.screenshot.empty() && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
+        qEnvironmentVariableIsEmpty("DISPLAY")) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
     }
     QApplication application(argc, argv);
@@ -58,6 +72,12 @@ int runHmi(int argc, char** argv, const HmiOptions& options) {
         options.ncRoot.empty() ? data / "nc_prog" : std::filesystem::path(options.ncRoot);
     context.recoveryFolder = data / "recovery";
     context.programmingStation = options.programmingStation;
+    context.machineSource = options.machine;
+    if (options.connectMachine && !options.programmingStation) {
+        context.motion = [connect = options.connectMachine, config = *machine] {
+            return connect(config);
+        };
+    }
     std::error_code error;
     std::filesystem::create_directories(context.ncRoot, error);
 
@@ -78,12 +98,25 @@ int runHmi(int argc, char** argv, const HmiOptions& options) {
         std::cerr << "kerf: cannot open " << options.program << '\n';
         return 1;
     }
+    if (!options.layout.empty()) {
+        const auto layout = layoutNamed(options.layout);
+        if (!layout) {
+            std::cerr << "kerf: unknown layout " << options.layout
+                      << " (program, graphics, status, positions)\n";
+            return 2;
+        }
+        window.workspace()->setLayoutKind(*layout);
+    }
     window.resize(options.width, options.height);
     window.show();
     if (!options.screenshot.empty()) {
         // Let the window lay itself out and paint before taking the picture.
         for (int i = 0; i < 5; ++i)
             application.processEvents();
+        if (options.mode == "testrun" && !finishTestRunForPicture(window)) {
+            std::cerr << "kerf: the test run did not finish in time\n";
+            return 1;
+        }
         const QString file = QString::fromStdString(options.screenshot);
         if (!window.grab().save(file)) {
             std::cerr << "kerf: cannot write " << options.screenshot << '\n';

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
+
+#include "core/machine/machine_config.h"
+#include "core/task/motion_port.h"
 
 namespace kerf::ui {
 
@@ -14,7 +19,11 @@ struct HmiOptions {
     std::string
         mode;  // screen at start: manual, handwheel, mdi, single, full, programming, testrun
     std::string language;             // en, pt, pl; empty: the system's
+    std::string layout;               // program, graphics, status, positions; empty: the mode's
     bool programmingStation = false;  // no machine: Programming and Test run only
+    // Connects the machine (app/ decides: simulated or real drives); not called on a
+    // programming station. Empty: no program run or manual operation.
+    std::function<std::unique_ptr<task::MotionPort>(const machine::MachineConfig&)> connectMachine;
 };
 
 // Starts the operator panel and runs the Qt event loop; returns the process exit code.

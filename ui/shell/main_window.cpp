@@ -9,9 +9,8 @@
 #include <QVBoxLayout>
 
 #include "core/base/atomic_file.h"
-#include "core/tables/preset_table.h"
-#include "core/tables/tool_table.h"
 #include "ui/common/diagnostic_text.h"
+#include "ui/cycles/programming_softkeys.h"
 #include "ui/editor/find_bar.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
@@ -21,7 +20,11 @@
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/ui_language.h"
 #include "ui/shell/workspace.h"
+#include "ui/status/position_display.h"
+#include "ui/status/status_tabs.h"
 #include "ui/tables/table_editor.h"
+#include "ui/tables/table_kinds.h"
+#include "ui/viewport/graphics_panel.h"
 
 namespace kerf::ui {
 
@@ -32,15 +35,6 @@ QLabel* makeModeLabel(const QString& name, QWidget* parent) {
     label->setObjectName(name);
     label->setMinimumHeight(36);
     label->setMargin(6);
-    return label;
-}
-
-QLabel* makePanel(const QString& name, QWidget* parent) {
-    auto* label = new QLabel(parent);
-    label->setObjectName(name);
-    label->setAlignment(Qt::AlignCenter);
-    label->setFrameShape(QFrame::StyledPanel);
-    label->setMinimumWidth(200);
     return label;
 }
 
@@ -68,9 +62,10 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     programSettings.ncRoot = m_context.ncRoot;
     programSettings.recoveryFolder = m_context.recoveryFolder;
     m_program = new ProgramPanel(programSettings, central);
-    m_graphics = makePanel("graphicsPanel", central);
-    m_status = makePanel("statusPanel", central);
-    m_positions = makePanel("positionsPanel", central);
+    createGraphics(central);
+    m_status =
+        new StatusTabs(m_context.machine.kind == machine::MachineKind::Lathe ? 'P' : 'Q', central);
+    m_positions = new PositionDisplay(m_context.machine, central);
     m_workspace = new Workspace(m_program, m_graphics, m_status, m_positions, central);
 
     auto* middle = new QHBoxLayout();
@@ -90,6 +85,7 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     connect(m_tables, &TableEditor::message, m_messages, relay);
     connect(m_files, &FileManager::openRequested, this,
             [this](const std::filesystem::path& path) { openFile(path); });
+    createSetupPages(central);
 
     m_softkeys = new SoftkeyBar(central);
     layout->addWidget(m_softkeys);
@@ -105,6 +101,7 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
         showPanels();
         m_program->editor()->goToLine(line);
     });
+    connectSession();
     connect(m_program, &ProgramPanel::diagnosticsChanged, m_messages,
             &MessagePanel::setCheckDiagnostics);
     connect(m_program, &ProgramPanel::message, m_messages, relay);
@@ -129,9 +126,7 @@ bool MainWindow::openProgram(const std::filesystem::path& path) {
 }
 
 bool MainWindow::openFile(const std::filesystem::path& path) {
-    const QString extension = QString::fromStdString(path.extension().string()).toUpper();
-    static const QStringList kTables{".T", ".TCH", ".PR", ".D", ".PNT", ".TAB"};
-    if (kTables.contains(extension)) return showTable(path);
+    if (isTableFile(path)) return showTable(path);
     if (!openProgram(path)) return false;
     m_modes->requestProgrammingMode(task::ProgrammingMode::Programming);
     return true;
@@ -147,10 +142,7 @@ bool MainWindow::showTable(const std::filesystem::path& path) {
     std::error_code error;
     if (!std::filesystem::exists(path, error)) {
         // A fresh NC root gets the standard tables, as a new control has them.
-        const QString extension = QString::fromStdString(path.extension().string()).toUpper();
-        std::string content;
-        if (extension == ".T") content = tables::ToolTable::createDefault();
-        if (extension == ".PR") content = tables::PresetTable::createDefault();
+        const std::string content = defaultTableContent(tableKindOf(path), path);
         if (!content.empty()) {
             if (const MaybeError failed = writeFileAtomically(path, content)) {
                 m_messages->addMessage(Severity::Error, translatedMessage(*failed));
@@ -192,10 +184,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::retranslate() {
     setWindowTitle(tr("Kerf - %1").arg(QString::fromStdString(m_context.machine.name)));
-    m_graphics->setText(tr("Graphics"));
-    m_status->setText(tr("Status"));
-    m_positions->setText(
-        tr("Positions: %1").arg(QString::fromStdString(m_context.machine.enabledAxisLetters())));
     m_machineKeys->retranslate();
     refreshHeader();
     refreshSoftkeys();
@@ -220,7 +208,8 @@ SoftkeyRow MainWindow::commonRow() {
         {"layout", tr("Screen\nlayout"), [this] { cycleLayout(); }},
         {"files", tr("Files"), [this] { showFiles(); }},
         {"toolTable", tr("Tool\ntable"), [this, root] { showTable(root / "TOOL.T"); }},
-        {"presetTable", tr("Preset\ntable"), [this, root] { showTable(root / "PRESET.PR"); }},
+        {"tables", tr("Tables"), [this] { showSetupPage(Page::TableChooser); }},
+        {"mod", tr("MOD"), [this] { showSetupPage(Page::Mod); }},
         {"messages", tr("Message\nlist"),
          [this] { m_messages->setListVisible(m_messages->list()->isHidden()); }},
         {"clearMessages", tr("Clear\nmessages"), [this] { m_messages->clearMessages(); }},
@@ -262,8 +251,12 @@ std::vector<SoftkeyRow> MainWindow::tableRows() {
 void MainWindow::refreshSoftkeys() {
     if (m_page == Page::Files) return m_softkeys->setRows(fileRows());
     if (m_page == Page::Table) return m_softkeys->setRows(tableRows());
+    if (m_page != Page::Panels) return m_softkeys->setRows(setupRows());
     std::vector<SoftkeyRow> rows;
-    if (m_modes->screen() == ScreenMode::Programming) {
+    if (testRunOnScreen()) {
+        rows = testRunRows();
+        rows.push_back(commonRow());
+    } else if (m_modes->screen() == ScreenMode::Programming) {
         ProgramEditor* editor = m_program->editor();
         rows.push_back({
             {"save", tr("Save"), [this] { m_program->save(); }},
@@ -282,8 +275,15 @@ void MainWindow::refreshSoftkeys() {
             {"check", tr("Check\nprogram"), [this] { m_program->checkNow(); }},
             {"restore", tr("Restore\nautosave"), [this] { m_program->restoreRecovery(); }},
         });
+        // CYCL DEF, CYCL CALL, TOOL CALL and the path functions (ui/cycles).
+        const SoftkeyPaging paging{
+            [this](std::vector<SoftkeyRow> r) { m_softkeys->setRows(std::move(r)); },
+            [this] { refreshSoftkeys(); }};
         rows.push_back(commonRow());
+        for (SoftkeyRow& row : programmingEntryRows(editor, this, paging))
+            rows.push_back(std::move(row));
     } else {
+        rows = machineRows();
         rows.push_back(commonRow());
     }
     m_softkeys->setRows(std::move(rows));

@@ -3,8 +3,10 @@
 #include <QMainWindow>
 #include <QString>
 #include <filesystem>
+#include <optional>
 
 #include "core/machine/machine_config.h"
+#include "ui/session/machine_session.h"
 #include "ui/shell/softkey_bar.h"
 
 class QLabel;
@@ -15,8 +17,15 @@ class FileManager;
 class MachineKeys;
 class MessagePanel;
 class ModeController;
+class PositionDisplay;
+class StatusTabs;
 class ProgramPanel;
+class ModPage;
+class SettingsPage;
+class TableChooser;
 class TableEditor;
+class GraphicsPanel;
+class TestRunController;
 class Workspace;
 
 // What the window needs from the outside: the machine and the folders it works in.
@@ -25,6 +34,8 @@ struct HmiContext {
     std::filesystem::path ncRoot;          // programs and tables; the file manager stays inside
     std::filesystem::path recoveryFolder;  // autosave copies of unsaved programs
     bool programmingStation = false;       // no machine: Programming and Test run only
+    std::string machineSource;  // --machine: a built-in name or the TOML file (settings write it)
+    MotionFactory motion;       // the machine connection; none: no program run, no manual operation
 };
 
 // The operator panel: a header naming the machine mode and the programming mode, the message
@@ -45,6 +56,12 @@ public:
     ProgramPanel* program() const { return m_program; }
     FileManager* files() const { return m_files; }
     TableEditor* tables() const { return m_tables; }
+    GraphicsPanel* graphics() const { return m_graphics; }
+    TestRunController* testRun() const { return m_testRun; }
+    // Test run of the editor's program (main_window_testrun.cpp).
+    void startTestRun();
+    PositionDisplay* positions() const { return m_positions; }
+    MachineSession* session() const { return m_session; }  // nullptr without a machine
 
     // Full-screen pages over the workspace panels.
     void showFiles();
@@ -72,8 +89,21 @@ private:
     std::vector<SoftkeyRow> fileRows();
     std::vector<SoftkeyRow> tableRows();
     void nextLanguage();
+    // The machine session's wiring, keys and program start (main_window_session.cpp).
+    void connectSession();
+    std::vector<SoftkeyRow> machineRows();
+    void startEditorProgram(std::optional<uint32_t> startLine);
+    // The graphics panel and the test run (main_window_testrun.cpp).
+    void createGraphics(QWidget* parent);
+    bool testRunOnScreen() const;
+    void prepareTestRun();
+    std::vector<SoftkeyRow> testRunRows();
 
-    enum class Page { Panels, Files, Table };
+    enum class Page { Panels, Files, Table, TableChooser, Settings, Mod };
+    // The tables chooser, machine parameters and MOD (main_window_setup.cpp).
+    void createSetupPages(QWidget* central);
+    void showSetupPage(Page page);
+    std::vector<SoftkeyRow> setupRows();
 
     HmiContext m_context;
     ModeController* m_modes = nullptr;
@@ -82,13 +112,18 @@ private:
     MessagePanel* m_messages = nullptr;
     Workspace* m_workspace = nullptr;
     ProgramPanel* m_program = nullptr;
-    QLabel* m_graphics = nullptr;
-    QLabel* m_status = nullptr;
-    QLabel* m_positions = nullptr;
+    GraphicsPanel* m_graphics = nullptr;
+    TestRunController* m_testRun = nullptr;
+    StatusTabs* m_status = nullptr;
+    PositionDisplay* m_positions = nullptr;
+    MachineSession* m_session = nullptr;
     MachineKeys* m_machineKeys = nullptr;
     SoftkeyBar* m_softkeys = nullptr;
     FileManager* m_files = nullptr;
     TableEditor* m_tables = nullptr;
+    TableChooser* m_tableChooser = nullptr;
+    SettingsPage* m_settingsPage = nullptr;
+    ModPage* m_modPage = nullptr;
     Page m_page = Page::Panels;
 };
 

@@ -8,39 +8,16 @@
 #include <QMessageBox>
 #include <QTableView>
 #include <QVBoxLayout>
-#include <algorithm>
-#include <cctype>
 
-#include "core/tables/preset_table.h"
+#include "core/base/atomic_file.h"
+#include "core/interp/fagor/tables/table_text.h"
 #include "core/tables/table_file.h"
-#include "core/tables/table_validation.h"
-#include "core/tables/tool_table.h"
 #include "ui/common/diagnostic_text.h"
+#include "ui/tables/fagor_table_model.h"
+#include "ui/tables/table_kinds.h"
 #include "ui/tables/tnc_table_model.h"
 
 namespace kerf::ui {
-
-namespace {
-
-std::string upperExtension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return extension;
-}
-
-// The table with the column formats of its typed view, so that numeric columns refuse text
-// while it is typed. A file the typed view rejects is still opened, untyped, to be repaired.
-tables::TncTable typedTable(tables::TncTable table, const std::string& extension) {
-    if (extension == ".T") {
-        if (auto tools = tables::ToolTable::fromTable(table)) return tools->table();
-    } else if (extension == ".PR") {
-        if (auto presets = tables::PresetTable::fromTable(table)) return presets->table();
-    }
-    return table;
-}
-
-}  // namespace
 
 TableEditor::TableEditor(QWidget* parent) : QWidget(parent) {
     setObjectName("tableEditor");
@@ -75,15 +52,36 @@ void TableEditor::changeEvent(QEvent* event) {
 
 TableEditor::~TableEditor() = default;
 
-bool TableEditor::open(const std::filesystem::path& path) {
+EditableTableModel* TableEditor::loadModel(const std::filesystem::path& path) {
+    const TableKind kind = tableKindOf(path);
+    if (isFagorTable(kind)) {
+        auto bytes = readWholeFile(path);
+        if (!bytes) {
+            reportDiagnostic(bytes.error());
+            return nullptr;
+        }
+        auto text = fagor::TableText::parse(*bytes, path.string());
+        if (!text) {
+            reportDiagnostic(text.error());
+            return nullptr;
+        }
+        return new FagorTableModel(std::move(*text), fagorTableSpec(kind, m_axisLetters), this);
+    }
     auto table = tables::loadTable(path);
     if (!table) {
         reportDiagnostic(table.error());
-        return false;
+        return nullptr;
     }
+    return new TncTableModel(
+        typedTncTable(std::move(*table), kind), this,
+        [kind](const tables::TncTable& t) { return validateTncTable(t, kind); });
+}
+
+bool TableEditor::open(const std::filesystem::path& path) {
+    EditableTableModel* model = loadModel(path);
+    if (model == nullptr) return false;
     m_path = path;
-    auto* model = new TncTableModel(typedTable(std::move(*table), upperExtension(path)), this);
-    connect(model, &TncTableModel::refused, this, &TableEditor::reportDiagnostic);
+    connect(model, &EditableTableModel::refused, this, &TableEditor::reportDiagnostic);
     m_view->setModel(model);
     delete m_model;
     m_model = model;
@@ -99,18 +97,11 @@ bool TableEditor::modified() const {
 }
 
 DiagnosticList TableEditor::validate() const {
-    if (m_model == nullptr) return {};
-    const tables::TncTable& table = m_model->table();
-    const std::string extension = upperExtension(m_path);
-    if (extension == ".T") {
-        auto tools = tables::ToolTable::fromTable(table);
-        return tools ? DiagnosticList{} : DiagnosticList{tools.error()};
-    }
-    if (extension == ".PR") {
-        auto presets = tables::PresetTable::fromTable(table);
-        return presets ? DiagnosticList{} : DiagnosticList{presets.error()};
-    }
-    return tables::checkNumericCells(table);
+    return m_model == nullptr ? DiagnosticList{} : m_model->validate();
+}
+
+TncTableModel* TableEditor::model() const {
+    return qobject_cast<TncTableModel*>(m_model);
 }
 
 bool TableEditor::save() {
@@ -122,7 +113,7 @@ bool TableEditor::save() {
         emit message(Severity::Error, tr("Not saved: correct the table first"));
         return false;
     }
-    if (const MaybeError error = tables::saveTable(m_model->table(), m_path)) {
+    if (const MaybeError error = m_model->save(m_path)) {
         reportDiagnostic(*error);
         return false;
     }
@@ -136,8 +127,9 @@ bool TableEditor::insertRow() {
     if (m_model == nullptr) return false;
     const int row =
         m_view->currentIndex().isValid() ? m_view->currentIndex().row() : m_model->rowCount();
-    if (!m_model->insertKeyedRow(row)) return false;
-    m_view->setCurrentIndex(m_model->index(row, 0));
+    const int inserted = m_model->insertKeyedRow(row);
+    if (inserted < 0) return false;
+    m_view->setCurrentIndex(m_model->index(inserted, 0));
     return true;
 }
 

@@ -4,6 +4,7 @@
 #include <QWidget>
 #include <filesystem>
 #include <functional>
+#include <string>
 
 #include "core/base/diagnostic.h"
 
@@ -13,12 +14,14 @@ class QTableView;
 
 namespace kerf::ui {
 
+class EditableTableModel;
 class TncTableModel;
 
-// Editor page for the TNC tables (tool .T, preset .PR, and any other TNC table as plain cells):
-// cells are checked as they are typed, rows inserted and deleted (after confirmation), edits
-// undone, and the table is validated as a whole (unique tool numbers, numbers where numbers
-// belong) before an atomic save.
+// Editor page for the tables (docs/hmi.md, "Tables"): the TNC tool, preset, datum, point and
+// touch-probe tables (other TNC tables as plain cells) and the FAGOR tool offsets, zero offsets
+// and tools. Cells are checked as they are typed, rows inserted and deleted (after
+// confirmation), edits undone, and the table is validated as a whole (unique keys, numbers where
+// numbers belong, allowed words) before an atomic save.
 class TableEditor : public QWidget {
     Q_OBJECT
 
@@ -33,6 +36,8 @@ public:
 
     // Whole-table validation with the typed view matching the file (ToolTable for .T ...).
     DiagnosticList validate() const;
+    // Columns of the FAGOR zero offsets: the machine's axes ("XZ" unless told).
+    void setAxisLetters(std::string letters) { m_axisLetters = std::move(letters); }
 
     bool insertRow();  // above the current row (or at the end)
     bool deleteRow();  // the current row, after confirmation
@@ -40,7 +45,9 @@ public:
     bool find(const QString& text);
 
     void setConfirm(std::function<bool(const QString&)> confirm) { m_confirm = std::move(confirm); }
-    TncTableModel* model() const { return m_model; }
+    EditableTableModel* tableModel() const { return m_model; }
+    // The model of a TNC table; nullptr for the FAGOR tables.
+    TncTableModel* model() const;
     QTableView* view() const { return m_view; }
 
 protected:
@@ -52,9 +59,11 @@ signals:
 private:
     void retranslate();
     void reportDiagnostic(const Diagnostic& d);
+    EditableTableModel* loadModel(const std::filesystem::path& path);
 
     std::filesystem::path m_path;
-    TncTableModel* m_model = nullptr;
+    EditableTableModel* m_model = nullptr;
+    std::string m_axisLetters = "XZ";
     QTableView* m_view = nullptr;
     QLabel* m_title = nullptr;
     QLineEdit* m_search = nullptr;

@@ -7,6 +7,9 @@
 #include <set>
 #include <string>
 
+#include "core/tables/table_file.h"
+#include "core/tables/table_validation.h"
+
 namespace kerf::ui {
 
 namespace {
@@ -19,8 +22,8 @@ bool isIn(std::string_view name, std::initializer_list<std::string_view> names) 
 
 }  // namespace
 
-TncTableModel::TncTableModel(tables::TncTable table, QObject* parent)
-    : QAbstractTableModel(parent), m_table(std::move(table)) {}
+TncTableModel::TncTableModel(tables::TncTable table, QObject* parent, Validator validator)
+    : EditableTableModel(parent), m_table(std::move(table)), m_validator(std::move(validator)) {}
 
 int TncTableModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : static_cast<int>(m_table.rowCount());
@@ -55,7 +58,7 @@ QVariant TncTableModel::headerData(int section, Qt::Orientation orientation, int
 }
 
 Qt::ItemFlags TncTableModel::flags(const QModelIndex& index) const {
-    return QAbstractTableModel::flags(index) | Qt::ItemIsEditable;
+    return EditableTableModel::flags(index) | Qt::ItemIsEditable;
 }
 
 bool TncTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
@@ -81,7 +84,7 @@ void TncTableModel::remember() {
     if (m_undo.size() > kMaxUndo) m_undo.erase(m_undo.begin());
 }
 
-bool TncTableModel::insertKeyedRow(int row) {
+int TncTableModel::insertKeyedRow(int row) {
     row = std::clamp(row, 0, rowCount());
     double largest = -1;
     for (size_t r = 0; r < m_table.rowCount(); ++r) {
@@ -97,11 +100,11 @@ bool TncTableModel::insertKeyedRow(int row) {
         m_table = std::move(before);
         endResetModel();
         emit refused(inserted.error());
-        return false;
+        return -1;
     }
     m_undo.push_back(std::move(before));
     m_modified = true;
-    return true;
+    return row;
 }
 
 bool TncTableModel::removeTableRow(int row) {
@@ -130,30 +133,28 @@ void TncTableModel::undo() {
 
 QString TncTableModel::columnUnit(size_t column) const {
     const std::string& name = m_table.columns().at(column).name;
-    if (isIn(name,
-             {"L",    "R",    "R2",    "DL",       "DR", "DR2",    "LCUTS",  "PITCH",  "X",
-              "Y",    "Z",    "U",     "V",        "W",  "R-OFFS", "L-OFFS", "LBREAK", "RBREAK",
-              "LTOL", "RTOL", "R2TOL", "DIAMETER", "ZL", "XL",     "YL"})) {
+    if (isIn(name, {"L",      "R",       "R2",      "DL",   "DR",    "DR2",      "LCUTS",  "PITCH",
+                    "X",      "Y",       "Z",       "U",    "V",     "W",        "R-OFFS", "L-OFFS",
+                    "LBREAK", "RBREAK",  "LTOL",    "RTOL", "R2TOL", "DIAMETER", "ZL",     "XL",
+                    "YL",     "CAL_OF1", "CAL_OF2", "DIST", "SET_UP"})) {
         return m_table.unit() == "INCH" ? QStringLiteral("inch") : QStringLiteral("mm");
     }
-    if (isIn(name, {"ANGLE", "T-ANGLE", "A", "B", "C", "ROT"})) return QStringLiteral("\u00b0");
+    if (isIn(name, {"ANGLE", "T-ANGLE", "A", "B", "C", "ROT", "CAL_ANG"}))
+        return QStringLiteral("\u00b0");
     if (isIn(name, {"TIME1", "TIME2", "CUR_TIME", "CUR.TIME"})) return QStringLiteral("min");
+    // Only the touch-probe table has feed columns; elsewhere F may mean something else.
+    if (m_table.extension() == "TP" && isIn(name, {"F", "FMAX"})) {
+        return m_table.unit() == "INCH" ? QStringLiteral("inch/min") : QStringLiteral("mm/min");
+    }
     return {};
 }
 
-int TncTableModel::findRow(const QString& text, int from) const {
-    const int rows = rowCount();
-    for (int i = 0; i < rows; ++i) {
-        const int row = (from + i) % rows;
-        for (size_t column = 0; column < m_table.columns().size(); ++column) {
-            const std::string_view cell = m_table.cell(static_cast<size_t>(row), column);
-            if (QString::fromUtf8(cell.data(), static_cast<int>(cell.size()))
-                    .contains(text, Qt::CaseInsensitive)) {
-                return row;
-            }
-        }
-    }
-    return -1;
+DiagnosticList TncTableModel::validate() const {
+    return m_validator ? m_validator(m_table) : tables::checkNumericCells(m_table);
+}
+
+MaybeError TncTableModel::save(const std::filesystem::path& path) const {
+    return tables::saveTable(m_table, path);
 }
 
 }  // namespace kerf::ui

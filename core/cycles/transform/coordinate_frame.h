@@ -42,6 +42,8 @@ public:
     AxisMask mirror() const { return m_mirror; }
     double rotationDeg() const { return m_rotationDeg; }
     double scale() const { return m_scale; }
+    // Cycle 26 factors (1 for axes it does not scale), applied on top of scale().
+    const std::array<double, kAxisCount>& axisScale() const { return m_axisScale; }
 
 private:
     Pose m_shift{};

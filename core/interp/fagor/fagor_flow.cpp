@@ -208,6 +208,7 @@ bool FagorInterpreter::callSubroutine(Frame frame, int number, const LocalAssign
     frame.callBlock = m_blockOffset;
     frame.rangeStart = entry->body;
     frame.rangeProgram = owner;
+    frame.subroutine = number;
     m_frames.push_back(frame);
     readFrom(owner, entry->body);
     m_parameters.setOemAllowed(owner->oem);

@@ -44,6 +44,14 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
         m_selection = m_zeroOffsets->selection();
         m_startOffset = sum(m_zeroOffsets->selectedOffset(), m_zeroOffsets->plcOffset());
     }
+    if (m_selection == ZeroOffsetSelection{} &&
+        m_settings.presetInMachine.values != Pose{}.values) {
+        // No zero offset selected: the machine's workpiece origin acts as a G92 preset.
+        m_selection.preset = true;
+        m_selection.presetOffset = m_settings.presetInMachine;
+        m_startOffset = m_settings.presetInMachine;
+        if (m_zeroOffsets) m_startOffset = sum(m_startOffset, m_zeroOffsets->plcOffset());
+    }
     m_offset = m_startOffset;
     m_output.setZones(&m_zones);
     m_output.setMachineOffset(m_startOffset);
@@ -277,7 +285,11 @@ interp::RunStatus FagorInterpreter::run(canon::Sink& sink, uint64_t blockBudget)
             ++m_blocks;
         }
         executeBlock();
-        if (m_status == interp::RunStatus::BudgetUsed) afterBlock();
+        // A block that waits for the machine (G04 K0, G52, G75) is still done: an RPT range may
+        // end with it.
+        const bool done = m_status == interp::RunStatus::BudgetUsed ||
+                          (m_status == interp::RunStatus::NeedsSync && !m_resumeBlock);
+        if (done) afterBlock();
     }
     if (m_status == interp::RunStatus::Failed && waitForCheck()) {
         // The blocks before the error run; only the one that failed and those after it do not.
@@ -340,6 +352,10 @@ void FagorInterpreter::executeBlock() {
 void FagorInterpreter::resume(const interp::WorldSnapshot& world) {
     if (m_status != interp::RunStatus::NeedsSync) return;
     m_world = world.position;
+    if (m_pendingProbe) {
+        probeResult(world);
+        if (m_status == interp::RunStatus::Failed) return;
+    }
     // The operator may have moved the machine at a stop: continue from where it really is.
     if ((world.position.xyz() - m_output.position().xyz()).norm() > 1e-6) {
         m_position = world.position;

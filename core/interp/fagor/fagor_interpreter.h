@@ -54,12 +54,16 @@ public:
     uint64_t blocksExecuted() const override { return m_blocks; }
     Pose nominalPosition() const override { return m_position; }
     bool checkFailed() const override { return m_checkFailed; }
+    interp::ProgramStatus programStatus() const override;  // fagor_status.cpp
 
     // A general logic input INT1-INT4 became active: its subroutine (INT1SUB ...) runs before
     // the next block.
     void raiseInterrupt(int input);
 
     const Parameters& parameters() const { return m_parameters; }
+    // Machine coordinates of the stream's origin (the zero offset active at the start): motion's
+    // work offset.
+    Pose streamOrigin() const { return m_startOffset; }
 
 private:
     struct Frame {
@@ -80,6 +84,7 @@ private:
         Pose interruptedAt{};
         size_t callBlock = SIZE_MAX;  // offset of the calling block in `program`
         BlockPosition motionBlock;    // ModalCall: the block to run again (X10 N3)
+        int subroutine = -1;          // the subroutine this frame runs, for the status display
     };
     struct ToolState {
         int tool = 0;
@@ -110,6 +115,8 @@ private:
         bool absoluteCentre = false;      // G06
         bool machineCoordinates = false;  // G53
         bool hardStop = false;            // G52
+        int probe = 0;                    // G75 or G76
+        uint32_t probeColumn = 1;         // of the G75/G76 word
         ContourRequest request;           // G36-G39
     };
     struct OpenProgram {
@@ -193,6 +200,10 @@ private:
     bool threadData(const IsoBlock& iso, const ContourElement& element, ThreadData& out);
     bool machineCoordinateMove(const IsoBlock& iso);
     bool hardStopMove(const IsoBlock& iso);
+
+    // Probing G75/G76 (fagor_probing.cpp).
+    bool probeMove(const IsoBlock& iso);
+    void probeResult(const interp::WorldSnapshot& world);
     void ensureStreamFeedMode(canon::FeedMode mode);
 
     // F, S, T, D, M (fagor_machine.cpp).
@@ -278,6 +289,13 @@ private:
     bool m_resumeBlock = false;      // re-run the block after a sync
     bool m_syncedThisBlock = false;  // machine data is fresh for the block being re-run
     Pose m_world{};                  // the position the last sync reported
+    // The G75/G76 block waiting for the machine's probe result.
+    struct PendingProbe {
+        int g = 75;
+        SourceLocation at;
+    };
+    std::optional<PendingProbe> m_pendingProbe;
+    std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // for the status display
     int m_pendingInterrupt = 0;
 
     // Modal and machine state.

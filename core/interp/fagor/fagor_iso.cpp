@@ -79,7 +79,7 @@ void FagorInterpreter::executeIso(const IsoBlock& iso, int repetition) {
     bool subroutine = false;
     if (iso.mCount != 0 && !mFunctions(iso, true, subroutine)) return;
     if (subroutine) return;
-    const bool motion = hasMotion(iso) || m_functions.hardStop;
+    const bool motion = hasMotion(iso) || m_functions.hardStop || m_functions.probe != 0;
     if (repetition >= 0 && !(motion && (m_modalSubroutine >= 0 || m_modalProgram >= 0))) {
         m_at.column = program::columnOf(m_line.text, m_block.repetitionOffset);
         fail("repetition",
@@ -196,6 +196,10 @@ bool FagorInterpreter::applyModalFunctions(const IsoBlock& iso) {
             case GGroup::None:
                 if (n == 6) m_functions.absoluteCentre = true;
                 if (n == 52) m_functions.hardStop = true;
+                if (n == 75 || n == 76) {
+                    m_functions.probe = n;
+                    m_functions.probeColumn = m_at.column;
+                }
                 if (n == 4 && !dwellOrStop(iso)) return false;
                 if (n == 37) {
                     const double r = iso.cornerR.present ? iso.cornerR.value : 0.0;
@@ -220,8 +224,8 @@ bool FagorInterpreter::applyModalFunctions(const IsoBlock& iso) {
         fail("geometry", KERF_TR_NOOP("G06 belongs in a circular interpolation block"));
         return false;
     }
-    if (m_functions.hardStop) {
-        m_modal.motion = 1;  // G52 leaves G01 and G40
+    if (m_functions.hardStop || m_functions.probe != 0) {
+        m_modal.motion = 1;  // G52, G75 and G76 leave G01 and G40
         m_modal.side = interp::CompSide::None;
     }
     return true;

@@ -445,6 +445,7 @@ bool FagorInterpreter::submit(const ContourElement& programmed, MoveKind kind,
 }
 
 bool FagorInterpreter::executeMotion(const IsoBlock& iso) {
+    if (m_functions.probe != 0) return probeMove(iso);
     if (m_functions.machineCoordinates) return machineCoordinateMove(iso);
     if (m_functions.hardStop) return hardStopMove(iso);
     const int form = m_functions.arcForm != 0 ? m_functions.arcForm : m_modal.motion;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/geometry/axes.h"
 #include "core/geometry/plane.h"
 #include "core/interp/fagor/m_functions.h"
 #include "core/machine/machine_config.h"
@@ -20,6 +21,9 @@ struct FagorSettings {
     std::filesystem::path zeroOffsetFile;  // empty: no table
     std::filesystem::path toolFile;        // empty: tool n uses offset n
     uint8_t blockSkip = 0;                 // PLC marks BLKSKIP1-3 (bit 0: '/' and '/1')
+    // The machine's workpiece origin (machine file presets, kerf run --work-offset), machine
+    // coordinates: the zero offset in effect when the table selects none (like G92).
+    Pose presetInMachine{};
 
     // General machine parameters.
     bool imoveLinear = false;                   // IMOVE: G01 (true) or G00 at reset
@@ -41,6 +45,7 @@ struct FagorSettings {
     std::array<int, 4> interruptSubroutines{};  // INT1SUB-INT4SUB
     std::vector<MFunctionEntry> mFunctions = defaultMFunctionTable();
     int operatingMode = 10;  // OPMODE: automatic execution
+    bool probeError = true;  // PROBERR (P119): G75/G76 ending without a probe event is an error
 
     int maxCallNesting = 15;
 };

@@ -7,7 +7,7 @@ namespace kerf::fagor {
 // Sets of G functions of which a block may contain only one (spec part 1 §5.1).
 enum class GGroup : uint8_t {
     None,
-    Motion,        // G00 G01 G02 G03 G33 G34 (G75 G76)
+    Motion,        // G00 G01 G02 G03 G33 G34 (G75 G76 are one-shot: see g_rules.cpp)
     ArcForm,       // G08 G09
     Plane,         // G16 G17 G18 G19
     Units,         // G70 G71

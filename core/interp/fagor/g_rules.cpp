@@ -65,7 +65,16 @@ bool checkGFunctions(const IsoBlock& iso, Problem& problem) {
             if (n == 52 || m == 52) {
                 const int partner = n == 52 ? m : n;
                 conflict = partner == 0 || partner == 2 || partner == 3 || partner == 33 ||
-                           partner == 34 || partner == 41 || partner == 42;
+                           partner == 34 || partner == 41 || partner == 42 || partner == 75 ||
+                           partner == 76;
+            }
+            if (n == 75 || n == 76 || m == 75 || m == 76) {
+                // Probing moves (spec part 2 §3): not with each other, G00, G02, G03, G33, G34,
+                // G41, G42 (nor G52, above); G01 is what they run as.
+                const int partner = n == 75 || n == 76 ? m : n;
+                conflict = partner == 0 || partner == 2 || partner == 3 || partner == 33 ||
+                           partner == 34 || partner == 41 || partner == 42 || partner == 52 ||
+                           partner == 75 || partner == 76;
             }
             if (n == 74 || m == 74) conflict = true;
             if (conflict) {

@@ -138,6 +138,8 @@ void NoseCompensation::output(const Piece& piece) {
     } else if (piece.kind == MoveKind::Thread) {
         command.body = canon::SpindleSyncedMove{p.end, piece.thread.lead, piece.thread.startAngle,
                                                 piece.thread.leadChange};
+    } else if (piece.kind == MoveKind::ProbeTouch || piece.kind == MoveKind::ProbeRelease) {
+        command.body = canon::ProbeMove{p.end, piece.feed, piece.kind == MoveKind::ProbeRelease};
     } else {
         command.body = canon::LinearMove{p.end, piece.feed};
     }

@@ -46,7 +46,20 @@ bool Parameters::set(int number, double value, Problem& problem) {
     double* p = slotOf(*this, number, problem);
     if (p == nullptr) return false;
     *p = value;
+    if (number >= 0 && number <= 25) {
+        m_localSet[static_cast<size_t>(m_level)] |= 1u << number;
+    } else if (number >= 100 && number <= 299) {
+        m_globalSet.set(static_cast<size_t>(number - 100));
+    }
     return true;
+}
+
+bool Parameters::isSet(int number) const {
+    if (number >= 0 && number <= 25) {
+        return ((m_localSet[static_cast<size_t>(m_level)] >> number) & 1u) != 0;
+    }
+    if (number >= 100 && number <= 299) return m_globalSet.test(static_cast<size_t>(number - 100));
+    return false;
 }
 
 bool Parameters::pushLocalLevel(const LocalAssignments& locals) {
@@ -54,6 +67,7 @@ bool Parameters::pushLocalLevel(const LocalAssignments& locals) {
     ++m_level;
     m_locals[static_cast<size_t>(m_level)] = locals.values;
     m_defined[static_cast<size_t>(m_level)] = locals.defined;
+    m_localSet[static_cast<size_t>(m_level)] = locals.defined;
     return true;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 
 #include "core/interp/fagor/problem.h"
@@ -17,6 +18,9 @@ public:
 
     bool get(int number, double& out, Problem& problem) const;
     bool set(int number, double value, Problem& problem);
+    // Whether the run gave the parameter a value (locals: of the current level, including those
+    // the call assigned). Only locals and globals are tracked.
+    bool isSet(int number) const;
 
     // A new local level for PCALL/MCALL; false when 6 are already nested.
     bool pushLocalLevel(const LocalAssignments& locals);
@@ -37,6 +41,8 @@ private:
     std::array<uint32_t, kMaxLocalLevels + 1> m_defined{};
     int m_level = 0;
     std::array<double, 200> m_globals{};
+    std::array<uint32_t, kMaxLocalLevels + 1> m_localSet{};
+    std::bitset<200> m_globalSet;
     std::array<double, 256> m_manufacturer{};
     std::array<double, 256> m_oem{};
     bool m_localsAllowed = true;

@@ -8,7 +8,8 @@
 
 namespace kerf::fagor {
 
-enum class MoveKind : uint8_t { Rapid, Feed, Thread };
+// Probe moves are feed moves that end where the probe touches (G75) or stops touching (G76).
+enum class MoveKind : uint8_t { Rapid, Feed, Thread, ProbeTouch, ProbeRelease };
 
 // G33/G34: lead per spindle revolution, start angle, lead change per revolution.
 struct ThreadData {

@@ -179,6 +179,7 @@ bool KlartextInterpreter::resolveParameters(
 }
 
 void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
+    m_lastCycleDefined = def.number;
     if (def.subNumber >= 0) {
         executeOldCycle(def);
         return;

@@ -74,6 +74,7 @@ public:
     // Workpiece coordinates of the start preset (the frame of the canonical stream).
     Pose nominalPosition() const override { return m_frame.toWorkpiece(m_programmed); }
     bool checkFailed() const override { return m_checkFailed; }
+    interp::ProgramStatus programStatus() const override;  // klartext_status.cpp
 
     const QParameters& parameters() const { return m_q; }
 
@@ -312,6 +313,7 @@ private:
 
     // Cycles.
     std::optional<StoredCycle> m_cycle;  // last defined machining cycle
+    int m_lastCycleDefined = -1;         // any cycle, for the status display
     int m_oldCycle = -1;                 // old-style cycle whose sub-blocks are being read
     bool m_modalCycleCall = false;       // M89
     cycles::CycleValues m_globals;       // GLOBAL DEF values

@@ -36,7 +36,11 @@ const char* qPrefix(QKind kind) {
 }
 
 QParameters::QParameters()
-    : m_q(kQCount, 0.0), m_local(1), m_strings(kQsCount), m_stringSet(kQsCount, false) {
+    : m_q(kQCount, 0.0),
+      m_local(1),
+      m_localSet(1),
+      m_strings(kQsCount),
+      m_stringSet(kQsCount, false) {
     m_local.back().fill(0.0);
 }
 
@@ -58,10 +62,12 @@ void QParameters::set(QRef ref, double value) {
     switch (ref.kind) {
         case QKind::QL:
             m_local.back()[ref.index] = value;
+            m_localSet.back().set(ref.index);
             return;
         case QKind::QR:
             if (m_remanent[ref.index] != value) m_remanentChanged = true;
             m_remanent[ref.index] = value;
+            m_remanentSet.set(ref.index);
             return;
         case QKind::QS:
             return;
@@ -69,6 +75,21 @@ void QParameters::set(QRef ref, double value) {
             break;
     }
     m_q[ref.index] = value;
+    m_qSet.set(ref.index);
+}
+
+bool QParameters::isSet(QRef ref) const {
+    switch (ref.kind) {
+        case QKind::QL:
+            return m_localSet.back().test(ref.index);
+        case QKind::QR:
+            return m_remanentSet.test(ref.index);
+        case QKind::QS:
+            return m_stringSet[ref.index];
+        case QKind::Q:
+            break;
+    }
+    return m_qSet.test(ref.index);
 }
 
 void QParameters::setString(uint16_t index, std::string value) {
@@ -79,10 +100,14 @@ void QParameters::setString(uint16_t index, std::string value) {
 void QParameters::pushLocalLevel() {
     m_local.emplace_back();
     m_local.back().fill(0.0);
+    m_localSet.emplace_back();
 }
 
 void QParameters::popLocalLevel() {
-    if (m_local.size() > 1) m_local.pop_back();
+    if (m_local.size() > 1) {
+        m_local.pop_back();
+        m_localSet.pop_back();
+    }
 }
 
 MaybeError QParameters::loadRemanent(const std::filesystem::path& file) {
@@ -113,6 +138,7 @@ MaybeError QParameters::loadRemanent(const std::filesystem::path& file) {
                                     KERF_TR_NOOP("expected QRn=value"));
         }
         m_remanent[index] = value;
+        m_remanentSet.set(index);
     }
     m_remanentChanged = false;
     return std::nullopt;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -37,6 +38,8 @@ public:
 
     double get(QRef ref) const;
     void set(QRef ref, double value);
+    // Whether the run (or the remanent file) gave the parameter a value; QL of the current level.
+    bool isSet(QRef ref) const;
     const std::string& getString(uint16_t index) const { return m_strings[index]; }
     bool stringDefined(uint16_t index) const { return m_stringSet[index]; }
     void setString(uint16_t index, std::string value);
@@ -53,6 +56,9 @@ private:
     std::vector<double> m_q;
     std::vector<std::array<double, kQlCount>> m_local;
     std::array<double, kQrCount> m_remanent{};
+    std::bitset<kQCount> m_qSet;
+    std::vector<std::bitset<kQlCount>> m_localSet;
+    std::bitset<kQrCount> m_remanentSet;
     std::vector<std::string> m_strings;
     std::vector<bool> m_stringSet;
     bool m_remanentChanged = false;

@@ -206,14 +206,50 @@ TEST(MachineLoaderErrors, BarBoreMustBeSmallerThanTheBar) {
 
 TEST(MachineLoader, LatheBarFromTheFile) {
     DiagnosticList problems;
-    auto config = parseMachine("base = \"lathe\"\n[bar]\ndiameter = 80\nlength = 200.5\n"
-                               "face_z = 2\nbore_diameter = 20\n",
-                               "mylathe.toml", &problems);
+    auto config = parseMachine(
+        "base = \"lathe\"\n[bar]\ndiameter = 80\nlength = 200.5\n"
+        "face_z = 2\nbore_diameter = 20\n",
+        "mylathe.toml", &problems);
     ASSERT_TRUE(config) << (problems.empty() ? "" : problems.front().format());
     EXPECT_EQ(config->bar.diameterMm, 80.0);
     EXPECT_EQ(config->bar.lengthMm, 200.5);
     EXPECT_EQ(config->bar.faceZMm, 2.0);
     EXPECT_EQ(config->bar.boreDiameterMm, 20.0);
+}
+
+TEST(MachineLoaderErrors, SimulatedProbeBoxNeedsLowerBoundsBelowUpperOnes) {
+    // "z_min = 5" is at line 4, column 9 of the file.
+    EXPECT_EQ(problemsOf("base = \"lathe\"\n"
+                         "[simulation.probe]\n"
+                         "enabled = true\n"
+                         "z_min = 5\n"
+                         "z_max = -2\n"),
+              Lines{"mymill.toml:4:9: error: simulation.probe.z_min = 5 must be less than "
+                    "simulation.probe.z_max = -2"});
+    // Switched off, the bounds are not checked.
+    EXPECT_EQ(problemsOf("base = \"lathe\"\n[simulation.probe]\nz_min = 5\nz_max = -2\n"),
+              Lines{"(loaded)"});
+}
+
+TEST(MachineLoader, PresetAndSimulatedProbeFromTheFile) {
+    const MachineConfig config = loaded(
+        "base = \"lathe\"\n[axes.Z]\npreset = -100\n"
+        "[simulation.probe]\nenabled = true\nx_max = 30\nz_max = -102.5\n");
+    EXPECT_EQ(config.axis('Z')->presetPosition, -100.0);
+    EXPECT_EQ(config.axis('X')->presetPosition, 0.0);
+    EXPECT_TRUE(config.probeWorkpiece.enabled);
+    EXPECT_EQ(config.probeWorkpiece.xMaxMm, 30.0);
+    EXPECT_EQ(config.probeWorkpiece.zMaxMm, -102.5);
+    // Bounds not given stay open.
+    EXPECT_EQ(config.probeWorkpiece.xMinMm, -100000.0);
+    EXPECT_EQ(config.probeWorkpiece.zMinMm, -100000.0);
+    // The built-in machines keep the workpiece origin at the machine origin, with no probe box.
+    for (const char* name : {"mill", "lathe"}) {
+        const MachineConfig machine = builtin(name);
+        for (const AxisConfig& axis : machine.axes)
+            EXPECT_EQ(axis.presetPosition, 0.0) << name << " " << axis.letter;
+        EXPECT_FALSE(machine.probeWorkpiece.enabled) << name;
+    }
 }
 
 TEST(MachineLoaderErrors, DriveNodesAreUniqueAndNotTheMasters) {

@@ -194,6 +194,9 @@ TEST_F(ProgramRunTest, RefusedBlocksAndAbort) {
     motion.fault = "X+1 beyond the soft limit";
     run.service();
     EXPECT_EQ(run.state(), RunState::Failed);
+    // The message points at the refused block (line 2), not at what motion executes.
+    ASSERT_FALSE(run.diagnostics().empty());
+    EXPECT_EQ(run.diagnostics().back().line, 2u);
     ProgramRun second(motion);
     motion.refuse = false;
     second.start(load("0 BEGIN PGM A MM\n1 L X+1 Y+0 Z+0 R0 FMAX\n2 END PGM A MM\n"));

@@ -127,7 +127,8 @@ TEST(MainWindow, SoftkeyRowsFollowTheScreenAndFunctionKeys) {
     const QString manualFirstKey = window.softkeys()->keyButton(0)->text();
     window.modes().requestProgrammingMode(ProgrammingMode::Programming);
     EXPECT_NE(window.softkeys()->keyButton(0)->text(), manualFirstKey);
-    EXPECT_EQ(window.softkeys()->rowCount(), 2);
+    // Editing, the common row, then CYCL DEF / path functions (two rows).
+    EXPECT_EQ(window.softkeys()->rowCount(), 4);
     // F9 pages to the second row, whose first key (F1) changes the layout.
     QTest::keyClick(&window, Qt::Key_F9);
     EXPECT_EQ(window.softkeys()->currentRow(), 1);
@@ -224,7 +225,7 @@ TEST(MainWindow, LanguageSwitchesAtRunTime) {
     test::testApp();
     MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_window_language")));
     window.show();
-    EXPECT_EQ(availableLanguages(), (QStringList{"en", "pl", "pt"}));
+    EXPECT_EQ(availableLanguages(), (QStringList{"en", "de", "es", "pl", "pt"}));
     window.modes().requestProgrammingMode(ProgrammingMode::Programming);
     ASSERT_TRUE(window.setLanguage("pt"));
     QCoreApplication::processEvents();  // LanguageChange is posted to each window

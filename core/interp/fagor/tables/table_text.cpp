@@ -220,6 +220,17 @@ void TableText::set(std::string_view key, std::string_view name, double value, i
     (void)parseLine(index);
 }
 
+bool TableText::removeRow(std::string_view key) {
+    const TableRow* existing = row(key);
+    if (existing == nullptr) return false;
+    m_lines.erase(m_lines.begin() + static_cast<std::ptrdiff_t>(existing->line));
+    // The lines after it moved up: index the rows again.
+    m_rows.clear();
+    for (size_t i = 0; i < m_lines.size(); ++i)
+        (void)parseLine(i);
+    return true;
+}
+
 void TableText::replaceRow(std::string_view key, std::string_view fields) {
     std::string text = std::string(key);
     if (!fields.empty()) text += " " + std::string(fields);

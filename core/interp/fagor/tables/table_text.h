@@ -51,6 +51,8 @@ public:
     void set(std::string_view key, std::string_view name, double value, int decimals = 4);
     // Replaces a row's fields (used for rows whose fields repeat names, such as ACTIVE).
     void replaceRow(std::string_view key, std::string_view fields);
+    // Removes the row's line, with any comment on it; false when there is no such row.
+    bool removeRow(std::string_view key);
 
     Diagnostic error(size_t line, size_t column, const char* messageTemplate,
                      std::vector<std::string> args = {}) const;

@@ -31,6 +31,17 @@ TEST(FagorTableText, EditRewritesOnlyTheField) {
     EXPECT_EQ(table->serialize(), "D1 X+7.25 Z-30 F3 R0.4\nD2 X0.3333\nD3 Z-1.5\n");
 }
 
+TEST(FagorTableText, RemovedRowTakesItsLineAndLaterRowsStayEditable) {
+    auto table = TableText::parse("%TOOL OFFSETS,MX,\nD1 X1 ; first\nD2 X2\nD3 X3\n", "t.tab");
+    ASSERT_TRUE(table.ok());
+    EXPECT_TRUE(table->removeRow("D1"));
+    EXPECT_FALSE(table->removeRow("D7"));
+    table->set("D3", "Z", 4.0);
+    EXPECT_EQ(table->serialize(), "%TOOL OFFSETS,MX,\nD2 X2\nD3 X3 Z4\n");
+    ASSERT_EQ(table->rows().size(), 2u);
+    EXPECT_EQ(table->rows()[0].line, 1u);
+}
+
 TEST(FagorTableText, ErrorsNameLineAndColumn) {
     auto bad = TableText::parse("D1 X1\nD2 X1 Zabc\n", "t.tab");
     ASSERT_FALSE(bad.ok());

@@ -1,0 +1,81 @@
+// The state the HMI status tabs show, copied out of the FAGOR interpreter.
+#include "core/interp/fagor/fagor_interpreter.h"
+
+namespace kerf::fagor {
+namespace {
+
+// "G54", "G54 G58", "G159 N7", "G92"; empty without a zero offset.
+std::string zeroOffsetName(const ZeroOffsetSelection& s) {
+    if (s.preset) return "G92";
+    std::string name;
+    if (s.byG159) {
+        name = "G159 N" + std::to_string(s.absolute);
+    } else if (s.absolute != 0) {
+        name = "G" + std::to_string(53 + s.absolute);
+    }
+    if (s.additive != 0) {
+        if (!name.empty()) name += ' ';
+        name += "G" + std::to_string(53 + s.additive);
+    }
+    return name;
+}
+
+// M functions that act once (stops, end, tool change) are not shown as active.
+bool isOneShot(int m) {
+    return m == 0 || m == 1 || m == 2 || m == 6 || m == 30;
+}
+
+}  // namespace
+
+interp::ProgramStatus FagorInterpreter::programStatus() const {
+    interp::ProgramStatus status;
+    if (!m_programs.empty()) status.mainProgram = m_sources.displayName(m_programs.front()->fileId);
+    if (m_program != nullptr) status.activeProgram = m_sources.displayName(m_program->fileId);
+    for (auto frame = m_frames.rbegin(); frame != m_frames.rend(); ++frame) {
+        if (frame->subroutine >= 0) {
+            status.label = "SUB " + std::to_string(frame->subroutine);
+            break;
+        }
+    }
+    for (size_t m = 0; m < m_mActive.size(); ++m) {
+        if (m_mActive[m] && !isOneShot(static_cast<int>(m))) {
+            status.activeM.push_back(static_cast<int>(m));
+        }
+    }
+    status.line = m_at.line;
+    status.inch = m_modal.inch;
+    status.parameterLetter = 'P';
+
+    status.tool.number = m_tool.tool > 0 ? m_tool.tool : -1;
+    status.tool.radiusMm = m_tool.data.radius;
+    status.tool.lathe = interp::ProgramStatus::Tool::LatheOffset{
+        m_tool.offset,     m_tool.data.x,     m_tool.data.z,
+        m_tool.data.wearX, m_tool.data.wearZ, m_tool.data.location};
+
+    auto& t = status.transformations;
+    t.datum = zeroOffsetName(m_selection);
+    t.datumShift = m_offset;
+    t.mirrored = m_modal.mirror;
+    for (size_t i = 0; i < t.scale.size(); ++i) {
+        t.scale[i] = m_modal.scale * m_modal.axisScale[i];
+    }
+
+    status.probe = m_lastProbe;
+
+    using Scope = interp::ProgramStatus::ParameterScope;
+    const auto addParameter = [&](int number, Scope scope) {
+        if (!m_parameters.isSet(number)) return;
+        double value = 0.0;
+        Problem ignored;
+        if (!m_parameters.get(number, value, ignored)) return;
+        const int level = scope == Scope::Local ? m_parameters.localLevel() : 0;
+        status.parameters.push_back({"P" + std::to_string(number), value, {}, scope, level});
+    };
+    for (int p = 0; p <= 25; ++p)
+        addParameter(p, Scope::Local);
+    for (int p = 100; p <= 299; ++p)
+        addParameter(p, Scope::Global);
+    return status;
+}
+
+}  // namespace kerf::fagor

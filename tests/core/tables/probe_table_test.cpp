@@ -1,0 +1,80 @@
+#include "core/tables/probe_table.h"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace kerf::tables {
+namespace {
+
+TEST(ProbeTable, DefaultTableHasEveryColumnOfTheSpecAndProbeOne) {
+    // Widths: NO 5, TYPE 11, CAL_OF1 11, CAL_OF2 11, CAL_ANG 9, F 9, FMAX 9, DIST 8, SET_UP 8,
+    // F_PREPOS 14, TRACK 7, SERIAL 12.
+    const std::string expected =
+        "BEGIN TCHPROBE.TP MM\n"
+        "NO   TYPE       CAL_OF1    CAL_OF2    CAL_ANG  F        FMAX     DIST    SET_UP  "
+        "F_PREPOS      TRACK  SERIAL      \n"
+        "1    TS460      +0         +0         +0       1000     3000     20      2       "
+        "FMAX_PROBE    OFF                \n"
+        "[END]\n";
+    EXPECT_EQ(ProbeTable::createDefault(), expected);
+    auto probes = ProbeTable::parse(expected, "tchprobe.tp");
+    ASSERT_TRUE(probes.ok()) << probes.error().format();
+    ASSERT_EQ(probes->probes().size(), 1u);
+    const ProbeData* probe = probes->byNumber(1);
+    ASSERT_NE(probe, nullptr);
+    EXPECT_EQ(probe->type, "TS460");
+    EXPECT_EQ(probe->probingFeed, 1000.0);
+    EXPECT_EQ(probe->rapidFeed, 3000.0);
+    EXPECT_EQ(probe->maxProbingPath, 20.0);
+    EXPECT_EQ(probe->setUpClearance, 2.0);
+    EXPECT_FALSE(probe->prepositionAtMachineRapid);
+    EXPECT_FALSE(probe->track);
+}
+
+TEST(ProbeTable, ReadsCalibrationAndChoices) {
+    const std::string text =
+        "BEGIN TCHPROBE.TP MM\n"
+        "NO TYPE   CAL_OF1 CAL_OF2 CAL_ANG F    FMAX DIST SET_UP F_PREPOS     TRACK SERIAL\n"
+        "1  TS460  +0.012  -0.008  +90     500  2000 15   1.5    FMAX_MACHINE ON    12345\n"
+        "3  TS260  +0      +0      +0      300  1000 10   2      FMAX_PROBE   OFF\n"
+        "[END]\n";
+    auto probes = ProbeTable::parse(text, "tchprobe.tp");
+    ASSERT_TRUE(probes.ok()) << probes.error().format();
+    EXPECT_EQ(probes->serialize(), text);
+    const ProbeData* first = probes->byNumber(1);
+    ASSERT_NE(first, nullptr);
+    EXPECT_DOUBLE_EQ(first->centreOffsetMain, 0.012);
+    EXPECT_DOUBLE_EQ(first->centreOffsetSecondary, -0.008);
+    EXPECT_EQ(first->calibrationAngle, 90.0);
+    EXPECT_EQ(first->setUpClearance, 1.5);
+    EXPECT_TRUE(first->prepositionAtMachineRapid);
+    EXPECT_TRUE(first->track);
+    EXPECT_EQ(first->serial, "12345");
+    ASSERT_NE(probes->byNumber(3), nullptr);
+    EXPECT_FALSE(probes->byNumber(3)->track);
+    EXPECT_EQ(probes->byNumber(2), nullptr);
+}
+
+TEST(ProbeTable, RefusesBadValuesAtTheirCell) {
+    const std::string header =
+        "BEGIN TCHPROBE.TP MM\n"
+        "NO TYPE   F    DIST TRACK\n";
+    auto track = ProbeTable::parse(header + "1  TS460  500  15   YES\n[END]\n", "tchprobe.tp");
+    ASSERT_FALSE(track.ok());
+    EXPECT_EQ(track.error().line, 3u);
+    EXPECT_EQ(track.error().column, 21u);
+    EXPECT_NE(track.error().format().find("column TRACK needs OFF or ON, not \"YES\""),
+              std::string::npos)
+        << track.error().format();
+    auto feed = ProbeTable::parse(header + "1  TS460  0    15   ON\n[END]\n", "tchprobe.tp");
+    ASSERT_FALSE(feed.ok());
+    EXPECT_EQ(feed.error().column, 11u);
+    EXPECT_NE(feed.error().format().find("column F must be greater than 0"), std::string::npos);
+    auto duplicate = ProbeTable::parse(
+        header + "1  TS460  500  15   ON\n1  TS460  500  15   ON\n[END]\n", "tchprobe.tp");
+    EXPECT_FALSE(duplicate.ok());
+}
+
+}  // namespace
+}  // namespace kerf::tables

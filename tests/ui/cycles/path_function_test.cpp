@@ -1,0 +1,281 @@
+// Path-function and TOOL CALL dialogs, the cycle catalogue and the programming softkeys that
+// open them over the editor.
+#include <QApplication>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QTest>
+#include <QTextBlock>
+#include <QTimer>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "core/cycles/cycle_registry.h"
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "ui/cycles/cycle_catalogue.h"
+#include "ui/cycles/cycle_catalogue_dialog.h"
+#include "ui/cycles/cycle_dialog.h"
+#include "ui/cycles/cycle_help_picture.h"
+#include "ui/cycles/path_function_dialog.h"
+#include "ui/cycles/programming_softkeys.h"
+#include "ui/editor/klartext_check.h"
+#include "ui/editor/program_editor.h"
+
+namespace kerf::ui {
+namespace {
+
+void type(PathFunctionDialog& dialog, int field, const QString& text) {
+    auto* edit = qobject_cast<QLineEdit*>(dialog.input(field));
+    ASSERT_NE(edit, nullptr);
+    edit->setText(text);
+}
+
+void choose(PathFunctionDialog& dialog, int field, const QString& text) {
+    auto* combo = qobject_cast<QComboBox*>(dialog.input(field));
+    ASSERT_NE(combo, nullptr);
+    combo->setCurrentIndex(combo->findText(text));
+}
+
+TEST(PathFunctionDialog, WritesTheBlocksTheParserReads) {
+    test::testApp();
+    PathFunctionDialog line(PathFunction::Line);  // X Y Z R F M
+    type(line, 0, "10");
+    type(line, 1, "i-5.5");
+    choose(line, 3, "RL");
+    type(line, 4, "200");
+    type(line, 5, "3 8");
+    EXPECT_EQ(line.block(), "L X+10 IY-5.5 RL F200 M3 M8");
+
+    PathFunctionDialog arc(PathFunction::CircleRadius);  // X Y R DR R F M
+    type(arc, 0, "40");
+    type(arc, 1, "0");
+    type(arc, 2, "-20");
+    choose(arc, 3, "DR-");
+    EXPECT_EQ(arc.block(), "CR X+40 Y+0 R-20 DR-");
+
+    PathFunctionDialog centre(PathFunction::CircleCentre);
+    type(centre, 0, "50");
+    type(centre, 1, "Q7");
+    EXPECT_EQ(centre.block(), "CC X+50 Y+Q7");
+
+    PathFunctionDialog circle(PathFunction::Circle);
+    type(circle, 0, "50");
+    type(circle, 1, "0");
+    choose(circle, 2, "DR+");
+    EXPECT_EQ(circle.block(), "C X+50 Y+0 DR+");
+
+    PathFunctionDialog chamfer(PathFunction::Chamfer);
+    type(chamfer, 0, "5");
+    EXPECT_EQ(chamfer.block(), "CHF 5");
+
+    PathFunctionDialog rounding(PathFunction::Rounding);
+    type(rounding, 0, "2.5");
+    type(rounding, 1, "100");
+    EXPECT_EQ(rounding.block(), "RND R2.5 F100");
+
+    PathFunctionDialog tool(PathFunction::ToolCall);  // tool axis S F DL DR
+    type(tool, 0, "3");
+    type(tool, 2, "1000");
+    type(tool, 4, "-1");
+    type(tool, 5, "0.5");
+    EXPECT_EQ(tool.block(), "TOOL CALL 3 Z S1000 DL-1 DR+0.5");
+
+    PathFunctionDialog tangent(PathFunction::CircleTangential);
+    type(tangent, 0, "20");
+    type(tangent, 1, "10");
+    EXPECT_EQ(tangent.block(), "CT X+20 Y+10");
+
+    // The blocks in a program the Klartext check accepts (the chamfer between two lines, the
+    // tangential arc after a line, as the golden programs write them).
+    const QString program =
+        "0 BEGIN PGM PATH MM\n1 " + tool.block() + "\n2 L X+0 Y+0 Z+0 R0 FMAX\n3 " + line.block() +
+        "\n4 " + chamfer.block() + "\n5 L X+20 Y+20\n6 " + rounding.block() +
+        "\n7 L X+40 Y+20\n8 " + arc.block() + "\n9 " + centre.block() + "\n10 " + circle.block() +
+        "\n11 L X+10 Y+0\n12 " + tangent.block() + "\n13 L Z+50 R0 FMAX M2\n14 END PGM PATH MM";
+    const auto machine = machine::loadMachine("mill");
+    ASSERT_TRUE(machine.ok());
+    for (const Diagnostic& d : checkKlartextText(program.toStdString(), "PATH.H", *machine, {}))
+        ADD_FAILURE() << d.format() << "\n" << program.toStdString();
+}
+
+TEST(PathFunctionDialog, RefusesWhatTheBlockCannotHold) {
+    test::testApp();
+    PathFunctionDialog line(PathFunction::Line);
+    line.accept();  // no coordinate at all
+    EXPECT_EQ(line.result(), QDialog::Rejected);
+    EXPECT_TRUE(line.message().contains("coordinate")) << line.message().toStdString();
+    type(line, 0, "1O");  // letter O for a zero
+    QTest::keyClick(line.input(0), Qt::Key_Return);
+    EXPECT_TRUE(line.message().contains("\"1O\"")) << line.message().toStdString();
+    type(line, 0, "10");
+    type(line, 4, "fast");
+    line.accept();
+    EXPECT_TRUE(line.message().contains("FMAX")) << line.message().toStdString();
+    type(line, 4, "fmax");
+    line.accept();
+    EXPECT_EQ(line.result(), QDialog::Accepted) << line.message().toStdString();
+    EXPECT_EQ(line.block(), "L X+10 FMAX");
+
+    PathFunctionDialog arc(PathFunction::CircleRadius);
+    type(arc, 0, "10");
+    type(arc, 2, "0");
+    arc.accept();
+    EXPECT_TRUE(arc.message().contains("other than 0")) << arc.message().toStdString();
+}
+
+TEST(CycleCatalogue, ListsEveryRegistryCycleOnceInTheTncGroups) {
+    test::testApp();
+    const std::vector<CatalogueSection> sections = cycleCatalogue();
+    std::multiset<int> listed;
+    for (const CatalogueSection& section : sections) {
+        EXPECT_FALSE(section.cycles.empty());
+        for (const cycles::CycleDescriptor* cycle : section.cycles)
+            listed.insert(cycle->number);
+    }
+    EXPECT_EQ(listed.size(), cycles::allCycles().size());
+    for (const cycles::CycleDescriptor* cycle : cycles::allCycles())
+        EXPECT_EQ(listed.count(cycle->number), 1u) << cycle->number;
+    // The TNC's order: drilling/thread first, special cycles last.
+    ASSERT_GE(sections.size(), 4u);
+    EXPECT_EQ(sections.front().group, CatalogueGroup::DrillingThread);
+    EXPECT_EQ(sections.back().group, CatalogueGroup::SpecialCycles);
+    EXPECT_EQ(catalogueGroup(*cycles::findCycle(262)), CatalogueGroup::DrillingThread);
+    EXPECT_EQ(catalogueGroup(*cycles::findCycle(221)), CatalogueGroup::Patterns);
+    EXPECT_EQ(catalogueGroup(*cycles::findCycle(10)), CatalogueGroup::CoordinateTransformations);
+    EXPECT_EQ(catalogueGroup(*cycles::findCycle(9)), CatalogueGroup::SpecialCycles);
+}
+
+TEST(CycleCatalogueDialog, PicksACycleFromItsGroupOrByNumber) {
+    test::testApp();
+    CycleCatalogueDialog byList;
+    byList.showGroup(0);
+    EXPECT_EQ(byList.list()->item(0)->text(), "200 DRILLING");
+    byList.list()->setCurrentRow(1);
+    byList.accept();
+    ASSERT_NE(byList.selectedCycle(), nullptr);
+    EXPECT_EQ(byList.selectedCycle()->number, 201);
+
+    CycleCatalogueDialog byNumber;
+    QTest::keyClicks(byNumber.numberInput(), "999");
+    QTest::keyClick(byNumber.numberInput(), Qt::Key_Return);
+    EXPECT_EQ(byNumber.result(), QDialog::Rejected);
+    byNumber.numberInput()->setText("221");
+    QTest::keyClick(byNumber.numberInput(), Qt::Key_Return);
+    ASSERT_NE(byNumber.selectedCycle(), nullptr);
+    EXPECT_EQ(byNumber.selectedCycle()->number, 221);
+}
+
+// Finishes the modal dialog that the softkey opens, once the event loop runs it.
+template <typename Dialog, typename Fill>
+void answerNextDialog(Fill fill) {
+    QTimer::singleShot(0, [fill] {
+        auto* dialog = qobject_cast<Dialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(dialog, nullptr);
+        fill(*dialog);
+    });
+}
+
+TEST(ProgrammingSoftkeys, CyclDefGroupCycleWritesTheDefinitionAtTheCursor) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setPlainText("0 BEGIN PGM K MM\n1 L X+0 Y+0 R0 FMAX\n2 END PGM K MM");
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(1)));
+    std::vector<SoftkeyRow> shown;
+    bool back = false;
+    SoftkeyPaging paging{[&shown](std::vector<SoftkeyRow> rows) { shown = std::move(rows); },
+                         [&back] { back = true; }};
+    const auto findKey = [](const std::vector<SoftkeyRow>& rows, const QString& id) {
+        for (const SoftkeyRow& row : rows) {
+            for (const Softkey& key : row) {
+                if (key.id == id) return key.action;
+            }
+        }
+        return std::function<void()>();
+    };
+    const std::vector<SoftkeyRow> entry = programmingEntryRows(&editor, nullptr, paging);
+    findKey(entry, "cyclDef")();
+    ASSERT_TRUE(findKey(shown, "cycleGroup0"));  // drilling/thread
+    findKey(shown, "cycleGroup0")();
+    ASSERT_TRUE(findKey(shown, "cycle203"));
+    answerNextDialog<CycleDialog>([](CycleDialog& dialog) {
+        dialog.input(1)->setText("-12");  // Q201
+        dialog.accept();
+    });
+    findKey(shown, "cycle203")();
+    EXPECT_TRUE(back);  // the normal rows come back after the definition
+    const QStringList lines = editor.toPlainText().split('\n');
+    ASSERT_GE(lines.size(), 4);
+    EXPECT_EQ(lines[2], "2 CYCL DEF 203 UNIVERSAL DRILLING ~");
+    EXPECT_TRUE(lines.contains("  Q201=-12     ;DEPTH ~")) << editor.toPlainText().toStdString();
+    EXPECT_EQ(lines.last(), "3 END PGM K MM");
+
+    // Path function L after the definition; Esc on a dialog writes nothing.
+    answerNextDialog<PathFunctionDialog>([](PathFunctionDialog& dialog) {
+        qobject_cast<QLineEdit*>(dialog.input(0))->setText("30");
+        dialog.accept();
+    });
+    findKey(entry, "pathL")();
+    EXPECT_TRUE(editor.toPlainText().contains("\n3 L X+30\n4 END PGM K MM"));
+    const QString before = editor.toPlainText();
+    answerNextDialog<PathFunctionDialog>([](PathFunctionDialog& dialog) { dialog.reject(); });
+    findKey(entry, "pathCC")();
+    EXPECT_EQ(editor.toPlainText(), before);
+
+    // Edit cycle with the cursor on the definition's Q201 line.
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(4)));
+    answerNextDialog<CycleDialog>([](CycleDialog& dialog) {
+        EXPECT_EQ(dialog.input(1)->text(), "-12");
+        dialog.input(1)->setText("-14");
+        dialog.accept();
+    });
+    findKey(entry, "editCycle")();
+    EXPECT_TRUE(editor.toPlainText().contains("  Q201=-14     ;DEPTH ~"));
+    EXPECT_FALSE(editor.toPlainText().contains("Q201=-12"));
+}
+
+}  // namespace
+}  // namespace kerf::ui
+
+namespace kerf::ui {
+namespace {
+
+// Pictures for the documentation and for looking at the screens (saved in the test's build
+// folder): the catalogue, the drilling dialog on Q201 and the pattern dialog on Q247.
+TEST(CycleScreens, SavesScreenshotsOfTheCatalogueAndTheDialogs) {
+    test::testApp();
+    CycleCatalogueDialog catalogue;
+    catalogue.resize(1000, 600);
+    catalogue.showGroup(0);
+    const QImage cataloguePicture = catalogue.grab().toImage();
+    EXPECT_TRUE(cataloguePicture.save("cycle_catalogue.png"));
+
+    CycleDialog drilling(*cycles::findCycle(200), false);
+    drilling.resize(1280, 720);
+    drilling.setCurrentField(1);
+    EXPECT_TRUE(drilling.grab().toImage().save("cycle_dialog_200.png"));
+
+    CycleDialog pattern(*cycles::findCycle(220), false);
+    pattern.resize(1280, 720);
+    pattern.setCurrentField(6);
+    EXPECT_TRUE(pattern.grab().toImage().save("cycle_dialog_220.png"));
+
+    PathFunctionDialog line(PathFunction::Line);
+    line.resize(900, 500);
+    EXPECT_TRUE(line.grab().toImage().save("path_dialog_l.png"));
+    EXPECT_EQ(cataloguePicture.width(), 1000);
+    // One help picture of every kind, on a parameter it highlights.
+    const std::pair<int, int> pictures[] = {{7, 0},   {10, 0}, {225, 0}, {232, 4}, {221, 5},
+                                            {262, 2}, {32, 0}, {18, 0},  {9, 0},   {13, 0}};
+    for (const auto& [number, field] : pictures) {
+        CycleDialog dialog(*cycles::findCycle(number), false);
+        dialog.resize(1280, 720);
+        dialog.setCurrentField(field);
+        EXPECT_TRUE(dialog.picture()->grab().toImage().save(
+            QStringLiteral("cycle_help_%1.png").arg(number)));
+    }
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/base/diagnostic.h"
+
+namespace kerf::ui::test {
+
+// What running a Klartext program on the simulated mill gave: the diagnostics (empty when it
+// ran to its end) and the tool-axis coordinate of every feed move. Kept apart from the Qt
+// test files: Qt's `emit` macro collides with the interpreter's emit().
+struct ProgramRun {
+    DiagnosticList diagnostics;
+    bool finished = false;
+    std::vector<double> feedZ;
+};
+
+ProgramRun runKlartextProgram(const std::string& text);
+
+}  // namespace kerf::ui::test

@@ -1,0 +1,284 @@
+#include "ui/session/machine_session.h"
+
+#include <QSignalSpy>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "simulated_machine.h"
+
+namespace kerf::ui {
+namespace {
+
+using namespace std::chrono_literals;
+using task::RunState;
+
+// The built-in mill on simulated drives in real time: soft limits X -400..400, Y -300..300,
+// Z -500..50 mm (core/machine/presets/mill.toml), tool tip at 0 0 0 at start, no work offset.
+class MachineSessionTest : public testing::Test {
+protected:
+    MachineSessionTest() {
+        test::testApp();
+        auto mill = machine::loadMachine("mill");
+        EXPECT_TRUE(mill.ok());
+        config = *mill;
+        session =
+            std::make_unique<MachineSession>(config, test::connectSimulatedMachine(config), "");
+    }
+
+    // Services the session (as its timer does) until `done` or the time is up.
+    bool serviceUntil(const std::function<bool()>& done, std::chrono::milliseconds limit = 10s) {
+        const auto deadline = std::chrono::steady_clock::now() + limit;
+        while (std::chrono::steady_clock::now() < deadline) {
+            session->service();
+            if (done()) return true;
+            std::this_thread::sleep_for(2ms);
+        }
+        return false;
+    }
+    bool runToEnd() {
+        return serviceUntil([this] {
+            const RunState s = session->runState();
+            return s == RunState::Finished || s == RunState::Failed || s == RunState::Aborted;
+        });
+    }
+    // The axes stand still after the run: setpoints and drives settle within a few filter
+    // lengths (17 ms) and position-loop time constants.
+    void settle() {
+        serviceUntil([] { return false; }, 150ms);
+    }
+    double x() const { return session->status().axes[0].nominal; }
+
+    machine::MachineConfig config;
+    std::unique_ptr<MachineSession> session;
+};
+
+TEST_F(MachineSessionTest, FullSequenceEndsAtTheLastProgrammedPoint) {
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM P MM\n"
+                              "1 L X+10 Y+5 Z+0 R0 FMAX\n"
+                              "2 L X+30 F6000\n"
+                              "3 L Y+20\n"
+                              "4 END PGM P MM\n",
+                              "P.H"));
+    ASSERT_TRUE(runToEnd());
+    ASSERT_EQ(session->runState(), RunState::Finished) << session->run().diagnostics().size();
+    settle();
+    const task::MachineStatus& s = session->status();
+    // X from block 2, Y from block 3, Z from block 1.
+    EXPECT_NEAR(s.axes[0].nominal, 30.0, 1e-6);
+    EXPECT_NEAR(s.axes[1].nominal, 20.0, 1e-6);
+    EXPECT_NEAR(s.axes[2].nominal, 0.0, 1e-6);
+    // The simulated drives follow with a position loop: at rest they come to the setpoint.
+    EXPECT_TRUE(serviceUntil(
+        [&] {
+            return std::abs(s.axes[0].actual - 30.0) < 1e-3 &&
+                   std::abs(s.axes[1].actual - 20.0) < 1e-3;
+        },
+        5s));
+    EXPECT_EQ(s.state, task::MachineState::Idle);
+}
+
+TEST_F(MachineSessionTest, FeedHoldStopsTheAxesAndResumeReachesTheSameEnd) {
+    // 60 mm at 50 mm/s: 1.2 s, time enough to hold in the middle.
+    ASSERT_TRUE(session->startProgram(
+        "0 BEGIN PGM H MM\n1 L X+60 Y+0 Z+0 R0 F3000\n2 END PGM H MM\n", "H.H"));
+    ASSERT_TRUE(serviceUntil([this] { return x() > 10.0; }));
+    session->feedHold();
+    ASSERT_TRUE(serviceUntil([this] { return session->runState() == RunState::Held; }));
+    ASSERT_TRUE(
+        serviceUntil([this] { return session->status().state == task::MachineState::Held; }));
+    // The interpolator stands; the smoothing filter (17 ms) brings the setpoint after it.
+    serviceUntil([] { return false; }, 60ms);
+    const double held = x();
+    serviceUntil([] { return false; }, 300ms);
+    EXPECT_NEAR(x(), held, 1e-9) << "the axes move during feed hold";
+    EXPECT_LT(held, 59.0);
+    // DIST: what is left of the move to X60.
+    EXPECT_NEAR(session->status().axes[0].distanceToGo, 60.0 - held, 1e-9);
+    session->cycleStart();
+    ASSERT_TRUE(runToEnd());
+    EXPECT_EQ(session->runState(), RunState::Finished);
+    settle();
+    EXPECT_NEAR(x(), 60.0, 1e-6);
+}
+
+// Servo time at which X passes `at`, interpolated between two status samples: exact while the
+// velocity is constant.
+double crossingTime(const std::vector<std::pair<double, double>>& samples, double at) {
+    for (size_t i = 1; i < samples.size(); ++i) {
+        const auto [t0, x0] = samples[i - 1];
+        const auto [t1, x1] = samples[i];
+        if (x0 < at && x1 >= at) return t0 + (t1 - t0) * (at - x0) / (x1 - x0);
+    }
+    return -1.0;
+}
+
+TEST_F(MachineSessionTest, HalfFeedOverrideDoublesTheFeedTime) {
+    // F2400 = 40 mm/s. Between X5 and X35 the axis runs at constant velocity (it reaches 40 mm/s
+    // within ~1 mm at 2000 mm/s^2 and 50000 mm/s^3), so the 30 mm take 0.75 s at 100 % and
+    // 1.5 s at 50 %. Measured in servo time (immune to this loaded machine's scheduling) and
+    // interpolated between samples: 2 % covers the servo's 1 ms period and rounding.
+    const char* program = "0 BEGIN PGM F MM\n1 L X+40 Y+0 Z+0 R0 F2400\n2 END PGM F MM\n";
+    auto feedTime = [&](double fraction) {
+        session->setFeedOverride(fraction);
+        std::vector<std::pair<double, double>> samples;
+        EXPECT_TRUE(session->startProgram(program, "F.H"));
+        serviceUntil([&] {
+            samples.emplace_back(session->status().servoTimeS, x());
+            const RunState s = session->runState();
+            return s == RunState::Finished || s == RunState::Failed;
+        });
+        EXPECT_EQ(session->runState(), RunState::Finished);
+        return crossingTime(samples, 35.0) - crossingTime(samples, 5.0);
+    };
+    const double full = feedTime(1.0);
+    settle();
+    // Back to X0 for the second run.
+    ASSERT_TRUE(session->executeMdi("L X+0 FMAX"));
+    ASSERT_TRUE(runToEnd());
+    settle();
+    const double half = feedTime(0.5);
+    EXPECT_NEAR(full, 0.75, 0.75 * 0.02);
+    EXPECT_NEAR(half, 1.5, 1.5 * 0.02);
+}
+
+TEST_F(MachineSessionTest, StartAtBlockSkipsTheBlocksBeforeItWithTheStateRestored) {
+    // Line 5 is block 4: the scan passes TOOL CALL 3 and blocks 2 and 3 without moving, then
+    // approaches the end point of block 3 (X20 Y10 Z0) and runs block 4 to X40.
+    const QString program =
+        "0 BEGIN PGM S MM\n"
+        "1 TOOL CALL 3 Z S1000\n"
+        "2 L X+10 Y+0 Z+0 R0 FMAX\n"
+        "3 L X+20 Y+10 R0 F3000\n"
+        "4 L X+40 R0 F3000\n"
+        "5 END PGM S MM\n";
+    ASSERT_TRUE(session->startProgram(program, "S.H", 5));
+    uint32_t earliestLine = 1000;
+    serviceUntil([&] {
+        const uint32_t line = session->status().block.line;
+        if (line > 0) earliestLine = std::min(earliestLine, line);
+        return session->runState() == RunState::Finished || session->runState() == RunState::Failed;
+    });
+    ASSERT_EQ(session->runState(), RunState::Finished);
+    settle();
+    EXPECT_EQ(earliestLine, 5u) << "a block before the start block was executed";
+    EXPECT_EQ(session->status().toolNumber, 3);
+    EXPECT_NEAR(session->status().axes[0].nominal, 40.0, 1e-6);
+    EXPECT_NEAR(session->status().axes[1].nominal, 10.0, 1e-6);
+}
+
+TEST_F(MachineSessionTest, SoftLimitRefusalNamesTheBlock) {
+    QSignalSpy messages(session.get(), &MachineSession::message);
+    // X+500 is beyond the soft limit X+400; block 2 is on line 3.
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM L MM\n"
+                              "1 L X+10 Y+0 Z+0 R0 FMAX\n"
+                              "2 L X+500 FMAX\n"
+                              "3 END PGM L MM\n",
+                              "L.H"));
+    ASSERT_TRUE(runToEnd());
+    EXPECT_EQ(session->runState(), RunState::Failed);
+    bool named = false;
+    for (const QList<QVariant>& m : messages) {
+        const QString text = m.at(1).toString();
+        if (m.at(2).toInt() == 3 && text.contains("Block 2") && text.contains("soft limit"))
+            named = true;
+    }
+    EXPECT_TRUE(named);
+    settle();
+    EXPECT_LE(x(), 400.0);
+}
+
+TEST_F(MachineSessionTest, IncrementalJogMovesOneAxisByTheIncrement) {
+    session->setIncrementMm(2.5);
+    ASSERT_TRUE(session->jogIncrement(Axis::Y, -1));
+    serviceUntil([this] { return session->status().axes[1].nominal < -2.4999; }, 5s);
+    settle();
+    // The jog generator lands within nanometres of its target.
+    EXPECT_NEAR(session->status().axes[1].nominal, -2.5, 1e-5);
+    EXPECT_NEAR(x(), 0.0, 1e-9);
+    // A program after the jog starts where the jog ended.
+    ASSERT_TRUE(session->executeMdi("L X+5 FMAX"));
+    ASSERT_TRUE(runToEnd());
+    settle();
+    EXPECT_NEAR(x(), 5.0, 1e-6);
+    EXPECT_NEAR(session->status().axes[1].nominal, -2.5, 1e-5);
+}
+
+TEST_F(MachineSessionTest, SingleBlockStopsAtTheEndOfEachBlock) {
+    session->setSingleBlock(true);
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM B MM\n"
+                              "1 L X+5 Y+0 Z+0 R0 F6000\n"
+                              "2 L X+10 F6000\n"
+                              "3 END PGM B MM\n",
+                              "B.H"));
+    ASSERT_TRUE(serviceUntil([this] { return session->runState() == RunState::Stopped; }));
+    settle();
+    EXPECT_NEAR(x(), 5.0, 1e-6);
+    session->cycleStart();
+    // Block 2 runs, then the machine stops again at its end.
+    ASSERT_TRUE(serviceUntil([this] {
+        return x() > 10.0 - 1e-6 && session->status().state == task::MachineState::Stopped;
+    }));
+    settle();
+    EXPECT_NEAR(x(), 10.0, 1e-6);
+    session->setSingleBlock(false);
+    session->cycleStart();
+    ASSERT_TRUE(runToEnd());
+    EXPECT_EQ(session->runState(), RunState::Finished);
+}
+
+TEST_F(MachineSessionTest, ContinuousJogRunsUntilStopped) {
+    ASSERT_TRUE(session->jog(Axis::X, 1));
+    ASSERT_TRUE(serviceUntil([this] { return x() > 5.0; }, 5s));
+    session->jogStop(Axis::X);
+    ASSERT_TRUE(
+        serviceUntil([this] { return session->status().state == task::MachineState::Idle; }));
+    settle();
+    const double stopped = x();
+    settle();
+    EXPECT_GT(stopped, 5.0);
+    EXPECT_DOUBLE_EQ(x(), stopped);
+}
+
+TEST_F(MachineSessionTest, ManualSpindleRunsAtTheRequestedSpeed) {
+    ASSERT_TRUE(session->spindle(true, 1200.0));
+    // 1200 rpm at 3000 rpm/s: 0.4 s and the jerk ramps.
+    EXPECT_TRUE(serviceUntil(
+        [this] { return std::abs(session->status().actualSpindleRpm - 1200.0) < 1.0; }, 5s));
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 1200.0);
+    ASSERT_TRUE(
+        serviceUntil([this] { return session->status().state == task::MachineState::Idle; }));
+    ASSERT_TRUE(session->spindle(false));
+    EXPECT_TRUE(serviceUntil([this] { return session->status().actualSpindleRpm == 0.0; }, 5s));
+}
+
+TEST(MachineSessionLathe, RunsAFagorProgramWithXInDiameter) {
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    // X is programmed as a diameter: X40 then X60 are radii 20 and 30 in the machine.
+    ASSERT_TRUE(
+        session.startProgram("N1 G90 G00 X40 Z10\nN2 G01 X60 F3000\nN3 M30\n", "LATHE.PIT"));
+    const auto deadline = std::chrono::steady_clock::now() + 10s;
+    while (session.runState() == RunState::Running && std::chrono::steady_clock::now() < deadline) {
+        session.service();
+        std::this_thread::sleep_for(2ms);
+    }
+    ASSERT_EQ(session.runState(), RunState::Finished);
+    std::this_thread::sleep_for(100ms);
+    session.service();
+    EXPECT_NEAR(session.status().axes[0].nominal, 30.0, 1e-6);
+    EXPECT_NEAR(session.status().axes[2].nominal, 10.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,13 @@
+#include "simulated_machine.h"
+
+#include "motion/runtime/realtime_motion_port.h"
+
+namespace kerf::ui::test {
+
+std::unique_ptr<task::MotionPort> connectSimulatedMachine(const machine::MachineConfig& config) {
+    motion::RealtimeOptions options;
+    options.lockMemory = false;
+    return std::make_unique<motion::RealtimeMotionPort>(config, options);
+}
+
+}  // namespace kerf::ui::test

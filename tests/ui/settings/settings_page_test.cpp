@@ -1,0 +1,118 @@
+#include "ui/settings/settings_page.h"
+
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+#include "core/base/atomic_file.h"
+#include "core/machine/machine_loader.h"
+#include "core/machine/machine_schema.h"
+#include "qt_test_app.h"
+#include "test_paths.h"
+#include "ui/common/diagnostic_text.h"
+#include "ui/settings/settings_model.h"
+
+namespace kerf::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool anyMessageContains(const QSignalSpy& spy, const QString& text) {
+    for (const auto& message : spy) {
+        if (message.at(1).toString().contains(text)) return true;
+    }
+    return false;
+}
+
+TEST(SettingsPage, RowsComeFromTheSchemaByGroup) {
+    test::testApp();
+    const machine::MachineConfig mill = *machine::loadMachine("mill");
+    SettingsModel model(mill);
+    const size_t keys = machine::parameterKeys(mill).size();
+    ASSERT_GT(static_cast<size_t>(model.rowCount()), keys);  // parameters plus headings
+    EXPECT_TRUE(model.isHeading(0));
+    EXPECT_EQ(model.data(model.index(0, SettingsModel::Name), Qt::DisplayRole),
+              QStringLiteral("Machine"));
+    const int rapid = model.rowOf("rapid_velocity");
+    ASSERT_GT(rapid, 0);
+    EXPECT_EQ(model.data(model.index(rapid, SettingsModel::Unit), Qt::DisplayRole),
+              QStringLiteral("mm/s"));
+    EXPECT_EQ(model.data(model.index(rapid, SettingsModel::Description), Qt::DisplayRole),
+              QStringLiteral("Path velocity of rapid moves"));
+    EXPECT_TRUE(model.flags(model.index(rapid, SettingsModel::Value)) & Qt::ItemIsEditable);
+    EXPECT_FALSE(model.flags(model.index(rapid, SettingsModel::Default)) & Qt::ItemIsEditable);
+    // The spindle parameters follow a "spindle" heading; each axis has its own group.
+    const int spindle = model.rowOf("spindle.min_rpm");
+    ASSERT_GT(spindle, 0);
+    EXPECT_TRUE(model.isHeading(spindle - 1));
+    EXPECT_EQ(model.data(model.index(spindle - 1, SettingsModel::Name), Qt::DisplayRole),
+              QStringLiteral("spindle"));
+    const int xVelocity = model.rowOf("axes.X.max_velocity");
+    ASSERT_GT(xVelocity, 0);
+    EXPECT_EQ(model.data(model.index(xVelocity, SettingsModel::Name), Qt::DisplayRole),
+              QStringLiteral("max_velocity"));
+}
+
+TEST(SettingsPage, OutOfRangeIsRefusedNamingTheKeyAndAValidValueIsSavedAndReloads) {
+    test::testApp();
+    const fs::path dir = kerf::test::uniqueTempDir("hmi_settings_save");
+    const fs::path file = dir / "mill.toml";
+    const machine::MachineConfig mill = *machine::loadMachine("mill");
+    SettingsPage page(mill, file, false);
+    QSignalSpy messages(&page, &SettingsPage::message);
+    SettingsModel& model = *page.model();
+
+    // The schema allows 0.1 ... 5000 mm/s.
+    EXPECT_FALSE(model.setValueText("rapid_velocity", "6000"));
+    EXPECT_TRUE(anyMessageContains(messages, "rapid_velocity = 6000 is outside the allowed range"));
+    EXPECT_FALSE(model.setValueText("rapid_velocity", "fast"));
+    EXPECT_TRUE(anyMessageContains(messages, "rapid_velocity = \"fast\" has the wrong type"));
+    EXPECT_FALSE(page.modified());
+
+    const int rapid = model.rowOf("rapid_velocity");
+    ASSERT_TRUE(model.setData(model.index(rapid, SettingsModel::Value), "750", Qt::EditRole));
+    EXPECT_EQ(model.data(model.index(rapid, SettingsModel::Value), Qt::DisplayRole),
+              QStringLiteral("750"));
+    ASSERT_TRUE(model.setValueText("kind", "lathe"));  // an enum, by its spelling in the file
+    EXPECT_EQ(model.config().kind, machine::MachineKind::Lathe);
+    model.undo();
+    EXPECT_EQ(model.config().kind, machine::MachineKind::Mill);
+    ASSERT_TRUE(page.modified());
+    ASSERT_TRUE(page.save());
+    EXPECT_FALSE(page.modified());
+    EXPECT_TRUE(anyMessageContains(messages, "apply when Kerf is restarted"));
+
+    auto reloaded = machine::loadMachine(file.string());
+    ASSERT_TRUE(reloaded) << reloaded.error().format();
+    EXPECT_EQ(reloaded->rapidVelocityMmPerS, 750.0);
+    EXPECT_EQ(reloaded->maxFeedMmPerS, mill.maxFeedMmPerS);
+    // Written atomically: the new file and nothing else (no temporary left behind).
+    size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir))
+        ++files;
+    EXPECT_EQ(files, 1u);
+}
+
+TEST(SettingsPage, RulesBetweenParametersBlockTheSave) {
+    test::testApp();
+    const fs::path dir = kerf::test::uniqueTempDir("hmi_settings_rules");
+    const fs::path file = dir / "mill.toml";
+    ASSERT_FALSE(writeFileAtomically(file, "base = \"mill\"\n").has_value());
+    SettingsPage page(*machine::loadMachine("mill"), file, false);
+    QSignalSpy messages(&page, &SettingsPage::message);
+    // Each value is in range, but the spindle's minimum may not exceed its maximum.
+    const QString maxRpm = page.model()
+                               ->data(page.model()->index(page.model()->rowOf("spindle.max_rpm"),
+                                                          SettingsModel::Value),
+                                      Qt::DisplayRole)
+                               .toString();
+    ASSERT_TRUE(
+        page.model()->setValueText("spindle.min_rpm", QString::number(maxRpm.toDouble() + 1)));
+    EXPECT_FALSE(page.save());
+    EXPECT_TRUE(anyMessageContains(messages, "spindle"));
+    EXPECT_TRUE(anyMessageContains(messages, "Not saved"));
+    EXPECT_EQ(readWholeFile(file).value(), "base = \"mill\"\n");
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,87 @@
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+
+#include <gtest/gtest.h>
+
+#include "core/base/diagnostic.h"
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "test_paths.h"
+#include "ui/common/diagnostic_text.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/message_panel.h"
+#include "ui/shell/mode_controller.h"
+#include "ui/shell/softkey_bar.h"
+#include "ui/shell/ui_language.h"
+
+// German and Spanish: the window's texts and core's diagnostics change with the language. The
+// expected words are the TNC's own terms (HEIDENHAIN's German and Spanish manuals).
+namespace kerf::ui {
+namespace {
+
+HmiContext contextIn(const std::filesystem::path& dir) {
+    HmiContext context;
+    context.machine = *machine::loadMachine("mill");
+    context.ncRoot = dir;
+    context.recoveryFolder = dir / "recovery";
+    return context;
+}
+
+QString labelText(const MainWindow& window, const char* name) {
+    return window.findChild<QLabel*>(name)->text();
+}
+
+Diagnostic pitchIsZero() {
+    return Diagnostic::make(Severity::Error, "test", "T.H", 1, 1,
+                            KERF_TR_NOOP("cycle {1}: the thread pitch Q{2} is 0"), "262", "239");
+}
+
+TEST(Language, GermanAndSpanishTranslateTheWindow) {
+    test::testApp();
+    MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_language_de_es")));
+    window.show();
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+
+    ASSERT_TRUE(window.setLanguage("de"));
+    QCoreApplication::processEvents();  // LanguageChange is posted to each window
+    EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("Manueller Betrieb"));
+    EXPECT_EQ(labelText(window, "programmingMode"), QStringLiteral("Programmieren"));
+    EXPECT_EQ(window.softkeys()->keyButton(0)->text(), QStringLiteral("Speichern"));
+    EXPECT_EQ(window.messages()->line()->text(), QStringLiteral("Keine Meldungen"));
+    EXPECT_EQ(window.findChild<QLabel*>("programTitle")->text(), QStringLiteral("Kein Programm"));
+    EXPECT_EQ(translatedMessage(pitchIsZero()),
+              QStringLiteral("Zyklus 262: die Gewindesteigung Q239 ist 0"));
+    EXPECT_EQ(severityText(Severity::Warning), QStringLiteral("Warnung"));
+
+    ASSERT_TRUE(window.setLanguage("es"));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("Funcionamiento manual"));
+    EXPECT_EQ(labelText(window, "programmingMode"), QStringLiteral("Programaci\u00f3n"));
+    EXPECT_EQ(window.softkeys()->keyButton(0)->text(), QStringLiteral("Guardar"));
+    EXPECT_EQ(window.messages()->line()->text(), QStringLiteral("Sin mensajes"));
+    EXPECT_EQ(window.findChild<QLabel*>("programTitle")->text(),
+              QStringLiteral("Ning\u00fan programa"));
+    EXPECT_EQ(translatedMessage(pitchIsZero()),
+              QStringLiteral("ciclo 262: el paso de rosca Q239 es 0"));
+
+    ASSERT_TRUE(window.setLanguage("en"));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("Manual operation"));
+    EXPECT_EQ(translatedMessage(pitchIsZero()),
+              QStringLiteral("cycle 262: the thread pitch Q239 is 0"));
+}
+
+TEST(Language, CoreDiagnosticsAreTranslatedInPortugueseAndPolish) {
+    test::testApp();
+    ASSERT_TRUE(switchLanguage("pt"));
+    EXPECT_EQ(translatedMessage(pitchIsZero()),
+              QStringLiteral("ciclo 262: o passo de rosca Q239 \u00e9 0"));
+    ASSERT_TRUE(switchLanguage("pl"));
+    EXPECT_EQ(translatedMessage(pitchIsZero()),
+              QStringLiteral("cykl 262: skok gwintu Q239 wynosi 0"));
+    ASSERT_TRUE(switchLanguage("en"));
+}
+
+}  // namespace
+}  // namespace kerf::ui

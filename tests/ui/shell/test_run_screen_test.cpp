@@ -1,0 +1,85 @@
+#include <QLabel>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTreeWidget>
+
+#include <gtest/gtest.h>
+
+#include "core/base/atomic_file.h"
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "test_paths.h"
+#include "ui/editor/program_editor.h"
+#include "ui/editor/program_panel.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/message_panel.h"
+#include "ui/shell/mode_controller.h"
+#include "ui/shell/workspace.h"
+#include "ui/testrun/test_run_controller.h"
+#include "ui/viewport/graphics_panel.h"
+
+namespace kerf::ui {
+namespace {
+
+HmiContext contextIn(const std::filesystem::path& dir) {
+    HmiContext context;
+    context.machine = *machine::loadMachine("mill");
+    context.ncRoot = dir;
+    context.recoveryFolder = dir / "recovery";
+    return context;
+}
+
+// On the offscreen platform the graphics panel has no 3D view; the test run itself, its
+// softkeys, the machining time and the messages work the same.
+TEST(TestRunScreen, StartRunsTheEditorsProgramAndReportsItsErrorsWithTheirLine) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_testrun");
+    // Two feed moves: 10 mm at F600 (1 s) and 20 mm at F600 (2 s) after a 5 mm rapid.
+    ASSERT_FALSE(writeFileAtomically(dir / "LINE.H",
+                                     "0 BEGIN PGM LINE MM\n1 TOOL CALL 0 Z S1000\n"
+                                     "2 L Z+5 R0 FMAX\n3 L X+10 R0 F600\n4 L Y+20 F600\n"
+                                     "5 END PGM LINE MM\n")
+                     .has_value());
+    MainWindow window(contextIn(dir));
+    window.resize(1280, 800);
+    window.show();
+    ASSERT_TRUE(window.openProgram(dir / "LINE.H"));
+    window.modes().requestProgrammingMode(task::ProgrammingMode::TestRun);
+    // Test run brings the graphics beside the program.
+    EXPECT_EQ(window.workspace()->layoutKind(), WorkspaceLayout::ProgramGraphics);
+    EXPECT_TRUE(window.graphics()->isVisible());
+
+    TestRunController* run = window.testRun();
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testSpeed")));  // x10 -> x100
+    EXPECT_EQ(run->speed(), TestRunSpeed::Times100);
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testSpeed")));  // -> max
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testStart")));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [run] { return run->state() == TestRunController::State::Finished; }, 20000));
+    const double expectedS = 1.0 + 2.0 + 5.0 / machine::loadMachine("mill")->rapidVelocityMmPerS;
+    EXPECT_NEAR(run->machiningTimeS(), expectedS, 1e-6);
+    EXPECT_TRUE(window.graphics()->timeLabel()->text().contains(QStringLiteral("0:00:04")));
+
+    // An error in the edited text: Start interprets the new text and stops at the bad line.
+    ProgramEditor* editor = window.program()->editor();
+    editor->setPlainText(
+        QStringLiteral("0 BEGIN PGM LINE MM\n1 TOOL CALL 0 Z S1000\n"
+                       "2 L Z+5 R0 FMAX\n3 NONSENSE\n4 END PGM LINE MM\n"));
+    const int before = window.messages()->messageCount();
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testStart")));
+    ASSERT_TRUE(
+        QTest::qWaitFor([run] { return run->state() == TestRunController::State::Failed; }, 20000));
+    EXPECT_GT(window.messages()->messageCount(), before);
+    // The test run's message names line 4; activating it puts the editor there.
+    QTreeWidget* list = window.messages()->list();
+    int row = -1;
+    for (int i = 0; i < list->topLevelItemCount(); ++i) {
+        if (list->topLevelItem(i)->text(1).startsWith(QStringLiteral("Test run"))) row = i;
+    }
+    ASSERT_GE(row, 0);
+    window.messages()->activate(row);
+    EXPECT_EQ(editor->currentLine(), 4);
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,47 @@
+// The status tabs follow a program the machine session runs (connected as MainWindow does).
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "simulated_machine.h"
+#include "ui/session/machine_session.h"
+#include "ui/status/status_tabs.h"
+
+namespace kerf::ui {
+namespace {
+
+using namespace std::chrono_literals;
+using Tab = StatusTabs::Tab;
+
+TEST(SessionStatus, TabsShowTheRunningProgramsState) {
+    test::testApp();
+    auto mill = machine::loadMachine("mill");
+    ASSERT_TRUE(mill.ok());
+    MachineSession session(*mill, test::connectSimulatedMachine(*mill), "");
+    StatusTabs tabs;
+    QObject::connect(&session, &MachineSession::programStatusChanged, &tabs,
+                     &StatusTabs::setProgramStatus);
+    ASSERT_TRUE(
+        session.startProgram("0 BEGIN PGM S MM\n1 Q5 = 4\n2 CYCL DEF 7.0 DATUM SHIFT\n"
+                             "3 CYCL DEF 7.1 X+2\n4 L X+1 Y+0 Z+0 R0 F500 M3\n"
+                             "5 L X+2\n6 END PGM S MM\n",
+                             "S.H"));
+    const auto deadline = std::chrono::steady_clock::now() + 10s;
+    while (session.runState() != task::RunState::Finished &&
+           session.runState() != task::RunState::Failed &&
+           std::chrono::steady_clock::now() < deadline) {
+        session.service();
+        std::this_thread::sleep_for(2ms);
+    }
+    ASSERT_EQ(session.runState(), task::RunState::Finished);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Program"), "S.H");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Cycle"), "7 DATUM SHIFT");
+    EXPECT_EQ(tabs.valueOf(Tab::Parameters, "Q5"), "4");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift X"), "2.000 mm");
+}
+
+}  // namespace
+}  // namespace kerf::ui

@@ -1,0 +1,220 @@
+// The status tabs show what a ProgramStatus holds, in the program's unit; expected texts are
+// written by hand from the values put in.
+#include "ui/status/status_tabs.h"
+
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QTabBar>
+#include <QTableWidget>
+
+#include <gtest/gtest.h>
+
+#include "qt_test_app.h"
+
+namespace kerf::ui {
+namespace {
+
+using Status = interp::ProgramStatus;
+using Tab = StatusTabs::Tab;
+
+Status millStatus() {
+    Status s;
+    s.mainProgram = "STAT.H";
+    s.activeProgram = "SUB.H";
+    s.label = "LBL 1";
+    s.cycle = Status::Cycle{200, "DRILLING"};
+    s.activeM = {3, 8};
+    s.line = 20;
+    s.tool.number = 3;
+    s.tool.name = "MILL_D12";
+    s.tool.lengthMm = 40.0;
+    s.tool.radiusMm = 6.0;
+    s.tool.deltaLengthMm = 0.7;
+    s.tool.deltaRadiusMm = -0.2;
+    s.tool.axis = Axis::Z;
+    s.transformations.datumShift[Axis::X] = 10.0;
+    s.transformations.datumShift[Axis::Y] = -5.0;
+    s.transformations.mirrored = axisBit(Axis::X);
+    s.transformations.rotationDeg = 30.0;
+    for (size_t i = 0; i < 3; ++i)
+        s.transformations.scale[i] = 0.5;
+    s.parameters = {{"Q5", 12.5, {}, Status::ParameterScope::Global, 0},
+                    {"Q108", 5.8, {}, Status::ParameterScope::Global, 0},
+                    {"QL2", 3.0, {}, Status::ParameterScope::Local, 0},
+                    {"QS1", 0.0, "abc", Status::ParameterScope::Text, 0}};
+    return s;
+}
+
+std::vector<QString> visibleParameters(const StatusTabs& tabs) {
+    std::vector<QString> names;
+    const QTableWidget* t = tabs.table(Tab::Parameters);
+    for (int r = 0; r < t->rowCount(); ++r) {
+        if (!t->isRowHidden(r)) names.push_back(t->item(r, 0)->text());
+    }
+    return names;
+}
+
+TEST(StatusTabs, TabsAreNamedAsOnTheControl) {
+    test::testApp();
+    StatusTabs tabs('Q');
+    ASSERT_EQ(tabs.count(), 5);
+    EXPECT_EQ(tabs.tabText(0), "PGM");
+    EXPECT_EQ(tabs.tabText(1), "TOOL");
+    EXPECT_EQ(tabs.tabText(2), "TRANS");
+    EXPECT_EQ(tabs.tabText(3), "QPARA");
+    EXPECT_EQ(tabs.tabText(4), "PROBE");
+    StatusTabs fagor('P');
+    EXPECT_EQ(fagor.tabText(3), "PPARA");
+}
+
+TEST(StatusTabs, ProgramToolAndTransformationsInMillimetres) {
+    test::testApp();
+    StatusTabs tabs;
+    tabs.setProgramStatus(millStatus());
+
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Program"), "STAT.H");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Called program"), "SUB.H");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Label"), "LBL 1");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Cycle"), "200 DRILLING");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "M functions"), "M3 M8");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Line"), "20");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Unit"), "mm");
+
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Tool"), "3");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Name"), "MILL_D12");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "L"), "40.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "R"), "6.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "DL"), "0.700 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "DR"), "-0.200 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Tool axis"), "Z");
+
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift X"), "10.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift Y"), "-5.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift Z"), "0.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift A"), "");  // not shifted: no row
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Mirrored axes"), "X");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Rotation"), QString("30.000\u00b0"));
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Scaling"), "0.5000");
+}
+
+TEST(StatusTabs, InchProgramsShowInches) {
+    test::testApp();
+    StatusTabs tabs;
+    Status s = millStatus();
+    s.inch = true;
+    s.tool.lengthMm = 25.4;
+    s.transformations.datumShift[Axis::X] = 50.8;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Unit"), "inch");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "L"), "1.0000 in");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift X"), "2.0000 in");
+}
+
+TEST(StatusTabs, NothingActiveSaysNone) {
+    test::testApp();
+    StatusTabs tabs;
+    Status s;
+    s.mainProgram = "A.H";
+    s.activeProgram = "A.H";
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Called program"), "none");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Label"), "none");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Cycle"), "none");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Tool"), "none");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Mirrored axes"), "none");
+    EXPECT_EQ(tabs.valueOf(Tab::Probe, "Probe"), "no result");
+}
+
+TEST(StatusTabs, ScalingPerAxisListsEachFactor) {
+    test::testApp();
+    StatusTabs tabs;
+    Status s;
+    s.transformations.scale[0] = 0.5;
+    s.transformations.scale[1] = 2.0;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Scaling"), "X 0.5000  Y 2.0000  Z 1.0000");
+}
+
+TEST(StatusTabs, ParametersWithValuesKindsAndFilter) {
+    test::testApp();
+    StatusTabs tabs;
+    tabs.setProgramStatus(millStatus());
+    EXPECT_EQ(tabs.valueOf(Tab::Parameters, "Q5"), "12.5");
+    EXPECT_EQ(tabs.valueOf(Tab::Parameters, "Q108"), "5.8");
+    EXPECT_EQ(tabs.valueOf(Tab::Parameters, "QS1"), "\"abc\"");
+    EXPECT_EQ(tabs.table(Tab::Parameters)->item(2, 2)->text(), "local");
+    EXPECT_EQ(visibleParameters(tabs), (std::vector<QString>{"Q5", "Q108", "QL2", "QS1"}));
+
+    tabs.parameterFilter()->setText("QL");
+    EXPECT_EQ(visibleParameters(tabs), (std::vector<QString>{"QL2"}));
+    tabs.parameterFilter()->setText("q1");  // any case; QS1 does not contain "Q1"
+    EXPECT_EQ(visibleParameters(tabs), (std::vector<QString>{"Q108"}));
+    // The filter stays when new values arrive.
+    Status s = millStatus();
+    s.parameters.push_back({"Q150", 1.0, {}, Status::ParameterScope::Global, 0});
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(visibleParameters(tabs), (std::vector<QString>{"Q108", "Q150"}));
+}
+
+TEST(StatusTabs, FagorToolOffsetAndLocalLevels) {
+    test::testApp();
+    StatusTabs tabs('P');
+    Status s;
+    s.parameterLetter = 'P';
+    s.tool.number = 1;
+    s.tool.radiusMm = 0.4;
+    s.tool.lathe = Status::Tool::LatheOffset{1, 1.0, 2.0, 0.1, -0.2, 3};
+    s.transformations.datum = "G54 G58";
+    s.parameters = {{"P0", 2.0, {}, Status::ParameterScope::Local, 1},
+                    {"P100", 7.0, {}, Status::ParameterScope::Global, 0}};
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.tabText(3), "PPARA");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Offset"), "D1");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "X (radius)"), "1.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Z"), "2.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "R"), "0.400 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Wear X (I)"), "0.100 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Wear Z (K)"), "-0.200 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "Location code (F)"), "3");
+    EXPECT_EQ(tabs.valueOf(Tab::Tool, "L"), "");  // no milling rows on a lathe
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Zero offset"), "G54 G58");
+    EXPECT_EQ(tabs.table(Tab::Parameters)->item(0, 2)->text(), "local, level 1");
+    EXPECT_EQ(tabs.table(Tab::Parameters)->item(1, 2)->text(), "global");
+}
+
+TEST(StatusTabs, ProbeResult) {
+    test::testApp();
+    StatusTabs tabs;
+    Status s;
+    Status::Probe probe;
+    probe.triggered = true;
+    probe.position[Axis::X] = 1.0;
+    probe.position[Axis::Y] = 2.0;
+    probe.position[Axis::Z] = -3.5;
+    s.probe = probe;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Probe, "Probe"), "touched");
+    EXPECT_EQ(tabs.valueOf(Tab::Probe, "X"), "1.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Probe, "Y"), "2.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Probe, "Z"), "-3.500 mm");
+}
+
+TEST(StatusTabs, RowsAndTabsAreTallEnoughForTouch) {
+    test::testApp();
+    StatusTabs tabs;
+    tabs.resize(500, 600);
+    tabs.setProgramStatus(millStatus());
+    tabs.show();
+    QApplication::processEvents();
+    for (int i = 0; i < tabs.count(); ++i)
+        EXPECT_GE(tabs.tabBar()->tabRect(i).height(), 48) << i;
+    for (Tab tab : {Tab::Program, Tab::Tool, Tab::Transformations, Tab::Parameters, Tab::Probe}) {
+        const QTableWidget* t = tabs.table(tab);
+        ASSERT_GT(t->rowCount(), 0);
+        EXPECT_GE(t->rowHeight(0), 48);
+    }
+    EXPECT_GE(tabs.parameterFilter()->height(), 48);
+}
+
+}  // namespace
+}  // namespace kerf::ui

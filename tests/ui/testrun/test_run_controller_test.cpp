@@ -1,0 +1,163 @@
+#include "ui/testrun/test_run_controller.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "core/machine/machine_loader.h"
+#include "graphics/stock/progressive_stock.h"
+#include "qt_test_app.h"
+#include "test_paths.h"
+
+namespace kerf::ui {
+namespace {
+
+// Two holes with a 5 mm drill (T-ANGLE 118) 10 mm deep, then a slot with a flat 10 mm end mill,
+// 2 mm deep from X+60 to X+90 at Y+40. Line n of the file is block n - 1.
+const char* kParts =
+    "0 BEGIN PGM PARTS MM\n"
+    "1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n"
+    "2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+    "3 TOOL CALL 1 Z S2000\n"
+    "4 L Z+5 R0 FMAX\n"
+    "5 L X+15 Y+20 R0 FMAX\n"
+    "6 L Z-10 R0 F100\n"
+    "7 L Z+5 R0 FMAX\n"
+    "8 L X+30 Y+20 R0 FMAX\n"
+    "9 L Z-10 R0 F100\n"
+    "10 L Z+5 R0 FMAX\n"
+    "11 TOOL CALL 2 Z S3000\n"
+    "12 L X+60 Y+40 R0 FMAX\n"
+    "13 L Z-2 R0 F200\n"
+    "14 L X+90 F300\n"
+    "15 L Z+5 R0 FMAX\n"
+    "16 END PGM PARTS MM\n";
+
+struct Fixture {
+    std::filesystem::path root = kerf::test::uniqueTempDir("testrun");
+    machine::MachineConfig machine = *machine::loadMachine("mill");
+    TestRunController controller{machine, root};
+
+    Fixture() {
+        test::testApp();
+        std::filesystem::copy_file(
+            std::filesystem::path(KERF_SOURCE_DIR) / "tests/graphics/programs/TOOL.T",
+            root / "TOOL.T");
+        controller.setTickMs(0);  // the tests drive the playback with advance()
+    }
+    // Starts the program and waits until it is interpreted.
+    void start(const char* text, program::Dialect dialect = program::Dialect::Klartext) {
+        QSignalSpy ready(&controller, &TestRunController::programReady);
+        controller.start(QString::fromUtf8(text), root / "PARTS.H", dialect);
+        ASSERT_TRUE(ready.wait(20000));
+    }
+    double rapidS(double lengthMm) const { return lengthMm / machine.rapidVelocityMmPerS; }
+};
+
+// Rapids: 5 + 25 + 15 + 15 + 15 + sqrt(30^2 + 20^2) + 7 mm; feeds: 15 mm at 100 mm/min twice,
+// 7 mm at 200 and 30 mm at 300 mm/min.
+double handComputedTimeS(const Fixture& f) {
+    return 9.0 + 9.0 + 2.1 + 6.0 + f.rapidS(5 + 25 + 15 + 15 + 15 + std::hypot(30.0, 20.0) + 7);
+}
+
+TEST(TestRun, FinishesWithTheMachiningTimeAndRemovedVolumeOfTheProgram) {
+    Fixture f;
+    f.controller.setSpeed(TestRunSpeed::Max);
+    f.start(kParts);
+    EXPECT_NEAR(f.controller.machiningTimeS(), handComputedTimeS(f), 1e-6);
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
+    EXPECT_DOUBLE_EQ(f.controller.playbackTimeS(), f.controller.machiningTimeS());
+
+    ASSERT_NE(f.controller.stock(), nullptr);
+    ASSERT_TRUE(f.controller.stock()->waitFinished(std::chrono::seconds(30)));
+    // A drilled hole: a cylinder of R 2.5 down to the point, whose cone (118 degrees) is
+    // h = R / tan(59 deg) long. The slot: 30 x 10 x 2 and the two half circles at its ends.
+    const double pi = std::numbers::pi;
+    const double cone = 2.5 / std::tan(59.0 * pi / 180.0);
+    const double hole = pi * 2.5 * 2.5 * (10.0 - cone) + pi * 2.5 * 2.5 * cone / 3.0;
+    const double slot = 30.0 * 10.0 * 2.0 + pi * 5.0 * 5.0 * 2.0;
+    const double expected = 2.0 * hole + slot;
+    EXPECT_NEAR(f.controller.stock()->latest()->removedVolumeMm3, expected, 0.02 * expected);
+}
+
+TEST(TestRun, SpeedSetsHowFastMachiningTimePassesAndTheToolFollowsThePath) {
+    Fixture f;
+    f.controller.setSpeed(TestRunSpeed::Times10);
+    f.start(kParts);
+    ASSERT_EQ(f.controller.state(), TestRunController::State::Playing);
+    f.controller.advance(0.5);  // x10: five seconds of machining
+    EXPECT_NEAR(f.controller.playbackTimeS(), 5.0, 1e-9);
+    // Five seconds in, the drill is on its way down the first hole (15, 20) at 100 mm/min.
+    const double drilling = 5.0 - f.rapidS(5 + 25);
+    const Vec3 tool = f.controller.toolPosition();
+    EXPECT_NEAR(tool.x(), 15.0, 1e-4);
+    EXPECT_NEAR(tool.y(), 20.0, 1e-4);
+    EXPECT_NEAR(tool.z(), 5.0 - 100.0 / 60.0 * drilling, 1e-3);
+    EXPECT_EQ(f.controller.currentLine(), 7);
+    // The status tabs get the interpreter's state at that block: line 7, tool 1.
+    const auto* status = f.controller.program()->statusAt(5.0);
+    ASSERT_NE(status, nullptr);
+    EXPECT_EQ(status->status.line, 7u);
+    EXPECT_EQ(status->status.tool.number, 1);
+    std::vector<uint32_t> statusLines;
+    QObject::connect(
+        &f.controller, &TestRunController::programStatusChanged,
+        [&statusLines](const interp::ProgramStatus& s) { statusLines.push_back(s.line); });
+
+    f.controller.setSpeed(TestRunSpeed::Times100);
+    f.controller.advance(0.1);  // x100: ten more seconds
+    EXPECT_NEAR(f.controller.playbackTimeS(), 15.0, 1e-9);
+    // Fifteen seconds in: the second hole (line 10) is being drilled.
+    EXPECT_EQ(statusLines, std::vector<uint32_t>{10u});
+    f.controller.stop();
+    f.controller.advance(1.0);  // stopped: time stands still
+    EXPECT_NEAR(f.controller.playbackTimeS(), 15.0, 1e-9);
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Stopped);
+
+    f.controller.reset();
+    EXPECT_EQ(f.controller.playbackTimeS(), 0.0);
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Ready);
+
+    // With the timer, real time passes: a few ticks at x1 move the playback on by about as much.
+    f.controller.setTickMs(20);
+    f.controller.setSpeed(TestRunSpeed::Real);
+    f.controller.play();
+    QTest::qWait(300);
+    EXPECT_GT(f.controller.playbackTimeS(), 0.1);
+    EXPECT_LT(f.controller.playbackTimeS(), 5.0);
+    f.controller.setSpeed(TestRunSpeed::Max);
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
+}
+
+TEST(TestRun, AProgramWithAnErrorStopsWithADiagnosticAtItsLine) {
+    Fixture f;
+    QSignalSpy diagnostics(&f.controller, &TestRunController::diagnostic);
+    f.start(
+        "0 BEGIN PGM BAD MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+        "3 TOOL CALL 1 Z S2000\n4 L Z+5 R0 FMAX\n5 BOGUS WORD\n6 END PGM BAD MM\n");
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Failed);
+    bool errorAtLine6 = false;
+    for (const QList<QVariant>& d : diagnostics) {
+        if (d.at(0).value<Severity>() == Severity::Error && d.at(2).toInt() == 6)
+            errorAtLine6 = true;
+    }
+    EXPECT_TRUE(errorAtLine6) << diagnostics.count() << " diagnostics";
+    // Nothing plays.
+    f.controller.play();
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Failed);
+}
+
+TEST(TestRun, ADialectWithoutAnInterpreterIsRefusedWithAMessage) {
+    Fixture f;
+    QSignalSpy diagnostics(&f.controller, &TestRunController::diagnostic);
+    f.start("%PARTS\nN10 G00 X10\nN20 M30\n", program::Dialect::TncIso);
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Failed);
+    ASSERT_EQ(diagnostics.count(), 1);
+    EXPECT_TRUE(diagnostics.at(0).at(1).toString().contains(QStringLiteral("dialect")));
+}
+
+}  // namespace
+}  // namespace kerf::ui

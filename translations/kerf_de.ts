@@ -1,0 +1,5201 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>kerf::ui::CycleCatalogueDialog</name>
+    <message>
+        <source>There is no cycle %1</source>
+        <translation>Es gibt keinen Zyklus %1</translation>
+    </message>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Zyklusdefinition</translation>
+    </message>
+    <message>
+        <source>Cycle number</source>
+        <translation>Zyklusnummer</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::CycleDialog</name>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Zyklusdefinition</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FagorTableModel</name>
+    <message>
+        <source>Key</source>
+        <translation>Schlüssel</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FileManager</name>
+    <message>
+        <source>All files</source>
+        <translation>Alle Dateien</translation>
+    </message>
+    <message>
+        <source>Programs (.H .I .PIT)</source>
+        <translation>Programme (.H .I .PIT)</translation>
+    </message>
+    <message>
+        <source>Tables (.T .TCH .PR .D .PNT .TAB)</source>
+        <translation>Tabellen (.T .TCH .PR .D .PNT .TAB)</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>NC-Verzeichnis: %1</translation>
+    </message>
+    <message>
+        <source>Recent files</source>
+        <translation>Zuletzt gewählte Dateien</translation>
+    </message>
+    <message>
+        <source>File manager</source>
+        <translation>Datei-Verwaltung</translation>
+    </message>
+    <message>
+        <source>Copy %1 to:</source>
+        <translation>%1 kopieren nach:</translation>
+    </message>
+    <message>
+        <source>Copied to %1</source>
+        <translation>Kopiert nach %1</translation>
+    </message>
+    <message>
+        <source>Move %1 to folder:</source>
+        <translation>%1 verschieben in Verzeichnis:</translation>
+    </message>
+    <message>
+        <source>New name for %1:</source>
+        <translation>Neuer Name für %1:</translation>
+    </message>
+    <message>
+        <source>Delete %1?</source>
+        <translation>%1 löschen?</translation>
+    </message>
+    <message>
+        <source>Name of the new folder:</source>
+        <translation>Name des neuen Verzeichnisses:</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FindBar</name>
+    <message>
+        <source>Find</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Replace with</source>
+        <translation>Ersetzen durch</translation>
+    </message>
+    <message>
+        <source>Match case</source>
+        <translation>Groß-/Kleinschreibung</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>Vorheriges</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Nächstes</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Ersetzen</translation>
+    </message>
+    <message>
+        <source>Replace all</source>
+        <translation>Alle ersetzen</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>Nicht gefunden</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n replaced</source>
+        <translation>
+            <numerusform>%n ersetzt</numerusform>
+            <numerusform>%n ersetzt</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::GraphicsPanel</name>
+    <message>
+        <source>The 3D graphics need a display</source>
+        <translation>Die 3D-Grafik braucht eine Anzeige</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Machining time %1 / %2</source>
+        <translation>Bearbeitungszeit %1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineSession</name>
+    <message>
+        <source>The machine is busy: stop the program or wait until the axes stand still</source>
+        <translation>Die Maschine ist beschäftigt: das Programm anhalten oder warten, bis die Achsen stehen</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot be started</source>
+        <translation>Das Programm enthält Fehler und kann nicht gestartet werden</translation>
+    </message>
+    <message>
+        <source>Program finished</source>
+        <translation>Programm beendet</translation>
+    </message>
+    <message>
+        <source>Program stopped</source>
+        <translation>Programm angehalten</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MainWindow</name>
+    <message>
+        <source>%1 has unsaved changes from an earlier session: press &quot;Restore autosave&quot; to get them back</source>
+        <translation>%1 hat ungespeicherte Änderungen aus einer früheren Sitzung: „Autosave wiederherstellen“ holt sie zurück</translation>
+    </message>
+    <message>
+        <source>Kerf - %1</source>
+        <translation>Kerf - %1</translation>
+    </message>
+    <message>
+        <source>Programming station</source>
+        <translation>Programmierplatz</translation>
+    </message>
+    <message>
+        <source>Screen
+layout</source>
+        <translation>Bildschirm-
+aufteilung</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <source>Tool
+table</source>
+        <translation>Werkzeug-
+tabelle</translation>
+    </message>
+    <message>
+        <source>Message
+list</source>
+        <translation>Meldungs-
+liste</translation>
+    </message>
+    <message>
+        <source>Clear
+messages</source>
+        <translation>Meldungen
+löschen</translation>
+    </message>
+    <message>
+        <source>Language
+%1</source>
+        <translation>Sprache
+%1</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Protect /
+unprotect</source>
+        <translation>Schützen /
+freigeben</translation>
+    </message>
+    <message>
+        <source>New
+folder</source>
+        <translation>Neues
+Verzeichnis</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Insert
+row</source>
+        <translation>Zeile
+einfügen</translation>
+    </message>
+    <message>
+        <source>Delete
+row</source>
+        <translation>Zeile
+löschen</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Find /
+replace</source>
+        <translation>Suchen /
+ersetzen</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Go to
+line</source>
+        <translation>Gehe zu
+Zeile</translation>
+    </message>
+    <message>
+        <source>Go to line</source>
+        <translation>Gehe zu Zeile</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Renumber
+blocks</source>
+        <translation>Sätze neu
+nummerieren</translation>
+    </message>
+    <message>
+        <source>Check
+program</source>
+        <translation>Programm
+prüfen</translation>
+    </message>
+    <message>
+        <source>Restore
+autosave</source>
+        <translation>Autosave
+wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tabellen</translation>
+    </message>
+    <message>
+        <source>MOD</source>
+        <translation>MOD</translation>
+    </message>
+    <message>
+        <source>No program is open: open one in Files</source>
+        <translation>Kein Programm geöffnet: eines in Dateien öffnen</translation>
+    </message>
+    <message>
+        <source>Machine
+parameters</source>
+        <translation>Maschinen-
+parameter</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Speed
+%1</source>
+        <translation>Geschwindigkeit
+%1</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Zoom
++</source>
+        <translation>Zoom
++</translation>
+    </message>
+    <message>
+        <source>Zoom
+-</source>
+        <translation>Zoom
+-</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MessagePanel</name>
+    <message>
+        <source>Severity</source>
+        <translation>Schwere</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>No messages</source>
+        <translation>Keine Meldungen</translation>
+    </message>
+    <message>
+        <source>line %1: </source>
+        <translation>Zeile %1: </translation>
+    </message>
+    <message>
+        <source>%1 - %2%3</source>
+        <translation>%1 - %2%3</translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n more)</source>
+        <translation>
+            <numerusform> (%n weitere)</numerusform>
+            <numerusform> (%n weitere)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ModPage</name>
+    <message>
+        <source>MOD functions</source>
+        <translation>MOD-Funktionen</translation>
+    </message>
+    <message>
+        <source>Position display</source>
+        <translation>Positions-Anzeige</translation>
+    </message>
+    <message>
+        <source>Unit of the position display</source>
+        <translation>Maßeinheit der Positions-Anzeige</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Software: Kerf %1 (Qt %2)
+Machine: %3</source>
+        <translation>Software: Kerf %1 (Qt %2)
+Maschine: %3</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::OverrideControls</name>
+    <message>
+        <source>Feed</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Eilgang</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindel</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PathFunctionDialog</name>
+    <message>
+        <source>Path function</source>
+        <translation>Bahnfunktion</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PositionDisplay</name>
+    <message>
+        <source>ACTL.</source>
+        <translation>IST</translation>
+    </message>
+    <message>
+        <source>NOML.</source>
+        <translation>SOLL</translation>
+    </message>
+    <message>
+        <source>REF ACTL.</source>
+        <translation>REFIST</translation>
+    </message>
+    <message>
+        <source>REF NOML.</source>
+        <translation>REFSOLL</translation>
+    </message>
+    <message>
+        <source>LAG</source>
+        <translation>SCHPF</translation>
+    </message>
+    <message>
+        <source>DIST.</source>
+        <translation>RESTW</translation>
+    </message>
+    <message>
+        <source>Program: %1   Machine: %2</source>
+        <translation>Programm: %1   Maschine: %2</translation>
+    </message>
+    <message>
+        <source>   Line %1</source>
+        <translation>   Zeile %1</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>F %1 (actual %2) %3</source>
+        <translation>F %1 (Ist %2) %3</translation>
+    </message>
+    <message>
+        <source>inch/min</source>
+        <translation>inch/min</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>S %1 (actual %2) rpm</source>
+        <translation>S %1 (Ist %2) 1/min</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ProgramPanel</name>
+    <message>
+        <source>Loading %1 ...</source>
+        <translation>%1 wird geladen ...</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Autosave fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Kein Programm</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsModel</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Achse %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Allowed</source>
+        <translation>Erlaubt</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsPage</name>
+    <message>
+        <source>Not saved: correct the parameters first</source>
+        <translation>Nicht gespeichert: zuerst die Parameter korrigieren</translation>
+    </message>
+    <message>
+        <source>Saved %1: the changes apply when Kerf is restarted</source>
+        <translation>%1 gespeichert: die Änderungen gelten nach einem Neustart von Kerf</translation>
+    </message>
+    <message>
+        <source>Machine parameters</source>
+        <translation>Maschinenparameter</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes apply after a restart. This is a built-in machine: the parameters are saved to %1; start Kerf with --machine %1 to use them.</source>
+        <translation>Kerf liest die Maschinenparameter beim Start: gespeicherte Änderungen gelten nach einem Neustart. Dies ist eine eingebaute Maschine: die Parameter werden in %1 gespeichert; Kerf mit --machine %1 starten, um sie zu verwenden.</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
+        <translation>Kerf liest die Maschinenparameter beim Start: in %1 gespeicherte Änderungen gelten nach einem Neustart.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::StatusTabs</name>
+    <message>
+        <source>PGM</source>
+        <translation>PGM</translation>
+    </message>
+    <message>
+        <source>TOOL</source>
+        <translation>TOOL</translation>
+    </message>
+    <message>
+        <source>TRANS</source>
+        <translation>TRANS</translation>
+    </message>
+    <message>
+        <source>PROBE</source>
+        <translation>PROBE</translation>
+    </message>
+    <message>
+        <source>%1PARA</source>
+        <translation>%1PARA</translation>
+    </message>
+    <message>
+        <source>Filter, e.g. %1</source>
+        <translation>Filter, z. B. %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>Called program</source>
+        <translation>Aufgerufenes Programm</translation>
+    </message>
+    <message>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Zyklus</translation>
+    </message>
+    <message>
+        <source>M functions</source>
+        <translation>M-Funktionen</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation>inch</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Korrektur</translation>
+    </message>
+    <message>
+        <source>X (radius)</source>
+        <translation>X (Radius)</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Wear X (I)</source>
+        <translation>Verschleiß X (I)</translation>
+    </message>
+    <message>
+        <source>Wear Z (K)</source>
+        <translation>Verschleiß Z (K)</translation>
+    </message>
+    <message>
+        <source>Location code (F)</source>
+        <translation>Lagecode (F)</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>DL</source>
+        <translation>DL</translation>
+    </message>
+    <message>
+        <source>DR</source>
+        <translation>DR</translation>
+    </message>
+    <message>
+        <source>Tool axis</source>
+        <translation>Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>Zero offset</source>
+        <translation>Nullpunktverschiebung</translation>
+    </message>
+    <message>
+        <source>Datum shift %1</source>
+        <translation>Nullpunkt-Verschiebung %1</translation>
+    </message>
+    <message>
+        <source>Mirrored axes</source>
+        <translation>Gespiegelte Achsen</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Drehung</translation>
+    </message>
+    <message>
+        <source>Scaling</source>
+        <translation>Maßfaktor</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>global</source>
+        <translation>global</translation>
+    </message>
+    <message>
+        <source>local, level %1</source>
+        <translation>lokal, Ebene %1</translation>
+    </message>
+    <message>
+        <source>local</source>
+        <translation>lokal</translation>
+    </message>
+    <message>
+        <source>remanent</source>
+        <translation>remanent</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Tastsystem</translation>
+    </message>
+    <message>
+        <source>no result</source>
+        <translation>kein Ergebnis</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>berührt</translation>
+    </message>
+    <message>
+        <source>not touched</source>
+        <translation>nicht berührt</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TableChooser</name>
+    <message>
+        <source>Tool
+table</source>
+        <translation>Werkzeug-
+tabelle</translation>
+    </message>
+    <message>
+        <source>Preset
+table</source>
+        <translation>Bezugspunkt-
+tabelle</translation>
+    </message>
+    <message>
+        <source>Datum
+table</source>
+        <translation>Nullpunkt-
+tabelle</translation>
+    </message>
+    <message>
+        <source>Point
+table</source>
+        <translation>Punkte-
+tabelle</translation>
+    </message>
+    <message>
+        <source>Touch probe
+table</source>
+        <translation>Tastsystem-
+tabelle</translation>
+    </message>
+    <message>
+        <source>Tool
+offsets</source>
+        <translation>Werkzeug-
+korrekturen</translation>
+    </message>
+    <message>
+        <source>Zero
+offsets</source>
+        <translation>Nullpunkt-
+verschiebungen</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabelle</translation>
+    </message>
+    <message>
+        <source>Lengths, radii, wear and life of the tools</source>
+        <translation>Längen, Radien, Verschleiß und Standzeit der Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Reference points of the workpieces, in machine coordinates</source>
+        <translation>Bezugspunkte der Werkstücke, in Maschinenkoordinaten</translation>
+    </message>
+    <message>
+        <source>Zero offsets relative to the active preset (CYCL DEF 7)</source>
+        <translation>Nullpunkte bezogen auf den aktiven Bezugspunkt (CYCL DEF 7)</translation>
+    </message>
+    <message>
+        <source>Machining positions for patterns (SEL PATTERN)</source>
+        <translation>Bearbeitungspositionen für Muster (SEL PATTERN)</translation>
+    </message>
+    <message>
+        <source>Workpiece touch probes: centre offset, feeds, probing path</source>
+        <translation>Werkstück-Tastsysteme: Mittenversatz, Vorschübe, Antastweg</translation>
+    </message>
+    <message>
+        <source>Tool offsets D: X, Z, nose radius R, location code F, wear I, K</source>
+        <translation>Werkzeugkorrekturen D: X, Z, Schneidenradius R, Lagecode F, Verschleiß I, K</translation>
+    </message>
+    <message>
+        <source>Zero offsets G54-G59, G159 N7-N20 and the PLC offset, from machine zero</source>
+        <translation>Nullpunktverschiebungen G54-G59, G159 N7-N20 und die PLC-Verschiebung, vom Maschinen-Nullpunkt aus</translation>
+    </message>
+    <message>
+        <source>Tools T: offset D, family, tool life, nose angle and width</source>
+        <translation>Werkzeuge T: Korrektur D, Familie, Standzeit, Schneidenwinkel und -breite</translation>
+    </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tabellen</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TableEditor</name>
+    <message>
+        <source>Search</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>No table</source>
+        <translation>Keine Tabelle</translation>
+    </message>
+    <message>
+        <source>Not saved: correct the table first</source>
+        <translation>Nicht gespeichert: zuerst die Tabelle korrigieren</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Delete row %1 (%2)?</source>
+        <translation>Zeile %1 (%2) löschen?</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabelle</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TestRunController</name>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>Test run: %1</source>
+        <translation>Programm-Test: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ViewportWidget</name>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Vorderansicht</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Seitenansicht</translation>
+    </message>
+    <message>
+        <source>Section</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::Workspace</name>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>Program +
+graphics</source>
+        <translation>Programm +
+Grafik</translation>
+    </message>
+    <message>
+        <source>Program +
+status</source>
+        <translation>Programm +
+Status</translation>
+    </message>
+    <message>
+        <source>Positions +
+status</source>
+        <translation>Positionen +
+Status</translation>
+    </message>
+</context>
+<context>
+    <name>kerf</name>
+    <message>
+        <source>Note</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Manual operation</source>
+        <translation>Manueller Betrieb</translation>
+    </message>
+    <message>
+        <source>Electronic handwheel</source>
+        <translation>Elektronisches Handrad</translation>
+    </message>
+    <message>
+        <source>Positioning with manual data input</source>
+        <translation>Positionieren mit Handeingabe</translation>
+    </message>
+    <message>
+        <source>Program run, single block</source>
+        <translation>Programmlauf Einzelsatz</translation>
+    </message>
+    <message>
+        <source>Program run, full sequence</source>
+        <translation>Programmlauf Satzfolge</translation>
+    </message>
+    <message>
+        <source>Programming</source>
+        <translation>Programmieren</translation>
+    </message>
+    <message>
+        <source>Test run</source>
+        <translation>Programm-Test</translation>
+    </message>
+    <message>
+        <source>stop the program before changing the operating mode</source>
+        <translation>das Programm anhalten, bevor die Betriebsart gewechselt wird</translation>
+    </message>
+    <message>
+        <source>programming station: no machine is connected, only Programming and Test run are available</source>
+        <translation>Programmierplatz: keine Maschine angeschlossen, nur Programmieren und Programm-Test sind verfügbar</translation>
+    </message>
+    <message>
+        <source>cannot {1}: {2}</source>
+        <translation>{1} nicht möglich: {2}</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip to workpiece surface</source>
+        <translation>Sicherheits-Abstand: Werkzeugspitze bis Werkstück-Oberfläche</translation>
+    </message>
+    <message>
+        <source>Depth: workpiece surface to bottom (sign = direction)</source>
+        <translation>Tiefe: Werkstück-Oberfläche bis Grund (Vorzeichen = Richtung)</translation>
+    </message>
+    <message>
+        <source>Thread depth: workpiece surface to thread end</source>
+        <translation>Gewindetiefe: Werkstück-Oberfläche bis Gewindeende</translation>
+    </message>
+    <message>
+        <source>Plunging depth per infeed</source>
+        <translation>Zustell-Tiefe je Zustellung</translation>
+    </message>
+    <message>
+        <source>Workpiece surface coordinate</source>
+        <translation>Koordinate Werkstück-Oberfläche</translation>
+    </message>
+    <message>
+        <source>2nd set-up clearance: no collision above this height</source>
+        <translation>2. Sicherheits-Abstand: keine Kollision oberhalb dieser Höhe</translation>
+    </message>
+    <message>
+        <source>Minimum plunging depth when decreasing</source>
+        <translation>Minimale Zustell-Tiefe beim Verringern</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging</source>
+        <translation>Vorschub Tiefenzustellung</translation>
+    </message>
+    <message>
+        <source>Feed rate for milling</source>
+        <translation>Vorschub Fräsen</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: plunging feed)</source>
+        <translation>Vorschub Rückzug (0: Vorschub Tiefenzustellung)</translation>
+    </message>
+    <message>
+        <source>Dwell time at the top</source>
+        <translation>Verweilzeit oben</translation>
+    </message>
+    <message>
+        <source>Dwell time at depth</source>
+        <translation>Verweilzeit unten</translation>
+    </message>
+    <message>
+        <source>Decrement of the plunging depth after each infeed</source>
+        <translation>Abnahmebetrag der Zustell-Tiefe nach jeder Zustellung</translation>
+    </message>
+    <message>
+        <source>Feed rate for pre-positioning</source>
+        <translation>Vorschub Vorpositionieren</translation>
+    </message>
+    <message>
+        <source>Feed rate for countersinking</source>
+        <translation>Vorschub Senken</translation>
+    </message>
+    <message>
+        <source>Retraction distance for chip breaking</source>
+        <translation>Rückzug bei Spanbruch</translation>
+    </message>
+    <message>
+        <source>Depth for chip breaking (0: none)</source>
+        <translation>Tiefe für Spanbruch (0: keiner)</translation>
+    </message>
+    <message>
+        <source>Upper advanced stop distance</source>
+        <translation>Oberer Vorhalteabstand</translation>
+    </message>
+    <message>
+        <source>Angle for spindle orientation</source>
+        <translation>Winkel für Spindel-Orientierung</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (0 none, 1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Freifahr-Richtung (0 keine, 1 -Hauptachse, 2 -Nebenachse, 3 +Hauptachse, 4 +Nebenachse)</translation>
+    </message>
+    <message>
+        <source>Nominal diameter</source>
+        <translation>Soll-Durchmesser</translation>
+    </message>
+    <message>
+        <source>Thread pitch (+ right-hand, - left-hand)</source>
+        <translation>Gewindesteigung (+ Rechtsgewinde, - Linksgewinde)</translation>
+    </message>
+    <message>
+        <source>Climb (+1) or up-cut (-1) milling with M3</source>
+        <translation>Gleichlauf- (+1) oder Gegenlauffräsen (-1) mit M3</translation>
+    </message>
+    <message>
+        <source>Threads per step (0 one 360° helix, 1 continuous)</source>
+        <translation>Gänge pro Schritt (0 eine 360°-Helix, 1 kontinuierlich)</translation>
+    </message>
+    <message>
+        <source>Countersinking depth: surface to tool tip</source>
+        <translation>Senktiefe: Oberfläche bis Werkzeugspitze</translation>
+    </message>
+    <message>
+        <source>Total hole depth</source>
+        <translation>Gesamt-Bohrtiefe</translation>
+    </message>
+    <message>
+        <source>Clearance to side: tool edge to hole wall</source>
+        <translation>Sicherheits-Abstand seitlich: Werkzeugschneide bis Bohrungswand</translation>
+    </message>
+    <message>
+        <source>Depth at front: surface to tool tip</source>
+        <translation>Tiefe stirnseitig: Oberfläche bis Werkzeugspitze</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front (tool centre)</source>
+        <translation>Versatz Senken stirnseitig (Werkzeugmitte)</translation>
+    </message>
+    <message>
+        <source>Feed rate for approaching (0: milling feed)</source>
+        <translation>Vorschub Anfahren (0: Vorschub Fräsen)</translation>
+    </message>
+    <message>
+        <source>Deepened starting point below the surface</source>
+        <translation>Vertiefter Startpunkt unter der Oberfläche</translation>
+    </message>
+    <message>
+        <source>Depth reference (0 tool tip, 1 cylindrical part)</source>
+        <translation>Tiefenbezug (0 Werkzeugspitze, 1 zylindrischer Teil)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>Zyklus {1}: {2} ({3}) = {4} muss eine ganze Zahl von {5} bis {6} sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>Zyklus {1}: {2} ({3}) = {4} liegt außerhalb {5} bis {6}</translation>
+    </message>
+    <message>
+        <source>DRILLING</source>
+        <translation>BOHREN</translation>
+    </message>
+    <message>
+        <source>REAMING</source>
+        <translation>REIBEN</translation>
+    </message>
+    <message>
+        <source>BORING</source>
+        <translation>AUSDREHEN</translation>
+    </message>
+    <message>
+        <source>Number of chip breaks before retracting</source>
+        <translation>Anzahl Spanbrüche bis zum Rückzug</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL DRILLING</source>
+        <translation>UNIVERSAL-BOHREN</translation>
+    </message>
+    <message>
+        <source>Depth of counterbore from the underside (+ upwards)</source>
+        <translation>Tiefe Senkung von der Unterseite (+ nach oben)</translation>
+    </message>
+    <message>
+        <source>Material thickness</source>
+        <translation>Materialstärke</translation>
+    </message>
+    <message>
+        <source>Off-centre distance of the boring bar</source>
+        <translation>Exzentermaß der Bohrstange</translation>
+    </message>
+    <message>
+        <source>Tool edge height above the underside of the bar</source>
+        <translation>Schneidenhöhe über der Unterkante der Bohrstange</translation>
+    </message>
+    <message>
+        <source>Feed rate for counterboring</source>
+        <translation>Vorschub Senken</translation>
+    </message>
+    <message>
+        <source>Dwell time at the counterbore floor</source>
+        <translation>Verweilzeit am Senkungsgrund</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Freifahr-Richtung (1 -Hauptachse, 2 -Nebenachse, 3 +Hauptachse, 4 +Nebenachse)</translation>
+    </message>
+    <message>
+        <source>BACK BORING</source>
+        <translation>RÜCKWÄRTS-SENKEN</translation>
+    </message>
+    <message>
+        <source>Lower advanced stop distance</source>
+        <translation>Unterer Vorhalteabstand</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q379 lies at or below the depth</source>
+        <translation>Zyklus {1}: der Startpunkt Q379 liegt auf oder unter der Tiefe</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL PECKING</source>
+        <translation>UNIVERSAL-TIEFBOHREN</translation>
+    </message>
+    <message>
+        <source>Feed rate for helical drilling</source>
+        <translation>Vorschub Helixbohren</translation>
+    </message>
+    <message>
+        <source>Infeed per helix revolution</source>
+        <translation>Zustellung pro Helix-Umdrehung</translation>
+    </message>
+    <message>
+        <source>Roughing (pre-drilled) diameter</source>
+        <translation>Vorbohr-Durchmesser</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter {2} is smaller than the tool diameter {3}</source>
+        <translation>Zyklus {1}: der Soll-Durchmesser {2} ist kleiner als der Werkzeug-Durchmesser {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter is more than twice the tool diameter; enter the roughing diameter Q342</source>
+        <translation>Zyklus {1}: der Soll-Durchmesser ist mehr als doppelt so groß wie der Werkzeug-Durchmesser; Vorbohr-Durchmesser Q342 eingeben</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per helix Q334 must be greater than 0</source>
+        <translation>Zyklus {1}: die Zustellung pro Helix Q334 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>BORE MILLING</source>
+        <translation>BOHRFRÄSEN</translation>
+    </message>
+    <message>
+        <source>Select depth (0) or diameter (1)</source>
+        <translation>Auswahl Tiefe (0) oder Durchmesser (1)</translation>
+    </message>
+    <message>
+        <source>Countersink diameter (sign = direction)</source>
+        <translation>Senkdurchmesser (Vorzeichen = Richtung)</translation>
+    </message>
+    <message>
+        <source>CENTERING</source>
+        <translation>ZENTRIEREN</translation>
+    </message>
+    <message>
+        <source>Direction of rotation for entry and exit (3 M3, 4 M4, 5 stationary)</source>
+        <translation>Drehrichtung beim Ein- und Ausfahren (3 M3, 4 M4, 5 Stillstand)</translation>
+    </message>
+    <message>
+        <source>Spindle speed for entry and exit</source>
+        <translation>Spindeldrehzahl beim Ein- und Ausfahren</translation>
+    </message>
+    <message>
+        <source>Spindle speed for drilling</source>
+        <translation>Spindeldrehzahl beim Bohren</translation>
+    </message>
+    <message>
+        <source>M function for coolant on (0: none)</source>
+        <translation>M-Funktion Kühlmittel EIN (0: keine)</translation>
+    </message>
+    <message>
+        <source>M function for coolant off (0: none)</source>
+        <translation>M-Funktion Kühlmittel AUS (0: keine)</translation>
+    </message>
+    <message>
+        <source>Dwell depth where the feed reduction begins (0: none)</source>
+        <translation>Verweiltiefe, ab der der Vorschub reduziert wird (0: keine)</translation>
+    </message>
+    <message>
+        <source>Feed rate factor beyond the dwell depth</source>
+        <translation>Vorschubfaktor unterhalb der Verweiltiefe</translation>
+    </message>
+    <message>
+        <source>Maximum plunging depth</source>
+        <translation>Maximale Zustell-Tiefe</translation>
+    </message>
+    <message>
+        <source>SINGLE-LIP DEEP-HOLE DRILLING</source>
+        <translation>EINLIPPEN-TIEFBOHREN</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the depth Q{2} = {3} is positive (the machine parameter displayDepthErr forbids it)</source>
+        <translation>Zyklus {1}: die Tiefe Q{2} = {3} ist positiv (der Maschinenparameter displayDepthErr verbietet es)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} infeeds; increase the plunging depth</source>
+        <translation>Zyklus {1}: mehr als {2} Zustellungen; Zustell-Tiefe vergrößern</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the point angle T-ANGLE of the tool in the tool table</source>
+        <translation>Zyklus {1} braucht den Spitzenwinkel T-ANGLE des Werkzeugs in der Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs more than {2} moves</source>
+        <translation>Zyklus {1} braucht mehr als {2} Bewegungen</translation>
+    </message>
+    <message>
+        <source>Path overlap factor</source>
+        <translation>Bahn-Überlappung Faktor</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical, 2 reciprocating)</source>
+        <translation>Eintauchstrategie (0 senkrecht, 1 helixförmig, 2 pendelnd)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance</source>
+        <translation>Sicherheits-Abstand</translation>
+    </message>
+    <message>
+        <source>Clearance height (absolute)</source>
+        <translation>Sichere Höhe (absolut)</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (+1 climb, -1 up-cut)</source>
+        <translation>Drehrichtung (+1 Gleichlauf, -1 Gegenlauf)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance of the probe</source>
+        <translation>Sicherheits-Abstand des Tastsystems</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>Sichere Höhe</translation>
+    </message>
+    <message>
+        <source>Move to clearance height between points</source>
+        <translation>Zwischen Punkten auf sichere Höhe fahren</translation>
+    </message>
+    <message>
+        <source>Height between pattern points: 2nd set-up clearance (1) or the position at the start (0)</source>
+        <translation>Höhe zwischen Musterpunkten: 2. Sicherheits-Abstand (1) oder Position beim Start (0)</translation>
+    </message>
+    <message>
+        <source>GENERAL</source>
+        <translation>ALLGEMEIN</translation>
+    </message>
+    <message>
+        <source>POCKET MILLING</source>
+        <translation>TASCHENFRÄSEN</translation>
+    </message>
+    <message>
+        <source>CONTOUR MILLING</source>
+        <translation>KONTURFRÄSEN</translation>
+    </message>
+    <message>
+        <source>PROBING</source>
+        <translation>ANTASTEN</translation>
+    </message>
+    <message>
+        <source>POSITIONING</source>
+        <translation>POSITIONIEREN</translation>
+    </message>
+    <message>
+        <source>Centre in the 1st axis</source>
+        <translation>Mitte 1. Achse</translation>
+    </message>
+    <message>
+        <source>Centre in the 2nd axis</source>
+        <translation>Mitte 2. Achse</translation>
+    </message>
+    <message>
+        <source>Pitch circle diameter</source>
+        <translation>Teilkreis-Durchmesser</translation>
+    </message>
+    <message>
+        <source>Starting angle</source>
+        <translation>Startwinkel</translation>
+    </message>
+    <message>
+        <source>Stopping angle</source>
+        <translation>Endwinkel</translation>
+    </message>
+    <message>
+        <source>Stepping angle (0: from start, stop and count)</source>
+        <translation>Winkelschritt (0: aus Start, Ende und Anzahl)</translation>
+    </message>
+    <message>
+        <source>Number of operations</source>
+        <translation>Anzahl Bearbeitungen</translation>
+    </message>
+    <message>
+        <source>Move between operations at set-up clearance (0) or at the 2nd set-up clearance (1)</source>
+        <translation>Fahren zwischen Bearbeitungen auf Sicherheits-Abstand (0) oder 2. Sicherheits-Abstand (1)</translation>
+    </message>
+    <message>
+        <source>Type of traverse: straight line (0) or arc on the pitch circle (1)</source>
+        <translation>Verfahrart: Gerade (0) oder Kreisbogen auf dem Teilkreis (1)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the stopping angle Q246 must differ from the starting angle Q245</source>
+        <translation>Zyklus {1}: der Endwinkel Q246 muss sich vom Startwinkel Q245 unterscheiden</translation>
+    </message>
+    <message>
+        <source>POLAR PATTERN</source>
+        <translation>MUSTER KREIS</translation>
+    </message>
+    <message>
+        <source>Starting point in the 1st axis</source>
+        <translation>Startpunkt 1. Achse</translation>
+    </message>
+    <message>
+        <source>Starting point in the 2nd axis</source>
+        <translation>Startpunkt 2. Achse</translation>
+    </message>
+    <message>
+        <source>Spacing in the 1st axis</source>
+        <translation>Abstand 1. Achse</translation>
+    </message>
+    <message>
+        <source>Spacing in the 2nd axis</source>
+        <translation>Abstand 2. Achse</translation>
+    </message>
+    <message>
+        <source>Number of columns</source>
+        <translation>Anzahl Spalten</translation>
+    </message>
+    <message>
+        <source>Number of lines</source>
+        <translation>Anzahl Zeilen</translation>
+    </message>
+    <message>
+        <source>Angle of rotation about the starting point</source>
+        <translation>Drehlage um den Startpunkt</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} positions</source>
+        <translation>Zyklus {1}: mehr als {2} Positionen</translation>
+    </message>
+    <message>
+        <source>CARTESIAN PATTERN</source>
+        <translation>MUSTER LINIEN</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: {1} must be a whole number from 1 to 99999</source>
+        <translation>PATTERN DEF: {1} muss eine ganze Zahl von 1 bis 99999 sein</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: more than {1} positions</source>
+        <translation>PATTERN DEF: mehr als {1} Positionen</translation>
+    </message>
+    <message>
+        <source>Engraving text</source>
+        <translation>Gravurtext</translation>
+    </message>
+    <message>
+        <source>Character height (0: scaled to the text length Q574)</source>
+        <translation>Zeichenhöhe (0: auf die Textlänge Q574 skaliert)</translation>
+    </message>
+    <message>
+        <source>Spacing factor between the characters (0: as the font)</source>
+        <translation>Abstandsfaktor zwischen den Zeichen (0: wie Schriftart)</translation>
+    </message>
+    <message>
+        <source>Font (without function)</source>
+        <translation>Schriftart (ohne Funktion)</translation>
+    </message>
+    <message>
+        <source>Text on a line (0), an arc (1) or an arc, continuous (2)</source>
+        <translation>Text auf einer Geraden (0), einem Bogen (1) oder einem Bogen, umlaufend (2)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (centre angle on an arc)</source>
+        <translation>Drehlage (Mittelpunktswinkel auf einem Bogen)</translation>
+    </message>
+    <message>
+        <source>Radius of the arc the text is on</source>
+        <translation>Radius des Bogens, auf dem der Text steht</translation>
+    </message>
+    <message>
+        <source>Reference of the text position (0-6)</source>
+        <translation>Bezug der Textposition (0-6)</translation>
+    </message>
+    <message>
+        <source>Maximum text length (0: no limit)</source>
+        <translation>Maximale Textlänge (0: unbegrenzt)</translation>
+    </message>
+    <message>
+        <source>ENGRAVING</source>
+        <translation>GRAVIEREN</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line)</source>
+        <translation>Strategie (0 mäanderförmig außen, 1 mäanderförmig am Rand, 2 zeilenweise)</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis (surface)</source>
+        <translation>Startpunkt 3. Achse (Oberfläche)</translation>
+    </message>
+    <message>
+        <source>End point in the 3rd axis</source>
+        <translation>Endpunkt 3. Achse</translation>
+    </message>
+    <message>
+        <source>First side length (sign = direction)</source>
+        <translation>Länge der 1. Seite (Vorzeichen = Richtung)</translation>
+    </message>
+    <message>
+        <source>Second side length (sign = direction)</source>
+        <translation>Länge der 2. Seite (Vorzeichen = Richtung)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the floor</source>
+        <translation>Schlichtaufmaß Tiefe</translation>
+    </message>
+    <message>
+        <source>Maximum path overlap factor</source>
+        <translation>Maximaler Bahn-Überlappungsfaktor</translation>
+    </message>
+    <message>
+        <source>Feed rate for finishing</source>
+        <translation>Vorschub Schlichten</translation>
+    </message>
+    <message>
+        <source>Lateral clearance to the workpiece</source>
+        <translation>Seitlicher Abstand zum Werkstück</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q227 must be above the end point Q386</source>
+        <translation>Zyklus {1}: der Startpunkt Q227 muss über dem Endpunkt Q386 liegen</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool radius R greater than R2</source>
+        <translation>Zyklus {1} braucht einen Werkzeugradius R größer als R2</translation>
+    </message>
+    <message>
+        <source>FACE MILLING</source>
+        <translation>PLANFRÄSEN</translation>
+    </message>
+    <message>
+        <source>cycle 225: with the character height Q513 = 0 the text length Q574 must be given</source>
+        <translation>Zyklus 225: bei Zeichenhöhe Q513 = 0 muss die Textlänge Q574 angegeben werden</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text has no length that Q574 could scale</source>
+        <translation>Zyklus 225: der Text hat keine Länge, die Q574 skalieren könnte</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text is {1} mm long, longer than the maximum text length Q574 = {2}</source>
+        <translation>Zyklus 225: der Text ist {1} mm lang, länger als die maximale Textlänge Q574 = {2}</translation>
+    </message>
+    <message>
+        <source>cycle 225: text on a circle needs the radius Q517</source>
+        <translation>Zyklus 225: Text auf einem Kreis braucht den Radius Q517</translation>
+    </message>
+    <message>
+        <source>cycle 225: the character &apos;{1}&apos; cannot be engraved</source>
+        <translation>Zyklus 225: das Zeichen &apos;{1}&apos; kann nicht graviert werden</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown formatting character &apos;\{1}&apos; in the text (write \\ for a backslash)</source>
+        <translation>Zyklus 225: unbekanntes Formatierungszeichen &apos;\{1}&apos; im Text (\\ für einen Backslash schreiben)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%time{1}&apos; is not a date format (use %time00 to %time15)</source>
+        <translation>Zyklus 225: &apos;%time{1}&apos; ist kein Datumsformat (%time00 bis %time15 verwenden)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%count&apos; needs the number of digits (1 to 9)</source>
+        <translation>Zyklus 225: &apos;%count&apos; braucht die Anzahl der Stellen (1 bis 9)</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown escape &apos;%{1}&apos; in the text (write %% for a percent sign)</source>
+        <translation>Zyklus 225: unbekanntes Steuerzeichen &apos;%{1}&apos; im Text (%% für ein Prozentzeichen schreiben)</translation>
+    </message>
+    <message>
+        <source>Dwell time</source>
+        <translation>Verweilzeit</translation>
+    </message>
+    <message>
+        <source>Program to call as a machining cycle</source>
+        <translation>Als Bearbeitungszyklus aufzurufendes Programm</translation>
+    </message>
+    <message>
+        <source>Orientation angle of the spindle</source>
+        <translation>Orientierungswinkel der Spindel</translation>
+    </message>
+    <message>
+        <source>Tolerance (0: machine default)</source>
+        <translation>Toleranz (0: Maschinen-Standardwert)</translation>
+    </message>
+    <message>
+        <source>Filter: finishing (0) or roughing (1)</source>
+        <translation>Filter: Schlichten (0) oder Schruppen (1)</translation>
+    </message>
+    <message>
+        <source>Tolerance of rotary axes (0: machine default)</source>
+        <translation>Toleranz der Drehachsen (0: Maschinen-Standardwert)</translation>
+    </message>
+    <message>
+        <source>DWELL TIME</source>
+        <translation>VERWEILZEIT</translation>
+    </message>
+    <message>
+        <source>PGM CALL</source>
+        <translation>PGM CALL</translation>
+    </message>
+    <message>
+        <source>ORIENTED SPINDLE STOP</source>
+        <translation>SPINDEL-ORIENTIERUNG</translation>
+    </message>
+    <message>
+        <source>TOLERANCE</source>
+        <translation>TOLERANZ</translation>
+    </message>
+    <message>
+        <source>Total hole depth from the current position</source>
+        <translation>Gesamt-Bohrtiefe ab der aktuellen Position</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch is 0</source>
+        <translation>Zyklus {1}: die Gewindesteigung ist 0</translation>
+    </message>
+    <message>
+        <source>THREAD CUTTING</source>
+        <translation>GEWINDESCHNEIDEN</translation>
+    </message>
+    <message>
+        <source>Feed rate for tapping (spindle speed x pitch)</source>
+        <translation>Vorschub Gewindebohren (Spindeldrehzahl x Steigung)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the spindle running (M3 or M4)</source>
+        <translation>Zyklus {1} braucht eine laufende Spindel (M3 oder M4)</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH A FLOATING TAP HOLDER</source>
+        <translation>GEWINDEBOHREN MIT AUSGLEICHSFUTTER</translation>
+    </message>
+    <message>
+        <source>RIGID TAPPING</source>
+        <translation>GEWINDEBOHREN OHNE AUSGLEICHSFUTTER</translation>
+    </message>
+    <message>
+        <source>Retraction for chip breaking in pitches (0: out of the hole)</source>
+        <translation>Rückzug bei Spanbruch in Gewindegängen (0: aus der Bohrung)</translation>
+    </message>
+    <message>
+        <source>Spindle speed factor for retraction</source>
+        <translation>Faktor Spindeldrehzahl beim Rückzug</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH CHIP BREAKING</source>
+        <translation>GEWINDEBOHREN SPANBRUCH</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch {2} differs from the pitch {3} of the tool in the tool table</source>
+        <translation>Zyklus {1}: die Gewindesteigung {2} weicht von der Steigung {3} des Werkzeugs in der Werkzeugtabelle ab</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch Q{2} is 0</source>
+        <translation>Zyklus {1}: die Gewindesteigung Q{2} ist 0</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING</source>
+        <translation>GEWINDEFRÄSEN</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING/COUNTERSINKING</source>
+        <translation>SENKGEWINDEFRÄSEN</translation>
+    </message>
+    <message>
+        <source>THREAD DRILLING/MILLING</source>
+        <translation>BOHRGEWINDEFRÄSEN</translation>
+    </message>
+    <message>
+        <source>Countersink before (0) or after (1) the thread</source>
+        <translation>Senken vor (0) oder nach (1) dem Gewinde</translation>
+    </message>
+    <message>
+        <source>HELICAL THREAD DRILLING/MILLING</source>
+        <translation>HELIX-BOHRGEWINDEFRÄSEN</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front: stud centre to tool centre</source>
+        <translation>Versatz Senken stirnseitig: Zapfenmitte bis Werkzeugmitte</translation>
+    </message>
+    <message>
+        <source>OUTSIDE THREAD MILLING</source>
+        <translation>AUSSENGEWINDE FRÄSEN</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter {2} is too large for the nominal diameter {3}</source>
+        <translation>Zyklus {1}: der Werkzeug-Durchmesser {2} ist zu groß für den Soll-Durchmesser {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: unexpected &apos;{2}&apos;</source>
+        <translation>Zyklus {1}: unerwartetes &apos;{2}&apos;</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} needs a value</source>
+        <translation>Zyklus {1}: {2} braucht einen Wert</translation>
+    </message>
+    <message>
+        <source>cycle {1}: scaling factor {2} = {3} is outside 0.000001 to 99.999999</source>
+        <translation>Zyklus {1}: Maßfaktor {2} = {3} liegt außerhalb 0.000001 bis 99.999999</translation>
+    </message>
+    <message>
+        <source>Datum shift per axis (IX: incremental), or #n: datum number of the datum table</source>
+        <translation>Nullpunkt-Verschiebung je Achse (IX: inkremental) oder #n: Nullpunkt-Nummer der Nullpunkttabelle</translation>
+    </message>
+    <message>
+        <source>Mirrored axes (none: mirroring off)</source>
+        <translation>Gespiegelte Achsen (keine: Spiegelung aus)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (IROT: incremental)</source>
+        <translation>Drehwinkel (IROT: inkremental)</translation>
+    </message>
+    <message>
+        <source>Scaling factor</source>
+        <translation>Maßfaktor</translation>
+    </message>
+    <message>
+        <source>Scaling factor per axis</source>
+        <translation>Maßfaktor je Achse</translation>
+    </message>
+    <message>
+        <source>Centre of the scaling per axis</source>
+        <translation>Streckungszentrum je Achse</translation>
+    </message>
+    <message>
+        <source>Number of the preset to activate</source>
+        <translation>Nummer des zu aktivierenden Bezugspunkts</translation>
+    </message>
+    <message>
+        <source>Tilt angles of the rotary axes</source>
+        <translation>Schwenkwinkel der Drehachsen</translation>
+    </message>
+    <message>
+        <source>Feed rate for automatic positioning</source>
+        <translation>Vorschub automatisches Positionieren</translation>
+    </message>
+    <message>
+        <source>Set-up clearance for automatic positioning</source>
+        <translation>Sicherheits-Abstand für das automatische Positionieren</translation>
+    </message>
+    <message>
+        <source>cycle {1}: angle of rotation ROT = {2} is outside -360 to 360</source>
+        <translation>Zyklus {1}: Drehwinkel ROT = {2} liegt außerhalb -360 bis 360</translation>
+    </message>
+    <message>
+        <source>DATUM SHIFT</source>
+        <translation>NULLPUNKT-VERSCHIEBUNG</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE</source>
+        <translation>SPIEGELUNG</translation>
+    </message>
+    <message>
+        <source>ROTATION</source>
+        <translation>DREHUNG</translation>
+    </message>
+    <message>
+        <source>SCALING</source>
+        <translation>MASSFAKTOR</translation>
+    </message>
+    <message>
+        <source>AXIS-SPECIFIC SCALING</source>
+        <translation>MASSFAKTOR ACHSSPEZIFISCH</translation>
+    </message>
+    <message>
+        <source>PRESETTING</source>
+        <translation>BEZUGSPUNKT SETZEN</translation>
+    </message>
+    <message>
+        <source>WORKING PLANE</source>
+        <translation>BEARBEITUNGSEBENE</translation>
+    </message>
+    <message>
+        <source>the block is longer than 60000 characters</source>
+        <translation>der Satz ist länger als 60000 Zeichen</translation>
+    </message>
+    <message>
+        <source>empty block: a block needs at least a comment</source>
+        <translation>leerer Satz: ein Satz braucht mindestens einen Kommentar</translation>
+    </message>
+    <message>
+        <source>a block has at most 3 skip marks</source>
+        <translation>ein Satz hat höchstens 3 Ausblendzeichen</translation>
+    </message>
+    <message>
+        <source>a block label cannot be a parameter</source>
+        <translation>eine Satzmarke kann kein Parameter sein</translation>
+    </message>
+    <message>
+        <source>label number expected after N</source>
+        <translation>Marken-Nummer nach N erwartet</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits (N0-N99999999)</source>
+        <translation>eine Marke hat höchstens 8 Stellen (N0-N99999999)</translation>
+    </message>
+    <message>
+        <source>missing &apos;)&apos; at the end of the high-level block</source>
+        <translation>&apos;)&apos; am Ende des Hochsprachen-Satzes fehlt</translation>
+    </message>
+    <message>
+        <source>repetition count expected after N</source>
+        <translation>Wiederholungszahl nach N erwartet</translation>
+    </message>
+    <message>
+        <source>a repetition count has at most 4 digits (N0-N9999)</source>
+        <translation>eine Wiederholungszahl hat höchstens 4 Stellen (N0-N9999)</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; at the end of the block</source>
+        <translation>unerwartetes &apos;{1}&apos; am Satzende</translation>
+    </message>
+    <message>
+        <source>expressions are not allowed in ISO blocks</source>
+        <translation>Ausdrücke sind in ISO-Sätzen nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>parameter number expected after P</source>
+        <translation>Parameter-Nummer nach P erwartet</translation>
+    </message>
+    <message>
+        <source>number expected after the sign of {1}</source>
+        <translation>Zahl nach dem Vorzeichen von {1} erwartet</translation>
+    </message>
+    <message>
+        <source>{1} cannot be negative</source>
+        <translation>{1} darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <source>{1} value {2} is outside the format {3}.{4}</source>
+        <translation>{1}-Wert {2} liegt außerhalb des Formats {3}.{4}</translation>
+    </message>
+    <message>
+        <source>{1} is outside the format {2}.{3}</source>
+        <translation>{1} liegt außerhalb des Formats {2}.{3}</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}</source>
+        <translation>{1} muss eine ganze Zahl von {2} bis {3} sein</translation>
+    </message>
+    <message>
+        <source>{1} is programmed twice</source>
+        <translation>{1} ist doppelt programmiert</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos;: words are written in upper case</source>
+        <translation>&apos;{1}&apos;: Wörter werden in Großbuchstaben geschrieben</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos;</source>
+        <translation>unerwartetes &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>G functions are written at the start of the block</source>
+        <translation>G-Funktionen stehen am Satzanfang</translation>
+    </message>
+    <message>
+        <source>too many G functions in one block</source>
+        <translation>zu viele G-Funktionen in einem Satz</translation>
+    </message>
+    <message>
+        <source>axis letters after G14, G16 or G74 take no value</source>
+        <translation>Achsbuchstaben nach G14, G16 oder G74 haben keinen Wert</translation>
+    </message>
+    <message>
+        <source>I is programmed more than twice</source>
+        <translation>I ist mehr als zweimal programmiert</translation>
+    </message>
+    <message>
+        <source>at most 7 M functions in one block</source>
+        <translation>höchstens 7 M-Funktionen in einem Satz</translation>
+    </message>
+    <message>
+        <source>E belongs to G51</source>
+        <translation>E gehört zu G51</translation>
+    </message>
+    <message>
+        <source>unknown word &apos;{1}&apos;</source>
+        <translation>unbekanntes Wort &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 cannot be used in a thread</source>
+        <translation>G36, G37, G38 und G39 sind in einem Gewinde nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a move in the plane</source>
+        <translation>G36, G37, G38 und G39 brauchen eine Bewegung in der Ebene</translation>
+    </message>
+    <message>
+        <source>the next block must be a contour element in the plane</source>
+        <translation>der nächste Satz muss ein Konturelement in der Ebene sein</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01)</source>
+        <translation>G37 braucht eine Gerade (G00 oder G01)</translation>
+    </message>
+    <message>
+        <source>G37: the start point lies inside the entry circle</source>
+        <translation>G37: der Startpunkt liegt im Anfahrkreis</translation>
+    </message>
+    <message>
+        <source>G36: the rounding radius does not fit between the elements</source>
+        <translation>G36: der Rundungsradius passt nicht zwischen die Elemente</translation>
+    </message>
+    <message>
+        <source>G39 needs straight lines on both sides</source>
+        <translation>G39 braucht auf beiden Seiten Geraden</translation>
+    </message>
+    <message>
+        <source>G39: the chamfer is longer than an adjacent line</source>
+        <translation>G39: die Fase ist länger als eine angrenzende Gerade</translation>
+    </message>
+    <message>
+        <source>the block after G38 must be a straight line (G00 or G01)</source>
+        <translation>der Satz nach G38 muss eine Gerade sein (G00 oder G01)</translation>
+    </message>
+    <message>
+        <source>G38: the end point lies inside the exit circle</source>
+        <translation>G38: der Endpunkt liegt im Abfahrkreis</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a following contour element</source>
+        <translation>G36, G37, G38 und G39 brauchen ein folgendes Konturelement</translation>
+    </message>
+    <message>
+        <source>division by zero</source>
+        <translation>Division durch Null</translation>
+    </message>
+    <message>
+        <source>EXP: {1} to the power {2} has no value</source>
+        <translation>EXP: {1} hoch {2} hat keinen Wert</translation>
+    </message>
+    <message>
+        <source>MOD by zero</source>
+        <translation>MOD durch Null</translation>
+    </message>
+    <message>
+        <source>&apos;)&apos; expected</source>
+        <translation>&apos;)&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>a function argument needs parentheses unless it is a number</source>
+        <translation>ein Funktionsargument braucht Klammern, außer es ist eine Zahl</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is outside its domain</source>
+        <translation>{1}: {2} liegt außerhalb des Definitionsbereichs</translation>
+    </message>
+    <message>
+        <source>a hexadecimal constant has 1 to 8 digits</source>
+        <translation>eine Hexadezimal-Konstante hat 1 bis 8 Stellen</translation>
+    </message>
+    <message>
+        <source>number expected</source>
+        <translation>Zahl erwartet</translation>
+    </message>
+    <message>
+        <source>a constant has at most 6 integer and 5 decimal digits</source>
+        <translation>eine Konstante hat höchstens 6 Vorkomma- und 5 Nachkommastellen</translation>
+    </message>
+    <message>
+        <source>an index must be a whole number, not {1}</source>
+        <translation>ein Index muss eine ganze Zahl sein, nicht {1}</translation>
+    </message>
+    <message>
+        <source>number or (expression) expected</source>
+        <translation>Zahl oder (Ausdruck) erwartet</translation>
+    </message>
+    <message>
+        <source>GPOS needs N&lt;block&gt;</source>
+        <translation>GPOS braucht N&lt;Satz&gt;</translation>
+    </message>
+    <message>
+        <source>GPOS needs P&lt;program&gt;</source>
+        <translation>GPOS braucht P&lt;Programm&gt;</translation>
+    </message>
+    <message>
+        <source>{1} needs a number</source>
+        <translation>{1} braucht eine Zahl</translation>
+    </message>
+    <message>
+        <source>value expected</source>
+        <translation>Wert erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;(&apos; expected</source>
+        <translation>&apos;(&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;,&apos; expected</source>
+        <translation>&apos;,&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in this program</source>
+        <translation>Marke N{1} ist in diesem Programm nicht definiert</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in the program</source>
+        <translation>Marke N{1} ist im Programm nicht definiert</translation>
+    </message>
+    <message>
+        <source>RPT: block N{1} comes before block N{2}</source>
+        <translation>RPT: Satz N{1} steht vor Satz N{2}</translation>
+    </message>
+    <message>
+        <source>more than {1} nested levels</source>
+        <translation>mehr als {1} Verschachtelungsebenen</translation>
+    </message>
+    <message>
+        <source>cannot read program {1}: {2}</source>
+        <translation>Programm {1} kann nicht gelesen werden: {2}</translation>
+    </message>
+    <message>
+        <source>program {1} has errors</source>
+        <translation>Programm {1} enthält Fehler</translation>
+    </message>
+    <message>
+        <source>program {1} is not in the NC root</source>
+        <translation>Programm {1} liegt nicht im NC-Verzeichnis</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is not defined</source>
+        <translation>Unterprogramm {1} ist nicht definiert</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined in more than one program</source>
+        <translation>Unterprogramm {1} ist in mehr als einem Programm definiert</translation>
+    </message>
+    <message>
+        <source>the program with subroutine {1} has errors</source>
+        <translation>das Programm mit Unterprogramm {1} enthält Fehler</translation>
+    </message>
+    <message>
+        <source>error 1255: subroutine restricted to OEM programs</source>
+        <translation>Fehler 1255: Unterprogramm nur für OEM-Programme</translation>
+    </message>
+    <message>
+        <source>more than 6 nested levels of local parameters</source>
+        <translation>mehr als 6 Verschachtelungsebenen lokaler Parameter</translation>
+    </message>
+    <message>
+        <source>subroutine {1} has no RET</source>
+        <translation>Unterprogramm {1} hat kein RET</translation>
+    </message>
+    <message>
+        <source>RET outside a subroutine</source>
+        <translation>RET außerhalb eines Unterprogramms</translation>
+    </message>
+    <message>
+        <source>error 1064: program cannot be executed (MEXEC inside the modal program)</source>
+        <translation>Fehler 1064: Programm kann nicht ausgeführt werden (MEXEC im modalen Programm)</translation>
+    </message>
+    <message>
+        <source>REPOS is only allowed in an interrupt subroutine</source>
+        <translation>REPOS ist nur in einem Interrupt-Unterprogramm erlaubt</translation>
+    </message>
+    <message>
+        <source>REPOS failed</source>
+        <translation>REPOS fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>collision detection removed a loop of the compensated path</source>
+        <translation>die Kollisionsüberwachung hat eine Schleife aus der korrigierten Bahn entfernt</translation>
+    </message>
+    <message>
+        <source>the program ends before the last block of the RPT</source>
+        <translation>das Programm endet vor dem letzten Satz des RPT</translation>
+    </message>
+    <message>
+        <source>the program ends inside a subroutine (RET missing)</source>
+        <translation>das Programm endet in einem Unterprogramm (RET fehlt)</translation>
+    </message>
+    <message>
+        <source>axis {1} is not available on this machine</source>
+        <translation>Achse {1} ist an dieser Maschine nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>N{1}: only a motion block under a modal subroutine (MCALL, MEXEC) or a canned cycle can be repeated</source>
+        <translation>N{1}: nur ein Verfahrsatz unter einem modalen Unterprogramm (MCALL, MEXEC) oder einem Festzyklus kann wiederholt werden</translation>
+    </message>
+    <message>
+        <source>incompatible G functions G51 and {1} (error 7)</source>
+        <translation>unverträgliche G-Funktionen G51 und {1} (Fehler 7)</translation>
+    </message>
+    <message>
+        <source>G40, G41 and G42 need G00 or G01 active, not G02/G03</source>
+        <translation>G40, G41 und G42 brauchen aktives G00 oder G01, nicht G02/G03</translation>
+    </message>
+    <message>
+        <source>radius compensation works in the ZX plane only (PLACOMP 0)</source>
+        <translation>die Radiuskorrektur wirkt nur in der ZX-Ebene (PLACOMP 0)</translation>
+    </message>
+    <message>
+        <source>{1} needs R greater than 0 right after it</source>
+        <translation>{1} braucht unmittelbar danach R größer als 0</translation>
+    </message>
+    <message>
+        <source>G37 needs R greater than 0 right after it</source>
+        <translation>G37 braucht unmittelbar danach R größer als 0</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01), not G02/G03</source>
+        <translation>G37 braucht eine Gerade (G00 oder G01), nicht G02/G03</translation>
+    </message>
+    <message>
+        <source>G06 belongs in a circular interpolation block</source>
+        <translation>G06 gehört in einen Satz mit Kreisinterpolation</translation>
+    </message>
+    <message>
+        <source>G16 needs two axis letters: abscissa and ordinate</source>
+        <translation>G16 braucht zwei Achsbuchstaben: Abszisse und Ordinate</translation>
+    </message>
+    <message>
+        <source>G16 {1}{2}: only planes of two of the axes X, Y and Z are supported</source>
+        <translation>G16 {1}{2}: nur Ebenen aus zwei der Achsen X, Y und Z werden unterstützt</translation>
+    </message>
+    <message>
+        <source>the plane cannot change under radius compensation</source>
+        <translation>die Ebene kann bei aktiver Radiuskorrektur nicht wechseln</translation>
+    </message>
+    <message>
+        <source>G51 needs E, the permitted contour error</source>
+        <translation>G51 braucht E, den zulässigen Konturfehler</translation>
+    </message>
+    <message>
+        <source>G72 S: the scale factor must be greater than 0</source>
+        <translation>G72 S: der Maßfaktor muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>G72 needs S or axis factors</source>
+        <translation>G72 braucht S oder Achsfaktoren</translation>
+    </message>
+    <message>
+        <source>G72: the scale factor of {1} must be greater than 0</source>
+        <translation>G72: der Maßfaktor von {1} muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>{1} needs K, the zone number 1-4</source>
+        <translation>{1} braucht K, die Bereichsnummer 1-4</translation>
+    </message>
+    <message>
+        <source>G22 needs S0 (off), S1 (no entry) or S2 (no exit)</source>
+        <translation>G22 braucht S0 (aus), S1 (kein Einfahren) oder S2 (kein Ausfahren)</translation>
+    </message>
+    <message>
+        <source>G74 alone runs the subroutine of REFPSUB, which is not set</source>
+        <translation>G74 allein führt das Unterprogramm aus REFPSUB aus, das nicht gesetzt ist</translation>
+    </message>
+    <message>
+        <source>G159 needs N1-N20</source>
+        <translation>G159 braucht N1-N20</translation>
+    </message>
+    <message>
+        <source>G96 needs S: no cutting speed was programmed before</source>
+        <translation>G96 braucht S: zuvor wurde keine Schnittgeschwindigkeit programmiert</translation>
+    </message>
+    <message>
+        <source>G96 needs a spindle gear range (M41-M44) first</source>
+        <translation>G96 braucht zuerst eine Spindel-Getriebestufe (M41-M44)</translation>
+    </message>
+    <message>
+        <source>S{1} is above the spindle limit of {2} rpm</source>
+        <translation>S{1} liegt über der Spindelgrenze von {2} 1/min</translation>
+    </message>
+    <message>
+        <source>M{1} has a subroutine: it must be alone in its block</source>
+        <translation>M{1} hat ein Unterprogramm: es muss allein im Satz stehen</translation>
+    </message>
+    <message>
+        <source>polar coordinates (R, Q) and Cartesian coordinates of the plane in one block</source>
+        <translation>Polarkoordinaten (R, Q) und kartesische Koordinaten der Ebene in einem Satz</translation>
+    </message>
+    <message>
+        <source>the polar radius becomes negative</source>
+        <translation>der Polarradius wird negativ</translation>
+    </message>
+    <message>
+        <source>an angle Q with both coordinates of the plane</source>
+        <translation>ein Winkel Q mit beiden Koordinaten der Ebene</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that abscissa</source>
+        <translation>Winkel Q {1}: die Bahn kann diese Abszisse nicht erreichen</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that ordinate</source>
+        <translation>Winkel Q {1}: die Bahn kann diese Ordinate nicht erreichen</translation>
+    </message>
+    <message>
+        <source>J is the centre of the Y axis: the ZX plane uses I and K</source>
+        <translation>J ist der Mittelpunkt der Y-Achse: die ZX-Ebene verwendet I und K</translation>
+    </message>
+    <message>
+        <source>G08 needs a previous path in the plane to be tangent to</source>
+        <translation>G08 braucht eine vorherige Bahn in der Ebene, an die tangential angeschlossen wird</translation>
+    </message>
+    <message>
+        <source>G08 cannot program a full circle</source>
+        <translation>G08 kann keinen Vollkreis programmieren</translation>
+    </message>
+    <message>
+        <source>G08: the end point lies on the tangent of the previous path</source>
+        <translation>G08: der Endpunkt liegt auf der Tangente der vorherigen Bahn</translation>
+    </message>
+    <message>
+        <source>G09 cannot program a full circle</source>
+        <translation>G09 kann keinen Vollkreis programmieren</translation>
+    </message>
+    <message>
+        <source>G09: the three points lie on a line</source>
+        <translation>G09: die drei Punkte liegen auf einer Geraden</translation>
+    </message>
+    <message>
+        <source>a full circle cannot be programmed with R</source>
+        <translation>ein Vollkreis kann nicht mit R programmiert werden</translation>
+    </message>
+    <message>
+        <source>the arc radius R is too small for the end point</source>
+        <translation>der Kreisradius R ist zu klein für den Endpunkt</translation>
+    </message>
+    <message>
+        <source>the start and end radii differ by {1} mm (more than CIRINERR)</source>
+        <translation>Start- und Endradius unterscheiden sich um {1} mm (mehr als CIRINERR)</translation>
+    </message>
+    <message>
+        <source>the arc has no radius</source>
+        <translation>der Kreisbogen hat keinen Radius</translation>
+    </message>
+    <message>
+        <source>arc centre or radius beyond 214748.3647 mm</source>
+        <translation>Kreismittelpunkt oder Radius über 214748.3647 mm</translation>
+    </message>
+    <message>
+        <source>Q (spindle angle) needs M19TYPE = 1</source>
+        <translation>Q (Spindelwinkel) braucht M19TYPE = 1</translation>
+    </message>
+    <message>
+        <source>only the first thread of a joined chain may have Q</source>
+        <translation>nur das erste Gewinde einer verketteten Folge darf Q haben</translation>
+    </message>
+    <message>
+        <source>Q must be within +-359.9999 degrees</source>
+        <translation>Q muss innerhalb +-359.9999 Grad liegen</translation>
+    </message>
+    <message>
+        <source>a thread needs its pitch L</source>
+        <translation>ein Gewinde braucht seine Steigung L</translation>
+    </message>
+    <message>
+        <source>two variable-pitch threads cannot be joined; end one with G34 L0 K0</source>
+        <translation>zwei Gewinde mit variabler Steigung können nicht verkettet werden; eines mit G34 L0 K0 beenden</translation>
+    </message>
+    <message>
+        <source>G34 joined to G33 must start with the pitch of the G33</source>
+        <translation>G34 verkettet mit G33 muss mit der Steigung des G33 beginnen</translation>
+    </message>
+    <message>
+        <source>after G34 a constant pitch is programmed with G34 L0 K0</source>
+        <translation>nach G34 wird eine konstante Steigung mit G34 L0 K0 programmiert</translation>
+    </message>
+    <message>
+        <source>the thread pitch must be greater than 0</source>
+        <translation>die Gewindesteigung muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>the variable pitch reaches zero before the end point</source>
+        <translation>die variable Steigung erreicht vor dem Endpunkt Null</translation>
+    </message>
+    <message>
+        <source>G53 works with G00 and G01 moves only</source>
+        <translation>G53 wirkt nur mit G00- und G01-Bewegungen</translation>
+    </message>
+    <message>
+        <source>G52 moves one axis</source>
+        <translation>G52 bewegt eine Achse</translation>
+    </message>
+    <message>
+        <source>no tool offset table: offset D{1} and the following ones are all zero</source>
+        <translation>keine Werkzeugkorrekturtabelle: Korrektur D{1} und alle folgenden sind Null</translation>
+    </message>
+    <message>
+        <source>the header should be %comment,attributes, (two commas)</source>
+        <translation>der Programmkopf sollte %Kommentar,Attribute, lauten (zwei Kommas)</translation>
+    </message>
+    <message>
+        <source>the program comment has more than 20 characters</source>
+        <translation>der Programmkommentar hat mehr als 20 Zeichen</translation>
+    </message>
+    <message>
+        <source>words out of the order G, coordinates, F, S, T, D, M</source>
+        <translation>Wörter nicht in der Reihenfolge G, Koordinaten, F, S, T, D, M</translation>
+    </message>
+    <message>
+        <source>subroutine {1} starts before subroutine {2} has its RET</source>
+        <translation>Unterprogramm {1} beginnt, bevor Unterprogramm {2} sein RET hat</translation>
+    </message>
+    <message>
+        <source>error 63: program subroutine numbers from 1 to 9999 (10000-20000 only in OEM programs)</source>
+        <translation>Fehler 63: Unterprogrammnummern von 1 bis 9999 programmieren (10000-20000 nur in OEM-Programmen)</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined twice</source>
+        <translation>Unterprogramm {1} ist doppelt definiert</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
+        <translation>{1} ist eine Anweisung zur Bildschirm-Anpassung: nicht unterstützt; das Programm kann nicht über diesen Satz hinaus laufen</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
+        <translation>Programme auf einem PC über DNC sind nicht verfügbar; das Programm kann nicht über diesen Satz hinaus laufen</translation>
+    </message>
+    <message>
+        <source>label N{1} is used more than once; jumps go to the first one</source>
+        <translation>Marke N{1} wird mehrfach verwendet; Sprünge gehen zur ersten</translation>
+    </message>
+    <message>
+        <source>incompatible G functions</source>
+        <translation>unverträgliche G-Funktionen</translation>
+    </message>
+    <message>
+        <source>program subroutine number from 1 to 9999</source>
+        <translation>Unterprogrammnummer von 1 bis 9999 programmieren</translation>
+    </message>
+    <message>
+        <source>the S that changes the gear range must be alone in its block</source>
+        <translation>das S, das die Getriebestufe wechselt, muss allein im Satz stehen</translation>
+    </message>
+    <message>
+        <source>program cannot be executed</source>
+        <translation>Programm kann nicht ausgeführt werden</translation>
+    </message>
+    <message>
+        <source>subroutine restricted to OEM program</source>
+        <translation>Unterprogramm nur für OEM-Programm</translation>
+    </message>
+    <message>
+        <source>{1}</source>
+        <translation>{1}</translation>
+    </message>
+    <message>
+        <source>error {1}</source>
+        <translation>Fehler {1}</translation>
+    </message>
+    <message>
+        <source>error {1}: {2}</source>
+        <translation>Fehler {1}: {2}</translation>
+    </message>
+    <message>
+        <source>DGWZ: Z minimum &lt; Z maximum and 0 &lt;= inner &lt; outer</source>
+        <translation>DGWZ: Z minimal &lt; Z maximal und 0 &lt;= innen &lt; außen</translation>
+    </message>
+    <message>
+        <source>program {1} exists: OPEN needs A (append) or D (delete)</source>
+        <translation>Programm {1} existiert: OPEN braucht A (anhängen) oder D (löschen)</translation>
+    </message>
+    <message>
+        <source>program {1} is running: it cannot be opened</source>
+        <translation>Programm {1} läuft: es kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}</source>
+        <translation>Programm {1} kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>WRITE needs a program opened with OPEN</source>
+        <translation>WRITE braucht ein mit OPEN geöffnetes Programm</translation>
+    </message>
+    <message>
+        <source>cannot write to the opened program</source>
+        <translation>in das geöffnete Programm kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>GPOS: program {1} has no block N{2}</source>
+        <translation>GPOS: Programm {1} hat keinen Satz N{2}</translation>
+    </message>
+    <message>
+        <source>GPOS: block not found</source>
+        <translation>GPOS: Satz nicht gefunden</translation>
+    </message>
+    <message>
+        <source>{1} is not available on the simulated machine</source>
+        <translation>{1} ist an der simulierten Maschine nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>{1} cannot be read from a part program (PLC or DNC only)</source>
+        <translation>{1} kann nicht aus einem Teileprogramm gelesen werden (nur PLC oder DNC)</translation>
+    </message>
+    <message>
+        <source>{1}: the simulated machine has no tool magazine</source>
+        <translation>{1}: die simulierte Maschine hat kein Werkzeugmagazin</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are numbered 0-255</source>
+        <translation>{1}: Korrekturen sind von 0-255 nummeriert</translation>
+    </message>
+    <message>
+        <source>{1}: zero offsets are 54-59 and 1-20</source>
+        <translation>{1}: Nullpunktverschiebungen sind 54-59 und 1-20</translation>
+    </message>
+    <message>
+        <source>NBTOOL can only be read in the tool change subroutine</source>
+        <translation>NBTOOL kann nur im Werkzeugwechsel-Unterprogramm gelesen werden</translation>
+    </message>
+    <message>
+        <source>MS{1}: the state is kept for M00-M06, M08, M09, M19, M30 and M41-M44</source>
+        <translation>MS{1}: der Zustand wird für M00-M06, M08, M09, M19, M30 und M41-M44 gespeichert</translation>
+    </message>
+    <message>
+        <source>{1}: outputs 1-8</source>
+        <translation>{1}: Ausgänge 1-8</translation>
+    </message>
+    <message>
+        <source>{1} is read-only in a part program</source>
+        <translation>{1} ist in einem Teileprogramm nur lesbar</translation>
+    </message>
+    <message>
+        <source>PRGFRO: 0-255 %</source>
+        <translation>PRGFRO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>PRGSSO: 0-255 %</source>
+        <translation>PRGSSO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are D1-D255 and F is 0-9</source>
+        <translation>{1}: Korrekturen sind D1-D255 und F ist 0-9</translation>
+    </message>
+    <message>
+        <source>{1}: value out of range</source>
+        <translation>{1}: Wert außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>KEY can only be written in a customisation program</source>
+        <translation>KEY kann nur in einem Anpassungsprogramm geschrieben werden</translation>
+    </message>
+    <message>
+        <source>KEYSRC can only be changed while it is 0</source>
+        <translation>KEYSRC kann nur geändert werden, solange es 0 ist</translation>
+    </message>
+    <message>
+        <source>{1}: free outputs 1-4, -10 to 10 V</source>
+        <translation>{1}: freie Ausgänge 1-4, -10 bis 10 V</translation>
+    </message>
+    <message>
+        <source>rapid positioning</source>
+        <translation>Positionieren im Eilgang</translation>
+    </message>
+    <message>
+        <source>linear interpolation</source>
+        <translation>Linearinterpolation</translation>
+    </message>
+    <message>
+        <source>circular interpolation clockwise</source>
+        <translation>Kreisinterpolation im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>circular interpolation counter-clockwise</source>
+        <translation>Kreisinterpolation gegen den Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>dwell / stop block preparation</source>
+        <translation>Verweilzeit / Satzvorbereitung anhalten</translation>
+    </message>
+    <message>
+        <source>round corner</source>
+        <translation>verrundete Ecke</translation>
+    </message>
+    <message>
+        <source>arc centre in absolute coordinates</source>
+        <translation>Kreismittelpunkt in absoluten Koordinaten</translation>
+    </message>
+    <message>
+        <source>sharp corner</source>
+        <translation>scharfe Ecke</translation>
+    </message>
+    <message>
+        <source>arc tangent to the previous path</source>
+        <translation>Kreisbogen tangential an die vorherige Bahn</translation>
+    </message>
+    <message>
+        <source>arc through three points</source>
+        <translation>Kreisbogen durch drei Punkte</translation>
+    </message>
+    <message>
+        <source>mirror image off</source>
+        <translation>Spiegelung aus</translation>
+    </message>
+    <message>
+        <source>mirror image in X</source>
+        <translation>Spiegelung in X</translation>
+    </message>
+    <message>
+        <source>mirror image in Y</source>
+        <translation>Spiegelung in Y</translation>
+    </message>
+    <message>
+        <source>mirror image in Z</source>
+        <translation>Spiegelung in Z</translation>
+    </message>
+    <message>
+        <source>mirror image in the programmed axes</source>
+        <translation>Spiegelung in den programmierten Achsen</translation>
+    </message>
+    <message>
+        <source>main plane by two axes</source>
+        <translation>Hauptebene durch zwei Achsen</translation>
+    </message>
+    <message>
+        <source>main plane XY</source>
+        <translation>Hauptebene XY</translation>
+    </message>
+    <message>
+        <source>main plane ZX</source>
+        <translation>Hauptebene ZX</translation>
+    </message>
+    <message>
+        <source>main plane YZ</source>
+        <translation>Hauptebene YZ</translation>
+    </message>
+    <message>
+        <source>work zone lower limits</source>
+        <translation>untere Grenzen des Arbeitsbereichs</translation>
+    </message>
+    <message>
+        <source>work zone upper limits</source>
+        <translation>obere Grenzen des Arbeitsbereichs</translation>
+    </message>
+    <message>
+        <source>work zone enable/disable</source>
+        <translation>Arbeitsbereich ein/aus</translation>
+    </message>
+    <message>
+        <source>feed as inverse of time</source>
+        <translation>Vorschub als Kehrwert der Zeit</translation>
+    </message>
+    <message>
+        <source>electronic threading</source>
+        <translation>elektronisches Gewindeschneiden</translation>
+    </message>
+    <message>
+        <source>variable-pitch threading</source>
+        <translation>Gewindeschneiden mit variabler Steigung</translation>
+    </message>
+    <message>
+        <source>corner rounding</source>
+        <translation>Ecken verrunden</translation>
+    </message>
+    <message>
+        <source>tangential entry</source>
+        <translation>tangentiales Anfahren</translation>
+    </message>
+    <message>
+        <source>tangential exit</source>
+        <translation>tangentiales Abfahren</translation>
+    </message>
+    <message>
+        <source>chamfer</source>
+        <translation>Fase</translation>
+    </message>
+    <message>
+        <source>radius compensation off</source>
+        <translation>Radiuskorrektur aus</translation>
+    </message>
+    <message>
+        <source>radius compensation left</source>
+        <translation>Radiuskorrektur links</translation>
+    </message>
+    <message>
+        <source>radius compensation right</source>
+        <translation>Radiuskorrektur rechts</translation>
+    </message>
+    <message>
+        <source>inclined-axis transformation</source>
+        <translation>Schrägachsen-Transformation</translation>
+    </message>
+    <message>
+        <source>controlled round corner</source>
+        <translation>gesteuerte verrundete Ecke</translation>
+    </message>
+    <message>
+        <source>look-ahead</source>
+        <translation>Look-Ahead (Vorausschau)</translation>
+    </message>
+    <message>
+        <source>move to hard stop</source>
+        <translation>Fahren auf Festanschlag</translation>
+    </message>
+    <message>
+        <source>coordinates from machine zero</source>
+        <translation>Koordinaten bezogen auf den Maschinen-Nullpunkt</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 1</source>
+        <translation>absolute Nullpunktverschiebung 1</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 2</source>
+        <translation>absolute Nullpunktverschiebung 2</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 3</source>
+        <translation>absolute Nullpunktverschiebung 3</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 4</source>
+        <translation>absolute Nullpunktverschiebung 4</translation>
+    </message>
+    <message>
+        <source>additive zero offset 1</source>
+        <translation>additive Nullpunktverschiebung 1</translation>
+    </message>
+    <message>
+        <source>additive zero offset 2</source>
+        <translation>additive Nullpunktverschiebung 2</translation>
+    </message>
+    <message>
+        <source>pattern repeat cycle</source>
+        <translation>Zyklus konturparalleles Abspanen</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along X</source>
+        <translation>Abspanzyklus entlang X</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along Z</source>
+        <translation>Abspanzyklus entlang Z</translation>
+    </message>
+    <message>
+        <source>programming in inches</source>
+        <translation>Programmierung in Zoll</translation>
+    </message>
+    <message>
+        <source>programming in millimetres</source>
+        <translation>Programmierung in Millimeter</translation>
+    </message>
+    <message>
+        <source>scaling factor</source>
+        <translation>Maßfaktor</translation>
+    </message>
+    <message>
+        <source>machine reference search</source>
+        <translation>Referenzpunkt der Maschine anfahren</translation>
+    </message>
+    <message>
+        <source>probing move until touching</source>
+        <translation>Antastbewegung bis zur Berührung</translation>
+    </message>
+    <message>
+        <source>probing move until no longer touching</source>
+        <translation>Antastbewegung, bis die Berührung aufhört</translation>
+    </message>
+    <message>
+        <source>turning cycle, straight sections</source>
+        <translation>Drehzyklus, gerade Abschnitte</translation>
+    </message>
+    <message>
+        <source>facing cycle, straight sections</source>
+        <translation>Planzyklus, gerade Abschnitte</translation>
+    </message>
+    <message>
+        <source>drilling cycle</source>
+        <translation>Bohrzyklus</translation>
+    </message>
+    <message>
+        <source>turning cycle, curved sections</source>
+        <translation>Drehzyklus, gekrümmte Abschnitte</translation>
+    </message>
+    <message>
+        <source>facing cycle, curved sections</source>
+        <translation>Planzyklus, gekrümmte Abschnitte</translation>
+    </message>
+    <message>
+        <source>longitudinal threading cycle</source>
+        <translation>Längsgewindezyklus</translation>
+    </message>
+    <message>
+        <source>face threading cycle</source>
+        <translation>Plangewindezyklus</translation>
+    </message>
+    <message>
+        <source>grooving cycle along X</source>
+        <translation>Einstechzyklus entlang X</translation>
+    </message>
+    <message>
+        <source>grooving cycle along Z</source>
+        <translation>Einstechzyklus entlang Z</translation>
+    </message>
+    <message>
+        <source>absolute programming</source>
+        <translation>Absolutprogrammierung</translation>
+    </message>
+    <message>
+        <source>incremental programming</source>
+        <translation>Inkrementalprogrammierung</translation>
+    </message>
+    <message>
+        <source>coordinate preset / spindle speed limit</source>
+        <translation>Koordinaten-Voreinstellung / Spindeldrehzahl-Begrenzung</translation>
+    </message>
+    <message>
+        <source>polar origin preset</source>
+        <translation>Voreinstellung des Polarursprungs</translation>
+    </message>
+    <message>
+        <source>feed per minute</source>
+        <translation>Vorschub pro Minute</translation>
+    </message>
+    <message>
+        <source>feed per revolution</source>
+        <translation>Vorschub pro Umdrehung</translation>
+    </message>
+    <message>
+        <source>constant surface speed</source>
+        <translation>konstante Schnittgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>spindle speed in rpm</source>
+        <translation>Spindeldrehzahl in 1/min</translation>
+    </message>
+    <message>
+        <source>X in diameter</source>
+        <translation>X im Durchmesser</translation>
+    </message>
+    <message>
+        <source>X in radius</source>
+        <translation>X im Radius</translation>
+    </message>
+    <message>
+        <source>absolute zero offset N1-N20</source>
+        <translation>absolute Nullpunktverschiebung N1-N20</translation>
+    </message>
+    <message>
+        <source>axis retraction when threading stops</source>
+        <translation>Achsrückzug beim Anhalten des Gewindeschneidens</translation>
+    </message>
+    <message>
+        <source>{1} does not exist on the 8035 T</source>
+        <translation>{1} gibt es an der 8035 T nicht</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported yet</source>
+        <translation>{1} ({2}) wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported</source>
+        <translation>{1} ({2}) wird nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>incompatible G functions {1} and {2} (error 7)</source>
+        <translation>unverträgliche G-Funktionen {1} und {2} (Fehler 7)</translation>
+    </message>
+    <message>
+        <source>{1} must be alone in its block</source>
+        <translation>{1} muss allein im Satz stehen</translation>
+    </message>
+    <message>
+        <source>tool radius too large</source>
+        <translation>Werkzeugradius zu groß</translation>
+    </message>
+    <message>
+        <source>tool radius too large: the offset swallows this element</source>
+        <translation>Werkzeugradius zu groß: die Korrektur verschluckt dieses Element</translation>
+    </message>
+    <message>
+        <source>tool radius too large for this arc</source>
+        <translation>Werkzeugradius zu groß für diesen Kreisbogen</translation>
+    </message>
+    <message>
+        <source>G40 needs a straight line (G00 or G01)</source>
+        <translation>G40 braucht eine Gerade (G00 oder G01)</translation>
+    </message>
+    <message>
+        <source>48 blocks without motion in the plane under radius compensation</source>
+        <translation>48 Sätze ohne Bewegung in der Ebene bei aktiver Radiuskorrektur</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 1</source>
+        <translation>die Bewegung verletzt Arbeitsbereich 1</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 2</source>
+        <translation>die Bewegung verletzt Arbeitsbereich 2</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 3</source>
+        <translation>die Bewegung verletzt Arbeitsbereich 3</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 4</source>
+        <translation>die Bewegung verletzt Arbeitsbereich 4</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 5</source>
+        <translation>die Bewegung verletzt Arbeitsbereich 5</translation>
+    </message>
+    <message>
+        <source>an arc cannot be scaled differently along the two axes of its plane (G72)</source>
+        <translation>ein Kreisbogen kann in den beiden Achsen seiner Ebene nicht unterschiedlich skaliert werden (G72)</translation>
+    </message>
+    <message>
+        <source>P{1}: an interrupt subroutine may only use global parameters</source>
+        <translation>P{1}: ein Interrupt-Unterprogramm darf nur globale Parameter verwenden</translation>
+    </message>
+    <message>
+        <source>P{1}: OEM parameters are only for programs with the O attribute</source>
+        <translation>P{1}: OEM-Parameter sind nur für Programme mit dem Attribut O</translation>
+    </message>
+    <message>
+        <source>P{1} does not exist (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</source>
+        <translation>P{1} existiert nicht (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; expected</source>
+        <translation>&apos;{1}&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}, not {4}</source>
+        <translation>{1} muss eine ganze Zahl von {2} bis {3} sein, nicht {4}</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits</source>
+        <translation>eine Marke hat höchstens 8 Stellen</translation>
+    </message>
+    <message>
+        <source>text in quotes expected</source>
+        <translation>Text in Anführungszeichen erwartet</translation>
+    </message>
+    <message>
+        <source>missing closing quote</source>
+        <translation>schließendes Anführungszeichen fehlt</translation>
+    </message>
+    <message>
+        <source>empty high-level block</source>
+        <translation>leerer Hochsprachen-Satz</translation>
+    </message>
+    <message>
+        <source>IF cannot be nested</source>
+        <translation>IF kann nicht verschachtelt werden</translation>
+    </message>
+    <message>
+        <source>SUB cannot be the action of an IF</source>
+        <translation>SUB kann nicht die Aktion eines IF sein</translation>
+    </message>
+    <message>
+        <source>subroutine number 0-20000 expected after SUB</source>
+        <translation>Unterprogrammnummer 0-20000 nach SUB erwartet</translation>
+    </message>
+    <message>
+        <source>at most 26 assignments to different targets</source>
+        <translation>höchstens 26 Zuweisungen an verschiedene Ziele</translation>
+    </message>
+    <message>
+        <source>parameter or variable expected</source>
+        <translation>Parameter oder Variable erwartet</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters (P0-P25, A-Z)</source>
+        <translation>ein Unterprogrammaufruf übergibt lokale Parameter (P0-P25, A-Z)</translation>
+    </message>
+    <message>
+        <source>&apos;=&apos; expected</source>
+        <translation>&apos;=&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters P0-P25, not P{1}</source>
+        <translation>ein Unterprogrammaufruf übergibt lokale Parameter P0-P25, nicht P{1}</translation>
+    </message>
+    <message>
+        <source>error number expected</source>
+        <translation>Fehlernummer erwartet</translation>
+    </message>
+    <message>
+        <source>ERROR takes a number, a parameter P0-P299 or a text</source>
+        <translation>ERROR nimmt eine Zahl, einen Parameter P0-P299 oder einen Text</translation>
+    </message>
+    <message>
+        <source>CALL passes no parameters: use PCALL or MCALL</source>
+        <translation>CALL übergibt keine Parameter: PCALL oder MCALL verwenden</translation>
+    </message>
+    <message>
+        <source>at most 26 parameters</source>
+        <translation>höchstens 26 Parameter</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available: only programs in the NC root</source>
+        <translation>Programme auf einem PC über DNC sind nicht verfügbar: nur Programme im NC-Verzeichnis</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in {2}</source>
+        <translation>unerwartetes &apos;{1}&apos; in {2}</translation>
+    </message>
+    <message>
+        <source>axis letter expected in REPOS</source>
+        <translation>Achsbuchstabe in REPOS erwartet</translation>
+    </message>
+    <message>
+        <source>too many axes in REPOS</source>
+        <translation>zu viele Achsen in REPOS</translation>
+    </message>
+    <message>
+        <source>INPUT expected</source>
+        <translation>INPUT erwartet</translation>
+    </message>
+    <message>
+        <source>input format expected</source>
+        <translation>Eingabeformat erwartet</translation>
+    </message>
+    <message>
+        <source>DW expected</source>
+        <translation>DW erwartet</translation>
+    </message>
+    <message>
+        <source>SK expected</source>
+        <translation>SK erwartet</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
+        <translation>{1} ist eine Anweisung zur Bildschirm-Anpassung: nicht unterstützt (gehört in Anwender-Anpassungsprogramme)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a row key</source>
+        <translation>&apos;{1}&apos; ist kein Zeilenschlüssel</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a field (letters and a number)</source>
+        <translation>&apos;{1}&apos; ist kein Feld (Buchstaben und eine Zahl)</translation>
+    </message>
+    <message>
+        <source>row {1} appears twice</source>
+        <translation>Zeile {1} kommt doppelt vor</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool offset (D0-D255)</source>
+        <translation>&apos;{1}&apos; ist keine Werkzeugkorrektur (D0-D255)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (X Z F R I K)</source>
+        <translation>unbekanntes Feld &apos;{1}&apos; (X Z F R I K)</translation>
+    </message>
+    <message>
+        <source>the location code F must be a whole number 0-9</source>
+        <translation>der Lagecode F muss eine ganze Zahl 0-9 sein</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool (T&lt;number&gt;)</source>
+        <translation>&apos;{1}&apos; ist kein Werkzeug (T&lt;Nummer&gt;)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</source>
+        <translation>unbekanntes Feld &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number 0-255</source>
+        <translation>{1} muss eine ganze Zahl 0-255 sein</translation>
+    </message>
+    <message>
+        <source>G159 selects offsets N1-N20</source>
+        <translation>G159 wählt die Verschiebungen N1-N20</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; cannot be part of the ACTIVE selection</source>
+        <translation>&apos;{1}&apos; kann nicht Teil der Auswahl ACTIVE sein</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a zero offset (G54-G59, G159N7-G159N20, PLC, ACTIVE)</source>
+        <translation>&apos;{1}&apos; ist keine Nullpunktverschiebung (G54-G59, G159N7-G159N20, PLC, ACTIVE)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not an axis</source>
+        <translation>&apos;{1}&apos; ist keine Achse</translation>
+    </message>
+    <message>
+        <source>the feed rate must not be negative</source>
+        <translation>der Vorschub darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <source>M function number expected</source>
+        <translation>M-Funktionsnummer erwartet</translation>
+    </message>
+    <message>
+        <source>too many M functions in one block</source>
+        <translation>zu viele M-Funktionen in einem Satz</translation>
+    </message>
+    <message>
+        <source>axis {1} is programmed twice</source>
+        <translation>Achse {1} ist doppelt programmiert</translation>
+    </message>
+    <message>
+        <source>DR+ or DR- expected</source>
+        <translation>DR+ oder DR- erwartet</translation>
+    </message>
+    <message>
+        <source>CR needs a radius R</source>
+        <translation>CR braucht einen Radius R</translation>
+    </message>
+    <message>
+        <source>the rounding radius must be positive</source>
+        <translation>der Rundungsradius muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the chamfer length must be positive</source>
+        <translation>die Fasenlänge muss positiv sein</translation>
+    </message>
+    <message>
+        <source>FMAX is not allowed here</source>
+        <translation>FMAX ist hier nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>LT, LN, CT or LCT expected after {1}</source>
+        <translation>LT, LN, CT oder LCT nach {1} erwartet</translation>
+    </message>
+    <message>
+        <source>REP must be between 0 and 65534</source>
+        <translation>REP muss zwischen 0 und 65534 liegen</translation>
+    </message>
+    <message>
+        <source>program name expected</source>
+        <translation>Programmname erwartet</translation>
+    </message>
+    <message>
+        <source>LBL or PGM expected after CALL</source>
+        <translation>LBL oder PGM nach CALL erwartet</translation>
+    </message>
+    <message>
+        <source>tool number out of range</source>
+        <translation>Werkzeugnummer außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>the spindle speed must not be negative</source>
+        <translation>die Spindeldrehzahl darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <source>CALL or DEF expected after TOOL</source>
+        <translation>CALL oder DEF nach TOOL erwartet</translation>
+    </message>
+    <message>
+        <source>PGM expected</source>
+        <translation>PGM erwartet</translation>
+    </message>
+    <message>
+        <source>MM or INCH expected</source>
+        <translation>MM oder INCH erwartet</translation>
+    </message>
+    <message>
+        <source>FORM expected</source>
+        <translation>FORM erwartet</translation>
+    </message>
+    <message>
+        <source>axis expected</source>
+        <translation>Achse erwartet</translation>
+    </message>
+    <message>
+        <source>0.1, 0.2 or CYLINDER expected</source>
+        <translation>0.1, 0.2 oder CYLINDER erwartet</translation>
+    </message>
+    <message>
+        <source>tool axis expected</source>
+        <translation>Werkzeugachse erwartet</translation>
+    </message>
+    <message>
+        <source>Q parameter expected</source>
+        <translation>Q-Parameter erwartet</translation>
+    </message>
+    <message>
+        <source>DECLARE STRING needs a QS parameter</source>
+        <translation>DECLARE STRING braucht einen QS-Parameter</translation>
+    </message>
+    <message>
+        <source>FN number expected</source>
+        <translation>FN-Nummer erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;:&apos; expected after FN {1}</source>
+        <translation>&apos;:&apos; nach FN {1} erwartet</translation>
+    </message>
+    <message>
+        <source>square root of a negative number</source>
+        <translation>Quadratwurzel aus einer negativen Zahl</translation>
+    </message>
+    <message>
+        <source>&apos;IF&apos; expected</source>
+        <translation>&apos;IF&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;GOTO&apos; expected</source>
+        <translation>&apos;GOTO&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;LBL&apos; expected</source>
+        <translation>&apos;LBL&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;ERROR&apos; expected</source>
+        <translation>&apos;ERROR&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;PRINT&apos; expected</source>
+        <translation>&apos;PRINT&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;F-PRINT&apos; expected</source>
+        <translation>&apos;F-PRINT&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;mask file / output file&apos; expected</source>
+        <translation>&apos;Maskendatei / Ausgabedatei&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;SYSREAD&apos; expected</source>
+        <translation>&apos;SYSREAD&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;ID&apos; expected</source>
+        <translation>&apos;ID&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;CDATA&apos; expected</source>
+        <translation>&apos;CDATA&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>the parameter range runs past the last Q parameter</source>
+        <translation>der Parameterbereich reicht über den letzten Q-Parameter hinaus</translation>
+    </message>
+    <message>
+        <source>&apos;TABOPEN&apos; expected</source>
+        <translation>&apos;TABOPEN&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>table name expected</source>
+        <translation>Tabellenname erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;/&apos; expected</source>
+        <translation>&apos;/&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>column names in quotes expected</source>
+        <translation>Spaltennamen in Anführungszeichen erwartet</translation>
+    </message>
+    <message>
+        <source>FN {1} does not exist</source>
+        <translation>FN {1} existiert nicht</translation>
+    </message>
+    <message>
+        <source>DEF or CALL expected after CYCL</source>
+        <translation>DEF oder CALL nach CYCL erwartet</translation>
+    </message>
+    <message>
+        <source>file name expected</source>
+        <translation>Dateiname erwartet</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;CYCLE&apos; (the keyword is CYCL)</source>
+        <translation>unbekannter Satz &apos;CYCLE&apos; (das Schlüsselwort ist CYCL)</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;{1}&apos;</source>
+        <translation>unbekannter Satz &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>label name must not be empty</source>
+        <translation>der Label-Name darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>label expected</source>
+        <translation>Label erwartet</translation>
+    </message>
+    <message>
+        <source>label number or name expected</source>
+        <translation>Label-Nummer oder -Name erwartet</translation>
+    </message>
+    <message>
+        <source>label number must be between {1} and 65535</source>
+        <translation>die Label-Nummer muss zwischen {1} und 65535 liegen</translation>
+    </message>
+    <message>
+        <source>cycle number expected</source>
+        <translation>Zyklusnummer erwartet</translation>
+    </message>
+    <message>
+        <source>cycle parameter Qnnn= expected</source>
+        <translation>Zyklusparameter Qnnn= erwartet</translation>
+    </message>
+    <message>
+        <source>cycle parameter number expected</source>
+        <translation>Nummer des Zyklusparameters erwartet</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF group number expected</source>
+        <translation>GLOBAL DEF-Gruppennummer erwartet</translation>
+    </message>
+    <message>
+        <source>pattern element POS, ROW, PAT, FRAME, CIRC or PITCHCIRC expected</source>
+        <translation>Musterelement POS, ROW, PAT, FRAME, CIRC oder PITCHCIRC erwartet</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF needs at least one pattern element</source>
+        <translation>PATTERN DEF braucht mindestens ein Musterelement</translation>
+    </message>
+    <message>
+        <source>Spindle?</source>
+        <translation>Spindel ?</translation>
+    </message>
+    <message>
+        <source>Tool axis is missing</source>
+        <translation>Werkzeugachse fehlt</translation>
+    </message>
+    <message>
+        <source>Tool radius too small</source>
+        <translation>Werkzeug-Radius zu klein</translation>
+    </message>
+    <message>
+        <source>Tool radius too large</source>
+        <translation>Werkzeug-Radius zu groß</translation>
+    </message>
+    <message>
+        <source>Range exceeded</source>
+        <translation>Bereich überschritten</translation>
+    </message>
+    <message>
+        <source>Start position incorrect</source>
+        <translation>Anfangsposition falsch</translation>
+    </message>
+    <message>
+        <source>ROTATION not permitted</source>
+        <translation>DREHUNG nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>SCALING FACTOR not permitted</source>
+        <translation>MASSFAKTOR nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE not permitted</source>
+        <translation>SPIEGELUNG nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Datum shift not permitted</source>
+        <translation>Verschiebung nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Feed rate is missing</source>
+        <translation>Vorschub fehlt</translation>
+    </message>
+    <message>
+        <source>Input value incorrect</source>
+        <translation>Eingabewert falsch</translation>
+    </message>
+    <message>
+        <source>Incorrect sign</source>
+        <translation>Vorzeichen falsch</translation>
+    </message>
+    <message>
+        <source>Entered angle not permitted</source>
+        <translation>Winkel nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Touch point inaccessible</source>
+        <translation>Antastpunkt nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>Too many points</source>
+        <translation>Zu viele Punkte</translation>
+    </message>
+    <message>
+        <source>Contradictory input</source>
+        <translation>Eingabe widersprüchlich</translation>
+    </message>
+    <message>
+        <source>CYCL incomplete</source>
+        <translation>CYCL unvollständig</translation>
+    </message>
+    <message>
+        <source>Plane wrongly defined</source>
+        <translation>Ebene falsch definiert</translation>
+    </message>
+    <message>
+        <source>Wrong axis programmed</source>
+        <translation>Falsche Achse programmiert</translation>
+    </message>
+    <message>
+        <source>Wrong RPM</source>
+        <translation>Falsche Drehzahl</translation>
+    </message>
+    <message>
+        <source>Radius comp. undefined</source>
+        <translation>Radius-Korrektur undefiniert</translation>
+    </message>
+    <message>
+        <source>Rounding-off undefined</source>
+        <translation>Rundung nicht definiert</translation>
+    </message>
+    <message>
+        <source>Rounding radius too large</source>
+        <translation>Rundungsradius zu groß</translation>
+    </message>
+    <message>
+        <source>Program start undefined</source>
+        <translation>Undefinierter Programmstart</translation>
+    </message>
+    <message>
+        <source>Excessive nesting</source>
+        <translation>Zu hohe Verschachtelung</translation>
+    </message>
+    <message>
+        <source>Angle reference missing</source>
+        <translation>Winkelbezug fehlt</translation>
+    </message>
+    <message>
+        <source>No fixed cycle defined</source>
+        <translation>Kein Bearbeitungszyklus definiert</translation>
+    </message>
+    <message>
+        <source>Slot width too small</source>
+        <translation>Nutbreite zu klein</translation>
+    </message>
+    <message>
+        <source>Pocket too small</source>
+        <translation>Tasche zu klein</translation>
+    </message>
+    <message>
+        <source>Q202 not defined</source>
+        <translation>Q202 nicht definiert</translation>
+    </message>
+    <message>
+        <source>Q205 not defined</source>
+        <translation>Q205 nicht definiert</translation>
+    </message>
+    <message>
+        <source>Q218 must be greater than Q219</source>
+        <translation>Q218 muss größer als Q219 sein</translation>
+    </message>
+    <message>
+        <source>CYCL 210 not permitted</source>
+        <translation>CYCL 210 nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>CYCL 211 not permitted</source>
+        <translation>CYCL 211 nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Q220 too large</source>
+        <translation>Q220 zu groß</translation>
+    </message>
+    <message>
+        <source>Q222 must be greater than Q223</source>
+        <translation>Q222 muss größer als Q223 sein</translation>
+    </message>
+    <message>
+        <source>Q244 must be greater than 0</source>
+        <translation>Q244 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>Q245 must not equal Q246</source>
+        <translation>Q245 darf nicht gleich Q246 sein</translation>
+    </message>
+    <message>
+        <source>Angle range must be under 360 degrees</source>
+        <translation>Winkelbereich muss unter 360 Grad liegen</translation>
+    </message>
+    <message>
+        <source>Q223 must be greater than Q222</source>
+        <translation>Q223 muss größer als Q222 sein</translation>
+    </message>
+    <message>
+        <source>Q214: 0 not permitted</source>
+        <translation>Q214: 0 nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Traverse direction not defined</source>
+        <translation>Verfahrrichtung nicht definiert</translation>
+    </message>
+    <message>
+        <source>No datum table active</source>
+        <translation>Keine Nullpunkt-Tabelle aktiv</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 1</source>
+        <translation>Lagefehler: Mitte Achse 1</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 2</source>
+        <translation>Lagefehler: Mitte Achse 2</translation>
+    </message>
+    <message>
+        <source>Hole diameter too small</source>
+        <translation>Bohrungsdurchmesser zu klein</translation>
+    </message>
+    <message>
+        <source>Hole diameter too large</source>
+        <translation>Bohrungsdurchmesser zu groß</translation>
+    </message>
+    <message>
+        <source>Stud diameter too small</source>
+        <translation>Zapfendurchmesser zu klein</translation>
+    </message>
+    <message>
+        <source>Stud diameter too large</source>
+        <translation>Zapfendurchmesser zu groß</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 1</source>
+        <translation>Tasche zu klein: Nacharbeit Achse 1</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 2</source>
+        <translation>Tasche zu klein: Nacharbeit Achse 2</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 1</source>
+        <translation>Tasche zu groß: Ausschuss Achse 1</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 2</source>
+        <translation>Tasche zu groß: Ausschuss Achse 2</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 1</source>
+        <translation>Zapfen zu klein: Ausschuss Achse 1</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 2</source>
+        <translation>Zapfen zu klein: Ausschuss Achse 2</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 1</source>
+        <translation>Zapfen zu groß: Nacharbeit Achse 1</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 2</source>
+        <translation>Zapfen zu groß: Nacharbeit Achse 2</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length exceeds max</source>
+        <translation>TCHPROBE 425: Größtmaß überschritten</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length below min</source>
+        <translation>TCHPROBE 425: Kleinstmaß unterschritten</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length exceeds max</source>
+        <translation>TCHPROBE 426: Größtmaß überschritten</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length below min</source>
+        <translation>TCHPROBE 426: Kleinstmaß unterschritten</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too large</source>
+        <translation>TCHPROBE 430: Durchmesser zu groß</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too small</source>
+        <translation>TCHPROBE 430: Durchmesser zu klein</translation>
+    </message>
+    <message>
+        <source>No measuring axis defined</source>
+        <translation>Keine Messachse definiert</translation>
+    </message>
+    <message>
+        <source>Tool breakage tolerance exceeded</source>
+        <translation>Werkzeug-Bruchtoleranz überschritten</translation>
+    </message>
+    <message>
+        <source>Enter Q247 unequal 0</source>
+        <translation>Q247 ungleich 0 eingeben</translation>
+    </message>
+    <message>
+        <source>Enter Q247 greater than 5</source>
+        <translation>Q247 größer 5 eingeben</translation>
+    </message>
+    <message>
+        <source>Datum table?</source>
+        <translation>Nullpunkt-Tabelle?</translation>
+    </message>
+    <message>
+        <source>Enter Q351 unequal 0</source>
+        <translation>Q351 ungleich 0 eingeben</translation>
+    </message>
+    <message>
+        <source>Thread depth too large</source>
+        <translation>Gewindetiefe zu groß</translation>
+    </message>
+    <message>
+        <source>Missing calibration data</source>
+        <translation>Kalibrierdaten fehlen</translation>
+    </message>
+    <message>
+        <source>Tolerance exceeded</source>
+        <translation>Toleranz überschritten</translation>
+    </message>
+    <message>
+        <source>Block scan active</source>
+        <translation>Satzvorlauf aktiv</translation>
+    </message>
+    <message>
+        <source>ORIENTATION not permitted</source>
+        <translation>ORIENTIERUNG nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>3DROT not permitted</source>
+        <translation>3DROT nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Activate 3DROT</source>
+        <translation>3DROT aktivieren</translation>
+    </message>
+    <message>
+        <source>Enter depth as negative</source>
+        <translation>Tiefe negativ eingeben</translation>
+    </message>
+    <message>
+        <source>Q303 not defined in measuring cycle</source>
+        <translation>Q303 im Messzyklus undefiniert</translation>
+    </message>
+    <message>
+        <source>Tool axis not allowed</source>
+        <translation>Werkzeugachse nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Calculated values incorrect</source>
+        <translation>Berechnete Werte fehlerhaft</translation>
+    </message>
+    <message>
+        <source>Contradictory measuring points</source>
+        <translation>Messpunkte widersprüchlich</translation>
+    </message>
+    <message>
+        <source>Incorrect clearance height</source>
+        <translation>Sichere Höhe falsch eingegeben</translation>
+    </message>
+    <message>
+        <source>Contradictory plunge type</source>
+        <translation>Eintauchart widersprüchlich</translation>
+    </message>
+    <message>
+        <source>This fixed cycle not allowed</source>
+        <translation>Bearbeitungszyklus nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Line is write-protected</source>
+        <translation>Zeile ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>Oversize greater than depth</source>
+        <translation>Aufmaß größer als Tiefe</translation>
+    </message>
+    <message>
+        <source>No point angle defined</source>
+        <translation>Kein Spitzenwinkel definiert</translation>
+    </message>
+    <message>
+        <source>Contradictory data</source>
+        <translation>Daten widersprüchlich</translation>
+    </message>
+    <message>
+        <source>Slot position 0 not allowed</source>
+        <translation>Nutlage 0 nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Enter an infeed not equal to 0</source>
+        <translation>Zustellung ungleich 0 eingeben</translation>
+    </message>
+    <message>
+        <source>{1} is not defined for this value</source>
+        <translation>{1} ist für diesen Wert nicht definiert</translation>
+    </message>
+    <message>
+        <source>a string parameter cannot be used as a number</source>
+        <translation>ein String-Parameter kann nicht als Zahl verwendet werden</translation>
+    </message>
+    <message>
+        <source>{1}{2} does not exist (0 to {3})</source>
+        <translation>{1}{2} existiert nicht (0 bis {3})</translation>
+    </message>
+    <message>
+        <source>number or Q parameter expected</source>
+        <translation>Zahl oder Q-Parameter erwartet</translation>
+    </message>
+    <message>
+        <source>incomplete formula</source>
+        <translation>unvollständige Formel</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in formula</source>
+        <translation>unerwartetes &apos;{1}&apos; in der Formel</translation>
+    </message>
+    <message>
+        <source>string parameter QS expected</source>
+        <translation>String-Parameter QS erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a number</source>
+        <translation>&apos;{1}&apos; ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>&apos;||&apos; expected</source>
+        <translation>&apos;||&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>SUBSTR needs BEG and LEN of at least 0</source>
+        <translation>SUBSTR braucht BEG und LEN von mindestens 0</translation>
+    </message>
+    <message>
+        <source>SYSSTR ID{1} NR{2} is not available</source>
+        <translation>SYSSTR ID{1} NR{2} ist nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>string expected</source>
+        <translation>Text erwartet</translation>
+    </message>
+    <message>
+        <source>unknown keyword &apos;{1}&apos;</source>
+        <translation>unbekanntes Schlüsselwort &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>the format has no closing quote</source>
+        <translation>dem Format fehlt das schließende Anführungszeichen</translation>
+    </message>
+    <message>
+        <source>unknown value &apos;{1}&apos;</source>
+        <translation>unbekannter Wert &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>bad format field</source>
+        <translation>fehlerhaftes Formatfeld</translation>
+    </message>
+    <message>
+        <source>more fields than values</source>
+        <translation>mehr Felder als Werte</translation>
+    </message>
+    <message>
+        <source>a cycle cannot be called with radius compensation RL/RR: program R0</source>
+        <translation>ein Zyklus kann nicht mit Radiuskorrektur RL/RR aufgerufen werden: R0 programmieren</translation>
+    </message>
+    <message>
+        <source>the cycle calls of this block need more than {1} moves</source>
+        <translation>die Zyklusaufrufe dieses Satzes brauchen mehr als {1} Bewegungen</translation>
+    </message>
+    <message>
+        <source>no machining cycle is defined (CYCL DEF)</source>
+        <translation>kein Bearbeitungszyklus definiert (CYCL DEF)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT: no PATTERN DEF or point table (SEL PATTERN) is active</source>
+        <translation>CYCL CALL PAT: kein PATTERN DEF und keine Punkte-Tabelle (SEL PATTERN) aktiv</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT cannot use FMAX (without F it moves at rapid)</source>
+        <translation>CYCL CALL PAT kann FMAX nicht verwenden (ohne F wird im Eilgang gefahren)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL POS needs all three coordinates</source>
+        <translation>CYCL CALL POS braucht alle drei Koordinaten</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a machining cycle defined before it</source>
+        <translation>Zyklus {1} braucht einen zuvor definierten Bearbeitungszyklus</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot call cycle {2}</source>
+        <translation>Zyklus {1} kann Zyklus {2} nicht aufrufen</translation>
+    </message>
+    <message>
+        <source>{1} has no parameter Q{2}: it is ignored</source>
+        <translation>{1} hat keinen Parameter Q{2}: er wird ignoriert</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) is missing</source>
+        <translation>{1}: Parameter {2} ({3}) fehlt</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) needs a text in quotes or a QS parameter</source>
+        <translation>{1}: Parameter {2} ({3}) braucht einen Text in Anführungszeichen oder einen QS-Parameter</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) does not accept {4}</source>
+        <translation>{1}: Parameter {2} ({3}) akzeptiert {4} nicht</translation>
+    </message>
+    <message>
+        <source>FAUTO: the TOOL CALL block gave no feed rate F</source>
+        <translation>FAUTO: der TOOL CALL-Satz hat keinen Vorschub F angegeben</translation>
+    </message>
+    <message>
+        <source>{1}: {2} needs a feed value after {3}</source>
+        <translation>{1}: {2} braucht einen Vorschubwert nach {3}</translation>
+    </message>
+    <message>
+        <source>FZ needs the number of teeth (CUT) of the tool</source>
+        <translation>FZ braucht die Schneidenanzahl (CUT) des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = &apos;{4}&apos; is not a value</source>
+        <translation>{1}: Parameter {2} ({3}) = &apos;{4}&apos; ist kein Wert</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>{1}: Parameter {2} ({3}) = {4} muss eine ganze Zahl von {5} bis {6} sein</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>{1}: Parameter {2} ({3}) = {4} liegt außerhalb {5} bis {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet</source>
+        <translation>Zyklus {1} wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>CYCL DEF {1}.{2} without CYCL DEF {1}.0 before it</source>
+        <translation>CYCL DEF {1}.{2} ohne vorheriges CYCL DEF {1}.0</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF {1} does not exist</source>
+        <translation>GLOBAL DEF {1} existiert nicht</translation>
+    </message>
+    <message>
+        <source>cannot read the datum table {1}: {2}</source>
+        <translation>die Nullpunkt-Tabelle {1} kann nicht gelesen werden: {2}</translation>
+    </message>
+    <message>
+        <source>cannot read the point table {1}: {2}</source>
+        <translation>die Punkte-Tabelle {1} kann nicht gelesen werden: {2}</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet</source>
+        <translation>{1} wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}: {2}</source>
+        <translation>FN 14 Fehler {1}: {2}</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}</source>
+        <translation>FN 14 Fehler {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the F-PRINT mask {1}</source>
+        <translation>die F-PRINT-Maske {1} kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>F-PRINT mask {1} has an error</source>
+        <translation>die F-PRINT-Maske {1} enthält einen Fehler</translation>
+    </message>
+    <message>
+        <source>cannot write {1}</source>
+        <translation>{1} kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>FN 18: SYSREAD ID{1} NR{2} IDX{3} is not available</source>
+        <translation>FN 18: SYSREAD ID{1} NR{2} IDX{3} ist nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>FN {1}: the points do not define a circle</source>
+        <translation>FN {1}: die Punkte definieren keinen Kreis</translation>
+    </message>
+    <message>
+        <source>FN 26: cannot open table {1}</source>
+        <translation>FN 26: Tabelle {1} kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>no table is open (FN 26: TABOPEN)</source>
+        <translation>keine Tabelle geöffnet (FN 26: TABOPEN)</translation>
+    </message>
+    <message>
+        <source>FN 27: cannot write row {1}</source>
+        <translation>FN 27: Zeile {1} kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>FN 28: cannot read row {1}</source>
+        <translation>FN 28: Zeile {1} kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>cannot read the program: {1}</source>
+        <translation>das Programm kann nicht gelesen werden: {1}</translation>
+    </message>
+    <message>
+        <source>label {1} is not defined</source>
+        <translation>Label {1} ist nicht definiert</translation>
+    </message>
+    <message>
+        <source>subprograms nested deeper than {1} levels</source>
+        <translation>Unterprogramme tiefer als {1} Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <source>program calls nested deeper than {1} levels</source>
+        <translation>Programmaufrufe tiefer als {1} Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <source>cannot call program {1}: {2}</source>
+        <translation>Programm {1} kann nicht aufgerufen werden: {2}</translation>
+    </message>
+    <message>
+        <source>the called program {1} has errors</source>
+        <translation>das aufgerufene Programm {1} enthält Fehler</translation>
+    </message>
+    <message>
+        <source>feed rate is missing</source>
+        <translation>Vorschub fehlt</translation>
+    </message>
+    <message>
+        <source>M140 MB MAX: the tool axis has no limit</source>
+        <translation>M140 MB MAX: die Werkzeugachse hat keine Begrenzung</translation>
+    </message>
+    <message>
+        <source>tool {1} is not in the tool table</source>
+        <translation>Werkzeug {1} ist nicht in der Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>no tool table: tool {1} and the following tools are used with length 0 and radius 0</source>
+        <translation>keine Werkzeugtabelle: Werkzeug {1} und die folgenden werden mit Länge 0 und Radius 0 verwendet</translation>
+    </message>
+    <message>
+        <source>tool {1} is locked (TL)</source>
+        <translation>Werkzeug {1} ist gesperrt (TL)</translation>
+    </message>
+    <message>
+        <source>spindle speed {1} exceeds the machine&apos;s {2} rpm</source>
+        <translation>Spindeldrehzahl {1} überschreitet die {2} 1/min der Maschine</translation>
+    </message>
+    <message>
+        <source>BLK FORM 0.2 needs BLK FORM 0.1 before it</source>
+        <translation>BLK FORM 0.2 braucht zuvor BLK FORM 0.1</translation>
+    </message>
+    <message>
+        <source>the blank has no volume</source>
+        <translation>das Rohteil hat kein Volumen</translation>
+    </message>
+    <message>
+        <source>CC axes {1} and {2} do not span a plane</source>
+        <translation>die CC-Achsen {1} und {2} spannen keine Ebene auf</translation>
+    </message>
+    <message>
+        <source>CC takes two coordinates of a plane</source>
+        <translation>CC nimmt zwei Koordinaten einer Ebene</translation>
+    </message>
+    <message>
+        <source>circular moves cannot use FMAX</source>
+        <translation>Kreisbewegungen können FMAX nicht verwenden</translation>
+    </message>
+    <message>
+        <source>direction of rotation DR+ or DR- missing</source>
+        <translation>Drehsinn DR+ oder DR- fehlt</translation>
+    </message>
+    <message>
+        <source>no circle of radius {1} passes through the start and end point</source>
+        <translation>kein Kreis mit Radius {1} geht durch Start- und Endpunkt</translation>
+    </message>
+    <message>
+        <source>circle centre CC is not defined</source>
+        <translation>der Kreismittelpunkt CC ist nicht definiert</translation>
+    </message>
+    <message>
+        <source>the end point is not on the circle: radius {1} at the start, {2} at the end</source>
+        <translation>der Endpunkt liegt nicht auf dem Kreis: Radius {1} am Anfang, {2} am Ende</translation>
+    </message>
+    <message>
+        <source>a tangential arc needs a contour element before it</source>
+        <translation>ein tangentialer Kreisbogen braucht ein vorheriges Konturelement</translation>
+    </message>
+    <message>
+        <source>pole CC is not defined</source>
+        <translation>der Pol CC ist nicht definiert</translation>
+    </message>
+    <message>
+        <source>the end point lies on the tangent: no arc possible</source>
+        <translation>der Endpunkt liegt auf der Tangente: kein Kreisbogen möglich</translation>
+    </message>
+    <message>
+        <source>CP needs a polar angle PA or IPA</source>
+        <translation>CP braucht einen Polarwinkel PA oder IPA</translation>
+    </message>
+    <message>
+        <source>the sign of IPA does not match DR</source>
+        <translation>das Vorzeichen von IPA passt nicht zu DR</translation>
+    </message>
+    <message>
+        <source>{1} needs a positive length LEN</source>
+        <translation>{1} braucht eine positive Länge LEN</translation>
+    </message>
+    <message>
+        <source>{1} CT needs an angle CCA (0 to 360) and a radius R</source>
+        <translation>{1} CT braucht einen Winkel CCA (0 bis 360) und einen Radius R</translation>
+    </message>
+    <message>
+        <source>{1} LCT needs a radius R</source>
+        <translation>{1} LCT braucht einen Radius R</translation>
+    </message>
+    <message>
+        <source>APPR needs radius compensation RL or RR</source>
+        <translation>APPR braucht die Radiuskorrektur RL oder RR</translation>
+    </message>
+    <message>
+        <source>DEP LCT needs the end point</source>
+        <translation>DEP LCT braucht den Endpunkt</translation>
+    </message>
+    <message>
+        <source>an arc in the {1} plane cannot be rotated out of its plane or scaled with different factors</source>
+        <translation>ein Kreisbogen in der {1}-Ebene kann nicht aus seiner Ebene gedreht oder mit verschiedenen Faktoren skaliert werden</translation>
+    </message>
+    <message>
+        <source>cycle 7: no datum table selected (SEL TABLE)</source>
+        <translation>Zyklus 7: keine Nullpunkt-Tabelle gewählt (SEL TABLE)</translation>
+    </message>
+    <message>
+        <source>cycle 7: datum {1} is not in the datum table</source>
+        <translation>Zyklus 7: Nullpunkt {1} ist nicht in der Nullpunkt-Tabelle</translation>
+    </message>
+    <message>
+        <source>cycle 8: the tool axis {1} cannot be mirrored; it is left out</source>
+        <translation>Zyklus 8: die Werkzeugachse {1} kann nicht gespiegelt werden; sie wird ausgelassen</translation>
+    </message>
+    <message>
+        <source>cycle 247: no preset table (PRESET.PR) to read preset {1} from</source>
+        <translation>Zyklus 247: keine Bezugspunkttabelle (PRESET.PR), aus der Bezugspunkt {1} gelesen werden kann</translation>
+    </message>
+    <message>
+        <source>cycle 247: preset {1} is not in the preset table</source>
+        <translation>Zyklus 247: Bezugspunkt {1} ist nicht in der Bezugspunkttabelle</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
+        <translation>Zyklus 19 (Bearbeitungsebene) braucht Drehachsen: diese Maschine hat keine</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
+        <translation>Zyklus 19 (Bearbeitungsebene): Schwenk-Kinematik wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected</source>
+        <translation>Zyklus {1}: {2} erwartet</translation>
+    </message>
+    <message>
+        <source>cycle 12: program name expected</source>
+        <translation>Zyklus 12: Programmname erwartet</translation>
+    </message>
+    <message>
+        <source>cycle 18 has no sub-block 18.{1}</source>
+        <translation>Zyklus 18 hat keinen Teilsatz 18.{1}</translation>
+    </message>
+    <message>
+        <source>cycle 32: unexpected &apos;{1}&apos;</source>
+        <translation>Zyklus 32: unerwartetes &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>block number {1} is out of order (after {2})</source>
+        <translation>Satznummer {1} ist nicht in Reihenfolge (nach {2})</translation>
+    </message>
+    <message>
+        <source>BEGIN PGM must be the first block</source>
+        <translation>BEGIN PGM muss der erste Satz sein</translation>
+    </message>
+    <message>
+        <source>END PGM {1} does not match BEGIN PGM {2}</source>
+        <translation>END PGM {1} passt nicht zu BEGIN PGM {2}</translation>
+    </message>
+    <message>
+        <source>label {1} is defined twice</source>
+        <translation>Label {1} ist doppelt definiert</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet; the program cannot run past this block</source>
+        <translation>{1} wird noch nicht unterstützt; das Programm kann nicht über diesen Satz hinaus laufen</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet; the program cannot run past this block</source>
+        <translation>Zyklus {1} wird noch nicht unterstützt; das Programm kann nicht über diesen Satz hinaus laufen</translation>
+    </message>
+    <message>
+        <source>block has no number while others have</source>
+        <translation>Satz hat keine Nummer, während andere eine haben</translation>
+    </message>
+    <message>
+        <source>the program has no BEGIN PGM block</source>
+        <translation>das Programm hat keinen BEGIN PGM-Satz</translation>
+    </message>
+    <message>
+        <source>the program has no END PGM block</source>
+        <translation>das Programm hat keinen END PGM-Satz</translation>
+    </message>
+    <message>
+        <source>expected QRn=value</source>
+        <translation>QRn=Wert erwartet</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element in the working plane</source>
+        <translation>auf eine Rundung oder Fase muss ein Konturelement in der Bearbeitungsebene folgen</translation>
+    </message>
+    <message>
+        <source>a chamfer needs straight lines on both sides</source>
+        <translation>eine Fase braucht auf beiden Seiten Geraden</translation>
+    </message>
+    <message>
+        <source>the chamfer is longer than the adjacent element</source>
+        <translation>die Fase ist länger als das angrenzende Element</translation>
+    </message>
+    <message>
+        <source>the rounding radius does not fit between the elements</source>
+        <translation>der Rundungsradius passt nicht zwischen die Elemente</translation>
+    </message>
+    <message>
+        <source>a rounding needs a contour element before it</source>
+        <translation>eine Rundung braucht ein vorheriges Konturelement</translation>
+    </message>
+    <message>
+        <source>a chamfer needs a contour element before it</source>
+        <translation>eine Fase braucht ein vorheriges Konturelement</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element</source>
+        <translation>auf eine Rundung oder Fase muss ein Konturelement folgen</translation>
+    </message>
+    <message>
+        <source>an approach must be followed by a compensated contour element</source>
+        <translation>auf das Anfahren muss ein korrigiertes Konturelement folgen</translation>
+    </message>
+    <message>
+        <source>an approach needs RL or RR</source>
+        <translation>das Anfahren braucht RL oder RR</translation>
+    </message>
+    <message>
+        <source>a departure needs a compensated contour element before it</source>
+        <translation>das Abfahren braucht ein vorheriges korrigiertes Konturelement</translation>
+    </message>
+    <message>
+        <source>the departure cannot be constructed with these values</source>
+        <translation>das Abfahren lässt sich mit diesen Werten nicht konstruieren</translation>
+    </message>
+    <message>
+        <source>leave radius compensation with a straight line</source>
+        <translation>die Radiuskorrektur mit einer Geraden aufheben</translation>
+    </message>
+    <message>
+        <source>switching between RL and RR needs a block with R0 between</source>
+        <translation>der Wechsel zwischen RL und RR braucht einen Satz mit R0 dazwischen</translation>
+    </message>
+    <message>
+        <source>radius compensation must begin with a straight line</source>
+        <translation>die Radiuskorrektur muss mit einer Geraden beginnen</translation>
+    </message>
+    <message>
+        <source>the approach cannot be constructed with these values</source>
+        <translation>das Anfahren lässt sich mit diesen Werten nicht konstruieren</translation>
+    </message>
+    <message>
+        <source>base = {1} is not a built-in machine ({2})</source>
+        <translation>base = {1} ist keine eingebaute Maschine ({2})</translation>
+    </message>
+    <message>
+        <source>{1} must be a table</source>
+        <translation>{1} muss eine Tabelle sein</translation>
+    </message>
+    <message>
+        <source>axes must be a table of axes such as [axes.X]</source>
+        <translation>axes muss eine Tabelle von Achsen sein, etwa [axes.X]</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is not an axis letter; use one of {3}</source>
+        <translation>{1}: {2} ist kein Achsbuchstabe; einen von {3} verwenden</translation>
+    </message>
+    <message>
+        <source>{1} is a table; expected {2}</source>
+        <translation>{1} ist eine Tabelle; erwartet wurde {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is {3}; expected {4}</source>
+        <translation>{1} = {2} ist {3}; erwartet wurde {4}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}</source>
+        <translation>unbekannter Schlüssel {1}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}; did you mean {2}?</source>
+        <translation>unbekannter Schlüssel {1}; war {2} gemeint?</translation>
+    </message>
+    <message>
+        <source>TOML syntax error: {1}</source>
+        <translation>TOML-Syntaxfehler: {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the machine configuration: {1}</source>
+        <translation>die Maschinenkonfiguration kann nicht gelesen werden: {1}</translation>
+    </message>
+    <message>
+        <source>Name shown to the operator</source>
+        <translation>Name, der dem Bediener angezeigt wird</translation>
+    </message>
+    <message>
+        <source>Machine kind; selects the program dialects and lathe conventions</source>
+        <translation>Maschinenart; wählt die Programmdialekte und die Drehmaschinen-Konventionen</translation>
+    </message>
+    <message>
+        <source>Axis the tool points along; tool length compensation acts on it</source>
+        <translation>Achse, in die das Werkzeug zeigt; auf sie wirkt die Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>Path velocity of rapid moves</source>
+        <translation>Bahngeschwindigkeit der Eilgangbewegungen</translation>
+    </message>
+    <message>
+        <source>Highest programmable feed rate</source>
+        <translation>Höchster programmierbarer Vorschub</translation>
+    </message>
+    <message>
+        <source>Period of the servo cycle</source>
+        <translation>Periode des Servo-Zyklus</translation>
+    </message>
+    <message>
+        <source>Default path deviation allowed when blending corners; 0 stops exactly</source>
+        <translation>Standard-Bahnabweichung beim Überschleifen von Ecken; 0 hält genau an</translation>
+    </message>
+    <message>
+        <source>Lowest spindle speed</source>
+        <translation>Kleinste Spindeldrehzahl</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed</source>
+        <translation>Größte Spindeldrehzahl</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the spindle drive; 0: the spindle has none</source>
+        <translation>CANopen-Node-ID des Spindelantriebs; 0: die Spindel hat keinen</translation>
+    </message>
+    <message>
+        <source>Spindle drive position units per degree</source>
+        <translation>Positionseinheiten des Spindelantriebs pro Grad</translation>
+    </message>
+    <message>
+        <source>CiA 402 mode of the spindle drive: cyclic synchronous or profile velocity</source>
+        <translation>CiA-402-Betriebsart des Spindelantriebs: zyklisch synchron oder Profilgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Lathe: diameter of the bar simulated when the program defines no blank; 0: none</source>
+        <translation>Drehmaschine: Durchmesser der simulierten Stange, wenn das Programm kein Rohteil definiert; 0: keine</translation>
+    </message>
+    <message>
+        <source>Lathe: length of the simulated bar</source>
+        <translation>Drehmaschine: Länge der simulierten Stange</translation>
+    </message>
+    <message>
+        <source>Lathe: workpiece Z of the bar&apos;s face; the bar reaches down to face_z - length</source>
+        <translation>Drehmaschine: Werkstück-Z der Stirnfläche der Stange; die Stange reicht bis face_z - length</translation>
+    </message>
+    <message>
+        <source>Lathe: inner diameter of a tube; 0: a solid bar</source>
+        <translation>Drehmaschine: Innendurchmesser eines Rohrs; 0: Vollstange</translation>
+    </message>
+    <message>
+        <source>SocketCAN interface of the drive bus</source>
+        <translation>SocketCAN-Schnittstelle des Antriebsbusses</translation>
+    </message>
+    <message>
+        <source>Bit rate of the drive bus (a CiA 301 rate)</source>
+        <translation>Bitrate des Antriebsbusses (eine CiA-301-Rate)</translation>
+    </message>
+    <message>
+        <source>SYNC period of the drive bus; a whole multiple of servo_period</source>
+        <translation>SYNC-Periode des Antriebsbusses; ein ganzzahliges Vielfaches von servo_period</translation>
+    </message>
+    <message>
+        <source>Heartbeat period of every drive (0x1017)</source>
+        <translation>Heartbeat-Periode jedes Antriebs (0x1017)</translation>
+    </message>
+    <message>
+        <source>A drive whose heartbeat is missing this long is lost; above heartbeat_period</source>
+        <translation>Ein Antrieb, dessen Heartbeat so lange ausbleibt, gilt als verloren; größer als heartbeat_period</translation>
+    </message>
+    <message>
+        <source>A drive whose feedback PDO is missing this many cycles is lost</source>
+        <translation>Ein Antrieb, dessen Istwert-PDO so viele Zyklen ausbleibt, gilt als verloren</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the control&apos;s heartbeat, watched by the drives</source>
+        <translation>CANopen-Node-ID des Heartbeats der Steuerung, von den Antrieben überwacht</translation>
+    </message>
+    <message>
+        <source>Vendor-ID every drive must report (0x1018 sub 1), hexadecimal like 0x0000029C; empty: not checked</source>
+        <translation>Vendor-ID, die jeder Antrieb melden muss (0x1018 Sub 1), hexadezimal wie 0x0000029C; leer: nicht geprüft</translation>
+    </message>
+    <message>
+        <source>Product code every drive must report (0x1018 sub 2); empty: not checked</source>
+        <translation>Produktcode, den jeder Antrieb melden muss (0x1018 Sub 2); leer: nicht geprüft</translation>
+    </message>
+    <message>
+        <source>Linear or rotary; A, B and C default to rotary</source>
+        <translation>Linear oder rotatorisch; A, B und C sind standardmäßig Drehachsen</translation>
+    </message>
+    <message>
+        <source>Lower soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Unterer Software-Endschalter in Maschinenkoordinaten (an einer Drehmaschine ein Radius)</translation>
+    </message>
+    <message>
+        <source>Upper soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Oberer Software-Endschalter in Maschinenkoordinaten (an einer Drehmaschine ein Radius)</translation>
+    </message>
+    <message>
+        <source>Highest velocity of the axis</source>
+        <translation>Höchste Geschwindigkeit der Achse</translation>
+    </message>
+    <message>
+        <source>Highest acceleration of the axis</source>
+        <translation>Höchste Beschleunigung der Achse</translation>
+    </message>
+    <message>
+        <source>Highest jerk of the axis</source>
+        <translation>Höchster Ruck der Achse</translation>
+    </message>
+    <message>
+        <source>Machine position after homing; must lie within the soft limits</source>
+        <translation>Maschinenposition nach dem Referenzfahren; muss innerhalb der Software-Endschalter liegen</translation>
+    </message>
+    <message>
+        <source>The axis may be absent and is then switched off with enabled = false</source>
+        <translation>Die Achse darf fehlen und wird dann mit enabled = false abgeschaltet</translation>
+    </message>
+    <message>
+        <source>The axis is present; only optional axes may be disabled</source>
+        <translation>Die Achse ist vorhanden; nur optionale Achsen dürfen abgeschaltet werden</translation>
+    </message>
+    <message>
+        <source>Lathe: the axis is programmed and displayed as a diameter</source>
+        <translation>Drehmaschine: die Achse wird im Durchmesser programmiert und angezeigt</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the axis drive; 0: none</source>
+        <translation>CANopen-Node-ID des Achsantriebs; 0: keiner</translation>
+    </message>
+    <message>
+        <source>Drive position units per millimetre or degree</source>
+        <translation>Positionseinheiten des Antriebs pro Millimeter oder Grad</translation>
+    </message>
+    <message>
+        <source>Following error the drive allows (0x6065) before it faults</source>
+        <translation>Schleppfehler, den der Antrieb zulässt (0x6065), bevor er auf Fehler geht</translation>
+    </message>
+    <message>
+        <source>the machine has no axis for {1}</source>
+        <translation>die Maschine hat keine Achse für {1}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be less than {3} = {4}</source>
+        <translation>{1} = {2} muss kleiner sein als {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the soft limits {3} … {4} {5}</source>
+        <translation>{1} = {2} liegt außerhalb der Software-Endschalter {3} … {4} {5}</translation>
+    </message>
+    <message>
+        <source>{1} = false is only allowed when {2} = true</source>
+        <translation>{1} = false ist nur erlaubt, wenn {2} = true</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a linear axis of a lathe</source>
+        <translation>{1} = true ist nur an einer Linearachse einer Drehmaschine erlaubt</translation>
+    </message>
+    <message>
+        <source>the machine has no axes; add [axes.X] tables or start from a built-in machine with base = &quot;mill&quot;</source>
+        <translation>die Maschine hat keine Achsen; Tabellen [axes.X] hinzufügen oder von einer eingebauten Maschine mit base = &quot;mill&quot; ausgehen</translation>
+    </message>
+    <message>
+        <source>axis letter {1} is not one of {2}</source>
+        <translation>Achsbuchstabe {1} ist keiner von {2}</translation>
+    </message>
+    <message>
+        <source>axis {1} is listed twice</source>
+        <translation>Achse {1} ist doppelt aufgeführt</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} is not an enabled axis of this machine ({2})</source>
+        <translation>tool_axis = {1} ist keine aktive Achse dieser Maschine ({2})</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} must be a linear axis</source>
+        <translation>tool_axis = {1} muss eine Linearachse sein</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must not exceed {3} = {4}</source>
+        <translation>{1} = {2} darf {3} = {4} nicht überschreiten</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be smaller than {3} = {4}</source>
+        <translation>{1} = {2} muss kleiner sein als {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is the node-ID of drives.master_node</source>
+        <translation>{1} = {2} ist die Node-ID von drives.master_node</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is already the node of {3}</source>
+        <translation>{1} = {2} ist bereits der Knoten von {3}</translation>
+    </message>
+    <message>
+        <source>drives.cycle_period = {1} must be a whole multiple of servo_period = {2}</source>
+        <translation>drives.cycle_period = {1} muss ein ganzzahliges Vielfaches von servo_period = {2} sein</translation>
+    </message>
+    <message>
+        <source>drives.heartbeat_timeout = {1} must exceed drives.heartbeat_period = {2}</source>
+        <translation>drives.heartbeat_timeout = {1} muss größer sein als drives.heartbeat_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.bitrate = {1} is not a CiA 301 bit rate (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</source>
+        <translation>drives.bitrate = {1} ist keine CiA-301-Bitrate (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not a 32-bit number such as 0x0000029C</source>
+        <translation>{1} = &quot;{2}&quot; ist keine 32-Bit-Zahl wie 0x0000029C</translation>
+    </message>
+    <message>
+        <source>{1} = {2} has the wrong type; expected {3}</source>
+        <translation>{1} = {2} hat den falschen Typ; erwartet wurde {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the allowed range {3}</source>
+        <translation>{1} = {2} liegt außerhalb des zulässigen Bereichs {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is not one of {3}</source>
+        <translation>{1} = {2} ist keiner der Werte {3}</translation>
+    </message>
+    <message>
+        <source>empty file name</source>
+        <translation>leerer Dateiname</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is outside the NC root</source>
+        <translation>&apos;{1}&apos; liegt außerhalb des NC-Verzeichnisses</translation>
+    </message>
+    <message>
+        <source>datum {1} is not in the datum table</source>
+        <translation>Nullpunkt {1} ist nicht in der Nullpunkt-Tabelle</translation>
+    </message>
+    <message>
+        <source>datum {1} is already in the datum table</source>
+        <translation>Nullpunkt {1} ist bereits in der Nullpunkt-Tabelle</translation>
+    </message>
+    <message>
+        <source>the table does not start with a BEGIN line</source>
+        <translation>die Tabelle beginnt nicht mit einer BEGIN-Zeile</translation>
+    </message>
+    <message>
+        <source>the BEGIN line names no table</source>
+        <translation>die BEGIN-Zeile nennt keine Tabelle</translation>
+    </message>
+    <message>
+        <source>the BEGIN line gives no file type</source>
+        <translation>die BEGIN-Zeile nennt keinen Dateityp</translation>
+    </message>
+    <message>
+        <source>the table has no column {1}</source>
+        <translation>die Tabelle hat keine Spalte {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number &gt;= 0, not &quot;{2}&quot;</source>
+        <translation>Spalte {1} braucht eine ganze Zahl &gt;= 0, nicht &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the table has no row {1}</source>
+        <translation>die Tabelle hat keine Zeile {1}</translation>
+    </message>
+    <message>
+        <source>the table has no column &quot;{1}&quot;</source>
+        <translation>die Tabelle hat keine Spalte &quot;{1}&quot;</translation>
+    </message>
+    <message>
+        <source>cell {1} of row {2} is empty</source>
+        <translation>Zelle {1} von Zeile {2} ist leer</translation>
+    </message>
+    <message>
+        <source>column {1} needs a number, not &quot;{2}&quot;</source>
+        <translation>Spalte {1} braucht eine Zahl, nicht &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} columns named but {2} values given</source>
+        <translation>{1} Spalten benannt, aber {2} Werte angegeben</translation>
+    </message>
+    <message>
+        <source>column {1} holds text, not numbers</source>
+        <translation>Spalte {1} enthält Text, keine Zahlen</translation>
+    </message>
+    <message>
+        <source>point {1} is not in the point table</source>
+        <translation>Punkt {1} ist nicht in der Punkte-Tabelle</translation>
+    </message>
+    <message>
+        <source>column {1} needs Y or nothing, not &quot;{2}&quot;</source>
+        <translation>Spalte {1} braucht Y oder nichts, nicht &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>point {1} is already in the point table</source>
+        <translation>Punkt {1} ist bereits in der Punkte-Tabelle</translation>
+    </message>
+    <message>
+        <source>preset {1} is not in the preset table</source>
+        <translation>Bezugspunkt {1} ist nicht in der Bezugspunkttabelle</translation>
+    </message>
+    <message>
+        <source>preset {1} is already in the preset table</source>
+        <translation>Bezugspunkt {1} ist bereits in der Bezugspunkttabelle</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number, not &quot;{2}&quot;</source>
+        <translation>Spalte {1} braucht eine ganze Zahl, nicht &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the key column {1} is empty</source>
+        <translation>die Schlüsselspalte {1} ist leer</translation>
+    </message>
+    <message>
+        <source>{1} {2} appears twice (first in line {3})</source>
+        <translation>{1} {2} kommt doppelt vor (zuerst in Zeile {3})</translation>
+    </message>
+    <message>
+        <source>the table has no column header line</source>
+        <translation>die Tabelle hat keine Spaltenkopf-Zeile</translation>
+    </message>
+    <message>
+        <source>the table has no cell at row {1}, column {2}</source>
+        <translation>die Tabelle hat keine Zelle in Zeile {1}, Spalte {2}</translation>
+    </message>
+    <message>
+        <source>a cell of column {1} cannot hold a line break</source>
+        <translation>eine Zelle der Spalte {1} kann keinen Zeilenumbruch enthalten</translation>
+    </message>
+    <message>
+        <source>{2} does not fit into column {1} ({3} characters)</source>
+        <translation>{2} passt nicht in Spalte {1} ({3} Zeichen)</translation>
+    </message>
+    <message>
+        <source>column {1} cannot hold an infinite number</source>
+        <translation>Spalte {1} kann keine unendliche Zahl enthalten</translation>
+    </message>
+    <message>
+        <source>cannot insert a row at {1}: the table has {2} rows</source>
+        <translation>an Stelle {1} kann keine Zeile eingefügt werden: die Tabelle hat {2} Zeilen</translation>
+    </message>
+    <message>
+        <source>&quot;{2}&quot; cannot be a key of column {1}</source>
+        <translation>&quot;{2}&quot; kann kein Schlüssel der Spalte {1} sein</translation>
+    </message>
+    <message>
+        <source>column {1} needs L, 1, 0 or nothing, not &quot;{2}&quot;</source>
+        <translation>Spalte {1} braucht L, 1, 0 oder nichts, nicht &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>tool {1} is already in the tool table</source>
+        <translation>Werkzeug {1} ist bereits in der Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>inaktiv</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <translation>Vorschub-Halt</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <source>waiting for the machine</source>
+        <translation>wartet auf die Maschine</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <translation>beendet</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>motion refused the block: {1}</source>
+        <translation>die Bewegungssteuerung hat den Satz abgelehnt: {1}</translation>
+    </message>
+    <message>
+        <source>motion stopped: {1}</source>
+        <translation>Bewegung angehalten: {1}</translation>
+    </message>
+    <message>
+        <source>column {1} must be greater than 0, not {2}</source>
+        <translation>Spalte {1} muss größer als 0 sein, nicht {2}</translation>
+    </message>
+    <message>
+        <source>column {1} must not be negative, not {2}</source>
+        <translation>Spalte {1} darf nicht negativ sein, nicht {2}</translation>
+    </message>
+    <message>
+        <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
+        <translation>Spalte {1} braucht {2} oder {3}, nicht &quot;{4}&quot;</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>bereit</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <translation>Tippbetrieb</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>Referenzfahren</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <translation>wird angehalten</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>Not-Aus</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <translation>keine Maschine</translation>
+    </message>
+    <message>
+        <source>{1} needs the coordinates of its end point</source>
+        <translation>{1} braucht die Koordinaten seines Endpunkts</translation>
+    </message>
+    <message>
+        <source>{1} is a straight probing move in workpiece coordinates: not with G06, G08, G09, G36-G39 or G53</source>
+        <translation>{1} ist eine gerade Antastbewegung in Werkstück-Koordinaten: nicht mit G06, G08, G09, G36-G39 oder G53</translation>
+    </message>
+    <message>
+        <source>G75 reached its end point without the probe touching</source>
+        <translation>G75 hat den Endpunkt erreicht, ohne dass das Tastsystem berührt hat</translation>
+    </message>
+    <message>
+        <source>G76 reached its end point with the probe still touching</source>
+        <translation>G76 hat den Endpunkt erreicht, während das Tastsystem noch berührt</translation>
+    </message>
+    <message>
+        <source>Simulation: a box-shaped workpiece the touch probe touches (G75, probing cycles); the bounds below, machine coordinates of the tool tip</source>
+        <translation>Simulation: ein quaderförmiges Werkstück, das das Tastsystem berührt (G75, Tastsystemzyklen); die Grenzen unten in Maschinenkoordinaten der Werkzeugspitze</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine X of the tool tip inside it</source>
+        <translation>Simuliertes Antast-Werkstück: kleinstes Maschinen-X der Werkzeugspitze darin</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine X of the tool tip inside it</source>
+        <translation>Simuliertes Antast-Werkstück: größtes Maschinen-X der Werkzeugspitze darin</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Y of the tool tip inside it</source>
+        <translation>Simuliertes Antast-Werkstück: kleinstes Maschinen-Y der Werkzeugspitze darin</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Y of the tool tip inside it</source>
+        <translation>Simuliertes Antast-Werkstück: größtes Maschinen-Y der Werkzeugspitze darin</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Z of the tool tip inside it</source>
+        <translation>Simuliertes Antast-Werkstück: kleinstes Maschinen-Z der Werkzeugspitze darin</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Z of the tool tip inside it</source>
+        <translation>Simuliertes Antast-Werkstück: größtes Maschinen-Z der Werkzeugspitze darin</translation>
+    </message>
+    <message>
+        <source>Machine coordinate of the workpiece origin (the default preset); kerf run --work-offset overrides it</source>
+        <translation>Maschinenkoordinate des Werkstück-Nullpunkts (der Standard-Bezugspunkt); kerf run --work-offset ersetzt sie</translation>
+    </message>
+    <message>
+        <source>{1} needs a programmed feed F greater than 0</source>
+        <translation>{1} braucht einen programmierten Vorschub F größer als 0</translation>
+    </message>
+    <message>
+        <source>Drilling/
+thread</source>
+        <translation>Bohren/
+Gewinde</translation>
+    </message>
+    <message>
+        <source>Pockets/
+studs/slots</source>
+        <translation>Taschen/
+Zapfen/Nuten</translation>
+    </message>
+    <message>
+        <source>Patterns</source>
+        <translation>Muster</translation>
+    </message>
+    <message>
+        <source>SL cycles</source>
+        <translation>SL-Zyklen</translation>
+    </message>
+    <message>
+        <source>Coordinate
+transform.</source>
+        <translation>Koordinaten-
+umrechnung</translation>
+    </message>
+    <message>
+        <source>Special
+cycles</source>
+        <translation>Sonder-
+zyklen</translation>
+    </message>
+    <message>
+        <source>SET-UP CLEARANCE</source>
+        <translation>SICHERHEITS-ABST.</translation>
+    </message>
+    <message>
+        <source>DEPTH</source>
+        <translation>TIEFE</translation>
+    </message>
+    <message>
+        <source>PLUNGING DEPTH</source>
+        <translation>ZUSTELL-TIEFE</translation>
+    </message>
+    <message>
+        <source>SURFACE COORDINATE</source>
+        <translation>KOOR. OBERFLÄCHE</translation>
+    </message>
+    <message>
+        <source>2ND SET-UP CLEARANCE</source>
+        <translation>2. SICHERHEITS-ABST.</translation>
+    </message>
+    <message>
+        <source>MIN. PLUNGING DEPTH</source>
+        <translation>MIN. ZUSTELL-TIEFE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR PLNGNG</source>
+        <translation>VORSCHUB TIEFENZUST.</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR MILLING</source>
+        <translation>VORSCHUB FRÄSEN</translation>
+    </message>
+    <message>
+        <source>RETRACTION FEED RATE</source>
+        <translation>VORSCHUB RÜCKZUG</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT TOP</source>
+        <translation>VERWEILZEIT OBEN</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT DEPTH</source>
+        <translation>VERWEILZEIT UNTEN</translation>
+    </message>
+    <message>
+        <source>DECREMENT</source>
+        <translation>ABNAHMEBETRAG</translation>
+    </message>
+    <message>
+        <source>NR OF BREAKS</source>
+        <translation>SPANBRÜCHE</translation>
+    </message>
+    <message>
+        <source>DISENGAGING DIRECTN</source>
+        <translation>FREIFAHR-RICHTUNG</translation>
+    </message>
+    <message>
+        <source>CENTER IN 1ST AXIS</source>
+        <translation>MITTE 1. ACHSE</translation>
+    </message>
+    <message>
+        <source>CENTER IN 2ND AXIS</source>
+        <translation>MITTE 2. ACHSE</translation>
+    </message>
+    <message>
+        <source>FIRST SIDE LENGTH</source>
+        <translation>1. SEITEN-LÄNGE</translation>
+    </message>
+    <message>
+        <source>2ND SIDE LENGTH</source>
+        <translation>2. SEITEN-LÄNGE</translation>
+    </message>
+    <message>
+        <source>ANGLE OF ROTATION</source>
+        <translation>DREHLAGE</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 1ST AXIS</source>
+        <translation>STARTPUNKT 1. ACHSE</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 2ND AXIS</source>
+        <translation>STARTPUNKT 2. ACHSE</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 3RD AXIS</source>
+        <translation>STARTPUNKT 3. ACHSE</translation>
+    </message>
+    <message>
+        <source>SPACING IN 1ST AXIS</source>
+        <translation>ABSTAND 1. ACHSE</translation>
+    </message>
+    <message>
+        <source>SPACING IN 2ND AXIS</source>
+        <translation>ABSTAND 2. ACHSE</translation>
+    </message>
+    <message>
+        <source>THREAD PITCH</source>
+        <translation>GEWINDESTEIGUNG</translation>
+    </message>
+    <message>
+        <source>NR OF REPETITIONS</source>
+        <translation>ANZ. WIEDERHOLUNGEN</translation>
+    </message>
+    <message>
+        <source>NUMBER OF COLUMNS</source>
+        <translation>ANZAHL SPALTEN</translation>
+    </message>
+    <message>
+        <source>NUMBER OF LINES</source>
+        <translation>ANZAHL ZEILEN</translation>
+    </message>
+    <message>
+        <source>PITCH CIRCLE DIAMETR</source>
+        <translation>TEILKREIS-DURCHM.</translation>
+    </message>
+    <message>
+        <source>STARTING ANGLE</source>
+        <translation>STARTWINKEL</translation>
+    </message>
+    <message>
+        <source>STOPPING ANGLE</source>
+        <translation>ENDWINKEL</translation>
+    </message>
+    <message>
+        <source>STEPPING ANGLE</source>
+        <translation>WINKELSCHRITT</translation>
+    </message>
+    <message>
+        <source>DEPTH OF COUNTERBORE</source>
+        <translation>TIEFE SENKUNG</translation>
+    </message>
+    <message>
+        <source>MATERIAL THICKNESS</source>
+        <translation>MATERIALSTÄRKE</translation>
+    </message>
+    <message>
+        <source>OFF-CENTER DISTANCE</source>
+        <translation>EXZENTERMASS</translation>
+    </message>
+    <message>
+        <source>TOOL EDGE HEIGHT</source>
+        <translation>SCHNEIDENHÖHE</translation>
+    </message>
+    <message>
+        <source>F PRE-POSITIONING</source>
+        <translation>VORSCHUB VORPOS.</translation>
+    </message>
+    <message>
+        <source>F COUNTERSINKING</source>
+        <translation>VORSCHUB SENKEN</translation>
+    </message>
+    <message>
+        <source>DIST FOR CHIP BRKNG</source>
+        <translation>RZ BEI SPANBRUCH</translation>
+    </message>
+    <message>
+        <source>DEPTH FOR CHIP BRKNG</source>
+        <translation>TIEFE SPANBRUCH</translation>
+    </message>
+    <message>
+        <source>UPPER ADV STOP DIST</source>
+        <translation>OBERER VORHALTEABST.</translation>
+    </message>
+    <message>
+        <source>LOWER ADV STOP DIST</source>
+        <translation>UNTERER VORHALTEABST.</translation>
+    </message>
+    <message>
+        <source>MOVE TO CLEARANCE</source>
+        <translation>FAHREN AUF S. HÖHE</translation>
+    </message>
+    <message>
+        <source>NOMINAL DIAMETER</source>
+        <translation>SOLL-DURCHMESSER</translation>
+    </message>
+    <message>
+        <source>ANGLE OF SPINDLE</source>
+        <translation>WINKEL SPINDEL</translation>
+    </message>
+    <message>
+        <source>DATUM NUMBER</source>
+        <translation>NULLPUNKT-NUMMER</translation>
+    </message>
+    <message>
+        <source>ROUGHING DIAMETER</source>
+        <translation>VORGEB. DURCHMESSER</translation>
+    </message>
+    <message>
+        <source>SELECT DIA./DEPTH</source>
+        <translation>AUSWAHL DURCHM./TIEFE</translation>
+    </message>
+    <message>
+        <source>DIAMETER</source>
+        <translation>DURCHMESSER</translation>
+    </message>
+    <message>
+        <source>SELECT POS. HEIGHT</source>
+        <translation>AUSWAHL POS. HÖHE</translation>
+    </message>
+    <message>
+        <source>CLIMB OR UP-CUT</source>
+        <translation>FRÄSART</translation>
+    </message>
+    <message>
+        <source>THREADS PER STEP</source>
+        <translation>NACHSETZEN</translation>
+    </message>
+    <message>
+        <source>COUNTERSINKING DEPTH</source>
+        <translation>SENKTIEFE</translation>
+    </message>
+    <message>
+        <source>CLEARANCE TO SIDE</source>
+        <translation>SICHERH.-ABST. SEITE</translation>
+    </message>
+    <message>
+        <source>DEPTH AT FRONT</source>
+        <translation>SENKTIEFE STIRNSEITIG</translation>
+    </message>
+    <message>
+        <source>OFFSET AT FRONT</source>
+        <translation>VERSATZ SENKEN STIRN</translation>
+    </message>
+    <message>
+        <source>COUNTERSINK PROCESS</source>
+        <translation>SENKVORGANG</translation>
+    </message>
+    <message>
+        <source>TYPE OF TRAVERSE</source>
+        <translation>VERFAHRART</translation>
+    </message>
+    <message>
+        <source>TEXT POSITION</source>
+        <translation>TEXTLAGE</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR FLOOR</source>
+        <translation>AUFMASS TIEFE</translation>
+    </message>
+    <message>
+        <source>MAX. OVERLAP</source>
+        <translation>MAX. ÜBERLAPPUNG</translation>
+    </message>
+    <message>
+        <source>STARTING POINT</source>
+        <translation>STARTPUNKT</translation>
+    </message>
+    <message>
+        <source>FINISHING FEED RATE</source>
+        <translation>VORSCHUB SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>END POINT 3RD AXIS</source>
+        <translation>ENDPUNKT 3. ACHSE</translation>
+    </message>
+    <message>
+        <source>STRATEGY</source>
+        <translation>STRATEGIE</translation>
+    </message>
+    <message>
+        <source>DEPTH REFERENCE</source>
+        <translation>BEZUG TIEFE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FACTOR</source>
+        <translation>VORSCHUBFAKTOR</translation>
+    </message>
+    <message>
+        <source>RPM FACTOR</source>
+        <translation>FAKTOR DREHZAHL</translation>
+    </message>
+    <message>
+        <source>DIR. OF SPINDLE ROT.</source>
+        <translation>DREHRICHTUNG</translation>
+    </message>
+    <message>
+        <source>ROT.SPEED INFEED/OUT</source>
+        <translation>DREHZAHL EIN-/AUSF.</translation>
+    </message>
+    <message>
+        <source>ROT. SPEED DRILLING</source>
+        <translation>DREHZAHL BOHREN</translation>
+    </message>
+    <message>
+        <source>COOLANT ON</source>
+        <translation>KÜHLUNG EIN</translation>
+    </message>
+    <message>
+        <source>COOLANT OFF</source>
+        <translation>KÜHLUNG AUS</translation>
+    </message>
+    <message>
+        <source>DWELL DEPTH</source>
+        <translation>VERWEILTIEFE</translation>
+    </message>
+    <message>
+        <source>ENGRAVING TEXT</source>
+        <translation>GRAVURTEXT</translation>
+    </message>
+    <message>
+        <source>FEED FOR APPROACH</source>
+        <translation>VORSCHUB ANFAHREN</translation>
+    </message>
+    <message>
+        <source>CHARACTER HEIGHT</source>
+        <translation>ZEICHENHÖHE</translation>
+    </message>
+    <message>
+        <source>SPACE FACTOR</source>
+        <translation>FAKTOR ABSTAND</translation>
+    </message>
+    <message>
+        <source>FONT</source>
+        <translation>SCHRIFTART</translation>
+    </message>
+    <message>
+        <source>TEXT LAYOUT</source>
+        <translation>TEXTANORDNUNG</translation>
+    </message>
+    <message>
+        <source>CIRCLE RADIUS</source>
+        <translation>RADIUS KREIS</translation>
+    </message>
+    <message>
+        <source>MAX. TEXT LENGTH</source>
+        <translation>MAX. TEXTLÄNGE</translation>
+    </message>
+    <message>
+        <source>F COUNTERBORING</source>
+        <translation>VORSCHUB SENKEN</translation>
+    </message>
+    <message>
+        <source>DEPTH OF THREAD</source>
+        <translation>GEWINDETIEFE</translation>
+    </message>
+    <message>
+        <source>MAX. PLUNGING DEPTH</source>
+        <translation>MAX. ZUSTELL-TIEFE</translation>
+    </message>
+    <message>
+        <source>TOTAL HOLE DEPTH</source>
+        <translation>BOHRTIEFE GESAMT</translation>
+    </message>
+    <message>
+        <source>%1: %2 needs a positive feed after it, e.g. %2 0.1</source>
+        <translation>%1: %2 braucht danach einen positiven Vorschub, z. B. %2 0.1</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; enter a number</source>
+        <translation>%1: %2 ist hier nicht erlaubt; eine Zahl eingeben</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; allowed: a number, %3</source>
+        <translation>%1: %2 ist hier nicht erlaubt; erlaubt: eine Zahl, %3</translation>
+    </message>
+    <message>
+        <source>%1: enter a value</source>
+        <translation>%1: einen Wert eingeben</translation>
+    </message>
+    <message>
+        <source>%1: the text must not contain &quot;</source>
+        <translation>%1: der Text darf kein &quot; enthalten</translation>
+    </message>
+    <message>
+        <source>%1: enter axis letters separated by blanks, e.g. X Y</source>
+        <translation>%1: Achsbuchstaben durch Leerzeichen getrennt eingeben, z. B. X Y</translation>
+    </message>
+    <message>
+        <source>%1: #n needs a datum number, e.g. #5</source>
+        <translation>%1: #n braucht eine Nullpunkt-Nummer, z. B. #5</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number</source>
+        <translation>%1: &quot;%2&quot; ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1: enter a whole number from %2 to %3</source>
+        <translation>%1: eine ganze Zahl von %2 bis %3 eingeben</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the range %3 to %4</source>
+        <translation>%1: %2 liegt außerhalb des Bereichs %3 bis %4</translation>
+    </message>
+    <message>
+        <source>%1 coordinate of the end point (I before the value: incremental)</source>
+        <translation>%1-Koordinate des Endpunkts (I vor dem Wert: inkremental)</translation>
+    </message>
+    <message>
+        <source>Circle radius (negative: arc greater than 180°)</source>
+        <translation>Kreisradius (negativ: Bogen größer als 180°)</translation>
+    </message>
+    <message>
+        <source>Chamfer length</source>
+        <translation>Fasenlänge</translation>
+    </message>
+    <message>
+        <source>Rounding radius</source>
+        <translation>Rundungsradius</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (DR-: clockwise, DR+: counterclockwise)</source>
+        <translation>Drehsinn (DR-: im Uhrzeigersinn, DR+: gegen den Uhrzeigersinn)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (RL left, RR right of the contour, R0 none)</source>
+        <translation>Radiuskorrektur (RL links, RR rechts der Kontur, R0 keine)</translation>
+    </message>
+    <message>
+        <source>Feed rate (FMAX: rapid traverse, FAUTO: from TOOL CALL)</source>
+        <translation>Vorschub (FMAX: Eilgang, FAUTO: aus TOOL CALL)</translation>
+    </message>
+    <message>
+        <source>Miscellaneous functions, e.g. 3 8</source>
+        <translation>Zusatzfunktionen, z. B. 3 8</translation>
+    </message>
+    <message>
+        <source>Tool number or name</source>
+        <translation>Werkzeugnummer oder -name</translation>
+    </message>
+    <message>
+        <source>Spindle axis</source>
+        <translation>Spindelachse</translation>
+    </message>
+    <message>
+        <source>Spindle speed S [1/min]</source>
+        <translation>Spindeldrehzahl S [1/min]</translation>
+    </message>
+    <message>
+        <source>Delta length DL</source>
+        <translation>Delta-Länge DL</translation>
+    </message>
+    <message>
+        <source>Delta radius DR</source>
+        <translation>Delta-Radius DR</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a coordinate</source>
+        <translation>%1: &quot;%2&quot; ist keine Koordinate</translation>
+    </message>
+    <message>
+        <source>%1: enter a radius other than 0</source>
+        <translation>%1: einen Radius ungleich 0 eingeben</translation>
+    </message>
+    <message>
+        <source>%1: enter a positive number</source>
+        <translation>%1: eine positive Zahl eingeben</translation>
+    </message>
+    <message>
+        <source>%1: enter a feed rate, FMAX or FAUTO</source>
+        <translation>%1: einen Vorschub, FMAX oder FAUTO eingeben</translation>
+    </message>
+    <message>
+        <source>%1: enter M function numbers, e.g. 3 8</source>
+        <translation>%1: Nummern von M-Funktionen eingeben, z. B. 3 8</translation>
+    </message>
+    <message>
+        <source>%1: enter a tool number or a name</source>
+        <translation>%1: eine Werkzeugnummer oder einen Namen eingeben</translation>
+    </message>
+    <message>
+        <source>%1: choose one of %2</source>
+        <translation>%1: eines von %2 wählen</translation>
+    </message>
+    <message>
+        <source>%1: enter at least one coordinate</source>
+        <translation>%1: mindestens eine Koordinate eingeben</translation>
+    </message>
+    <message>
+        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
+        <translation>Die Zyklus- und Bahnfunktions-Dialoge schreiben Klartext-Programme (.H).</translation>
+    </message>
+    <message>
+        <source>Cycle
+overview</source>
+        <translation>Zyklus-
+übersicht</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Edit
+cycle</source>
+        <translation>Zyklus
+editieren</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a CYCL DEF block to edit it.</source>
+        <translation>Den Cursor auf einen CYCL DEF-Satz setzen, um ihn zu editieren.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineRows</name>
+    <message>
+        <source>Increment
+continuous</source>
+        <translation>Schrittmaß
+aus</translation>
+    </message>
+    <message>
+        <source>Increment
+%1 mm</source>
+        <translation>Schrittmaß
+%1 mm</translation>
+    </message>
+    <message>
+        <source>Home
+all</source>
+        <translation>Alle
+referenzieren</translation>
+    </message>
+    <message>
+        <source>Spindle
+on</source>
+        <translation>Spindel
+ein</translation>
+    </message>
+    <message>
+        <source>Spindle
+off</source>
+        <translation>Spindel
+aus</translation>
+    </message>
+    <message>
+        <source>NC
+start</source>
+        <translation>NC-
+Start</translation>
+    </message>
+    <message>
+        <source>NC stop
+(feed hold)</source>
+        <translation>NC-Stopp
+(Vorschub-Halt)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Start at
+block</source>
+        <translation>Satzvorlauf</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Start bei Satz</translation>
+    </message>
+    <message>
+        <source>Line of the first block</source>
+        <translation>Zeile des ersten Satzes</translation>
+    </message>
+    <message>
+        <source>Single block
+on</source>
+        <translation>Einzelsatz
+ein</translation>
+    </message>
+    <message>
+        <source>Single block
+off</source>
+        <translation>Einzelsatz
+aus</translation>
+    </message>
+    <message>
+        <source>Execute
+block</source>
+        <translation>Satz
+ausführen</translation>
+    </message>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Positionieren mit Handeingabe</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Satz</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,5202 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es_ES">
+<context>
+    <name>kerf::ui::CycleCatalogueDialog</name>
+    <message>
+        <source>There is no cycle %1</source>
+        <translation>No existe el ciclo %1</translation>
+    </message>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Definición de ciclo</translation>
+    </message>
+    <message>
+        <source>Cycle number</source>
+        <translation>Número de ciclo</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::CycleDialog</name>
+    <message>
+        <source>Cycle definition</source>
+        <translation>Definición de ciclo</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FagorTableModel</name>
+    <message>
+        <source>Key</source>
+        <translation>Clave</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FileManager</name>
+    <message>
+        <source>All files</source>
+        <translation>Todos los ficheros</translation>
+    </message>
+    <message>
+        <source>Programs (.H .I .PIT)</source>
+        <translation>Programas (.H .I .PIT)</translation>
+    </message>
+    <message>
+        <source>Tables (.T .TCH .PR .D .PNT .TAB)</source>
+        <translation>Tablas (.T .TCH .PR .D .PNT .TAB)</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Directorio NC: %1</translation>
+    </message>
+    <message>
+        <source>Recent files</source>
+        <translation>Ficheros recientes</translation>
+    </message>
+    <message>
+        <source>File manager</source>
+        <translation>Gestión de ficheros</translation>
+    </message>
+    <message>
+        <source>Copy %1 to:</source>
+        <translation>Copiar %1 a:</translation>
+    </message>
+    <message>
+        <source>Copied to %1</source>
+        <translation>Copiado a %1</translation>
+    </message>
+    <message>
+        <source>Move %1 to folder:</source>
+        <translation>Mover %1 al directorio:</translation>
+    </message>
+    <message>
+        <source>New name for %1:</source>
+        <translation>Nombre nuevo para %1:</translation>
+    </message>
+    <message>
+        <source>Delete %1?</source>
+        <translation>¿Borrar %1?</translation>
+    </message>
+    <message>
+        <source>Name of the new folder:</source>
+        <translation>Nombre del directorio nuevo:</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::FindBar</name>
+    <message>
+        <source>Find</source>
+        <translation>Buscar</translation>
+    </message>
+    <message>
+        <source>Replace with</source>
+        <translation>Sustituir por</translation>
+    </message>
+    <message>
+        <source>Match case</source>
+        <translation>Mayúsculas/minúsculas</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>Anterior</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Siguiente</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Sustituir</translation>
+    </message>
+    <message>
+        <source>Replace all</source>
+        <translation>Sustituir todo</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Cerrar</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>No encontrado</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n replaced</source>
+        <translation>
+            <numerusform>%n sustituido</numerusform>
+            <numerusform>%n sustituidos</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::GraphicsPanel</name>
+    <message>
+        <source>The 3D graphics need a display</source>
+        <translation>Los gráficos 3D necesitan una pantalla</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
+    </message>
+    <message>
+        <source>Machining time %1 / %2</source>
+        <translation>Tiempo de mecanizado %1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineSession</name>
+    <message>
+        <source>The machine is busy: stop the program or wait until the axes stand still</source>
+        <translation>La máquina está ocupada: pare el programa o espere a que los ejes se detengan</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot be started</source>
+        <translation>El programa tiene errores y no se puede iniciar</translation>
+    </message>
+    <message>
+        <source>Program finished</source>
+        <translation>Programa terminado</translation>
+    </message>
+    <message>
+        <source>Program stopped</source>
+        <translation>Programa parado</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MainWindow</name>
+    <message>
+        <source>%1 has unsaved changes from an earlier session: press &quot;Restore autosave&quot; to get them back</source>
+        <translation>%1 tiene cambios sin guardar de una sesión anterior: pulse &quot;Recuperar autoguardado&quot; para recuperarlos</translation>
+    </message>
+    <message>
+        <source>Kerf - %1</source>
+        <translation>Kerf - %1</translation>
+    </message>
+    <message>
+        <source>Programming station</source>
+        <translation>Puesto de programación</translation>
+    </message>
+    <message>
+        <source>Screen
+layout</source>
+        <translation>Distribución
+pantalla</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Ficheros</translation>
+    </message>
+    <message>
+        <source>Tool
+table</source>
+        <translation>Tabla de
+herramientas</translation>
+    </message>
+    <message>
+        <source>Message
+list</source>
+        <translation>Lista de
+mensajes</translation>
+    </message>
+    <message>
+        <source>Clear
+messages</source>
+        <translation>Borrar
+mensajes</translation>
+    </message>
+    <message>
+        <source>Language
+%1</source>
+        <translation>Idioma
+%1</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Abrir</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Copiar</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renombrar</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Borrar</translation>
+    </message>
+    <message>
+        <source>Protect /
+unprotect</source>
+        <translation>Proteger /
+desproteger</translation>
+    </message>
+    <message>
+        <source>New
+folder</source>
+        <translation>Directorio
+nuevo</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Volver</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Guardar</translation>
+    </message>
+    <message>
+        <source>Insert
+row</source>
+        <translation>Insertar
+fila</translation>
+    </message>
+    <message>
+        <source>Delete
+row</source>
+        <translation>Borrar
+fila</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Deshacer</translation>
+    </message>
+    <message>
+        <source>Find /
+replace</source>
+        <translation>Buscar /
+sustituir</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rehacer</translation>
+    </message>
+    <message>
+        <source>Go to
+line</source>
+        <translation>Ir a
+línea</translation>
+    </message>
+    <message>
+        <source>Go to line</source>
+        <translation>Ir a línea</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <source>Renumber
+blocks</source>
+        <translation>Renumerar
+bloques</translation>
+    </message>
+    <message>
+        <source>Check
+program</source>
+        <translation>Comprobar
+programa</translation>
+    </message>
+    <message>
+        <source>Restore
+autosave</source>
+        <translation>Recuperar
+autoguardado</translation>
+    </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tablas</translation>
+    </message>
+    <message>
+        <source>MOD</source>
+        <translation>MOD</translation>
+    </message>
+    <message>
+        <source>No program is open: open one in Files</source>
+        <translation>No hay ningún programa abierto: abra uno en Ficheros</translation>
+    </message>
+    <message>
+        <source>Machine
+parameters</source>
+        <translation>Parámetros
+de máquina</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Marcha</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parada</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Speed
+%1</source>
+        <translation>Velocidad
+%1</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Zoom
++</source>
+        <translation>Zoom
++</translation>
+    </message>
+    <message>
+        <source>Zoom
+-</source>
+        <translation>Zoom
+-</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MessagePanel</name>
+    <message>
+        <source>Severity</source>
+        <translation>Gravedad</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <source>No messages</source>
+        <translation>Sin mensajes</translation>
+    </message>
+    <message>
+        <source>line %1: </source>
+        <translation>línea %1: </translation>
+    </message>
+    <message>
+        <source>%1 - %2%3</source>
+        <translation>%1 - %2%3</translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n more)</source>
+        <translation>
+            <numerusform> (%n más)</numerusform>
+            <numerusform> (%n más)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ModPage</name>
+    <message>
+        <source>MOD functions</source>
+        <translation>Funciones MOD</translation>
+    </message>
+    <message>
+        <source>Position display</source>
+        <translation>Visualización de posición</translation>
+    </message>
+    <message>
+        <source>Unit of the position display</source>
+        <translation>Unidad de la visualización de posición</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>Software: Kerf %1 (Qt %2)
+Machine: %3</source>
+        <translation>Software: Kerf %1 (Qt %2)
+Máquina: %3</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::OverrideControls</name>
+    <message>
+        <source>Feed</source>
+        <translation>Avance</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Rápido</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Cabezal</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PathFunctionDialog</name>
+    <message>
+        <source>Path function</source>
+        <translation>Función de trayectoria</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::PositionDisplay</name>
+    <message>
+        <source>ACTL.</source>
+        <translation>REAL</translation>
+    </message>
+    <message>
+        <source>NOML.</source>
+        <translation>NOM.</translation>
+    </message>
+    <message>
+        <source>REF ACTL.</source>
+        <translation>REF REAL</translation>
+    </message>
+    <message>
+        <source>REF NOML.</source>
+        <translation>REF NOM.</translation>
+    </message>
+    <message>
+        <source>LAG</source>
+        <translation>E.ARR.</translation>
+    </message>
+    <message>
+        <source>DIST.</source>
+        <translation>DIST.</translation>
+    </message>
+    <message>
+        <source>Program: %1   Machine: %2</source>
+        <translation>Programa: %1   Máquina: %2</translation>
+    </message>
+    <message>
+        <source>   Line %1</source>
+        <translation>   Línea %1</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>F %1 (actual %2) %3</source>
+        <translation>F %1 (real %2) %3</translation>
+    </message>
+    <message>
+        <source>inch/min</source>
+        <translation>inch/min</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>S %1 (actual %2) rpm</source>
+        <translation>S %1 (real %2) rpm</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ProgramPanel</name>
+    <message>
+        <source>Loading %1 ...</source>
+        <translation>Cargando %1 ...</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 guardado</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Error en el autoguardado: %1</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Ningún programa</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsModel</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Eje %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parámetro</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>Allowed</source>
+        <translation>Permitido</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Por defecto</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Descripción</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SettingsPage</name>
+    <message>
+        <source>Not saved: correct the parameters first</source>
+        <translation>No guardado: corrija primero los parámetros</translation>
+    </message>
+    <message>
+        <source>Saved %1: the changes apply when Kerf is restarted</source>
+        <translation>%1 guardado: los cambios se aplican al reiniciar Kerf</translation>
+    </message>
+    <message>
+        <source>Machine parameters</source>
+        <translation>Parámetros de máquina</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes apply after a restart. This is a built-in machine: the parameters are saved to %1; start Kerf with --machine %1 to use them.</source>
+        <translation>Kerf lee los parámetros de máquina al arrancar: los cambios guardados se aplican tras reiniciar. Esta es una máquina integrada: los parámetros se guardan en %1; inicie Kerf con --machine %1 para usarlos.</translation>
+    </message>
+    <message>
+        <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
+        <translation>Kerf lee los parámetros de máquina al arrancar: los cambios guardados en %1 se aplican tras reiniciar.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::StatusTabs</name>
+    <message>
+        <source>PGM</source>
+        <translation>PGM</translation>
+    </message>
+    <message>
+        <source>TOOL</source>
+        <translation>TOOL</translation>
+    </message>
+    <message>
+        <source>TRANS</source>
+        <translation>TRANS</translation>
+    </message>
+    <message>
+        <source>PROBE</source>
+        <translation>PROBE</translation>
+    </message>
+    <message>
+        <source>%1PARA</source>
+        <translation>%1PARA</translation>
+    </message>
+    <message>
+        <source>Filter, e.g. %1</source>
+        <translation>Filtro, p. ej. %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <source>Called program</source>
+        <translation>Programa llamado</translation>
+    </message>
+    <message>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>M functions</source>
+        <translation>Funciones M</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation>inch</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Corrector</translation>
+    </message>
+    <message>
+        <source>X (radius)</source>
+        <translation>X (radio)</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Wear X (I)</source>
+        <translation>Desgaste X (I)</translation>
+    </message>
+    <message>
+        <source>Wear Z (K)</source>
+        <translation>Desgaste Z (K)</translation>
+    </message>
+    <message>
+        <source>Location code (F)</source>
+        <translation>Código de forma (F)</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>DL</source>
+        <translation>DL</translation>
+    </message>
+    <message>
+        <source>DR</source>
+        <translation>DR</translation>
+    </message>
+    <message>
+        <source>Tool axis</source>
+        <translation>Eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>Zero offset</source>
+        <translation>Traslado de origen</translation>
+    </message>
+    <message>
+        <source>Datum shift %1</source>
+        <translation>Desplazamiento del punto cero %1</translation>
+    </message>
+    <message>
+        <source>Mirrored axes</source>
+        <translation>Ejes espejados</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Giro</translation>
+    </message>
+    <message>
+        <source>Scaling</source>
+        <translation>Factor de escala</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>global</source>
+        <translation>global</translation>
+    </message>
+    <message>
+        <source>local, level %1</source>
+        <translation>local, nivel %1</translation>
+    </message>
+    <message>
+        <source>local</source>
+        <translation>local</translation>
+    </message>
+    <message>
+        <source>remanent</source>
+        <translation>remanente</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>texto</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Palpador</translation>
+    </message>
+    <message>
+        <source>no result</source>
+        <translation>sin resultado</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>ha tocado</translation>
+    </message>
+    <message>
+        <source>not touched</source>
+        <translation>no ha tocado</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TableChooser</name>
+    <message>
+        <source>Tool
+table</source>
+        <translation>Tabla de
+herramientas</translation>
+    </message>
+    <message>
+        <source>Preset
+table</source>
+        <translation>Tabla de
+puntos ref.</translation>
+    </message>
+    <message>
+        <source>Datum
+table</source>
+        <translation>Tabla de
+puntos cero</translation>
+    </message>
+    <message>
+        <source>Point
+table</source>
+        <translation>Tabla de
+puntos</translation>
+    </message>
+    <message>
+        <source>Touch probe
+table</source>
+        <translation>Tabla de
+palpadores</translation>
+    </message>
+    <message>
+        <source>Tool
+offsets</source>
+        <translation>Correctores
+herramienta</translation>
+    </message>
+    <message>
+        <source>Zero
+offsets</source>
+        <translation>Traslados
+de origen</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabla</translation>
+    </message>
+    <message>
+        <source>Lengths, radii, wear and life of the tools</source>
+        <translation>Longitudes, radios, desgaste y vida útil de las herramientas</translation>
+    </message>
+    <message>
+        <source>Reference points of the workpieces, in machine coordinates</source>
+        <translation>Puntos de referencia de las piezas, en coordenadas de máquina</translation>
+    </message>
+    <message>
+        <source>Zero offsets relative to the active preset (CYCL DEF 7)</source>
+        <translation>Puntos cero relativos al punto de referencia activo (CYCL DEF 7)</translation>
+    </message>
+    <message>
+        <source>Machining positions for patterns (SEL PATTERN)</source>
+        <translation>Posiciones de mecanizado para figuras (SEL PATTERN)</translation>
+    </message>
+    <message>
+        <source>Workpiece touch probes: centre offset, feeds, probing path</source>
+        <translation>Palpadores de pieza: desvío del centro, avances, recorrido de palpación</translation>
+    </message>
+    <message>
+        <source>Tool offsets D: X, Z, nose radius R, location code F, wear I, K</source>
+        <translation>Correctores de herramienta D: X, Z, radio de la punta R, código de forma F, desgaste I, K</translation>
+    </message>
+    <message>
+        <source>Zero offsets G54-G59, G159 N7-N20 and the PLC offset, from machine zero</source>
+        <translation>Traslados de origen G54-G59, G159 N7-N20 y el traslado del PLC, desde el cero máquina</translation>
+    </message>
+    <message>
+        <source>Tools T: offset D, family, tool life, nose angle and width</source>
+        <translation>Herramientas T: corrector D, familia, vida útil, ángulo y anchura de la cuchilla</translation>
+    </message>
+    <message>
+        <source>Tables</source>
+        <translation>Tablas</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TableEditor</name>
+    <message>
+        <source>Search</source>
+        <translation>Buscar</translation>
+    </message>
+    <message>
+        <source>No table</source>
+        <translation>Ninguna tabla</translation>
+    </message>
+    <message>
+        <source>Not saved: correct the table first</source>
+        <translation>No guardado: corrija primero la tabla</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 guardado</translation>
+    </message>
+    <message>
+        <source>Delete row %1 (%2)?</source>
+        <translation>¿Borrar la fila %1 (%2)?</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabla</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::TestRunController</name>
+    <message>
+        <source>max</source>
+        <translation>máx</translation>
+    </message>
+    <message>
+        <source>Test run: %1</source>
+        <translation>Test del programa: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::ViewportWidget</name>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Planta</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Alzado</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Perfil</translation>
+    </message>
+    <message>
+        <source>Section</source>
+        <translation>Corte</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Ajustar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::Workspace</name>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <source>Program +
+graphics</source>
+        <translation>Programa +
+gráfico</translation>
+    </message>
+    <message>
+        <source>Program +
+status</source>
+        <translation>Programa +
+estado</translation>
+    </message>
+    <message>
+        <source>Positions +
+status</source>
+        <translation>Posiciones +
+estado</translation>
+    </message>
+</context>
+<context>
+    <name>kerf</name>
+    <message>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Aviso</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Manual operation</source>
+        <translation>Funcionamiento manual</translation>
+    </message>
+    <message>
+        <source>Electronic handwheel</source>
+        <translation>Volante electrónico</translation>
+    </message>
+    <message>
+        <source>Positioning with manual data input</source>
+        <translation>Posicionamiento con introducción manual</translation>
+    </message>
+    <message>
+        <source>Program run, single block</source>
+        <translation>Ejecución del programa bloque a bloque</translation>
+    </message>
+    <message>
+        <source>Program run, full sequence</source>
+        <translation>Ejecución continua del programa</translation>
+    </message>
+    <message>
+        <source>Programming</source>
+        <translation>Programación</translation>
+    </message>
+    <message>
+        <source>Test run</source>
+        <translation>Test del programa</translation>
+    </message>
+    <message>
+        <source>stop the program before changing the operating mode</source>
+        <translation>pare el programa antes de cambiar el modo de funcionamiento</translation>
+    </message>
+    <message>
+        <source>programming station: no machine is connected, only Programming and Test run are available</source>
+        <translation>puesto de programación: no hay ninguna máquina conectada, solo están disponibles Programación y Test del programa</translation>
+    </message>
+    <message>
+        <source>cannot {1}: {2}</source>
+        <translation>no es posible {1}: {2}</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip to workpiece surface</source>
+        <translation>Distancia de seguridad: punta de la herramienta a la superficie de la pieza</translation>
+    </message>
+    <message>
+        <source>Depth: workpiece surface to bottom (sign = direction)</source>
+        <translation>Profundidad: superficie de la pieza al fondo (signo = dirección)</translation>
+    </message>
+    <message>
+        <source>Thread depth: workpiece surface to thread end</source>
+        <translation>Profundidad de la rosca: superficie de la pieza al final de la rosca</translation>
+    </message>
+    <message>
+        <source>Plunging depth per infeed</source>
+        <translation>Profundidad de pasada por aproximación</translation>
+    </message>
+    <message>
+        <source>Workpiece surface coordinate</source>
+        <translation>Coordenada de la superficie de la pieza</translation>
+    </message>
+    <message>
+        <source>2nd set-up clearance: no collision above this height</source>
+        <translation>2.ª distancia de seguridad: sin colisión por encima de esta altura</translation>
+    </message>
+    <message>
+        <source>Minimum plunging depth when decreasing</source>
+        <translation>Profundidad de pasada mínima al reducir</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging</source>
+        <translation>Avance de profundización</translation>
+    </message>
+    <message>
+        <source>Feed rate for milling</source>
+        <translation>Avance de fresado</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: plunging feed)</source>
+        <translation>Avance de retroceso (0: avance de profundización)</translation>
+    </message>
+    <message>
+        <source>Dwell time at the top</source>
+        <translation>Tiempo de espera arriba</translation>
+    </message>
+    <message>
+        <source>Dwell time at depth</source>
+        <translation>Tiempo de espera abajo</translation>
+    </message>
+    <message>
+        <source>Decrement of the plunging depth after each infeed</source>
+        <translation>Reducción de la profundidad de pasada tras cada aproximación</translation>
+    </message>
+    <message>
+        <source>Feed rate for pre-positioning</source>
+        <translation>Avance de preposicionamiento</translation>
+    </message>
+    <message>
+        <source>Feed rate for countersinking</source>
+        <translation>Avance de avellanado</translation>
+    </message>
+    <message>
+        <source>Retraction distance for chip breaking</source>
+        <translation>Retroceso en la rotura de viruta</translation>
+    </message>
+    <message>
+        <source>Depth for chip breaking (0: none)</source>
+        <translation>Profundidad para la rotura de viruta (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>Upper advanced stop distance</source>
+        <translation>Distancia de parada previa superior</translation>
+    </message>
+    <message>
+        <source>Angle for spindle orientation</source>
+        <translation>Ángulo para la orientación del cabezal</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (0 none, 1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Dirección de retirada (0 ninguna, 1 -eje principal, 2 -eje auxiliar, 3 +eje principal, 4 +eje auxiliar)</translation>
+    </message>
+    <message>
+        <source>Nominal diameter</source>
+        <translation>Diámetro nominal</translation>
+    </message>
+    <message>
+        <source>Thread pitch (+ right-hand, - left-hand)</source>
+        <translation>Paso de rosca (+ rosca a derechas, - rosca a izquierdas)</translation>
+    </message>
+    <message>
+        <source>Climb (+1) or up-cut (-1) milling with M3</source>
+        <translation>Fresado sincronizado (+1) o a contramarcha (-1) con M3</translation>
+    </message>
+    <message>
+        <source>Threads per step (0 one 360° helix, 1 continuous)</source>
+        <translation>Hilos por paso (0 una hélice de 360°, 1 continuo)</translation>
+    </message>
+    <message>
+        <source>Countersinking depth: surface to tool tip</source>
+        <translation>Profundidad de avellanado: superficie a la punta de la herramienta</translation>
+    </message>
+    <message>
+        <source>Total hole depth</source>
+        <translation>Profundidad total del taladro</translation>
+    </message>
+    <message>
+        <source>Clearance to side: tool edge to hole wall</source>
+        <translation>Distancia lateral: filo de la herramienta a la pared del taladro</translation>
+    </message>
+    <message>
+        <source>Depth at front: surface to tool tip</source>
+        <translation>Profundidad frontal: superficie a la punta de la herramienta</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front (tool centre)</source>
+        <translation>Desplazamiento del avellanado frontal (centro de la herramienta)</translation>
+    </message>
+    <message>
+        <source>Feed rate for approaching (0: milling feed)</source>
+        <translation>Avance de aproximación (0: avance de fresado)</translation>
+    </message>
+    <message>
+        <source>Deepened starting point below the surface</source>
+        <translation>Punto de partida profundizado bajo la superficie</translation>
+    </message>
+    <message>
+        <source>Depth reference (0 tool tip, 1 cylindrical part)</source>
+        <translation>Referencia de profundidad (0 punta de la herramienta, 1 parte cilíndrica)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>ciclo {1}: {2} ({3}) = {4} debe ser un número entero de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>ciclo {1}: {2} ({3}) = {4} está fuera de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>DRILLING</source>
+        <translation>TALADRADO</translation>
+    </message>
+    <message>
+        <source>REAMING</source>
+        <translation>ESCARIADO</translation>
+    </message>
+    <message>
+        <source>BORING</source>
+        <translation>MANDRINADO</translation>
+    </message>
+    <message>
+        <source>Number of chip breaks before retracting</source>
+        <translation>Número de roturas de viruta antes de retirar</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL DRILLING</source>
+        <translation>TALADRADO UNIVERSAL</translation>
+    </message>
+    <message>
+        <source>Depth of counterbore from the underside (+ upwards)</source>
+        <translation>Profundidad del avellanado desde la cara inferior (+ hacia arriba)</translation>
+    </message>
+    <message>
+        <source>Material thickness</source>
+        <translation>Espesor del material</translation>
+    </message>
+    <message>
+        <source>Off-centre distance of the boring bar</source>
+        <translation>Distancia de excentricidad de la barra de mandrinar</translation>
+    </message>
+    <message>
+        <source>Tool edge height above the underside of the bar</source>
+        <translation>Altura del filo sobre el borde inferior de la barra de mandrinar</translation>
+    </message>
+    <message>
+        <source>Feed rate for counterboring</source>
+        <translation>Avance de avellanado</translation>
+    </message>
+    <message>
+        <source>Dwell time at the counterbore floor</source>
+        <translation>Tiempo de espera en el fondo del avellanado</translation>
+    </message>
+    <message>
+        <source>Disengaging direction (1 -main, 2 -secondary, 3 +main, 4 +secondary axis)</source>
+        <translation>Dirección de retirada (1 -eje principal, 2 -eje auxiliar, 3 +eje principal, 4 +eje auxiliar)</translation>
+    </message>
+    <message>
+        <source>BACK BORING</source>
+        <translation>REBAJE INVERSO</translation>
+    </message>
+    <message>
+        <source>Lower advanced stop distance</source>
+        <translation>Distancia de parada previa inferior</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q379 lies at or below the depth</source>
+        <translation>ciclo {1}: el punto de partida Q379 está a la profundidad o por debajo</translation>
+    </message>
+    <message>
+        <source>UNIVERSAL PECKING</source>
+        <translation>TALADRADO PROFUNDO UNIVERSAL</translation>
+    </message>
+    <message>
+        <source>Feed rate for helical drilling</source>
+        <translation>Avance de taladrado helicoidal</translation>
+    </message>
+    <message>
+        <source>Infeed per helix revolution</source>
+        <translation>Aproximación por vuelta de la hélice</translation>
+    </message>
+    <message>
+        <source>Roughing (pre-drilled) diameter</source>
+        <translation>Diámetro de desbaste (pretaladrado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter {2} is smaller than the tool diameter {3}</source>
+        <translation>ciclo {1}: el diámetro nominal {2} es menor que el diámetro de la herramienta {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the nominal diameter is more than twice the tool diameter; enter the roughing diameter Q342</source>
+        <translation>ciclo {1}: el diámetro nominal es más del doble del diámetro de la herramienta; introduzca el diámetro de desbaste Q342</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per helix Q334 must be greater than 0</source>
+        <translation>ciclo {1}: la aproximación por hélice Q334 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>BORE MILLING</source>
+        <translation>FRESADO DE TALADRO</translation>
+    </message>
+    <message>
+        <source>Select depth (0) or diameter (1)</source>
+        <translation>Seleccionar profundidad (0) o diámetro (1)</translation>
+    </message>
+    <message>
+        <source>Countersink diameter (sign = direction)</source>
+        <translation>Diámetro de avellanado (signo = dirección)</translation>
+    </message>
+    <message>
+        <source>CENTERING</source>
+        <translation>CENTRADO</translation>
+    </message>
+    <message>
+        <source>Direction of rotation for entry and exit (3 M3, 4 M4, 5 stationary)</source>
+        <translation>Sentido de giro al entrar y salir (3 M3, 4 M4, 5 parado)</translation>
+    </message>
+    <message>
+        <source>Spindle speed for entry and exit</source>
+        <translation>Velocidad del cabezal al entrar y salir</translation>
+    </message>
+    <message>
+        <source>Spindle speed for drilling</source>
+        <translation>Velocidad del cabezal al taladrar</translation>
+    </message>
+    <message>
+        <source>M function for coolant on (0: none)</source>
+        <translation>Función M para conectar el refrigerante (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>M function for coolant off (0: none)</source>
+        <translation>Función M para desconectar el refrigerante (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>Dwell depth where the feed reduction begins (0: none)</source>
+        <translation>Profundidad de espera donde empieza la reducción del avance (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>Feed rate factor beyond the dwell depth</source>
+        <translation>Factor de avance más allá de la profundidad de espera</translation>
+    </message>
+    <message>
+        <source>Maximum plunging depth</source>
+        <translation>Profundidad de pasada máxima</translation>
+    </message>
+    <message>
+        <source>SINGLE-LIP DEEP-HOLE DRILLING</source>
+        <translation>TALADRADO PROFUNDO CON BROCA DE UN FILO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the depth Q{2} = {3} is positive (the machine parameter displayDepthErr forbids it)</source>
+        <translation>ciclo {1}: la profundidad Q{2} = {3} es positiva (el parámetro de máquina displayDepthErr lo prohíbe)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} infeeds; increase the plunging depth</source>
+        <translation>ciclo {1}: más de {2} aproximaciones; aumente la profundidad de pasada</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the point angle T-ANGLE of the tool in the tool table</source>
+        <translation>el ciclo {1} necesita el ángulo de punta T-ANGLE de la herramienta en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs more than {2} moves</source>
+        <translation>el ciclo {1} necesita más de {2} movimientos</translation>
+    </message>
+    <message>
+        <source>Path overlap factor</source>
+        <translation>Factor de solapamiento de trayectoria</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical, 2 reciprocating)</source>
+        <translation>Estrategia de profundización (0 vertical, 1 helicoidal, 2 pendular)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance</source>
+        <translation>Distancia de seguridad</translation>
+    </message>
+    <message>
+        <source>Clearance height (absolute)</source>
+        <translation>Altura segura (absoluta)</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (+1 climb, -1 up-cut)</source>
+        <translation>Sentido de giro (+1 sincronizado, -1 contramarcha)</translation>
+    </message>
+    <message>
+        <source>Set-up clearance of the probe</source>
+        <translation>Distancia de seguridad del palpador</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>Altura segura</translation>
+    </message>
+    <message>
+        <source>Move to clearance height between points</source>
+        <translation>Desplazar a la altura segura entre puntos</translation>
+    </message>
+    <message>
+        <source>Height between pattern points: 2nd set-up clearance (1) or the position at the start (0)</source>
+        <translation>Altura entre puntos del patrón: 2.ª distancia de seguridad (1) o la posición al inicio (0)</translation>
+    </message>
+    <message>
+        <source>GENERAL</source>
+        <translation>GENERAL</translation>
+    </message>
+    <message>
+        <source>POCKET MILLING</source>
+        <translation>FRESADO DE CAJERAS</translation>
+    </message>
+    <message>
+        <source>CONTOUR MILLING</source>
+        <translation>FRESADO DE CONTORNOS</translation>
+    </message>
+    <message>
+        <source>PROBING</source>
+        <translation>PALPACIÓN</translation>
+    </message>
+    <message>
+        <source>POSITIONING</source>
+        <translation>POSICIONAMIENTO</translation>
+    </message>
+    <message>
+        <source>Centre in the 1st axis</source>
+        <translation>Centro en el 1.er eje</translation>
+    </message>
+    <message>
+        <source>Centre in the 2nd axis</source>
+        <translation>Centro en el 2.º eje</translation>
+    </message>
+    <message>
+        <source>Pitch circle diameter</source>
+        <translation>Diámetro del círculo primitivo</translation>
+    </message>
+    <message>
+        <source>Starting angle</source>
+        <translation>Ángulo inicial</translation>
+    </message>
+    <message>
+        <source>Stopping angle</source>
+        <translation>Ángulo final</translation>
+    </message>
+    <message>
+        <source>Stepping angle (0: from start, stop and count)</source>
+        <translation>Incremento angular (0: a partir del inicio, el final y el número)</translation>
+    </message>
+    <message>
+        <source>Number of operations</source>
+        <translation>Número de mecanizados</translation>
+    </message>
+    <message>
+        <source>Move between operations at set-up clearance (0) or at the 2nd set-up clearance (1)</source>
+        <translation>Desplazamiento entre mecanizados a la distancia de seguridad (0) o a la 2.ª distancia de seguridad (1)</translation>
+    </message>
+    <message>
+        <source>Type of traverse: straight line (0) or arc on the pitch circle (1)</source>
+        <translation>Tipo de desplazamiento: recta (0) o arco sobre el círculo primitivo (1)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the stopping angle Q246 must differ from the starting angle Q245</source>
+        <translation>ciclo {1}: el ángulo final Q246 debe ser distinto del ángulo inicial Q245</translation>
+    </message>
+    <message>
+        <source>POLAR PATTERN</source>
+        <translation>FIGURA DE PUNTOS SOBRE CÍRCULO</translation>
+    </message>
+    <message>
+        <source>Starting point in the 1st axis</source>
+        <translation>Punto inicial en el 1.er eje</translation>
+    </message>
+    <message>
+        <source>Starting point in the 2nd axis</source>
+        <translation>Punto inicial en el 2.º eje</translation>
+    </message>
+    <message>
+        <source>Spacing in the 1st axis</source>
+        <translation>Distancia en el 1.er eje</translation>
+    </message>
+    <message>
+        <source>Spacing in the 2nd axis</source>
+        <translation>Distancia en el 2.º eje</translation>
+    </message>
+    <message>
+        <source>Number of columns</source>
+        <translation>Número de columnas</translation>
+    </message>
+    <message>
+        <source>Number of lines</source>
+        <translation>Número de filas</translation>
+    </message>
+    <message>
+        <source>Angle of rotation about the starting point</source>
+        <translation>Ángulo de giro alrededor del punto inicial</translation>
+    </message>
+    <message>
+        <source>cycle {1}: more than {2} positions</source>
+        <translation>ciclo {1}: más de {2} posiciones</translation>
+    </message>
+    <message>
+        <source>CARTESIAN PATTERN</source>
+        <translation>FIGURA DE PUNTOS SOBRE LÍNEAS</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: {1} must be a whole number from 1 to 99999</source>
+        <translation>PATTERN DEF: {1} debe ser un número entero de 1 a 99999</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF: more than {1} positions</source>
+        <translation>PATTERN DEF: más de {1} posiciones</translation>
+    </message>
+    <message>
+        <source>Engraving text</source>
+        <translation>Texto a grabar</translation>
+    </message>
+    <message>
+        <source>Character height (0: scaled to the text length Q574)</source>
+        <translation>Altura de los caracteres (0: ajustada a la longitud del texto Q574)</translation>
+    </message>
+    <message>
+        <source>Spacing factor between the characters (0: as the font)</source>
+        <translation>Factor de distancia entre caracteres (0: según la fuente)</translation>
+    </message>
+    <message>
+        <source>Font (without function)</source>
+        <translation>Fuente (sin función)</translation>
+    </message>
+    <message>
+        <source>Text on a line (0), an arc (1) or an arc, continuous (2)</source>
+        <translation>Texto en una recta (0), en un arco (1) o en un arco, continuo (2)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (centre angle on an arc)</source>
+        <translation>Ángulo de giro (ángulo central en un arco)</translation>
+    </message>
+    <message>
+        <source>Radius of the arc the text is on</source>
+        <translation>Radio del arco sobre el que está el texto</translation>
+    </message>
+    <message>
+        <source>Reference of the text position (0-6)</source>
+        <translation>Referencia de la posición del texto (0-6)</translation>
+    </message>
+    <message>
+        <source>Maximum text length (0: no limit)</source>
+        <translation>Longitud máxima del texto (0: sin límite)</translation>
+    </message>
+    <message>
+        <source>ENGRAVING</source>
+        <translation>GRABADO</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line)</source>
+        <translation>Estrategia (0 meandro por fuera, 1 meandro en el borde, 2 línea a línea)</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis (surface)</source>
+        <translation>Punto inicial en el 3.er eje (superficie)</translation>
+    </message>
+    <message>
+        <source>End point in the 3rd axis</source>
+        <translation>Punto final en el 3.er eje</translation>
+    </message>
+    <message>
+        <source>First side length (sign = direction)</source>
+        <translation>Longitud del 1.er lado (signo = dirección)</translation>
+    </message>
+    <message>
+        <source>Second side length (sign = direction)</source>
+        <translation>Longitud del 2.º lado (signo = dirección)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the floor</source>
+        <translation>Sobremedida de acabado en profundidad</translation>
+    </message>
+    <message>
+        <source>Maximum path overlap factor</source>
+        <translation>Factor de solapamiento de trayectoria máximo</translation>
+    </message>
+    <message>
+        <source>Feed rate for finishing</source>
+        <translation>Avance de acabado</translation>
+    </message>
+    <message>
+        <source>Lateral clearance to the workpiece</source>
+        <translation>Distancia lateral a la pieza</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the starting point Q227 must be above the end point Q386</source>
+        <translation>ciclo {1}: el punto inicial Q227 debe estar por encima del punto final Q386</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool radius R greater than R2</source>
+        <translation>el ciclo {1} necesita un radio de herramienta R mayor que R2</translation>
+    </message>
+    <message>
+        <source>FACE MILLING</source>
+        <translation>PLANEADO</translation>
+    </message>
+    <message>
+        <source>cycle 225: with the character height Q513 = 0 the text length Q574 must be given</source>
+        <translation>ciclo 225: con la altura de caracteres Q513 = 0 hay que indicar la longitud del texto Q574</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text has no length that Q574 could scale</source>
+        <translation>ciclo 225: el texto no tiene una longitud que Q574 pueda escalar</translation>
+    </message>
+    <message>
+        <source>cycle 225: the text is {1} mm long, longer than the maximum text length Q574 = {2}</source>
+        <translation>ciclo 225: el texto mide {1} mm, más que la longitud máxima del texto Q574 = {2}</translation>
+    </message>
+    <message>
+        <source>cycle 225: text on a circle needs the radius Q517</source>
+        <translation>ciclo 225: un texto sobre un círculo necesita el radio Q517</translation>
+    </message>
+    <message>
+        <source>cycle 225: the character &apos;{1}&apos; cannot be engraved</source>
+        <translation>ciclo 225: el carácter &apos;{1}&apos; no se puede grabar</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown formatting character &apos;\{1}&apos; in the text (write \\ for a backslash)</source>
+        <translation>ciclo 225: carácter de formato desconocido &apos;\{1}&apos; en el texto (escriba \\ para una barra invertida)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%time{1}&apos; is not a date format (use %time00 to %time15)</source>
+        <translation>ciclo 225: &apos;%time{1}&apos; no es un formato de fecha (use %time00 a %time15)</translation>
+    </message>
+    <message>
+        <source>cycle 225: &apos;%count&apos; needs the number of digits (1 to 9)</source>
+        <translation>ciclo 225: &apos;%count&apos; necesita el número de cifras (1 a 9)</translation>
+    </message>
+    <message>
+        <source>cycle 225: unknown escape &apos;%{1}&apos; in the text (write %% for a percent sign)</source>
+        <translation>ciclo 225: secuencia de escape desconocida &apos;%{1}&apos; en el texto (escriba %% para un signo de porcentaje)</translation>
+    </message>
+    <message>
+        <source>Dwell time</source>
+        <translation>Tiempo de espera</translation>
+    </message>
+    <message>
+        <source>Program to call as a machining cycle</source>
+        <translation>Programa que se llama como ciclo de mecanizado</translation>
+    </message>
+    <message>
+        <source>Orientation angle of the spindle</source>
+        <translation>Ángulo de orientación del cabezal</translation>
+    </message>
+    <message>
+        <source>Tolerance (0: machine default)</source>
+        <translation>Tolerancia (0: valor de la máquina)</translation>
+    </message>
+    <message>
+        <source>Filter: finishing (0) or roughing (1)</source>
+        <translation>Filtro: acabado (0) o desbaste (1)</translation>
+    </message>
+    <message>
+        <source>Tolerance of rotary axes (0: machine default)</source>
+        <translation>Tolerancia de los ejes giratorios (0: valor de la máquina)</translation>
+    </message>
+    <message>
+        <source>DWELL TIME</source>
+        <translation>TIEMPO DE ESPERA</translation>
+    </message>
+    <message>
+        <source>PGM CALL</source>
+        <translation>PGM CALL</translation>
+    </message>
+    <message>
+        <source>ORIENTED SPINDLE STOP</source>
+        <translation>ORIENTACIÓN DEL CABEZAL</translation>
+    </message>
+    <message>
+        <source>TOLERANCE</source>
+        <translation>TOLERANCIA</translation>
+    </message>
+    <message>
+        <source>Total hole depth from the current position</source>
+        <translation>Profundidad total del taladro desde la posición actual</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch is 0</source>
+        <translation>ciclo {1}: el paso de rosca es 0</translation>
+    </message>
+    <message>
+        <source>THREAD CUTTING</source>
+        <translation>ROSCADO</translation>
+    </message>
+    <message>
+        <source>Feed rate for tapping (spindle speed x pitch)</source>
+        <translation>Avance de roscado (velocidad del cabezal x paso)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs the spindle running (M3 or M4)</source>
+        <translation>el ciclo {1} necesita el cabezal girando (M3 o M4)</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH A FLOATING TAP HOLDER</source>
+        <translation>ROSCADO CON MACHO Y PORTAMACHOS FLOTANTE</translation>
+    </message>
+    <message>
+        <source>RIGID TAPPING</source>
+        <translation>ROSCADO RÍGIDO</translation>
+    </message>
+    <message>
+        <source>Retraction for chip breaking in pitches (0: out of the hole)</source>
+        <translation>Retroceso en la rotura de viruta en pasos de rosca (0: fuera del taladro)</translation>
+    </message>
+    <message>
+        <source>Spindle speed factor for retraction</source>
+        <translation>Factor de velocidad del cabezal en el retroceso</translation>
+    </message>
+    <message>
+        <source>TAPPING WITH CHIP BREAKING</source>
+        <translation>ROSCADO CON ROTURA DE VIRUTA</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch {2} differs from the pitch {3} of the tool in the tool table</source>
+        <translation>ciclo {1}: el paso de rosca {2} difiere del paso {3} de la herramienta en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the thread pitch Q{2} is 0</source>
+        <translation>ciclo {1}: el paso de rosca Q{2} es 0</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING</source>
+        <translation>FRESADO DE ROSCA</translation>
+    </message>
+    <message>
+        <source>THREAD MILLING/COUNTERSINKING</source>
+        <translation>FRESADO DE ROSCA AVELLANADA</translation>
+    </message>
+    <message>
+        <source>THREAD DRILLING/MILLING</source>
+        <translation>FRESADO DE ROSCA EN TALADRO</translation>
+    </message>
+    <message>
+        <source>Countersink before (0) or after (1) the thread</source>
+        <translation>Avellanar antes (0) o después (1) de la rosca</translation>
+    </message>
+    <message>
+        <source>HELICAL THREAD DRILLING/MILLING</source>
+        <translation>FRESADO DE ROSCA HELICOIDAL EN TALADRO</translation>
+    </message>
+    <message>
+        <source>Countersinking offset at front: stud centre to tool centre</source>
+        <translation>Desplazamiento del avellanado frontal: centro de la isla al centro de la herramienta</translation>
+    </message>
+    <message>
+        <source>OUTSIDE THREAD MILLING</source>
+        <translation>FRESADO DE ROSCA EXTERIOR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter {2} is too large for the nominal diameter {3}</source>
+        <translation>ciclo {1}: el diámetro de la herramienta {2} es demasiado grande para el diámetro nominal {3}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: unexpected &apos;{2}&apos;</source>
+        <translation>ciclo {1}: &apos;{2}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} needs a value</source>
+        <translation>ciclo {1}: {2} necesita un valor</translation>
+    </message>
+    <message>
+        <source>cycle {1}: scaling factor {2} = {3} is outside 0.000001 to 99.999999</source>
+        <translation>ciclo {1}: el factor de escala {2} = {3} está fuera de 0.000001 a 99.999999</translation>
+    </message>
+    <message>
+        <source>Datum shift per axis (IX: incremental), or #n: datum number of the datum table</source>
+        <translation>Desplazamiento del punto cero por eje (IX: incremental), o #n: número del punto cero en la tabla de puntos cero</translation>
+    </message>
+    <message>
+        <source>Mirrored axes (none: mirroring off)</source>
+        <translation>Ejes espejados (ninguno: espejo desactivado)</translation>
+    </message>
+    <message>
+        <source>Angle of rotation (IROT: incremental)</source>
+        <translation>Ángulo de giro (IROT: incremental)</translation>
+    </message>
+    <message>
+        <source>Scaling factor</source>
+        <translation>Factor de escala</translation>
+    </message>
+    <message>
+        <source>Scaling factor per axis</source>
+        <translation>Factor de escala por eje</translation>
+    </message>
+    <message>
+        <source>Centre of the scaling per axis</source>
+        <translation>Centro del escalado por eje</translation>
+    </message>
+    <message>
+        <source>Number of the preset to activate</source>
+        <translation>Número del punto de referencia a activar</translation>
+    </message>
+    <message>
+        <source>Tilt angles of the rotary axes</source>
+        <translation>Ángulos de inclinación de los ejes giratorios</translation>
+    </message>
+    <message>
+        <source>Feed rate for automatic positioning</source>
+        <translation>Avance del posicionamiento automático</translation>
+    </message>
+    <message>
+        <source>Set-up clearance for automatic positioning</source>
+        <translation>Distancia de seguridad para el posicionamiento automático</translation>
+    </message>
+    <message>
+        <source>cycle {1}: angle of rotation ROT = {2} is outside -360 to 360</source>
+        <translation>ciclo {1}: el ángulo de giro ROT = {2} está fuera de -360 a 360</translation>
+    </message>
+    <message>
+        <source>DATUM SHIFT</source>
+        <translation>DESPLAZAMIENTO DEL PUNTO CERO</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE</source>
+        <translation>ESPEJO</translation>
+    </message>
+    <message>
+        <source>ROTATION</source>
+        <translation>GIRO</translation>
+    </message>
+    <message>
+        <source>SCALING</source>
+        <translation>FACTOR DE ESCALA</translation>
+    </message>
+    <message>
+        <source>AXIS-SPECIFIC SCALING</source>
+        <translation>FACTOR DE ESCALA ESPECÍFICO DEL EJE</translation>
+    </message>
+    <message>
+        <source>PRESETTING</source>
+        <translation>FIJAR PUNTO DE REFERENCIA</translation>
+    </message>
+    <message>
+        <source>WORKING PLANE</source>
+        <translation>PLANO DE MECANIZADO</translation>
+    </message>
+    <message>
+        <source>the block is longer than 60000 characters</source>
+        <translation>el bloque tiene más de 60000 caracteres</translation>
+    </message>
+    <message>
+        <source>empty block: a block needs at least a comment</source>
+        <translation>bloque vacío: un bloque necesita al menos un comentario</translation>
+    </message>
+    <message>
+        <source>a block has at most 3 skip marks</source>
+        <translation>un bloque tiene como máximo 3 marcas de salto</translation>
+    </message>
+    <message>
+        <source>a block label cannot be a parameter</source>
+        <translation>una etiqueta de bloque no puede ser un parámetro</translation>
+    </message>
+    <message>
+        <source>label number expected after N</source>
+        <translation>se esperaba un número de etiqueta tras N</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits (N0-N99999999)</source>
+        <translation>una etiqueta tiene como máximo 8 cifras (N0-N99999999)</translation>
+    </message>
+    <message>
+        <source>missing &apos;)&apos; at the end of the high-level block</source>
+        <translation>falta &apos;)&apos; al final del bloque de alto nivel</translation>
+    </message>
+    <message>
+        <source>repetition count expected after N</source>
+        <translation>se esperaba un número de repeticiones tras N</translation>
+    </message>
+    <message>
+        <source>a repetition count has at most 4 digits (N0-N9999)</source>
+        <translation>un número de repeticiones tiene como máximo 4 cifras (N0-N9999)</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; at the end of the block</source>
+        <translation>&apos;{1}&apos; inesperado al final del bloque</translation>
+    </message>
+    <message>
+        <source>expressions are not allowed in ISO blocks</source>
+        <translation>no se permiten expresiones en bloques ISO</translation>
+    </message>
+    <message>
+        <source>parameter number expected after P</source>
+        <translation>se esperaba un número de parámetro tras P</translation>
+    </message>
+    <message>
+        <source>number expected after the sign of {1}</source>
+        <translation>se esperaba un número tras el signo de {1}</translation>
+    </message>
+    <message>
+        <source>{1} cannot be negative</source>
+        <translation>{1} no puede ser negativo</translation>
+    </message>
+    <message>
+        <source>{1} value {2} is outside the format {3}.{4}</source>
+        <translation>el valor {2} de {1} está fuera del formato {3}.{4}</translation>
+    </message>
+    <message>
+        <source>{1} is outside the format {2}.{3}</source>
+        <translation>{1} está fuera del formato {2}.{3}</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}</source>
+        <translation>{1} debe ser un número entero de {2} a {3}</translation>
+    </message>
+    <message>
+        <source>{1} is programmed twice</source>
+        <translation>{1} está programado dos veces</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos;: words are written in upper case</source>
+        <translation>&apos;{1}&apos;: las palabras se escriben en mayúsculas</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos;</source>
+        <translation>&apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>G functions are written at the start of the block</source>
+        <translation>las funciones G se escriben al principio del bloque</translation>
+    </message>
+    <message>
+        <source>too many G functions in one block</source>
+        <translation>demasiadas funciones G en un bloque</translation>
+    </message>
+    <message>
+        <source>axis letters after G14, G16 or G74 take no value</source>
+        <translation>las letras de eje tras G14, G16 o G74 no llevan valor</translation>
+    </message>
+    <message>
+        <source>I is programmed more than twice</source>
+        <translation>I está programado más de dos veces</translation>
+    </message>
+    <message>
+        <source>at most 7 M functions in one block</source>
+        <translation>como máximo 7 funciones M en un bloque</translation>
+    </message>
+    <message>
+        <source>E belongs to G51</source>
+        <translation>E pertenece a G51</translation>
+    </message>
+    <message>
+        <source>unknown word &apos;{1}&apos;</source>
+        <translation>palabra desconocida &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 cannot be used in a thread</source>
+        <translation>G36, G37, G38 y G39 no se pueden usar en una rosca</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a move in the plane</source>
+        <translation>G36, G37, G38 y G39 necesitan un movimiento en el plano</translation>
+    </message>
+    <message>
+        <source>the next block must be a contour element in the plane</source>
+        <translation>el bloque siguiente debe ser un elemento de contorno en el plano</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01)</source>
+        <translation>G37 necesita una recta (G00 o G01)</translation>
+    </message>
+    <message>
+        <source>G37: the start point lies inside the entry circle</source>
+        <translation>G37: el punto inicial está dentro del círculo de entrada</translation>
+    </message>
+    <message>
+        <source>G36: the rounding radius does not fit between the elements</source>
+        <translation>G36: el radio de redondeo no cabe entre los elementos</translation>
+    </message>
+    <message>
+        <source>G39 needs straight lines on both sides</source>
+        <translation>G39 necesita rectas a ambos lados</translation>
+    </message>
+    <message>
+        <source>G39: the chamfer is longer than an adjacent line</source>
+        <translation>G39: el chaflán es más largo que una recta adyacente</translation>
+    </message>
+    <message>
+        <source>the block after G38 must be a straight line (G00 or G01)</source>
+        <translation>el bloque tras G38 debe ser una recta (G00 o G01)</translation>
+    </message>
+    <message>
+        <source>G38: the end point lies inside the exit circle</source>
+        <translation>G38: el punto final está dentro del círculo de salida</translation>
+    </message>
+    <message>
+        <source>G36, G37, G38 and G39 need a following contour element</source>
+        <translation>G36, G37, G38 y G39 necesitan un elemento de contorno siguiente</translation>
+    </message>
+    <message>
+        <source>division by zero</source>
+        <translation>división por cero</translation>
+    </message>
+    <message>
+        <source>EXP: {1} to the power {2} has no value</source>
+        <translation>EXP: {1} elevado a {2} no tiene valor</translation>
+    </message>
+    <message>
+        <source>MOD by zero</source>
+        <translation>MOD por cero</translation>
+    </message>
+    <message>
+        <source>&apos;)&apos; expected</source>
+        <translation>se esperaba &apos;)&apos;</translation>
+    </message>
+    <message>
+        <source>a function argument needs parentheses unless it is a number</source>
+        <translation>el argumento de una función necesita paréntesis salvo que sea un número</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is outside its domain</source>
+        <translation>{1}: {2} está fuera de su dominio</translation>
+    </message>
+    <message>
+        <source>a hexadecimal constant has 1 to 8 digits</source>
+        <translation>una constante hexadecimal tiene de 1 a 8 cifras</translation>
+    </message>
+    <message>
+        <source>number expected</source>
+        <translation>se esperaba un número</translation>
+    </message>
+    <message>
+        <source>a constant has at most 6 integer and 5 decimal digits</source>
+        <translation>una constante tiene como máximo 6 cifras enteras y 5 decimales</translation>
+    </message>
+    <message>
+        <source>an index must be a whole number, not {1}</source>
+        <translation>un índice debe ser un número entero, no {1}</translation>
+    </message>
+    <message>
+        <source>number or (expression) expected</source>
+        <translation>se esperaba un número o una (expresión)</translation>
+    </message>
+    <message>
+        <source>GPOS needs N&lt;block&gt;</source>
+        <translation>GPOS necesita N&lt;bloque&gt;</translation>
+    </message>
+    <message>
+        <source>GPOS needs P&lt;program&gt;</source>
+        <translation>GPOS necesita P&lt;programa&gt;</translation>
+    </message>
+    <message>
+        <source>{1} needs a number</source>
+        <translation>{1} necesita un número</translation>
+    </message>
+    <message>
+        <source>value expected</source>
+        <translation>se esperaba un valor</translation>
+    </message>
+    <message>
+        <source>&apos;(&apos; expected</source>
+        <translation>se esperaba &apos;(&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;,&apos; expected</source>
+        <translation>se esperaba &apos;,&apos;</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in this program</source>
+        <translation>la etiqueta N{1} no está definida en este programa</translation>
+    </message>
+    <message>
+        <source>label N{1} is not defined in the program</source>
+        <translation>la etiqueta N{1} no está definida en el programa</translation>
+    </message>
+    <message>
+        <source>RPT: block N{1} comes before block N{2}</source>
+        <translation>RPT: el bloque N{1} va antes del bloque N{2}</translation>
+    </message>
+    <message>
+        <source>more than {1} nested levels</source>
+        <translation>más de {1} niveles de anidamiento</translation>
+    </message>
+    <message>
+        <source>cannot read program {1}: {2}</source>
+        <translation>no se puede leer el programa {1}: {2}</translation>
+    </message>
+    <message>
+        <source>program {1} has errors</source>
+        <translation>el programa {1} tiene errores</translation>
+    </message>
+    <message>
+        <source>program {1} is not in the NC root</source>
+        <translation>el programa {1} no está en el directorio NC</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is not defined</source>
+        <translation>la subrutina {1} no está definida</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined in more than one program</source>
+        <translation>la subrutina {1} está definida en más de un programa</translation>
+    </message>
+    <message>
+        <source>the program with subroutine {1} has errors</source>
+        <translation>el programa con la subrutina {1} tiene errores</translation>
+    </message>
+    <message>
+        <source>error 1255: subroutine restricted to OEM programs</source>
+        <translation>error 1255: subrutina restringida a programas OEM</translation>
+    </message>
+    <message>
+        <source>more than 6 nested levels of local parameters</source>
+        <translation>más de 6 niveles de anidamiento de parámetros locales</translation>
+    </message>
+    <message>
+        <source>subroutine {1} has no RET</source>
+        <translation>la subrutina {1} no tiene RET</translation>
+    </message>
+    <message>
+        <source>RET outside a subroutine</source>
+        <translation>RET fuera de una subrutina</translation>
+    </message>
+    <message>
+        <source>error 1064: program cannot be executed (MEXEC inside the modal program)</source>
+        <translation>error 1064: no se puede ejecutar el programa (MEXEC dentro del programa modal)</translation>
+    </message>
+    <message>
+        <source>REPOS is only allowed in an interrupt subroutine</source>
+        <translation>REPOS solo se permite en una subrutina de interrupción</translation>
+    </message>
+    <message>
+        <source>REPOS failed</source>
+        <translation>REPOS ha fallado</translation>
+    </message>
+    <message>
+        <source>collision detection removed a loop of the compensated path</source>
+        <translation>la detección de colisiones ha eliminado un bucle de la trayectoria compensada</translation>
+    </message>
+    <message>
+        <source>the program ends before the last block of the RPT</source>
+        <translation>el programa termina antes del último bloque del RPT</translation>
+    </message>
+    <message>
+        <source>the program ends inside a subroutine (RET missing)</source>
+        <translation>el programa termina dentro de una subrutina (falta RET)</translation>
+    </message>
+    <message>
+        <source>axis {1} is not available on this machine</source>
+        <translation>el eje {1} no está disponible en esta máquina</translation>
+    </message>
+    <message>
+        <source>N{1}: only a motion block under a modal subroutine (MCALL, MEXEC) or a canned cycle can be repeated</source>
+        <translation>N{1}: solo se puede repetir un bloque de movimiento bajo una subrutina modal (MCALL, MEXEC) o un ciclo fijo</translation>
+    </message>
+    <message>
+        <source>incompatible G functions G51 and {1} (error 7)</source>
+        <translation>funciones G incompatibles G51 y {1} (error 7)</translation>
+    </message>
+    <message>
+        <source>G40, G41 and G42 need G00 or G01 active, not G02/G03</source>
+        <translation>G40, G41 y G42 necesitan G00 o G01 activa, no G02/G03</translation>
+    </message>
+    <message>
+        <source>radius compensation works in the ZX plane only (PLACOMP 0)</source>
+        <translation>la compensación de radio solo funciona en el plano ZX (PLACOMP 0)</translation>
+    </message>
+    <message>
+        <source>{1} needs R greater than 0 right after it</source>
+        <translation>{1} necesita R mayor que 0 justo detrás</translation>
+    </message>
+    <message>
+        <source>G37 needs R greater than 0 right after it</source>
+        <translation>G37 necesita R mayor que 0 justo detrás</translation>
+    </message>
+    <message>
+        <source>G37 needs a straight line (G00 or G01), not G02/G03</source>
+        <translation>G37 necesita una recta (G00 o G01), no G02/G03</translation>
+    </message>
+    <message>
+        <source>G06 belongs in a circular interpolation block</source>
+        <translation>G06 pertenece a un bloque de interpolación circular</translation>
+    </message>
+    <message>
+        <source>G16 needs two axis letters: abscissa and ordinate</source>
+        <translation>G16 necesita dos letras de eje: abscisa y ordenada</translation>
+    </message>
+    <message>
+        <source>G16 {1}{2}: only planes of two of the axes X, Y and Z are supported</source>
+        <translation>G16 {1}{2}: solo se admiten planos formados por dos de los ejes X, Y y Z</translation>
+    </message>
+    <message>
+        <source>the plane cannot change under radius compensation</source>
+        <translation>el plano no puede cambiar con la compensación de radio activa</translation>
+    </message>
+    <message>
+        <source>G51 needs E, the permitted contour error</source>
+        <translation>G51 necesita E, el error de contorno admisible</translation>
+    </message>
+    <message>
+        <source>G72 S: the scale factor must be greater than 0</source>
+        <translation>G72 S: el factor de escala debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>G72 needs S or axis factors</source>
+        <translation>G72 necesita S o factores por eje</translation>
+    </message>
+    <message>
+        <source>G72: the scale factor of {1} must be greater than 0</source>
+        <translation>G72: el factor de escala de {1} debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>{1} needs K, the zone number 1-4</source>
+        <translation>{1} necesita K, el número de zona 1-4</translation>
+    </message>
+    <message>
+        <source>G22 needs S0 (off), S1 (no entry) or S2 (no exit)</source>
+        <translation>G22 necesita S0 (desactivada), S1 (sin entrada) o S2 (sin salida)</translation>
+    </message>
+    <message>
+        <source>G74 alone runs the subroutine of REFPSUB, which is not set</source>
+        <translation>G74 sola ejecuta la subrutina de REFPSUB, que no está definida</translation>
+    </message>
+    <message>
+        <source>G159 needs N1-N20</source>
+        <translation>G159 necesita N1-N20</translation>
+    </message>
+    <message>
+        <source>G96 needs S: no cutting speed was programmed before</source>
+        <translation>G96 necesita S: no se ha programado antes ninguna velocidad de corte</translation>
+    </message>
+    <message>
+        <source>G96 needs a spindle gear range (M41-M44) first</source>
+        <translation>G96 necesita primero una gama de cabezal (M41-M44)</translation>
+    </message>
+    <message>
+        <source>S{1} is above the spindle limit of {2} rpm</source>
+        <translation>S{1} supera el límite del cabezal de {2} rpm</translation>
+    </message>
+    <message>
+        <source>M{1} has a subroutine: it must be alone in its block</source>
+        <translation>M{1} tiene una subrutina: debe ir sola en su bloque</translation>
+    </message>
+    <message>
+        <source>polar coordinates (R, Q) and Cartesian coordinates of the plane in one block</source>
+        <translation>coordenadas polares (R, Q) y coordenadas cartesianas del plano en un mismo bloque</translation>
+    </message>
+    <message>
+        <source>the polar radius becomes negative</source>
+        <translation>el radio polar se vuelve negativo</translation>
+    </message>
+    <message>
+        <source>an angle Q with both coordinates of the plane</source>
+        <translation>un ángulo Q con ambas coordenadas del plano</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that abscissa</source>
+        <translation>ángulo Q {1}: la trayectoria no puede alcanzar esa abscisa</translation>
+    </message>
+    <message>
+        <source>angle Q {1}: the path cannot reach that ordinate</source>
+        <translation>ángulo Q {1}: la trayectoria no puede alcanzar esa ordenada</translation>
+    </message>
+    <message>
+        <source>J is the centre of the Y axis: the ZX plane uses I and K</source>
+        <translation>J es el centro del eje Y: el plano ZX usa I y K</translation>
+    </message>
+    <message>
+        <source>G08 needs a previous path in the plane to be tangent to</source>
+        <translation>G08 necesita una trayectoria anterior en el plano a la que ser tangente</translation>
+    </message>
+    <message>
+        <source>G08 cannot program a full circle</source>
+        <translation>G08 no puede programar una circunferencia completa</translation>
+    </message>
+    <message>
+        <source>G08: the end point lies on the tangent of the previous path</source>
+        <translation>G08: el punto final está en la tangente de la trayectoria anterior</translation>
+    </message>
+    <message>
+        <source>G09 cannot program a full circle</source>
+        <translation>G09 no puede programar una circunferencia completa</translation>
+    </message>
+    <message>
+        <source>G09: the three points lie on a line</source>
+        <translation>G09: los tres puntos están en una recta</translation>
+    </message>
+    <message>
+        <source>a full circle cannot be programmed with R</source>
+        <translation>una circunferencia completa no se puede programar con R</translation>
+    </message>
+    <message>
+        <source>the arc radius R is too small for the end point</source>
+        <translation>el radio R del arco es demasiado pequeño para el punto final</translation>
+    </message>
+    <message>
+        <source>the start and end radii differ by {1} mm (more than CIRINERR)</source>
+        <translation>los radios inicial y final difieren en {1} mm (más que CIRINERR)</translation>
+    </message>
+    <message>
+        <source>the arc has no radius</source>
+        <translation>el arco no tiene radio</translation>
+    </message>
+    <message>
+        <source>arc centre or radius beyond 214748.3647 mm</source>
+        <translation>centro o radio del arco más allá de 214748.3647 mm</translation>
+    </message>
+    <message>
+        <source>Q (spindle angle) needs M19TYPE = 1</source>
+        <translation>Q (ángulo del cabezal) necesita M19TYPE = 1</translation>
+    </message>
+    <message>
+        <source>only the first thread of a joined chain may have Q</source>
+        <translation>solo la primera rosca de una cadena enlazada puede tener Q</translation>
+    </message>
+    <message>
+        <source>Q must be within +-359.9999 degrees</source>
+        <translation>Q debe estar dentro de +-359.9999 grados</translation>
+    </message>
+    <message>
+        <source>a thread needs its pitch L</source>
+        <translation>una rosca necesita su paso L</translation>
+    </message>
+    <message>
+        <source>two variable-pitch threads cannot be joined; end one with G34 L0 K0</source>
+        <translation>no se pueden enlazar dos roscas de paso variable; termine una con G34 L0 K0</translation>
+    </message>
+    <message>
+        <source>G34 joined to G33 must start with the pitch of the G33</source>
+        <translation>G34 enlazada con G33 debe empezar con el paso de la G33</translation>
+    </message>
+    <message>
+        <source>after G34 a constant pitch is programmed with G34 L0 K0</source>
+        <translation>tras G34 se programa un paso constante con G34 L0 K0</translation>
+    </message>
+    <message>
+        <source>the thread pitch must be greater than 0</source>
+        <translation>el paso de rosca debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>the variable pitch reaches zero before the end point</source>
+        <translation>el paso variable llega a cero antes del punto final</translation>
+    </message>
+    <message>
+        <source>G53 works with G00 and G01 moves only</source>
+        <translation>G53 solo funciona con movimientos G00 y G01</translation>
+    </message>
+    <message>
+        <source>G52 moves one axis</source>
+        <translation>G52 mueve un eje</translation>
+    </message>
+    <message>
+        <source>no tool offset table: offset D{1} and the following ones are all zero</source>
+        <translation>no hay tabla de correctores: el corrector D{1} y los siguientes son todos cero</translation>
+    </message>
+    <message>
+        <source>the header should be %comment,attributes, (two commas)</source>
+        <translation>la cabecera debería ser %comentario,atributos, (dos comas)</translation>
+    </message>
+    <message>
+        <source>the program comment has more than 20 characters</source>
+        <translation>el comentario del programa tiene más de 20 caracteres</translation>
+    </message>
+    <message>
+        <source>words out of the order G, coordinates, F, S, T, D, M</source>
+        <translation>palabras fuera del orden G, coordenadas, F, S, T, D, M</translation>
+    </message>
+    <message>
+        <source>subroutine {1} starts before subroutine {2} has its RET</source>
+        <translation>la subrutina {1} empieza antes de que la subrutina {2} tenga su RET</translation>
+    </message>
+    <message>
+        <source>error 63: program subroutine numbers from 1 to 9999 (10000-20000 only in OEM programs)</source>
+        <translation>error 63: programe números de subrutina de 1 a 9999 (10000-20000 solo en programas OEM)</translation>
+    </message>
+    <message>
+        <source>subroutine {1} is defined twice</source>
+        <translation>la subrutina {1} está definida dos veces</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
+        <translation>{1} es una instrucción de personalización de pantallas: no admitida; el programa no puede continuar más allá de este bloque</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
+        <translation>no hay programas en un PC por DNC; el programa no puede continuar más allá de este bloque</translation>
+    </message>
+    <message>
+        <source>label N{1} is used more than once; jumps go to the first one</source>
+        <translation>la etiqueta N{1} se usa más de una vez; los saltos van a la primera</translation>
+    </message>
+    <message>
+        <source>incompatible G functions</source>
+        <translation>funciones G incompatibles</translation>
+    </message>
+    <message>
+        <source>program subroutine number from 1 to 9999</source>
+        <translation>programe el número de subrutina de 1 a 9999</translation>
+    </message>
+    <message>
+        <source>the S that changes the gear range must be alone in its block</source>
+        <translation>la S que cambia la gama debe ir sola en su bloque</translation>
+    </message>
+    <message>
+        <source>program cannot be executed</source>
+        <translation>no se puede ejecutar el programa</translation>
+    </message>
+    <message>
+        <source>subroutine restricted to OEM program</source>
+        <translation>subrutina restringida a programas OEM</translation>
+    </message>
+    <message>
+        <source>{1}</source>
+        <translation>{1}</translation>
+    </message>
+    <message>
+        <source>error {1}</source>
+        <translation>error {1}</translation>
+    </message>
+    <message>
+        <source>error {1}: {2}</source>
+        <translation>error {1}: {2}</translation>
+    </message>
+    <message>
+        <source>DGWZ: Z minimum &lt; Z maximum and 0 &lt;= inner &lt; outer</source>
+        <translation>DGWZ: Z mínimo &lt; Z máximo y 0 &lt;= interior &lt; exterior</translation>
+    </message>
+    <message>
+        <source>program {1} exists: OPEN needs A (append) or D (delete)</source>
+        <translation>el programa {1} existe: OPEN necesita A (añadir) o D (borrar)</translation>
+    </message>
+    <message>
+        <source>program {1} is running: it cannot be opened</source>
+        <translation>el programa {1} está en ejecución: no se puede abrir</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}</source>
+        <translation>no se puede escribir el programa {1}</translation>
+    </message>
+    <message>
+        <source>WRITE needs a program opened with OPEN</source>
+        <translation>WRITE necesita un programa abierto con OPEN</translation>
+    </message>
+    <message>
+        <source>cannot write to the opened program</source>
+        <translation>no se puede escribir en el programa abierto</translation>
+    </message>
+    <message>
+        <source>GPOS: program {1} has no block N{2}</source>
+        <translation>GPOS: el programa {1} no tiene el bloque N{2}</translation>
+    </message>
+    <message>
+        <source>GPOS: block not found</source>
+        <translation>GPOS: bloque no encontrado</translation>
+    </message>
+    <message>
+        <source>{1} is not available on the simulated machine</source>
+        <translation>{1} no está disponible en la máquina simulada</translation>
+    </message>
+    <message>
+        <source>{1} cannot be read from a part program (PLC or DNC only)</source>
+        <translation>{1} no se puede leer desde un programa pieza (solo PLC o DNC)</translation>
+    </message>
+    <message>
+        <source>{1}: the simulated machine has no tool magazine</source>
+        <translation>{1}: la máquina simulada no tiene almacén de herramientas</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are numbered 0-255</source>
+        <translation>{1}: los correctores se numeran 0-255</translation>
+    </message>
+    <message>
+        <source>{1}: zero offsets are 54-59 and 1-20</source>
+        <translation>{1}: los traslados de origen son 54-59 y 1-20</translation>
+    </message>
+    <message>
+        <source>NBTOOL can only be read in the tool change subroutine</source>
+        <translation>NBTOOL solo se puede leer en la subrutina de cambio de herramienta</translation>
+    </message>
+    <message>
+        <source>MS{1}: the state is kept for M00-M06, M08, M09, M19, M30 and M41-M44</source>
+        <translation>MS{1}: el estado se conserva para M00-M06, M08, M09, M19, M30 y M41-M44</translation>
+    </message>
+    <message>
+        <source>{1}: outputs 1-8</source>
+        <translation>{1}: salidas 1-8</translation>
+    </message>
+    <message>
+        <source>{1} is read-only in a part program</source>
+        <translation>{1} es de solo lectura en un programa pieza</translation>
+    </message>
+    <message>
+        <source>PRGFRO: 0-255 %</source>
+        <translation>PRGFRO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>PRGSSO: 0-255 %</source>
+        <translation>PRGSSO: 0-255 %</translation>
+    </message>
+    <message>
+        <source>{1}: offsets are D1-D255 and F is 0-9</source>
+        <translation>{1}: los correctores son D1-D255 y F es 0-9</translation>
+    </message>
+    <message>
+        <source>{1}: value out of range</source>
+        <translation>{1}: valor fuera de rango</translation>
+    </message>
+    <message>
+        <source>KEY can only be written in a customisation program</source>
+        <translation>KEY solo se puede escribir en un programa de personalización</translation>
+    </message>
+    <message>
+        <source>KEYSRC can only be changed while it is 0</source>
+        <translation>KEYSRC solo se puede cambiar mientras vale 0</translation>
+    </message>
+    <message>
+        <source>{1}: free outputs 1-4, -10 to 10 V</source>
+        <translation>{1}: salidas libres 1-4, -10 a 10 V</translation>
+    </message>
+    <message>
+        <source>rapid positioning</source>
+        <translation>posicionamiento en rápido</translation>
+    </message>
+    <message>
+        <source>linear interpolation</source>
+        <translation>interpolación lineal</translation>
+    </message>
+    <message>
+        <source>circular interpolation clockwise</source>
+        <translation>interpolación circular a derechas</translation>
+    </message>
+    <message>
+        <source>circular interpolation counter-clockwise</source>
+        <translation>interpolación circular a izquierdas</translation>
+    </message>
+    <message>
+        <source>dwell / stop block preparation</source>
+        <translation>temporización / detener la preparación de bloques</translation>
+    </message>
+    <message>
+        <source>round corner</source>
+        <translation>arista matada</translation>
+    </message>
+    <message>
+        <source>arc centre in absolute coordinates</source>
+        <translation>centro del arco en coordenadas absolutas</translation>
+    </message>
+    <message>
+        <source>sharp corner</source>
+        <translation>arista viva</translation>
+    </message>
+    <message>
+        <source>arc tangent to the previous path</source>
+        <translation>arco tangente a la trayectoria anterior</translation>
+    </message>
+    <message>
+        <source>arc through three points</source>
+        <translation>arco por tres puntos</translation>
+    </message>
+    <message>
+        <source>mirror image off</source>
+        <translation>imagen espejo desactivada</translation>
+    </message>
+    <message>
+        <source>mirror image in X</source>
+        <translation>imagen espejo en X</translation>
+    </message>
+    <message>
+        <source>mirror image in Y</source>
+        <translation>imagen espejo en Y</translation>
+    </message>
+    <message>
+        <source>mirror image in Z</source>
+        <translation>imagen espejo en Z</translation>
+    </message>
+    <message>
+        <source>mirror image in the programmed axes</source>
+        <translation>imagen espejo en los ejes programados</translation>
+    </message>
+    <message>
+        <source>main plane by two axes</source>
+        <translation>plano principal por dos ejes</translation>
+    </message>
+    <message>
+        <source>main plane XY</source>
+        <translation>plano principal XY</translation>
+    </message>
+    <message>
+        <source>main plane ZX</source>
+        <translation>plano principal ZX</translation>
+    </message>
+    <message>
+        <source>main plane YZ</source>
+        <translation>plano principal YZ</translation>
+    </message>
+    <message>
+        <source>work zone lower limits</source>
+        <translation>límites inferiores de la zona de trabajo</translation>
+    </message>
+    <message>
+        <source>work zone upper limits</source>
+        <translation>límites superiores de la zona de trabajo</translation>
+    </message>
+    <message>
+        <source>work zone enable/disable</source>
+        <translation>habilitar/inhabilitar zona de trabajo</translation>
+    </message>
+    <message>
+        <source>feed as inverse of time</source>
+        <translation>avance como función inversa del tiempo</translation>
+    </message>
+    <message>
+        <source>electronic threading</source>
+        <translation>roscado electrónico</translation>
+    </message>
+    <message>
+        <source>variable-pitch threading</source>
+        <translation>roscado de paso variable</translation>
+    </message>
+    <message>
+        <source>corner rounding</source>
+        <translation>redondeo de aristas</translation>
+    </message>
+    <message>
+        <source>tangential entry</source>
+        <translation>entrada tangencial</translation>
+    </message>
+    <message>
+        <source>tangential exit</source>
+        <translation>salida tangencial</translation>
+    </message>
+    <message>
+        <source>chamfer</source>
+        <translation>achaflanado</translation>
+    </message>
+    <message>
+        <source>radius compensation off</source>
+        <translation>anulación de la compensación de radio</translation>
+    </message>
+    <message>
+        <source>radius compensation left</source>
+        <translation>compensación de radio a izquierdas</translation>
+    </message>
+    <message>
+        <source>radius compensation right</source>
+        <translation>compensación de radio a derechas</translation>
+    </message>
+    <message>
+        <source>inclined-axis transformation</source>
+        <translation>transformación de eje inclinado</translation>
+    </message>
+    <message>
+        <source>controlled round corner</source>
+        <translation>arista matada controlada</translation>
+    </message>
+    <message>
+        <source>look-ahead</source>
+        <translation>look-ahead (anticipación)</translation>
+    </message>
+    <message>
+        <source>move to hard stop</source>
+        <translation>desplazamiento a tope</translation>
+    </message>
+    <message>
+        <source>coordinates from machine zero</source>
+        <translation>coordenadas referidas al cero máquina</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 1</source>
+        <translation>traslado de origen absoluto 1</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 2</source>
+        <translation>traslado de origen absoluto 2</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 3</source>
+        <translation>traslado de origen absoluto 3</translation>
+    </message>
+    <message>
+        <source>absolute zero offset 4</source>
+        <translation>traslado de origen absoluto 4</translation>
+    </message>
+    <message>
+        <source>additive zero offset 1</source>
+        <translation>traslado de origen aditivo 1</translation>
+    </message>
+    <message>
+        <source>additive zero offset 2</source>
+        <translation>traslado de origen aditivo 2</translation>
+    </message>
+    <message>
+        <source>pattern repeat cycle</source>
+        <translation>ciclo de seguimiento de perfil</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along X</source>
+        <translation>ciclo de desbastado en X</translation>
+    </message>
+    <message>
+        <source>stock removal cycle along Z</source>
+        <translation>ciclo de desbastado en Z</translation>
+    </message>
+    <message>
+        <source>programming in inches</source>
+        <translation>programación en pulgadas</translation>
+    </message>
+    <message>
+        <source>programming in millimetres</source>
+        <translation>programación en milímetros</translation>
+    </message>
+    <message>
+        <source>scaling factor</source>
+        <translation>factor de escala</translation>
+    </message>
+    <message>
+        <source>machine reference search</source>
+        <translation>búsqueda de referencia máquina</translation>
+    </message>
+    <message>
+        <source>probing move until touching</source>
+        <translation>movimiento de palpación hasta tocar</translation>
+    </message>
+    <message>
+        <source>probing move until no longer touching</source>
+        <translation>movimiento de palpación hasta dejar de tocar</translation>
+    </message>
+    <message>
+        <source>turning cycle, straight sections</source>
+        <translation>ciclo de torneado de tramos rectos</translation>
+    </message>
+    <message>
+        <source>facing cycle, straight sections</source>
+        <translation>ciclo de refrentado de tramos rectos</translation>
+    </message>
+    <message>
+        <source>drilling cycle</source>
+        <translation>ciclo de taladrado</translation>
+    </message>
+    <message>
+        <source>turning cycle, curved sections</source>
+        <translation>ciclo de torneado de tramos curvos</translation>
+    </message>
+    <message>
+        <source>facing cycle, curved sections</source>
+        <translation>ciclo de refrentado de tramos curvos</translation>
+    </message>
+    <message>
+        <source>longitudinal threading cycle</source>
+        <translation>ciclo de roscado longitudinal</translation>
+    </message>
+    <message>
+        <source>face threading cycle</source>
+        <translation>ciclo de roscado frontal</translation>
+    </message>
+    <message>
+        <source>grooving cycle along X</source>
+        <translation>ciclo de ranurado en X</translation>
+    </message>
+    <message>
+        <source>grooving cycle along Z</source>
+        <translation>ciclo de ranurado en Z</translation>
+    </message>
+    <message>
+        <source>absolute programming</source>
+        <translation>programación absoluta</translation>
+    </message>
+    <message>
+        <source>incremental programming</source>
+        <translation>programación incremental</translation>
+    </message>
+    <message>
+        <source>coordinate preset / spindle speed limit</source>
+        <translation>preselección de cotas / limitación de la velocidad del cabezal</translation>
+    </message>
+    <message>
+        <source>polar origin preset</source>
+        <translation>preselección del origen polar</translation>
+    </message>
+    <message>
+        <source>feed per minute</source>
+        <translation>avance en mm/min</translation>
+    </message>
+    <message>
+        <source>feed per revolution</source>
+        <translation>avance en mm/rev</translation>
+    </message>
+    <message>
+        <source>constant surface speed</source>
+        <translation>velocidad de corte constante</translation>
+    </message>
+    <message>
+        <source>spindle speed in rpm</source>
+        <translation>velocidad del cabezal en rpm</translation>
+    </message>
+    <message>
+        <source>X in diameter</source>
+        <translation>X en diámetros</translation>
+    </message>
+    <message>
+        <source>X in radius</source>
+        <translation>X en radios</translation>
+    </message>
+    <message>
+        <source>absolute zero offset N1-N20</source>
+        <translation>traslado de origen absoluto N1-N20</translation>
+    </message>
+    <message>
+        <source>axis retraction when threading stops</source>
+        <translation>retirada de ejes al detener el roscado</translation>
+    </message>
+    <message>
+        <source>{1} does not exist on the 8035 T</source>
+        <translation>{1} no existe en el 8035 T</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported yet</source>
+        <translation>{1} ({2}) todavía no se admite</translation>
+    </message>
+    <message>
+        <source>{1} ({2}) is not supported</source>
+        <translation>{1} ({2}) no se admite</translation>
+    </message>
+    <message>
+        <source>incompatible G functions {1} and {2} (error 7)</source>
+        <translation>funciones G incompatibles {1} y {2} (error 7)</translation>
+    </message>
+    <message>
+        <source>{1} must be alone in its block</source>
+        <translation>{1} debe ir sola en su bloque</translation>
+    </message>
+    <message>
+        <source>tool radius too large</source>
+        <translation>radio de herramienta demasiado grande</translation>
+    </message>
+    <message>
+        <source>tool radius too large: the offset swallows this element</source>
+        <translation>radio de herramienta demasiado grande: la compensación se come este elemento</translation>
+    </message>
+    <message>
+        <source>tool radius too large for this arc</source>
+        <translation>radio de herramienta demasiado grande para este arco</translation>
+    </message>
+    <message>
+        <source>G40 needs a straight line (G00 or G01)</source>
+        <translation>G40 necesita una recta (G00 o G01)</translation>
+    </message>
+    <message>
+        <source>48 blocks without motion in the plane under radius compensation</source>
+        <translation>48 bloques sin movimiento en el plano con compensación de radio</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 1</source>
+        <translation>el movimiento invade la zona de trabajo 1</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 2</source>
+        <translation>el movimiento invade la zona de trabajo 2</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 3</source>
+        <translation>el movimiento invade la zona de trabajo 3</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 4</source>
+        <translation>el movimiento invade la zona de trabajo 4</translation>
+    </message>
+    <message>
+        <source>the move violates work zone 5</source>
+        <translation>el movimiento invade la zona de trabajo 5</translation>
+    </message>
+    <message>
+        <source>an arc cannot be scaled differently along the two axes of its plane (G72)</source>
+        <translation>un arco no se puede escalar de forma distinta en los dos ejes de su plano (G72)</translation>
+    </message>
+    <message>
+        <source>P{1}: an interrupt subroutine may only use global parameters</source>
+        <translation>P{1}: una subrutina de interrupción solo puede usar parámetros globales</translation>
+    </message>
+    <message>
+        <source>P{1}: OEM parameters are only for programs with the O attribute</source>
+        <translation>P{1}: los parámetros OEM son solo para programas con el atributo O</translation>
+    </message>
+    <message>
+        <source>P{1} does not exist (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</source>
+        <translation>P{1} no existe (P0-P25, P100-P299, P1000-P1255, P2000-P2255)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; expected</source>
+        <translation>se esperaba &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number from {2} to {3}, not {4}</source>
+        <translation>{1} debe ser un número entero de {2} a {3}, no {4}</translation>
+    </message>
+    <message>
+        <source>a label has at most 8 digits</source>
+        <translation>una etiqueta tiene como máximo 8 cifras</translation>
+    </message>
+    <message>
+        <source>text in quotes expected</source>
+        <translation>se esperaba un texto entre comillas</translation>
+    </message>
+    <message>
+        <source>missing closing quote</source>
+        <translation>falta la comilla de cierre</translation>
+    </message>
+    <message>
+        <source>empty high-level block</source>
+        <translation>bloque de alto nivel vacío</translation>
+    </message>
+    <message>
+        <source>IF cannot be nested</source>
+        <translation>IF no se puede anidar</translation>
+    </message>
+    <message>
+        <source>SUB cannot be the action of an IF</source>
+        <translation>SUB no puede ser la acción de un IF</translation>
+    </message>
+    <message>
+        <source>subroutine number 0-20000 expected after SUB</source>
+        <translation>se esperaba un número de subrutina 0-20000 tras SUB</translation>
+    </message>
+    <message>
+        <source>at most 26 assignments to different targets</source>
+        <translation>como máximo 26 asignaciones a destinos distintos</translation>
+    </message>
+    <message>
+        <source>parameter or variable expected</source>
+        <translation>se esperaba un parámetro o una variable</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters (P0-P25, A-Z)</source>
+        <translation>una llamada a subrutina pasa parámetros locales (P0-P25, A-Z)</translation>
+    </message>
+    <message>
+        <source>&apos;=&apos; expected</source>
+        <translation>se esperaba &apos;=&apos;</translation>
+    </message>
+    <message>
+        <source>a subroutine call passes local parameters P0-P25, not P{1}</source>
+        <translation>una llamada a subrutina pasa parámetros locales P0-P25, no P{1}</translation>
+    </message>
+    <message>
+        <source>error number expected</source>
+        <translation>se esperaba un número de error</translation>
+    </message>
+    <message>
+        <source>ERROR takes a number, a parameter P0-P299 or a text</source>
+        <translation>ERROR admite un número, un parámetro P0-P299 o un texto</translation>
+    </message>
+    <message>
+        <source>CALL passes no parameters: use PCALL or MCALL</source>
+        <translation>CALL no pasa parámetros: use PCALL o MCALL</translation>
+    </message>
+    <message>
+        <source>at most 26 parameters</source>
+        <translation>como máximo 26 parámetros</translation>
+    </message>
+    <message>
+        <source>programs on a PC over DNC are not available: only programs in the NC root</source>
+        <translation>no hay programas en un PC por DNC: solo programas del directorio NC</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in {2}</source>
+        <translation>&apos;{1}&apos; inesperado en {2}</translation>
+    </message>
+    <message>
+        <source>axis letter expected in REPOS</source>
+        <translation>se esperaba una letra de eje en REPOS</translation>
+    </message>
+    <message>
+        <source>too many axes in REPOS</source>
+        <translation>demasiados ejes en REPOS</translation>
+    </message>
+    <message>
+        <source>INPUT expected</source>
+        <translation>se esperaba INPUT</translation>
+    </message>
+    <message>
+        <source>input format expected</source>
+        <translation>se esperaba un formato de entrada</translation>
+    </message>
+    <message>
+        <source>DW expected</source>
+        <translation>se esperaba DW</translation>
+    </message>
+    <message>
+        <source>SK expected</source>
+        <translation>se esperaba SK</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
+        <translation>{1} es una instrucción de personalización de pantallas: no admitida (pertenece a los programas de personalización del usuario)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a row key</source>
+        <translation>&apos;{1}&apos; no es una clave de fila</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a field (letters and a number)</source>
+        <translation>&apos;{1}&apos; no es un campo (letras y un número)</translation>
+    </message>
+    <message>
+        <source>row {1} appears twice</source>
+        <translation>la fila {1} aparece dos veces</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool offset (D0-D255)</source>
+        <translation>&apos;{1}&apos; no es un corrector de herramienta (D0-D255)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (X Z F R I K)</source>
+        <translation>campo desconocido &apos;{1}&apos; (X Z F R I K)</translation>
+    </message>
+    <message>
+        <source>the location code F must be a whole number 0-9</source>
+        <translation>el código de forma F debe ser un número entero 0-9</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a tool (T&lt;number&gt;)</source>
+        <translation>&apos;{1}&apos; no es una herramienta (T&lt;número&gt;)</translation>
+    </message>
+    <message>
+        <source>unknown field &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</source>
+        <translation>campo desconocido &apos;{1}&apos; (D FAM NLIFE RLIFE NOSEA NOSEW CUTA)</translation>
+    </message>
+    <message>
+        <source>{1} must be a whole number 0-255</source>
+        <translation>{1} debe ser un número entero 0-255</translation>
+    </message>
+    <message>
+        <source>G159 selects offsets N1-N20</source>
+        <translation>G159 selecciona los traslados N1-N20</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; cannot be part of the ACTIVE selection</source>
+        <translation>&apos;{1}&apos; no puede formar parte de la selección ACTIVE</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a zero offset (G54-G59, G159N7-G159N20, PLC, ACTIVE)</source>
+        <translation>&apos;{1}&apos; no es un traslado de origen (G54-G59, G159N7-G159N20, PLC, ACTIVE)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not an axis</source>
+        <translation>&apos;{1}&apos; no es un eje</translation>
+    </message>
+    <message>
+        <source>the feed rate must not be negative</source>
+        <translation>el avance no puede ser negativo</translation>
+    </message>
+    <message>
+        <source>M function number expected</source>
+        <translation>se esperaba un número de función M</translation>
+    </message>
+    <message>
+        <source>too many M functions in one block</source>
+        <translation>demasiadas funciones M en un bloque</translation>
+    </message>
+    <message>
+        <source>axis {1} is programmed twice</source>
+        <translation>el eje {1} está programado dos veces</translation>
+    </message>
+    <message>
+        <source>DR+ or DR- expected</source>
+        <translation>se esperaba DR+ o DR-</translation>
+    </message>
+    <message>
+        <source>CR needs a radius R</source>
+        <translation>CR necesita un radio R</translation>
+    </message>
+    <message>
+        <source>the rounding radius must be positive</source>
+        <translation>el radio de redondeo debe ser positivo</translation>
+    </message>
+    <message>
+        <source>the chamfer length must be positive</source>
+        <translation>la longitud del chaflán debe ser positiva</translation>
+    </message>
+    <message>
+        <source>FMAX is not allowed here</source>
+        <translation>FMAX no se permite aquí</translation>
+    </message>
+    <message>
+        <source>LT, LN, CT or LCT expected after {1}</source>
+        <translation>se esperaba LT, LN, CT o LCT tras {1}</translation>
+    </message>
+    <message>
+        <source>REP must be between 0 and 65534</source>
+        <translation>REP debe estar entre 0 y 65534</translation>
+    </message>
+    <message>
+        <source>program name expected</source>
+        <translation>se esperaba un nombre de programa</translation>
+    </message>
+    <message>
+        <source>LBL or PGM expected after CALL</source>
+        <translation>se esperaba LBL o PGM tras CALL</translation>
+    </message>
+    <message>
+        <source>tool number out of range</source>
+        <translation>número de herramienta fuera de rango</translation>
+    </message>
+    <message>
+        <source>the spindle speed must not be negative</source>
+        <translation>la velocidad del cabezal no puede ser negativa</translation>
+    </message>
+    <message>
+        <source>CALL or DEF expected after TOOL</source>
+        <translation>se esperaba CALL o DEF tras TOOL</translation>
+    </message>
+    <message>
+        <source>PGM expected</source>
+        <translation>se esperaba PGM</translation>
+    </message>
+    <message>
+        <source>MM or INCH expected</source>
+        <translation>se esperaba MM o INCH</translation>
+    </message>
+    <message>
+        <source>FORM expected</source>
+        <translation>se esperaba FORM</translation>
+    </message>
+    <message>
+        <source>axis expected</source>
+        <translation>se esperaba un eje</translation>
+    </message>
+    <message>
+        <source>0.1, 0.2 or CYLINDER expected</source>
+        <translation>se esperaba 0.1, 0.2 o CYLINDER</translation>
+    </message>
+    <message>
+        <source>tool axis expected</source>
+        <translation>se esperaba el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>Q parameter expected</source>
+        <translation>se esperaba un parámetro Q</translation>
+    </message>
+    <message>
+        <source>DECLARE STRING needs a QS parameter</source>
+        <translation>DECLARE STRING necesita un parámetro QS</translation>
+    </message>
+    <message>
+        <source>FN number expected</source>
+        <translation>se esperaba un número de FN</translation>
+    </message>
+    <message>
+        <source>&apos;:&apos; expected after FN {1}</source>
+        <translation>se esperaba &apos;:&apos; tras FN {1}</translation>
+    </message>
+    <message>
+        <source>square root of a negative number</source>
+        <translation>raíz cuadrada de un número negativo</translation>
+    </message>
+    <message>
+        <source>&apos;IF&apos; expected</source>
+        <translation>se esperaba &apos;IF&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;GOTO&apos; expected</source>
+        <translation>se esperaba &apos;GOTO&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;LBL&apos; expected</source>
+        <translation>se esperaba &apos;LBL&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;ERROR&apos; expected</source>
+        <translation>se esperaba &apos;ERROR&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;PRINT&apos; expected</source>
+        <translation>se esperaba &apos;PRINT&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;F-PRINT&apos; expected</source>
+        <translation>se esperaba &apos;F-PRINT&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;mask file / output file&apos; expected</source>
+        <translation>se esperaba &apos;fichero de máscara / fichero de salida&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;SYSREAD&apos; expected</source>
+        <translation>se esperaba &apos;SYSREAD&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;ID&apos; expected</source>
+        <translation>se esperaba &apos;ID&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;CDATA&apos; expected</source>
+        <translation>se esperaba &apos;CDATA&apos;</translation>
+    </message>
+    <message>
+        <source>the parameter range runs past the last Q parameter</source>
+        <translation>el rango de parámetros va más allá del último parámetro Q</translation>
+    </message>
+    <message>
+        <source>&apos;TABOPEN&apos; expected</source>
+        <translation>se esperaba &apos;TABOPEN&apos;</translation>
+    </message>
+    <message>
+        <source>table name expected</source>
+        <translation>se esperaba un nombre de tabla</translation>
+    </message>
+    <message>
+        <source>&apos;/&apos; expected</source>
+        <translation>se esperaba &apos;/&apos;</translation>
+    </message>
+    <message>
+        <source>column names in quotes expected</source>
+        <translation>se esperaban nombres de columna entre comillas</translation>
+    </message>
+    <message>
+        <source>FN {1} does not exist</source>
+        <translation>FN {1} no existe</translation>
+    </message>
+    <message>
+        <source>DEF or CALL expected after CYCL</source>
+        <translation>se esperaba DEF o CALL tras CYCL</translation>
+    </message>
+    <message>
+        <source>file name expected</source>
+        <translation>se esperaba un nombre de fichero</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;CYCLE&apos; (the keyword is CYCL)</source>
+        <translation>bloque desconocido &apos;CYCLE&apos; (la palabra clave es CYCL)</translation>
+    </message>
+    <message>
+        <source>unknown block &apos;{1}&apos;</source>
+        <translation>bloque desconocido &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>label name must not be empty</source>
+        <translation>el nombre del label no puede estar vacío</translation>
+    </message>
+    <message>
+        <source>label expected</source>
+        <translation>se esperaba un label</translation>
+    </message>
+    <message>
+        <source>label number or name expected</source>
+        <translation>se esperaba un número o nombre de label</translation>
+    </message>
+    <message>
+        <source>label number must be between {1} and 65535</source>
+        <translation>el número de label debe estar entre {1} y 65535</translation>
+    </message>
+    <message>
+        <source>cycle number expected</source>
+        <translation>se esperaba un número de ciclo</translation>
+    </message>
+    <message>
+        <source>cycle parameter Qnnn= expected</source>
+        <translation>se esperaba un parámetro de ciclo Qnnn=</translation>
+    </message>
+    <message>
+        <source>cycle parameter number expected</source>
+        <translation>se esperaba un número de parámetro de ciclo</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF group number expected</source>
+        <translation>se esperaba un número de grupo GLOBAL DEF</translation>
+    </message>
+    <message>
+        <source>pattern element POS, ROW, PAT, FRAME, CIRC or PITCHCIRC expected</source>
+        <translation>se esperaba un elemento de figura POS, ROW, PAT, FRAME, CIRC o PITCHCIRC</translation>
+    </message>
+    <message>
+        <source>PATTERN DEF needs at least one pattern element</source>
+        <translation>PATTERN DEF necesita al menos un elemento de figura</translation>
+    </message>
+    <message>
+        <source>Spindle?</source>
+        <translation>¿Cabezal?</translation>
+    </message>
+    <message>
+        <source>Tool axis is missing</source>
+        <translation>Falta el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>Tool radius too small</source>
+        <translation>Radio de la herramienta demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>Tool radius too large</source>
+        <translation>Radio de la herramienta demasiado grande</translation>
+    </message>
+    <message>
+        <source>Range exceeded</source>
+        <translation>Campo sobrepasado</translation>
+    </message>
+    <message>
+        <source>Start position incorrect</source>
+        <translation>Posición inicial errónea</translation>
+    </message>
+    <message>
+        <source>ROTATION not permitted</source>
+        <translation>GIRO no permitido</translation>
+    </message>
+    <message>
+        <source>SCALING FACTOR not permitted</source>
+        <translation>FACTOR DE ESCALA no permitido</translation>
+    </message>
+    <message>
+        <source>MIRROR IMAGE not permitted</source>
+        <translation>ESPEJO no permitido</translation>
+    </message>
+    <message>
+        <source>Datum shift not permitted</source>
+        <translation>Desplazamiento del punto cero no permitido</translation>
+    </message>
+    <message>
+        <source>Feed rate is missing</source>
+        <translation>Falta el avance</translation>
+    </message>
+    <message>
+        <source>Input value incorrect</source>
+        <translation>Valor introducido erróneo</translation>
+    </message>
+    <message>
+        <source>Incorrect sign</source>
+        <translation>Signo erróneo</translation>
+    </message>
+    <message>
+        <source>Entered angle not permitted</source>
+        <translation>Ángulo introducido no permitido</translation>
+    </message>
+    <message>
+        <source>Touch point inaccessible</source>
+        <translation>Punto de palpación inalcanzable</translation>
+    </message>
+    <message>
+        <source>Too many points</source>
+        <translation>Demasiados puntos</translation>
+    </message>
+    <message>
+        <source>Contradictory input</source>
+        <translation>Introducción contradictoria</translation>
+    </message>
+    <message>
+        <source>CYCL incomplete</source>
+        <translation>CYCL incompleto</translation>
+    </message>
+    <message>
+        <source>Plane wrongly defined</source>
+        <translation>Plano mal definido</translation>
+    </message>
+    <message>
+        <source>Wrong axis programmed</source>
+        <translation>Eje programado erróneo</translation>
+    </message>
+    <message>
+        <source>Wrong RPM</source>
+        <translation>Revoluciones erróneas</translation>
+    </message>
+    <message>
+        <source>Radius comp. undefined</source>
+        <translation>Corrección de radio no definida</translation>
+    </message>
+    <message>
+        <source>Rounding-off undefined</source>
+        <translation>Redondeo no definido</translation>
+    </message>
+    <message>
+        <source>Rounding radius too large</source>
+        <translation>Radio de redondeo demasiado grande</translation>
+    </message>
+    <message>
+        <source>Program start undefined</source>
+        <translation>Inicio del programa no definido</translation>
+    </message>
+    <message>
+        <source>Excessive nesting</source>
+        <translation>Anidamiento excesivo</translation>
+    </message>
+    <message>
+        <source>Angle reference missing</source>
+        <translation>Falta la referencia angular</translation>
+    </message>
+    <message>
+        <source>No fixed cycle defined</source>
+        <translation>No hay ningún ciclo fijo definido</translation>
+    </message>
+    <message>
+        <source>Slot width too small</source>
+        <translation>Anchura de la ranura demasiado pequeña</translation>
+    </message>
+    <message>
+        <source>Pocket too small</source>
+        <translation>Cajera demasiado pequeña</translation>
+    </message>
+    <message>
+        <source>Q202 not defined</source>
+        <translation>Q202 no definido</translation>
+    </message>
+    <message>
+        <source>Q205 not defined</source>
+        <translation>Q205 no definido</translation>
+    </message>
+    <message>
+        <source>Q218 must be greater than Q219</source>
+        <translation>Q218 debe ser mayor que Q219</translation>
+    </message>
+    <message>
+        <source>CYCL 210 not permitted</source>
+        <translation>CYCL 210 no permitido</translation>
+    </message>
+    <message>
+        <source>CYCL 211 not permitted</source>
+        <translation>CYCL 211 no permitido</translation>
+    </message>
+    <message>
+        <source>Q220 too large</source>
+        <translation>Q220 demasiado grande</translation>
+    </message>
+    <message>
+        <source>Q222 must be greater than Q223</source>
+        <translation>Q222 debe ser mayor que Q223</translation>
+    </message>
+    <message>
+        <source>Q244 must be greater than 0</source>
+        <translation>Q244 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>Q245 must not equal Q246</source>
+        <translation>Q245 no puede ser igual a Q246</translation>
+    </message>
+    <message>
+        <source>Angle range must be under 360 degrees</source>
+        <translation>El rango angular debe ser menor de 360 grados</translation>
+    </message>
+    <message>
+        <source>Q223 must be greater than Q222</source>
+        <translation>Q223 debe ser mayor que Q222</translation>
+    </message>
+    <message>
+        <source>Q214: 0 not permitted</source>
+        <translation>Q214: 0 no permitido</translation>
+    </message>
+    <message>
+        <source>Traverse direction not defined</source>
+        <translation>Dirección de desplazamiento no definida</translation>
+    </message>
+    <message>
+        <source>No datum table active</source>
+        <translation>Ninguna tabla de puntos cero activa</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 1</source>
+        <translation>Error de posición: centro en el eje 1</translation>
+    </message>
+    <message>
+        <source>Position error: center in axis 2</source>
+        <translation>Error de posición: centro en el eje 2</translation>
+    </message>
+    <message>
+        <source>Hole diameter too small</source>
+        <translation>Diámetro del taladro demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>Hole diameter too large</source>
+        <translation>Diámetro del taladro demasiado grande</translation>
+    </message>
+    <message>
+        <source>Stud diameter too small</source>
+        <translation>Diámetro de la isla demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>Stud diameter too large</source>
+        <translation>Diámetro de la isla demasiado grande</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 1</source>
+        <translation>Cajera demasiado pequeña: repasar eje 1</translation>
+    </message>
+    <message>
+        <source>Pocket too small: rework axis 2</source>
+        <translation>Cajera demasiado pequeña: repasar eje 2</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 1</source>
+        <translation>Cajera demasiado grande: pieza rechazada eje 1</translation>
+    </message>
+    <message>
+        <source>Pocket too large: scrap axis 2</source>
+        <translation>Cajera demasiado grande: pieza rechazada eje 2</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 1</source>
+        <translation>Isla demasiado pequeña: pieza rechazada eje 1</translation>
+    </message>
+    <message>
+        <source>Stud too small: scrap axis 2</source>
+        <translation>Isla demasiado pequeña: pieza rechazada eje 2</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 1</source>
+        <translation>Isla demasiado grande: repasar eje 1</translation>
+    </message>
+    <message>
+        <source>Stud too large: rework axis 2</source>
+        <translation>Isla demasiado grande: repasar eje 2</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length exceeds max</source>
+        <translation>TCHPROBE 425: longitud por encima del máximo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 425: length below min</source>
+        <translation>TCHPROBE 425: longitud por debajo del mínimo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length exceeds max</source>
+        <translation>TCHPROBE 426: longitud por encima del máximo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 426: length below min</source>
+        <translation>TCHPROBE 426: longitud por debajo del mínimo</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too large</source>
+        <translation>TCHPROBE 430: diámetro demasiado grande</translation>
+    </message>
+    <message>
+        <source>TCHPROBE 430: diameter too small</source>
+        <translation>TCHPROBE 430: diámetro demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>No measuring axis defined</source>
+        <translation>No hay ningún eje de medición definido</translation>
+    </message>
+    <message>
+        <source>Tool breakage tolerance exceeded</source>
+        <translation>Tolerancia de rotura de la herramienta sobrepasada</translation>
+    </message>
+    <message>
+        <source>Enter Q247 unequal 0</source>
+        <translation>Introducir Q247 distinto de 0</translation>
+    </message>
+    <message>
+        <source>Enter Q247 greater than 5</source>
+        <translation>Introducir Q247 mayor que 5</translation>
+    </message>
+    <message>
+        <source>Datum table?</source>
+        <translation>¿Tabla de puntos cero?</translation>
+    </message>
+    <message>
+        <source>Enter Q351 unequal 0</source>
+        <translation>Introducir Q351 distinto de 0</translation>
+    </message>
+    <message>
+        <source>Thread depth too large</source>
+        <translation>Profundidad de rosca demasiado grande</translation>
+    </message>
+    <message>
+        <source>Missing calibration data</source>
+        <translation>Faltan datos de calibración</translation>
+    </message>
+    <message>
+        <source>Tolerance exceeded</source>
+        <translation>Tolerancia sobrepasada</translation>
+    </message>
+    <message>
+        <source>Block scan active</source>
+        <translation>Búsqueda de bloque activa</translation>
+    </message>
+    <message>
+        <source>ORIENTATION not permitted</source>
+        <translation>ORIENTACIÓN no permitida</translation>
+    </message>
+    <message>
+        <source>3DROT not permitted</source>
+        <translation>3DROT no permitido</translation>
+    </message>
+    <message>
+        <source>Activate 3DROT</source>
+        <translation>Activar 3DROT</translation>
+    </message>
+    <message>
+        <source>Enter depth as negative</source>
+        <translation>Introducir la profundidad en negativo</translation>
+    </message>
+    <message>
+        <source>Q303 not defined in measuring cycle</source>
+        <translation>Q303 no definido en el ciclo de medición</translation>
+    </message>
+    <message>
+        <source>Tool axis not allowed</source>
+        <translation>Eje de la herramienta no permitido</translation>
+    </message>
+    <message>
+        <source>Calculated values incorrect</source>
+        <translation>Valores calculados erróneos</translation>
+    </message>
+    <message>
+        <source>Contradictory measuring points</source>
+        <translation>Puntos de medición contradictorios</translation>
+    </message>
+    <message>
+        <source>Incorrect clearance height</source>
+        <translation>Altura segura errónea</translation>
+    </message>
+    <message>
+        <source>Contradictory plunge type</source>
+        <translation>Tipo de profundización contradictorio</translation>
+    </message>
+    <message>
+        <source>This fixed cycle not allowed</source>
+        <translation>Este ciclo fijo no está permitido</translation>
+    </message>
+    <message>
+        <source>Line is write-protected</source>
+        <translation>Línea protegida contra escritura</translation>
+    </message>
+    <message>
+        <source>Oversize greater than depth</source>
+        <translation>Sobremedida mayor que la profundidad</translation>
+    </message>
+    <message>
+        <source>No point angle defined</source>
+        <translation>No hay ningún ángulo de punta definido</translation>
+    </message>
+    <message>
+        <source>Contradictory data</source>
+        <translation>Datos contradictorios</translation>
+    </message>
+    <message>
+        <source>Slot position 0 not allowed</source>
+        <translation>Posición de la ranura 0 no permitida</translation>
+    </message>
+    <message>
+        <source>Enter an infeed not equal to 0</source>
+        <translation>Introducir una aproximación distinta de 0</translation>
+    </message>
+    <message>
+        <source>{1} is not defined for this value</source>
+        <translation>{1} no está definido para este valor</translation>
+    </message>
+    <message>
+        <source>a string parameter cannot be used as a number</source>
+        <translation>un parámetro de texto no se puede usar como número</translation>
+    </message>
+    <message>
+        <source>{1}{2} does not exist (0 to {3})</source>
+        <translation>{1}{2} no existe (0 a {3})</translation>
+    </message>
+    <message>
+        <source>number or Q parameter expected</source>
+        <translation>se esperaba un número o un parámetro Q</translation>
+    </message>
+    <message>
+        <source>incomplete formula</source>
+        <translation>fórmula incompleta</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in formula</source>
+        <translation>&apos;{1}&apos; inesperado en la fórmula</translation>
+    </message>
+    <message>
+        <source>string parameter QS expected</source>
+        <translation>se esperaba un parámetro de texto QS</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a number</source>
+        <translation>&apos;{1}&apos; no es un número</translation>
+    </message>
+    <message>
+        <source>&apos;||&apos; expected</source>
+        <translation>se esperaba &apos;||&apos;</translation>
+    </message>
+    <message>
+        <source>SUBSTR needs BEG and LEN of at least 0</source>
+        <translation>SUBSTR necesita BEG y LEN de al menos 0</translation>
+    </message>
+    <message>
+        <source>SYSSTR ID{1} NR{2} is not available</source>
+        <translation>SYSSTR ID{1} NR{2} no está disponible</translation>
+    </message>
+    <message>
+        <source>string expected</source>
+        <translation>se esperaba un texto</translation>
+    </message>
+    <message>
+        <source>unknown keyword &apos;{1}&apos;</source>
+        <translation>palabra clave desconocida &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>the format has no closing quote</source>
+        <translation>al formato le falta la comilla de cierre</translation>
+    </message>
+    <message>
+        <source>unknown value &apos;{1}&apos;</source>
+        <translation>valor desconocido &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>bad format field</source>
+        <translation>campo de formato erróneo</translation>
+    </message>
+    <message>
+        <source>more fields than values</source>
+        <translation>más campos que valores</translation>
+    </message>
+    <message>
+        <source>a cycle cannot be called with radius compensation RL/RR: program R0</source>
+        <translation>un ciclo no se puede llamar con corrección de radio RL/RR: programe R0</translation>
+    </message>
+    <message>
+        <source>the cycle calls of this block need more than {1} moves</source>
+        <translation>las llamadas a ciclo de este bloque necesitan más de {1} movimientos</translation>
+    </message>
+    <message>
+        <source>no machining cycle is defined (CYCL DEF)</source>
+        <translation>no hay ningún ciclo de mecanizado definido (CYCL DEF)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT: no PATTERN DEF or point table (SEL PATTERN) is active</source>
+        <translation>CYCL CALL PAT: no hay ningún PATTERN DEF ni tabla de puntos (SEL PATTERN) activo</translation>
+    </message>
+    <message>
+        <source>CYCL CALL PAT cannot use FMAX (without F it moves at rapid)</source>
+        <translation>CYCL CALL PAT no puede usar FMAX (sin F se desplaza en marcha rápida)</translation>
+    </message>
+    <message>
+        <source>CYCL CALL POS needs all three coordinates</source>
+        <translation>CYCL CALL POS necesita las tres coordenadas</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a machining cycle defined before it</source>
+        <translation>el ciclo {1} necesita un ciclo de mecanizado definido antes</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot call cycle {2}</source>
+        <translation>el ciclo {1} no puede llamar al ciclo {2}</translation>
+    </message>
+    <message>
+        <source>{1} has no parameter Q{2}: it is ignored</source>
+        <translation>{1} no tiene el parámetro Q{2}: se ignora</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) is missing</source>
+        <translation>{1}: falta el parámetro {2} ({3})</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) needs a text in quotes or a QS parameter</source>
+        <translation>{1}: el parámetro {2} ({3}) necesita un texto entre comillas o un parámetro QS</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) does not accept {4}</source>
+        <translation>{1}: el parámetro {2} ({3}) no admite {4}</translation>
+    </message>
+    <message>
+        <source>FAUTO: the TOOL CALL block gave no feed rate F</source>
+        <translation>FAUTO: el bloque TOOL CALL no indicó avance F</translation>
+    </message>
+    <message>
+        <source>{1}: {2} needs a feed value after {3}</source>
+        <translation>{1}: {2} necesita un valor de avance tras {3}</translation>
+    </message>
+    <message>
+        <source>FZ needs the number of teeth (CUT) of the tool</source>
+        <translation>FZ necesita el número de filos (CUT) de la herramienta</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = &apos;{4}&apos; is not a value</source>
+        <translation>{1}: el parámetro {2} ({3}) = &apos;{4}&apos; no es un valor</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} must be a whole number from {5} to {6}</source>
+        <translation>{1}: el parámetro {2} ({3}) = {4} debe ser un número entero de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) = {4} is outside {5} to {6}</source>
+        <translation>{1}: el parámetro {2} ({3}) = {4} está fuera de {5} a {6}</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet</source>
+        <translation>el ciclo {1} todavía no se admite</translation>
+    </message>
+    <message>
+        <source>CYCL DEF {1}.{2} without CYCL DEF {1}.0 before it</source>
+        <translation>CYCL DEF {1}.{2} sin CYCL DEF {1}.0 antes</translation>
+    </message>
+    <message>
+        <source>GLOBAL DEF {1} does not exist</source>
+        <translation>GLOBAL DEF {1} no existe</translation>
+    </message>
+    <message>
+        <source>cannot read the datum table {1}: {2}</source>
+        <translation>no se puede leer la tabla de puntos cero {1}: {2}</translation>
+    </message>
+    <message>
+        <source>cannot read the point table {1}: {2}</source>
+        <translation>no se puede leer la tabla de puntos {1}: {2}</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet</source>
+        <translation>{1} todavía no se admite</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}: {2}</source>
+        <translation>FN 14 error {1}: {2}</translation>
+    </message>
+    <message>
+        <source>FN 14 error {1}</source>
+        <translation>FN 14 error {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the F-PRINT mask {1}</source>
+        <translation>no se puede leer la máscara F-PRINT {1}</translation>
+    </message>
+    <message>
+        <source>F-PRINT mask {1} has an error</source>
+        <translation>la máscara F-PRINT {1} tiene un error</translation>
+    </message>
+    <message>
+        <source>cannot write {1}</source>
+        <translation>no se puede escribir {1}</translation>
+    </message>
+    <message>
+        <source>FN 18: SYSREAD ID{1} NR{2} IDX{3} is not available</source>
+        <translation>FN 18: SYSREAD ID{1} NR{2} IDX{3} no está disponible</translation>
+    </message>
+    <message>
+        <source>FN {1}: the points do not define a circle</source>
+        <translation>FN {1}: los puntos no definen un círculo</translation>
+    </message>
+    <message>
+        <source>FN 26: cannot open table {1}</source>
+        <translation>FN 26: no se puede abrir la tabla {1}</translation>
+    </message>
+    <message>
+        <source>no table is open (FN 26: TABOPEN)</source>
+        <translation>no hay ninguna tabla abierta (FN 26: TABOPEN)</translation>
+    </message>
+    <message>
+        <source>FN 27: cannot write row {1}</source>
+        <translation>FN 27: no se puede escribir la fila {1}</translation>
+    </message>
+    <message>
+        <source>FN 28: cannot read row {1}</source>
+        <translation>FN 28: no se puede leer la fila {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the program: {1}</source>
+        <translation>no se puede leer el programa: {1}</translation>
+    </message>
+    <message>
+        <source>label {1} is not defined</source>
+        <translation>el label {1} no está definido</translation>
+    </message>
+    <message>
+        <source>subprograms nested deeper than {1} levels</source>
+        <translation>subprogramas anidados en más de {1} niveles</translation>
+    </message>
+    <message>
+        <source>program calls nested deeper than {1} levels</source>
+        <translation>llamadas a programa anidadas en más de {1} niveles</translation>
+    </message>
+    <message>
+        <source>cannot call program {1}: {2}</source>
+        <translation>no se puede llamar al programa {1}: {2}</translation>
+    </message>
+    <message>
+        <source>the called program {1} has errors</source>
+        <translation>el programa llamado {1} tiene errores</translation>
+    </message>
+    <message>
+        <source>feed rate is missing</source>
+        <translation>falta el avance</translation>
+    </message>
+    <message>
+        <source>M140 MB MAX: the tool axis has no limit</source>
+        <translation>M140 MB MAX: el eje de la herramienta no tiene límite</translation>
+    </message>
+    <message>
+        <source>tool {1} is not in the tool table</source>
+        <translation>la herramienta {1} no está en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>no tool table: tool {1} and the following tools are used with length 0 and radius 0</source>
+        <translation>no hay tabla de herramientas: la herramienta {1} y las siguientes se usan con longitud 0 y radio 0</translation>
+    </message>
+    <message>
+        <source>tool {1} is locked (TL)</source>
+        <translation>la herramienta {1} está bloqueada (TL)</translation>
+    </message>
+    <message>
+        <source>spindle speed {1} exceeds the machine&apos;s {2} rpm</source>
+        <translation>la velocidad del cabezal {1} supera las {2} rpm de la máquina</translation>
+    </message>
+    <message>
+        <source>BLK FORM 0.2 needs BLK FORM 0.1 before it</source>
+        <translation>BLK FORM 0.2 necesita BLK FORM 0.1 antes</translation>
+    </message>
+    <message>
+        <source>the blank has no volume</source>
+        <translation>la pieza en bruto no tiene volumen</translation>
+    </message>
+    <message>
+        <source>CC axes {1} and {2} do not span a plane</source>
+        <translation>los ejes de CC {1} y {2} no forman un plano</translation>
+    </message>
+    <message>
+        <source>CC takes two coordinates of a plane</source>
+        <translation>CC toma dos coordenadas de un plano</translation>
+    </message>
+    <message>
+        <source>circular moves cannot use FMAX</source>
+        <translation>los movimientos circulares no pueden usar FMAX</translation>
+    </message>
+    <message>
+        <source>direction of rotation DR+ or DR- missing</source>
+        <translation>falta el sentido de giro DR+ o DR-</translation>
+    </message>
+    <message>
+        <source>no circle of radius {1} passes through the start and end point</source>
+        <translation>ningún círculo de radio {1} pasa por el punto inicial y el final</translation>
+    </message>
+    <message>
+        <source>circle centre CC is not defined</source>
+        <translation>el centro del círculo CC no está definido</translation>
+    </message>
+    <message>
+        <source>the end point is not on the circle: radius {1} at the start, {2} at the end</source>
+        <translation>el punto final no está en el círculo: radio {1} al inicio, {2} al final</translation>
+    </message>
+    <message>
+        <source>a tangential arc needs a contour element before it</source>
+        <translation>un arco tangencial necesita un elemento de contorno antes</translation>
+    </message>
+    <message>
+        <source>pole CC is not defined</source>
+        <translation>el polo CC no está definido</translation>
+    </message>
+    <message>
+        <source>the end point lies on the tangent: no arc possible</source>
+        <translation>el punto final está en la tangente: no es posible un arco</translation>
+    </message>
+    <message>
+        <source>CP needs a polar angle PA or IPA</source>
+        <translation>CP necesita un ángulo polar PA o IPA</translation>
+    </message>
+    <message>
+        <source>the sign of IPA does not match DR</source>
+        <translation>el signo de IPA no coincide con DR</translation>
+    </message>
+    <message>
+        <source>{1} needs a positive length LEN</source>
+        <translation>{1} necesita una longitud LEN positiva</translation>
+    </message>
+    <message>
+        <source>{1} CT needs an angle CCA (0 to 360) and a radius R</source>
+        <translation>{1} CT necesita un ángulo CCA (0 a 360) y un radio R</translation>
+    </message>
+    <message>
+        <source>{1} LCT needs a radius R</source>
+        <translation>{1} LCT necesita un radio R</translation>
+    </message>
+    <message>
+        <source>APPR needs radius compensation RL or RR</source>
+        <translation>APPR necesita la corrección de radio RL o RR</translation>
+    </message>
+    <message>
+        <source>DEP LCT needs the end point</source>
+        <translation>DEP LCT necesita el punto final</translation>
+    </message>
+    <message>
+        <source>an arc in the {1} plane cannot be rotated out of its plane or scaled with different factors</source>
+        <translation>un arco en el plano {1} no se puede girar fuera de su plano ni escalar con factores distintos</translation>
+    </message>
+    <message>
+        <source>cycle 7: no datum table selected (SEL TABLE)</source>
+        <translation>ciclo 7: no hay ninguna tabla de puntos cero seleccionada (SEL TABLE)</translation>
+    </message>
+    <message>
+        <source>cycle 7: datum {1} is not in the datum table</source>
+        <translation>ciclo 7: el punto cero {1} no está en la tabla de puntos cero</translation>
+    </message>
+    <message>
+        <source>cycle 8: the tool axis {1} cannot be mirrored; it is left out</source>
+        <translation>ciclo 8: el eje de la herramienta {1} no se puede espejar; se omite</translation>
+    </message>
+    <message>
+        <source>cycle 247: no preset table (PRESET.PR) to read preset {1} from</source>
+        <translation>ciclo 247: no hay tabla de puntos de referencia (PRESET.PR) de la que leer el punto de referencia {1}</translation>
+    </message>
+    <message>
+        <source>cycle 247: preset {1} is not in the preset table</source>
+        <translation>ciclo 247: el punto de referencia {1} no está en la tabla de puntos de referencia</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
+        <translation>el ciclo 19 (plano de mecanizado) necesita ejes giratorios: esta máquina no tiene ninguno</translation>
+    </message>
+    <message>
+        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
+        <translation>ciclo 19 (plano de mecanizado): la cinemática de inclinación todavía no se admite</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected</source>
+        <translation>ciclo {1}: se esperaba {2}</translation>
+    </message>
+    <message>
+        <source>cycle 12: program name expected</source>
+        <translation>ciclo 12: se esperaba un nombre de programa</translation>
+    </message>
+    <message>
+        <source>cycle 18 has no sub-block 18.{1}</source>
+        <translation>el ciclo 18 no tiene el subbloque 18.{1}</translation>
+    </message>
+    <message>
+        <source>cycle 32: unexpected &apos;{1}&apos;</source>
+        <translation>ciclo 32: &apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>block number {1} is out of order (after {2})</source>
+        <translation>el número de bloque {1} está fuera de orden (tras {2})</translation>
+    </message>
+    <message>
+        <source>BEGIN PGM must be the first block</source>
+        <translation>BEGIN PGM debe ser el primer bloque</translation>
+    </message>
+    <message>
+        <source>END PGM {1} does not match BEGIN PGM {2}</source>
+        <translation>END PGM {1} no coincide con BEGIN PGM {2}</translation>
+    </message>
+    <message>
+        <source>label {1} is defined twice</source>
+        <translation>el label {1} está definido dos veces</translation>
+    </message>
+    <message>
+        <source>{1} is not supported yet; the program cannot run past this block</source>
+        <translation>{1} todavía no se admite; el programa no puede continuar más allá de este bloque</translation>
+    </message>
+    <message>
+        <source>cycle {1} is not supported yet; the program cannot run past this block</source>
+        <translation>el ciclo {1} todavía no se admite; el programa no puede continuar más allá de este bloque</translation>
+    </message>
+    <message>
+        <source>block has no number while others have</source>
+        <translation>el bloque no tiene número y otros sí</translation>
+    </message>
+    <message>
+        <source>the program has no BEGIN PGM block</source>
+        <translation>el programa no tiene bloque BEGIN PGM</translation>
+    </message>
+    <message>
+        <source>the program has no END PGM block</source>
+        <translation>el programa no tiene bloque END PGM</translation>
+    </message>
+    <message>
+        <source>expected QRn=value</source>
+        <translation>se esperaba QRn=valor</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element in the working plane</source>
+        <translation>tras un redondeo o chaflán debe venir un elemento de contorno en el plano de mecanizado</translation>
+    </message>
+    <message>
+        <source>a chamfer needs straight lines on both sides</source>
+        <translation>un chaflán necesita rectas a ambos lados</translation>
+    </message>
+    <message>
+        <source>the chamfer is longer than the adjacent element</source>
+        <translation>el chaflán es más largo que el elemento adyacente</translation>
+    </message>
+    <message>
+        <source>the rounding radius does not fit between the elements</source>
+        <translation>el radio de redondeo no cabe entre los elementos</translation>
+    </message>
+    <message>
+        <source>a rounding needs a contour element before it</source>
+        <translation>un redondeo necesita un elemento de contorno antes</translation>
+    </message>
+    <message>
+        <source>a chamfer needs a contour element before it</source>
+        <translation>un chaflán necesita un elemento de contorno antes</translation>
+    </message>
+    <message>
+        <source>a rounding or chamfer must be followed by a contour element</source>
+        <translation>tras un redondeo o chaflán debe venir un elemento de contorno</translation>
+    </message>
+    <message>
+        <source>an approach must be followed by a compensated contour element</source>
+        <translation>tras una aproximación debe venir un elemento de contorno corregido</translation>
+    </message>
+    <message>
+        <source>an approach needs RL or RR</source>
+        <translation>una aproximación necesita RL o RR</translation>
+    </message>
+    <message>
+        <source>a departure needs a compensated contour element before it</source>
+        <translation>una salida necesita un elemento de contorno corregido antes</translation>
+    </message>
+    <message>
+        <source>the departure cannot be constructed with these values</source>
+        <translation>la salida no se puede construir con estos valores</translation>
+    </message>
+    <message>
+        <source>leave radius compensation with a straight line</source>
+        <translation>anule la corrección de radio con una recta</translation>
+    </message>
+    <message>
+        <source>switching between RL and RR needs a block with R0 between</source>
+        <translation>cambiar entre RL y RR necesita un bloque con R0 en medio</translation>
+    </message>
+    <message>
+        <source>radius compensation must begin with a straight line</source>
+        <translation>la corrección de radio debe empezar con una recta</translation>
+    </message>
+    <message>
+        <source>the approach cannot be constructed with these values</source>
+        <translation>la aproximación no se puede construir con estos valores</translation>
+    </message>
+    <message>
+        <source>base = {1} is not a built-in machine ({2})</source>
+        <translation>base = {1} no es una máquina integrada ({2})</translation>
+    </message>
+    <message>
+        <source>{1} must be a table</source>
+        <translation>{1} debe ser una tabla</translation>
+    </message>
+    <message>
+        <source>axes must be a table of axes such as [axes.X]</source>
+        <translation>axes debe ser una tabla de ejes como [axes.X]</translation>
+    </message>
+    <message>
+        <source>{1}: {2} is not an axis letter; use one of {3}</source>
+        <translation>{1}: {2} no es una letra de eje; use una de {3}</translation>
+    </message>
+    <message>
+        <source>{1} is a table; expected {2}</source>
+        <translation>{1} es una tabla; se esperaba {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is {3}; expected {4}</source>
+        <translation>{1} = {2} es {3}; se esperaba {4}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}</source>
+        <translation>clave desconocida {1}</translation>
+    </message>
+    <message>
+        <source>unknown key {1}; did you mean {2}?</source>
+        <translation>clave desconocida {1}; ¿quería decir {2}?</translation>
+    </message>
+    <message>
+        <source>TOML syntax error: {1}</source>
+        <translation>error de sintaxis TOML: {1}</translation>
+    </message>
+    <message>
+        <source>cannot read the machine configuration: {1}</source>
+        <translation>no se puede leer la configuración de la máquina: {1}</translation>
+    </message>
+    <message>
+        <source>Name shown to the operator</source>
+        <translation>Nombre que se muestra al operario</translation>
+    </message>
+    <message>
+        <source>Machine kind; selects the program dialects and lathe conventions</source>
+        <translation>Tipo de máquina; selecciona los dialectos de programa y las convenciones de torno</translation>
+    </message>
+    <message>
+        <source>Axis the tool points along; tool length compensation acts on it</source>
+        <translation>Eje en el que apunta la herramienta; la corrección de longitud actúa sobre él</translation>
+    </message>
+    <message>
+        <source>Path velocity of rapid moves</source>
+        <translation>Velocidad de trayectoria de los movimientos rápidos</translation>
+    </message>
+    <message>
+        <source>Highest programmable feed rate</source>
+        <translation>Avance programable máximo</translation>
+    </message>
+    <message>
+        <source>Period of the servo cycle</source>
+        <translation>Periodo del ciclo de servo</translation>
+    </message>
+    <message>
+        <source>Default path deviation allowed when blending corners; 0 stops exactly</source>
+        <translation>Desviación de trayectoria admitida por defecto al redondear esquinas; 0 para exactamente</translation>
+    </message>
+    <message>
+        <source>Lowest spindle speed</source>
+        <translation>Velocidad mínima del cabezal</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed</source>
+        <translation>Velocidad máxima del cabezal</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the spindle drive; 0: the spindle has none</source>
+        <translation>Node-ID CANopen del accionamiento del cabezal; 0: el cabezal no tiene</translation>
+    </message>
+    <message>
+        <source>Spindle drive position units per degree</source>
+        <translation>Unidades de posición del accionamiento del cabezal por grado</translation>
+    </message>
+    <message>
+        <source>CiA 402 mode of the spindle drive: cyclic synchronous or profile velocity</source>
+        <translation>Modo CiA 402 del accionamiento del cabezal: síncrono cíclico o velocidad de perfil</translation>
+    </message>
+    <message>
+        <source>Lathe: diameter of the bar simulated when the program defines no blank; 0: none</source>
+        <translation>Torno: diámetro de la barra simulada cuando el programa no define pieza en bruto; 0: ninguna</translation>
+    </message>
+    <message>
+        <source>Lathe: length of the simulated bar</source>
+        <translation>Torno: longitud de la barra simulada</translation>
+    </message>
+    <message>
+        <source>Lathe: workpiece Z of the bar&apos;s face; the bar reaches down to face_z - length</source>
+        <translation>Torno: Z de pieza de la cara de la barra; la barra llega hasta face_z - length</translation>
+    </message>
+    <message>
+        <source>Lathe: inner diameter of a tube; 0: a solid bar</source>
+        <translation>Torno: diámetro interior de un tubo; 0: una barra maciza</translation>
+    </message>
+    <message>
+        <source>SocketCAN interface of the drive bus</source>
+        <translation>Interfaz SocketCAN del bus de accionamientos</translation>
+    </message>
+    <message>
+        <source>Bit rate of the drive bus (a CiA 301 rate)</source>
+        <translation>Velocidad de transmisión del bus de accionamientos (una velocidad CiA 301)</translation>
+    </message>
+    <message>
+        <source>SYNC period of the drive bus; a whole multiple of servo_period</source>
+        <translation>Periodo SYNC del bus de accionamientos; múltiplo entero de servo_period</translation>
+    </message>
+    <message>
+        <source>Heartbeat period of every drive (0x1017)</source>
+        <translation>Periodo de heartbeat de cada accionamiento (0x1017)</translation>
+    </message>
+    <message>
+        <source>A drive whose heartbeat is missing this long is lost; above heartbeat_period</source>
+        <translation>Un accionamiento cuyo heartbeat falta durante este tiempo se da por perdido; mayor que heartbeat_period</translation>
+    </message>
+    <message>
+        <source>A drive whose feedback PDO is missing this many cycles is lost</source>
+        <translation>Un accionamiento cuyo PDO de realimentación falta durante estos ciclos se da por perdido</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the control&apos;s heartbeat, watched by the drives</source>
+        <translation>Node-ID CANopen del heartbeat del control, vigilado por los accionamientos</translation>
+    </message>
+    <message>
+        <source>Vendor-ID every drive must report (0x1018 sub 1), hexadecimal like 0x0000029C; empty: not checked</source>
+        <translation>Vendor-ID que debe indicar cada accionamiento (0x1018 sub 1), hexadecimal como 0x0000029C; vacío: no se comprueba</translation>
+    </message>
+    <message>
+        <source>Product code every drive must report (0x1018 sub 2); empty: not checked</source>
+        <translation>Código de producto que debe indicar cada accionamiento (0x1018 sub 2); vacío: no se comprueba</translation>
+    </message>
+    <message>
+        <source>Linear or rotary; A, B and C default to rotary</source>
+        <translation>Lineal o giratorio; A, B y C son giratorios por defecto</translation>
+    </message>
+    <message>
+        <source>Lower soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Límite de software inferior en coordenadas de máquina (un radio en un torno)</translation>
+    </message>
+    <message>
+        <source>Upper soft limit in machine coordinates (a radius on a lathe)</source>
+        <translation>Límite de software superior en coordenadas de máquina (un radio en un torno)</translation>
+    </message>
+    <message>
+        <source>Highest velocity of the axis</source>
+        <translation>Velocidad máxima del eje</translation>
+    </message>
+    <message>
+        <source>Highest acceleration of the axis</source>
+        <translation>Aceleración máxima del eje</translation>
+    </message>
+    <message>
+        <source>Highest jerk of the axis</source>
+        <translation>Jerk (sobreaceleración) máximo del eje</translation>
+    </message>
+    <message>
+        <source>Machine position after homing; must lie within the soft limits</source>
+        <translation>Posición de máquina tras la búsqueda de referencia; debe estar dentro de los límites de software</translation>
+    </message>
+    <message>
+        <source>The axis may be absent and is then switched off with enabled = false</source>
+        <translation>El eje puede faltar y entonces se desactiva con enabled = false</translation>
+    </message>
+    <message>
+        <source>The axis is present; only optional axes may be disabled</source>
+        <translation>El eje está presente; solo se pueden desactivar los ejes opcionales</translation>
+    </message>
+    <message>
+        <source>Lathe: the axis is programmed and displayed as a diameter</source>
+        <translation>Torno: el eje se programa y se visualiza en diámetros</translation>
+    </message>
+    <message>
+        <source>CANopen node-ID of the axis drive; 0: none</source>
+        <translation>Node-ID CANopen del accionamiento del eje; 0: ninguno</translation>
+    </message>
+    <message>
+        <source>Drive position units per millimetre or degree</source>
+        <translation>Unidades de posición del accionamiento por milímetro o grado</translation>
+    </message>
+    <message>
+        <source>Following error the drive allows (0x6065) before it faults</source>
+        <translation>Error de seguimiento que admite el accionamiento (0x6065) antes de dar fallo</translation>
+    </message>
+    <message>
+        <source>the machine has no axis for {1}</source>
+        <translation>la máquina no tiene eje para {1}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be less than {3} = {4}</source>
+        <translation>{1} = {2} debe ser menor que {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the soft limits {3} … {4} {5}</source>
+        <translation>{1} = {2} está fuera de los límites de software {3} … {4} {5}</translation>
+    </message>
+    <message>
+        <source>{1} = false is only allowed when {2} = true</source>
+        <translation>{1} = false solo se permite cuando {2} = true</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a linear axis of a lathe</source>
+        <translation>{1} = true solo se permite en un eje lineal de un torno</translation>
+    </message>
+    <message>
+        <source>the machine has no axes; add [axes.X] tables or start from a built-in machine with base = &quot;mill&quot;</source>
+        <translation>la máquina no tiene ejes; añada tablas [axes.X] o parta de una máquina integrada con base = &quot;mill&quot;</translation>
+    </message>
+    <message>
+        <source>axis letter {1} is not one of {2}</source>
+        <translation>la letra de eje {1} no es una de {2}</translation>
+    </message>
+    <message>
+        <source>axis {1} is listed twice</source>
+        <translation>el eje {1} aparece dos veces</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} is not an enabled axis of this machine ({2})</source>
+        <translation>tool_axis = {1} no es un eje activo de esta máquina ({2})</translation>
+    </message>
+    <message>
+        <source>tool_axis = {1} must be a linear axis</source>
+        <translation>tool_axis = {1} debe ser un eje lineal</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must not exceed {3} = {4}</source>
+        <translation>{1} = {2} no puede superar {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} must be smaller than {3} = {4}</source>
+        <translation>{1} = {2} debe ser menor que {3} = {4}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is the node-ID of drives.master_node</source>
+        <translation>{1} = {2} es el node-ID de drives.master_node</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is already the node of {3}</source>
+        <translation>{1} = {2} ya es el nodo de {3}</translation>
+    </message>
+    <message>
+        <source>drives.cycle_period = {1} must be a whole multiple of servo_period = {2}</source>
+        <translation>drives.cycle_period = {1} debe ser un múltiplo entero de servo_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.heartbeat_timeout = {1} must exceed drives.heartbeat_period = {2}</source>
+        <translation>drives.heartbeat_timeout = {1} debe superar drives.heartbeat_period = {2}</translation>
+    </message>
+    <message>
+        <source>drives.bitrate = {1} is not a CiA 301 bit rate (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</source>
+        <translation>drives.bitrate = {1} no es una velocidad CiA 301 (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not a 32-bit number such as 0x0000029C</source>
+        <translation>{1} = &quot;{2}&quot; no es un número de 32 bits como 0x0000029C</translation>
+    </message>
+    <message>
+        <source>{1} = {2} has the wrong type; expected {3}</source>
+        <translation>{1} = {2} tiene un tipo erróneo; se esperaba {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the allowed range {3}</source>
+        <translation>{1} = {2} está fuera del rango permitido {3}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is not one of {3}</source>
+        <translation>{1} = {2} no es uno de {3}</translation>
+    </message>
+    <message>
+        <source>empty file name</source>
+        <translation>nombre de fichero vacío</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is outside the NC root</source>
+        <translation>&apos;{1}&apos; está fuera del directorio NC</translation>
+    </message>
+    <message>
+        <source>datum {1} is not in the datum table</source>
+        <translation>el punto cero {1} no está en la tabla de puntos cero</translation>
+    </message>
+    <message>
+        <source>datum {1} is already in the datum table</source>
+        <translation>el punto cero {1} ya está en la tabla de puntos cero</translation>
+    </message>
+    <message>
+        <source>the table does not start with a BEGIN line</source>
+        <translation>la tabla no empieza con una línea BEGIN</translation>
+    </message>
+    <message>
+        <source>the BEGIN line names no table</source>
+        <translation>la línea BEGIN no indica ninguna tabla</translation>
+    </message>
+    <message>
+        <source>the BEGIN line gives no file type</source>
+        <translation>la línea BEGIN no indica el tipo de fichero</translation>
+    </message>
+    <message>
+        <source>the table has no column {1}</source>
+        <translation>la tabla no tiene la columna {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number &gt;= 0, not &quot;{2}&quot;</source>
+        <translation>la columna {1} necesita un número entero &gt;= 0, no &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the table has no row {1}</source>
+        <translation>la tabla no tiene la fila {1}</translation>
+    </message>
+    <message>
+        <source>the table has no column &quot;{1}&quot;</source>
+        <translation>la tabla no tiene la columna &quot;{1}&quot;</translation>
+    </message>
+    <message>
+        <source>cell {1} of row {2} is empty</source>
+        <translation>la celda {1} de la fila {2} está vacía</translation>
+    </message>
+    <message>
+        <source>column {1} needs a number, not &quot;{2}&quot;</source>
+        <translation>la columna {1} necesita un número, no &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} columns named but {2} values given</source>
+        <translation>{1} columnas indicadas pero {2} valores dados</translation>
+    </message>
+    <message>
+        <source>column {1} holds text, not numbers</source>
+        <translation>la columna {1} contiene texto, no números</translation>
+    </message>
+    <message>
+        <source>point {1} is not in the point table</source>
+        <translation>el punto {1} no está en la tabla de puntos</translation>
+    </message>
+    <message>
+        <source>column {1} needs Y or nothing, not &quot;{2}&quot;</source>
+        <translation>la columna {1} necesita Y o nada, no &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>point {1} is already in the point table</source>
+        <translation>el punto {1} ya está en la tabla de puntos</translation>
+    </message>
+    <message>
+        <source>preset {1} is not in the preset table</source>
+        <translation>el punto de referencia {1} no está en la tabla de puntos de referencia</translation>
+    </message>
+    <message>
+        <source>preset {1} is already in the preset table</source>
+        <translation>el punto de referencia {1} ya está en la tabla de puntos de referencia</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number, not &quot;{2}&quot;</source>
+        <translation>la columna {1} necesita un número entero, no &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>the key column {1} is empty</source>
+        <translation>la columna clave {1} está vacía</translation>
+    </message>
+    <message>
+        <source>{1} {2} appears twice (first in line {3})</source>
+        <translation>{1} {2} aparece dos veces (primero en la línea {3})</translation>
+    </message>
+    <message>
+        <source>the table has no column header line</source>
+        <translation>la tabla no tiene línea de cabecera de columnas</translation>
+    </message>
+    <message>
+        <source>the table has no cell at row {1}, column {2}</source>
+        <translation>la tabla no tiene celda en la fila {1}, columna {2}</translation>
+    </message>
+    <message>
+        <source>a cell of column {1} cannot hold a line break</source>
+        <translation>una celda de la columna {1} no puede contener un salto de línea</translation>
+    </message>
+    <message>
+        <source>{2} does not fit into column {1} ({3} characters)</source>
+        <translation>{2} no cabe en la columna {1} ({3} caracteres)</translation>
+    </message>
+    <message>
+        <source>column {1} cannot hold an infinite number</source>
+        <translation>la columna {1} no puede contener un número infinito</translation>
+    </message>
+    <message>
+        <source>cannot insert a row at {1}: the table has {2} rows</source>
+        <translation>no se puede insertar una fila en {1}: la tabla tiene {2} filas</translation>
+    </message>
+    <message>
+        <source>&quot;{2}&quot; cannot be a key of column {1}</source>
+        <translation>&quot;{2}&quot; no puede ser una clave de la columna {1}</translation>
+    </message>
+    <message>
+        <source>column {1} needs L, 1, 0 or nothing, not &quot;{2}&quot;</source>
+        <translation>la columna {1} necesita L, 1, 0 o nada, no &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>tool {1} is already in the tool table</source>
+        <translation>la herramienta {1} ya está en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>inactivo</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>en ejecución</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <translation>parada de avance</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>parado</translation>
+    </message>
+    <message>
+        <source>waiting for the machine</source>
+        <translation>esperando a la máquina</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <translation>terminado</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>interrumpido</translation>
+    </message>
+    <message>
+        <source>motion refused the block: {1}</source>
+        <translation>el control de movimiento rechazó el bloque: {1}</translation>
+    </message>
+    <message>
+        <source>motion stopped: {1}</source>
+        <translation>movimiento detenido: {1}</translation>
+    </message>
+    <message>
+        <source>column {1} must be greater than 0, not {2}</source>
+        <translation>la columna {1} debe ser mayor que 0, no {2}</translation>
+    </message>
+    <message>
+        <source>column {1} must not be negative, not {2}</source>
+        <translation>la columna {1} no puede ser negativa, no {2}</translation>
+    </message>
+    <message>
+        <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
+        <translation>la columna {1} necesita {2} o {3}, no &quot;{4}&quot;</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>preparado</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <translation>desplazamiento manual</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>búsqueda de referencia</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <translation>parando</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>parada de emergencia</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>fallo</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <translation>sin máquina</translation>
+    </message>
+    <message>
+        <source>{1} needs the coordinates of its end point</source>
+        <translation>{1} necesita las coordenadas de su punto final</translation>
+    </message>
+    <message>
+        <source>{1} is a straight probing move in workpiece coordinates: not with G06, G08, G09, G36-G39 or G53</source>
+        <translation>{1} es un movimiento de palpación recto en coordenadas de pieza: no con G06, G08, G09, G36-G39 ni G53</translation>
+    </message>
+    <message>
+        <source>G75 reached its end point without the probe touching</source>
+        <translation>G75 llegó al punto final sin que el palpador tocara</translation>
+    </message>
+    <message>
+        <source>G76 reached its end point with the probe still touching</source>
+        <translation>G76 llegó al punto final con el palpador todavía tocando</translation>
+    </message>
+    <message>
+        <source>Simulation: a box-shaped workpiece the touch probe touches (G75, probing cycles); the bounds below, machine coordinates of the tool tip</source>
+        <translation>Simulación: una pieza en forma de prisma que toca el palpador (G75, ciclos de palpación); los límites de abajo, en coordenadas de máquina de la punta de la herramienta</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine X of the tool tip inside it</source>
+        <translation>Pieza simulada de palpación: X de máquina mínima de la punta de la herramienta dentro de ella</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine X of the tool tip inside it</source>
+        <translation>Pieza simulada de palpación: X de máquina máxima de la punta de la herramienta dentro de ella</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Y of the tool tip inside it</source>
+        <translation>Pieza simulada de palpación: Y de máquina mínima de la punta de la herramienta dentro de ella</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Y of the tool tip inside it</source>
+        <translation>Pieza simulada de palpación: Y de máquina máxima de la punta de la herramienta dentro de ella</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: lowest machine Z of the tool tip inside it</source>
+        <translation>Pieza simulada de palpación: Z de máquina mínima de la punta de la herramienta dentro de ella</translation>
+    </message>
+    <message>
+        <source>Simulated probe workpiece: highest machine Z of the tool tip inside it</source>
+        <translation>Pieza simulada de palpación: Z de máquina máxima de la punta de la herramienta dentro de ella</translation>
+    </message>
+    <message>
+        <source>Machine coordinate of the workpiece origin (the default preset); kerf run --work-offset overrides it</source>
+        <translation>Coordenada de máquina del origen de la pieza (el punto de referencia por defecto); kerf run --work-offset la sustituye</translation>
+    </message>
+    <message>
+        <source>{1} needs a programmed feed F greater than 0</source>
+        <translation>{1} necesita un avance F programado mayor que 0</translation>
+    </message>
+    <message>
+        <source>Drilling/
+thread</source>
+        <translation>Taladrado/
+roscado</translation>
+    </message>
+    <message>
+        <source>Pockets/
+studs/slots</source>
+        <translation>Cajeras/
+islas/ranuras</translation>
+    </message>
+    <message>
+        <source>Patterns</source>
+        <translation>Figuras</translation>
+    </message>
+    <message>
+        <source>SL cycles</source>
+        <translation>Ciclos SL</translation>
+    </message>
+    <message>
+        <source>Coordinate
+transform.</source>
+        <translation>Conversión de
+coordenadas</translation>
+    </message>
+    <message>
+        <source>Special
+cycles</source>
+        <translation>Ciclos
+especiales</translation>
+    </message>
+    <message>
+        <source>SET-UP CLEARANCE</source>
+        <translation>DISTANCIA SEGURIDAD</translation>
+    </message>
+    <message>
+        <source>DEPTH</source>
+        <translation>PROFUNDIDAD</translation>
+    </message>
+    <message>
+        <source>PLUNGING DEPTH</source>
+        <translation>PROFUNDIDAD PASADA</translation>
+    </message>
+    <message>
+        <source>SURFACE COORDINATE</source>
+        <translation>COORD. SUPERFICIE</translation>
+    </message>
+    <message>
+        <source>2ND SET-UP CLEARANCE</source>
+        <translation>2.ª DIST. SEGURIDAD</translation>
+    </message>
+    <message>
+        <source>MIN. PLUNGING DEPTH</source>
+        <translation>PROF. PASADA MÍNIMA</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR PLNGNG</source>
+        <translation>AVANCE PROFUNDIZ.</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR MILLING</source>
+        <translation>AVANCE FRESADO</translation>
+    </message>
+    <message>
+        <source>RETRACTION FEED RATE</source>
+        <translation>AVANCE RETROCESO</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT TOP</source>
+        <translation>TIEMPO ESPERA ARRIBA</translation>
+    </message>
+    <message>
+        <source>DWELL TIME AT DEPTH</source>
+        <translation>TIEMPO ESPERA ABAJO</translation>
+    </message>
+    <message>
+        <source>DECREMENT</source>
+        <translation>VALOR REDUCCIÓN</translation>
+    </message>
+    <message>
+        <source>NR OF BREAKS</source>
+        <translation>ROTURAS DE VIRUTA</translation>
+    </message>
+    <message>
+        <source>DISENGAGING DIRECTN</source>
+        <translation>DIRECCIÓN RETIRADA</translation>
+    </message>
+    <message>
+        <source>CENTER IN 1ST AXIS</source>
+        <translation>CENTRO 1.ER EJE</translation>
+    </message>
+    <message>
+        <source>CENTER IN 2ND AXIS</source>
+        <translation>CENTRO 2.º EJE</translation>
+    </message>
+    <message>
+        <source>FIRST SIDE LENGTH</source>
+        <translation>LONGITUD 1.ER LADO</translation>
+    </message>
+    <message>
+        <source>2ND SIDE LENGTH</source>
+        <translation>LONGITUD 2.º LADO</translation>
+    </message>
+    <message>
+        <source>ANGLE OF ROTATION</source>
+        <translation>ÁNGULO DE GIRO</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 1ST AXIS</source>
+        <translation>PTO. INICIAL 1.ER EJE</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 2ND AXIS</source>
+        <translation>PTO. INICIAL 2.º EJE</translation>
+    </message>
+    <message>
+        <source>STARTNG PNT 3RD AXIS</source>
+        <translation>PTO. INICIAL 3.ER EJE</translation>
+    </message>
+    <message>
+        <source>SPACING IN 1ST AXIS</source>
+        <translation>DISTANCIA 1.ER EJE</translation>
+    </message>
+    <message>
+        <source>SPACING IN 2ND AXIS</source>
+        <translation>DISTANCIA 2.º EJE</translation>
+    </message>
+    <message>
+        <source>THREAD PITCH</source>
+        <translation>PASO DE ROSCA</translation>
+    </message>
+    <message>
+        <source>NR OF REPETITIONS</source>
+        <translation>N.º REPETICIONES</translation>
+    </message>
+    <message>
+        <source>NUMBER OF COLUMNS</source>
+        <translation>NÚMERO DE COLUMNAS</translation>
+    </message>
+    <message>
+        <source>NUMBER OF LINES</source>
+        <translation>NÚMERO DE FILAS</translation>
+    </message>
+    <message>
+        <source>PITCH CIRCLE DIAMETR</source>
+        <translation>DIÁM. CÍRC. PRIMIT.</translation>
+    </message>
+    <message>
+        <source>STARTING ANGLE</source>
+        <translation>ÁNGULO INICIAL</translation>
+    </message>
+    <message>
+        <source>STOPPING ANGLE</source>
+        <translation>ÁNGULO FINAL</translation>
+    </message>
+    <message>
+        <source>STEPPING ANGLE</source>
+        <translation>INCREMENTO ANGULAR</translation>
+    </message>
+    <message>
+        <source>DEPTH OF COUNTERBORE</source>
+        <translation>PROF. AVELLANADO</translation>
+    </message>
+    <message>
+        <source>MATERIAL THICKNESS</source>
+        <translation>ESPESOR MATERIAL</translation>
+    </message>
+    <message>
+        <source>OFF-CENTER DISTANCE</source>
+        <translation>EXCENTRICIDAD</translation>
+    </message>
+    <message>
+        <source>TOOL EDGE HEIGHT</source>
+        <translation>ALTURA DEL FILO</translation>
+    </message>
+    <message>
+        <source>F PRE-POSITIONING</source>
+        <translation>AVANCE PREPOSIC.</translation>
+    </message>
+    <message>
+        <source>F COUNTERSINKING</source>
+        <translation>AVANCE AVELLANADO</translation>
+    </message>
+    <message>
+        <source>DIST FOR CHIP BRKNG</source>
+        <translation>RETROC. ROT. VIRUTA</translation>
+    </message>
+    <message>
+        <source>DEPTH FOR CHIP BRKNG</source>
+        <translation>PROF. ROT. VIRUTA</translation>
+    </message>
+    <message>
+        <source>UPPER ADV STOP DIST</source>
+        <translation>DIST. PARADA SUP.</translation>
+    </message>
+    <message>
+        <source>LOWER ADV STOP DIST</source>
+        <translation>DIST. PARADA INF.</translation>
+    </message>
+    <message>
+        <source>MOVE TO CLEARANCE</source>
+        <translation>IR A ALTURA SEGURA</translation>
+    </message>
+    <message>
+        <source>NOMINAL DIAMETER</source>
+        <translation>DIÁMETRO NOMINAL</translation>
+    </message>
+    <message>
+        <source>ANGLE OF SPINDLE</source>
+        <translation>ÁNGULO DEL CABEZAL</translation>
+    </message>
+    <message>
+        <source>DATUM NUMBER</source>
+        <translation>NÚMERO PUNTO CERO</translation>
+    </message>
+    <message>
+        <source>ROUGHING DIAMETER</source>
+        <translation>DIÁMETRO DESBASTE</translation>
+    </message>
+    <message>
+        <source>SELECT DIA./DEPTH</source>
+        <translation>SELECCIÓN DIÁM./PROF.</translation>
+    </message>
+    <message>
+        <source>DIAMETER</source>
+        <translation>DIÁMETRO</translation>
+    </message>
+    <message>
+        <source>SELECT POS. HEIGHT</source>
+        <translation>SELECCIÓN ALT. POS.</translation>
+    </message>
+    <message>
+        <source>CLIMB OR UP-CUT</source>
+        <translation>TIPO DE FRESADO</translation>
+    </message>
+    <message>
+        <source>THREADS PER STEP</source>
+        <translation>HILOS POR PASO</translation>
+    </message>
+    <message>
+        <source>COUNTERSINKING DEPTH</source>
+        <translation>PROF. AVELLANADO</translation>
+    </message>
+    <message>
+        <source>CLEARANCE TO SIDE</source>
+        <translation>DISTANCIA LATERAL</translation>
+    </message>
+    <message>
+        <source>DEPTH AT FRONT</source>
+        <translation>PROFUNDIDAD FRONTAL</translation>
+    </message>
+    <message>
+        <source>OFFSET AT FRONT</source>
+        <translation>DESVÍO FRONTAL</translation>
+    </message>
+    <message>
+        <source>COUNTERSINK PROCESS</source>
+        <translation>PROCESO AVELLANADO</translation>
+    </message>
+    <message>
+        <source>TYPE OF TRAVERSE</source>
+        <translation>TIPO DESPLAZAMIENTO</translation>
+    </message>
+    <message>
+        <source>TEXT POSITION</source>
+        <translation>POSICIÓN DEL TEXTO</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR FLOOR</source>
+        <translation>SOBREMEDIDA FONDO</translation>
+    </message>
+    <message>
+        <source>MAX. OVERLAP</source>
+        <translation>SOLAPAMIENTO MÁX.</translation>
+    </message>
+    <message>
+        <source>STARTING POINT</source>
+        <translation>PUNTO INICIAL</translation>
+    </message>
+    <message>
+        <source>FINISHING FEED RATE</source>
+        <translation>AVANCE ACABADO</translation>
+    </message>
+    <message>
+        <source>END POINT 3RD AXIS</source>
+        <translation>PTO. FINAL 3.ER EJE</translation>
+    </message>
+    <message>
+        <source>STRATEGY</source>
+        <translation>ESTRATEGIA</translation>
+    </message>
+    <message>
+        <source>DEPTH REFERENCE</source>
+        <translation>REFERENCIA PROF.</translation>
+    </message>
+    <message>
+        <source>FEED RATE FACTOR</source>
+        <translation>FACTOR DE AVANCE</translation>
+    </message>
+    <message>
+        <source>RPM FACTOR</source>
+        <translation>FACTOR REVOLUCIONES</translation>
+    </message>
+    <message>
+        <source>DIR. OF SPINDLE ROT.</source>
+        <translation>SENTIDO GIRO CABEZAL</translation>
+    </message>
+    <message>
+        <source>ROT.SPEED INFEED/OUT</source>
+        <translation>REVOL. ENTRADA/SALIDA</translation>
+    </message>
+    <message>
+        <source>ROT. SPEED DRILLING</source>
+        <translation>REVOL. TALADRADO</translation>
+    </message>
+    <message>
+        <source>COOLANT ON</source>
+        <translation>REFRIGERANTE ON</translation>
+    </message>
+    <message>
+        <source>COOLANT OFF</source>
+        <translation>REFRIGERANTE OFF</translation>
+    </message>
+    <message>
+        <source>DWELL DEPTH</source>
+        <translation>PROFUNDIDAD ESPERA</translation>
+    </message>
+    <message>
+        <source>ENGRAVING TEXT</source>
+        <translation>TEXTO A GRABAR</translation>
+    </message>
+    <message>
+        <source>FEED FOR APPROACH</source>
+        <translation>AVANCE APROXIMACIÓN</translation>
+    </message>
+    <message>
+        <source>CHARACTER HEIGHT</source>
+        <translation>ALTURA CARACTERES</translation>
+    </message>
+    <message>
+        <source>SPACE FACTOR</source>
+        <translation>FACTOR DISTANCIA</translation>
+    </message>
+    <message>
+        <source>FONT</source>
+        <translation>FUENTE</translation>
+    </message>
+    <message>
+        <source>TEXT LAYOUT</source>
+        <translation>DISPOSICIÓN TEXTO</translation>
+    </message>
+    <message>
+        <source>CIRCLE RADIUS</source>
+        <translation>RADIO DEL CÍRCULO</translation>
+    </message>
+    <message>
+        <source>MAX. TEXT LENGTH</source>
+        <translation>LONG. MÁX. TEXTO</translation>
+    </message>
+    <message>
+        <source>F COUNTERBORING</source>
+        <translation>AVANCE REBAJE INV.</translation>
+    </message>
+    <message>
+        <source>DEPTH OF THREAD</source>
+        <translation>PROFUNDIDAD ROSCA</translation>
+    </message>
+    <message>
+        <source>MAX. PLUNGING DEPTH</source>
+        <translation>PROF. PASADA MÁXIMA</translation>
+    </message>
+    <message>
+        <source>TOTAL HOLE DEPTH</source>
+        <translation>PROF. TOTAL TALADRO</translation>
+    </message>
+    <message>
+        <source>%1: %2 needs a positive feed after it, e.g. %2 0.1</source>
+        <translation>%1: %2 necesita detrás un avance positivo, p. ej. %2 0.1</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; enter a number</source>
+        <translation>%1: %2 no se permite aquí; introduzca un número</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not allowed here; allowed: a number, %3</source>
+        <translation>%1: %2 no se permite aquí; permitido: un número, %3</translation>
+    </message>
+    <message>
+        <source>%1: enter a value</source>
+        <translation>%1: introduzca un valor</translation>
+    </message>
+    <message>
+        <source>%1: the text must not contain &quot;</source>
+        <translation>%1: el texto no puede contener &quot;</translation>
+    </message>
+    <message>
+        <source>%1: enter axis letters separated by blanks, e.g. X Y</source>
+        <translation>%1: introduzca letras de eje separadas por espacios, p. ej. X Y</translation>
+    </message>
+    <message>
+        <source>%1: #n needs a datum number, e.g. #5</source>
+        <translation>%1: #n necesita un número de punto cero, p. ej. #5</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number</source>
+        <translation>%1: &quot;%2&quot; no es un número</translation>
+    </message>
+    <message>
+        <source>%1: enter a whole number from %2 to %3</source>
+        <translation>%1: introduzca un número entero de %2 a %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the range %3 to %4</source>
+        <translation>%1: %2 está fuera del rango %3 a %4</translation>
+    </message>
+    <message>
+        <source>%1 coordinate of the end point (I before the value: incremental)</source>
+        <translation>Coordenada %1 del punto final (I delante del valor: incremental)</translation>
+    </message>
+    <message>
+        <source>Circle radius (negative: arc greater than 180°)</source>
+        <translation>Radio del círculo (negativo: arco mayor de 180°)</translation>
+    </message>
+    <message>
+        <source>Chamfer length</source>
+        <translation>Longitud del chaflán</translation>
+    </message>
+    <message>
+        <source>Rounding radius</source>
+        <translation>Radio de redondeo</translation>
+    </message>
+    <message>
+        <source>Direction of rotation (DR-: clockwise, DR+: counterclockwise)</source>
+        <translation>Sentido de giro (DR-: horario, DR+: antihorario)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (RL left, RR right of the contour, R0 none)</source>
+        <translation>Corrección de radio (RL a la izquierda, RR a la derecha del contorno, R0 ninguna)</translation>
+    </message>
+    <message>
+        <source>Feed rate (FMAX: rapid traverse, FAUTO: from TOOL CALL)</source>
+        <translation>Avance (FMAX: marcha rápida, FAUTO: del TOOL CALL)</translation>
+    </message>
+    <message>
+        <source>Miscellaneous functions, e.g. 3 8</source>
+        <translation>Funciones auxiliares, p. ej. 3 8</translation>
+    </message>
+    <message>
+        <source>Tool number or name</source>
+        <translation>Número o nombre de herramienta</translation>
+    </message>
+    <message>
+        <source>Spindle axis</source>
+        <translation>Eje del cabezal</translation>
+    </message>
+    <message>
+        <source>Spindle speed S [1/min]</source>
+        <translation>Velocidad del cabezal S [1/min]</translation>
+    </message>
+    <message>
+        <source>Delta length DL</source>
+        <translation>Delta de longitud DL</translation>
+    </message>
+    <message>
+        <source>Delta radius DR</source>
+        <translation>Delta de radio DR</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a coordinate</source>
+        <translation>%1: &quot;%2&quot; no es una coordenada</translation>
+    </message>
+    <message>
+        <source>%1: enter a radius other than 0</source>
+        <translation>%1: introduzca un radio distinto de 0</translation>
+    </message>
+    <message>
+        <source>%1: enter a positive number</source>
+        <translation>%1: introduzca un número positivo</translation>
+    </message>
+    <message>
+        <source>%1: enter a feed rate, FMAX or FAUTO</source>
+        <translation>%1: introduzca un avance, FMAX o FAUTO</translation>
+    </message>
+    <message>
+        <source>%1: enter M function numbers, e.g. 3 8</source>
+        <translation>%1: introduzca números de funciones M, p. ej. 3 8</translation>
+    </message>
+    <message>
+        <source>%1: enter a tool number or a name</source>
+        <translation>%1: introduzca un número o un nombre de herramienta</translation>
+    </message>
+    <message>
+        <source>%1: choose one of %2</source>
+        <translation>%1: elija uno de %2</translation>
+    </message>
+    <message>
+        <source>%1: enter at least one coordinate</source>
+        <translation>%1: introduzca al menos una coordenada</translation>
+    </message>
+    <message>
+        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
+        <translation>Los diálogos de ciclos y de funciones de trayectoria escriben programas Klartext (.H).</translation>
+    </message>
+    <message>
+        <source>Cycle
+overview</source>
+        <translation>Resumen
+de ciclos</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Volver</translation>
+    </message>
+    <message>
+        <source>Edit
+cycle</source>
+        <translation>Editar
+ciclo</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a CYCL DEF block to edit it.</source>
+        <translation>Sitúe el cursor en un bloque CYCL DEF para editarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::MachineRows</name>
+    <message>
+        <source>Increment
+continuous</source>
+        <translation>Incremento
+continuo</translation>
+    </message>
+    <message>
+        <source>Increment
+%1 mm</source>
+        <translation>Incremento
+%1 mm</translation>
+    </message>
+    <message>
+        <source>Home
+all</source>
+        <translation>Referenciar
+todos</translation>
+    </message>
+    <message>
+        <source>Spindle
+on</source>
+        <translation>Cabezal
+ON</translation>
+    </message>
+    <message>
+        <source>Spindle
+off</source>
+        <translation>Cabezal
+OFF</translation>
+    </message>
+    <message>
+        <source>NC
+start</source>
+        <translation>Marcha
+NC</translation>
+    </message>
+    <message>
+        <source>NC stop
+(feed hold)</source>
+        <translation>Parada NC
+(parada avance)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Continuar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parada</translation>
+    </message>
+    <message>
+        <source>Start at
+block</source>
+        <translation>Arranque
+en bloque</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Arranque en bloque</translation>
+    </message>
+    <message>
+        <source>Line of the first block</source>
+        <translation>Línea del primer bloque</translation>
+    </message>
+    <message>
+        <source>Single block
+on</source>
+        <translation>Bloque a bloque
+ON</translation>
+    </message>
+    <message>
+        <source>Single block
+off</source>
+        <translation>Bloque a bloque
+OFF</translation>
+    </message>
+    <message>
+        <source>Execute
+block</source>
+        <translation>Ejecutar
+bloque</translation>
+    </message>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Posicionamiento con MDI</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloque</translation>
+    </message>
+</context>
+</TS>

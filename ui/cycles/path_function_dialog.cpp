@@ -1,0 +1,153 @@
+#include "ui/cycles/path_function_dialog.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace kerf::ui {
+
+namespace {
+
+constexpr int kTouchHeight = 48;
+
+bool isChoice(const PathField& field) {
+    return !field.choices.isEmpty();
+}
+
+}  // namespace
+
+PathFunctionDialog::PathFunctionDialog(PathFunction function, QWidget* parent)
+    : QDialog(parent), m_function(function), m_fields(pathFields(function)) {
+    setObjectName("pathFunctionDialog");
+    auto* layout = new QVBoxLayout(this);
+    auto* title = new QLabel(pathFunctionKeyword(function), this);
+    title->setStyleSheet(QStringLiteral("font-weight: bold; font-size: 16px;"));
+    layout->addWidget(title);
+    auto* grid = new QGridLayout;
+    grid->setColumnStretch(2, 1);
+    for (size_t i = 0; i < m_fields.size(); ++i) {
+        const int row = static_cast<int>(i);
+        auto* label = new QLabel(m_fields[i].word, this);
+        label->setStyleSheet(QStringLiteral("font-weight: bold;"));
+        QWidget* input = nullptr;
+        if (isChoice(m_fields[i])) {
+            auto* combo = new QComboBox(this);
+            combo->addItems(m_fields[i].choices);
+            input = combo;
+        } else {
+            input = new QLineEdit(this);
+        }
+        input->setMinimumHeight(kTouchHeight);
+        input->setMinimumWidth(140);
+        input->installEventFilter(this);
+        auto* description = new QLabel(this);
+        description->setWordWrap(true);
+        grid->addWidget(label, row, 0);
+        grid->addWidget(input, row, 1);
+        grid->addWidget(description, row, 2);
+        m_inputs.push_back(input);
+        m_descriptions.push_back(description);
+    }
+    layout->addLayout(grid);
+    m_message = new QLabel(this);
+    m_message->setObjectName("pathMessage");
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet(QStringLiteral("color: #b00000; font-weight: bold;"));
+    layout->addWidget(m_message);
+    auto* buttons = new QHBoxLayout;
+    m_ok = new QPushButton(this);
+    m_cancel = new QPushButton(this);
+    for (QPushButton* button : {m_ok, m_cancel}) {
+        button->setAutoDefault(false);
+        button->setDefault(false);
+        button->setMinimumHeight(kTouchHeight);
+        button->setMinimumWidth(120);
+        buttons->addWidget(button);
+    }
+    buttons->addStretch(1);
+    connect(m_ok, &QPushButton::clicked, this, &PathFunctionDialog::accept);
+    connect(m_cancel, &QPushButton::clicked, this, &PathFunctionDialog::reject);
+    layout->addLayout(buttons);
+    retranslate();
+    if (!m_inputs.empty()) m_inputs.front()->setFocus();
+}
+
+QString PathFunctionDialog::text(int field) const {
+    QWidget* input = m_inputs.at(static_cast<size_t>(field));
+    if (auto* combo = qobject_cast<QComboBox*>(input)) return combo->currentText();
+    return static_cast<QLineEdit*>(input)->text().trimmed();
+}
+
+void PathFunctionDialog::setValues(const QStringList& values) {
+    for (size_t i = 0; i < m_inputs.size(); ++i) {
+        const QString value = values.value(static_cast<int>(i));
+        if (auto* combo = qobject_cast<QComboBox*>(m_inputs[i]))
+            combo->setCurrentIndex(std::max(0, combo->findText(value.toUpper())));
+        else
+            static_cast<QLineEdit*>(m_inputs[i])->setText(value);
+    }
+}
+
+QStringList PathFunctionDialog::values() const {
+    QStringList list;
+    for (int i = 0; i < fieldCount(); ++i)
+        list << text(i);
+    return list;
+}
+
+QString PathFunctionDialog::block() const {
+    return writePathFunction(m_function, values());
+}
+
+QString PathFunctionDialog::message() const {
+    return m_message->text();
+}
+
+void PathFunctionDialog::accept() {
+    if (const auto error = checkPathFunction(m_function, values())) {
+        m_message->setText(*error);
+        return;
+    }
+    m_message->clear();
+    QDialog::accept();
+}
+
+void PathFunctionDialog::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QDialog::changeEvent(event);
+}
+
+bool PathFunctionDialog::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() != QEvent::KeyPress) return QDialog::eventFilter(watched, event);
+    const int key = static_cast<QKeyEvent*>(event)->key();
+    if (key != Qt::Key_Return && key != Qt::Key_Enter) return QDialog::eventFilter(watched, event);
+    for (size_t i = 0; i < m_inputs.size(); ++i) {
+        if (m_inputs[i] != watched) continue;
+        if (const auto error = checkPathField(m_fields[i], text(static_cast<int>(i)))) {
+            m_message->setText(*error);
+            return true;
+        }
+        m_message->clear();
+        if (i + 1 < m_inputs.size())
+            m_inputs[i + 1]->setFocus();
+        else
+            accept();
+        return true;
+    }
+    return QDialog::eventFilter(watched, event);
+}
+
+void PathFunctionDialog::retranslate() {
+    setWindowTitle(tr("Path function"));
+    for (size_t i = 0; i < m_fields.size(); ++i)
+        m_descriptions[i]->setText(pathFieldDescription(m_fields[i]));
+    m_ok->setText(tr("OK"));
+    m_cancel->setText(tr("Cancel"));
+}
+
+}  // namespace kerf::ui

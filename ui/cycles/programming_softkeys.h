@@ -1,0 +1,28 @@
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "ui/shell/softkey_bar.h"
+
+class QWidget;
+
+namespace kerf::ui {
+
+class ProgramEditor;
+
+// What the programming rows need from the window: showing other rows on the softkey bar (the
+// cycle groups and their cycles) and going back to the normal rows.
+struct SoftkeyPaging {
+    std::function<void(std::vector<SoftkeyRow>)> show;
+    std::function<void()> back;
+};
+
+// The programming keys of the TNC: CYCL DEF (its groups, then the group's cycles), CYCL CALL,
+// TOOL CALL, the path functions L CC C CR CT RND CHF, the cycle overview and editing the
+// cycle under the cursor. The dialogs open over `dialogParent` and write into `editor`;
+// they write Klartext, so other dialects get a message instead.
+std::vector<SoftkeyRow> programmingEntryRows(ProgramEditor* editor, QWidget* dialogParent,
+                                             SoftkeyPaging paging);
+
+}  // namespace kerf::ui

@@ -1,0 +1,162 @@
+#include "ui/session/machine_session.h"
+
+#include <QTimer>
+
+#include "ui/common/diagnostic_text.h"
+#include "ui/session/program_interpreter.h"
+
+namespace kerf::ui {
+
+MachineSession::MachineSession(machine::MachineConfig machine,
+                               std::unique_ptr<task::MotionPort> motion,
+                               std::filesystem::path ncRoot, QObject* parent)
+    : QObject(parent),
+      m_machine(std::move(machine)),
+      m_motion(std::move(motion)),
+      m_ncRoot(std::move(ncRoot)),
+      m_run(std::make_unique<task::ProgramRun>(*m_motion)) {
+    registerDiagnosticMetaTypes();
+    m_status = m_motion->status();
+    m_timer = new QTimer(this);
+    m_timer->setInterval(kServiceIntervalMs);
+    connect(m_timer, &QTimer::timeout, this, &MachineSession::service);
+    m_timer->start();
+}
+
+MachineSession::~MachineSession() {
+    // The run refers to the interpreter's sources and the motion port: it goes first.
+    m_run.reset();
+}
+
+bool MachineSession::busy() const {
+    return m_run->moving() || m_run->state() == task::RunState::Held ||
+           m_run->state() == task::RunState::Stopped;
+}
+
+bool MachineSession::refuseWhenBusy() {
+    if (!busy() && m_status.state == task::MachineState::Idle) return false;
+    emit message(Severity::Error,
+                 tr("The machine is busy: stop the program or wait until the axes stand still"), 0);
+    return true;
+}
+
+void MachineSession::report(const DiagnosticList& diagnostics) {
+    for (const Diagnostic& d : diagnostics)
+        emit message(d.severity, translatedMessage(d), static_cast<int>(d.line));
+}
+
+bool MachineSession::startProgram(const QString& program, const std::filesystem::path& path,
+                                  std::optional<uint32_t> startLine) {
+    if (refuseWhenBusy()) return false;
+    ProgramSource source;
+    source.text = program.toStdString();
+    source.path = path;
+    source.ncRoot = m_ncRoot;
+    source.startPosition.values = m_motion->world().position.values;
+    return start(loadProgram(m_machine, source), startLine);
+}
+
+bool MachineSession::executeMdi(const QString& block) {
+    if (refuseWhenBusy()) return false;
+    ProgramSource source;
+    source.text = mdiProgram(m_machine, block.trimmed().toStdString());
+    source.ncRoot = m_ncRoot;
+    source.startPosition.values = m_motion->world().position.values;
+    return start(loadProgram(m_machine, source), std::nullopt);
+}
+
+bool MachineSession::start(LoadedProgram loaded, std::optional<uint32_t> startLine) {
+    if (!loaded.interpreter) {
+        report(loaded.diagnostics);
+        emit message(Severity::Error, tr("The program has errors and cannot be started"), 0);
+        return false;
+    }
+    task::StartOptions options;
+    options.startLine = startLine;
+    options.toolAxis = m_machine.kind == machine::MachineKind::Lathe ? Axis::X : Axis::Z;
+    m_motion->setSingleBlock(m_singleBlock);
+    m_run->start(std::move(loaded.interpreter), options);
+    // The previous run's interpreter is gone: its sources and tools may go too.
+    m_sources = std::move(loaded.sources);
+    m_tools = std::move(loaded.tools);
+    service();
+    return true;
+}
+
+void MachineSession::cycleStart() {
+    m_run->cycleStart();
+}
+
+void MachineSession::feedHold() {
+    m_run->feedHold();
+}
+
+void MachineSession::stop() {
+    m_run->abort();
+    if (m_status.state == task::MachineState::Jogging) m_motion->quickStop();
+}
+
+void MachineSession::setSingleBlock(bool on) {
+    m_singleBlock = on;
+    m_motion->setSingleBlock(on);
+}
+
+bool MachineSession::jog(Axis axis, int direction) {
+    if (busy()) return false;
+    return m_motion->jogContinuous(axis, direction >= 0 ? 0.2 : -0.2);
+}
+
+void MachineSession::jogStop(Axis axis) {
+    m_motion->jogStop(axis);
+}
+
+bool MachineSession::jogIncrement(Axis axis, int direction) {
+    if (busy()) return false;
+    return m_motion->jogIncrement(axis, direction >= 0 ? m_incrementMm : -m_incrementMm);
+}
+
+bool MachineSession::homeAll() {
+    if (refuseWhenBusy()) return false;
+    return m_motion->home(std::nullopt);
+}
+
+bool MachineSession::spindle(bool on, double rpm) {
+    if (refuseWhenBusy()) return false;
+    canon::SpindleControl control;
+    control.direction = on ? canon::SpindleDirection::Clockwise : canon::SpindleDirection::Stopped;
+    control.speedRpm = on ? rpm : 0.0;
+    return m_motion->manualSpindle(control);
+}
+
+void MachineSession::setFeedOverride(double fraction) {
+    m_motion->setFeedOverride(fraction);
+}
+
+void MachineSession::setRapidOverride(double fraction) {
+    m_motion->setRapidOverride(fraction);
+}
+
+void MachineSession::setSpindleOverride(double fraction) {
+    m_motion->setSpindleOverride(fraction);
+}
+
+void MachineSession::service() {
+    m_run->service();
+    m_status = m_motion->status();
+    emit statusChanged(m_status);
+    const task::RunState state = m_run->state();
+    // The status tabs need no more than a few pictures a second.
+    if (const interp::Interpreter* interpreter = m_run->interpreter();
+        interpreter && busy() && ++m_servicesSinceProgramStatus >= kProgramStatusEvery) {
+        m_servicesSinceProgramStatus = 0;
+        emit programStatusChanged(interpreter->programStatus());
+    }
+    if (state == m_lastState) return;
+    m_lastState = state;
+    if (state == task::RunState::Failed) report(m_run->diagnostics());
+    if (state == task::RunState::Finished) emit message(Severity::Note, tr("Program finished"), 0);
+    if (state == task::RunState::Aborted) emit message(Severity::Warning, tr("Program stopped"), 0);
+    emit runStateChanged(state);
+}
+
+}  // namespace kerf::ui

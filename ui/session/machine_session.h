@@ -1,0 +1,114 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "core/base/diagnostic.h"
+#include "core/interp/program_status.h"
+#include "core/machine/machine_config.h"
+#include "core/task/machine_status.h"
+#include "core/task/motion_port.h"
+#include "core/task/program_run.h"
+
+class QTimer;
+
+namespace kerf::program {
+class SourceRegistry;
+}
+namespace kerf::tables {
+class ToolTable;
+}
+
+namespace kerf::ui {
+
+struct LoadedProgram;
+
+// Makes the connection to the machine (app/ decides: simulated or real drives). The programming
+// station has none.
+using MotionFactory = std::function<std::unique_ptr<task::MotionPort>()>;
+
+// The machine as the HMI drives it: owns the MotionPort and the program run (task::ProgramRun),
+// serviced by a timer in the UI thread. Program run (start, start at a block, cycle start, feed
+// hold, stop, single block), MDI, manual operation (jog, increment, home, spindle) and the
+// overrides; it publishes the machine status, the run state and messages naming the block.
+class MachineSession : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int kServiceIntervalMs = 20;
+
+    MachineSession(machine::MachineConfig machine, std::unique_ptr<task::MotionPort> motion,
+                   std::filesystem::path ncRoot, QObject* parent = nullptr);
+    ~MachineSession() override;
+
+    const machine::MachineConfig& machine() const { return m_machine; }
+    task::MotionPort& motion() { return *m_motion; }
+
+    // Program run. False (and a message) when the program cannot start: errors in it, or the
+    // machine is busy. startLine: start in mid-program at the first block on or after it, with
+    // the tool, spindle and position the blocks before it leave.
+    bool startProgram(const QString& text, const std::filesystem::path& path,
+                      std::optional<uint32_t> startLine = std::nullopt);
+    bool executeMdi(const QString& block);
+    void cycleStart();  // resumes after feed hold, a program stop or a single-block stop
+    void feedHold();
+    void stop();  // stops on the path and aborts the program
+    void setSingleBlock(bool on);
+    bool singleBlock() const { return m_singleBlock; }
+
+    // Manual operation (only while no program or MDI block runs).
+    bool jog(Axis axis, int direction);  // continuous until jogStop()
+    void jogStop(Axis axis);
+    bool jogIncrement(Axis axis, int direction);
+    void setIncrementMm(double mm) { m_incrementMm = mm; }
+    double incrementMm() const { return m_incrementMm; }
+    bool homeAll();
+    bool spindle(bool on, double rpm = 1000.0);
+
+    // Fractions: 1 = 100 %.
+    void setFeedOverride(double fraction);
+    void setRapidOverride(double fraction);
+    void setSpindleOverride(double fraction);
+
+    task::RunState runState() const { return m_run->state(); }
+    // A program or MDI block moves the machine (the machine mode must not change).
+    bool busy() const;
+    const task::MachineStatus& status() const { return m_status; }
+    const task::ProgramRun& run() const { return *m_run; }
+
+    // One step of the task: called by the timer; tests call it directly.
+    void service();
+
+signals:
+    void statusChanged(const kerf::task::MachineStatus& status);
+    void runStateChanged(kerf::task::RunState state);
+    // The running program's interpreter state, for the status tabs.
+    void programStatusChanged(const kerf::interp::ProgramStatus& status);
+    void message(kerf::Severity severity, const QString& text, int line);
+
+private:
+    bool start(LoadedProgram loaded, std::optional<uint32_t> startLine);
+    bool refuseWhenBusy();
+    void report(const DiagnosticList& diagnostics);
+
+    machine::MachineConfig m_machine;
+    std::unique_ptr<task::MotionPort> m_motion;
+    std::filesystem::path m_ncRoot;
+    // The interpreter refers to these: they live as long as the run that uses them.
+    std::unique_ptr<program::SourceRegistry> m_sources;
+    std::unique_ptr<tables::ToolTable> m_tools;
+    std::unique_ptr<task::ProgramRun> m_run;
+    QTimer* m_timer = nullptr;
+    task::MachineStatus m_status;
+    task::RunState m_lastState = task::RunState::Idle;
+    static constexpr int kProgramStatusEvery = 10;  // services (200 ms)
+    int m_servicesSinceProgramStatus = 0;
+    double m_incrementMm = 1.0;
+    bool m_singleBlock = false;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,83 @@
+#include "ui/session/program_interpreter.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/base/translate.h"
+#include "core/interp/fagor/fagor_interpreter.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+
+namespace kerf::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool isLathe(const machine::MachineConfig& machine) {
+    return machine.kind == machine::MachineKind::Lathe;
+}
+
+}  // namespace
+
+LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSource& source) {
+    LoadedProgram loaded;
+    loaded.sources = std::make_unique<program::SourceRegistry>();
+    const std::string name = source.path.empty() ? std::string("MDI") : source.path.string();
+    std::string extension = source.path.extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (isLathe(machine) && extension != ".H") {
+        fagor::FagorSettings settings;
+        settings.machine = &machine;
+        settings.ncRoot = source.ncRoot;
+        settings.toolOffsetFile = source.ncRoot / "fagor_tool_offsets.tab";
+        settings.zeroOffsetFile = source.ncRoot / "fagor_zero_offsets.tab";
+        settings.toolFile = source.ncRoot / "fagor_tools.tab";
+        auto fagor = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
+        const bool ok = fagor->loadText(source.text, name);
+        loaded.diagnostics = fagor->diagnostics();
+        if (ok) loaded.interpreter = std::move(fagor);
+        return loaded;
+    }
+    if (extension == ".I") {
+        loaded.diagnostics.push_back(
+            Diagnostic::make(Severity::Error, "run.dialect", name, 0, 0,
+                             KERF_TR_NOOP("TNC ISO programs cannot run on the machine yet")));
+        return loaded;
+    }
+    std::error_code error;
+    const fs::path toolFile = source.ncRoot / "TOOL.T";
+    if (fs::exists(toolFile, error)) {
+        auto tools = tables::ToolTable::load(toolFile);
+        if (!tools) {
+            loaded.diagnostics.push_back(tools.error());
+            return loaded;
+        }
+        loaded.tools = std::make_unique<tables::ToolTable>(std::move(*tools));
+    }
+    klartext::KlartextSettings settings;
+    settings.machine = &machine;
+    settings.tools = loaded.tools.get();
+    settings.ncRoot = source.ncRoot;
+    settings.startPosition = source.startPosition;
+    auto klartext = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
+    const bool ok = klartext->loadText(source.text, name);
+    loaded.diagnostics = klartext->diagnostics();
+    if (ok) loaded.interpreter = std::move(klartext);
+    return loaded;
+}
+
+std::string mdiProgram(const machine::MachineConfig& machine, const std::string& block) {
+    if (isLathe(machine)) return block + "\n";
+    // The operator may type the block with or without its number.
+    size_t start = block.find_first_not_of(" \t");
+    if (start == std::string::npos) start = block.size();
+    size_t body = start;
+    while (body < block.size() && std::isdigit(static_cast<unsigned char>(block[body])))
+        ++body;
+    if (body == start || (body < block.size() && block[body] != ' ')) body = start;
+    body = std::min(block.size(), block.find_first_not_of(" \t", body));
+    return "0 BEGIN PGM MDI MM\n1 " + block.substr(body) + "\n2 END PGM MDI MM\n";
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/base/diagnostic.h"
+#include "core/interp/interpreter.h"
+#include "core/machine/machine_config.h"
+#include "core/program/source_registry.h"
+#include "core/tables/tool_table.h"
+
+namespace kerf::ui {
+
+// The interpreter for a program on the machine: Klartext for .H files (and on a mill), FAGOR on
+// a lathe, loaded from the editor's text and checked. It reads the NC root's tool table.
+struct LoadedProgram {
+    std::unique_ptr<program::SourceRegistry> sources;
+    std::unique_ptr<tables::ToolTable> tools;
+    std::unique_ptr<interp::Interpreter> interpreter;  // nullptr: diagnostics say why
+    DiagnosticList diagnostics;
+};
+
+struct ProgramSource {
+    std::string text;
+    std::filesystem::path path;  // names the program in messages; decides the dialect
+    std::filesystem::path ncRoot;
+    Pose startPosition{};  // where the tool tip stands, workpiece coordinates
+};
+
+LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSource& source);
+
+// One MDI block as a program of its own dialect (Klartext: between BEGIN PGM and END PGM).
+std::string mdiProgram(const machine::MachineConfig& machine, const std::string& block);
+
+}  // namespace kerf::ui

@@ -1,0 +1,147 @@
+#include "ui/shell/machine_rows.h"
+
+#include <QCoreApplication>
+#include <QInputDialog>
+#include <QLineEdit>
+
+#include "ui/session/machine_session.h"
+
+namespace kerf::ui {
+
+namespace {
+
+// The texts' translation context.
+class MachineRows {
+    Q_DECLARE_TR_FUNCTIONS(kerf::ui::MachineRows)
+};
+
+QString incrementText(double mm) {
+    if (mm <= 0.0) return MachineRows::tr("Increment\ncontinuous");
+    return MachineRows::tr("Increment\n%1 mm").arg(mm);
+}
+
+// Continuous jog: a touch starts the axis, the next touch of any jog key stops it.
+SoftkeyRow jogRow(const MachineRowContext& c) {
+    MachineSession* session = c.session;
+    SoftkeyRow row;
+    int keys = 0;
+    for (const machine::AxisConfig& axis : session->machine().axes) {
+        if (!axis.enabled || keys + 2 > 6) continue;
+        const auto letter = axisFromLetter(axis.letter);
+        if (!letter) continue;
+        for (int direction : {-1, 1}) {
+            const QString name =
+                QStringLiteral("%1%2").arg(axis.letter).arg(direction < 0 ? '-' : '+');
+            row.push_back({QStringLiteral("jog") + name, name, [session, letter, direction] {
+                               if (session->incrementMm() > 0.0) {
+                                   session->jogIncrement(*letter, direction);
+                               } else if (session->status().state == task::MachineState::Jogging) {
+                                   session->jogStop(*letter);
+                               } else {
+                                   session->jog(*letter, direction);
+                               }
+                           }});
+        }
+        keys += 2;
+    }
+    row.push_back({QStringLiteral("increment"), incrementText(session->incrementMm()),
+                   [session, refresh = c.refresh] {
+                       const std::vector<double>& steps = jogIncrementsMm();
+                       size_t next = 0;
+                       for (size_t i = 0; i < steps.size(); ++i)
+                           if (steps[i] == session->incrementMm()) next = (i + 1) % steps.size();
+                       session->setIncrementMm(steps[next]);
+                       if (refresh) refresh();
+                   }});
+    row.push_back({QStringLiteral("homeAll"), MachineRows::tr("Home\nall"),
+                   [session] { session->homeAll(); }});
+    return row;
+}
+
+SoftkeyRow spindleRow(const MachineRowContext& c) {
+    MachineSession* session = c.session;
+    return {
+        {QStringLiteral("spindleOn"), MachineRows::tr("Spindle\non"),
+         [session] { session->spindle(true); }},
+        {QStringLiteral("spindleOff"), MachineRows::tr("Spindle\noff"),
+         [session] { session->spindle(false); }},
+    };
+}
+
+SoftkeyRow runRow(const MachineRowContext& c) {
+    MachineSession* session = c.session;
+    auto start = c.startProgram;
+    QWidget* parent = c.dialogParent;
+    return {
+        {QStringLiteral("ncStart"), MachineRows::tr("NC\nstart"),
+         [session, start] {
+             if (session->busy()) {
+                 session->cycleStart();
+             } else if (start) {
+                 start(std::nullopt);
+             }
+         }},
+        {QStringLiteral("ncStop"), MachineRows::tr("NC stop\n(feed hold)"),
+         [session] { session->feedHold(); }},
+        {QStringLiteral("resume"), MachineRows::tr("Resume"), [session] { session->cycleStart(); }},
+        {QStringLiteral("abort"), MachineRows::tr("Stop"), [session] { session->stop(); }},
+        {QStringLiteral("startAtBlock"), MachineRows::tr("Start at\nblock"),
+         [start, parent] {
+             bool ok = false;
+             const int line = QInputDialog::getInt(parent, MachineRows::tr("Start at block"),
+                                                   MachineRows::tr("Line of the first block"), 1, 1,
+                                                   1 << 30, 1, &ok);
+             if (ok && start) start(static_cast<uint32_t>(line));
+         }},
+        {QStringLiteral("singleBlock"),
+         session->singleBlock() ? MachineRows::tr("Single block\non")
+                                : MachineRows::tr("Single block\noff"),
+         [session, refresh = c.refresh] {
+             session->setSingleBlock(!session->singleBlock());
+             if (refresh) refresh();
+         }},
+    };
+}
+
+SoftkeyRow mdiRow(const MachineRowContext& c) {
+    MachineSession* session = c.session;
+    QWidget* parent = c.dialogParent;
+    return {
+        {QStringLiteral("mdiExecute"), MachineRows::tr("Execute\nblock"),
+         [session, parent] {
+             bool ok = false;
+             const QString block =
+                 QInputDialog::getText(parent, MachineRows::tr("Positioning with MDI"),
+                                       MachineRows::tr("Block"), QLineEdit::Normal, QString(), &ok);
+             if (ok && !block.trimmed().isEmpty()) session->executeMdi(block);
+         }},
+        {QStringLiteral("ncStop"), MachineRows::tr("NC stop\n(feed hold)"),
+         [session] { session->feedHold(); }},
+        {QStringLiteral("resume"), MachineRows::tr("Resume"), [session] { session->cycleStart(); }},
+        {QStringLiteral("abort"), MachineRows::tr("Stop"), [session] { session->stop(); }},
+    };
+}
+
+}  // namespace
+
+const std::vector<double>& jogIncrementsMm() {
+    static const std::vector<double> steps{0.0, 0.001, 0.01, 0.1, 1.0, 10.0};
+    return steps;
+}
+
+std::vector<SoftkeyRow> machineModeRows(task::MachineMode mode, const MachineRowContext& context) {
+    if (context.session == nullptr) return {};
+    switch (mode) {
+        case task::MachineMode::Manual:
+        case task::MachineMode::Handwheel:
+            return {jogRow(context), spindleRow(context)};
+        case task::MachineMode::Mdi:
+            return {mdiRow(context)};
+        case task::MachineMode::SingleBlock:
+        case task::MachineMode::FullSequence:
+            return {runRow(context)};
+    }
+    return {};
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,191 @@
+#include "ui/status/position_display.h"
+
+#include <QCoreApplication>
+#include <QEvent>
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include "ui/status/override_controls.h"
+
+namespace kerf::ui {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+double pick(const task::AxisStatus& axis, PositionKind kind) {
+    switch (kind) {
+        case PositionKind::Actual:
+            return axis.actual;
+        case PositionKind::Nominal:
+            return axis.nominal;
+        case PositionKind::ReferenceActual:
+            return axis.machineActual;
+        case PositionKind::ReferenceNominal:
+            return axis.machineNominal;
+        case PositionKind::Lag:
+            return axis.followingError;
+        case PositionKind::DistanceToGo:
+            return axis.distanceToGo;
+    }
+    return 0.0;
+}
+
+// Core's KERF_TR_NOOP texts are translated in the "kerf" context.
+QString coreText(const char* text) {
+    return QCoreApplication::translate("kerf", text);
+}
+
+}  // namespace
+
+PositionDisplay::PositionDisplay(const machine::MachineConfig& machine, QWidget* parent)
+    : QWidget(parent) {
+    setObjectName("positionsPanel");  // the workspace panel's name in the shell
+    auto* layout = new QVBoxLayout(this);
+    auto* header = new QHBoxLayout();
+    m_kind = new QLabel(this);
+    m_kind->setObjectName("positionKind");
+    m_state = new QLabel(this);
+    m_state->setObjectName("runState");
+    m_state->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    header->addWidget(m_kind);
+    header->addWidget(m_state, 1);
+    layout->addLayout(header);
+
+    QFont digits = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    digits.setPointSizeF(digits.pointSizeF() * 2.0);
+    digits.setBold(true);
+    auto* grid = new QGridLayout();
+    int row = 0;
+    for (const machine::AxisConfig& config : machine.axes) {
+        if (!config.enabled) continue;
+        const auto axis = axisFromLetter(config.letter);
+        if (!axis) continue;
+        AxisRow& r = m_axes[static_cast<size_t>(axisIndex(*axis))];
+        r.present = true;
+        r.rotary = config.type == machine::AxisType::Rotary;
+        r.diameter = config.diameterMode;
+        r.name = new QLabel(r.diameter ? QStringLiteral("%1 \u2300").arg(config.letter)
+                                       : QString(QChar(config.letter)),
+                            this);
+        r.name->setFont(digits);
+        r.value = new QLabel(this);
+        r.value->setObjectName(QStringLiteral("position%1").arg(config.letter));
+        r.value->setFont(digits);
+        r.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        grid->addWidget(r.name, row, 0);
+        grid->addWidget(r.value, row, 1);
+        ++row;
+    }
+    grid->setColumnStretch(1, 1);
+    layout->addLayout(grid);
+
+    m_tool = new QLabel(this);
+    m_tool->setObjectName("activeTool");
+    m_feed = new QLabel(this);
+    m_feed->setObjectName("feedRate");
+    m_spindle = new QLabel(this);
+    m_spindle->setObjectName("spindleSpeed");
+    layout->addWidget(m_tool);
+    layout->addWidget(m_feed);
+    layout->addWidget(m_spindle);
+    layout->addStretch(1);
+    m_overrides = new OverrideControls(this);
+    layout->addWidget(m_overrides);
+    retranslate();
+}
+
+double PositionDisplay::shownValue(const task::AxisStatus& axis, PositionKind kind, bool diameter,
+                                   bool inch, bool rotary) {
+    double value = pick(axis, kind);
+    if (diameter) value *= 2.0;
+    if (inch && !rotary) value /= kMmPerInch;
+    return value;
+}
+
+QString PositionDisplay::kindText(PositionKind kind) {
+    switch (kind) {
+        case PositionKind::Actual:
+            return tr("ACTL.");
+        case PositionKind::Nominal:
+            return tr("NOML.");
+        case PositionKind::ReferenceActual:
+            return tr("REF ACTL.");
+        case PositionKind::ReferenceNominal:
+            return tr("REF NOML.");
+        case PositionKind::Lag:
+            return tr("LAG");
+        case PositionKind::DistanceToGo:
+            return tr("DIST.");
+    }
+    return {};
+}
+
+void PositionDisplay::setDisplaySettings(const DisplaySettings& settings) {
+    m_settings = settings;
+    refresh();
+}
+
+void PositionDisplay::setStatus(const task::MachineStatus& status) {
+    m_status = status;
+    refresh();
+}
+
+void PositionDisplay::setRunState(const QString& text) {
+    m_runState = text;
+    refresh();
+}
+
+QString PositionDisplay::axisText(Axis axis) const {
+    const AxisRow& r = m_axes[static_cast<size_t>(axisIndex(axis))];
+    return r.present ? r.value->text() : QString();
+}
+
+QString PositionDisplay::toolText() const {
+    return m_tool->text();
+}
+
+void PositionDisplay::refresh() {
+    const bool inch = m_settings.inch;
+    for (size_t i = 0; i < m_axes.size(); ++i) {
+        const AxisRow& r = m_axes[i];
+        if (!r.present) continue;
+        const double value =
+            shownValue(m_status.axes[i], m_settings.positionKind, r.diameter, inch, r.rotary);
+        const int decimals = inch && !r.rotary ? 4 : 3;
+        r.value->setText(QStringLiteral("%1%2")
+                             .arg(value < 0.0 ? QStringLiteral("-") : QStringLiteral("+"))
+                             .arg(std::abs(value), 0, 'f', decimals));
+        r.name->setStyleSheet(m_status.axes[i].homed ? QString()
+                                                     : QStringLiteral("color: #b00000;"));
+    }
+    m_kind->setText(kindText(m_settings.positionKind) +
+                    (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")));
+    QString state = coreText(task::machineStateName(m_status.state));
+    if (!m_runState.isEmpty()) state = tr("Program: %1   Machine: %2").arg(m_runState, state);
+    if (m_status.block.line > 0) state += tr("   Line %1").arg(m_status.block.line);
+    m_state->setText(state);
+    m_tool->setText(tr("T %1").arg(m_status.toolNumber));
+    const double feedScale = inch ? 1.0 / kMmPerInch : 1.0;
+    const int feedDecimals = inch ? 1 : 0;
+    m_feed->setText(tr("F %1 (actual %2) %3")
+                        .arg(m_status.programmedFeedMmPerMin * feedScale, 0, 'f', feedDecimals)
+                        .arg(m_status.actualFeedMmPerMin * feedScale, 0, 'f', feedDecimals)
+                        .arg(inch ? tr("inch/min") : tr("mm/min")));
+    m_spindle->setText(tr("S %1 (actual %2) rpm")
+                           .arg(m_status.programmedSpindleRpm, 0, 'f', 0)
+                           .arg(m_status.actualSpindleRpm, 0, 'f', 0));
+}
+
+void PositionDisplay::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void PositionDisplay::retranslate() {
+    refresh();
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <QString>
+#include <QWidget>
+#include <array>
+
+#include "core/machine/machine_config.h"
+#include "core/task/machine_status.h"
+#include "ui/common/display_settings.h"
+
+class QLabel;
+
+namespace kerf::ui {
+
+class OverrideControls;
+
+// The position display of the machine modes: the machine's axes with the kind of position chosen
+// in MOD (ACTL, NOML, REF ACTL, REF NOML, LAG, DIST), in mm or inch, lathe X as a diameter where
+// the machine says so; the run state, active tool, S and F (programmed and actual) and the
+// override controls.
+class PositionDisplay : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit PositionDisplay(const machine::MachineConfig& machine, QWidget* parent = nullptr);
+
+    void setDisplaySettings(const DisplaySettings& settings);
+    const DisplaySettings& displaySettings() const { return m_settings; }
+    void setStatus(const task::MachineStatus& status);
+    // The program run's state next to the machine's ("running", "feed hold", ...).
+    void setRunState(const QString& text);
+
+    OverrideControls* overrides() const { return m_overrides; }
+    // The text shown for an axis (e.g. "+12.500"); empty for an axis the machine lacks.
+    QString axisText(Axis axis) const;
+    QString toolText() const;
+
+    // The value of one axis as the settings show it: the kind of position, lathe diameter, unit.
+    static double shownValue(const task::AxisStatus& axis, PositionKind kind, bool diameter,
+                             bool inch, bool rotary);
+    static QString kindText(PositionKind kind);
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    struct AxisRow {
+        bool present = false;
+        bool rotary = false;
+        bool diameter = false;
+        QLabel* name = nullptr;
+        QLabel* value = nullptr;
+    };
+
+    void refresh();
+    void retranslate();
+
+    DisplaySettings m_settings;
+    task::MachineStatus m_status;
+    QString m_runState;
+    std::array<AxisRow, kAxisCount> m_axes{};
+    QLabel* m_kind = nullptr;
+    QLabel* m_state = nullptr;
+    QLabel* m_tool = nullptr;
+    QLabel* m_feed = nullptr;
+    QLabel* m_spindle = nullptr;
+    OverrideControls* m_overrides = nullptr;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,309 @@
+#include "ui/status/status_tabs.h"
+
+#include <QCoreApplication>
+#include <QEvent>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <utility>
+#include <vector>
+
+namespace kerf::ui {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+using Row = std::pair<QString, QString>;
+
+QTableWidget* makeTable(int columns, const char* objectName, QWidget* parent) {
+    auto* table = new QTableWidget(0, columns, parent);
+    table->setObjectName(objectName);
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setSelectionMode(QAbstractItemView::NoSelection);
+    table->setFocusPolicy(Qt::NoFocus);
+    table->verticalHeader()->hide();
+    table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    table->verticalHeader()->setDefaultSectionSize(StatusTabs::kMinimumRowHeight);
+    table->horizontalHeader()->setStretchLastSection(true);
+    table->setVerticalScrollMode(QAbstractItemView::ScrollPerPixel);
+    if (columns == 2) table->horizontalHeader()->hide();
+    return table;
+}
+
+QTableWidgetItem* item(const QString& text, bool alignRight = false) {
+    auto* it = new QTableWidgetItem(text);
+    if (alignRight) it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return it;
+}
+
+void fill(QTableWidget* table, const std::vector<Row>& rows) {
+    table->setRowCount(static_cast<int>(rows.size()));
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const int r = static_cast<int>(i);
+        table->setItem(r, 0, item(rows[i].first));
+        table->setItem(r, 1, item(rows[i].second));
+    }
+    table->resizeColumnToContents(0);
+}
+
+QString number(double value, int decimals) {
+    return QString::number(value, 'f', decimals);
+}
+
+QString angleText(double degrees) {
+    return number(degrees, 3) + QStringLiteral("\u00b0");
+}
+
+QString axisName(int index) {
+    return QString(QChar(axisLetter(static_cast<Axis>(index))));
+}
+
+bool isRotary(int index) {
+    const auto axis = static_cast<Axis>(index);
+    return axis == Axis::A || axis == Axis::B || axis == Axis::C;
+}
+
+}  // namespace
+
+StatusTabs::StatusTabs(char parameterLetter, QWidget* parent) : QTabWidget(parent) {
+    setObjectName("statusPanel");
+    m_status.parameterLetter = parameterLetter;
+    // Touch: tabs as tall as the softkeys.
+    setStyleSheet(QStringLiteral("QTabBar::tab { min-height: %1px; padding: 0 8px; }")
+                      .arg(kMinimumRowHeight));
+
+    m_program = makeTable(2, "statusProgram", this);
+    m_tool = makeTable(2, "statusTool", this);
+    m_transformations = makeTable(2, "statusTransformations", this);
+    m_probe = makeTable(2, "statusProbe", this);
+
+    auto* parameterPage = new QWidget(this);
+    auto* layout = new QVBoxLayout(parameterPage);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_filter = new QLineEdit(parameterPage);
+    m_filter->setObjectName("statusParameterFilter");
+    m_filter->setClearButtonEnabled(true);
+    m_filter->setMinimumHeight(kMinimumRowHeight);
+    m_parameters = makeTable(3, "statusParameters", parameterPage);
+    layout->addWidget(m_filter);
+    layout->addWidget(m_parameters, 1);
+    connect(m_filter, &QLineEdit::textChanged, this, [this] { applyFilter(); });
+
+    addTab(m_program, QString());
+    addTab(m_tool, QString());
+    addTab(m_transformations, QString());
+    addTab(parameterPage, QString());
+    addTab(m_probe, QString());
+    retranslate();
+}
+
+QTableWidget* StatusTabs::table(Tab tab) const {
+    switch (tab) {
+        case Tab::Program:
+            return m_program;
+        case Tab::Tool:
+            return m_tool;
+        case Tab::Transformations:
+            return m_transformations;
+        case Tab::Parameters:
+            return m_parameters;
+        case Tab::Probe:
+            break;
+    }
+    return m_probe;
+}
+
+QString StatusTabs::valueOf(Tab tab, const QString& name) const {
+    const QTableWidget* t = table(tab);
+    for (int r = 0; r < t->rowCount(); ++r) {
+        if (t->item(r, 0) != nullptr && t->item(r, 0)->text() == name) {
+            return t->item(r, 1) != nullptr ? t->item(r, 1)->text() : QString();
+        }
+    }
+    return {};
+}
+
+QString StatusTabs::lengthText(double mm, bool inch) {
+    return inch ? number(mm / kMmPerInch, 4) + QStringLiteral(" in")
+                : number(mm, 3) + QStringLiteral(" mm");
+}
+
+void StatusTabs::setProgramStatus(const interp::ProgramStatus& status) {
+    if (status == m_status) return;  // called every service cycle while a program runs
+    m_status = status;
+    refresh();
+}
+
+void StatusTabs::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QTabWidget::changeEvent(event);
+}
+
+void StatusTabs::retranslate() {
+    setTabText(static_cast<int>(Tab::Program), tr("PGM"));
+    setTabText(static_cast<int>(Tab::Tool), tr("TOOL"));
+    setTabText(static_cast<int>(Tab::Transformations), tr("TRANS"));
+    setTabText(static_cast<int>(Tab::Probe), tr("PROBE"));
+    refresh();
+}
+
+void StatusTabs::refresh() {
+    const QString letter(QChar(m_status.parameterLetter));
+    setTabText(static_cast<int>(Tab::Parameters), tr("%1PARA").arg(letter));
+    m_filter->setPlaceholderText(tr("Filter, e.g. %1").arg(letter + QStringLiteral("1")));
+    fillProgram();
+    fillTool();
+    fillTransformations();
+    fillParameters();
+    fillProbe();
+}
+
+void StatusTabs::fillProgram() {
+    const auto& s = m_status;
+    const QString none = tr("none");
+    QString cycle = none;
+    if (s.cycle) {
+        cycle = QString::number(s.cycle->number);
+        if (!s.cycle->name.empty()) {
+            cycle += ' ' + QCoreApplication::translate("kerf", s.cycle->name.c_str());
+        }
+    }
+    QStringList m;
+    for (int number : s.activeM)
+        m << QStringLiteral("M%1").arg(number);
+    const QString active = QString::fromStdString(s.activeProgram);
+    const QString main = QString::fromStdString(s.mainProgram);
+    fill(m_program, {{tr("Program"), main.isEmpty() ? none : main},
+                     {tr("Called program"),
+                      s.activeProgram == s.mainProgram || active.isEmpty() ? none : active},
+                     {tr("Label"), s.label.empty() ? none : QString::fromStdString(s.label)},
+                     {tr("Cycle"), cycle},
+                     {tr("M functions"), m.isEmpty() ? none : m.join(' ')},
+                     {tr("Line"), s.line == 0 ? QString() : QString::number(s.line)},
+                     {tr("Unit"), s.inch ? tr("inch") : tr("mm")}});
+}
+
+void StatusTabs::fillTool() {
+    const auto& t = m_status.tool;
+    const bool inch = m_status.inch;
+    if (t.number < 0) {
+        fill(m_tool, {{tr("Tool"), tr("none")}});
+        return;
+    }
+    std::vector<Row> rows{{tr("Tool"), QString::number(t.number)}};
+    if (!t.name.empty()) rows.push_back({tr("Name"), QString::fromStdString(t.name)});
+    if (t.lathe) {
+        const auto& d = *t.lathe;
+        rows.push_back({tr("Offset"), QStringLiteral("D%1").arg(d.number)});
+        rows.push_back({tr("X (radius)"), lengthText(d.xMm, inch)});
+        rows.push_back({tr("Z"), lengthText(d.zMm, inch)});
+        rows.push_back({tr("R"), lengthText(t.radiusMm, inch)});
+        rows.push_back({tr("Wear X (I)"), lengthText(d.wearXMm, inch)});
+        rows.push_back({tr("Wear Z (K)"), lengthText(d.wearZMm, inch)});
+        rows.push_back({tr("Location code (F)"), QString::number(d.location)});
+    } else {
+        rows.push_back({tr("L"), lengthText(t.lengthMm, inch)});
+        rows.push_back({tr("R"), lengthText(t.radiusMm, inch)});
+        rows.push_back({tr("DL"), lengthText(t.deltaLengthMm, inch)});
+        rows.push_back({tr("DR"), lengthText(t.deltaRadiusMm, inch)});
+        rows.push_back({tr("Tool axis"), QString(QChar(axisLetter(t.axis)))});
+    }
+    fill(m_tool, rows);
+}
+
+void StatusTabs::fillTransformations() {
+    const auto& t = m_status.transformations;
+    const bool inch = m_status.inch;
+    std::vector<Row> rows;
+    if (!t.datum.empty()) rows.push_back({tr("Zero offset"), QString::fromStdString(t.datum)});
+    // X, Y and Z always; other axes when shifted.
+    for (int i = 0; i < kAxisCount; ++i) {
+        const double v = t.datumShift.values[static_cast<size_t>(i)];
+        if (i > 2 && v == 0.0) continue;
+        rows.push_back({tr("Datum shift %1").arg(axisName(i)),
+                        isRotary(i) ? angleText(v) : lengthText(v, inch)});
+    }
+    QStringList mirrored;
+    for (int i = 0; i < kAxisCount; ++i) {
+        if ((t.mirrored & axisBit(static_cast<Axis>(i))) != 0) mirrored << axisName(i);
+    }
+    rows.push_back({tr("Mirrored axes"), mirrored.isEmpty() ? tr("none") : mirrored.join(' ')});
+    rows.push_back({tr("Rotation"), angleText(t.rotationDeg)});
+    // One factor when X, Y, Z (and other linear axes that are scaled) share it, as with cycle 11
+    // or G72 S; else each of them.
+    QStringList factors;
+    bool uniform = true;
+    for (int i = 0; i < kAxisCount; ++i) {
+        const double f = t.scale[static_cast<size_t>(i)];
+        if (isRotary(i) || (i > 2 && f == 1.0)) continue;
+        uniform = uniform && f == t.scale[0];
+        factors << axisName(i) + ' ' + number(f, 4);
+    }
+    rows.push_back(
+        {tr("Scaling"), uniform ? number(t.scale[0], 4) : factors.join(QStringLiteral("  "))});
+    fill(m_transformations, rows);
+}
+
+void StatusTabs::fillParameters() {
+    using Scope = interp::ProgramStatus::ParameterScope;
+    m_parameters->setHorizontalHeaderLabels({tr("Name"), tr("Value"), tr("Kind")});
+    const auto& list = m_status.parameters;
+    m_parameters->setRowCount(static_cast<int>(list.size()));
+    for (size_t i = 0; i < list.size(); ++i) {
+        const auto& p = list[i];
+        const int r = static_cast<int>(i);
+        QString kind;
+        switch (p.scope) {
+            case Scope::Global:
+                kind = tr("global");
+                break;
+            case Scope::Local:
+                kind = m_status.parameterLetter == 'P' ? tr("local, level %1").arg(p.level)
+                                                       : tr("local");
+                break;
+            case Scope::Remanent:
+                kind = tr("remanent");
+                break;
+            case Scope::Text:
+                kind = tr("text");
+                break;
+        }
+        const QString value = p.scope == Scope::Text
+                                  ? QStringLiteral("\"%1\"").arg(QString::fromStdString(p.text))
+                                  : QString::number(p.value, 'g', 12);
+        m_parameters->setItem(r, 0, item(QString::fromStdString(p.name)));
+        m_parameters->setItem(r, 1, item(value, p.scope != Scope::Text));
+        m_parameters->setItem(r, 2, item(kind));
+    }
+    m_parameters->resizeColumnToContents(0);
+    m_parameters->resizeColumnToContents(1);
+    applyFilter();
+}
+
+void StatusTabs::applyFilter() {
+    const QString filter = m_filter->text().trimmed();
+    for (int r = 0; r < m_parameters->rowCount(); ++r) {
+        const QTableWidgetItem* name = m_parameters->item(r, 0);
+        const bool shown = filter.isEmpty() ||
+                           (name != nullptr && name->text().contains(filter, Qt::CaseInsensitive));
+        m_parameters->setRowHidden(r, !shown);
+    }
+}
+
+void StatusTabs::fillProbe() {
+    if (!m_status.probe) {
+        fill(m_probe, {{tr("Probe"), tr("no result")}});
+        return;
+    }
+    const auto& p = *m_status.probe;
+    std::vector<Row> rows{{tr("Probe"), p.triggered ? tr("touched") : tr("not touched")}};
+    for (int i = 0; i < 3; ++i) {
+        rows.push_back(
+            {axisName(i), lengthText(p.position.values[static_cast<size_t>(i)], m_status.inch)});
+    }
+    fill(m_probe, rows);
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <QTabWidget>
+
+#include "core/interp/program_status.h"
+
+class QLineEdit;
+class QTableWidget;
+
+namespace kerf::ui {
+
+// The status tabs beside the program or the positions, as on a TNC: PGM (program, label, cycle,
+// M functions), TOOL, TRANS (datum shift, mirroring, rotation, scaling), Q parameters (Fagor: P)
+// with a filter, and PROBE. Lengths are shown in the program's unit (mm or inch). Rows and tabs
+// are at least 48 px high for touch.
+class StatusTabs : public QTabWidget {
+    Q_OBJECT
+
+public:
+    enum class Tab : int { Program, Tool, Transformations, Parameters, Probe };
+    static constexpr int kMinimumRowHeight = 48;
+
+    // parameterLetter: 'Q' (TNC) or 'P' (Fagor), until a status says which.
+    explicit StatusTabs(char parameterLetter = 'Q', QWidget* parent = nullptr);
+
+    const interp::ProgramStatus& programStatus() const { return m_status; }
+    QTableWidget* table(Tab tab) const;
+    QLineEdit* parameterFilter() const { return m_filter; }
+    // The value shown in `tab` for the row whose first column is `name`; empty if there is none.
+    QString valueOf(Tab tab, const QString& name) const;
+
+    // "40.000 mm" or "1.5748 in": a length given in mm, in the program's unit.
+    static QString lengthText(double mm, bool inch);
+
+public slots:
+    void setProgramStatus(const kerf::interp::ProgramStatus& status);
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void refresh();
+    void fillProgram();
+    void fillTool();
+    void fillTransformations();
+    void fillParameters();
+    void fillProbe();
+    void applyFilter();
+    void retranslate();
+
+    interp::ProgramStatus m_status;
+    QTableWidget* m_program = nullptr;
+    QTableWidget* m_tool = nullptr;
+    QTableWidget* m_transformations = nullptr;
+    QTableWidget* m_parameters = nullptr;
+    QTableWidget* m_probe = nullptr;
+    QLineEdit* m_filter = nullptr;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,240 @@
+#include "ui/testrun/test_run_controller.h"
+
+#include <QMetaObject>
+#include <QTimer>
+#include <limits>
+
+#include "graphics/stock/progressive_stock.h"
+#include "ui/common/diagnostic_text.h"
+
+namespace kerf::ui {
+
+double speedFactor(TestRunSpeed speed) {
+    switch (speed) {
+        case TestRunSpeed::Real:
+            return 1.0;
+        case TestRunSpeed::Times10:
+            return 10.0;
+        case TestRunSpeed::Times100:
+            return 100.0;
+        case TestRunSpeed::Max:
+            break;
+    }
+    return std::numeric_limits<double>::infinity();
+}
+
+QString speedText(TestRunSpeed speed) {
+    switch (speed) {
+        case TestRunSpeed::Real:
+            return QStringLiteral("x1");
+        case TestRunSpeed::Times10:
+            return QStringLiteral("x10");
+        case TestRunSpeed::Times100:
+            return QStringLiteral("x100");
+        case TestRunSpeed::Max:
+            break;
+    }
+    return TestRunController::tr("max");
+}
+
+TestRunController::TestRunController(machine::MachineConfig machine, std::filesystem::path ncRoot,
+                                     QObject* parent)
+    : QObject(parent), m_machine(std::move(machine)), m_ncRoot(std::move(ncRoot)) {
+    registerDiagnosticMetaTypes();
+    m_timer = new QTimer(this);
+    m_timer->setInterval(50);  // 20 frames a second: enough for software OpenGL
+    connect(m_timer, &QTimer::timeout, this, &TestRunController::tick);
+}
+
+TestRunController::~TestRunController() {
+    stopWorker();
+}
+
+void TestRunController::stopWorker() {
+    m_cancel = true;
+    if (m_worker.joinable()) m_worker.join();
+    m_cancel = false;
+}
+
+void TestRunController::prepare(const QString& text, const std::filesystem::path& path,
+                                program::Dialect dialect) {
+    stopWorker();
+    m_timer->stop();
+    m_preparedText = text;
+    m_preparedPath = path;
+    TestRunInput input;
+    input.text = text.toStdString();
+    input.path = path.empty() ? std::filesystem::path("PROGRAM") : path;
+    m_preparedFile = input.path.string();
+    input.dialect = dialect;
+    input.machine = m_machine;
+    input.ncRoot = m_ncRoot;
+    const uint64_t generation = ++m_generation;
+    setState(State::Interpreting);
+    m_worker = std::thread([this, input = std::move(input), generation] {
+        auto program =
+            std::make_shared<const TestRunProgram>(interpretForTestRun(input, &m_cancel));
+        if (program->cancelled) return;
+        // Queued to the UI thread; dropped by Qt if this object is gone by then.
+        QMetaObject::invokeMethod(
+            this, [this, program, generation] { onInterpreted(program, generation); },
+            Qt::QueuedConnection);
+    });
+}
+
+void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> program,
+                                      uint64_t generation) {
+    if (generation != m_generation) return;  // a newer text is being interpreted
+    if (m_worker.joinable()) m_worker.join();
+    m_program = std::move(program);
+    m_shownStatus = nullptr;
+    for (const Diagnostic& d : m_program->diagnostics) {
+        // Only lines of the program in the editor can be jumped to.
+        const bool inEditor = d.file.empty() || d.file == m_preparedFile;
+        emit diagnostic(d.severity, tr("Test run: %1").arg(translatedMessage(d)),
+                        inEditor ? static_cast<int>(d.line) : 0);
+    }
+    m_timeS = 0.0;
+    newStock();
+    emit programReady();
+    emit progressChanged(m_timeS);
+    publishStatus();
+    if (!m_program->ran) {
+        m_playWhenReady = false;
+        setState(State::Failed);
+        return;
+    }
+    setState(State::Ready);
+    if (m_playWhenReady) {
+        m_playWhenReady = false;
+        play();
+    }
+}
+
+void TestRunController::start(const QString& text, const std::filesystem::path& path,
+                              program::Dialect dialect) {
+    if (m_state == State::Interpreting) {
+        m_playWhenReady = true;
+        return;
+    }
+    if (!m_program || text != m_preparedText || path != m_preparedPath) {
+        m_playWhenReady = true;
+        prepare(text, path, dialect);
+        return;
+    }
+    if (m_state == State::Finished) reset();
+    play();
+}
+
+void TestRunController::play() {
+    if (m_state != State::Ready && m_state != State::Stopped) return;
+    setState(State::Playing);
+    m_clock.start();
+    if (m_speed == TestRunSpeed::Max) return advance(0.0);
+    if (m_timer->interval() > 0) m_timer->start();
+}
+
+void TestRunController::stop() {
+    m_playWhenReady = false;
+    if (m_state != State::Playing) return;
+    m_timer->stop();
+    setState(State::Stopped);
+}
+
+void TestRunController::reset() {
+    m_timer->stop();
+    m_playWhenReady = false;
+    if (!m_program || m_state == State::Interpreting) return;
+    m_timeS = 0.0;
+    newStock();
+    emit progressChanged(m_timeS);
+    m_shownStatus = nullptr;
+    publishStatus();
+    setState(m_program->ran ? State::Ready : State::Failed);
+}
+
+void TestRunController::setSpeed(TestRunSpeed speed) {
+    if (speed == m_speed) return;
+    m_speed = speed;
+    emit speedChanged();
+    if (m_state == State::Playing && speed == TestRunSpeed::Max) advance(0.0);
+    if (m_state == State::Playing && m_timer->interval() > 0) m_timer->start();
+}
+
+void TestRunController::setTickMs(int milliseconds) {
+    m_timer->setInterval(milliseconds);
+    if (milliseconds <= 0) m_timer->stop();
+}
+
+double TestRunController::machiningTimeS() const {
+    return m_program ? m_program->machiningTimeS() : 0.0;
+}
+
+Vec3 TestRunController::toolPosition() const {
+    return m_program ? m_program->toolPositionAt(m_timeS) : Vec3(0.0, 0.0, 0.0);
+}
+
+int TestRunController::currentLine() const {
+    if (!m_program || m_program->commands.empty()) return 0;
+    const size_t index = std::min(m_program->commandAt(m_timeS), m_program->commands.size() - 1);
+    return static_cast<int>(m_program->commands[index].location.line);
+}
+
+void TestRunController::tick() {
+    const double elapsedS = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+    m_clock.restart();
+    advance(elapsedS);
+}
+
+void TestRunController::advance(double wallSeconds) {
+    if (m_state != State::Playing || !m_program) return;
+    const double total = m_program->machiningTimeS();
+    m_timeS = m_speed == TestRunSpeed::Max
+                  ? total
+                  : std::min(total, m_timeS + wallSeconds * speedFactor(m_speed));
+    pushUpTo(m_timeS);
+    emit progressChanged(m_timeS);
+    publishStatus();
+    if (m_timeS >= total) {
+        m_timer->stop();
+        m_stock->finish();
+        setState(State::Finished);
+    }
+}
+
+void TestRunController::newStock() {
+    m_stock.reset();
+    m_pushed = 0;
+    if (m_program) {
+        m_stock = std::make_unique<graphics::ProgressiveStock>(m_program->stockOptions);
+        m_stock->setStart(m_program->start);
+        pushUpTo(m_timeS);  // BLK FORM and tool call at time zero: the blank shows at once
+    }
+    emit stockReplaced(m_stock.get());
+}
+
+void TestRunController::pushUpTo(double timeS) {
+    if (!m_program || !m_stock) return;
+    const size_t end = std::min(m_program->commandAt(timeS), m_program->commands.size());
+    if (end <= m_pushed) return;
+    std::vector<canon::Command> batch(m_program->commands.begin() + static_cast<long>(m_pushed),
+                                      m_program->commands.begin() + static_cast<long>(end));
+    m_stock->push(std::move(batch));
+    m_pushed = end;
+}
+
+void TestRunController::publishStatus() {
+    const TestRunProgram::StatusSnapshot* snapshot =
+        m_program ? m_program->statusAt(m_timeS) : nullptr;
+    if (snapshot == nullptr || snapshot == m_shownStatus) return;
+    m_shownStatus = snapshot;
+    emit programStatusChanged(snapshot->status);
+}
+
+void TestRunController::setState(State state) {
+    if (state == m_state) return;
+    m_state = state;
+    emit stateChanged();
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,110 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <memory>
+#include <thread>
+
+#include "core/base/diagnostic.h"
+#include "ui/common/diagnostic_text.h"
+#include "ui/testrun/test_run_program.h"
+
+class QTimer;
+
+namespace kerf::graphics {
+class ProgressiveStock;
+}
+
+namespace kerf::ui {
+
+// Playback speeds of the test run, in machining time per wall-clock time.
+enum class TestRunSpeed { Real, Times10, Times100, Max };
+double speedFactor(TestRunSpeed speed);  // Max: infinity
+QString speedText(TestRunSpeed speed);   // "x1", "x10", "x100", "max"
+
+// The test run (programming mode Test run): interprets the editor's program off the UI thread,
+// then plays it back by machining time at a selectable speed, removing material from the stock
+// on the stock worker as the playback passes each command. Diagnostics of the run are reported
+// with their line. UI thread only.
+class TestRunController : public QObject {
+    Q_OBJECT
+
+public:
+    enum class State { Empty, Interpreting, Ready, Playing, Stopped, Finished, Failed };
+
+    TestRunController(machine::MachineConfig machine, std::filesystem::path ncRoot,
+                      QObject* parent = nullptr);
+    ~TestRunController() override;
+
+    // Interprets a program (replacing the one prepared); programReady() or failed() follows.
+    void prepare(const QString& text, const std::filesystem::path& path, program::Dialect dialect);
+    // Plays this program: prepares it first when the text differs from the prepared one, and
+    // starts from the beginning when the last playback had finished.
+    void start(const QString& text, const std::filesystem::path& path, program::Dialect dialect);
+    // Plays the prepared program from where it stopped.
+    void play();
+    void stop();
+    // Back to the beginning: the untouched blank, time zero.
+    void reset();
+    void setSpeed(TestRunSpeed speed);
+    TestRunSpeed speed() const { return m_speed; }
+    // Moves the playback on by this much wall-clock time at the chosen speed (the timer calls
+    // it; tests call it to drive the playback without waiting).
+    void advance(double wallSeconds);
+    // Tick of the playback timer in milliseconds (tests set 0 to drive advance() themselves).
+    void setTickMs(int milliseconds);
+
+    State state() const { return m_state; }
+    double playbackTimeS() const { return m_timeS; }
+    double machiningTimeS() const;
+    // The program as interpreted (null before the first one is ready).
+    std::shared_ptr<const TestRunProgram> program() const { return m_program; }
+    // The stock being cut (null without a ready program). Replaced by reset() and prepare().
+    const graphics::ProgressiveStock* stock() const { return m_stock.get(); }
+    Vec3 toolPosition() const;
+    // Line of the block being played (0 before the first command).
+    int currentLine() const;
+
+signals:
+    void stateChanged();
+    void programReady();
+    void stockReplaced(const kerf::graphics::ProgressiveStock* stock);
+    void progressChanged(double timeS);
+    void speedChanged();
+    // One diagnostic of the run, with the line of the main program it refers to (0: none).
+    void diagnostic(kerf::Severity severity, const QString& text, int line);
+    // The interpreter's status at the block being played (for the status tabs).
+    void programStatusChanged(const kerf::interp::ProgramStatus& status);
+
+private:
+    void onInterpreted(std::shared_ptr<const TestRunProgram> program, uint64_t generation);
+    void newStock();
+    void pushUpTo(double timeS);
+    void publishStatus();
+    void setState(State state);
+    void tick();
+    void stopWorker();
+
+    machine::MachineConfig m_machine;
+    std::filesystem::path m_ncRoot;
+    std::shared_ptr<const TestRunProgram> m_program;
+    std::unique_ptr<graphics::ProgressiveStock> m_stock;
+    QString m_preparedText;
+    std::filesystem::path m_preparedPath;
+    std::string m_preparedFile;  // the name the interpreter knows the program by
+    size_t m_pushed = 0;         // commands handed to the stock
+    const TestRunProgram::StatusSnapshot* m_shownStatus = nullptr;
+    double m_timeS = 0.0;
+    TestRunSpeed m_speed = TestRunSpeed::Times10;
+    State m_state = State::Empty;
+    bool m_playWhenReady = false;
+    QTimer* m_timer = nullptr;
+    QElapsedTimer m_clock;
+    std::thread m_worker;
+    std::atomic<bool> m_cancel{false};
+    uint64_t m_generation = 0;
+};
+
+}  // namespace kerf::ui

@@ -1,0 +1,238 @@
+#include "ui/testrun/test_run_program.h"
+
+#include <algorithm>
+#include <map>
+
+#include "core/canon/path_statistics.h"
+#include "core/interp/fagor/fagor_interpreter.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+#include "core/program/source_registry.h"
+#include "core/tables/tool_table.h"
+
+namespace kerf::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr uint64_t kBlocksPerSlice = 2000;
+// Status snapshots block by block up to this many, then one per slice.
+constexpr size_t kMaxStatusSnapshots = 100'000;
+// How many blocks back the status of a command's own block is looked for.
+constexpr long kStatusLookBack = 16;
+
+// Feeds every consumer of the test run from one canonical stream and keeps the stream.
+class Recorder final : public canon::Sink {
+public:
+    Recorder(TestRunProgram& out, double rapidMmPerS) : m_out(out), m_statistics(rapidMmPerS) {}
+
+    void setStart(const Pose& start) {
+        m_statistics.setStart(start);
+        m_toolpath.setStart(start);
+    }
+    void consume(const canon::Command& command) override {
+        m_statistics.consume(command);
+        m_out.movesBefore.push_back(static_cast<uint32_t>(m_toolpath.data().moveCount()));
+        m_toolpath.consume(command);
+        m_out.commands.push_back(command);
+        m_out.endTimeS.push_back(m_statistics.machiningTimeS());
+    }
+    const Pose& position() const { return m_statistics.position(); }
+    graphics::ToolpathData takeToolpath() { return m_toolpath.take(); }
+
+private:
+    TestRunProgram& m_out;
+    canon::PathStatistics m_statistics;
+    graphics::ToolpathCollector m_toolpath;
+};
+
+Diagnostic testRunError(const std::string& file, const char* text, std::string arg = {}) {
+    return Diagnostic::make(Severity::Error, "test-run", file, 0, 0, text, std::move(arg));
+}
+
+// The stock the runner's --stock would simulate: T-ANGLE from the tool table for drills, the
+// machine's bar on a lathe, a blank derived from the path when the program has none.
+graphics::StockOptions stockOptionsFor(const machine::MachineConfig& machine,
+                                       const tables::ToolTable* tools) {
+    graphics::StockOptions options;
+    const bool lathe = machine.kind == machine::MachineKind::Lathe;
+    options.machine = lathe ? graphics::StockMachine::Lathe : graphics::StockMachine::Mill;
+    options.deriveStockFromPath = true;
+    const machine::BarConfig& bar = machine.bar;
+    if (lathe && bar.diameterMm > 0.0) {
+        graphics::LatheBar blank;
+        blank.radiusMm = bar.diameterMm / 2.0;
+        blank.innerRadiusMm = bar.boreDiameterMm / 2.0;
+        blank.zMax = bar.faceZMm;
+        blank.zMin = bar.faceZMm - bar.lengthMm;
+        options.bar = blank;
+    }
+    std::map<int, double> pointAngles;
+    if (tools != nullptr) {
+        for (const tables::ToolData& row : tools->tools()) {
+            if (row.index == 0) pointAngles[row.number] = row.pointAngle;
+        }
+    }
+    options.millCutter = [pointAngles](const canon::ToolChange& tool) {
+        const auto it = pointAngles.find(tool.number);
+        return graphics::MillCutter::fromGeometry(tool.geometry.radiusMm, tool.geometry.radius2Mm,
+                                                  it != pointAngles.end() ? it->second : 0.0);
+    };
+    return options;
+}
+
+std::unique_ptr<interp::Interpreter> loadInterpreter(const TestRunInput& input,
+                                                     program::SourceRegistry& sources,
+                                                     const tables::ToolTable* tools,
+                                                     TestRunProgram& out, bool& loaded) {
+    const std::string path = input.path.string();
+    loaded = false;
+    if (input.dialect == program::Dialect::Fagor) {
+        fagor::FagorSettings settings;
+        settings.machine = &input.machine;
+        settings.ncRoot = input.ncRoot;
+        settings.toolOffsetFile = input.ncRoot / "fagor_tool_offsets.tab";
+        settings.zeroOffsetFile = input.ncRoot / "fagor_zero_offsets.tab";
+        settings.toolFile = input.ncRoot / "fagor_tools.tab";
+        auto interpreter = std::make_unique<fagor::FagorInterpreter>(sources, std::move(settings));
+        loaded = interpreter->loadText(input.text, path);
+        return interpreter;
+    }
+    if (input.dialect != program::Dialect::Klartext) {
+        out.diagnostics.push_back(
+            testRunError(path, KERF_TR_NOOP("the test run does not support the {1} dialect yet"),
+                         program::dialectName(input.dialect)));
+        return nullptr;
+    }
+    klartext::KlartextSettings settings;
+    settings.machine = &input.machine;
+    settings.tools = tools;
+    settings.ncRoot = input.ncRoot;
+    auto interpreter =
+        std::make_unique<klartext::KlartextInterpreter>(sources, std::move(settings));
+    loaded = interpreter->loadText(input.text, path);
+    return interpreter;
+}
+
+}  // namespace
+
+size_t TestRunProgram::commandAt(double timeS) const {
+    return static_cast<size_t>(std::upper_bound(endTimeS.begin(), endTimeS.end(), timeS) -
+                               endTimeS.begin());
+}
+
+Vec3 TestRunProgram::toolPositionAt(double timeS) const {
+    const Vec3 origin = start.xyz();
+    if (!toolpath || toolpath->pointCount() == 0) return origin;
+    const graphics::ToolpathData& path = *toolpath;
+    const Vec3 last = path.point(path.pointCount() - 1);
+    const size_t index = commandAt(timeS);
+    if (index >= commands.size()) return last;
+    const uint32_t move = movesBefore[index];
+    if (move >= path.moveCount()) return last;
+    const auto [begin, end] = path.pointsOfMove(move);
+    const size_t from = begin > 0 ? begin - 1 : 0;
+    const bool moving =
+        index + 1 < movesBefore.size() ? movesBefore[index + 1] > move : path.moveCount() > move;
+    if (!moving || end <= begin) return path.point(from);
+    const double startS = index > 0 ? endTimeS[index - 1] : 0.0;
+    const double durationS = endTimeS[index] - startS;
+    const double fraction =
+        durationS > 0.0 ? std::clamp((timeS - startS) / durationS, 0.0, 1.0) : 1.0;
+    // Points of a move are evenly spaced (lines: one segment; arcs: equal chords).
+    const double position = fraction * static_cast<double>(end - 1 - from);
+    const size_t i = from + std::min(static_cast<size_t>(position), end - 1 - from);
+    if (i + 1 >= end) return path.point(end - 1);
+    const double t = position - static_cast<double>(i - from);
+    return path.point(i) + (path.point(i + 1) - path.point(i)) * t;
+}
+
+const canon::ToolChange* TestRunProgram::toolAt(double timeS) const {
+    const canon::ToolChange* tool = nullptr;
+    const size_t index = std::min(commandAt(timeS), commands.size());
+    for (size_t i = 0; i < index; ++i) {
+        if (const auto* change = std::get_if<canon::ToolChange>(&commands[i].body)) tool = change;
+    }
+    return tool;
+}
+
+const TestRunProgram::StatusSnapshot* TestRunProgram::statusAt(double timeS) const {
+    if (statuses.empty()) return nullptr;
+    const size_t index = commandAt(timeS);
+    const auto it = std::upper_bound(
+        statuses.begin(), statuses.end(), index,
+        [](size_t i, const StatusSnapshot& snapshot) { return i < snapshot.commandsEnd; });
+    auto found = it != statuses.end() ? it : statuses.end() - 1;
+    // Moves may be emitted a few blocks late (the contour look-ahead of radius compensation):
+    // the status that belongs to a command is that of the block written on its line.
+    if (index < commands.size()) {
+        const uint32_t line = commands[index].location.line;
+        for (auto back = found; back >= statuses.begin() && found - back < kStatusLookBack;
+             --back) {
+            if (back->status.line == line) return &*back;
+            if (back == statuses.begin()) break;
+        }
+    }
+    return &*found;
+}
+
+TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<bool>* cancel) {
+    TestRunProgram out;
+    std::optional<tables::ToolTable> tools;
+    std::error_code ignored;
+    if (fs::exists(input.ncRoot / "TOOL.T", ignored)) {
+        auto loaded = tables::ToolTable::load(input.ncRoot / "TOOL.T");
+        if (loaded) {
+            tools = std::move(*loaded);
+        } else {
+            out.diagnostics.push_back(loaded.error());
+        }
+    }
+    out.stockOptions = stockOptionsFor(input.machine, tools ? &*tools : nullptr);
+
+    program::SourceRegistry sources;
+    bool loaded = false;
+    auto interpreter = loadInterpreter(input, sources, tools ? &*tools : nullptr, out, loaded);
+    Recorder recorder(out, input.machine.rapidVelocityMmPerS);
+    if (interpreter && loaded) {
+        out.start = interpreter->nominalPosition();
+        recorder.setStart(out.start);
+        for (;;) {
+            if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
+                out.cancelled = true;
+                break;
+            }
+            const uint64_t slice = out.statuses.size() < kMaxStatusSnapshots ? 1 : kBlocksPerSlice;
+            const interp::RunStatus status = interpreter->run(recorder, slice);
+            out.statuses.push_back({out.commands.size(), interpreter->programStatus()});
+            if (status == interp::RunStatus::NeedsSync) {
+                interp::WorldSnapshot world;
+                world.position = recorder.position();
+                interpreter->resume(world);
+                continue;
+            }
+            if (status == interp::RunStatus::Finished) out.ran = true;
+            if (status != interp::RunStatus::BudgetUsed) break;
+            if (interpreter->blocksExecuted() >= input.maxBlocks) {
+                out.diagnostics.push_back(testRunError(
+                    input.path.string(),
+                    KERF_TR_NOOP("the test run stopped after {1} blocks: endless loop?"),
+                    std::to_string(input.maxBlocks)));
+                break;
+            }
+        }
+        out.blocks = interpreter->blocksExecuted();
+    }
+    if (interpreter) {
+        out.diagnostics.insert(out.diagnostics.end(), interpreter->diagnostics().begin(),
+                               interpreter->diagnostics().end());
+    }
+    if (hasErrors(out.diagnostics)) out.ran = false;
+    auto toolpath = std::make_shared<graphics::ToolpathData>(recorder.takeToolpath());
+    out.geometry =
+        std::make_shared<graphics::ToolpathGeometry>(graphics::buildToolpathGeometry(*toolpath));
+    out.toolpath = std::move(toolpath);
+    return out;
+}
+
+}  // namespace kerf::ui

@@ -1,0 +1,74 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/base/diagnostic.h"
+#include "core/canon/commands.h"
+#include "core/interp/program_status.h"
+#include "core/machine/machine_config.h"
+#include "core/program/dialect.h"
+#include "graphics/stock/stock_simulation.h"
+#include "graphics/toolpath/toolpath_data.h"
+#include "graphics/toolpath/toolpath_lod.h"
+
+namespace kerf::ui {
+
+// What the test run interprets: the editor's text (saved or not) with its file name, dialect and
+// the machine it is written for.
+struct TestRunInput {
+    std::string text;
+    std::filesystem::path path;
+    program::Dialect dialect = program::Dialect::Klartext;
+    machine::MachineConfig machine;
+    std::filesystem::path ncRoot;  // called programs, tables; TOOL.T when it exists
+    uint64_t maxBlocks = 20'000'000;
+};
+
+// A program interpreted for the test run: its canonical stream with the machining time at the
+// end of each command (feed and rapid moves without acceleration, dwells), the toolpath to draw
+// and how to simulate its stock. Immutable once built; shared between threads.
+struct TestRunProgram {
+    std::vector<canon::Command> commands;
+    std::vector<double> endTimeS;       // per command: machining time when it is done
+    std::vector<uint32_t> movesBefore;  // per command: toolpath moves before it
+    Pose start{};                       // tool position before the first command
+    std::shared_ptr<const graphics::ToolpathData> toolpath;
+    std::shared_ptr<const graphics::ToolpathGeometry> geometry;
+    graphics::StockOptions stockOptions;
+    // The interpreter's status after each block (after slices of blocks in long programs), with
+    // the number of commands emitted up to then.
+    struct StatusSnapshot {
+        size_t commandsEnd = 0;
+        interp::ProgramStatus status;
+    };
+    std::vector<StatusSnapshot> statuses;
+    DiagnosticList diagnostics;
+    bool ran = false;  // the program ran to its end (false: an error stopped it or it never began)
+    bool cancelled = false;
+    uint64_t blocks = 0;
+
+    double machiningTimeS() const { return endTimeS.empty() ? 0.0 : endTimeS.back(); }
+    // The index of the first command that ends after `timeS` (commands.size() when none does).
+    size_t commandAt(double timeS) const;
+    // The tool tip at a playback time, interpolated along the drawn toolpath.
+    Vec3 toolPositionAt(double timeS) const;
+    // The tool in the spindle at a playback time (null before the first tool change).
+    const canon::ToolChange* toolAt(double timeS) const;
+    // The status of the block being played at a playback time (null without any).
+    const StatusSnapshot* statusAt(double timeS) const;
+};
+
+// Interprets the program with the dialect's interpreter (Klartext or Fagor; TNC ISO is refused
+// with a diagnostic) and collects everything the test run needs. Synchronisation points are
+// answered with the position the program commanded, as on a machine that follows it exactly.
+// Any thread; `cancel` is polled between slices of blocks.
+TestRunProgram interpretForTestRun(const TestRunInput& input,
+                                   const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace kerf::ui
