@@ -19,30 +19,35 @@ bool isLathe(const machine::MachineConfig& machine) {
 
 }  // namespace
 
+std::string programName(const fs::path& path) {
+    return path.empty() ? std::string("MDI") : path.string();
+}
+
 LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSource& source) {
     LoadedProgram loaded;
     loaded.sources = std::make_unique<program::SourceRegistry>();
-    const std::string name = source.path.empty() ? std::string("MDI") : source.path.string();
-    std::string extension = source.path.extension().string();
-    for (char& c : extension)
-        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (isLathe(machine) && extension != ".H") {
+    const std::string name = programName(source.path);
+    const program::Dialect dialect =
+        source.dialect ? *source.dialect
+                       : program::dialectForFile(source.path.string(), isLathe(machine));
+    if (dialect == program::Dialect::Fagor) {
         fagor::FagorSettings settings;
         settings.machine = &machine;
         settings.ncRoot = source.ncRoot;
         settings.toolOffsetFile = source.ncRoot / "fagor_tool_offsets.tab";
         settings.zeroOffsetFile = source.ncRoot / "fagor_zero_offsets.tab";
         settings.toolFile = source.ncRoot / "fagor_tools.tab";
+        settings.presetInMachine = source.presetInMachine;
         auto fagor = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
         const bool ok = fagor->loadText(source.text, name);
         loaded.diagnostics = fagor->diagnostics();
         if (ok) loaded.interpreter = std::move(fagor);
         return loaded;
     }
-    if (extension == ".I") {
+    if (dialect != program::Dialect::Klartext) {
         loaded.diagnostics.push_back(
             Diagnostic::make(Severity::Error, "run.dialect", name, 0, 0,
-                             KERF_TR_NOOP("TNC ISO programs cannot run on the machine yet")));
+                             KERF_TR_NOOP("the TNC ISO dialect is not supported yet")));
         return loaded;
     }
     std::error_code error;
@@ -60,6 +65,7 @@ LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSo
     settings.tools = loaded.tools.get();
     settings.ncRoot = source.ncRoot;
     settings.startPosition = source.startPosition;
+    settings.presetInMachine = source.presetInMachine;
     auto klartext = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
     const bool ok = klartext->loadText(source.text, name);
     loaded.diagnostics = klartext->diagnostics();

@@ -8,13 +8,14 @@
 #include "core/base/diagnostic.h"
 #include "core/interp/interpreter.h"
 #include "core/machine/machine_config.h"
+#include "core/program/dialect.h"
 #include "core/program/source_registry.h"
 #include "core/tables/tool_table.h"
 
 namespace kerf::ui {
 
-// The interpreter for a program on the machine: Klartext for .H files (and on a mill), FAGOR on
-// a lathe, loaded from the editor's text and checked. It reads the NC root's tool table.
+// The interpreter for a program on the machine or in the test run, loaded from the editor's
+// text and checked. It reads the NC root's tool table.
 struct LoadedProgram {
     std::unique_ptr<program::SourceRegistry> sources;
     std::unique_ptr<tables::ToolTable> tools;
@@ -27,6 +28,9 @@ struct ProgramSource {
     std::filesystem::path path;  // names the program in messages; decides the dialect
     std::filesystem::path ncRoot;
     Pose startPosition{};  // where the tool tip stands, workpiece coordinates
+    // The editor's dialect; without it the file and the machine decide (.H Klartext, .I TNC ISO,
+    // anything else the machine's: FAGOR on a lathe).
+    std::optional<program::Dialect> dialect;
 };
 
 LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSource& source);

@@ -4,14 +4,10 @@
 #include <map>
 
 #include "core/canon/path_statistics.h"
-#include "core/interp/fagor/fagor_interpreter.h"
-#include "core/interp/klartext/klartext_interpreter.h"
-#include "core/program/source_registry.h"
 #include "core/tables/tool_table.h"
+#include "ui/session/program_interpreter.h"
 
 namespace kerf::ui {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -81,39 +77,6 @@ graphics::StockOptions stockOptionsFor(const machine::MachineConfig& machine,
     return options;
 }
 
-std::unique_ptr<interp::Interpreter> loadInterpreter(const TestRunInput& input,
-                                                     program::SourceRegistry& sources,
-                                                     const tables::ToolTable* tools,
-                                                     TestRunProgram& out, bool& loaded) {
-    const std::string path = input.path.string();
-    loaded = false;
-    if (input.dialect == program::Dialect::Fagor) {
-        fagor::FagorSettings settings;
-        settings.machine = &input.machine;
-        settings.ncRoot = input.ncRoot;
-        settings.toolOffsetFile = input.ncRoot / "fagor_tool_offsets.tab";
-        settings.zeroOffsetFile = input.ncRoot / "fagor_zero_offsets.tab";
-        settings.toolFile = input.ncRoot / "fagor_tools.tab";
-        auto interpreter = std::make_unique<fagor::FagorInterpreter>(sources, std::move(settings));
-        loaded = interpreter->loadText(input.text, path);
-        return interpreter;
-    }
-    if (input.dialect != program::Dialect::Klartext) {
-        out.diagnostics.push_back(
-            testRunError(path, KERF_TR_NOOP("the test run does not support the {1} dialect yet"),
-                         program::dialectName(input.dialect)));
-        return nullptr;
-    }
-    klartext::KlartextSettings settings;
-    settings.machine = &input.machine;
-    settings.tools = tools;
-    settings.ncRoot = input.ncRoot;
-    auto interpreter =
-        std::make_unique<klartext::KlartextInterpreter>(sources, std::move(settings));
-    loaded = interpreter->loadText(input.text, path);
-    return interpreter;
-}
-
 }  // namespace
 
 size_t TestRunProgram::commandAt(double timeS) const {
@@ -178,21 +141,14 @@ const TestRunProgram::StatusSnapshot* TestRunProgram::statusAt(double timeS) con
 
 TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<bool>* cancel) {
     TestRunProgram out;
-    std::optional<tables::ToolTable> tools;
-    std::error_code ignored;
-    if (fs::exists(input.ncRoot / "TOOL.T", ignored)) {
-        auto loaded = tables::ToolTable::load(input.ncRoot / "TOOL.T");
-        if (loaded) {
-            tools = std::move(*loaded);
-        } else {
-            out.diagnostics.push_back(loaded.error());
-        }
-    }
-    out.stockOptions = stockOptionsFor(input.machine, tools ? &*tools : nullptr);
-
-    program::SourceRegistry sources;
-    bool loaded = false;
-    auto interpreter = loadInterpreter(input, sources, tools ? &*tools : nullptr, out, loaded);
+    // The same loading as a program run on the machine: dialect by file and machine, TOOL.T of
+    // the NC root.
+    LoadedProgram program =
+        loadProgram(input.machine, {input.text, input.path, input.ncRoot, {}, input.dialect});
+    out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
+    out.diagnostics = program.diagnostics;
+    std::unique_ptr<interp::Interpreter> interpreter = std::move(program.interpreter);
+    const bool loaded = interpreter != nullptr;
     Recorder recorder(out, input.machine.rapidVelocityMmPerS);
     if (interpreter && loaded) {
         out.start = interpreter->nominalPosition();
@@ -223,9 +179,12 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
         }
         out.blocks = interpreter->blocksExecuted();
     }
-    if (interpreter) {
-        out.diagnostics.insert(out.diagnostics.end(), interpreter->diagnostics().begin(),
-                               interpreter->diagnostics().end());
+    if (interpreter && interpreter->diagnostics().size() > program.diagnostics.size()) {
+        // Run-time diagnostics follow the check's, which loadProgram copied already.
+        out.diagnostics.insert(
+            out.diagnostics.end(),
+            interpreter->diagnostics().begin() + static_cast<long>(program.diagnostics.size()),
+            interpreter->diagnostics().end());
     }
     if (hasErrors(out.diagnostics)) out.ran = false;
     auto toolpath = std::make_shared<graphics::ToolpathData>(recorder.takeToolpath());
