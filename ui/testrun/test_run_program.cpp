@@ -143,8 +143,12 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     TestRunProgram out;
     // The same loading as a program run on the machine: dialect by file and machine, TOOL.T of
     // the NC root.
-    LoadedProgram program =
-        loadProgram(input.machine, {input.text, input.path, input.ncRoot, {}, input.dialect});
+    ProgramSource source;
+    source.text = input.text;
+    source.path = input.path;
+    source.ncRoot = input.ncRoot;
+    source.dialect = input.dialect;
+    LoadedProgram program = loadProgram(input.machine, source);
     out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
     out.diagnostics = program.diagnostics;
     std::unique_ptr<interp::Interpreter> interpreter = std::move(program.interpreter);
