@@ -132,4 +132,34 @@ CornerBlend blendCorner(const PathGeometry& before, const PathGeometry& after, d
     return blend;
 }
 
+CornerBlend blendAcross(const PathGeometry& before, const PathGeometry& middle,
+                        const PathGeometry& after, double deviation, double maxTrimBefore,
+                        double trimAfter) {
+    CornerBlend blend;
+    PathPoint b = pointAt(after, trimAfter);
+    // The longest trim that fits: the gentlest turn. Shorter ones down to the middle's length.
+    for (double trim = maxTrimBefore; trim >= middle.length / 2.0; trim *= 0.7) {
+        PathPoint a = pointAt(before, before.length - trim);
+        blend.trimBefore = trim;
+        blend.trimAfter = trimAfter;
+        blend.arcCount = biarc(a.position, xyz(a.position), unit(xyz(a.tangent)), xyz(b.position),
+                               unit(xyz(b.tangent)), blend.arcs);
+        double worst = 0.0;
+        for (int k = 0; k < blend.arcCount && worst <= deviation; ++k) {
+            const PathGeometry& arc = blend.arcs[static_cast<size_t>(k)];
+            for (int i = 1; i < 8; ++i) {
+                V3 p = xyz(positionAt(arc, arc.length * i / 8.0));
+                double d = std::min({distanceTo(before, p, before.length - trim, before.length),
+                                     distanceTo(middle, p, 0.0, middle.length),
+                                     distanceTo(after, p, 0.0, trimAfter)});
+                worst = std::max(worst, d);
+            }
+        }
+        blend.deviation = worst;
+        if (worst <= deviation) return blend;
+    }
+    blend.arcCount = 0;
+    return blend;
+}
+
 }  // namespace kerf::motion

@@ -30,4 +30,12 @@ CornerBlend blendCorner(const PathGeometry& before, const PathGeometry& after, d
 CornerBlend blendCornerFrom(const PathGeometry& before, const PathGeometry& after, double deviation,
                             double trimBefore, double trimAfter);
 
+// One blend across a short element `middle` between `before` and `after`, in place of the two
+// corners at its ends (a kink of a short segment, where each corner could use only half of it):
+// a biarc from `before` (as much of its end as fits, up to `maxTrimBefore`) to `trimAfter` into
+// `after`, within `deviation` of all three. Empty when no trim fits.
+CornerBlend blendAcross(const PathGeometry& before, const PathGeometry& middle,
+                        const PathGeometry& after, double deviation, double maxTrimBefore,
+                        double trimAfter);
+
 }  // namespace kerf::motion

@@ -102,14 +102,16 @@ void Lookahead::prepare(Entry& entry) {
                       std::min(limits.jerk, e.limits.jerk * share / kTangentialShares[0])};
         }
         double cap =
-            elementVelocityCap(m_model, e.geometry, entry.bounds, limits, entry.contourBudget);
+            summedPeaksVelocityCap(m_model, e.geometry, entry.bounds, limits, entry.contourBudget);
         if (cap > bestCap * 1.05) {
             bestCap = cap;
             entry.limits = limits;
-            entry.localCap = cap;
         }
         if (cap >= 0.95 * nominal) break;
     }
+    // The share chosen by the summed peaks (velocity_limits.h); the limit itself phase-aware.
+    entry.localCap =
+        elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits, entry.contourBudget);
     if (e.capVelocity > 0.0) entry.localCap = std::min(entry.localCap, e.capVelocity);
     entry.cap = entry.localCap;
     entry.nStart = pointAt(e.geometry, 0.0).curvature;
@@ -137,8 +139,38 @@ size_t Lookahead::neighbourAfter(size_t i) const {
     return kNoEntry;
 }
 
+AxisVector Lookahead::stepAt(size_t i) const {
+    AxisVector step{};
+    if (!isElement(i) || tiny(i)) return step;
+    size_t p = neighbourBefore(i);
+    if (p == kNoEntry) return step;
+    for (size_t a = 0; a < step.size(); ++a)
+        step[a] = m_entries[i].nStart[a] - m_entries[p].nEnd[a];
+    return step;
+}
+
 void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
-    const double filterTime = m_model.filterTimeS();
+    // The window starts where the run of elements holding `first` starts: earlier steps
+    // (already released elements) still count for their neighbours.
+    size_t begin = first;
+    while (begin > 0 && isElement(begin - 1) && !m_entries[begin - 1].stopAfter)
+        --begin;
+    m_steps.clear();
+    m_runFirst.assign(last - begin, 0);
+    m_runLast.assign(last - begin, 0);
+    double s = 0.0;
+    for (size_t i = begin; i < last; ++i) {
+        if (isElement(i)) s = m_entries[i].item.element.sStart;
+        m_steps.add(s, stepAt(i));
+        size_t k = i - begin;
+        bool joined = k > 0 && isElement(i - 1) && isElement(i) && !m_entries[i - 1].stopAfter;
+        m_runFirst[k] = joined ? m_runFirst[k - 1] : k;
+    }
+    for (size_t k = last - begin; k-- > 0;) {
+        size_t i = k + begin;
+        bool joined = i + 1 < last && isElement(i) && isElement(i + 1) && !m_entries[i].stopAfter;
+        m_runLast[k] = joined ? m_runLast[k + 1] : k;
+    }
     for (size_t i = first; i < last; ++i) {
         if (!isElement(i) || tiny(i)) continue;
         Entry& entry = m_entries[i];
@@ -146,61 +178,19 @@ void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
         size_t p = neighbourBefore(i);
         if (p == kNoEntry) continue;
         const Entry& before = m_entries[p];
-        AxisVector step{};
+        AxisVector step = stepAt(i);
         double largest = 0.0;
-        for (size_t a = 0; a < step.size(); ++a) {
-            step[a] = std::fabs(entry.nStart[a] - before.nEnd[a]);
-            largest = std::max(largest, step[a]);
-        }
+        for (double value : step)
+            largest = std::max(largest, std::fabs(value));
         if (largest < 1e-12) continue;
-        // Steps closer than one filter length (at the velocity found) add up: widen the window
-        // step by step, nearest first, while the velocity allows it to reach further.
         double v = std::min({entry.localCap, before.localCap, maxVelocity(entry)});
         const PathElement& e = entry.item.element;
         const PathElement& b = before.item.element;
         PointJerkTerms termsBefore = jerkTermsAt(b.geometry, b.geometry.length, before.limits);
         PointJerkTerms termsAfter = jerkTermsAt(e.geometry, 0.0, entry.limits);
-        auto addStep = [&](size_t k, AxisVector& sum) {
-            const Entry& at = m_entries[k];
-            const Entry& prev = m_entries[neighbourBefore(k)];
-            for (size_t a = 0; a < sum.size(); ++a)
-                sum[a] += std::fabs(at.nStart[a] - prev.nEnd[a]);
-        };
-        auto hasStep = [&](size_t k) { return k != kNoEntry && neighbourBefore(k) != kNoEntry; };
-        AxisVector wide = step;
-        double reach = v * filterTime;
-        for (size_t k = neighbourAfter(i); k != kNoEntry; k = neighbourAfter(k)) {
-            if (m_entries[k].item.element.sStart - e.sStart > reach) break;
-            addStep(k, wide);
-        }
-        for (size_t k = p; hasStep(k); k = neighbourBefore(k)) {
-            if (e.sStart - m_entries[k].item.element.sStart > reach) break;
-            addStep(k, wide);
-        }
-        entry.stepCap = curvatureStepCap(m_model, wide, termsBefore, termsAfter, v);
-        if (entry.stepCap >= v) continue;
-        AxisVector sum = step;
-        size_t forward = neighbourAfter(i);
-        size_t backward = p;
-        double best = 0.0;
-        for (;;) {
-            double cap = curvatureStepCap(m_model, sum, termsBefore, termsAfter, v);
-            double ahead =
-                forward != kNoEntry ? m_entries[forward].item.element.sStart - e.sStart : 1e300;
-            double behind =
-                hasStep(backward) ? e.sStart - m_entries[backward].item.element.sStart : 1e300;
-            double next = std::min(ahead, behind);
-            best = std::max(best, std::min(cap, next / filterTime));
-            if (next / filterTime >= cap) break;
-            if (ahead <= behind) {
-                addStep(forward, sum);
-                forward = neighbourAfter(forward);
-            } else {
-                addStep(backward, sum);
-                backward = neighbourBefore(backward);
-            }
-        }
-        entry.stepCap = best;
+        size_t k = i - begin;
+        entry.stepCap =
+            m_steps.cap(m_model, k, m_runFirst[k], m_runLast[k], termsBefore, termsAfter, v);
     }
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 
 #include <deque>
+#include <vector>
 
 #include "motion/kinematics/machine_model.h"
+#include "motion/planner/curvature_step_window.h"
 #include "motion/planner/velocity_limits.h"
 #include "motion/port/motion_item.h"
 
@@ -63,6 +65,8 @@ private:
     bool isElement(size_t i) const { return m_entries[i].item.kind == MotionItem::Kind::Element; }
     void prepare(Entry& entry);
     void applyCurvatureSteps(size_t first, size_t last);
+    // Signed jump of n at the start of entry i from its neighbour before (zero when none).
+    AxisVector stepAt(size_t i) const;
     void markReachable(size_t first, size_t last);
     bool tiny(size_t i) const;
     // Previous / next non-tiny element without a stop in between, or SIZE_MAX.
@@ -78,7 +82,10 @@ private:
     size_t m_final = 0;     // entries before this index may be popped
     size_t m_pushedSincePlan = 0;
     bool m_planNow = false;
-    double m_reach = 0.0;  // how far behind released elements can still be neighbours
+    double m_reach = 0.0;         // how far behind released elements can still be neighbours
+    CurvatureStepWindow m_steps;  // scratch of applyCurvatureSteps, kept for its capacity
+    std::vector<size_t> m_runFirst;
+    std::vector<size_t> m_runLast;
 };
 
 }  // namespace kerf::motion

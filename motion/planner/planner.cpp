@@ -63,6 +63,7 @@ void Planner::setPosition(const AxisVector& tip) {
 void Planner::reset(const AxisVector& tip) {
     m_lookahead.clear();
     m_pending.reset();
+    m_short.reset();
     m_synchronised = false;
     m_refused = false;
     setPosition(tip);
@@ -70,6 +71,7 @@ void Planner::reset(const AxisVector& tip) {
 
 double Planner::pendingLength() const {
     double pending = m_pending ? m_pending->geometry.length - m_pending->trimStart : 0.0;
+    if (m_short) pending += m_short->geometry.length;
     return m_lookahead.pendingLength() + pending;
 }
 
@@ -294,9 +296,76 @@ void Planner::addMove(Move move, const AxisVector& target, const SourceLocation&
     m_lastMoveGeometry = move.geometry;
     move.blendable = !move.probe && move.feedKind != FeedKind::SpindleSynced &&
                      movesOnlyXyz(move.geometry) && !m_exactStop;
-    if (m_pending) cornerTo(move);
+    if (m_short && !blendAcrossShort(move)) settleShort();
+    if (m_short) {
+        m_short.reset();
+    } else if (m_pending && worthHolding(move)) {
+        m_short = move;
+        m_position = target;
+        return;
+    } else if (m_pending) {
+        cornerTo(move);
+    }
     m_pending = move;
     m_position = target;
+}
+
+bool Planner::worthHolding(const Move& move) const {
+    const Move& before = *m_pending;
+    // Feeds per revolution are not in mm/s here: those corners stay as they are.
+    bool perSecond = move.feedKind == FeedKind::PerMinute || move.feedKind == FeedKind::Rapid;
+    if (!before.blendable || !move.blendable || move.geometry.curved() || !perSecond ||
+        before.feedKind != move.feedKind || move.tolerance <= 0.0 || m_exactStop)
+        return false;
+    double theta = cornerAngle(before.geometry, move.geometry);
+    if (theta < 1e-9 || theta > kMaxBlendAngle) return false;
+    // The blend could use half of the move: radius r = l / tan(theta / 2). Worth holding when
+    // that turn would be slower than the feed even at the axes' full acceleration.
+    double radius = move.geometry.length / 2.0 / std::tan(theta / 2.0);
+    double accel = 1e300;
+    for (size_t i = 0; i < 3; ++i) {
+        if (m_model.axes[i].enabled) accel = std::min(accel, m_model.axes[i].accel);
+    }
+    return accel * radius < move.feed * move.feed;
+}
+
+bool Planner::blendAcrossShort(Move& move) {
+    const Move& before = *m_pending;
+    const Move& middle = *m_short;
+    if (!move.blendable || middle.feedKind != move.feedKind || m_exactStop ||
+        cornerAngle(before.geometry, move.geometry) > kMaxBlendAngle)
+        return false;
+    double tolerance = std::min(middle.tolerance, move.tolerance);
+    if (tolerance <= 0.0) return false;
+    double maxBefore =
+        std::min(before.geometry.length / 2.0, before.geometry.length - before.trimStart);
+    CornerBlend blend = blendAcross(before.geometry, middle.geometry, move.geometry,
+                                    tolerance / 2.0, maxBefore, move.geometry.length / 2.0);
+    if (blend.arcCount == 0) return false;
+    // Only when it turns more gently than the corner it replaces (half the middle, see above).
+    double theta = cornerAngle(before.geometry, middle.geometry);
+    double replaced = std::tan(theta / 2.0) / (middle.geometry.length / 2.0);
+    for (int i = 0; i < blend.arcCount; ++i) {
+        if (blend.arcs[static_cast<size_t>(i)].curvature() >= replaced) return false;
+    }
+    // Named after the middle move, so that the path deviation is measured from the move before.
+    Move corner = middle;
+    corner.feed = std::min({before.feed, middle.feed, move.feed});
+    corner.feedMove = before.feedMove || middle.feedMove || move.feedMove;
+    emitPending(blend.trimBefore);  // ends `before`
+    for (int i = 0; i < blend.arcCount; ++i) {
+        emitElement(corner, blend.arcs[static_cast<size_t>(i)], tolerance - blend.deviation, false);
+    }
+    move.trimStart = blend.trimAfter;
+    return true;
+}
+
+void Planner::settleShort() {
+    if (!m_short) return;
+    Move middle = *m_short;
+    m_short.reset();
+    cornerTo(middle);
+    m_pending = middle;
 }
 
 void Planner::cornerTo(Move& move) {
@@ -330,10 +399,10 @@ void Planner::cornerTo(Move& move) {
         exactStop();
         return;
     }
-    emitPending(blend.trimBefore);
     Move corner = move;
     corner.feed = std::min(before.feed, move.feed);
     corner.feedMove = before.feedMove || move.feedMove;
+    emitPending(blend.trimBefore);  // ends `before`
     for (int i = 0; i < blend.arcCount; ++i) {
         emitElement(corner, blend.arcs[static_cast<size_t>(i)], move.tolerance - blend.deviation,
                     false);
@@ -381,6 +450,7 @@ void Planner::emitElement(const Move& move, const PathGeometry& geometry, double
 }
 
 void Planner::exactStop() {
+    settleShort();
     emitPending(0.0);
     m_lookahead.stopHere();
 }

@@ -72,6 +72,12 @@ private:
     bool acceptGeometry(const PathGeometry& geometry, const SourceLocation& source);
     void emitPending(double trimEnd);
     void cornerTo(Move& move);
+    // A short line whose corner with the pending move would need more than half of it is held
+    // back, so that the next move can blend across it (blendAcrossShort) instead of turning twice
+    // within its length; otherwise settleShort turns its corners as usual.
+    bool worthHolding(const Move& move) const;
+    bool blendAcrossShort(Move& move);
+    void settleShort();
     void emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
                      bool blockEnd);
     void exactStop();
@@ -87,6 +93,7 @@ private:
     double m_pathS = 0.0;
     uint64_t m_sequence = 0;
     std::optional<Move> m_pending;
+    std::optional<Move> m_short;  // held between m_pending and the next move
     double m_tolerance = 0.0;
     double m_toolLength = 0.0;
     canon::FeedMode m_feedMode = canon::FeedMode::PerMinute;

@@ -29,8 +29,91 @@ Limits tangentialLimits(const MachineModel& model, const AxisBounds& bounds, dou
     return {accel * share, jerk * share};
 }
 
+namespace {
+
+// Along a circle or helix, axis i moves as rate_i s + amp_i cos(phi0 + k s - psi_i): its
+// tangent, curvature and curvature rate are the sine and cosine of one angle, scaled by
+// c1 = amp k, c2 = amp k^2, c3 = amp k^3. So a_i = rate_i a + c1 a sin + c2 v^2 cos and
+// j_i = rate_i j + (c1 j - c3 v^3) sin + 3 c2 v a cos (up to signs): the circle's share peaks at
+// sqrt(x^2 + y^2), not x + y, which is what a line's bounds would add up to.
+struct AxisTerms {
+    double linear = 0.0;  // |rate_i| (all of |u_i| on a line)
+    double c1 = 0.0;
+    double c2 = 0.0;
+    double c3 = 0.0;
+};
+
+AxisTerms axisTerms(const PathGeometry& geometry, const AxisBounds& bounds, size_t i) {
+    AxisTerms terms;
+    if (!geometry.curved() || i >= 3) {
+        terms.linear = bounds.tangent[i];
+        return terms;
+    }
+    double amp = std::hypot(geometry.e1[i], geometry.e2[i]) * geometry.radius;
+    terms.linear = std::fabs(geometry.rate[i]);
+    terms.c1 = amp * geometry.k;
+    terms.c2 = terms.c1 * geometry.k;
+    terms.c3 = terms.c2 * geometry.k;
+    return terms;
+}
+
+// Highest v with linear J_t + sqrt((c1 J_t + c3 v^3)^2 + (3 c2 A_t v)^2) <= J.
+double jerkCap(const AxisTerms& t, const Limits& limits, double jerk, double upperBound) {
+    double room = jerk - t.linear * limits.jerk;
+    double base = t.c1 * limits.jerk;
+    if (room <= base) return 0.0;
+    double linear = 3.0 * t.c2 * limits.accel;
+    auto excess = [&](double v) {
+        double a = base + t.c3 * v * v * v;
+        double b = linear * v;
+        return a * a + b * b - room * room;
+    };
+    double v = upperBound;
+    if (t.c3 > 0.0) v = std::min(v, std::cbrt((room - base) / t.c3));
+    if (linear > 0.0) v = std::min(v, room / linear);
+    if (excess(v) <= 0.0) return v;
+    // excess rises and is convex for v >= 0: Newton from above converges monotonically.
+    for (int k = 0; k < 100; ++k) {
+        double a = base + t.c3 * v * v * v;
+        double slope = 6.0 * a * t.c3 * v * v + 2.0 * linear * linear * v;
+        double next = v - excess(v) / slope;
+        if (!(next < v)) break;
+        v = next;
+    }
+    return std::max(0.0, v);
+}
+
+}  // namespace
+
 double elementVelocityCap(const MachineModel& model, const PathGeometry& geometry,
                           const AxisBounds& bounds, const Limits& limits, double contourBudget) {
+    double cap = kNone;
+    for (size_t i = 0; i < model.axes.size(); ++i) {
+        const AxisModel& axis = model.axes[i];
+        double u = bounds.tangent[i];
+        double n = bounds.curvature[i];
+        if (u < 1e-12 && n < 1e-12) continue;
+        if (!axis.enabled) return 0.0;
+        if (u > 0.0) cap = std::min(cap, axis.velocity / u);
+        AxisTerms t = axisTerms(geometry, bounds, i);
+        // linear A_t + sqrt((c1 A_t)^2 + (c2 v^2)^2) <= A
+        double room = axis.accel - t.linear * limits.accel;
+        double base = t.c1 * limits.accel;
+        if (room < base) return 0.0;
+        if (t.c2 > 0.0) cap = std::min(cap, std::sqrt(std::sqrt(room * room - base * base) / t.c2));
+        cap = jerkCap(t, limits, axis.jerk, cap);
+    }
+    double kappa = geometry.curvature();
+    if (kappa > 0.0) {
+        double t = model.filterTimeS();
+        cap = std::min(cap, std::sqrt(24.0 * std::max(0.0, contourBudget) / (kappa * t * t)));
+    }
+    return std::max(0.0, cap);
+}
+
+double summedPeaksVelocityCap(const MachineModel& model, const PathGeometry& geometry,
+                              const AxisBounds& bounds, const Limits& limits,
+                              double contourBudget) {
     double cap = kNone;
     for (size_t i = 0; i < model.axes.size(); ++i) {
         const AxisModel& axis = model.axes[i];
@@ -44,7 +127,6 @@ double elementVelocityCap(const MachineModel& model, const PathGeometry& geometr
             double room = axis.accel - u * limits.accel;
             cap = std::min(cap, room > 0.0 ? std::sqrt(room / n) : 0.0);
         }
-        // |u| J_t + 3 |n| A_t v + |n'| v^3 <= J
         double jerkRoom = axis.jerk - u * limits.jerk;
         if (jerkRoom <= 0.0) {
             cap = 0.0;
@@ -78,35 +160,54 @@ PointJerkTerms jerkTermsAt(const PathGeometry& geometry, double s, const Limits&
     return terms;
 }
 
+bool curvatureStepFits(const MachineModel& model, const AxisVector& stepSum,
+                       const PointJerkTerms& before, const PointJerkTerms& after, double v) {
+    const double t = model.filterTimeS();
+    for (size_t i = 0; i < model.axes.size(); ++i) {
+        if (stepSum[i] <= 0.0) continue;
+        for (const PointJerkTerms* side : {&before, &after}) {
+            double jerk = ((side->curvatureRate[i] * v + stepSum[i] / t) * v +
+                           3.0 * side->curvature[i] * side->limits.accel) *
+                              v +
+                          side->tangent[i] * side->limits.jerk;
+            if (jerk > model.axes[i].jerk) return false;
+        }
+    }
+    return true;
+}
+
 double curvatureStepCap(const MachineModel& model, const AxisVector& stepSum,
                         const PointJerkTerms& before, const PointJerkTerms& after,
                         double upperBound) {
+    // Per axis and side: n' v^3 + (step / T) v^2 + 3 |n| A_t v + |u| J_t <= J. Every coefficient
+    // is >= 0, so the left side rises and is convex for v >= 0: Newton from above converges
+    // monotonically to the one root.
     const double t = model.filterTimeS();
-    auto fits = [&](double v) {
-        for (size_t i = 0; i < model.axes.size(); ++i) {
-            if (stepSum[i] <= 0.0) continue;
-            double continuous = 0.0;
-            for (const PointJerkTerms* side : {&before, &after}) {
-                continuous =
-                    std::max(continuous, side->tangent[i] * side->limits.jerk +
-                                             3.0 * side->curvature[i] * side->limits.accel * v +
-                                             side->curvatureRate[i] * v * v * v);
+    double cap = upperBound;
+    for (size_t i = 0; i < model.axes.size(); ++i) {
+        if (stepSum[i] <= 0.0) continue;
+        for (const PointJerkTerms* side : {&before, &after}) {
+            double room = model.axes[i].jerk - side->tangent[i] * side->limits.jerk;
+            if (room <= 0.0) return 0.0;
+            double cubic = side->curvatureRate[i];
+            double square = stepSum[i] / t;
+            double linear = 3.0 * side->curvature[i] * side->limits.accel;
+            auto excess = [&](double v) { return ((cubic * v + square) * v + linear) * v - room; };
+            if (excess(cap) <= 0.0) continue;
+            // Each term alone reaching the room bounds the root from above.
+            double v = std::min(cap, std::sqrt(room / square));
+            if (linear > 0.0) v = std::min(v, room / linear);
+            if (cubic * v * v * v > room) v = std::cbrt(room / cubic);
+            for (int k = 0; k < 100; ++k) {
+                double slope = (3.0 * cubic * v + 2.0 * square) * v + linear;
+                double next = v - excess(v) / slope;
+                if (!(next < v)) break;
+                v = next;
             }
-            if (stepSum[i] * v * v / t + continuous > model.axes[i].jerk) return false;
+            cap = std::min(cap, std::max(0.0, v));
         }
-        return true;
-    };
-    if (fits(upperBound)) return upperBound;
-    double lo = 0.0;
-    double hi = upperBound;
-    for (int k = 0; k < 40; ++k) {
-        double mid = (lo + hi) / 2.0;
-        if (fits(mid))
-            lo = mid;
-        else
-            hi = mid;
     }
-    return lo;
+    return cap;
 }
 
 }  // namespace kerf::motion

@@ -31,16 +31,17 @@ std::vector<canon::Command> longLine() {
 }
 
 TEST(FeedHold, StopsWithinTheBrakingDistanceAndResumesOnThePath) {
-    // On a straight line the tangential limits are 90 % of the axis limits (planner rule). From
-    // v at a = 0 the time-optimal stop is symmetric and covers v/2 times its duration: with
-    // v = 50 < A^2/J = 72 mm/s the deceleration never reaches A, so the duration is
-    // 2 sqrt(v/J) and the distance v sqrt(v/J) = 1.667 mm (with a constant phase it would be
-    // v/2 (v/A + A/J)).
+    // On a straight line the tangential limits are 90 % of the axis limits (planner rule):
+    // A = 1800 mm/s^2, J = 900000 mm/s^3. From v at a = 0 the time-optimal stop is symmetric
+    // and covers v/2 times its duration: with v = 50 > A^2/J = 3.6 mm/s the deceleration
+    // reaches A, so the duration is v/A + A/J = 0.029778 s and the distance
+    // v/2 (v/A + A/J) = 0.744444 mm (without a constant phase it would be v sqrt(v/J)).
     const double a = 0.9 * 2000.0;
-    const double j = 0.9 * 50000.0;
+    const double j = 0.9 * 1000000.0;
     const double v = 50.0;
-    ASSERT_LT(v, a * a / j);
-    const double expected = v * std::sqrt(v / j);
+    ASSERT_GT(v, a * a / j);
+    const double expected = v / 2.0 * (v / a + a / j);
+    EXPECT_NEAR(expected, 0.744444, 1e-6);
     double holdAt = -1.0;
     double stoppedAt = -1.0;
     int cycles = 0;
@@ -91,6 +92,9 @@ TEST(EmergencyStop, DrivesStopThemselvesAndResetEnablesThemAgain) {
     EXPECT_EQ(run.sim->status().mode, MotionMode::EmergencyStop);
     double stopped = run.report.finalPosition[0];
     EXPECT_LT(stopped, 200.0);
+    // The drives' own quick-stop ramp (50 mm/s at 5000 mm/s^2) takes 10 ms, longer than the
+    // setpoint filter that drain() waits for: let them come to rest before the reset.
+    run.sim->runFor(0.02);
     run.sim->command({OperatorCommandKind::Reset});
     run.sim->runFor(0.05);
     EXPECT_EQ(run.sim->status().mode, MotionMode::Idle);
@@ -126,6 +130,38 @@ TEST(Probing, ReportsAMissWhenNothingIsTouched) {
         runCommands(millConfig(), {cmd(canon::ProbeMove{at(0, 0, -5), 300.0})}, Pose{}, options);
     EXPECT_FALSE(run.world.probeTriggered);
     EXPECT_NEAR(run.report.finalPosition[2], -5.0, 1e-6);
+}
+
+TEST(Probing, TouchesTheMachineFilesBoxAndLatchesWhereTheProbeLeavesIt) {
+    // [simulation.probe]: X 0..50, Z up to machine -102.5; the workpiece origin at machine Z -100
+    // puts the top at workpiece Z -2.5.
+    machine::MachineConfig config = millConfig();
+    config.probeWorkpiece.enabled = true;
+    config.probeWorkpiece.xMinMm = 0.0;
+    config.probeWorkpiece.xMaxMm = 50.0;
+    config.probeWorkpiece.zMaxMm = -102.5;
+    SimulationOptions options;
+    options.motion.workOffset[2] = -100.0;
+    SimulatedMachine sim(config, options);
+    sim.consume(cmd(canon::RapidMove{at(10, 10, 5)}, 1));
+    sim.consume(cmd(canon::ProbeMove{at(10, 10, -20), 300.0}, 2));
+    const interp::WorldSnapshot touch = sim.drain();
+    EXPECT_TRUE(touch.probeTriggered);
+    EXPECT_NEAR(touch.probePosition[Axis::Z], -2.5, 1e-6);
+    EXPECT_LT(touch.position[Axis::Z], -2.5);  // stopped beyond the latch
+    // Until release (FAGOR G76): back up, latched where the tip leaves the top.
+    sim.consume(cmd(canon::ProbeMove{at(10, 10, 5), 300.0, true}, 3));
+    const interp::WorldSnapshot release = sim.drain();
+    EXPECT_TRUE(release.probeTriggered);
+    EXPECT_NEAR(release.probePosition[Axis::Z], -2.5, 1e-6);
+    EXPECT_GT(release.position[Axis::Z], -2.5);
+    EXPECT_LT(release.position[Axis::Z], 5.0);
+    // Beside the box (X 60) a touch probe move reaches its end: a miss.
+    sim.consume(cmd(canon::RapidMove{at(60, 10, 5)}, 4));
+    sim.consume(cmd(canon::ProbeMove{at(60, 10, -20), 300.0}, 5));
+    const interp::WorldSnapshot miss = sim.drain();
+    EXPECT_FALSE(miss.probeTriggered);
+    EXPECT_NEAR(miss.position[Axis::Z], -20.0, 1e-6);
 }
 
 // Records the spindle angle and Z during a synchronised move.

@@ -48,9 +48,9 @@ TEST(BuiltinMachines, MillIsAVertical3AxisMill) {
     EXPECT_EQ(mill.spindle.maxRpm, 12000);
     EXPECT_EQ(mill.servoPeriodMs, 1.0);
     EXPECT_EQ(mill.pathToleranceMm, 0.01);
-    expectAxis(mill, 'X', -400.0, 400.0, 500.0, 2000.0, 50000.0);
-    expectAxis(mill, 'Y', -300.0, 300.0, 500.0, 2000.0, 50000.0);
-    expectAxis(mill, 'Z', -500.0, 50.0, 500.0, 2000.0, 50000.0);
+    expectAxis(mill, 'X', -400.0, 400.0, 500.0, 2000.0, 1000000.0);
+    expectAxis(mill, 'Y', -300.0, 300.0, 500.0, 2000.0, 1000000.0);
+    expectAxis(mill, 'Z', -500.0, 50.0, 500.0, 2000.0, 1000000.0);
     for (const AxisConfig& axis : mill.axes) {
         EXPECT_EQ(axis.type, AxisType::Linear);
         EXPECT_TRUE(axis.enabled);

@@ -2,7 +2,8 @@
 // cycle in simulated time, feed time against the FIGURES bound (trapezoidal rows, U-turns at
 // the centripetal limit) and against the jerk-aware bound, side by side with LinuxCNC's ratio.
 // Usage: motion_figures [BLOCKS] [JERK...]   (defaults: 5000 blocks, jerk 50000 mm/s^3)
-//        motion_figures mill   the built-in mill as it is: 5000 x 0.02 mm at F6000
+//        motion_figures mill [JERK [SAMPLES.csv]]   the built-in mill: 5000 x 0.02 mm at F6000
+//                                                   (JERK 0 = the mill's own)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -18,24 +19,32 @@ using namespace kerf::motion;
 
 namespace {
 
-int runMill() {
+int runMill(double jerk, const char* samplesPath) {
     test::RasterOptions raster;
     raster.blocks = 5000;
     raster.segMm = 0.02;
     raster.feedMmPerMin = 6000.0;
     SimulationOptions options;
     options.startPosition = test::rasterStart().values;
-    SimulatedMachine sim(test::millConfig(), options);
+    if (samplesPath) options.samplesCsvPath = samplesPath;
+    machine::MachineConfig config = test::millConfig();
+    if (jerk > 0.0) {
+        for (auto& axis : config.axes)
+            axis.maxJerkPerS3 = jerk;
+    }
+    jerk = config.axes[0].maxJerkPerS3;
+    SimulatedMachine sim(config, options);
     test::emitRaster(raster, sim);
     sim.drain();
     MotionReport report = sim.report();
     double bound = test::rasterBoundS(raster, 2000.0);
-    double jerkBound = test::rasterBoundS(raster, 2000.0, 50000.0);
+    double jerkBound = test::rasterBoundS(raster, 2000.0, jerk);
     std::printf(
-        "mill 5000 x 0.02 mm F6000: feed time %.3f s, bound %.3f s (x%.2f), jerk bound %.3f s "
+        "mill 5000 x 0.02 mm F6000, J %.0f: feed time %.3f s, bound %.3f s (x%.2f), jerk bound "
+        "%.3f s "
         "(x%.2f), max deviation %.4f mm\n",
-        report.feedTimeS, bound, report.feedTimeS / bound, jerkBound, report.feedTimeS / jerkBound,
-        report.maxPathDeviationMm);
+        jerk, report.feedTimeS, bound, report.feedTimeS / bound, jerkBound,
+        report.feedTimeS / jerkBound, report.maxPathDeviationMm);
     for (const AxisReport& a : report.axes) {
         std::printf("  %c max v %.2f mm/s, a %.1f mm/s^2, j %.0f mm/s^3\n", a.letter, a.maxVelocity,
                     a.maxAccel, a.maxJerk);
@@ -46,7 +55,9 @@ int runMill() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc > 1 && std::string(argv[1]) == "mill") return runMill();
+    if (argc > 1 && std::string(argv[1]) == "mill") {
+        return runMill(argc > 2 ? std::atof(argv[2]) : 0.0, argc > 3 ? argv[3] : nullptr);
+    }
     int blocks = argc > 1 ? std::atoi(argv[1]) : 5000;
     std::vector<double> jerks;
     for (int i = 2; i < argc; ++i)

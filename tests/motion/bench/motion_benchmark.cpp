@@ -1,5 +1,5 @@
 // Planning throughput and servo cycle CPU time (Google Benchmark).
-//   motion_benchmark --benchmark_filter=Plan     segments planned per second (0.02 mm raster)
+//   motion_benchmark --benchmark_filter=Plan     segments planned per second (gen_nc rasters)
 //   motion_benchmark --benchmark_filter=Servo    servo cycle CPU time, mean / p99 / worst
 // The servo cycle is timed with the thread's CPU clock: time the thread was not running (another
 // process on a loaded machine) does not count; what a real-time thread would need does.
@@ -34,10 +34,15 @@ std::vector<canon::Command> rasterCommands(int blocks, double seg, double feed) 
     return collect.commands;
 }
 
+// Arguments: segment length in µm, axis jerk in mm/s^3 (the filter, and so the window of
+// curvature steps, is longer at a lower jerk).
 void PlanRaster(benchmark::State& state) {
     const double seg = static_cast<double>(state.range(0)) / 1000.0;
     auto commands = rasterCommands(20000, seg, 6000.0);
-    MachineModel model = makeMachineModel(test::figuresMill(), {});
+    machine::MachineConfig config = test::figuresMill();
+    for (auto& axis : config.axes)
+        axis.maxJerkPerS3 = static_cast<double>(state.range(1));
+    MachineModel model = makeMachineModel(config, {});
     size_t elements = 0;
     for (auto _ : state) {
         Planner planner(model);
@@ -58,7 +63,9 @@ void PlanRaster(benchmark::State& state) {
         static_cast<double>(elements) /
         (static_cast<double>(commands.size()) * static_cast<double>(state.iterations()));
 }
-BENCHMARK(PlanRaster)->Arg(200)->Arg(50)->Arg(20)->Unit(benchmark::kMillisecond);
+BENCHMARK(PlanRaster)
+    ->ArgsProduct({{200, 50, 20}, {50000, 1000000}})
+    ->Unit(benchmark::kMillisecond);
 
 machine::MachineConfig withAxes(int axes) {
     machine::MachineConfig config = test::millConfig();
@@ -100,7 +107,7 @@ void ServoCycleCpu(benchmark::State& state) {
     const int axes = static_cast<int>(state.range(0));
     machine::MachineConfig config = withAxes(axes);
     MachineModel model = makeMachineModel(config, {});
-    auto commands = rasterCommands(30000, 0.05, 6000.0);
+    auto commands = rasterCommands(60000, 0.05, 6000.0);
     if (axes == 5) commands = withRotation(std::move(commands));
     Planner planner(model);
     planner.setPosition(test::rasterStart().values);
