@@ -9,6 +9,7 @@
 #include "app/runner/picture_output.h"
 
 #ifdef KERF_WITH_UI
+#include "motion/runtime/machine_realtime_options.h"
 #include "motion/runtime/realtime_motion_port.h"
 #include "ui/shell/hmi_main.h"
 #endif
@@ -62,11 +63,12 @@ int main(int argc, char** argv) {
 
 #ifdef KERF_WITH_UI
     kerf::ui::HmiOptions hmi;
-    // The HMI runs programs on the simulated drives in real time.
+    // The HMI runs programs on the simulated drives in real time, from the machine file's
+    // workpiece origin, with its simulated probe box.
     hmi.connectMachine = [](const kerf::machine::MachineConfig& config) {
         return std::unique_ptr<kerf::task::MotionPort>(
-            std::make_unique<kerf::motion::RealtimeMotionPort>(config,
-                                                               kerf::motion::RealtimeOptions{}));
+            std::make_unique<kerf::motion::RealtimeMotionPort>(
+                config, kerf::motion::machineRealtimeOptions(config)));
     };
     app.add_option("--machine", hmi.machine, "machine for the HMI: mill, lathe or a TOML file");
     app.add_option("--screenshot", hmi.screenshot,

@@ -57,10 +57,6 @@
         <translation>Programme (.H .I .PIT)</translation>
     </message>
     <message>
-        <source>Tables (.T .TCH .PR .D .PNT .TAB)</source>
-        <translation>Tabellen (.T .TCH .PR .D .PNT .TAB)</translation>
-    </message>
-    <message>
         <source>NC root: %1</source>
         <translation>NC-Verzeichnis: %1</translation>
     </message>
@@ -95,6 +91,10 @@
     <message>
         <source>Name of the new folder:</source>
         <translation>Name des neuen Verzeichnisses:</translation>
+    </message>
+    <message>
+        <source>Tables (.T .TCH .PR .D .PNT .TP .TAB)</source>
+        <translation>Tabellen (.T .TCH .PR .D .PNT .TP .TAB)</translation>
     </message>
 </context>
 <context>
@@ -5105,6 +5105,78 @@ editieren</translation>
         <source>Put the cursor on a CYCL DEF block to edit it.</source>
         <translation>Den Cursor auf einen CYCL DEF-Satz setzen, um ihn zu editieren.</translation>
     </message>
+    <message>
+        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
+        <translation>TNC-ISO-Programme (.I) werden nicht geprüft: Kerf interpretiert diesen Dialekt noch nicht</translation>
+    </message>
+    <message>
+        <source>the file is outside the NC root</source>
+        <translation>die Datei liegt außerhalb des NC-Stammverzeichnisses</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>die Datei existiert nicht</translation>
+    </message>
+    <message>
+        <source>the NC root itself cannot be changed</source>
+        <translation>das NC-Stammverzeichnis selbst kann nicht geändert werden</translation>
+    </message>
+    <message>
+        <source>the file is protected</source>
+        <translation>die Datei ist geschützt</translation>
+    </message>
+    <message>
+        <source>a file with this name exists already</source>
+        <translation>eine Datei mit diesem Namen existiert bereits</translation>
+    </message>
+    <message>
+        <source>cannot copy: {1}</source>
+        <translation>Kopieren nicht möglich: {1}</translation>
+    </message>
+    <message>
+        <source>cannot move: {1}</source>
+        <translation>Verschieben nicht möglich: {1}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a valid file name</source>
+        <translation>&apos;{1}&apos; ist kein gültiger Dateiname</translation>
+    </message>
+    <message>
+        <source>cannot delete: {1}</source>
+        <translation>Löschen nicht möglich: {1}</translation>
+    </message>
+    <message>
+        <source>cannot create the folder: {1}</source>
+        <translation>Ordner kann nicht angelegt werden: {1}</translation>
+    </message>
+    <message>
+        <source>cannot change the protection: {1}</source>
+        <translation>Schutz kann nicht geändert werden: {1}</translation>
+    </message>
+    <message>
+        <source>the TNC ISO dialect is not supported yet</source>
+        <translation>der TNC-ISO-Dialekt wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>{1} needs a number, not &quot;{2}&quot;</source>
+        <translation>{1} braucht eine Zahl, nicht &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} must be from {2} to {3}</source>
+        <translation>{1} muss zwischen {2} und {3} liegen</translation>
+    </message>
+    <message>
+        <source>this table has a fixed row for every entry: edit the values instead</source>
+        <translation>diese Tabelle hat für jeden Eintrag eine feste Zeile: stattdessen die Werte ändern</translation>
+    </message>
+    <message>
+        <source>the table is full ({1}{2} to {1}{3})</source>
+        <translation>die Tabelle ist voll ({1}{2} bis {1}{3})</translation>
+    </message>
+    <message>
+        <source>the test run stopped after {1} blocks: endless loop?</source>
+        <translation>der Programm-Test hat nach {1} Sätzen angehalten: Endlosschleife?</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5196,6 +5268,60 @@ ausführen</translation>
     <message>
         <source>Block</source>
         <translation>Satz</translation>
+    </message>
+    <message>
+        <source>Set preset</source>
+        <translation>Bezugspunkt setzen</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <source>Position of %1 at the current point</source>
+        <translation>Position von %1 am aktuellen Punkt</translation>
+    </message>
+    <message>
+        <source>Handwheel
+axis %1</source>
+        <translation>Handrad
+Achse %1</translation>
+    </message>
+    <message>
+        <source>Step
+x%1</source>
+        <translation>Schritt
+x%1</translation>
+    </message>
+    <message>
+        <source>Handwheel
+-</source>
+        <translation>Handrad
+-</translation>
+    </message>
+    <message>
+        <source>Handwheel
++</source>
+        <translation>Handrad
++</translation>
+    </message>
+    <message>
+        <source>Coolant
+on</source>
+        <translation>Kühlmittel
+ein</translation>
+    </message>
+    <message>
+        <source>Coolant
+off</source>
+        <translation>Kühlmittel
+aus</translation>
+    </message>
+    <message>
+        <source>Set
+preset</source>
+        <translation>Bezugspunkt
+setzen</translation>
     </message>
 </context>
 </TS>

@@ -57,10 +57,6 @@
         <translation>Programas (.H .I .PIT)</translation>
     </message>
     <message>
-        <source>Tables (.T .TCH .PR .D .PNT .TAB)</source>
-        <translation>Tablas (.T .TCH .PR .D .PNT .TAB)</translation>
-    </message>
-    <message>
         <source>NC root: %1</source>
         <translation>Directorio NC: %1</translation>
     </message>
@@ -95,6 +91,10 @@
     <message>
         <source>Name of the new folder:</source>
         <translation>Nombre del directorio nuevo:</translation>
+    </message>
+    <message>
+        <source>Tables (.T .TCH .PR .D .PNT .TP .TAB)</source>
+        <translation>Tablas (.T .TCH .PR .D .PNT .TP .TAB)</translation>
     </message>
 </context>
 <context>
@@ -5105,6 +5105,78 @@ ciclo</translation>
         <source>Put the cursor on a CYCL DEF block to edit it.</source>
         <translation>Sitúe el cursor en un bloque CYCL DEF para editarlo.</translation>
     </message>
+    <message>
+        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
+        <translation>Los programas TNC ISO (.I) no se comprueban: Kerf todavía no interpreta este dialecto</translation>
+    </message>
+    <message>
+        <source>the file is outside the NC root</source>
+        <translation>el archivo está fuera de la raíz NC</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>el archivo no existe</translation>
+    </message>
+    <message>
+        <source>the NC root itself cannot be changed</source>
+        <translation>la propia raíz NC no se puede modificar</translation>
+    </message>
+    <message>
+        <source>the file is protected</source>
+        <translation>el archivo está protegido</translation>
+    </message>
+    <message>
+        <source>a file with this name exists already</source>
+        <translation>ya existe un archivo con este nombre</translation>
+    </message>
+    <message>
+        <source>cannot copy: {1}</source>
+        <translation>no se puede copiar: {1}</translation>
+    </message>
+    <message>
+        <source>cannot move: {1}</source>
+        <translation>no se puede mover: {1}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a valid file name</source>
+        <translation>&apos;{1}&apos; no es un nombre de archivo válido</translation>
+    </message>
+    <message>
+        <source>cannot delete: {1}</source>
+        <translation>no se puede borrar: {1}</translation>
+    </message>
+    <message>
+        <source>cannot create the folder: {1}</source>
+        <translation>no se puede crear la carpeta: {1}</translation>
+    </message>
+    <message>
+        <source>cannot change the protection: {1}</source>
+        <translation>no se puede cambiar la protección: {1}</translation>
+    </message>
+    <message>
+        <source>the TNC ISO dialect is not supported yet</source>
+        <translation>el dialecto TNC ISO todavía no está soportado</translation>
+    </message>
+    <message>
+        <source>{1} needs a number, not &quot;{2}&quot;</source>
+        <translation>{1} necesita un número, no &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} must be from {2} to {3}</source>
+        <translation>{1} debe estar entre {2} y {3}</translation>
+    </message>
+    <message>
+        <source>this table has a fixed row for every entry: edit the values instead</source>
+        <translation>esta tabla tiene una fila fija para cada entrada: edite los valores</translation>
+    </message>
+    <message>
+        <source>the table is full ({1}{2} to {1}{3})</source>
+        <translation>la tabla está llena ({1}{2} a {1}{3})</translation>
+    </message>
+    <message>
+        <source>the test run stopped after {1} blocks: endless loop?</source>
+        <translation>la prueba del programa se detuvo tras {1} bloques: ¿bucle infinito?</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5197,6 +5269,60 @@ bloque</translation>
     <message>
         <source>Block</source>
         <translation>Bloque</translation>
+    </message>
+    <message>
+        <source>Set preset</source>
+        <translation>Fijar punto de referencia</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Eje</translation>
+    </message>
+    <message>
+        <source>Position of %1 at the current point</source>
+        <translation>Posición de %1 en el punto actual</translation>
+    </message>
+    <message>
+        <source>Handwheel
+axis %1</source>
+        <translation>Volante
+eje %1</translation>
+    </message>
+    <message>
+        <source>Step
+x%1</source>
+        <translation>Paso
+x%1</translation>
+    </message>
+    <message>
+        <source>Handwheel
+-</source>
+        <translation>Volante
+-</translation>
+    </message>
+    <message>
+        <source>Handwheel
++</source>
+        <translation>Volante
++</translation>
+    </message>
+    <message>
+        <source>Coolant
+on</source>
+        <translation>Refrigerante
+conectado</translation>
+    </message>
+    <message>
+        <source>Coolant
+off</source>
+        <translation>Refrigerante
+desconectado</translation>
+    </message>
+    <message>
+        <source>Set
+preset</source>
+        <translation>Fijar
+punto ref.</translation>
     </message>
 </context>
 </TS>

@@ -57,10 +57,6 @@
         <translation>Programy (.H .I .PIT)</translation>
     </message>
     <message>
-        <source>Tables (.T .TCH .PR .D .PNT .TAB)</source>
-        <translation>Tabele (.T .TCH .PR .D .PNT .TAB)</translation>
-    </message>
-    <message>
         <source>NC root: %1</source>
         <translation>Katalog NC: %1</translation>
     </message>
@@ -95,6 +91,10 @@
     <message>
         <source>Name of the new folder:</source>
         <translation>Nazwa nowego katalogu:</translation>
+    </message>
+    <message>
+        <source>Tables (.T .TCH .PR .D .PNT .TP .TAB)</source>
+        <translation>Tabele (.T .TCH .PR .D .PNT .TP .TAB)</translation>
     </message>
 </context>
 <context>
@@ -5108,6 +5108,78 @@ cykl</translation>
         <source>Put the cursor on a CYCL DEF block to edit it.</source>
         <translation>Ustaw kursor na bloku CYCL DEF, aby go edytować.</translation>
     </message>
+    <message>
+        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
+        <translation>Programy TNC ISO (.I) nie są sprawdzane: Kerf nie interpretuje jeszcze tego dialektu</translation>
+    </message>
+    <message>
+        <source>the file is outside the NC root</source>
+        <translation>plik leży poza katalogiem głównym NC</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>plik nie istnieje</translation>
+    </message>
+    <message>
+        <source>the NC root itself cannot be changed</source>
+        <translation>samego katalogu głównego NC nie można zmienić</translation>
+    </message>
+    <message>
+        <source>the file is protected</source>
+        <translation>plik jest chroniony</translation>
+    </message>
+    <message>
+        <source>a file with this name exists already</source>
+        <translation>plik o tej nazwie już istnieje</translation>
+    </message>
+    <message>
+        <source>cannot copy: {1}</source>
+        <translation>nie można skopiować: {1}</translation>
+    </message>
+    <message>
+        <source>cannot move: {1}</source>
+        <translation>nie można przenieść: {1}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a valid file name</source>
+        <translation>&apos;{1}&apos; nie jest prawidłową nazwą pliku</translation>
+    </message>
+    <message>
+        <source>cannot delete: {1}</source>
+        <translation>nie można usunąć: {1}</translation>
+    </message>
+    <message>
+        <source>cannot create the folder: {1}</source>
+        <translation>nie można utworzyć folderu: {1}</translation>
+    </message>
+    <message>
+        <source>cannot change the protection: {1}</source>
+        <translation>nie można zmienić ochrony: {1}</translation>
+    </message>
+    <message>
+        <source>the TNC ISO dialect is not supported yet</source>
+        <translation>dialekt TNC ISO nie jest jeszcze obsługiwany</translation>
+    </message>
+    <message>
+        <source>{1} needs a number, not &quot;{2}&quot;</source>
+        <translation>{1} wymaga liczby, a nie &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} must be from {2} to {3}</source>
+        <translation>{1} musi mieścić się w zakresie od {2} do {3}</translation>
+    </message>
+    <message>
+        <source>this table has a fixed row for every entry: edit the values instead</source>
+        <translation>ta tabela ma stały wiersz dla każdej pozycji: zamiast tego edytuj wartości</translation>
+    </message>
+    <message>
+        <source>the table is full ({1}{2} to {1}{3})</source>
+        <translation>tabela jest pełna ({1}{2} do {1}{3})</translation>
+    </message>
+    <message>
+        <source>the test run stopped after {1} blocks: endless loop?</source>
+        <translation>test programu zatrzymał się po {1} blokach: nieskończona pętla?</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5200,6 +5272,60 @@ blok</translation>
     <message>
         <source>Block</source>
         <translation>Blok</translation>
+    </message>
+    <message>
+        <source>Set preset</source>
+        <translation>Ustaw punkt odniesienia</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Oś</translation>
+    </message>
+    <message>
+        <source>Position of %1 at the current point</source>
+        <translation>Pozycja %1 w bieżącym punkcie</translation>
+    </message>
+    <message>
+        <source>Handwheel
+axis %1</source>
+        <translation>Kółko ręczne
+oś %1</translation>
+    </message>
+    <message>
+        <source>Step
+x%1</source>
+        <translation>Krok
+x%1</translation>
+    </message>
+    <message>
+        <source>Handwheel
+-</source>
+        <translation>Kółko ręczne
+-</translation>
+    </message>
+    <message>
+        <source>Handwheel
++</source>
+        <translation>Kółko ręczne
++</translation>
+    </message>
+    <message>
+        <source>Coolant
+on</source>
+        <translation>Chłodziwo
+wł.</translation>
+    </message>
+    <message>
+        <source>Coolant
+off</source>
+        <translation>Chłodziwo
+wył.</translation>
+    </message>
+    <message>
+        <source>Set
+preset</source>
+        <translation>Ustaw punkt
+odniesienia</translation>
     </message>
 </context>
 </TS>

@@ -57,10 +57,6 @@
         <translation>Programas (.H .I .PIT)</translation>
     </message>
     <message>
-        <source>Tables (.T .TCH .PR .D .PNT .TAB)</source>
-        <translation>Tabelas (.T .TCH .PR .D .PNT .TAB)</translation>
-    </message>
-    <message>
         <source>NC root: %1</source>
         <translation>Raiz NC: %1</translation>
     </message>
@@ -95,6 +91,10 @@
     <message>
         <source>Name of the new folder:</source>
         <translation>Nome da nova pasta:</translation>
+    </message>
+    <message>
+        <source>Tables (.T .TCH .PR .D .PNT .TP .TAB)</source>
+        <translation>Tabelas (.T .TCH .PR .D .PNT .TP .TAB)</translation>
     </message>
 </context>
 <context>
@@ -5105,6 +5105,78 @@ ciclo</translation>
         <source>Put the cursor on a CYCL DEF block to edit it.</source>
         <translation>Coloque o cursor num bloco CYCL DEF para o editar.</translation>
     </message>
+    <message>
+        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
+        <translation>Os programas TNC ISO (.I) não são verificados: o Kerf ainda não interpreta este dialeto</translation>
+    </message>
+    <message>
+        <source>the file is outside the NC root</source>
+        <translation>o ficheiro está fora da raiz NC</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>o ficheiro não existe</translation>
+    </message>
+    <message>
+        <source>the NC root itself cannot be changed</source>
+        <translation>a própria raiz NC não pode ser alterada</translation>
+    </message>
+    <message>
+        <source>the file is protected</source>
+        <translation>o ficheiro está protegido</translation>
+    </message>
+    <message>
+        <source>a file with this name exists already</source>
+        <translation>já existe um ficheiro com este nome</translation>
+    </message>
+    <message>
+        <source>cannot copy: {1}</source>
+        <translation>não é possível copiar: {1}</translation>
+    </message>
+    <message>
+        <source>cannot move: {1}</source>
+        <translation>não é possível mover: {1}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a valid file name</source>
+        <translation>&apos;{1}&apos; não é um nome de ficheiro válido</translation>
+    </message>
+    <message>
+        <source>cannot delete: {1}</source>
+        <translation>não é possível apagar: {1}</translation>
+    </message>
+    <message>
+        <source>cannot create the folder: {1}</source>
+        <translation>não é possível criar a pasta: {1}</translation>
+    </message>
+    <message>
+        <source>cannot change the protection: {1}</source>
+        <translation>não é possível alterar a proteção: {1}</translation>
+    </message>
+    <message>
+        <source>the TNC ISO dialect is not supported yet</source>
+        <translation>o dialeto TNC ISO ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>{1} needs a number, not &quot;{2}&quot;</source>
+        <translation>{1} precisa de um número, não &quot;{2}&quot;</translation>
+    </message>
+    <message>
+        <source>{1} must be from {2} to {3}</source>
+        <translation>{1} tem de estar entre {2} e {3}</translation>
+    </message>
+    <message>
+        <source>this table has a fixed row for every entry: edit the values instead</source>
+        <translation>esta tabela tem uma linha fixa por entrada: edite os valores</translation>
+    </message>
+    <message>
+        <source>the table is full ({1}{2} to {1}{3})</source>
+        <translation>a tabela está cheia ({1}{2} a {1}{3})</translation>
+    </message>
+    <message>
+        <source>the test run stopped after {1} blocks: endless loop?</source>
+        <translation>o teste do programa parou após {1} blocos: ciclo infinito?</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5197,6 +5269,60 @@ bloco</translation>
     <message>
         <source>Block</source>
         <translation>Bloco</translation>
+    </message>
+    <message>
+        <source>Set preset</source>
+        <translation>Definir ponto de referência</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Eixo</translation>
+    </message>
+    <message>
+        <source>Position of %1 at the current point</source>
+        <translation>Posição de %1 no ponto atual</translation>
+    </message>
+    <message>
+        <source>Handwheel
+axis %1</source>
+        <translation>Volante
+eixo %1</translation>
+    </message>
+    <message>
+        <source>Step
+x%1</source>
+        <translation>Passo
+x%1</translation>
+    </message>
+    <message>
+        <source>Handwheel
+-</source>
+        <translation>Volante
+-</translation>
+    </message>
+    <message>
+        <source>Handwheel
++</source>
+        <translation>Volante
++</translation>
+    </message>
+    <message>
+        <source>Coolant
+on</source>
+        <translation>Refrigerante
+ligado</translation>
+    </message>
+    <message>
+        <source>Coolant
+off</source>
+        <translation>Refrigerante
+desligado</translation>
+    </message>
+    <message>
+        <source>Set
+preset</source>
+        <translation>Definir
+ponto ref.</translation>
     </message>
 </context>
 </TS>

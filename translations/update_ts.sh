@@ -4,7 +4,7 @@
 # - core's operator messages, marked KERF_TR_NOOP("..."), into the context "kerf", where
 #   ui/common/diagnostic_text.cpp looks them up at run time.
 # lupdate 5.15 cannot take a one-argument macro as QT_TRANSLATE_NOOP (it finds nothing) and
-# QT_TR_NOOP would name the context after each class, so a copy of core with
+# QT_TR_NOOP would name the context after each class, so a copy of the sources with
 # KERF_TR_NOOP( rewritten to QT_TRANSLATE_NOOP("kerf", is scanned instead.
 # lupdate 5.15 does not understand C++17 nested namespaces ("namespace kerf::ui {") either: it
 # names contexts "MainWindow" where Qt looks for "kerf::ui::MainWindow", so the last step puts
@@ -14,11 +14,12 @@
 set -e
 cd "$(dirname "$0")/.."
 ts_files=$(ls translations/kerf_*.ts)
-core_copy=$(mktemp -d)
-trap 'rm -rf "$core_copy"' EXIT
-(cd core && find . -name '*.h' -o -name '*.cpp') | while read -r file; do
-  mkdir -p "$core_copy/$(dirname "$file")"
-  sed 's/KERF_TR_NOOP(/QT_TRANSLATE_NOOP("kerf", /g' "core/$file" >"$core_copy/$file"
+# ui/ marks diagnostics with KERF_TR_NOOP as well, so both folders are scanned as rewritten copies.
+source_copy=$(mktemp -d)
+trap 'rm -rf "$source_copy"' EXIT
+find core ui -name '*.h' -o -name '*.cpp' | while read -r file; do
+  mkdir -p "$source_copy/$(dirname "$file")"
+  sed 's/KERF_TR_NOOP(/QT_TRANSLATE_NOOP("kerf", /g' "$file" >"$source_copy/$file"
 done
 # Back to lupdate's names first, so that it keeps the existing translations; classes declared
 # with Q_DECLARE_TR_FUNCTIONS(kerf::ui::Name) are named in full by lupdate too.
@@ -29,7 +30,7 @@ for name in $(grep -rhoE 'Q_DECLARE_TR_FUNCTIONS\(kerf::ui::[A-Za-z]+\)' ui | se
   sed -i "s#<name>$name</name>#<name>kerf::ui::$name</name>#" $ts_files
 done
 # shellcheck disable=SC2086
-/usr/lib/qt5/bin/lupdate -no-obsolete -locations none ui "$core_copy" -ts $ts_files
+/usr/lib/qt5/bin/lupdate -no-obsolete -locations none "$source_copy/ui" "$source_copy/core" -ts $ts_files
 # shellcheck disable=SC2086
 sed -i -E 's#<name>([A-Za-z]+)</name>#<name>kerf::ui::\1</name>#; s#<name>kerf::ui::kerf</name>#<name>kerf</name>#' \
   $ts_files

@@ -7,6 +7,8 @@
 #include <sys/mman.h>
 #include <time.h>
 
+#include "motion/sim/probe_workpiece.h"
+
 namespace kerf::motion {
 
 namespace {
@@ -43,8 +45,29 @@ RealtimeMachine::RealtimeMachine(const machine::MachineConfig& config, RealtimeO
             }
         }
         m_simDrives->setTruePositions(joints);
+        if (!m_options.probeSurface)
+            m_options.probeSurface = probeWorkpiece(config, options.motion.workOffset);
+        if (m_options.probeSurface) {
+            // Called in the servo thread: the surface test and tipOf() do not allocate.
+            m_simDrives->setProbeSurface([this](const std::array<double, kMaxJoints>& j) {
+                return m_options.probeSurface(tipOf(j));
+            });
+        }
     }
     m_planner.setPosition(options.startPosition);
+}
+
+AxisVector RealtimeMachine::tipOf(const std::array<double, kMaxJoints>& joints) const {
+    const double toolLength = m_toolLength.load(std::memory_order_relaxed);
+    AxisVector tip{};
+    for (int j = 0; j < m_model.jointCount; ++j) {
+        const int axis = m_model.jointAxis[static_cast<size_t>(j)];
+        if (axis >= 0) {
+            tip[static_cast<size_t>(axis)] =
+                axisFromJoint(m_model, axis, joints[static_cast<size_t>(j)], toolLength);
+        }
+    }
+    return tip;
 }
 
 RealtimeMachine::~RealtimeMachine() {
@@ -112,6 +135,7 @@ void RealtimeMachine::run() {
 
 bool RealtimeMachine::submit(const canon::Command& command) {
     bool accepted = m_planner.add(command);
+    m_toolLength.store(m_planner.toolLength(), std::memory_order_relaxed);
     pump();
     return accepted;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,7 +31,10 @@ struct RealtimeOptions {
     MotionOptions motion;
     SimDriveOptions drives;
     AxisVector startPosition{};  // simulated drives: tool tip at start
-    int priority = 80;           // SCHED_FIFO priority requested
+    // Simulated drives: the probe touches while this says the tool tip (workpiece coordinates)
+    // is inside the workpiece. Empty: the machine file's [simulation.probe] box, if any.
+    std::function<bool(const AxisVector& tip)> probeSurface;
+    int priority = 80;  // SCHED_FIFO priority requested
     bool lockMemory = true;
 };
 
@@ -72,6 +76,7 @@ public:
 
 private:
     void run();
+    AxisVector tipOf(const std::array<double, kMaxJoints>& joints) const;
 
     MachineModel m_model;
     RealtimeOptions m_options;
@@ -89,6 +94,8 @@ private:
     std::atomic<bool> m_running{false};
     std::atomic<bool> m_priority{false};
     std::atomic<bool> m_locked{false};
+    // The planned tool length, for the probe surface test in the servo thread.
+    std::atomic<double> m_toolLength{0.0};
     std::string m_note;
 };
 

@@ -84,7 +84,7 @@ FileManager::FileManager(fs::path root, QWidget* parent)
 void FileManager::retranslate() {
     m_filter->setItemText(0, tr("All files"));
     m_filter->setItemText(1, tr("Programs (.H .I .PIT)"));
-    m_filter->setItemText(2, tr("Tables (.T .TCH .PR .D .PNT .TAB)"));
+    m_filter->setItemText(2, tr("Tables (.T .TCH .PR .D .PNT .TP .TAB)"));
     m_rootLabel->setText(tr("NC root: %1").arg(pathText(m_operations.root().path())));
     m_recentLabel->setText(tr("Recent files"));
 }
@@ -98,7 +98,7 @@ void FileManager::setFilter(Filter filter) {
     QStringList patterns;
     if (filter == Filter::Programs) patterns = QStringList{"*.h", "*.i", "*.pit"};
     if (filter == Filter::Tables)
-        patterns = QStringList{"*.t", "*.tch", "*.pr", "*.d", "*.pnt", "*.tab"};
+        patterns = QStringList{"*.t", "*.tch", "*.pr", "*.d", "*.pnt", "*.tp", "*.tab"};
     // QFileSystemModel matches name filters case-insensitively: "*.h" also finds "PART.H".
     m_model->setNameFilters(patterns);
     if (m_filter->currentIndex() != static_cast<int>(filter))

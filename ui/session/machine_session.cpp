@@ -4,6 +4,7 @@
 
 #include "ui/common/diagnostic_text.h"
 #include "ui/session/program_interpreter.h"
+#include "ui/session/shifted_motion_port.h"
 
 namespace kerf::ui {
 
@@ -12,7 +13,7 @@ MachineSession::MachineSession(machine::MachineConfig machine,
                                std::filesystem::path ncRoot, QObject* parent)
     : QObject(parent),
       m_machine(std::move(machine)),
-      m_motion(std::move(motion)),
+      m_motion(std::make_unique<ShiftedMotionPort>(std::move(motion))),
       m_ncRoot(std::move(ncRoot)),
       m_run(std::make_unique<task::ProgramRun>(*m_motion)) {
     registerDiagnosticMetaTypes();
@@ -26,6 +27,10 @@ MachineSession::MachineSession(machine::MachineConfig machine,
 MachineSession::~MachineSession() {
     // The run refers to the interpreter's sources and the motion port: it goes first.
     m_run.reset();
+}
+
+task::MotionPort& MachineSession::motion() {
+    return *m_motion;
 }
 
 bool MachineSession::busy() const {
@@ -53,6 +58,8 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     source.path = path;
     source.ncRoot = m_ncRoot;
     source.startPosition.values = m_motion->world().position.values;
+    source.presetInMachine = presetInMachine();
+    m_programName = programName(path);
     return start(loadProgram(m_machine, source), startLine);
 }
 
@@ -62,6 +69,8 @@ bool MachineSession::executeMdi(const QString& block) {
     source.text = mdiProgram(m_machine, block.trimmed().toStdString());
     source.ncRoot = m_ncRoot;
     source.startPosition.values = m_motion->world().position.values;
+    source.presetInMachine = presetInMachine();
+    m_programName.clear();
     return start(loadProgram(m_machine, source), std::nullopt);
 }
 
@@ -74,6 +83,14 @@ bool MachineSession::start(LoadedProgram loaded, std::optional<uint32_t> startLi
     task::StartOptions options;
     options.startLine = startLine;
     options.toolAxis = m_machine.kind == machine::MachineKind::Lathe ? Axis::X : Axis::Z;
+    if (loaded.streamOrigin) {
+        // A FAGOR zero offset (G54-G59 from the table) moves the origin the axes are shown from.
+        Pose shift = *loaded.streamOrigin;
+        const Pose own = presetInMachine();
+        for (size_t i = 0; i < shift.values.size(); ++i)
+            shift.values[i] += m_motion->shift().values[i] - own.values[i];
+        m_motion->setShift(shift);
+    }
     m_motion->setSingleBlock(m_singleBlock);
     m_run->start(std::move(loaded.interpreter), options);
     // The previous run's interpreter is gone: its sources and tools may go too.
@@ -113,6 +130,54 @@ void MachineSession::jogStop(Axis axis) {
 bool MachineSession::jogIncrement(Axis axis, int direction) {
     if (busy()) return false;
     return m_motion->jogIncrement(axis, direction >= 0 ? m_incrementMm : -m_incrementMm);
+}
+
+bool MachineSession::jogDistance(Axis axis, double mm) {
+    if (busy()) return false;
+    return m_motion->jogIncrement(axis, mm);
+}
+
+bool MachineSession::turnHandwheel(int detents) {
+    return jogDistance(m_handwheelAxis, detents * m_handwheelFactor * kHandwheelDetentMm);
+}
+
+bool MachineSession::coolant(bool on) {
+    if (refuseWhenBusy()) return false;
+    canon::CoolantControl control;
+    control.flood = on;
+    return m_motion->manualCoolant(control);
+}
+
+bool MachineSession::setPresetByEntry(Axis axis, double shownValue) {
+    if (refuseWhenBusy()) return false;
+    double value = shownValue;
+    for (const machine::AxisConfig& config : m_machine.axes) {
+        if (axisFromLetter(config.letter) == axis && config.diameterMode) value /= 2.0;
+    }
+    // The origin moves by what the axis shows now minus what it should show.
+    Pose shift = m_motion->shift();
+    shift[axis] += m_motion->status().axes[static_cast<size_t>(axisIndex(axis))].actual - value;
+    m_motion->setShift(shift);
+    m_status = m_motion->status();
+    emit statusChanged(m_status);
+    return true;
+}
+
+Pose MachineSession::presetInMachine() const {
+    Pose preset = m_motion->shift();
+    for (const machine::AxisConfig& config : m_machine.axes) {
+        if (const auto axis = axisFromLetter(config.letter)) preset[*axis] += config.presetPosition;
+    }
+    return preset;
+}
+
+std::optional<int> MachineSession::executingLine() const {
+    if (!busy() || m_programName.empty() || !m_sources) return std::nullopt;
+    const SourceLocation& block = m_status.block;
+    if (block.line == 0 || block.fileId >= m_sources->size() ||
+        m_sources->path(block.fileId) != m_programName)
+        return std::nullopt;
+    return static_cast<int>(block.line);
 }
 
 bool MachineSession::homeAll() {

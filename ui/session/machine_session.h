@@ -26,6 +26,7 @@ class ToolTable;
 namespace kerf::ui {
 
 struct LoadedProgram;
+class ShiftedMotionPort;
 
 // Makes the connection to the machine (app/ decides: simulated or real drives). The programming
 // station has none.
@@ -46,7 +47,8 @@ public:
     ~MachineSession() override;
 
     const machine::MachineConfig& machine() const { return m_machine; }
-    task::MotionPort& motion() { return *m_motion; }
+    // The machine as the programs see it: from the workpiece origin the operator set.
+    task::MotionPort& motion();
 
     // Program run. False (and a message) when the program cannot start: errors in it, or the
     // machine is busy. startLine: start in mid-program at the first block on or after it, with
@@ -66,8 +68,28 @@ public:
     bool jogIncrement(Axis axis, int direction);
     void setIncrementMm(double mm) { m_incrementMm = mm; }
     double incrementMm() const { return m_incrementMm; }
+    // Moves one axis by a distance (the handwheel's detents).
+    bool jogDistance(Axis axis, double mm);
     bool homeAll();
     bool spindle(bool on, double rpm = 1000.0);
+
+    // Electronic handwheel (simulated): each detent moves the selected axis by the factor
+    // (1, 10 or 100) times 0.001 mm.
+    static constexpr double kHandwheelDetentMm = 0.001;
+    void setHandwheelAxis(Axis axis) { m_handwheelAxis = axis; }
+    Axis handwheelAxis() const { return m_handwheelAxis; }
+    void setHandwheelFactor(int factor) { m_handwheelFactor = factor; }
+    int handwheelFactor() const { return m_handwheelFactor; }
+    bool turnHandwheel(int detents);
+    bool coolant(bool on);
+
+    // Set a preset by entry: the axis's current (actual) position becomes `shownValue`, given as
+    // the position display shows it (a lathe's diameter-mode X as a diameter). It moves the
+    // workpiece origin of this session (not the preset table); programs started afterwards use
+    // it. False (and a message) while the machine moves.
+    bool setPresetByEntry(Axis axis, double shownValue);
+    // The workpiece origin in machine coordinates: the machine file's preset plus the entries.
+    Pose presetInMachine() const;
 
     // Fractions: 1 = 100 %.
     void setFeedOverride(double fraction);
@@ -79,6 +101,11 @@ public:
     bool busy() const;
     const task::MachineStatus& status() const { return m_status; }
     const task::ProgramRun& run() const { return *m_run; }
+    // The line of the main program whose block is executing, while a program runs (none in a
+    // called program's file or in MDI).
+    std::optional<int> executingLine() const;
+    // The name (programName()) of the program started last; empty after MDI.
+    const std::string& runningProgramName() const { return m_programName; }
 
     // One step of the task: called by the timer; tests call it directly.
     void service();
@@ -96,8 +123,9 @@ private:
     void report(const DiagnosticList& diagnostics);
 
     machine::MachineConfig m_machine;
-    std::unique_ptr<task::MotionPort> m_motion;
+    std::unique_ptr<ShiftedMotionPort> m_motion;
     std::filesystem::path m_ncRoot;
+    std::string m_programName;  // the running program's name in m_sources; empty: MDI
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;
     std::unique_ptr<tables::ToolTable> m_tools;
@@ -108,6 +136,8 @@ private:
     static constexpr int kProgramStatusEvery = 10;  // services (200 ms)
     int m_servicesSinceProgramStatus = 0;
     double m_incrementMm = 1.0;
+    Axis m_handwheelAxis = Axis::X;
+    int m_handwheelFactor = 1;
     bool m_singleBlock = false;
 };
 

@@ -41,6 +41,7 @@ LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSo
         auto fagor = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
         const bool ok = fagor->loadText(source.text, name);
         loaded.diagnostics = fagor->diagnostics();
+        loaded.streamOrigin = fagor->streamOrigin();
         if (ok) loaded.interpreter = std::move(fagor);
         return loaded;
     }

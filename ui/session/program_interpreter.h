@@ -20,6 +20,9 @@ struct LoadedProgram {
     std::unique_ptr<program::SourceRegistry> sources;
     std::unique_ptr<tables::ToolTable> tools;
     std::unique_ptr<interp::Interpreter> interpreter;  // nullptr: diagnostics say why
+    // FAGOR: the origin the program's coordinates start from (zero offset table or the preset),
+    // machine coordinates; motion must use it.
+    std::optional<Pose> streamOrigin;
     DiagnosticList diagnostics;
 };
 
@@ -31,7 +34,11 @@ struct ProgramSource {
     // The editor's dialect; without it the file and the machine decide (.H Klartext, .I TNC ISO,
     // anything else the machine's: FAGOR on a lathe).
     std::optional<program::Dialect> dialect;
+    Pose presetInMachine{};  // the workpiece origin, machine coordinates (M91, FAGOR G53/G74)
 };
+
+// The name the program's blocks carry in the interpreter's SourceRegistry ("MDI" without a file).
+std::string programName(const std::filesystem::path& path);
 
 LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSource& source);
 

@@ -5,6 +5,7 @@
 #include <QLineEdit>
 
 #include "ui/session/machine_session.h"
+#include "ui/shell/manual_rows.h"
 
 namespace kerf::ui {
 
@@ -56,16 +57,6 @@ SoftkeyRow jogRow(const MachineRowContext& c) {
     row.push_back({QStringLiteral("homeAll"), MachineRows::tr("Home\nall"),
                    [session] { session->homeAll(); }});
     return row;
-}
-
-SoftkeyRow spindleRow(const MachineRowContext& c) {
-    MachineSession* session = c.session;
-    return {
-        {QStringLiteral("spindleOn"), MachineRows::tr("Spindle\non"),
-         [session] { session->spindle(true); }},
-        {QStringLiteral("spindleOff"), MachineRows::tr("Spindle\noff"),
-         [session] { session->spindle(false); }},
-    };
 }
 
 SoftkeyRow runRow(const MachineRowContext& c) {
@@ -133,8 +124,9 @@ std::vector<SoftkeyRow> machineModeRows(task::MachineMode mode, const MachineRow
     if (context.session == nullptr) return {};
     switch (mode) {
         case task::MachineMode::Manual:
+            return {jogRow(context), manualFunctionsRow(context)};
         case task::MachineMode::Handwheel:
-            return {jogRow(context), spindleRow(context)};
+            return {handwheelRow(context), jogRow(context), manualFunctionsRow(context)};
         case task::MachineMode::Mdi:
             return {mdiRow(context)};
         case task::MachineMode::SingleBlock:

@@ -5,6 +5,7 @@
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/session/machine_session.h"
+#include "ui/shell/executing_block_follower.h"
 #include "ui/shell/machine_rows.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/message_panel.h"
@@ -16,11 +17,26 @@
 
 namespace kerf::ui {
 
+namespace {
+
+// A program run shows the program, the positions and the status; manual operation and MDI the
+// positions with the override controls beside the status.
+WorkspaceLayout machineModeLayout(task::MachineMode mode) {
+    const bool programRun =
+        mode == task::MachineMode::SingleBlock || mode == task::MachineMode::FullSequence;
+    return programRun ? WorkspaceLayout::ProgramStatus : WorkspaceLayout::PositionsStatus;
+}
+
+}  // namespace
+
 void MainWindow::connectSession() {
     if (m_context.programmingStation || !m_context.motion) return;
     m_session = new MachineSession(m_context.machine, m_context.motion(), m_context.ncRoot, this);
     m_modes->setMovingQuery([this] { return m_session->busy(); });
     connect(m_session, &MachineSession::statusChanged, m_positions, &PositionDisplay::setStatus);
+    // The machine's state from the start, not only after the first service (a screenshot may come
+    // first).
+    m_positions->setStatus(m_session->status());
     connect(m_session, &MachineSession::runStateChanged, this, [this](task::RunState state) {
         m_positions->setRunState(QCoreApplication::translate("kerf", task::runStateName(state)));
     });
@@ -37,22 +53,28 @@ void MainWindow::connectSession() {
             &MachineSession::setRapidOverride);
     connect(overrides, &OverrideControls::spindleOverrideChanged, m_session,
             &MachineSession::setSpindleOverride);
-    connect(m_modes, &ModeController::modesChanged, this, [this] {
-        if (m_modes->screen() != ScreenMode::Machine) {
-            // Programming needs the program, not the machine's positions.
-            if (m_workspace->layoutKind() == WorkspaceLayout::PositionsStatus)
-                m_workspace->setLayoutKind(WorkspaceLayout::Program);
-            return;
-        }
-        const task::MachineMode mode = m_modes->machineMode();
-        // Program run, single block stops after every block; full sequence runs through.
-        if (mode == task::MachineMode::SingleBlock) m_session->setSingleBlock(true);
-        if (mode == task::MachineMode::FullSequence) m_session->setSingleBlock(false);
-        // The machine modes need the positions and the override controls on the screen.
-        if (m_workspace->layoutKind() == WorkspaceLayout::Program)
-            m_workspace->setLayoutKind(WorkspaceLayout::PositionsStatus);
-        refreshSoftkeys();
-    });
+    new ExecutingBlockFollower(*m_session, *m_program, this);
+    // The layout follows a change of mode; the operator's choice stands until the next one.
+    connect(m_modes, &ModeController::modesChanged, this,
+            [this, shown = std::optional<task::MachineMode>()]() mutable {
+                if (m_modes->screen() != ScreenMode::Machine) {
+                    shown.reset();
+                    // Programming needs the program alone, not the machine's positions.
+                    const WorkspaceLayout layout = m_workspace->layoutKind();
+                    if (layout == WorkspaceLayout::PositionsStatus ||
+                        layout == WorkspaceLayout::ProgramStatus)
+                        m_workspace->setLayoutKind(WorkspaceLayout::Program);
+                    return;
+                }
+                const task::MachineMode mode = m_modes->machineMode();
+                // Program run, single block stops after every block; full sequence runs through.
+                if (mode == task::MachineMode::SingleBlock) m_session->setSingleBlock(true);
+                if (mode == task::MachineMode::FullSequence) m_session->setSingleBlock(false);
+                if (shown != mode && m_workspace->layoutKind() != WorkspaceLayout::ProgramGraphics)
+                    m_workspace->setLayoutKind(machineModeLayout(mode));
+                shown = mode;
+                refreshSoftkeys();
+            });
 }
 
 std::vector<SoftkeyRow> MainWindow::machineRows() {

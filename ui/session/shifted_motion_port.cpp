@@ -1,0 +1,69 @@
+#include "ui/session/shifted_motion_port.h"
+
+#include <variant>
+
+namespace kerf::ui {
+
+namespace {
+
+Pose plus(Pose pose, const Pose& shift) {
+    for (size_t i = 0; i < pose.values.size(); ++i)
+        pose.values[i] += shift.values[i];
+    return pose;
+}
+
+Pose minus(Pose pose, const Pose& shift) {
+    for (size_t i = 0; i < pose.values.size(); ++i)
+        pose.values[i] -= shift.values[i];
+    return pose;
+}
+
+}  // namespace
+
+ShiftedMotionPort::ShiftedMotionPort(std::unique_ptr<task::MotionPort> machine)
+    : m_machine(std::move(machine)) {}
+
+bool ShiftedMotionPort::submit(const canon::Command& command) {
+    if (m_shift == Pose{}) return m_machine->submit(command);
+    canon::Command shifted = command;
+    // Every position in the stream: move targets, the arc centre and the blank.
+    std::visit(
+        [this](auto& body) {
+            using T = std::decay_t<decltype(body)>;
+            if constexpr (std::is_same_v<T, canon::RapidMove> ||
+                          std::is_same_v<T, canon::LinearMove> ||
+                          std::is_same_v<T, canon::SpindleSyncedMove> ||
+                          std::is_same_v<T, canon::ProbeMove>) {
+                body.target = plus(body.target, m_shift);
+            } else if constexpr (std::is_same_v<T, canon::ArcMove>) {
+                body.target = plus(body.target, m_shift);
+                body.center += m_shift.xyz();
+            } else if constexpr (std::is_same_v<T, canon::StockDefinition>) {
+                if (auto* box = std::get_if<canon::StockBox>(&body.shape)) {
+                    box->min += m_shift.xyz();
+                    box->max += m_shift.xyz();
+                }
+            }
+        },
+        shifted.body);
+    return m_machine->submit(shifted);
+}
+
+interp::WorldSnapshot ShiftedMotionPort::world() const {
+    interp::WorldSnapshot world = m_machine->world();
+    world.position = minus(world.position, m_shift);
+    world.probePosition = minus(world.probePosition, m_shift);
+    return world;
+}
+
+task::MachineStatus ShiftedMotionPort::status() const {
+    task::MachineStatus status = m_machine->status();
+    // Machine coordinates (REF), the lag and the distance to go do not depend on the origin.
+    for (size_t i = 0; i < status.axes.size(); ++i) {
+        status.axes[i].nominal -= m_shift.values[i];
+        status.axes[i].actual -= m_shift.values[i];
+    }
+    return status;
+}
+
+}  // namespace kerf::ui

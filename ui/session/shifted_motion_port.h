@@ -1,0 +1,57 @@
+#pragma once
+
+#include <memory>
+
+#include "core/task/motion_port.h"
+
+namespace kerf::ui {
+
+// The machine seen from a workpiece origin moved by `shift` (workpiece coordinates of the
+// machine connection's own origin, the machine file's preset): what the operator sets by entry
+// in Manual operation. Targets going to the machine get the shift added; positions coming back
+// lose it. The machine connection itself never changes: its origin is fixed when it starts.
+class ShiftedMotionPort final : public task::MotionPort {
+public:
+    explicit ShiftedMotionPort(std::unique_ptr<task::MotionPort> machine);
+
+    const Pose& shift() const { return m_shift; }
+    void setShift(const Pose& shift) { m_shift = shift; }
+
+    bool submit(const canon::Command& command) override;
+    bool hasRoom() const override { return m_machine->hasRoom(); }
+    void flush() override { m_machine->flush(); }
+    void pump() override { m_machine->pump(); }
+    bool drained() const override { return m_machine->drained(); }
+    interp::WorldSnapshot world() const override;
+    Progress progress() const override { return m_machine->progress(); }
+
+    void cycleStart() override { m_machine->cycleStart(); }
+    void feedHold() override { m_machine->feedHold(); }
+    void quickStop() override { m_machine->quickStop(); }
+    void setSingleBlock(bool on) override { m_machine->setSingleBlock(on); }
+
+    void setFeedOverride(double fraction) override { m_machine->setFeedOverride(fraction); }
+    void setRapidOverride(double fraction) override { m_machine->setRapidOverride(fraction); }
+    void setSpindleOverride(double fraction) override { m_machine->setSpindleOverride(fraction); }
+    bool jogContinuous(Axis axis, double fraction) override {
+        return m_machine->jogContinuous(axis, fraction);
+    }
+    bool jogStop(Axis axis) override { return m_machine->jogStop(axis); }
+    bool jogIncrement(Axis axis, double distance) override {
+        return m_machine->jogIncrement(axis, distance);
+    }
+    bool home(std::optional<Axis> axis) override { return m_machine->home(axis); }
+    bool manualSpindle(const canon::SpindleControl& spindle) override {
+        return m_machine->manualSpindle(spindle);
+    }
+    bool manualCoolant(const canon::CoolantControl& coolant) override {
+        return m_machine->manualCoolant(coolant);
+    }
+    task::MachineStatus status() const override;
+
+private:
+    std::unique_ptr<task::MotionPort> m_machine;
+    Pose m_shift{};
+};
+
+}  // namespace kerf::ui

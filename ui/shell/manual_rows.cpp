@@ -1,0 +1,92 @@
+#include "ui/shell/manual_rows.h"
+
+#include <QCoreApplication>
+#include <QInputDialog>
+#include <QStringList>
+
+#include "ui/session/machine_session.h"
+
+namespace kerf::ui {
+
+namespace {
+
+// The texts' translation context: the same as machine_rows.cpp's.
+class MachineRows {
+    Q_DECLARE_TR_FUNCTIONS(kerf::ui::MachineRows)
+};
+
+std::vector<char> machineAxes(const MachineSession& session) {
+    std::vector<char> letters;
+    for (const machine::AxisConfig& axis : session.machine().axes) {
+        if (axis.enabled && axisFromLetter(axis.letter)) letters.push_back(axis.letter);
+    }
+    return letters;
+}
+
+// Asks for the axis and the value its position should show now.
+void askPreset(MachineSession* session, QWidget* parent) {
+    QStringList axes;
+    for (char letter : machineAxes(*session))
+        axes << QString(QChar(letter));
+    bool ok = false;
+    const QString axis = QInputDialog::getItem(parent, MachineRows::tr("Set preset"),
+                                               MachineRows::tr("Axis"), axes, 0, false, &ok);
+    if (!ok || axis.isEmpty()) return;
+    const double value =
+        QInputDialog::getDouble(parent, MachineRows::tr("Set preset"),
+                                MachineRows::tr("Position of %1 at the current point").arg(axis),
+                                0.0, -100000.0, 100000.0, 4, &ok);
+    if (!ok) return;
+    if (const auto a = axisFromLetter(axis.at(0).toLatin1())) session->setPresetByEntry(*a, value);
+}
+
+}  // namespace
+
+SoftkeyRow handwheelRow(const MachineRowContext& c) {
+    MachineSession* session = c.session;
+    auto refresh = c.refresh;
+    return {
+        {QStringLiteral("handwheelAxis"),
+         MachineRows::tr("Handwheel\naxis %1").arg(axisLetter(session->handwheelAxis())),
+         [session, refresh] {
+             const std::vector<char> axes = machineAxes(*session);
+             if (axes.empty()) return;
+             size_t next = 0;
+             for (size_t i = 0; i < axes.size(); ++i)
+                 if (axisFromLetter(axes[i]) == session->handwheelAxis())
+                     next = (i + 1) % axes.size();
+             session->setHandwheelAxis(*axisFromLetter(axes[next]));
+             if (refresh) refresh();
+         }},
+        {QStringLiteral("handwheelFactor"),
+         MachineRows::tr("Step\nx%1").arg(session->handwheelFactor()),
+         [session, refresh] {
+             const int factor = session->handwheelFactor();
+             session->setHandwheelFactor(factor >= 100 ? 1 : factor * 10);
+             if (refresh) refresh();
+         }},
+        {QStringLiteral("handwheelMinus"), MachineRows::tr("Handwheel\n-"),
+         [session] { session->turnHandwheel(-1); }},
+        {QStringLiteral("handwheelPlus"), MachineRows::tr("Handwheel\n+"),
+         [session] { session->turnHandwheel(1); }},
+    };
+}
+
+SoftkeyRow manualFunctionsRow(const MachineRowContext& c) {
+    MachineSession* session = c.session;
+    QWidget* parent = c.dialogParent;
+    return {
+        {QStringLiteral("spindleOn"), MachineRows::tr("Spindle\non"),
+         [session] { session->spindle(true); }},
+        {QStringLiteral("spindleOff"), MachineRows::tr("Spindle\noff"),
+         [session] { session->spindle(false); }},
+        {QStringLiteral("coolantOn"), MachineRows::tr("Coolant\non"),
+         [session] { session->coolant(true); }},
+        {QStringLiteral("coolantOff"), MachineRows::tr("Coolant\noff"),
+         [session] { session->coolant(false); }},
+        {QStringLiteral("setPreset"), MachineRows::tr("Set\npreset"),
+         [session, parent] { askPreset(session, parent); }},
+    };
+}
+
+}  // namespace kerf::ui
