@@ -176,6 +176,10 @@
         <source>Program stopped</source>
         <translation>Programm angehalten</translation>
     </message>
+    <message>
+        <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
+        <translation>Der Bezugspunkt konnte nicht in PRESET.PR gespeichert werden; das nächste Programm verwendet wieder den Bezugspunkt aus der Tabelle: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>

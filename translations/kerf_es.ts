@@ -176,6 +176,10 @@
         <source>Program stopped</source>
         <translation>Programa parado</translation>
     </message>
+    <message>
+        <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
+        <translation>No se pudo guardar el punto de referencia en PRESET.PR; el próximo programa volverá a usar el punto de referencia de la tabla: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>

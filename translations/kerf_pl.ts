@@ -177,6 +177,10 @@
         <source>Program stopped</source>
         <translation>Program zatrzymany</translation>
     </message>
+    <message>
+        <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
+        <translation>Nie można zapisać punktu odniesienia w PRESET.PR, więc następny program użyje ponownie punktu odniesienia z tabeli: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>

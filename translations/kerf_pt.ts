@@ -176,6 +176,10 @@
         <source>Program stopped</source>
         <translation>Programa parado</translation>
     </message>
+    <message>
+        <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
+        <translation>Não foi possível guardar o ponto de referência em PRESET.PR; o próximo programa volta a usar o ponto de referência da tabela: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>

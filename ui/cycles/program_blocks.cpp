@@ -33,21 +33,18 @@ long long numberBefore(const QTextDocument& document, int line) {
     return -1;
 }
 
-// Numbers every numbered line from `line` on consecutively after the one before it, inside the
-// cursor's current edit block (TNC numbering: one number per block, not per line).
+// Numbers every block from `line` on consecutively after the one before it, inside the cursor's
+// current edit block (TNC numbering: one number per block, continuation lines carry none).
 void renumberFrom(QTextCursor& edit, int line) {
     QTextDocument& document = *edit.document();
     if (document.blockCount() > kLiveRenumberLimit) return;
-    long long wanted = numberBefore(document, line - 1) + 1;
+    BlockCounter counter(program::Dialect::Klartext, numberBefore(document, line - 1));
     for (QTextBlock b = document.findBlockByNumber(line); b.isValid(); b = b.next()) {
-        const auto number = numberOf(b);
-        if (!number) continue;
-        if (number->number != wanted) {
-            edit.setPosition(b.position());
-            edit.setPosition(b.position() + number->length, QTextCursor::KeepAnchor);
-            edit.insertText(QString::number(wanted));
-        }
-        ++wanted;
+        const auto number = counter.next(b.text());
+        if (!number || number->current.number == number->wanted) continue;
+        edit.setPosition(b.position());
+        edit.setPosition(b.position() + number->current.length, QTextCursor::KeepAnchor);
+        edit.insertText(QString::number(number->wanted));
     }
 }
 

@@ -14,13 +14,16 @@ namespace kerf::ui {
 ProgramEntry::ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent)
     : m_editor(editor), m_parent(dialogParent) {}
 
+// The editor is read-only while a program runs, loads, renumbers or saves: nothing is written.
 bool ProgramEntry::chooseCycle() {
+    if (m_editor.isReadOnly()) return false;
     CycleCatalogueDialog catalogue(m_parent);
     if (catalogue.exec() != QDialog::Accepted || !catalogue.selectedCycle()) return false;
     return defineCycle(catalogue.selectedCycle()->number);
 }
 
 bool ProgramEntry::defineCycle(int number) {
+    if (m_editor.isReadOnly()) return false;
     const cycles::CycleDescriptor* cycle = cycles::findCycle(number);
     if (!cycle) return false;
     CycleDialog dialog(*cycle, programIsInch(*m_editor.document()), m_parent);
@@ -30,6 +33,7 @@ bool ProgramEntry::defineCycle(int number) {
 }
 
 bool ProgramEntry::editCycleAtCursor() {
+    if (m_editor.isReadOnly()) return false;
     const QTextDocument& document = *m_editor.document();
     const auto range = cycleDefinitionAt(document, m_editor.textCursor().blockNumber());
     if (!range) return false;
@@ -43,11 +47,13 @@ bool ProgramEntry::editCycleAtCursor() {
 }
 
 bool ProgramEntry::cycleCall() {
+    if (m_editor.isReadOnly()) return false;
     insertBlocks(m_editor, {QStringLiteral("CYCL CALL")});
     return true;
 }
 
 bool ProgramEntry::pathFunction(PathFunction function) {
+    if (m_editor.isReadOnly()) return false;
     PathFunctionDialog dialog(function, m_parent);
     if (dialog.exec() != QDialog::Accepted) return false;
     insertBlocks(m_editor, {dialog.block()});

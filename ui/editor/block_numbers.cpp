@@ -21,11 +21,35 @@ std::optional<BlockNumber> readBlockNumber(QStringView line, program::Dialect di
     return BlockNumber{number, static_cast<int>(pos)};
 }
 
+bool continuesOnNextLine(QStringView line) {
+    qsizetype end = line.size();
+    while (end > 0 && (line[end - 1] == QLatin1Char(' ') || line[end - 1] == QLatin1Char('\t')))
+        --end;
+    return end > 0 && line[end - 1] == QLatin1Char('~');
+}
+
+std::optional<BlockCounter::Numbered> BlockCounter::next(QStringView line) {
+    const bool klartext = m_dialect == program::Dialect::Klartext;
+    const bool continuation = klartext && m_continued;
+    m_continued = klartext && continuesOnNextLine(line);
+    if (continuation) return std::nullopt;
+    const auto current = readBlockNumber(line, m_dialect);
+    if (!current) return std::nullopt;
+    if (klartext) {
+        m_last += 1;
+    } else {
+        m_last = m_last < 0 ? current->number : m_last + 10;
+    }
+    return Numbered{*current, m_last};
+}
+
 QString nextBlockPrefix(QStringView line, QStringView previousLine, program::Dialect dialect) {
     const auto current = readBlockNumber(line, dialect);
     if (!current) return {};
-    if (dialect == program::Dialect::Klartext)
+    if (dialect == program::Dialect::Klartext) {
+        if (continuesOnNextLine(previousLine)) return {};  // digits that continue a block
         return QString::number(current->number + 1) + QLatin1Char(' ');
+    }
     long long step = 10;
     if (const auto previous = readBlockNumber(previousLine, dialect)) {
         if (current->number > previous->number) step = current->number - previous->number;

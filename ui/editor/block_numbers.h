@@ -8,8 +8,10 @@
 
 namespace kerf::ui {
 
-// Block numbers as the controls write them: Klartext starts every line with its 0-based index
-// ("0 BEGIN PGM ..."); ISO programs use N words ("N10 G00 ..."), usually in steps of 10.
+// Block numbers as the controls write them. Klartext counts blocks from 0 ("0 BEGIN PGM ..."); a
+// block may span several lines (a '~' at the end of a line continues it, cycle parameters follow
+// their CYCL DEF on lines of their own) and only its first line carries the number. ISO programs
+// use N words ("N10 G00 ..."), usually in steps of 10.
 
 // The line's block number and how many characters it takes (leading spaces and N included).
 struct BlockNumber {
@@ -18,8 +20,35 @@ struct BlockNumber {
 };
 std::optional<BlockNumber> readBlockNumber(QStringView line, program::Dialect dialect);
 
+// True if a Klartext line ends with the continuation mark '~' (blanks after it allowed).
+bool continuesOnNextLine(QStringView line);
+
+// Reads a program's lines in order and says which number each numbered line should carry:
+// Klartext the previous block's number + 1 (the first block 0); ISO the first number, then steps
+// of 10. Lines continuing a Klartext block carry none, even if they start with digits.
+class BlockCounter {
+public:
+    // `last`: the number of the block before the first line read; -1 at the start of a program.
+    explicit BlockCounter(program::Dialect dialect, long long last = -1)
+        : m_dialect(dialect), m_last(last) {}
+
+    struct Numbered {
+        BlockNumber current;
+        long long wanted = 0;
+    };
+    // The next line's number and the one it should carry; nullopt if the line carries none.
+    std::optional<Numbered> next(QStringView line);
+    long long last() const { return m_last; }
+    program::Dialect dialect() const { return m_dialect; }
+
+private:
+    program::Dialect m_dialect;
+    long long m_last;
+    bool m_continued = false;  // the previous line ended with '~'
+};
+
 // The text that starts a new line after `line` ("13 " after "12 L X+0"; "N30 " after "N20 ..."
-// with step 10); empty when the line carries no block number.
+// with step 10); empty when the line carries no block number or continues the previous line.
 QString nextBlockPrefix(QStringView line, QStringView previousLine, program::Dialect dialect);
 
 // `line` with its block number replaced by `number`; unchanged if it has none.

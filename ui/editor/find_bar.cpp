@@ -105,6 +105,8 @@ bool FindBar::findNext(bool backward) {
 }
 
 bool FindBar::replaceCurrent() {
+    // Read-only while a program loads, is renumbered or written: finding is fine, replacing not.
+    if (m_editor->isReadOnly()) return findNext();
     QTextCursor cursor = m_editor->textCursor();
     const Qt::CaseSensitivity sensitivity =
         m_caseSensitive->isChecked() ? Qt::CaseSensitive : Qt::CaseInsensitive;
@@ -116,7 +118,7 @@ bool FindBar::replaceCurrent() {
 
 int FindBar::replaceAll() {
     const QString needle = m_find->text();
-    if (needle.isEmpty()) return 0;
+    if (needle.isEmpty() || m_editor->isReadOnly()) return 0;
     QTextDocument::FindFlags flags;
     if (m_caseSensitive->isChecked()) flags |= QTextDocument::FindCaseSensitively;
     QTextCursor edit(m_editor->document());

@@ -28,7 +28,8 @@ void ProgramChecker::check(const QString& text, const std::filesystem::path& pat
                            program::Dialect dialect) {
     {
         std::lock_guard lock(m_mutex);
-        m_pending = Request{text.toStdString(), path, dialect, ++m_generation};
+        // A shallow copy: the UTF-8 conversion of a large program is done by the worker.
+        m_pending = Request{text, path, dialect, ++m_generation};
     }
     m_wake.notify_one();
 }
@@ -43,7 +44,7 @@ void ProgramChecker::work() {
             request = std::move(*m_pending);
             m_pending.reset();
         }
-        DiagnosticList diagnostics = checkText(request);
+        DiagnosticList diagnostics = checkText(request.text.toStdString(), request);
         std::lock_guard lock(m_mutex);
         if (request.generation != m_generation || m_quit) continue;  // the text changed meanwhile
         // Queued to the UI thread; dropped by Qt if this object is gone by then.
@@ -53,12 +54,12 @@ void ProgramChecker::work() {
     }
 }
 
-DiagnosticList ProgramChecker::checkText(const Request& request) const {
+DiagnosticList ProgramChecker::checkText(const std::string& text, const Request& request) const {
     switch (request.dialect) {
         case program::Dialect::Klartext:
-            return checkKlartextText(request.text, request.path.string(), m_machine, m_ncRoot);
+            return checkKlartextText(text, request.path.string(), m_machine, m_ncRoot);
         case program::Dialect::Fagor:
-            return checkFagorText(request.text, request.path.string(), m_machine, m_ncRoot);
+            return checkFagorText(text, request.path.string(), m_machine, m_ncRoot);
         case program::Dialect::TncIso:
             break;
     }

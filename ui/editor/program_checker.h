@@ -33,13 +33,13 @@ signals:
 
 private:
     struct Request {
-        std::string text;
+        QString text;
         std::filesystem::path path;
         program::Dialect dialect = program::Dialect::Klartext;
         uint64_t generation = 0;
     };
     void work();
-    DiagnosticList checkText(const Request& request) const;
+    DiagnosticList checkText(const std::string& text, const Request& request) const;
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;

@@ -4,9 +4,11 @@
 #include <QKeyEvent>
 #include <QTextBlock>
 #include <QTextCursor>
+#include <limits>
 
 #include "ui/common/diagnostic_text.h"
 #include "ui/editor/block_numbers.h"
+#include "ui/editor/renumber_job.h"
 #include "ui/editor/visible_highlighter.h"
 
 namespace kerf::ui {
@@ -15,37 +17,14 @@ namespace {
 
 constexpr int kMaxUnderlinedLines = 2000;
 
-// The numbers renumber() gives: Klartext the line index; ISO the first number, then steps of 10.
-QString renumberedText(const QTextDocument& document, program::Dialect dialect, bool* changed) {
-    QString text;
-    text.reserve(document.characterCount());
-    long long isoNumber = -1;
-    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
-        const QString line = block.text();
-        long long wanted = block.blockNumber();
-        if (dialect != program::Dialect::Klartext) {
-            if (const auto current = readBlockNumber(line, dialect)) {
-                isoNumber = isoNumber < 0 ? current->number : isoNumber + 10;
-            }
-            wanted = isoNumber;
-        }
-        const auto current = readBlockNumber(line, dialect);
-        if (current && current->number != wanted) {
-            *changed = true;
-            text += withBlockNumber(line, wanted, dialect);
-        } else {
-            text += line;
-        }
-        if (block.next().isValid()) text += QLatin1Char('\n');
-    }
-    return text;
-}
-
 }  // namespace
 
 ProgramEditor::ProgramEditor(QWidget* parent) : QPlainTextEdit(parent) {
     setObjectName("programEditor");
     setLineWrapMode(QPlainTextEdit::NoWrap);
+    // A scroll bar that comes and goes changes the text width, and QPlainTextEdit then visits all
+    // blocks again (~0.1 s on a million blocks, just after a large program is shown).
+    setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOn);
     QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     font.setPointSize(13);
     setFont(font);
@@ -53,8 +32,21 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QPlainTextEdit(parent) {
 }
 
 void ProgramEditor::adoptDocument(QTextDocument* document) {
-    // The previous document is a child of the editor, so setDocument() deletes it.
+    if (m_renumberJob) {
+        // The numbers belong to the document being replaced: stop, without a renumbered().
+        m_renumberJob->disconnect(this);
+        m_renumberJob->cancel();
+        m_renumberJob->deleteLater();
+        m_renumberJob = nullptr;
+        setReadOnly(m_readOnlyBeforeRenumber);
+    }
+    // setDocument() deletes only the editor's first document (a child of its text control); an
+    // adopted one is deleted here, later, in an event of its own (a million blocks take ~0.1 s).
+    // Not in another thread: cursors and selections of the editor still point into it.
+    QTextDocument* previous = this->document();
+    const bool adoptedBefore = previous->parent() == this;
     setDocument(document);
+    if (adoptedBefore) previous->deleteLater();
     document->setParent(this);
     m_highlighter->watch(document);
     m_numbersStale = false;
@@ -84,6 +76,7 @@ void ProgramEditor::keyPressEvent(QKeyEvent* event) {
 }
 
 void ProgramEditor::insertBlock() {
+    if (renumbering()) return;
     QTextCursor cursor = textCursor();
     const QTextBlock block = cursor.block();
     const QString prefix = nextBlockPrefix(block.text(), block.previous().text(), dialect());
@@ -96,21 +89,18 @@ void ProgramEditor::insertBlock() {
         // The following blocks move down by one: renumber them in the same undo step.
         QTextCursor edit(document());
         edit.joinPreviousEditBlock();
-        long long isoNumber =
+        const long long inserted =
             readBlockNumber(cursor.block().text(), dialect()).value_or(BlockNumber{}).number;
+        BlockCounter counter(dialect(), inserted);
         for (QTextBlock next = cursor.block().next(); next.isValid(); next = next.next()) {
-            const auto current = readBlockNumber(next.text(), dialect());
-            if (!current) continue;
-            long long wanted = next.blockNumber();
-            if (dialect() != program::Dialect::Klartext) {
-                if (current->number > isoNumber) break;  // ISO numbers only need to keep ascending
-                isoNumber += 10;
-                wanted = isoNumber;
-            }
-            if (current->number == wanted) continue;
-            edit.setPosition(next.position());
-            edit.setPosition(next.position() + current->length, QTextCursor::KeepAnchor);
-            edit.insertText(withBlockNumber(next.text().left(current->length), wanted, dialect()));
+            const long long previous = counter.last();
+            const auto numbered = counter.next(next.text());
+            if (!numbered) continue;
+            // ISO numbers only need to keep ascending.
+            if (dialect() != program::Dialect::Klartext && numbered->current.number > previous)
+                break;
+            if (numbered->current.number != numbered->wanted)
+                writeBlockNumber(edit, next, numbered->current, numbered->wanted, dialect());
         }
         edit.endEditBlock();
     } else {
@@ -118,17 +108,37 @@ void ProgramEditor::insertBlock() {
     }
 }
 
-bool ProgramEditor::renumber() {
-    bool changed = false;
-    const QString text = renumberedText(*document(), dialect(), &changed);
+void ProgramEditor::renumber() {
+    if (renumbering()) return;
+    if (document()->blockCount() <= kLiveRenumberLimit) {
+        emit renumbered(renumberNow());
+        return;
+    }
     m_numbersStale = false;
-    if (!changed) return false;
-    const int line = currentLine();
-    QTextCursor cursor(document());
-    cursor.select(QTextCursor::Document);
-    cursor.insertText(text);
-    goToLine(line);
-    return true;
+    m_readOnlyBeforeRenumber = isReadOnly();
+    setReadOnly(true);  // the slices form one undo step only if nothing else edits in between
+    m_renumberJob = new RenumberJob(document(), dialect(), this);
+    connect(m_renumberJob, &RenumberJob::finished, this, [this](bool changed) {
+        m_renumberJob->deleteLater();
+        m_renumberJob = nullptr;
+        setReadOnly(m_readOnlyBeforeRenumber);
+        emit renumbered(changed);
+    });
+    m_renumberJob->start();
+}
+
+bool ProgramEditor::renumberNow() {
+    m_numbersStale = false;
+    bool changed = false;
+    RenumberJob job(document(), dialect());
+    job.setSliceMs(std::numeric_limits<int>::max());
+    connect(&job, &RenumberJob::finished, this, [&changed](bool result) { changed = result; });
+    job.start();
+    return changed;
+}
+
+bool ProgramEditor::renumbering() const {
+    return m_renumberJob != nullptr;
 }
 
 void ProgramEditor::goToLine(int line) {

@@ -7,6 +7,7 @@
 
 namespace kerf::ui {
 
+class RenumberJob;
 class VisibleHighlighter;
 
 // The program text: block-structured editing with automatic block numbers, syntax colours for
@@ -29,9 +30,15 @@ public:
 
     // Inserts a line break with the next block number, as Enter does.
     void insertBlock();
-    // Gives every numbered line its block number (Klartext: its line index; ISO: the first
-    // number then steps of 10). One undo step; false if all numbers were already right.
-    bool renumber();
+    // Gives every block its number (Klartext: the previous block's + 1, BEGIN PGM 0, lines that
+    // continue a block unnumbered; ISO: the first number then steps of 10). Only changed numbers
+    // are rewritten, as one undo step. Up to kLiveRenumberLimit lines this happens at once;
+    // longer programs are renumbered in slices between events (the editor read-only meanwhile),
+    // so that the UI stays responsive. renumbered() tells when it is done.
+    void renumber();
+    // The same at once, whatever the length; false if all numbers were already right.
+    bool renumberNow();
+    bool renumbering() const;
     bool numbersStale() const { return m_numbersStale; }
 
     // 1-based line; the line is moved to the middle of the view.
@@ -39,12 +46,18 @@ public:
     int currentLine() const;
     void setDiagnostics(const DiagnosticList& diagnostics);
 
+signals:
+    // `changed`: some number was rewritten.
+    void renumbered(bool changed);
+
 protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
     VisibleHighlighter* m_highlighter = nullptr;
     bool m_numbersStale = false;
+    RenumberJob* m_renumberJob = nullptr;
+    bool m_readOnlyBeforeRenumber = false;
 };
 
 }  // namespace kerf::ui

@@ -27,7 +27,8 @@ public:
     bool busy() const { return m_busy; }
 
 signals:
-    // `text` of the ProgramText is empty: the document holds the text.
+    // The ProgramText still holds the text as read (for the first check); the receiver drops it
+    // once done, as the document holds the text.
     void loaded(QTextDocument* document, const kerf::ui::ProgramText& format,
                 const std::filesystem::path& path);
     void failed(const kerf::Diagnostic& error);

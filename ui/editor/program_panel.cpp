@@ -5,8 +5,10 @@
 #include <QTextDocument>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <utility>
 
 #include "ui/common/diagnostic_text.h"
+#include "ui/editor/background_writer.h"
 #include "ui/editor/find_bar.h"
 #include "ui/editor/program_checker.h"
 #include "ui/editor/program_editor.h"
@@ -62,6 +64,10 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
     m_checkTimer->setSingleShot(true);
     m_checkTimer->setInterval(m_settings.checkDelayMs);
     connect(m_checkTimer, &QTimer::timeout, this, &ProgramPanel::checkNow);
+    connect(m_editor, &ProgramEditor::renumbered, this, [this] {
+        if (std::exchange(m_saveAfterRenumber, false)) write();
+    });
+    m_writer = new BackgroundWriter(this);
     m_loader = new ProgramLoader(this);
     connect(m_loader, &ProgramLoader::loaded, this,
             [this](QTextDocument* document, const ProgramText& format,
@@ -70,7 +76,7 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
                 m_editor->adoptDocument(document);
                 m_editor->setReadOnly(false);
                 watchDocument();
-                finishOpen(path);
+                finishOpen(path, std::exchange(m_file.text, {}));
             });
     connect(m_loader, &ProgramLoader::failed, this, [this](const Diagnostic& error) {
         m_editor->setReadOnly(false);
@@ -96,7 +102,8 @@ bool ProgramPanel::loading() const {
 ProgramPanel::~ProgramPanel() = default;
 
 bool ProgramPanel::open(const std::filesystem::path& path) {
-    if (loading()) return false;
+    if (loading() || m_editor->renumbering() || m_writer->busy()) return false;
+    m_saveAfterRenumber = false;
     std::error_code sizeError;
     const uintmax_t size = std::filesystem::file_size(path, sizeError);
     m_editor->setDialect(program::dialectForFile(path.string(), isLathe(m_settings.machine)));
@@ -117,25 +124,51 @@ bool ProgramPanel::open(const std::filesystem::path& path) {
     m_editor->setPlainText(m_file.text);
     m_editor->document()->setModified(false);
     m_loading = false;
-    m_file.text.clear();  // the document holds the text; no second copy of a large program
-    finishOpen(path);
+    // The document holds the text; no second copy of a large program.
+    finishOpen(path, std::exchange(m_file.text, {}));
     return true;
 }
 
-void ProgramPanel::finishOpen(const std::filesystem::path& path) {
+void ProgramPanel::finishOpen(const std::filesystem::path& path, const QString& text) {
     m_path = path;
     m_recovered = m_recovery.recover(path);
     refreshTitle();
     emit fileChanged();
-    checkNow();
+    m_checkTimer->stop();
+    m_checker->check(text, m_path, m_editor->dialect());
 }
 
 bool ProgramPanel::save() {
     if (m_path.empty()) return false;
-    if (m_editor->numbersStale()) m_editor->renumber();
-    m_file.text = m_editor->toPlainText();
-    const MaybeError error = writeProgramFile(m_path, m_file);
-    m_file.text.clear();
+    if (m_writer->busy()) return true;  // the text shown is being written (read-only meanwhile)
+    if (m_editor->numbersStale() || m_editor->renumbering()) {
+        // A long program is renumbered in slices first; renumbered() then writes the file.
+        m_saveAfterRenumber = true;
+        m_editor->renumber();
+        return true;
+    }
+    return write();
+}
+
+bool ProgramPanel::write() {
+    ProgramText file = m_file;
+    file.text = m_editor->toPlainText();
+    if (file.text.size() < static_cast<qsizetype>(m_settings.backgroundLoadBytes)) {
+        return finishWrite(writeProgramFile(m_path, file));
+    }
+    // A large program is encoded and written by a worker; the editor is read-only meanwhile, so
+    // that the file written is the text shown and "not modified" stays true.
+    m_readOnlyBeforeWrite = m_editor->isReadOnly();
+    m_editor->setReadOnly(true);
+    m_writer->run([path = m_path, file = std::move(file)] { return writeProgramFile(path, file); },
+                  [this](const MaybeError& error) {
+                      m_editor->setReadOnly(m_readOnlyBeforeWrite);
+                      finishWrite(error);
+                  });
+    return true;
+}
+
+bool ProgramPanel::finishWrite(const MaybeError& error) {
     if (error) {
         emit message(Severity::Error,
                      translatedMessage(*error) + QStringLiteral(" (") + fileText(m_path) + ')');

@@ -15,6 +15,7 @@ class QTimer;
 
 namespace kerf::ui {
 
+class BackgroundWriter;
 class FindBar;
 class ProgramChecker;
 class ProgramLoader;
@@ -41,9 +42,13 @@ public:
     ProgramPanel(Settings settings, QWidget* parent = nullptr);
     ~ProgramPanel() override;
 
-    // False (and message()) if the file cannot be read.
+    // False (and message()) if the file cannot be read; false too while the current program is
+    // still being loaded, renumbered or written.
     bool open(const std::filesystem::path& path);
     bool loading() const;
+    // Writes the file (atomically). A long program whose numbers are stale is renumbered first,
+    // in slices between events; a large one is written by a worker with the editor read-only
+    // meanwhile. message() reports the result; true then means "under way".
     bool save();
     const std::filesystem::path& path() const { return m_path; }
     bool modified() const;
@@ -73,8 +78,12 @@ protected:
 private:
     void onEdited();
     void watchDocument();
-    void finishOpen(const std::filesystem::path& path);
+    // `text`: the program as read, for the first check (copying a large document back out would
+    // block the UI thread).
+    void finishOpen(const std::filesystem::path& path, const QString& text);
     void refreshTitle();
+    bool write();
+    bool finishWrite(const MaybeError& error);
 
     Settings m_settings;
     RecoveryStore m_recovery;
@@ -87,9 +96,12 @@ private:
     FindBar* m_findBar = nullptr;
     ProgramChecker* m_checker = nullptr;
     ProgramLoader* m_loader = nullptr;
+    BackgroundWriter* m_writer = nullptr;
     QTimer* m_autosaveTimer = nullptr;
     QTimer* m_checkTimer = nullptr;
     bool m_loading = false;
+    bool m_saveAfterRenumber = false;
+    bool m_readOnlyBeforeWrite = false;
 };
 
 }  // namespace kerf::ui

@@ -15,8 +15,10 @@ MachineSession::MachineSession(machine::MachineConfig machine,
       m_machine(std::move(machine)),
       m_motion(std::make_unique<ShiftedMotionPort>(std::move(motion))),
       m_ncRoot(std::move(ncRoot)),
+      m_presets(m_ncRoot / "PRESET.PR"),
       m_run(std::make_unique<task::ProgramRun>(*m_motion)) {
     registerDiagnosticMetaTypes();
+    applyPresetTable();
     m_status = m_motion->status();
     m_timer = new QTimer(this);
     m_timer->setInterval(kServiceIntervalMs);
@@ -53,6 +55,7 @@ void MachineSession::report(const DiagnosticList& diagnostics) {
 bool MachineSession::startProgram(const QString& program, const std::filesystem::path& path,
                                   std::optional<uint32_t> startLine) {
     if (refuseWhenBusy()) return false;
+    applyPresetTable();
     ProgramSource source;
     source.text = program.toStdString();
     source.path = path;
@@ -65,6 +68,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
 
 bool MachineSession::executeMdi(const QString& block) {
     if (refuseWhenBusy()) return false;
+    applyPresetTable();
     ProgramSource source;
     source.text = mdiProgram(m_machine, block.trimmed().toStdString());
     source.ncRoot = m_ncRoot;
@@ -160,7 +164,35 @@ bool MachineSession::setPresetByEntry(Axis axis, double shownValue) {
     m_motion->setShift(shift);
     m_status = m_motion->status();
     emit statusChanged(m_status);
+    if (m_machine.kind != machine::MachineKind::Lathe) {
+        // The whole origin, so that a new table does not put the other axes at machine zero.
+        AxisMask axes = 0;
+        for (const machine::AxisConfig& config : m_machine.axes) {
+            if (const auto a = axisFromLetter(config.letter)) axes |= axisBit(*a);
+        }
+        if (const MaybeError failed = m_presets.write(presetInMachine(), axes)) {
+            emit message(Severity::Error,
+                         tr("The preset could not be saved in PRESET.PR, so the next program "
+                            "uses the table's preset again: %1")
+                             .arg(translatedMessage(*failed)),
+                         0);
+        }
+    }
     return true;
+}
+
+void MachineSession::applyPresetTable() {
+    // A lathe's origin comes from the FAGOR zero offsets and the entries, not a TNC table.
+    if (m_machine.kind == machine::MachineKind::Lathe) return;
+    const auto values = m_presets.read();
+    Pose shift = m_motion->shift();
+    for (const machine::AxisConfig& config : m_machine.axes) {
+        const auto axis = axisFromLetter(config.letter);
+        if (!axis) continue;
+        if (const auto value = values[static_cast<size_t>(axisIndex(*axis))])
+            shift[*axis] = *value - config.presetPosition;
+    }
+    m_motion->setShift(shift);
 }
 
 Pose MachineSession::presetInMachine() const {

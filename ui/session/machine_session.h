@@ -13,6 +13,7 @@
 #include "core/task/machine_status.h"
 #include "core/task/motion_port.h"
 #include "core/task/program_run.h"
+#include "ui/session/preset_store.h"
 
 class QTimer;
 
@@ -85,10 +86,11 @@ public:
 
     // Set a preset by entry: the axis's current (actual) position becomes `shownValue`, given as
     // the position display shows it (a lathe's diameter-mode X as a diameter). It moves the
-    // workpiece origin of this session (not the preset table); programs started afterwards use
-    // it. False (and a message) while the machine moves.
+    // workpiece origin; programs started afterwards use it. On a mill it is written to row 0 of
+    // the NC root's PRESET.PR. False (and a message) while the machine moves.
     bool setPresetByEntry(Axis axis, double shownValue);
-    // The workpiece origin in machine coordinates: the machine file's preset plus the entries.
+    // The workpiece origin in machine coordinates: the machine file's preset, then (mill) the
+    // axes row 0 of PRESET.PR sets, then the entries of a lathe.
     Pose presetInMachine() const;
 
     // Fractions: 1 = 100 %.
@@ -120,11 +122,15 @@ signals:
 private:
     bool start(LoadedProgram loaded, std::optional<uint32_t> startLine);
     bool refuseWhenBusy();
+    // Mill: the workpiece origin follows row 0 of PRESET.PR (read at start and before every
+    // program, so edits in the table editor count from the next program on).
+    void applyPresetTable();
     void report(const DiagnosticList& diagnostics);
 
     machine::MachineConfig m_machine;
     std::unique_ptr<ShiftedMotionPort> m_motion;
     std::filesystem::path m_ncRoot;
+    PresetStore m_presets;
     std::string m_programName;  // the running program's name in m_sources; empty: MDI
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;

@@ -1,6 +1,9 @@
 #include "ui/editor/program_editor.h"
 
 #include <QLineEdit>
+#include <QPlainTextDocumentLayout>
+#include <QPointer>
+#include <QSignalSpy>
 #include <QTest>
 #include <QTextBlock>
 #include <QTextLayout>
@@ -9,6 +12,7 @@
 
 #include "qt_test_app.h"
 #include "ui/editor/find_bar.h"
+#include "ui/editor/renumber_job.h"
 #include "ui/editor/visible_highlighter.h"
 
 namespace kerf::ui {
@@ -66,7 +70,7 @@ TEST(ProgramEditor, IsoBlocksKeepTheirStep) {
     EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 G00 X0", "N30 ", "N40 M30"}));
 }
 
-TEST(ProgramEditor, LongProgramsAreRenumberedOnRequest) {
+TEST(ProgramEditor, LongProgramsAreRenumberedInSlicesOnRequest) {
     test::testApp();
     ProgramEditor editor;
     QStringList text;
@@ -77,13 +81,63 @@ TEST(ProgramEditor, LongProgramsAreRenumberedOnRequest) {
     editor.insertBlock();
     EXPECT_TRUE(editor.numbersStale());
     EXPECT_EQ(editor.document()->findBlockByNumber(2).text(), QStringLiteral("1 L X+1"));
-    EXPECT_TRUE(editor.renumber());
+    QSignalSpy done(&editor, &ProgramEditor::renumbered);
+    editor.renumber();
     EXPECT_FALSE(editor.numbersStale());
+    if (done.isEmpty()) {
+        EXPECT_TRUE(editor.renumbering());
+        EXPECT_TRUE(editor.isReadOnly());  // nothing may edit between the slices
+        ASSERT_TRUE(done.wait(20000));
+    }
+    EXPECT_TRUE(done.takeFirst().at(0).toBool());
+    EXPECT_FALSE(editor.renumbering());
+    EXPECT_FALSE(editor.isReadOnly());
     EXPECT_EQ(editor.document()->findBlockByNumber(1).text(), QStringLiteral("1 "));
     EXPECT_EQ(editor.document()->findBlockByNumber(2).text(), QStringLiteral("2 L X+1"));
     const int last = editor.document()->blockCount() - 1;
     EXPECT_EQ(editor.document()->findBlockByNumber(last).text(),
               QStringLiteral("%1 L X+%2").arg(last).arg(last - 1));
+}
+
+TEST(RenumberJob, ManySlicesAreOneUndoStep) {
+    test::testApp();
+    QTextDocument document;
+    QStringList text;
+    for (int i = 0; i < 5500; ++i)  // numbered from 1: every block is one too high
+        text << QStringLiteral("%1 L X+%2").arg(i + 1).arg(i);
+    document.setPlainText(text.join('\n'));
+    const QString before = document.toPlainText();
+    RenumberJob job(&document, Dialect::Klartext);
+    job.setSliceMs(0);  // one check interval (1000 blocks) per slice: six slices
+    QSignalSpy done(&job, &RenumberJob::finished);
+    job.start();
+    ASSERT_TRUE(job.running());
+    // After the first slice, block 999 is renumbered and block 1000 not yet.
+    EXPECT_EQ(document.findBlockByNumber(999).text(), QStringLiteral("999 L X+999"));
+    EXPECT_EQ(document.findBlockByNumber(1000).text(), QStringLiteral("1001 L X+1000"));
+    ASSERT_TRUE(done.wait(20000));
+    EXPECT_TRUE(done.takeFirst().at(0).toBool());
+    EXPECT_EQ(document.findBlockByNumber(5499).text(), QStringLiteral("5499 L X+5499"));
+    document.undo();
+    EXPECT_EQ(document.toPlainText(), before);
+}
+
+TEST(ProgramEditor, AdoptingADocumentFreesThePreviousOne) {
+    test::testApp();
+    ProgramEditor editor;
+    const auto plainDocument = [] {
+        auto* document = new QTextDocument;
+        document->setDocumentLayout(new QPlainTextDocumentLayout(document));
+        return document;
+    };
+    QPointer<QTextDocument> first = plainDocument();
+    editor.adoptDocument(first);
+    QPointer<QTextDocument> second = plainDocument();
+    editor.adoptDocument(second);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+    EXPECT_TRUE(first.isNull());  // a replaced program must not stay in memory
+    ASSERT_FALSE(second.isNull());
+    EXPECT_EQ(editor.document(), second.data());
 }
 
 TEST(ProgramEditor, GoToLineMovesTheCursor) {
@@ -131,6 +185,19 @@ TEST(FindBar, ReplaceAllIsOneUndoStep) {
     EXPECT_EQ(editor.toPlainText(), lines({"0 L X+10 F150", "1 L X+20 F150", "2 L X+30 F200"}));
     editor.undo();
     EXPECT_EQ(editor.toPlainText(), lines({"0 L X+10 F100", "1 L X+20 F100", "2 L X+30 F200"}));
+}
+
+TEST(FindBar, ReadOnlyEditorIsNotChanged) {
+    test::testApp();
+    ProgramEditor editor;
+    FindBar bar(&editor);
+    editor.setPlainText(lines({"0 L X+10 F100", "1 L X+20 F100"}));
+    editor.setReadOnly(true);  // as while a program is renumbered in slices
+    bar.findField()->setText("F100");
+    bar.replaceField()->setText("F150");
+    EXPECT_EQ(bar.replaceAll(), 0);
+    EXPECT_TRUE(bar.replaceCurrent());  // still finds
+    EXPECT_EQ(editor.toPlainText(), lines({"0 L X+10 F100", "1 L X+20 F100"}));
 }
 
 TEST(FindBar, FindWrapsAround) {

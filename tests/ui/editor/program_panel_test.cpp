@@ -142,11 +142,48 @@ TEST(ProgramPanel, LargeFilesLoadInTheBackground) {
     EXPECT_TRUE(panel.modified());
     EXPECT_EQ(panel.editor()->document()->findBlockByNumber(3).text(),
               QStringLiteral("3 END PGM F MM"));
+    QSignalSpy messages(&panel, &ProgramPanel::message);
     ASSERT_TRUE(panel.save());
+    // A large file is written by a worker, with the editor read-only until it is on disk.
+    EXPECT_TRUE(panel.editor()->isReadOnly());
+    ASSERT_TRUE(messages.wait(10000));
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Note);
+    EXPECT_FALSE(panel.editor()->isReadOnly());
+    EXPECT_FALSE(panel.modified());
     EXPECT_EQ(readFile(dir / "F.H"), "0 BEGIN PGM F MM\n1 L Z+50 R0 FMAX\n2 \n3 END PGM F MM\n");
     panel.editor()->undo();
     EXPECT_EQ(panel.editor()->document()->findBlockByNumber(2).text(),
               QStringLiteral("2 END PGM F MM"));
+}
+
+TEST(ProgramPanel, LongProgramIsRenumberedThenSaved) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_renumber_save");
+    // BEGIN PGM, then a two-line cycle definition, then plain blocks up to the live limit.
+    std::string text = "0 BEGIN PGM G MM\n1 CYCL DEF 200 DRILLING ~\n  Q200=2 ;SET-UP CLEARANCE\n";
+    const int blocks = ProgramEditor::kLiveRenumberLimit + 5;
+    for (int n = 2; n < blocks; ++n)
+        text += std::to_string(n) + " L X+" + std::to_string(n) + " FMAX\n";
+    writeFile(dir / "G.H", text);
+    ProgramPanel panel(settingsIn(dir));
+    ASSERT_TRUE(panel.open(dir / "G.H"));
+    panel.editor()->goToLine(1);
+    panel.editor()->moveCursor(QTextCursor::EndOfBlock);
+    panel.editor()->insertBlock();  // "1 " after BEGIN PGM; the rest is renumbered on save
+    ASSERT_TRUE(panel.editor()->numbersStale());
+    QSignalSpy messages(&panel, &ProgramPanel::message);
+    ASSERT_TRUE(panel.save());
+    if (messages.isEmpty()) {
+        ASSERT_TRUE(messages.wait(20000));
+    }
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Note);
+    EXPECT_FALSE(panel.modified());
+    // Every block after the new one moved up by one; the parameter line stays unnumbered.
+    std::string expected =
+        "0 BEGIN PGM G MM\n1 \n2 CYCL DEF 200 DRILLING ~\n  Q200=2 ;SET-UP CLEARANCE\n";
+    for (int n = 2; n < blocks; ++n)
+        expected += std::to_string(n + 1) + " L X+" + std::to_string(n) + " FMAX\n";
+    EXPECT_EQ(readFile(dir / "G.H"), expected);
 }
 
 TEST(ProgramPanel, MissingFileIsAMessageNotACrash) {

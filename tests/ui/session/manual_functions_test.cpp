@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/machine/machine_loader.h"
+#include "core/tables/preset_table.h"
 #include "qt_test_app.h"
 #include "simulated_machine.h"
 #include "test_paths.h"
@@ -131,6 +132,43 @@ TEST_F(ManualFunctionsTest, APresetByEntryMovesTheOriginOfTheNextProgram) {
     EXPECT_NEAR(axis(Axis::X).nominal, 30.0, 1e-6);
     EXPECT_NEAR(axis(Axis::X).machineNominal, 5.0, 1e-6);
     EXPECT_NEAR(axis(Axis::Y).machineNominal, 2.0, 1e-6);
+}
+
+TEST_F(ManualFunctionsTest, APresetByEntryIsWrittenToRowZeroOfThePresetTable) {
+    const std::filesystem::path root = kerf::test::uniqueTempDir("hmi_preset_write");
+    connect(*machine::loadMachine("mill"), root);
+    settle();
+    // Machine X 0 shown as X 25: the origin is machine X -25, kept in PRESET.PR row 0.
+    ASSERT_TRUE(session->setPresetByEntry(Axis::X, 25.0));
+    const auto table = tables::PresetTable::load(root / "PRESET.PR");
+    ASSERT_TRUE(table) << table.error().format();
+    ASSERT_NE(table->byNumber(0), nullptr);
+    EXPECT_NEAR(table->byNumber(0)->axis('X').value_or(0.0), -25.0, 1e-9);
+    // The other axes keep the origin they had (the built-in mill's: machine zero).
+    EXPECT_NEAR(table->byNumber(0)->axis('Y').value_or(1.0), 0.0, 1e-9);
+    EXPECT_NEAR(table->byNumber(0)->axis('Z').value_or(1.0), 0.0, 1e-9);
+}
+
+TEST_F(ManualFunctionsTest, ThePresetTablesRowZeroPlacesTheNextProgram) {
+    const std::filesystem::path root = kerf::test::uniqueTempDir("hmi_preset_read");
+    std::ofstream(root / "PRESET.PR") << "BEGIN PRESET.PR MM\n"
+                                         "NR   DOC  X        Y        Z\n"
+                                         "0    -    +100     -20      -150\n"
+                                         "[END]\n";
+    connect(*machine::loadMachine("mill"), root);
+    settle();
+    EXPECT_NEAR(session->presetInMachine()[Axis::Z], -150.0, 1e-9);
+    // Machine X 0 Y 0 Z 0 seen from the origin (100, -20, -150): X -100, Y 20, Z 150.
+    EXPECT_NEAR(axis(Axis::X).actual, -100.0, 1e-6);
+    EXPECT_NEAR(axis(Axis::Z).actual, 150.0, 1e-6);
+    // L X+5 Y+5 Z+20 from that origin is machine X 105, Y -15, Z -130.
+    ASSERT_TRUE(session->executeMdi("L X+5 Y+5 Z+20 FMAX"));
+    ASSERT_TRUE(runToEnd());
+    ASSERT_EQ(session->runState(), RunState::Finished);
+    settle();
+    EXPECT_NEAR(axis(Axis::X).machineNominal, 105.0, 1e-6);
+    EXPECT_NEAR(axis(Axis::Y).machineNominal, -15.0, 1e-6);
+    EXPECT_NEAR(axis(Axis::Z).machineNominal, -130.0, 1e-6);
 }
 
 TEST_F(ManualFunctionsTest, ALatheXPresetIsEnteredAsADiameter) {

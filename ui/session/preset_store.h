@@ -1,0 +1,31 @@
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+
+#include "core/base/expected.h"
+#include "core/geometry/axes.h"
+
+namespace kerf::ui {
+
+// The machine's active preset kept where an operator edits it: row 0 of PRESET.PR in the NC
+// root, machine coordinates, as a TNC keeps the preset set in Manual operation in its row 0.
+class PresetStore {
+public:
+    explicit PresetStore(std::filesystem::path file) : m_file(std::move(file)) {}
+
+    // The values row 0 sets; an axis without a value (or no table, or a table that cannot be
+    // read) has none.
+    std::array<std::optional<double>, kAxisCount> read() const;
+    // Writes the origin of the given axes into row 0 atomically (axes the table has no column
+    // for are left out), creating the table with the standard columns if it is missing.
+    MaybeError write(const Pose& origin, AxisMask axes) const;
+
+    const std::filesystem::path& file() const { return m_file; }
+
+private:
+    std::filesystem::path m_file;
+};
+
+}  // namespace kerf::ui
