@@ -32,6 +32,8 @@ const char* motionModeName(MotionMode mode) noexcept {
             return "stopped";
         case MotionMode::Jog:
             return "jog";
+        case MotionMode::Returning:
+            return "returning";
         case MotionMode::Homing:
             return "homing";
         case MotionMode::Stopping:

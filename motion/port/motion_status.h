@@ -12,11 +12,12 @@ namespace kerf::motion {
 inline constexpr int kMaxJoints = 10;  // nine axes and the spindle
 
 enum class MotionMode : uint8_t {
-    Idle,     // nothing queued
-    Program,  // running queued items
-    Hold,     // feed hold: stopping or stopped on the path
-    Stopped,  // program stop, single block or sync point: waiting for cycle start / the task
-    Jog,      // manual motion (jog, increment, handwheel)
+    Idle,       // nothing queued
+    Program,    // running queued items
+    Hold,       // feed hold: stopping or stopped on the path
+    Stopped,    // program stop, single block or sync point: waiting for cycle start / the task
+    Jog,        // manual motion (jog, increment, handwheel), also away from an interrupted program
+    Returning,  // back to the point where the program was interrupted, then Program
     Homing,
     Stopping,  // quick stop in progress
     EmergencyStop,

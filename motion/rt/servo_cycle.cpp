@@ -109,11 +109,18 @@ void ServoCycle::abortProgram() noexcept {
     m_probeArmed = false;
     m_gen.reset(0.0);
     m_spindle.unlock();
+    m_return.clear();
 }
 
 void ServoCycle::handle(const OperatorCommand& command) noexcept {
     switch (command.kind) {
         case OperatorCommandKind::CycleStart:
+            if (m_return.away()) {
+                // Back to the interruption point first; runReturn() then resumes the program.
+                if (m_mode == MotionMode::Hold || m_mode == MotionMode::Stopped)
+                    m_mode = MotionMode::Returning;
+                break;
+            }
             m_hold = false;
             m_waitingStart = false;
             if (m_mode == MotionMode::Hold || m_mode == MotionMode::Stopped)
@@ -121,10 +128,21 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
             break;
         case OperatorCommandKind::FeedHold:
             if (m_mode == MotionMode::Program) m_hold = true;
+            if (m_mode == MotionMode::Returning) {
+                // Brake the return; at rest the program is interrupted again.
+                m_mover.stop();
+                m_mode = MotionMode::Jog;
+            }
             break;
         case OperatorCommandKind::QuickStop:
-            if (m_mode == MotionMode::Program || m_mode == MotionMode::Hold ||
-                m_mode == MotionMode::Stopped) {
+            if (m_return.away()) {
+                // Off the path: brake the axis that moves and abort the program where it stands.
+                if (m_mover.active()) m_mover.stop();
+                abortProgram();
+                emit(MotionEventKind::Aborted, -1, 0.0, actualTip());
+                m_mode = m_mover.active() ? MotionMode::Jog : MotionMode::Idle;
+            } else if (m_mode == MotionMode::Program || m_mode == MotionMode::Hold ||
+                       m_mode == MotionMode::Stopped) {
                 m_stopping = true;
                 m_mode = MotionMode::Stopping;
             } else if (m_mode == MotionMode::Jog) {
@@ -165,7 +183,10 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
         case OperatorCommandKind::JogContinuous:
         case OperatorCommandKind::JogIncrement:
         case OperatorCommandKind::Handwheel: {
-            if (m_mode != MotionMode::Idle && m_mode != MotionMode::Jog) break;
+            // An interrupted program may be left once the path stands still.
+            const bool interrupted =
+                (m_mode == MotionMode::Hold || m_mode == MotionMode::Stopped) && m_gen.atRest();
+            if (m_mode != MotionMode::Idle && m_mode != MotionMode::Jog && !interrupted) break;
             int joint = command.joint;
             if (joint < 0 || joint >= m_model.jointCount) break;
             int axis = m_model.jointAxis[static_cast<size_t>(joint)];
@@ -199,6 +220,7 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
                     m_mover.moveTo(axis, position, target, velocity);
                 }
             }
+            if (interrupted) m_return.leave(m_interpolated, m_mode);
             m_mode = MotionMode::Jog;
             break;
         }
@@ -518,16 +540,44 @@ void ServoCycle::runProgram() noexcept {
     }
 }
 
-void ServoCycle::runManual() noexcept {
+bool ServoCycle::moveManualAxis() noexcept {
     int axis = m_mover.axis();
-    if (axis < 0 || !m_mover.active()) {
-        m_mode = MotionMode::Idle;
-        return;
-    }
+    if (axis < 0 || !m_mover.active()) return false;
     double position = m_interpolated[static_cast<size_t>(axis)];
     bool moving = m_mover.update(m_dt, axisLimits(axis), position);
     m_interpolated[static_cast<size_t>(axis)] = position;
-    if (!moving) m_mode = MotionMode::Idle;
+    return moving;
+}
+
+void ServoCycle::runManual() noexcept {
+    // A jog away from an interrupted program ends in that interruption, not in Idle.
+    if (!moveManualAxis()) m_mode = m_return.away() ? m_return.interruptedMode() : MotionMode::Idle;
+}
+
+void ServoCycle::runReturn() noexcept {
+    // One axis at a time at the jog velocity, each to rest (setpoints too) before the next.
+    if (m_mover.active()) {
+        if (!moveManualAxis()) {
+            auto axis = static_cast<size_t>(m_mover.axis());
+            m_interpolated[axis] = m_return.point()[axis];  // exactly, without rounding
+        }
+        return;
+    }
+    if (!filterSettled()) return;
+    int axis = m_return.nextAxis(m_interpolated, m_model.toolAxis);
+    if (axis < 0) {
+        // On the path again: resume as a cycle start would have.
+        m_return.clear();
+        m_hold = false;
+        m_waitingStart = false;
+        m_mode = MotionMode::Program;
+        return;
+    }
+    const AxisModel& a = m_model.axes[static_cast<size_t>(axis)];
+    m_mover.moveTo(axis, m_interpolated[static_cast<size_t>(axis)],
+                   m_return.point()[static_cast<size_t>(axis)],
+                   a.velocity * m_model.options.jogVelocityFraction);
+    moveManualAxis();
 }
 
 void ServoCycle::runHoming() noexcept {
@@ -630,14 +680,20 @@ void ServoCycle::cycle() noexcept {
     if (m_mode == MotionMode::Idle && !m_items.empty()) m_mode = MotionMode::Program;
     if (m_mode != MotionMode::Program && m_mode != MotionMode::Hold) m_currentMove = 0;
     switch (m_mode) {
-        case MotionMode::Program:
         case MotionMode::Hold:
         case MotionMode::Stopped:
+            // Away from the interruption the path must not pull the axes back.
+            if (!m_return.away()) runProgram();
+            break;
+        case MotionMode::Program:
         case MotionMode::Stopping:
             runProgram();
             break;
         case MotionMode::Jog:
             runManual();
+            break;
+        case MotionMode::Returning:
+            runReturn();
             break;
         case MotionMode::Homing:
             runHoming();

@@ -8,6 +8,7 @@
 #include "motion/port/motion_status.h"
 #include "motion/port/operator_command.h"
 #include "motion/port/spsc_ring.h"
+#include "motion/rt/contour_return.h"
 #include "motion/rt/joint_mover.h"
 #include "motion/rt/moving_average.h"
 #include "motion/rt/path_generator.h"
@@ -68,6 +69,8 @@ private:
     size_t collectConstraints(size_t first, std::span<Constraint> out) const noexcept;
     void enterElement(const PathElement& element) noexcept;
     void runManual() noexcept;
+    bool moveManualAxis() noexcept;
+    void runReturn() noexcept;
     void runHoming() noexcept;
     void followFeedback() noexcept;
     void writeOutputs() noexcept;
@@ -94,6 +97,7 @@ private:
     PathGenerator m_gen;
     SpindleChannel m_spindle;
     JointMover m_mover;
+    ContourReturn m_return;  // where the operator left an interrupted program
 
     AxisVector m_interpolated{};
     AxisVector m_setpoint{};

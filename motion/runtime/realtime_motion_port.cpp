@@ -28,6 +28,7 @@ task::MachineState machineState(MotionMode mode) {
         case MotionMode::Idle:
             return task::MachineState::Idle;
         case MotionMode::Program:
+        case MotionMode::Returning:
             return task::MachineState::Running;
         case MotionMode::Hold:
             return task::MachineState::Held;
@@ -248,6 +249,7 @@ task::MotionPort::Progress RealtimeMotionPort::progress() const {
             break;
         case MotionMode::Program:
         case MotionMode::Jog:
+        case MotionMode::Returning:
         case MotionMode::Homing:
         case MotionMode::Stopping:
             p.state = State::Running;
@@ -299,7 +301,16 @@ int RealtimeMotionPort::jointOf(Axis axis) const {
 
 bool RealtimeMotionPort::manualAllowed() const {
     const MotionMode mode = m_machine->status().mode;
-    return m_submitted.empty() && (mode == MotionMode::Idle || mode == MotionMode::Jog);
+    // Held or stopped, the operator may jog away from the program (the servo cycle returns to
+    // the contour on cycle start); otherwise only without a program.
+    return mode == MotionMode::Hold || mode == MotionMode::Stopped || mode == MotionMode::Jog ||
+           (mode == MotionMode::Idle && m_submitted.empty());
+}
+
+bool RealtimeMotionPort::programInterrupted() const {
+    const MotionStatus now = m_machine->status();
+    return now.mode == MotionMode::Hold || now.mode == MotionMode::Stopped ||
+           (now.mode == MotionMode::Jog && (now.queued > 0 || !m_submitted.empty()));
 }
 
 bool RealtimeMotionPort::jogContinuous(Axis axis, double velocityFraction) {
@@ -307,7 +318,8 @@ bool RealtimeMotionPort::jogContinuous(Axis axis, double velocityFraction) {
     if (joint < 0 || !manualAllowed()) return false;
     const double velocity =
         velocityFraction * m_machine->model().axes[static_cast<size_t>(axisIndex(axis))].velocity;
-    m_replan = true;
+    // The planner plans on from the jog's end, unless a program waits to continue its path.
+    if (!programInterrupted()) m_replan = true;
     return m_machine->command({OperatorCommandKind::JogContinuous, joint, velocity});
 }
 
@@ -320,7 +332,7 @@ bool RealtimeMotionPort::jogStop(Axis axis) {
 bool RealtimeMotionPort::jogIncrement(Axis axis, double distance) {
     const int joint = jointOf(axis);
     if (joint < 0 || !manualAllowed()) return false;
-    m_replan = true;
+    if (!programInterrupted()) m_replan = true;
     return m_machine->command({OperatorCommandKind::JogIncrement, joint, distance});
 }
 

@@ -62,6 +62,7 @@ private:
 
     int jointOf(Axis axis) const;
     bool manualAllowed() const;
+    bool programInterrupted() const;  // held or stopped, or jogged away from there
     void handle(const MotionEvent& event);
     void prepareForCommands();
     void retire(const Submitted& done);

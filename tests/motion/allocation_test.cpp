@@ -90,15 +90,20 @@ TEST(ServoCycleAllocation, NoHeapAllocationAfterStart) {
     servo.start();
 
     t_counting = true;
+    bool returned = false;
     for (int i = 0; i < 20000; ++i) {
         if (i == 3000) commands.push({OperatorCommandKind::FeedOverride, -1, 1.4});
         if (i == 4000) commands.push({OperatorCommandKind::FeedHold});
+        // Hold, jog away (the program runs about 1 s); the cycle start at 800 returns to the path.
+        if (i == 500) commands.push({OperatorCommandKind::FeedHold});
+        if (i == 650) commands.push({OperatorCommandKind::JogIncrement, 1, 1.0});
         if (i == 4500) commands.push({OperatorCommandKind::CycleStart});
         if (i == 5000) commands.push({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
         if (i == 5200) commands.push({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, false});
         if (i % 400 == 0) commands.push({OperatorCommandKind::CycleStart});
         servo.cycle();
         drives.advance(model.periodS);
+        returned = returned || servo.status().mode == MotionMode::Returning;
         while (!events.empty())
             events.pop();
     }
@@ -117,6 +122,7 @@ TEST(ServoCycleAllocation, NoHeapAllocationAfterStart) {
     t_counting = false;
 
     EXPECT_EQ(g_allocations.load(), 0);
+    EXPECT_TRUE(returned);
     EXPECT_GT(servo.status().cycle, 20000u);
 }
 

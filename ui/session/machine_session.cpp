@@ -122,8 +122,16 @@ void MachineSession::setSingleBlock(bool on) {
     m_motion->setSingleBlock(on);
 }
 
+bool MachineSession::jogAllowed() const {
+    // A held or stopped run may be left by jogging; while the axes jog away from it the run
+    // follows motion and shows as running, but the machine state says it jogs.
+    const task::RunState run = m_run->state();
+    if (run == task::RunState::Held || run == task::RunState::Stopped) return true;
+    return !busy() || m_status.state == task::MachineState::Jogging;
+}
+
 bool MachineSession::jog(Axis axis, int direction) {
-    if (busy()) return false;
+    if (!jogAllowed()) return false;
     return m_motion->jogContinuous(axis, direction >= 0 ? 0.2 : -0.2);
 }
 
@@ -132,12 +140,12 @@ void MachineSession::jogStop(Axis axis) {
 }
 
 bool MachineSession::jogIncrement(Axis axis, int direction) {
-    if (busy()) return false;
+    if (!jogAllowed()) return false;
     return m_motion->jogIncrement(axis, direction >= 0 ? m_incrementMm : -m_incrementMm);
 }
 
 bool MachineSession::jogDistance(Axis axis, double mm) {
-    if (busy()) return false;
+    if (!jogAllowed()) return false;
     return m_motion->jogIncrement(axis, mm);
 }
 

@@ -57,13 +57,16 @@ public:
     bool startProgram(const QString& text, const std::filesystem::path& path,
                       std::optional<uint32_t> startLine = std::nullopt);
     bool executeMdi(const QString& block);
-    void cycleStart();  // resumes after feed hold, a program stop or a single-block stop
+    // Resumes after feed hold, a program stop or a single-block stop; after a jog away from the
+    // interrupted program it first returns to where the program stopped (return to the contour).
+    void cycleStart();
     void feedHold();
     void stop();  // stops on the path and aborts the program
     void setSingleBlock(bool on);
     bool singleBlock() const { return m_singleBlock; }
 
-    // Manual operation (only while no program or MDI block runs).
+    // Manual operation: while no program or MDI block runs, or while one is held or stopped
+    // (the jogs leave its path; cycleStart() returns to it). Homing and the spindle only without.
     bool jog(Axis axis, int direction);  // continuous until jogStop()
     void jogStop(Axis axis);
     bool jogIncrement(Axis axis, int direction);
@@ -122,6 +125,7 @@ signals:
 private:
     bool start(LoadedProgram loaded, std::optional<uint32_t> startLine);
     bool refuseWhenBusy();
+    bool jogAllowed() const;
     // Mill: the workpiece origin follows row 0 of PRESET.PR (read at start and before every
     // program, so edits in the table editor count from the next program on).
     void applyPresetTable();
