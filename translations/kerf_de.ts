@@ -783,6 +783,54 @@ Maschine: %3</translation>
         <source>not touched</source>
         <translation>nicht berührt</translation>
     </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindel</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <source>S %1 %2 (constant surface speed)</source>
+        <translation>S %1 %2 (konstante Schnittgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <source>ft/min</source>
+        <translation>ft/min</translation>
+    </message>
+    <message>
+        <source>m/min</source>
+        <translation>m/min</translation>
+    </message>
+    <message>
+        <source>S %1 rpm</source>
+        <translation>S %1 1/min</translation>
+    </message>
+    <message>
+        <source>limit %1 rpm</source>
+        <translation>Begrenzung %1 1/min</translation>
+    </message>
+    <message>
+        <source>in/rev</source>
+        <translation>in/U</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/U</translation>
+    </message>
+    <message>
+        <source>in/min</source>
+        <translation>in/min</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>F %1 %2</source>
+        <translation>F %1 %2</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

@@ -786,6 +786,54 @@ Maszyna: %3</translation>
         <source>not touched</source>
         <translation>brak zetknięcia</translation>
     </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Wrzeciono</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Posuw</translation>
+    </message>
+    <message>
+        <source>S %1 %2 (constant surface speed)</source>
+        <translation>S %1 %2 (stała prędkość skrawania)</translation>
+    </message>
+    <message>
+        <source>ft/min</source>
+        <translation>ft/min</translation>
+    </message>
+    <message>
+        <source>m/min</source>
+        <translation>m/min</translation>
+    </message>
+    <message>
+        <source>S %1 rpm</source>
+        <translation>S %1 obr/min</translation>
+    </message>
+    <message>
+        <source>limit %1 rpm</source>
+        <translation>ograniczenie %1 obr/min</translation>
+    </message>
+    <message>
+        <source>in/rev</source>
+        <translation>in/obr</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/obr</translation>
+    </message>
+    <message>
+        <source>in/min</source>
+        <translation>in/min</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>F %1 %2</source>
+        <translation>F %1 %2</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

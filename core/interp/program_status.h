@@ -61,6 +61,15 @@ struct ProgramStatus {
         int level = 0;  // Fagor local parameters: nesting level (0 = main program)
         friend bool operator==(const Parameter&, const Parameter&) = default;
     };
+    // Spindle and feed as programmed (the machine's actual values are in the position display).
+    struct Motion {
+        double spindleRpm = 0.0;               // S of G97 / TOOL CALL
+        std::optional<double> surfaceMPerMin;  // G96 active: the surface speed
+        double spindleLimitRpm = 0.0;          // G92 S; 0: none
+        double feedMm = 0.0;                   // F in mm (per minute or per revolution)
+        bool feedPerRevolution = false;        // G95 / FU
+        friend bool operator==(const Motion&, const Motion&) = default;
+    };
     struct Probe {
         bool triggered = false;
         Pose position{};  // workpiece coordinates, mm
@@ -77,6 +86,7 @@ struct ProgramStatus {
     bool inch = false;           // program unit
     char parameterLetter = 'Q';  // Fagor: 'P'
 
+    Motion motion;
     Tool tool;
     Transformations transformations;
     std::vector<Parameter> parameters;  // only the ones the program set, in name order

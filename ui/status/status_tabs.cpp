@@ -181,8 +181,33 @@ void StatusTabs::fillProgram() {
                      {tr("Label"), s.label.empty() ? none : QString::fromStdString(s.label)},
                      {tr("Cycle"), cycle},
                      {tr("M functions"), m.isEmpty() ? none : m.join(' ')},
+                     {tr("Spindle"), spindleText(s.motion, s.inch)},
+                     {tr("Feed"), feedText(s.motion, s.inch)},
                      {tr("Line"), s.line == 0 ? QString() : QString::number(s.line)},
                      {tr("Unit"), s.inch ? tr("inch") : tr("mm")}});
+}
+
+QString StatusTabs::spindleText(const interp::ProgramStatus::Motion& m, bool inch) {
+    QString text;
+    if (m.surfaceMPerMin) {
+        // Constant surface speed (G96): in the program's unit, m/min or ft/min.
+        const double speed = inch ? *m.surfaceMPerMin / 0.3048 : *m.surfaceMPerMin;
+        text = tr("S %1 %2 (constant surface speed)")
+                   .arg(QString::number(speed, 'f', 0), inch ? tr("ft/min") : tr("m/min"));
+    } else {
+        text = tr("S %1 rpm").arg(QString::number(m.spindleRpm, 'f', 0));
+    }
+    if (m.spindleLimitRpm > 0.0)
+        text += ", " + tr("limit %1 rpm").arg(QString::number(m.spindleLimitRpm, 'f', 0));
+    return text;
+}
+
+QString StatusTabs::feedText(const interp::ProgramStatus::Motion& m, bool inch) {
+    const double value = inch ? m.feedMm / 25.4 : m.feedMm;
+    const QString unit = m.feedPerRevolution ? (inch ? tr("in/rev") : tr("mm/rev"))
+                                             : (inch ? tr("in/min") : tr("mm/min"));
+    const int decimals = m.feedPerRevolution ? (inch ? 4 : 3) : (inch ? 2 : 0);
+    return tr("F %1 %2").arg(QString::number(value, 'f', decimals), unit);
 }
 
 void StatusTabs::fillTool() {

@@ -31,6 +31,10 @@ public:
 
     // "40.000 mm" or "1.5748 in": a length given in mm, in the program's unit.
     static QString lengthText(double mm, bool inch);
+    // "S 1200 rpm" or "S 180 m/min (constant surface speed)", with a G92 S limit if any.
+    static QString spindleText(const interp::ProgramStatus::Motion& motion, bool inch);
+    // "F 800 mm/min", "F 0.200 mm/rev" (inch: in/min, in/rev).
+    static QString feedText(const interp::ProgramStatus::Motion& motion, bool inch);
 
 public slots:
     void setProgramStatus(const kerf::interp::ProgramStatus& status);

@@ -46,6 +46,13 @@ interp::ProgramStatus FagorInterpreter::programStatus() const {
     status.inch = m_modal.inch;
     status.parameterLetter = 'P';
 
+    status.motion.spindleRpm = m_spindle.rpm;
+    if (m_modal.constantSurfaceSpeed && m_spindle.surfaceSet)
+        status.motion.surfaceMPerMin = m_spindle.surface;
+    status.motion.spindleLimitRpm = m_spindle.limit;
+    status.motion.feedMm = m_feed;
+    status.motion.feedPerRevolution = m_modal.feed == FeedKind::PerRevolution;
+
     status.tool.number = m_tool.tool > 0 ? m_tool.tool : -1;
     status.tool.radiusMm = m_tool.data.radius;
     status.tool.lathe = interp::ProgramStatus::Tool::LatheOffset{

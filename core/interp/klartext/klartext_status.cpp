@@ -67,6 +67,10 @@ interp::ProgramStatus KlartextInterpreter::programStatus() const {
     if (m_modalCycleCall) status.activeM.push_back(89);
     status.line = m_at.line;
 
+    status.motion.spindleRpm = m_spindleSpeed;
+    status.motion.feedMm = m_feed;
+    status.motion.feedPerRevolution = m_feedMode == canon::FeedMode::PerRevolution;
+
     status.tool.number = m_tool.number;
     status.tool.name = m_tool.name;
     status.tool.lengthMm = m_tool.length;

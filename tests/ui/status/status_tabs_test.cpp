@@ -110,6 +110,33 @@ TEST(StatusTabs, InchProgramsShowInches) {
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift X"), "2.0000 in");
 }
 
+TEST(StatusTabs, SpindleAndFeedAsProgrammed) {
+    test::testApp();
+    StatusTabs tabs;
+    Status s = millStatus();
+    s.motion.surfaceMPerMin = 180.0;
+    s.motion.spindleLimitRpm = 3000.0;
+    s.motion.feedMm = 0.2;
+    s.motion.feedPerRevolution = true;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Spindle"),
+              "S 180 m/min (constant surface speed), limit 3000 rpm");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Feed"), "F 0.200 mm/rev");
+    // Inch: 180 m/min = 590.55 ft/min; 254 mm/min = 10 in/min.
+    s.inch = true;
+    s.motion.feedMm = 254.0;
+    s.motion.feedPerRevolution = false;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Spindle"),
+              "S 591 ft/min (constant surface speed), limit 3000 rpm");
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Feed"), "F 10.00 in/min");
+    s.motion.surfaceMPerMin.reset();
+    s.motion.spindleLimitRpm = 0.0;
+    s.motion.spindleRpm = 1200.0;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Spindle"), "S 1200 rpm");
+}
+
 TEST(StatusTabs, NothingActiveSaysNone) {
     test::testApp();
     StatusTabs tabs;

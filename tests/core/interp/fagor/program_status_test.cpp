@@ -177,6 +177,21 @@ TEST_F(FagorStatus, ProbeResultOfG75) {
     EXPECT_DOUBLE_EQ(s.probe->position[Axis::Z], 3.2);
 }
 
+TEST_F(FagorStatus, ConstantSurfaceSpeedLimitAndFeedPerRevolution) {
+    const std::string program =
+        "M41\nG92 S3000\nG96 S180 M3\nG95 G1 X20 Z-5 F0.2\nG97 S1200\nM30\n";
+    const Status css = runThroughLine(program, 4);
+    ASSERT_TRUE(css.motion.surfaceMPerMin.has_value());
+    EXPECT_DOUBLE_EQ(*css.motion.surfaceMPerMin, 180.0);
+    EXPECT_DOUBLE_EQ(css.motion.spindleLimitRpm, 3000.0);
+    EXPECT_DOUBLE_EQ(css.motion.feedMm, 0.2);
+    EXPECT_TRUE(css.motion.feedPerRevolution);
+    // G97 S1200: back to a fixed speed.
+    const Status rpm = runThroughLine(program, 5);
+    EXPECT_FALSE(rpm.motion.surfaceMPerMin.has_value());
+    EXPECT_DOUBLE_EQ(rpm.motion.spindleRpm, 1200.0);
+}
+
 TEST_F(FagorStatus, InchProgramSaysInch) {
     const Status s = runThroughLine("G70\nG0 X1 Z0\nM30\n", 2);
     EXPECT_TRUE(s.inch);
