@@ -1,7 +1,11 @@
+#include <QApplication>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -9,6 +13,7 @@
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
 #include "test_paths.h"
+#include "ui/cycles/cycle_dialog.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/shell/main_window.h"
@@ -79,6 +84,59 @@ TEST(TestRunScreen, StartRunsTheEditorsProgramAndReportsItsErrorsWithTheirLine) 
     ASSERT_GE(row, 0);
     window.messages()->activate(row);
     EXPECT_EQ(editor->currentLine(), 4);
+}
+
+// The operator story on one window: write a drilling cycle through the CYCL DEF softkeys
+// and its dialog, then check the program in Test run.
+TEST(TestRunScreen, ACycleWrittenThroughTheDialogRunsInTestRun) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_cycle_testrun");
+    ASSERT_FALSE(writeFileAtomically(dir / "DRILL.H",
+                                     "0 BEGIN PGM DRILL MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n"
+                                     "2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 1 Z S3000\n"
+                                     "4 L X+50 Y+50 Z+50 R0 FMAX M3\n5 END PGM DRILL MM\n")
+                     .has_value());
+    MainWindow window(contextIn(dir));
+    window.resize(1280, 800);
+    window.show();
+    ASSERT_TRUE(window.openProgram(dir / "DRILL.H"));
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    ProgramEditor* editor = window.program()->editor();
+    editor->goToLine(5);  // 1-based: block 4, the positioning above the hole
+
+    // CYCL DEF -> drilling group -> 200, answered like an operator typing the values.
+    QTimer::singleShot(0, [] {
+        auto* dialog = qobject_cast<CycleDialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(dialog, nullptr);
+        const char* values[] = {"2", "-10", "150", "5", "0", "0", "50", "0", "0"};
+        for (int i = 0; i < 9; ++i)
+            dialog->input(i)->setText(QString::fromLatin1(values[i]));
+        dialog->accept();
+    });
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("cyclDef")));
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("cycleGroup0")));
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("cycle200")));
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("cyclCall")));
+    const QString text = editor->toPlainText();
+    EXPECT_TRUE(text.contains(QStringLiteral("5 CYCL DEF 200 DRILLING ~"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("6 CYCL CALL\n7 END PGM DRILL MM")))
+        << text.toStdString();
+
+    window.modes().requestProgrammingMode(task::ProgrammingMode::TestRun);
+    TestRunController* run = window.testRun();
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testSpeed")));  // x10 -> x100
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testSpeed")));  // -> max
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testStart")));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [run] { return run->state() == TestRunController::State::Finished; }, 20000));
+    // Spec cycle 200 from Z+50 (surface 0, clearance 2, depth 10 in infeeds of 5): feed Z+2 -> Z-5
+    // and Z-3 -> Z-10, 14 mm at F150 = 5.6 s; rapids Z+50 -> Z+2 (48), Z-5 -> Z+2 (7),
+    // Z+2 -> Z-3 (5), Z-10 -> Z+50 (60); before them the FMAX move from the start point (0, 0, 0)
+    // to (50, 50, 50), 50 * sqrt(3) mm. Test run times rapids at the machine's rapid velocity.
+    const double rapidMm = 48.0 + 7.0 + 5.0 + 60.0 + 50.0 * std::sqrt(3.0);
+    const double expectedS =
+        14.0 / 150.0 * 60.0 + rapidMm / machine::loadMachine("mill")->rapidVelocityMmPerS;
+    EXPECT_NEAR(run->machiningTimeS(), expectedS, 1e-6);
 }
 
 }  // namespace
