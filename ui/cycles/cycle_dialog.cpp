@@ -12,12 +12,13 @@
 #include "ui/cycles/cycle_block.h"
 #include "ui/cycles/cycle_catalogue.h"
 #include "ui/cycles/cycle_help_picture.h"
+#include "ui/cycles/dialog_parts.h"
 
 namespace kerf::ui {
 
 namespace {
 
-constexpr int kTouchHeight = 48;
+constexpr int kTouchHeight = kDialogTouchHeight;
 
 QString rangeText(const CycleField& field, bool inch) {
     const cycles::ParameterDescriptor& p = *field.parameter;
@@ -81,27 +82,8 @@ CycleDialog::CycleDialog(const cycles::CycleDescriptor& cycle, bool inch, QWidge
     scroll->setWidgetResizable(true);
     left->addWidget(scroll, 1);
 
-    m_message = new QLabel(this);
-    m_message->setObjectName("cycleMessage");
-    m_message->setWordWrap(true);
-    m_message->setStyleSheet(QStringLiteral("color: #b00000; font-weight: bold;"));
-    left->addWidget(m_message);
-
-    auto* buttons = new QHBoxLayout;
-    m_ok = new QPushButton(this);
-    m_cancel = new QPushButton(this);
-    for (QPushButton* button : {m_ok, m_cancel}) {
-        // Enter belongs to the fields (next parameter), never to a default button.
-        button->setAutoDefault(false);
-        button->setDefault(false);
-        button->setMinimumHeight(kTouchHeight);
-        button->setMinimumWidth(120);
-        buttons->addWidget(button);
-    }
-    buttons->addStretch(1);
-    connect(m_ok, &QPushButton::clicked, this, &CycleDialog::accept);
-    connect(m_cancel, &QPushButton::clicked, this, &CycleDialog::reject);
-    left->addLayout(buttons);
+    m_message = addRefusalLine(*this, *left, "cycleMessage");
+    addOkCancel(*this, *left, m_ok, m_cancel);
 
     auto* right = new QVBoxLayout;
     m_picture = new CycleHelpPicture(this);

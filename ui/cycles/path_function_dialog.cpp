@@ -9,11 +9,13 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "ui/cycles/dialog_parts.h"
+
 namespace kerf::ui {
 
 namespace {
 
-constexpr int kTouchHeight = 48;
+constexpr int kTouchHeight = kDialogTouchHeight;
 
 bool isChoice(const PathField& field) {
     return !field.choices.isEmpty();
@@ -54,25 +56,8 @@ PathFunctionDialog::PathFunctionDialog(PathFunction function, QWidget* parent)
         m_descriptions.push_back(description);
     }
     layout->addLayout(grid);
-    m_message = new QLabel(this);
-    m_message->setObjectName("pathMessage");
-    m_message->setWordWrap(true);
-    m_message->setStyleSheet(QStringLiteral("color: #b00000; font-weight: bold;"));
-    layout->addWidget(m_message);
-    auto* buttons = new QHBoxLayout;
-    m_ok = new QPushButton(this);
-    m_cancel = new QPushButton(this);
-    for (QPushButton* button : {m_ok, m_cancel}) {
-        button->setAutoDefault(false);
-        button->setDefault(false);
-        button->setMinimumHeight(kTouchHeight);
-        button->setMinimumWidth(120);
-        buttons->addWidget(button);
-    }
-    buttons->addStretch(1);
-    connect(m_ok, &QPushButton::clicked, this, &PathFunctionDialog::accept);
-    connect(m_cancel, &QPushButton::clicked, this, &PathFunctionDialog::reject);
-    layout->addLayout(buttons);
+    m_message = addRefusalLine(*this, *layout, "pathMessage");
+    addOkCancel(*this, *layout, m_ok, m_cancel);
     retranslate();
     if (!m_inputs.empty()) m_inputs.front()->setFocus();
 }

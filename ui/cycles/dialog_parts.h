@@ -1,0 +1,22 @@
+#pragma once
+
+class QBoxLayout;
+class QDialog;
+class QLabel;
+class QPushButton;
+
+namespace kerf::ui {
+
+// Parts the cycle and path-function dialogs share.
+
+// Touch targets of the dialogs (fields, keys, buttons).
+inline constexpr int kDialogTouchHeight = 48;
+
+// The red line under the fields that says why a value is refused; added to `layout`.
+QLabel* addRefusalLine(QDialog& dialog, QBoxLayout& layout, const char* objectName);
+
+// OK and Cancel (texts set by the dialog's retranslate), wired to accept and reject. Neither is
+// a default button: Enter belongs to the fields (next parameter).
+void addOkCancel(QDialog& dialog, QBoxLayout& layout, QPushButton*& ok, QPushButton*& cancel);
+
+}  // namespace kerf::ui
