@@ -9,6 +9,7 @@
 #include "app/runner/session.h"
 #include "core/canon/tee_sink.h"
 #include "graphics/headless/virtual_display.h"
+#include "graphics/scene/machine_scene.h"
 #include "graphics/scene/scene.h"
 #include "graphics/stock/stock_simulation.h"
 #include "graphics/toolpath/toolpath_data.h"
@@ -59,20 +60,9 @@ PictureOutput::PictureOutput(const RunOptions& options, const Session& session)
     State& s = *m_state;
     s.options = options;
     if (!options.png && !options.stock) return;
-    s.lathe = session.machine.kind == machine::MachineKind::Lathe;
-    graphics::Bounds3 limits;
-    for (char letter : std::string("XYZ")) {
-        const machine::AxisConfig* axis = session.machine.axis(letter);
-        if (axis == nullptr || !axis->enabled) continue;
-        const auto index = static_cast<Eigen::Index>(letter - 'X');
-        Vec3 lo(0, 0, 0);
-        Vec3 hi(0, 0, 0);
-        lo[index] = axis->minLimit;
-        hi[index] = axis->maxLimit;
-        limits.add(lo);
-        limits.add(hi);
-    }
-    if (!limits.empty) s.limits = limits;
+    const graphics::SceneOptions machineScene = graphics::sceneOptionsFor(session.machine);
+    s.lathe = machineScene.lathe;
+    s.limits = machineScene.limits;
     if (options.png) {
         s.toolpath = std::make_unique<graphics::ToolpathCollector>();
         s.tee.add(*s.toolpath);

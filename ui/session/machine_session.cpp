@@ -2,9 +2,9 @@
 
 #include <QTimer>
 
+#include "core/task/shifted_motion_port.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/session/program_interpreter.h"
-#include "ui/session/shifted_motion_port.h"
 
 namespace kerf::ui {
 
@@ -13,7 +13,7 @@ MachineSession::MachineSession(machine::MachineConfig machine,
                                std::filesystem::path ncRoot, QObject* parent)
     : QObject(parent),
       m_machine(std::move(machine)),
-      m_motion(std::make_unique<ShiftedMotionPort>(std::move(motion))),
+      m_motion(std::make_unique<task::ShiftedMotionPort>(std::move(motion))),
       m_ncRoot(std::move(ncRoot)),
       m_presets(m_ncRoot / "PRESET.PR"),
       m_run(std::make_unique<task::ProgramRun>(*m_motion)) {

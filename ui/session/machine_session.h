@@ -12,8 +12,8 @@
 #include "core/machine/machine_config.h"
 #include "core/task/machine_status.h"
 #include "core/task/motion_port.h"
+#include "core/task/preset_store.h"
 #include "core/task/program_run.h"
-#include "ui/session/preset_store.h"
 
 class QTimer;
 
@@ -23,11 +23,13 @@ class SourceRegistry;
 namespace kerf::tables {
 class ToolTable;
 }
+namespace kerf::task {
+class ShiftedMotionPort;
+}
 
 namespace kerf::ui {
 
 struct LoadedProgram;
-class ShiftedMotionPort;
 
 // Makes the connection to the machine (app/ decides: simulated or real drives). The programming
 // station has none.
@@ -132,9 +134,9 @@ private:
     void report(const DiagnosticList& diagnostics);
 
     machine::MachineConfig m_machine;
-    std::unique_ptr<ShiftedMotionPort> m_motion;
+    std::unique_ptr<task::ShiftedMotionPort> m_motion;
     std::filesystem::path m_ncRoot;
-    PresetStore m_presets;
+    task::PresetStore m_presets;
     std::string m_programName;  // the running program's name in m_sources; empty: MDI
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;

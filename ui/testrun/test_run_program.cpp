@@ -152,9 +152,8 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
     out.diagnostics = program.diagnostics;
     std::unique_ptr<interp::Interpreter> interpreter = std::move(program.interpreter);
-    const bool loaded = interpreter != nullptr;
     Recorder recorder(out, input.machine.rapidVelocityMmPerS);
-    if (interpreter && loaded) {
+    if (interpreter) {
         out.start = interpreter->nominalPosition();
         recorder.setStart(out.start);
         for (;;) {

@@ -9,6 +9,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "graphics/scene/machine_scene.h"
 #include "graphics/stock/progressive_stock.h"
 #include "ui/viewport/viewport_widget.h"
 
@@ -25,25 +26,6 @@ bool canRender3d() {
     return platform != QLatin1String("offscreen") && platform != QLatin1String("minimal");
 }
 
-graphics::SceneOptions sceneOptionsFor(const machine::MachineConfig& machine) {
-    graphics::SceneOptions options;
-    options.lathe = machine.kind == machine::MachineKind::Lathe;
-    graphics::Bounds3 limits;
-    for (char letter : std::string("XYZ")) {
-        const machine::AxisConfig* axis = machine.axis(letter);
-        if (axis == nullptr || !axis->enabled) continue;
-        const auto index = static_cast<Eigen::Index>(letter - 'X');
-        Vec3 lo(0, 0, 0);
-        Vec3 hi(0, 0, 0);
-        lo[index] = axis->minLimit;
-        hi[index] = axis->maxLimit;
-        limits.add(lo);
-        limits.add(hi);
-    }
-    if (!limits.empty) options.limits = limits;
-    return options;
-}
-
 }  // namespace
 
 GraphicsPanel::GraphicsPanel(TestRunController& testRun, const machine::MachineConfig& machine,
@@ -51,7 +33,7 @@ GraphicsPanel::GraphicsPanel(TestRunController& testRun, const machine::MachineC
     : QWidget(parent),
       m_testRun(testRun),
       m_lathe(machine.kind == machine::MachineKind::Lathe),
-      m_scene(std::make_unique<graphics::Scene>(sceneOptionsFor(machine))) {
+      m_scene(std::make_unique<graphics::Scene>(graphics::sceneOptionsFor(machine))) {
     setObjectName(QStringLiteral("graphicsPanel"));
     setMinimumWidth(200);
     auto* layout = new QVBoxLayout(this);

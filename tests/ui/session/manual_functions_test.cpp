@@ -10,11 +10,11 @@
 
 #include "core/machine/machine_loader.h"
 #include "core/tables/preset_table.h"
+#include "core/task/shifted_motion_port.h"
 #include "qt_test_app.h"
 #include "simulated_machine.h"
 #include "test_paths.h"
 #include "ui/session/machine_session.h"
-#include "ui/session/shifted_motion_port.h"
 
 namespace kerf::ui {
 namespace {
@@ -50,7 +50,7 @@ TEST(ShiftedMotionPort, TargetsGainTheShiftAndPositionsLoseIt) {
     recording->submitted = &submitted;
     recording->snapshot.position[Axis::X] = 13.0;
     recording->snapshot.position[Axis::Z] = -7.0;
-    ShiftedMotionPort port(std::move(recording));
+    task::ShiftedMotionPort port(std::move(recording));
     // The operator's origin lies 3 mm further +X and 2 mm further -Z than the machine file's.
     Pose shift;
     shift[Axis::X] = 3.0;

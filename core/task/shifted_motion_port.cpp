@@ -1,8 +1,8 @@
-#include "ui/session/shifted_motion_port.h"
+#include "core/task/shifted_motion_port.h"
 
 #include <variant>
 
-namespace kerf::ui {
+namespace kerf::task {
 
 namespace {
 
@@ -20,7 +20,7 @@ Pose minus(Pose pose, const Pose& shift) {
 
 }  // namespace
 
-ShiftedMotionPort::ShiftedMotionPort(std::unique_ptr<task::MotionPort> machine)
+ShiftedMotionPort::ShiftedMotionPort(std::unique_ptr<MotionPort> machine)
     : m_machine(std::move(machine)) {}
 
 bool ShiftedMotionPort::submit(const canon::Command& command) {
@@ -56,8 +56,8 @@ interp::WorldSnapshot ShiftedMotionPort::world() const {
     return world;
 }
 
-task::MachineStatus ShiftedMotionPort::status() const {
-    task::MachineStatus status = m_machine->status();
+MachineStatus ShiftedMotionPort::status() const {
+    MachineStatus status = m_machine->status();
     // Machine coordinates (REF), the lag and the distance to go do not depend on the origin.
     for (size_t i = 0; i < status.axes.size(); ++i) {
         status.axes[i].nominal -= m_shift.values[i];
@@ -66,4 +66,4 @@ task::MachineStatus ShiftedMotionPort::status() const {
     return status;
 }
 
-}  // namespace kerf::ui
+}  // namespace kerf::task

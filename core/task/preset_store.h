@@ -7,10 +7,11 @@
 #include "core/base/expected.h"
 #include "core/geometry/axes.h"
 
-namespace kerf::ui {
+namespace kerf::task {
 
 // The machine's active preset kept where an operator edits it: row 0 of PRESET.PR in the NC
 // root, machine coordinates, as a TNC keeps the preset set in Manual operation in its row 0.
+// Task thread (file I/O; never from the servo cycle).
 class PresetStore {
 public:
     explicit PresetStore(std::filesystem::path file) : m_file(std::move(file)) {}
@@ -28,4 +29,4 @@ private:
     std::filesystem::path m_file;
 };
 
-}  // namespace kerf::ui
+}  // namespace kerf::task

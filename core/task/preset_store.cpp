@@ -1,11 +1,11 @@
-#include "ui/session/preset_store.h"
+#include "core/task/preset_store.h"
 
 #include <string>
 #include <system_error>
 
 #include "core/tables/preset_table.h"
 
-namespace kerf::ui {
+namespace kerf::task {
 
 std::array<std::optional<double>, kAxisCount> PresetStore::read() const {
     std::array<std::optional<double>, kAxisCount> values{};
@@ -40,4 +40,4 @@ MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
     return table->save(m_file);
 }
 
-}  // namespace kerf::ui
+}  // namespace kerf::task

@@ -4,15 +4,16 @@
 
 #include "core/task/motion_port.h"
 
-namespace kerf::ui {
+namespace kerf::task {
 
 // The machine seen from a workpiece origin moved by `shift` (workpiece coordinates of the
 // machine connection's own origin, the machine file's preset): what the operator sets by entry
 // in Manual operation. Targets going to the machine get the shift added; positions coming back
 // lose it. The machine connection itself never changes: its origin is fixed when it starts.
-class ShiftedMotionPort final : public task::MotionPort {
+// Task thread only, like the port it wraps.
+class ShiftedMotionPort final : public MotionPort {
 public:
-    explicit ShiftedMotionPort(std::unique_ptr<task::MotionPort> machine);
+    explicit ShiftedMotionPort(std::unique_ptr<MotionPort> machine);
 
     const Pose& shift() const { return m_shift; }
     void setShift(const Pose& shift) { m_shift = shift; }
@@ -47,11 +48,11 @@ public:
     bool manualCoolant(const canon::CoolantControl& coolant) override {
         return m_machine->manualCoolant(coolant);
     }
-    task::MachineStatus status() const override;
+    MachineStatus status() const override;
 
 private:
-    std::unique_ptr<task::MotionPort> m_machine;
+    std::unique_ptr<MotionPort> m_machine;
     Pose m_shift{};
 };
 
-}  // namespace kerf::ui
+}  // namespace kerf::task
