@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libpolyclipping-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   xvfb xauth
+  dpkg-dev file  # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies
 )
 
 missing=()

@@ -438,6 +438,10 @@ Machine: %3</source>
         <translation>Software: Kerf %1 (Qt %2)
 Maschine: %3</translation>
     </message>
+    <message>
+        <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
+        <translation>Kerf ist freie Software: Sie dürfen sie unter der GNU General Public License, Version 3 oder später, weitergeben und verändern. Sie wird ohne jede Gewährleistung geliefert.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::OverrideControls</name>

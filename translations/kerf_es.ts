@@ -438,6 +438,10 @@ Machine: %3</source>
         <translation>Software: Kerf %1 (Qt %2)
 Máquina: %3</translation>
     </message>
+    <message>
+        <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
+        <translation>Kerf es software libre: puede redistribuirlo y modificarlo bajo la Licencia Pública General de GNU, versión 3 o posterior. Se entrega sin ninguna garantía.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::OverrideControls</name>

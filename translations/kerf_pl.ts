@@ -441,6 +441,10 @@ Machine: %3</source>
         <translation>Oprogramowanie: Kerf %1 (Qt %2)
 Maszyna: %3</translation>
     </message>
+    <message>
+        <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
+        <translation>Kerf jest wolnym oprogramowaniem: można je rozpowszechniać i zmieniać na warunkach Powszechnej Licencji Publicznej GNU w wersji 3 lub późniejszej. Nie jest objęte żadną gwarancją.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::OverrideControls</name>

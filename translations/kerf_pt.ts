@@ -439,6 +439,10 @@ Machine: %3</source>
         <translation>Software: Kerf %1 (Qt %2)
 Máquina: %3</translation>
     </message>
+    <message>
+        <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
+        <translation>O Kerf é software livre: pode redistribuí-lo e modificá-lo nos termos da Licença Pública Geral GNU, versão 3 ou posterior. É fornecido sem qualquer garantia.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::OverrideControls</name>

@@ -99,6 +99,7 @@ ModPage::ModPage(const machine::MachineConfig& machine, const QString& settingsF
     m_info = new QLabel(this);
     m_info->setObjectName("modInfo");
     m_info->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_info->setWordWrap(true);  // long texts never widen the window
     layout->addWidget(m_info);
     layout->addStretch(1);
 
@@ -154,7 +155,10 @@ void ModPage::retranslate() {
     m_languageLabel->setText(tr("Language"));
     m_info->setText(tr("Software: Kerf %1 (Qt %2)\nMachine: %3")
                         .arg(QStringLiteral(KERF_EXPANDED_STRING(KERF_VERSION)),
-                             QString::fromLatin1(qVersion()), m_machineText));
+                             QString::fromLatin1(qVersion()), m_machineText) +
+                    QStringLiteral("\n\n") +
+                    tr("Kerf is free software: you may share and change it under the GNU General "
+                       "Public License, version 3 or later. It comes with no warranty."));
 }
 
 }  // namespace kerf::ui

@@ -43,6 +43,9 @@ TEST(ModPage, EmitsTheChosenDisplayAndKeepsItForTheNextStart) {
         const QString info = page.findChild<QLabel*>("modInfo")->text();
         EXPECT_TRUE(info.contains(QString::fromStdString(lathe.name))) << info.toStdString();
         EXPECT_TRUE(info.contains("Kerf 0.")) << info.toStdString();
+        // The licence, as an About box would show it (the LICENSE file is GPL-3.0).
+        EXPECT_TRUE(info.contains("GNU General Public License, version 3 or later"))
+            << info.toStdString();
     }
     ModPage again(lathe, file);
     EXPECT_EQ(again.displaySettings().positionKind, PositionKind::DistanceToGo);
