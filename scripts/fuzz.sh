@@ -18,4 +18,4 @@ for program in tests/golden/"$target"/*/program.*; do
   cp "$program" "$work/$(basename "$(dirname "$program")")"
 done
 exec build/fuzz/tests/fuzz/"fuzz_$target" "$work" -max_total_time="$seconds" -timeout=10 \
-  -rss_limit_mb=2048 -max_len=4096
+  -rss_limit_mb=2048 -max_len=4096 -dict="tests/fuzz/$target.dict"
