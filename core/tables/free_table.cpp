@@ -1,9 +1,16 @@
 #include "core/tables/free_table.h"
 
 #include "core/tables/detail/table_line.h"
+#include "core/tables/table_file.h"
 #include "core/tables/tnc_number.h"
 
 namespace kerf::tables {
+
+Expected<FreeTable> FreeTable::open(const std::filesystem::path& path) {
+    auto table = loadTable(path);
+    if (!table) return table.error();
+    return FreeTable(std::move(*table), path);
+}
 
 Expected<FreeTable> FreeTable::fromTable(TncTable table, std::filesystem::path path) {
     return FreeTable(std::move(table), std::move(path));
@@ -83,6 +90,10 @@ MaybeError FreeTable::write(int64_t row, std::string_view columnList,
     m_table = std::move(copy);
     m_modified = true;
     return std::nullopt;
+}
+
+MaybeError FreeTable::save() const {
+    return saveTable(m_table, m_path);
 }
 
 }  // namespace kerf::tables

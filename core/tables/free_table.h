@@ -18,11 +18,13 @@ namespace kerf::tables {
 //
 // Only numbers go in and out: reading an empty or text cell, writing into a column declared as
 // text (or over text), naming an unknown column and addressing a missing row are errors; a
-// write never adds a row. Writes change the table in memory; the interpreter writes table()
-// back through the NC root's file-access layer (docs/files.md).
+// write never adds a row. Writes change the table in memory; save() puts it on disk. The
+// interpreter reads and writes the file through the NC root's file-access layer instead
+// (docs/files.md): fromTable() and table().
 class FreeTable {
 public:
-    // FN 26: TABOPEN, with the table read from `path`.
+    // FN 26: TABOPEN.
+    static Expected<FreeTable> open(const std::filesystem::path& path);
     static Expected<FreeTable> fromTable(TncTable table, std::filesystem::path path = {});
 
     // FN 28: TABREAD Q1 = row / "X,Y": one value per listed column.
@@ -31,6 +33,8 @@ public:
     // values are written or none.
     MaybeError write(int64_t row, std::string_view columnList, std::span<const double> values);
 
+    // Writes the table back to the file it was opened from, atomically.
+    MaybeError save() const;
     bool modified() const { return m_modified; }
 
     const TncTable& table() const { return m_table; }
