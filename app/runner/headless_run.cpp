@@ -8,6 +8,7 @@
 
 #include "app/runner/drive_output.h"
 #include "app/runner/motion_output.h"
+#include "app/runner/output_guard.h"
 #include "app/runner/picture_output.h"
 #include "app/runner/run_report.h"
 #include "app/runner/session.h"
@@ -52,6 +53,11 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     // The check runs alongside execution unless the trace goes to a stream we cannot take back.
     const bool traceToStdout = options.traceFile && *options.traceFile == "-";
     auto session = openSession(options, !traceToStdout);
+    if (DiagnosticList refused = outputsOverwritingInputs(options, session->inputs());
+        !refused.empty()) {
+        printDiagnostics(refused, diagnostics);
+        return 1;
+    }
     canon::PathStatistics statistics(session->machine.rapidVelocityMmPerS);
     DisplayModeTracker displayMode(diameterByDefault(session->machine));
     canon::TeeSink sinks;

@@ -3,9 +3,11 @@
 #include <cstdlib>
 
 #include "app/runner/workpiece_origin.h"
+#include "core/base/atomic_file.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
+#include "core/program/nc_root.h"
 
 namespace kerf::app {
 
@@ -32,6 +34,13 @@ DiagnosticList Session::allDiagnostics() const {
     if (interpreter) {
         all.insert(all.end(), interpreter->diagnostics().begin(), interpreter->diagnostics().end());
     }
+    return all;
+}
+
+std::vector<fs::path> Session::inputs() const {
+    std::vector<fs::path> all = setupFiles;
+    for (uint32_t id = 0; id < sources.size(); ++id)
+        all.emplace_back(sources.path(id));
     return all;
 }
 
@@ -63,11 +72,22 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     const fs::path programPath = fs::absolute(options.program);
     const fs::path ncRoot =
         options.ncRoot ? fs::absolute(*options.ncRoot) : programPath.parent_path();
-    std::optional<fs::path> toolFile = options.toolTable;
     std::error_code ignored;
-    if (!toolFile && fs::exists(ncRoot / "TOOL.T", ignored)) toolFile = ncRoot / "TOOL.T";
+    const program::NcRoot root(ncRoot);
+    session->setupFiles.push_back(programPath);
+    for (const char* table : {"TOOL.T", "PRESET.PR", "fagor_tool_offsets.tab",
+                              "fagor_zero_offsets.tab", "fagor_tools.tab"}) {
+        session->setupFiles.push_back(ncRoot / table);
+    }
+    std::optional<fs::path> toolFile = options.toolTable;
+    if (toolFile) session->setupFiles.push_back(*toolFile);
+    if (!toolFile && fs::exists(fs::symlink_status(ncRoot / "TOOL.T", ignored))) {
+        toolFile = ncRoot / "TOOL.T";
+    }
     if (toolFile) {
-        auto tools = tables::ToolTable::load(*toolFile);
+        // --tool-table names any file; TOOL.T of the NC root has to be inside it.
+        auto bytes = options.toolTable ? readWholeFile(*toolFile) : root.read(*toolFile);
+        auto tools = bytes ? tables::ToolTable::parse(*bytes, toolFile->string()) : bytes.error();
         if (!tools) {
             session->diagnostics.push_back(tools.error());
             return session;

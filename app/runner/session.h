@@ -1,7 +1,9 @@
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "app/runner/run_options.h"
 #include "core/base/diagnostic.h"
@@ -24,10 +26,13 @@ struct Session {
     std::unique_ptr<interp::Interpreter> interpreter;
     DiagnosticList diagnostics;
     DiagnosticList allDiagnostics() const;
+    // The files the run reads: the program, the tables, the programs loaded so far.
+    std::vector<std::filesystem::path> inputs() const;
     bool ready = false;  // the program loaded without errors and can run
     // Machine coordinates of the stream's origin, motion's work offset: the workpiece origin
     // (machine file presets, --work-offset) or, for FAGOR, the zero offset active at the start.
     Pose workOffset{};
+    std::vector<std::filesystem::path> setupFiles;  // the program and the tables, by fixed name
 };
 
 // With `backgroundCheck` the program's check runs alongside execution (see

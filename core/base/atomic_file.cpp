@@ -33,7 +33,14 @@ bool writeAll(int fd, std::string_view content) {
 
 }  // namespace
 
+Diagnostic notRegular(const std::filesystem::path& path) {
+    return Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
+                            KERF_TR_NOOP("'{1}' is not a regular file"), path.string());
+}
+
 MaybeError writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
+    struct stat existing {};
+    if (::stat(path.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode)) return notRegular(path);
     std::filesystem::path folder = path.parent_path();
     if (folder.empty()) folder = ".";
     std::string tempName = (folder / ("." + path.filename().string() + ".XXXXXX")).string();
@@ -62,27 +69,50 @@ MaybeError writeFileAtomically(const std::filesystem::path& path, std::string_vi
 
 Expected<std::string> readWholeFile(const std::filesystem::path& path) {
     // POSIX calls rather than streams: no exceptions, and a directory is an error, not a throw.
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below like a device.
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
     if (fd < 0) return ioError(path, "open the file");
     struct stat info {};
-    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
-        if (errno == 0 || S_ISDIR(info.st_mode)) errno = EISDIR;
+    if (::fstat(fd, &info) != 0) {
         Diagnostic error = ioError(path, "read the file");
         ::close(fd);
         return error;
     }
+    if (!S_ISREG(info.st_mode)) {
+        ::close(fd);
+        return notRegular(path);
+    }
     std::string content;
     content.resize(static_cast<size_t>(info.st_size));
     size_t done = 0;
-    while (done < content.size()) {
-        ssize_t n = ::read(fd, content.data() + done, content.size() - done);
+    char more[4096];
+    for (;;) {
+        // After the size fstat gave, keep reading into a small buffer: a file that grew in the
+        // meantime is still read whole, without reallocating a large one.
+        const bool inPlace = done < content.size();
+        char* into = inPlace ? content.data() + done : more;
+        const size_t room = inPlace ? content.size() - done : sizeof more;
+        ssize_t n = ::read(fd, into, room);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
+        if (n < 0) {
+            Diagnostic error = ioError(path, "read the file");
+            ::close(fd);
+            return error;
+        }
+        if (n == 0) break;
+        if (!inPlace) content.append(more, static_cast<size_t>(n));
         done += static_cast<size_t>(n);
     }
     ::close(fd);
     content.resize(done);
     return content;
+}
+
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+    struct stat first {};
+    struct stat second {};
+    if (::stat(a.c_str(), &first) != 0 || ::stat(b.c_str(), &second) != 0) return false;
+    return first.st_dev == second.st_dev && first.st_ino == second.st_ino;
 }
 
 }  // namespace kerf

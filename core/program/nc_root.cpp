@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "core/base/atomic_file.h"
+
 namespace kerf::program {
 
 namespace fs = std::filesystem;
@@ -33,12 +35,42 @@ fs::path canonicalOrNormal(const fs::path& path) {
     return error ? absolute.lexically_normal() : real;
 }
 
+// The path with every link resolved. weakly_canonical stops at the first name that does not
+// exist, and a dangling link does not "exist": it would be judged by its own name although
+// writing to it creates its target. So a link left in the canonical path is followed by hand.
+fs::path withLinksResolved(const fs::path& path) {
+    constexpr int kMaxLinks = 40;  // as the kernel's ELOOP limit
+    fs::path current = canonicalOrNormal(path);
+    for (int hops = 0; hops < kMaxLinks; ++hops) {
+        fs::path prefix;
+        fs::path followed;
+        for (auto it = current.begin(); it != current.end(); ++it) {
+            prefix /= *it;
+            std::error_code ignored;
+            if (!followed.empty()) {
+                followed /= *it;
+            } else if (fs::is_symlink(fs::symlink_status(prefix, ignored))) {
+                fs::path target = fs::read_symlink(prefix, ignored);
+                followed = target.is_absolute() ? target : prefix.parent_path() / target;
+            }
+        }
+        if (followed.empty()) return current;
+        current = canonicalOrNormal(followed);
+    }
+    return current;  // a loop of links: nothing can be opened through it anyway
+}
+
+Diagnostic pathError(const char* messageTemplate, const fs::path& path) {
+    return Diagnostic::make(Severity::Error, "path", path.string(), 0, 0, messageTemplate,
+                            path.string());
+}
+
 }  // namespace
 
 NcRoot::NcRoot(fs::path root) : m_root(canonicalOrNormal(root)) {}
 
 bool NcRoot::contains(const fs::path& path) const {
-    fs::path real = canonicalOrNormal(path);
+    fs::path real = withLinksResolved(path);
     auto rootIt = m_root.begin();
     auto it = real.begin();
     for (; rootIt != m_root.end(); ++rootIt, ++it) {
@@ -46,6 +78,40 @@ bool NcRoot::contains(const fs::path& path) const {
         if (it == real.end() || *it != *rootIt) return false;
     }
     return true;
+}
+
+MaybeError NcRoot::admit(const fs::path& finalPath) const {
+    if (!contains(finalPath)) {
+        return pathError(KERF_TR_NOOP("'{1}' is outside the NC root"), finalPath);
+    }
+    return std::nullopt;
+}
+
+Expected<std::string> NcRoot::read(const fs::path& finalPath) const {
+    if (MaybeError refused = admit(finalPath)) return *refused;
+    return readWholeFile(finalPath);
+}
+
+Expected<std::shared_ptr<const SourceText>> NcRoot::loadProgram(const fs::path& finalPath) const {
+    if (MaybeError refused = admit(finalPath)) return *refused;
+    return SourceText::load(finalPath);
+}
+
+MaybeError NcRoot::admitWrite(const fs::path& finalPath) const {
+    if (MaybeError refused = admit(finalPath)) return refused;
+    std::error_code ignored;
+    const fs::file_status status = fs::symlink_status(finalPath, ignored);
+    if (fs::is_symlink(status)) {
+        return pathError(KERF_TR_NOOP("'{1}' is a link: Kerf does not write through links"),
+                         finalPath);
+    }
+    if (fs::exists(status) && !fs::is_regular_file(status)) return notRegular(finalPath);
+    return std::nullopt;
+}
+
+MaybeError NcRoot::replace(const fs::path& finalPath, std::string_view content) const {
+    if (MaybeError refused = admitWrite(finalPath)) return refused;
+    return writeFileAtomically(finalPath, content);
 }
 
 Expected<fs::path> NcRoot::resolve(std::string_view name, const fs::path& callerFolder) const {

@@ -10,14 +10,14 @@
 
 namespace kerf::program {
 
-// The text of one program file, as UTF-8. Large UTF-8/ASCII files are memory-mapped rather than
-// copied so that a million-block program costs no heap; other encodings are converted once.
+// The text of one program file, as UTF-8, held in memory (other encodings are converted once). It
+// is a copy, never a mapping of the file, so a file truncated or replaced while it runs changes
+// nothing (docs/files.md).
 class SourceText {
 public:
     static Expected<std::shared_ptr<const SourceText>> load(const std::filesystem::path& path);
     static std::shared_ptr<const SourceText> fromString(std::string text, std::string path);
 
-    ~SourceText();
     SourceText(const SourceText&) = delete;
     SourceText& operator=(const SourceText&) = delete;
 
@@ -25,18 +25,11 @@ public:
     const std::string& path() const { return m_path; }
     Encoding encoding() const { return m_encoding; }
 
-    // Tells the kernel the text before `offset` is not needed soon, so a large program streams
-    // through memory instead of staying resident. Reading it again (a jump back) still works: the
-    // pages come back from the file.
-    void releaseBefore(size_t offset) const;
-
 private:
     SourceText() = default;
 
     std::string m_path;
     std::string m_owned;
-    void* m_mapping = nullptr;
-    size_t m_mappingSize = 0;
     std::string_view m_view;
     Encoding m_encoding = Encoding::Utf8;
 };

@@ -18,7 +18,9 @@ namespace kerf::tables {
 //
 // Only numbers go in and out: reading an empty or text cell, writing into a column declared as
 // text (or over text), naming an unknown column and addressing a missing row are errors; a
-// write never adds a row. Writes change the table in memory; save() puts it on disk.
+// write never adds a row. Writes change the table in memory; save() puts it on disk. The
+// interpreter reads and writes the file through the NC root's file-access layer instead
+// (docs/files.md): fromTable() and table().
 class FreeTable {
 public:
     // FN 26: TABOPEN.

@@ -11,7 +11,9 @@ std::array<std::optional<double>, kAxisCount> PresetStore::read() const {
     std::array<std::optional<double>, kAxisCount> values{};
     std::error_code error;
     if (!std::filesystem::exists(m_file, error)) return values;
-    const auto table = tables::PresetTable::load(m_file);
+    const auto bytes = m_root.read(m_file);
+    if (!bytes) return values;
+    const auto table = tables::PresetTable::parse(*bytes, m_file.string());
     if (!table) return values;
     const tables::PresetData* row = table->byNumber(0);
     if (row == nullptr) return values;
@@ -22,10 +24,10 @@ std::array<std::optional<double>, kAxisCount> PresetStore::read() const {
 
 MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
     std::error_code error;
-    auto table = std::filesystem::exists(m_file, error)
-                     ? tables::PresetTable::load(m_file)
-                     : tables::PresetTable::parse(tables::PresetTable::createDefault(),
-                                                  m_file.filename().string());
+    const bool exists = std::filesystem::exists(std::filesystem::symlink_status(m_file, error));
+    const auto bytes = exists ? m_root.read(m_file) : tables::PresetTable::createDefault();
+    if (!bytes) return bytes.error();
+    auto table = tables::PresetTable::parse(*bytes, m_file.filename().string());
     if (!table) return table.error();
     if (table->byNumber(0) == nullptr) {
         if (MaybeError failed = table->addPreset(0)) return failed;
@@ -37,7 +39,7 @@ MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
             continue;
         if (MaybeError failed = table->setAxis(0, letter, origin[axis])) return failed;
     }
-    return table->save(m_file);
+    return m_root.replace(m_file, table->serialize());
 }
 
 }  // namespace kerf::task

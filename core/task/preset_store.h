@@ -6,15 +6,18 @@
 
 #include "core/base/expected.h"
 #include "core/geometry/axes.h"
+#include "core/program/nc_root.h"
 
 namespace kerf::task {
 
 // The machine's active preset kept where an operator edits it: row 0 of PRESET.PR in the NC
 // root, machine coordinates, as a TNC keeps the preset set in Manual operation in its row 0.
+// The file goes through the NC root's file-access layer (docs/files.md).
 // Task thread (file I/O; never from the servo cycle).
 class PresetStore {
 public:
-    explicit PresetStore(std::filesystem::path file) : m_file(std::move(file)) {}
+    explicit PresetStore(const std::filesystem::path& ncRoot)
+        : m_root(ncRoot), m_file(m_root.path() / "PRESET.PR") {}
 
     // The values row 0 sets; an axis without a value (or no table, or a table that cannot be
     // read) has none.
@@ -26,6 +29,7 @@ public:
     const std::filesystem::path& file() const { return m_file; }
 
 private:
+    program::NcRoot m_root;
     std::filesystem::path m_file;
 };
 

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Interpreter throughput of Kerf, side by side with LinuxCNC's rs274 when it is installed
 # (apt-get install --no-install-recommends linuxcnc-uspace). Median of RUNS runs each.
-# Usage: scripts/bench/interpreter.sh [RUNS]     (needs a release build: scripts/setup.sh release)
+# Usage: [KERF=path/to/kerf] scripts/bench/interpreter.sh [RUNS]   (default: the release build,
+# scripts/setup.sh release)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 runs=${1:-5}
-kerf="$root/build/release/app/kerf"
+kerf="${KERF:-$root/build/release/app/kerf}"  # KERF=... measures another build
 gen="$root/../shared/tools/gen_nc.py"
 [[ -f $gen ]] || gen=/work/shared/tools/gen_nc.py
 work=$(mktemp -d)

@@ -15,7 +15,7 @@ MachineSession::MachineSession(machine::MachineConfig machine,
       m_machine(std::move(machine)),
       m_motion(std::make_unique<task::ShiftedMotionPort>(std::move(motion))),
       m_ncRoot(std::move(ncRoot)),
-      m_presets(m_ncRoot / "PRESET.PR"),
+      m_presets(m_ncRoot),
       m_run(std::make_unique<task::ProgramRun>(*m_motion)) {
     registerDiagnosticMetaTypes();
     applyPresetTable();

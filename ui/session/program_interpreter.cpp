@@ -6,6 +6,7 @@
 #include "core/base/translate.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/program/nc_root.h"
 
 namespace kerf::ui {
 
@@ -53,8 +54,10 @@ LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSo
     }
     std::error_code error;
     const fs::path toolFile = source.ncRoot / "TOOL.T";
-    if (fs::exists(toolFile, error)) {
-        auto tools = tables::ToolTable::load(toolFile);
+    if (fs::exists(fs::symlink_status(toolFile, error))) {
+        // Through the NC root's file-access layer: no link out, no FIFO (docs/files.md).
+        auto bytes = program::NcRoot(source.ncRoot).read(toolFile);
+        auto tools = bytes ? tables::ToolTable::parse(*bytes, toolFile.string()) : bytes.error();
         if (!tools) {
             loaded.diagnostics.push_back(tools.error());
             return loaded;

@@ -108,6 +108,7 @@ bool FagorInterpreter::repeat(int64_t start, int64_t end, std::optional<int> pro
 }
 
 FagorProgram* FagorInterpreter::programByNumber(int number, bool keepLabels, Problem& problem) {
+    if (m_open.number == number) commitOpenProgram();  // what WRITE added so far is read back
     for (auto& p : m_programs) {
         if (p->number == number) {
             if (keepLabels && !p->keepLabels) return loadProgram(p->path, nullptr, true);
@@ -153,6 +154,7 @@ const SubroutineEntry* FagorInterpreter::findSubroutine(int number, FagorProgram
     if (found == 0 && !m_scannedRoot) {
         // Subroutines of other programs in the control's memory: the program files of the NC root.
         m_scannedRoot = true;
+        commitOpenProgram();
         std::error_code error;
         for (const auto& entry : std::filesystem::directory_iterator(m_root.path(), error)) {
             std::error_code ignored;

@@ -8,11 +8,16 @@ namespace kerf::fagor {
 
 namespace {
 
+// A table file in the NC root; none there is no table. A link that leads outside, a FIFO or a
+// folder in its place is an error.
 template <typename Table>
-void loadTable(const std::filesystem::path& path, std::optional<Table>& into, DiagnosticList& out) {
+void loadTable(const program::NcRoot& root, const std::filesystem::path& path,
+               std::optional<Table>& into, DiagnosticList& out) {
     std::error_code ignored;
-    if (path.empty() || !std::filesystem::exists(path, ignored)) return;
-    auto table = Table::load(path);
+    if (path.empty() || !std::filesystem::exists(std::filesystem::symlink_status(path, ignored)))
+        return;
+    auto bytes = root.read(path);
+    auto table = bytes ? Table::parse(*bytes, path.string()) : bytes.error();
     if (!table) {
         out.push_back(table.error());
         return;
@@ -37,9 +42,9 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
       m_runner(this),
       m_compensation(m_output),
       m_shaper(m_compensation) {
-    loadTable(m_settings.toolOffsetFile, m_toolOffsets, m_diagnostics);
-    loadTable(m_settings.zeroOffsetFile, m_zeroOffsets, m_diagnostics);
-    loadTable(m_settings.toolFile, m_toolTable, m_diagnostics);
+    loadTable(m_root, m_settings.toolOffsetFile, m_toolOffsets, m_diagnostics);
+    loadTable(m_root, m_settings.zeroOffsetFile, m_zeroOffsets, m_diagnostics);
+    loadTable(m_root, m_settings.toolFile, m_toolTable, m_diagnostics);
     if (m_zeroOffsets) {
         m_selection = m_zeroOffsets->selection();
         m_startOffset = sum(m_zeroOffsets->selectedOffset(), m_zeroOffsets->plcOffset());
@@ -63,11 +68,11 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
 }
 
 FagorInterpreter::~FagorInterpreter() {
+    closeOpenProgram();  // first: it waits for the check, and writes only if it passed
     if (m_checkThread.joinable()) {
         m_checking->executionOffset.store(SIZE_MAX);
         m_checkThread.join();
     }
-    closeOpenProgram();
 }
 
 void FagorInterpreter::resetModal() {
@@ -121,7 +126,7 @@ FagorProgram* FagorInterpreter::loadProgram(const std::filesystem::path& path, s
             return p.get();
         }
     }
-    auto source = program::SourceText::load(path);
+    auto source = m_root.loadProgram(path);
     if (!source) {
         if (error) *error = source.error().message();
         return nullptr;
@@ -273,7 +278,6 @@ interp::RunStatus FagorInterpreter::run(canon::Sink& sink, uint64_t blockBudget)
             m_blockOffset = m_reader->offset();
             if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
                 m_releasedBefore = m_blockOffset;
-                m_program->source->releaseBefore(m_blockOffset);
                 if (m_program == m_checking && m_checkThread.joinable()) {
                     m_program->executionOffset.store(m_blockOffset);
                 }
@@ -406,7 +410,9 @@ void FagorInterpreter::finish(int mCode) {
     closeOpenProgram();
     auto save = [&](auto& table, const std::filesystem::path& path) {
         if (table && table->modified() && !path.empty()) {
-            if (auto error = table->save(path)) m_diagnostics.push_back(*error);
+            if (auto error = m_root.replace(path, table->serialize())) {
+                m_diagnostics.push_back(*error);
+            }
         }
     };
     save(m_toolOffsets, m_settings.toolOffsetFile);

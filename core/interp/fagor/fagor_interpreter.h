@@ -119,9 +119,12 @@ private:
         uint32_t probeColumn = 1;         // of the G75/G76 word
         ContourRequest request;           // G36-G39
     };
+    // The program OPEN made, kept in memory: WRITE appends to it, and the file is replaced with
+    // it (atomically, after the program's check passed) when it is closed or read back.
     struct OpenProgram {
-        std::FILE* file = nullptr;
-        std::filesystem::path path;
+        std::filesystem::path path;  // empty: none is open
+        int number = -1;
+        std::string content;
     };
 
     // Loading and the run loop (fagor_interpreter.cpp).
@@ -249,6 +252,7 @@ private:
     bool changeLocks(LockChange change, Problem& problem) override;
     bool openProgram(int program, char mode, std::string_view comment, Problem& problem) override;
     bool writeBlock(std::string_view text, Problem& problem) override;
+    void commitOpenProgram();
     void closeOpenProgram();
     std::string substituteParameters(std::string_view text, bool marked);
     bool gpos(const VariableRef& ref, double& out, Problem& problem);

@@ -230,18 +230,13 @@ void Checker::run() {
     StatementRunner runner(nullptr);
     ParsedBlock block;
     bool first = true;
-    constexpr size_t kReleaseStep = 8u << 20;
     constexpr size_t kWindow = 16u << 20;
-    size_t released = 0;
     while (reader.next(line, false)) {
         if (m_program.followExecution) {
             while (line.offset > kWindow &&
                    line.offset - kWindow > m_program.executionOffset.load()) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
-        } else if (line.offset >= released + kReleaseStep) {
-            released = line.offset;
-            m_program.source->releaseBefore(released);
         }
         const bool firstLine = first;
         first = false;

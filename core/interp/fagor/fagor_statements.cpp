@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/base/atomic_file.h"
 #include "core/base/translate.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
@@ -142,8 +143,20 @@ bool FagorInterpreter::changeLocks(LockChange change, Problem& problem) {
     return true;
 }
 
+void FagorInterpreter::commitOpenProgram() {
+    if (m_open.path.empty()) return;
+    // No file changes before the whole program has passed its check.
+    if (!waitForCheck()) {
+        m_open = OpenProgram{};
+        return;
+    }
+    if (MaybeError error = m_root.replace(m_open.path, m_open.content)) {
+        m_diagnostics.push_back(*error);
+    }
+}
+
 void FagorInterpreter::closeOpenProgram() {
-    if (m_open.file != nullptr) std::fclose(m_open.file);
+    commitOpenProgram();
     m_open = OpenProgram{};
 }
 
@@ -165,8 +178,9 @@ bool FagorInterpreter::openProgram(int number, char mode, std::string_view comme
                          KERF_TR_NOOP("program {1} exists: OPEN needs A (append) or D (delete)"),
                          {std::to_string(number)});
     }
-    for (auto it = m_programs.begin(); it != m_programs.end(); ++it) {
-        if ((*it)->path != path || !exists) continue;
+    for (auto it = m_programs.begin(); it != m_programs.end() && exists; ++it) {
+        // The same file under any name: "./fr/../fr/P000100.PIM", a link, a hard link.
+        if (!sameFile((*it)->path, path)) continue;
         const FagorProgram* open = it->get();
         const bool running =
             m_program == open || std::any_of(m_frames.begin(), m_frames.end(), [&](const Frame& f) {
@@ -181,23 +195,28 @@ bool FagorInterpreter::openProgram(int number, char mode, std::string_view comme
         break;
     }
     if (!exists) path = newProgramPath(m_root.path(), number);
-    const bool append = exists && mode == 'A';
-    m_open.file = std::fopen(path.c_str(), append ? "ab" : "wb");
-    if (m_open.file == nullptr) {
-        return problemOf(problem, "file", KERF_TR_NOOP("cannot write program {1}"),
-                         {std::to_string(number)});
+    if (MaybeError refused = m_root.admitWrite(path)) {
+        return problemOf(problem, "file", KERF_TR_NOOP("cannot write program {1}: {2}"),
+                         {std::to_string(number), refused->message()});
     }
-    m_open.path = path;
-    if (!append) {
-        const std::string header = "%" + std::string(comment) + ",,\n";
-        std::fwrite(header.data(), 1, header.size(), m_open.file);
+    std::string content;
+    if (exists && mode == 'A') {
+        auto previous = m_root.read(path);
+        if (!previous) {
+            return problemOf(problem, "file", KERF_TR_NOOP("cannot read program {1}: {2}"),
+                             {std::to_string(number), previous.error().message()});
+        }
+        content = std::move(*previous);
+        if (!content.empty() && content.back() != '\n') content += '\n';
+    } else {
+        content = "%" + std::string(comment) + ",,\n";
     }
-    std::fflush(m_open.file);
+    m_open = OpenProgram{path, number, std::move(content)};
     return true;
 }
 
 bool FagorInterpreter::writeBlock(std::string_view text, Problem& problem) {
-    if (m_open.file == nullptr) {
+    if (m_open.path.empty()) {
         return problemOf(problem, "file", KERF_TR_NOOP("WRITE needs a program opened with OPEN"));
     }
     size_t first = 0;
@@ -207,11 +226,8 @@ bool FagorInterpreter::writeBlock(std::string_view text, Problem& problem) {
     std::string block = substituteParameters(text.substr(first), highLevel);
     while (!block.empty() && (block.back() == ' ' || block.back() == '\t'))
         block.pop_back();
-    block += '\n';
-    if (std::fwrite(block.data(), 1, block.size(), m_open.file) != block.size() ||
-        std::fflush(m_open.file) != 0) {
-        return problemOf(problem, "file", KERF_TR_NOOP("cannot write to the opened program"));
-    }
+    m_open.content += block;
+    m_open.content += '\n';
     return true;
 }
 

@@ -313,8 +313,16 @@ std::optional<std::filesystem::path> KlartextInterpreter::tablePath(const std::s
         for (std::string ext : {std::string(extension), trimmedUpper(extension)}) {
             std::filesystem::path withExt = target;
             withExt += ext;
-            if (std::filesystem::exists(withExt, ignored)) return withExt;
+            if (std::filesystem::exists(withExt, ignored)) {
+                target = withExt;
+                break;
+            }
         }
+    }
+    // The name actually opened is checked, after the extension was added.
+    if (MaybeError refused = m_root.admit(target)) {
+        fail("path", refused->messageTemplate.c_str(), {name});
+        return std::nullopt;
     }
     return target;
 }
@@ -322,7 +330,13 @@ std::optional<std::filesystem::path> KlartextInterpreter::tablePath(const std::s
 void KlartextInterpreter::executeSelectTable(const SelectTable& select) {
     auto path = tablePath(select.path, ".d");
     if (!path) return;
-    auto table = tables::DatumTable::load(*path);
+    auto bytes = m_root.read(*path);
+    if (!bytes) {
+        fail("io", KERF_TR_NOOP("cannot read the datum table {1}: {2}"),
+             {select.path, bytes.error().message()});
+        return;
+    }
+    auto table = tables::DatumTable::parse(*bytes, path->string());
     if (!table) {
         fail("io", KERF_TR_NOOP("cannot read the datum table {1}: {2}"),
              {select.path, table.error().message()});
@@ -334,7 +348,13 @@ void KlartextInterpreter::executeSelectTable(const SelectTable& select) {
 void KlartextInterpreter::executeSelectPattern(const SelectPattern& select) {
     auto path = tablePath(select.path, ".pnt");
     if (!path) return;
-    auto table = tables::PointTable::load(*path);
+    auto bytes = m_root.read(*path);
+    if (!bytes) {
+        fail("io", KERF_TR_NOOP("cannot read the point table {1}: {2}"),
+             {select.path, bytes.error().message()});
+        return;
+    }
+    auto table = tables::PointTable::parse(*bytes, path->string());
     if (!table) {
         fail("io", KERF_TR_NOOP("cannot read the point table {1}: {2}"),
              {select.path, table.error().message()});

@@ -5,7 +5,6 @@
 
 #include <Eigen/Dense>
 
-#include "core/base/atomic_file.h"
 #include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/interp/klartext/fn14_errors.h"
@@ -43,7 +42,7 @@ void KlartextInterpreter::executePrint(const PrintBlock& print) {
         fail("path", e.messageTemplate.c_str(), e.args);
         return;
     }
-    auto mask = readWholeFile(*maskPath);
+    auto mask = m_root.read(*maskPath);
     if (!mask) {
         fail("io", KERF_TR_NOOP("cannot read the F-PRINT mask {1}"), {print.maskFile});
         return;
@@ -57,13 +56,15 @@ void KlartextInterpreter::executePrint(const PrintBlock& print) {
         fail("fprint", KERF_TR_NOOP("F-PRINT mask {1} has an error"), {print.maskFile});
         return;
     }
+    // No file changes before the whole program has passed its check.
+    if (!waitForCheck()) return;
     std::string content = formatted->text;
     std::error_code ignored;
     if (formatted->append && std::filesystem::exists(*outputPath, ignored)) {
-        auto previous = readWholeFile(*outputPath);
+        auto previous = m_root.read(*outputPath);
         if (previous) content = *previous + content;
     }
-    if (auto error = writeFileAtomically(*outputPath, content)) {
+    if (auto error = m_root.replace(*outputPath, content)) {
         m_diagnostics.push_back(*error);
         fail("io", KERF_TR_NOOP("cannot write {1}"), {print.outputFile});
     }
@@ -249,7 +250,9 @@ void KlartextInterpreter::executeTableOpen(const TableOpen& open) {
         fail("path", path.error().messageTemplate.c_str(), path.error().args);
         return;
     }
-    auto table = tables::FreeTable::open(*path);
+    auto bytes = m_root.read(*path);
+    auto parsed = bytes ? tables::TncTable::parse(*bytes, path->string()) : bytes.error();
+    auto table = parsed ? tables::FreeTable::fromTable(std::move(*parsed), *path) : parsed.error();
     if (!table) {
         m_diagnostics.push_back(table.error());
         fail("table", KERF_TR_NOOP("FN 26: cannot open table {1}"), {open.path});
@@ -264,6 +267,8 @@ void KlartextInterpreter::executeTableAccess(const TableAccess& access) {
         return;
     }
     if (access.write) {
+        // No file changes before the whole program has passed its check.
+        if (!waitForCheck()) return;
         std::vector<double> values;
         for (size_t i = 0; i < access.columnCount; ++i) {
             QRef ref = access.parameter;
@@ -271,7 +276,7 @@ void KlartextInterpreter::executeTableAccess(const TableAccess& access) {
             values.push_back(m_q.get(ref));
         }
         auto error = m_openTable->write(access.row, access.columns, values);
-        if (!error) error = m_openTable->save();
+        if (!error) error = m_root.replace(m_openTable->path(), m_openTable->table().serialize());
         if (error) {
             m_diagnostics.push_back(*error);
             fail("table", KERF_TR_NOOP("FN 27: cannot write row {1}"),

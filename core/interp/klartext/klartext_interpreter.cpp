@@ -207,7 +207,6 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
             m_releasedBefore = m_blockOffset;
             ProgramFile& program = *m_levels.back().program;
-            program.source->releaseBefore(m_blockOffset);
             if (&program == m_checking && m_checkThread.joinable()) {
                 program.executionOffset.store(m_blockOffset);
             }
@@ -425,6 +424,11 @@ void KlartextInterpreter::callProgram(const CallPgm& call) {
                 break;
             }
         }
+    }
+    // The name actually opened is checked: "noext" may have become a link "noext.H" to outside.
+    if (MaybeError refused = m_root.admit(target)) {
+        fail("path", refused->messageTemplate.c_str(), {call.path});
+        return;
     }
     if (static_cast<int>(m_levels.size()) > m_settings.maxProgramNesting) {
         fail("nesting", KERF_TR_NOOP("program calls nested deeper than {1} levels"),

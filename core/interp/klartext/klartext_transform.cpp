@@ -121,7 +121,9 @@ void KlartextInterpreter::presetting(const cycles::CycleValues& values) {
     if (number != 0) {
         const tables::PresetTable* table = m_settings.presets;
         if (table == nullptr && !m_presetFile) {
-            auto loaded = tables::PresetTable::load(m_root.path() / "PRESET.PR");
+            const std::filesystem::path file = m_root.path() / "PRESET.PR";
+            auto bytes = m_root.read(file);
+            auto loaded = bytes ? tables::PresetTable::parse(*bytes, file.string()) : bytes.error();
             if (loaded) m_presetFile = std::move(*loaded);
         }
         if (table == nullptr && m_presetFile) table = &*m_presetFile;

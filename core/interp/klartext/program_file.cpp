@@ -78,18 +78,13 @@ void checkProgram(ProgramFile& program) {
         out.push_back(std::move(d));
     };
 
-    constexpr size_t kReleaseStep = 8u << 20;
     constexpr size_t kWindow = 16u << 20;
-    size_t released = 0;
     while (reader.next(line)) {
         if (program.followExecution) {
             while (line.offset > kWindow &&
                    line.offset - kWindow > program.executionOffset.load()) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
-        } else if (line.offset >= released + kReleaseStep) {
-            released = line.offset;
-            program.source->releaseBefore(released);
         }
         if (!parser.parse(line, block)) {
             const ParseProblem& p = parser.problem();

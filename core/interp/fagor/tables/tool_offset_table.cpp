@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "core/base/atomic_file.h"
 #include "core/base/translate.h"
 
 namespace kerf::fagor {
@@ -54,12 +53,6 @@ Expected<ToolOffsetTable> ToolOffsetTable::parse(std::string_view bytes, std::st
     return fromText(std::move(*text));
 }
 
-Expected<ToolOffsetTable> ToolOffsetTable::load(const std::filesystem::path& path) {
-    auto bytes = readWholeFile(path);
-    if (!bytes) return bytes.error();
-    return parse(*bytes, path.string());
-}
-
 ToolOffsetTable ToolOffsetTable::createDefault() {
     ToolOffsetTable table;
     table.m_text = TableText::create(
@@ -67,10 +60,6 @@ ToolOffsetTable ToolOffsetTable::createDefault() {
         "Kerf FAGOR tool offsets: D<n> X Z (lengths) F (location code) R (nose radius) I K (wear), "
         "mm, X and I in radius");
     return table;
-}
-
-MaybeError ToolOffsetTable::save(const std::filesystem::path& path) const {
-    return writeFileAtomically(path, m_text.serialize());
 }
 
 ToolOffset ToolOffsetTable::get(int number) const {

@@ -29,9 +29,7 @@ public:
     static constexpr int kMaxOffset = 255;
 
     static Expected<ToolOffsetTable> parse(std::string_view bytes, std::string fileName = {});
-    static Expected<ToolOffsetTable> load(const std::filesystem::path& path);
     static ToolOffsetTable createDefault();
-    MaybeError save(const std::filesystem::path& path) const;
     std::string serialize() const { return m_text.serialize(); }
 
     ToolOffset get(int number) const;

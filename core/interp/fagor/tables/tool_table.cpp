@@ -3,7 +3,6 @@
 #include <array>
 #include <cmath>
 
-#include "core/base/atomic_file.h"
 #include "core/base/translate.h"
 
 namespace kerf::fagor {
@@ -68,22 +67,12 @@ Expected<ToolTable> ToolTable::parse(std::string_view bytes, std::string fileNam
     return fromText(std::move(*text));
 }
 
-Expected<ToolTable> ToolTable::load(const std::filesystem::path& path) {
-    auto bytes = readWholeFile(path);
-    if (!bytes) return bytes.error();
-    return parse(*bytes, path.string());
-}
-
 ToolTable ToolTable::createDefault() {
     ToolTable table;
     table.m_text = TableText::create(
         "%TOOLS,MX,",
         "Kerf FAGOR tools: T<n> D (offset) FAM NLIFE RLIFE NOSEA NOSEW CUTA (degrees, mm)");
     return table;
-}
-
-MaybeError ToolTable::save(const std::filesystem::path& path) const {
-    return writeFileAtomically(path, m_text.serialize());
 }
 
 ToolEntry ToolTable::get(int number) const {

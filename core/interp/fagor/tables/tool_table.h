@@ -28,9 +28,7 @@ struct ToolEntry {
 class ToolTable {
 public:
     static Expected<ToolTable> parse(std::string_view bytes, std::string fileName = {});
-    static Expected<ToolTable> load(const std::filesystem::path& path);
     static ToolTable createDefault();
-    MaybeError save(const std::filesystem::path& path) const;
     std::string serialize() const { return m_text.serialize(); }
 
     ToolEntry get(int number) const;

@@ -1,6 +1,5 @@
 #include "core/interp/fagor/tables/zero_offset_table.h"
 
-#include "core/base/atomic_file.h"
 #include "core/base/translate.h"
 
 namespace kerf::fagor {
@@ -85,22 +84,12 @@ Expected<ZeroOffsetTable> ZeroOffsetTable::parse(std::string_view bytes, std::st
     return fromText(std::move(*text));
 }
 
-Expected<ZeroOffsetTable> ZeroOffsetTable::load(const std::filesystem::path& path) {
-    auto bytes = readWholeFile(path);
-    if (!bytes) return bytes.error();
-    return parse(*bytes, path.string());
-}
-
 ZeroOffsetTable ZeroOffsetTable::createDefault() {
     ZeroOffsetTable table;
     table.m_text = TableText::create(
         "%ZERO OFFSETS,MX,",
         "Kerf FAGOR zero offsets from machine zero: G54-G59, G159N7-G159N20, PLC; mm, X in radius");
     return table;
-}
-
-MaybeError ZeroOffsetTable::save(const std::filesystem::path& path) const {
-    return writeFileAtomically(path, m_text.serialize());
 }
 
 Pose ZeroOffsetTable::rowValues(std::string_view key) const {

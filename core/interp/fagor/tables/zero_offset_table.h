@@ -32,9 +32,7 @@ public:
     static constexpr int kCount = 20;
 
     static Expected<ZeroOffsetTable> parse(std::string_view bytes, std::string fileName = {});
-    static Expected<ZeroOffsetTable> load(const std::filesystem::path& path);
     static ZeroOffsetTable createDefault();
-    MaybeError save(const std::filesystem::path& path) const;
     std::string serialize() const { return m_text.serialize(); }
 
     // Offset 1-20 (axes without a value are 0).
