@@ -153,7 +153,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
 
     RunSummary summary;
     summary.diagnostics = session->allDiagnostics();
-    summary.diagnostics.insert(summary.diagnostics.end(), runProblems.begin(), runProblems.end());
+    appendDiagnostics(summary.diagnostics, runProblems);
     summary.ok = session->ready && !rejected && !hasErrors(summary.diagnostics);
     summary.dialect = program::dialectName(session->dialect);
     summary.blocksExecuted = blocks;
@@ -165,7 +165,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         picture.addToReport(report);
         drives.addToReport(report, summary.xInDiameter);
         motion.addToReport(report, summary.xInDiameter);
-        if (auto error = writeFileAtomically(*options.reportFile, report.dump(2) + "\n")) {
+        if (auto error = writeFileAtomically(*options.reportFile, reportText(report))) {
             diagnostics << error->format() << '\n';
             return 1;
         }

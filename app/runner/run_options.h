@@ -18,7 +18,8 @@ struct RunOptions {
     std::optional<std::filesystem::path> reportFile;
     std::optional<std::filesystem::path> traceFile;  // "-" writes to standard output
     std::optional<std::filesystem::path> stateDir;   // where QR parameters are kept
-    uint64_t maxBlocks = 2'000'000'000;              // guard against endless loops
+    // Guard against endless loops: about two seconds of a tight loop (docs/headless.md).
+    uint64_t maxBlocks = 10'000'000;
     bool blockSkip = false;
     // Pictures and material removal (app/runner/picture_output.h, docs/graphics.md).
     std::optional<std::filesystem::path> png;

@@ -18,6 +18,10 @@ double displayed(char letter, double value, bool xInDiameter) {
 
 }  // namespace
 
+std::string reportText(const nlohmann::json& report) {
+    return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 nlohmann::json diagnosticsJson(const DiagnosticList& diagnostics) {
     nlohmann::json list = nlohmann::json::array();
     for (const Diagnostic& d : diagnostics) {

@@ -39,4 +39,8 @@ nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatis
 
 nlohmann::json diagnosticsJson(const DiagnosticList& diagnostics);
 
+// The report as text. Program text and file names may hold bytes that are not UTF-8 (a Latin-1
+// program, a file name): each invalid sequence becomes U+FFFD, as JSON has to be UTF-8.
+std::string reportText(const nlohmann::json& report);
+
 }  // namespace kerf::app

@@ -32,7 +32,7 @@ fs::path defaultStateDir() {
 DiagnosticList Session::allDiagnostics() const {
     DiagnosticList all = diagnostics;
     if (interpreter) {
-        all.insert(all.end(), interpreter->diagnostics().begin(), interpreter->diagnostics().end());
+        appendDiagnostics(all, interpreter->diagnostics());
     }
     return all;
 }

@@ -1,6 +1,7 @@
 #include "core/base/diagnostic.h"
 
 #include <algorithm>
+#include <string>
 
 namespace kerf {
 
@@ -51,6 +52,45 @@ std::string Diagnostic::format() const {
     out += ": ";
     out += message();
     return out;
+}
+
+namespace {
+
+constexpr const char* kOmittedCode = "too-many-diagnostics";
+
+bool endsWithOmitted(const DiagnosticList& list) {
+    return !list.empty() && list.back().code == kOmittedCode;
+}
+
+// Counts `count` left-out diagnostics in the list's last entry.
+void addOmitted(DiagnosticList& list, unsigned long long count, Severity severity) {
+    if (!endsWithOmitted(list)) {
+        list.push_back(Diagnostic::make(severity, kOmittedCode, "", 0, 0,
+                                        KERF_TR_NOOP("and {1} more diagnostics"), "0"));
+    }
+    Diagnostic& omitted = list.back();
+    omitted.args.front() = std::to_string(std::stoull(omitted.args.front()) + count);
+    omitted.severity = std::max(omitted.severity, severity);
+}
+
+}  // namespace
+
+void appendDiagnostic(DiagnosticList& list, Diagnostic diagnostic) {
+    if (list.size() < kMaxDiagnostics && !endsWithOmitted(list)) {
+        list.push_back(std::move(diagnostic));
+    } else {
+        addOmitted(list, 1, diagnostic.severity);
+    }
+}
+
+void appendDiagnostics(DiagnosticList& list, const DiagnosticList& more) {
+    for (const Diagnostic& d : more) {
+        if (d.code == kOmittedCode) {
+            addOmitted(list, std::stoull(d.args.front()), d.severity);
+        } else {
+            appendDiagnostic(list, d);
+        }
+    }
 }
 
 bool hasErrors(const DiagnosticList& list) {

@@ -50,6 +50,15 @@ std::string substituteArgs(std::string_view messageTemplate, const std::vector<s
 
 using DiagnosticList = std::vector<Diagnostic>;
 
+// A list keeps at most this many diagnostics; one more entry ("and N more diagnostics") counts the
+// rest, with the highest severity among them, so that a program of a million bad lines cannot
+// exhaust memory and hasErrors() stays true when an error was left out.
+inline constexpr size_t kMaxDiagnostics = 1000;
+
+// Appends `diagnostic` within the limit (see kMaxDiagnostics).
+void appendDiagnostic(DiagnosticList& list, Diagnostic diagnostic);
+void appendDiagnostics(DiagnosticList& list, const DiagnosticList& more);
+
 bool hasErrors(const DiagnosticList& list);
 
 }  // namespace kerf

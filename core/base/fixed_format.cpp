@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace kerf {
@@ -11,6 +12,8 @@ namespace {
 constexpr int64_t kPowersOfTen[] = {1,      10,      100,      1000,      10000,
                                     100000, 1000000, 10000000, 100000000, 1000000000};
 
+constexpr size_t kLongestFixed = 1 + 309 + 1 + 9;
+
 }  // namespace
 
 void appendFixed(std::string& out, double value, int decimals) {
@@ -19,7 +22,8 @@ void appendFixed(std::string& out, double value, int decimals) {
     const int64_t scale = kPowersOfTen[decimals];
     const double magnitude = std::fabs(value) * static_cast<double>(scale);
     if (!(magnitude < 9.0e15)) {  // also NaN and infinity
-        char buffer[64];
+        // The largest double has 309 integral digits: sign, digits, point and 9 decimals fit.
+        char buffer[kLongestFixed];
         auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed,
                                     decimals);
         out.append(buffer, result.ptr);

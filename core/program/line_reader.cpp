@@ -49,8 +49,15 @@ uint32_t LogicalLine::columnAt(size_t textOffset) const {
 std::string_view LineReader::readPhysical(bool& continued) {
     const char* begin = m_text.data() + m_offset;
     const size_t left = m_text.size() - m_offset;
-    const void* newline = std::memchr(begin, '\n', left);
-    size_t length = newline ? static_cast<size_t>(static_cast<const char*>(newline) - begin) : left;
+    if (m_nextLf == kUnknown || m_nextLf < m_offset) {
+        // Remembered: in a file with CR line ends alone, searching for LF on every line would
+        // scan the rest of the file each time.
+        const void* lf = std::memchr(begin, '\n', left);
+        m_nextLf = lf ? static_cast<size_t>(static_cast<const char*>(lf) - m_text.data())
+                      : m_text.size();
+    }
+    const bool newline = m_nextLf < m_text.size();
+    size_t length = m_nextLf - m_offset;
     size_t consumed = newline ? length + 1 : length;
     if (const void* cr = std::memchr(begin, '\r', length)) {
         auto crAt = static_cast<size_t>(static_cast<const char*>(cr) - begin);

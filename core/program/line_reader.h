@@ -50,15 +50,19 @@ public:
     void seek(size_t offset, uint32_t line) {
         m_offset = offset;
         m_line = line;
+        m_nextLf = kUnknown;
     }
 
 private:
     std::string_view readPhysical(bool& continued);
     void finishJoin(LogicalLine& out);
 
+    static constexpr size_t kUnknown = static_cast<size_t>(-1);
+
     std::string_view m_text;
     size_t m_offset;
     uint32_t m_line;
+    size_t m_nextLf = kUnknown;  // the first LF at or after m_offset (m_text.size(): none)
 };
 
 }  // namespace kerf::program

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/base/fixed_format.h"
+#include "core/canon/value_limits.h"
 #include "core/geometry/arc_math.h"
 #include "core/geometry/plane.h"
 #include "motion/planner/corner_blend.h"
@@ -142,6 +143,16 @@ bool Planner::add(const canon::Command& command) {
     if (m_refused) return false;
     const SourceLocation& source = command.location;
     const canon::CommandBody& body = command.body;
+    // The interpreters refuse such a command already; geometry, limits and timing below need
+    // finite numbers, so the planner does not rely on it.
+    if (const auto unsafe = canon::findUnsafeValue(body)) {
+        refuse(makeDiagnostic(
+            source, "motion.unsafe-value",
+            KERF_TR_NOOP("Block {1}: {2} = {3} is outside the range of the control; the program "
+                         "is not run past this block."),
+            {blockName(source), unsafe->quantity, canon::describeValue(unsafe->value)}));
+        return false;
+    }
     if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) {
         endSynchronisation(source);
         Move move;

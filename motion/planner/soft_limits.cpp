@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kerf::motion {
 
@@ -12,6 +13,11 @@ namespace {
 void axisRange(const PathGeometry& g, size_t axis, double& lo, double& hi) {
     double a = g.origin[axis];
     double b = g.origin[axis] + g.rate[axis] * g.length;
+    // std::min/max would drop a NaN depending on the order: keep it, the checks refuse it.
+    if (std::isnan(a) || std::isnan(b)) {
+        lo = hi = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
     lo = std::min(a, b);
     hi = std::max(a, b);
     if (!g.curved() || axis >= 3) return;
@@ -32,7 +38,7 @@ std::optional<SoftLimitViolation> checkSoftLimits(const MachineModel& model,
         axisRange(geometry, i, lo, hi);
         int index = static_cast<int>(i);
         if (!axis.enabled) {
-            if (hi - lo > 1e-9) {
+            if (!(hi - lo <= 1e-9)) {
                 return SoftLimitViolation{index, hi, 0.0, true};
             }
             continue;
@@ -41,10 +47,12 @@ std::optional<SoftLimitViolation> checkSoftLimits(const MachineModel& model,
         double jointHi = jointFromAxis(model, index, hi, toolLength);
         // Rounding of programmed values must not refuse a move that ends on the limit.
         constexpr double kSlack = 1e-9;
-        if (jointHi > axis.maxLimit + kSlack) {
+        // Each test is written to hold only for a number inside the limits: NaN (0 * inf in the
+        // range, NaN in the element) fails every comparison and so violates.
+        if (!(jointHi <= axis.maxLimit + kSlack)) {
             return SoftLimitViolation{index, jointHi, axis.maxLimit, false};
         }
-        if (jointLo < axis.minLimit - kSlack) {
+        if (!(jointLo >= axis.minLimit - kSlack)) {
             return SoftLimitViolation{index, jointLo, axis.minLimit, false};
         }
     }

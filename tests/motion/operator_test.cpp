@@ -1,8 +1,11 @@
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
 #include "core/geometry/arc_math.h"
+#include "motion/kinematics/machine_model.h"
+#include "motion/planner/soft_limits.h"
 #include "motion/profile/jerk_profile.h"
 #include "tests/motion/motion_test_run.h"
 
@@ -293,6 +296,69 @@ TEST(SoftLimits, ArcExtremesAndToolLengthCount) {
     TestRun high = runCommands(
         millConfig(), {cmd(tool, 1), cmd(canon::LinearMove{at(0, 0, 45), 3000.0}, 2)}, Pose{}, {});
     ASSERT_TRUE(high.report.refused);
+}
+
+// The issue's soft-limit bypass: an infinite, NaN or huge coordinate passed --motion with
+// ok:true. The planner refuses it itself, before anything moves, whatever the interpreter did.
+TEST(SoftLimits, NonFiniteAndHugeNumbersAreRefusedBeforeAnythingMoves) {
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    canon::ArcMove arcAboutNan;
+    arcAboutNan.target = at(10, 0, 0);
+    arcAboutNan.center = Vec3(nan, 0, 0);
+    arcAboutNan.sweepRad = kPi;
+    arcAboutNan.feed = 3000.0;
+    const std::vector<canon::CommandBody> bad = {
+        canon::RapidMove{at(inf, 0, 0)},       canon::RapidMove{at(nan, 0, 0)},
+        canon::RapidMove{at(1e200, 0, 0)},     canon::LinearMove{at(10, 0, 0), nan},
+        canon::LinearMove{at(0, -inf, 0), 1.0}, arcAboutNan,
+        canon::Dwell{nan},
+    };
+    for (const canon::CommandBody& body : bad) {
+        TestRun run = runCommands(
+            millConfig(), {cmd(canon::LinearMove{at(5, 0, 0), 3000.0}, 1), cmd(body, 2)}, Pose{},
+            {});
+        ASSERT_TRUE(run.report.refused) << body.index();
+        ASSERT_FALSE(run.report.diagnostics.empty());
+        EXPECT_EQ(run.report.diagnostics[0].code, "motion.unsafe-value");
+        EXPECT_EQ(run.report.diagnostics[0].line, 2u);
+        EXPECT_NEAR(run.report.finalPosition[0], 5.0, 1e-6);
+        EXPECT_LT(run.report.durationS, 1.0);  // not the 86,400 s of the issue
+    }
+}
+
+// The check itself, without the planner's guard in front: 0 * inf and NaN fail every comparison,
+// so each test is written to pass only for a number inside the limits.
+TEST(SoftLimits, TheCheckRefusesNonFiniteGeometry) {
+    const MachineModel model = makeMachineModel(millConfig(), {});
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    AxisVector from{};
+    AxisVector to{};
+    to[0] = 10.0;
+    ASSERT_FALSE(checkSoftLimits(model, makeLine(from, to), 0.0));
+    for (const double bad : {inf, -inf, nan}) {
+        PathGeometry g = makeLine(from, to);
+        g.rate[0] = bad;  // origin + rate * length: inf or NaN
+        EXPECT_TRUE(checkSoftLimits(model, g, 0.0)) << bad;
+        g = makeLine(from, to);
+        g.length = bad;
+        EXPECT_TRUE(checkSoftLimits(model, g, 0.0)) << bad;
+        g = makeLine(from, to);
+        g.rate[0] = 0.0;
+        g.length = inf;  // 0 * inf = NaN on every axis
+        EXPECT_TRUE(checkSoftLimits(model, g, 0.0));
+        g = makeLine(from, to);
+        g.origin[1] = bad;
+        EXPECT_TRUE(checkSoftLimits(model, g, 0.0)) << bad;
+        EXPECT_TRUE(checkSoftLimits(model, makeLine(from, to), bad)) << "tool length " << bad;
+    }
+    // An arc of infinite radius: its extremes are infinite.
+    PathGeometry arc = makeLine(from, to);
+    arc.radius = inf;
+    arc.e1 = {1.0, 0.0, 0.0};
+    arc.k = 1.0;
+    EXPECT_TRUE(checkSoftLimits(model, arc, 0.0));
 }
 
 TEST(SingleBlock, StopsAtTheEndOfEveryBlock) {

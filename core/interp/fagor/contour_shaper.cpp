@@ -12,7 +12,7 @@ namespace {
 constexpr double kEps = 1e-9;
 
 interp::PathError error(const SourceLocation& at, const char* message) {
-    return interp::PathError{at, "contour", message};
+    return interp::PathError{at, "contour", message, {}};
 }
 
 bool hasRequest(const Move& m) {

@@ -41,6 +41,18 @@ bool isFunctionName(std::string_view w) {
     return false;
 }
 
+// Enters one level of nesting (parentheses, a function, a sign, NOT) for as long as it lives.
+class NestingLevel {
+public:
+    explicit NestingLevel(int& depth) : m_depth(depth) { ++m_depth; }
+    ~NestingLevel() { --m_depth; }
+    NestingLevel(const NestingLevel&) = delete;
+    NestingLevel& operator=(const NestingLevel&) = delete;
+
+private:
+    int& m_depth;
+};
+
 int hexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
     if (c >= 'A' && c <= 'F') return c - 'A' + 10;
@@ -57,6 +69,16 @@ bool Expression::fail(size_t offset, const char* code, const char* messageTempla
                       std::vector<std::string> args) {
     m_problem = Problem{offset, code, messageTemplate, std::move(args)};
     return false;
+}
+
+bool Expression::arithmetic(double value, size_t operatorOffset, char op, ExprValue& out) {
+    if (!std::isfinite(value)) {
+        return fail(operatorOffset, "overflow",
+                    KERF_TR_NOOP("overflow: the result of '{1}' is too large"),
+                    {std::string(1, op)});
+    }
+    out = number(value);
+    return true;
 }
 
 std::string_view Expression::peekWord() {
@@ -134,10 +156,12 @@ bool Expression::additive(ExprValue& out) {
     for (;;) {
         const char c = m_s.peek();
         if (c != '+' && c != '-') return true;
+        const size_t at = m_s.position();
         m_s.advance();
         ExprValue rhs;
         if (!multiplicative(rhs)) return false;
-        out = number(c == '+' ? out.number + rhs.number : out.number - rhs.number);
+        const double sum = c == '+' ? out.number + rhs.number : out.number - rhs.number;
+        if (!arithmetic(sum, at, c, out)) return false;
     }
 }
 
@@ -151,12 +175,14 @@ bool Expression::multiplicative(ExprValue& out) {
         ExprValue rhs;
         if (!power(rhs)) return false;
         if (c == '*') {
-            out = number(out.number * rhs.number);
+            if (!arithmetic(out.number * rhs.number, at, c, out)) return false;
         } else {
             if (evaluating() && rhs.number == 0.0) {
                 return fail(at, "math", KERF_TR_NOOP("division by zero"));
             }
-            out = number(evaluating() ? out.number / rhs.number : 0.0);
+            if (!arithmetic(evaluating() ? out.number / rhs.number : 0.0, at, c, out)) {
+                return false;
+            }
         }
     }
 }
@@ -190,6 +216,14 @@ bool Expression::power(ExprValue& out) {
 }
 
 bool Expression::unary(ExprValue& out) {
+    // Every nesting (parentheses, functions, signs, NOT) passes here: a bounded depth bounds the
+    // stack.
+    const NestingLevel level(m_depth);
+    if (m_depth > kMaxExpressionNesting) {
+        return fail(m_s.position(), "nesting",
+                    KERF_TR_NOOP("an expression may nest at most {1} levels"),
+                    {std::to_string(kMaxExpressionNesting)});
+    }
     const char c = m_s.peek();
     if (c == '-' || c == '+') {
         m_s.advance();

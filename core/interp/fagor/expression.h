@@ -16,6 +16,9 @@ struct ExprValue {
     bool truth = false;
 };
 
+// Deepest nesting of parentheses, functions and signs in one expression (the parser recurses).
+inline constexpr int kMaxExpressionNesting = 256;
+
 // What expressions read.
 class ExpressionContext {
 public:
@@ -53,6 +56,8 @@ private:
     bool power(ExprValue& out);
     bool unary(ExprValue& out);
     bool primary(ExprValue& out);
+    // Stores an arithmetic result; one that is not finite is an overflow at its operator.
+    bool arithmetic(double value, size_t operatorOffset, char op, ExprValue& out);
     bool function(std::string_view name, size_t offset, ExprValue& out);
     bool functionArgument(ExprValue& out);
     bool constant(ExprValue& out);
@@ -64,6 +69,7 @@ private:
     Scanner& m_s;
     ExpressionContext* m_context;
     Problem m_problem;
+    int m_depth = 0;
 };
 
 // Integer of a value for bitwise operations and indexes: rounds to the nearest integer, saturating.

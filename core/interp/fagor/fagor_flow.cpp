@@ -127,7 +127,7 @@ FagorProgram* FagorInterpreter::programByNumber(int number, bool keepLabels, Pro
             return nullptr;
         }
         if (hasErrors(p->diagnostics)) {
-            m_diagnostics.insert(m_diagnostics.end(), p->diagnostics.begin(), p->diagnostics.end());
+            appendDiagnostics(m_diagnostics, p->diagnostics);
             problemOf(problem, "call", KERF_TR_NOOP("program {1} has errors"),
                       {std::to_string(number)});
             return nullptr;
@@ -161,8 +161,7 @@ const SubroutineEntry* FagorInterpreter::findSubroutine(int number, FagorProgram
             if (!entry.is_regular_file(ignored) || programNumberOf(entry.path()) < 0) continue;
             FagorProgram* p = loadProgram(entry.path(), nullptr, false);
             if (p != nullptr && hasErrors(p->diagnostics)) {
-                m_diagnostics.insert(m_diagnostics.end(), p->diagnostics.begin(),
-                                     p->diagnostics.end());
+                appendDiagnostics(m_diagnostics, p->diagnostics);
             }
         }
         found = search();

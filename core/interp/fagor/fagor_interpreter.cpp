@@ -146,7 +146,7 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
     if (hasErrors(m_diagnostics)) return false;  // a table could not be read
     auto source = program::SourceText::load(path);
     if (!source) {
-        m_diagnostics.push_back(source.error());
+        appendDiagnostic(m_diagnostics, source.error());
         return false;
     }
     auto owned = std::make_unique<FagorProgram>();
@@ -164,8 +164,7 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
         m_checkThread = std::thread([program] { checkProgram(*program); });
     } else {
         checkProgram(*program);
-        m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
-                             program->diagnostics.end());
+        appendDiagnostics(m_diagnostics, program->diagnostics);
         if (hasErrors(program->diagnostics)) return false;
     }
     enterProgram(program, BlockPosition{0, 1});
@@ -183,8 +182,7 @@ bool FagorInterpreter::loadText(std::string text, const std::string& path) {
     program->number = programNumberOf(path);
     checkProgram(*program);
     m_programs.push_back(std::move(owned));
-    m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
-                         program->diagnostics.end());
+    appendDiagnostics(m_diagnostics, program->diagnostics);
     if (hasErrors(program->diagnostics)) return false;
     enterProgram(program, BlockPosition{0, 1});
     m_status = interp::RunStatus::BudgetUsed;
@@ -215,7 +213,7 @@ void FagorInterpreter::fail(const char* code, const char* messageTemplate,
     Diagnostic d = Diagnostic::make(Severity::Error, code, m_sources.path(m_at.fileId), m_at.line,
                                     m_at.column, messageTemplate);
     d.args = std::move(args);
-    m_diagnostics.push_back(std::move(d));
+    appendDiagnostic(m_diagnostics, std::move(d));
     m_status = interp::RunStatus::Failed;
 }
 
@@ -229,7 +227,7 @@ void FagorInterpreter::warn(const char* code, const char* messageTemplate,
     Diagnostic d = Diagnostic::make(Severity::Warning, code, m_sources.path(m_at.fileId), m_at.line,
                                     m_at.column, messageTemplate);
     d.args = std::move(args);
-    m_diagnostics.push_back(std::move(d));
+    appendDiagnostic(m_diagnostics, std::move(d));
 }
 
 bool FagorInterpreter::pathOk(const std::optional<interp::PathError>& error) {
@@ -238,14 +236,22 @@ bool FagorInterpreter::pathOk(const std::optional<interp::PathError>& error) {
     if (!e) return true;
     Diagnostic d = Diagnostic::make(Severity::Error, e->code, m_sources.path(e->location.fileId),
                                     e->location.line, e->location.column, e->messageTemplate);
-    m_diagnostics.push_back(std::move(d));
+    d.args = e->args;
+    appendDiagnostic(m_diagnostics, std::move(d));
     m_status = interp::RunStatus::Failed;
     return false;
 }
 
+void FagorInterpreter::outputValuesOk() {
+    if (!m_output.failed()) return;
+    auto error = m_output.takeError();
+    // The first error stays the one reported.
+    if (error && m_status != interp::RunStatus::Failed) (void)pathOk(error);
+}
+
 void FagorInterpreter::reportRemovedLoops() {
     for (const SourceLocation& at : m_compensation.takeRemovedLoops()) {
-        m_diagnostics.push_back(Diagnostic::make(
+        appendDiagnostic(m_diagnostics, Diagnostic::make(
             Severity::Warning, "collision", m_sources.path(at.fileId), at.line, at.column,
             KERF_TR_NOOP("collision detection removed a loop of the compensated path")));
     }
@@ -294,12 +300,14 @@ interp::RunStatus FagorInterpreter::run(canon::Sink& sink, uint64_t blockBudget)
         const bool done = m_status == interp::RunStatus::BudgetUsed ||
                           (m_status == interp::RunStatus::NeedsSync && !m_resumeBlock);
         if (done) afterBlock();
+        outputValuesOk();
     }
     if (m_status == interp::RunStatus::Failed && waitForCheck()) {
         // The blocks before the error run; only the one that failed and those after it do not.
         (void)m_shaper.flush();
         (void)m_compensation.suspend();
     }
+    outputValuesOk();
     return m_status;
 }
 
@@ -411,7 +419,7 @@ void FagorInterpreter::finish(int mCode) {
     auto save = [&](auto& table, const std::filesystem::path& path) {
         if (table && table->modified() && !path.empty()) {
             if (auto error = m_root.replace(path, table->serialize())) {
-                m_diagnostics.push_back(*error);
+                appendDiagnostic(m_diagnostics, *error);
             }
         }
     };

@@ -143,6 +143,8 @@ private:
     void failAt(size_t offset, const Problem& problem);
     void warn(const char* code, const char* messageTemplate, std::vector<std::string> args = {});
     bool pathOk(const std::optional<interp::PathError>& error);
+    // Reports a refusal of the output stage (an unsafe number, a zone) the block did not see.
+    void outputValuesOk();
     void emit(canon::CommandBody body);
     void resetModal();
     void reportRemovedLoops();

@@ -56,7 +56,7 @@ private:
               std::vector<std::string> args = {}) {
         Diagnostic d = Diagnostic::make(s, code, m_file, line, column, text);
         d.args = std::move(args);
-        m_program.diagnostics.push_back(std::move(d));
+        appendDiagnostic(m_program.diagnostics, std::move(d));
     }
     void header(std::string_view text, uint32_t line);
     void iso(const ParsedBlock& block, const program::LogicalLine& line);
@@ -111,7 +111,7 @@ void Checker::iso(const ParsedBlock& block, const program::LogicalLine& line) {
             later ? Severity::Warning : Severity::Error, problem.code, m_file, line.firstLine,
             program::columnOf(line.text, problem.offset), problem.messageTemplate);
         d.args = problem.args;
-        m_program.diagnostics.push_back(std::move(d));
+        appendDiagnostic(m_program.diagnostics, std::move(d));
     }
     if (block.outOfOrder != 0 && !m_warnedOrder) {
         m_warnedOrder = true;

@@ -151,7 +151,7 @@ void FagorInterpreter::commitOpenProgram() {
         return;
     }
     if (MaybeError error = m_root.replace(m_open.path, m_open.content)) {
-        m_diagnostics.push_back(*error);
+        appendDiagnostic(m_diagnostics, *error);
     }
 }
 

@@ -14,7 +14,7 @@ constexpr double kStraightLimit = 300.0 * kPi / 180.0;  // COMPMODE: angle betwe
 constexpr int kMaxBlocksWithoutMotion = 48;
 
 interp::PathError error(const SourceLocation& at, const char* code, const char* message) {
-    return interp::PathError{at, code, message};
+    return interp::PathError{at, code, message, {}};
 }
 
 Pose withPoint(const ContourElement& frame, Pose pose, const Vec2& p) {

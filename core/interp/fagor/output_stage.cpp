@@ -75,12 +75,14 @@ bool OutputStage::check(const ContourElement& path, const SourceLocation& at) {
         machine.center = path.center + path.inPlane(m_machineOffset);
     }
     if (auto zone = m_zones->violation(machine)) {
-        m_error = interp::PathError{at, "work-zone",
+        m_error = interp::PathError{at,
+                                    "work-zone",
                                     *zone == 1   ? KERF_TR_NOOP("the move violates work zone 1")
                                     : *zone == 2 ? KERF_TR_NOOP("the move violates work zone 2")
                                     : *zone == 3 ? KERF_TR_NOOP("the move violates work zone 3")
                                     : *zone == 4 ? KERF_TR_NOOP("the move violates work zone 4")
-                                                 : KERF_TR_NOOP("the move violates work zone 5")};
+                                                 : KERF_TR_NOOP("the move violates work zone 5"),
+                                    {}};
         m_failed = true;
         return false;
     }
@@ -117,8 +119,16 @@ void OutputStage::addDistance(const ContourElement& path) {
     m_distance[second] += dy - std::fabs(path.end.values[second] - path.start.values[second]);
 }
 
+bool OutputStage::refuseUnsafe(const canon::Command& command) {
+    m_error = interp::unsafeValueError(command);
+    m_failed = m_error.has_value();
+    return m_failed;
+}
+
 void OutputStage::consume(const canon::Command& command) {
     if (m_failed || m_target == nullptr) return;
+    // Zone checks and scaling compare and scale: they need finite numbers.
+    if (refuseUnsafe(command)) return;
     const canon::CommandBody& body = command.body;
     canon::Command out = command;
     ContourElement path;
@@ -144,9 +154,11 @@ void OutputStage::consume(const canon::Command& command) {
         const double k2 = m_scale[static_cast<size_t>(axisIndex(axes.second))];
         const bool scaledPlane = (m_scaledAxes & (axisBit(axes.first) | axisBit(axes.second))) != 0;
         if (scaledPlane && k1 != k2) {
-            m_error = interp::PathError{command.location, "scaling",
+            m_error = interp::PathError{command.location,
+                                        "scaling",
                                         KERF_TR_NOOP("an arc cannot be scaled differently along "
-                                                     "the two axes of its plane (G72)")};
+                                                     "the two axes of its plane (G72)"),
+                                        {}};
             m_failed = true;
             return;
         }
@@ -184,7 +196,7 @@ void OutputStage::consume(const canon::Command& command) {
             }
         }
     }
-    if (!check(path, command.location)) return;
+    if (refuseUnsafe(out) || !check(path, command.location)) return;
     addDistance(path);
     m_position = to;
     m_unscaled = target;

@@ -6,12 +6,15 @@
 #include "core/canon/commands.h"
 #include "core/interp/fagor/work_zones.h"
 #include "core/interp/path/path_move.h"
+#include "core/interp/path/value_guard.h"
 
 namespace kerf::fagor {
 
 // The last stage before the canonical stream: applies the per-axis scale factors of G72 X..C to
 // the computed displacements (spec part 1 §10.5, after compensation), checks the tip path against
 // the enabled work zones before anything moves, and sums the distance each axis travels (DIST).
+// A command with a number outside the canonical stream's range is refused, before and after
+// scaling.
 class OutputStage final : public canon::Sink {
 public:
     void setTarget(canon::Sink* target) { m_target = target; }
@@ -26,8 +29,10 @@ public:
 
     void consume(const canon::Command& command) override;
 
-    // A zone violation or an arc that per-axis scaling would distort; later moves are dropped.
+    // A zone violation, an arc that per-axis scaling would distort or a number out of range;
+    // later commands are dropped.
     std::optional<interp::PathError> takeError();
+    bool failed() const { return m_failed; }
     const Pose& position() const { return m_position; }
     double distance(Axis axis) const { return m_distance[static_cast<size_t>(axisIndex(axis))]; }
     void setDistance(Axis axis, double value) {
@@ -38,6 +43,7 @@ private:
     bool scaling() const { return m_scaledAxes != 0; }
     Pose scaled(const Pose& p) const;
     bool check(const ContourElement& path, const SourceLocation& at);
+    bool refuseUnsafe(const canon::Command& command);
     void addDistance(const ContourElement& path);
 
     canon::Sink* m_target = nullptr;

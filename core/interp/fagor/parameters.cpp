@@ -1,5 +1,6 @@
 #include "core/interp/fagor/parameters.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/base/translate.h"
@@ -45,6 +46,12 @@ bool Parameters::get(int number, double& out, Problem& problem) const {
 bool Parameters::set(int number, double value, Problem& problem) {
     double* p = slotOf(*this, number, problem);
     if (p == nullptr) return false;
+    if (!std::isfinite(value)) {  // every value the language computes is finite: keep it so
+        problem.code = "overflow";
+        problem.messageTemplate = KERF_TR_NOOP("P{1}: the value is too large (overflow)");
+        problem.args = {std::to_string(number)};
+        return false;
+    }
     *p = value;
     if (number >= 0 && number <= 25) {
         m_localSet[static_cast<size_t>(m_level)] |= 1u << number;

@@ -525,12 +525,13 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                     if (!c.value(total)) return false;
                     rep = total;
                 }
-                if ((rep < 0.0 || rep > 65534.0) &&
+                // Written so that NaN is out of range too.
+                const bool inRange = rep >= 0.0 && rep <= 65534.0;
+                if (!inRange &&
                     !c.valueError(KERF_TR_NOOP("REP must be between 0 and 65534"))) {
                     return false;
                 }
-                rep = std::clamp(rep, 0.0, 65534.0);
-                b.repeat = static_cast<int>(rep);
+                b.repeat = inRange ? static_cast<int>(rep) : 0;
             }
             if (!c.expectEnd()) return false;
             out.statement = b;

@@ -80,11 +80,12 @@ std::optional<double> Cursor::unsignedNumber() {
         if (decimals > 0 || *p == '.') p = q;
     }
     if (intEnd == begin && decimals == 0) return std::nullopt;
-    m_pos += static_cast<size_t>(p - begin);
+    const size_t length = static_cast<size_t>(p - begin);
     const auto digits = static_cast<int>(intEnd - begin) + decimals;
     if (digits <= 15 && decimals <= 15) {
         static constexpr double kPowers[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                              1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+        m_pos += length;
         return static_cast<double>(mantissa) / kPowers[decimals];
     }
     std::string copy(begin, p);
@@ -92,7 +93,11 @@ std::optional<double> Cursor::unsignedNumber() {
         if (c == ',') c = '.';
     }
     double value = 0.0;
-    std::from_chars(copy.data(), copy.data() + copy.size(), value);
+    // A literal beyond the range of a double is no number (from_chars would leave 0).
+    if (std::from_chars(copy.data(), copy.data() + copy.size(), value).ec != std::errc()) {
+        return std::nullopt;
+    }
+    m_pos += length;
     return value;
 }
 

@@ -69,6 +69,18 @@ double expOf(double x) {
     return std::exp(x);
 }
 
+// Enters one level of nesting (parentheses, a function, a sign) for as long as it lives.
+class NestingLevel {
+public:
+    explicit NestingLevel(int& depth) : m_depth(depth) { ++m_depth; }
+    ~NestingLevel() { --m_depth; }
+    NestingLevel(const NestingLevel&) = delete;
+    NestingLevel& operator=(const NestingLevel&) = delete;
+
+private:
+    int& m_depth;
+};
+
 // Longer names first so that "SQRT" is not read as "SQ" followed by "RT".
 constexpr FunctionEntry kFunctions[] = {
     {"SQRT", squareRoot}, {"SQ", sq},        {"SIN", sinDeg},    {"COS", cosDeg},
@@ -93,8 +105,21 @@ std::optional<double> FormulaParser::domainCheck(double value, const char* what)
     return fail("math", KERF_TR_NOOP("{1} is not defined for this value"), {what});
 }
 
-double FormulaParser::read(QRef ref) {
-    return m_env ? m_env->number(ref) : 0.0;
+std::optional<double> FormulaParser::overflowCheck(double value, size_t operatorOffset,
+                                                  char op) {
+    if (std::isfinite(value)) return value;
+    m_cursor.setPosition(operatorOffset);
+    return fail("overflow", KERF_TR_NOOP("overflow: the result of '{1}' is too large"),
+                {std::string(1, op)});
+}
+
+std::optional<double> FormulaParser::read(QRef ref) {
+    if (m_env == nullptr) return 0.0;
+    const double value = m_env->number(ref);
+    // Formulas keep parameters finite; a value read from a table or the machine may not be.
+    if (std::isfinite(value)) return value;
+    return fail("overflow", KERF_TR_NOOP("{1}{2} holds no finite number"),
+                {qPrefix(ref.kind), std::to_string(ref.index)});
 }
 
 std::optional<QRef> FormulaParser::parameter(bool strings) {
@@ -137,7 +162,10 @@ std::optional<double> FormulaParser::signedOperand() {
         sign = c == '-' ? -1.0 : 1.0;
         m_cursor.setPosition(m_cursor.position() + 1);
     }
-    if (auto ref = parameter(false)) return sign * read(*ref);
+    if (auto ref = parameter(false)) {
+        auto value = read(*ref);
+        return value ? std::optional<double>(sign * *value) : std::nullopt;
+    }
     if (m_problem) return std::nullopt;
     if (auto number = m_cursor.unsignedNumber()) return sign * *number;
     return fail("syntax", KERF_TR_NOOP("number or Q parameter expected"));
@@ -161,7 +189,10 @@ std::optional<double> FormulaParser::wordValue() {
     if (isDigit(c) || c == '.') {
         if (auto number = m_cursor.unsignedNumber()) return sign * *number;
     }
-    if (auto ref = parameter(false)) return sign * read(*ref);
+    if (auto ref = parameter(false)) {
+        auto value = read(*ref);
+        return value ? std::optional<double>(sign * *value) : std::nullopt;
+    }
     if (m_problem) return std::nullopt;
     return fail("syntax", KERF_TR_NOOP("number or Q parameter expected"));
 }
@@ -176,10 +207,12 @@ std::optional<double> FormulaParser::additive() {
     for (;;) {
         char c = m_cursor.peek();
         if (c != '+' && c != '-') return left;
-        m_cursor.setPosition(m_cursor.position() + 1);
+        const size_t at = m_cursor.position();
+        m_cursor.setPosition(at + 1);
         auto right = multiplicative();
         if (!right) return std::nullopt;
-        *left = c == '+' ? *left + *right : *left - *right;
+        left = overflowCheck(c == '+' ? *left + *right : *left - *right, at, c);
+        if (!left) return std::nullopt;
     }
 }
 
@@ -194,7 +227,8 @@ std::optional<double> FormulaParser::multiplicative() {
         auto right = power();
         if (!right) return std::nullopt;
         if (c == '*') {
-            *left *= *right;
+            left = overflowCheck(*left * *right, at, c);
+            if (!left) return std::nullopt;
             continue;
         }
         if (*right == 0.0) {
@@ -205,7 +239,8 @@ std::optional<double> FormulaParser::multiplicative() {
             m_cursor.setPosition(at);
             return fail("math", KERF_TR_NOOP("division by zero"));
         }
-        *left = c == '/' ? *left / *right : std::fmod(*left, *right);
+        left = overflowCheck(c == '/' ? *left / *right : std::fmod(*left, *right), at, c);
+        if (!left) return std::nullopt;
     }
 }
 
@@ -224,6 +259,12 @@ std::optional<double> FormulaParser::power() {
 }
 
 std::optional<double> FormulaParser::unary() {
+    // Every nesting (parentheses, functions, signs) passes here: a bounded depth bounds the stack.
+    const NestingLevel level(m_depth);
+    if (m_depth > kMaxFormulaNesting) {
+        return fail("nesting", KERF_TR_NOOP("a formula may nest at most {1} levels"),
+                    {std::to_string(kMaxFormulaNesting)});
+    }
     char c = m_cursor.peek();
     if (c == '+' || c == '-') {
         m_cursor.setPosition(m_cursor.position() + 1);
@@ -353,7 +394,7 @@ std::optional<double> FormulaParser::stringFunction(std::string_view name) {
             size_t first = text.find_first_not_of(" \t+");
             const char* begin = text.data() + (first == std::string::npos ? text.size() : first);
             auto parsed = std::from_chars(begin, text.data() + text.size(), result);
-            if (parsed.ec != std::errc()) {
+            if (parsed.ec != std::errc() || !std::isfinite(result)) {
                 return fail("math", KERF_TR_NOOP("'{1}' is not a number"), {*source});
             }
         }
@@ -363,10 +404,19 @@ std::optional<double> FormulaParser::stringFunction(std::string_view name) {
 }
 
 std::optional<std::string> FormulaParser::stringExpression() {
+    m_cursor.skipBlanks();
+    size_t at = m_cursor.position();
     auto left = stringTerm();
     if (!left) return std::nullopt;
-    while (m_cursor.peek() == '|') {
-        size_t at = m_cursor.position();
+    for (;;) {
+        if (left->size() > kMaxStringLength) {
+            m_cursor.setPosition(at);
+            fail("string-length", KERF_TR_NOOP("a string may hold at most {1} characters, not {2}"),
+                 {std::to_string(kMaxStringLength), std::to_string(left->size())});
+            return std::nullopt;
+        }
+        if (m_cursor.peek() != '|') return left;
+        at = m_cursor.position();
         if (m_cursor.text().substr(at, 2) != "||") {
             fail("syntax", KERF_TR_NOOP("'||' expected"));
             return std::nullopt;
@@ -376,7 +426,6 @@ std::optional<std::string> FormulaParser::stringExpression() {
         if (!right) return std::nullopt;
         *left += *right;
     }
-    return left;
 }
 
 std::optional<std::string> FormulaParser::stringTerm() {
@@ -398,7 +447,8 @@ std::optional<std::string> FormulaParser::stringTerm() {
             fail("syntax", KERF_TR_NOOP("')' expected"));
             return std::nullopt;
         }
-        char buffer[64];
+        // Sign, the 309 integral digits of the largest double, point and 9 decimals.
+        char buffer[1 + 309 + 1 + 9];
         auto r = std::to_chars(buffer, buffer + sizeof buffer, *value, std::chars_format::fixed,
                                decimals);
         return std::string(buffer, r.ptr);

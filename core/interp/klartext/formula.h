@@ -20,6 +20,12 @@ public:
     virtual std::optional<std::string> systemString(int id, int nr) = 0;
 };
 
+// Deepest nesting of parentheses, functions and signs in one formula (the parser recurses).
+inline constexpr int kMaxFormulaNesting = 256;
+
+// Longest string a QS parameter holds (TNC 320: 255 characters).
+inline constexpr size_t kMaxStringLength = 255;
+
 struct ParseProblem {
     size_t offset = 0;
     std::string code;
@@ -58,15 +64,18 @@ private:
     std::optional<std::string> stringTerm();
     std::optional<std::string> stringSource(std::string_view prefix);
     std::optional<double> tagValue(std::string_view tag);
-    double read(QRef ref);
+    std::optional<double> read(QRef ref);
     std::optional<double> fail(std::string code, std::string messageTemplate,
                                std::vector<std::string> args = {});
     std::optional<double> domainCheck(double value, const char* what);
+    // An arithmetic result that is not finite is an overflow, reported at its operator.
+    std::optional<double> overflowCheck(double value, size_t operatorOffset, char op);
 
     Cursor& m_cursor;
     FormulaEnvironment* m_env;
     std::optional<ParseProblem> m_problem;
     size_t m_problemOffset = 0;
+    int m_depth = 0;
 };
 
 }  // namespace kerf::klartext

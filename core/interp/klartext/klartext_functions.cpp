@@ -52,7 +52,7 @@ void KlartextInterpreter::executePrint(const PrintBlock& print) {
     localtime_r(&now, &local);
     auto formatted = formatFPrint(*mask, maskPath->string(), *m_environment, local);
     if (!formatted) {
-        m_diagnostics.push_back(formatted.error());
+        appendDiagnostic(m_diagnostics, formatted.error());
         fail("fprint", KERF_TR_NOOP("F-PRINT mask {1} has an error"), {print.maskFile});
         return;
     }
@@ -65,7 +65,7 @@ void KlartextInterpreter::executePrint(const PrintBlock& print) {
         if (previous) content = *previous + content;
     }
     if (auto error = m_root.replace(*outputPath, content)) {
-        m_diagnostics.push_back(*error);
+        appendDiagnostic(m_diagnostics, *error);
         fail("io", KERF_TR_NOOP("cannot write {1}"), {print.outputFile});
     }
 }
@@ -254,7 +254,7 @@ void KlartextInterpreter::executeTableOpen(const TableOpen& open) {
     auto parsed = bytes ? tables::TncTable::parse(*bytes, path->string()) : bytes.error();
     auto table = parsed ? tables::FreeTable::fromTable(std::move(*parsed), *path) : parsed.error();
     if (!table) {
-        m_diagnostics.push_back(table.error());
+        appendDiagnostic(m_diagnostics, table.error());
         fail("table", KERF_TR_NOOP("FN 26: cannot open table {1}"), {open.path});
         return;
     }
@@ -278,7 +278,7 @@ void KlartextInterpreter::executeTableAccess(const TableAccess& access) {
         auto error = m_openTable->write(access.row, access.columns, values);
         if (!error) error = m_root.replace(m_openTable->path(), m_openTable->table().serialize());
         if (error) {
-            m_diagnostics.push_back(*error);
+            appendDiagnostic(m_diagnostics, *error);
             fail("table", KERF_TR_NOOP("FN 27: cannot write row {1}"),
                  {std::to_string(access.row)});
         }
@@ -286,7 +286,7 @@ void KlartextInterpreter::executeTableAccess(const TableAccess& access) {
     }
     auto values = m_openTable->read(access.row, access.columns);
     if (!values) {
-        m_diagnostics.push_back(values.error());
+        appendDiagnostic(m_diagnostics, values.error());
         fail("table", KERF_TR_NOOP("FN 28: cannot read row {1}"), {std::to_string(access.row)});
         return;
     }

@@ -41,7 +41,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
     m_path.reset(m_programmed);
     if (!m_settings.remanentFile.empty()) {
         if (auto error = m_q.loadRemanent(m_settings.remanentFile)) {
-            m_diagnostics.push_back(*error);
+            appendDiagnostic(m_diagnostics, *error);
         }
     }
 }
@@ -96,7 +96,7 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
     std::string error;
     ProgramFile* program = loadProgram(path, &error, mode == CheckMode::Inline);
     if (program == nullptr) {
-        m_diagnostics.push_back(Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
+        appendDiagnostic(m_diagnostics, Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
                                                  KERF_TR_NOOP("cannot read the program: {1}"),
                                                  error));
         return false;
@@ -109,8 +109,7 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
         program->executionOffset.store(0);
         m_checkThread = std::thread([program] { checkProgram(*program); });
     } else {
-        m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
-                             program->diagnostics.end());
+        appendDiagnostics(m_diagnostics, program->diagnostics);
         if (hasErrors(program->diagnostics)) return false;
     }
     startLevel(program, 0, 0);
@@ -124,8 +123,7 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     program->fileId = m_sources.add(path);
     program->folder = std::filesystem::path(path).parent_path();
     checkProgram(*program);
-    m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
-                         program->diagnostics.end());
+    appendDiagnostics(m_diagnostics, program->diagnostics);
     bool ok = !hasErrors(program->diagnostics);
     m_programs.push_back(std::move(program));
     if (!ok) return false;
@@ -165,13 +163,13 @@ Diagnostic KlartextInterpreter::diagnosticAt(Severity severity, const char* code
 
 void KlartextInterpreter::fail(const char* code, const char* messageTemplate,
                                std::vector<std::string> args) {
-    m_diagnostics.push_back(diagnosticAt(Severity::Error, code, messageTemplate, std::move(args)));
+    appendDiagnostic(m_diagnostics, diagnosticAt(Severity::Error, code, messageTemplate, std::move(args)));
     m_status = interp::RunStatus::Failed;
 }
 
 void KlartextInterpreter::warn(const char* code, const char* messageTemplate,
                                std::vector<std::string> args) {
-    m_diagnostics.push_back(
+    appendDiagnostic(m_diagnostics, 
         diagnosticAt(Severity::Warning, code, messageTemplate, std::move(args)));
 }
 
@@ -181,12 +179,20 @@ bool KlartextInterpreter::checkPathError(const std::optional<interp::PathError>&
     d.severity = Severity::Error;
     d.code = error->code;
     d.messageTemplate = error->messageTemplate;
+    d.args = error->args;
     d.file = m_sources.path(error->location.fileId);
     d.line = error->location.line;
     d.column = error->location.column;
-    m_diagnostics.push_back(std::move(d));
+    appendDiagnostic(m_diagnostics, std::move(d));
     m_status = interp::RunStatus::Failed;
     return false;
+}
+
+bool KlartextInterpreter::outputValuesOk() {
+    auto error = m_out.takeError();
+    if (!error) return true;
+    if (m_status == interp::RunStatus::Failed) return false;  // the first error stays the one
+    return checkPathError(error);
 }
 
 void KlartextInterpreter::emit(canon::CommandBody body) {
@@ -196,7 +202,7 @@ void KlartextInterpreter::emit(canon::CommandBody body) {
 // ---- the run loop ----------------------------------------------------------------------------
 
 interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudget) {
-    m_out.target = &sink;
+    m_out.setTarget(&sink);
     if (m_status != interp::RunStatus::BudgetUsed) return m_status;
     if (!m_started) {
         m_started = true;
@@ -213,6 +219,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         }
         if (!m_reader->next(m_line)) {
             endOfProgram(false);
+            outputValuesOk();
             continue;
         }
         ++m_blocks;
@@ -232,12 +239,14 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         m_currentM = MWords{};
         if (m_block.hidden && m_settings.blockSkip) continue;
         execute(m_block.statement);
+        outputValuesOk();
     }
     if (m_status == interp::RunStatus::Failed && waitForCheck()) {
         // The blocks before the error run; only the one that failed and those after it do not.
         (void)m_path.flush();
     }
-    m_out.target = nullptr;
+    outputValuesOk();
+    m_out.setTarget(nullptr);
     return m_status;
 }
 
@@ -313,7 +322,7 @@ void KlartextInterpreter::finish(bool emitEnd, int mCode) {
         m_endEmitted = true;
     }
     if (m_q.remanentChanged() && !m_settings.remanentFile.empty()) {
-        if (auto error = m_q.saveRemanent(m_settings.remanentFile)) m_diagnostics.push_back(*error);
+        if (auto error = m_q.saveRemanent(m_settings.remanentFile)) appendDiagnostic(m_diagnostics, *error);
     }
     if (m_status != interp::RunStatus::Failed) m_status = interp::RunStatus::Finished;
 }
@@ -442,8 +451,7 @@ void KlartextInterpreter::callProgram(const CallPgm& call) {
         return;
     }
     if (hasErrors(program->diagnostics)) {
-        m_diagnostics.insert(m_diagnostics.end(), program->diagnostics.begin(),
-                             program->diagnostics.end());
+        appendDiagnostics(m_diagnostics, program->diagnostics);
         fail("call", KERF_TR_NOOP("the called program {1} has errors"), {call.path});
         return;
     }

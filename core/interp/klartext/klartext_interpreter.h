@@ -20,6 +20,7 @@
 #include "core/interp/klartext/program_file.h"
 #include "core/interp/klartext/q_parameters.h"
 #include "core/interp/path/path_builder.h"
+#include "core/interp/path/value_guard.h"
 #include "core/machine/machine_config.h"
 #include "core/program/nc_root.h"
 #include "core/program/source_registry.h"
@@ -81,13 +82,6 @@ public:
 private:
     class Environment;
     class CycleOutput;
-    class ForwardingSink final : public canon::Sink {
-    public:
-        void consume(const canon::Command& command) override {
-            if (target != nullptr) target->consume(command);
-        }
-        canon::Sink* target = nullptr;
-    };
 
     struct Level {  // one program in the CALL PGM chain
         ProgramFile* program = nullptr;
@@ -169,6 +163,8 @@ private:
     Plane workingPlane() const;
     double lengthScale() const { return m_inch ? 25.4 : 1.0; }
     bool checkPathError(const std::optional<interp::PathError>& error);
+    // False (and the run failed) when the output refused a command with an unsafe number.
+    bool outputValuesOk();
 
     // Cycle definitions, GLOBAL DEF, PATTERN DEF, point and datum tables (klartext_cycles.cpp).
     struct StoredCycle {  // the last defined machining cycle
@@ -260,7 +256,7 @@ private:
     program::NcRoot m_root;
     std::unique_ptr<FormulaEnvironment> m_environment;  // an Environment
     BlockParser m_parser;
-    ForwardingSink m_out;
+    interp::ValueGuard m_out;  // every command leaves through it
     interp::PathBuilder m_path;
     QParameters m_q;
 

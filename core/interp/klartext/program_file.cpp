@@ -75,7 +75,7 @@ void checkProgram(ProgramFile& program) {
                     std::vector<std::string> args = {}) {
         Diagnostic d = Diagnostic::make(s, code, file, l, c, text);
         d.args = std::move(args);
-        out.push_back(std::move(d));
+        appendDiagnostic(out, std::move(d));
     };
 
     constexpr size_t kWindow = 16u << 20;

@@ -13,7 +13,7 @@ constexpr double kEps = 1e-9;
 constexpr double kTangentTurn = 1e-7;  // radians below which a junction counts as tangent
 
 PathError error(const SourceLocation& at, const char* code, const char* message) {
-    return PathError{at, code, message};
+    return PathError{at, code, message, {}};
 }
 
 Pose withPlanePoint(const ContourElement& frame, Pose pose, const Vec2& p) {

@@ -27,6 +27,7 @@ struct PathError {
     SourceLocation location;
     std::string code;
     std::string messageTemplate;
+    std::vector<std::string> args;
 };
 
 enum class ApproachKind : uint8_t { Tangent, Normal, Circle, LineCircle };  // LT LN CT LCT

@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
 namespace kerf {
 namespace {
 
@@ -20,6 +26,42 @@ TEST(FixedFormat, NeverPrintsNegativeZero) {
 
 TEST(FixedFormat, HugeValuesFallBack) {
     EXPECT_EQ(formatFixed(1e20, 1), "100000000000000000000.0");
+}
+
+// What the C library prints, with the one documented difference: no "-0.000".
+std::string printed(double value, int decimals) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    std::string text = buffer;
+    if (text[0] == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+    return text;
+}
+
+TEST(FixedFormat, EveryMagnitudeMatchesTheCLibrary) {
+    // Above 1e63 the old code appended 64 bytes of an uninitialised buffer.
+    const double values[] = {1e63,     -1e63,    1.5e64,  1e100,   -1e200,   1e300,
+                             DBL_MAX,  -DBL_MAX, 9e15,    -9.1e15, 1e-300,   -1e-300,
+                             DBL_MIN,  -DBL_MIN, 4.9e-324, 2.5e17, -123456789012345678.0};
+    for (const double value : values) {
+        for (int decimals = 0; decimals <= 9; ++decimals) {
+            EXPECT_EQ(formatFixed(value, decimals), printed(value, decimals))
+                << value << " with " << decimals << " decimals";
+        }
+    }
+    EXPECT_EQ(formatFixed(DBL_MAX, 9).size(), 309u + 1 + 9);
+    EXPECT_EQ(formatFixed(-DBL_MAX, 9).size(), 1 + 309u + 1 + 9);
+}
+
+TEST(FixedFormat, AppendsAfterWhatIsThere) {
+    std::string text = "X";
+    appendFixed(text, 1e300, 3);
+    EXPECT_EQ(text, "X" + printed(1e300, 3));
+}
+
+TEST(FixedFormat, NonFiniteValuesAreNamed) {
+    EXPECT_EQ(formatFixed(std::numeric_limits<double>::infinity(), 3), "inf");
+    EXPECT_EQ(formatFixed(-std::numeric_limits<double>::infinity(), 0), "-inf");
+    EXPECT_EQ(formatFixed(std::numeric_limits<double>::quiet_NaN(), 3), "nan");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "core/program/line_reader.h"
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,44 @@ TEST(LineReader, SeekAndAppend) {
 TEST(Columns, CountCharactersNotBytes) {
     EXPECT_EQ(columnOf("\xC3\xA4x", 2), 2u);  // after one two-byte character
     EXPECT_EQ(columnOf("abc", 0), 1u);
+}
+
+// CR-only line ends: every line used to search the rest of the file for an LF (200k lines: 13 s).
+TEST(LineReader, CrOnlyLineEndsReadInLinearTime) {
+    std::string text;
+    for (int i = 0; i < 200000; ++i)
+        text += "G01 X" + std::to_string(i) + "\r";
+    const auto start = std::chrono::steady_clock::now();
+    LineReader reader(text);
+    LogicalLine line;
+    size_t count = 0;
+    std::string_view last;
+    while (reader.next(line)) {
+        ++count;
+        last = line.text;
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(count, 200000u);
+    EXPECT_EQ(last, "G01 X199999");
+    EXPECT_EQ(reader.line(), 200001u);
+    // Linear: a few milliseconds; quadratic: about 4 GB of scanning.
+    EXPECT_LT(seconds, 1.0);
+}
+
+TEST(LineReader, MixedEndsAfterASeekBack) {
+    const std::string text = "a\rb\nc\rd\r\ne";
+    LineReader reader(text);
+    LogicalLine line;
+    ASSERT_TRUE(reader.next(line));
+    ASSERT_TRUE(reader.next(line));
+    ASSERT_TRUE(reader.next(line));
+    EXPECT_EQ(line.text, "c");
+    reader.seek(0, 1);  // the remembered LF is past where reading continues
+    std::vector<std::string> again;
+    while (reader.next(line))
+        again.emplace_back(line.text);
+    EXPECT_EQ(again, (std::vector<std::string>{"a", "b", "c", "d", "e"}));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -154,6 +155,54 @@ TEST(FagorExpression, Errors) {
     EXPECT_EQ(failure("P300").code, "parameter");
     EXPECT_EQ(failure("LN 2").messageTemplate, "unknown word '{1}'");  // no LN on this control
     EXPECT_EQ(failure("INT 2").messageTemplate, "unknown word '{1}'");
+}
+
+TEST(FagorExpression, OverflowIsAnErrorAtItsOperator) {
+    Context c;
+    c.p[1] = 1e300;
+    c.p[2] = 1.7e308;
+    c.p[3] = 1e-300;
+    auto problemOf = [&](std::string_view text) {
+        Scanner s(text);
+        Expression e(s, &c);
+        ExprValue v;
+        EXPECT_FALSE(e.parse(v)) << text;
+        return e.problem();
+    };
+    EXPECT_EQ(problemOf("P1*P1").code, "overflow");
+    EXPECT_EQ(problemOf("P1*P1").offset, 2u);
+    EXPECT_EQ(problemOf("P1*10-P1*P1").offset, 8u);  // the second '*'
+    EXPECT_EQ(problemOf("P2+P2").offset, 2u);
+    EXPECT_EQ(problemOf("-P2-P2").offset, 3u);
+    EXPECT_EQ(problemOf("P1/P3").code, "overflow");
+    EXPECT_EQ(problemOf("10 EXP 400").code, "math");
+    // In range stays a value.
+    EXPECT_DOUBLE_EQ(eval("P1*1000", &c), 1e303);
+}
+
+TEST(FagorExpression, NestingIsLimitedWithAnErrorNotACrash) {
+    const int limit = kMaxExpressionNesting;
+    const std::string fits = std::string(limit - 1, '(') + "7" + std::string(limit - 1, ')');
+    EXPECT_DOUBLE_EQ(eval(fits), 7);
+    EXPECT_EQ(failure(std::string(limit, '(') + "7" + std::string(limit, ')')).code, "nesting");
+    // The reproducers: 15000 parentheses, 10000 SIN (, 48000 signs overflowed the stack.
+    std::string sines;
+    for (int i = 0; i < 10000; ++i)
+        sines += "SIN(";
+    sines += "1" + std::string(10000, ')');
+    for (const std::string& deep : {std::string(15000, '(') + "1" + std::string(15000, ')'),
+                                    sines, std::string(48000, '-') + "1"}) {
+        const Problem p = failure(deep);
+        EXPECT_EQ(p.code, "nesting");
+        EXPECT_GE(p.offset, static_cast<size_t>(limit));
+        EXPECT_LT(p.offset, static_cast<size_t>(4 * limit + 1));
+    }
+    // Checking the syntax only is limited the same way.
+    const std::string deep = std::string(15000, '(') + "1" + std::string(15000, ')');
+    Scanner s(deep);
+    Expression checkOnly(s, nullptr);
+    ExprValue v;
+    EXPECT_FALSE(checkOnly.parse(v));
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "core/interp/klartext/formula.h"
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -93,6 +95,112 @@ TEST(Formula, Errors) {
     Cursor c("1 / Q3");
     FormulaParser checkOnly(c, nullptr);
     EXPECT_TRUE(checkOnly.expression());
+}
+
+// The problem of a formula that must fail, with the column (1-based) it points at.
+struct Failure {
+    std::string code;
+    size_t column = 0;
+};
+Failure failure(const std::string& text, FakeEnvironment* env = nullptr, bool strings = false) {
+    FakeEnvironment local;
+    Cursor c(text);
+    FormulaParser p(c, env ? env : &local);
+    const bool ok = strings ? p.stringExpression().has_value() : p.expression().has_value();
+    EXPECT_FALSE(ok) << text;
+    if (!p.problem()) return {};
+    return {p.problem()->code, p.problem()->offset + 1};
+}
+
+TEST(Formula, OverflowIsAnErrorAtItsOperator) {
+    FakeEnvironment env;
+    env.values[1] = 1e300;
+    // Each operator that leaves the doubles; the column is the operator's.
+    EXPECT_EQ(failure("Q1 * Q1", &env).code, "overflow");
+    EXPECT_EQ(failure("Q1 * Q1", &env).column, 4u);
+    EXPECT_EQ(failure("Q1 * 10 - Q1 * Q1", &env).column, 14u);  // the second '*'
+    env.values[5] = 1e-300;
+    EXPECT_EQ(failure("Q1 / Q5", &env).code, "overflow");
+    env.values[2] = 1.7e308;
+    EXPECT_EQ(failure("Q2 + Q2", &env).column, 4u);
+    EXPECT_EQ(failure("-Q2 - Q2", &env).column, 5u);
+    EXPECT_EQ(failure("10 ^ 400").code, "math");  // the power reports its own domain error
+    EXPECT_EQ(failure("EXP 1000").code, "math");
+    // In range stays a value: the largest product that fits.
+    EXPECT_DOUBLE_EQ(eval("Q1 * 1000", &env), 1e303);
+}
+
+TEST(Formula, AParameterWithoutAFiniteNumberCannotBeRead) {
+    FakeEnvironment env;
+    env.values[3] = std::numeric_limits<double>::infinity();
+    env.values[4] = std::nan("");
+    EXPECT_EQ(failure("Q3 + 1", &env).code, "overflow");
+    EXPECT_EQ(failure("2 * Q4", &env).code, "overflow");
+    Cursor c("+Q4");
+    FormulaParser p(c, &env);
+    EXPECT_FALSE(p.signedOperand());
+    Cursor w("-Q3");
+    FormulaParser q(w, &env);
+    EXPECT_FALSE(q.wordValue());
+}
+
+TEST(Formula, ALiteralBeyondTheDoublesIsNoNumber) {
+    const std::string huge = "1" + std::string(400, '0');
+    EXPECT_FALSE(failure(huge).code.empty());
+    FakeEnvironment env;
+    env.strings[1] = "nan";
+    env.strings[2] = "1e999";
+    EXPECT_EQ(failure("TONUMB ( SRC_QS1 )", &env).code, "math");
+    EXPECT_EQ(failure("TONUMB ( SRC_QS2 )", &env).code, "math");
+}
+
+TEST(Formula, NestingIsLimitedWithAnErrorNotACrash) {
+    const int limit = kMaxFormulaNesting;
+    // At the limit: parentheses, functions and signs each count one level, the number one more.
+    const std::string fits = std::string(limit - 1, '(') + "7" + std::string(limit - 1, ')');
+    EXPECT_DOUBLE_EQ(eval(fits), 7);
+    EXPECT_DOUBLE_EQ(eval(std::string(limit - 2, '-') + "7"), 7);  // an even number of signs
+    EXPECT_EQ(failure(std::string(limit, '(') + "7" + std::string(limit, ')')).code, "nesting");
+    // The reproducers: 20000 parentheses, 10000 SIN (, 48000 signs overflowed the stack.
+    for (const std::string& deep :
+         {std::string(20000, '(') + "1" + std::string(20000, ')'),
+          [] {
+              std::string s;
+              for (int i = 0; i < 10000; ++i)
+                  s += "SIN (";
+              return s + "1" + std::string(10000, ')');
+          }(),
+          std::string(48000, '-') + "1"}) {
+        const Failure f = failure(deep);
+        EXPECT_EQ(f.code, "nesting");
+        // The level beyond the limit: where the 257th opening starts.
+        EXPECT_GT(f.column, static_cast<size_t>(limit - 1));
+        EXPECT_LT(f.column, static_cast<size_t>(5 * limit + 2));
+    }
+    // A checked syntax (no environment) is limited the same way.
+    Cursor c(std::string(20000, '(') + "1" + std::string(20000, ')'));
+    FormulaParser checkOnly(c, nullptr);
+    EXPECT_FALSE(checkOnly.expression());
+}
+
+TEST(Formula, AStringHoldsAtMost255Characters) {
+    FakeEnvironment env;
+    env.strings[1] = std::string(200, 'A');
+    // The concatenation that passes 255 fails at its '||' (column 5).
+    const Failure f = failure("QS1 || QS1", &env, true);
+    EXPECT_EQ(f.code, "string-length");
+    EXPECT_EQ(f.column, 5u);
+    env.strings[2] = std::string(55, 'B');
+    Cursor c("QS1 || QS2");
+    FormulaParser p(c, &env);
+    auto s = p.stringExpression();
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->size(), 255u);
+    // TOCHAR of a huge number: its 305 characters are too long, not a crash.
+    env.values[1] = 1e300;
+    EXPECT_EQ(failure("TOCHAR ( DAT+Q1 DECIMALS3 )", &env, true).code, "string-length");
+    EXPECT_EQ(failure(std::string("\"") + std::string(256, 'x') + "\"", nullptr, true).code,
+              "string-length");
 }
 
 }  // namespace

@@ -1,0 +1,154 @@
+// `kerf` on the hardening issue's reproducers (shared/repro/reliability): every input ends with a
+// diagnostic and an exit code, in bounded time and memory; none crashes or hangs.
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class KerfLimits : public testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::temp_directory_path() /
+              ("kerf_limits_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    fs::path write(const std::string& name, const std::string& text) {
+        const fs::path file = dir / name;
+        std::ofstream(file, std::ios::binary) << text;
+        return file;
+    }
+    std::string read(const fs::path& file) {
+        std::stringstream text;
+        text << std::ifstream(file, std::ios::binary).rdbuf();
+        return text.str();
+    }
+
+    struct Result {
+        int exitCode = -1;  // -1: killed by a signal (crash, or the time limit)
+        double seconds = 0.0;
+        std::string errors;
+    };
+    // kerf <arguments>, killed after `limitSeconds`.
+    Result kerf(const std::string& arguments, int limitSeconds = 60) {
+        const fs::path errors = dir / "stderr.txt";
+        const std::string command = "timeout -s KILL " + std::to_string(limitSeconds) + " \"" +
+                                    KERF_BINARY + "\" " + arguments + " > /dev/null 2> \"" +
+                                    errors.string() + "\"";
+        const auto start = std::chrono::steady_clock::now();
+        const int status = std::system(command.c_str());
+        Result r;
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        // timeout reports a killed child as 128 + 9; the shell a signal as 128 + n.
+        r.exitCode = WIFEXITED(status) && WEXITSTATUS(status) < 128 ? WEXITSTATUS(status) : -1;
+        r.errors = read(errors);
+        return r;
+    }
+    std::string quoted(const fs::path& p) { return "\"" + p.string() + "\""; }
+
+    fs::path dir;
+};
+
+// stack_paren_20000.H and stack_paren_15000.pim: SIGSEGV in the recursive formula parsers.
+TEST_F(KerfLimits, DeepFormulasAreAnErrorNotAStackOverflow) {
+    const std::string deep = std::string(20000, '(') + "1" + std::string(20000, ')');
+    const fs::path tnc = write("deep.H", "0 BEGIN PGM A MM\n1 Q1 = " + deep + "\n2 END PGM A MM\n");
+    Result r = kerf("check " + quoted(tnc));
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    // The 257th '(' (column 8 + 256) opens one level too many.
+    EXPECT_NE(r.errors.find("deep.H:2:264: error: a formula may nest at most 256 levels"),
+              std::string::npos)
+        << r.errors;
+
+    std::string minus(48000, '-');
+    const fs::path signs = write("signs.H", "0 BEGIN PGM A MM\n1 Q1 = " + minus + "1\n2 END PGM A MM\n");
+    r = kerf("check " + quoted(signs));
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    EXPECT_NE(r.errors.find("signs.H:2:264: error: a formula may nest"), std::string::npos)
+        << r.errors;
+
+    const std::string fagorDeep = std::string(15000, '(') + "1" + std::string(15000, ')');
+    const fs::path lathe = write("deep.pim", "(P1=" + fagorDeep + ")\nM30\n");
+    r = kerf("check " + quoted(lathe) + " --machine lathe");
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    // "(P1=" and 256 levels: the 257th '(' is at column 5 + 256.
+    EXPECT_NE(r.errors.find("deep.pim:1:261: error: an expression may nest at most 256 levels"),
+              std::string::npos)
+        << r.errors;
+}
+
+// The default block guard ended an endless TNC loop only after 346 s.
+TEST_F(KerfLimits, TheDefaultBlockGuardStopsAnEndlessLoopInSeconds) {
+    const fs::path loop = write("loop.H",
+                                "0 BEGIN PGM L MM\n1 LBL 1\n2 L IX+0 FMAX\n"
+                                "3 FN 9: IF +0 EQU +0 GOTO LBL 1\n4 END PGM L MM\n");
+    Result r = kerf("run " + quoted(loop), 60);
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    EXPECT_NE(r.errors.find("endless loop? (--max-blocks)"), std::string::npos) << r.errors;
+    EXPECT_LT(r.seconds, 15.0);
+}
+
+// 1M blank lines on the lathe with --report: one error each, 2 GB of diagnostics.
+TEST_F(KerfLimits, DiagnosticsAreCappedWithACount) {
+    const fs::path blank = write("blank.pim", std::string(1000000, '\n') + "M30\n");
+    const fs::path report = dir / "r.json";
+    Result r = kerf("run " + quoted(blank) + " --machine lathe --report " + quoted(report));
+    EXPECT_EQ(r.exitCode, 1) << r.errors.substr(0, 500);
+    const nlohmann::json json = nlohmann::json::parse(read(report));
+    const auto& list = json.at("diagnostics");
+    ASSERT_EQ(list.size(), 1001u);
+    EXPECT_EQ(list[0]["line"], 1);
+    EXPECT_EQ(list[999]["line"], 1000);
+    EXPECT_EQ(list[1000]["message"], "and 999000 more diagnostics");
+    EXPECT_EQ(list[1000]["severity"], "error");
+    EXPECT_EQ(json["ok"], false);
+    // `kerf check` prints the same thousand and the count.
+    r = kerf("check " + quoted(blank) + " --machine lathe");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.errors.find("kerf: error: and 999000 more diagnostics\n"), std::string::npos);
+}
+
+// 200k lines with CR line ends: 13.5 s (LF: 0.04 s).
+TEST_F(KerfLimits, CrOnlyLineEndsReadInLinearTime) {
+    std::string text = "0 BEGIN PGM A MM\r";
+    for (int i = 1; i <= 200000; ++i)
+        text += std::to_string(i) + " L X+" + std::to_string(i % 100) + " FMAX\r";
+    text += "200001 END PGM A MM\r";
+    const fs::path program = write("cr.H", text);
+    Result r = kerf("check " + quoted(program));
+    EXPECT_EQ(r.exitCode, 0) << r.errors.substr(0, 500);
+    EXPECT_LT(r.seconds, 5.0);
+}
+
+// report_utf8_abort.sh: a byte that is not UTF-8 in a message or a file name aborted --report.
+TEST_F(KerfLimits, TheReportIsWrittenWhateverBytesTheProgramHolds) {
+    const fs::path lathe = write("a.pim", "G01\xff X1\nM30\n");
+    const fs::path report = dir / "r.json";
+    Result r = kerf("run " + quoted(lathe) + " --machine lathe --report " + quoted(report));
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    EXPECT_EQ(nlohmann::json::parse(read(report))["ok"], false);
+
+    const fs::path badName = write("bad\xffname.H", "0 BEGIN PGM A MM\n1 L X+1 QQ\n2 END PGM A MM\n");
+    const fs::path report2 = dir / "r2.json";
+    r = kerf("run " + quoted(badName) + " --report " + quoted(report2));
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    const nlohmann::json json = nlohmann::json::parse(read(report2));
+    const std::string file = json["diagnostics"][0]["file"];
+    EXPECT_NE(file.find("bad\xef\xbf\xbdname.H"), std::string::npos) << file;
+}
+
+}  // namespace
