@@ -11,6 +11,7 @@
 #include "qt_test_app.h"
 #include "test_paths.h"
 #include "ui/common/diagnostic_text.h"
+#include "ui/editor/program_checker.h"
 #include "ui/editor/program_editor.h"
 
 namespace kerf::ui {
@@ -203,6 +204,13 @@ TEST(ProgramPanel, ChecksOfAReplacedDocumentDoNotLandOnTheNewOne) {
     EXPECT_FALSE(hasErrors(panel.diagnostics()));
     for (const QTextEdit::ExtraSelection& s : panel.editor()->extraSelections())
         EXPECT_EQ(s.cursor.document(), panel.editor()->document());
+    EXPECT_TRUE(panel.editor()->extraSelections().isEmpty());
+    // A late result of an earlier request (here E.H's first check, request 1) is dropped, even
+    // when it names the file shown now.
+    Diagnostic late =
+        Diagnostic::make(Severity::Error, "syntax", (dir / "BIG.H").string(), 5, 1, "late");
+    emit panel.checker()->checked(1, {late});
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));
     EXPECT_TRUE(panel.editor()->extraSelections().isEmpty());
     // The editor still works on the new document.
     panel.editor()->goToLine(20000);
