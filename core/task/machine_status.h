@@ -48,7 +48,8 @@ struct MachineStatus {
     double feedOverride = 1.0;  // fractions: 1 = 100 %
     double rapidOverride = 1.0;
     double spindleOverride = 1.0;
-    int toolNumber = 0;  // 0: no tool
+    int toolNumber = 0;    // 0: no tool
+    bool coolant = false;  // flood or mist on
     bool singleBlock = false;
     double servoTimeS = 0.0;  // the servo cycle's clock (simulated time on a simulated machine)
     SourceLocation block;     // the block being executed

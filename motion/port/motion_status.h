@@ -43,6 +43,7 @@ struct MotionStatus {
     SourceLocation source;      // its block
     uint32_t queued = 0;        // items waiting in the ring
     uint16_t homedMask = 0;     // bit per joint
+    uint8_t coolant = 0;        // bit 0 flood, bit 1 mist (as the Coolant action)
     bool singleBlock = false;
     uint64_t lateCycles = 0;    // cycles that started later than one period after the previous
     double maxCycleCpuS = 0.0;  // longest servo cycle computation

@@ -100,7 +100,15 @@ double ServoCycle::liveFeed(FeedKind kind, double feed) const noexcept {
     return 0.0;
 }
 
+void ServoCycle::stopSpindleAndCoolant() noexcept {
+    m_spindle.unlock();
+    m_spindle.command(0, 0.0, 0.0, 0.0);
+    m_status.coolant = 0;
+}
+
 void ServoCycle::abortProgram() noexcept {
+    // As after a TNC's internal stop: the program's spindle and coolant go off with it.
+    stopSpindleAndCoolant();
     m_items.clear();
     m_hold = m_stopping = m_waitingStart = false;
     m_elementEntered = m_actionStarted = false;
@@ -108,7 +116,6 @@ void ServoCycle::abortProgram() noexcept {
     if (m_probeArmed) m_bus.armProbe(false);
     m_probeArmed = false;
     m_gen.reset(0.0);
-    m_spindle.unlock();
     m_return.clear();
 }
 
@@ -143,10 +150,19 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
                 m_mode = m_mover.active() ? MotionMode::Jog : MotionMode::Idle;
             } else if (m_mode == MotionMode::Program || m_mode == MotionMode::Hold ||
                        m_mode == MotionMode::Stopped) {
+                // A program waiting for cycle start (single block, M0) stops from where it
+                // stands: nothing else would ever step its path to rest.
+                m_waitingStart = false;
                 m_stopping = true;
                 m_mode = MotionMode::Stopping;
-            } else if (m_mode == MotionMode::Jog) {
-                m_mover.stop();
+            } else if (m_mode == MotionMode::Jog || m_mode == MotionMode::Homing) {
+                // A stopped reference run leaves the axis unreferenced; the jog brakes to Idle.
+                if (m_mover.active()) m_mover.stop();
+                m_homingPhase = HomingPhase::Off;
+                m_mode = m_mover.active() ? MotionMode::Jog : MotionMode::Idle;
+                stopSpindleAndCoolant();
+            } else if (m_mode == MotionMode::Idle) {
+                stopSpindleAndCoolant();
             }
             break;
         case OperatorCommandKind::EmergencyStop:
@@ -414,6 +430,8 @@ bool ServoCycle::runAction(const MotionItem& item) noexcept {
             emit(MotionEventKind::SyncReached, -1, static_cast<double>(a.number), actualTip());
             return true;
         case ActionKind::Coolant:
+            m_status.coolant = static_cast<uint8_t>(a.number);
+            return true;
         case ActionKind::MachineFunction:
             return true;
     }

@@ -75,6 +75,7 @@ private:
     void followFeedback() noexcept;
     void writeOutputs() noexcept;
     void abortProgram() noexcept;
+    void stopSpindleAndCoolant() noexcept;
     double liveFeed(FeedKind kind, double feed) const noexcept;
     void emit(MotionEventKind kind, int joint, double value, const AxisVector& position) noexcept;
     AxisVector actualTip() const noexcept;

@@ -146,6 +146,7 @@ void RealtimeMotionPort::handle(const MotionEvent& event) {
         case MotionEventKind::Aborted:
             m_submitted.clear();
             m_replan = true;
+            m_programmedRpm = 0.0;  // the abort stopped the spindle
             break;
         case MotionEventKind::Fault:
             m_fault = "drive fault " + std::to_string(static_cast<long>(event.value)) +
@@ -269,6 +270,10 @@ void RealtimeMotionPort::feedHold() {
 void RealtimeMotionPort::quickStop() {
     m_machine->command({OperatorCommandKind::QuickStop});
     m_replan = true;
+    // Without a program the stop turns the spindle off at once (no Aborted event follows).
+    const MotionMode mode = m_machine->status().mode;
+    if (mode == MotionMode::Idle || mode == MotionMode::Jog || mode == MotionMode::Homing)
+        m_programmedRpm = 0.0;
 }
 
 void RealtimeMotionPort::setSingleBlock(bool on) {
@@ -355,6 +360,7 @@ task::MachineStatus RealtimeMotionPort::status() const {
     s.spindleOverride = now.spindleOverride;
     s.actualSpindleRpm = now.spindleRpm;
     s.programmedSpindleRpm = m_programmedRpm;
+    s.coolant = now.coolant != 0;
     s.actualFeedMmPerMin = std::fabs(now.pathVelocity) * 60.0;
     const bool moving = s.state == task::MachineState::Running ||
                         s.state == task::MachineState::Held ||

@@ -85,6 +85,64 @@ TEST(QuickStop, StopsOnThePathAndAbortsTheProgram) {
     EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
 }
 
+// Spindle at 1000 rpm and flood coolant, then two 10 mm blocks along X, in single block: the
+// program waits at X10 for cycle start.
+std::vector<canon::Command> spindleCoolantTwoBlocks() {
+    canon::SpindleControl spindle;
+    spindle.direction = canon::SpindleDirection::Clockwise;
+    spindle.speedRpm = 1000.0;
+    canon::CoolantControl flood;
+    flood.flood = true;
+    return {cmd(spindle, 1), cmd(flood, 2), cmd(canon::LinearMove{at(10, 0, 0), 3000.0}, 3),
+            cmd(canon::LinearMove{at(20, 0, 0), 3000.0}, 4)};
+}
+
+TEST(QuickStop, AtASingleBlockStopAbortsAndTurnsSpindleAndCoolantOff) {
+    SimulationOptions options;
+    options.autoCycleStart = false;
+    options.maxSimulatedS = 30.0;  // a stop that never ends shows as this much time
+    bool armed = false;
+    double stopAtS = -1.0;
+    TestRun run =
+        runCommands(millConfig(), spindleCoolantTwoBlocks(), Pose{}, options,
+                    [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                        if (!armed) {
+                            sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
+                            armed = true;
+                        }
+                        if (stopAtS < 0.0 && s.mode == MotionMode::Stopped) {
+                            EXPECT_EQ(s.coolant, 1u);
+                            EXPECT_GT(s.spindleRpm, 100.0);  // turning
+                            stopAtS = s.timeS;
+                            sim.command({OperatorCommandKind::QuickStop});
+                        }
+                    });
+    ASSERT_GE(stopAtS, 0.0) << "no single-block stop";
+    EXPECT_EQ(run.sim->status().mode, MotionMode::Idle);
+    // Aborted where it waited: the second block never runs.
+    EXPECT_NEAR(run.report.finalPosition[0], 10.0, 1e-6);
+    EXPECT_LT(run.sim->timeS() - stopAtS, 1.0);
+    // 1000 rpm at the mill's 3000 rpm/s spindle ramp: a third of a second and the jerk phases.
+    run.sim->runFor(1.0);
+    EXPECT_EQ(run.sim->status().spindleRpm, 0.0);
+    EXPECT_EQ(run.sim->status().coolant, 0u);
+}
+
+TEST(QuickStop, EndsAReferenceRunAndLeavesTheAxisUnreferenced) {
+    SimulationOptions options;
+    options.motion.startHomed = false;
+    TestRun run = runCommands(millConfig(), {}, at(37.0, -12.0, 20.0), options);
+    SimulatedMachine& sim = *run.sim;
+    sim.command({OperatorCommandKind::Home, -1});
+    sim.runFor(0.2);
+    ASSERT_EQ(sim.status().mode, MotionMode::Homing);
+    sim.command({OperatorCommandKind::QuickStop});
+    // The search runs at 5 % of 500 mm/s; braking from there takes milliseconds.
+    ASSERT_TRUE(
+        sim.runUntil([](const MotionStatus& s) { return s.mode == MotionMode::Idle; }, 1.0));
+    EXPECT_EQ(sim.status().homedMask & 0x7, 0u);
+}
+
 TEST(EmergencyStop, DrivesStopThemselvesAndResetEnablesThemAgain) {
     int cycles = 0;
     TestRun run = runCommands(millConfig(), longLine(), Pose{}, {},

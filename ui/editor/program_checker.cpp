@@ -24,14 +24,17 @@ ProgramChecker::~ProgramChecker() {
     m_worker.join();
 }
 
-void ProgramChecker::check(const QString& text, const std::filesystem::path& path,
-                           program::Dialect dialect) {
+uint64_t ProgramChecker::check(const QString& text, const std::filesystem::path& path,
+                               program::Dialect dialect) {
+    uint64_t request = 0;
     {
         std::lock_guard lock(m_mutex);
+        request = ++m_generation;
         // A shallow copy: the UTF-8 conversion of a large program is done by the worker.
-        m_pending = Request{text, path, dialect, ++m_generation};
+        m_pending = Request{text, path, dialect, request};
     }
     m_wake.notify_one();
+    return request;
 }
 
 void ProgramChecker::work() {
@@ -49,7 +52,10 @@ void ProgramChecker::work() {
         if (request.generation != m_generation || m_quit) continue;  // the text changed meanwhile
         // Queued to the UI thread; dropped by Qt if this object is gone by then.
         QMetaObject::invokeMethod(
-            this, [this, diagnostics = std::move(diagnostics)] { emit checked(diagnostics); },
+            this,
+            [this, request = request.generation, diagnostics = std::move(diagnostics)] {
+                emit checked(request, diagnostics);
+            },
             Qt::QueuedConnection);
     }
 }

@@ -16,8 +16,9 @@ namespace kerf::ui {
 
 // Checks the program being edited in a worker thread and reports its diagnostics back on the
 // UI thread. A new request replaces one not started yet; results of an outdated text are
-// dropped. Klartext and FAGOR programs are checked as `kerf check` does; TNC ISO, which Kerf
-// does not interpret yet, gets a single note saying so.
+// dropped. Each result names its request: a receiver that swapped its document meanwhile knows
+// the result is not about what it shows. Klartext and FAGOR programs are checked as `kerf check`
+// does; TNC ISO, which Kerf does not interpret yet, gets a single note saying so.
 class ProgramChecker : public QObject {
     Q_OBJECT
 
@@ -26,10 +27,12 @@ public:
                    QObject* parent = nullptr);
     ~ProgramChecker() override;
 
-    void check(const QString& text, const std::filesystem::path& path, program::Dialect dialect);
+    // Returns the request's number (1, 2, ...), which checked() echoes.
+    uint64_t check(const QString& text, const std::filesystem::path& path,
+                   program::Dialect dialect);
 
 signals:
-    void checked(const kerf::DiagnosticList& diagnostics);
+    void checked(quint64 request, const kerf::DiagnosticList& diagnostics);
 
 private:
     struct Request {

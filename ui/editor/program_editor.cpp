@@ -45,6 +45,9 @@ void ProgramEditor::adoptDocument(QTextDocument* document) {
     // Not in another thread: cursors and selections of the editor still point into it.
     QTextDocument* previous = this->document();
     const bool adoptedBefore = previous->parent() == this;
+    // Underlines and marks are cursors into the document being replaced: QPlainTextEdit keeps
+    // them across setDocument() and would later measure them against the new one.
+    setExtraSelections({});
     setDocument(document);
     if (adoptedBefore) previous->deleteLater();
     document->setParent(this);

@@ -44,18 +44,22 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
     layout->addWidget(m_findBar);
 
     m_checker = new ProgramChecker(m_settings.machine, m_settings.ncRoot, this);
-    connect(m_checker, &ProgramChecker::checked, this, [this](const DiagnosticList& diagnostics) {
-        m_diagnostics.clear();
-        // Only messages about this file point at editor lines; those about called programs are
-        // listed without a line.
-        const std::string self = m_path.string();
-        for (Diagnostic d : diagnostics) {
-            if (!d.file.empty() && d.file != self) d.line = 0;
-            m_diagnostics.push_back(std::move(d));
-        }
-        m_editor->setDiagnostics(m_diagnostics);
-        emit diagnosticsChanged(m_diagnostics);
-    });
+    connect(m_checker, &ProgramChecker::checked, this,
+            [this](quint64 request, const DiagnosticList& diagnostics) {
+                // A result of another text (an earlier edit, the program shown before) would
+                // underline lines of a document it is not about.
+                if (request != m_awaitedCheck) return;
+                m_diagnostics.clear();
+                // Only messages about this file point at editor lines; those about called programs
+                // are listed without a line.
+                const std::string self = m_path.string();
+                for (Diagnostic d : diagnostics) {
+                    if (!d.file.empty() && d.file != self) d.line = 0;
+                    m_diagnostics.push_back(std::move(d));
+                }
+                m_editor->setDiagnostics(m_diagnostics);
+                emit diagnosticsChanged(m_diagnostics);
+            });
     m_autosaveTimer = new QTimer(this);
     m_autosaveTimer->setSingleShot(true);
     m_autosaveTimer->setInterval(m_settings.autosaveDelayMs);
@@ -101,9 +105,20 @@ bool ProgramPanel::loading() const {
 
 ProgramPanel::~ProgramPanel() = default;
 
+void ProgramPanel::forgetDiagnostics() {
+    m_checkTimer->stop();
+    m_awaitedCheck = 0;
+    if (m_diagnostics.empty()) return;
+    m_diagnostics.clear();
+    m_editor->setDiagnostics(m_diagnostics);
+    emit diagnosticsChanged(m_diagnostics);
+}
+
 bool ProgramPanel::open(const std::filesystem::path& path) {
     if (loading() || m_editor->renumbering() || m_writer->busy()) return false;
     m_saveAfterRenumber = false;
+    // The diagnostics are about the text being replaced.
+    forgetDiagnostics();
     std::error_code sizeError;
     const uintmax_t size = std::filesystem::file_size(path, sizeError);
     m_editor->setDialect(program::dialectForFile(path.string(), isLathe(m_settings.machine)));
@@ -135,7 +150,7 @@ void ProgramPanel::finishOpen(const std::filesystem::path& path, const QString& 
     refreshTitle();
     emit fileChanged();
     m_checkTimer->stop();
-    m_checker->check(text, m_path, m_editor->dialect());
+    m_awaitedCheck = m_checker->check(text, m_path, m_editor->dialect());
 }
 
 bool ProgramPanel::save() {
@@ -209,7 +224,8 @@ void ProgramPanel::autosave() {
 
 void ProgramPanel::checkNow() {
     m_checkTimer->stop();
-    if (!m_path.empty()) m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect());
+    if (!m_path.empty())
+        m_awaitedCheck = m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect());
 }
 
 void ProgramPanel::onEdited() {

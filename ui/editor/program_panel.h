@@ -77,6 +77,8 @@ protected:
 
 private:
     void onEdited();
+    // Drops the diagnostics shown and any check under way (the text is being replaced).
+    void forgetDiagnostics();
     void watchDocument();
     // `text`: the program as read, for the first check (copying a large document back out would
     // block the UI thread).
@@ -91,6 +93,7 @@ private:
     ProgramText m_file;
     std::optional<QString> m_recovered;
     DiagnosticList m_diagnostics;
+    uint64_t m_awaitedCheck = 0;  // the check whose result belongs to the text shown; 0: none
     QLabel* m_title = nullptr;
     ProgramEditor* m_editor = nullptr;
     FindBar* m_findBar = nullptr;

@@ -114,7 +114,9 @@ void MachineSession::feedHold() {
 
 void MachineSession::stop() {
     m_run->abort();
-    if (m_status.state == task::MachineState::Jogging) m_motion->quickStop();
+    // Also without a program: the stop ends a jog or a reference run and turns the spindle and
+    // the coolant off (a second stop while a program's stop is under way changes nothing).
+    m_motion->quickStop();
 }
 
 void MachineSession::setSingleBlock(bool on) {

@@ -63,7 +63,9 @@ public:
     // interrupted program it first returns to where the program stopped (return to the contour).
     void cycleStart();
     void feedHold();
-    void stop();  // stops on the path and aborts the program
+    // Stops on the path and aborts the program; in every state the machine then returns to
+    // idle, with the spindle and the coolant off.
+    void stop();
     void setSingleBlock(bool on);
     bool singleBlock() const { return m_singleBlock; }
 

@@ -104,6 +104,7 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     connectSession();
     connect(m_program, &ProgramPanel::diagnosticsChanged, m_messages,
             &MessagePanel::setCheckDiagnostics);
+    connect(m_program, &ProgramPanel::fileChanged, m_messages, &MessagePanel::forgetLines);
     connect(m_program, &ProgramPanel::message, m_messages, relay);
     retranslate();
     resize(1280, 800);

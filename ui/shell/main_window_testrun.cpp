@@ -75,7 +75,12 @@ void MainWindow::createGraphics(QWidget* parent) {
         if (m_testRun->state() == TestRunController::State::Empty) prepareTestRun();
     });
     connect(m_program, &ProgramPanel::fileChanged, this, [this] {
-        if (testRunOnScreen()) prepareTestRun();
+        // The test run's toolpath, messages and picked lines belong to the program shown.
+        if (testRunOnScreen()) {
+            prepareTestRun();
+        } else {
+            m_testRun->clear();
+        }
     });
 }
 

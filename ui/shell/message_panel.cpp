@@ -89,6 +89,15 @@ void MessagePanel::addMessage(Severity severity, const QString& text, int line) 
     refreshLine();
 }
 
+void MessagePanel::forgetLines() {
+    for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = m_list->topLevelItem(i);
+        item->setData(0, kLineRole, 0);
+        item->setText(2, QString());
+    }
+    refreshLine();
+}
+
 void MessagePanel::clearMessages() {
     m_list->clear();
     refreshLine();

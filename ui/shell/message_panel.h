@@ -25,6 +25,9 @@ public:
     // Adds one message from the HMI itself (refused mode change, save error ...).
     void addMessage(Severity severity, const QString& text, int line = 0);
     void clearMessages();
+    // Another program is shown: the lines the messages name were lines of the one before, so
+    // they no longer lead into the editor (the messages themselves stay).
+    void forgetLines();
 
     int messageCount() const;
     QTreeWidget* list() const { return m_list; }

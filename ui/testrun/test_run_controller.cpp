@@ -153,6 +153,23 @@ void TestRunController::reset() {
     setState(m_program->ran ? State::Ready : State::Failed);
 }
 
+void TestRunController::clear() {
+    stopWorker();
+    ++m_generation;  // a result already queued belongs to the program before
+    m_timer->stop();
+    m_playWhenReady = false;
+    m_program.reset();
+    m_preparedText.clear();
+    m_preparedPath.clear();
+    m_preparedFile.clear();
+    m_shownStatus = nullptr;
+    m_timeS = 0.0;
+    newStock();
+    emit programReady();
+    emit progressChanged(m_timeS);
+    setState(State::Empty);
+}
+
 void TestRunController::setSpeed(TestRunSpeed speed) {
     if (speed == m_speed) return;
     m_speed = speed;

@@ -48,6 +48,10 @@ public:
     void stop();
     // Back to the beginning: the untouched blank, time zero.
     void reset();
+    // Forgets the prepared program (another one is in the editor now): an interpretation under
+    // way is cancelled and its result dropped; the graphics go empty (programReady() with no
+    // program).
+    void clear();
     void setSpeed(TestRunSpeed speed);
     TestRunSpeed speed() const { return m_speed; }
     // Moves the playback on by this much wall-clock time at the chosen speed (the timer calls

@@ -137,8 +137,13 @@ void GraphicsPanel::highlightLine(int line) {
 
 void GraphicsPanel::onProgramReady() {
     auto program = m_testRun.program();
-    if (!program) return;
     m_scene->setStockMesh(nullptr);
+    if (!program) {
+        // The test run forgot its program: nothing of it stays on screen.
+        m_scene->setToolpath(nullptr, nullptr);
+        if (m_viewport != nullptr) m_viewport->render();
+        return;
+    }
     m_scene->setToolpath(program->toolpath, program->geometry);
     m_shownTool = nullptr;
     if (m_highlightedLine > 0) m_scene->highlightBlock(0, static_cast<uint32_t>(m_highlightedLine));

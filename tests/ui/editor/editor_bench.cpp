@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
     kerf::ui::ProgramChecker checker(*machine, file.parent_path());
     bool done = false;
     QObject::connect(&checker, &kerf::ui::ProgramChecker::checked,
-                     [&done](const kerf::DiagnosticList&) { done = true; });
+                     [&done](quint64, const kerf::DiagnosticList&) { done = true; });
     timer.restart();
     checker.check(editor.toPlainText(), file, kerf::program::Dialect::Klartext);
     report("hand the text to the checker (UI thread)", timer);

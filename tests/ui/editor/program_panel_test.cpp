@@ -11,6 +11,7 @@
 #include "qt_test_app.h"
 #include "test_paths.h"
 #include "ui/common/diagnostic_text.h"
+#include "ui/editor/program_checker.h"
 #include "ui/editor/program_editor.h"
 
 namespace kerf::ui {
@@ -154,6 +155,66 @@ TEST(ProgramPanel, LargeFilesLoadInTheBackground) {
     panel.editor()->undo();
     EXPECT_EQ(panel.editor()->document()->findBlockByNumber(2).text(),
               QStringLiteral("2 END PGM F MM"));
+}
+
+// A program of `blocks` straight moves, without errors.
+std::string manyBlocks(int blocks) {
+    std::string text = "0 BEGIN PGM BIG MM\n";
+    for (int i = 1; i <= blocks; ++i)
+        text += std::to_string(i) + " L X+" + std::to_string(i % 100) + " R0 FMAX\n";
+    return text + std::to_string(blocks + 1) + " END PGM BIG MM\n";
+}
+
+// Issue 14: with a program's errors underlined, opening a large program (read in the
+// background) crashed the HMI when the new program's check came back (setDiagnostics ->
+// setExtraSelections over selections into the replaced document). Here a check of the first
+// program is also under way when the second one is opened: its result must not land on the new
+// document either.
+TEST(ProgramPanel, ChecksOfAReplacedDocumentDoNotLandOnTheNewOne) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_swap");
+    writeFile(dir / "E.H", "0 BEGIN PGM E MM\n1 L Z+50 R0 FMAX\n2 BOGUS WORD\n3 END PGM E MM\n");
+    writeFile(dir / "BIG.H", manyBlocks(20000));
+    auto settings = settingsIn(dir);
+    settings.backgroundLoadBytes = 4096;  // BIG.H (~300 kB) loads in the background
+    ProgramPanel panel(settings);
+    QSignalSpy diagnostics(&panel, &ProgramPanel::diagnosticsChanged);
+    ASSERT_TRUE(panel.open(dir / "E.H"));
+    ASSERT_TRUE(diagnostics.wait(10000));
+    ASSERT_TRUE(hasErrors(panel.diagnostics()));
+    ASSERT_EQ(panel.editor()->extraSelections().size(), 1);  // line 3 underlined
+
+    // An edit is being checked when the large program is opened.
+    QTextCursor cursor(panel.editor()->document()->findBlockByNumber(1));
+    cursor.movePosition(QTextCursor::EndOfBlock);
+    cursor.insertText(" ");
+    panel.checkNow();
+    QSignalSpy opened(&panel, &ProgramPanel::fileChanged);
+    ASSERT_TRUE(panel.open(dir / "BIG.H"));
+    ASSERT_TRUE(panel.loading());
+    // Nothing of the old program is shown while the new one is read.
+    EXPECT_TRUE(panel.diagnostics().empty());
+    EXPECT_TRUE(panel.editor()->extraSelections().isEmpty());
+    ASSERT_TRUE(opened.wait(10000));
+    // Every check that was asked for reports (or is dropped) within a few seconds; the last
+    // result shown is BIG.H's own: no error, nothing underlined.
+    diagnostics.clear();
+    ASSERT_TRUE(diagnostics.wait(20000));
+    QTest::qWait(500);  // a stale result would come after it
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));
+    for (const QTextEdit::ExtraSelection& s : panel.editor()->extraSelections())
+        EXPECT_EQ(s.cursor.document(), panel.editor()->document());
+    EXPECT_TRUE(panel.editor()->extraSelections().isEmpty());
+    // A late result of an earlier request (here E.H's first check, request 1) is dropped, even
+    // when it names the file shown now.
+    Diagnostic late =
+        Diagnostic::make(Severity::Error, "syntax", (dir / "BIG.H").string(), 5, 1, "late");
+    emit panel.checker()->checked(1, {late});
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));
+    EXPECT_TRUE(panel.editor()->extraSelections().isEmpty());
+    // The editor still works on the new document.
+    panel.editor()->goToLine(20000);
+    EXPECT_EQ(panel.editor()->currentLine(), 20000);
 }
 
 TEST(ProgramPanel, LongProgramIsRenumberedThenSaved) {

@@ -86,6 +86,57 @@ TEST(TestRunScreen, StartRunsTheEditorsProgramAndReportsItsErrorsWithTheirLine) 
     EXPECT_EQ(editor->currentLine(), 4);
 }
 
+// Results that arrive for a program no longer shown must not land on the one shown: after
+// another program is opened, the old test run (its toolpath, its state) is forgotten and the
+// messages of the old program no longer jump into the new one.
+TEST(TestRunScreen, OpeningAnotherProgramForgetsTheOldOnesTestRunAndLines) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_testrun_swap");
+    ASSERT_FALSE(writeFileAtomically(dir / "BAD.H",
+                                     "0 BEGIN PGM BAD MM\n1 L Z+5 R0 FMAX\n2 L X+10 R0 F600\n"
+                                     "3 NONSENSE\n4 END PGM BAD MM\n")
+                     .has_value());
+    ASSERT_FALSE(
+        writeFileAtomically(dir / "OK.H", "0 BEGIN PGM OK MM\n1 L Z+5 R0 FMAX\n2 END PGM OK MM\n")
+            .has_value());
+    MainWindow window(contextIn(dir));
+    window.resize(1280, 800);
+    window.show();
+    ASSERT_TRUE(window.openProgram(dir / "BAD.H"));
+    window.modes().requestProgrammingMode(task::ProgrammingMode::TestRun);
+    TestRunController* run = window.testRun();
+    ASSERT_TRUE(
+        QTest::qWaitFor([run] { return run->state() == TestRunController::State::Failed; }, 20000));
+    ASSERT_NE(run->program(), nullptr);
+    // The test run's error names line 4 of BAD.H.
+    QTreeWidget* list = window.messages()->list();
+    const auto testRunRow = [list] {
+        for (int i = 0; i < list->topLevelItemCount(); ++i) {
+            if (list->topLevelItem(i)->text(1).startsWith(QStringLiteral("Test run"))) return i;
+        }
+        return -1;
+    };
+    ASSERT_GE(testRunRow(), 0);
+    EXPECT_EQ(list->topLevelItem(testRunRow())->text(2), QStringLiteral("4"));
+
+    // Programming, then another program: the test run of BAD.H is dropped.
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    ASSERT_TRUE(window.openProgram(dir / "OK.H"));
+    EXPECT_EQ(run->state(), TestRunController::State::Empty);
+    EXPECT_EQ(run->program(), nullptr);
+    EXPECT_EQ(run->stock(), nullptr);
+    // The message stays, without its line: touching it leaves the editor where it is.
+    ProgramEditor* editor = window.program()->editor();
+    editor->goToLine(2);
+    QSignalSpy jumps(window.messages(), &MessagePanel::lineActivated);
+    const int row = testRunRow();
+    ASSERT_GE(row, 0);
+    EXPECT_TRUE(list->topLevelItem(row)->text(2).isEmpty());
+    window.messages()->activate(row);
+    EXPECT_EQ(jumps.count(), 0);
+    EXPECT_EQ(editor->currentLine(), 2);
+}
+
 // The operator story on one window: write a drilling cycle through the CYCL DEF softkeys
 // and its dialog, then check the program in Test run.
 TEST(TestRunScreen, ACycleWrittenThroughTheDialogRunsInTestRun) {

@@ -1,0 +1,232 @@
+// Stop (the TNC's internal stop) through the session: from every state the machine can be in,
+// it returns to ready within a bounded time, with the spindle and the coolant off.
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "simulated_machine.h"
+#include "ui/session/machine_session.h"
+
+namespace kerf::ui {
+namespace {
+
+using namespace std::chrono_literals;
+using task::MachineState;
+using task::RunState;
+
+// The built-in mill on simulated drives in real time, the tool tip at 0 0 0 at start.
+class MachineStopTest : public testing::Test {
+protected:
+    MachineStopTest() {
+        test::testApp();
+        config = *machine::loadMachine("mill");
+        session =
+            std::make_unique<MachineSession>(config, test::connectSimulatedMachine(config), "");
+    }
+    bool serviceUntil(const std::function<bool()>& done, std::chrono::milliseconds limit = 10s) {
+        const auto deadline = std::chrono::steady_clock::now() + limit;
+        while (std::chrono::steady_clock::now() < deadline) {
+            session->service();
+            if (done()) return true;
+            std::this_thread::sleep_for(2ms);
+        }
+        return false;
+    }
+    double nominal(Axis a) const {
+        return session->status().axes[static_cast<size_t>(axisIndex(a))].nominal;
+    }
+    const task::MachineStatus& status() const { return session->status(); }
+    // Ready: the axes stand (Idle), nothing runs or waits, a new command is taken.
+    bool ready() const { return status().state == MachineState::Idle && !session->busy(); }
+    // Stop, then ready within `limit` (braking from the feeds used here takes milliseconds; the
+    // bound leaves room for a loaded machine).
+    ::testing::AssertionResult stopsToReady(std::chrono::milliseconds limit = 2s) {
+        session->stop();
+        if (!serviceUntil([this] { return ready(); }, limit)) {
+            return ::testing::AssertionFailure()
+                   << "still " << task::machineStateName(status().state) << ", run "
+                   << task::runStateName(session->runState()) << " after the stop";
+        }
+        return ::testing::AssertionSuccess();
+    }
+    // The spindle (3000 rpm/s ramp) comes to rest and the coolant is off.
+    ::testing::AssertionResult spindleAndCoolantOff() {
+        if (!serviceUntil([this] { return status().actualSpindleRpm == 0.0; }, 3s))
+            return ::testing::AssertionFailure()
+                   << "the spindle still turns at " << status().actualSpindleRpm << " rpm";
+        if (status().coolant) return ::testing::AssertionFailure() << "the coolant is on";
+        return ::testing::AssertionSuccess();
+    }
+
+    machine::MachineConfig config;
+    std::unique_ptr<MachineSession> session;
+};
+
+// M3 M8 at 1000 rpm, then two blocks along X.
+const QString kTwoBlocks =
+    "0 BEGIN PGM T MM\n"
+    "1 TOOL CALL 3 Z S1000\n"
+    "2 L X+5 Y+0 Z+0 R0 F6000 M3 M8\n"
+    "3 L X+10 R0 F6000\n"
+    "4 END PGM T MM\n";
+
+TEST_F(MachineStopTest, StopAtASingleBlockStopReturnsToReady) {
+    session->setSingleBlock(true);
+    ASSERT_TRUE(session->startProgram(kTwoBlocks, "T.H"));
+    ASSERT_TRUE(serviceUntil([this] { return session->runState() == RunState::Stopped; }));
+    ASSERT_TRUE(serviceUntil([this] { return status().state == MachineState::Stopped; }));
+    // The setpoint filter (17 ms) and the spindle ramp (3000 rpm/s) come to rest while it waits.
+    ASSERT_TRUE(serviceUntil([this] {
+        return std::fabs(nominal(Axis::X) - 5.0) < 1e-6 &&
+               std::fabs(status().actualSpindleRpm - 1000.0) < 1e-6;
+    }));
+    EXPECT_TRUE(status().coolant);
+    ASSERT_TRUE(stopsToReady());
+    EXPECT_EQ(session->runState(), RunState::Aborted);
+    EXPECT_TRUE(spindleAndCoolantOff());
+    EXPECT_EQ(status().programmedSpindleRpm, 0.0);
+    // The second block never ran; the machine takes manual and MDI commands again.
+    EXPECT_NEAR(nominal(Axis::X), 5.0, 1e-6);
+    ASSERT_TRUE(session->jogIncrement(Axis::Y, 1));
+    ASSERT_TRUE(serviceUntil([this] { return ready() && nominal(Axis::Y) > 1.0 - 1e-6; }));
+    EXPECT_TRUE(session->executeMdi("L X+0 R0 FMAX"));
+}
+
+TEST_F(MachineStopTest, StopInsideACycleReturnsToReady) {
+    // Cycle 200 from Z+10: surface 0, depth 3 in one infeed, 2 s dwell at the bottom (Q211).
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM C MM\n"
+                              "1 TOOL CALL 3 Z S1000\n"
+                              "2 L X+10 Y+0 Z+10 R0 FMAX M3 M8\n"
+                              "3 CYCL DEF 200 DRILLING\n"
+                              "  Q200=2\n  Q201=-3\n  Q206=600\n  Q202=5\n  Q210=0\n"
+                              "  Q203=+0\n  Q204=10\n  Q211=2\n  Q395=0\n"
+                              "4 CYCL CALL\n"
+                              "5 END PGM C MM\n",
+                              "C.H"))
+        << "refused";
+    // At the bottom of the hole, in the dwell.
+    ASSERT_TRUE(serviceUntil([this] { return nominal(Axis::Z) < -3.0 + 1e-6; }));
+    serviceUntil([] { return false; }, 200ms);
+    ASSERT_EQ(session->runState(), RunState::Running);
+    ASSERT_TRUE(stopsToReady(500ms));  // well inside the 2 s dwell
+    EXPECT_NEAR(nominal(Axis::Z), -3.0, 1e-6) << "the cycle went on after the stop";
+    EXPECT_TRUE(spindleAndCoolantOff());
+}
+
+TEST_F(MachineStopTest, StopWithoutAProgramTurnsSpindleAndCoolantOff) {
+    ASSERT_TRUE(session->spindle(true, 1200.0));
+    ASSERT_TRUE(serviceUntil([this] { return status().actualSpindleRpm > 1199.0 && ready(); }));
+    ASSERT_TRUE(session->coolant(true));
+    ASSERT_TRUE(serviceUntil([this] { return status().coolant && ready(); }));
+    ASSERT_TRUE(stopsToReady());
+    EXPECT_TRUE(spindleAndCoolantOff());
+    EXPECT_EQ(status().programmedSpindleRpm, 0.0);
+}
+
+// Every state the session can reach, one after the other on the same machine: each is left by
+// Stop to ready, from where the next one is reached.
+TEST_F(MachineStopTest, StopLeavesEveryStateForReady) {
+    const QString longMove = "0 BEGIN PGM L MM\n1 L X+40 Y+0 Z+0 R0 F1200 M3\n2 END PGM L MM\n";
+    const auto atX = [this](double x) {
+        return serviceUntil([this, x] { return std::fabs(nominal(Axis::X) - x) > 0.5; });
+    };
+    struct Case {
+        std::string state;
+        std::function<bool()> reach;
+    };
+    const std::vector<Case> cases = {
+        {"idle", [] { return true; }},
+        {"running",
+         [&] {
+             return session->startProgram(longMove, "L.H") && atX(nominal(Axis::X)) &&
+                    status().state == MachineState::Running;
+         }},
+        {"feed hold",
+         [&] {
+             if (!session->startProgram(longMove, "L.H") || !atX(nominal(Axis::X))) return false;
+             session->feedHold();
+             return serviceUntil([this] { return status().state == MachineState::Held; });
+         }},
+        {"single-block stop",
+         [&] {
+             session->setSingleBlock(true);
+             const bool started = session->startProgram(kTwoBlocks, "T.H");
+             const bool stopped = started && serviceUntil([this] {
+                                      return status().state == MachineState::Stopped;
+                                  });
+             session->setSingleBlock(false);
+             return stopped;
+         }},
+        {"program stop M0",
+         [&] {
+             return session->startProgram(
+                        "0 BEGIN PGM M MM\n1 L X+2 Y+0 Z+0 R0 F6000 M3\n2 STOP\n"
+                        "3 L X+4\n4 END PGM M MM\n",
+                        "M.H") &&
+                    serviceUntil([this] { return session->runState() == RunState::Stopped; });
+         }},
+        {"MDI",
+         [&] {
+             return session->executeMdi("L X+30 R0 F1200") && atX(nominal(Axis::X)) &&
+                    status().state == MachineState::Running;
+         }},
+        {"start at block",
+         [&] {
+             return session->startProgram(
+                        "0 BEGIN PGM S MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n"
+                        "2 L X+5 R0 F1200 M3\n3 L X+30 R0 F1200\n"
+                        "4 END PGM S MM\n",
+                        "S.H", 4) &&
+                    serviceUntil([this] { return session->status().block.line == 4; });
+         }},
+        {"jog",
+         [&] {
+             return session->jog(Axis::Y, 1) &&
+                    serviceUntil([this] { return status().state == MachineState::Jogging; });
+         }},
+        {"jogged away from a held program",
+         [&] {
+             if (!session->startProgram(longMove, "L.H") || !atX(nominal(Axis::X))) return false;
+             session->feedHold();
+             if (!serviceUntil([this] { return status().state == MachineState::Held; }))
+                 return false;
+             return session->jogIncrement(Axis::Y, 5) &&
+                    serviceUntil([this] { return status().state == MachineState::Jogging; });
+         }},
+        {"returning to the contour",
+         [&] {
+             if (!session->startProgram(longMove, "L.H") || !atX(nominal(Axis::X))) return false;
+             session->feedHold();
+             if (!serviceUntil([this] { return status().state == MachineState::Held; }) ||
+                 !session->jogIncrement(Axis::Y, 20) ||
+                 !serviceUntil([this] { return status().state == MachineState::Jogging; }) ||
+                 !serviceUntil([this] { return status().state == MachineState::Held; }))
+                 return false;
+             session->cycleStart();
+             return serviceUntil([this] { return status().state == MachineState::Running; });
+         }},
+        {"homing",
+         [&] {
+             return session->homeAll() &&
+                    serviceUntil([this] { return status().state == MachineState::Homing; });
+         }},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.state);
+        ASSERT_TRUE(ready()) << "not ready before";
+        ASSERT_TRUE(c.reach()) << "state not reached";
+        ASSERT_TRUE(stopsToReady());
+        EXPECT_TRUE(spindleAndCoolantOff());
+    }
+}
+
+}  // namespace
+}  // namespace kerf::ui
