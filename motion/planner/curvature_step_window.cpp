@@ -1,25 +1,55 @@
 #include "motion/planner/curvature_step_window.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace kerf::motion {
 
 void CurvatureStepWindow::clear() {
     m_s.clear();
-    m_rises.assign(1, AxisVector{});
-    m_falls.assign(1, AxisVector{});
+    // Keep the levels' capacity: the look-ahead refills the window at every planning pass.
+    for (auto& level : m_least)
+        level.clear();
+    for (auto& level : m_largest)
+        level.clear();
+    m_least[0].push_back(AxisVector{});
+    m_largest[0].push_back(AxisVector{});
+    m_axisCount = 0;
+    m_active = {};
 }
 
 void CurvatureStepWindow::add(double s, const AxisVector& step) {
     m_s.push_back(s);
-    AxisVector rises = m_rises.back();
-    AxisVector falls = m_falls.back();
+    AxisVector prefix = m_least[0].back();
     for (size_t a = 0; a < step.size(); ++a) {
-        rises[a] += std::max(0.0, step[a]);
-        falls[a] += std::max(0.0, -step[a]);
+        if (step[a] == 0.0) continue;
+        prefix[a] += step[a];
+        if (!m_active[a]) {
+            m_active[a] = true;
+            m_axes[m_axisCount++] = a;
+        }
     }
-    m_rises.push_back(rises);
-    m_falls.push_back(falls);
+    m_least[0].push_back(prefix);
+    m_largest[0].push_back(prefix);
+    // The new prefix sum completes one span of each length 2^k that ends at it.
+    const size_t count = m_least[0].size();
+    for (size_t k = 1; (size_t{1} << k) <= count; ++k) {
+        if (m_least.size() <= k) {
+            m_least.emplace_back();
+            m_largest.emplace_back();
+        }
+        const size_t j = count - (size_t{1} << k);
+        const size_t half = size_t{1} << (k - 1);
+        AxisVector least{};
+        AxisVector largest{};
+        for (size_t n = 0; n < m_axisCount; ++n) {
+            const size_t a = m_axes[n];
+            least[a] = std::min(m_least[k - 1][j][a], m_least[k - 1][j + half][a]);
+            largest[a] = std::max(m_largest[k - 1][j][a], m_largest[k - 1][j + half][a]);
+        }
+        m_least[k].push_back(least);
+        m_largest[k].push_back(largest);
+    }
 }
 
 void CurvatureStepWindow::range(size_t index, size_t first, size_t last, double distance,
@@ -38,12 +68,36 @@ void CurvatureStepWindow::range(size_t index, size_t first, size_t last, double 
                              begin);
 }
 
-AxisVector CurvatureStepWindow::sumOf(size_t lo, size_t hi) const {
-    AxisVector sum{};
-    for (size_t a = 0; a < sum.size(); ++a) {
-        sum[a] = std::max({0.0, m_rises[hi][a] - m_rises[lo][a], m_falls[hi][a] - m_falls[lo][a]});
+void CurvatureStepWindow::extremes(size_t a, size_t b, AxisVector& least,
+                                   AxisVector& largest) const {
+    // Two spans of length 2^k that together cover [a, b].
+    const size_t k = static_cast<size_t>(std::bit_width(b - a + 1) - 1);
+    const size_t c = b + 1 - (size_t{1} << k);
+    for (size_t n = 0; n < m_axisCount; ++n) {
+        const size_t i = m_axes[n];
+        least[i] = std::min(m_least[k][a][i], m_least[k][c][i]);
+        largest[i] = std::max(m_largest[k][a][i], m_largest[k][c][i]);
     }
-    return sum;
+}
+
+AxisVector CurvatureStepWindow::runSums(size_t index, size_t lo, size_t hi) const {
+    // With P the prefix sums: a run lo' .. index sums to P[index + 1] - P[lo'] (lo' in
+    // [lo, index]), a run index .. hi' to P[hi' + 1] - P[index] (hi' + 1 in [index + 1, hi]).
+    const AxisVector& start = m_least[0][index];
+    const AxisVector& end = m_least[0][index + 1];
+    AxisVector backLeast{};
+    AxisVector backLargest{};
+    AxisVector frontLeast{};
+    AxisVector frontLargest{};
+    extremes(lo, index, backLeast, backLargest);
+    extremes(index + 1, hi, frontLeast, frontLargest);
+    AxisVector sums{};
+    for (size_t n = 0; n < m_axisCount; ++n) {
+        const size_t a = m_axes[n];
+        sums[a] = std::max({end[a] - backLeast[a], backLargest[a] - end[a],
+                            frontLargest[a] - start[a], start[a] - frontLeast[a]});
+    }
+    return sums;
 }
 
 double CurvatureStepWindow::cap(const MachineModel& model, size_t index, size_t first, size_t last,
@@ -61,15 +115,16 @@ double CurvatureStepWindow::cap(const MachineModel& model, size_t index, size_t 
     auto fits = [&](const AxisVector& sum, double v) {
         return curvatureStepFits(model, sum, before, after, v);
     };
-    if (fits(sumOf(lo, hi), upperBound)) return upperBound;
+    if (fits(runSums(index, lo, hi), upperBound)) return upperBound;
     first = lo;
     last = hi - 1;
     auto within = [&](double d, bool inclusive) {
         range(index, first, last, d, inclusive, lo, hi);
-        return sumOf(lo, hi);
+        return runSums(index, lo, hi);
     };
-    // A window radius d is feasible when the steps strictly within it allow v = d / T. That
-    // is monotone in d; the answer lies between the largest feasible breakpoint and the next.
+    // A window radius d is feasible when the runs strictly within it allow v = d / T. That is
+    // monotone in d (a wider window holds more runs); the answer lies between the largest
+    // feasible breakpoint and the next.
     auto feasible = [&](double d) { return fits(within(d, false), d / t); };
     double best = 0.0;
     // Forwards: distances m_s[k] - m_s[index] rise with k.

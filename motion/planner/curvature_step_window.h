@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -8,12 +9,17 @@
 
 // The curvature steps along a run of path elements, for the step limit of the look-ahead.
 // The moving-average filter (length T) turns them into jerk (a(t) - a(t - T)) / T: what counts
-// is the signed sum of the steps of each axis within one filter length, which lies between minus
-// the sum of the falls and the sum of the rises there. So a step's velocity limit is the highest
-// v for which the larger of the two, over the window |s_k - s| < v T, still fits
-// (curvatureStepCap); a blend's steps up and down then no longer add up as if all had one sign.
-// Prefix sums give any window's sums in O(1); the limit is found by binary search over the
-// window's breakpoints: O(log n) per step. Planner thread.
+// is the signed sum of the steps of each axis that are within one filter length at the same
+// time, i.e. of a run of consecutive steps spanning less than v T. That sum changes only when a
+// step enters or leaves the filter, so its extremes are the runs that end at a step (it has
+// just entered) or start at one (it is about to leave); each step's limit covers the runs it
+// ends or starts, so together the limits cover every run the filter sees. Steps that alternate
+// (vertex noise, a blend's step on and off) then no longer add up as if all had one sign.
+// A step's limit is the highest v for which its runs within |s_k - s| < v T still fit
+// (curvatureStepCap). The runs' sums are differences of prefix sums; a sparse table of the
+// prefix sums' minima and maxima gives the largest of them in any window in O(1), and a binary
+// search over the window's breakpoints finds the limit: O(log n) per step, O(log n) per point
+// added. Planner thread.
 namespace kerf::motion {
 
 class CurvatureStepWindow {
@@ -34,12 +40,21 @@ private:
     // exactly that distance): [lo, hi).
     void range(size_t index, size_t first, size_t last, double distance, bool inclusive, size_t& lo,
                size_t& hi) const;
-    // Per axis, the larger of the rises and the falls at the points [lo, hi).
-    AxisVector sumOf(size_t lo, size_t hi) const;
+    // Per axis, the largest |sum| of the runs among the points [lo, hi) that end or start at
+    // `index`.
+    AxisVector runSums(size_t index, size_t lo, size_t hi) const;
+    // Per axis, the least and the largest prefix sum of [a, b] (indices of the prefix sums).
+    void extremes(size_t a, size_t b, AxisVector& least, AxisVector& largest) const;
 
     std::vector<double> m_s;
-    std::vector<AxisVector> m_rises{AxisVector{}};  // [k]: sum of the rises before point k
-    std::vector<AxisVector> m_falls{AxisVector{}};  // [k]: sum of the falls before point k
+    // The axes with a step since clear(), in the order they got one: the others' sums are 0.
+    std::array<size_t, kAxisCount> m_axes{};
+    std::array<bool, kAxisCount> m_active{};
+    size_t m_axisCount = 0;
+    // m_least[k][j] / m_largest[k][j]: per axis, the extremes of the prefix sums j .. j + 2^k - 1;
+    // level 0 holds the prefix sums themselves ([j]: sum of the steps before point j).
+    std::vector<std::vector<AxisVector>> m_least{std::vector<AxisVector>(1)};
+    std::vector<std::vector<AxisVector>> m_largest{std::vector<AxisVector>(1)};
 };
 
 }  // namespace kerf::motion

@@ -12,6 +12,8 @@ namespace {
 constexpr double kFar = 1e12;
 constexpr double kTinyLength = 1e-6;
 constexpr size_t kNoEntry = static_cast<size_t>(-1);
+// An element keeps the tangential limits of the one before down to this factor below its own.
+constexpr double kMaxShareStepDown = 2.5;
 
 bool sameLimits(const Limits& a, const Limits& b) {
     return a.accel == b.accel && a.jerk == b.jerk;
@@ -87,7 +89,7 @@ double Lookahead::maxVelocity(const Entry& entry) const {
     return std::min(entry.cap, feed);
 }
 
-void Lookahead::prepare(Entry& entry) {
+void Lookahead::prepare(Entry& entry, const Entry* previous) {
     PathElement& e = entry.item.element;
     entry.bounds = axisBounds(e.geometry);
     // The largest share of the tangential limits that still lets the element run at its
@@ -108,6 +110,20 @@ void Lookahead::prepare(Entry& entry) {
             entry.limits = limits;
         }
         if (cap >= 0.95 * nominal) break;
+    }
+    // Keep the limits of the element before when they let this one run at its feed too: where
+    // they change the motion must pass with a = 0, and on a polyline the radius noise would
+    // otherwise flip the share from one vertex to the next.
+    if (previous && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
+        Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
+        const Limits& kept = previous->limits;
+        // Only from a neighbouring share down (a row after a tight U-turn keeps its own).
+        if (kept.accel <= widest.accel && kept.jerk <= widest.jerk &&
+            kept.accel * kMaxShareStepDown >= entry.limits.accel &&
+            summedPeaksVelocityCap(m_model, e.geometry, entry.bounds, kept, entry.contourBudget) >=
+                std::min(0.95 * nominal, bestCap)) {
+            entry.limits = kept;
+        }
     }
     // The share chosen by the summed peaks (velocity_limits.h); the limit itself phase-aware.
     entry.localCap =
@@ -189,8 +205,11 @@ void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
         PointJerkTerms termsBefore = jerkTermsAt(b.geometry, b.geometry.length, before.limits);
         PointJerkTerms termsAfter = jerkTermsAt(e.geometry, 0.0, entry.limits);
         size_t k = i - begin;
-        entry.stepCap =
+        double cap =
             m_steps.cap(m_model, k, m_runFirst[k], m_runLast[k], termsBefore, termsAfter, v);
+        // A step that fits at the caps of both elements and the feed adds no limit of its own
+        // (else equal limits along a run would each have to be met with a = 0).
+        if (cap < v) entry.stepCap = cap;
     }
 }
 
@@ -212,7 +231,11 @@ void Lookahead::markReachable(size_t first, size_t last) {
             anchorS = e.sStart;
             anchorV = i == first ? limit
                                  : (isElement(i - 1) && !m_entries[i - 1].stopAfter ? limit : 0.0);
-        } else if (limit >= brakingEnvelope(e.sStart - anchorS, anchorV, entry.limits)) {
+        } else if (limit >= m_entries[i - 1].cap ||
+                   limit >= brakingEnvelope(e.sStart - anchorS, anchorV, entry.limits)) {
+            // The servo cycle keeps the element before at or below its cap (its target
+            // velocity there), or it cannot accelerate that far: the motion never passes this
+            // limit.
             entry.outOfReach = true;
         } else {
             anchorS = e.sStart;
@@ -224,7 +247,12 @@ void Lookahead::markReachable(size_t first, size_t last) {
 void Lookahead::plan() {
     m_pushedSincePlan = 0;
     for (size_t i = m_released; i < m_entries.size(); ++i) {
-        if (isElement(i) && !m_entries[i].prepared) prepare(m_entries[i]);
+        if (!isElement(i) || m_entries[i].prepared) continue;
+        const Entry* previous = nullptr;
+        if (i > 0 && isElement(i - 1) && !m_entries[i - 1].stopAfter &&
+            m_entries[i - 1].item.element.feedKind == m_entries[i].item.element.feedKind)
+            previous = &m_entries[i - 1];
+        prepare(m_entries[i], previous);
     }
     applyCurvatureSteps(m_final, m_entries.size());
     markReachable(m_final, m_entries.size());

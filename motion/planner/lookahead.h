@@ -63,7 +63,8 @@ private:
     };
 
     bool isElement(size_t i) const { return m_entries[i].item.kind == MotionItem::Kind::Element; }
-    void prepare(Entry& entry);
+    // `previous`: the element before in the same run (same feed kind, no stop), if any.
+    void prepare(Entry& entry, const Entry* previous);
     void applyCurvatureSteps(size_t first, size_t last);
     // Signed jump of n at the start of entry i from its neighbour before (zero when none).
     AxisVector stepAt(size_t i) const;

@@ -331,12 +331,14 @@ void ServoCycle::chooseSingleBlockStop() noexcept {
 
 void ServoCycle::stepPath() noexcept {
     chooseSingleBlockStop();
-    // Within one period the interpolator may pass several elements; it re-plans with the next
-    // element's limits and constraints where it passes a binding point.
+    // Within one period the interpolator may pass any number of elements, and it never drops
+    // time on the way (a stall inside a period becomes an acceleration spike after the filter):
+    // where it passes the end of an element it re-plans the rest of the period with the next
+    // element's target, limits and constraints. O(1) per element passed; at most the queue.
     double remaining = m_dt;
     size_t index = 0;
     std::array<Constraint, kLookItems + 2> constraints{};
-    for (int piece = 0; piece < 4 && remaining > 0.0; ++piece) {
+    for (;;) {
         const PathElement& e = m_items.peek(index).element;
         size_t count = collectConstraints(index, constraints);
         double target = std::min(e.capVelocity, liveFeed(e.feedKind, e.feed));
@@ -345,13 +347,12 @@ void ServoCycle::stepPath() noexcept {
         MotionState end = plan.at(remaining);
         bool nextElement =
             index + 1 < m_items.size() && m_items.peek(index + 1).kind == MotionItem::Kind::Element;
-        bool anchor = e.bindS <= e.sEnd() + 1e-12;
         if (end.s >= e.sEnd() - 1e-9 && std::fabs(end.v) < 1e-6) {
             // Came to rest at the end (a stop): the next period decides how to go on.
             m_gen.setState({e.sEnd(), 0.0, 0.0});
             break;
         }
-        if (end.s <= e.sEnd() || !nextElement || !anchor) {
+        if (end.s <= e.sEnd() || !nextElement) {
             m_gen.setState(end);
             break;
         }
@@ -441,7 +442,8 @@ bool ServoCycle::runAction(const MotionItem& item) noexcept {
 void ServoCycle::runProgram() noexcept {
     bool stepped = false;
     m_currentMove = 0;
-    for (int guard = 0; guard < 64; ++guard) {
+    // Every pass but the last pops an item: at most the queue, whatever the path passed.
+    for (size_t guard = 0; guard <= kItemRingCapacity; ++guard) {
         if (m_items.empty()) {
             m_onFeedMove = false;
             if (m_gen.atRest() && !m_hold) m_mode = MotionMode::Idle;

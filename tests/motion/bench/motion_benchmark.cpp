@@ -64,7 +64,7 @@ void PlanRaster(benchmark::State& state) {
         (static_cast<double>(commands.size()) * static_cast<double>(state.iterations()));
 }
 BENCHMARK(PlanRaster)
-    ->ArgsProduct({{200, 50, 20}, {50000, 1000000}})
+    ->ArgsProduct({{200, 50, 20, 5}, {50000, 1000000}})
     ->Unit(benchmark::kMillisecond);
 
 machine::MachineConfig withAxes(int axes) {

@@ -1,0 +1,134 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "tests/motion/motion_test_run.h"
+#include "tests/motion/raster_program.h"
+
+// CAM output: runs of very short lines. Within one servo period the path passes many element
+// ends; the sampled setpoints must stay within every axis limit however many there are.
+namespace kerf::motion::test {
+namespace {
+
+double rounded(double value, int decimals) {
+    double scale = std::pow(10.0, decimals);
+    return std::round(value * scale) / scale;
+}
+
+// Collects the commands with their end points written with 4 decimals, as a CAM file has them.
+struct CollectRounded final : canon::Sink {
+    std::vector<canon::Command> commands;
+    void consume(const canon::Command& c) override {
+        canon::Command copy = c;
+        auto round = [](Pose& p) {
+            for (double& value : p.values)
+                value = rounded(value, 4);
+        };
+        if (auto* line = std::get_if<canon::LinearMove>(&copy.body)) round(line->target);
+        if (auto* arc = std::get_if<canon::ArcMove>(&copy.body)) round(arc->target);
+        commands.push_back(copy);
+    }
+};
+
+canon::Command cmd(canon::CommandBody body, uint32_t line) {
+    canon::Command c;
+    c.location.line = line;
+    c.body = std::move(body);
+    return c;
+}
+
+Pose at(double x, double y, double z) {
+    Pose p;
+    p[Axis::X] = x;
+    p[Axis::Y] = y;
+    p[Axis::Z] = z;
+    return p;
+}
+
+// gen.py polycircle: the circle of radius r through the origin, centre (0, r), as lines of
+// `seg` mm of arc, coordinates written with `decimals` decimals, `length` mm in all.
+std::vector<canon::Command> polylineCircle(double r, double seg, int decimals, double length,
+                                           double feedMmPerMin) {
+    std::vector<canon::Command> commands;
+    int count = static_cast<int>(std::lround(length / seg));
+    for (int i = 1; i <= count; ++i) {
+        double s = i * seg;
+        double x = rounded(r * std::sin(s / r), decimals);
+        double y = rounded(r - r * std::cos(s / r), decimals);
+        commands.push_back(
+            cmd(canon::LinearMove{at(x, y, 0.0), feedMmPerMin}, static_cast<uint32_t>(i)));
+    }
+    return commands;
+}
+
+void expectWithinLimits(const TestRun& run, double tolerance) {
+    EXPECT_FALSE(run.report.refused);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+    EXPECT_LE(run.checker->maxDeviation(), tolerance * 1.01);
+}
+
+TEST(ShortSegments, PolylineCirclesAtFiveMicrometresRespectEveryLimit) {
+    // 0.005 mm elements at F6000 (100 mm/s): up to 20 element ends in one 1 ms period.
+    for (double radius : {5.0, 50.0}) {
+        for (int decimals : {4, 6}) {
+            auto commands = polylineCircle(radius, 0.005, decimals, 20.0, 6000.0);
+            TestRun run = runCommands(millConfig(), commands, Pose{});
+            SCOPED_TRACE("R" + std::to_string(radius) + " " + std::to_string(decimals) +
+                         " decimals: " + run.checker->limitSummary());
+            expectWithinLimits(run, 0.01);
+            EXPECT_NEAR(run.report.finalPosition[0],
+                        std::get<canon::LinearMove>(commands.back().body).target[Axis::X], 1e-6);
+        }
+    }
+}
+
+TEST(ShortSegments, FmaxPlungeIntoAFineRasterRespectsEveryLimit) {
+    // gen_nc's raster as written (4 decimals) at 0.005, 0.02 and 0.05 mm, after a rapid down
+    // onto its start point.
+    for (double seg : {0.005, 0.02, 0.05}) {
+        CollectRounded collect;
+        collect.consume(cmd(canon::RapidMove{at(0.0, 0.0, 5.0)}, 1));
+        collect.consume(cmd(canon::RapidMove{rasterStart()}, 2));
+        RasterOptions options;
+        options.blocks = 1000;
+        options.segMm = seg;
+        options.feedMmPerMin = 6000.0;
+        emitRaster(options, collect);
+        TestRun run = runCommands(millConfig(), collect.commands, at(0.0, 0.0, 20.0));
+        SCOPED_TRACE("seg " + std::to_string(seg) + ": " + run.checker->limitSummary());
+        expectWithinLimits(run, 0.01);
+    }
+}
+
+TEST(ShortSegments, FeedHoldAndResumeInsideARunOfShortSegments) {
+    auto commands = polylineCircle(5.0, 0.005, 6, 20.0, 6000.0);
+    int cycles = 0;
+    int holdCycle = -1;
+    int resumeCycle = -1;
+    double commandS = -1.0;
+    double holdS = -1.0;
+    TestRun run =
+        runCommands(millConfig(), commands, Pose{}, {},
+                    [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                        ++cycles;
+                        if (holdCycle < 0 && s.pathPosition > 5.0) {
+                            holdCycle = cycles;
+                            commandS = s.pathPosition;
+                            sim.command({OperatorCommandKind::FeedHold});
+                        }
+                        if (holdCycle > 0 && resumeCycle < 0 && s.mode == MotionMode::Hold) {
+                            holdS = s.pathPosition;
+                            resumeCycle = cycles + 100;
+                        }
+                        if (cycles == resumeCycle) sim.command({OperatorCommandKind::CycleStart});
+                    });
+    SCOPED_TRACE(run.checker->limitSummary());
+    ASSERT_GT(resumeCycle, 0) << "never held";
+    EXPECT_GE(holdS, commandS);
+    expectWithinLimits(run, 0.01);
+    EXPECT_NEAR(run.report.finalPosition[0],
+                std::get<canon::LinearMove>(commands.back().body).target[Axis::X], 1e-6);
+}
+
+}  // namespace
+}  // namespace kerf::motion::test
