@@ -2418,16 +2418,8 @@ Status</translation>
         <translation>Programm {1} läuft: es kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <source>cannot write program {1}</source>
-        <translation>Programm {1} kann nicht geschrieben werden</translation>
-    </message>
-    <message>
         <source>WRITE needs a program opened with OPEN</source>
         <translation>WRITE braucht ein mit OPEN geöffnetes Programm</translation>
-    </message>
-    <message>
-        <source>cannot write to the opened program</source>
-        <translation>in das geöffnete Programm kann nicht geschrieben werden</translation>
     </message>
     <message>
         <source>GPOS: program {1} has no block N{2}</source>
@@ -5232,6 +5224,18 @@ editieren</translation>
     <message>
         <source>the test run stopped after {1} blocks: endless loop?</source>
         <translation>der Programm-Test hat nach {1} Sätzen angehalten: Endlosschleife?</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a regular file</source>
+        <translation>&apos;{1}&apos; ist keine reguläre Datei</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}: {2}</source>
+        <translation>Programm {1} kann nicht geschrieben werden: {2}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
+        <translation>&apos;{1}&apos; ist ein Link: Kerf schreibt nicht über Links</translation>
     </message>
 </context>
 <context>

@@ -2418,16 +2418,8 @@ estado</translation>
         <translation>el programa {1} está en ejecución: no se puede abrir</translation>
     </message>
     <message>
-        <source>cannot write program {1}</source>
-        <translation>no se puede escribir el programa {1}</translation>
-    </message>
-    <message>
         <source>WRITE needs a program opened with OPEN</source>
         <translation>WRITE necesita un programa abierto con OPEN</translation>
-    </message>
-    <message>
-        <source>cannot write to the opened program</source>
-        <translation>no se puede escribir en el programa abierto</translation>
     </message>
     <message>
         <source>GPOS: program {1} has no block N{2}</source>
@@ -5232,6 +5224,18 @@ ciclo</translation>
     <message>
         <source>the test run stopped after {1} blocks: endless loop?</source>
         <translation>la prueba del programa se detuvo tras {1} bloques: ¿bucle infinito?</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a regular file</source>
+        <translation>&apos;{1}&apos; no es un archivo regular</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}: {2}</source>
+        <translation>no se puede escribir el programa {1}: {2}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
+        <translation>&apos;{1}&apos; es un enlace: Kerf no escribe a través de enlaces</translation>
     </message>
 </context>
 <context>

@@ -2421,16 +2421,8 @@ status</translation>
         <translation>program {1} jest wykonywany: nie można go otworzyć</translation>
     </message>
     <message>
-        <source>cannot write program {1}</source>
-        <translation>nie można zapisać programu {1}</translation>
-    </message>
-    <message>
         <source>WRITE needs a program opened with OPEN</source>
         <translation>WRITE wymaga programu otwartego przez OPEN</translation>
-    </message>
-    <message>
-        <source>cannot write to the opened program</source>
-        <translation>nie można pisać do otwartego programu</translation>
     </message>
     <message>
         <source>GPOS: program {1} has no block N{2}</source>
@@ -5235,6 +5227,18 @@ cykl</translation>
     <message>
         <source>the test run stopped after {1} blocks: endless loop?</source>
         <translation>test programu zatrzymał się po {1} blokach: nieskończona pętla?</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a regular file</source>
+        <translation>&apos;{1}&apos; nie jest zwykłym plikiem</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}: {2}</source>
+        <translation>nie można zapisać programu {1}: {2}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
+        <translation>&apos;{1}&apos; jest dowiązaniem: Kerf nie zapisuje przez dowiązania</translation>
     </message>
 </context>
 <context>

@@ -2418,16 +2418,8 @@ estado</translation>
         <translation>o programa {1} está em execução: não pode ser aberto</translation>
     </message>
     <message>
-        <source>cannot write program {1}</source>
-        <translation>não é possível escrever o programa {1}</translation>
-    </message>
-    <message>
         <source>WRITE needs a program opened with OPEN</source>
         <translation>WRITE precisa de um programa aberto com OPEN</translation>
-    </message>
-    <message>
-        <source>cannot write to the opened program</source>
-        <translation>não é possível escrever no programa aberto</translation>
     </message>
     <message>
         <source>GPOS: program {1} has no block N{2}</source>
@@ -5232,6 +5224,18 @@ ciclo</translation>
     <message>
         <source>the test run stopped after {1} blocks: endless loop?</source>
         <translation>o teste do programa parou após {1} blocos: ciclo infinito?</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not a regular file</source>
+        <translation>&apos;{1}&apos; não é um ficheiro regular</translation>
+    </message>
+    <message>
+        <source>cannot write program {1}: {2}</source>
+        <translation>não é possível escrever o programa {1}: {2}</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
+        <translation>&apos;{1}&apos; é uma ligação: o Kerf não escreve através de ligações</translation>
     </message>
 </context>
 <context>

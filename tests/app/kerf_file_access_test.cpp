@@ -253,15 +253,24 @@ TEST_F(KerfFileAccess, ProgramTruncatedWhileItRunsDoesNotCrash) {
     writeFile(root() / "loop.H",
               "0 BEGIN PGM L MM\n1 LBL 1\n2 L IX+0 FMAX\n"
               "3 FN 9: IF +0 EQU +0 GOTO LBL 1\n4 END PGM L MM\n");
+    const fs::path trace = m_dir / "trace.txt";
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
         const std::string program = (root() / "loop.H").string();
         ::execl(kerfBinary(), kerfBinary(), "run", program.c_str(), "--max-blocks", "100000000",
-                static_cast<char*>(nullptr));
+                "--trace", trace.c_str(), static_cast<char*>(nullptr));
         ::_exit(127);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    // Truncate once the program runs: its trace has begun.
+    auto traceBegun = [&] {
+        std::error_code missing;
+        const auto size = fs::file_size(trace, missing);
+        return !missing && size > 0;
+    };
+    for (int i = 0; i < 1000 && !traceBegun(); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(traceBegun());
     fs::resize_file(root() / "loop.H", 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     int status = 0;

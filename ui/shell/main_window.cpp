@@ -8,7 +8,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
-#include "core/base/atomic_file.h"
+#include "core/program/nc_root.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/cycles/programming_softkeys.h"
 #include "ui/editor/find_bar.h"
@@ -127,6 +127,11 @@ bool MainWindow::openProgram(const std::filesystem::path& path) {
 }
 
 bool MainWindow::openFile(const std::filesystem::path& path) {
+    // From the file manager: a file of the NC root, judged after its links (docs/files.md).
+    if (const MaybeError refused = program::NcRoot(m_context.ncRoot).admit(path)) {
+        m_messages->addMessage(Severity::Error, translatedMessage(*refused));
+        return false;
+    }
     if (isTableFile(path)) return showTable(path);
     if (!openProgram(path)) return false;
     m_modes->requestProgrammingMode(task::ProgrammingMode::Programming);
@@ -140,12 +145,18 @@ void MainWindow::showFiles() {
 }
 
 bool MainWindow::showTable(const std::filesystem::path& path) {
+    // The tables of the NC root (TOOL.T, PRESET.PR ...) go through its file-access layer.
+    const program::NcRoot root(m_context.ncRoot);
+    if (const MaybeError refused = root.admit(path)) {
+        m_messages->addMessage(Severity::Error, translatedMessage(*refused));
+        return false;
+    }
     std::error_code error;
-    if (!std::filesystem::exists(path, error)) {
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) {
         // A fresh NC root gets the standard tables, as a new control has them.
         const std::string content = defaultTableContent(tableKindOf(path), path);
         if (!content.empty()) {
-            if (const MaybeError failed = writeFileAtomically(path, content)) {
+            if (const MaybeError failed = root.replace(path, content)) {
                 m_messages->addMessage(Severity::Error, translatedMessage(*failed));
                 return false;
             }
