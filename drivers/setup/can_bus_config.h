@@ -34,8 +34,8 @@ struct CanBusConfig {
     std::chrono::nanoseconds servoPeriod{std::chrono::milliseconds(1)};
     std::chrono::nanoseconds cyclePeriod{std::chrono::milliseconds(1)};
     uint8_t masterNode = 127;
-    std::chrono::milliseconds heartbeatPeriod{100};
-    std::chrono::milliseconds heartbeatTimeout{250};
+    std::chrono::milliseconds heartbeatPeriod{10};
+    std::chrono::milliseconds heartbeatTimeout{30};
     int pdoLossCycles = 3;
     std::optional<uint32_t> vendorId;
     std::optional<uint32_t> productCode;
