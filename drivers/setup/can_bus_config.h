@@ -53,7 +53,7 @@ Expected<CanBusConfig> makeCanBusConfig(const machine::MachineConfig& config);
 canopen::BusLoad canBusLoad(int nodes, uint32_t bitrate, std::chrono::nanoseconds cycle,
                             std::chrono::milliseconds heartbeatPeriod);
 
-// "4 nodes, 1000 kbit/s, 2 ms cycle: 40-49 % (worst case 49.1 % with heartbeats)".
+// "4 nodes, 1000 kbit/s, 2 ms cycle: 40-52 % (worst case 52.0 % with heartbeats)".
 std::string describeBusLoad(int nodes, uint32_t bitrate, std::chrono::nanoseconds cycle,
                             const canopen::BusLoad& load);
 

@@ -32,7 +32,7 @@ namespace kerf::drivers {
 
 struct CanSimOptions {
     std::filesystem::path tracePath;  // candump log of every frame; empty: none
-    // The trace stops growing here (about 2.5 h of the built-in mill's traffic); a warning
+    // The trace stops growing here (about 1.5 h of the built-in mill's traffic); a warning
     // says so.
     uint64_t traceLimitBytes = uint64_t{1} << 30;
     std::vector<FaultInjection> faults;

@@ -138,11 +138,12 @@ TEST(FaultStop, EveryDriveRampsDownToRestAndTheResultSaysWhere) {
         EXPECT_EQ(d.standstill, Standstill::AtRest) << d.letter;
     // X braked from 500 mm/s with 2000 mm/s^2 after the quick stop reached it: 62.5 mm, plus
     // up to one SYNC period (2 ms) before the drive applied it and its velocity loop's lag
-    // (1 ms), both at 500 mm/s.
+    // (1 ms), both at 500 mm/s; less by up to 2 mm where the feedback at the stop was sampled
+    // late in its SYNC period (heartbeats queued before a SYNC delay it).
     const app::DriveRest& x = r.stop->drives[0];
     EXPECT_EQ(x.letter, 'X');
     double travel = x.atRest - x.atStop;
-    EXPECT_GE(travel, kBrakingMm - 0.5);
+    EXPECT_GE(travel, kBrakingMm - 2.0);
     EXPECT_LE(travel, kBrakingMm + kRapidMmPerS * 0.003 + 0.5);
     // The tool tip ends where X came to rest, not where the stop was commanded.
     EXPECT_NEAR(r.finalPosition[0] - r.stop->tipAtStop[0], travel, 2e-4);
