@@ -227,7 +227,7 @@ struct CanMachine::Chain {
         }
     }
 
-    // The axis furthest from its setpoint, beyond its in-position window; -1 if none.
+    // The first axis beyond its in-position window (and how far it is); -1 if none.
     int axisOutOfPosition(double& distance) const {
         const MotionStatus& s = servo.status();
         for (size_t i = 0; i < s.actualPosition.size(); ++i) {
