@@ -51,6 +51,9 @@ int main(int argc, char** argv) {
     run->add_option("--drives", runOptions.drives,
                     "run through the drive chain: can-sim (CANopen master, simulated drives)");
     run->add_option("--can-trace", runOptions.canTrace, "write every CAN frame as a candump log");
+    run->add_option("--max-drive-time", runOptions.maxDriveTimeS,
+                    "with --drives: end the run after this many simulated seconds (default 3600)")
+        ->check(CLI::PositiveNumber);
     run->add_flag("--motion", runOptions.motion,
                   "execute through planner and servo cycle in simulated time (report: motion)");
     run->add_option("--samples", runOptions.samples,

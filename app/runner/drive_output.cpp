@@ -1,20 +1,21 @@
 #include "app/runner/drive_output.h"
 
-#include <chrono>
 #include <cmath>
 
 #include "app/runner/can_machine.h"
 #include "app/runner/motion_output.h"
 #include "app/runner/session.h"
+#include "app/runner/soft_limit_gate.h"
 #include "drivers/setup/fault_injection.h"
+#include "motion/kinematics/machine_model.h"
 
 namespace kerf::app {
 
 namespace {
 
 constexpr const char* kCanSim = "can-sim";
-// A fault stops the interpreter within this many blocks (each block's motion is simulated as it
-// is interpreted, so the slice bounds the blocks read after the stop).
+// A fault stops the interpreter within this many blocks once held commands were released (a
+// long program releases them before its end; each block's motion is simulated as it arrives).
 constexpr uint64_t kBlocksPerSliceWithDrives = 16;
 
 // Rounds to 6 decimals and never writes -0, like the rest of the report.
@@ -26,6 +27,7 @@ double clean(double value) {
 Expected<drivers::CanSimOptions> simOptions(const RunOptions& options) {
     drivers::CanSimOptions sim;
     if (options.canTrace) sim.tracePath = *options.canTrace;
+    sim.maxSimulatedS = options.maxDriveTimeS;
     for (const std::string& spec : options.injectFaults) {
         auto fault = drivers::parseFaultInjection(spec);
         if (!fault) return fault.error();
@@ -38,7 +40,19 @@ Expected<drivers::CanSimOptions> simOptions(const RunOptions& options) {
 
 struct DriveOutput::Result {
     CanRunResult run;
-    nlohmann::json programmedFinal;
+};
+
+// The check before anything moves, with the machine model it plans on.
+struct DriveOutput::Checked {
+    explicit Checked(const Session& session)
+        : model(motion::makeMachineModel(session.machine, workOffsetOf(session))), gate(model) {}
+    static motion::MotionOptions workOffsetOf(const Session& session) {
+        motion::MotionOptions options;
+        options.workOffset = session.workOffset.values;
+        return options;
+    }
+    motion::MachineModel model;
+    SoftLimitGate gate;
 };
 
 std::optional<std::string> checkDriveOptions(const RunOptions& options) {
@@ -56,12 +70,19 @@ std::optional<std::string> checkDriveOptions(const RunOptions& options) {
 }
 
 DriveOutput::DriveOutput(const RunOptions& options, const Session& session)
-    : m_options(options), m_session(session), m_active(options.drives.has_value()) {}
+    : m_options(options), m_session(session), m_active(options.drives.has_value()) {
+    if (m_active) m_checked = std::make_unique<Checked>(session);
+}
 
 DriveOutput::~DriveOutput() = default;
 
-void DriveOutput::Forward::consume(const canon::Command& command) {
-    if (machine) machine->consume(command);
+canon::Sink& DriveOutput::sink() {
+    return m_checked->gate;
+}
+
+std::string DriveOutput::fileOf(uint32_t fileId) const {
+    return fileId < m_session.sources.size() ? m_session.sources.path(fileId)
+                                             : m_options.program.string();
 }
 
 void DriveOutput::setStart(const Pose& start, DiagnosticList& problems) {
@@ -73,10 +94,8 @@ void DriveOutput::setStart(const Pose& start, DiagnosticList& problems) {
         return;
     }
     // Where the workpiece lies on the machine, as for --motion.
-    motion::MotionOptions motionOptions;
-    motionOptions.workOffset = m_session.workOffset.values;
-    auto machine =
-        CanMachine::create(m_session.machine, std::move(sim).value(), start.values, motionOptions);
+    auto machine = CanMachine::create(m_session.machine, std::move(sim).value(), start.values,
+                                      Checked::workOffsetOf(m_session));
     if (!machine) {
         Diagnostic d = machine.error();
         d.severity = Severity::Error;
@@ -85,7 +104,7 @@ void DriveOutput::setStart(const Pose& start, DiagnosticList& problems) {
         return;
     }
     m_machine = std::move(machine).value();
-    m_forward.machine = m_machine.get();
+    m_checked->gate.start(start.values, *m_machine);
 }
 
 uint64_t DriveOutput::blocksPerSlice(uint64_t withoutDrives) const {
@@ -93,15 +112,34 @@ uint64_t DriveOutput::blocksPerSlice(uint64_t withoutDrives) const {
 }
 
 bool DriveOutput::stopped() const {
-    return m_bootFailed || (m_machine && (m_machine->stopped() || m_machine->refused()));
+    return m_bootFailed || (m_checked && m_checked->gate.refused()) ||
+           (m_machine && (m_machine->stopped() || m_machine->refused()));
 }
 
 interp::WorldSnapshot DriveOutput::drain() {
-    return m_machine ? m_machine->drain() : interp::WorldSnapshot{};
+    interp::WorldSnapshot world;
+    if (!m_machine) return world;
+    SoftLimitGate& gate = m_checked->gate;
+    if (gate.refused()) {
+        world.position.values = gate.position();
+        return world;
+    }
+    gate.release();
+    world = m_machine->drain();
+    gate.resumeAt(world.position.values);
+    return world;
 }
 
-void DriveOutput::finish(DiagnosticList& problems) {
+void DriveOutput::finish(bool programRan, DiagnosticList& problems) {
     if (!m_machine) return;
+    SoftLimitGate& gate = m_checked->gate;
+    // With --motion as well, motion reports the same refusal.
+    if (gate.refused() && !m_options.motion && !m_options.samples) {
+        const bool atMachineOrigin = m_session.workOffset.values == Pose{}.values;
+        DiagnosticList refusal = gate.refusal(fileOf(gate.refusedAt()->fileId), atMachineOrigin);
+        problems.insert(problems.end(), refusal.begin(), refusal.end());
+    }
+    if (programRan) gate.release();
     m_result = std::make_unique<Result>();
     m_result->run = m_machine->finish();
     const SourceLocation& at = m_result->run.stoppedAt;
@@ -117,9 +155,61 @@ void DriveOutput::finish(DiagnosticList& problems) {
         }
         problems.push_back(std::move(d));
     }
-    m_forward.machine = nullptr;
     m_machine.reset();
 }
+
+namespace {
+
+nlohmann::json tipJson(const motion::AxisVector& tip, const machine::MachineConfig& machine,
+                       bool xInDiameter) {
+    nlohmann::json position = nlohmann::json::object();
+    for (char letter : machine.enabledAxisLetters()) {
+        auto axis = axisFromLetter(letter);
+        if (!axis) continue;
+        double value = tip[static_cast<size_t>(axisIndex(*axis))];
+        if (letter == 'X' && xInDiameter) value *= 2.0;
+        position[std::string(1, letter)] = clean(value);
+    }
+    return position;
+}
+
+const char* standstillName(drivers::cia402::Standstill standstill) {
+    switch (standstill) {
+        case drivers::cia402::Standstill::AtRest:
+            return "at rest";
+        case drivers::cia402::Standstill::Moving:
+            return "moving";
+        case drivers::cia402::Standstill::Unknown:
+            return "unknown";
+    }
+    return "?";
+}
+
+// Where the quick stop went out, where every drive came to rest and how far it went.
+nlohmann::json stopJson(const StopOutcome& stop, const motion::AxisVector& rest,
+                        const machine::MachineConfig& machine, bool xInDiameter) {
+    nlohmann::json json;
+    json["at_s"] = clean(stop.stoppedS);
+    json["all_at_rest"] = stop.allAtRest();
+    json["rest_after_s"] = clean(stop.restS);
+    json["limit_s"] = clean(stop.limitS);
+    json["position_at_stop"] = tipJson(stop.tipAtStop, machine, xInDiameter);
+    double squared = 0.0;
+    for (size_t i = 0; i < rest.size(); ++i) {
+        double d = rest[i] - stop.tipAtStop[i];
+        squared += d * d;
+    }
+    json["stopping_distance_mm"] = clean(std::sqrt(squared));
+    nlohmann::json drives = nlohmann::json::object();
+    for (const DriveRest& d : stop.drives) {
+        drives[std::string(1, d.letter)] = {{"state", standstillName(d.standstill)},
+                                            {"travel", clean(std::fabs(d.atRest - d.atStop))}};
+    }
+    json["drives"] = drives;
+    return json;
+}
+
+}  // namespace
 
 void DriveOutput::addToReport(nlohmann::json& report, bool xInDiameter) const {
     if (!m_active) return;
@@ -129,17 +219,12 @@ void DriveOutput::addToReport(nlohmann::json& report, bool xInDiameter) const {
     if (m_result) {
         const CanRunResult& run = m_result->run;
         drives["programmed_final_position"] = report["final_position"];
-        nlohmann::json position = nlohmann::json::object();
-        for (char letter : m_session.machine.enabledAxisLetters()) {
-            auto axis = axisFromLetter(letter);
-            if (!axis) continue;
-            double value = run.finalPosition[static_cast<size_t>(axisIndex(*axis))];
-            if (letter == 'X' && xInDiameter) value *= 2.0;
-            position[std::string(1, letter)] = clean(value);
-        }
-        report["final_position"] = position;
+        report["final_position"] = tipJson(run.finalPosition, m_session.machine, xInDiameter);
         drives["stopped"] = run.stopped;
-        drives["refused"] = run.refused;
+        drives["refused"] = run.refused || m_checked->gate.refused();
+        drives["time_limit"] = run.timeLimit;
+        if (run.stop)
+            drives["stop"] = stopJson(*run.stop, run.finalPosition, m_session.machine, xInDiameter);
         drives["simulated_time_s"] = clean(run.durationS);
         drives["max_following_error_mm"] = clean(run.maxFollowingErrorMm);
         drives["bus_load_percent"] = std::round(run.busLoad * 1000.0) / 10.0;

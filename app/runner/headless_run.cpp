@@ -148,7 +148,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     }
     const canon::PathStatistics& results = rejected ? nothingRan : statistics;
     picture.finish(session->ready && !rejected, runProblems);
-    drives.finish(runProblems);
+    drives.finish(session->ready && !rejected, runProblems);
     motion.finish(session->ready && !rejected, runProblems);
 
     RunSummary summary;

@@ -8,17 +8,13 @@
 #include <vector>
 
 #include "app/runner/session.h"
+#include "app/runner/soft_limit_gate.h"
 #include "motion/kinematics/machine_model.h"
-#include "motion/planner/planner.h"
 #include "motion/sim/simulated_machine.h"
 
 namespace kerf::app {
 
 namespace {
-
-// Commands held back for the soft-limit check before they move. A longer program starts moving
-// after this many (memory stays bounded; the rest is still checked before it moves).
-constexpr size_t kMaxHeldCommands = 200'000;
 
 double clean(double value) {
     const double rounded = std::round(value * 1e6) / 1e6;
@@ -59,28 +55,12 @@ struct MotionOutput::State final : canon::Sink {
         : options(runOptions),
           session(s),
           model(motion::makeMachineModel(s.machine, motionOptions(s))),
-          checker(model) {}
+          gate(model) {}
 
     void consume(const canon::Command& command) override {
-        if (refusedAt) return;
-        if (checker.needsPosition()) checker.setPosition(checker.position());
-        if (!checker.add(command)) {
-            refusedAt = command.location;
-            return;
-        }
-        while (checker.next()) {
-        }
-        if (std::holds_alternative<canon::ProbeMove>(command.body)) ++probesSinceDrain;
-        held.push_back(command);
-        if (held.size() >= kMaxHeldCommands) release();
-    }
-
-    // The held commands go to the simulated machine: they move.
-    void release() {
-        if (!machine) return;
-        for (const canon::Command& command : held)
-            machine->consume(command);
-        held.clear();
+        gate.consume(command);
+        if (!gate.refused() && std::holds_alternative<canon::ProbeMove>(command.body))
+            ++probesSinceDrain;
     }
 
     std::string fileOf(uint32_t fileId) const {
@@ -91,10 +71,8 @@ struct MotionOutput::State final : canon::Sink {
     const RunOptions& options;
     const Session& session;
     motion::MachineModel model;
-    motion::Planner checker;  // soft limits and the planner's rules, before anything moves
+    SoftLimitGate gate;  // soft limits and the planner's rules, before anything moves
     std::unique_ptr<motion::SimulatedMachine> machine;
-    std::vector<canon::Command> held;
-    std::optional<SourceLocation> refusedAt;
     std::optional<motion::MotionReport> report;
     // The probe results the program waited for (one per sync after probe moves).
     struct ProbeResult {
@@ -123,55 +101,43 @@ void MotionOutput::setStart(const Pose& start) {
     simulation.startPosition = start.values;
     if (s.options.samples) simulation.samplesCsvPath = s.options.samples->string();
     s.machine = std::make_unique<motion::SimulatedMachine>(s.session.machine, simulation);
-    s.checker.setPosition(start.values);
+    s.gate.start(start.values, *s.machine);
 }
 
 bool MotionOutput::refused() const {
-    return m_state && m_state->refusedAt.has_value();
+    return m_state && m_state->gate.refused();
 }
 
 interp::WorldSnapshot MotionOutput::drain() {
     interp::WorldSnapshot world;
     if (!m_state || !m_state->machine) return world;
     State& s = *m_state;
-    if (s.refusedAt) {
-        world.position.values = s.checker.position();
+    if (s.gate.refused()) {
+        world.position.values = s.gate.position();
         return world;
     }
-    s.release();
+    s.gate.release();
     world = s.machine->drain();
     if (s.probesSinceDrain > 0) {
         s.probes.push_back({world.probeTriggered, world.probePosition});
         s.probesSinceDrain = 0;
     }
-    // Plan on from where the machine is (after a probe move: where the probe stopped).
-    s.checker.flush();
-    while (s.checker.next()) {
-    }
-    s.checker.setPosition(world.position.values);
+    s.gate.resumeAt(world.position.values);
     return world;
 }
 
 void MotionOutput::finish(bool programRan, DiagnosticList& problems) {
     if (!m_state || !m_state->machine) return;
     State& s = *m_state;
-    if (s.refusedAt) {
-        for (Diagnostic d : s.checker.diagnostics()) {
-            d.file = s.fileOf(s.refusedAt->fileId);
-            const bool softLimit = d.code == "motion.soft-limit";
-            Diagnostic hint = Diagnostic::make(
-                Severity::Note, "motion.work-offset", d.file, d.line, d.column,
-                KERF_TR_NOOP("the workpiece origin is at the machine origin; give its machine "
-                             "coordinates with --work-offset, e.g. Z-300"));
-            problems.push_back(std::move(d));
-            const bool atMachineOrigin = s.session.workOffset.values == Pose{}.values;
-            if (softLimit && atMachineOrigin) problems.push_back(std::move(hint));
-        }
+    if (s.gate.refused()) {
+        const bool atMachineOrigin = s.session.workOffset.values == Pose{}.values;
+        DiagnosticList refusal =
+            s.gate.refusal(s.fileOf(s.gate.refusedAt()->fileId), atMachineOrigin);
+        problems.insert(problems.end(), refusal.begin(), refusal.end());
     } else if (programRan) {
-        s.release();
+        s.gate.release();
         s.machine->drain();
     }
-    s.held.clear();
     s.report = s.machine->report();
     for (Diagnostic d : s.report->diagnostics) {
         if (d.file.empty()) d.file = s.options.program.string();
@@ -184,7 +150,7 @@ void MotionOutput::addToReport(nlohmann::json& report, bool xInDiameter) const {
     const State& s = *m_state;
     const motion::MotionReport& r = *s.report;
     nlohmann::json motion;
-    motion["refused"] = s.refusedAt.has_value() || r.refused;
+    motion["refused"] = s.gate.refused() || r.refused;
     motion["duration_s"] = clean(r.durationS);
     motion["feed_time_s"] = clean(r.feedTimeS);
     motion["max_path_deviation_mm"] = clean(r.maxPathDeviationMm);

@@ -23,10 +23,9 @@ std::optional<Pose> parseWorkOffset(const std::string& text);
 // motion's planner and servo cycle on simulated drives in simulated time (docs/motion.md), and the
 // report gets a "motion" object measured on the interpolated setpoints.
 //
-// The commands are soft-limit checked by a planner of their own as they arrive and held back
-// until the program ends or needs the machine (a sync point); only then do they move. A program
-// that would leave the work area is therefore refused before anything moves, with the block named
-// (unless a sync point or a very long program released part of it before).
+// The commands pass the SoftLimitGate: checked as they arrive and held back until the program
+// ends or needs the machine (a sync point), so a program that would leave the work area is
+// refused before anything moves.
 class MotionOutput {
 public:
     MotionOutput(const RunOptions& options, const Session& session);

@@ -31,6 +31,7 @@ struct RunOptions {
     std::optional<std::string> drives;
     std::optional<std::filesystem::path> canTrace;  // candump log of every frame
     std::vector<std::string> injectFaults;          // NODE:KIND@SECONDS
+    double maxDriveTimeS = 3600.0;                  // simulated-time limit of the drive chain
     // Motion in simulated time (app/runner/motion_output.h, docs/motion.md); --samples implies it.
     bool motion = false;
     std::optional<std::filesystem::path> samples;  // CSV of every servo cycle's setpoints

@@ -29,8 +29,8 @@ struct DrivesConfig {
     std::string interface = "can0";  // SocketCAN interface
     int bitrate = 1000000;           // bit/s
     double cyclePeriodMs = 1.0;      // SYNC period, a whole multiple of the servo period
-    int heartbeatPeriodMs = 100;     // every drive's heartbeat (0x1017)
-    int heartbeatTimeoutMs = 250;    // master's consumer time per drive (0x1016)
+    int heartbeatPeriodMs = 10;      // every drive's heartbeat (0x1017)
+    int heartbeatTimeoutMs = 30;     // master's consumer time per drive (0x1016)
     int pdoLossCycles = 3;           // cycles without a drive's TPDO before it counts as lost
     int masterNode = 127;            // node-ID of the master's heartbeat
     std::string vendorId;            // expected 0x1018 sub 1 ("0x..."); empty: not checked

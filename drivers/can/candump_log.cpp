@@ -122,6 +122,8 @@ std::error_code CandumpWriter::open(const std::filesystem::path& path) {
     m_file = std::fopen(path.c_str(), "w");
     if (!m_file) return {errno, std::generic_category()};
     m_failed = false;
+    m_written = 0;
+    m_truncated = false;
     return {};
 }
 
@@ -135,10 +137,15 @@ std::error_code CandumpWriter::close() {
 }
 
 void CandumpWriter::onFrame(std::chrono::nanoseconds time, const CanFrame& frame) noexcept {
-    if (!m_file) return;
+    if (!m_file || m_truncated) return;
     char line[kCandumpLineMax + 1];
     size_t length = formatCandumpLine(line, time, m_interface, frame);
     line[length] = '\n';
+    if (m_written + length + 1 > m_limit) {
+        m_truncated = true;
+        return;
+    }
+    m_written += length + 1;
     if (std::fwrite(line, 1, length + 1, m_file) != length + 1) m_failed = true;
 }
 

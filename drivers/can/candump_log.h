@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
@@ -30,11 +31,15 @@ struct CandumpRecord {
 // Parses one line; false when it is not a classical-CAN candump log line.
 bool parseCandumpLine(std::string_view line, CandumpRecord& out) noexcept;
 
-// Appends every observed frame to a file. Writing goes through stdio's buffer (allocated once
-// by open()); a full disk shows up in close()'s result.
+// Appends every observed frame to a file, up to a size limit: the first line that would pass
+// it and every later one are left out (truncated() says so), whole lines only. Writing goes
+// through stdio's buffer (allocated once by open()); a full disk shows up in close()'s result.
 class CandumpWriter final : public FrameObserver {
 public:
     explicit CandumpWriter(std::string_view interface = "can0") : m_interface(interface) {}
+    void setLimit(uint64_t bytes) noexcept { m_limit = bytes; }
+    bool truncated() const noexcept { return m_truncated; }
+    uint64_t bytesWritten() const noexcept { return m_written; }
     ~CandumpWriter() override;
     CandumpWriter(const CandumpWriter&) = delete;
     CandumpWriter& operator=(const CandumpWriter&) = delete;
@@ -48,6 +53,9 @@ private:
     std::string_view m_interface;
     std::FILE* m_file = nullptr;
     bool m_failed = false;
+    uint64_t m_limit = UINT64_MAX;
+    uint64_t m_written = 0;
+    bool m_truncated = false;
 };
 
 }  // namespace kerf::drivers::can

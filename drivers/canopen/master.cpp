@@ -246,8 +246,10 @@ void Master::onFrame(const can::CanFrame& f, std::chrono::nanoseconds now) noexc
         default:
             break;
     }
+    // A lost node that still speaks keeps reporting: the stop is watched to standstill.
     if (f.id == n.config.tpdo.cobId &&
-        (n.phase == NodePhase::Starting || n.phase == NodePhase::Operational)) {
+        (n.phase == NodePhase::Starting || n.phase == NodePhase::Operational ||
+         n.phase == NodePhase::Lost)) {
         n.tpdo.data = f.data;
         n.tpdo.length = f.length;
         n.tpdo.time = now;

@@ -37,8 +37,8 @@ struct MasterNodeConfig {
 
 struct MasterConfig {
     uint8_t masterNode = 0;  // node-ID of the master's heartbeat (0x1017 on the master); 0: none
-    std::chrono::milliseconds heartbeatPeriod{100};
-    std::chrono::milliseconds heartbeatTimeout{250};  // consumer time for every node (0x1016)
+    std::chrono::milliseconds heartbeatPeriod{10};
+    std::chrono::milliseconds heartbeatTimeout{30};  // consumer time for every node (0x1016)
     std::chrono::nanoseconds cyclePeriod{std::chrono::milliseconds(1)};  // SYNC period (0x1006)
     std::chrono::nanoseconds sdoTimeout{std::chrono::milliseconds(200)};
     std::chrono::nanoseconds bootUpTimeout{std::chrono::seconds(5)};

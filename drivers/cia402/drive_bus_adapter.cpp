@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "drivers/canopen/master_error.h"
@@ -28,6 +29,25 @@ int32_t toCounts(double value) noexcept {
     return static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(wide)));
 }
 
+// Distance of two INT32 positions that may have wrapped.
+int64_t countsApart(int32_t a, int32_t b) noexcept {
+    auto difference = static_cast<int32_t>(static_cast<uint32_t>(a) - static_cast<uint32_t>(b));
+    return std::abs(static_cast<int64_t>(difference));
+}
+
+// States in which a drive no longer drives the axis on: a finished quick stop, a finished
+// fault reaction, or the power stage off.
+bool stopFinished(const DriveAxis& axis) noexcept {
+    switch (axis.state()) {
+        case State::QuickStopActive:
+            return (axis.statusword() & kStatusTargetReached) != 0;
+        case State::FaultReactionActive:
+            return false;
+        default:
+            return true;
+    }
+}
+
 }  // namespace
 
 DriveBusAdapter::DriveBusAdapter(canopen::Master& master, can::CanChannel& channel,
@@ -52,6 +72,16 @@ double DriveBusAdapter::position(int joint) const noexcept {
     const Joint& j = m_joints[static_cast<size_t>(joint)];
     if (j.config.node < 0) return j.setpoint;
     return static_cast<double>(j.counts) / j.config.countsPerUnit + j.offset;
+}
+
+Standstill DriveBusAdapter::standstill(int joint) const noexcept {
+    const Joint& j = m_joints[static_cast<size_t>(joint)];
+    if (j.config.node < 0) return Standstill::AtRest;  // nothing moves it once motion stops
+    // The master calls a node lost after pdoLossCycles without TPDO; one more and it is silent.
+    auto silentAfter = m_config.cyclePeriod * (m_master.config().pdoLossCycles + 1);
+    if (!j.haveCounts || m_clock.now() - j.lastTpdo > silentAfter) return Standstill::Unknown;
+    return stopFinished(j.axis) && j.stillTpdos >= kRestTpdos ? Standstill::AtRest
+                                                              : Standstill::Moving;
 }
 
 bool DriveBusAdapter::allEnabled() const noexcept {
@@ -192,6 +222,13 @@ void DriveBusAdapter::supervise(Joint& j, int index, nanoseconds now) noexcept {
                             : raw;
     j.raw = raw;
     j.haveCounts = true;
+    j.lastTpdo = now;
+    if (countsApart(raw, j.restRaw) <= 1) {
+        ++j.stillTpdos;
+    } else {
+        j.restRaw = raw;
+        j.stillTpdos = 0;
+    }
     j.axis.onStatusword(statusword, now);
 
     State state = j.axis.state();

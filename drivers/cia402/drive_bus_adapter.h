@@ -49,9 +49,18 @@ struct AdapterConfig {
     std::vector<uint16_t> emcyWarnings;  // EMCY codes that only warn (statusword bit 7 style)
 };
 
+// Whether a drive stands still, as far as the master can tell from its TPDOs.
+enum class Standstill : uint8_t {
+    Moving,
+    AtRest,   // the statusword says it stopped and the position stayed within one count
+    Unknown,  // its TPDOs no longer arrive: the master cannot tell
+};
+
 class DriveBusAdapter final : public motion::DriveBus {
 public:
     static constexpr size_t kMaxRecords = 32;
+    // TPDOs in a row with the position within one count: at rest (10 ms at a 2 ms cycle).
+    static constexpr int kRestTpdos = 5;
 
     DriveBusAdapter(canopen::Master& master, can::CanChannel& channel,
                     const canopen::ProtocolClock& clock, AdapterConfig config);
@@ -74,6 +83,9 @@ public:
     }
     // Actual position of a joint in its units (drive feedback, homing offset applied).
     double position(int joint) const noexcept;
+    // At rest: the drive reports a finished stop (quick stop active with bit 10, fault, power
+    // off) or holds in operation enabled, and its position did not change for kRestTpdos TPDOs.
+    Standstill standstill(int joint) const noexcept;
     uint64_t sendErrors() const noexcept { return m_sendErrors; }
 
 private:
@@ -84,6 +96,9 @@ private:
         int32_t raw = 0;        // last position actual, drive counts
         int64_t counts = 0;     // unwrapped
         bool haveCounts = false;
+        std::chrono::nanoseconds lastTpdo{0};
+        int32_t restRaw = 0;  // where the position has stayed for stillTpdos TPDOs
+        int stillTpdos = 0;
         double offset = 0.0;  // position = counts / countsPerUnit + offset
         double setpoint = 0.0;
         double sentSetpoint = 0.0;         // setpoint of the last RPDO (CSV velocity)

@@ -34,8 +34,8 @@ struct CanBusConfig {
     std::chrono::nanoseconds servoPeriod{std::chrono::milliseconds(1)};
     std::chrono::nanoseconds cyclePeriod{std::chrono::milliseconds(1)};
     uint8_t masterNode = 127;
-    std::chrono::milliseconds heartbeatPeriod{100};
-    std::chrono::milliseconds heartbeatTimeout{250};
+    std::chrono::milliseconds heartbeatPeriod{10};
+    std::chrono::milliseconds heartbeatTimeout{30};
     int pdoLossCycles = 3;
     std::optional<uint32_t> vendorId;
     std::optional<uint32_t> productCode;
@@ -53,7 +53,7 @@ Expected<CanBusConfig> makeCanBusConfig(const machine::MachineConfig& config);
 canopen::BusLoad canBusLoad(int nodes, uint32_t bitrate, std::chrono::nanoseconds cycle,
                             std::chrono::milliseconds heartbeatPeriod);
 
-// "4 nodes, 1000 kbit/s, 2 ms cycle: 40-49 % (worst case 49.1 % with heartbeats)".
+// "4 nodes, 1000 kbit/s, 2 ms cycle: 40-52 % (worst case 52.0 % with heartbeats)".
 std::string describeBusLoad(int nodes, uint32_t bitrate, std::chrono::nanoseconds cycle,
                             const canopen::BusLoad& load);
 

@@ -16,6 +16,8 @@ using canopen::MasterErrc;
 using canopen::PdoEntry;
 using canopen::PdoLayout;
 
+constexpr uint16_t kEmcyErrorPassive = 0x8120;  // CiA 301: CAN in error passive mode
+
 uint32_t countsOf(double value) {
     return static_cast<uint32_t>(std::clamp(std::llround(value), 0LL, 0xFFFFFFFFLL));
 }
@@ -134,6 +136,10 @@ canopen::MasterConfig makeMasterConfig(const CanBusConfig& c) {
 cia402::AdapterConfig makeAdapterConfig(const CanBusConfig& c) {
     cia402::AdapterConfig a;
     a.cyclePeriod = c.cyclePeriod;
+    // A node's controller in error passive (EMCY 0x8120) still delivers every frame, so it warns
+    // like the master's own: stopping mid-cut would risk tool and part for nothing, and a bus
+    // that really loses frames is caught by the PDO check within pdo_loss_cycles.
+    a.emcyWarnings = {kEmcyErrorPassive};
     int node = 0;
     for (const CanJoint& j : c.joints) {
         cia402::JointDrive d;

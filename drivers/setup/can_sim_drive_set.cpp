@@ -54,6 +54,7 @@ Expected<std::unique_ptr<CanSimDriveSet>> CanSimDriveSet::create(
             d.args = {set->m_options.tracePath.string(), error.message()};
             return d;
         }
+        set->m_trace.setLimit(set->m_options.traceLimitBytes);
         set->m_bus.addObserver(set->m_trace);
     }
     return set;
@@ -201,6 +202,15 @@ void CanSimDriveSet::advance(double periodS) noexcept {
 DiagnosticList CanSimDriveSet::diagnostics() const {
     DiagnosticList list = m_stack->diagnostics();
     if (m_traceError) list.push_back(*m_traceError);
+    if (m_trace.truncated()) {
+        Diagnostic d;
+        d.severity = Severity::Warning;
+        d.code = "drives.trace-limit";
+        d.messageTemplate = KERF_TR_NOOP(
+            "the CAN trace {1} stops at its limit of {2} bytes; the rest of the run is not in it");
+        d.args = {m_options.tracePath.string(), std::to_string(m_options.traceLimitBytes)};
+        list.push_back(d);
+    }
     return list;
 }
 

@@ -32,8 +32,14 @@ namespace kerf::drivers {
 
 struct CanSimOptions {
     std::filesystem::path tracePath;  // candump log of every frame; empty: none
+    // The trace stops growing here (about 1.5 h of the built-in mill's traffic); a warning
+    // says so.
+    uint64_t traceLimitBytes = uint64_t{1} << 30;
     std::vector<FaultInjection> faults;
     double bootTimeoutS = 10.0;
+    // A run through the chain ends with an error after this much simulated time (from the end
+    // of the boot): a program that does not end cannot hang it.
+    double maxSimulatedS = 3600.0;
 };
 
 class CanSimDriveSet {

@@ -283,6 +283,9 @@ uint16_t SimDrive::statusword() const noexcept {
 void SimDrive::enterState(State state, nanoseconds) noexcept {
     State from = m_state;
     m_state = state;
+    // The injected overload is the axis driving into something: once the drive stops driving
+    // (its own trip, a quick stop), it no longer pushes, and the stop ends at rest.
+    if (from == State::OperationEnabled && state != State::OperationEnabled) m_plant.setDrift(0.0);
     auto option = static_cast<int16_t>(m_od.getSigned(kQuickStopOption));
     double quickStopDecel = m_od.get(kQuickStopDecel);
     switch (state) {

@@ -22,8 +22,8 @@
 // monitoring (0x6065/0x6066 -> Fault 0x8611) and software position limits (0x607D).
 //
 // Fault injection for tests: a fault with any EMCY code, a following error (the axis is pushed
-// away), encoder loss, heartbeat loss, a drive that falls silent, TPDOs that stop, slow boot,
-// wrong identity, SDO aborts on an object.
+// away while it is driven in Operation enabled), encoder loss, heartbeat loss, a drive that falls
+// silent, TPDOs that stop, slow boot, wrong identity, SDO aborts on an object.
 //
 // Passive like the master: poll(now) takes the received frames, runs timers and the plant up to
 // `now` and sends; nextDeadline() tells an event-driven simulation when to poll next. The

@@ -70,8 +70,8 @@ TEST(BuiltinMachines, MillWithCanUsesFourNodesAtTwoMilliseconds) {
     EXPECT_EQ(mill.drives.interface, "can0");
     EXPECT_EQ(mill.drives.bitrate, 1000000);
     EXPECT_EQ(mill.drives.cyclePeriodMs, 2.0);
-    EXPECT_EQ(mill.drives.heartbeatPeriodMs, 100);
-    EXPECT_EQ(mill.drives.heartbeatTimeoutMs, 250);
+    EXPECT_EQ(mill.drives.heartbeatPeriodMs, 10);
+    EXPECT_EQ(mill.drives.heartbeatTimeoutMs, 30);
     EXPECT_EQ(parseDriveIdentity(mill.drives.vendorId), 0x4B455246u);
     EXPECT_EQ(parseDriveIdentity(mill.drives.productCode), 0x402u);
 }

@@ -276,12 +276,12 @@ TEST(MachineLoaderErrors, DriveBusRules) {
     EXPECT_EQ(problemsOf("base = \"mill\"\n"
                          "[drives]\n"
                          "bitrate = 600000\n"
-                         "heartbeat_timeout = 100\n"
+                         "heartbeat_timeout = 10\n"
                          "vendor_id = \"acme\"\n"),
               (Lines{"mymill.toml:3:11: error: drives.bitrate = 600000 is not a CiA 301 bit rate "
                      "(10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)",
-                     "mymill.toml:4:21: error: drives.heartbeat_timeout = 100 must exceed "
-                     "drives.heartbeat_period = 100",
+                     "mymill.toml:4:21: error: drives.heartbeat_timeout = 10 must exceed "
+                     "drives.heartbeat_period = 10",
                      "mymill.toml:5:13: error: drives.vendor_id = \"acme\" is not a 32-bit number "
                      "such as 0x0000029C"}));
 }

@@ -2,6 +2,7 @@
 // ends without drives (within the drives' resolution), every injected fault stops the run with
 // ok: false, exit code 1 and a diagnostic naming node and fault, and the CAN trace is a candump
 // log with the boot and the cyclic traffic.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -131,11 +132,59 @@ TEST_F(KerfRunDrives, EveryInjectedFaultStopsTheRunNamingNodeAndFault) {
         const double dy = end["Y"].get<double>() + 20.0;
         const double dz = end["Z"].get<double>() - 10.0;
         EXPECT_GT(dx * dx + dy * dy + dz * dz, 1.0);
+        // Every drive came to rest under its quick stop, and the report says where.
+        const nlohmann::json& stop = r.report["drives"]["stop"];
+        ASSERT_TRUE(stop.is_object()) << r.report.dump(2);
+        EXPECT_TRUE(stop["all_at_rest"].get<bool>()) << stop.dump(2);
+        for (const char* drive : {"X", "Y", "Z", "S"})
+            EXPECT_EQ(stop["drives"][drive]["state"], "at rest") << drive;
+        // The tip moved on from where the stop went out by the stopping distance.
+        double squared = 0.0;
+        for (const char* axis : {"X", "Y", "Z"}) {
+            const double d = end[axis].get<double>() - stop["position_at_stop"][axis].get<double>();
+            squared += d * d;
+        }
+        EXPECT_NEAR(std::sqrt(squared), stop["stopping_distance_mm"].get<double>(), 1e-5);
+        // At most 25 mm/s here (feeds of 1500 mm/min, a 1 mm following error): v^2 / 2a with
+        // 2000 mm/s^2 is 0.16 mm per axis.
+        EXPECT_LT(stop["stopping_distance_mm"].get<double>(), 0.5);
+        EXPECT_GT(stop["rest_after_s"].get<double>(), 0.0);
+        EXPECT_LT(stop["rest_after_s"].get<double>(), stop["limit_s"].get<double>());
     }
 }
 
-TEST_F(KerfRunDrives, RefusedBlockEndsTheRunWhereTheBlockBeforeEnded) {
-    // The mill's Z ends at +50 (machine coordinates): block 2 is refused, block 1 runs.
+// During the first rapid (X+10 Y+5 Z+2 from the origin, about 20 ms after the boot) a rapid
+// cannot stop at once: the stop is in the report, the final position is where the axes came to
+// rest, beyond the point where the stop went out.
+TEST_F(KerfRunDrives, FaultDuringARapidReportsWhereTheAxesCameToRest) {
+    KerfResult r = run("--drives can-sim --inject-fault 3:emcy@0.075");
+    EXPECT_EQ(r.exitCode, 1);
+    ASSERT_TRUE(r.report.is_object()) << r.errors;
+    const nlohmann::json& stop = r.report["drives"]["stop"];
+    ASSERT_TRUE(stop.is_object()) << r.report.dump(2);
+    EXPECT_TRUE(stop["all_at_rest"].get<bool>());
+    EXPECT_GT(stop["stopping_distance_mm"].get<double>(), 0.01);
+    const nlohmann::json& end = r.report["final_position"];
+    EXPECT_NE(end["X"].get<double>(), stop["position_at_stop"]["X"].get<double>());
+    EXPECT_GT(stop["drives"]["X"]["travel"].get<double>(), 0.0);
+}
+
+// Error passive still delivers every frame: a warning, the program runs to its end.
+TEST_F(KerfRunDrives, ErrorPassiveNodeWarnsAndTheRunGoesOn) {
+    KerfResult r = run("--drives can-sim --inject-fault 2:error-passive@3");
+    EXPECT_EQ(r.exitCode, 0) << r.errors;
+    ASSERT_TRUE(r.report.is_object()) << r.errors;
+    EXPECT_TRUE(r.report["ok"].get<bool>());
+    EXPECT_FALSE(r.report["drives"]["stopped"].get<bool>());
+    EXPECT_NE(r.errors.find("warning: CAN node 2 (axis Y): warning: EMCY 0x8120"),
+              std::string::npos)
+        << r.errors;
+    EXPECT_NEAR(r.report["final_position"]["Y"].get<double>(), -20.0, kResolutionMm);
+}
+
+// The soft-limit check runs over the whole program before anything moves, as with --motion.
+TEST_F(KerfRunDrives, RefusedBlockStopsTheRunBeforeAnythingMoves) {
+    // The mill's Z ends at +50 (machine coordinates): block 2 is refused, nothing moves.
     std::ofstream(m_dir / "refused.H") << "0 BEGIN PGM REFUSED MM\n"
                                           "1 L X+10 Y+5 Z+2 R0 FMAX\n"
                                           "2 L Z+500 FMAX\n"
@@ -150,9 +199,53 @@ TEST_F(KerfRunDrives, RefusedBlockEndsTheRunWhereTheBlockBeforeEnded) {
     EXPECT_NE(r.errors.find("refused.H:3:"), std::string::npos) << r.errors;
     EXPECT_NE(r.errors.find("soft limit"), std::string::npos) << r.errors;
     const nlohmann::json& end = r.report["final_position"];
-    EXPECT_NEAR(end["X"].get<double>(), 10.0, kResolutionMm);
-    EXPECT_NEAR(end["Y"].get<double>(), 5.0, kResolutionMm);
-    EXPECT_NEAR(end["Z"].get<double>(), 2.0, kResolutionMm);
+    for (const char* axis : {"X", "Y", "Z"})
+        EXPECT_NEAR(end[axis].get<double>(), 0.0, kResolutionMm) << axis;
+    EXPECT_LT(r.report["drives"]["simulated_time_s"].get<double>(), 0.01);
+}
+
+// The reproducer: 30 s of slow feed to Z-498, then a move to Z-550 below the mill's Z limit
+// (-500). Refused at once, not after the feed has run.
+TEST_F(KerfRunDrives, SoftLimitIsCheckedBeforeALongFeedRuns) {
+    std::ofstream(m_dir / "deep.H") << "0 BEGIN PGM DEEP MM\n"
+                                       "1 L Z-498 R0 F1000\n"
+                                       "2 L Z-550\n"
+                                       "3 END PGM DEEP MM\n";
+    KerfResult r = run("--drives can-sim", "deep.H");
+    EXPECT_EQ(r.exitCode, 1);
+    ASSERT_TRUE(r.report.is_object()) << r.errors;
+    EXPECT_TRUE(r.report["drives"]["refused"].get<bool>());
+    EXPECT_NE(r.errors.find("deep.H:3:"), std::string::npos) << r.errors;
+    EXPECT_LT(r.report["drives"]["simulated_time_s"].get<double>(), 0.01);
+    EXPECT_NEAR(r.report["final_position"]["Z"].get<double>(), 0.0, kResolutionMm);
+}
+
+// Issue 13 part 4: the drive simulation has a simulated-time limit (--max-drive-time).
+TEST_F(KerfRunDrives, SimulatedTimeLimitEndsALongRun) {
+    std::ofstream(m_dir / "slow.H") << "0 BEGIN PGM SLOW MM\n"
+                                       "1 L X+300 R0 F60\n"
+                                       "2 END PGM SLOW MM\n";
+    KerfResult r = run("--drives can-sim --max-drive-time 2", "slow.H");
+    EXPECT_EQ(r.exitCode, 1);
+    ASSERT_TRUE(r.report.is_object()) << r.errors;
+    EXPECT_TRUE(r.report["drives"]["time_limit"].get<bool>());
+    EXPECT_NE(r.errors.find("limit of 2 s of simulated time"), std::string::npos) << r.errors;
+    // 2 s at 1 mm/s.
+    EXPECT_NEAR(r.report["final_position"]["X"].get<double>(), 2.0, 0.1);
+    EXPECT_EQ(run("--drives can-sim --max-drive-time 0", "slow.H").exitCode, 2);
+}
+
+// A drive scale so coarse (1 count = 1 m) that no axis can reach its end point: the run ends
+// with an error at once instead of waiting for a simulated day.
+TEST_F(KerfRunDrives, CoarseDriveScaleEndsWithAnInPositionError) {
+    std::ofstream(m_dir / "coarse.toml") << "base = \"mill\"\n"
+                                            "[axes.X]\n"
+                                            "drive_scale = 0.001\n";
+    KerfResult r = run("--drives can-sim --machine \"" + (m_dir / "coarse.toml").string() + "\"");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.errors.find("axis X did not reach its end point"), std::string::npos) << r.errors;
+    ASSERT_TRUE(r.report.is_object()) << r.errors;
+    EXPECT_LT(r.report["drives"]["simulated_time_s"].get<double>(), 10.0);
 }
 
 TEST_F(KerfRunDrives, BootFaultStopsBeforeTheFirstBlock) {

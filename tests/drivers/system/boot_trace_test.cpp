@@ -127,7 +127,11 @@ TEST(BootTrace, OneDriveMatchesTheGoldenFrames) {
     std::filesystem::path log = test::tempFile("boot_trace.log");
     CanSimOptions options;
     options.tracePath = log;
-    auto set = CanSimDriveSet::create(test::oneAxis(), options);
+    // Heartbeats every 100 ms (250 ms consumer time): none falls into the boot's frames.
+    machine::MachineConfig config = test::oneAxis();
+    config.drives.heartbeatPeriodMs = 100;
+    config.drives.heartbeatTimeoutMs = 250;
+    auto set = CanSimDriveSet::create(config, options);
     ASSERT_TRUE(set.ok()) << set.error().message();
     MaybeError booted = (*set)->boot();
     ASSERT_FALSE(booted) << booted->message();

@@ -45,8 +45,8 @@ TEST(CanBusConfig, RefusesABusAbove80PercentAndGivesTheLoad) {
     EXPECT_EQ(bus.error().code, "drives.bus-load");
     EXPECT_EQ(
         bus.error().message(),
-        "CAN bus load 97.8 % is above the 80 % limit (4 nodes, 1000 kbit/s, 1 ms cycle: "
-        "807-975 of 1000 bit times per cycle, 80.7-97.5 % (worst case 97.8 % with "
+        "CAN bus load 100.8 % is above the 80 % limit (4 nodes, 1000 kbit/s, 1 ms cycle: "
+        "807-975 of 1000 bit times per cycle, 80.7-97.5 % (worst case 100.8 % with "
         "heartbeats)); lengthen drives.cycle_period, raise drives.bitrate or split the drives "
         "over two buses");
     EXPECT_FALSE(CanSimDriveSet::create(config, {}).ok()) << "the simulated set refuses it too";

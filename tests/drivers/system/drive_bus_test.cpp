@@ -156,8 +156,13 @@ TEST_F(DriveBusTest, SpindleFollowsInCsv) {
 }
 
 // The feedback of one CAN cycle (two servo cycles) is missing and repeated: Late, no fault.
+// Heartbeats every 100 ms here: a burst of heartbeats queued before a SYNC or TPDO also makes one
+// cycle late once per heartbeat period, which is not what this test counts.
 TEST_F(DriveBusTest, OneLostTpdoIsLateNotAFault) {
-    start();
+    machine::MachineConfig config = test::mill();
+    config.drives.heartbeatPeriodMs = 100;
+    config.drives.heartbeatTimeoutMs = 250;
+    start(config);
     rig->set().virtualBus().addFault({can::BusFaultKind::Drop, 0x181, can::kStandardIdMask,
                                       nanoseconds(0), nanoseconds::max(), 1});
     int late = 0;

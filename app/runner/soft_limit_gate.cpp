@@ -1,0 +1,58 @@
+#include "app/runner/soft_limit_gate.h"
+
+#include "core/base/translate.h"
+
+namespace kerf::app {
+
+SoftLimitGate::SoftLimitGate(const motion::MachineModel& model) : m_checker(model) {}
+
+void SoftLimitGate::start(const motion::AxisVector& tip, canon::Sink& machine) {
+    m_checker.setPosition(tip);
+    m_machine = &machine;
+}
+
+void SoftLimitGate::consume(const canon::Command& command) {
+    if (m_refusedAt) return;
+    // Until a sync point says otherwise, a probe move ends where it was programmed to.
+    if (m_checker.needsPosition()) m_checker.setPosition(m_checker.position());
+    if (!m_checker.add(command)) {
+        m_refusedAt = command.location;
+        return;
+    }
+    while (m_checker.next()) {
+    }
+    m_held.push_back(command);
+    if (m_held.size() >= kMaxHeldCommands) release();
+}
+
+void SoftLimitGate::release() {
+    if (m_machine == nullptr || m_refusedAt) return;
+    for (const canon::Command& command : m_held)
+        m_machine->consume(command);
+    m_held.clear();
+}
+
+void SoftLimitGate::resumeAt(const motion::AxisVector& tip) {
+    m_checker.flush();
+    while (m_checker.next()) {
+    }
+    m_checker.setPosition(tip);
+}
+
+DiagnosticList SoftLimitGate::refusal(const std::string& file, bool originAtMachineOrigin) const {
+    DiagnosticList list;
+    if (!m_refusedAt) return list;
+    for (Diagnostic d : m_checker.diagnostics()) {
+        d.file = file;
+        const bool softLimit = d.code == "motion.soft-limit";
+        Diagnostic hint = Diagnostic::make(
+            Severity::Note, "motion.work-offset", d.file, d.line, d.column,
+            KERF_TR_NOOP("the workpiece origin is at the machine origin; give its machine "
+                         "coordinates with --work-offset, e.g. Z-300"));
+        list.push_back(std::move(d));
+        if (softLimit && originAtMachineOrigin) list.push_back(std::move(hint));
+    }
+    return list;
+}
+
+}  // namespace kerf::app
