@@ -7,9 +7,13 @@ seconds=${1:-600}
 target=${2:-klartext}
 sudo=""
 [[ $(id -u) -eq 0 ]] || sudo="sudo"
-dpkg-query -W clang-14 libclang-rt-14-dev >/dev/null 2>&1 ||
+if ! dpkg-query -W clang-14 libclang-rt-14-dev >/dev/null 2>&1; then
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -q
   $sudo apt-get install -y -q --no-install-recommends clang-14 libclang-rt-14-dev
+fi
 cd "$root"
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target "fuzz_$target"
 # Seeds: the golden programs of the dialect (each case's program.*), named after their case.

@@ -1,5 +1,5 @@
-// What every fuzz target shares: a sink that drops commands, a sandbox folder per target, and a
-// bounded run that answers every sync with the nominal position.
+// What every fuzz target shares: a sink that checks every command and drops it, a sandbox folder
+// per target, and a bounded run that answers every sync with the nominal position.
 #pragma once
 
 #include <cstdint>
@@ -7,13 +7,18 @@
 #include <string>
 
 #include "core/canon/commands.h"
+#include "core/canon/value_limits.h"
 #include "core/interp/interpreter.h"
 
 namespace kerf::fuzz {
 
-class NullSink final : public canon::Sink {
+// The interpreters promise that no command carries a non-finite or out-of-range number (the
+// planner's soft-limit check relies on it): a command that does is a finding, reported as a crash.
+class CheckingSink final : public canon::Sink {
 public:
-    void consume(const canon::Command&) override {}
+    void consume(const canon::Command& command) override {
+        if (canon::findUnsafeValue(command.body)) __builtin_trap();
+    }
 };
 
 // A folder in the temporary directory that programs may read and write.
@@ -25,7 +30,7 @@ inline std::filesystem::path sandbox(const std::string& name) {
 
 // Runs at most `budget` blocks.
 inline void runBounded(interp::Interpreter& interpreter, uint64_t budget) {
-    NullSink sink;
+    CheckingSink sink;
     constexpr uint64_t kSlice = 1000;
     while (budget > 0) {
         auto status = interpreter.run(sink, kSlice);
