@@ -205,11 +205,8 @@ void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
         PointJerkTerms termsBefore = jerkTermsAt(b.geometry, b.geometry.length, before.limits);
         PointJerkTerms termsAfter = jerkTermsAt(e.geometry, 0.0, entry.limits);
         size_t k = i - begin;
-        double cap =
+        entry.stepCap =
             m_steps.cap(m_model, k, m_runFirst[k], m_runLast[k], termsBefore, termsAfter, v);
-        // A step that fits at the caps of both elements and the feed adds no limit of its own
-        // (else equal limits along a run would each have to be met with a = 0).
-        if (cap < v) entry.stepCap = cap;
     }
 }
 
@@ -231,11 +228,11 @@ void Lookahead::markReachable(size_t first, size_t last) {
             anchorS = e.sStart;
             anchorV = i == first ? limit
                                  : (isElement(i - 1) && !m_entries[i - 1].stopAfter ? limit : 0.0);
-        } else if (limit >= m_entries[i - 1].cap ||
+        } else if (limit >= std::min(m_entries[i - 1].cap, maxVelocity(m_entries[i - 1])) ||
                    limit >= brakingEnvelope(e.sStart - anchorS, anchorV, entry.limits)) {
-            // The servo cycle keeps the element before at or below its cap (its target
-            // velocity there), or it cannot accelerate that far: the motion never passes this
-            // limit.
+            // The servo cycle keeps the element before at or below its cap and its feed (its
+            // target velocity there; equal limits along a run), or it cannot accelerate that
+            // far: the motion never passes this limit.
             entry.outOfReach = true;
         } else {
             anchorS = e.sStart;

@@ -17,8 +17,10 @@
 // defines the braking envelope E(d) (braking_envelope.h). A boundary whose limit v_b lies below
 // E is binding: it becomes the anchor with min(v_b, maxRestingVelocity(d, v_m)). A servo
 // trajectory that can still meet the anchor stays under E, so the boundaries above E need no
-// check: the servo cycle looks at one point ahead only. Boundaries where the tangential limits
-// change, the programmed feed drops or the motion stops are always binding.
+// check: the servo cycle looks at one point ahead only. Nor does a boundary whose limit is at or
+// above the cap or the highest feed of the element before (the servo cycle's target there).
+// Boundaries where the tangential limits change, the programmed feed drops or the motion stops
+// are always binding.
 namespace kerf::motion {
 
 class Lookahead {

@@ -329,21 +329,31 @@ void ServoCycle::chooseSingleBlockStop() noexcept {
     }
 }
 
+double ServoCycle::targetVelocity(const PathElement& e) const noexcept {
+    if (m_hold || m_stopping || m_probeTriggered) return 0.0;
+    return std::min(e.capVelocity, liveFeed(e.feedKind, e.feed));
+}
+
 void ServoCycle::stepPath() noexcept {
     chooseSingleBlockStop();
     // Within one period the interpolator may pass any number of elements, and it never drops
     // time on the way (a stall inside a period becomes an acceleration spike after the filter):
-    // where it passes the end of an element it re-plans the rest of the period with the next
-    // element's target, limits and constraints. O(1) per element passed; at most the queue.
+    // where it passes the end of an element whose successor changes the target, the limits or
+    // the constraints (a binding point), it re-plans the rest of the period from there; across
+    // the other ends the plan goes on. O(1) per element passed; at most the queue.
     double remaining = m_dt;
     size_t index = 0;
     std::array<Constraint, kLookItems + 2> constraints{};
+    Profile plan;
+    bool planned = false;
     for (;;) {
         const PathElement& e = m_items.peek(index).element;
-        size_t count = collectConstraints(index, constraints);
-        double target = std::min(e.capVelocity, liveFeed(e.feedKind, e.feed));
-        if (m_hold || m_stopping || m_probeTriggered) target = 0.0;
-        Profile plan = m_gen.plan(remaining, target, e.limits, {constraints.data(), count});
+        double target = targetVelocity(e);
+        if (!planned) {
+            size_t count = collectConstraints(index, constraints);
+            plan = m_gen.plan(remaining, target, e.limits, {constraints.data(), count});
+            planned = true;
+        }
         MotionState end = plan.at(remaining);
         bool nextElement =
             index + 1 < m_items.size() && m_items.peek(index + 1).kind == MotionItem::Kind::Element;
@@ -356,6 +366,11 @@ void ServoCycle::stepPath() noexcept {
             m_gen.setState(end);
             break;
         }
+        const PathElement& next = m_items.peek(index + 1).element;
+        bool samePlan = e.bindS > e.sEnd() + 1e-12 && next.limits.accel == e.limits.accel &&
+                        next.limits.jerk == e.limits.jerk && targetVelocity(next) == target;
+        ++index;
+        if (samePlan) continue;
         double lo = 0.0;
         double hi = remaining;
         for (int k = 0; k < 48; ++k) {
@@ -369,7 +384,7 @@ void ServoCycle::stepPath() noexcept {
         at.s = e.sEnd();
         m_gen.setState(at);
         remaining -= hi;
-        ++index;
+        planned = false;
     }
     if (m_gen.state().v < 0.0 && m_gen.state().v > -1e-9)
         m_gen.setState({m_gen.state().s, 0.0, m_gen.state().a});

@@ -77,6 +77,8 @@ private:
     void abortProgram() noexcept;
     void stopSpindleAndCoolant() noexcept;
     double liveFeed(FeedKind kind, double feed) const noexcept;
+    // What the interpolator moves towards on element e: its cap and live feed, 0 when stopping.
+    double targetVelocity(const PathElement& e) const noexcept;
     void emit(MotionEventKind kind, int joint, double value, const AxisVector& position) noexcept;
     AxisVector actualTip() const noexcept;
     bool filterSettled() const noexcept { return m_filter.settled(); }
