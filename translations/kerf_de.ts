@@ -159,6 +159,17 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::MachineKeys</name>
+    <message>
+        <source>Machine on</source>
+        <translation>Maschine ein</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP</source>
+        <translation>NOT-AUS</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineSession</name>
     <message>
         <source>The machine is busy: stop the program or wait until the axes stand still</source>
@@ -179,6 +190,14 @@
     <message>
         <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
         <translation>Der Bezugspunkt konnte nicht in PRESET.PR gespeichert werden; das nächste Programm verwendet wieder den Bezugspunkt aus der Tabelle: %1</translation>
+    </message>
+    <message>
+        <source>The machine is off (emergency stop or drive fault): switch it on with Machine on</source>
+        <translation>Die Maschine ist aus (Not-Aus oder Antriebsfehler): mit Maschine ein einschalten</translation>
+    </message>
+    <message>
+        <source>The machine is on already</source>
+        <translation>Die Maschine ist bereits eingeschaltet</translation>
     </message>
 </context>
 <context>

@@ -159,6 +159,17 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::MachineKeys</name>
+    <message>
+        <source>Machine on</source>
+        <translation>Máquina en marcha</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP</source>
+        <translation>PARADA DE EMERGENCIA</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineSession</name>
     <message>
         <source>The machine is busy: stop the program or wait until the axes stand still</source>
@@ -179,6 +190,14 @@
     <message>
         <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
         <translation>No se pudo guardar el punto de referencia en PRESET.PR; el próximo programa volverá a usar el punto de referencia de la tabla: %1</translation>
+    </message>
+    <message>
+        <source>The machine is off (emergency stop or drive fault): switch it on with Machine on</source>
+        <translation>La máquina está apagada (parada de emergencia o fallo de accionamiento): póngala en marcha con Máquina en marcha</translation>
+    </message>
+    <message>
+        <source>The machine is on already</source>
+        <translation>La máquina ya está en marcha</translation>
     </message>
 </context>
 <context>

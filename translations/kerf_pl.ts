@@ -160,6 +160,17 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::MachineKeys</name>
+    <message>
+        <source>Machine on</source>
+        <translation>Maszyna wł.</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP</source>
+        <translation>STOP AWARYJNY</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineSession</name>
     <message>
         <source>The machine is busy: stop the program or wait until the axes stand still</source>
@@ -180,6 +191,14 @@
     <message>
         <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
         <translation>Nie można zapisać punktu odniesienia w PRESET.PR, więc następny program użyje ponownie punktu odniesienia z tabeli: %1</translation>
+    </message>
+    <message>
+        <source>The machine is off (emergency stop or drive fault): switch it on with Machine on</source>
+        <translation>Maszyna jest wyłączona (stop awaryjny lub błąd napędu): włącz ją przyciskiem Maszyna wł.</translation>
+    </message>
+    <message>
+        <source>The machine is on already</source>
+        <translation>Maszyna jest już włączona</translation>
     </message>
 </context>
 <context>

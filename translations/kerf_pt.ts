@@ -159,6 +159,17 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::MachineKeys</name>
+    <message>
+        <source>Machine on</source>
+        <translation>Máquina ligada</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP</source>
+        <translation>PARADA DE EMERGÊNCIA</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineSession</name>
     <message>
         <source>The machine is busy: stop the program or wait until the axes stand still</source>
@@ -179,6 +190,14 @@
     <message>
         <source>The preset could not be saved in PRESET.PR, so the next program uses the table&apos;s preset again: %1</source>
         <translation>Não foi possível guardar o ponto de referência em PRESET.PR; o próximo programa volta a usar o ponto de referência da tabela: %1</translation>
+    </message>
+    <message>
+        <source>The machine is off (emergency stop or drive fault): switch it on with Machine on</source>
+        <translation>A máquina está desligada (parada de emergência ou falha de acionamento): ligue-a com Máquina ligada</translation>
+    </message>
+    <message>
+        <source>The machine is on already</source>
+        <translation>A máquina já está ligada</translation>
     </message>
 </context>
 <context>

@@ -39,6 +39,12 @@ public:
     virtual void cycleStart() = 0;
     virtual void feedHold() = 0;
     virtual void quickStop() = 0;  // stop on the path and discard what is queued
+    // Emergency stop: the drives stop by themselves and are disabled, the program is aborted,
+    // the spindle and the coolant go off. machineOn() enables the drives again (after an
+    // emergency stop or a drive fault); false when there is nothing to switch on. The defaults
+    // suit a port without a machine.
+    virtual void emergencyStop() {}
+    virtual bool machineOn() { return false; }
     virtual void setSingleBlock(bool on) = 0;
 
     // What the HMI needs beyond a program run. The defaults suit a port without a machine

@@ -29,6 +29,8 @@ public:
     void cycleStart() override { m_machine->cycleStart(); }
     void feedHold() override { m_machine->feedHold(); }
     void quickStop() override { m_machine->quickStop(); }
+    void emergencyStop() override { m_machine->emergencyStop(); }
+    bool machineOn() override { return m_machine->machineOn(); }
     void setSingleBlock(bool on) override { m_machine->setSingleBlock(on); }
 
     void setFeedOverride(double fraction) override { m_machine->setFeedOverride(fraction); }

@@ -276,6 +276,20 @@ void RealtimeMotionPort::quickStop() {
         m_programmedRpm = 0.0;
 }
 
+void RealtimeMotionPort::emergencyStop() {
+    m_machine->command({OperatorCommandKind::EmergencyStop});
+    m_replan = true;
+    m_programmedRpm = 0.0;
+    m_fault = "emergency stop";
+}
+
+bool RealtimeMotionPort::machineOn() {
+    const MotionMode mode = m_machine->status().mode;
+    if (mode != MotionMode::EmergencyStop && mode != MotionMode::Fault) return false;
+    m_fault.clear();
+    return m_machine->command({OperatorCommandKind::Reset});
+}
+
 void RealtimeMotionPort::setSingleBlock(bool on) {
     m_singleBlock = on;
     OperatorCommand c{OperatorCommandKind::SingleBlock};

@@ -35,6 +35,8 @@ public:
     void cycleStart() override;
     void feedHold() override;
     void quickStop() override;
+    void emergencyStop() override;
+    bool machineOn() override;
     void setSingleBlock(bool on) override;
 
     void setFeedOverride(double fraction) override;

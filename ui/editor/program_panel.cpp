@@ -84,6 +84,7 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
             });
     connect(m_loader, &ProgramLoader::failed, this, [this](const Diagnostic& error) {
         m_editor->setReadOnly(false);
+        checkNow();  // the program shown stays: its diagnostics come back
         emit message(Severity::Error, translatedMessage(error) + QStringLiteral(" (") +
                                           QString::fromStdString(error.file) + ')');
         refreshTitle();
@@ -117,13 +118,13 @@ void ProgramPanel::forgetDiagnostics() {
 bool ProgramPanel::open(const std::filesystem::path& path) {
     if (loading() || m_editor->renumbering() || m_writer->busy()) return false;
     m_saveAfterRenumber = false;
-    // The diagnostics are about the text being replaced.
-    forgetDiagnostics();
     std::error_code sizeError;
     const uintmax_t size = std::filesystem::file_size(path, sizeError);
     m_editor->setDialect(program::dialectForFile(path.string(), isLathe(m_settings.machine)));
     if (!sizeError && size >= m_settings.backgroundLoadBytes) {
         m_editor->setReadOnly(true);
+        // The diagnostics are about the text being replaced.
+        forgetDiagnostics();
         m_title->setText(tr("Loading %1 ...").arg(fileText(path.filename())));
         m_loader->load(path);
         return true;
@@ -134,6 +135,7 @@ bool ProgramPanel::open(const std::filesystem::path& path) {
                      translatedMessage(file.error()) + QStringLiteral(" (") + fileText(path) + ')');
         return false;
     }
+    forgetDiagnostics();
     m_file = std::move(*file);
     m_loading = true;
     m_editor->setPlainText(m_file.text);

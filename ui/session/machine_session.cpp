@@ -42,6 +42,14 @@ bool MachineSession::busy() const {
 
 bool MachineSession::refuseWhenBusy() {
     if (!busy() && m_status.state == task::MachineState::Idle) return false;
+    if (m_status.state == task::MachineState::EmergencyStop ||
+        m_status.state == task::MachineState::Fault) {
+        emit message(Severity::Error,
+                     tr("The machine is off (emergency stop or drive fault): switch it on with "
+                        "Machine on"),
+                     0);
+        return true;
+    }
     emit message(Severity::Error,
                  tr("The machine is busy: stop the program or wait until the axes stand still"), 0);
     return true;
@@ -117,6 +125,18 @@ void MachineSession::stop() {
     // Also without a program: the stop ends a jog or a reference run and turns the spindle and
     // the coolant off (a second stop while a program's stop is under way changes nothing).
     m_motion->quickStop();
+}
+
+void MachineSession::emergencyStop() {
+    m_motion->emergencyStop();
+    m_run->abort();
+    service();
+}
+
+bool MachineSession::machineOn() {
+    if (m_motion->machineOn()) return true;
+    emit message(Severity::Warning, tr("The machine is on already"), 0);
+    return false;
 }
 
 void MachineSession::setSingleBlock(bool on) {

@@ -66,6 +66,12 @@ public:
     // Stops on the path and aborts the program; in every state the machine then returns to
     // idle, with the spindle and the coolant off.
     void stop();
+    // The emergency stop key (or the machine's input): the drives stop at once and are
+    // disabled, a program is aborted; nothing moves until machineOn().
+    void emergencyStop();
+    // Switches the machine on again after an emergency stop or a drive fault; false (and a
+    // message) when it is on already.
+    bool machineOn();
     void setSingleBlock(bool on);
     bool singleBlock() const { return m_singleBlock; }
 

@@ -73,6 +73,19 @@ MachineKeys::MachineKeys(ModeController& modes, QWidget* parent) : QWidget(paren
         layout->addWidget(key);
         m_programmingKeys.push_back(key);
     }
+    layout->addSpacing(16);
+    m_machineOn = makeModeKey(this, QStringLiteral("machineOn"));
+    m_machineOn->setCheckable(false);
+    connect(m_machineOn, &QPushButton::clicked, this, &MachineKeys::machineOnPressed);
+    layout->addWidget(m_machineOn);
+    m_emergencyStop = makeModeKey(this, QStringLiteral("emergencyStop"));
+    m_emergencyStop->setCheckable(false);
+    // Red and bold as the mushroom button on the machine; it never changes with the modes.
+    m_emergencyStop->setStyleSheet(
+        QStringLiteral("QPushButton { background: #c00000; color: white; font-weight: bold; "
+                       "border: 2px solid #600000; border-radius: 3px; }"));
+    connect(m_emergencyStop, &QPushButton::clicked, this, &MachineKeys::emergencyStopPressed);
+    layout->addWidget(m_emergencyStop);
     connect(&m_modes, &ModeController::modesChanged, this, &MachineKeys::refresh);
     retranslate();
 }
@@ -92,6 +105,8 @@ void MachineKeys::retranslate() {
     for (task::ProgrammingMode mode : kProgrammingModes) {
         programmingKey(mode)->setText(ModeController::programmingModeText(mode));
     }
+    m_machineOn->setText(wrapLabel(tr("Machine on")));
+    m_emergencyStop->setText(wrapLabel(tr("EMERGENCY STOP")));
     refresh();
 }
 
@@ -103,6 +118,9 @@ void MachineKeys::refresh() {
     for (task::ProgrammingMode mode : kProgrammingModes) {
         programmingKey(mode)->setChecked(mode == m_modes.programmingMode());
     }
+    // A programming station has no machine to stop or switch on.
+    m_machineOn->setVisible(m_modes.machineConnected());
+    m_emergencyStop->setVisible(m_modes.machineConnected());
 }
 
 }  // namespace kerf::ui

@@ -12,7 +12,8 @@ namespace kerf::ui {
 class ModeController;
 
 // The vertical column of mode keys beside the screen: the five machine modes and the two
-// programming modes, each a touch-sized key; the active modes are shown pressed.
+// programming modes, each a touch-sized key; the active modes are shown pressed. Below them, on a
+// machine, the red emergency stop key and Machine on.
 class MachineKeys : public QWidget {
     Q_OBJECT
 
@@ -21,7 +22,13 @@ public:
 
     QPushButton* machineKey(task::MachineMode mode) const;
     QPushButton* programmingKey(task::ProgrammingMode mode) const;
+    QPushButton* emergencyStopKey() const { return m_emergencyStop; }
+    QPushButton* machineOnKey() const { return m_machineOn; }
     void retranslate();
+
+signals:
+    void emergencyStopPressed();
+    void machineOnPressed();
 
 private:
     void refresh();
@@ -29,6 +36,8 @@ private:
     ModeController& m_modes;
     std::vector<QPushButton*> m_machineKeys;      // indexed by MachineMode
     std::vector<QPushButton*> m_programmingKeys;  // indexed by ProgrammingMode
+    QPushButton* m_emergencyStop = nullptr;
+    QPushButton* m_machineOn = nullptr;
 };
 
 }  // namespace kerf::ui

@@ -1,11 +1,13 @@
 // MainWindow's part for the machine: the session, the position display and the machine-mode
 // softkeys. Kept apart from main_window.cpp so the window stays a shell.
 #include <QCoreApplication>
+#include <QShortcut>
 
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/session/machine_session.h"
 #include "ui/shell/executing_block_follower.h"
+#include "ui/shell/machine_keys.h"
 #include "ui/shell/machine_rows.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/message_panel.h"
@@ -54,6 +56,13 @@ void MainWindow::connectSession() {
     connect(overrides, &OverrideControls::spindleOverrideChanged, m_session,
             &MachineSession::setSpindleOverride);
     new ExecutingBlockFollower(*m_session, *m_program, this);
+    connect(m_machineKeys, &MachineKeys::emergencyStopPressed, m_session,
+            &MachineSession::emergencyStop);
+    connect(m_machineKeys, &MachineKeys::machineOnPressed, m_session, &MachineSession::machineOn);
+    // The keyboard's Pause key is an emergency stop too, whatever has the focus.
+    auto* emergencyKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);
+    emergencyKey->setContext(Qt::ApplicationShortcut);
+    connect(emergencyKey, &QShortcut::activated, m_session, &MachineSession::emergencyStop);
     // The layout follows a change of mode; the operator's choice stands until the next one.
     connect(m_modes, &ModeController::modesChanged, this,
             [this, shown = std::optional<task::MachineMode>()]() mutable {

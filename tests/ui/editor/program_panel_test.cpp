@@ -257,5 +257,24 @@ TEST(ProgramPanel, MissingFileIsAMessageNotACrash) {
     EXPECT_EQ(spy.at(0).at(0).value<Severity>(), Severity::Error);
 }
 
+// Opening a file that cannot be read leaves the program shown as it was, its errors still
+// underlined and listed.
+TEST(ProgramPanel, AFailedOpenKeepsTheShownProgramsDiagnostics) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_failed_open");
+    writeFile(dir / "E.H", "0 BEGIN PGM E MM\n1 L Z+50 R0 FMAX\n2 BOGUS WORD\n3 END PGM E MM\n");
+    ProgramPanel panel(settingsIn(dir));
+    QSignalSpy diagnostics(&panel, &ProgramPanel::diagnosticsChanged);
+    ASSERT_TRUE(panel.open(dir / "E.H"));
+    ASSERT_TRUE(diagnostics.wait(10000));
+    ASSERT_TRUE(hasErrors(panel.diagnostics()));
+    diagnostics.clear();
+    EXPECT_FALSE(panel.open(dir / "NONE.H"));
+    EXPECT_EQ(diagnostics.count(), 0);
+    EXPECT_TRUE(hasErrors(panel.diagnostics()));
+    EXPECT_EQ(panel.editor()->extraSelections().size(), 1);
+    EXPECT_EQ(panel.path(), dir / "E.H");
+}
+
 }  // namespace
 }  // namespace kerf::ui

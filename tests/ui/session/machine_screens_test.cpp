@@ -1,6 +1,7 @@
 // The machine screens in the window: a program run shows the program following the executing
 // block next to the positions; Manual operation and the handwheel on the softkeys.
 #include <QFileSystemModel>
+#include <QPushButton>
 #include <QTreeView>
 #include <chrono>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/files/file_manager.h"
+#include "ui/shell/machine_keys.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/workspace.h"
@@ -140,6 +142,35 @@ TEST(MachineScreensFiles, TheTablesFilterIncludesTouchProbeTables) {
     auto* model = qobject_cast<QFileSystemModel*>(files.view()->model());
     ASSERT_NE(model, nullptr);
     EXPECT_TRUE(model->nameFilters().contains("*.tp"));
+}
+
+TEST_F(MachineScreens, TheEmergencyStopKeyStopsAProgramAndMachineOnSwitchesTheMachineOn) {
+    std::ofstream(dir / "E.H") << "0 BEGIN PGM E MM\n1 L X+40 Y+0 Z+0 R0 F600 M3\n"
+                                  "2 END PGM E MM\n";
+    ASSERT_TRUE(window->openProgram(dir / "E.H"));
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    MachineKeys* keys = window->machineKeys();
+    ASSERT_TRUE(keys->emergencyStopKey()->isVisibleTo(window.get()));
+    ASSERT_TRUE(keys->machineOnKey()->isVisibleTo(window.get()));
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    ASSERT_TRUE(processUntil([&] { return x() > 2.0; }));
+    MachineSession* session = window->session();
+    keys->emergencyStopKey()->click();
+    ASSERT_TRUE(processUntil(
+        [&] { return session->status().state == task::MachineState::EmergencyStop; }, 1s));
+    const double stoppedAt = x();
+    processUntil([] { return false; }, 200ms);
+    EXPECT_NEAR(x(), stoppedAt, 0.01) << "the axes move after the emergency stop";
+    EXPECT_LT(x(), 40.0);
+    EXPECT_FALSE(session->busy());
+    // NC start is refused until the machine is on again.
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    processUntil([] { return false; }, 100ms);
+    EXPECT_EQ(session->status().state, task::MachineState::EmergencyStop);
+    keys->machineOnKey()->click();
+    ASSERT_TRUE(
+        processUntil([&] { return session->status().state == task::MachineState::Idle; }, 2s));
+    EXPECT_TRUE(window->grab().save("emergency_stop_screen.png"));
 }
 
 }  // namespace

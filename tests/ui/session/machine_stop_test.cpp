@@ -23,7 +23,7 @@ using task::RunState;
 
 // The built-in mill on simulated drives in real time, the tool tip at 0 0 0 at start.
 class MachineStopTest : public testing::Test {
-protected:
+public:
     MachineStopTest() {
         test::testApp();
         config = *machine::loadMachine("mill");
@@ -131,100 +131,129 @@ TEST_F(MachineStopTest, StopWithoutAProgramTurnsSpindleAndCoolantOff) {
     EXPECT_EQ(status().programmedSpindleRpm, 0.0);
 }
 
-// Every state the session can reach, one after the other on the same machine: each is left by
-// Stop to ready, from where the next one is reached.
-TEST_F(MachineStopTest, StopLeavesEveryStateForReady) {
+struct ReachableState {
+    std::string state;
+    std::function<bool()> reach;  // true once the machine is in the state
+};
+
+// Every state the session can reach, each from ready.
+std::vector<ReachableState> reachableStates(MachineStopTest& t) {
+    MachineSession* session = t.session.get();
     const QString longMove = "0 BEGIN PGM L MM\n1 L X+40 Y+0 Z+0 R0 F1200 M3\n2 END PGM L MM\n";
-    const auto atX = [this](double x) {
-        return serviceUntil([this, x] { return std::fabs(nominal(Axis::X) - x) > 0.5; });
+    const auto atX = [&t](double x) {
+        return t.serviceUntil([&t, x] { return std::fabs(t.nominal(Axis::X) - x) > 0.5; });
     };
-    struct Case {
-        std::string state;
-        std::function<bool()> reach;
-    };
-    const std::vector<Case> cases = {
+    return {
         {"idle", [] { return true; }},
         {"running",
-         [&] {
-             return session->startProgram(longMove, "L.H") && atX(nominal(Axis::X)) &&
-                    status().state == MachineState::Running;
+         [=, &t] {
+             return session->startProgram(longMove, "L.H") && atX(t.nominal(Axis::X)) &&
+                    t.status().state == MachineState::Running;
          }},
         {"feed hold",
-         [&] {
-             if (!session->startProgram(longMove, "L.H") || !atX(nominal(Axis::X))) return false;
+         [=, &t] {
+             if (!session->startProgram(longMove, "L.H") || !atX(t.nominal(Axis::X))) return false;
              session->feedHold();
-             return serviceUntil([this] { return status().state == MachineState::Held; });
+             return t.serviceUntil([=, &t] { return t.status().state == MachineState::Held; });
          }},
         {"single-block stop",
-         [&] {
+         [=, &t] {
              session->setSingleBlock(true);
              const bool started = session->startProgram(kTwoBlocks, "T.H");
-             const bool stopped = started && serviceUntil([this] {
-                                      return status().state == MachineState::Stopped;
-                                  });
+             const bool stopped = started && t.serviceUntil([=, &t] {
+                 return t.status().state == MachineState::Stopped;
+             });
              session->setSingleBlock(false);
              return stopped;
          }},
         {"program stop M0",
-         [&] {
+         [=, &t] {
              return session->startProgram(
                         "0 BEGIN PGM M MM\n1 L X+2 Y+0 Z+0 R0 F6000 M3\n2 STOP\n"
                         "3 L X+4\n4 END PGM M MM\n",
                         "M.H") &&
-                    serviceUntil([this] { return session->runState() == RunState::Stopped; });
+                    t.serviceUntil([=, &t] { return session->runState() == RunState::Stopped; });
          }},
         {"MDI",
-         [&] {
-             return session->executeMdi("L X+30 R0 F1200") && atX(nominal(Axis::X)) &&
-                    status().state == MachineState::Running;
+         [=, &t] {
+             return session->executeMdi("L X+30 R0 F1200") && atX(t.nominal(Axis::X)) &&
+                    t.status().state == MachineState::Running;
          }},
         {"start at block",
-         [&] {
+         [=, &t] {
              return session->startProgram(
                         "0 BEGIN PGM S MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n"
                         "2 L X+5 R0 F1200 M3\n3 L X+30 R0 F1200\n"
                         "4 END PGM S MM\n",
                         "S.H", 4) &&
-                    serviceUntil([this] { return session->status().block.line == 4; });
+                    t.serviceUntil([=, &t] { return session->status().block.line == 4; });
          }},
         {"jog",
-         [&] {
+         [=, &t] {
              return session->jog(Axis::Y, 1) &&
-                    serviceUntil([this] { return status().state == MachineState::Jogging; });
+                    t.serviceUntil([=, &t] { return t.status().state == MachineState::Jogging; });
          }},
         {"jogged away from a held program",
-         [&] {
-             if (!session->startProgram(longMove, "L.H") || !atX(nominal(Axis::X))) return false;
+         [=, &t] {
+             if (!session->startProgram(longMove, "L.H") || !atX(t.nominal(Axis::X))) return false;
              session->feedHold();
-             if (!serviceUntil([this] { return status().state == MachineState::Held; }))
+             if (!t.serviceUntil([=, &t] { return t.status().state == MachineState::Held; }))
                  return false;
              return session->jogIncrement(Axis::Y, 5) &&
-                    serviceUntil([this] { return status().state == MachineState::Jogging; });
+                    t.serviceUntil([=, &t] { return t.status().state == MachineState::Jogging; });
          }},
         {"returning to the contour",
-         [&] {
-             if (!session->startProgram(longMove, "L.H") || !atX(nominal(Axis::X))) return false;
+         [=, &t] {
+             if (!session->startProgram(longMove, "L.H") || !atX(t.nominal(Axis::X))) return false;
              session->feedHold();
-             if (!serviceUntil([this] { return status().state == MachineState::Held; }) ||
+             if (!t.serviceUntil([=, &t] { return t.status().state == MachineState::Held; }) ||
                  !session->jogIncrement(Axis::Y, 20) ||
-                 !serviceUntil([this] { return status().state == MachineState::Jogging; }) ||
-                 !serviceUntil([this] { return status().state == MachineState::Held; }))
+                 !t.serviceUntil([=, &t] { return t.status().state == MachineState::Jogging; }) ||
+                 !t.serviceUntil([=, &t] { return t.status().state == MachineState::Held; }))
                  return false;
              session->cycleStart();
-             return serviceUntil([this] { return status().state == MachineState::Running; });
+             return t.serviceUntil([=, &t] { return t.status().state == MachineState::Running; });
          }},
         {"homing",
-         [&] {
+         [=, &t] {
              return session->homeAll() &&
-                    serviceUntil([this] { return status().state == MachineState::Homing; });
+                    t.serviceUntil([=, &t] { return t.status().state == MachineState::Homing; });
          }},
     };
-    for (const Case& c : cases) {
+}
+
+// One after the other on the same machine: each state is left by Stop to ready, from where the
+// next one is reached.
+TEST_F(MachineStopTest, StopLeavesEveryStateForReady) {
+    for (const ReachableState& c : reachableStates(*this)) {
         SCOPED_TRACE(c.state);
         ASSERT_TRUE(ready()) << "not ready before";
         ASSERT_TRUE(c.reach()) << "state not reached";
         ASSERT_TRUE(stopsToReady());
         EXPECT_TRUE(spindleAndCoolantOff());
+    }
+}
+
+// The same walk with the emergency stop: the drives stop at once, nothing is accepted until
+// Machine on, then the machine is ready.
+TEST_F(MachineStopTest, EmergencyStopLeavesEveryStateAndMachineOnReturnsToReady) {
+    for (const ReachableState& c : reachableStates(*this)) {
+        SCOPED_TRACE(c.state);
+        ASSERT_TRUE(ready()) << "not ready before";
+        ASSERT_TRUE(c.reach()) << "state not reached";
+        session->emergencyStop();
+        ASSERT_TRUE(
+            serviceUntil([this] { return status().state == MachineState::EmergencyStop; }, 500ms));
+        EXPECT_FALSE(session->busy());
+        EXPECT_EQ(status().actualSpindleRpm, 0.0);
+        EXPECT_FALSE(status().coolant);
+        EXPECT_FALSE(session->jogIncrement(Axis::X, 1));
+        EXPECT_FALSE(session->executeMdi("L X+0 R0 FMAX"));
+        // The simulated drives' own quick-stop ramp takes milliseconds.
+        serviceUntil([] { return false; }, 50ms);
+        ASSERT_TRUE(session->machineOn());
+        ASSERT_TRUE(serviceUntil([this] { return ready(); }, 2s));
+        EXPECT_FALSE(session->machineOn()) << "on twice";
     }
 }
 
