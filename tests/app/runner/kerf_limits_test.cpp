@@ -75,7 +75,8 @@ TEST_F(KerfLimits, DeepFormulasAreAnErrorNotAStackOverflow) {
         << r.errors;
 
     std::string minus(48000, '-');
-    const fs::path signs = write("signs.H", "0 BEGIN PGM A MM\n1 Q1 = " + minus + "1\n2 END PGM A MM\n");
+    const fs::path signs =
+        write("signs.H", "0 BEGIN PGM A MM\n1 Q1 = " + minus + "1\n2 END PGM A MM\n");
     r = kerf("check " + quoted(signs));
     EXPECT_EQ(r.exitCode, 1) << r.errors;
     EXPECT_NE(r.errors.find("signs.H:2:264: error: a formula may nest"), std::string::npos)
@@ -99,7 +100,7 @@ TEST_F(KerfLimits, TheDefaultBlockGuardStopsAnEndlessLoopInSeconds) {
     Result r = kerf("run " + quoted(loop), 60);
     EXPECT_EQ(r.exitCode, 1) << r.errors;
     EXPECT_NE(r.errors.find("endless loop? (--max-blocks)"), std::string::npos) << r.errors;
-    EXPECT_LT(r.seconds, 15.0);
+    EXPECT_LT(r.seconds, 30.0);  // about 2 s on an idle machine; before: 346 s
 }
 
 // 1M blank lines on the lathe with --report: one error each, 2 GB of diagnostics.
@@ -142,7 +143,8 @@ TEST_F(KerfLimits, TheReportIsWrittenWhateverBytesTheProgramHolds) {
     EXPECT_EQ(r.exitCode, 1) << r.errors;
     EXPECT_EQ(nlohmann::json::parse(read(report))["ok"], false);
 
-    const fs::path badName = write("bad\xffname.H", "0 BEGIN PGM A MM\n1 L X+1 QQ\n2 END PGM A MM\n");
+    const fs::path badName =
+        write("bad\xffname.H", "0 BEGIN PGM A MM\n1 L X+1 QQ\n2 END PGM A MM\n");
     const fs::path report2 = dir / "r2.json";
     r = kerf("run " + quoted(badName) + " --report " + quoted(report2));
     EXPECT_EQ(r.exitCode, 1) << r.errors;
