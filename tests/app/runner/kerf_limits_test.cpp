@@ -101,6 +101,10 @@ TEST_F(KerfLimits, TheDefaultBlockGuardStopsAnEndlessLoopInSeconds) {
     EXPECT_EQ(r.exitCode, 1) << r.errors;
     EXPECT_NE(r.errors.find("endless loop? (--max-blocks)"), std::string::npos) << r.errors;
     EXPECT_LT(r.seconds, 30.0);  // about 2 s on an idle machine; before: 346 s
+    // The same guard under the drive chain.
+    r = kerf("run " + quoted(loop) + " --drives can-sim", 60);
+    EXPECT_EQ(r.exitCode, 1) << r.errors;
+    EXPECT_NE(r.errors.find("stopped after 10000000 blocks"), std::string::npos) << r.errors;
 }
 
 // 1M blank lines on the lathe with --report: one error each, 2 GB of diagnostics.
