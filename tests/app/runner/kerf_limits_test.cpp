@@ -125,6 +125,15 @@ TEST_F(KerfLimits, DiagnosticsAreCappedWithACount) {
     r = kerf("check " + quoted(blank) + " --machine lathe");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.errors.find("kerf: error: and 999000 more diagnostics\n"), std::string::npos);
+    // The same for a million bad TNC blocks.
+    std::string bad = "0 BEGIN PGM A MM\n";
+    for (int i = 0; i < 1000000; ++i)
+        bad += "QQ\n";
+    const fs::path tnc = write("bad.H", bad + "1000001 END PGM A MM\n");
+    r = kerf("check " + quoted(tnc));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.errors.find("kerf: error: and 999000 more diagnostics\n"), std::string::npos)
+        << r.errors.substr(r.errors.size() > 300 ? r.errors.size() - 300 : 0);
 }
 
 // 200k lines with CR line ends: 13.5 s (LF: 0.04 s).
