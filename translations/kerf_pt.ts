@@ -5229,6 +5229,38 @@ ciclo</translation>
         <source>the test run stopped after {1} blocks: endless loop?</source>
         <translation>o teste do programa parou após {1} blocos: ciclo infinito?</translation>
     </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>e mais {1} diagnósticos</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>overflow: o resultado de &apos;{1}&apos; é grande demais</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>uma expressão pode aninhar no máximo {1} níveis</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: o valor é grande demais (overflow)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} não contém um número finito</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>uma fórmula pode aninhar no máximo {1} níveis</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>uma string pode ter no máximo {1} caracteres, não {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} está fora da faixa do comando (no máximo {3})</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
