@@ -5256,6 +5256,38 @@ editieren</translation>
         <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
         <translation>&apos;{1}&apos; ist ein Link: Kerf schreibt nicht über Links</translation>
     </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>und {1} weitere Meldungen</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>Überlauf: das Ergebnis von &apos;{1}&apos; ist zu groß</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>ein Ausdruck darf höchstens {1} Ebenen tief verschachtelt sein</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: der Wert ist zu groß (Überlauf)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} enthält keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>eine Formel darf höchstens {1} Ebenen tief verschachtelt sein</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>ein String darf höchstens {1} Zeichen enthalten, nicht {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} liegt außerhalb des Bereichs der Steuerung (höchstens {3})</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

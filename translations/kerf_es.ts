@@ -5256,6 +5256,38 @@ ciclo</translation>
         <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
         <translation>&apos;{1}&apos; es un enlace: Kerf no escribe a través de enlaces</translation>
     </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>y {1} diagnósticos más</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>desbordamiento: el resultado de &apos;{1}&apos; es demasiado grande</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>una expresión puede anidarse como máximo {1} niveles</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: el valor es demasiado grande (desbordamiento)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} no contiene un número finito</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>una fórmula puede anidarse como máximo {1} niveles</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>una cadena puede tener como máximo {1} caracteres, no {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} está fuera del rango del control (como máximo {3})</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -5259,6 +5259,38 @@ cykl</translation>
         <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
         <translation>&apos;{1}&apos; jest dowiązaniem: Kerf nie zapisuje przez dowiązania</translation>
     </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>i {1} dalszych komunikatów</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>przepełnienie: wynik &apos;{1}&apos; jest za duży</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>wyrażenie może mieć najwyżej {1} poziomów zagnieżdżenia</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: wartość jest za duża (przepełnienie)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} nie zawiera liczby skończonej</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>formuła może mieć najwyżej {1} poziomów zagnieżdżenia</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>łańcuch może mieć najwyżej {1} znaków, a nie {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} jest poza zakresem sterowania (najwyżej {3})</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

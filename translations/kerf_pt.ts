@@ -5256,6 +5256,38 @@ ciclo</translation>
         <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
         <translation>&apos;{1}&apos; é uma ligação: o Kerf não escreve através de ligações</translation>
     </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>e mais {1} diagnósticos</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>overflow: o resultado de &apos;{1}&apos; é grande demais</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>uma expressão pode aninhar no máximo {1} níveis</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: o valor é grande demais (overflow)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} não contém um número finito</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>uma fórmula pode aninhar no máximo {1} níveis</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>uma string pode ter no máximo {1} caracteres, não {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} está fora da faixa do comando (no máximo {3})</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -53,8 +53,8 @@ std::string_view LineReader::readPhysical(bool& continued) {
         // Remembered: in a file with CR line ends alone, searching for LF on every line would
         // scan the rest of the file each time.
         const void* lf = std::memchr(begin, '\n', left);
-        m_nextLf = lf ? static_cast<size_t>(static_cast<const char*>(lf) - m_text.data())
-                      : m_text.size();
+        m_nextLf =
+            lf ? static_cast<size_t>(static_cast<const char*>(lf) - m_text.data()) : m_text.size();
     }
     const bool newline = m_nextLf < m_text.size();
     size_t length = m_nextLf - m_offset;

@@ -367,15 +367,18 @@ TEST(SoftLimits, NonFiniteAndHugeNumbersAreRefusedBeforeAnythingMoves) {
     arcAboutNan.sweepRad = kPi;
     arcAboutNan.feed = 3000.0;
     const std::vector<canon::CommandBody> bad = {
-        canon::RapidMove{at(inf, 0, 0)},       canon::RapidMove{at(nan, 0, 0)},
-        canon::RapidMove{at(1e200, 0, 0)},     canon::LinearMove{at(10, 0, 0), nan},
-        canon::LinearMove{at(0, -inf, 0), 1.0}, arcAboutNan,
+        canon::RapidMove{at(inf, 0, 0)},
+        canon::RapidMove{at(nan, 0, 0)},
+        canon::RapidMove{at(1e200, 0, 0)},
+        canon::LinearMove{at(10, 0, 0), nan},
+        canon::LinearMove{at(0, -inf, 0), 1.0},
+        arcAboutNan,
         canon::Dwell{nan},
     };
     for (const canon::CommandBody& body : bad) {
-        TestRun run = runCommands(
-            millConfig(), {cmd(canon::LinearMove{at(5, 0, 0), 3000.0}, 1), cmd(body, 2)}, Pose{},
-            {});
+        TestRun run =
+            runCommands(millConfig(),
+                        {cmd(canon::LinearMove{at(5, 0, 0), 3000.0}, 1), cmd(body, 2)}, Pose{}, {});
         ASSERT_TRUE(run.report.refused) << body.index();
         ASSERT_FALSE(run.report.diagnostics.empty());
         EXPECT_EQ(run.report.diagnostics[0].code, "motion.unsafe-value");

@@ -251,9 +251,11 @@ void FagorInterpreter::outputValuesOk() {
 
 void FagorInterpreter::reportRemovedLoops() {
     for (const SourceLocation& at : m_compensation.takeRemovedLoops()) {
-        appendDiagnostic(m_diagnostics, Diagnostic::make(
-            Severity::Warning, "collision", m_sources.path(at.fileId), at.line, at.column,
-            KERF_TR_NOOP("collision detection removed a loop of the compensated path")));
+        appendDiagnostic(
+            m_diagnostics,
+            Diagnostic::make(
+                Severity::Warning, "collision", m_sources.path(at.fileId), at.line, at.column,
+                KERF_TR_NOOP("collision detection removed a loop of the compensated path")));
     }
 }
 

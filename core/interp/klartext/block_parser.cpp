@@ -527,8 +527,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 }
                 // Written so that NaN is out of range too.
                 const bool inRange = rep >= 0.0 && rep <= 65534.0;
-                if (!inRange &&
-                    !c.valueError(KERF_TR_NOOP("REP must be between 0 and 65534"))) {
+                if (!inRange && !c.valueError(KERF_TR_NOOP("REP must be between 0 and 65534"))) {
                     return false;
                 }
                 b.repeat = inRange ? static_cast<int>(rep) : 0;

@@ -105,8 +105,7 @@ std::optional<double> FormulaParser::domainCheck(double value, const char* what)
     return fail("math", KERF_TR_NOOP("{1} is not defined for this value"), {what});
 }
 
-std::optional<double> FormulaParser::overflowCheck(double value, size_t operatorOffset,
-                                                  char op) {
+std::optional<double> FormulaParser::overflowCheck(double value, size_t operatorOffset, char op) {
     if (std::isfinite(value)) return value;
     m_cursor.setPosition(operatorOffset);
     return fail("overflow", KERF_TR_NOOP("overflow: the result of '{1}' is too large"),

@@ -96,9 +96,9 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
     std::string error;
     ProgramFile* program = loadProgram(path, &error, mode == CheckMode::Inline);
     if (program == nullptr) {
-        appendDiagnostic(m_diagnostics, Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
-                                                 KERF_TR_NOOP("cannot read the program: {1}"),
-                                                 error));
+        appendDiagnostic(m_diagnostics,
+                         Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
+                                          KERF_TR_NOOP("cannot read the program: {1}"), error));
         return false;
     }
     m_diagnosticsAtLoad = m_diagnostics.size();
@@ -163,14 +163,15 @@ Diagnostic KlartextInterpreter::diagnosticAt(Severity severity, const char* code
 
 void KlartextInterpreter::fail(const char* code, const char* messageTemplate,
                                std::vector<std::string> args) {
-    appendDiagnostic(m_diagnostics, diagnosticAt(Severity::Error, code, messageTemplate, std::move(args)));
+    appendDiagnostic(m_diagnostics,
+                     diagnosticAt(Severity::Error, code, messageTemplate, std::move(args)));
     m_status = interp::RunStatus::Failed;
 }
 
 void KlartextInterpreter::warn(const char* code, const char* messageTemplate,
                                std::vector<std::string> args) {
-    appendDiagnostic(m_diagnostics, 
-        diagnosticAt(Severity::Warning, code, messageTemplate, std::move(args)));
+    appendDiagnostic(m_diagnostics,
+                     diagnosticAt(Severity::Warning, code, messageTemplate, std::move(args)));
 }
 
 bool KlartextInterpreter::checkPathError(const std::optional<interp::PathError>& error) {
@@ -322,7 +323,8 @@ void KlartextInterpreter::finish(bool emitEnd, int mCode) {
         m_endEmitted = true;
     }
     if (m_q.remanentChanged() && !m_settings.remanentFile.empty()) {
-        if (auto error = m_q.saveRemanent(m_settings.remanentFile)) appendDiagnostic(m_diagnostics, *error);
+        if (auto error = m_q.saveRemanent(m_settings.remanentFile))
+            appendDiagnostic(m_diagnostics, *error);
     }
     if (m_status != interp::RunStatus::Failed) m_status = interp::RunStatus::Finished;
 }

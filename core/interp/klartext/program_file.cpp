@@ -91,7 +91,7 @@ void checkProgram(ProgramFile& program) {
             Diagnostic d = Diagnostic::make(Severity::Error, p.code, file, line.lineAt(p.offset),
                                             line.columnAt(p.offset), p.messageTemplate);
             d.args = p.args;
-            out.push_back(std::move(d));
+            appendDiagnostic(out, std::move(d));
             firstBlock = false;
             continue;
         }

@@ -8,7 +8,8 @@ namespace kerf::interp {
 std::optional<PathError> unsafeValueError(const canon::Command& command) {
     const auto unsafe = canon::findUnsafeValue(command.body);
     if (!unsafe) return std::nullopt;
-    return PathError{command.location, "range",
+    return PathError{command.location,
+                     "range",
                      KERF_TR_NOOP("{1} = {2} is outside the range of the control (at most {3})"),
                      {unsafe->quantity, canon::describeValue(unsafe->value),
                       canon::describeValue(canon::kMaxStreamMagnitude)}};

@@ -17,8 +17,12 @@ TEST(RunReport, BytesThatAreNotUtf8BecomeReplacementCharacters) {
     EXPECT_EQ(back["diagnostics"][0]["file"], "bad\xef\xbf\xbdname.H");
     EXPECT_EQ(back["diagnostics"][0]["message"], "unexpected '\xef\xbf\xbd'");
     // Valid UTF-8 passes unchanged.
-    report["text"] = "Z\xc3\xbc" "rich";
-    EXPECT_EQ(nlohmann::json::parse(reportText(report))["text"], "Z\xc3\xbc" "rich");
+    report["text"] =
+        "Z\xc3\xbc"
+        "rich";
+    EXPECT_EQ(nlohmann::json::parse(reportText(report))["text"],
+              "Z\xc3\xbc"
+              "rich");
 }
 
 }  // namespace

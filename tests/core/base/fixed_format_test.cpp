@@ -1,12 +1,12 @@
 #include "core/base/fixed_format.h"
 
-#include <gtest/gtest.h>
-
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace kerf {
 namespace {
@@ -39,9 +39,23 @@ std::string printed(double value, int decimals) {
 
 TEST(FixedFormat, EveryMagnitudeMatchesTheCLibrary) {
     // Above 1e63 the old code appended 64 bytes of an uninitialised buffer.
-    const double values[] = {1e63,     -1e63,    1.5e64,  1e100,   -1e200,   1e300,
-                             DBL_MAX,  -DBL_MAX, 9e15,    -9.1e15, 1e-300,   -1e-300,
-                             DBL_MIN,  -DBL_MIN, 4.9e-324, 2.5e17, -123456789012345678.0};
+    const double values[] = {1e63,
+                             -1e63,
+                             1.5e64,
+                             1e100,
+                             -1e200,
+                             1e300,
+                             DBL_MAX,
+                             -DBL_MAX,
+                             9e15,
+                             -9.1e15,
+                             1e-300,
+                             -1e-300,
+                             DBL_MIN,
+                             -DBL_MIN,
+                             4.9e-324,
+                             2.5e17,
+                             -123456789012345678.0};
     for (const double value : values) {
         for (int decimals = 0; decimals <= 9; ++decimals) {
             EXPECT_EQ(formatFixed(value, decimals), printed(value, decimals))

@@ -25,9 +25,10 @@ std::vector<double> numbersOf(const std::string& line) {
     std::vector<double> out;
     const char* p = line.c_str();
     while (*p != '\0') {
-        const bool starts = (*p >= '0' && *p <= '9') || *p == '-' || *p == '+' ||
-                            ((*p == 'i' || *p == 'n') && (std::string_view(p).substr(0, 3) == "inf" ||
-                                                           std::string_view(p).substr(0, 3) == "nan"));
+        const bool starts =
+            (*p >= '0' && *p <= '9') || *p == '-' || *p == '+' ||
+            ((*p == 'i' || *p == 'n') && (std::string_view(p).substr(0, 3) == "inf" ||
+                                          std::string_view(p).substr(0, 3) == "nan"));
         if (starts) {
             char* end = nullptr;
             const double value = std::strtod(p, &end);

@@ -190,8 +190,8 @@ TEST(FagorExpression, NestingIsLimitedWithAnErrorNotACrash) {
     for (int i = 0; i < 10000; ++i)
         sines += "SIN(";
     sines += "1" + std::string(10000, ')');
-    for (const std::string& deep : {std::string(15000, '(') + "1" + std::string(15000, ')'),
-                                    sines, std::string(48000, '-') + "1"}) {
+    for (const std::string& deep : {std::string(15000, '(') + "1" + std::string(15000, ')'), sines,
+                                    std::string(48000, '-') + "1"}) {
         const Problem p = failure(deep);
         EXPECT_EQ(p.code, "nesting");
         EXPECT_GE(p.offset, static_cast<size_t>(limit));

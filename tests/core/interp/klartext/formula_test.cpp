@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <limits>
-#include <string>
 #include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -162,15 +162,14 @@ TEST(Formula, NestingIsLimitedWithAnErrorNotACrash) {
     EXPECT_DOUBLE_EQ(eval(std::string(limit - 2, '-') + "7"), 7);  // an even number of signs
     EXPECT_EQ(failure(std::string(limit, '(') + "7" + std::string(limit, ')')).code, "nesting");
     // The reproducers: 20000 parentheses, 10000 SIN (, 48000 signs overflowed the stack.
-    for (const std::string& deep :
-         {std::string(20000, '(') + "1" + std::string(20000, ')'),
-          [] {
-              std::string s;
-              for (int i = 0; i < 10000; ++i)
-                  s += "SIN (";
-              return s + "1" + std::string(10000, ')');
-          }(),
-          std::string(48000, '-') + "1"}) {
+    for (const std::string& deep : {std::string(20000, '(') + "1" + std::string(20000, ')'),
+                                    [] {
+                                        std::string s;
+                                        for (int i = 0; i < 10000; ++i)
+                                            s += "SIN (";
+                                        return s + "1" + std::string(10000, ')');
+                                    }(),
+                                    std::string(48000, '-') + "1"}) {
         const Failure f = failure(deep);
         EXPECT_EQ(f.code, "nesting");
         // The level beyond the limit: where the 257th opening starts.
