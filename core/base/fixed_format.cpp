@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 
 namespace kerf {
 
@@ -71,6 +72,13 @@ std::string formatFixed(double value, int decimals) {
     std::string out;
     appendFixed(out, value, decimals);
     return out;
+}
+
+std::string formatForMessage(double value, int decimals) {
+    if (std::isfinite(value) && std::fabs(value) < 1e9) return formatFixed(value, decimals);
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
 }
 
 }  // namespace kerf

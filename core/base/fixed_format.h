@@ -10,4 +10,8 @@ void appendFixed(std::string& out, double value, int decimals);
 
 std::string formatFixed(double value, int decimals);
 
+// For messages: like formatFixed while the number is of a size a machinist writes; a huge or
+// non-finite value as "1e+300", "inf", "nan" instead of hundreds of digits.
+std::string formatForMessage(double value, int decimals);
+
 }  // namespace kerf

@@ -48,8 +48,8 @@ std::optional<CycleError> checkParameter(const CycleDescriptor& cycle, const Par
                       p.integer ? KERF_TR_NOOP("cycle {1}: {2} ({3}) = {4} must be a whole number "
                                                "from {5} to {6}")
                                 : KERF_TR_NOOP("cycle {1}: {2} ({3}) = {4} is outside {5} to {6}"),
-                      {std::to_string(cycle.number), name, p.description, formatFixed(value, 4),
-                       formatFixed(p.min, 4), formatFixed(p.max, 4)}};
+                      {std::to_string(cycle.number), name, p.description,
+                       formatForMessage(value, 4), formatFixed(p.min, 4), formatFixed(p.max, 4)}};
 }
 
 }  // namespace kerf::cycles

@@ -169,7 +169,7 @@ bool KlartextInterpreter::resolveParameters(
                  d.integer ? KERF_TR_NOOP("{1}: parameter {2} ({3}) = {4} must be a whole number "
                                           "from {5} to {6}")
                            : KERF_TR_NOOP("{1}: parameter {2} ({3}) = {4} is outside {5} to {6}"),
-                 {owner, name, meaning, formatFixed(value, 4), formatFixed(d.min, 4),
+                 {owner, name, meaning, formatForMessage(value, 4), formatFixed(d.min, 4),
                   formatFixed(d.max, 4)});
             return false;
         }

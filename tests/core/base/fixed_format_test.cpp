@@ -80,3 +80,12 @@ TEST(FixedFormat, NonFiniteValuesAreNamed) {
 
 }  // namespace
 }  // namespace kerf
+
+TEST(FixedFormat, MessagesShowHugeValuesShort) {
+    // What a machinist writes keeps its decimals; 10^300 in a cycle parameter is not 301 digits.
+    EXPECT_EQ(kerf::formatForMessage(3600.0, 4), "3600.0000");
+    EXPECT_EQ(kerf::formatForMessage(-12.5, 2), "-12.50");
+    EXPECT_EQ(kerf::formatForMessage(1e300, 4), "1e+300");
+    EXPECT_EQ(kerf::formatForMessage(-2.5e12, 4), "-2.5e+12");
+    EXPECT_EQ(kerf::formatForMessage(std::numeric_limits<double>::infinity(), 4), "inf");
+}
