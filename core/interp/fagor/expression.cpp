@@ -9,6 +9,7 @@
 #include "core/base/translate.h"
 #include "core/geometry/arc_math.h"
 #include "core/interp/fagor/tables/table_text.h"
+#include "core/interp/nesting_level.h"
 
 namespace kerf::fagor {
 
@@ -40,18 +41,6 @@ bool isFunctionName(std::string_view w) {
     }
     return false;
 }
-
-// Enters one level of nesting (parentheses, a function, a sign, NOT) for as long as it lives.
-class NestingLevel {
-public:
-    explicit NestingLevel(int& depth) : m_depth(depth) { ++m_depth; }
-    ~NestingLevel() { --m_depth; }
-    NestingLevel(const NestingLevel&) = delete;
-    NestingLevel& operator=(const NestingLevel&) = delete;
-
-private:
-    int& m_depth;
-};
 
 int hexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -218,7 +207,7 @@ bool Expression::power(ExprValue& out) {
 bool Expression::unary(ExprValue& out) {
     // Every nesting (parentheses, functions, signs, NOT) passes here: a bounded depth bounds the
     // stack.
-    const NestingLevel level(m_depth);
+    const interp::NestingLevel level(m_depth);
     if (m_depth > kMaxExpressionNesting) {
         return fail(m_s.position(), "nesting",
                     KERF_TR_NOOP("an expression may nest at most {1} levels"),

@@ -6,6 +6,7 @@
 #include "core/base/saturating.h"
 #include "core/base/translate.h"
 #include "core/geometry/arc_math.h"
+#include "core/interp/nesting_level.h"
 
 namespace kerf::klartext {
 
@@ -68,18 +69,6 @@ double log10Of(double x) {
 double expOf(double x) {
     return std::exp(x);
 }
-
-// Enters one level of nesting (parentheses, a function, a sign) for as long as it lives.
-class NestingLevel {
-public:
-    explicit NestingLevel(int& depth) : m_depth(depth) { ++m_depth; }
-    ~NestingLevel() { --m_depth; }
-    NestingLevel(const NestingLevel&) = delete;
-    NestingLevel& operator=(const NestingLevel&) = delete;
-
-private:
-    int& m_depth;
-};
 
 // Longer names first so that "SQRT" is not read as "SQ" followed by "RT".
 constexpr FunctionEntry kFunctions[] = {
@@ -259,7 +248,7 @@ std::optional<double> FormulaParser::power() {
 
 std::optional<double> FormulaParser::unary() {
     // Every nesting (parentheses, functions, signs) passes here: a bounded depth bounds the stack.
-    const NestingLevel level(m_depth);
+    const interp::NestingLevel level(m_depth);
     if (m_depth > kMaxFormulaNesting) {
         return fail("nesting", KERF_TR_NOOP("a formula may nest at most {1} levels"),
                     {std::to_string(kMaxFormulaNesting)});
