@@ -280,6 +280,8 @@ const std::vector<FieldBinding<AxisConfig>>& axisBindings() {
                         "Machine position after homing; must lie within the soft limits")}),
         bindField<&AxisConfig::homeSequence>(
             kAxis, {.key = "home_sequence",
+                    .unit = "order",
+                    .rotaryUnit = "order",
                     .minimum = 1.0,
                     .maximum = 9.0,
                     .description = KERF_TR_NOOP(

@@ -565,9 +565,25 @@ TEST(Homing, TheMillHomesZFirstAndUpwardsThenXAndY) {
 TEST(Homing, TheLatheHomesXFirstThenZ) {
     SimulationOptions options;
     options.motion.startHomed = false;
+    // The tool at radius 20 (X40 as a diameter), 100 mm towards the chuck.
     TestRun run = runCommands(*machine::loadMachine("lathe"), {}, at(40.0, 0.0, -100.0), options);
-    const std::vector<int> order = homingOrder(*run.sim, 2, [](SimulatedMachine&) {});
+    SimulatedMachine& sim = *run.sim;
+    const double startX = sim.drives().truePosition(0);
+    double lowestX = startX;
+    bool zMovedBeforeX = false;
+    const std::vector<int> order = homingOrder(sim, 2, [&](SimulatedMachine& s) {
+        lowestX = std::min(lowestX, s.drives().truePosition(0));
+        if ((s.status().homedMask & 0x1) == 0 &&
+            std::fabs(s.drives().truePosition(1) + 100.0) > 1e-6)
+            zMovedBeforeX = true;
+    });
     EXPECT_EQ(order, (std::vector<int>{0, 1}));  // joints: X, Z
+    EXPECT_FALSE(zMovedBeforeX);
+    // X only moves out, away from the part and the chuck, to its home at radius 250; Z to +50.
+    EXPECT_GE(lowestX, startX - 1e-6);
+    sim.runFor(0.5);
+    EXPECT_NEAR(sim.drives().truePosition(0), 250.0, 0.025);
+    EXPECT_NEAR(sim.drives().truePosition(1), 50.0, 0.025);
 }
 
 TEST(Dwell, WaitsTheProgrammedTime) {

@@ -50,7 +50,8 @@ TEST(ReferenceRun, ProgramsWaitForHomeAllWhichLeavesTheAxesAtTheirHomes) {
     MachineSession session(config, test::connectSimulatedMachine(config, test::Reference::Required),
                            "");
     QSignalSpy messages(&session, &MachineSession::message);
-    session.service();
+    // The servo thread's first status.
+    ASSERT_TRUE(serviceUntil(session, [&] { return session.status().servoTimeS > 0.01; }));
     EXPECT_FALSE(session.referenced());
     // Power-on: the axes stand at their homes, machine 0 0 0; the mill's preset puts the
     // workpiece origin 400 mm below, so the tip shows Z+400.
@@ -70,7 +71,8 @@ TEST(ReferenceRun, ProgramsWaitForHomeAllWhichLeavesTheAxesAtTheirHomes) {
     }));
 
     ASSERT_TRUE(session.homeAll());
-    ASSERT_TRUE(serviceUntil(session, [&] { return session.referenced(); }));
+    ASSERT_TRUE(serviceUntil(
+        session, [&] { return session.referenced(); }, 20s));
     ASSERT_TRUE(serviceUntil(
         session, [&] { return session.status().state == task::MachineState::Idle; }, 5s));
     for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
@@ -90,7 +92,7 @@ TEST(ReferenceRun, AMachineFileMayRunWithoutHoming) {
     ASSERT_TRUE(config) << "the option parses";
     MachineSession session(*config,
                            test::connectSimulatedMachine(*config, test::Reference::Required), "");
-    session.service();
+    ASSERT_TRUE(serviceUntil(session, [&] { return session.status().servoTimeS > 0.01; }));
     EXPECT_TRUE(session.referenced());
     ASSERT_TRUE(session.startProgram(kProgram, "P.H"));
     ASSERT_TRUE(serviceUntil(session, [&] { return !session.busy(); }));
