@@ -199,6 +199,10 @@
         <source>The machine is on already</source>
         <translation>Die Maschine ist bereits eingeschaltet</translation>
     </message>
+    <message>
+        <source>The axes are not referenced: run Home all in Manual operation first</source>
+        <translation>Die Achsen sind nicht referenziert: zuerst in Manueller Betrieb Alle referenzieren ausführen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -545,6 +549,10 @@ Maschine: %3</translation>
     <message>
         <source>S %1 (actual %2) rpm</source>
         <translation>S %1 (Ist %2) 1/min</translation>
+    </message>
+    <message>
+        <source>Not referenced: Home all in Manual operation</source>
+        <translation>Nicht referenziert: Alle referenzieren in Manueller Betrieb</translation>
     </message>
 </context>
 <context>
@@ -5255,6 +5263,46 @@ editieren</translation>
     <message>
         <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
         <translation>&apos;{1}&apos; ist ein Link: Kerf schreibt nicht über Links</translation>
+    </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>und {1} weitere Meldungen</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>Überlauf: das Ergebnis von &apos;{1}&apos; ist zu groß</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>ein Ausdruck darf höchstens {1} Ebenen tief verschachtelt sein</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: der Wert ist zu groß (Überlauf)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} enthält keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>eine Formel darf höchstens {1} Ebenen tief verschachtelt sein</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>eine Zeichenkette darf höchstens {1} Zeichen enthalten, nicht {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} liegt außerhalb des Bereichs der Steuerung (höchstens {3})</translation>
+    </message>
+    <message>
+        <source>Programs and MDI run only after the axes are homed (Home all); false lets a machine without reference switches run from power-on</source>
+        <translation>Programme und MDI laufen erst nach dem Referenzieren der Achsen (Alle referenzieren); false lässt eine Maschine ohne Referenzschalter ab dem Einschalten laufen</translation>
+    </message>
+    <message>
+        <source>Order of the axis in Home all: lower numbers are homed first</source>
+        <translation>Reihenfolge der Achse bei Alle referenzieren: kleinere Nummern zuerst</translation>
     </message>
 </context>
 <context>

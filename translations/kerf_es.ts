@@ -199,6 +199,10 @@
         <source>The machine is on already</source>
         <translation>La máquina ya está en marcha</translation>
     </message>
+    <message>
+        <source>The axes are not referenced: run Home all in Manual operation first</source>
+        <translation>Los ejes no están referenciados: ejecute primero Referenciar todos en Funcionamiento manual</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -545,6 +549,10 @@ Máquina: %3</translation>
     <message>
         <source>S %1 (actual %2) rpm</source>
         <translation>S %1 (real %2) rpm</translation>
+    </message>
+    <message>
+        <source>Not referenced: Home all in Manual operation</source>
+        <translation>No referenciado: Referenciar todos en Funcionamiento manual</translation>
     </message>
 </context>
 <context>
@@ -5255,6 +5263,46 @@ ciclo</translation>
     <message>
         <source>&apos;{1}&apos; is a link: Kerf does not write through links</source>
         <translation>&apos;{1}&apos; es un enlace: Kerf no escribe a través de enlaces</translation>
+    </message>
+    <message>
+        <source>and {1} more diagnostics</source>
+        <translation>y {1} diagnósticos más</translation>
+    </message>
+    <message>
+        <source>overflow: the result of &apos;{1}&apos; is too large</source>
+        <translation>desbordamiento: el resultado de &apos;{1}&apos; es demasiado grande</translation>
+    </message>
+    <message>
+        <source>an expression may nest at most {1} levels</source>
+        <translation>una expresión puede anidarse como máximo {1} niveles</translation>
+    </message>
+    <message>
+        <source>P{1}: the value is too large (overflow)</source>
+        <translation>P{1}: el valor es demasiado grande (desbordamiento)</translation>
+    </message>
+    <message>
+        <source>{1}{2} holds no finite number</source>
+        <translation>{1}{2} no contiene un número finito</translation>
+    </message>
+    <message>
+        <source>a formula may nest at most {1} levels</source>
+        <translation>una fórmula puede anidarse como máximo {1} niveles</translation>
+    </message>
+    <message>
+        <source>a string may hold at most {1} characters, not {2}</source>
+        <translation>una cadena puede tener como máximo {1} caracteres, no {2}</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is outside the range of the control (at most {3})</source>
+        <translation>{1} = {2} está fuera del rango del control (como máximo {3})</translation>
+    </message>
+    <message>
+        <source>Programs and MDI run only after the axes are homed (Home all); false lets a machine without reference switches run from power-on</source>
+        <translation>Los programas y MDI solo se ejecutan con los ejes referenciados (Referenciar todos); false deja funcionar desde el encendido una máquina sin interruptores de referencia</translation>
+    </message>
+    <message>
+        <source>Order of the axis in Home all: lower numbers are homed first</source>
+        <translation>Orden del eje en Referenciar todos: los números menores se referencian primero</translation>
     </message>
 </context>
 <context>
