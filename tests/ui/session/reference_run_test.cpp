@@ -3,7 +3,10 @@
 // and leaves every axis at its home in machine coordinates; then programs run.
 #include <QSignalSpy>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -11,6 +14,7 @@
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
 #include "simulated_machine.h"
+#include "test_paths.h"
 #include "ui/session/machine_session.h"
 
 namespace kerf::ui {
@@ -84,6 +88,35 @@ TEST(ReferenceRun, ProgramsWaitForHomeAllWhichLeavesTheAxesAtTheirHomes) {
     ASSERT_TRUE(serviceUntil(session, [&] { return !session.busy(); }));
     EXPECT_EQ(session.runState(), task::RunState::Finished);
     EXPECT_NEAR(axis(session, Axis::Z).nominal, 250.0, 1e-6);
+}
+
+TEST(ReferenceRun, TheCycle200SeedRunsAfterHomeAllOnTheBuiltInMill) {
+    // The seed's L Z+250 clearance with its 80 mm drill is machine Z -70 with the mill's preset
+    // Z-400 (inside -500 ... +50); before, it was refused as machine Z 330.
+    test::testApp();
+    namespace fs = std::filesystem;
+    const fs::path seed =
+        fs::path(KERF_SOURCE_DIR) / "tests/golden/klartext/cycle_200_drilling_m99";
+    const fs::path root = kerf::test::uniqueTempDir("hmi_c200");
+    fs::copy_file(seed / "TOOL.T", root / "TOOL.T", fs::copy_options::overwrite_existing);
+    std::stringstream program;
+    program << std::ifstream(seed / "program.H").rdbuf();
+    const machine::MachineConfig config = *machine::loadMachine("mill");
+    MachineSession session(config, test::connectSimulatedMachine(config, test::Reference::Required),
+                           root);
+    ASSERT_TRUE(serviceUntil(session, [&] { return session.status().servoTimeS > 0.01; }));
+    ASSERT_TRUE(session.homeAll());
+    ASSERT_TRUE(serviceUntil(
+        session, [&] { return session.referenced(); }, 20s));
+    ASSERT_TRUE(serviceUntil(
+        session, [&] { return session.status().state == task::MachineState::Idle; }, 5s));
+    ASSERT_TRUE(session.startProgram(QString::fromStdString(program.str()), root / "C200.H"));
+    // Four holes of 15 mm at 250 mm/min and the rapids: about 20 s.
+    ASSERT_TRUE(serviceUntil(
+        session, [&] { return !session.busy(); }, 120s));
+    EXPECT_EQ(session.runState(), task::RunState::Finished);
+    EXPECT_NEAR(axis(session, Axis::Z).nominal, 250.0, 1e-6);
+    EXPECT_NEAR(axis(session, Axis::Z).machineNominal, -70.0, 1e-6);
 }
 
 TEST(ReferenceRun, AMachineFileMayRunWithoutHoming) {
