@@ -56,9 +56,14 @@ bool MachineSession::refuseWhenBusy() {
 }
 
 bool MachineSession::referenced() const {
-    for (const task::AxisStatus& axis : m_status.axes)
-        if (axis.enabled && !axis.homed) return false;
-    return true;
+    // Before the machine's first status no axis is enabled: not referenced yet either.
+    bool anyAxis = false;
+    for (const task::AxisStatus& axis : m_status.axes) {
+        if (!axis.enabled) continue;
+        if (!axis.homed) return false;
+        anyAxis = true;
+    }
+    return anyAxis;
 }
 
 bool MachineSession::refuseWhenNotReferenced() {
