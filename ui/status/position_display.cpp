@@ -75,8 +75,9 @@ PositionDisplay::PositionDisplay(const machine::MachineConfig& machine, QWidget*
         r.value->setObjectName(QStringLiteral("position%1").arg(config.letter));
         r.value->setFont(digits);
         r.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        // A circle with a stroke next to the letter until the axis is homed.
-        r.notReferenced = new QLabel(QStringLiteral("\u2298"), this);
+        // A warning sign next to the letter until the axis is homed (not a circle: the lathe's X
+        // shows the diameter sign ⌀ there).
+        r.notReferenced = new QLabel(QStringLiteral("\u26A0"), this);
         r.notReferenced->setObjectName(QStringLiteral("notReferenced%1").arg(config.letter));
         r.notReferenced->setFont(digits);
         r.notReferenced->setStyleSheet(QStringLiteral("color: #b00000;"));
