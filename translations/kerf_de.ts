@@ -199,6 +199,10 @@
         <source>The machine is on already</source>
         <translation>Die Maschine ist bereits eingeschaltet</translation>
     </message>
+    <message>
+        <source>The axes are not referenced: run Home all in Manual operation first</source>
+        <translation>Die Achsen sind nicht referenziert: zuerst in Manueller Betrieb Alle referenzieren ausführen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -545,6 +549,10 @@ Maschine: %3</translation>
     <message>
         <source>S %1 (actual %2) rpm</source>
         <translation>S %1 (Ist %2) 1/min</translation>
+    </message>
+    <message>
+        <source>Not referenced: Home all in Manual operation</source>
+        <translation>Nicht referenziert: Alle referenzieren in Manueller Betrieb</translation>
     </message>
 </context>
 <context>
@@ -5282,11 +5290,19 @@ editieren</translation>
     </message>
     <message>
         <source>a string may hold at most {1} characters, not {2}</source>
-        <translation>ein String darf höchstens {1} Zeichen enthalten, nicht {2}</translation>
+        <translation>eine Zeichenkette darf höchstens {1} Zeichen enthalten, nicht {2}</translation>
     </message>
     <message>
         <source>{1} = {2} is outside the range of the control (at most {3})</source>
         <translation>{1} = {2} liegt außerhalb des Bereichs der Steuerung (höchstens {3})</translation>
+    </message>
+    <message>
+        <source>Programs and MDI run only after the axes are homed (Home all); false lets a machine without reference switches run from power-on</source>
+        <translation>Programme und MDI laufen erst nach dem Referenzieren der Achsen (Alle referenzieren); false lässt eine Maschine ohne Referenzschalter ab dem Einschalten laufen</translation>
+    </message>
+    <message>
+        <source>Order of the axis in Home all: lower numbers are homed first</source>
+        <translation>Reihenfolge der Achse bei Alle referenzieren: kleinere Nummern zuerst</translation>
     </message>
 </context>
 <context>

@@ -199,6 +199,10 @@
         <source>The machine is on already</source>
         <translation>La máquina ya está en marcha</translation>
     </message>
+    <message>
+        <source>The axes are not referenced: run Home all in Manual operation first</source>
+        <translation>Los ejes no están referenciados: ejecute primero Referenciar todos en Funcionamiento manual</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -545,6 +549,10 @@ Máquina: %3</translation>
     <message>
         <source>S %1 (actual %2) rpm</source>
         <translation>S %1 (real %2) rpm</translation>
+    </message>
+    <message>
+        <source>Not referenced: Home all in Manual operation</source>
+        <translation>No referenciado: Referenciar todos en Funcionamiento manual</translation>
     </message>
 </context>
 <context>
@@ -5287,6 +5295,14 @@ ciclo</translation>
     <message>
         <source>{1} = {2} is outside the range of the control (at most {3})</source>
         <translation>{1} = {2} está fuera del rango del control (como máximo {3})</translation>
+    </message>
+    <message>
+        <source>Programs and MDI run only after the axes are homed (Home all); false lets a machine without reference switches run from power-on</source>
+        <translation>Los programas y MDI solo se ejecutan con los ejes referenciados (Referenciar todos); false deja funcionar desde el encendido una máquina sin interruptores de referencia</translation>
+    </message>
+    <message>
+        <source>Order of the axis in Home all: lower numbers are homed first</source>
+        <translation>Orden del eje en Referenciar todos: los números menores se referencian primero</translation>
     </message>
 </context>
 <context>

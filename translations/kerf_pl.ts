@@ -200,6 +200,10 @@
         <source>The machine is on already</source>
         <translation>Maszyna jest już włączona</translation>
     </message>
+    <message>
+        <source>The axes are not referenced: run Home all in Manual operation first</source>
+        <translation>Osie nie są zbazowane: najpierw wykonaj Bazuj wszystkie w Obsłudze ręcznej</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -548,6 +552,10 @@ Maszyna: %3</translation>
     <message>
         <source>S %1 (actual %2) rpm</source>
         <translation>S %1 (rzeczywista %2) obr/min</translation>
+    </message>
+    <message>
+        <source>Not referenced: Home all in Manual operation</source>
+        <translation>Niezbazowana: Bazuj wszystkie w Obsłudze ręcznej</translation>
     </message>
 </context>
 <context>
@@ -5269,7 +5277,7 @@ cykl</translation>
     </message>
     <message>
         <source>an expression may nest at most {1} levels</source>
-        <translation>wyrażenie może mieć najwyżej {1} poziomów zagnieżdżenia</translation>
+        <translation>wyrażenie może być zagnieżdżone najwyżej na {1} poziomów</translation>
     </message>
     <message>
         <source>P{1}: the value is too large (overflow)</source>
@@ -5277,11 +5285,11 @@ cykl</translation>
     </message>
     <message>
         <source>{1}{2} holds no finite number</source>
-        <translation>{1}{2} nie zawiera liczby skończonej</translation>
+        <translation>{1}{2} nie zawiera skończonej liczby</translation>
     </message>
     <message>
         <source>a formula may nest at most {1} levels</source>
-        <translation>formuła może mieć najwyżej {1} poziomów zagnieżdżenia</translation>
+        <translation>formuła może być zagnieżdżona najwyżej na {1} poziomów</translation>
     </message>
     <message>
         <source>a string may hold at most {1} characters, not {2}</source>
@@ -5290,6 +5298,14 @@ cykl</translation>
     <message>
         <source>{1} = {2} is outside the range of the control (at most {3})</source>
         <translation>{1} = {2} jest poza zakresem sterowania (najwyżej {3})</translation>
+    </message>
+    <message>
+        <source>Programs and MDI run only after the axes are homed (Home all); false lets a machine without reference switches run from power-on</source>
+        <translation>Programy i MDI działają dopiero po zbazowaniu osi (Bazuj wszystkie); false pozwala maszynie bez wyłączników referencyjnych pracować od włączenia</translation>
+    </message>
+    <message>
+        <source>Order of the axis in Home all: lower numbers are homed first</source>
+        <translation>Kolejność osi w Bazuj wszystkie: mniejsze numery są bazowane najpierw</translation>
     </message>
 </context>
 <context>

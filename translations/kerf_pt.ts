@@ -199,6 +199,10 @@
         <source>The machine is on already</source>
         <translation>A máquina já está ligada</translation>
     </message>
+    <message>
+        <source>The axes are not referenced: run Home all in Manual operation first</source>
+        <translation>Os eixos não estão referenciados: execute primeiro Referenciar todos em Funcionamento manual</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -546,6 +550,10 @@ Máquina: %3</translation>
     <message>
         <source>S %1 (actual %2) rpm</source>
         <translation>S %1 (real %2) rpm</translation>
+    </message>
+    <message>
+        <source>Not referenced: Home all in Manual operation</source>
+        <translation>Não referenciado: Referenciar todos em Funcionamento manual</translation>
     </message>
 </context>
 <context>
@@ -5262,7 +5270,7 @@ ciclo</translation>
     </message>
     <message>
         <source>overflow: the result of &apos;{1}&apos; is too large</source>
-        <translation>overflow: o resultado de &apos;{1}&apos; é grande demais</translation>
+        <translation>estouro: o resultado de &apos;{1}&apos; é grande demais</translation>
     </message>
     <message>
         <source>an expression may nest at most {1} levels</source>
@@ -5270,7 +5278,7 @@ ciclo</translation>
     </message>
     <message>
         <source>P{1}: the value is too large (overflow)</source>
-        <translation>P{1}: o valor é grande demais (overflow)</translation>
+        <translation>P{1}: o valor é grande demais (estouro)</translation>
     </message>
     <message>
         <source>{1}{2} holds no finite number</source>
@@ -5282,11 +5290,19 @@ ciclo</translation>
     </message>
     <message>
         <source>a string may hold at most {1} characters, not {2}</source>
-        <translation>uma string pode ter no máximo {1} caracteres, não {2}</translation>
+        <translation>uma cadeia pode ter no máximo {1} caracteres, não {2}</translation>
     </message>
     <message>
         <source>{1} = {2} is outside the range of the control (at most {3})</source>
         <translation>{1} = {2} está fora da faixa do comando (no máximo {3})</translation>
+    </message>
+    <message>
+        <source>Programs and MDI run only after the axes are homed (Home all); false lets a machine without reference switches run from power-on</source>
+        <translation>Programas e MDI só funcionam após referenciar os eixos (Referenciar todos); false deixa uma máquina sem chaves de referência funcionar desde a ligação</translation>
+    </message>
+    <message>
+        <source>Order of the axis in Home all: lower numbers are homed first</source>
+        <translation>Ordem do eixo em Referenciar todos: números menores são referenciados primeiro</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,9 @@ struct AxisConfig {
     double maxAccelerationPerS2 = 1000.0;
     double maxJerkPerS3 = 10000.0;
     double homePosition = 0.0;
+    // Place of the axis in the reference run: groups with lower numbers are homed first (on a mill
+    // the tool axis comes first so that the tool leaves the part before X and Y move).
+    int homeSequence = 1;
     // Machine coordinate of the workpiece origin (the default preset); kerf run --work-offset
     // overrides it.
     double presetPosition = 0.0;

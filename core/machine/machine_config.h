@@ -78,6 +78,8 @@ struct MachineConfig {
     SpindleConfig spindle;
     double servoPeriodMs = 1.0;
     double pathToleranceMm = 0.01;  // default corner-blending tolerance
+    // The HMI runs programs and MDI only after a reference run (as a real control does).
+    bool referenceRequired = true;
     DrivesConfig drives;
     BarConfig bar;                        // lathe only
     ProbeWorkpieceConfig probeWorkpiece;  // simulation only

@@ -52,6 +52,11 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
              .maximum = 10.0,
              .description = KERF_TR_NOOP(
                  "Default path deviation allowed when blending corners; 0 stops exactly")}),
+        bindField<&MachineConfig::referenceRequired>(
+            kMachine, {.key = "reference_required",
+                       .description = KERF_TR_NOOP(
+                           "Programs and MDI run only after the axes are homed (Home all); false "
+                           "lets a machine without reference switches run from power-on")}),
         bindField<&MachineConfig::spindle, &SpindleConfig::minRpm>(
             kMachine, {.key = "spindle.min_rpm",
                        .unit = "rpm",
@@ -273,6 +278,14 @@ const std::vector<FieldBinding<AxisConfig>>& axisBindings() {
                     .maximum = 100000.0,
                     .description = KERF_TR_NOOP(
                         "Machine position after homing; must lie within the soft limits")}),
+        bindField<&AxisConfig::homeSequence>(
+            kAxis, {.key = "home_sequence",
+                    .unit = "order",
+                    .rotaryUnit = "order",
+                    .minimum = 1.0,
+                    .maximum = 9.0,
+                    .description = KERF_TR_NOOP(
+                        "Order of the axis in Home all: lower numbers are homed first")}),
         bindField<&AxisConfig::presetPosition>(
             kAxis, {.key = "preset",
                     .unit = "mm",

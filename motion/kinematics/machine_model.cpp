@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace kerf::motion {
 
@@ -22,6 +23,7 @@ MachineModel makeMachineModel(const machine::MachineConfig& config, const Motion
         m.accel = axis.maxAccelerationPerS2;
         m.jerk = axis.maxJerkPerS3;
         m.home = axis.homePosition;
+        m.homeSequence = axis.homeSequence;
         if (!m.rotary) minJerk = std::min(minJerk, m.jerk);
     }
     for (int i = 0; i < kAxisCount; ++i) {
@@ -29,6 +31,17 @@ MachineModel makeMachineModel(const machine::MachineConfig& config, const Motion
             model.jointAxis[static_cast<size_t>(model.jointCount++)] = i;
         }
     }
+    model.homingCount = model.jointCount;
+    std::iota(model.homingOrder.begin(), model.homingOrder.begin() + model.homingCount, 0);
+    // jointAxis is in display order, so a stable sort keeps it within one sequence number.
+    std::stable_sort(model.homingOrder.begin(), model.homingOrder.begin() + model.homingCount,
+                     [&model](int a, int b) {
+                         auto sequence = [&model](int joint) {
+                             const int axis = model.jointAxis[static_cast<size_t>(joint)];
+                             return model.axes[static_cast<size_t>(axis)].homeSequence;
+                         };
+                         return sequence(a) < sequence(b);
+                     });
     model.spindleJoint = model.jointCount++;
     if (auto tool = axisFromLetter(config.toolAxis)) model.toolAxis = axisIndex(*tool);
     model.periodS = config.servoPeriodMs / 1000.0;

@@ -30,6 +30,7 @@ struct AxisModel {
     double accel = 0.0;     // per s^2
     double jerk = 0.0;      // per s^3
     double home = 0.0;
+    int homeSequence = 1;  // Home all: lower numbers first
 };
 
 struct MachineModel {
@@ -37,6 +38,10 @@ struct MachineModel {
     int jointCount = 0;                       // axes + spindle
     std::array<int, kMaxJoints> jointAxis{};  // axis index per joint; -1: the spindle
     int spindleJoint = -1;
+    // Home all: the axis joints in the machine file's reference order (home_sequence, then
+    // display order).
+    std::array<int, kMaxJoints> homingOrder{};
+    int homingCount = 0;
     int toolAxis = 2;
     double periodS = 0.001;
     int filterTaps = 1;  // moving-average length in servo cycles

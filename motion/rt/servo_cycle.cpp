@@ -246,7 +246,10 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
         case OperatorCommandKind::Home:
             if (m_mode != MotionMode::Idle) break;
             m_homingOnly = command.joint;
-            m_homingJoint = command.joint >= 0 ? command.joint : 0;
+            m_homingStep = 0;
+            m_homingJoint = command.joint >= 0        ? command.joint
+                            : m_model.homingCount > 0 ? m_model.homingOrder[0]
+                                                      : -1;
             m_homingPhase = HomingPhase::LeaveSwitch;
             m_mode = MotionMode::Homing;
             break;
@@ -623,7 +626,7 @@ void ServoCycle::runHoming() noexcept {
     }
     int axis = m_model.jointAxis[static_cast<size_t>(m_homingJoint)];
     if (axis < 0) {  // the spindle needs no homing
-        m_homingJoint = m_homingOnly >= 0 ? -1 : m_homingJoint + 1;
+        nextHomingJoint();
         return;
     }
     const AxisModel& a = m_model.axes[static_cast<size_t>(axis)];
@@ -670,7 +673,7 @@ void ServoCycle::runHoming() noexcept {
                 m_status.homedMask =
                     static_cast<uint16_t>(m_status.homedMask | (1u << m_homingJoint));
                 emit(MotionEventKind::HomingDone, m_homingJoint, 0.0, m_setpoint);
-                m_homingJoint = m_homingOnly >= 0 ? -1 : m_homingJoint + 1;
+                nextHomingJoint();
                 m_homingPhase = HomingPhase::LeaveSwitch;
                 return;
             }
@@ -679,6 +682,14 @@ void ServoCycle::runHoming() noexcept {
     position = m_interpolated[index];
     m_mover.update(m_dt, axisLimits(axis), position);
     m_interpolated[index] = position;
+}
+
+void ServoCycle::nextHomingJoint() noexcept {
+    if (m_homingOnly >= 0 || ++m_homingStep >= m_model.homingCount) {
+        m_homingJoint = -1;
+    } else {
+        m_homingJoint = m_model.homingOrder[static_cast<size_t>(m_homingStep)];
+    }
 }
 
 void ServoCycle::writeOutputs() noexcept {

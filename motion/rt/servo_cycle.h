@@ -72,6 +72,7 @@ private:
     bool moveManualAxis() noexcept;
     void runReturn() noexcept;
     void runHoming() noexcept;
+    void nextHomingJoint() noexcept;
     void followFeedback() noexcept;
     void writeOutputs() noexcept;
     void abortProgram() noexcept;
@@ -125,10 +126,11 @@ private:
     uint64_t m_singleBlockDone = 0;  // sequence of the element a single-block stop ended
     double m_singleBlockS = -1.0;    // path position of the single-block stop ahead
 
-    // Homing: joints in order, one at a time.
+    // Homing: joints in the model's homing order, one at a time.
     enum class HomingPhase : uint8_t { Off, LeaveSwitch, Search, Brake, Return };
     HomingPhase m_homingPhase = HomingPhase::Off;
     int m_homingJoint = -1;
+    int m_homingStep = 0;  // index in MachineModel::homingOrder
     int m_homingOnly = -1;
     double m_homingLatch = 0.0;
 };

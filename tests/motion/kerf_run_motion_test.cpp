@@ -118,12 +118,14 @@ TEST(KerfRunMotion, OneLineOnTheMillTakesTheJerkLimitedTime) {
 
 TEST(KerfRunMotion, ASoftLimitRefusesTheProgramBeforeAnythingMoves) {
     // The mill's X ends at +400 mm: block 2 would reach 500. Block 1 is fine but must not move.
+    // --work-offset Z0 puts the workpiece origin at the machine origin (the mill's own preset is
+    // Z-400), which the note then names as a likely cause.
     const fs::path program = writeProgram("limit.H",
                                           "0 BEGIN PGM LIMIT MM\n"
                                           "1 L X+100 R0 F6000\n"
                                           "2 L X+500 R0 F6000\n"
                                           "3 END PGM LIMIT MM\n");
-    KerfRun run = runKerf(program, "");
+    KerfRun run = runKerf(program, "--work-offset Z0");
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_NE(run.errors.find("limit.H:3:"), std::string::npos) << run.errors;
     EXPECT_NE(run.errors.find("error: Block 2"), std::string::npos) << run.errors;
@@ -371,6 +373,23 @@ TEST(KerfRunMotion, FagorG75ThatNeverTouchesFailsNamingTheBlock) {
     // The axes stopped at the programmed end point; X80 never ran.
     EXPECT_NEAR(motion["final_position"]["Z"].get<double>(), -1.0, 1e-6);
     EXPECT_NEAR(motion["final_position"]["X"].get<double>(), 20.0, 1e-6);
+}
+
+TEST(KerfRunMotion, TheCycle200SeedRunsOnTheBuiltInMill) {
+    // The seed's clearance L Z+250 with its 80 mm drill: machine Z = 250 + 80 + preset. With the
+    // mill's preset Z-400 that is -70, inside -500 ... +50; at the machine origin it was 330.
+    const fs::path seed =
+        fs::path(KERF_SOURCE_DIR) / "tests/golden/klartext/cycle_200_drilling_m99";
+    const fs::path dir = outputDir() / "c200";
+    fs::create_directories(dir);
+    for (const char* name : {"program.H", "TOOL.T"})
+        fs::copy_file(seed / name, dir / name, fs::copy_options::overwrite_existing);
+    KerfRun run = runKerf(dir / "program.H", "");
+    ASSERT_EQ(run.exitCode, 0) << run.errors;
+    const nlohmann::json& motion = run.report["motion"];
+    ASSERT_TRUE(motion.is_object()) << run.report.dump(2);
+    EXPECT_FALSE(motion["refused"].get<bool>());
+    EXPECT_NEAR(motion["final_position"]["Z"].get<double>(), 250.0, 1e-6);
 }
 
 TEST(KerfRunMotion, TheMachinesPresetPlacesTheWorkpieceAndWorkOffsetOverridesIt) {

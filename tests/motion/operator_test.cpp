@@ -1,9 +1,13 @@
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/geometry/arc_math.h"
+#include "core/machine/machine_loader.h"
 #include "motion/kinematics/machine_model.h"
 #include "motion/planner/soft_limits.h"
 #include "motion/profile/jerk_profile.h"
@@ -511,6 +515,75 @@ TEST(Homing, FindsTheSwitchAndEndsAtHome) {
         // period of the search velocity (5 % of 500 mm/s: 0.025 mm).
         EXPECT_NEAR(sim.drives().truePosition(i), 0.0, 0.025);
     }
+}
+
+// The joints in the order their reference bits came on during Home all; `during` runs every
+// servo period before the reference run ends.
+std::vector<int> homingOrder(SimulatedMachine& sim, int axes,
+                             const std::function<void(SimulatedMachine&)>& during) {
+    const uint16_t all = static_cast<uint16_t>((1u << axes) - 1u);
+    std::vector<int> order;
+    uint16_t seen = 0;
+    sim.command({OperatorCommandKind::Home, -1});
+    for (int step = 0; step < 120000 && (seen & all) != all; ++step) {
+        sim.runFor(0.001);
+        during(sim);
+        const uint16_t now = sim.status().homedMask & all;
+        for (int j = 0; j < axes; ++j) {
+            if ((now >> j & 1u) && !(seen >> j & 1u)) order.push_back(j);
+        }
+        seen = now;
+    }
+    return order;
+}
+
+TEST(Homing, TheMillHomesZFirstAndUpwardsThenXAndY) {
+    SimulationOptions options;
+    options.motion.startHomed = false;
+    // The tool 300 mm down, e.g. in a part: X and Y must not move before Z is up at its home.
+    TestRun run = runCommands(millConfig(), {}, at(37.0, -12.0, -300.0), options);
+    SimulatedMachine& sim = *run.sim;
+    double lowestZ = 0.0;
+    bool xyMovedBeforeZ = false;
+    const std::vector<int> order = homingOrder(sim, 3, [&](SimulatedMachine& s) {
+        lowestZ = std::min(lowestZ, s.drives().truePosition(2));
+        if ((s.status().homedMask & 0x4) == 0 &&
+            (std::fabs(s.drives().truePosition(0) - 37.0) > 1e-6 ||
+             std::fabs(s.drives().truePosition(1) + 12.0) > 1e-6))
+            xyMovedBeforeZ = true;
+    });
+    // home_sequence: Z 1, X and Y 2 (display order within a group).
+    EXPECT_EQ(order, (std::vector<int>{2, 0, 1}));
+    EXPECT_FALSE(xyMovedBeforeZ);
+    // Z only rises from -300 (to the switch at its home 0, the top, and back onto it).
+    EXPECT_GE(lowestZ, -300.0 - 1e-6);
+    sim.runFor(0.5);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(sim.drives().truePosition(i), 0.0, 0.025);
+}
+
+TEST(Homing, TheLatheHomesXFirstThenZ) {
+    SimulationOptions options;
+    options.motion.startHomed = false;
+    // The tool at radius 20 (X40 as a diameter), 100 mm towards the chuck.
+    TestRun run = runCommands(*machine::loadMachine("lathe"), {}, at(40.0, 0.0, -100.0), options);
+    SimulatedMachine& sim = *run.sim;
+    const double startX = sim.drives().truePosition(0);
+    double lowestX = startX;
+    bool zMovedBeforeX = false;
+    const std::vector<int> order = homingOrder(sim, 2, [&](SimulatedMachine& s) {
+        lowestX = std::min(lowestX, s.drives().truePosition(0));
+        if ((s.status().homedMask & 0x1) == 0 &&
+            std::fabs(s.drives().truePosition(1) + 100.0) > 1e-6)
+            zMovedBeforeX = true;
+    });
+    EXPECT_EQ(order, (std::vector<int>{0, 1}));  // joints: X, Z
+    EXPECT_FALSE(zMovedBeforeX);
+    // X only moves out, away from the part and the chuck, to its home at radius 250; Z to +50.
+    EXPECT_GE(lowestX, startX - 1e-6);
+    sim.runFor(0.5);
+    EXPECT_NEAR(sim.drives().truePosition(0), 250.0, 0.025);
+    EXPECT_NEAR(sim.drives().truePosition(1), 50.0, 0.025);
 }
 
 TEST(Dwell, WaitsTheProgrammedTime) {

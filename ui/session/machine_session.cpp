@@ -55,6 +55,24 @@ bool MachineSession::refuseWhenBusy() {
     return true;
 }
 
+bool MachineSession::referenced() const {
+    // Before the machine's first status no axis is enabled: not referenced yet either.
+    bool anyAxis = false;
+    for (const task::AxisStatus& axis : m_status.axes) {
+        if (!axis.enabled) continue;
+        if (!axis.homed) return false;
+        anyAxis = true;
+    }
+    return anyAxis;
+}
+
+bool MachineSession::refuseWhenNotReferenced() {
+    if (!m_machine.referenceRequired || referenced()) return false;
+    emit message(Severity::Error,
+                 tr("The axes are not referenced: run Home all in Manual operation first"), 0);
+    return true;
+}
+
 void MachineSession::report(const DiagnosticList& diagnostics) {
     for (const Diagnostic& d : diagnostics)
         emit message(d.severity, translatedMessage(d), static_cast<int>(d.line));
@@ -62,7 +80,7 @@ void MachineSession::report(const DiagnosticList& diagnostics) {
 
 bool MachineSession::startProgram(const QString& program, const std::filesystem::path& path,
                                   std::optional<uint32_t> startLine) {
-    if (refuseWhenBusy()) return false;
+    if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
     applyPresetTable();
     ProgramSource source;
     source.text = program.toStdString();
@@ -75,7 +93,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
 }
 
 bool MachineSession::executeMdi(const QString& block) {
-    if (refuseWhenBusy()) return false;
+    if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
     applyPresetTable();
     ProgramSource source;
     source.text = mdiProgram(m_machine, block.trimmed().toStdString());

@@ -115,6 +115,9 @@ public:
     // A program or MDI block moves the machine (the machine mode must not change).
     bool busy() const;
     const task::MachineStatus& status() const { return m_status; }
+    // Every axis has been homed since power-on (or the machine counts as referenced from the
+    // start: reference_required = false).
+    bool referenced() const;
     const task::ProgramRun& run() const { return *m_run; }
     // The line of the main program whose block is executing, while a program runs (none in a
     // called program's file or in MDI).
@@ -135,6 +138,8 @@ signals:
 private:
     bool start(LoadedProgram loaded, std::optional<uint32_t> startLine);
     bool refuseWhenBusy();
+    // Programs and MDI wait for the reference run unless the machine file needs none.
+    bool refuseWhenNotReferenced();
     bool jogAllowed() const;
     // Mill: the workpiece origin follows row 0 of PRESET.PR (read at start and before every
     // program, so edits in the table editor count from the next program on).

@@ -75,11 +75,18 @@ PositionDisplay::PositionDisplay(const machine::MachineConfig& machine, QWidget*
         r.value->setObjectName(QStringLiteral("position%1").arg(config.letter));
         r.value->setFont(digits);
         r.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        // A warning sign next to the letter until the axis is homed (not a circle: the lathe's X
+        // shows the diameter sign ⌀ there).
+        r.notReferenced = new QLabel(QStringLiteral("\u26A0"), this);
+        r.notReferenced->setObjectName(QStringLiteral("notReferenced%1").arg(config.letter));
+        r.notReferenced->setFont(digits);
+        r.notReferenced->setStyleSheet(QStringLiteral("color: #b00000;"));
         grid->addWidget(r.name, row, 0);
-        grid->addWidget(r.value, row, 1);
+        grid->addWidget(r.notReferenced, row, 1);
+        grid->addWidget(r.value, row, 2);
         ++row;
     }
-    grid->setColumnStretch(1, 1);
+    grid->setColumnStretch(2, 1);
     layout->addLayout(grid);
 
     m_tool = new QLabel(this);
@@ -143,6 +150,11 @@ QString PositionDisplay::axisText(Axis axis) const {
     return r.present ? r.value->text() : QString();
 }
 
+bool PositionDisplay::notReferencedShown(Axis axis) const {
+    const AxisRow& r = m_axes[static_cast<size_t>(axisIndex(axis))];
+    return r.present && !r.notReferenced->isHidden();
+}
+
 QString PositionDisplay::toolText() const {
     return m_tool->text();
 }
@@ -160,6 +172,8 @@ void PositionDisplay::refresh() {
                              .arg(std::abs(value), 0, 'f', decimals));
         r.name->setStyleSheet(m_status.axes[i].homed ? QString()
                                                      : QStringLiteral("color: #b00000;"));
+        r.notReferenced->setVisible(!m_status.axes[i].homed);
+        r.notReferenced->setToolTip(tr("Not referenced: Home all in Manual operation"));
     }
     m_kind->setText(kindText(m_settings.positionKind) +
                     (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")));

@@ -33,6 +33,8 @@ public:
     OverrideControls* overrides() const { return m_overrides; }
     // The text shown for an axis (e.g. "+12.500"); empty for an axis the machine lacks.
     QString axisText(Axis axis) const;
+    // The axis shows the not-referenced symbol (it has not been homed since power-on).
+    bool notReferencedShown(Axis axis) const;
     QString toolText() const;
 
     // The value of one axis as the settings show it: the kind of position, lathe diameter, unit.
@@ -50,6 +52,7 @@ private:
         bool diameter = false;
         QLabel* name = nullptr;
         QLabel* value = nullptr;
+        QLabel* notReferenced = nullptr;  // the TNC's symbol of an axis not yet homed
     };
 
     void refresh();

@@ -17,7 +17,7 @@ MachineConfig load(std::string_view name) {
 }
 
 void expectAxis(const MachineConfig& machine, char letter, double minLimit, double maxLimit,
-                double velocity, double acceleration, double jerk) {
+                double velocity, double acceleration, double jerk, double home = 0.0) {
     SCOPED_TRACE(std::string("axis ") + letter);
     const AxisConfig* axis = machine.axis(letter);
     ASSERT_NE(axis, nullptr);
@@ -27,7 +27,7 @@ void expectAxis(const MachineConfig& machine, char letter, double minLimit, doub
     EXPECT_EQ(axis->maxVelocityPerS, velocity);
     EXPECT_EQ(axis->maxAccelerationPerS2, acceleration);
     EXPECT_EQ(axis->maxJerkPerS3, jerk);
-    EXPECT_EQ(axis->homePosition, 0.0);
+    EXPECT_EQ(axis->homePosition, home);
 }
 
 TEST(BuiltinMachines, NamesAreMillAndLathe) {
@@ -101,8 +101,9 @@ TEST(BuiltinMachines, LatheHasDiameterXAndADisabledC) {
     EXPECT_EQ(lathe.spindle.maxRpm, 4000);
     EXPECT_EQ(lathe.servoPeriodMs, 1.0);
     EXPECT_EQ(lathe.pathToleranceMm, 0.01);
-    expectAxis(lathe, 'X', -10.0, 300.0, 300.0, 1500.0, 30000.0);
-    expectAxis(lathe, 'Z', -600.0, 50.0, 300.0, 1500.0, 30000.0);
+    // The reference points: X out at radius 250, Z at the end away from the chuck.
+    expectAxis(lathe, 'X', -10.0, 300.0, 300.0, 1500.0, 30000.0, 250.0);
+    expectAxis(lathe, 'Z', -600.0, 50.0, 300.0, 1500.0, 30000.0, 50.0);
     expectAxis(lathe, 'C', -36000.0, 36000.0, 720.0, 1500.0, 30000.0);
     EXPECT_TRUE(lathe.axis('X')->diameterMode);
     EXPECT_FALSE(lathe.axis('Z')->diameterMode);

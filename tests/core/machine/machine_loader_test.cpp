@@ -1,6 +1,7 @@
 #include "core/machine/machine_loader.h"
 
 #include <filesystem>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -243,11 +244,14 @@ TEST(MachineLoader, PresetAndSimulatedProbeFromTheFile) {
     // Bounds not given stay open.
     EXPECT_EQ(config.probeWorkpiece.xMinMm, -100000.0);
     EXPECT_EQ(config.probeWorkpiece.zMinMm, -100000.0);
-    // The built-in machines keep the workpiece origin at the machine origin, with no probe box.
+    // The built-in mill's workpiece origin is 400 mm below its Z home (the top of a part on the
+    // table); every other built-in preset is the machine origin. Neither has a probe box.
     for (const char* name : {"mill", "lathe"}) {
         const MachineConfig machine = builtin(name);
-        for (const AxisConfig& axis : machine.axes)
-            EXPECT_EQ(axis.presetPosition, 0.0) << name << " " << axis.letter;
+        for (const AxisConfig& axis : machine.axes) {
+            const bool millZ = std::string(name) == "mill" && axis.letter == 'Z';
+            EXPECT_EQ(axis.presetPosition, millZ ? -400.0 : 0.0) << name << " " << axis.letter;
+        }
         EXPECT_FALSE(machine.probeWorkpiece.enabled) << name;
     }
 }

@@ -205,13 +205,14 @@ TEST_F(KerfRunDrives, RefusedBlockStopsTheRunBeforeAnythingMoves) {
 }
 
 // The reproducer: 30 s of slow feed to Z-498, then a move to Z-550 below the mill's Z limit
-// (-500). Refused at once, not after the feed has run.
+// (-500). Refused at once, not after the feed has run. --work-offset Z0: the workpiece origin at
+// the machine origin (the mill's own preset is Z-400), so the program's Z is the machine's.
 TEST_F(KerfRunDrives, SoftLimitIsCheckedBeforeALongFeedRuns) {
     std::ofstream(m_dir / "deep.H") << "0 BEGIN PGM DEEP MM\n"
                                        "1 L Z-498 R0 F1000\n"
                                        "2 L Z-550\n"
                                        "3 END PGM DEEP MM\n";
-    KerfResult r = run("--drives can-sim", "deep.H");
+    KerfResult r = run("--drives can-sim --work-offset Z0", "deep.H");
     EXPECT_EQ(r.exitCode, 1);
     ASSERT_TRUE(r.report.is_object()) << r.errors;
     EXPECT_TRUE(r.report["drives"]["refused"].get<bool>());

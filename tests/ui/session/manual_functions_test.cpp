@@ -144,9 +144,9 @@ TEST_F(ManualFunctionsTest, APresetByEntryIsWrittenToRowZeroOfThePresetTable) {
     ASSERT_TRUE(table) << table.error().format();
     ASSERT_NE(table->byNumber(0), nullptr);
     EXPECT_NEAR(table->byNumber(0)->axis('X').value_or(0.0), -25.0, 1e-9);
-    // The other axes keep the origin they had (the built-in mill's: machine zero).
+    // The other axes keep the origin they had (the built-in mill's: machine Y 0, Z -400).
     EXPECT_NEAR(table->byNumber(0)->axis('Y').value_or(1.0), 0.0, 1e-9);
-    EXPECT_NEAR(table->byNumber(0)->axis('Z').value_or(1.0), 0.0, 1e-9);
+    EXPECT_NEAR(table->byNumber(0)->axis('Z').value_or(1.0), -400.0, 1e-9);
 }
 
 TEST_F(ManualFunctionsTest, ThePresetTablesRowZeroPlacesTheNextProgram) {
@@ -158,9 +158,10 @@ TEST_F(ManualFunctionsTest, ThePresetTablesRowZeroPlacesTheNextProgram) {
     connect(*machine::loadMachine("mill"), root);
     settle();
     EXPECT_NEAR(session->presetInMachine()[Axis::Z], -150.0, 1e-9);
-    // Machine X 0 Y 0 Z 0 seen from the origin (100, -20, -150): X -100, Y 20, Z 150.
+    // The tip starts at the built-in preset's origin, machine X 0 Y 0 Z -400; seen from the
+    // origin (100, -20, -150): X -100, Y 20, Z -250.
     EXPECT_NEAR(axis(Axis::X).actual, -100.0, 1e-6);
-    EXPECT_NEAR(axis(Axis::Z).actual, 150.0, 1e-6);
+    EXPECT_NEAR(axis(Axis::Z).actual, -250.0, 1e-6);
     // L X+5 Y+5 Z+20 from that origin is machine X 105, Y -15, Z -130.
     ASSERT_TRUE(session->executeMdi("L X+5 Y+5 Z+20 FMAX"));
     ASSERT_TRUE(runToEnd());

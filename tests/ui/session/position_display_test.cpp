@@ -72,6 +72,25 @@ TEST(PositionDisplay, ShowsTheLatheXAsDiameterAndFollowsTheSettings) {
     EXPECT_EQ(display.toolText(), "T 7");
 }
 
+TEST(PositionDisplay, MarksEachAxisNotReferencedUntilItIsHomed) {
+    test::testApp();
+    auto mill = machine::loadMachine("mill");
+    ASSERT_TRUE(mill.ok());
+    PositionDisplay display(*mill);
+    task::MachineStatus status;
+    for (size_t i = 0; i < 3; ++i)
+        status.axes[i] = axisAt(0.0, 0.0, 0.0, 0.0);
+    display.setStatus(status);
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+        EXPECT_TRUE(display.notReferencedShown(a));
+    // Z homed first (the mill's reference order): only X and Y keep the mark.
+    status.axes[2].homed = true;
+    display.setStatus(status);
+    EXPECT_TRUE(display.notReferencedShown(Axis::X));
+    EXPECT_TRUE(display.notReferencedShown(Axis::Y));
+    EXPECT_FALSE(display.notReferencedShown(Axis::Z));
+}
+
 TEST(OverrideControls, KeysStepTheOverrideAndTheyAreTouchSized) {
     test::testApp();
     OverrideControls controls;
