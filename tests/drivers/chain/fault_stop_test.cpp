@@ -12,11 +12,15 @@
 #include <gtest/gtest.h>
 
 #include "app/runner/can_machine.h"
+#include "canon_builders.h"
 #include "core/machine/machine_loader.h"
 #include "tests/drivers/system/frame_recorder.h"
 
 namespace kerf::drivers {
 namespace {
+
+using kerf::test::command;
+using kerf::test::pose;
 
 using std::chrono::nanoseconds;
 using Standstill = cia402::Standstill;
@@ -31,21 +35,6 @@ constexpr double kCountsPerMm = 10000.0;
 // the consumer time (30 ms), one servo period to see it (1 ms) and up to two SYNC periods until
 // the drive applies the quick stop (4 ms) at 500 mm/s, then the braking distance.
 constexpr double kHeartbeatTravelBoundMm = kRapidMmPerS * (0.030 + 0.001 + 0.004) + kBrakingMm;
-
-Pose pose(double x, double y, double z) {
-    Pose p;
-    p.values[0] = x;
-    p.values[1] = y;
-    p.values[2] = z;
-    return p;
-}
-
-canon::Command command(canon::CommandBody body, uint32_t line) {
-    canon::Command c;
-    c.location.line = line;
-    c.body = std::move(body);
-    return c;
-}
 
 // The spindle at 3000 rpm, then one long rapid along X: 62.5 mm to reach 500 mm/s, 175 mm at
 // full speed, 62.5 mm to stop.

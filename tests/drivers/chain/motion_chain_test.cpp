@@ -6,19 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "app/runner/can_machine.h"
+#include "canon_builders.h"
 #include "core/machine/machine_loader.h"
 #include "motion/sim/simulated_machine.h"
 
 namespace kerf::drivers {
 namespace {
 
-Pose pose(double x, double y, double z) {
-    Pose p;
-    p.values[0] = x;
-    p.values[1] = y;
-    p.values[2] = z;
-    return p;
-}
+using kerf::test::pose;
 
 std::vector<canon::Command> program() {
     std::vector<canon::Command> commands;

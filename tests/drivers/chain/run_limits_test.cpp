@@ -10,25 +10,14 @@
 #include <gtest/gtest.h>
 
 #include "app/runner/can_machine.h"
+#include "canon_builders.h"
 #include "core/machine/machine_loader.h"
 
 namespace kerf::drivers {
 namespace {
 
-Pose pose(double x, double y, double z) {
-    Pose p;
-    p.values[0] = x;
-    p.values[1] = y;
-    p.values[2] = z;
-    return p;
-}
-
-canon::Command command(canon::CommandBody body, uint32_t line) {
-    canon::Command c;
-    c.location.line = line;
-    c.body = std::move(body);
-    return c;
-}
+using kerf::test::command;
+using kerf::test::pose;
 
 bool hasCode(const DiagnosticList& list, const std::string& code) {
     for (const Diagnostic& d : list) {
