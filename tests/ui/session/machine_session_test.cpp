@@ -10,6 +10,7 @@
 
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
+#include "session_service.h"
 #include "simulated_machine.h"
 
 namespace kerf::ui {
@@ -33,13 +34,7 @@ protected:
 
     // Services the session (as its timer does) until `done` or the time is up.
     bool serviceUntil(const std::function<bool()>& done, std::chrono::milliseconds limit = 10s) {
-        const auto deadline = std::chrono::steady_clock::now() + limit;
-        while (std::chrono::steady_clock::now() < deadline) {
-            session->service();
-            if (done()) return true;
-            std::this_thread::sleep_for(2ms);
-        }
-        return false;
+        return test::serviceUntil(*session, done, limit);
     }
     bool runToEnd() {
         return serviceUntil([this] {

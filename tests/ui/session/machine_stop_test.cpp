@@ -11,6 +11,7 @@
 
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
+#include "session_service.h"
 #include "simulated_machine.h"
 #include "ui/session/machine_session.h"
 
@@ -31,13 +32,7 @@ public:
             std::make_unique<MachineSession>(config, test::connectSimulatedMachine(config), "");
     }
     bool serviceUntil(const std::function<bool()>& done, std::chrono::milliseconds limit = 10s) {
-        const auto deadline = std::chrono::steady_clock::now() + limit;
-        while (std::chrono::steady_clock::now() < deadline) {
-            session->service();
-            if (done()) return true;
-            std::this_thread::sleep_for(2ms);
-        }
-        return false;
+        return test::serviceUntil(*session, done, limit);
     }
     double nominal(Axis a) const {
         return session->status().axes[static_cast<size_t>(axisIndex(a))].nominal;

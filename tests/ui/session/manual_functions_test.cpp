@@ -12,6 +12,7 @@
 #include "core/tables/preset_table.h"
 #include "core/task/shifted_motion_port.h"
 #include "qt_test_app.h"
+#include "session_service.h"
 #include "simulated_machine.h"
 #include "test_paths.h"
 #include "ui/session/machine_session.h"
@@ -90,13 +91,7 @@ protected:
             std::make_unique<MachineSession>(config, test::connectSimulatedMachine(config), ncRoot);
     }
     bool serviceUntil(const std::function<bool()>& done, std::chrono::milliseconds limit = 10s) {
-        const auto deadline = std::chrono::steady_clock::now() + limit;
-        while (std::chrono::steady_clock::now() < deadline) {
-            session->service();
-            if (done()) return true;
-            std::this_thread::sleep_for(2ms);
-        }
-        return false;
+        return test::serviceUntil(*session, done, limit);
     }
     bool runToEnd() {
         return serviceUntil([this] {
