@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
+#include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/geometry/axes.h"
 #include "motion/planner/planner.h"
@@ -25,12 +25,6 @@ constexpr double kInPositionMinMm = 1.5e-4;
 // Motion is done but an axis is not in position this long after: it will not get there (a
 // control's in-position timeout).
 constexpr double kInPositionTimeoutS = 1.0;
-
-std::string fixed(double value, int decimals) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
-}
 
 }  // namespace
 
@@ -134,13 +128,13 @@ struct CanMachine::Chain {
             diagnostic.messageTemplate = KERF_TR_NOOP(
                 "CAN node {1} ({2}) sends no feedback since the stop: where it came to rest is "
                 "unknown (last seen at {3})");
-            diagnostic.args = {node, name, fixed(d.atRest, 3)};
+            diagnostic.args = {node, name, formatFixed(d.atRest, 3)};
         } else {
             diagnostic.severity = Severity::Error;
             diagnostic.code = "drives.not-at-rest";
             diagnostic.messageTemplate =
                 KERF_TR_NOOP("CAN node {1} ({2}) was still moving {3} s after the quick stop");
-            diagnostic.args = {node, name, fixed(stopLimitS, 3)};
+            diagnostic.args = {node, name, formatFixed(stopLimitS, 3)};
         }
         return diagnostic;
     }
@@ -210,7 +204,7 @@ struct CanMachine::Chain {
         d.messageTemplate = KERF_TR_NOOP(
             "the drive simulation reached its limit of {1} s of simulated time; the axes were "
             "stopped");
-        d.args = {fixed(maxSimulatedS, 0)};
+        d.args = {formatFixed(maxSimulatedS, 0)};
         limitProblems.push_back(d);
     }
 
@@ -246,7 +240,7 @@ struct CanMachine::Chain {
         d.messageTemplate =
             KERF_TR_NOOP("axis {1} did not reach its end point: {2} away {3} s after motion ended");
         std::string letter(1, axisLetter(static_cast<Axis>(axis)));
-        d.args = {letter, fixed(distance, 4), fixed(kInPositionTimeoutS, 1)};
+        d.args = {letter, formatFixed(distance, 4), formatFixed(kInPositionTimeoutS, 1)};
         limitProblems.push_back(d);
     }
 

@@ -74,11 +74,15 @@ std::string formatFixed(double value, int decimals) {
     return out;
 }
 
-std::string formatForMessage(double value, int decimals) {
-    if (std::isfinite(value) && std::fabs(value) < 1e9) return formatFixed(value, decimals);
+std::string formatShort(double value) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.9g", value);
     return buffer;
+}
+
+std::string formatForMessage(double value, int decimals) {
+    if (std::isfinite(value) && std::fabs(value) < 1e9) return formatFixed(value, decimals);
+    return formatShort(value);
 }
 
 }  // namespace kerf

@@ -10,8 +10,12 @@ void appendFixed(std::string& out, double value, int decimals);
 
 std::string formatFixed(double value, int decimals);
 
+// Nine significant digits, exponent when shorter: "1e+200", "-inf", "1500000". For messages
+// about values that may be huge or not finite.
+std::string formatShort(double value);
+
 // For messages: like formatFixed while the number is of a size a machinist writes; a huge or
-// non-finite value as "1e+300", "inf", "nan" instead of hundreds of digits.
+// non-finite value as formatShort gives it ("1e+300", "inf") instead of hundreds of digits.
 std::string formatForMessage(double value, int decimals);
 
 }  // namespace kerf

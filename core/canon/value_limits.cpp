@@ -1,8 +1,6 @@
 #include "core/canon/value_limits.h"
 
 #include <cmath>
-#include <cstdio>
-#include <string>
 #include <variant>
 
 namespace kerf::canon {
@@ -103,12 +101,6 @@ std::optional<UnsafeValue> findUnsafeValue(const CommandBody& body) {
     Inspector inspector;
     std::visit(inspector, body);
     return inspector.found();
-}
-
-std::string describeValue(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
 }
 
 }  // namespace kerf::canon

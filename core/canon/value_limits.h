@@ -1,7 +1,6 @@
 #pragma once
 
 #include <optional>
-#include <string>
 
 #include "core/canon/commands.h"
 
@@ -23,8 +22,5 @@ struct UnsafeValue {
 
 // The first number of the command that is not finite or beyond kMaxStreamMagnitude.
 std::optional<UnsafeValue> findUnsafeValue(const CommandBody& body);
-
-// "1e+200", "inf", "nan", "-1500000": a short text of an unsafe value for a message.
-std::string describeValue(double value);
 
 }  // namespace kerf::canon

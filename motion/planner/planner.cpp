@@ -150,7 +150,7 @@ bool Planner::add(const canon::Command& command) {
             source, "motion.unsafe-value",
             KERF_TR_NOOP("Block {1}: {2} = {3} is outside the range of the control; the program "
                          "is not run past this block."),
-            {blockName(source), unsafe->quantity, canon::describeValue(unsafe->value)}));
+            {blockName(source), unsafe->quantity, formatShort(unsafe->value)}));
         return false;
     }
     if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) {

@@ -1,5 +1,6 @@
 #include "core/interp/path/value_guard.h"
 
+#include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/canon/value_limits.h"
 
@@ -8,11 +9,11 @@ namespace kerf::interp {
 std::optional<PathError> unsafeValueError(const canon::Command& command) {
     const auto unsafe = canon::findUnsafeValue(command.body);
     if (!unsafe) return std::nullopt;
-    return PathError{command.location,
-                     "range",
-                     KERF_TR_NOOP("{1} = {2} is outside the range of the control (at most {3})"),
-                     {unsafe->quantity, canon::describeValue(unsafe->value),
-                      canon::describeValue(canon::kMaxStreamMagnitude)}};
+    return PathError{
+        command.location,
+        "range",
+        KERF_TR_NOOP("{1} = {2} is outside the range of the control (at most {3})"),
+        {unsafe->quantity, formatShort(unsafe->value), formatShort(canon::kMaxStreamMagnitude)}};
 }
 
 void ValueGuard::consume(const canon::Command& command) {

@@ -89,3 +89,9 @@ TEST(FixedFormat, MessagesShowHugeValuesShort) {
     EXPECT_EQ(kerf::formatForMessage(-2.5e12, 4), "-2.5e+12");
     EXPECT_EQ(kerf::formatForMessage(std::numeric_limits<double>::infinity(), 4), "inf");
 }
+
+TEST(FixedFormat, UnsafeValuesAreDescribedShortly) {
+    EXPECT_EQ(kerf::formatShort(1e200), "1e+200");
+    EXPECT_EQ(kerf::formatShort(-std::numeric_limits<double>::infinity()), "-inf");
+    EXPECT_EQ(kerf::formatShort(1500000), "1500000");
+}

@@ -68,11 +68,5 @@ TEST(ValueLimits, EveryNumberOfEveryCommandIsChecked) {
     EXPECT_STREQ(findUnsafeValue(RapidMove{rotary})->quantity, "C");
 }
 
-TEST(ValueLimits, ValuesAreDescribedShortly) {
-    EXPECT_EQ(describeValue(1e200), "1e+200");
-    EXPECT_EQ(describeValue(-kInf), "-inf");
-    EXPECT_EQ(describeValue(1500000), "1500000");
-}
-
 }  // namespace
 }  // namespace kerf::canon
