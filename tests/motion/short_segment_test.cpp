@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "canon_builders.h"
 #include "tests/motion/motion_test_run.h"
 #include "tests/motion/raster_program.h"
 
@@ -9,6 +10,9 @@
 // ends; the sampled setpoints must stay within every axis limit however many there are.
 namespace kerf::motion::test {
 namespace {
+
+using kerf::test::command;
+using kerf::test::pose;
 
 double rounded(double value, int decimals) {
     double scale = std::pow(10.0, decimals);
@@ -30,21 +34,6 @@ struct CollectRounded final : canon::Sink {
     }
 };
 
-canon::Command cmd(canon::CommandBody body, uint32_t line) {
-    canon::Command c;
-    c.location.line = line;
-    c.body = std::move(body);
-    return c;
-}
-
-Pose at(double x, double y, double z) {
-    Pose p;
-    p[Axis::X] = x;
-    p[Axis::Y] = y;
-    p[Axis::Z] = z;
-    return p;
-}
-
 // gen.py polycircle: the circle of radius r through the origin, centre (0, r), as lines of
 // `seg` mm of arc, coordinates written with `decimals` decimals, `length` mm in all.
 std::vector<canon::Command> polylineCircle(double r, double seg, int decimals, double length,
@@ -56,7 +45,7 @@ std::vector<canon::Command> polylineCircle(double r, double seg, int decimals, d
         double x = rounded(r * std::sin(s / r), decimals);
         double y = rounded(r - r * std::cos(s / r), decimals);
         commands.push_back(
-            cmd(canon::LinearMove{at(x, y, 0.0), feedMmPerMin}, static_cast<uint32_t>(i)));
+            command(canon::LinearMove{pose(x, y, 0.0), feedMmPerMin}, static_cast<uint32_t>(i)));
     }
     return commands;
 }
@@ -87,14 +76,14 @@ TEST(ShortSegments, FmaxPlungeIntoAFineRasterRespectsEveryLimit) {
     // onto its start point.
     for (double seg : {0.005, 0.02, 0.05}) {
         CollectRounded collect;
-        collect.consume(cmd(canon::RapidMove{at(0.0, 0.0, 5.0)}, 1));
-        collect.consume(cmd(canon::RapidMove{rasterStart()}, 2));
+        collect.consume(command(canon::RapidMove{pose(0.0, 0.0, 5.0)}, 1));
+        collect.consume(command(canon::RapidMove{rasterStart()}, 2));
         RasterOptions options;
         options.blocks = 1000;
         options.segMm = seg;
         options.feedMmPerMin = 6000.0;
         emitRaster(options, collect);
-        TestRun run = runCommands(millConfig(), collect.commands, at(0.0, 0.0, 20.0));
+        TestRun run = runCommands(millConfig(), collect.commands, pose(0.0, 0.0, 20.0));
         SCOPED_TRACE("seg " + std::to_string(seg) + ": " + run.checker->limitSummary());
         expectWithinLimits(run, 0.01);
     }
