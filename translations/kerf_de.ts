@@ -5304,6 +5304,10 @@ editieren</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Reihenfolge der Achse bei Alle referenzieren: kleinere Nummern zuerst</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; hat sich beim Öffnen geändert: ein Link ist aufgetaucht</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

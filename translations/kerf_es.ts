@@ -5304,6 +5304,10 @@ ciclo</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Orden del eje en Referenciar todos: los números menores se referencian primero</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; cambió mientras se abría: apareció un enlace</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

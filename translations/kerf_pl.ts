@@ -5307,6 +5307,10 @@ cykl</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Kolejność osi w Bazuj wszystkie: mniejsze numery są bazowane najpierw</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; zmienił się podczas otwierania: pojawiło się dowiązanie</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

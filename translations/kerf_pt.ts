@@ -5304,6 +5304,10 @@ ciclo</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Ordem do eixo em Referenciar todos: números menores são referenciados primeiro</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; mudou enquanto era aberto: apareceu uma ligação</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -58,6 +58,7 @@ void checkProgram(ProgramFile& program) {
     out.clear();
     program.numberedLabels.clear();
     program.namedLabels.clear();
+    program.calls.clear();
     const std::string& file = program.source->path();
     BlockReader reader(program.source->text());
     program::LogicalLine line;
@@ -139,6 +140,11 @@ void checkProgram(ProgramFile& program) {
                 diag(Severity::Error, "label", line.firstLine, 1,
                      KERF_TR_NOOP("label {1} is defined twice"), {labelText(label->target)});
             }
+        } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
+            const size_t at = line.text.find(callPgm->path);
+            program.calls.push_back({callPgm->path,
+                                     line.lineAt(at == std::string_view::npos ? 0 : at),
+                                     line.columnAt(at == std::string_view::npos ? 0 : at)});
         } else if (const auto* call = std::get_if<CallLabel>(&s)) {
             targets.push_back({call->target, line.firstLine, 1});
         } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "core/base/diagnostic.h"
 #include "core/program/source_text.h"
@@ -18,6 +19,13 @@ struct LabelPosition {
     uint32_t line = 0;
 };
 
+// A `CALL PGM` block as the check found it, so the called program can be checked too.
+struct ProgramCall {
+    std::string name;
+    uint32_t line = 0;
+    uint32_t column = 0;
+};
+
 // A loaded conversational program with its label index, built by a full syntax check.
 struct ProgramFile {
     std::shared_ptr<const program::SourceText> source;
@@ -27,6 +35,7 @@ struct ProgramFile {
     std::unordered_map<std::string, LabelPosition> namedLabels;
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
+    std::vector<ProgramCall> calls;
 
     // For a check running alongside execution: how far execution has read. The check stays
     // within a window ahead of it so the text between them is all that is resident; SIZE_MAX lets
