@@ -150,12 +150,12 @@ void checkProgram(ProgramFile& program) {
         } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {
             targets.push_back({jump->target, line.firstLine, 1});
         } else if (const auto* deferred = std::get_if<Deferred>(&s)) {
-            diag(Severity::Warning, "not-supported", line.firstLine, 1,
+            diag(Severity::Error, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
                  {deferred->feature});
         } else if (const auto* cycle = std::get_if<CycleDefinition>(&s);
                    cycle && cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
-            diag(Severity::Warning, "not-supported", line.firstLine, 1,
+            diag(Severity::Error, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP(
                      "cycle {1} is not supported yet; the program cannot run past this block"),
                  {std::to_string(cycle->number)});

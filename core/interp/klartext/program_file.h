@@ -48,8 +48,9 @@ struct ProgramFile {
 };
 
 // Checks every block of the program's syntax, indexes its labels and reports what cannot run:
-// unknown jump targets, labels defined twice, missing BEGIN/END PGM, block numbers out of order,
-// and (as warnings) features this release parses but does not execute.
+// unknown jump targets, labels defined twice, features this release parses but does not execute
+// (errors: the program could not run to its end), missing BEGIN/END PGM and block numbers out of
+// order (warnings).
 void checkProgram(ProgramFile& program);
 
 // Whether the program's BEGIN PGM block says INCH (its first block; MM otherwise).
