@@ -5308,6 +5308,10 @@ editieren</translation>
         <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
         <translation>&apos;{1}&apos; hat sich beim Öffnen geändert: ein Link ist aufgetaucht</translation>
     </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>Diese Maschine hat keine Achse {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

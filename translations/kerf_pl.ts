@@ -5311,6 +5311,10 @@ cykl</translation>
         <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
         <translation>&apos;{1}&apos; zmienił się podczas otwierania: pojawiło się dowiązanie</translation>
     </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>Ta maszyna nie ma osi {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -5308,6 +5308,10 @@ ciclo</translation>
         <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
         <translation>&apos;{1}&apos; mudou enquanto era aberto: apareceu uma ligação</translation>
     </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>esta máquina não tem eixo {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/base/translate.h"
+#include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
 
@@ -36,6 +37,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
       m_parser(m_environment.get()),
       m_path(m_out) {
     if (m_settings.machine != nullptr) {
+        m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
         if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;
     }
     m_programmed = m_settings.startPosition;
@@ -90,6 +92,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
     program->source = *source;
     program->fileId = m_sources.add(path.string());
     program->folder = path.parent_path();
+    program->machineAxes = m_machineAxes;
     if (check) checkProgram(*program);
     m_programs.push_back(std::move(program));
     return m_programs.back().get();
@@ -127,6 +130,7 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     program->source = program::SourceText::fromString(std::move(text), path);
     program->fileId = m_sources.add(path);
     program->folder = std::filesystem::path(path).parent_path();
+    program->machineAxes = m_machineAxes;
     checkProgram(*program);
     DiagnosticList found = program->diagnostics;
     checkCalledPrograms(*program, found);

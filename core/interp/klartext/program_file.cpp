@@ -8,6 +8,7 @@
 #include "core/cycles/cycle_registry.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
 
@@ -110,6 +111,11 @@ void checkProgram(ProgramFile& program) {
             if (unnumbered++ == 0) firstUnnumberedLine = line.firstLine;
         }
         const Statement& s = block.statement;
+        if (auto missing = axisMissingFrom(s, program.machineAxes)) {
+            diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
+                 KERF_TR_NOOP("this machine has no axis {1}"),
+                 {std::string(1, axisLetter(*missing))});
+        }
         if (const auto* begin = std::get_if<BeginPgm>(&s)) {
             if (!firstBlock || sawBegin) {
                 diag(Severity::Error, "structure", line.firstLine, 1,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/base/diagnostic.h"
+#include "core/geometry/axes.h"
 #include "core/program/source_text.h"
 
 namespace kerf::klartext {
@@ -36,6 +37,7 @@ struct ProgramFile {
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
     std::vector<ProgramCall> calls;
+    AxisMask machineAxes = 0x1ff;  // the axes the machine has; every axis when there is no machine
 
     // For a check running alongside execution: how far execution has read. The check stays
     // within a window ahead of it so the text between them is all that is resident; SIZE_MAX lets

@@ -183,6 +183,28 @@ TEST_F(InterpreterTest, NothingIsWrittenWhenACalledProgramHasAnError) {
     EXPECT_FALSE(fs::exists(dir / "OUT.TXT"));
 }
 
+TEST_F(InterpreterTest, AnAxisTheMachineLacksIsAnError) {
+    // The built-in mill has X, Y and Z: an A word is refused at its column instead of being
+    // dropped from the move.
+    ASSERT_EQ(machine.enabledAxisLetters(), "XYZ");
+    writeFileAtomically(dir / "R.H",
+                        "0 BEGIN PGM R MM\n1 L X+10 IA+90 R0 FMAX\n"
+                        "2 END PGM R MM\n");
+    auto k = make();
+    EXPECT_FALSE(k->load(dir / "R.H"));
+    ASSERT_TRUE(hasErrors(k->diagnostics()));
+    const Diagnostic& axis = k->diagnostics().front();
+    EXPECT_EQ(axis.line, 2u);
+    EXPECT_EQ(axis.column, 10u);  // "1 L X+10 IA+90": IA starts at column 10
+    EXPECT_EQ(axis.message(), "this machine has no axis A");
+    // A machine that has the axis accepts the same block.
+    machine::AxisConfig rotary;
+    rotary.letter = 'A';
+    machine.axes.push_back(rotary);
+    auto fourAxes = make();
+    EXPECT_TRUE(fourAxes->load(dir / "R.H"));
+}
+
 TEST_F(InterpreterTest, ProgramCallsCannotRecurseForever) {
     writeFileAtomically(dir / "SELF.H",
                         "0 BEGIN PGM SELF MM\n1 CALL PGM SELF.H\n2 END PGM SELF MM\n");
