@@ -63,7 +63,23 @@ bool expandThread(const Thread& t, const Vec2& callZx, LathePath& path, LatheErr
     }
     const double total = std::fabs(t.depth);
     const double rough = total - std::fabs(t.finishing);
-    const double tangent = std::tan(degToRad(std::fabs(t.infeedAngleDeg)));
+    if (std::fabs(t.exit) >= std::fabs(length)) {
+        error = {'J',
+                 "cycle-geometry",
+                 KERF_TR_NOOP("{1} leaves no thread to cut between the start and the end"),
+                 {"J"}};
+        return false;
+    }
+    const double tangent = std::fabs(t.infeedAngleDeg) < 90.0
+                               ? std::tan(degToRad(std::fabs(t.infeedAngleDeg)))
+                               : HUGE_VAL;
+    if (total * tangent >= std::fabs(length) - std::fabs(t.exit)) {
+        error = {'A',
+                 "cycle-geometry",
+                 KERF_TR_NOOP("{1} leaves no thread to cut between the start and the end"),
+                 {"A"}};
+        return false;
+    }
     const bool zigzag = t.infeedAngleDeg < 0.0;
     std::vector<Pass> passes;
     double previous = 0.0;
