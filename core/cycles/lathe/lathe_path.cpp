@@ -18,6 +18,18 @@ void LathePath::move(LatheStep::Kind kind, const Vec2& to, double feed) {
     m_at = to;
 }
 
+void LathePath::arc(const Vec2& to, const Vec2& centre, bool ccw, double feed) {
+    if ((to - m_at).norm() < kSame || full()) return;
+    LatheStep step;
+    step.kind = LatheStep::Kind::FeedArc;
+    step.to = to;
+    step.centre = centre;
+    step.ccw = ccw;
+    step.feed = feed;
+    m_steps.push_back(step);
+    m_at = to;
+}
+
 void LathePath::thread(const Vec2& to, double lead, double angleDeg, double leadChange) {
     if ((to - m_at).norm() < kSame || full()) return;
     LatheStep step;

@@ -16,6 +16,7 @@ struct LatheStep {
     enum class Kind : uint8_t {
         Rapid,
         Feed,            // at `feed` (mm/min or mm/rev as active), 0: the feed active at the call
+        FeedArc,         // like Feed, about `centre`, counter-clockwise in (z, x) if `ccw`
         Thread,          // spindle-synchronised: `lead` mm per revolution along the move
         Dwell,           // `seconds`
         SpindleStop,     // M05
@@ -25,6 +26,8 @@ struct LatheStep {
     };
     Kind kind = Kind::Rapid;
     Vec2 to{0.0, 0.0};
+    Vec2 centre{0.0, 0.0};
+    bool ccw = false;
     double feed = 0.0;
     double lead = 0.0;
     double leadChange = 0.0;  // mm per revolution per revolution (G86/G87 M)
@@ -54,6 +57,7 @@ public:
 
     void rapid(const Vec2& to) { move(LatheStep::Kind::Rapid, to, 0.0); }
     void feed(const Vec2& to, double feed = 0.0) { move(LatheStep::Kind::Feed, to, feed); }
+    void arc(const Vec2& to, const Vec2& centre, bool ccw, double feed = 0.0);
     void thread(const Vec2& to, double lead, double angleDeg, double leadChange = 0.0);
     void dwell(double seconds);
     void command(LatheStep::Kind kind, double angleDeg = 0.0);

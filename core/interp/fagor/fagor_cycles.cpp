@@ -6,7 +6,7 @@
 #include "core/base/translate.h"
 #include "core/cycles/lathe/axial_drilling.h"
 #include "core/cycles/lathe/grooving.h"
-#include "core/cycles/lathe/straight_turning.h"
+#include "core/cycles/lathe/section_turning.h"
 #include "core/cycles/lathe/threading.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
@@ -34,18 +34,25 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
     bool ok = false;
     switch (g) {
         case 81:
-        case 82: {
-            cycles::lathe::StraightSection section;
-            section.facing = g == 82;
+        case 82:
+        case 84:
+        case 85: {
+            cycles::lathe::TurningSection section;
+            section.facing = g == 82 || g == 85;
             section.a = point('Z', 'X');
             section.b = point('R', 'Q');
+            if (g == 84 || g == 85) {
+                // I (radius) and K: the centre relative to A, like I, K of G02/G03.
+                section.centre = section.a + Vec2(length(w['K'].value), length(w['I'].value));
+                section.radiusTolerance = m_settings.circleToleranceMm;
+            }
             section.maxStep = length(w['C'].value);
             if (w.has('D')) section.retract = length(w['D'].value);
             section.allowanceX = len('L', 0.0);
             section.allowanceZ = len('M', 0.0);
             section.finalRoughingFeed = w.value('F', 0.0);
             section.finishingFeed = w.value('H', 0.0);
-            ok = cycles::lathe::expandStraightSection(section, call, path, error);
+            ok = cycles::lathe::expandTurningSection(section, call, path, error);
             break;
         }
         case 83: {
@@ -117,7 +124,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             break;
         }
         default:
-            return true;  // G66, G68, G69, G84, G85: refused by checkGFunctions()
+            return true;  // G66, G68, G69: refused by checkGFunctions()
     }
     if (!ok) {
         const size_t offset =
@@ -127,8 +134,9 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
         return false;
     }
     m_parameters.clobberForCycle();
-    // G81/G82 keep the radius compensation programmed before them; the others cancel it.
-    if (g != 81 && g != 82) m_modal.side = interp::CompSide::None;
+    // G81, G82, G84, G85 keep the radius compensation programmed before them; the others
+    // cancel it.
+    if (g == 83 || g >= 86) m_modal.side = interp::CompSide::None;
     if (!runCycleSteps(path.steps(), iso)) return false;
     m_lastTangent.reset();
     m_thread.previousWasThread = false;
@@ -157,6 +165,19 @@ bool FagorInterpreter::runCycleSteps(const std::vector<LatheStep>& steps, const 
                 if (!submit(ContourElement::line(plane.plane, from, to), kind, iso, &own)) {
                     return false;
                 }
+                break;
+            }
+            case LatheStep::Kind::FeedArc: {
+                const Pose from = programmedPosition();
+                Pose to = from;
+                plane.setPoint(to, step.to);
+                const double sweep = arcSweep(plane.point(from), step.to, step.centre, step.ccw);
+                const ContourElement element =
+                    ContourElement::arc(plane.plane, from, to, plane.toGeometry(step.centre),
+                                        plane.toGeometrySweep(sweep));
+                OwnMoveData own;
+                own.feed = step.feed;
+                if (!submit(element, MoveKind::Feed, iso, &own)) return false;
                 break;
             }
             case LatheStep::Kind::Dwell:

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/cycles/lathe/straight_turning.h"
+#include "core/cycles/lathe/section_turning.h"
 #include "core/cycles/lathe/threading.h"
 
 namespace kerf::cycles::lathe {
@@ -22,7 +22,7 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
     std::mt19937 random(17);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int trial = 0; trial < 500; ++trial) {
-        StraightSection s;
+        TurningSection s;
         s.a = {0.0, 5.0 + 20.0 * u(random)};
         s.b = {-5.0 - 40.0 * u(random), s.a.y() + 15.0 * u(random)};
         s.maxStep = 0.2 + 3.0 * u(random);
@@ -36,7 +36,7 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
         const Vec2 call(1.0 + s.allowanceZ, s.b.y() + s.allowanceX + 10.0 * u(random));
         LathePath path(call);
         LatheError error;
-        ASSERT_TRUE(expandStraightSection(s, call, path, error)) << error.messageTemplate;
+        ASSERT_TRUE(expandTurningSection(s, call, path, error)) << error.messageTemplate;
         Vec2 at = call;
         int cuts = 0;
         double lastLevel = call.y();
