@@ -5304,6 +5304,86 @@ ciclo</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Orden del eje en Referenciar todos: los números menores se referencian primero</translation>
     </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} debe ser 0, 1 o 2 para roscar con macho</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>el roscado rígido necesita un avance y una velocidad de cabezal</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>los picados bajan de 0,001 mm antes de la profundidad I: programe L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>la ranura no tiene profundidad</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>la ranura es más estrecha que el ancho de corte NOSEW de la herramienta</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C no está programado y la herramienta no tiene ancho de corte NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>la posición de la herramienta no es correcta para el ciclo ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>el ciclo necesitaría más de {1} movimientos: {2} es demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>A and B are not on one circle about the centre I, K</source>
+        <translation>A y B no están en un círculo alrededor del centro I, K</translation>
+    </message>
+    <message>
+        <source>the arc must stay within a quarter circle from A to B</source>
+        <translation>el arco de A a B debe quedar dentro de un cuarto de círculo</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>el tramo no tiene longitud en la dirección de las pasadas</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material: B must not be deeper than A</source>
+        <translation>el tramo vuelve por debajo del material: B no debe estar más profundo que A</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>la rosca no tiene longitud a lo largo de su eje</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} no deja rosca que cortar entre el inicio y el final</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} no es un parámetro de {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} de {2} necesita un valor</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} de {2} no puede ser 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} necesita su parámetro {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (variación de paso) no se puede programar con K (repaso)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} y {2}: un ciclo fijo por bloque</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

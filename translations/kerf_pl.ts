@@ -5307,6 +5307,86 @@ cykl</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Kolejność osi w Bazuj wszystkie: mniejsze numery są bazowane najpierw</translation>
     </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} musi wynosić 0, 1 lub 2 przy gwintowaniu</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>gwintowanie sztywne wymaga posuwu i prędkości wrzeciona</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>zagłębienia spadają poniżej 0,001 mm przed głębokością I: zaprogramuj L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>rowek nie ma głębokości</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>rowek jest węższy niż szerokość ostrza NOSEW narzędzia</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C nie jest zaprogramowane, a narzędzie nie ma szerokości ostrza NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>położenie narzędzia jest nieprawidłowe dla cyklu ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>cykl wymagałby ponad {1} ruchów: {2} jest za małe</translation>
+    </message>
+    <message>
+        <source>A and B are not on one circle about the centre I, K</source>
+        <translation>A i B nie leżą na jednym okręgu wokół środka I, K</translation>
+    </message>
+    <message>
+        <source>the arc must stay within a quarter circle from A to B</source>
+        <translation>łuk od A do B musi mieścić się w ćwiartce okręgu</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>odcinek nie ma długości w kierunku przejść</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material: B must not be deeper than A</source>
+        <translation>odcinek cofa się pod materiał: B nie może leżeć głębiej niż A</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>gwint nie ma długości wzdłuż swojej osi</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} nie zostawia gwintu do nacięcia między początkiem a końcem</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} nie jest parametrem {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} w {2} wymaga wartości</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} w {2} nie może wynosić 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} wymaga swojego parametru {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (zmiana skoku) nie może być zaprogramowane razem z K (ponowne nacinanie)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} i {2}: jeden cykl stały na blok</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

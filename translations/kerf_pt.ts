@@ -5304,6 +5304,86 @@ ciclo</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Ordem do eixo em Referenciar todos: números menores são referenciados primeiro</translation>
     </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} deve ser 0, 1 ou 2 para roscar com macho</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>o roscamento rígido precisa de um avanço e de uma velocidade do eixo-árvore</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>os aprofundamentos ficam abaixo de 0,001 mm antes da profundidade I: programe L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>a ranhura não tem profundidade</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>a ranhura é mais estreita que a largura de corte NOSEW da ferramenta</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C não está programado e a ferramenta não tem largura de corte NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>a posição da ferramenta não é correta para o ciclo ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>o ciclo precisaria de mais de {1} movimentos: {2} é pequeno demais</translation>
+    </message>
+    <message>
+        <source>A and B are not on one circle about the centre I, K</source>
+        <translation>A e B não estão num círculo em torno do centro I, K</translation>
+    </message>
+    <message>
+        <source>the arc must stay within a quarter circle from A to B</source>
+        <translation>o arco de A a B deve ficar dentro de um quarto de círculo</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>o trecho não tem comprimento na direção das passadas</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material: B must not be deeper than A</source>
+        <translation>o trecho volta por baixo do material: B não pode estar mais fundo que A</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>a rosca não tem comprimento ao longo do seu eixo</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} não deixa rosca para cortar entre o início e o fim</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} não é um parâmetro de {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} de {2} precisa de um valor</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} de {2} não pode ser 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} precisa do seu parâmetro {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (variação de passo) não pode ser programado com K (repasse)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} e {2}: um ciclo fixo por bloco</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
