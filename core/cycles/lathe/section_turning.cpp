@@ -1,5 +1,6 @@
 #include "core/cycles/lathe/section_turning.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/base/translate.h"
@@ -45,20 +46,27 @@ struct Section {
         const double theta = theta0 + t * sweep;
         return c + r * Vec2(std::cos(theta), std::sin(theta));
     }
-    // The parameter where the section reaches step level v (the section is monotone in it).
+    // The parameter where the section reaches step level v (it is monotone in it: a line, or
+    // an arc within a quarter circle).
     double atLevel(double v) const {
-        double lo = 0.0;
-        double hi = 1.0;
-        const bool rising = b.y() > a.y();
-        for (int i = 0; i < 60; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            if ((at(mid).y() < v) == rising) {
-                lo = mid;
-            } else {
-                hi = mid;
+        if (!arc) {
+            const double dy = b.y() - a.y();
+            return std::fabs(dy) < kTolerance ? 0.0 : std::clamp((v - a.y()) / dy, 0.0, 1.0);
+        }
+        const double base = std::asin(std::clamp((v - c.y()) / r, -1.0, 1.0));
+        double best = 0.0;
+        double bestDistance = HUGE_VAL;
+        for (const double angle : {base, kPi - base}) {
+            for (const double turn : {-kTwoPi, 0.0, kTwoPi}) {
+                const double t = (angle + turn - theta0) / sweep;
+                const double distance = t < 0.0 ? -t : t > 1.0 ? t - 1.0 : 0.0;
+                if (distance < bestDistance) {
+                    bestDistance = distance;
+                    best = std::clamp(t, 0.0, 1.0);
+                }
             }
         }
-        return 0.5 * (lo + hi);
+        return best;
     }
     Section shifted(const Vec2& d) const {
         Section s = *this;
