@@ -5337,20 +5337,8 @@ editieren</translation>
         <translation>der Zyklus bräuchte mehr als {1} Bewegungen: {2} ist zu klein</translation>
     </message>
     <message>
-        <source>A and B are not on one circle about the centre I, K</source>
-        <translation>A und B liegen nicht auf einem Kreis um den Mittelpunkt I, K</translation>
-    </message>
-    <message>
-        <source>the arc must stay within a quarter circle from A to B</source>
-        <translation>der Bogen von A nach B darf höchstens einen Viertelkreis umfassen</translation>
-    </message>
-    <message>
         <source>the section has no length along the passes</source>
         <translation>der Abschnitt hat keine Länge in Richtung der Schnitte</translation>
-    </message>
-    <message>
-        <source>the section runs back under the material: B must not be deeper than A</source>
-        <translation>der Abschnitt läuft unter das Material zurück: B darf nicht tiefer liegen als A</translation>
     </message>
     <message>
         <source>the thread has no length along its axis</source>
@@ -5383,6 +5371,42 @@ editieren</translation>
     <message>
         <source>{1} and {2}: one canned cycle per block</source>
         <translation>{1} und {2}: ein Festzyklus pro Satz</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>Anfang und Ende eines Bogens liegen nicht auf einem Kreis um seinen Mittelpunkt</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>ein Bogen des Profils darf höchstens einen Viertelkreis umfassen</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>das Profil läuft unter das Material zurück (Einstich oder Hinterschnitt): noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>die Satznummer N{1} des Profils ist nicht im Programm</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>das Profil endet (E) vor seinem Anfang (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>ein Profil enthält keine Sätze in Hochsprache</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} in einem Profil wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} ist in einem Profil nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>das Profil hat mehr als 10000 Elemente</translation>
     </message>
 </context>
 <context>

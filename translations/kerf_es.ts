@@ -5337,20 +5337,8 @@ ciclo</translation>
         <translation>el ciclo necesitaría más de {1} movimientos: {2} es demasiado pequeño</translation>
     </message>
     <message>
-        <source>A and B are not on one circle about the centre I, K</source>
-        <translation>A y B no están en un círculo alrededor del centro I, K</translation>
-    </message>
-    <message>
-        <source>the arc must stay within a quarter circle from A to B</source>
-        <translation>el arco de A a B debe quedar dentro de un cuarto de círculo</translation>
-    </message>
-    <message>
         <source>the section has no length along the passes</source>
         <translation>el tramo no tiene longitud en la dirección de las pasadas</translation>
-    </message>
-    <message>
-        <source>the section runs back under the material: B must not be deeper than A</source>
-        <translation>el tramo vuelve por debajo del material: B no debe estar más profundo que A</translation>
     </message>
     <message>
         <source>the thread has no length along its axis</source>
@@ -5383,6 +5371,42 @@ ciclo</translation>
     <message>
         <source>{1} and {2}: one canned cycle per block</source>
         <translation>{1} y {2}: un ciclo fijo por bloque</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>el inicio y el final de un arco no están en un círculo alrededor de su centro</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>un arco del perfil debe quedar dentro de un cuarto de círculo</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>el perfil vuelve por debajo del material (un canal o una entalla): todavía no se admite</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>la etiqueta N{1} del perfil no está en el programa</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>el perfil termina (E) antes de empezar (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>un perfil no contiene bloques de alto nivel</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} en un perfil todavía no se admite</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} no está permitido en un perfil</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>el perfil tiene más de 10000 elementos</translation>
     </message>
 </context>
 <context>

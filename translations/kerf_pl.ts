@@ -5340,20 +5340,8 @@ cykl</translation>
         <translation>cykl wymagałby ponad {1} ruchów: {2} jest za małe</translation>
     </message>
     <message>
-        <source>A and B are not on one circle about the centre I, K</source>
-        <translation>A i B nie leżą na jednym okręgu wokół środka I, K</translation>
-    </message>
-    <message>
-        <source>the arc must stay within a quarter circle from A to B</source>
-        <translation>łuk od A do B musi mieścić się w ćwiartce okręgu</translation>
-    </message>
-    <message>
         <source>the section has no length along the passes</source>
         <translation>odcinek nie ma długości w kierunku przejść</translation>
-    </message>
-    <message>
-        <source>the section runs back under the material: B must not be deeper than A</source>
-        <translation>odcinek cofa się pod materiał: B nie może leżeć głębiej niż A</translation>
     </message>
     <message>
         <source>the thread has no length along its axis</source>
@@ -5386,6 +5374,42 @@ cykl</translation>
     <message>
         <source>{1} and {2}: one canned cycle per block</source>
         <translation>{1} i {2}: jeden cykl stały na blok</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>początek i koniec łuku nie leżą na jednym okręgu wokół jego środka</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>łuk profilu musi mieścić się w ćwiartce okręgu</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>profil cofa się pod materiał (kanał lub podcięcie): jeszcze nieobsługiwane</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>etykiety N{1} profilu nie ma w programie</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>profil kończy się (E) przed swoim początkiem (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>profil nie zawiera bloków języka wysokiego poziomu</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} w profilu nie jest jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} jest niedozwolone w profilu</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>profil ma ponad 10000 elementów</translation>
     </message>
 </context>
 <context>

@@ -5337,20 +5337,8 @@ ciclo</translation>
         <translation>o ciclo precisaria de mais de {1} movimentos: {2} é pequeno demais</translation>
     </message>
     <message>
-        <source>A and B are not on one circle about the centre I, K</source>
-        <translation>A e B não estão num círculo em torno do centro I, K</translation>
-    </message>
-    <message>
-        <source>the arc must stay within a quarter circle from A to B</source>
-        <translation>o arco de A a B deve ficar dentro de um quarto de círculo</translation>
-    </message>
-    <message>
         <source>the section has no length along the passes</source>
         <translation>o trecho não tem comprimento na direção das passadas</translation>
-    </message>
-    <message>
-        <source>the section runs back under the material: B must not be deeper than A</source>
-        <translation>o trecho volta por baixo do material: B não pode estar mais fundo que A</translation>
     </message>
     <message>
         <source>the thread has no length along its axis</source>
@@ -5383,6 +5371,42 @@ ciclo</translation>
     <message>
         <source>{1} and {2}: one canned cycle per block</source>
         <translation>{1} e {2}: um ciclo fixo por bloco</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>o início e o fim de um arco não estão num círculo em torno do seu centro</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>um arco do perfil deve ficar dentro de um quarto de círculo</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>o perfil volta por baixo do material (um canal ou um rebaixo): ainda não suportado</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>o rótulo N{1} do perfil não está no programa</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>o perfil termina (E) antes de começar (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>um perfil não contém blocos de alto nível</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} num perfil ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} não é permitido num perfil</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>o perfil tem mais de 10000 elementos</translation>
     </message>
 </context>
 <context>

@@ -29,7 +29,7 @@ LatheError positionError(char letter) {
             {std::string(1, letter)}};
 }
 
-// The section in the (cut, step) frame, a line or an arc, as a function of t in [0, 1].
+// One element in the (cut, step) frame, a line or an arc, as a function of t in [0, 1].
 struct Section {
     Vec2 a{0.0, 0.0};
     Vec2 b{0.0, 0.0};
@@ -46,8 +46,8 @@ struct Section {
         const double theta = theta0 + t * sweep;
         return c + r * Vec2(std::cos(theta), std::sin(theta));
     }
-    // The parameter where the section reaches step level v (it is monotone in it: a line, or
-    // an arc within a quarter circle).
+    // The parameter where the element reaches step level v (it is monotone in it: a line, or
+    // an arc within a quarter circle); a flat element is reached at its start.
     double atLevel(double v) const {
         if (!arc) {
             const double dy = b.y() - a.y();
@@ -68,55 +68,85 @@ struct Section {
         }
         return best;
     }
-    Section shifted(const Vec2& d) const {
-        Section s = *this;
-        s.a += d;
-        s.b += d;
-        s.c += d;
-        return s;
+};
+
+// The profile as a chain of elements, parameter t in [0, n].
+struct Chain {
+    std::vector<Section> parts;
+
+    double size() const { return static_cast<double>(parts.size()); }
+    Vec2 start() const { return parts.front().a; }
+    Vec2 end() const { return parts.back().b; }
+    Vec2 at(double t) const {
+        const double i = std::clamp(std::floor(t), 0.0, size() - 1.0);
+        return parts[static_cast<size_t>(i)].at(t - i);
+    }
+    // The first parameter where the chain, growing steadily, reaches step level v.
+    double atLevel(double v, double side) const {
+        for (size_t i = 0; i < parts.size(); ++i) {
+            if (side * (parts[i].b.y() - v) >= -kTolerance) {
+                return static_cast<double>(i) + parts[i].atLevel(v);
+            }
+        }
+        return size();
+    }
+    Chain shifted(const Vec2& d) const {
+        Chain moved = *this;
+        for (Section& p : moved.parts) {
+            p.a += d;
+            p.b += d;
+            p.c += d;
+        }
+        return moved;
     }
 };
 
 }  // namespace
 
+bool shortArcIsCcw(const Vec2& a, const Vec2& b, const Vec2& centre) {
+    return arcSweep(a, b, centre, true) <= kPi;
+}
+
 bool expandTurningSection(const TurningSection& section, const Vec2& callZx, LathePath& path,
                           LatheError& error) {
     const bool f = section.facing;
     const Vec2 call = swapped(callZx, f);
-    Section s;
-    s.a = swapped(section.a, f);
-    s.b = swapped(section.b, f);
-    if (section.centre) {
-        s.arc = true;
-        s.c = swapped(*section.centre, f);
-        s.r = (s.a - s.c).norm();
-        if (std::fabs((s.b - s.c).norm() - s.r) > section.radiusTolerance || s.r < kTolerance) {
-            error = {'I',
-                     "cycle-geometry",
-                     KERF_TR_NOOP("A and B are not on one circle about the centre I, K"),
-                     {}};
-            return false;
+    Chain chain;
+    Vec2 from = swapped(section.start, f);
+    for (const ProfileElement& e : section.elements) {
+        Section s;
+        s.a = from;
+        s.b = swapped(e.end, f);
+        from = s.b;
+        if (e.centre) {
+            s.arc = true;
+            s.c = swapped(*e.centre, f);
+            s.r = (s.a - s.c).norm();
+            if (std::fabs((s.b - s.c).norm() - s.r) > section.radiusTolerance || s.r < kTolerance) {
+                error = {'I',
+                         "cycle-geometry",
+                         KERF_TR_NOOP("the start and the end of an arc are not on one circle "
+                                      "about its centre"),
+                         {}};
+                return false;
+            }
+            // Swapping the axes mirrors the plane: the turning sense flips.
+            s.theta0 = std::atan2(s.a.y() - s.c.y(), s.a.x() - s.c.x());
+            s.sweep = arcSweep(s.a, s.b, s.c, e.ccw != f);
+            // Passes meet it once only if it stays within a quarter circle.
+            const double q0 = s.theta0 / (kPi / 2.0);
+            const double q1 = (s.theta0 + s.sweep) / (kPi / 2.0);
+            if (std::ceil(std::min(q0, q1) + 1e-9) <= std::floor(std::max(q0, q1) - 1e-9)) {
+                error = {'I',
+                         "cycle-geometry",
+                         KERF_TR_NOOP("an arc of the profile must stay within a quarter circle"),
+                         {}};
+                return false;
+            }
         }
-        // The arc of at most half a turn from A to B.
-        s.theta0 = std::atan2(s.a.y() - s.c.y(), s.a.x() - s.c.x());
-        const double ccw = arcSweep(s.a, s.b, s.c, true);
-        s.sweep = ccw <= kPi ? ccw : ccw - 2.0 * kPi;
-        // Passes meet it once only if it stays within a quarter circle.
-        const double q0 = s.theta0 / (kPi / 2.0);
-        const double q1 = (s.theta0 + s.sweep) / (kPi / 2.0);
-        if (std::ceil(std::min(q0, q1) + 1e-9) <= std::floor(std::max(q0, q1) - 1e-9)) {
-            error = {'I',
-                     "cycle-geometry",
-                     KERF_TR_NOOP("the arc must stay within a quarter circle from A to B"),
-                     {}};
-            return false;
-        }
+        if ((s.b - s.a).norm() > kTolerance) chain.parts.push_back(s);
     }
-    // Allowances along the cut and the step directions of this frame.
-    const double allowCut = f ? section.allowanceX : section.allowanceZ;
-    const double allowStep = f ? section.allowanceZ : section.allowanceX;
-    const double cutDirection = s.b.x() - s.a.x();
-    if (std::fabs(cutDirection) < kTolerance) {
+    if (chain.parts.empty() || std::fabs(chain.end().x() - chain.start().x()) < kTolerance) {
         // Turning needs a length along Z, facing along X: the passes run from A towards B.
         error = {f ? 'Q' : 'R',
                  "cycle-geometry",
@@ -124,64 +154,78 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
                  {}};
         return false;
     }
-    const double sideCut = -sign(cutDirection);        // the call point lies before A
-    const double sideStep = sign(call.y() - s.a.y());  // the material lies between call and A
-    // Clearance (spec: along X from the call point to B at least L, along Z to A at least M),
-    // and B no deeper than A: the section may not turn back under material already passed.
-    if (sideStep * (call.y() - s.b.y()) < allowStep - kTolerance ||
-        std::fabs(call.y() - s.a.y()) < kTolerance) {
+    // Allowances along the cut and the step directions of this frame.
+    const double allowCut = f ? section.allowanceX : section.allowanceZ;
+    const double allowStep = f ? section.allowanceZ : section.allowanceX;
+    const Vec2 a = chain.start();
+    const Vec2 b = chain.end();
+    const double sideCut = -sign(b.x() - a.x());     // the call point lies before A
+    const double sideStep = sign(call.y() - a.y());  // the material lies between call and A
+    // Every element moves away from the call point and grows towards it (no undercut).
+    for (const Section& s : chain.parts) {
+        if (sideCut * (s.b.x() - s.a.x()) > kTolerance ||
+            sideStep * (s.b.y() - s.a.y()) < -kTolerance) {
+            error = {f ? 'R' : 'Q',
+                     "cycle-geometry",
+                     KERF_TR_NOOP("the profile runs back under the material (a channel or an "
+                                  "undercut): not supported yet"),
+                     {}};
+            return false;
+        }
+    }
+    // Clearance (spec: along X from the call point to B at least L, along Z to A at least M).
+    if (sideStep * (call.y() - b.y()) < allowStep - kTolerance ||
+        std::fabs(call.y() - a.y()) < kTolerance) {
         error = positionError(f ? 'Z' : 'X');
         return false;
     }
-    if (sideCut * (call.x() - s.a.x()) < allowCut - kTolerance) {
+    if (sideCut * (call.x() - a.x()) < allowCut - kTolerance) {
         error = positionError(f ? 'X' : 'Z');
         return false;
     }
-    if (sideStep * (s.b.y() - s.a.y()) < -kTolerance) {
-        error = {f ? 'R' : 'Q',
-                 "cycle-geometry",
-                 KERF_TR_NOOP("the section runs back under the material: B must not be deeper "
-                              "than A"),
-                 {}};
-        return false;
-    }
-    const Section s1 = s.shifted(Vec2(sideCut * allowCut, sideStep * allowStep));
+    const Chain c1 = chain.shifted(Vec2(sideCut * allowCut, sideStep * allowStep));
+    const Vec2 a1 = c1.start();
+    const Vec2 b1 = c1.end();
     auto out = [&](const Vec2& p) { return swapped(p, f); };
-    auto onWall = [&](double v) {
-        return sideStep * (v - s1.b.y()) >= -kTolerance ||
-               std::fabs(s1.b.y() - s1.a.y()) < kTolerance;
-    };
-    // Where a pass at step level v meets the section plus allowances (beyond B: B's wall).
+    auto onWall = [&](double v) { return sideStep * (v - b1.y()) >= -kTolerance; };
+    auto levelT = [&](double v) { return onWall(v) ? c1.size() : c1.atLevel(v, sideStep); };
+    // Where a pass at step level v meets the profile plus allowances (beyond B: B's wall).
     auto passEnd = [&](double v) {
-        return onWall(v) ? Vec2(s1.b.x(), v) : Vec2(s1.at(s1.atLevel(v)).x(), v);
+        return onWall(v) ? Vec2(b1.x(), v) : Vec2(c1.at(levelT(v)).x(), v);
     };
-    // Follows `sec` from its point at parameter t0 to the one at t1.
-    auto follow = [&](const Section& sec, double t1, double feed) {
-        const Vec2 to = sec.at(t1);
-        if (sec.arc) {
-            path.arc(out(to), out(sec.c), (sec.sweep > 0.0) != f, feed);
-        } else {
-            path.feed(out(to), feed);
+    // Follows `chain` from parameter t0 to t1 (t0 <= t1), element by element.
+    auto follow = [&](const Chain& ch, double t0, double t1, double feed) {
+        for (size_t i = static_cast<size_t>(std::max(0.0, std::floor(t0)));
+             i < ch.parts.size() && static_cast<double>(i) < t1; ++i) {
+            const Section& part = ch.parts[i];
+            const double local = std::min(1.0, t1 - static_cast<double>(i));
+            const Vec2 to = part.at(local);
+            if (part.arc) {
+                path.arc(out(to), out(part.c), (part.sweep > 0.0) != f, feed);
+            } else {
+                path.feed(out(to), feed);
+            }
         }
     };
-    const double depth = sideStep * (call.y() - s1.a.y());
+    const double depth = sideStep * (call.y() - a1.y());
     const double count = depth > kTolerance ? std::ceil(depth / section.maxStep - 1e-9) : 0.0;
-    if (count * 5 > LathePath::kStepLimit) {
+    if (count * (5.0 + c1.size()) > LathePath::kStepLimit) {
         error = tooManySteps('C');
         return false;
     }
     const int passes = static_cast<int>(count);
     const double step = passes > 0 ? depth / passes : 0.0;
+    const double feed = section.roughingFeed;
     double previous = call.y();
     for (int k = 1; k <= passes; ++k) {
-        const double level = k == passes ? s1.a.y() : call.y() - sideStep * k * step;
+        const double level = k == passes ? a1.y() : call.y() - sideStep * k * step;
         path.rapid(out({call.x(), level}));  // 1-2
         const Vec2 end = passEnd(level);
-        path.feed(out(end));  // 2-3
+        path.feed(out(end), feed);  // 2-3
         if (!section.retract) {
-            // 3-4 along the section (and up B's wall) to the previous level.
-            if (!onWall(level)) follow(s1, onWall(previous) ? 1.0 : s1.atLevel(previous), 0.0);
-            path.feed(out(passEnd(previous)));
+            // 3-4 along the profile (and up B's wall) to the previous level.
+            if (!onWall(level)) follow(c1, levelT(level), levelT(previous), feed);
+            path.feed(out(passEnd(previous)), feed);
         } else if (*section.retract > 0.0) {
             const double d = *section.retract;  // 3-4 at 45 degrees
             path.rapid(out(end + Vec2(sideCut * d, sideStep * d)));
@@ -189,16 +233,16 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
         path.rapid(out({call.x(), swapped(path.position(), f).y()}));  // 4-5
         previous = level;
     }
-    // Final roughing pass and finishing pass: along the section (plus allowances), up B's wall.
-    auto along = [&](const Section& sec, double feed) {
-        path.rapid(out({call.x(), sec.a.y()}));
-        path.feed(out(sec.a), feed);
-        follow(sec, 1.0, feed);
-        path.feed(out({sec.b.x(), call.y()}), feed);
+    // Final roughing pass and finishing pass: along the profile (plus allowances), up B's wall.
+    auto along = [&](const Chain& ch, double passFeed) {
+        path.rapid(out({call.x(), ch.start().y()}));
+        path.feed(out(ch.start()), passFeed);
+        follow(ch, 0.0, ch.size(), passFeed);
+        path.feed(out({ch.end().x(), call.y()}), passFeed);
         path.rapid(callZx);
     };
-    if (section.finalRoughingFeed > 0.0) along(s1, section.finalRoughingFeed);
-    if (section.finishingFeed > 0.0) along(s, section.finishingFeed);
+    if (section.finalRoughingFeed > 0.0) along(c1, section.finalRoughingFeed);
+    if (section.finishingFeed > 0.0) along(chain, section.finishingFeed);
     path.rapid(callZx);
     if (path.full()) {
         error = tooManySteps('C');

@@ -39,19 +39,43 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
         case 85: {
             cycles::lathe::TurningSection section;
             section.facing = g == 82 || g == 85;
-            section.a = point('Z', 'X');
-            section.b = point('R', 'Q');
+            section.start = point('Z', 'X');
+            cycles::lathe::ProfileElement element;
+            element.end = point('R', 'Q');
             if (g == 84 || g == 85) {
                 // I (radius) and K: the centre relative to A, like I, K of G02/G03.
-                section.centre = section.a + Vec2(length(w['K'].value), length(w['I'].value));
+                const Vec2 centre =
+                    section.start + Vec2(length(w['K'].value), length(w['I'].value));
+                element.centre = centre;
+                element.ccw = cycles::lathe::shortArcIsCcw(section.start, element.end, centre);
                 section.radiusTolerance = m_settings.circleToleranceMm;
             }
+            section.elements.push_back(element);
             section.maxStep = length(w['C'].value);
             if (w.has('D')) section.retract = length(w['D'].value);
             section.allowanceX = len('L', 0.0);
             section.allowanceZ = len('M', 0.0);
             section.finalRoughingFeed = w.value('F', 0.0);
             section.finishingFeed = w.value('H', 0.0);
+            ok = cycles::lathe::expandTurningSection(section, call, path, error);
+            break;
+        }
+        case 68:
+        case 69: {
+            // Stock removal (G68 passes along Z, G69 along X) over the profile S..E.
+            cycles::lathe::TurningSection section;
+            section.facing = g == 69;
+            section.start = point('Z', 'X');
+            if (!readProfile(w, section.start, section.elements)) return false;
+            m_at.line = m_line.firstLine;
+            section.maxStep = length(w['C'].value);
+            if (w.has('D')) section.retract = length(w['D'].value);
+            // The sign of L and M chooses the finishing pass's corners; M defaults to L.
+            section.allowanceX = std::fabs(len('L', 0.0));
+            section.allowanceZ = w.has('M') ? std::fabs(len('M', 0.0)) : section.allowanceX;
+            section.finalRoughingFeed = w.value('F', 0.0);
+            section.finishingFeed = w.value('H', 0.0);
+            section.radiusTolerance = m_settings.circleToleranceMm;
             ok = cycles::lathe::expandTurningSection(section, call, path, error);
             break;
         }
@@ -124,7 +148,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             break;
         }
         default:
-            return true;  // G66, G68, G69: refused by checkGFunctions()
+            return true;  // G66: refused by checkGFunctions()
     }
     if (!ok) {
         const size_t offset =
@@ -138,6 +162,16 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
     // cancel it.
     if (g == 83 || g >= 86) m_modal.side = interp::CompSide::None;
     if (!runCycleSteps(path.steps(), iso)) return false;
+    if (g == 68 || g == 69) {
+        // Afterwards G00 and G40 (§1.4) and the last feed used: H, else F.
+        m_modal.motion = 0;
+        m_modal.side = interp::CompSide::None;
+        if (w.value('H', 0.0) > 0.0) {
+            m_feed = w['H'].value;
+        } else if (w.value('F', 0.0) > 0.0) {
+            m_feed = w['F'].value;
+        }
+    }
     m_lastTangent.reset();
     m_thread.previousWasThread = false;
     return true;

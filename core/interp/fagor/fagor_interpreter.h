@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/cycles/lathe/lathe_path.h"
+#include "core/cycles/lathe/section_turning.h"
 #include "core/interp/fagor/block_parser.h"
 #include "core/interp/fagor/contour_shaper.h"
 #include "core/interp/fagor/fagor_program.h"
@@ -216,6 +217,9 @@ private:
     // Canned cycles G81-G89 (fagor_cycles.cpp).
     bool executeCycle(const IsoBlock& iso);
     bool runCycleSteps(const std::vector<cycles::lathe::LatheStep>& steps, const IsoBlock& iso);
+    // G68/G69: the profile from label S to label E (fagor_profile.cpp).
+    bool readProfile(const CycleWords& w, const Vec2& start,
+                     std::vector<cycles::lathe::ProfileElement>& out);
 
     // Probing G75/G76 (fagor_probing.cpp).
     bool probeMove(const IsoBlock& iso);

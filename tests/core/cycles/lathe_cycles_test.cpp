@@ -23,8 +23,10 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int trial = 0; trial < 500; ++trial) {
         TurningSection s;
-        s.a = {0.0, 5.0 + 20.0 * u(random)};
-        s.b = {-5.0 - 40.0 * u(random), s.a.y() + 15.0 * u(random)};
+        const Vec2 a(0.0, 5.0 + 20.0 * u(random));
+        const Vec2 b(-5.0 - 40.0 * u(random), a.y() + 15.0 * u(random));
+        s.start = a;
+        s.elements.push_back({b, std::nullopt, false});
         s.maxStep = 0.2 + 3.0 * u(random);
         s.allowanceX = u(random) < 0.5 ? 0.0 : u(random);
         s.allowanceZ = u(random) < 0.5 ? 0.0 : u(random);
@@ -33,7 +35,7 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
         if (pick > 0.6) s.retract = 2.0 * u(random);
         s.finalRoughingFeed = u(random) < 0.5 ? 0.2 : 0.0;
         s.finishingFeed = u(random) < 0.5 ? 0.1 : 0.0;
-        const Vec2 call(1.0 + s.allowanceZ, s.b.y() + s.allowanceX + 10.0 * u(random));
+        const Vec2 call(1.0 + s.allowanceZ, b.y() + s.allowanceX + 10.0 * u(random));
         LathePath path(call);
         LatheError error;
         ASSERT_TRUE(expandTurningSection(s, call, path, error)) << error.messageTemplate;
@@ -44,7 +46,7 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
             // Sample the move: no point of it lies inside the finished section.
             for (int k = 0; k <= 20; ++k) {
                 const Vec2 p = at + (step.to - at) * (k / 20.0);
-                ASSERT_LE(insidePart(p, s.a, s.b), 1e-9) << "trial " << trial;
+                ASSERT_LE(insidePart(p, a, b), 1e-9) << "trial " << trial;
             }
             const bool roughing = step.kind == LatheStep::Kind::Feed && step.feed == 0.0 &&
                                   std::fabs(step.to.y() - at.y()) < 1e-12 &&
@@ -57,9 +59,9 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
             at = step.to;
         }
         // ceil(depth / C) passes down to the section plus its allowance.
-        const double depth = call.y() - (s.a.y() + s.allowanceX);
+        const double depth = call.y() - (a.y() + s.allowanceX);
         EXPECT_EQ(cuts, static_cast<int>(std::ceil(depth / s.maxStep - 1e-9))) << trial;
-        EXPECT_NEAR(lastLevel, s.a.y() + s.allowanceX, 1e-9);
+        EXPECT_NEAR(lastLevel, a.y() + s.allowanceX, 1e-9);
         EXPECT_EQ((at - call).norm(), 0.0);  // ends at the call point
     }
 }

@@ -11,9 +11,8 @@ namespace {
 // G84 quarter round r10 -> r20 from r25, C 0.001: 15,000 passes, about 75,000 moves.
 void BM_G84ArcTurning15000Passes(benchmark::State& state) {
     TurningSection s;
-    s.a = {0.0, 10.0};
-    s.b = {-10.0, 20.0};
-    s.centre = Vec2(-10.0, 10.0);
+    s.start = {0.0, 10.0};
+    s.elements.push_back({Vec2(-10.0, 20.0), Vec2(-10.0, 10.0), true});
     s.maxStep = 0.001;
     s.finishingFeed = 0.1;
     const Vec2 call(2.0, 25.0);
