@@ -44,6 +44,33 @@ void BM_G86Thread3000Passes(benchmark::State& state) {
 }
 BENCHMARK(BM_G86Thread3000Passes)->Unit(benchmark::kMillisecond);
 
+// G68 over a 100-element profile (50 steps of a 1 mm shoulder each followed by a 0.5 mm taper,
+// from r0 to r50 over 100 mm), C 0.5 from r55, no D: 110 passes back along the profile.
+void BM_G68Profile100Elements(benchmark::State& state) {
+    TurningSection s;
+    s.start = {0.0, 0.0};
+    Vec2 at = s.start;
+    for (int i = 0; i < 50; ++i) {
+        at += Vec2(0.0, 0.5);
+        s.elements.push_back({at, std::nullopt, false});
+        at += Vec2(-2.0, 0.5);
+        s.elements.push_back({at, std::nullopt, false});
+    }
+    s.maxStep = 0.5;
+    s.allowanceX = 0.2;
+    s.allowanceZ = 0.1;
+    s.finalRoughingFeed = 0.2;
+    s.finishingFeed = 0.1;
+    const Vec2 call(2.0, 55.0);
+    for (auto _ : state) {
+        LathePath path(call);
+        LatheError error;
+        benchmark::DoNotOptimize(expandTurningSection(s, call, path, error));
+        state.counters["moves"] = static_cast<double>(path.steps().size());
+    }
+}
+BENCHMARK(BM_G68Profile100Elements)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace kerf::cycles::lathe
 
