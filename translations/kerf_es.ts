@@ -5309,6 +5309,110 @@ ciclo</translation>
         <translation>&apos;{1}&apos; cambió mientras se abría: apareció un enlace</translation>
     </message>
     <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} debe ser 0, 1 o 2 para roscar con macho</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>el roscado rígido necesita un avance y una velocidad de cabezal</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>los picados bajan de 0,001 mm antes de la profundidad I: programe L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>la ranura no tiene profundidad</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>la ranura es más estrecha que el ancho de corte NOSEW de la herramienta</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C no está programado y la herramienta no tiene ancho de corte NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>la posición de la herramienta no es correcta para el ciclo ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>el ciclo necesitaría más de {1} movimientos: {2} es demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>el tramo no tiene longitud en la dirección de las pasadas</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>la rosca no tiene longitud a lo largo de su eje</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} no deja rosca que cortar entre el inicio y el final</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} no es un parámetro de {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} de {2} necesita un valor</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} de {2} no puede ser 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} necesita su parámetro {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (variación de paso) no se puede programar con K (repaso)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} y {2}: un ciclo fijo por bloque</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>el inicio y el final de un arco no están en un círculo alrededor de su centro</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>un arco del perfil debe quedar dentro de un cuarto de círculo</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>el perfil vuelve por debajo del material (un canal o una entalla): todavía no se admite</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>la etiqueta N{1} del perfil no está en el programa</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>el perfil termina (E) antes de empezar (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>un perfil no contiene bloques de alto nivel</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} en un perfil todavía no se admite</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} no está permitido en un perfil</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>el perfil tiene más de 10000 elementos</translation>
+    </message>
+    <message>
         <source>this machine has no axis {1}</source>
         <translation>esta máquina no tiene eje {1}</translation>
     </message>

@@ -5312,8 +5312,112 @@ cykl</translation>
         <translation>&apos;{1}&apos; zmienił się podczas otwierania: pojawiło się dowiązanie</translation>
     </message>
     <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} musi wynosić 0, 1 lub 2 przy gwintowaniu</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>gwintowanie sztywne wymaga posuwu i prędkości wrzeciona</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>zagłębienia spadają poniżej 0,001 mm przed głębokością I: zaprogramuj L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>rowek nie ma głębokości</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>rowek jest węższy niż szerokość ostrza NOSEW narzędzia</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C nie jest zaprogramowane, a narzędzie nie ma szerokości ostrza NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>położenie narzędzia jest nieprawidłowe dla cyklu ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>cykl wymagałby ponad {1} ruchów: {2} jest za małe</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>odcinek nie ma długości w kierunku przejść</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>gwint nie ma długości wzdłuż swojej osi</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} nie zostawia gwintu do nacięcia między początkiem a końcem</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} nie jest parametrem {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} w {2} wymaga wartości</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} w {2} nie może wynosić 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} wymaga swojego parametru {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (zmiana skoku) nie może być zaprogramowane razem z K (ponowne nacinanie)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} i {2}: jeden cykl stały na blok</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>początek i koniec łuku nie leżą na jednym okręgu wokół jego środka</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>łuk profilu musi mieścić się w ćwiartce okręgu</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>profil cofa się pod materiał (kanał lub podcięcie): jeszcze nieobsługiwane</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>etykiety N{1} profilu nie ma w programie</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>profil kończy się (E) przed swoim początkiem (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>profil nie zawiera bloków języka wysokiego poziomu</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} w profilu nie jest jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} jest niedozwolone w profilu</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>profil ma ponad 10000 elementów</translation>
+    </message>
+    <message>
         <source>this machine has no axis {1}</source>
-        <translation>Ta maszyna nie ma osi {1}</translation>
+        <translation>ta maszyna nie ma osi {1}</translation>
     </message>
 </context>
 <context>

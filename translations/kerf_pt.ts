@@ -5309,6 +5309,110 @@ ciclo</translation>
         <translation>&apos;{1}&apos; mudou enquanto era aberto: apareceu uma ligação</translation>
     </message>
     <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} deve ser 0, 1 ou 2 para roscar com macho</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>o roscamento rígido precisa de um avanço e de uma velocidade do eixo-árvore</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>os aprofundamentos ficam abaixo de 0,001 mm antes da profundidade I: programe L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>a ranhura não tem profundidade</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>a ranhura é mais estreita que a largura de corte NOSEW da ferramenta</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C não está programado e a ferramenta não tem largura de corte NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>a posição da ferramenta não é correta para o ciclo ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>o ciclo precisaria de mais de {1} movimentos: {2} é pequeno demais</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>o trecho não tem comprimento na direção das passadas</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>a rosca não tem comprimento ao longo do seu eixo</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} não deixa rosca para cortar entre o início e o fim</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} não é um parâmetro de {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} de {2} precisa de um valor</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} de {2} não pode ser 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} precisa do seu parâmetro {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (variação de passo) não pode ser programado com K (repasse)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} e {2}: um ciclo fixo por bloco</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>o início e o fim de um arco não estão num círculo em torno do seu centro</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>um arco do perfil deve ficar dentro de um quarto de círculo</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>o perfil volta por baixo do material (um canal ou um rebaixo): ainda não suportado</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>o rótulo N{1} do perfil não está no programa</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>o perfil termina (E) antes de começar (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>um perfil não contém blocos de alto nível</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} num perfil ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} não é permitido num perfil</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>o perfil tem mais de 10000 elementos</translation>
+    </message>
+    <message>
         <source>this machine has no axis {1}</source>
         <translation>esta máquina não tem eixo {1}</translation>
     </message>
