@@ -11,10 +11,10 @@
 
 // The check before anything moves, for every machine a run drives (motion's simulated drives,
 // the CAN drive chain): each command is checked against the soft limits and the planner's rules
-// by motion::WorkAreaCheck (the check the HMI's test run makes too), and held back until the program ends or needs
-// the machine (a sync point). A program that would leave the work area is refused before anything
-// moves, with the block named (unless a sync point or a very long program released part of it
-// before). One thread (the interpreter's).
+// by motion::WorkAreaCheck (the check the HMI's test run makes too), and held back until the
+// program ends or needs the machine (a sync point). A program that would leave the work area is
+// refused before anything moves, with the block named (unless a sync point or a very long program
+// released part of it before). One thread (the interpreter's).
 namespace kerf::app {
 
 class SoftLimitGate final : public canon::Sink {

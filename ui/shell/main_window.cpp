@@ -11,10 +11,12 @@
 #include "core/program/nc_root.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/cycles/programming_softkeys.h"
+#include "ui/editor/block_numbers.h"
 #include "ui/editor/find_bar.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/files/file_manager.h"
+#include "ui/shell/block_prompt.h"
 #include "ui/shell/machine_keys.h"
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
@@ -62,6 +64,11 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     programSettings.ncRoot = m_context.ncRoot;
     programSettings.recoveryFolder = m_context.recoveryFolder;
     m_program = new ProgramPanel(programSettings, central);
+    // Messages name the blocks of the program shown by their numbers.
+    m_messages->setPlaceOfLine([editor = m_program->editor()](int line) {
+        return MessagePanel::Place{blockNumberOfLine(*editor->document(), line, editor->dialect()),
+                                   editor->dialect()};
+    });
     createGraphics(central);
     m_status =
         new StatusTabs(m_context.machine.kind == machine::MachineKind::Lathe ? 'P' : 'Q', central);
@@ -275,13 +282,11 @@ void MainWindow::refreshSoftkeys() {
             {"find", tr("Find /\nreplace"), [this] { m_program->findBar()->open(); }},
             {"undo", tr("Undo"), [editor] { editor->undo(); }},
             {"redo", tr("Redo"), [editor] { editor->redo(); }},
-            {"goto", tr("Go to\nline"),
+            {"goto", tr("Go to\nblock"),
              [this, editor] {
-                 bool ok = false;
-                 const int line =
-                     QInputDialog::getInt(this, tr("Go to line"), tr("Line"), editor->currentLine(),
-                                          1, editor->document()->blockCount(), 1, &ok);
-                 if (ok) editor->goToLine(line);
+                 if (const auto line =
+                         askForBlockLine(this, tr("Go to block"), *editor, *m_messages))
+                     editor->goToLine(*line);
              }},
             {"renumber", tr("Renumber\nblocks"), [editor] { editor->renumber(); }},
             {"check", tr("Check\nprogram"), [this] { m_program->checkNow(); }},

@@ -111,7 +111,7 @@ private:
     Pose m_preparedOrigin{};
     task::MoveCheckFactory m_checkMoves;
     std::function<Pose()> m_presetInMachine;
-    size_t m_pushed = 0;         // commands handed to the stock
+    size_t m_pushed = 0;  // commands handed to the stock
     const TestRunProgram::StatusSnapshot* m_shownStatus = nullptr;
     double m_timeS = 0.0;
     TestRunSpeed m_speed = TestRunSpeed::Times10;

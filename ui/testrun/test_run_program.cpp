@@ -207,9 +207,8 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     }
     if (out.refusedAt) {
         const uint32_t fileId = out.refusedAt->fileId;
-        const std::string file = fileId < program.sources->size()
-                                     ? program.sources->path(fileId)
-                                     : input.path.string();
+        const std::string file =
+            fileId < program.sources->size() ? program.sources->path(fileId) : input.path.string();
         for (Diagnostic d : check->refusal()) {
             d.file = file;
             out.diagnostics.push_back(std::move(d));

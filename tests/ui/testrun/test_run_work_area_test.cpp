@@ -86,8 +86,9 @@ TEST(TestRunWorkArea, TheToolLengthCountsOnTheToolAxis) {
     f.start("0 BEGIN PGM LIMIT MM\n1 L Z+440 R0 FMAX\n2 END PGM LIMIT MM\n");
     EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
     QSignalSpy diagnostics(&f.controller, &TestRunController::diagnostic);
-    f.start("0 BEGIN PGM LIMIT MM\n1 TOOL CALL 1 Z S1000\n2 L Z+440 R0 FMAX\n"
-            "3 END PGM LIMIT MM\n");
+    f.start(
+        "0 BEGIN PGM LIMIT MM\n1 TOOL CALL 1 Z S1000\n2 L Z+440 R0 FMAX\n"
+        "3 END PGM LIMIT MM\n");
     EXPECT_EQ(f.controller.state(), TestRunController::State::Failed);
     bool block2 = false;
     for (const QList<QVariant>& d : diagnostics)
