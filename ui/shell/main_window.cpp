@@ -82,7 +82,7 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     layout->addLayout(middle, 1);
 
     m_files = new FileManager(m_context.ncRoot, central);
-    m_tables = new TableEditor(central);
+    m_tables = new TableEditor(m_context.ncRoot, central);
     m_files->hide();
     m_tables->hide();
     auto relay = [this](Severity severity, const QString& text) {
