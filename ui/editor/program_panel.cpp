@@ -218,6 +218,12 @@ void ProgramPanel::discardRecovery() {
     m_recovered.reset();
 }
 
+void ProgramPanel::abandonEdits() {
+    m_autosaveTimer->stop();
+    discardRecovery();
+    m_editor->document()->setModified(false);
+}
+
 void ProgramPanel::autosave() {
     if (m_path.empty() || !modified()) return;
     if (const MaybeError error = m_recovery.store(m_path, m_editor->toPlainText())) {

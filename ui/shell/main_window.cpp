@@ -119,20 +119,6 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
-bool MainWindow::openProgram(const std::filesystem::path& path) {
-    if (!m_program->open(path)) return false;
-    if (m_program->recoveryAvailable()) {
-        m_messages->addMessage(
-            Severity::Warning,
-            tr("%1 has unsaved changes from an earlier session: press \"Restore autosave\" to "
-               "get them back")
-                .arg(QString::fromStdString(path.filename().string())));
-    }
-    m_files->addRecent(path);
-    showPanels();
-    return true;
-}
-
 bool MainWindow::openFile(const std::filesystem::path& path) {
     // From the file manager: a file of the NC root, judged after its links (docs/files.md).
     if (const MaybeError refused = program::NcRoot(m_context.ncRoot).admit(path)) {
@@ -196,11 +182,6 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
-void MainWindow::closeEvent(QCloseEvent* event) {
-    m_program->autosave();
-    QMainWindow::closeEvent(event);
-}
-
 void MainWindow::retranslate() {
     setWindowTitle(tr("Kerf - %1").arg(QString::fromStdString(m_context.machine.name)));
     m_machineKeys->retranslate();
@@ -245,16 +226,21 @@ void MainWindow::nextLanguage() {
 }
 
 std::vector<SoftkeyRow> MainWindow::fileRows() {
-    return {{
-        {"fileOpen", tr("Open"), [this] { m_files->openSelected(); }},
-        {"fileCopy", tr("Copy"), [this] { m_files->copySelected(); }},
-        {"fileMove", tr("Move"), [this] { m_files->moveSelected(); }},
-        {"fileRename", tr("Rename"), [this] { m_files->renameSelected(); }},
-        {"fileDelete", tr("Delete"), [this] { m_files->deleteSelected(); }},
-        {"fileProtect", tr("Protect /\nunprotect"), [this] { m_files->toggleProtection(); }},
-        {"fileNewFolder", tr("New\nfolder"), [this] { m_files->newFolder(); }},
-        {"back", tr("Back"), [this] { showPanels(); }},
-    }};
+    return {
+        {
+            {"fileOpen", tr("Open"), [this] { m_files->openSelected(); }},
+            {"fileCopy", tr("Copy"), [this] { m_files->copySelected(); }},
+            {"fileMove", tr("Move"), [this] { m_files->moveSelected(); }},
+            {"fileRename", tr("Rename"), [this] { m_files->renameSelected(); }},
+            {"fileDelete", tr("Delete"), [this] { m_files->deleteSelected(); }},
+            {"fileProtect", tr("Protect /\nunprotect"), [this] { m_files->toggleProtection(); }},
+            {"fileNewFolder", tr("New\nfolder"), [this] { m_files->newFolder(); }},
+            {"back", tr("Back"), [this] { showPanels(); }},
+        },
+        {
+            {"fileNewProgram", tr("New\nprogram"), [this] { newProgram(); }},
+            {"back", tr("Back"), [this] { showPanels(); }},
+        }};
 }
 
 std::vector<SoftkeyRow> MainWindow::tableRows() {
