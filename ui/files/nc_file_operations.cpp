@@ -114,7 +114,7 @@ Expected<fs::path> NcFileOperations::createFile(const fs::path& folder, std::str
     const fs::path file = folder / std::string(name);
     std::error_code error;
     if (fs::exists(fs::symlink_status(file, error)))
-        return fileError(file, KERF_TR_NOOP("a file of this name exists already"));
+        return fileError(file, KERF_TR_NOOP("a file with this name exists already"));
     if (auto refused = m_root.replace(file, content)) return *refused;
     return file;
 }
