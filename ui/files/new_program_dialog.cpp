@@ -21,6 +21,7 @@ NewProgramDialog::NewProgramDialog(const machine::MachineConfig& machine, QWidge
     : QDialog(parent) {
     setObjectName(QStringLiteral("newProgramDialog"));
     setWindowTitle(tr("New program"));
+    setMinimumWidth(520);
     auto* layout = new QVBoxLayout(this);
     auto* form = new QFormLayout();
     m_name = new QLineEdit(this);

@@ -1,5 +1,6 @@
 #include "ui/shell/block_prompt.h"
 
+#include <QAbstractSpinBox>
 #include <QCoreApplication>
 #include <QInputDialog>
 #include <QTextBlock>
@@ -29,6 +30,10 @@ std::optional<int> askForBlockLine(QWidget* parent, const QString& title,
     dialog.setWindowTitle(title);
     dialog.setInputMode(QInputDialog::IntInput);
     const int currentLine = editor.currentLine();
+    // The field touch sized, as the other dialogs' fields.
+    for (QWidget* child : dialog.findChildren<QWidget*>()) {
+        if (qobject_cast<QAbstractSpinBox*>(child)) child->setMinimumHeight(48);
+    }
     if (!numbersBlocks(document, dialect)) {
         dialog.setLabelText(BlockPrompt::tr("Line"));
         dialog.setIntRange(1, document.blockCount());
