@@ -319,20 +319,6 @@ ersetzen</translation>
         <translation>Wiederholen</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Gehe zu
-Zeile</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Gehe zu Zeile</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Zeile</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Sätze neu
@@ -402,6 +388,50 @@ parameter</translation>
         <translation>Zoom
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Neues
+Programm</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Gehe zu
+Satz</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Gehe zu Satz</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>Das Programm</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Ein Programm läuft. Anhalten und beenden?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>Die Spindel dreht. Anhalten und beenden?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Start bei Satz</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -414,16 +444,8 @@ parameter</translation>
         <translation>Meldung</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Zeile</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Keine Meldungen</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>Zeile %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -435,6 +457,14 @@ parameter</translation>
             <numerusform> (%n weitere)</numerusform>
             <numerusform> (%n weitere)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Satz</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -464,6 +494,37 @@ Maschine: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>Kerf ist freie Software: Sie dürfen sie unter der GNU General Public License, Version 3 oder später, weitergeben und verändern. Sie wird ohne jede Gewährleistung geliefert.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Neues Programm</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Programmname</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Rohteil MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Rohteil MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Dem Programm einen Namen ohne Leerzeichen und Verzeichnisse geben</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>Der MIN-Punkt des Rohteils muss auf jeder Achse unter seinem MAX-Punkt liegen</translation>
     </message>
 </context>
 <context>
@@ -525,10 +586,6 @@ Maschine: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Programm: %1   Maschine: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Zeile %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -681,10 +738,6 @@ Maschine: %3</translation>
     <message>
         <source>M functions</source>
         <translation>M-Funktionen</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Zeile</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -861,6 +914,10 @@ Maschine: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Satz</translation>
     </message>
 </context>
 <context>
@@ -5418,6 +5475,40 @@ editieren</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Satz %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Satznummer</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Satznummer N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>Das Programm hat keinen Satz %1</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineRows</name>
     <message>
         <source>Increment
@@ -5473,14 +5564,6 @@ Start</translation>
         <source>Start at
 block</source>
         <translation>Satzvorlauf</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Start bei Satz</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Zeile des ersten Satzes</translation>
     </message>
     <message>
         <source>Single block

@@ -319,20 +319,6 @@ sustituir</translation>
         <translation>Rehacer</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Ir a
-línea</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Ir a línea</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Línea</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Renumerar
@@ -402,6 +388,50 @@ de máquina</translation>
         <translation>Zoom
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Nuevo
+programa</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Ir a
+frase</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Ir a frase</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>El programa</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 tiene cambios sin guardar. ¿Guardarlos?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Hay un programa en marcha. ¿Pararlo y salir?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>El cabezal gira. ¿Pararlo y salir?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Salir</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Arranque en bloque</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -414,16 +444,8 @@ de máquina</translation>
         <translation>Mensaje</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Línea</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Sin mensajes</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>línea %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -435,6 +457,14 @@ de máquina</translation>
             <numerusform> (%n más)</numerusform>
             <numerusform> (%n más)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloque</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -464,6 +494,37 @@ Máquina: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>Kerf es software libre: puede redistribuirlo y modificarlo bajo la Licencia Pública General de GNU, versión 3 o posterior. Se entrega sin ninguna garantía.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Nuevo programa</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Nombre del programa</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Pieza en bruto MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Pieza en bruto MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Dé al programa un nombre sin espacios ni carpetas</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>El punto MIN de la pieza en bruto debe estar por debajo de su punto MAX en cada eje</translation>
     </message>
 </context>
 <context>
@@ -525,10 +586,6 @@ Máquina: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Programa: %1   Máquina: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Línea %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -681,10 +738,6 @@ Máquina: %3</translation>
     <message>
         <source>M functions</source>
         <translation>Funciones M</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Línea</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -861,6 +914,10 @@ Máquina: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloque</translation>
     </message>
 </context>
 <context>
@@ -5418,6 +5475,40 @@ ciclo</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Línea %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Frase %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Número de frase</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Número de frase N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>El programa no tiene la frase %1</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineRows</name>
     <message>
         <source>Increment
@@ -5474,14 +5565,6 @@ NC</translation>
 block</source>
         <translation>Arranque
 en bloque</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Arranque en bloque</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Línea del primer bloque</translation>
     </message>
     <message>
         <source>Single block

@@ -321,20 +321,6 @@ zamień</translation>
         <translation>Ponów</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Idź do
-wiersza</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Idź do wiersza</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Wiersz</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Numeruj
@@ -404,6 +390,50 @@ maszynowe</translation>
         <translation>Pomniejsz
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Nowy
+program</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Idź do
+bloku</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Idź do bloku</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Niezapisane zmiany</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 ma niezapisane zmiany. Zapisać je?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Program jest wykonywany. Zatrzymać go i zakończyć?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>Wrzeciono się obraca. Zatrzymać je i zakończyć?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Zakończ</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Start od bloku</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -416,16 +446,8 @@ maszynowe</translation>
         <translation>Komunikat</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Wiersz</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Brak komunikatów</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>wiersz %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -438,6 +460,14 @@ maszynowe</translation>
             <numerusform> (jeszcze %n)</numerusform>
             <numerusform> (jeszcze %n)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Blok</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -467,6 +497,37 @@ Maszyna: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>Kerf jest wolnym oprogramowaniem: można je rozpowszechniać i zmieniać na warunkach Powszechnej Licencji Publicznej GNU w wersji 3 lub późniejszej. Nie jest objęte żadną gwarancją.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Nowy program</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Nazwa programu</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednostka</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Półfabrykat MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Półfabrykat MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Nadaj programowi nazwę bez spacji i folderów</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>Punkt MIN półfabrykatu musi leżeć poniżej punktu MAX na każdej osi</translation>
     </message>
 </context>
 <context>
@@ -528,10 +589,6 @@ Maszyna: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Program: %1   Maszyna: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Wiersz %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -684,10 +741,6 @@ Maszyna: %3</translation>
     <message>
         <source>M functions</source>
         <translation>Funkcje M</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Wiersz</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -864,6 +917,10 @@ Maszyna: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Blok</translation>
     </message>
 </context>
 <context>
@@ -5421,6 +5478,40 @@ cykl</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>wiersz %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Wiersz %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Blok %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Wiersz</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Numer bloku</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Numer bloku N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>Program nie ma bloku %1</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineRows</name>
     <message>
         <source>Increment
@@ -5477,14 +5568,6 @@ start</translation>
 block</source>
         <translation>Start od
 bloku</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Start od bloku</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Wiersz pierwszego bloku</translation>
     </message>
     <message>
         <source>Single block

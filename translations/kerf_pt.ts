@@ -320,20 +320,6 @@ substituir</translation>
         <translation>Refazer</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Ir para
-linha</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Ir para linha</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Linha</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Renumerar
@@ -403,6 +389,50 @@ de máquina</translation>
         <translation>Zoom
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Novo
+programa</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Ir para
+bloco</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Ir para bloco</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>O programa</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Alterações não guardadas</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 tem alterações não guardadas. Guardá-las?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Um programa está em execução. Pará-lo e sair?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>O fuso está a rodar. Pará-lo e sair?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Sair</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Iniciar no bloco</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -415,16 +445,8 @@ de máquina</translation>
         <translation>Mensagem</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Linha</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Sem mensagens</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>linha %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -436,6 +458,14 @@ de máquina</translation>
             <numerusform> (mais %n)</numerusform>
             <numerusform> (mais %n)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloco</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -465,6 +495,37 @@ Máquina: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>O Kerf é software livre: pode redistribuí-lo e modificá-lo nos termos da Licença Pública Geral GNU, versão 3 ou posterior. É fornecido sem qualquer garantia.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Novo programa</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Nome do programa</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidade</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Peça bruta MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Peça bruta MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Dê ao programa um nome sem espaços nem pastas</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>O ponto MIN da peça bruta tem de ficar abaixo do ponto MAX em todos os eixos</translation>
     </message>
 </context>
 <context>
@@ -526,10 +587,6 @@ Máquina: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Programa: %1   Máquina: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Linha %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -682,10 +739,6 @@ Máquina: %3</translation>
     <message>
         <source>M functions</source>
         <translation>Funções M</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Linha</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -862,6 +915,10 @@ Máquina: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloco</translation>
     </message>
 </context>
 <context>
@@ -5418,6 +5475,40 @@ ciclo</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Linha %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Bloco %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Linha</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Número do bloco</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Número do bloco N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>O programa não tem o bloco %1</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MachineRows</name>
     <message>
         <source>Increment
@@ -5474,14 +5565,6 @@ NC</translation>
 block</source>
         <translation>Iniciar no
 bloco</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Iniciar no bloco</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Linha do primeiro bloco</translation>
     </message>
     <message>
         <source>Single block

@@ -6,6 +6,7 @@
 
 #include "core/machine/machine_config.h"
 #include "core/task/motion_port.h"
+#include "core/task/move_check.h"
 
 namespace kerf::ui {
 
@@ -24,6 +25,12 @@ struct HmiOptions {
     // Connects the machine (app/ decides: simulated or real drives); not called on a
     // programming station. Empty: no program run or manual operation.
     std::function<std::unique_ptr<task::MotionPort>(const machine::MachineConfig&)> connectMachine;
+    // The machine's check of a program's moves (soft limits, planner rules) for a workpiece
+    // origin in machine coordinates: the test run checks with it (also on a programming
+    // station). Empty: the test run does not check the work area.
+    std::function<std::unique_ptr<task::MoveCheck>(const machine::MachineConfig&,
+                                                   const Pose& originInMachine)>
+        checkMoves;
 };
 
 // Starts the operator panel and runs the Qt event loop; returns the process exit code.

@@ -50,6 +50,20 @@ TestRunController::~TestRunController() {
     stopWorker();
 }
 
+void TestRunController::setWorkAreaCheck(task::MoveCheckFactory checkMoves,
+                                         std::function<Pose()> presetInMachine) {
+    m_checkMoves = std::move(checkMoves);
+    m_presetInMachine = std::move(presetInMachine);
+}
+
+Pose TestRunController::currentOrigin() const {
+    return m_presetInMachine ? m_presetInMachine() : Pose{};
+}
+
+bool TestRunController::playable() const {
+    return m_program && (m_program->ran || m_program->refusedAt);
+}
+
 void TestRunController::stopWorker() {
     m_cancel = true;
     if (m_worker.joinable()) m_worker.join();
@@ -69,6 +83,9 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     input.dialect = dialect;
     input.machine = m_machine;
     input.ncRoot = m_ncRoot;
+    m_preparedOrigin = currentOrigin();
+    input.presetInMachine = m_preparedOrigin;
+    input.checkMoves = m_checkMoves;
     const uint64_t generation = ++m_generation;
     setState(State::Interpreting);
     m_worker = std::thread([this, input = std::move(input), generation] {
@@ -99,7 +116,7 @@ void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> prog
     emit programReady();
     emit progressChanged(m_timeS);
     publishStatus();
-    if (!m_program->ran) {
+    if (!playable()) {
         m_playWhenReady = false;
         setState(State::Failed);
         return;
@@ -117,12 +134,14 @@ void TestRunController::start(const QString& text, const std::filesystem::path& 
         m_playWhenReady = true;
         return;
     }
-    if (!m_program || text != m_preparedText || path != m_preparedPath) {
+    // A preset set or edited since the preparation moves the work area under the program.
+    if (!m_program || text != m_preparedText || path != m_preparedPath ||
+        currentOrigin().values != m_preparedOrigin.values) {
         m_playWhenReady = true;
         prepare(text, path, dialect);
         return;
     }
-    if (m_state == State::Finished) reset();
+    if (m_state == State::Finished || (m_state == State::Failed && playable())) reset();
     play();
 }
 
@@ -150,7 +169,7 @@ void TestRunController::reset() {
     emit progressChanged(m_timeS);
     m_shownStatus = nullptr;
     publishStatus();
-    setState(m_program->ran ? State::Ready : State::Failed);
+    setState(playable() ? State::Ready : State::Failed);
 }
 
 void TestRunController::clear() {
@@ -215,7 +234,8 @@ void TestRunController::advance(double wallSeconds) {
     if (m_timeS >= total) {
         m_timer->stop();
         m_stock->finish();
-        setState(State::Finished);
+        // The machine would refuse the next block: the run ends here with that error.
+        setState(m_program->refusedAt ? State::Failed : State::Finished);
     }
 }
 
