@@ -207,7 +207,9 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
         const double floor = l.at(s.depth);
         const Vec2 entry = place.point(rough.coreStart);
         path.rapidUv(entry);
-        path.rapidW(l.at(roughDepth) + l.up * s.setUpClearance);
+        // Down at rapid to the set-up clearance above the roughed floor, never up to it.
+        const double above = l.at(roughDepth) + l.up * s.setUpClearance;
+        if ((path.w() - above) * l.up > 0.0) path.rapidW(above);
         path.moveW(floor, s.plungeFeed);
         runClearing(path, rough, place, s.finishFeed, s.feedReference >= 2 ? radius : 0.0);
         path.rapidW(floor + l.up * s.setUpClearance);
