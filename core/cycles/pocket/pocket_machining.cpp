@@ -189,16 +189,18 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
             std::vector<double> levels;
             if (auto e = stepLevels(s, 0.0, s.depth, s.finishInfeed, levels)) return e;
             const Vec2 entry = approachStart(ring, inward, arcRadius);
-            double top = l.surface;
+            const double roughFloor = l.at(roughDepth);
             for (double level : levels) {
+                // The pocket is roughed (spec: with Q215 = 2 beforehand): down at rapid to the
+                // set-up clearance above the level, or above the roughed floor if that is higher.
+                const double above = (level - roughFloor) * l.up > 0.0 ? level : roughFloor;
                 path.rapidUv(entry);
-                path.rapidW(top + l.up * s.setUpClearance);
+                path.rapidW(above + l.up * s.setUpClearance);
                 path.moveW(level, s.plungeFeed);
                 approachArc(path, ring, inward, arcRadius, s.finishFeed);
                 followContour(path, ring, s.finishFeed, s.feedReference >= 1 ? radius : 0.0);
                 departureArc(path, ring, inward, arcRadius, s.finishFeed);
                 path.rapidW(level + l.up * s.setUpClearance);
-                top = level;
             }
         }
     }
