@@ -5307,6 +5307,210 @@ cykl</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Kolejność osi w Bazuj wszystkie: mniejsze numery są bazowane najpierw</translation>
     </message>
+    <message>
+        <source>Corner radius (0: tool radius)</source>
+        <translation>Promień naroża (0: promień narzędzia)</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR POCKET</source>
+        <translation>KIESZEN PROSTOKATNA</translation>
+    </message>
+    <message>
+        <source>Circle diameter</source>
+        <translation>Średnica okręgu</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical)</source>
+        <translation>Strategia wcięcia (0 pionowo, 1 po linii śrubowej)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: vertical plunging (Q366 = 0) needs a tool whose ANGLE is 0 or 90</source>
+        <translation>cykl {1}: wcięcie pionowe (Q366 = 0) wymaga narzędzia z ANGLE 0 lub 90</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET</source>
+        <translation>KIESZEN OKRAGLA</translation>
+    </message>
+    <message>
+        <source>Slot length</source>
+        <translation>Długość rowka</translation>
+    </message>
+    <message>
+        <source>Slot width</source>
+        <translation>Szerokość rowka</translation>
+    </message>
+    <message>
+        <source>Slot position (0 centre, 1 left end, 2 centre of the left arc, 3 centre of the right arc, 4 right end)</source>
+        <translation>Położenie rowka (0 środek, 1 lewy koniec, 2 środek lewego łuku, 3 środek prawego łuku, 4 prawy koniec)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 is larger than its length Q218</source>
+        <translation>cykl {1}: szerokość rowka Q219 jest większa niż jego długość Q218</translation>
+    </message>
+    <message>
+        <source>SLOT MILLING</source>
+        <translation>FREZOWANIE ROWKOW</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 1</source>
+        <translation>Długość boku 1 półfabrykatu</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 2</source>
+        <translation>Długość boku 2 półfabrykatu</translation>
+    </message>
+    <message>
+        <source>Corner radius (+) or chamfer (-)</source>
+        <translation>Promień naroża (+) lub fazka (-)</translation>
+    </message>
+    <message>
+        <source>Approach position (0 right of the stud, 1-4 corners)</source>
+        <translation>Pozycja dosuwu (0 na prawo od czopu, 1-4 naroża)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
+        <translation>cykl {1}: pozycja dosuwu Q437 = {2} nie jest jeszcze obsługiwana (0: na prawo od czopu)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
+        <translation>cykl {1}: półfabrykat jest mniejszy niż gotowa część</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR STUD</source>
+        <translation>CZOP PROSTOKATNY</translation>
+    </message>
+    <message>
+        <source>Finished part diameter</source>
+        <translation>Średnica gotowej części</translation>
+    </message>
+    <message>
+        <source>Workpiece blank diameter</source>
+        <translation>Średnica półfabrykatu</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD</source>
+        <translation>CZOP OKRAGLY</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool with a radius greater than 0</source>
+        <translation>cykl {1} wymaga narzędzia o promieniu większym od 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical or reciprocating plunging (Q366) needs the plunge angle ANGLE of the tool</source>
+        <translation>cykl {1}: wcięcie po linii śrubowej lub ruchem wahadłowym (Q366) wymaga kąta wcięcia ANGLE narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the programmed size and finishing allowance</source>
+        <translation>cykl {1}: narzędzie jest za duże dla zaprogramowanego wymiaru i naddatku na obróbkę wykańczającą</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge: the helix needs a diameter of twice the tool diameter</source>
+        <translation>cykl {1}: brak miejsca na wcięcie po linii śrubowej: linia śrubowa wymaga podwójnej średnicy narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for reciprocating plunging: it needs a length of twice the tool diameter</source>
+        <translation>cykl {1}: brak miejsca na wcięcie ruchem wahadłowym: wymaga długości podwójnej średnicy narzędzia</translation>
+    </message>
+    <message>
+        <source>Machining operation (0 roughing and finishing, 1 roughing, 2 finishing)</source>
+        <translation>Zakres obróbki (0 zgrubna i wykańczająca, 1 zgrubna, 2 wykańczająca)</translation>
+    </message>
+    <message>
+        <source>First side length</source>
+        <translation>Długość pierwszego boku</translation>
+    </message>
+    <message>
+        <source>Second side length</source>
+        <translation>Długość drugiego boku</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the side</source>
+        <translation>Naddatek na obróbkę wykańczającą boku</translation>
+    </message>
+    <message>
+        <source>Position (0 centre, 1 lower left, 2 lower right, 3 upper right, 4 upper left corner)</source>
+        <translation>Położenie (0 środek, 1 naroże lewe dolne, 2 prawe dolne, 3 prawe górne, 4 lewe górne)</translation>
+    </message>
+    <message>
+        <source>Infeed for finishing (0: one infeed)</source>
+        <translation>Dosuw przy obróbce wykańczającej (0: jeden dosuw)</translation>
+    </message>
+    <message>
+        <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
+        <translation>Odniesienie posuwu (0 środek narzędzia, 1 ostrze przy wykańczaniu boku, 2 także dna, 3 zawsze)</translation>
+    </message>
+    <message>
+        <source>POCKET POSITION</source>
+        <translation>POŁOŻENIE KIESZENI</translation>
+    </message>
+    <message>
+        <source>SLOT POSITION</source>
+        <translation>POŁOŻENIE ROWKA</translation>
+    </message>
+    <message>
+        <source>STUD POSITION</source>
+        <translation>POŁOŻENIE CZOPU</translation>
+    </message>
+    <message>
+        <source>MACHINING OPERATION</source>
+        <translation>ZAKRES OBROBKI</translation>
+    </message>
+    <message>
+        <source>CORNER RADIUS</source>
+        <translation>PROMIEN NAROZA</translation>
+    </message>
+    <message>
+        <source>WORKPIECE BLANK DIA.</source>
+        <translation>ŚREDNICA PÓŁFABRYKATU</translation>
+    </message>
+    <message>
+        <source>CIRCLE DIAMETER</source>
+        <translation>ŚREDNICA OKRĘGU</translation>
+    </message>
+    <message>
+        <source>INFEED FOR FINISHING</source>
+        <translation>DOSUW OBR. WYKAŃCZ.</translation>
+    </message>
+    <message>
+        <source>PLUNGE</source>
+        <translation>WCIĘCIE</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR SIDE</source>
+        <translation>NADDATEK NA BOK</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 1</source>
+        <translation>PÓŁFABRYKAT BOK 1</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 2</source>
+        <translation>PÓŁFABRYKAT BOK 2</translation>
+    </message>
+    <message>
+        <source>APPROACH POSITION</source>
+        <translation>POZYCJA DOSUWU</translation>
+    </message>
+    <message>
+        <source>FEED RATE REFERENCE</source>
+        <translation>ODNIESIENIE POSUWU</translation>
+    </message>
+    <message>
+        <source>SLOT LENGTH</source>
+        <translation>DŁUGOŚĆ ROWKA</translation>
+    </message>
+    <message>
+        <source>SLOT WIDTH</source>
+        <translation>SZEROKOŚĆ ROWKA</translation>
+    </message>
+    <message>
+        <source>RADIUS / CHAMFER</source>
+        <translation>PROMIEŃ / FAZKA</translation>
+    </message>
+    <message>
+        <source>FINISHED PART DIA.</source>
+        <translation>ŚREDNICA GOTOWEJ CZ.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
