@@ -192,31 +192,58 @@ ClosedContour roundedRectangle(double length, double width, double cornerRadius)
     return out;
 }
 
+ClosedContour arcSlot(double pitchRadius, double startRad, double sweepRad, double width) {
+    const double half = width / 2.0;
+    auto unit = [](double a) { return Vec2(std::cos(a), std::sin(a)); };
+    const double endRad = startRad + sweepRad;
+    const Vec2 startCentre = pitchRadius * unit(startRad);
+    const Vec2 endCentre = pitchRadius * unit(endRad);
+    const Vec2 tangent = unit(endRad + kPi / 2.0);
+    ClosedContour out;
+    auto add = [&](const PlanarSegment& s) {
+        if (std::fabs(s.sweep) * s.radius() > kSame) out.segments.push_back(s);
+    };
+    const Vec2 origin(0.0, 0.0);
+    add(PlanarSegment::arc(endCentre + half * tangent, endCentre, kPi / 2.0));
+    add(PlanarSegment::arc((pitchRadius - half) * unit(endRad), origin, -sweepRad));
+    add(PlanarSegment::arc((pitchRadius - half) * unit(startRad), startCentre, kPi));
+    add(PlanarSegment::arc((pitchRadius + half) * unit(startRad), origin, sweepRad));
+    add(PlanarSegment::arc((pitchRadius + half) * unit(endRad), endCentre, kPi / 2.0));
+    return out;
+}
+
 ClosedContour circleContour(double radius) {
     ClosedContour out;
     out.segments.push_back(PlanarSegment::arc({radius, 0.0}, {0.0, 0.0}, 2.0 * kPi));
     return out;
 }
 
-std::optional<ClosedContour> offsetConvex(const ClosedContour& contour, double distance) {
+std::optional<ClosedContour> offsetClosed(const ClosedContour& contour, double distance) {
     struct Piece {
         PlanarSegment s;
         size_t original;
     };
+    // Sharp concave corners need trimming outwards and joining arcs inwards: the general case.
+    const size_t count = contour.segments.size();
+    for (size_t i = 0; i < count; ++i) {
+        const Vec2 out = contour.segments[i].endTangent();
+        const Vec2 in = contour.segments[(i + 1) % count].startTangent();
+        if (cross(out, in) < -1e-9) return std::nullopt;
+    }
     std::vector<Piece> pieces;
-    for (size_t i = 0; i < contour.segments.size(); ++i) {
+    for (size_t i = 0; i < count; ++i) {
         const PlanarSegment& s = contour.segments[i];
         if (s.kind == PlanarSegment::Kind::Line) {
             const Vec2 d = s.startTangent();
             const Vec2 right(d.y(), -d.x());
-            pieces.push_back({PlanarSegment::line(s.start + distance * right,
-                                                  s.end + distance * right),
-                              i});
+            pieces.push_back(
+                {PlanarSegment::line(s.start + distance * right, s.end + distance * right), i});
             continue;
         }
-        if (s.sweep <= 0.0) return std::nullopt;  // concave: not a convex chain
+        // A counter-clockwise arc bulges outwards and grows with the distance; a clockwise one
+        // (a concave stretch joined tangentially, the inner wall of a circular slot) shrinks.
         const double r = s.radius();
-        const double grown = r + distance;
+        const double grown = s.sweep > 0.0 ? r + distance : r - distance;
         if (grown <= kSame) continue;  // the arc shrinks to nothing
         const double k = grown / r;
         pieces.push_back({arcThrough(s.center + k * (s.start - s.center),
@@ -261,13 +288,15 @@ std::optional<ClosedContour> offsetConvex(const ClosedContour& contour, double d
             // A line that turned round means the offset lost this side.
             if ((s.end - s.start).dot(original.end - original.start) <= 0.0) return std::nullopt;
         } else {
-            double sweep = ccwAngle(s.start - s.center, s.end - s.center);
+            const bool ccw = original.sweep > 0.0;
+            double sweep = ccw ? ccwAngle(s.start - s.center, s.end - s.center)
+                               : ccwAngle(s.end - s.center, s.start - s.center);
             if (sweep <= kSame) {
-                if (original.sweep <= kPi) continue;  // a corner arc cut down to its point
+                if (std::fabs(original.sweep) <= kPi) continue;  // cut down to its point
                 sweep = 2.0 * kPi;
             }
-            if (sweep > original.sweep + 1e-9) return std::nullopt;
-            s.sweep = sweep;
+            if (sweep > std::fabs(original.sweep) + 1e-9) return std::nullopt;
+            s.sweep = ccw ? sweep : -sweep;
         }
         out.segments.push_back(s);
     }

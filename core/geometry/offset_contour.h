@@ -54,13 +54,21 @@ struct ClosedContour {
 // length = width = 2 x radius is a circle of four quarter arcs.
 ClosedContour roundedRectangle(double length, double width, double cornerRadius);
 
+// A circular slot: the band of `width` about the arc of radius `pitchRadius` about the origin from
+// `startRad` over `sweepRad` (> 0, counter-clockwise), its ends rounded with half the width.
+// Counter-clockwise, starting at the middle of the end cap at startRad + sweepRad, where the
+// pitch arc's tangent leaves the slot; the inner wall is a clockwise arc joined tangentially.
+ClosedContour arcSlot(double pitchRadius, double startRad, double sweepRad, double width);
+
 // Circle about the origin, counter-clockwise from angle 0.
 ClosedContour circleContour(double radius);
 
-// Offsets a convex counter-clockwise chain by `distance` (positive outwards). Outwards, convex
-// corners get arcs about the corner; inwards, arcs shrink and vanish and the neighbours are cut
-// at their intersection. Empty when the inward offset vanishes or would change the topology
-// (the general case is for the Clipper-based engine, docs/contours.md).
-std::optional<ClosedContour> offsetConvex(const ClosedContour& contour, double distance);
+// Offsets a counter-clockwise chain by `distance` (positive outwards). Every corner must be
+// convex or tangent (concave stretches only as tangent clockwise arcs, as in a circular slot).
+// Outwards, convex corners get arcs about the corner; inwards, arcs shrink and vanish and the
+// neighbours are cut at their intersection. Empty when the inward offset vanishes, when it would
+// change the topology, or at a sharp concave corner (the general case is for the Clipper-based
+// engine, docs/contours.md).
+std::optional<ClosedContour> offsetClosed(const ClosedContour& contour, double distance);
 
 }  // namespace kerf

@@ -62,14 +62,14 @@ Vec2 centreOffset(int position, double length, double width) {
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
     MillingSetup setup;
     if (auto e = readSetup(251, v, ctx, setup)) return e;
-    PocketShape shape;
-    shape.length = v.number(218);
-    shape.width = v.number(219);
-    shape.cornerRadius = v.number(220) > 0.0 ? v.number(220) : ctx.tool.radius;
+    const double length = v.number(218);
+    const double width = v.number(219);
+    PocketShape shape =
+        roundedPocket(length, width, v.number(220) > 0.0 ? v.number(220) : ctx.tool.radius);
     Placement place;
     place.angleRad = v.number(224) * std::numbers::pi / 180.0;
     place.origin = path.uv();
-    place.origin = place.point(centreOffset(v.integer(367), shape.length, shape.width));
+    place.origin = place.point(centreOffset(v.integer(367), length, width));
     shape.placement = place;
     return machinePocket(setup, shape, path);
 }

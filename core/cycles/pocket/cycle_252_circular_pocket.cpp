@@ -57,9 +57,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                                        "whose ANGLE is 0 or 90"),
                           {"252"}};
     }
-    PocketShape shape;
-    shape.length = shape.width = v.number(223);
-    shape.cornerRadius = v.number(223) / 2.0;
+    PocketShape shape = roundedPocket(v.number(223), v.number(223), v.number(223) / 2.0);
     shape.placement.origin = path.uv();
     return machinePocket(setup, shape, path);
 }

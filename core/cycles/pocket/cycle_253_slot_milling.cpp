@@ -61,19 +61,18 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     MillingSetup setup;
     if (auto e = readSetup(253, v, ctx, setup)) return e;
     if (setup.plunge != Plunge::Vertical) setup.plunge = Plunge::Reciprocating;
-    PocketShape shape;
-    shape.length = v.number(218);
-    shape.width = v.number(219);
-    if (shape.width > shape.length) {
+    const double length = v.number(218);
+    const double width = v.number(219);
+    if (width > length) {
         return CycleError{"cycle-parameter",
                           KERF_TR_NOOP("cycle {1}: the slot width Q219 is larger than its "
                                        "length Q218"),
                           {"253"}};
     }
-    shape.cornerRadius = shape.width / 2.0;
-    shape.plungeAtSlotEnd = true;
-    const double arcCentre = (shape.length - shape.width) / 2.0;
-    const double offsets[] = {0.0, shape.length / 2.0, arcCentre, -arcCentre, -shape.length / 2.0};
+    PocketShape shape = roundedPocket(length, width, width / 2.0);
+    shape.plungeAtCoreStart = true;
+    const double arcCentre = (length - width) / 2.0;
+    const double offsets[] = {0.0, length / 2.0, arcCentre, -arcCentre, -length / 2.0};
     Placement place;
     place.angleRad = v.number(374) * std::numbers::pi / 180.0;
     place.origin = path.uv();

@@ -103,7 +103,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     }
     StudShape shape;
     shape.stud = roundedRectangle(length, width, v.number(220));
-    const auto withAllowance = offsetConvex(shape.stud, setup.sideAllowance);
+    const auto withAllowance = offsetClosed(shape.stud, setup.sideAllowance);
     if (!withAllowance) return toolTooLarge(256);
     // The blank's corner is the farthest material: every pass set reaches it.
     shape.margin = withAllowance->distanceTo({blankLength / 2.0, blankWidth / 2.0});

@@ -14,51 +14,53 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr size_t kMaxRings = 10000;
 
-// The clearing of one region: the core line (a point for a circle) and the rings around it,
-// all in the shape's local frame, innermost first. Ring k starts k stepovers beyond the core's
-// +u end on the u axis, so each ring is reached by a straight stepover.
+// The clearing of one region: the core and the rings around it, innermost first, local frame.
 struct Clearing {
-    Vec2 coreStart{0.0, 0.0};
-    Vec2 coreEnd{0.0, 0.0};
+    PlanarSegment core;
     std::vector<ClosedContour> rings;
 };
 
 // The tool-centre region: the shape offset inwards by `inset`.
 std::optional<CycleError> planClearing(const MillingSetup& s, const PocketShape& shape,
                                        double inset, bool climb, Clearing& out) {
-    const double length = shape.length - 2.0 * inset;
-    const double width = shape.width - 2.0 * inset;
-    if (width < -1e-9 || length < -1e-9) return toolTooLarge(s.cycle);
-    const double shorter = std::max(0.0, std::min(length, width));
-    const double half = shorter / 2.0;
-    const double coreHalf = std::max(0.0, std::fabs(length - width) / 2.0);
-    // The core runs along the longer side.
-    const Vec2 axis = length >= width ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
-    out.coreStart = -coreHalf * axis;
-    out.coreEnd = coreHalf * axis;
+    const double half = shape.halfWidth - inset;
+    if (half < -1e-9) return toolTooLarge(s.cycle);
+    out.core = shape.core;
     out.rings.clear();
     if (half <= 1e-9) return std::nullopt;
-    const ClosedContour shapeContour =
-        roundedRectangle(shape.length, shape.width, shape.cornerRadius);
     const double step = s.overlap * s.tool.radius;
     const double count = std::ceil(half / step - 1e-9);
     if (count > static_cast<double>(kMaxRings)) return tooManyMoves(s.cycle);
     const int n = static_cast<int>(count);
     for (int k = n - 1; k >= 0; --k) {
-        auto ring = offsetConvex(shapeContour, -(inset + half * k / n));
+        auto ring = offsetClosed(shape.contour, -(inset + half * k / n));
         if (!ring) return toolTooLarge(s.cycle);
         out.rings.push_back(climb ? std::move(*ring) : ring->reversed());
     }
-    // A ring along the shorter side starts on the u axis too: the contour starts at +u.
-    if (axis.y() != 0.0) out.coreStart = out.coreEnd = Vec2(0.0, 0.0);
     return std::nullopt;
+}
+
+// Moves along a placed core segment from its start (a point when it has no length).
+void followCore(CyclePath& path, const PlanarSegment& core, const Feed& feed) {
+    if (core.kind == PlanarSegment::Kind::Arc) {
+        path.arc({core.end.x(), core.end.y(), path.w()}, core.center, core.sweep, feed);
+    } else {
+        path.moveUv(core.end, feed);
+    }
+}
+
+PlanarSegment placedSegment(const Placement& place, const PlanarSegment& s) {
+    ClosedContour one;
+    one.segments.push_back(s);
+    return place.contour(one).segments.front();
 }
 
 // Runs a clearing at the current height: core, stepover, rings.
 void runClearing(CyclePath& path, const Clearing& c, const Placement& place, const Feed& feed,
                  double edgeOffset) {
-    path.moveUv(place.point(c.coreStart), feed);
-    path.moveUv(place.point(c.coreEnd), feed);
+    const PlanarSegment core = placedSegment(place, c.core);
+    path.moveUv(core.start, feed);
+    followCore(path, core, feed);
     for (const ClosedContour& ring : c.rings) {
         const ClosedContour placed = place.contour(ring);
         path.moveUv(placed.segments.front().start, feed);
@@ -66,8 +68,8 @@ void runClearing(CyclePath& path, const Clearing& c, const Placement& place, con
     }
 }
 
-// Helix of radius `radius` about `centre` from the current height down to `toW`, starting at
-// the current point (which lies on the circle).
+// Helix of radius `radius` about `centre` from the current height to `toW`, starting at the
+// current point (which lies on the circle); `pitch` signed, positive when moving down in w.
 void helixDown(CyclePath& path, const Vec2& centre, double radius, double toW, double pitch,
                bool ccw, const Feed& feed) {
     const double turns = (path.w() - toW) / pitch;
@@ -88,21 +90,51 @@ void helixDown(CyclePath& path, const Vec2& centre, double radius, double toW, d
     }
 }
 
-// Zig-zag between a and b down to `toW`, then one stroke at the depth to flatten the ramp.
-void reciprocateDown(CyclePath& path, const Vec2& a, const Vec2& b, double toW, double drop,
-                     const Feed& feed) {
-    bool towardsB = true;
-    while (path.w() > toW + 1e-9) {
-        const double w = std::max(toW, path.w() - drop);
-        const Vec2 target = towardsB ? b : a;
-        path.move({target.x(), target.y(), w}, feed);
-        towardsB = !towardsB;
+// The part of the core from its start that is `length` long; a line core may run on beyond its
+// end (into the region's end, which has room for half its width).
+PlanarSegment corePrefix(const PlanarSegment& core, double length) {
+    if (core.kind == PlanarSegment::Kind::Arc) {
+        const double sweep = (core.sweep >= 0.0 ? 1.0 : -1.0) * length / core.radius();
+        return PlanarSegment::arc(core.start, core.center, sweep);
     }
-    const Vec2 target = towardsB ? b : a;
-    path.moveUv(target, feed);
+    const Vec2 axis =
+        core.length() > 1e-9 ? Vec2((core.end - core.start).normalized()) : Vec2(1.0, 0.0);
+    return PlanarSegment::line(core.start, core.start + length * axis);
+}
+
+// Zig-zag along `stroke` down to `toW`, then one stroke at the depth to flatten the ramp.
+void reciprocateDown(CyclePath& path, const PlanarSegment& stroke, double toW, double drop,
+                     const Feed& feed) {
+    bool forward = true;
+    auto go = [&](double w) {
+        const PlanarSegment s = forward ? stroke : stroke.reversed();
+        if (s.kind == PlanarSegment::Kind::Arc) {
+            path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
+        } else {
+            path.move({s.end.x(), s.end.y(), w}, feed);
+        }
+        forward = !forward;
+    };
+    // `drop` is signed like the infeed direction (positive when moving down in w).
+    while ((path.w() - toW) * drop > 1e-9) {
+        const double next = path.w() - drop;
+        go((next - toW) * drop > 0.0 ? next : toW);
+    }
+    go(toW);
 }
 
 }  // namespace
+
+PocketShape roundedPocket(double length, double width, double cornerRadius) {
+    PocketShape shape;
+    shape.contour = roundedRectangle(length, width, cornerRadius);
+    shape.halfWidth = std::min(length, width) / 2.0;
+    // The core lies where the offset by half the shorter side shrinks to: along the longer side.
+    const double coreHalf = std::fabs(length - width) / 2.0;
+    shape.core = length >= width ? PlanarSegment::line({-coreHalf, 0.0}, {coreHalf, 0.0})
+                                 : PlanarSegment::line({0.0, -coreHalf}, {0.0, coreHalf});
+    return shape;
+}
 
 std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape& shape,
                                         CyclePath& path) {
@@ -119,26 +151,23 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
     if (s.rough) {
         if (auto e = stepLevels(s, 0.0, roughDepth, s.infeed, roughLevels)) return e;
     }
-    const Vec2 centre = place.point(Vec2(0.0, 0.0));
-    const Vec2 plungeLocal = shape.plungeAtSlotEnd ? rough.coreStart : Vec2(0.0, 0.0);
+    const Vec2 plungeLocal = shape.plungeAtCoreStart ? shape.core.start : Vec2(0.0, 0.0);
     const Vec2 plungePoint = place.point(plungeLocal);
     // Plunging strategy: helix of radius R about the plunge point, or strokes along the core
     // from its start, 2 x the tool diameter long (or Q202 / tan(ANGLE) when longer).
     const double tanAngle = std::tan(s.tool.plungeAngleDeg * std::numbers::pi / 180.0);
-    const double halfFree = std::min(shape.length, shape.width) / 2.0 - radius - s.sideAllowance;
+    const double halfFree = shape.halfWidth - radius - s.sideAllowance;
     if (s.rough && s.plunge == Plunge::Helical && halfFree < radius - 1e-9) {
         return CycleError{"cycle-plunge",
                           KERF_TR_NOOP("cycle {1}: no room for the helical plunge: the helix "
                                        "needs a diameter of twice the tool diameter"),
                           {std::to_string(s.cycle)}};
     }
-    Vec2 strokeA = place.point(rough.coreStart);
-    Vec2 strokeB = strokeA;
+    PlanarSegment stroke = PlanarSegment::line(plungeLocal, plungeLocal);
     if (s.rough && s.plunge == Plunge::Reciprocating) {
-        const Vec2 axis = (rough.coreEnd - rough.coreStart).norm() > 1e-9
-                              ? Vec2((rough.coreEnd - rough.coreStart).normalized())
-                              : Vec2(1.0, 0.0);
-        const double room = (rough.coreEnd - rough.coreStart).norm() + std::max(0.0, halfFree);
+        // A line core may run on into the region's rounded end; an arc core may not.
+        const double beyond = shape.core.kind == PlanarSegment::Kind::Line ? halfFree : 0.0;
+        const double room = shape.core.length() + std::max(0.0, beyond);
         const double wanted = std::max(4.0 * radius, s.infeed / tanAngle);
         if (room < 4.0 * radius - 1e-9) {
             return CycleError{"cycle-plunge",
@@ -146,13 +175,13 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
                                            "needs a length of twice the tool diameter"),
                               {std::to_string(s.cycle)}};
         }
-        strokeB = place.point(rough.coreStart + std::min(wanted, room) * axis);
+        stroke = placedSegment(place, corePrefix(shape.core, std::min(wanted, room)));
     }
 
     // Positioning: clear of the workpiece at the 2nd set-up clearance first (spec 1.6).
     if ((path.w() - l.top) * l.up < 0.0) path.rapidW(l.top);
     Vec2 firstPoint = plungePoint;
-    if (s.plunge == Plunge::Reciprocating) firstPoint = strokeA;
+    if (s.plunge == Plunge::Reciprocating) firstPoint = stroke.start;
     if (s.plunge == Plunge::Helical) firstPoint = place.point(plungeLocal + Vec2(radius, 0.0));
     double previous = l.surface;
     for (double level : roughLevels) {
@@ -163,12 +192,12 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
                 path.moveW(level, s.plungeFeed);
                 break;
             case Plunge::Helical:
-                helixDown(path, plungePoint, radius, level, kTwoPi * radius * tanAngle, s.climb,
-                          s.plungeFeed);
+                helixDown(path, plungePoint, radius, level, l.up * kTwoPi * radius * tanAngle,
+                          s.climb, s.plungeFeed);
                 break;
             case Plunge::Reciprocating:
-                reciprocateDown(path, strokeA, strokeB, level,
-                                (strokeB - strokeA).norm() * tanAngle, s.plungeFeed);
+                reciprocateDown(path, stroke, level, l.up * stroke.length() * tanAngle,
+                                s.plungeFeed);
                 break;
         }
         runClearing(path, rough, place, s.mill, s.feedReference == 3 ? radius : 0.0);
@@ -179,12 +208,13 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
     // Side finishing: the walls at Q338 infeeds down to the floor, approached and left on
     // quarter arcs from the inside.
     if (s.finish && s.sideAllowance > 0.0) {
-        auto wall =
-            offsetConvex(roundedRectangle(shape.length, shape.width, shape.cornerRadius), -radius);
-        const double wallHalf = std::min(shape.length, shape.width) / 2.0 - radius;
+        auto wall = offsetClosed(shape.contour, -radius);
+        const double wallHalf = shape.halfWidth - radius;
         if (wall && wallHalf > 1e-9) {
             const ClosedContour ring = place.contour(s.climb ? *wall : wall->reversed());
-            const Vec2 inward = place.point({-1, 0}) - centre;
+            // Inwards: to the left of a counter-clockwise ring, to the right of a clockwise one.
+            const Vec2 t = ring.segments.front().startTangent();
+            const Vec2 inward = s.climb ? Vec2(-t.y(), t.x()) : Vec2(t.y(), -t.x());
             const double arcRadius = std::min(radius, wallHalf / 2.0);
             std::vector<double> levels;
             if (auto e = stepLevels(s, 0.0, s.depth, s.finishInfeed, levels)) return e;
@@ -207,7 +237,7 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
     // Floor finishing: the roughing clearing at the floor.
     if (s.finish && s.floorAllowance > 0.0) {
         const double floor = l.at(s.depth);
-        const Vec2 entry = place.point(rough.coreStart);
+        const Vec2 entry = place.point(shape.core.start);
         path.rapidUv(entry);
         // Down at rapid to the set-up clearance above the roughed floor, never up to it.
         const double above = l.at(roughDepth) + l.up * s.setUpClearance;

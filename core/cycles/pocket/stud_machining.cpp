@@ -31,11 +31,11 @@ std::optional<CycleError> machineStud(const MillingSetup& s, const StudShape& sh
     const int n = static_cast<int>(count);
     std::vector<ClosedContour> passes;
     for (int k = 1; k <= n; ++k) {
-        auto pass = offsetConvex(shape.stud, inset + margin * (n - k) / n);
+        auto pass = offsetClosed(shape.stud, inset + margin * (n - k) / n);
         if (!pass) return toolTooLarge(s.cycle);
         passes.push_back(oriented(*pass));
     }
-    auto wall = offsetConvex(shape.stud, radius);
+    auto wall = offsetClosed(shape.stud, radius);
     if (!wall) return toolTooLarge(s.cycle);
     const ClosedContour finishRing = oriented(*wall);
     const Vec2 outward = place.point({1, 0}) - place.point({0, 0});

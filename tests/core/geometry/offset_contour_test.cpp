@@ -1,10 +1,10 @@
 // Offsets of the fixed cycles' shapes against areas and points derived by hand.
 #include "core/geometry/offset_contour.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 namespace kerf {
 namespace {
@@ -42,13 +42,13 @@ TEST(OffsetContour, RoundedRectangleStartsOnTheRightSideCounterClockwise) {
 TEST(OffsetContour, InwardOffsetSharpensCornersSmallerThanTheDistance) {
     const ClosedContour c = roundedRectangle(80, 60, 5);
     // By the corner radius: a sharp 70 x 50 rectangle.
-    auto exact = offsetConvex(c, -5.0);
+    auto exact = offsetClosed(c, -5.0);
     ASSERT_TRUE(exact);
     expectClosed(*exact);
     EXPECT_EQ(countArcs(*exact), 0u);
     EXPECT_NEAR(exact->signedArea(), 70.0 * 50.0, 1e-9);
     // Beyond it: the lines meet at (32, 22), 64 x 44.
-    auto deeper = offsetConvex(c, -8.0);
+    auto deeper = offsetClosed(c, -8.0);
     ASSERT_TRUE(deeper);
     expectClosed(*deeper);
     EXPECT_EQ(countArcs(*deeper), 0u);
@@ -56,7 +56,7 @@ TEST(OffsetContour, InwardOffsetSharpensCornersSmallerThanTheDistance) {
     EXPECT_NEAR(deeper->segments.front().end.x(), 32.0, 1e-9);
     EXPECT_NEAR(deeper->segments.front().end.y(), 22.0, 1e-9);
     // Less than the radius: arcs of radius 5 - 2 = 3 about the same centres.
-    auto shallow = offsetConvex(c, -2.0);
+    auto shallow = offsetClosed(c, -2.0);
     ASSERT_TRUE(shallow);
     ASSERT_EQ(countArcs(*shallow), 4u);
     EXPECT_NEAR(shallow->segments[1].radius(), 3.0, 1e-12);
@@ -67,7 +67,7 @@ TEST(OffsetContour, InwardOffsetSharpensCornersSmallerThanTheDistance) {
 
 TEST(OffsetContour, OutwardOffsetRoundsConvexCornersWithArcs) {
     // A sharp 10 x 6 rectangle grown by 2: A + P d + pi d^2, arcs about the four corners.
-    auto grown = offsetConvex(roundedRectangle(10, 6, 0), 2.0);
+    auto grown = offsetClosed(roundedRectangle(10, 6, 0), 2.0);
     ASSERT_TRUE(grown);
     expectClosed(*grown);
     EXPECT_EQ(countArcs(*grown), 4u);
@@ -82,7 +82,7 @@ TEST(OffsetContour, OutwardOffsetRoundsConvexCornersWithArcs) {
     // A chamfered square (octagon) grown by 1: eight arcs of 45 degrees.
     const ClosedContour octagon = roundedRectangle(20, 20, -4);
     EXPECT_NEAR(octagon.signedArea(), 400.0 - 4.0 * 8.0, 1e-9);
-    auto around = offsetConvex(octagon, 1.0);
+    auto around = offsetClosed(octagon, 1.0);
     ASSERT_TRUE(around);
     expectClosed(*around);
     EXPECT_EQ(countArcs(*around), 8u);
@@ -91,29 +91,57 @@ TEST(OffsetContour, OutwardOffsetRoundsConvexCornersWithArcs) {
 }
 
 TEST(OffsetContour, CirclesAndSlotsStayArcs) {
-    auto inner = offsetConvex(circleContour(10.0), -3.0);
+    auto inner = offsetClosed(circleContour(10.0), -3.0);
     ASSERT_TRUE(inner);
     ASSERT_EQ(inner->segments.size(), 1u);
     EXPECT_NEAR(inner->segments[0].radius(), 7.0, 1e-12);
     EXPECT_NEAR(inner->segments[0].sweep, 2.0 * kPi, 1e-12);
-    EXPECT_FALSE(offsetConvex(circleContour(10.0), -10.0));
+    EXPECT_FALSE(offsetClosed(circleContour(10.0), -10.0));
     // A slot 80 x 12: the corner radius takes the whole width; it starts on the end arc.
     const ClosedContour slot = roundedRectangle(80, 12, 6);
     expectClosed(slot);
     EXPECT_EQ(slot.segments.front().kind, PlanarSegment::Kind::Arc);
     EXPECT_NEAR(slot.signedArea(), 68.0 * 12.0 + kPi * 36.0, 1e-9);
-    auto narrower = offsetConvex(slot, -4.0);
+    auto narrower = offsetClosed(slot, -4.0);
     ASSERT_TRUE(narrower);
     EXPECT_NEAR(narrower->signedArea(), 68.0 * 4.0 + kPi * 4.0, 1e-9);
 }
 
 TEST(OffsetContour, AnOffsetThatVanishesIsEmpty) {
-    EXPECT_FALSE(offsetConvex(roundedRectangle(20, 10, 0), -5.0));
-    EXPECT_FALSE(offsetConvex(roundedRectangle(20, 10, 0), -6.0));
-    EXPECT_FALSE(offsetConvex(roundedRectangle(80, 12, 6), -6.0));
-    EXPECT_TRUE(offsetConvex(roundedRectangle(20, 10, 0), -4.9));
-    // Concave chains are not the convex offset's job.
-    EXPECT_FALSE(offsetConvex(roundedRectangle(20, 10, 2).reversed(), -1.0));
+    EXPECT_FALSE(offsetClosed(roundedRectangle(20, 10, 0), -5.0));
+    EXPECT_FALSE(offsetClosed(roundedRectangle(20, 10, 0), -6.0));
+    EXPECT_FALSE(offsetClosed(roundedRectangle(80, 12, 6), -6.0));
+    EXPECT_TRUE(offsetClosed(roundedRectangle(20, 10, 0), -4.9));
+    // A clockwise chain offset to its left grows outwards: no area on the left.
+    EXPECT_FALSE(offsetClosed(roundedRectangle(20, 10, 2).reversed(), -1.0));
+    // A sharp concave corner (an L) is the general engine's job.
+    ClosedContour ell;
+    const Vec2 p[] = {{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
+    for (size_t i = 0; i < 6; ++i)
+        ell.segments.push_back(PlanarSegment::line(p[i], p[(i + 1) % 6]));
+    EXPECT_NEAR(ell.signedArea(), 300.0, 1e-9);
+    EXPECT_FALSE(offsetClosed(ell, -1.0));
+    EXPECT_FALSE(offsetClosed(ell, 1.0));
+}
+
+TEST(OffsetContour, CircularSlotKeepsItsConcaveWallTangent) {
+    // Pitch radius 40 from 0 to 90 degrees, width 10: a quarter of the annulus 35..45 and two
+    // half discs of radius 5.
+    const ClosedContour slot = arcSlot(40, 0, kPi / 2.0, 10);
+    expectClosed(slot);
+    ASSERT_EQ(slot.segments.size(), 5u);
+    EXPECT_NEAR(slot.segments.front().start.x(), -5.0, 1e-12);  // the cap at 90 degrees
+    EXPECT_NEAR(slot.segments.front().start.y(), 40.0, 1e-12);
+    EXPECT_LT(slot.segments[1].sweep, 0.0);  // the inner wall
+    EXPECT_NEAR(slot.signedArea(), (45.0 * 45.0 - 35.0 * 35.0) * kPi / 4.0 + kPi * 25.0, 1e-9);
+    auto inner = offsetClosed(slot, -3.0);
+    ASSERT_TRUE(inner);
+    expectClosed(*inner);
+    EXPECT_NEAR(inner->segments[1].radius(), 38.0, 1e-12);
+    EXPECT_NEAR(inner->segments[3].radius(), 42.0, 1e-12);
+    EXPECT_NEAR(inner->segments[2].radius(), 2.0, 1e-12);
+    EXPECT_NEAR(inner->signedArea(), 80.0 * kPi + 4.0 * kPi, 1e-9);
+    EXPECT_FALSE(offsetClosed(slot, -5.0));  // only the pitch arc is left
 }
 
 TEST(OffsetContour, DistancesAndPlacement) {
