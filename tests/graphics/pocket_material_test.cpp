@@ -42,6 +42,23 @@ std::function<double(double, double)> circle(Vec2 c, double r) {
     return [=](double x, double y) { return std::hypot(x - c.x(), y - c.y()) - r; };
 }
 
+// Signed distance to a circular slot: the band of half width h about the arc of radius r about c
+// from `fromDeg` over `sweepDeg` (counter-clockwise).
+std::function<double(double, double)> arcBand(Vec2 c, double r, double fromDeg, double sweepDeg,
+                                              double h) {
+    return [=](double x, double y) {
+        const double a0 = fromDeg * kPi / 180.0;
+        const double sweep = sweepDeg * kPi / 180.0;
+        double along = std::atan2(y - c.y(), x - c.x()) - a0;
+        along -= 2.0 * kPi * std::floor(along / (2.0 * kPi));
+        if (along <= sweep) return std::fabs(std::hypot(x - c.x(), y - c.y()) - r) - h;
+        const double a1 = a0 + sweep;
+        const double d0 = std::hypot(x - c.x() - r * std::cos(a0), y - c.y() - r * std::sin(a0));
+        const double d1 = std::hypot(x - c.x() - r * std::cos(a1), y - c.y() - r * std::sin(a1));
+        return std::min(d0, d1) - h;
+    };
+}
+
 std::unique_ptr<StockSimulation> machine(const std::string& program) {
     app::RunOptions options;
     options.program = kPrograms / program;
@@ -121,6 +138,20 @@ TEST(PocketMaterial, SlotFromItsLeftEndTurnedUpright) {
     const double volume = (38.0 * 12.0 + kPi * 36.0) * 6.0;
     EXPECT_NEAR(stock->removedVolumeMm3(), volume, 0.01 * volume);
     expectShape(*stock->millStock(), roundedBox({25, 75}, 25, 6, 6, 90), true, 6.0);
+}
+
+TEST(PocketMaterial, CircularSlotsRepeatedAboutThePitchCentre) {
+    auto stock = machine("slot_254.H");
+    ASSERT_TRUE(stock->millStock());
+    // Two slots 12 wide on the pitch circle R35 about X50 Y50, 45..135 and 225..315 degrees,
+    // 10 deep: each a quarter of the annulus 29..41 and two half discs of radius 6.
+    const double slot = (41.0 * 41.0 - 29.0 * 29.0) * kPi / 4.0 + kPi * 36.0;
+    EXPECT_NEAR(stock->removedVolumeMm3(), 2.0 * slot * 10.0, 0.01 * 2.0 * slot * 10.0);
+    const auto first = arcBand({50, 50}, 35, 45, 90, 6);
+    const auto second = arcBand({50, 50}, 35, 225, 90, 6);
+    expectShape(
+        *stock->millStock(),
+        [&](double x, double y) { return std::min(first(x, y), second(x, y)); }, true, 10.0);
 }
 
 TEST(PocketMaterial, RectangularStudKeepsItsSizePlusAllowance) {

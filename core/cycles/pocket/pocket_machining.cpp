@@ -102,7 +102,9 @@ PlanarSegment corePrefix(const PlanarSegment& core, double length) {
     return PlanarSegment::line(core.start, core.start + length * axis);
 }
 
-// Zig-zag along `stroke` down to `toW`, then one stroke at the depth to flatten the ramp.
+// Zig-zag along `stroke` down to `toW`, then strokes at the depth to flatten the ramp and end
+// where the stroke starts (the core's start: in a circular slot a straight way back would leave
+// the slot).
 void reciprocateDown(CyclePath& path, const PlanarSegment& stroke, double toW, double drop,
                      const Feed& feed) {
     bool forward = true;
@@ -121,6 +123,7 @@ void reciprocateDown(CyclePath& path, const PlanarSegment& stroke, double toW, d
         go((next - toW) * drop > 0.0 ? next : toW);
     }
     go(toW);
+    if (!forward) go(toW);
 }
 
 }  // namespace
@@ -183,9 +186,14 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
     Vec2 firstPoint = plungePoint;
     if (s.plunge == Plunge::Reciprocating) firstPoint = stroke.start;
     if (s.plunge == Plunge::Helical) firstPoint = place.point(plungeLocal + Vec2(radius, 0.0));
+    // Before a straight move in the plane from one place of the region to another.
+    auto travel = [&](const Vec2& to) {
+        if (!shape.convex && (path.uv() - to).norm() > 1e-9) path.rapidW(l.clearance);
+        path.rapidUv(to);
+    };
     double previous = l.surface;
     for (double level : roughLevels) {
-        path.rapidUv(firstPoint);
+        travel(firstPoint);
         path.rapidW(previous + l.up * s.setUpClearance);
         switch (s.plunge) {
             case Plunge::Vertical:
@@ -224,7 +232,7 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
                 // The pocket is roughed (spec: with Q215 = 2 beforehand): down at rapid to the
                 // set-up clearance above the level, or above the roughed floor if that is higher.
                 const double above = (level - roughFloor) * l.up > 0.0 ? level : roughFloor;
-                path.rapidUv(entry);
+                travel(entry);
                 path.rapidW(above + l.up * s.setUpClearance);
                 path.moveW(level, s.plungeFeed);
                 approachArc(path, ring, inward, arcRadius, s.finishFeed);
@@ -238,7 +246,7 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
     if (s.finish && s.floorAllowance > 0.0) {
         const double floor = l.at(s.depth);
         const Vec2 entry = place.point(shape.core.start);
-        path.rapidUv(entry);
+        travel(entry);
         // Down at rapid to the set-up clearance above the roughed floor, never up to it.
         const double above = l.at(roughDepth) + l.up * s.setUpClearance;
         if ((path.w() - above) * l.up > 0.0) path.rapidW(above);

@@ -16,6 +16,9 @@ struct PocketShape {
     Placement placement;
     bool plungeAtCoreStart = false;  // 253, 254; else at the local origin (the pocket centre)
     bool returnToStart = true;       // 251-253 end at the start position in the plane
+    // A straight move between two points of a convex region stays inside it; in a circular slot
+    // the tool lifts above the workpiece before such a move.
+    bool convex = true;
 };
 
 // Rounded rectangle, circle and slot (251-253): the core along the longer side.
