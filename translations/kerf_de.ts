@@ -5508,6 +5508,42 @@ editieren</translation>
         <source>FINISHED PART DIA.</source>
         <translation>FERTIGTEIL-DURCHM.</translation>
     </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>WINKELLAENGE</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>BEZUG NUTLAGE</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Bezug der Nutlage (0 Mitte Q216/Q217, 1 Anfangsbogen, 2 Mitte, 3 Endbogen an der Werkzeugposition)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Winkellänge der Nut</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Winkelschritt zwischen den Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Anzahl der Wiederholungen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>Zyklus {1}: die Nutbreite Q219 muss kleiner als der Teilkreisdurchmesser Q375 sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>Zyklus {1}: die Winkellänge Q248 schließt die Nut in sich</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>KREISNUT</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -5508,6 +5508,42 @@ ciclo</translation>
         <source>FINISHED PART DIA.</source>
         <translation>DIÁM. PIEZA ACABADA</translation>
     </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>LONGITUD ANGULAR</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>REF. POSICIÓN RANURA</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Referencia de la posición de la ranura (0 centro Q216/Q217, 1 arco inicial, 2 centro, 3 arco final en la posición de la herramienta)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Longitud angular de la ranura</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Incremento angular entre repeticiones</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Número de repeticiones</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>ciclo {1}: la anchura de la ranura Q219 debe ser menor que el diámetro del círculo primitivo Q375</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>ciclo {1}: la longitud angular Q248 cierra la ranura sobre sí misma</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>RANURA CIRCULAR</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

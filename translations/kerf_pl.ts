@@ -5511,6 +5511,42 @@ cykl</translation>
         <source>FINISHED PART DIA.</source>
         <translation>ŚREDNICA GOTOWEJ CZ.</translation>
     </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>DŁUGOŚĆ KĄTOWA</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>ODN. POŁOŻENIA ROWKA</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Odniesienie położenia rowka (0 środek Q216/Q217, 1 łuk początkowy, 2 środek, 3 łuk końcowy w pozycji narzędzia)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Długość kątowa rowka</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Krok kątowy między powtórzeniami</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Liczba powtórzeń</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>cykl {1}: szerokość rowka Q219 musi być mniejsza niż średnica okręgu podziałowego Q375</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>cykl {1}: długość kątowa Q248 zamyka rowek sam w sobie</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>OKRAGLY ROWEK</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

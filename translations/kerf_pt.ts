@@ -5508,6 +5508,42 @@ ciclo</translation>
         <source>FINISHED PART DIA.</source>
         <translation>DIÂMETRO PEÇA ACABADA</translation>
     </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>COMPRIMENTO ANGULAR</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>REF. POSIÇÃO RANHURA</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Referência da posição da ranhura (0 centro Q216/Q217, 1 arco inicial, 2 meio, 3 arco final na posição da ferramenta)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Comprimento angular da ranhura</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Passo angular entre repetições</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Número de repetições</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>ciclo {1}: a largura da ranhura Q219 tem de ser menor que o diâmetro do círculo primitivo Q375</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>ciclo {1}: o comprimento angular Q248 fecha a ranhura sobre si mesma</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>RANHURA CIRCULAR</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -1,7 +1,8 @@
 // Runs every case under tests/golden/<dialect>/<case>/ through `kerf run` and compares with the
 // expectations written by hand next to the program:
 //   program.*       the NC program (any extension; the dialect follows it or the `args` file)
-//   args            optional options, one per line: "--machine lathe", "--tool-table TOOL.T" ...
+//   args            optional options, one per line: "--machine lathe", "--tool-table TOOL.T",
+//                   "--stock" ...
 //   expected.json   values the report must contain (numbers within 1e-4 unless "tolerance" says
 //                   otherwise; arrays must have the same length; keys not listed are not checked)
 //   expected.trace  the exact canonical trace
@@ -71,6 +72,8 @@ RunOptions optionsFor(const fs::path& dir) {
             options.maxBlocks = std::stoull(value);
         } else if (key == "--block-skip") {
             options.blockSkip = true;
+        } else if (key == "--stock") {
+            options.stock = true;  // the report's "stock" (material removal) can be checked
         } else if (!key.empty()) {
             ADD_FAILURE() << "unknown option in " << (dir / "args") << ": " << key;
         }

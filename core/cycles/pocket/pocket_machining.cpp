@@ -188,7 +188,8 @@ std::optional<CycleError> machinePocket(const MillingSetup& s, const PocketShape
     if (s.plunge == Plunge::Helical) firstPoint = place.point(plungeLocal + Vec2(radius, 0.0));
     // Before a straight move in the plane from one place of the region to another.
     auto travel = [&](const Vec2& to) {
-        if (!shape.convex && (path.uv() - to).norm() > 1e-9) path.rapidW(l.clearance);
+        const bool below = (path.w() - l.clearance) * l.up < 0.0;
+        if (!shape.convex && below && (path.uv() - to).norm() > 1e-9) path.rapidW(l.clearance);
         path.rapidUv(to);
     };
     double previous = l.surface;
