@@ -5544,6 +5544,46 @@ editieren</translation>
         <source>CIRCULAR SLOT</source>
         <translation>KREISNUT</translation>
     </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>DURCHMESSER BEZUGSKR.</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>ECKENANZAHL</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>BEZUGSKREIS</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Bezugskreis (0 Innenkreis, 1 Umkreis)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Durchmesser des Bezugskreises</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Anzahl der Ecken</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Winkel der ersten Ecke</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>Zyklus {1}: ein Polygon braucht mindestens 3 Ecken (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>Zyklus {1}: Eckenradius oder Fase Q220 ist zu groß für die Seiten des Polygons</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>POLYGONZAPFEN</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -5544,6 +5544,46 @@ ciclo</translation>
         <source>CIRCULAR SLOT</source>
         <translation>RANURA CIRCULAR</translation>
     </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>DIÁM. CÍRC. REFERENCIA</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>NÚMERO DE ESQUINAS</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>CÍRCULO REFERENCIA</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Círculo de referencia (0 inscrito, 1 circunscrito)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Diámetro del círculo de referencia</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Número de esquinas</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Ángulo de la primera esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>ciclo {1}: un polígono necesita al menos 3 esquinas (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>ciclo {1}: el radio de esquina o el chaflán Q220 es demasiado grande para los lados del polígono</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>ISLA POLIGONAL</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -5547,6 +5547,46 @@ cykl</translation>
         <source>CIRCULAR SLOT</source>
         <translation>OKRAGLY ROWEK</translation>
     </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>ŚREDNICA OKRĘGU ODN.</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>LICZBA NAROŻY</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>OKRĄG ODNIESIENIA</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Okrąg odniesienia (0 wpisany, 1 opisany)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Średnica okręgu odniesienia</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Liczba naroży</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Kąt pierwszego naroża</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>cykl {1}: wielokąt wymaga co najmniej 3 naroży (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>cykl {1}: promień naroża lub fazka Q220 jest za duża dla boków wielokąta</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>CZOP WIELOKATNY</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -5544,6 +5544,46 @@ ciclo</translation>
         <source>CIRCULAR SLOT</source>
         <translation>RANHURA CIRCULAR</translation>
     </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>DIÂM. CÍRC. REFERÊNCIA</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>NÚMERO DE ESQUINAS</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>CÍRCULO REFERÊNCIA</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Círculo de referência (0 inscrito, 1 circunscrito)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Diâmetro do círculo de referência</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Número de esquinas</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Ângulo da primeira esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>ciclo {1}: um polígono precisa de pelo menos 3 esquinas (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>ciclo {1}: o raio de esquina ou o chanfre Q220 é demasiado grande para os lados do polígono</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>ILHA POLIGONAL</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>

@@ -212,6 +212,38 @@ ClosedContour arcSlot(double pitchRadius, double startRad, double sweepRad, doub
     return out;
 }
 
+std::optional<ClosedContour> regularPolygon(double circumradius, int corners, double cornerRadius) {
+    if (corners < 3) return std::nullopt;
+    const double step = 2.0 * kPi / corners;
+    const double halfSide = circumradius * std::sin(step / 2.0);
+    // Along each side, how far from the corner the rounding or the chamfer starts.
+    const double cut = cornerRadius >= 0.0 ? cornerRadius * std::tan(step / 2.0) : -cornerRadius;
+    if (cut > halfSide + kSame) return std::nullopt;
+    ClosedContour out;
+    Vec2 at(circumradius * std::cos(step / 2.0), 0.0);
+    auto lineTo = [&](const Vec2& p) {
+        if ((p - at).norm() > kSame) out.segments.push_back(PlanarSegment::line(at, p));
+        at = p;
+    };
+    for (int k = 0; k < corners; ++k) {
+        const double angle = step / 2.0 + k * step;
+        const Vec2 corner = circumradius * Vec2(std::cos(angle), std::sin(angle));
+        const Vec2 in = Vec2(-std::sin(angle - step / 2.0), std::cos(angle - step / 2.0));
+        const Vec2 out2 = Vec2(-std::sin(angle + step / 2.0), std::cos(angle + step / 2.0));
+        lineTo(corner - cut * in);
+        if (cut <= kSame) continue;
+        if (cornerRadius < 0.0) {
+            lineTo(corner + cut * out2);
+        } else {
+            const Vec2 centre = at + cornerRadius * Vec2(-in.y(), in.x());
+            out.segments.push_back(PlanarSegment::arc(at, centre, step));
+            at = corner + cut * out2;
+        }
+    }
+    lineTo(Vec2(circumradius * std::cos(step / 2.0), 0.0));
+    return out;
+}
+
 ClosedContour circleContour(double radius) {
     ClosedContour out;
     out.segments.push_back(PlanarSegment::arc({radius, 0.0}, {0.0, 0.0}, 2.0 * kPi));

@@ -60,6 +60,13 @@ ClosedContour roundedRectangle(double length, double width, double cornerRadius)
 // pitch arc's tangent leaves the slot; the inner wall is a clockwise arc joined tangentially.
 ClosedContour arcSlot(double pitchRadius, double startRad, double sweepRad, double width);
 
+// Regular polygon of `corners` corners on the circle of `circumradius` about the origin, one
+// side crossing the +u axis at right angles (corners at 180/n + k 360/n degrees), each corner
+// rounded with `cornerRadius` or, when it is < 0, cut by a chamfer of that leg length along each
+// side. Counter-clockwise from the middle of the side on the +u axis. Empty when the rounding
+// or chamfer needs more than half a side, or for fewer than 3 corners.
+std::optional<ClosedContour> regularPolygon(double circumradius, int corners, double cornerRadius);
+
 // Circle about the origin, counter-clockwise from angle 0.
 ClosedContour circleContour(double radius);
 

@@ -172,5 +172,67 @@ TEST(PocketMaterial, CircularStudFinishedToSize) {
     expectShape(*stock->millStock(), circle({50, 50}, 20), false, 8.0);
 }
 
+// Signed distance to a regular hexagon of inradius `ri` about c whose first corner lies at
+// `cornerDeg`, corners rounded with r: the hexagon of inradius ri - r grown by r.
+double roundedHexagon(Vec2 c, double ri, double cornerDeg, double r, double x, double y) {
+    const double inner = ri - r;
+    const double innerCorner = inner / std::cos(kPi / 6.0);
+    double sideMax = -1e9;
+    for (int k = 0; k < 6; ++k) {
+        const double normal = (cornerDeg + 30.0 + 60.0 * k) * kPi / 180.0;
+        sideMax = std::max(sideMax,
+                           (x - c.x()) * std::cos(normal) + (y - c.y()) * std::sin(normal) - inner);
+    }
+    if (sideMax <= 0.0) return sideMax - r;  // inside the inner hexagon
+    // Outside it: the distance to the nearest point of its sides.
+    double nearest = 1e9;
+    for (int k = 0; k < 6; ++k) {
+        const double a0 = (cornerDeg + 60.0 * k) * kPi / 180.0;
+        const double a1 = a0 + kPi / 3.0;
+        const Vec2 p0 = c + innerCorner * Vec2(std::cos(a0), std::sin(a0));
+        const Vec2 p1 = c + innerCorner * Vec2(std::cos(a1), std::sin(a1));
+        const Vec2 d = p1 - p0;
+        const double t = std::clamp((Vec2(x, y) - p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        nearest = std::min(nearest, (p0 + t * d - Vec2(x, y)).norm());
+    }
+    return nearest - r;
+}
+
+TEST(PocketMaterial, PolygonStudFromARoundBlank) {
+    auto stock = machine("stud_258.H");
+    ASSERT_TRUE(stock->millStock());
+    // Hexagon with inscribed circle D40, first corner at 30 degrees, corners R3, from a D60
+    // cylinder, 8 deep: pi 30^2 less the hexagon (6 ri^2 tan 30) less six corner rests
+    // r^2 (tan 30 - pi / 6).
+    const double hexagon =
+        6.0 * 400.0 * std::tan(kPi / 6.0) - 6.0 * 9.0 * (std::tan(kPi / 6.0) - kPi / 6.0);
+    const double volume = (kPi * 900.0 - hexagon) * 8.0;
+    EXPECT_NEAR(stock->removedVolumeMm3(), volume, 0.01 * volume);
+    const auto shape = [](double x, double y) {
+        return roundedHexagon({0, 0}, 20.0, 30.0, 3.0, x, y);
+    };
+    // Cells of the blank outside the cylinder hold no material and are skipped by the blank.
+    const HeightFieldStock& s = *stock->millStock();
+    int kept = 0;
+    int cut = 0;
+    for (int j = 0; j < s.cellsY(); ++j) {
+        for (int i = 0; i < s.cellsX(); ++i) {
+            const double x = s.minCorner().x() + (i + 0.5) * s.cellMm();
+            const double y = s.minCorner().y() + (j + 0.5) * s.cellMm();
+            if (!s.hasMaterial(i, j) && std::hypot(x, y) > 29.0) continue;
+            const double d = shape(x, y);
+            if (d < -0.15) {
+                ASSERT_NEAR(s.topAt(i, j), 0.0, 1e-6) << "stud cut at X" << x << " Y" << y;
+                ++kept;
+            } else if (d > 0.15 && std::hypot(x, y) < 29.85) {
+                ASSERT_NEAR(s.topAt(i, j), -8.0, 0.01) << "material left at X" << x << " Y" << y;
+                ++cut;
+            }
+        }
+    }
+    EXPECT_GT(kept, 1000);
+    EXPECT_GT(cut, 1000);
+}
+
 }  // namespace
 }  // namespace kerf

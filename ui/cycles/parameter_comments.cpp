@@ -121,6 +121,9 @@ constexpr QComment kComments[] = {
     {515, QT_TRANSLATE_NOOP("kerf", "FONT")},
     {516, QT_TRANSLATE_NOOP("kerf", "TEXT LAYOUT")},
     {517, QT_TRANSLATE_NOOP("kerf", "CIRCLE RADIUS")},
+    {571, QT_TRANSLATE_NOOP("kerf", "REF-CIRCLE DIAMETER")},
+    {572, QT_TRANSLATE_NOOP("kerf", "NUMBER OF CORNERS")},
+    {573, QT_TRANSLATE_NOOP("kerf", "REFERENCE CIRCLE")},
     {574, QT_TRANSLATE_NOOP("kerf", "MAX. TEXT LENGTH")},
 };
 
@@ -140,6 +143,7 @@ constexpr CycleComment kCycleComments[] = {
     {256, 220, QT_TRANSLATE_NOOP("kerf", "RADIUS / CHAMFER")},
     {256, 367, QT_TRANSLATE_NOOP("kerf", "STUD POSITION")},
     {257, 223, QT_TRANSLATE_NOOP("kerf", "FINISHED PART DIA.")},
+    {258, 220, QT_TRANSLATE_NOOP("kerf", "RADIUS / CHAMFER")},
     {262, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},
     {263, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},
     {264, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},

@@ -254,5 +254,43 @@ TEST(PocketCycles, ChamferedStudPassesAreArcsAtTheCorners) {
     EXPECT_EQ(lastPassArcs, 8u);
 }
 
+TEST(PocketCycles, PolygonStudStartsBesideTheBlankOnASideNormal) {
+    // 258: hexagon, inscribed circle D40, first corner at 30 degrees, so a side normal points
+    // along +X; blank D60. Start point: blank radius 30 + R 4 + 2 = 36 beside the centre on that
+    // normal; roughing passes from the blank (margin 30 - 20 = 10, 3 passes of 3.3333) in to
+    // the inradius 20 + R: the last pass crosses +X at 24.
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {573, 0},   {571, 40}, {222, 60}, {572, 6}, {224, 30},  {220, 0},  {368, 0},
+        {207, 500}, {351, 1},  {201, -5}, {202, 5}, {206, 150}, {200, 2},  {203, 0},
+        {204, 20},  {370, 1},  {215, 1},  {369, 0}, {338, 0},   {385, 500}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(258, v, toolR4(), out));
+    ASSERT_GE(out.moves.size(), 3u);
+    EXPECT_NEAR(out.moves[0].target.x(), 36.0, 1e-9);
+    EXPECT_NEAR(out.moves[0].target.y(), 0.0, 1e-9);
+    bool lastPass = false;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Line && std::fabs(m.target.x() - 24.0) < 1e-9 &&
+            std::fabs(m.target.y()) < 1e-9) {
+            lastPass = true;
+        }
+    }
+    EXPECT_TRUE(lastPass);
+    v.set(572, 2);
+    Recorder none;
+    auto error = run(258, v, toolR4(), none);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-parameter");
+    v.set(572, 6);
+    v.set(220, -13);  // a chamfer longer than half a side (23.09 / 2)
+    error = run(258, v, toolR4(), none);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-parameter");
+    EXPECT_TRUE(none.moves.empty());
+}
+
 }  // namespace
 }  // namespace kerf::cycles

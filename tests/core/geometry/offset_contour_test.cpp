@@ -144,6 +144,35 @@ TEST(OffsetContour, CircularSlotKeepsItsConcaveWallTangent) {
     EXPECT_FALSE(offsetClosed(slot, -5.0));  // only the pitch arc is left
 }
 
+TEST(OffsetContour, RegularPolygonsWithRoundedOrChamferedCorners) {
+    // Hexagon on R10: six equilateral triangles, area 6 x (sqrt(3) / 4) x 100; a side crosses +u
+    // at the inradius 10 cos 30.
+    auto hexagon = regularPolygon(10, 6, 0);
+    ASSERT_TRUE(hexagon);
+    expectClosed(*hexagon);
+    EXPECT_EQ(hexagon->segments.size(), 7u);
+    EXPECT_NEAR(hexagon->segments.front().start.x(), 10 * std::cos(kPi / 6), 1e-12);
+    EXPECT_NEAR(hexagon->signedArea(), 6 * std::sqrt(3.0) / 4 * 100, 1e-9);
+    // Corners rounded with R2: each corner loses the area between its two tangents and the arc,
+    // r^2 (tan(phi/2) - phi/2) with the turn phi = 60 degrees.
+    auto rounded = regularPolygon(10, 6, 2);
+    ASSERT_TRUE(rounded);
+    expectClosed(*rounded);
+    const double phi = kPi / 3;
+    EXPECT_NEAR(rounded->signedArea(),
+                hexagon->signedArea() - 6 * 4 * (std::tan(phi / 2) - phi / 2), 1e-9);
+    // Its offset by 1 keeps the arcs' centres: radius 3, and stays tangent-continuous.
+    auto grown = offsetClosed(*rounded, 1.0);
+    ASSERT_TRUE(grown);
+    EXPECT_EQ(grown->segments.size(), rounded->segments.size());
+    // Square (4 corners on R sqrt(2)*5, side 10) with chamfers of 2: 100 - 4 x 2.
+    auto square = regularPolygon(5 * std::sqrt(2.0), 4, -2);
+    ASSERT_TRUE(square);
+    EXPECT_NEAR(square->signedArea(), 100.0 - 8.0, 1e-9);
+    EXPECT_FALSE(regularPolygon(10, 2, 0));
+    EXPECT_FALSE(regularPolygon(10, 6, -6));  // a chamfer longer than half a side (5)
+}
+
 TEST(OffsetContour, DistancesAndPlacement) {
     const ClosedContour c = roundedRectangle(80, 60, 5);
     EXPECT_NEAR(c.distanceTo({50, 0}), 10.0, 1e-12);

@@ -145,7 +145,7 @@ TEST(CycleCatalogue, ListsEveryRegistryCycleOnceInTheTncGroups) {
     EXPECT_EQ(catalogueGroup(*cycles::findCycle(221)), CatalogueGroup::Patterns);
     EXPECT_EQ(catalogueGroup(*cycles::findCycle(10)), CatalogueGroup::CoordinateTransformations);
     EXPECT_EQ(catalogueGroup(*cycles::findCycle(9)), CatalogueGroup::SpecialCycles);
-    for (int pocket : {232, 251, 252, 253, 254, 256, 257}) {
+    for (int pocket : {232, 251, 252, 253, 254, 256, 257, 258}) {
         EXPECT_EQ(catalogueGroup(*cycles::findCycle(pocket)), CatalogueGroup::PocketsStudsSlots)
             << pocket;
     }
