@@ -93,6 +93,16 @@ TEST(PocketCycles, UpCutReversesEveryRing) {
         if (m.kind == Move::Arc) {
             EXPECT_LT(m.sweep, 0.0);
         }
+    // A mirror image reverses the path afterwards; the cycle turns it round first to keep the
+    // milling type, so the local arcs run as up-cut ones.
+    CycleContext mirrored = toolR4();
+    mirrored.mirroredMain = true;
+    Recorder keep;
+    ASSERT_FALSE(run(251, pocket251(), mirrored, keep));
+    for (const Move& m : keep.moves)
+        if (m.kind == Move::Arc) {
+            EXPECT_LT(m.sweep, 0.0);
+        }
 }
 
 TEST(PocketCycles, RotationAndPositionPlaceThePocket) {
