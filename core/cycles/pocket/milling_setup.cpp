@@ -74,10 +74,9 @@ std::optional<CycleError> stepLevels(const MillingSetup& s, double fromDepth, do
     if (span <= 1e-9) return std::nullopt;
     const double count = step > 0.0 ? std::ceil(span / step - 1e-9) : 1.0;
     if (count > static_cast<double>(kMaxLevels)) return tooManyMoves(s.cycle);
-    for (int k = 1; k <= static_cast<int>(count); ++k) {
-        levels.push_back(s.levels.at(std::min(fromDepth + k * step, toDepth)));
-    }
-    if (step <= 0.0) levels.back() = s.levels.at(toDepth);
+    const int n = static_cast<int>(count);
+    for (int k = 1; k <= n; ++k)
+        levels.push_back(s.levels.at(k == n ? toDepth : fromDepth + k * step));
     return std::nullopt;
 }
 

@@ -58,7 +58,7 @@ struct Placement {
 
 // Follows a placed closed contour from its start at the current tool-axis height, one arc per
 // run of arcs with the same centre and radius. With `edgeOffset` != 0 the feed refers to the
-// cutting edge: arcs are run at feed x r / (r + edgeOffset) (+R in a pocket, -R round a stud).
+// cutting edge: arcs are run at feed x r / (r + edgeOffset) (Q439 in a pocket: +R).
 void followContour(CyclePath& path, const ClosedContour& contour, const Feed& feed,
                    double edgeOffset);
 

@@ -44,8 +44,7 @@ std::optional<CycleError> machineStud(const MillingSetup& s, const StudShape& sh
                             (s.sideAllowance + margin + radius + kBesideBlankMm) * outward;
 
     // One depth: down beside the blank, passes inwards, out on a quarter arc, back to the start.
-    auto machineAt = [&](double level, const std::vector<ClosedContour>& rings, const Feed& feed,
-                         double edgeOffset) {
+    auto machineAt = [&](double level, const std::vector<ClosedContour>& rings, const Feed& feed) {
         if ((path.uv() - startPoint).norm() > 1e-9) {
             path.rapidUv(startPoint);
             path.rapidW(l.clearance);
@@ -55,7 +54,7 @@ std::optional<CycleError> machineStud(const MillingSetup& s, const StudShape& sh
         approachArc(path, rings.front(), outward, arcRadius, feed);
         for (size_t k = 0; k < rings.size(); ++k) {
             if (k > 0) path.moveUv(rings[k].segments.front().start, feed);
-            followContour(path, rings[k], feed, edgeOffset);
+            followContour(path, rings[k], feed, 0.0);
         }
         departureArc(path, rings.back(), outward, arcRadius, feed);
         path.moveUv(startPoint, feed);
@@ -67,15 +66,15 @@ std::optional<CycleError> machineStud(const MillingSetup& s, const StudShape& sh
         const double roughDepth = std::max(0.0, s.depth - s.floorAllowance);
         if (auto e = stepLevels(s, 0.0, roughDepth, s.infeed, levels)) return e;
         for (double level : levels)
-            machineAt(level, passes, s.mill, 0.0);
+            machineAt(level, passes, s.mill);
     }
     if (s.finish && s.sideAllowance > 0.0) {
         std::vector<double> levels;
         if (auto e = stepLevels(s, 0.0, s.depth, s.finishInfeed, levels)) return e;
         for (double level : levels)
-            machineAt(level, {finishRing}, s.finishFeed, s.feedReference >= 1 ? -radius : 0.0);
+            machineAt(level, {finishRing}, s.finishFeed);
     }
-    if (s.finish && s.floorAllowance > 0.0) machineAt(l.at(s.depth), passes, s.finishFeed, 0.0);
+    if (s.finish && s.floorAllowance > 0.0) machineAt(l.at(s.depth), passes, s.finishFeed);
     path.rapidW(l.top);
     return std::nullopt;
 }
