@@ -5473,6 +5473,286 @@ editieren</translation>
         <source>this machine has no axis {1}</source>
         <translation>diese Maschine hat keine Achse {1}</translation>
     </message>
+    <message>
+        <source>MACHINING OPERATION</source>
+        <translation>BEARBEITUNGS-UMFANG</translation>
+    </message>
+    <message>
+        <source>CORNER RADIUS</source>
+        <translation>ECKENRADIUS</translation>
+    </message>
+    <message>
+        <source>WORKPIECE BLANK DIA.</source>
+        <translation>ROHTEIL-DURCHMESSER</translation>
+    </message>
+    <message>
+        <source>CIRCLE DIAMETER</source>
+        <translation>KREISDURCHMESSER</translation>
+    </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>WINKELLAENGE</translation>
+    </message>
+    <message>
+        <source>INFEED FOR FINISHING</source>
+        <translation>ZUSTELLUNG SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>PLUNGE</source>
+        <translation>EINTAUCHEN</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR SIDE</source>
+        <translation>AUFMASS SEITE</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 1</source>
+        <translation>ROHTEILMASS 1</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 2</source>
+        <translation>ROHTEILMASS 2</translation>
+    </message>
+    <message>
+        <source>APPROACH POSITION</source>
+        <translation>ANFAHRPOSITION</translation>
+    </message>
+    <message>
+        <source>FEED RATE REFERENCE</source>
+        <translation>BEZUG VORSCHUB</translation>
+    </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>DURCHMESSER BEZUGSKR.</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>ECKENANZAHL</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>BEZUGSKREIS</translation>
+    </message>
+    <message>
+        <source>POCKET POSITION</source>
+        <translation>TASCHENLAGE</translation>
+    </message>
+    <message>
+        <source>SLOT LENGTH</source>
+        <translation>NUTLAENGE</translation>
+    </message>
+    <message>
+        <source>SLOT WIDTH</source>
+        <translation>NUTBREITE</translation>
+    </message>
+    <message>
+        <source>SLOT POSITION</source>
+        <translation>NUTLAGE</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>BEZUG NUTLAGE</translation>
+    </message>
+    <message>
+        <source>RADIUS / CHAMFER</source>
+        <translation>RADIUS / FASE</translation>
+    </message>
+    <message>
+        <source>STUD POSITION</source>
+        <translation>ZAPFENLAGE</translation>
+    </message>
+    <message>
+        <source>FINISHED PART DIA.</source>
+        <translation>FERTIGTEIL-DURCHM.</translation>
+    </message>
+    <message>
+        <source>Corner radius (0: tool radius)</source>
+        <translation>Eckenradius (0: Werkzeugradius)</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR POCKET</source>
+        <translation>RECHTECKTASCHE</translation>
+    </message>
+    <message>
+        <source>Circle diameter</source>
+        <translation>Kreisdurchmesser</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical)</source>
+        <translation>Eintauchstrategie (0 senkrecht, 1 helixförmig)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: vertical plunging (Q366 = 0) needs a tool whose ANGLE is 0 or 90</source>
+        <translation>Zyklus {1}: senkrechtes Eintauchen (Q366 = 0) braucht ein Werkzeug mit ANGLE 0 oder 90</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET</source>
+        <translation>KREISTASCHE</translation>
+    </message>
+    <message>
+        <source>Slot length</source>
+        <translation>Nutlänge</translation>
+    </message>
+    <message>
+        <source>Slot width</source>
+        <translation>Nutbreite</translation>
+    </message>
+    <message>
+        <source>Slot position (0 centre, 1 left end, 2 centre of the left arc, 3 centre of the right arc, 4 right end)</source>
+        <translation>Lage der Nut (0 Mitte, 1 linkes Ende, 2 Mitte linker Kreisbogen, 3 Mitte rechter Kreisbogen, 4 rechtes Ende)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 is larger than its length Q218</source>
+        <translation>Zyklus {1}: die Nutbreite Q219 ist größer als die Nutlänge Q218</translation>
+    </message>
+    <message>
+        <source>SLOT MILLING</source>
+        <translation>NUTENFRÄSEN</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Bezug der Nutlage (0 Mitte Q216/Q217, 1 Anfangsbogen, 2 Mitte, 3 Endbogen an der Werkzeugposition)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Winkellänge der Nut</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Winkelschritt zwischen den Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Anzahl der Wiederholungen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>Zyklus {1}: die Nutbreite Q219 muss kleiner als der Teilkreisdurchmesser Q375 sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>Zyklus {1}: die Winkellänge Q248 schließt die Nut in sich</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>KREISNUT</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 1</source>
+        <translation>Rohteilmaß Seitenlänge 1</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 2</source>
+        <translation>Rohteilmaß Seitenlänge 2</translation>
+    </message>
+    <message>
+        <source>Corner radius (+) or chamfer (-)</source>
+        <translation>Eckenradius (+) oder Fase (-)</translation>
+    </message>
+    <message>
+        <source>Approach position (0 right of the stud, 1-4 corners)</source>
+        <translation>Anfahrposition (0 rechts vom Zapfen, 1-4 Ecken)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
+        <translation>Zyklus {1}: Anfahrposition Q437 = {2} wird noch nicht unterstützt (0: rechts vom Zapfen)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
+        <translation>Zyklus {1}: das Rohteil ist kleiner als das Fertigteil</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR STUD</source>
+        <translation>RECHTECKZAPFEN</translation>
+    </message>
+    <message>
+        <source>Finished part diameter</source>
+        <translation>Fertigteil-Durchmesser</translation>
+    </message>
+    <message>
+        <source>Workpiece blank diameter</source>
+        <translation>Rohteil-Durchmesser</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD</source>
+        <translation>KREISZAPFEN</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Bezugskreis (0 Innenkreis, 1 Umkreis)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Durchmesser des Bezugskreises</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Anzahl der Ecken</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Winkel der ersten Ecke</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>Zyklus {1}: ein Polygon braucht mindestens 3 Ecken (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>Zyklus {1}: Eckenradius oder Fase Q220 ist zu groß für die Seiten des Polygons</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>POLYGONZAPFEN</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool with a radius greater than 0</source>
+        <translation>Zyklus {1} braucht ein Werkzeug mit einem Radius größer als 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical or reciprocating plunging (Q366) needs the plunge angle ANGLE of the tool</source>
+        <translation>Zyklus {1}: helixförmiges oder pendelndes Eintauchen (Q366) braucht den Eintauchwinkel ANGLE des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the programmed size and finishing allowance</source>
+        <translation>Zyklus {1}: das Werkzeug ist zu groß für das programmierte Maß und Schlichtaufmaß</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge: the helix needs a diameter of twice the tool diameter</source>
+        <translation>Zyklus {1}: kein Platz zum helixförmigen Eintauchen: die Helix braucht den doppelten Werkzeugdurchmesser</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for reciprocating plunging: it needs a length of twice the tool diameter</source>
+        <translation>Zyklus {1}: kein Platz zum pendelnden Eintauchen: es braucht die Länge des doppelten Werkzeugdurchmessers</translation>
+    </message>
+    <message>
+        <source>Machining operation (0 roughing and finishing, 1 roughing, 2 finishing)</source>
+        <translation>Bearbeitungsumfang (0 Schruppen und Schlichten, 1 Schruppen, 2 Schlichten)</translation>
+    </message>
+    <message>
+        <source>First side length</source>
+        <translation>1. Seitenlänge</translation>
+    </message>
+    <message>
+        <source>Second side length</source>
+        <translation>2. Seitenlänge</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the side</source>
+        <translation>Schlichtaufmaß Seite</translation>
+    </message>
+    <message>
+        <source>Position (0 centre, 1 lower left, 2 lower right, 3 upper right, 4 upper left corner)</source>
+        <translation>Lage (0 Mitte, 1 Ecke links unten, 2 rechts unten, 3 rechts oben, 4 links oben)</translation>
+    </message>
+    <message>
+        <source>Infeed for finishing (0: one infeed)</source>
+        <translation>Zustellung Schlichten (0: eine Zustellung)</translation>
+    </message>
+    <message>
+        <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
+        <translation>Bezug Vorschub (0 Werkzeugmitte, 1 Schneide beim Schlichten der Seite, 2 auch beim Schlichten des Bodens, 3 immer)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5505,7 +5785,7 @@ editieren</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation>Das Programm hat keinen Satz %1</translation>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

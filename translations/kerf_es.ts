@@ -5473,6 +5473,286 @@ ciclo</translation>
         <source>this machine has no axis {1}</source>
         <translation>esta máquina no tiene eje {1}</translation>
     </message>
+    <message>
+        <source>MACHINING OPERATION</source>
+        <translation>TIPO MECANIZADO</translation>
+    </message>
+    <message>
+        <source>CORNER RADIUS</source>
+        <translation>RADIO ESQUINA</translation>
+    </message>
+    <message>
+        <source>WORKPIECE BLANK DIA.</source>
+        <translation>DIÁM. PIEZA EN BRUTO</translation>
+    </message>
+    <message>
+        <source>CIRCLE DIAMETER</source>
+        <translation>DIÁMETRO CÍRCULO</translation>
+    </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>LONGITUD ANGULAR</translation>
+    </message>
+    <message>
+        <source>INFEED FOR FINISHING</source>
+        <translation>PASADA DE ACABADO</translation>
+    </message>
+    <message>
+        <source>PLUNGE</source>
+        <translation>PROFUNDIZACIÓN</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR SIDE</source>
+        <translation>SOBREMEDIDA LATERAL</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 1</source>
+        <translation>BRUTO LADO 1</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 2</source>
+        <translation>BRUTO LADO 2</translation>
+    </message>
+    <message>
+        <source>APPROACH POSITION</source>
+        <translation>POSICIÓN APROXIMACIÓN</translation>
+    </message>
+    <message>
+        <source>FEED RATE REFERENCE</source>
+        <translation>REFERENCIA AVANCE</translation>
+    </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>DIÁM. CÍRC. REFERENCIA</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>NÚMERO DE ESQUINAS</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>CÍRCULO REFERENCIA</translation>
+    </message>
+    <message>
+        <source>POCKET POSITION</source>
+        <translation>POSICIÓN CAJERA</translation>
+    </message>
+    <message>
+        <source>SLOT LENGTH</source>
+        <translation>LONGITUD RANURA</translation>
+    </message>
+    <message>
+        <source>SLOT WIDTH</source>
+        <translation>ANCHURA RANURA</translation>
+    </message>
+    <message>
+        <source>SLOT POSITION</source>
+        <translation>POSICIÓN RANURA</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>REF. POSICIÓN RANURA</translation>
+    </message>
+    <message>
+        <source>RADIUS / CHAMFER</source>
+        <translation>RADIO / CHAFLÁN</translation>
+    </message>
+    <message>
+        <source>STUD POSITION</source>
+        <translation>POSICIÓN ISLA</translation>
+    </message>
+    <message>
+        <source>FINISHED PART DIA.</source>
+        <translation>DIÁM. PIEZA ACABADA</translation>
+    </message>
+    <message>
+        <source>Corner radius (0: tool radius)</source>
+        <translation>Radio de esquina (0: radio de la herramienta)</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR POCKET</source>
+        <translation>CAJERA RECTANGULAR</translation>
+    </message>
+    <message>
+        <source>Circle diameter</source>
+        <translation>Diámetro del círculo</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical)</source>
+        <translation>Estrategia de profundización (0 vertical, 1 helicoidal)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: vertical plunging (Q366 = 0) needs a tool whose ANGLE is 0 or 90</source>
+        <translation>ciclo {1}: la profundización vertical (Q366 = 0) necesita una herramienta con ANGLE 0 o 90</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET</source>
+        <translation>CAJERA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Slot length</source>
+        <translation>Longitud de la ranura</translation>
+    </message>
+    <message>
+        <source>Slot width</source>
+        <translation>Anchura de la ranura</translation>
+    </message>
+    <message>
+        <source>Slot position (0 centre, 1 left end, 2 centre of the left arc, 3 centre of the right arc, 4 right end)</source>
+        <translation>Posición de la ranura (0 centro, 1 extremo izquierdo, 2 centro del arco izquierdo, 3 centro del arco derecho, 4 extremo derecho)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 is larger than its length Q218</source>
+        <translation>ciclo {1}: la anchura de la ranura Q219 es mayor que su longitud Q218</translation>
+    </message>
+    <message>
+        <source>SLOT MILLING</source>
+        <translation>FRESADO DE RANURAS</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Referencia de la posición de la ranura (0 centro Q216/Q217, 1 arco inicial, 2 centro, 3 arco final en la posición de la herramienta)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Longitud angular de la ranura</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Incremento angular entre repeticiones</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Número de repeticiones</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>ciclo {1}: la anchura de la ranura Q219 debe ser menor que el diámetro del círculo primitivo Q375</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>ciclo {1}: la longitud angular Q248 cierra la ranura sobre sí misma</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>RANURA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 1</source>
+        <translation>Longitud lateral 1 de la pieza en bruto</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 2</source>
+        <translation>Longitud lateral 2 de la pieza en bruto</translation>
+    </message>
+    <message>
+        <source>Corner radius (+) or chamfer (-)</source>
+        <translation>Radio de esquina (+) o chaflán (-)</translation>
+    </message>
+    <message>
+        <source>Approach position (0 right of the stud, 1-4 corners)</source>
+        <translation>Posición de aproximación (0 a la derecha de la isla, 1-4 esquinas)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
+        <translation>ciclo {1}: la posición de aproximación Q437 = {2} aún no está soportada (0: a la derecha de la isla)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
+        <translation>ciclo {1}: la pieza en bruto es más pequeña que la pieza acabada</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR STUD</source>
+        <translation>ISLA RECTANGULAR</translation>
+    </message>
+    <message>
+        <source>Finished part diameter</source>
+        <translation>Diámetro de la pieza acabada</translation>
+    </message>
+    <message>
+        <source>Workpiece blank diameter</source>
+        <translation>Diámetro de la pieza en bruto</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD</source>
+        <translation>ISLA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Círculo de referencia (0 inscrito, 1 circunscrito)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Diámetro del círculo de referencia</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Número de esquinas</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Ángulo de la primera esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>ciclo {1}: un polígono necesita al menos 3 esquinas (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>ciclo {1}: el radio de esquina o el chaflán Q220 es demasiado grande para los lados del polígono</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>ISLA POLIGONAL</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool with a radius greater than 0</source>
+        <translation>el ciclo {1} necesita una herramienta con un radio mayor que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical or reciprocating plunging (Q366) needs the plunge angle ANGLE of the tool</source>
+        <translation>ciclo {1}: la profundización helicoidal u oscilante (Q366) necesita el ángulo de profundización ANGLE de la herramienta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the programmed size and finishing allowance</source>
+        <translation>ciclo {1}: la herramienta es demasiado grande para la medida programada y la sobremedida de acabado</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge: the helix needs a diameter of twice the tool diameter</source>
+        <translation>ciclo {1}: no hay espacio para la profundización helicoidal: la hélice necesita el doble del diámetro de la herramienta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for reciprocating plunging: it needs a length of twice the tool diameter</source>
+        <translation>ciclo {1}: no hay espacio para la profundización oscilante: necesita una longitud del doble del diámetro de la herramienta</translation>
+    </message>
+    <message>
+        <source>Machining operation (0 roughing and finishing, 1 roughing, 2 finishing)</source>
+        <translation>Tipo de mecanizado (0 desbaste y acabado, 1 desbaste, 2 acabado)</translation>
+    </message>
+    <message>
+        <source>First side length</source>
+        <translation>Longitud del primer lado</translation>
+    </message>
+    <message>
+        <source>Second side length</source>
+        <translation>Longitud del segundo lado</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the side</source>
+        <translation>Sobremedida de acabado lateral</translation>
+    </message>
+    <message>
+        <source>Position (0 centre, 1 lower left, 2 lower right, 3 upper right, 4 upper left corner)</source>
+        <translation>Posición (0 centro, 1 esquina inferior izquierda, 2 inferior derecha, 3 superior derecha, 4 superior izquierda)</translation>
+    </message>
+    <message>
+        <source>Infeed for finishing (0: one infeed)</source>
+        <translation>Profundidad de pasada de acabado (0: una pasada)</translation>
+    </message>
+    <message>
+        <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
+        <translation>Referencia del avance (0 centro de la herramienta, 1 filo en el acabado lateral, 2 también en el acabado del fondo, 3 siempre)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5505,7 +5785,7 @@ ciclo</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation>El programa no tiene la frase %1</translation>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -5476,6 +5476,286 @@ cykl</translation>
         <source>this machine has no axis {1}</source>
         <translation>ta maszyna nie ma osi {1}</translation>
     </message>
+    <message>
+        <source>MACHINING OPERATION</source>
+        <translation>ZAKRES OBROBKI</translation>
+    </message>
+    <message>
+        <source>CORNER RADIUS</source>
+        <translation>PROMIEN NAROZA</translation>
+    </message>
+    <message>
+        <source>WORKPIECE BLANK DIA.</source>
+        <translation>ŚREDNICA PÓŁFABRYKATU</translation>
+    </message>
+    <message>
+        <source>CIRCLE DIAMETER</source>
+        <translation>ŚREDNICA OKRĘGU</translation>
+    </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>DŁUGOŚĆ KĄTOWA</translation>
+    </message>
+    <message>
+        <source>INFEED FOR FINISHING</source>
+        <translation>DOSUW OBR. WYKAŃCZ.</translation>
+    </message>
+    <message>
+        <source>PLUNGE</source>
+        <translation>WCIĘCIE</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR SIDE</source>
+        <translation>NADDATEK NA BOK</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 1</source>
+        <translation>PÓŁFABRYKAT BOK 1</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 2</source>
+        <translation>PÓŁFABRYKAT BOK 2</translation>
+    </message>
+    <message>
+        <source>APPROACH POSITION</source>
+        <translation>POZYCJA DOSUWU</translation>
+    </message>
+    <message>
+        <source>FEED RATE REFERENCE</source>
+        <translation>ODNIESIENIE POSUWU</translation>
+    </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>ŚREDNICA OKRĘGU ODN.</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>LICZBA NAROŻY</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>OKRĄG ODNIESIENIA</translation>
+    </message>
+    <message>
+        <source>POCKET POSITION</source>
+        <translation>POŁOŻENIE KIESZENI</translation>
+    </message>
+    <message>
+        <source>SLOT LENGTH</source>
+        <translation>DŁUGOŚĆ ROWKA</translation>
+    </message>
+    <message>
+        <source>SLOT WIDTH</source>
+        <translation>SZEROKOŚĆ ROWKA</translation>
+    </message>
+    <message>
+        <source>SLOT POSITION</source>
+        <translation>POŁOŻENIE ROWKA</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>ODN. POŁOŻENIA ROWKA</translation>
+    </message>
+    <message>
+        <source>RADIUS / CHAMFER</source>
+        <translation>PROMIEŃ / FAZKA</translation>
+    </message>
+    <message>
+        <source>STUD POSITION</source>
+        <translation>POŁOŻENIE CZOPU</translation>
+    </message>
+    <message>
+        <source>FINISHED PART DIA.</source>
+        <translation>ŚREDNICA GOTOWEJ CZ.</translation>
+    </message>
+    <message>
+        <source>Corner radius (0: tool radius)</source>
+        <translation>Promień naroża (0: promień narzędzia)</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR POCKET</source>
+        <translation>KIESZEN PROSTOKATNA</translation>
+    </message>
+    <message>
+        <source>Circle diameter</source>
+        <translation>Średnica okręgu</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical)</source>
+        <translation>Strategia wcięcia (0 pionowo, 1 po linii śrubowej)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: vertical plunging (Q366 = 0) needs a tool whose ANGLE is 0 or 90</source>
+        <translation>cykl {1}: wcięcie pionowe (Q366 = 0) wymaga narzędzia z ANGLE 0 lub 90</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET</source>
+        <translation>KIESZEN OKRAGLA</translation>
+    </message>
+    <message>
+        <source>Slot length</source>
+        <translation>Długość rowka</translation>
+    </message>
+    <message>
+        <source>Slot width</source>
+        <translation>Szerokość rowka</translation>
+    </message>
+    <message>
+        <source>Slot position (0 centre, 1 left end, 2 centre of the left arc, 3 centre of the right arc, 4 right end)</source>
+        <translation>Położenie rowka (0 środek, 1 lewy koniec, 2 środek lewego łuku, 3 środek prawego łuku, 4 prawy koniec)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 is larger than its length Q218</source>
+        <translation>cykl {1}: szerokość rowka Q219 jest większa niż jego długość Q218</translation>
+    </message>
+    <message>
+        <source>SLOT MILLING</source>
+        <translation>FREZOWANIE ROWKOW</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Odniesienie położenia rowka (0 środek Q216/Q217, 1 łuk początkowy, 2 środek, 3 łuk końcowy w pozycji narzędzia)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Długość kątowa rowka</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Krok kątowy między powtórzeniami</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Liczba powtórzeń</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>cykl {1}: szerokość rowka Q219 musi być mniejsza niż średnica okręgu podziałowego Q375</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>cykl {1}: długość kątowa Q248 zamyka rowek sam w sobie</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>OKRAGLY ROWEK</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 1</source>
+        <translation>Długość boku 1 półfabrykatu</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 2</source>
+        <translation>Długość boku 2 półfabrykatu</translation>
+    </message>
+    <message>
+        <source>Corner radius (+) or chamfer (-)</source>
+        <translation>Promień naroża (+) lub fazka (-)</translation>
+    </message>
+    <message>
+        <source>Approach position (0 right of the stud, 1-4 corners)</source>
+        <translation>Pozycja dosuwu (0 na prawo od czopu, 1-4 naroża)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
+        <translation>cykl {1}: pozycja dosuwu Q437 = {2} nie jest jeszcze obsługiwana (0: na prawo od czopu)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
+        <translation>cykl {1}: półfabrykat jest mniejszy niż gotowa część</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR STUD</source>
+        <translation>CZOP PROSTOKATNY</translation>
+    </message>
+    <message>
+        <source>Finished part diameter</source>
+        <translation>Średnica gotowej części</translation>
+    </message>
+    <message>
+        <source>Workpiece blank diameter</source>
+        <translation>Średnica półfabrykatu</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD</source>
+        <translation>CZOP OKRAGLY</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Okrąg odniesienia (0 wpisany, 1 opisany)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Średnica okręgu odniesienia</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Liczba naroży</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Kąt pierwszego naroża</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>cykl {1}: wielokąt wymaga co najmniej 3 naroży (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>cykl {1}: promień naroża lub fazka Q220 jest za duża dla boków wielokąta</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>CZOP WIELOKATNY</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool with a radius greater than 0</source>
+        <translation>cykl {1} wymaga narzędzia o promieniu większym od 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical or reciprocating plunging (Q366) needs the plunge angle ANGLE of the tool</source>
+        <translation>cykl {1}: wcięcie po linii śrubowej lub ruchem wahadłowym (Q366) wymaga kąta wcięcia ANGLE narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the programmed size and finishing allowance</source>
+        <translation>cykl {1}: narzędzie jest za duże dla zaprogramowanego wymiaru i naddatku na obróbkę wykańczającą</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge: the helix needs a diameter of twice the tool diameter</source>
+        <translation>cykl {1}: brak miejsca na wcięcie po linii śrubowej: linia śrubowa wymaga podwójnej średnicy narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for reciprocating plunging: it needs a length of twice the tool diameter</source>
+        <translation>cykl {1}: brak miejsca na wcięcie ruchem wahadłowym: wymaga długości podwójnej średnicy narzędzia</translation>
+    </message>
+    <message>
+        <source>Machining operation (0 roughing and finishing, 1 roughing, 2 finishing)</source>
+        <translation>Zakres obróbki (0 zgrubna i wykańczająca, 1 zgrubna, 2 wykańczająca)</translation>
+    </message>
+    <message>
+        <source>First side length</source>
+        <translation>Długość pierwszego boku</translation>
+    </message>
+    <message>
+        <source>Second side length</source>
+        <translation>Długość drugiego boku</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the side</source>
+        <translation>Naddatek na obróbkę wykańczającą boku</translation>
+    </message>
+    <message>
+        <source>Position (0 centre, 1 lower left, 2 lower right, 3 upper right, 4 upper left corner)</source>
+        <translation>Położenie (0 środek, 1 naroże lewe dolne, 2 prawe dolne, 3 prawe górne, 4 lewe górne)</translation>
+    </message>
+    <message>
+        <source>Infeed for finishing (0: one infeed)</source>
+        <translation>Dosuw przy obróbce wykańczającej (0: jeden dosuw)</translation>
+    </message>
+    <message>
+        <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
+        <translation>Odniesienie posuwu (0 środek narzędzia, 1 ostrze przy wykańczaniu boku, 2 także dna, 3 zawsze)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5508,7 +5788,7 @@ cykl</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation>Program nie ma bloku %1</translation>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

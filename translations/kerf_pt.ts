@@ -5473,6 +5473,286 @@ ciclo</translation>
         <source>this machine has no axis {1}</source>
         <translation>esta máquina não tem eixo {1}</translation>
     </message>
+    <message>
+        <source>MACHINING OPERATION</source>
+        <translation>TIPO DE MAQUINAGEM</translation>
+    </message>
+    <message>
+        <source>CORNER RADIUS</source>
+        <translation>RAIO DE ESQUINA</translation>
+    </message>
+    <message>
+        <source>WORKPIECE BLANK DIA.</source>
+        <translation>DIÂMETRO DO BLOCO</translation>
+    </message>
+    <message>
+        <source>CIRCLE DIAMETER</source>
+        <translation>DIÂMETRO DO CÍRCULO</translation>
+    </message>
+    <message>
+        <source>ANGULAR LENGTH</source>
+        <translation>COMPRIMENTO ANGULAR</translation>
+    </message>
+    <message>
+        <source>INFEED FOR FINISHING</source>
+        <translation>PASSO DE ACABAMENTO</translation>
+    </message>
+    <message>
+        <source>PLUNGE</source>
+        <translation>AFUNDAMENTO</translation>
+    </message>
+    <message>
+        <source>ALLOWANCE FOR SIDE</source>
+        <translation>SOBREMEDIDA LATERAL</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 1</source>
+        <translation>BLOCO LADO 1</translation>
+    </message>
+    <message>
+        <source>WORKPC. BLANK SIDE 2</source>
+        <translation>BLOCO LADO 2</translation>
+    </message>
+    <message>
+        <source>APPROACH POSITION</source>
+        <translation>POSIÇÃO APROXIMAÇÃO</translation>
+    </message>
+    <message>
+        <source>FEED RATE REFERENCE</source>
+        <translation>REFERÊNCIA AVANÇO</translation>
+    </message>
+    <message>
+        <source>REF-CIRCLE DIAMETER</source>
+        <translation>DIÂM. CÍRC. REFERÊNCIA</translation>
+    </message>
+    <message>
+        <source>NUMBER OF CORNERS</source>
+        <translation>NÚMERO DE ESQUINAS</translation>
+    </message>
+    <message>
+        <source>REFERENCE CIRCLE</source>
+        <translation>CÍRCULO REFERÊNCIA</translation>
+    </message>
+    <message>
+        <source>POCKET POSITION</source>
+        <translation>POSIÇÃO CAIXA</translation>
+    </message>
+    <message>
+        <source>SLOT LENGTH</source>
+        <translation>COMPRIMENTO RANHURA</translation>
+    </message>
+    <message>
+        <source>SLOT WIDTH</source>
+        <translation>LARGURA RANHURA</translation>
+    </message>
+    <message>
+        <source>SLOT POSITION</source>
+        <translation>POSIÇÃO RANHURA</translation>
+    </message>
+    <message>
+        <source>REF. SLOT POSITION</source>
+        <translation>REF. POSIÇÃO RANHURA</translation>
+    </message>
+    <message>
+        <source>RADIUS / CHAMFER</source>
+        <translation>RAIO / CHANFRE</translation>
+    </message>
+    <message>
+        <source>STUD POSITION</source>
+        <translation>POSIÇÃO ILHA</translation>
+    </message>
+    <message>
+        <source>FINISHED PART DIA.</source>
+        <translation>DIÂMETRO PEÇA ACABADA</translation>
+    </message>
+    <message>
+        <source>Corner radius (0: tool radius)</source>
+        <translation>Raio de esquina (0: raio da ferramenta)</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR POCKET</source>
+        <translation>CAIXA RETANGULAR</translation>
+    </message>
+    <message>
+        <source>Circle diameter</source>
+        <translation>Diâmetro do círculo</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 helical)</source>
+        <translation>Estratégia de afundamento (0 vertical, 1 helicoidal)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: vertical plunging (Q366 = 0) needs a tool whose ANGLE is 0 or 90</source>
+        <translation>ciclo {1}: o afundamento vertical (Q366 = 0) precisa de uma ferramenta com ANGLE 0 ou 90</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET</source>
+        <translation>CAIXA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Slot length</source>
+        <translation>Comprimento da ranhura</translation>
+    </message>
+    <message>
+        <source>Slot width</source>
+        <translation>Largura da ranhura</translation>
+    </message>
+    <message>
+        <source>Slot position (0 centre, 1 left end, 2 centre of the left arc, 3 centre of the right arc, 4 right end)</source>
+        <translation>Posição da ranhura (0 centro, 1 extremidade esquerda, 2 centro do arco esquerdo, 3 centro do arco direito, 4 extremidade direita)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 is larger than its length Q218</source>
+        <translation>ciclo {1}: a largura da ranhura Q219 é maior que o seu comprimento Q218</translation>
+    </message>
+    <message>
+        <source>SLOT MILLING</source>
+        <translation>FRESAGEM DE RANHURAS</translation>
+    </message>
+    <message>
+        <source>Reference of the slot position (0 centre Q216/Q217, 1 start arc, 2 middle, 3 end arc at the tool position)</source>
+        <translation>Referência da posição da ranhura (0 centro Q216/Q217, 1 arco inicial, 2 meio, 3 arco final na posição da ferramenta)</translation>
+    </message>
+    <message>
+        <source>Angular length of the slot</source>
+        <translation>Comprimento angular da ranhura</translation>
+    </message>
+    <message>
+        <source>Stepping angle between repetitions</source>
+        <translation>Passo angular entre repetições</translation>
+    </message>
+    <message>
+        <source>Number of repetitions</source>
+        <translation>Número de repetições</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width Q219 must be smaller than the pitch circle diameter Q375</source>
+        <translation>ciclo {1}: a largura da ranhura Q219 tem de ser menor que o diâmetro do círculo primitivo Q375</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the angular length Q248 closes the slot on itself</source>
+        <translation>ciclo {1}: o comprimento angular Q248 fecha a ranhura sobre si mesma</translation>
+    </message>
+    <message>
+        <source>CIRCULAR SLOT</source>
+        <translation>RANHURA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 1</source>
+        <translation>Comprimento lateral 1 do bloco</translation>
+    </message>
+    <message>
+        <source>Workpiece blank side length 2</source>
+        <translation>Comprimento lateral 2 do bloco</translation>
+    </message>
+    <message>
+        <source>Corner radius (+) or chamfer (-)</source>
+        <translation>Raio de esquina (+) ou chanfre (-)</translation>
+    </message>
+    <message>
+        <source>Approach position (0 right of the stud, 1-4 corners)</source>
+        <translation>Posição de aproximação (0 à direita da ilha, 1-4 esquinas)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
+        <translation>ciclo {1}: a posição de aproximação Q437 = {2} ainda não é suportada (0: à direita da ilha)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
+        <translation>ciclo {1}: o bloco é menor do que a peça acabada</translation>
+    </message>
+    <message>
+        <source>RECTANGULAR STUD</source>
+        <translation>ILHA RETANGULAR</translation>
+    </message>
+    <message>
+        <source>Finished part diameter</source>
+        <translation>Diâmetro da peça acabada</translation>
+    </message>
+    <message>
+        <source>Workpiece blank diameter</source>
+        <translation>Diâmetro do bloco</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD</source>
+        <translation>ILHA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Reference circle (0 inscribed, 1 circumscribed)</source>
+        <translation>Círculo de referência (0 inscrito, 1 circunscrito)</translation>
+    </message>
+    <message>
+        <source>Reference circle diameter</source>
+        <translation>Diâmetro do círculo de referência</translation>
+    </message>
+    <message>
+        <source>Number of corners</source>
+        <translation>Número de esquinas</translation>
+    </message>
+    <message>
+        <source>Angle of the first corner</source>
+        <translation>Ângulo da primeira esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a polygon needs at least 3 corners (Q572)</source>
+        <translation>ciclo {1}: um polígono precisa de pelo menos 3 esquinas (Q572)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the corner radius or chamfer Q220 is too large for the sides of the polygon</source>
+        <translation>ciclo {1}: o raio de esquina ou o chanfre Q220 é demasiado grande para os lados do polígono</translation>
+    </message>
+    <message>
+        <source>POLYGON STUD</source>
+        <translation>ILHA POLIGONAL</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a tool with a radius greater than 0</source>
+        <translation>o ciclo {1} precisa de uma ferramenta com raio maior que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical or reciprocating plunging (Q366) needs the plunge angle ANGLE of the tool</source>
+        <translation>ciclo {1}: o afundamento helicoidal ou pendular (Q366) precisa do ângulo de afundamento ANGLE da ferramenta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the programmed size and finishing allowance</source>
+        <translation>ciclo {1}: a ferramenta é demasiado grande para a medida programada e a sobremedida de acabamento</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge: the helix needs a diameter of twice the tool diameter</source>
+        <translation>ciclo {1}: não há espaço para o afundamento helicoidal: a hélice precisa do dobro do diâmetro da ferramenta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for reciprocating plunging: it needs a length of twice the tool diameter</source>
+        <translation>ciclo {1}: não há espaço para o afundamento pendular: precisa de um comprimento do dobro do diâmetro da ferramenta</translation>
+    </message>
+    <message>
+        <source>Machining operation (0 roughing and finishing, 1 roughing, 2 finishing)</source>
+        <translation>Tipo de maquinagem (0 desbaste e acabamento, 1 desbaste, 2 acabamento)</translation>
+    </message>
+    <message>
+        <source>First side length</source>
+        <translation>Comprimento do primeiro lado</translation>
+    </message>
+    <message>
+        <source>Second side length</source>
+        <translation>Comprimento do segundo lado</translation>
+    </message>
+    <message>
+        <source>Finishing allowance for the side</source>
+        <translation>Sobremedida de acabamento lateral</translation>
+    </message>
+    <message>
+        <source>Position (0 centre, 1 lower left, 2 lower right, 3 upper right, 4 upper left corner)</source>
+        <translation>Posição (0 centro, 1 esquina inferior esquerda, 2 inferior direita, 3 superior direita, 4 superior esquerda)</translation>
+    </message>
+    <message>
+        <source>Infeed for finishing (0: one infeed)</source>
+        <translation>Passo de acabamento (0: um passo)</translation>
+    </message>
+    <message>
+        <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
+        <translation>Referência do avanço (0 centro da ferramenta, 1 gume no acabamento lateral, 2 também no acabamento do fundo, 3 sempre)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5505,7 +5785,7 @@ ciclo</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation>O programa não tem o bloco %1</translation>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,13 @@
 namespace kerf::cycles::common {
 
 inline constexpr double kLength = 99999.9999;
+
+// A parameter a later software appended to the cycle (spec 1.4 rule 5): a block written by an
+// older control without it runs with the default.
+constexpr ParameterDescriptor addedLater(ParameterDescriptor p) {
+    p.optional = true;
+    return p;
+}
 inline constexpr double kFeed = 99999.999;
 
 inline constexpr ParameterDescriptor kSetUpClearance{

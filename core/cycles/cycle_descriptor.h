@@ -19,7 +19,8 @@ enum class CycleGroup : uint8_t {
     ThreadMilling,
     Pattern,
     Transformation,
-    Special
+    Special,
+    PocketsStudsSlots
 };
 
 struct PatternPlan;

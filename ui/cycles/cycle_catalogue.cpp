@@ -36,6 +36,8 @@ CatalogueGroup catalogueGroup(const cycles::CycleDescriptor& cycle) {
             return CatalogueGroup::CoordinateTransformations;
         case CycleGroup::Special:
             return CatalogueGroup::SpecialCycles;
+        case CycleGroup::PocketsStudsSlots:
+            return CatalogueGroup::PocketsStudsSlots;
     }
     return CatalogueGroup::SpecialCycles;
 }

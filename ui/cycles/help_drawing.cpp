@@ -138,6 +138,22 @@ HelpDrawing faceMilling() {
     return d;
 }
 
+// Cycles 251-257: the outline of the pocket, stud or slot in plan with its sizes.
+HelpDrawing pocketPlan() {
+    HelpDrawing d;
+    d.solid.addRoundedRect(QRectF(25, 30, 55, 40), 8, 8);
+    d.lines.moveTo(10, 90);
+    d.lines.lineTo(10, 10);
+    d.lines.moveTo(10, 90);
+    d.lines.lineTo(90, 90);
+    d.dimensions = {
+        {{"Q218", "Q223", "Q424", "Q222"}, arrow({25, 24}, {80, 24}), {48, 22}},
+        {{"Q219", "Q425"}, arrow({86, 30}, {86, 70}), {87, 50}},
+        {{"Q220"}, arrow({80, 62}, {72, 70}), {82, 72}},
+    };
+    return d;
+}
+
 // Cycle 220: holes on a circle, centre (Q216, Q217), first hole at 30°, step 60°.
 HelpDrawing polarPattern() {
     HelpDrawing d;
@@ -321,6 +337,8 @@ HelpDrawing helpDrawing(const cycles::CycleDescriptor& cycle) {
             return transformation();
         case CycleGroup::Special:
             return specialSymbols(cycle.number);
+        case CycleGroup::PocketsStudsSlots:
+            return pocketPlan();
     }
     return drillingSection(false);
 }

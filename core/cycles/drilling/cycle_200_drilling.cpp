@@ -12,8 +12,9 @@ namespace {
 using namespace common;
 
 constexpr ParameterDescriptor kParameters[] = {
-    kSetUpClearance, kDepth,           kPlungeFeed, kPlungingDepth,  kDwellTop,
-    kSurface,        kSecondClearance, kDwellDepth, kDepthReference,
+    kSetUpClearance, kDepth,   kPlungeFeed,      kPlungingDepth,
+    kDwellTop,       kSurface, kSecondClearance, addedLater(kDwellDepth),
+    kDepthReference,
 };
 
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {

@@ -42,7 +42,7 @@ constexpr ParameterDescriptor kParameters[] = {
      .min = 0.0,
      .max = kLength,
      .defaultValue = 0.0},
-    kClimbOrUpCut,
+    addedLater(kClimbOrUpCut),
 };
 
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {

@@ -32,6 +32,24 @@ size_t segmentEnd(const program::LogicalLine& line, size_t s) {
     return s + 1 < line.segments.size() ? line.segments[s + 1].joinedOffset : line.text.size();
 }
 
+// "CYCL DEF9 .0": older files put blanks between the cycle number and ".sub". Only one digit
+// followed by a blank or the end counts, so a cycle name such as ".5MM" stays a name.
+struct SubNumber {
+    int number = 0;
+    size_t end = 0;
+};
+std::optional<SubNumber> detachedSubNumber(std::string_view text, size_t at) {
+    size_t i = at;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t'))
+        ++i;
+    if (i == at || i + 1 >= text.size() || (text[i] != '.' && text[i] != ',')) return std::nullopt;
+    if (!isDigit(text[i + 1])) return std::nullopt;
+    if (i + 2 < text.size() && text[i + 2] != ' ' && text[i + 2] != '\t' && text[i + 2] != ';') {
+        return std::nullopt;
+    }
+    return SubNumber{text[i + 1] - '0', i + 2};
+}
+
 }  // namespace
 
 bool BlockParser::failAt(size_t offset, const char* code, const char* messageTemplate,
@@ -77,13 +95,18 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
     const size_t separator = numberText.find_last_of(".,");
     const bool oldStyle =
         separator != std::string_view::npos && separator > numberText.find_last_of(' ');
-    if (oldStyle) b.subNumber = static_cast<int>(std::lround((*number - whole) * 10.0));
+    if (oldStyle) {
+        b.subNumber = static_cast<int>(std::lround((*number - whole) * 10.0));
+    } else if (auto sub = detachedSubNumber(text, cur.position())) {
+        b.subNumber = sub->number;
+        cur.setPosition(sub->end);
+    }
     // Only the first segment is the header; further segments are "Qnnn=value ;comment".
     const size_t headerEnd = line.segments.size() > 1 ? line.segments[1].joinedOffset : text.size();
     Cursor hc(text.substr(0, std::max(headerEnd, cur.position())), cur.position());
     const size_t restAt = hc.position();
     std::string header(hc.restUntilComment());
-    if (oldStyle) {
+    if (b.subNumber >= 0) {
         // Sub-blocks of the cycles Kerf runs are words with values; the others (12.1 PGM with
         // a file name, obsolete and SL cycles) stay text.
         static constexpr int kWordCycles[] = {7, 8, 9, 10, 11, 13, 18, 26, 32};

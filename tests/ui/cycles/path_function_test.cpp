@@ -145,6 +145,10 @@ TEST(CycleCatalogue, ListsEveryRegistryCycleOnceInTheTncGroups) {
     EXPECT_EQ(catalogueGroup(*cycles::findCycle(221)), CatalogueGroup::Patterns);
     EXPECT_EQ(catalogueGroup(*cycles::findCycle(10)), CatalogueGroup::CoordinateTransformations);
     EXPECT_EQ(catalogueGroup(*cycles::findCycle(9)), CatalogueGroup::SpecialCycles);
+    for (int pocket : {232, 251, 252, 253, 254, 256, 257, 258}) {
+        EXPECT_EQ(catalogueGroup(*cycles::findCycle(pocket)), CatalogueGroup::PocketsStudsSlots)
+            << pocket;
+    }
 }
 
 TEST(CycleCatalogueDialog, PicksACycleFromItsGroupOrByNumber) {
@@ -266,8 +270,9 @@ TEST(CycleScreens, SavesScreenshotsOfTheCatalogueAndTheDialogs) {
     EXPECT_TRUE(line.grab().toImage().save("path_dialog_l.png"));
     EXPECT_EQ(cataloguePicture.width(), 1000);
     // One help picture of every kind, on a parameter it highlights.
-    const std::pair<int, int> pictures[] = {{7, 0},   {10, 0}, {225, 0}, {232, 4}, {221, 5},
-                                            {262, 2}, {32, 0}, {18, 0},  {9, 0},   {13, 0}};
+    const std::pair<int, int> pictures[] = {{7, 0},   {10, 0},  {225, 0}, {232, 4},
+                                            {221, 5}, {262, 2}, {32, 0},  {18, 0},
+                                            {9, 0},   {13, 0},  {251, 1}};
     for (const auto& [number, field] : pictures) {
         CycleDialog dialog(*cycles::findCycle(number), false);
         dialog.resize(1280, 720);

@@ -152,6 +152,26 @@ TEST(BlockParser, CycleDefinitionsInBothLayouts) {
     EXPECT_EQ(old.rest, "X+10");
 }
 
+// Real files written "CYCL DEF9 .0" with a blank before the sub-number (issue 16 item 6).
+TEST(BlockParser, OldStyleSubNumberAfterABlank) {
+    const auto dwell = first<CycleDefinition>("CYCL DEF9 .0 DWELL TIME");
+    EXPECT_EQ(dwell.number, 9);
+    EXPECT_EQ(dwell.subNumber, 0);
+    EXPECT_EQ(dwell.rest, "DWELL TIME");
+    const auto shift = first<CycleDefinition>("CYCL DEF7 .1 X+10");
+    EXPECT_EQ(shift.number, 7);
+    EXPECT_EQ(shift.subNumber, 1);
+    ASSERT_EQ(shift.words.size(), 1u);
+    EXPECT_EQ(shift.words[0].key, "X");
+    EXPECT_DOUBLE_EQ(*shift.words[0].value, 10.0);
+    const auto comma = first<CycleDefinition>("CYCL DEF 9 ,1 DWELL 1,5");
+    EXPECT_EQ(comma.subNumber, 1);
+    // A new-style name that starts with a number stays a name.
+    const auto named = first<CycleDefinition>("CYCL DEF 200 .5MM DRILLING");
+    EXPECT_EQ(named.subNumber, -1);
+    EXPECT_EQ(named.number, 200);
+}
+
 TEST(BlockParser, ErrorsPointAtTheWord) {
     EXPECT_EQ(problem("L X+10 Yabc").first, 7u);
     EXPECT_EQ(problem("L X+1 X+2").second, "axis {1} is programmed twice");

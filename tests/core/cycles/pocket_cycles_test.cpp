@@ -1,0 +1,306 @@
+// Pocket, slot and stud cycles called directly: parameter effects and errors that the golden
+// cases (tests/golden/klartext/cycle_25x_*) and the material checks
+// (tests/graphics/pocket_material_test.cpp) do not show. Values derived by hand in the comments.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "core/cycles/cycle_registry.h"
+
+namespace kerf::cycles {
+namespace {
+
+struct Move {
+    enum Kind { Rapid, Line, Arc } kind;
+    Vec3 target;
+    Vec2 centre;
+    double sweep;
+    Feed feed;
+};
+
+struct Recorder final : CycleEmitter {
+    std::vector<Move> moves;
+    void rapid(const Vec3& t) override {
+        moves.push_back({Move::Rapid, t, Vec2::Zero(), 0.0, Feed::rapid()});
+    }
+    void line(const Vec3& t, const Feed& f) override {
+        moves.push_back({Move::Line, t, Vec2::Zero(), 0.0, f});
+    }
+    void arc(const Vec3& t, const Vec2& c, double s, const Feed& f) override {
+        moves.push_back({Move::Arc, t, c, s, f});
+    }
+    void threadMove(const Vec3&, double, double) override {}
+    void dwell(double) override {}
+    void spindle(canon::SpindleDirection, double) override {}
+    void orientSpindle(double) override {}
+    void miscFunction(int) override {}
+
+    double lowest() const {
+        double w = 1e9;
+        for (const Move& m : moves)
+            w = std::min(w, m.target.z());
+        return w;
+    }
+    size_t arcsAt(double w) const {
+        size_t n = 0;
+        for (const Move& m : moves)
+            if (m.kind == Move::Arc && std::fabs(m.target.z() - w) < 1e-9) ++n;
+        return n;
+    }
+};
+
+// Cycle 251: 30 x 20, R5, tool position at the centre, depth 6 in one infeed.
+CycleValues pocket251() {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {215, 0},   {218, 30}, {219, 20}, {220, 5}, {368, 0}, {224, 0},   {367, 0},
+        {207, 500}, {351, 1},  {201, -6}, {202, 6}, {369, 0}, {206, 150}, {338, 0},
+        {200, 2},   {203, 0},  {204, 20}, {370, 1}, {366, 0}, {385, 300}, {439, 0}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    return v;
+}
+
+CycleContext toolR4() {
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 50.0};
+    ctx.tool.radius = 4.0;
+    ctx.tool.plungeAngleDeg = 10.0;
+    return ctx;
+}
+
+std::optional<CycleError> run(int cycle, const CycleValues& v, const CycleContext& ctx,
+                              Recorder& out) {
+    CyclePath path(out, ctx.start);
+    return findCycle(cycle)->expand(v, ctx, path);
+}
+
+TEST(PocketCycles, UpCutReversesEveryRing) {
+    Recorder climb;
+    ASSERT_FALSE(run(251, pocket251(), toolR4(), climb));
+    CycleValues v = pocket251();
+    v.set(351, -1);
+    Recorder upCut;
+    ASSERT_FALSE(run(251, v, toolR4(), upCut));
+    ASSERT_EQ(climb.arcsAt(-6), 4u);
+    ASSERT_EQ(upCut.arcsAt(-6), 4u);
+    for (const Move& m : climb.moves)
+        if (m.kind == Move::Arc) {
+            EXPECT_GT(m.sweep, 0.0);
+        }
+    for (const Move& m : upCut.moves)
+        if (m.kind == Move::Arc) {
+            EXPECT_LT(m.sweep, 0.0);
+        }
+    // A mirror image reverses the path afterwards; the cycle turns it round first to keep the
+    // milling type, so the local arcs run as up-cut ones.
+    CycleContext mirrored = toolR4();
+    mirrored.mirroredMain = true;
+    Recorder keep;
+    ASSERT_FALSE(run(251, pocket251(), mirrored, keep));
+    for (const Move& m : keep.moves)
+        if (m.kind == Move::Arc) {
+            EXPECT_LT(m.sweep, 0.0);
+        }
+}
+
+TEST(PocketCycles, RotationAndPositionPlaceThePocket) {
+    // Q367 = 3: the tool is at the upper-right corner; Q224 = 90 turns the pocket about it, so
+    // the centre (-15, -10) before the rotation lies at (10, -15).
+    CycleValues v = pocket251();
+    v.set(367, 3);
+    v.set(224, 90);
+    Recorder out;
+    ASSERT_FALSE(run(251, v, toolR4(), out));
+    // The vertical plunge at the centre is the first feed move.
+    const auto plunge = std::find_if(out.moves.begin(), out.moves.end(),
+                                     [](const Move& m) { return m.kind == Move::Line; });
+    ASSERT_NE(plunge, out.moves.end());
+    EXPECT_NEAR(plunge->target.x(), 10.0, 1e-9);
+    EXPECT_NEAR(plunge->target.y(), -15.0, 1e-9);
+    EXPECT_NEAR(plunge->target.z(), -6.0, 1e-9);
+    // It ends back at the start position.
+    EXPECT_NEAR(out.moves.back().target.x(), 0.0, 1e-9);
+    EXPECT_NEAR(out.moves.back().target.y(), 0.0, 1e-9);
+    EXPECT_NEAR(out.moves.back().target.z(), 20.0, 1e-9);
+    // Every arc centre lies on the turned corner centres: x in {10 +- 5}, y in {-15 +- 10}.
+    for (const Move& m : out.moves) {
+        if (m.kind != Move::Arc) continue;
+        EXPECT_NEAR(std::fabs(m.centre.x() - 10.0), 5.0, 1e-9);
+        EXPECT_NEAR(std::fabs(m.centre.y() + 15.0), 10.0, 1e-9);
+    }
+}
+
+TEST(PocketCycles, InfeedsAndTheCuttingLengthLimit) {
+    CycleValues v = pocket251();
+    v.set(201, -10);
+    v.set(202, 4);
+    v.set(369, 0.5);
+    Recorder out;
+    CycleContext ctx = toolR4();
+    ASSERT_FALSE(run(251, v, ctx, out));
+    // Roughing to 10 - 0.5 = 9.5 at 4: Z-4, Z-8, Z-9.5; the floor finished at Z-10.
+    EXPECT_GT(out.arcsAt(-4), 0u);
+    EXPECT_GT(out.arcsAt(-8), 0u);
+    EXPECT_GT(out.arcsAt(-9.5), 0u);
+    EXPECT_GT(out.arcsAt(-10), 0u);
+    EXPECT_NEAR(out.lowest(), -10.0, 1e-9);
+    // LCUTS 3 < Q202 limits the infeed: Z-3, -6, -9, -9.5.
+    ctx.tool.cuttingLength = 3.0;
+    Recorder limited;
+    ASSERT_FALSE(run(251, v, ctx, limited));
+    EXPECT_EQ(limited.arcsAt(-4), 0u);
+    for (double w : {-3.0, -6.0, -9.0, -9.5})
+        EXPECT_GT(limited.arcsAt(w), 0u) << w;
+}
+
+TEST(PocketCycles, MachiningOperationSelectsRoughingOrFinishing) {
+    CycleValues v = pocket251();
+    v.set(368, 0.5);
+    v.set(369, 0.2);
+    v.set(215, 1);
+    Recorder rough;
+    ASSERT_FALSE(run(251, v, toolR4(), rough));
+    EXPECT_NEAR(rough.lowest(), -5.8, 1e-9);  // the floor allowance stays
+    for (const Move& m : rough.moves)
+        EXPECT_FALSE(m.kind != Move::Rapid && m.feed.value == 300.0);
+    v.set(215, 2);
+    Recorder finish;
+    ASSERT_FALSE(run(251, v, toolR4(), finish));
+    EXPECT_NEAR(finish.lowest(), -6.0, 1e-9);
+    // Only finishing feeds cut (and the plunges at Q206).
+    for (const Move& m : finish.moves) {
+        if (m.kind == Move::Rapid) continue;
+        EXPECT_TRUE(m.feed.value == 300.0 || m.feed.value == 150.0) << m.feed.value;
+    }
+}
+
+TEST(PocketCycles, ReciprocatingPlungeDescendsAlongTheCore) {
+    // 60 x 20 pocket, tool R4 ANGLE 10: the core runs from X-20 to X20 (60 - 8 - 20 = 32 long
+    // region of 52 x 12, core (52 - 12) / 2 = 20 either side). Strokes of max(4 D, Q202 /
+    // tan 10) = max(16, 34.03) capped at the room 40 + 6 = 46: 34.03 long, dropping 6 mm each.
+    CycleValues v = pocket251();
+    v.set(218, 60);
+    v.set(366, 2);
+    Recorder out;
+    ASSERT_FALSE(run(251, v, toolR4(), out));
+    const double stroke = 6.0 / std::tan(10.0 * std::numbers::pi / 180.0);
+    std::vector<Vec3> ramp;
+    for (const Move& m : out.moves)
+        if (m.kind == Move::Line && m.feed.value == 150.0) ramp.push_back(m.target);
+    ASSERT_GE(ramp.size(), 2u);
+    EXPECT_NEAR(ramp[0].x(), -20.0 + stroke, 1e-9);
+    EXPECT_NEAR(ramp[0].z(), 2.0 - 6.0, 1e-9);
+    EXPECT_NEAR(ramp[1].x(), -20.0, 1e-9);
+    EXPECT_NEAR(ramp[1].z(), -6.0, 1e-9);
+}
+
+TEST(PocketCycles, ErrorsStopBeforeAnyMove) {
+    struct Case {
+        int cycle;
+        uint16_t q;
+        double value;
+        double toolRadius;
+        double angle;
+        const char* code;
+    };
+    const Case cases[] = {
+        {251, 219, 7.0, 4.0, 10.0, "cycle-tool"},     // 7 < the tool diameter 8
+        {251, 366, 1.0, 4.0, 0.0, "cycle-tool"},      // helix without ANGLE
+        {251, 219, 12.0, 4.0, 10.0, "cycle-plunge"},  // helix of radius 4 needs 8 + 8 + 8
+        {251, 0, 0.0, 0.0, 10.0, "cycle-tool"},       // tool radius 0
+        {251, 201, 5.0, 4.0, 10.0, "cycle-depth"},    // positive depth (displayDepthErr)
+    };
+    for (const Case& c : cases) {
+        CycleValues v = pocket251();
+        if (c.q != 0) v.set(c.q, c.value);
+        if (c.q == 219 && c.value == 12.0) v.set(366, 1);
+        CycleContext ctx = toolR4();
+        ctx.tool.radius = c.toolRadius;
+        ctx.tool.plungeAngleDeg = c.angle;
+        Recorder out;
+        auto error = run(c.cycle, v, ctx, out);
+        ASSERT_TRUE(error) << c.q << "=" << c.value;
+        EXPECT_EQ(error->code, c.code) << c.q << "=" << c.value;
+        EXPECT_TRUE(out.moves.empty()) << c.q << "=" << c.value;
+    }
+}
+
+TEST(PocketCycles, StudsRefuseABlankSmallerThanThePart) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {223, 40},  {222, 30}, {368, 0}, {207, 500}, {351, 1}, {201, -5}, {202, 5},
+        {206, 150}, {200, 2},  {203, 0}, {204, 20},  {370, 1}, {376, 0}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    auto error = run(257, v, toolR4(), out);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-parameter");
+    EXPECT_TRUE(out.moves.empty());
+}
+
+TEST(PocketCycles, ChamferedStudPassesAreArcsAtTheCorners) {
+    // 256: 40 x 30 with 5 mm chamfers from a 50 x 40 blank, roughing only, one level: every
+    // pass keeps its distance from the octagon, so each corner of the octagon gets an arc of
+    // 45 deg about it; the last pass (R4 away) has arcs of radius 4.
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {218, 40}, {424, 50},  {219, 30}, {425, 40}, {220, -5}, {368, 0},   {224, 0},
+        {367, 0},  {207, 500}, {351, 1},  {201, -5}, {202, 5},  {206, 150}, {200, 2},
+        {203, 0},  {204, 20},  {370, 1},  {437, 0},  {215, 1}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(256, v, toolR4(), out));
+    size_t lastPassArcs = 0;
+    for (const Move& m : out.moves) {
+        if (m.kind != Move::Arc || std::fabs(m.sweep) > std::numbers::pi / 4.0 + 1e-9) continue;
+        EXPECT_NEAR(std::fabs(m.sweep), std::numbers::pi / 4.0, 1e-9);
+        EXPECT_LT(m.sweep, 0.0);  // climb round a stud: clockwise
+        if (std::fabs((m.target.head<2>() - m.centre).norm() - 4.0) < 1e-9) ++lastPassArcs;
+    }
+    EXPECT_EQ(lastPassArcs, 8u);
+}
+
+TEST(PocketCycles, PolygonStudStartsBesideTheBlankOnASideNormal) {
+    // 258: hexagon, inscribed circle D40, first corner at 30 degrees, so a side normal points
+    // along +X; blank D60. Start point: blank radius 30 + R 4 + 2 = 36 beside the centre on that
+    // normal; roughing passes from the blank (margin 30 - 20 = 10, 3 passes of 3.3333) in to
+    // the inradius 20 + R: the last pass crosses +X at 24.
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {573, 0},   {571, 40}, {222, 60}, {572, 6}, {224, 30},  {220, 0},  {368, 0},
+        {207, 500}, {351, 1},  {201, -5}, {202, 5}, {206, 150}, {200, 2},  {203, 0},
+        {204, 20},  {370, 1},  {215, 1},  {369, 0}, {338, 0},   {385, 500}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(258, v, toolR4(), out));
+    ASSERT_GE(out.moves.size(), 3u);
+    EXPECT_NEAR(out.moves[0].target.x(), 36.0, 1e-9);
+    EXPECT_NEAR(out.moves[0].target.y(), 0.0, 1e-9);
+    bool lastPass = false;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Line && std::fabs(m.target.x() - 24.0) < 1e-9 &&
+            std::fabs(m.target.y()) < 1e-9) {
+            lastPass = true;
+        }
+    }
+    EXPECT_TRUE(lastPass);
+    v.set(572, 2);
+    Recorder none;
+    auto error = run(258, v, toolR4(), none);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-parameter");
+    v.set(572, 6);
+    v.set(220, -13);  // a chamfer longer than half a side (23.09 / 2)
+    error = run(258, v, toolR4(), none);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-parameter");
+    EXPECT_TRUE(none.moves.empty());
+}
+
+}  // namespace
+}  // namespace kerf::cycles
