@@ -5785,7 +5785,7 @@ editieren</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Programm hat keinen Satz %1</translation>
     </message>
 </context>
 <context>

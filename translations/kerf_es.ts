@@ -5785,7 +5785,7 @@ ciclo</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation type="unfinished"></translation>
+        <translation>El programa no tiene la frase %1</translation>
     </message>
 </context>
 <context>

@@ -5788,7 +5788,7 @@ cykl</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Program nie ma bloku %1</translation>
     </message>
 </context>
 <context>

@@ -5785,7 +5785,7 @@ ciclo</translation>
     </message>
     <message>
         <source>The program has no block %1</source>
-        <translation type="unfinished"></translation>
+        <translation>O programa não tem o bloco %1</translation>
     </message>
 </context>
 <context>
