@@ -11,6 +11,7 @@
 #ifdef KERF_WITH_UI
 #include "motion/runtime/machine_realtime_options.h"
 #include "motion/runtime/realtime_motion_port.h"
+#include "motion/sim/simulated_clock.h"
 #include "ui/shell/hmi_main.h"
 #endif
 
@@ -73,6 +74,7 @@ int main(int argc, char** argv) {
             std::make_unique<kerf::motion::RealtimeMotionPort>(
                 config, kerf::motion::machineRealtimeOptions(config)));
     };
+    hmi.machiningClock = kerf::motion::makeSimulatedClock;
     app.add_option("--machine", hmi.machine, "machine for the HMI: mill, lathe or a TOML file");
     app.add_option("--screenshot", hmi.screenshot,
                    "save a picture of the HMI to this PNG and exit");

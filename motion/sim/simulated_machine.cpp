@@ -263,4 +263,8 @@ double SimulatedMachine::timeS() const {
     return m_impl->servo.status().timeS;
 }
 
+uint32_t SimulatedMachine::acceptedMoves() const {
+    return m_impl->planner.acceptedMoves();
+}
+
 }  // namespace kerf::motion

@@ -76,6 +76,8 @@ public:
     const MachineModel& model() const;
     SimDriveSet& drives();
     double timeS() const;
+    // Programmed moves the planner accepted so far (PathElement::moveIndex counts them).
+    uint32_t acceptedMoves() const;
 
 private:
     struct Impl;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/machine/machine_config.h"
+#include "core/task/machining_clock.h"
 #include "core/task/motion_port.h"
 
 namespace kerf::ui {
@@ -24,6 +25,8 @@ struct HmiOptions {
     // Connects the machine (app/ decides: simulated or real drives); not called on a
     // programming station. Empty: no program run or manual operation.
     std::function<std::unique_ptr<task::MotionPort>(const machine::MachineConfig&)> connectMachine;
+    // Times the test run (app/ wires motion's simulated clock); also on a programming station.
+    task::MachiningClockFactory machiningClock;
 };
 
 // Starts the operator panel and runs the Qt event loop; returns the process exit code.

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/machine/machine_config.h"
+#include "core/task/machining_clock.h"
 #include "ui/session/machine_session.h"
 #include "ui/shell/softkey_bar.h"
 
@@ -36,6 +37,7 @@ struct HmiContext {
     bool programmingStation = false;       // no machine: Programming and Test run only
     std::string machineSource;  // --machine: a built-in name or the TOML file (settings write it)
     MotionFactory motion;       // the machine connection; none: no program run, no manual operation
+    task::MachiningClockFactory machiningClock;  // the test run's time; none: no time
 };
 
 // The operator panel: a header naming the machine mode and the programming mode, the message

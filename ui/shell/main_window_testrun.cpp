@@ -47,7 +47,8 @@ bool MainWindow::testRunOnScreen() const {
 }
 
 void MainWindow::createGraphics(QWidget* parent) {
-    m_testRun = new TestRunController(m_context.machine, m_context.ncRoot, this);
+    m_testRun =
+        new TestRunController(m_context.machine, m_context.ncRoot, m_context.machiningClock, this);
     m_graphics = new GraphicsPanel(*m_testRun, m_context.machine, parent);
     connect(m_testRun, &TestRunController::diagnostic, m_messages,
             [this](Severity severity, const QString& text, int line) {

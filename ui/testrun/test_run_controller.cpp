@@ -38,8 +38,11 @@ QString speedText(TestRunSpeed speed) {
 }
 
 TestRunController::TestRunController(machine::MachineConfig machine, std::filesystem::path ncRoot,
-                                     QObject* parent)
-    : QObject(parent), m_machine(std::move(machine)), m_ncRoot(std::move(ncRoot)) {
+                                     task::MachiningClockFactory clock, QObject* parent)
+    : QObject(parent),
+      m_machine(std::move(machine)),
+      m_ncRoot(std::move(ncRoot)),
+      m_machiningClock(std::move(clock)) {
     registerDiagnosticMetaTypes();
     m_timer = new QTimer(this);
     m_timer->setInterval(50);  // 20 frames a second: enough for software OpenGL
@@ -69,6 +72,7 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     input.dialect = dialect;
     input.machine = m_machine;
     input.ncRoot = m_ncRoot;
+    input.clock = m_machiningClock;
     const uint64_t generation = ++m_generation;
     setState(State::Interpreting);
     m_worker = std::thread([this, input = std::move(input), generation] {

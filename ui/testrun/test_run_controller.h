@@ -34,8 +34,9 @@ class TestRunController : public QObject {
 public:
     enum class State { Empty, Interpreting, Ready, Playing, Stopped, Finished, Failed };
 
+    // `clock` times the program as the machine runs it (see TestRunInput).
     TestRunController(machine::MachineConfig machine, std::filesystem::path ncRoot,
-                      QObject* parent = nullptr);
+                      task::MachiningClockFactory clock, QObject* parent = nullptr);
     ~TestRunController() override;
 
     // Interprets a program (replacing the one prepared); programReady() or failed() follows.
@@ -93,6 +94,7 @@ private:
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;
+    task::MachiningClockFactory m_machiningClock;
     std::shared_ptr<const TestRunProgram> m_program;
     std::unique_ptr<graphics::ProgressiveStock> m_stock;
     QString m_preparedText;

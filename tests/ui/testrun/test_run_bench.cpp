@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/machine/machine_loader.h"
+#include "motion/sim/simulated_clock.h"
 #include "ui/testrun/test_run_program.h"
 
 int main(int argc, char** argv) {
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
     kerf::ui::TestRunInput input;
     input.machine = *kerf::machine::loadMachine("mill");
     input.path = "ZIGZAG.H";
+    input.clock = kerf::motion::makeSimulatedClock;  // as in the HMI
     std::string& text = input.text;
     text =
         "0 BEGIN PGM ZIGZAG MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-10\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n"
