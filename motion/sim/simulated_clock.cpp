@@ -27,6 +27,7 @@ SimulatedClock::~SimulatedClock() = default;
 void SimulatedClock::setStart(const Pose& start) {
     SimulationOptions options;
     options.startPosition = start.values;
+    options.measure = false;
     options.onSample = [this](const Sample& sample, const MotionStatus&) {
         observe(sample.timeS, sample.moveIndex);
     };

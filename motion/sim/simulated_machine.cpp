@@ -78,7 +78,7 @@ struct SimulatedMachine::Impl {
         sample.pathVelocity = status.pathVelocity;
         sample.onFeedMove = servo.onFeedMove();
         sample.moveIndex = servo.currentMove();
-        recorder.record(sample);
+        if (options.measure) recorder.record(sample);
         if (options.onSample) options.onSample(sample, status);
         handleEvents();
     }
