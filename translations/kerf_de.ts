@@ -319,20 +319,6 @@ ersetzen</translation>
         <translation>Wiederholen</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Gehe zu
-Zeile</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Gehe zu Zeile</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Zeile</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Sätze neu
@@ -402,6 +388,50 @@ parameter</translation>
         <translation>Zoom
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Neues
+Programm</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Gehe zu
+Satz</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Gehe zu Satz</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>Das Programm</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Ein Programm läuft. Anhalten und beenden?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>Die Spindel dreht. Anhalten und beenden?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Start bei Satz</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -414,16 +444,8 @@ parameter</translation>
         <translation>Meldung</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Zeile</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Keine Meldungen</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>Zeile %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -435,6 +457,14 @@ parameter</translation>
             <numerusform> (%n weitere)</numerusform>
             <numerusform> (%n weitere)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Satz</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -464,6 +494,37 @@ Maschine: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>Kerf ist freie Software: Sie dürfen sie unter der GNU General Public License, Version 3 oder später, weitergeben und verändern. Sie wird ohne jede Gewährleistung geliefert.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Neues Programm</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Programmname</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Rohteil MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Rohteil MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Dem Programm einen Namen ohne Leerzeichen und Verzeichnisse geben</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>Der MIN-Punkt des Rohteils muss auf jeder Achse unter seinem MAX-Punkt liegen</translation>
     </message>
 </context>
 <context>
@@ -525,10 +586,6 @@ Maschine: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Programm: %1   Maschine: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Zeile %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -681,10 +738,6 @@ Maschine: %3</translation>
     <message>
         <source>M functions</source>
         <translation>M-Funktionen</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Zeile</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -861,6 +914,10 @@ Maschine: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Satz</translation>
     </message>
 </context>
 <context>
@@ -5304,6 +5361,152 @@ editieren</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Reihenfolge der Achse bei Alle referenzieren: kleinere Nummern zuerst</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; hat sich beim Öffnen geändert: ein Link ist aufgetaucht</translation>
+    </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} muss beim Gewindebohren 0, 1 oder 2 sein</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>Gewindebohren ohne Ausgleichsfutter braucht einen Vorschub und eine Spindeldrehzahl</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>die Zustellungen werden vor der Tiefe I kleiner als 0,001 mm: L programmieren</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>der Einstich hat keine Tiefe</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>der Einstich ist schmaler als die Schneidenbreite NOSEW des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C ist nicht programmiert und das Werkzeug hat keine Schneidenbreite NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>die Werkzeugposition ist für den Zyklus nicht richtig ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>der Zyklus bräuchte mehr als {1} Bewegungen: {2} ist zu klein</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>der Abschnitt hat keine Länge in Richtung der Schnitte</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>das Gewinde hat keine Länge entlang seiner Achse</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} lässt zwischen Anfang und Ende kein Gewinde zum Schneiden übrig</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} ist kein Parameter von {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} von {2} braucht einen Wert</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} von {2} darf nicht 0 sein</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} braucht seinen Parameter {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (Steigungsänderung) kann nicht mit K (Nachschneiden) programmiert werden</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} und {2}: ein Festzyklus pro Satz</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>Anfang und Ende eines Bogens liegen nicht auf einem Kreis um seinen Mittelpunkt</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>ein Bogen des Profils darf höchstens einen Viertelkreis umfassen</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>das Profil läuft unter das Material zurück (Einstich oder Hinterschnitt): noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>die Satznummer N{1} des Profils ist nicht im Programm</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>das Profil endet (E) vor seinem Anfang (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>ein Profil enthält keine Sätze in Hochsprache</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} in einem Profil wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} ist in einem Profil nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>das Profil hat mehr als 10000 Elemente</translation>
+    </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>diese Maschine hat keine Achse {1}</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Satz %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Satznummer</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Satznummer N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>Das Programm hat keinen Satz %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5361,14 +5564,6 @@ Start</translation>
         <source>Start at
 block</source>
         <translation>Satzvorlauf</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Start bei Satz</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Zeile des ersten Satzes</translation>
     </message>
     <message>
         <source>Single block

@@ -319,20 +319,6 @@ sustituir</translation>
         <translation>Rehacer</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Ir a
-línea</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Ir a línea</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Línea</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Renumerar
@@ -402,6 +388,50 @@ de máquina</translation>
         <translation>Zoom
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Nuevo
+programa</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Ir a
+frase</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Ir a frase</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>El programa</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 tiene cambios sin guardar. ¿Guardarlos?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Hay un programa en marcha. ¿Pararlo y salir?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>El cabezal gira. ¿Pararlo y salir?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Salir</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Arranque en bloque</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -414,16 +444,8 @@ de máquina</translation>
         <translation>Mensaje</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Línea</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Sin mensajes</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>línea %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -435,6 +457,14 @@ de máquina</translation>
             <numerusform> (%n más)</numerusform>
             <numerusform> (%n más)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloque</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -464,6 +494,37 @@ Máquina: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>Kerf es software libre: puede redistribuirlo y modificarlo bajo la Licencia Pública General de GNU, versión 3 o posterior. Se entrega sin ninguna garantía.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Nuevo programa</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Nombre del programa</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Pieza en bruto MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Pieza en bruto MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Dé al programa un nombre sin espacios ni carpetas</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>El punto MIN de la pieza en bruto debe estar por debajo de su punto MAX en cada eje</translation>
     </message>
 </context>
 <context>
@@ -525,10 +586,6 @@ Máquina: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Programa: %1   Máquina: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Línea %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -681,10 +738,6 @@ Máquina: %3</translation>
     <message>
         <source>M functions</source>
         <translation>Funciones M</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Línea</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -861,6 +914,10 @@ Máquina: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloque</translation>
     </message>
 </context>
 <context>
@@ -5304,6 +5361,152 @@ ciclo</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Orden del eje en Referenciar todos: los números menores se referencian primero</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; cambió mientras se abría: apareció un enlace</translation>
+    </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} debe ser 0, 1 o 2 para roscar con macho</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>el roscado rígido necesita un avance y una velocidad de cabezal</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>los picados bajan de 0,001 mm antes de la profundidad I: programe L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>la ranura no tiene profundidad</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>la ranura es más estrecha que el ancho de corte NOSEW de la herramienta</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C no está programado y la herramienta no tiene ancho de corte NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>la posición de la herramienta no es correcta para el ciclo ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>el ciclo necesitaría más de {1} movimientos: {2} es demasiado pequeño</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>el tramo no tiene longitud en la dirección de las pasadas</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>la rosca no tiene longitud a lo largo de su eje</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} no deja rosca que cortar entre el inicio y el final</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} no es un parámetro de {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} de {2} necesita un valor</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} de {2} no puede ser 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} necesita su parámetro {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (variación de paso) no se puede programar con K (repaso)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} y {2}: un ciclo fijo por bloque</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>el inicio y el final de un arco no están en un círculo alrededor de su centro</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>un arco del perfil debe quedar dentro de un cuarto de círculo</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>el perfil vuelve por debajo del material (un canal o una entalla): todavía no se admite</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>la etiqueta N{1} del perfil no está en el programa</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>el perfil termina (E) antes de empezar (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>un perfil no contiene bloques de alto nivel</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} en un perfil todavía no se admite</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} no está permitido en un perfil</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>el perfil tiene más de 10000 elementos</translation>
+    </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>esta máquina no tiene eje {1}</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Línea %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Frase %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Número de frase</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Número de frase N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>El programa no tiene la frase %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5362,14 +5565,6 @@ NC</translation>
 block</source>
         <translation>Arranque
 en bloque</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Arranque en bloque</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Línea del primer bloque</translation>
     </message>
     <message>
         <source>Single block

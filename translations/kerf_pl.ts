@@ -321,20 +321,6 @@ zamień</translation>
         <translation>Ponów</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Idź do
-wiersza</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Idź do wiersza</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Wiersz</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Numeruj
@@ -404,6 +390,50 @@ maszynowe</translation>
         <translation>Pomniejsz
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Nowy
+program</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Idź do
+bloku</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Idź do bloku</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Niezapisane zmiany</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 ma niezapisane zmiany. Zapisać je?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Program jest wykonywany. Zatrzymać go i zakończyć?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>Wrzeciono się obraca. Zatrzymać je i zakończyć?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Zakończ</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Start od bloku</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -416,16 +446,8 @@ maszynowe</translation>
         <translation>Komunikat</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Wiersz</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Brak komunikatów</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>wiersz %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -438,6 +460,14 @@ maszynowe</translation>
             <numerusform> (jeszcze %n)</numerusform>
             <numerusform> (jeszcze %n)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Blok</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -467,6 +497,37 @@ Maszyna: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>Kerf jest wolnym oprogramowaniem: można je rozpowszechniać i zmieniać na warunkach Powszechnej Licencji Publicznej GNU w wersji 3 lub późniejszej. Nie jest objęte żadną gwarancją.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Nowy program</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Nazwa programu</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednostka</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Półfabrykat MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Półfabrykat MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Nadaj programowi nazwę bez spacji i folderów</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>Punkt MIN półfabrykatu musi leżeć poniżej punktu MAX na każdej osi</translation>
     </message>
 </context>
 <context>
@@ -528,10 +589,6 @@ Maszyna: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Program: %1   Maszyna: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Wiersz %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -684,10 +741,6 @@ Maszyna: %3</translation>
     <message>
         <source>M functions</source>
         <translation>Funkcje M</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Wiersz</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -864,6 +917,10 @@ Maszyna: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Blok</translation>
     </message>
 </context>
 <context>
@@ -5307,6 +5364,152 @@ cykl</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Kolejność osi w Bazuj wszystkie: mniejsze numery są bazowane najpierw</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; zmienił się podczas otwierania: pojawiło się dowiązanie</translation>
+    </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} musi wynosić 0, 1 lub 2 przy gwintowaniu</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>gwintowanie sztywne wymaga posuwu i prędkości wrzeciona</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>zagłębienia spadają poniżej 0,001 mm przed głębokością I: zaprogramuj L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>rowek nie ma głębokości</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>rowek jest węższy niż szerokość ostrza NOSEW narzędzia</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C nie jest zaprogramowane, a narzędzie nie ma szerokości ostrza NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>położenie narzędzia jest nieprawidłowe dla cyklu ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>cykl wymagałby ponad {1} ruchów: {2} jest za małe</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>odcinek nie ma długości w kierunku przejść</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>gwint nie ma długości wzdłuż swojej osi</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} nie zostawia gwintu do nacięcia między początkiem a końcem</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} nie jest parametrem {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} w {2} wymaga wartości</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} w {2} nie może wynosić 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} wymaga swojego parametru {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (zmiana skoku) nie może być zaprogramowane razem z K (ponowne nacinanie)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} i {2}: jeden cykl stały na blok</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>początek i koniec łuku nie leżą na jednym okręgu wokół jego środka</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>łuk profilu musi mieścić się w ćwiartce okręgu</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>profil cofa się pod materiał (kanał lub podcięcie): jeszcze nieobsługiwane</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>etykiety N{1} profilu nie ma w programie</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>profil kończy się (E) przed swoim początkiem (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>profil nie zawiera bloków języka wysokiego poziomu</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} w profilu nie jest jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} jest niedozwolone w profilu</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>profil ma ponad 10000 elementów</translation>
+    </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>ta maszyna nie ma osi {1}</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>wiersz %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Wiersz %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Blok %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Wiersz</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Numer bloku</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Numer bloku N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>Program nie ma bloku %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5365,14 +5568,6 @@ start</translation>
 block</source>
         <translation>Start od
 bloku</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Start od bloku</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Wiersz pierwszego bloku</translation>
     </message>
     <message>
         <source>Single block

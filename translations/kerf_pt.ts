@@ -320,20 +320,6 @@ substituir</translation>
         <translation>Refazer</translation>
     </message>
     <message>
-        <source>Go to
-line</source>
-        <translation>Ir para
-linha</translation>
-    </message>
-    <message>
-        <source>Go to line</source>
-        <translation>Ir para linha</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Linha</translation>
-    </message>
-    <message>
         <source>Renumber
 blocks</source>
         <translation>Renumerar
@@ -403,6 +389,50 @@ de máquina</translation>
         <translation>Zoom
 -</translation>
     </message>
+    <message>
+        <source>New
+program</source>
+        <translation>Novo
+programa</translation>
+    </message>
+    <message>
+        <source>Go to
+block</source>
+        <translation>Ir para
+bloco</translation>
+    </message>
+    <message>
+        <source>Go to block</source>
+        <translation>Ir para bloco</translation>
+    </message>
+    <message>
+        <source>The program</source>
+        <translation>O programa</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Alterações não guardadas</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 tem alterações não guardadas. Guardá-las?</translation>
+    </message>
+    <message>
+        <source>A program is running. Stop it and quit?</source>
+        <translation>Um programa está em execução. Pará-lo e sair?</translation>
+    </message>
+    <message>
+        <source>The spindle turns. Stop it and quit?</source>
+        <translation>O fuso está a rodar. Pará-lo e sair?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Sair</translation>
+    </message>
+    <message>
+        <source>Start at block</source>
+        <translation>Iniciar no bloco</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MessagePanel</name>
@@ -415,16 +445,8 @@ de máquina</translation>
         <translation>Mensagem</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Linha</translation>
-    </message>
-    <message>
         <source>No messages</source>
         <translation>Sem mensagens</translation>
-    </message>
-    <message>
-        <source>line %1: </source>
-        <translation>linha %1: </translation>
     </message>
     <message>
         <source>%1 - %2%3</source>
@@ -436,6 +458,14 @@ de máquina</translation>
             <numerusform> (mais %n)</numerusform>
             <numerusform> (mais %n)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloco</translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
     </message>
 </context>
 <context>
@@ -465,6 +495,37 @@ Máquina: %3</translation>
     <message>
         <source>Kerf is free software: you may share and change it under the GNU General Public License, version 3 or later. It comes with no warranty.</source>
         <translation>O Kerf é software livre: pode redistribuí-lo e modificá-lo nos termos da Licença Pública Geral GNU, versão 3 ou posterior. É fornecido sem qualquer garantia.</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::NewProgramDialog</name>
+    <message>
+        <source>New program</source>
+        <translation>Novo programa</translation>
+    </message>
+    <message>
+        <source>Program name</source>
+        <translation>Nome do programa</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidade</translation>
+    </message>
+    <message>
+        <source>Blank MIN %1</source>
+        <translation>Peça bruta MIN %1</translation>
+    </message>
+    <message>
+        <source>Blank MAX %1</source>
+        <translation>Peça bruta MAX %1</translation>
+    </message>
+    <message>
+        <source>Give the program a name without spaces or folders</source>
+        <translation>Dê ao programa um nome sem espaços nem pastas</translation>
+    </message>
+    <message>
+        <source>The blank&apos;s MIN point must lie below its MAX point on every axis</source>
+        <translation>O ponto MIN da peça bruta tem de ficar abaixo do ponto MAX em todos os eixos</translation>
     </message>
 </context>
 <context>
@@ -526,10 +587,6 @@ Máquina: %3</translation>
     <message>
         <source>Program: %1   Machine: %2</source>
         <translation>Programa: %1   Máquina: %2</translation>
-    </message>
-    <message>
-        <source>   Line %1</source>
-        <translation>   Linha %1</translation>
     </message>
     <message>
         <source>T %1</source>
@@ -682,10 +739,6 @@ Máquina: %3</translation>
     <message>
         <source>M functions</source>
         <translation>Funções M</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>Linha</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -862,6 +915,10 @@ Máquina: %3</translation>
     <message>
         <source>F %1 %2</source>
         <translation>F %1 %2</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Bloco</translation>
     </message>
 </context>
 <context>
@@ -5304,6 +5361,152 @@ ciclo</translation>
         <source>Order of the axis in Home all: lower numbers are homed first</source>
         <translation>Ordem do eixo em Referenciar todos: números menores são referenciados primeiro</translation>
     </message>
+    <message>
+        <source>&apos;{1}&apos; changed while it was opened: a link appeared</source>
+        <translation>&apos;{1}&apos; mudou enquanto era aberto: apareceu uma ligação</translation>
+    </message>
+    <message>
+        <source>{1} must be 0, 1 or 2 for tapping</source>
+        <translation>{1} deve ser 0, 1 ou 2 para roscar com macho</translation>
+    </message>
+    <message>
+        <source>rigid tapping needs a feed and a spindle speed</source>
+        <translation>o roscamento rígido precisa de um avanço e de uma velocidade do eixo-árvore</translation>
+    </message>
+    <message>
+        <source>the pecks shrink below 0.001 mm before the depth I: program L</source>
+        <translation>os aprofundamentos ficam abaixo de 0,001 mm antes da profundidade I: programe L</translation>
+    </message>
+    <message>
+        <source>the groove has no depth</source>
+        <translation>a ranhura não tem profundidade</translation>
+    </message>
+    <message>
+        <source>the groove is narrower than the tool&apos;s cutting width NOSEW</source>
+        <translation>a ranhura é mais estreita que a largura de corte NOSEW da ferramenta</translation>
+    </message>
+    <message>
+        <source>C is not programmed and the tool has no cutting width NOSEW</source>
+        <translation>C não está programado e a ferramenta não tem largura de corte NOSEW</translation>
+    </message>
+    <message>
+        <source>the tool position is not correct for the cycle ({1})</source>
+        <translation>a posição da ferramenta não é correta para o ciclo ({1})</translation>
+    </message>
+    <message>
+        <source>the cycle would need more than {1} moves: {2} is too small</source>
+        <translation>o ciclo precisaria de mais de {1} movimentos: {2} é pequeno demais</translation>
+    </message>
+    <message>
+        <source>the section has no length along the passes</source>
+        <translation>o trecho não tem comprimento na direção das passadas</translation>
+    </message>
+    <message>
+        <source>the thread has no length along its axis</source>
+        <translation>a rosca não tem comprimento ao longo do seu eixo</translation>
+    </message>
+    <message>
+        <source>{1} leaves no thread to cut between the start and the end</source>
+        <translation>{1} não deixa rosca para cortar entre o início e o fim</translation>
+    </message>
+    <message>
+        <source>{1} is not a parameter of {2}</source>
+        <translation>{1} não é um parâmetro de {2}</translation>
+    </message>
+    <message>
+        <source>{1} of {2} needs a value</source>
+        <translation>{1} de {2} precisa de um valor</translation>
+    </message>
+    <message>
+        <source>{1} of {2} cannot be 0</source>
+        <translation>{1} de {2} não pode ser 0</translation>
+    </message>
+    <message>
+        <source>{1} needs its parameter {2}</source>
+        <translation>{1} precisa do seu parâmetro {2}</translation>
+    </message>
+    <message>
+        <source>{1}: M (pitch change) cannot be programmed with K (repass)</source>
+        <translation>{1}: M (variação de passo) não pode ser programado com K (repasse)</translation>
+    </message>
+    <message>
+        <source>{1} and {2}: one canned cycle per block</source>
+        <translation>{1} e {2}: um ciclo fixo por bloco</translation>
+    </message>
+    <message>
+        <source>the start and the end of an arc are not on one circle about its centre</source>
+        <translation>o início e o fim de um arco não estão num círculo em torno do seu centro</translation>
+    </message>
+    <message>
+        <source>an arc of the profile must stay within a quarter circle</source>
+        <translation>um arco do perfil deve ficar dentro de um quarto de círculo</translation>
+    </message>
+    <message>
+        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
+        <translation>o perfil volta por baixo do material (um canal ou um rebaixo): ainda não suportado</translation>
+    </message>
+    <message>
+        <source>label N{1} of the profile is not in the program</source>
+        <translation>o rótulo N{1} do perfil não está no programa</translation>
+    </message>
+    <message>
+        <source>the profile ends (E) before it starts (S)</source>
+        <translation>o perfil termina (E) antes de começar (S)</translation>
+    </message>
+    <message>
+        <source>a profile holds no high-level blocks</source>
+        <translation>um perfil não contém blocos de alto nível</translation>
+    </message>
+    <message>
+        <source>{1} in a profile is not supported yet</source>
+        <translation>{1} num perfil ainda não é suportado</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed in a profile</source>
+        <translation>{1} não é permitido num perfil</translation>
+    </message>
+    <message>
+        <source>the profile has more than 10000 elements</source>
+        <translation>o perfil tem mais de 10000 elementos</translation>
+    </message>
+    <message>
+        <source>this machine has no axis {1}</source>
+        <translation>esta máquina não tem eixo {1}</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockName</name>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Linha %1</translation>
+    </message>
+    <message>
+        <source>Block %1</source>
+        <translation>Bloco %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::BlockPrompt</name>
+    <message>
+        <source>Line</source>
+        <translation>Linha</translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation>Número do bloco</translation>
+    </message>
+    <message>
+        <source>Block number N</source>
+        <translation>Número do bloco N</translation>
+    </message>
+    <message>
+        <source>The program has no block %1</source>
+        <translation>O programa não tem o bloco %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineRows</name>
@@ -5362,14 +5565,6 @@ NC</translation>
 block</source>
         <translation>Iniciar no
 bloco</translation>
-    </message>
-    <message>
-        <source>Start at block</source>
-        <translation>Iniciar no bloco</translation>
-    </message>
-    <message>
-        <source>Line of the first block</source>
-        <translation>Linha do primeiro bloco</translation>
     </message>
     <message>
         <source>Single block

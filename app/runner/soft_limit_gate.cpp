@@ -7,19 +7,17 @@ namespace kerf::app {
 SoftLimitGate::SoftLimitGate(const motion::MachineModel& model) : m_checker(model) {}
 
 void SoftLimitGate::start(const motion::AxisVector& tip, canon::Sink& machine) {
-    m_checker.setPosition(tip);
+    Pose start;
+    start.values = tip;
+    m_checker.start(start);
     m_machine = &machine;
 }
 
 void SoftLimitGate::consume(const canon::Command& command) {
     if (m_refusedAt) return;
-    // Until a sync point says otherwise, a probe move ends where it was programmed to.
-    if (m_checker.needsPosition()) m_checker.setPosition(m_checker.position());
-    if (!m_checker.add(command)) {
+    if (!m_checker.accept(command)) {
         m_refusedAt = command.location;
         return;
-    }
-    while (m_checker.next()) {
     }
     m_held.push_back(command);
     if (m_held.size() >= kMaxHeldCommands) release();
@@ -33,16 +31,15 @@ void SoftLimitGate::release() {
 }
 
 void SoftLimitGate::resumeAt(const motion::AxisVector& tip) {
-    m_checker.flush();
-    while (m_checker.next()) {
-    }
-    m_checker.setPosition(tip);
+    Pose at;
+    at.values = tip;
+    m_checker.resumeAt(at);
 }
 
 DiagnosticList SoftLimitGate::refusal(const std::string& file, bool originAtMachineOrigin) const {
     DiagnosticList list;
     if (!m_refusedAt) return list;
-    for (Diagnostic d : m_checker.diagnostics()) {
+    for (Diagnostic d : m_checker.refusal()) {
         d.file = file;
         const bool softLimit = d.code == "motion.soft-limit";
         Diagnostic hint = Diagnostic::make(

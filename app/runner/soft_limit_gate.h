@@ -7,14 +7,14 @@
 #include "core/base/diagnostic.h"
 #include "core/canon/commands.h"
 #include "motion/kinematics/machine_model.h"
-#include "motion/planner/planner.h"
+#include "motion/runtime/work_area_check.h"
 
 // The check before anything moves, for every machine a run drives (motion's simulated drives,
 // the CAN drive chain): each command is checked against the soft limits and the planner's rules
-// by a planner of its own that executes nothing, and held back until the program ends or needs
-// the machine (a sync point). A program that would leave the work area is refused before anything
-// moves, with the block named (unless a sync point or a very long program released part of it
-// before). One thread (the interpreter's).
+// by motion::WorkAreaCheck (the check the HMI's test run makes too), and held back until the
+// program ends or needs the machine (a sync point). A program that would leave the work area is
+// refused before anything moves, with the block named (unless a sync point or a very long program
+// released part of it before). One thread (the interpreter's).
 namespace kerf::app {
 
 class SoftLimitGate final : public canon::Sink {
@@ -39,10 +39,10 @@ public:
     // work offset when a soft limit refused it and the workpiece origin is the machine's.
     DiagnosticList refusal(const std::string& file, bool originAtMachineOrigin) const;
     const std::optional<SourceLocation>& refusedAt() const { return m_refusedAt; }
-    const motion::AxisVector& position() const { return m_checker.position(); }
+    motion::AxisVector position() const { return m_checker.position().values; }
 
 private:
-    motion::Planner m_checker;
+    motion::WorkAreaCheck m_checker;
     canon::Sink* m_machine = nullptr;
     std::vector<canon::Command> m_held;
     std::optional<SourceLocation> m_refusedAt;

@@ -2,10 +2,13 @@
 
 #include <cerrno>
 #include <cstring>
+#include <random>
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "core/base/open_beneath.h"
 
 namespace kerf {
 
@@ -31,6 +34,24 @@ bool writeAll(int fd, std::string_view content) {
     return true;
 }
 
+// A new, empty file ".name.XXXXXX" in the folder (mkstemp has no form that takes a folder).
+int createTemporary(int folderFd, const std::string& fileName, std::string& tempName) {
+    static constexpr char kLetters[] =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    std::random_device seed;
+    std::mt19937 random(seed());
+    std::uniform_int_distribution<size_t> pick(0, sizeof kLetters - 2);
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        tempName = "." + fileName + ".";
+        for (int i = 0; i < 6; ++i)
+            tempName += kLetters[pick(random)];
+        int fd = ::openat(folderFd, tempName.c_str(),
+                          O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (fd >= 0 || errno != EEXIST) return fd;
+    }
+    return -1;
+}
+
 }  // namespace
 
 Diagnostic notRegular(const std::filesystem::path& path) {
@@ -39,49 +60,48 @@ Diagnostic notRegular(const std::filesystem::path& path) {
 }
 
 MaybeError writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
-    struct stat existing {};
-    if (::stat(path.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode)) return notRegular(path);
     std::filesystem::path folder = path.parent_path();
     if (folder.empty()) folder = ".";
-    std::string tempName = (folder / ("." + path.filename().string() + ".XXXXXX")).string();
-    int fd = ::mkstemp(tempName.data());
+    FileDescriptor folderFd(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (folderFd.get() < 0) return ioError(path, "open the folder");
+    return writeFileAtomicallyAt(folderFd.get(), path.filename().string(), path, content);
+}
+
+MaybeError writeFileAtomicallyAt(int folderFd, const std::string& fileName,
+                                 const std::filesystem::path& path, std::string_view content) {
+    // stat follows a link here on purpose: a link to a FIFO or a device is refused as well.
+    struct stat existing {};
+    const bool exists = ::fstatat(folderFd, fileName.c_str(), &existing, 0) == 0;
+    if (exists && !S_ISREG(existing.st_mode)) return notRegular(path);
+    std::string tempName;
+    int fd = createTemporary(folderFd, fileName, tempName);
     if (fd < 0) return ioError(path, "create a temporary file");
-    bool ok = writeAll(fd, content) && ::fsync(fd) == 0;
+    // Keep the permissions of the file we replace, or use the usual 0644.
+    bool ok = ::fchmod(fd, exists ? (existing.st_mode & 07777) : 0644) == 0;
+    ok = ok && writeAll(fd, content) && ::fsync(fd) == 0;
     ok = (::close(fd) == 0) && ok;
-    if (ok) {
-        // Keep the permissions of the file we replace, or use the usual 0644.
-        struct stat info {};
-        mode_t mode = ::stat(path.c_str(), &info) == 0 ? (info.st_mode & 07777) : 0644;
-        ::chmod(tempName.c_str(), mode);
-    }
-    if (!ok || ::rename(tempName.c_str(), path.c_str()) != 0) {
+    // renameat replaces the name itself: a link there is replaced, never written through.
+    if (!ok || ::renameat(folderFd, tempName.c_str(), folderFd, fileName.c_str()) != 0) {
         Diagnostic error = ioError(path, "write the file");
-        ::unlink(tempName.c_str());
+        ::unlinkat(folderFd, tempName.c_str(), 0);
         return error;
     }
-    int dirFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
-    if (dirFd >= 0) {
-        ::fsync(dirFd);
-        ::close(dirFd);
-    }
+    ::fsync(folderFd);
     return std::nullopt;
 }
 
 Expected<std::string> readWholeFile(const std::filesystem::path& path) {
     // POSIX calls rather than streams: no exceptions, and a directory is an error, not a throw.
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below like a device.
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-    if (fd < 0) return ioError(path, "open the file");
+    FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
+    if (fd.get() < 0) return ioError(path, "open the file");
+    return readOpenFile(fd.get(), path);
+}
+
+Expected<std::string> readOpenFile(int fd, const std::filesystem::path& path) {
     struct stat info {};
-    if (::fstat(fd, &info) != 0) {
-        Diagnostic error = ioError(path, "read the file");
-        ::close(fd);
-        return error;
-    }
-    if (!S_ISREG(info.st_mode)) {
-        ::close(fd);
-        return notRegular(path);
-    }
+    if (::fstat(fd, &info) != 0) return ioError(path, "read the file");
+    if (!S_ISREG(info.st_mode)) return notRegular(path);
     std::string content;
     content.resize(static_cast<size_t>(info.st_size));
     size_t done = 0;
@@ -94,16 +114,11 @@ Expected<std::string> readWholeFile(const std::filesystem::path& path) {
         const size_t room = inPlace ? content.size() - done : sizeof more;
         ssize_t n = ::read(fd, into, room);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) {
-            Diagnostic error = ioError(path, "read the file");
-            ::close(fd);
-            return error;
-        }
+        if (n < 0) return ioError(path, "read the file");
         if (n == 0) break;
         if (!inPlace) content.append(more, static_cast<size_t>(n));
         done += static_cast<size_t>(n);
     }
-    ::close(fd);
     content.resize(done);
     return content;
 }

@@ -16,10 +16,16 @@ namespace kerf {
 // file is renamed over the target. A target that exists and is not a regular file (a FIFO, a
 // device, a folder) is refused.
 MaybeError writeFileAtomically(const std::filesystem::path& path, std::string_view content);
+// The same inside an open folder: `fileName` is a plain name in `folderFd`, `path` names the file
+// in messages. Whatever happens to the folder's path meanwhile, the file lands in that folder.
+MaybeError writeFileAtomicallyAt(int folderFd, const std::string& fileName,
+                                 const std::filesystem::path& path, std::string_view content);
 
 // Reads a whole regular file into memory. Never blocks on a FIFO: anything but a regular file is
 // refused with "not a regular file".
 Expected<std::string> readWholeFile(const std::filesystem::path& path);
+// The same for a file already open (opened with O_NONBLOCK); `path` names it in messages.
+Expected<std::string> readOpenFile(int fd, const std::filesystem::path& path);
 
 // The error for a name that is not a regular file.
 Diagnostic notRegular(const std::filesystem::path& path);

@@ -83,6 +83,7 @@ struct ProgramStatus {
     std::optional<Cycle> cycle;  // last defined cycle
     std::vector<int> activeM;    // modal M functions in effect, ascending (M3, M8, ...)
     uint32_t line = 0;           // line of the last executed block (1-based, 0 before start)
+    int64_t blockNumber = -1;    // its block number (Klartext, FAGOR N); -1: it has none
     bool inch = false;           // program unit
     char parameterLetter = 'Q';  // Fagor: 'P'
 

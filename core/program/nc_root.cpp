@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <string>
 
+#include <fcntl.h>
+
 #include "core/base/atomic_file.h"
+#include "core/base/open_beneath.h"
 
 namespace kerf::program {
 
@@ -87,14 +90,24 @@ MaybeError NcRoot::admit(const fs::path& finalPath) const {
     return std::nullopt;
 }
 
+Expected<FileDescriptor> NcRoot::openResolved(const fs::path& finalPath, int flags) const {
+    // The name with its links resolved is opened without following any link and without
+    // leaving the root: a link swapped in after contains() judged the name is refused.
+    const fs::path real = withLinksResolved(finalPath);
+    if (!contains(real)) return pathError(KERF_TR_NOOP("'{1}' is outside the NC root"), finalPath);
+    return openBeneath(m_root, real.lexically_relative(m_root), flags);
+}
+
 Expected<std::string> NcRoot::read(const fs::path& finalPath) const {
-    if (MaybeError refused = admit(finalPath)) return *refused;
-    return readWholeFile(finalPath);
+    auto fd = openResolved(finalPath, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (!fd) return fd.error();
+    return readOpenFile(fd->get(), finalPath);
 }
 
 Expected<std::shared_ptr<const SourceText>> NcRoot::loadProgram(const fs::path& finalPath) const {
-    if (MaybeError refused = admit(finalPath)) return *refused;
-    return SourceText::load(finalPath);
+    auto bytes = read(finalPath);
+    if (!bytes) return bytes.error();
+    return SourceText::fromString(std::move(*bytes), finalPath.string());
 }
 
 MaybeError NcRoot::admitWrite(const fs::path& finalPath) const {
@@ -111,7 +124,10 @@ MaybeError NcRoot::admitWrite(const fs::path& finalPath) const {
 
 MaybeError NcRoot::replace(const fs::path& finalPath, std::string_view content) const {
     if (MaybeError refused = admitWrite(finalPath)) return refused;
-    return writeFileAtomically(finalPath, content);
+    const fs::path parent = finalPath.has_parent_path() ? finalPath.parent_path() : fs::path(".");
+    auto folder = openResolved(parent, O_RDONLY | O_DIRECTORY);
+    if (!folder) return folder.error();
+    return writeFileAtomicallyAt(folder->get(), finalPath.filename().string(), finalPath, content);
 }
 
 Expected<fs::path> NcRoot::resolve(std::string_view name, const fs::path& callerFolder) const {

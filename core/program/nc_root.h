@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/base/expected.h"
+#include "core/base/open_beneath.h"
 #include "core/program/source_text.h"
 
 namespace kerf::program {
@@ -45,6 +46,8 @@ public:
     MaybeError replace(const std::filesystem::path& finalPath, std::string_view content) const;
 
 private:
+    Expected<FileDescriptor> openResolved(const std::filesystem::path& finalPath, int flags) const;
+
     std::filesystem::path m_root;
 };
 

@@ -3,9 +3,12 @@
 motion test paths of shared/tools/motion (gen.py, bounds.py) run with `kerf run --motion` on the
 built-in mill (A 2000 mm/s^2, J 1e6 mm/s^3, v 500 mm/s per axis).
 
-Usage: scripts/bench/motion_paths.py [--kerf build/ci/app/kerf] [--tools DIR] [--quick]
+Usage: scripts/bench/motion_paths.py [--kerf build/ci/app/kerf] [--tools DIR] [--quick] [--check]
 Prints one Markdown table row per path. The bound is bounds.topp_acc along the exact curve plus
 A/J for the jerk ramps; "over" marks an axis above its acceleration or jerk limit by more than 1 %.
+With --check (the ctest subset, tests/app) the exit code is 1 when any axis is over a limit by
+more than 1 % or a path runs faster than its time-optimal bound (impossible within the limits:
+the planner or its report is wrong), or when a run fails.
 """
 import argparse
 import json
@@ -34,7 +37,7 @@ PATHS = [
     ("true arc R50", ["arccircle", "--R", "50"], ("circle", 50)),
     ("straight line, 0.02 mm", ["line", "--seg", "0.02"], ("line", 0)),
 ]
-QUICK = {0, 2, 5, 10}
+QUICK = {0, 2, 5, 9, 10}
 
 
 def bound(tools, geometry, feed_mm_per_min):
@@ -57,8 +60,10 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--kerf", default=os.path.join(root, "build/ci/app/kerf"))
     ap.add_argument("--tools", default="/work/shared/tools/motion")
-    ap.add_argument("--quick", action="store_true", help="four paths only")
+    ap.add_argument("--quick", action="store_true", help="five paths only")
+    ap.add_argument("--check", action="store_true", help="exit 1 on a limit or bound violation")
     a = ap.parse_args()
+    failures = []
     print("| path (100 mm, F6000 unless noted) | feed time s | bound s | ratio | max acc X/Y/Z mm/s² | max jerk X/Y/Z 1e6 mm/s³ | over 1 % |")
     print("|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as work:
@@ -68,9 +73,13 @@ def main():
             program = os.path.join(work, "p.H")
             report = os.path.join(work, "r.json")
             subprocess.run([sys.executable, os.path.join(a.tools, "gen.py"), *args, "-o", program], check=True)
-            subprocess.run([a.kerf, "run", program, "--motion", "--report", report],
-                           check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-            motion = json.load(open(report))["motion"]
+            run = subprocess.run([a.kerf, "run", program, "--motion", "--report", report],
+                                 check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            if run.returncode != 0:
+                failures.append("%s: kerf run exited %d" % (label, run.returncode))
+                continue
+            with open(report) as f:
+                motion = json.load(f)["motion"]
             feed = float(args[args.index("--feed") + 1]) if "--feed" in args else 6000.0
             b = bound(a.tools, geometry, feed)
             axes = motion["axes"]
@@ -81,7 +90,14 @@ def main():
                 label, motion["feed_time_s"], b, motion["feed_time_s"] / b, acc, jerk,
                 ", ".join(over) if over else "–"))
             sys.stdout.flush()
+            if over:
+                failures.append("%s: axis %s over its limit" % (label, ", ".join(over)))
+            if motion["feed_time_s"] < b * 0.999:
+                failures.append("%s: %.3f s is faster than the bound %.3f s" % (label, motion["feed_time_s"], b))
+    for failure in failures:
+        print("FAIL " + failure, file=sys.stderr)
+    return 1 if a.check and failures else 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

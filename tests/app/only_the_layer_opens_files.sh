@@ -6,7 +6,7 @@
 cd "$1" || exit 2
 found=$(grep -rnE '\bfopen\(|std::[io]?fstream|[^_a-zA-Z]::open\(|\bmmap\(|\bQFile\b|QSaveFile' \
     core app ui graphics motion drivers --include='*.cpp' --include='*.h' |
-  grep -vE '^core/base/atomic_file\.cpp:' |
+  grep -vE '^core/base/(atomic_file|open_beneath)\.cpp:' |
   grep -vE '^app/runner/headless_run\.cpp:.*traceFile' |
   grep -vE '^motion/sim/motion_recorder\.h:.*m_csv' |
   grep -vE '^drivers/can/candump_log\.cpp:.*m_file = std::fopen')

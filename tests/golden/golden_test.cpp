@@ -1,7 +1,8 @@
 // Runs every case under tests/golden/<dialect>/<case>/ through `kerf run` and compares with the
 // expectations written by hand next to the program:
 //   program.*       the NC program (any extension; the dialect follows it or the `args` file)
-//   args            optional options, one per line: "--machine lathe", "--tool-table TOOL.T" ...
+//   args            optional options, one per line: "--machine lathe", "--tool-table TOOL.T",
+//                   "--stock" (material removal: the report's "stock" section) ...
 //   expected.json   values the report must contain (numbers within 1e-4 unless "tolerance" says
 //                   otherwise; arrays must have the same length; keys not listed are not checked)
 //   expected.trace  the exact canonical trace
@@ -69,6 +70,8 @@ RunOptions optionsFor(const fs::path& dir) {
             options.toolTable = dir / value;
         } else if (key == "--max-blocks") {
             options.maxBlocks = std::stoull(value);
+        } else if (key == "--stock") {
+            options.stock = true;
         } else if (key == "--block-skip") {
             options.blockSkip = true;
         } else if (!key.empty()) {

@@ -211,6 +211,41 @@ TEST(KerfRunMotion, FagorThreadKeepsTheLeadPerSpindleRevolution) {
     EXPECT_NEAR(motion["final_position"]["Z"].get<double>(), 20.0, 1e-6);
 }
 
+TEST(KerfRunMotion, FagorG86PassesStayOnOneHelix) {
+    // G86 with a 2 mm pitch from Z5 to Z-10 at radius 20, infeed angle A30, depths 0.3 and 0.6
+    // (B-0.3) and the spring pass at 0.6 (L0): the second pass starts 0.6 tan 30 = 0.3464 mm
+    // further along, the others 0.1732 mm. Every sample on every pass must lie on the helix that
+    // passes Z5 at spindle angle 0: angle = 360 (5 - Z) / 2 (mod 360).
+    const fs::path program = writeProgram("g86.pim",
+                                          "N10 G90 G95 S500 M3\n"
+                                          "N20 G00 X50 Z10\n"
+                                          "N30 G86 X40 Z5 Q40 R-10 I0.6 B-0.3 D2 L0 C2 A30\n"
+                                          "N40 M30\n");
+    const fs::path samples = outputDir() / "g86.csv";
+    KerfRun run = runKerf(program, "--machine lathe --samples \"" + samples.string() + "\"");
+    ASSERT_EQ(run.exitCode, 0) << run.errors;
+    std::ifstream csv(samples);
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line, "t_s,X,Z,spindle_deg,path_velocity,move");
+    size_t onThread = 0;
+    while (std::getline(csv, line)) {
+        double t = 0.0, x = 0.0, z = 0.0, angle = 0.0, velocity = 0.0;
+        int move = 0;
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%d", &t, &x, &z, &angle, &velocity,
+                              &move),
+                  6);
+        // On a pass: at its depth, moving (at the start point the tool waits for the spindle
+        // angle), past every pass's start point (Z 4.65 at the latest) and before the end.
+        const bool atDepth = std::fabs(x - 19.7) < 1e-9 || std::fabs(x - 19.4) < 1e-9;
+        if (!atDepth || velocity <= 0.0 || z > 4.6 || z < -10.0 + 1e-6) continue;
+        ++onThread;
+        EXPECT_NEAR(std::remainder(angle - 360.0 * (5.0 - z) / 2.0, 360.0), 0.0, 1e-3)
+            << "X " << x << " Z " << z;
+    }
+    EXPECT_GT(onThread, 1000u);  // 3 passes of about 15 mm at 1000 mm/min
+}
+
 TEST(KerfRunMotion, TncTappingCyclesKeepTheSpindleLockedToZ) {
     // Cycle 207 (rigid tapping, pitch 1, from set-up clearance Z2 to Z-10 and back) at X10 and
     // cycle 18 (thread cutting, pitch 1, from Z2 to Z-10) at X30: on every sample of their

@@ -1,5 +1,8 @@
 #include "ui/editor/block_numbers.h"
 
+#include <QTextBlock>
+#include <QTextDocument>
+
 namespace kerf::ui {
 
 std::optional<BlockNumber> readBlockNumber(QStringView line, program::Dialect dialect) {
@@ -64,6 +67,43 @@ QString withBlockNumber(QStringView line, long long number, program::Dialect dia
                                ? QString::number(number)
                                : QStringLiteral("N%1").arg(number);
     return prefix + line.mid(current->length).toString();
+}
+
+long long blockNumberOfLine(const QTextDocument& document, int line, program::Dialect dialect) {
+    const QTextBlock block = document.findBlockByNumber(line - 1);
+    if (!block.isValid()) return -1;
+    // A '~' on the line before: this line continues that block.
+    const QTextBlock previous = block.previous();
+    if (dialect == program::Dialect::Klartext && previous.isValid() &&
+        continuesOnNextLine(previous.text()))
+        return -1;
+    const auto number = readBlockNumber(block.text(), dialect);
+    return number ? number->number : -1;
+}
+
+std::optional<int> lineOfBlock(const QTextDocument& document, long long number,
+                               program::Dialect dialect) {
+    bool continued = false;
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        const QString text = block.text();
+        if (!continued) {
+            const auto found = readBlockNumber(text, dialect);
+            if (found && found->number == number) return block.blockNumber() + 1;
+        }
+        continued = dialect == program::Dialect::Klartext && continuesOnNextLine(text);
+    }
+    return std::nullopt;
+}
+
+bool numbersBlocks(const QTextDocument& document, program::Dialect dialect) {
+    // FAGOR programs often start with a %name header and comments before the first N.
+    constexpr int kLinesLooked = 20;
+    int looked = 0;
+    for (QTextBlock block = document.begin(); block.isValid() && looked < kLinesLooked;
+         block = block.next(), ++looked) {
+        if (readBlockNumber(block.text(), dialect)) return true;
+    }
+    return false;
 }
 
 }  // namespace kerf::ui

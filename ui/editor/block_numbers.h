@@ -6,6 +6,8 @@
 
 #include "core/program/dialect.h"
 
+class QTextDocument;
+
 namespace kerf::ui {
 
 // Block numbers as the controls write them. Klartext counts blocks from 0 ("0 BEGIN PGM ..."); a
@@ -53,5 +55,17 @@ QString nextBlockPrefix(QStringView line, QStringView previousLine, program::Dia
 
 // `line` with its block number replaced by `number`; unchanged if it has none.
 QString withBlockNumber(QStringView line, long long number, program::Dialect dialect);
+
+// Places in a document as the operator names them (ui/common/block_name.h). Lines are 1-based.
+
+// The block number line `line` carries; -1 for a line without one, for a line continuing a
+// Klartext block (after a '~') and for a line the document does not have.
+long long blockNumberOfLine(const QTextDocument& document, int line, program::Dialect dialect);
+// The first line that carries block number `number`; nullopt when no line does.
+std::optional<int> lineOfBlock(const QTextDocument& document, long long number,
+                               program::Dialect dialect);
+// True when the program numbers its blocks (one of its first lines carries a number): then the
+// operator gives block numbers, otherwise file lines.
+bool numbersBlocks(const QTextDocument& document, program::Dialect dialect);
 
 }  // namespace kerf::ui

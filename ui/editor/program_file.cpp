@@ -18,10 +18,11 @@ Expected<ProgramText> readProgramFile(const std::filesystem::path& path) {
     return program;
 }
 
-MaybeError writeProgramFile(const std::filesystem::path& path, const ProgramText& program) {
+MaybeError writeProgramFile(const program::NcRoot& root, const std::filesystem::path& path,
+                            const ProgramText& program) {
     QString text = program.text;
     if (program.crlf) text.replace(QLatin1Char('\n'), QStringLiteral("\r\n"));
-    return writeFileAtomically(path, program::fromUtf8(text.toStdString(), program.encoding));
+    return root.replace(path, program::fromUtf8(text.toStdString(), program.encoding));
 }
 
 }  // namespace kerf::ui

@@ -5,6 +5,7 @@
 
 #include "core/base/expected.h"
 #include "core/program/encoding.h"
+#include "core/program/nc_root.h"
 
 namespace kerf::ui {
 
@@ -17,7 +18,9 @@ struct ProgramText {
 };
 
 Expected<ProgramText> readProgramFile(const std::filesystem::path& path);
-// Atomic: a crash leaves the old file or the new one.
-MaybeError writeProgramFile(const std::filesystem::path& path, const ProgramText& program);
+// Through the NC root's checks (docs/files.md): refused outside the root, through a link or onto
+// something that is not a regular file. Atomic: a crash leaves the old file or the new one.
+MaybeError writeProgramFile(const program::NcRoot& root, const std::filesystem::path& path,
+                            const ProgramText& program);
 
 }  // namespace kerf::ui

@@ -171,13 +171,14 @@ bool ProgramPanel::write() {
     ProgramText file = m_file;
     file.text = m_editor->toPlainText();
     if (file.text.size() < static_cast<qsizetype>(m_settings.backgroundLoadBytes)) {
-        return finishWrite(writeProgramFile(m_path, file));
+        return finishWrite(writeProgramFile(program::NcRoot(m_settings.ncRoot), m_path, file));
     }
     // A large program is encoded and written by a worker; the editor is read-only meanwhile, so
     // that the file written is the text shown and "not modified" stays true.
     m_readOnlyBeforeWrite = m_editor->isReadOnly();
     m_editor->setReadOnly(true);
-    m_writer->run([path = m_path, file = std::move(file)] { return writeProgramFile(path, file); },
+    m_writer->run([root = program::NcRoot(m_settings.ncRoot), path = m_path,
+                   file = std::move(file)] { return writeProgramFile(root, path, file); },
                   [this](const MaybeError& error) {
                       m_editor->setReadOnly(m_readOnlyBeforeWrite);
                       finishWrite(error);
@@ -215,6 +216,12 @@ void ProgramPanel::restoreRecovery() {
 void ProgramPanel::discardRecovery() {
     m_recovery.discard(m_path);
     m_recovered.reset();
+}
+
+void ProgramPanel::abandonEdits() {
+    m_autosaveTimer->stop();
+    discardRecovery();
+    m_editor->document()->setModified(false);
 }
 
 void ProgramPanel::autosave() {

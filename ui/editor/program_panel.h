@@ -57,6 +57,9 @@ public:
     bool recoveryAvailable() const { return m_recovered.has_value(); }
     void restoreRecovery();
     void discardRecovery();
+    // The operator gives the edits up (the program is about to be replaced or closed): no
+    // autosave copy is kept and the text counts as unmodified; the file stays as saved.
+    void abandonEdits();
     // Writes the autosave copy now (the timer does this after each pause in typing).
     void autosave();
 

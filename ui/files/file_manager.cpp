@@ -203,9 +203,14 @@ bool FileManager::toggleProtection() {
     return report(m_operations.setProtected(*path, !NcFileOperations::isProtected(*path)));
 }
 
-bool FileManager::newFolder() {
+fs::path FileManager::currentFolder() const {
     auto folder = selectedPath().value_or(m_operations.root().path());
     if (!fs::is_directory(folder)) folder = folder.parent_path();
+    return folder;
+}
+
+bool FileManager::newFolder() {
+    const fs::path folder = currentFolder();
     const auto answer = ask(tr("Name of the new folder:"), QString());
     if (!answer) return false;
     auto made = m_operations.makeFolder(folder, answer->trimmed().toStdString());

@@ -50,7 +50,10 @@ public:
     bool renameSelected();  // asks for the new name
     bool deleteSelected();  // asks for confirmation
     bool toggleProtection();
-    bool newFolder();  // asks for the name; created in the selected folder (or the root)
+    bool newFolder();
+    // Where new files go: the selected folder, the folder of the selected file, or the root.
+    std::filesystem::path currentFolder()
+        const;  // asks for the name; created in the selected folder (or the root)
 
     QStringList recentFiles() const { return m_recent; }
     void addRecent(const std::filesystem::path& path);

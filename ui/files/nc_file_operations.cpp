@@ -105,6 +105,20 @@ Expected<fs::path> NcFileOperations::makeFolder(const fs::path& parent,
     return folder;
 }
 
+Expected<fs::path> NcFileOperations::createFile(const fs::path& folder, std::string_view name,
+                                                std::string_view content) const {
+    if (name.empty() || name == "." || name == ".." ||
+        name.find_first_of("/\\") != std::string_view::npos) {
+        return fileError(folder, KERF_TR_NOOP("'{1}' is not a valid file name"), std::string(name));
+    }
+    const fs::path file = folder / std::string(name);
+    std::error_code error;
+    if (fs::exists(fs::symlink_status(file, error)))
+        return fileError(file, KERF_TR_NOOP("a file with this name exists already"));
+    if (auto refused = m_root.replace(file, content)) return *refused;
+    return file;
+}
+
 MaybeError NcFileOperations::setProtected(const fs::path& path, bool on) const {
     if (auto error = requireInside(path)) return error;
     std::error_code error;

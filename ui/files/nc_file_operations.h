@@ -30,6 +30,11 @@ public:
     MaybeError remove(const std::filesystem::path& path) const;
     Expected<std::filesystem::path> makeFolder(const std::filesystem::path& parent,
                                                std::string_view name) const;
+    // A new file `name` in `folder` with `content`, written through the NC root (atomic, never
+    // through a link); refused when a file of that name exists.
+    Expected<std::filesystem::path> createFile(const std::filesystem::path& folder,
+                                               std::string_view name,
+                                               std::string_view content) const;
 
     MaybeError setProtected(const std::filesystem::path& path, bool on) const;
     static bool isProtected(const std::filesystem::path& path);

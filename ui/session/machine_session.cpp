@@ -5,6 +5,7 @@
 #include "core/task/shifted_motion_port.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/session/program_interpreter.h"
+#include "ui/session/program_origin.h"
 
 namespace kerf::ui {
 
@@ -230,25 +231,24 @@ bool MachineSession::setPresetByEntry(Axis axis, double shownValue) {
 }
 
 void MachineSession::applyPresetTable() {
-    // A lathe's origin comes from the FAGOR zero offsets and the entries, not a TNC table.
-    if (m_machine.kind == machine::MachineKind::Lathe) return;
-    const auto values = m_presets.read();
-    Pose shift = m_motion->shift();
-    for (const machine::AxisConfig& config : m_machine.axes) {
-        const auto axis = axisFromLetter(config.letter);
-        if (!axis) continue;
-        if (const auto value = values[static_cast<size_t>(axisIndex(*axis))])
-            shift[*axis] = *value - config.presetPosition;
-    }
+    const Pose origin = programOrigin(m_machine, m_presets, m_motion->shift());
+    const Pose own = machineFilePreset(m_machine);
+    Pose shift;
+    for (size_t i = 0; i < shift.values.size(); ++i)
+        shift.values[i] = origin.values[i] - own.values[i];
     m_motion->setShift(shift);
 }
 
 Pose MachineSession::presetInMachine() const {
-    Pose preset = m_motion->shift();
-    for (const machine::AxisConfig& config : m_machine.axes) {
-        if (const auto axis = axisFromLetter(config.letter)) preset[*axis] += config.presetPosition;
-    }
+    Pose preset = machineFilePreset(m_machine);
+    for (size_t i = 0; i < preset.values.size(); ++i)
+        preset.values[i] += m_motion->shift().values[i];
     return preset;
+}
+
+Pose MachineSession::nextProgramOrigin() {
+    if (!busy()) applyPresetTable();
+    return presetInMachine();
 }
 
 std::optional<int> MachineSession::executingLine() const {

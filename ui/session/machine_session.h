@@ -105,6 +105,9 @@ public:
     // The workpiece origin in machine coordinates: the machine file's preset, then (mill) the
     // axes row 0 of PRESET.PR sets, then the entries of a lathe.
     Pose presetInMachine() const;
+    // The origin the next program will start from (the table's row 0 read again while nothing
+    // runs): what the test run checks the work area with.
+    Pose nextProgramOrigin();
 
     // Fractions: 1 = 100 %.
     void setFeedOverride(double fraction);

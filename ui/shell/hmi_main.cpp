@@ -79,6 +79,11 @@ int runHmi(int argc, char** argv, const HmiOptions& options) {
             return connect(config);
         };
     }
+    if (options.checkMoves) {
+        context.checkMoves = [check = options.checkMoves, config = *machine](const Pose& origin) {
+            return check(config, origin);
+        };
+    }
     std::error_code error;
     std::filesystem::create_directories(context.ncRoot, error);
 

@@ -7,6 +7,7 @@
 #include "core/machine/machine_config.h"
 #include "core/task/machining_clock.h"
 #include "core/task/motion_port.h"
+#include "core/task/move_check.h"
 
 namespace kerf::ui {
 
@@ -27,6 +28,12 @@ struct HmiOptions {
     std::function<std::unique_ptr<task::MotionPort>(const machine::MachineConfig&)> connectMachine;
     // Times the test run (app/ wires motion's simulated clock); also on a programming station.
     task::MachiningClockFactory machiningClock;
+    // The machine's check of a program's moves (soft limits, planner rules) for a workpiece
+    // origin in machine coordinates: the test run checks with it (also on a programming
+    // station). Empty: the test run does not check the work area.
+    std::function<std::unique_ptr<task::MoveCheck>(const machine::MachineConfig&,
+                                                   const Pose& originInMachine)>
+        checkMoves;
 };
 
 // Starts the operator panel and runs the Qt event loop; returns the process exit code.

@@ -62,7 +62,6 @@ SoftkeyRow jogRow(const MachineRowContext& c) {
 SoftkeyRow runRow(const MachineRowContext& c) {
     MachineSession* session = c.session;
     auto start = c.startProgram;
-    QWidget* parent = c.dialogParent;
     return {
         {QStringLiteral("ncStart"), MachineRows::tr("NC\nstart"),
          [session, start] {
@@ -77,12 +76,9 @@ SoftkeyRow runRow(const MachineRowContext& c) {
         {QStringLiteral("resume"), MachineRows::tr("Resume"), [session] { session->cycleStart(); }},
         {QStringLiteral("abort"), MachineRows::tr("Stop"), [session] { session->stop(); }},
         {QStringLiteral("startAtBlock"), MachineRows::tr("Start at\nblock"),
-         [start, parent] {
-             bool ok = false;
-             const int line = QInputDialog::getInt(parent, MachineRows::tr("Start at block"),
-                                                   MachineRows::tr("Line of the first block"), 1, 1,
-                                                   1 << 30, 1, &ok);
-             if (ok && start) start(static_cast<uint32_t>(line));
+         [start, ask = c.askStartBlock] {
+             if (!start || !ask) return;
+             if (const auto line = ask()) start(static_cast<uint32_t>(*line));
          }},
         {QStringLiteral("singleBlock"),
          session->singleBlock() ? MachineRows::tr("Single block\non")

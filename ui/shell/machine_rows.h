@@ -20,6 +20,8 @@ struct MachineRowContext {
     QWidget* dialogParent = nullptr;
     // Starts the editor's program (at a line, for a start in mid-program).
     std::function<void(std::optional<uint32_t> startLine)> startProgram;
+    // Asks for the block to start at (its number, or a line); the line, or nullopt.
+    std::function<std::optional<int>()> askStartBlock;
     std::function<void()> refresh;  // the keys' labels follow the session (single block on/off)
 };
 

@@ -11,10 +11,12 @@
 #include "core/program/nc_root.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/cycles/programming_softkeys.h"
+#include "ui/editor/block_numbers.h"
 #include "ui/editor/find_bar.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/files/file_manager.h"
+#include "ui/shell/block_prompt.h"
 #include "ui/shell/machine_keys.h"
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
@@ -62,6 +64,11 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     programSettings.ncRoot = m_context.ncRoot;
     programSettings.recoveryFolder = m_context.recoveryFolder;
     m_program = new ProgramPanel(programSettings, central);
+    // Messages name the blocks of the program shown by their numbers.
+    m_messages->setPlaceOfLine([editor = m_program->editor()](int line) {
+        return MessagePanel::Place{blockNumberOfLine(*editor->document(), line, editor->dialect()),
+                                   editor->dialect()};
+    });
     createGraphics(central);
     m_status =
         new StatusTabs(m_context.machine.kind == machine::MachineKind::Lathe ? 'P' : 'Q', central);
@@ -75,7 +82,7 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
     layout->addLayout(middle, 1);
 
     m_files = new FileManager(m_context.ncRoot, central);
-    m_tables = new TableEditor(central);
+    m_tables = new TableEditor(m_context.ncRoot, central);
     m_files->hide();
     m_tables->hide();
     auto relay = [this](Severity severity, const QString& text) {
@@ -111,20 +118,6 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
 }
 
 MainWindow::~MainWindow() = default;
-
-bool MainWindow::openProgram(const std::filesystem::path& path) {
-    if (!m_program->open(path)) return false;
-    if (m_program->recoveryAvailable()) {
-        m_messages->addMessage(
-            Severity::Warning,
-            tr("%1 has unsaved changes from an earlier session: press \"Restore autosave\" to "
-               "get them back")
-                .arg(QString::fromStdString(path.filename().string())));
-    }
-    m_files->addRecent(path);
-    showPanels();
-    return true;
-}
 
 bool MainWindow::openFile(const std::filesystem::path& path) {
     // From the file manager: a file of the NC root, judged after its links (docs/files.md).
@@ -189,11 +182,6 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
-void MainWindow::closeEvent(QCloseEvent* event) {
-    m_program->autosave();
-    QMainWindow::closeEvent(event);
-}
-
 void MainWindow::retranslate() {
     setWindowTitle(tr("Kerf - %1").arg(QString::fromStdString(m_context.machine.name)));
     m_machineKeys->retranslate();
@@ -238,16 +226,21 @@ void MainWindow::nextLanguage() {
 }
 
 std::vector<SoftkeyRow> MainWindow::fileRows() {
-    return {{
-        {"fileOpen", tr("Open"), [this] { m_files->openSelected(); }},
-        {"fileCopy", tr("Copy"), [this] { m_files->copySelected(); }},
-        {"fileMove", tr("Move"), [this] { m_files->moveSelected(); }},
-        {"fileRename", tr("Rename"), [this] { m_files->renameSelected(); }},
-        {"fileDelete", tr("Delete"), [this] { m_files->deleteSelected(); }},
-        {"fileProtect", tr("Protect /\nunprotect"), [this] { m_files->toggleProtection(); }},
-        {"fileNewFolder", tr("New\nfolder"), [this] { m_files->newFolder(); }},
-        {"back", tr("Back"), [this] { showPanels(); }},
-    }};
+    return {
+        {
+            {"fileOpen", tr("Open"), [this] { m_files->openSelected(); }},
+            {"fileCopy", tr("Copy"), [this] { m_files->copySelected(); }},
+            {"fileMove", tr("Move"), [this] { m_files->moveSelected(); }},
+            {"fileRename", tr("Rename"), [this] { m_files->renameSelected(); }},
+            {"fileDelete", tr("Delete"), [this] { m_files->deleteSelected(); }},
+            {"fileProtect", tr("Protect /\nunprotect"), [this] { m_files->toggleProtection(); }},
+            {"fileNewFolder", tr("New\nfolder"), [this] { m_files->newFolder(); }},
+            {"back", tr("Back"), [this] { showPanels(); }},
+        },
+        {
+            {"fileNewProgram", tr("New\nprogram"), [this] { newProgram(); }},
+            {"back", tr("Back"), [this] { showPanels(); }},
+        }};
 }
 
 std::vector<SoftkeyRow> MainWindow::tableRows() {
@@ -275,13 +268,11 @@ void MainWindow::refreshSoftkeys() {
             {"find", tr("Find /\nreplace"), [this] { m_program->findBar()->open(); }},
             {"undo", tr("Undo"), [editor] { editor->undo(); }},
             {"redo", tr("Redo"), [editor] { editor->redo(); }},
-            {"goto", tr("Go to\nline"),
+            {"goto", tr("Go to\nblock"),
              [this, editor] {
-                 bool ok = false;
-                 const int line =
-                     QInputDialog::getInt(this, tr("Go to line"), tr("Line"), editor->currentLine(),
-                                          1, editor->document()->blockCount(), 1, &ok);
-                 if (ok) editor->goToLine(line);
+                 if (const auto line =
+                         askForBlockLine(this, tr("Go to block"), *editor, *m_messages))
+                     editor->goToLine(*line);
              }},
             {"renumber", tr("Renumber\nblocks"), [editor] { editor->renumber(); }},
             {"check", tr("Check\nprogram"), [this] { m_program->checkNow(); }},

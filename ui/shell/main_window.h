@@ -3,10 +3,13 @@
 #include <QMainWindow>
 #include <QString>
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 #include "core/machine/machine_config.h"
 #include "core/task/machining_clock.h"
+#include "core/task/move_check.h"
+#include "ui/files/new_program.h"
 #include "ui/session/machine_session.h"
 #include "ui/shell/softkey_bar.h"
 
@@ -38,6 +41,7 @@ struct HmiContext {
     std::string machineSource;  // --machine: a built-in name or the TOML file (settings write it)
     MotionFactory motion;       // the machine connection; none: no program run, no manual operation
     task::MachiningClockFactory machiningClock;  // the test run's time; none: no time
+    task::MoveCheckFactory checkMoves;           // the machine's work-area check for the test run
 };
 
 // The operator panel: a header naming the machine mode and the programming mode, the message
@@ -73,17 +77,36 @@ public:
     // Opens a file chosen in the file manager: tables in the table editor, the rest as programs.
     bool openFile(const std::filesystem::path& path);
 
+    // Opens a program in the editor; unsaved edits of the one shown are saved or discarded first
+    // as the operator answers (false: cancelled, or the file cannot be read).
     bool openProgram(const std::filesystem::path& path);
+    // New program (main_window_programs.cpp): asks for the name, the unit and (mill) the blank,
+    // writes the program into the folder chosen in the file manager (the NC root when none) and
+    // opens it in Programming.
+    bool newProgram();
+
+    // The questions the window asks; tests answer them, the defaults are message boxes.
+    enum class UnsavedChoice { Save, Discard, Cancel };
+    struct Prompts {
+        std::function<UnsavedChoice(const QString& program)> unsavedEdits;
+        std::function<bool(const QString& question)> confirm;
+        std::function<std::optional<NewProgramSpec>()> newProgram;
+    };
+    void setPrompts(Prompts prompts);
     // Switches the HMI to another language at run time ("en", "pt", "pl").
     bool setLanguage(const QString& code);
     void cycleLayout();
 
 protected:
     void changeEvent(QEvent* event) override;
-    // Unsaved edits go to the recovery folder, so closing never loses work.
+    // Asks before quitting while a program runs or the spindle turns, and what to do with unsaved
+    // edits; unsaved edits that are kept go to the recovery folder.
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    bool showProgram(const std::filesystem::path& path);
+    // Unsaved edits of the program shown: saved, discarded or kept (false: the operator cancels).
+    bool settleUnsavedEdits();
     void retranslate();
     void refreshHeader();
     void refreshSoftkeys();
@@ -108,6 +131,7 @@ private:
     std::vector<SoftkeyRow> setupRows();
 
     HmiContext m_context;
+    Prompts m_prompts;
     ModeController* m_modes = nullptr;
     QLabel* m_machineMode = nullptr;
     QLabel* m_programmingMode = nullptr;

@@ -6,6 +6,7 @@
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/session/machine_session.h"
+#include "ui/shell/block_prompt.h"
 #include "ui/shell/executing_block_follower.h"
 #include "ui/shell/machine_keys.h"
 #include "ui/shell/machine_rows.h"
@@ -91,6 +92,9 @@ std::vector<SoftkeyRow> MainWindow::machineRows() {
     context.session = m_session;
     context.dialogParent = this;
     context.startProgram = [this](std::optional<uint32_t> line) { startEditorProgram(line); };
+    context.askStartBlock = [this] {
+        return askForBlockLine(this, tr("Start at block"), *m_program->editor(), *m_messages);
+    };
     context.refresh = [this] { refreshSoftkeys(); };
     return machineModeRows(m_modes->machineMode(), context);
 }

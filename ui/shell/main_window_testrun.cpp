@@ -8,6 +8,7 @@
 #include "graphics/stock/progressive_stock.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
+#include "ui/session/program_origin.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
@@ -47,8 +48,14 @@ bool MainWindow::testRunOnScreen() const {
 }
 
 void MainWindow::createGraphics(QWidget* parent) {
-    m_testRun =
-        new TestRunController(m_context.machine, m_context.ncRoot, m_context.machiningClock, this);
+    m_testRun = new TestRunController(m_context.machine, m_context.ncRoot, this);
+    m_testRun->setMachiningClock(m_context.machiningClock);
+    // The work area and the origin of Program run: with a machine the session's, without one
+    // the machine file's preset and PRESET.PR.
+    m_testRun->setWorkAreaCheck(m_context.checkMoves, [this] {
+        if (m_session != nullptr) return m_session->nextProgramOrigin();
+        return programOrigin(m_context.machine, task::PresetStore(m_context.ncRoot));
+    });
     m_graphics = new GraphicsPanel(*m_testRun, m_context.machine, parent);
     connect(m_testRun, &TestRunController::diagnostic, m_messages,
             [this](Severity severity, const QString& text, int line) {

@@ -6,6 +6,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include "ui/common/block_name.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/shell/softkey_bar.h"
 
@@ -16,6 +17,8 @@ namespace {
 constexpr int kSeverityRole = Qt::UserRole;
 constexpr int kLineRole = Qt::UserRole + 1;
 constexpr int kFromCheckRole = Qt::UserRole + 2;
+constexpr int kBlockNumberRole = Qt::UserRole + 3;
+constexpr int kDialectRole = Qt::UserRole + 4;
 
 QColor severityColor(Severity severity) {
     switch (severity) {
@@ -48,7 +51,7 @@ MessagePanel::MessagePanel(QWidget* parent) : QWidget(parent) {
     m_list->setObjectName("messageList");
     m_list->setRootIsDecorated(false);
     m_list->setColumnCount(3);
-    m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Line")});
+    m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Block")});
     m_list->header()->setSectionResizeMode(1, QHeaderView::Stretch);
     m_list->header()->setStretchLastSection(false);
     m_list->setMaximumHeight(180);
@@ -61,10 +64,18 @@ MessagePanel::MessagePanel(QWidget* parent) : QWidget(parent) {
     refreshLine();
 }
 
+void MessagePanel::setPlaceOfLine(std::function<Place(int line)> placeOfLine) {
+    m_placeOfLine = std::move(placeOfLine);
+}
+
 QTreeWidgetItem* MessagePanel::makeItem(Severity severity, const QString& text, int line,
                                         bool fromCheck) {
+    const Place place = line > 0 && m_placeOfLine ? m_placeOfLine(line) : Place{};
     auto* item = new QTreeWidgetItem(
-        {severityText(severity), text, line > 0 ? QString::number(line) : QString()});
+        {severityText(severity), text,
+         line > 0 ? blockShortName(place.blockNumber, line, place.dialect) : QString()});
+    item->setData(0, kBlockNumberRole, static_cast<qlonglong>(place.blockNumber));
+    item->setData(0, kDialectRole, static_cast<int>(place.dialect));
     item->setData(0, kSeverityRole, static_cast<int>(severity));
     item->setData(0, kLineRole, line);
     item->setData(0, kFromCheckRole, fromCheck);
@@ -116,7 +127,7 @@ void MessagePanel::activate(int row) {
 
 void MessagePanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
-        m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Line")});
+        m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Block")});
         refreshLine();
     }
     QWidget::changeEvent(event);
@@ -143,8 +154,12 @@ void MessagePanel::refreshLine() {
         m_line->setStyleSheet(QStringLiteral("text-align: left; padding-left: 8px;"));
         return;
     }
+    const int line = worst->data(0, kLineRole).toInt();
     const QString block =
-        worst->text(2).isEmpty() ? QString() : tr("line %1: ").arg(worst->text(2));
+        line <= 0 ? QString()
+                  : tr("%1: ").arg(blockName(
+                        worst->data(0, kBlockNumberRole).toLongLong(), line,
+                        static_cast<program::Dialect>(worst->data(0, kDialectRole).toInt())));
     const int others = m_list->topLevelItemCount() - 1;
     QString text = tr("%1 - %2%3").arg(worst->text(0), block, worst->text(1));
     if (others > 0) text += tr(" (%n more)", nullptr, others);

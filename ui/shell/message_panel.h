@@ -2,8 +2,10 @@
 
 #include <QString>
 #include <QWidget>
+#include <functional>
 
 #include "core/base/diagnostic.h"
+#include "core/program/dialect.h"
 
 class QPushButton;
 class QTreeWidget;
@@ -12,13 +14,21 @@ class QTreeWidgetItem;
 namespace kerf::ui {
 
 // The message line under the header and the message list it opens: each message has a
-// severity, a text and the block (line) it refers to. Activating a message that names a line
-// asks the editor to jump there.
+// severity, a text and the block it refers to, named by its block number (the file line where
+// the line has none). Activating a message that names a line asks the editor to jump there.
 class MessagePanel : public QWidget {
     Q_OBJECT
 
 public:
     explicit MessagePanel(QWidget* parent = nullptr);
+
+    // The block number written on a line of the program shown (-1: none) and its dialect.
+    struct Place {
+        int64_t blockNumber = -1;
+        program::Dialect dialect = program::Dialect::Klartext;
+    };
+    // How messages name their lines: asked once per message, when it arrives.
+    void setPlaceOfLine(std::function<Place(int line)> placeOfLine);
 
     // Replaces the program check's messages (messages from other sources stay).
     void setCheckDiagnostics(const DiagnosticList& diagnostics);
@@ -46,6 +56,7 @@ private:
     QTreeWidgetItem* makeItem(Severity severity, const QString& text, int line, bool fromCheck);
     void refreshLine();
 
+    std::function<Place(int line)> m_placeOfLine;
     QPushButton* m_line = nullptr;
     QTreeWidget* m_list = nullptr;
 };

@@ -5,12 +5,14 @@
 #include <QPushButton>
 #include <QShortcut>
 
+#include "ui/shell/softkey_button.h"
+
 namespace kerf::ui {
 
 namespace {
 
 QPushButton* makeKey(QWidget* parent) {
-    auto* key = new QPushButton(parent);
+    auto* key = new SoftkeyButton(parent);
     key->setMinimumHeight(SoftkeyBar::kMinimumKeyHeight);
     key->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     key->setFocusPolicy(Qt::NoFocus);  // touching a key must not take the editor's focus
@@ -73,6 +75,12 @@ bool SoftkeyBar::press(int index) {
     key.action();
     emit pressed(key.id);
     return true;
+}
+
+QString SoftkeyBar::keyId(int index) const {
+    if (m_current >= rowCount() || index < 0) return {};
+    const SoftkeyRow& row = m_rows[static_cast<size_t>(m_current)];
+    return static_cast<size_t>(index) < row.size() ? row[static_cast<size_t>(index)].id : QString();
 }
 
 bool SoftkeyBar::pressId(const QString& id) {

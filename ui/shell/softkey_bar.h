@@ -41,6 +41,8 @@ public:
     // Presses the key with this id on whichever row holds it; false if there is none.
     bool pressId(const QString& id);
     QPushButton* keyButton(int index) const { return m_buttons.at(static_cast<size_t>(index)); }
+    // The id of key `index` (0 = F1) of the current row, empty if there is none.
+    QString keyId(int index) const;
     QPushButton* rowButton() const { return m_rowButton; }
 
 signals:

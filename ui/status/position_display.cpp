@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include "ui/common/block_name.h"
 #include "ui/status/override_controls.h"
 
 namespace kerf::ui {
@@ -41,7 +42,9 @@ QString coreText(const char* text) {
 }  // namespace
 
 PositionDisplay::PositionDisplay(const machine::MachineConfig& machine, QWidget* parent)
-    : QWidget(parent) {
+    : QWidget(parent),
+      m_dialect(machine.kind == machine::MachineKind::Lathe ? program::Dialect::Fagor
+                                                            : program::Dialect::Klartext) {
     setObjectName("positionsPanel");  // the workspace panel's name in the shell
     auto* layout = new QVBoxLayout(this);
     auto* header = new QHBoxLayout();
@@ -179,7 +182,11 @@ void PositionDisplay::refresh() {
                     (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")));
     QString state = coreText(task::machineStateName(m_status.state));
     if (!m_runState.isEmpty()) state = tr("Program: %1   Machine: %2").arg(m_runState, state);
-    if (m_status.block.line > 0) state += tr("   Line %1").arg(m_status.block.line);
+    if (m_status.block.line > 0) {
+        state +=
+            QStringLiteral("   ") +
+            blockName(m_status.block.blockNumber, static_cast<int>(m_status.block.line), m_dialect);
+    }
     m_state->setText(state);
     m_tool->setText(tr("T %1").arg(m_status.toolNumber));
     const double feedScale = inch ? 1.0 / kMmPerInch : 1.0;

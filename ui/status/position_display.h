@@ -5,6 +5,7 @@
 #include <array>
 
 #include "core/machine/machine_config.h"
+#include "core/program/dialect.h"
 #include "core/task/machine_status.h"
 #include "ui/common/display_settings.h"
 
@@ -59,6 +60,7 @@ private:
     void retranslate();
 
     DisplaySettings m_settings;
+    program::Dialect m_dialect;  // how the machine's programs number their blocks
     task::MachineStatus m_status;
     QString m_runState;
     std::array<AxisRow, kAxisCount> m_axes{};

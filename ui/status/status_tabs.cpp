@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "ui/common/block_name.h"
+
 namespace kerf::ui {
 
 namespace {
@@ -175,16 +177,21 @@ void StatusTabs::fillProgram() {
         m << QStringLiteral("M%1").arg(number);
     const QString active = QString::fromStdString(s.activeProgram);
     const QString main = QString::fromStdString(s.mainProgram);
-    fill(m_program, {{tr("Program"), main.isEmpty() ? none : main},
-                     {tr("Called program"),
-                      s.activeProgram == s.mainProgram || active.isEmpty() ? none : active},
-                     {tr("Label"), s.label.empty() ? none : QString::fromStdString(s.label)},
-                     {tr("Cycle"), cycle},
-                     {tr("M functions"), m.isEmpty() ? none : m.join(' ')},
-                     {tr("Spindle"), spindleText(s.motion, s.inch)},
-                     {tr("Feed"), feedText(s.motion, s.inch)},
-                     {tr("Line"), s.line == 0 ? QString() : QString::number(s.line)},
-                     {tr("Unit"), s.inch ? tr("inch") : tr("mm")}});
+    fill(m_program,
+         {{tr("Program"), main.isEmpty() ? none : main},
+          {tr("Called program"),
+           s.activeProgram == s.mainProgram || active.isEmpty() ? none : active},
+          {tr("Label"), s.label.empty() ? none : QString::fromStdString(s.label)},
+          {tr("Cycle"), cycle},
+          {tr("M functions"), m.isEmpty() ? none : m.join(' ')},
+          {tr("Spindle"), spindleText(s.motion, s.inch)},
+          {tr("Feed"), feedText(s.motion, s.inch)},
+          {tr("Block"),
+           s.line == 0 ? QString()
+                       : blockShortName(s.blockNumber, static_cast<int>(s.line),
+                                        s.parameterLetter == 'P' ? program::Dialect::Fagor
+                                                                 : program::Dialect::Klartext)},
+          {tr("Unit"), s.inch ? tr("inch") : tr("mm")}});
 }
 
 QString StatusTabs::spindleText(const interp::ProgramStatus::Motion& m, bool inch) {

@@ -30,8 +30,8 @@ public:
     virtual QString columnUnit(size_t column) const = 0;
     // Problems that block a save; empty when the table is fine.
     virtual DiagnosticList validate() const = 0;
-    // Writes the table so that a crash leaves the old or the new file.
-    virtual MaybeError save(const std::filesystem::path& path) const = 0;
+    // The file's text as it is saved (the table editor writes it through the NC root).
+    virtual std::string content() const = 0;
 
     // Row whose cells contain `text` (case-insensitive), searching from `from` on and wrapping.
     int findRow(const QString& text, int from) const;

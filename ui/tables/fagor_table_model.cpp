@@ -3,7 +3,6 @@
 #include <QRegularExpression>
 #include <cmath>
 
-#include "core/base/atomic_file.h"
 #include "core/base/translate.h"
 
 namespace kerf::ui {
@@ -226,8 +225,8 @@ DiagnosticList FagorTableModel::validate() const {
     return error ? DiagnosticList{*error} : DiagnosticList{};
 }
 
-MaybeError FagorTableModel::save(const std::filesystem::path& path) const {
-    return writeFileAtomically(path, m_text.serialize());
+std::string FagorTableModel::content() const {
+    return m_text.serialize();
 }
 
 }  // namespace kerf::ui

@@ -37,7 +37,7 @@ public:
     void setSaved() override { m_modified = false; }
     QString columnUnit(size_t column) const override;
     DiagnosticList validate() const override;
-    MaybeError save(const std::filesystem::path& path) const override;
+    std::string content() const override;
 
 private:
     void refreshKeys();

@@ -11,6 +11,7 @@
 
 #include "core/base/atomic_file.h"
 #include "core/interp/fagor/tables/table_text.h"
+#include "core/program/nc_root.h"
 #include "core/tables/table_file.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/tables/fagor_table_model.h"
@@ -19,7 +20,8 @@
 
 namespace kerf::ui {
 
-TableEditor::TableEditor(QWidget* parent) : QWidget(parent) {
+TableEditor::TableEditor(std::filesystem::path ncRoot, QWidget* parent)
+    : QWidget(parent), m_ncRoot(std::move(ncRoot)) {
     setObjectName("tableEditor");
     registerDiagnosticMetaTypes();
     auto* layout = new QVBoxLayout(this);
@@ -113,7 +115,8 @@ bool TableEditor::save() {
         emit message(Severity::Error, tr("Not saved: correct the table first"));
         return false;
     }
-    if (const MaybeError error = m_model->save(m_path)) {
+    // Through the NC root: never outside it, never through a link (docs/files.md).
+    if (const MaybeError error = program::NcRoot(m_ncRoot).replace(m_path, m_model->content())) {
         reportDiagnostic(*error);
         return false;
     }

@@ -26,7 +26,8 @@ class TableEditor : public QWidget {
     Q_OBJECT
 
 public:
-    explicit TableEditor(QWidget* parent = nullptr);
+    // Saves go through the file-access layer of `ncRoot` (docs/files.md).
+    explicit TableEditor(std::filesystem::path ncRoot, QWidget* parent = nullptr);
     ~TableEditor() override;
 
     bool open(const std::filesystem::path& path);
@@ -61,6 +62,7 @@ private:
     void reportDiagnostic(const Diagnostic& d);
     EditableTableModel* loadModel(const std::filesystem::path& path);
 
+    std::filesystem::path m_ncRoot;
     std::filesystem::path m_path;
     EditableTableModel* m_model = nullptr;
     std::string m_axisLetters = "XZ";

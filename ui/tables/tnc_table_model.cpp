@@ -153,8 +153,8 @@ DiagnosticList TncTableModel::validate() const {
     return m_validator ? m_validator(m_table) : tables::checkNumericCells(m_table);
 }
 
-MaybeError TncTableModel::save(const std::filesystem::path& path) const {
-    return tables::saveTable(m_table, path);
+std::string TncTableModel::content() const {
+    return m_table.serialize();
 }
 
 }  // namespace kerf::ui

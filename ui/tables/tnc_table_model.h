@@ -43,7 +43,7 @@ public:
     // feeds; empty if none.
     QString columnUnit(size_t column) const override;
     DiagnosticList validate() const override;
-    MaybeError save(const std::filesystem::path& path) const override;
+    std::string content() const override;
 
 private:
     void remember();

@@ -38,11 +38,8 @@ QString speedText(TestRunSpeed speed) {
 }
 
 TestRunController::TestRunController(machine::MachineConfig machine, std::filesystem::path ncRoot,
-                                     task::MachiningClockFactory clock, QObject* parent)
-    : QObject(parent),
-      m_machine(std::move(machine)),
-      m_ncRoot(std::move(ncRoot)),
-      m_machiningClock(std::move(clock)) {
+                                     QObject* parent)
+    : QObject(parent), m_machine(std::move(machine)), m_ncRoot(std::move(ncRoot)) {
     registerDiagnosticMetaTypes();
     m_timer = new QTimer(this);
     m_timer->setInterval(50);  // 20 frames a second: enough for software OpenGL
@@ -51,6 +48,20 @@ TestRunController::TestRunController(machine::MachineConfig machine, std::filesy
 
 TestRunController::~TestRunController() {
     stopWorker();
+}
+
+void TestRunController::setWorkAreaCheck(task::MoveCheckFactory checkMoves,
+                                         std::function<Pose()> presetInMachine) {
+    m_checkMoves = std::move(checkMoves);
+    m_presetInMachine = std::move(presetInMachine);
+}
+
+Pose TestRunController::currentOrigin() const {
+    return m_presetInMachine ? m_presetInMachine() : Pose{};
+}
+
+bool TestRunController::playable() const {
+    return m_program && (m_program->ran || m_program->refusedAt);
 }
 
 void TestRunController::stopWorker() {
@@ -73,6 +84,9 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     input.machine = m_machine;
     input.ncRoot = m_ncRoot;
     input.clock = m_machiningClock;
+    m_preparedOrigin = currentOrigin();
+    input.presetInMachine = m_preparedOrigin;
+    input.checkMoves = m_checkMoves;
     const uint64_t generation = ++m_generation;
     setState(State::Interpreting);
     m_worker = std::thread([this, input = std::move(input), generation] {
@@ -103,7 +117,7 @@ void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> prog
     emit programReady();
     emit progressChanged(m_timeS);
     publishStatus();
-    if (!m_program->ran) {
+    if (!playable()) {
         m_playWhenReady = false;
         setState(State::Failed);
         return;
@@ -121,12 +135,14 @@ void TestRunController::start(const QString& text, const std::filesystem::path& 
         m_playWhenReady = true;
         return;
     }
-    if (!m_program || text != m_preparedText || path != m_preparedPath) {
+    // A preset set or edited since the preparation moves the work area under the program.
+    if (!m_program || text != m_preparedText || path != m_preparedPath ||
+        currentOrigin().values != m_preparedOrigin.values) {
         m_playWhenReady = true;
         prepare(text, path, dialect);
         return;
     }
-    if (m_state == State::Finished) reset();
+    if (m_state == State::Finished || (m_state == State::Failed && playable())) reset();
     play();
 }
 
@@ -154,7 +170,7 @@ void TestRunController::reset() {
     emit progressChanged(m_timeS);
     m_shownStatus = nullptr;
     publishStatus();
-    setState(m_program->ran ? State::Ready : State::Failed);
+    setState(playable() ? State::Ready : State::Failed);
 }
 
 void TestRunController::clear() {
@@ -219,7 +235,8 @@ void TestRunController::advance(double wallSeconds) {
     if (m_timeS >= total) {
         m_timer->stop();
         m_stock->finish();
-        setState(State::Finished);
+        // The machine would refuse the next block: the run ends here with that error.
+        setState(m_program->refusedAt ? State::Failed : State::Finished);
     }
 }
 

@@ -4,6 +4,7 @@
 #include <QObject>
 #include <QString>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <thread>
 
@@ -34,10 +35,20 @@ class TestRunController : public QObject {
 public:
     enum class State { Empty, Interpreting, Ready, Playing, Stopped, Finished, Failed };
 
-    // `clock` times the program as the machine runs it (see TestRunInput).
     TestRunController(machine::MachineConfig machine, std::filesystem::path ncRoot,
-                      task::MachiningClockFactory clock, QObject* parent = nullptr);
+                      QObject* parent = nullptr);
     ~TestRunController() override;
+
+    // Checks the work area as Program run does: `checkMoves` is the machine's check (soft limits,
+    // planner rules), `presetInMachine` says where the workpiece origin lies now. A program the
+    // machine would refuse plays up to the refused block and ends Failed, the message naming
+    // the block. The origin is asked again at every start: a moved preset prepares anew.
+    void setWorkAreaCheck(task::MoveCheckFactory checkMoves, std::function<Pose()> presetInMachine);
+    // Times the programs prepared from now on as the machine runs them (see TestRunInput);
+    // none: no machining time.
+    void setMachiningClock(task::MachiningClockFactory clock) {
+        m_machiningClock = std::move(clock);
+    }
 
     // Interprets a program (replacing the one prepared); programReady() or failed() follows.
     void prepare(const QString& text, const std::filesystem::path& path, program::Dialect dialect);
@@ -91,6 +102,9 @@ private:
     void setState(State state);
     void tick();
     void stopWorker();
+    // The prepared program may be played (to its end, or to the block the machine refuses).
+    bool playable() const;
+    Pose currentOrigin() const;
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;
@@ -100,7 +114,10 @@ private:
     QString m_preparedText;
     std::filesystem::path m_preparedPath;
     std::string m_preparedFile;  // the name the interpreter knows the program by
-    size_t m_pushed = 0;         // commands handed to the stock
+    Pose m_preparedOrigin{};
+    task::MoveCheckFactory m_checkMoves;
+    std::function<Pose()> m_presetInMachine;
+    size_t m_pushed = 0;  // commands handed to the stock
     const TestRunProgram::StatusSnapshot* m_shownStatus = nullptr;
     double m_timeS = 0.0;
     TestRunSpeed m_speed = TestRunSpeed::Times10;

@@ -27,7 +27,13 @@ public:
         m_toolpath.setStart(start);
         if (m_clock != nullptr) m_clock->setStart(start);
     }
+    // Commands the check refuses (and every one after) are not recorded.
+    void setCheck(task::MoveCheck* check) { m_check = check; }
     void consume(const canon::Command& command) override {
+        if (m_check != nullptr && !m_check->accept(command)) {
+            if (!m_out.refusedAt) m_out.refusedAt = command.location;
+            return;
+        }
         m_statistics.consume(command);
         m_out.movesBefore.push_back(static_cast<uint32_t>(m_toolpath.data().moveCount()));
         m_toolpath.consume(command);
@@ -50,6 +56,7 @@ public:
 private:
     TestRunProgram& m_out;
     task::MachiningClock* m_clock;
+    task::MoveCheck* m_check = nullptr;
     canon::PathStatistics m_statistics;
     graphics::ToolpathCollector m_toolpath;
 };
@@ -160,6 +167,7 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     source.path = input.path;
     source.ncRoot = input.ncRoot;
     source.dialect = input.dialect;
+    source.presetInMachine = input.presetInMachine;
     LoadedProgram program = loadProgram(input.machine, source);
     out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
     out.diagnostics = program.diagnostics;
@@ -167,9 +175,15 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     std::unique_ptr<task::MachiningClock> clock =
         input.clock ? input.clock(input.machine) : nullptr;
     Recorder recorder(out, clock.get());
+    std::unique_ptr<task::MoveCheck> check;
+    if (interpreter && input.checkMoves) {
+        check = input.checkMoves(program.streamOrigin.value_or(input.presetInMachine));
+        recorder.setCheck(check.get());
+    }
     if (interpreter) {
         out.start = interpreter->nominalPosition();
         recorder.setStart(out.start);
+        if (check) check->start(out.start);
         for (;;) {
             if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
                 out.cancelled = true;
@@ -178,9 +192,11 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
             const uint64_t slice = out.statuses.size() < kMaxStatusSnapshots ? 1 : kBlocksPerSlice;
             const interp::RunStatus status = interpreter->run(recorder, slice);
             out.statuses.push_back({out.commands.size(), interpreter->programStatus()});
+            if (out.refusedAt) break;  // Program run would not go past this block either
             if (status == interp::RunStatus::NeedsSync) {
                 interp::WorldSnapshot world;
                 world.position = recorder.position();
+                if (check) check->resumeAt(world.position);
                 recorder.sync();
                 interpreter->resume(world);
                 continue;
@@ -205,6 +221,15 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
             out.diagnostics.end(),
             interpreter->diagnostics().begin() + static_cast<long>(program.diagnostics.size()),
             interpreter->diagnostics().end());
+    }
+    if (out.refusedAt) {
+        const uint32_t fileId = out.refusedAt->fileId;
+        const std::string file =
+            fileId < program.sources->size() ? program.sources->path(fileId) : input.path.string();
+        for (Diagnostic d : check->refusal()) {
+            d.file = file;
+            out.diagnostics.push_back(std::move(d));
+        }
     }
     if (hasErrors(out.diagnostics)) out.ran = false;
     auto toolpath = std::make_shared<graphics::ToolpathData>(recorder.takeToolpath());

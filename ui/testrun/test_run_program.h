@@ -14,6 +14,7 @@
 #include "core/machine/machine_config.h"
 #include "core/program/dialect.h"
 #include "core/task/machining_clock.h"
+#include "core/task/move_check.h"
 #include "graphics/stock/stock_simulation.h"
 #include "graphics/toolpath/toolpath_data.h"
 #include "graphics/toolpath/toolpath_lod.h"
@@ -32,6 +33,11 @@ struct TestRunInput {
     // Times the program as the machine runs it (app wires motion's simulated clock); without
     // one every command ends at time 0.
     task::MachiningClockFactory clock;
+    // The workpiece origin in machine coordinates, as Program run would use it (the machine
+    // file's preset, PRESET.PR row 0, an entry; a FAGOR program's zero offset takes precedence).
+    Pose presetInMachine{};
+    // Checks the moves as the machine would (soft limits, planner rules); none: not checked.
+    task::MoveCheckFactory checkMoves;
 };
 
 // A program interpreted for the test run: its canonical stream with the machining time at the
@@ -55,6 +61,9 @@ struct TestRunProgram {
     std::vector<StatusSnapshot> statuses;
     DiagnosticList diagnostics;
     bool ran = false;  // the program ran to its end (false: an error stopped it or it never began)
+    // The block the machine would refuse (a move beyond a soft limit ...): the commands end
+    // before it, and the diagnostics say why.
+    std::optional<SourceLocation> refusedAt;
     bool cancelled = false;
     uint64_t blocks = 0;
 
@@ -70,7 +79,9 @@ struct TestRunProgram {
 };
 
 // Interprets the program with the dialect's interpreter (Klartext or Fagor; TNC ISO is refused
-// with a diagnostic) and collects everything the test run needs. Synchronisation points are
+// with a diagnostic) and collects everything the test run needs. With `checkMoves` every command
+// passes the machine's check first, from the workpiece origin Program run would use: the
+// program ends at the first block the machine would refuse. Synchronisation points are
 // answered with the position the program commanded, as on a machine that follows it exactly.
 // Any thread; `cancel` is polled between slices of blocks.
 TestRunProgram interpretForTestRun(const TestRunInput& input,

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/base/translate.h"
+#include "core/interp/fagor/cycle_syntax.h"
 
 namespace kerf::fagor {
 
@@ -31,6 +32,10 @@ int rank(char letter) {
 
 std::string letterText(char c) {
     return std::string(1, c);
+}
+
+std::string gText(int n) {
+    return "G" + std::to_string(n);
 }
 
 }  // namespace
@@ -117,7 +122,7 @@ bool BlockParser::header(Scanner& s, ParsedBlock& out) {
 bool BlockParser::body(Scanner& s, ParsedBlock& out) {
     if (s.peek() == '(') return highLevel(s, out);
     out.kind = ParsedBlock::Kind::Iso;
-    return isoWords(s, out);
+    return isoWords(s, out) && cycleComplete(out.iso);
 }
 
 bool BlockParser::highLevel(Scanner& s, ParsedBlock& out) {
@@ -309,6 +314,54 @@ bool BlockParser::gArguments(Scanner& s, int g, IsoBlock& iso) {
     }
 }
 
+bool BlockParser::cycleWord(Scanner& s, char letter, size_t offset, CycleWords& cycle) {
+    const CycleParameter* p = cycleSyntax(cycle.g)->find(letter);
+    if (p == nullptr) {
+        return fail(offset, "cycle-parameter", KERF_TR_NOOP("{1} is not a parameter of {2}"),
+                    {letterText(letter), gText(cycle.g)});
+    }
+    WordValue& w = cycle[letter];
+    if (w.present) {
+        return fail(offset, "syntax", KERF_TR_NOOP("{1} is programmed twice"),
+                    {letterText(letter)});
+    }
+    w.offset = static_cast<uint16_t>(offset);
+    if (!value(s, letter, w)) return false;
+    if (!w.hasValue) {
+        return fail(offset, "syntax", KERF_TR_NOOP("{1} of {2} needs a value"),
+                    {letterText(letter), gText(cycle.g)});
+    }
+    if (!format(w, letter, p->intDigits, p->decDigits, p->sign)) return false;
+    if (p->decDigits == 0) {
+        const double hi = p->maxValue != 0 ? p->maxValue : kPowers[p->intDigits] - 1.0;
+        if (!integer(w, letter, 0.0, hi)) return false;
+    }
+    if (p->nonZero && known(w) && w.value == 0.0) {
+        return fail(offset, "cycle-parameter", KERF_TR_NOOP("{1} of {2} cannot be 0"),
+                    {letterText(letter), gText(cycle.g)});
+    }
+    return true;
+}
+
+bool BlockParser::cycleComplete(const IsoBlock& iso) {
+    const CycleWords& cycle = iso.cycle;
+    if (cycle.g < 0) return true;
+    for (const CycleParameter& p : cycleSyntax(cycle.g)->parameters) {
+        if (p.required && !cycle.has(p.letter)) {
+            return fail(cycle.offset, "cycle-parameter",
+                        KERF_TR_NOOP("{1} needs its parameter {2}"),
+                        {gText(cycle.g), letterText(p.letter)});
+        }
+    }
+    if ((cycle.g == 86 || cycle.g == 87) && cycle.has('K') && cycle.has('M')) {
+        // K (thread repass) and M (variable pitch) exclude each other (spec part 2, G86).
+        return fail(cycle['M'].offset, "cycle-parameter",
+                    KERF_TR_NOOP("{1}: M (pitch change) cannot be programmed with K (repass)"),
+                    {gText(cycle.g)});
+    }
+    return true;
+}
+
 bool BlockParser::isoWords(Scanner& s, ParsedBlock& out) {
     IsoBlock& iso = out.iso;
     bool gPhase = true;
@@ -347,12 +400,25 @@ bool BlockParser::isoWords(Scanner& s, ParsedBlock& out) {
                 return false;
             }
             const int number = static_cast<int>(g.value);
+            if (cycleSyntax(number) != nullptr) {
+                if (iso.cycle.g >= 0) {
+                    return fail(at, "syntax",
+                                KERF_TR_NOOP("{1} and {2}: one canned cycle per block"),
+                                {gText(iso.cycle.g), gText(number)});
+                }
+                iso.cycle.g = static_cast<int16_t>(number);
+                iso.cycle.offset = offset;
+            }
             if (number == 14 || number == 16 || number == 74) selectors = true;
             if (!gArguments(s, number, iso)) return false;
             previous = 'G';
             continue;
         }
         gPhase = false;
+        if (iso.cycle.g >= 0 && c != 'N') {
+            if (!cycleWord(s, c, at, iso.cycle)) return false;
+            continue;
+        }
         const int r = rank(c);
         const bool m19Angle = c == 'S' && previous == 'M' && iso.mCount > 0 &&
                               iso.m[iso.mCount - 1].number.value == 19;

@@ -27,6 +27,9 @@ private:
     bool trailer(Scanner& s, ParsedBlock& out);
     bool isoWords(Scanner& s, ParsedBlock& out);
     bool gArguments(Scanner& s, int g, IsoBlock& iso);
+    bool cycleWord(Scanner& s, char letter, size_t offset, CycleWords& cycle);
+    bool cycleComplete(const IsoBlock& iso);
+    bool known(const WordValue& w) const { return !(w.parameter && m_source == nullptr); }
     bool value(Scanner& s, char letter, WordValue& out);
     bool format(const WordValue& w, char letter, int intDigits, int decDigits, bool sign);
     bool integer(const WordValue& w, char letter, double lo, double hi);

@@ -9,6 +9,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/cycles/lathe/lathe_path.h"
+#include "core/cycles/lathe/section_turning.h"
 #include "core/interp/fagor/block_parser.h"
 #include "core/interp/fagor/contour_shaper.h"
 #include "core/interp/fagor/fagor_program.h"
@@ -200,11 +202,24 @@ private:
     bool targetOf(const IsoBlock& iso, Pose& target, bool& polar);
     bool arcElement(const IsoBlock& iso, int form, const Pose& start, const Pose& target,
                     bool polar, ContourElement& out);
-    bool submit(const ContourElement& programmed, MoveKind kind, const IsoBlock& iso);
+    // `own`: a cycle move's own feed (0: the active one) and thread data.
+    struct OwnMoveData {
+        double feed = 0.0;
+        ThreadData thread;
+    };
+    bool submit(const ContourElement& programmed, MoveKind kind, const IsoBlock& iso,
+                const OwnMoveData* own = nullptr);
     bool feedFor(MoveKind kind, const ContourElement& element, const IsoBlock& iso, double& feed);
     bool threadData(const IsoBlock& iso, const ContourElement& element, ThreadData& out);
     bool machineCoordinateMove(const IsoBlock& iso);
     bool hardStopMove(const IsoBlock& iso);
+
+    // Canned cycles G81-G89 (fagor_cycles.cpp).
+    bool executeCycle(const IsoBlock& iso);
+    bool runCycleSteps(const std::vector<cycles::lathe::LatheStep>& steps, const IsoBlock& iso);
+    // G68/G69: the profile from label S to label E (fagor_profile.cpp).
+    bool readProfile(const CycleWords& w, const Vec2& start,
+                     std::vector<cycles::lathe::ProfileElement>& out);
 
     // Probing G75/G76 (fagor_probing.cpp).
     bool probeMove(const IsoBlock& iso);

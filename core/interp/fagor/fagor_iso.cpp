@@ -73,6 +73,10 @@ void FagorInterpreter::executeIso(const IsoBlock& iso, int repetition) {
     }
     m_functions = BlockFunctions{};
     if (iso.gCount != 0 && !applyModalFunctions(iso)) return;
+    if (iso.cycle.g >= 0) {
+        (void)executeCycle(iso);
+        return;
+    }
     if (iso.f.present && !setFeed(iso)) return;
     if ((iso.s.present || iso.hasG(96) || iso.hasG(97)) && !setSpindleSpeed(iso)) return;
     if ((iso.t.present || iso.d.present) && !selectTool(iso)) return;

@@ -407,8 +407,8 @@ bool FagorInterpreter::threadData(const IsoBlock& iso, const ContourElement& ele
     return true;
 }
 
-bool FagorInterpreter::submit(const ContourElement& programmed, MoveKind kind,
-                              const IsoBlock& iso) {
+bool FagorInterpreter::submit(const ContourElement& programmed, MoveKind kind, const IsoBlock& iso,
+                              const OwnMoveData* own) {
     ContourElement element = programmed;
     element.start = m_position;
     element.end = toStream(programmed.end);
@@ -430,10 +430,15 @@ bool FagorInterpreter::submit(const ContourElement& programmed, MoveKind kind,
         flip ? static_cast<interp::CompSide>(-static_cast<int>(m_modal.side)) : m_modal.side;
     move.collisionWindow = m_modal.collisionBlocks;
     if (kind == MoveKind::Thread) {
-        if (!threadData(iso, element, move.thread)) return false;
+        if (own != nullptr) {
+            move.thread = own->thread;
+        } else if (!threadData(iso, element, move.thread)) {
+            return false;
+        }
     } else if (!feedFor(kind, element, iso, move.feed)) {
         return false;
     }
+    if (own != nullptr && kind == MoveKind::Feed && own->feed > 0.0) move.feed = own->feed;
     if (!pathOk(m_shaper.add(move))) return false;
     if (kind == MoveKind::Feed) {
         for (size_t i = 0; i < m_lastDelta.values.size(); ++i) {

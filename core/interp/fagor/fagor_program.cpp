@@ -113,6 +113,18 @@ void Checker::iso(const ParsedBlock& block, const program::LogicalLine& line) {
         d.args = problem.args;
         appendDiagnostic(m_program.diagnostics, std::move(d));
     }
+    const int cycle = iso.cycle.g;
+    if (cycle == 66 || cycle == 68 || cycle == 69) {
+        // The profile is found by its labels S and E: keep the index, check them here when the
+        // profile is in this program.
+        m_flow = true;
+        for (const char letter : {'S', 'E'}) {
+            const WordValue& w = iso.cycle[letter];
+            if (iso.cycle.has('Q') || w.parameter) continue;
+            m_references.push_back({static_cast<int64_t>(w.value), line.firstLine,
+                                    program::columnOf(line.text, w.offset)});
+        }
+    }
     if (block.outOfOrder != 0 && !m_warnedOrder) {
         m_warnedOrder = true;
         diag(Severity::Warning, "word-order", line.firstLine,

@@ -43,6 +43,7 @@ interp::ProgramStatus FagorInterpreter::programStatus() const {
         }
     }
     status.line = m_at.line;
+    status.blockNumber = m_at.blockNumber;
     status.inch = m_modal.inch;
     status.parameterLetter = 'P';
 

@@ -22,7 +22,8 @@ bool fail(Problem& problem, size_t offset, const char* code, const char* text,
 // Whether the block holds anything besides `g` and the words `g` takes as arguments.
 bool onlyOwnArguments(const IsoBlock& iso, int g) {
     if (iso.gCount > 1 || iso.f.present || iso.t.present || iso.d.present || iso.mCount != 0 ||
-        iso.l.present || iso.r.present || iso.q.present || iso.k.present || iso.i2.present) {
+        iso.l.present || iso.r.present || iso.q.present || iso.k.present || iso.i2.present ||
+        iso.cycle.g >= 0) {
         return false;
     }
     const bool axesAllowed = g == 14 || g == 16 || g == 72 || g == 92 || g == 233;

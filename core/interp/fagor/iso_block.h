@@ -21,6 +21,23 @@ struct MWord {
     WordValue s;  // M19 S<angle>
 };
 
+// The parameters of a canned cycle block (G66-G89), by letter.
+struct CycleWords {
+    int16_t g = -1;  // the cycle, -1: none
+    uint16_t offset = 0;
+    std::array<WordValue, 26> letters{};
+
+    const WordValue& operator[](char letter) const {
+        return letters[static_cast<size_t>(letter - 'A')];
+    }
+    WordValue& operator[](char letter) { return letters[static_cast<size_t>(letter - 'A')]; }
+    bool has(char letter) const { return (*this)[letter].present; }
+    double value(char letter, double fallback) const {
+        const WordValue& w = (*this)[letter];
+        return w.present ? w.value : fallback;
+    }
+};
+
 // An ISO block with its words sorted out. Coordinates are as programmed (units and diameter not
 // applied yet): their meaning depends on the block's G functions (G92 presets, G72 factors, G20
 // limits ...), which the interpreter knows.
@@ -45,6 +62,7 @@ struct IsoBlock {
     WordValue f, s, t, d;
     std::array<MWord, kMaxM> m{};
     uint8_t mCount = 0;
+    CycleWords cycle;  // the words after a canned cycle's G are its parameters
 
     bool hasG(int number) const {
         for (uint8_t i = 0; i < gCount; ++i) {
@@ -56,7 +74,8 @@ struct IsoBlock {
     // Anything besides the G functions and their own arguments.
     bool hasOtherWords() const {
         return axisMask != 0 || i1.present || j.present || k.present || r.present || q.present ||
-               l.present || f.present || s.present || t.present || d.present || mCount != 0;
+               l.present || f.present || s.present || t.present || d.present || mCount != 0 ||
+               cycle.g >= 0;
     }
     void clear() {
         gCount = 0;
@@ -65,6 +84,7 @@ struct IsoBlock {
         i1 = i2 = j = k = r = q = l = cornerR = gK = gN = a51 = e51 = b51 = f = s = t = d =
             WordValue{};
         mCount = 0;
+        if (cycle.g >= 0) cycle = CycleWords{};
     }
 };
 

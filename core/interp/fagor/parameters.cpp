@@ -82,4 +82,12 @@ void Parameters::popLocalLevel() {
     if (m_level > 0) --m_level;
 }
 
+void Parameters::clobberForCycle() {
+    m_locals[kMaxLocalLevels].fill(0.0);
+    m_localSet[kMaxLocalLevels] = 0;
+    m_defined[kMaxLocalLevels] = 0;
+    m_globals[299 - 100] = 0.0;
+    m_globalSet.reset(299 - 100);
+}
+
 }  // namespace kerf::fagor

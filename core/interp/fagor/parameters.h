@@ -29,6 +29,10 @@ public:
     // CALLP: which locals the call that opened this level defined.
     uint32_t definedLocals() const { return m_defined[static_cast<size_t>(m_level)]; }
 
+    // A canned cycle works in local level 6 and P299 (spec part 2 §1.5): they are overwritten
+    // (cleared) by every cycle.
+    void clobberForCycle();
+
     // Interrupt subroutines may only use globals; OEM parameters need an OEM program.
     void setLocalsAllowed(bool allowed) { m_localsAllowed = allowed; }
     void setOemAllowed(bool allowed) { m_oemAllowed = allowed; }

@@ -2,6 +2,7 @@
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
 
@@ -89,6 +90,11 @@ void KlartextInterpreter::execute(const Statement& statement) {
             self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
         }
     };
+    if (auto missing = axisMissingFrom(statement, m_machineAxes)) {
+        fail("axis", KERF_TR_NOOP("this machine has no axis {1}"),
+             {std::string(1, axisLetter(*missing))});
+        return;
+    }
     std::visit(Visitor{*this}, statement);
 }
 

@@ -1,8 +1,10 @@
 #include "core/interp/klartext/klartext_interpreter.h"
 
 #include <algorithm>
+#include <set>
 
 #include "core/base/translate.h"
+#include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
 
@@ -35,6 +37,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
       m_parser(m_environment.get()),
       m_path(m_out) {
     if (m_settings.machine != nullptr) {
+        m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
         if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;
     }
     m_programmed = m_settings.startPosition;
@@ -57,7 +60,8 @@ bool KlartextInterpreter::waitForCheck() {
     if (!m_checkThread.joinable()) return !m_checkFailed;
     m_checking->executionOffset.store(SIZE_MAX);
     m_checkThread.join();
-    const DiagnosticList& found = m_checking->diagnostics;
+    DiagnosticList found = m_checking->diagnostics;
+    checkCalledPrograms(*m_checking, found);
     if (hasErrors(found)) {
         // The program would not have started: only the check's findings count.
         m_diagnostics.erase(
@@ -74,11 +78,12 @@ bool KlartextInterpreter::waitForCheck() {
 // ---- loading ---------------------------------------------------------------------------------
 
 ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path, std::string* error,
-                                              bool check) {
+                                              Origin origin, bool check) {
     for (auto& p : m_programs) {
         if (p->source->path() == path.string()) return p.get();
     }
-    auto source = program::SourceText::load(path);
+    auto source =
+        origin == Origin::Main ? program::SourceText::load(path) : m_root.loadProgram(path);
     if (!source) {
         if (error) *error = source.error().message();
         return nullptr;
@@ -87,6 +92,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
     program->source = *source;
     program->fileId = m_sources.add(path.string());
     program->folder = path.parent_path();
+    program->machineAxes = m_machineAxes;
     if (check) checkProgram(*program);
     m_programs.push_back(std::move(program));
     return m_programs.back().get();
@@ -94,7 +100,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
 
 bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
     std::string error;
-    ProgramFile* program = loadProgram(path, &error, mode == CheckMode::Inline);
+    ProgramFile* program = loadProgram(path, &error, Origin::Main, mode == CheckMode::Inline);
     if (program == nullptr) {
         appendDiagnostic(m_diagnostics,
                          Diagnostic::make(Severity::Error, "io", path.string(), 0, 0,
@@ -109,8 +115,10 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
         program->executionOffset.store(0);
         m_checkThread = std::thread([program] { checkProgram(*program); });
     } else {
-        appendDiagnostics(m_diagnostics, program->diagnostics);
-        if (hasErrors(program->diagnostics)) return false;
+        DiagnosticList found = program->diagnostics;
+        checkCalledPrograms(*program, found);
+        appendDiagnostics(m_diagnostics, found);
+        if (hasErrors(found)) return false;
     }
     startLevel(program, 0, 0);
     m_status = interp::RunStatus::BudgetUsed;
@@ -122,9 +130,12 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     program->source = program::SourceText::fromString(std::move(text), path);
     program->fileId = m_sources.add(path);
     program->folder = std::filesystem::path(path).parent_path();
+    program->machineAxes = m_machineAxes;
     checkProgram(*program);
-    appendDiagnostics(m_diagnostics, program->diagnostics);
-    bool ok = !hasErrors(program->diagnostics);
+    DiagnosticList found = program->diagnostics;
+    checkCalledPrograms(*program, found);
+    appendDiagnostics(m_diagnostics, found);
+    bool ok = !hasErrors(found);
     m_programs.push_back(std::move(program));
     if (!ok) return false;
     startLevel(m_programs.back().get(), 0, 0);
@@ -416,13 +427,10 @@ void KlartextInterpreter::gotoLabel(const LabelTarget& target) {
     jumpTo(*position);
 }
 
-void KlartextInterpreter::callProgram(const CallPgm& call) {
-    const ProgramFile& caller = *m_levels.back().program;
-    auto path = m_root.resolve(call.path, caller.folder);
-    if (!path) {
-        fail("path", path.error().messageTemplate.c_str(), path.error().args);
-        return;
-    }
+Expected<std::filesystem::path> KlartextInterpreter::calledProgramPath(
+    const std::string& name, const std::filesystem::path& callerFolder) const {
+    auto path = m_root.resolve(name, callerFolder);
+    if (!path) return path.error();
     std::filesystem::path target = *path;
     std::error_code ignored;
     if (!std::filesystem::exists(target, ignored)) {
@@ -438,16 +446,57 @@ void KlartextInterpreter::callProgram(const CallPgm& call) {
     }
     // The name actually opened is checked: "noext" may have become a link "noext.H" to outside.
     if (MaybeError refused = m_root.admit(target)) {
-        fail("path", refused->messageTemplate.c_str(), {call.path});
+        return Diagnostic::make(Severity::Error, "path", "", 0, 0, refused->messageTemplate, name);
+    }
+    return target;
+}
+
+void KlartextInterpreter::checkCalledPrograms(const ProgramFile& program, DiagnosticList& out) {
+    std::vector<const ProgramFile*> pending{&program};
+    std::set<const ProgramFile*> seen{&program};
+    while (!pending.empty()) {
+        const ProgramFile* caller = pending.back();
+        pending.pop_back();
+        for (const ProgramCall& call : caller->calls) {
+            auto error = [&](const char* code, const char* text, std::vector<std::string> args) {
+                Diagnostic d = Diagnostic::make(Severity::Error, code, caller->source->path(),
+                                                call.line, call.column, text);
+                d.args = std::move(args);
+                appendDiagnostic(out, std::move(d));
+            };
+            auto target = calledProgramPath(call.name, caller->folder);
+            if (!target) {
+                error("path", target.error().messageTemplate.c_str(), target.error().args);
+                continue;
+            }
+            std::string reason;
+            ProgramFile* callee = loadProgram(*target, &reason, Origin::Called);
+            if (callee == nullptr) {
+                error("io", KERF_TR_NOOP("cannot call program {1}: {2}"), {call.name, reason});
+                continue;
+            }
+            if (!seen.insert(callee).second) continue;
+            appendDiagnostics(out, callee->diagnostics);
+            pending.push_back(callee);
+        }
+    }
+}
+
+void KlartextInterpreter::callProgram(const CallPgm& call) {
+    const ProgramFile& caller = *m_levels.back().program;
+    auto path = calledProgramPath(call.path, caller.folder);
+    if (!path) {
+        fail("path", path.error().messageTemplate.c_str(), path.error().args);
         return;
     }
+    const std::filesystem::path& target = *path;
     if (static_cast<int>(m_levels.size()) > m_settings.maxProgramNesting) {
         fail("nesting", KERF_TR_NOOP("program calls nested deeper than {1} levels"),
              {std::to_string(m_settings.maxProgramNesting)});
         return;
     }
     std::string error;
-    ProgramFile* program = loadProgram(target, &error);
+    ProgramFile* program = loadProgram(target, &error, Origin::Called);
     if (program == nullptr) {
         fail("io", KERF_TR_NOOP("cannot call program {1}: {2}"), {call.path, error});
         return;

@@ -123,7 +123,9 @@ private:
 
     // Program flow (klartext_interpreter.cpp).
     bool waitForCheck();
-    ProgramFile* loadProgram(const std::filesystem::path& path, std::string* error,
+    // The main program is the operator's choice; called programs are opened through the NC root.
+    enum class Origin : uint8_t { Main, Called };
+    ProgramFile* loadProgram(const std::filesystem::path& path, std::string* error, Origin origin,
                              bool check = true);
     void startLevel(ProgramFile* program, size_t returnOffset, uint32_t returnLine);
     bool endOfProgram(bool explicitEnd);
@@ -135,6 +137,12 @@ private:
     void returnFromLabel();
     void gotoLabel(const LabelTarget& target);
     void callProgram(const CallPgm& call);
+    // The file a `CALL PGM name` from `callerFolder` opens, or why it cannot be called.
+    Expected<std::filesystem::path> calledProgramPath(
+        const std::string& name, const std::filesystem::path& callerFolder) const;
+    // Loads and checks every program `program` calls by name, and theirs, once each: a missing
+    // or faulty called program fails the check of the main program, before anything runs.
+    void checkCalledPrograms(const ProgramFile& program, DiagnosticList& out);
 
     // Motion and machine functions (klartext_motion.cpp).
     void executeLinear(const LinearBlock& block);
@@ -253,6 +261,7 @@ private:
 
     program::SourceRegistry& m_sources;
     KlartextSettings m_settings;
+    AxisMask m_machineAxes = 0x1ff;  // the machine's enabled axes; all without a machine
     program::NcRoot m_root;
     std::unique_ptr<FormulaEnvironment> m_environment;  // an Environment
     BlockParser m_parser;

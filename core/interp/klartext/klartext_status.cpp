@@ -66,6 +66,7 @@ interp::ProgramStatus KlartextInterpreter::programStatus() const {
     status.activeM.push_back(m_coolant ? 8 : 9);
     if (m_modalCycleCall) status.activeM.push_back(89);
     status.line = m_at.line;
+    status.blockNumber = m_at.blockNumber;
 
     status.motion.spindleRpm = m_spindleSpeed;
     status.motion.feedMm = m_feed;

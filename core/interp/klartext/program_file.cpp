@@ -8,6 +8,7 @@
 #include "core/cycles/cycle_registry.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
 
@@ -58,6 +59,7 @@ void checkProgram(ProgramFile& program) {
     out.clear();
     program.numberedLabels.clear();
     program.namedLabels.clear();
+    program.calls.clear();
     const std::string& file = program.source->path();
     BlockReader reader(program.source->text());
     program::LogicalLine line;
@@ -109,6 +111,11 @@ void checkProgram(ProgramFile& program) {
             if (unnumbered++ == 0) firstUnnumberedLine = line.firstLine;
         }
         const Statement& s = block.statement;
+        if (auto missing = axisMissingFrom(s, program.machineAxes)) {
+            diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
+                 KERF_TR_NOOP("this machine has no axis {1}"),
+                 {std::string(1, axisLetter(*missing))});
+        }
         if (const auto* begin = std::get_if<BeginPgm>(&s)) {
             if (!firstBlock || sawBegin) {
                 diag(Severity::Error, "structure", line.firstLine, 1,
@@ -139,17 +146,22 @@ void checkProgram(ProgramFile& program) {
                 diag(Severity::Error, "label", line.firstLine, 1,
                      KERF_TR_NOOP("label {1} is defined twice"), {labelText(label->target)});
             }
+        } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
+            const size_t at = line.text.find(callPgm->path);
+            program.calls.push_back({callPgm->path,
+                                     line.lineAt(at == std::string_view::npos ? 0 : at),
+                                     line.columnAt(at == std::string_view::npos ? 0 : at)});
         } else if (const auto* call = std::get_if<CallLabel>(&s)) {
             targets.push_back({call->target, line.firstLine, 1});
         } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {
             targets.push_back({jump->target, line.firstLine, 1});
         } else if (const auto* deferred = std::get_if<Deferred>(&s)) {
-            diag(Severity::Warning, "not-supported", line.firstLine, 1,
+            diag(Severity::Error, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
                  {deferred->feature});
         } else if (const auto* cycle = std::get_if<CycleDefinition>(&s);
                    cycle && cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
-            diag(Severity::Warning, "not-supported", line.firstLine, 1,
+            diag(Severity::Error, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP(
                      "cycle {1} is not supported yet; the program cannot run past this block"),
                  {std::to_string(cycle->number)});

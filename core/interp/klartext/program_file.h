@@ -6,8 +6,10 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "core/base/diagnostic.h"
+#include "core/geometry/axes.h"
 #include "core/program/source_text.h"
 
 namespace kerf::klartext {
@@ -16,6 +18,13 @@ namespace kerf::klartext {
 struct LabelPosition {
     size_t offset = 0;
     uint32_t line = 0;
+};
+
+// A `CALL PGM` block as the check found it, so the called program can be checked too.
+struct ProgramCall {
+    std::string name;
+    uint32_t line = 0;
+    uint32_t column = 0;
 };
 
 // A loaded conversational program with its label index, built by a full syntax check.
@@ -27,6 +36,8 @@ struct ProgramFile {
     std::unordered_map<std::string, LabelPosition> namedLabels;
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
+    std::vector<ProgramCall> calls;
+    AxisMask machineAxes = 0x1ff;  // the axes the machine has; every axis when there is no machine
 
     // For a check running alongside execution: how far execution has read. The check stays
     // within a window ahead of it so the text between them is all that is resident; SIZE_MAX lets
@@ -39,8 +50,9 @@ struct ProgramFile {
 };
 
 // Checks every block of the program's syntax, indexes its labels and reports what cannot run:
-// unknown jump targets, labels defined twice, missing BEGIN/END PGM, block numbers out of order,
-// and (as warnings) features this release parses but does not execute.
+// unknown jump targets, labels defined twice, features this release parses but does not execute
+// (errors: the program could not run to its end), missing BEGIN/END PGM and block numbers out of
+// order (warnings).
 void checkProgram(ProgramFile& program);
 
 // Whether the program's BEGIN PGM block says INCH (its first block; MM otherwise).

@@ -1,7 +1,11 @@
 #include "core/program/nc_root.h"
 
+#include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -104,6 +108,40 @@ TEST_F(NcRootTest, LoadedProgramSurvivesTheFileBeingTruncated) {
     ASSERT_TRUE(program.ok());
     fs::resize_file(file, 0);
     EXPECT_EQ((*program)->text(), "0 BEGIN PGM P MM\n1 END PGM P MM\n");
+}
+
+TEST_F(NcRootTest, ALinkSwappedInAfterTheCheckIsNotFollowed) {
+    // Another process swaps a folder of the root with a link to the outside, again and again,
+    // while programs are read: a read either gets the file inside or is refused, never the
+    // file outside (the check and the open are one step, not two).
+    fs::create_directories(root / "outside");
+    std::ofstream(root / "outside" / "P.H") << "secret";
+    NcRoot nc(root / "parts");
+    std::ofstream(root / "parts" / "a" / "P.H") << "inside";
+    fs::create_directory_symlink(root / "outside", root / "parts" / "b");
+    std::atomic<bool> stop{false};
+    std::thread swapper([&] {
+        const fs::path a = root / "parts" / "a";
+        const fs::path b = root / "parts" / "b";
+        const fs::path parked = root / "parts" / "parked";
+        while (!stop) {
+            std::rename(a.c_str(), parked.c_str());
+            std::rename(b.c_str(), a.c_str());
+            std::rename(parked.c_str(), b.c_str());
+        }
+    });
+    int inside = 0;
+    int leaked = 0;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
+    while (std::chrono::steady_clock::now() < end) {
+        auto text = nc.read(root / "parts" / "a" / "P.H");
+        if (text && *text == "secret") ++leaked;
+        if (text && *text == "inside") ++inside;
+    }
+    stop = true;
+    swapper.join();
+    EXPECT_EQ(leaked, 0);
+    EXPECT_GT(inside, 0);
 }
 
 }  // namespace

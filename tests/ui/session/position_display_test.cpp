@@ -1,5 +1,6 @@
 #include "ui/status/position_display.h"
 
+#include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
 
@@ -89,6 +90,28 @@ TEST(PositionDisplay, MarksEachAxisNotReferencedUntilItIsHomed) {
     EXPECT_TRUE(display.notReferencedShown(Axis::X));
     EXPECT_TRUE(display.notReferencedShown(Axis::Y));
     EXPECT_FALSE(display.notReferencedShown(Axis::Z));
+}
+
+// The block being executed is named as the program numbers it: Klartext block 5 (on line 7
+// after a CYCL DEF's parameter lines), FAGOR N30, a FAGOR block without N by its line.
+TEST(PositionDisplay, NamesTheExecutingBlockByItsNumber) {
+    test::testApp();
+    auto state = [](const PositionDisplay& display) {
+        return display.findChild<QLabel*>(QStringLiteral("runState"))->text();
+    };
+    PositionDisplay mill(*machine::loadMachine("mill"));
+    task::MachineStatus status;
+    status.block.line = 7;
+    status.block.blockNumber = 5;
+    mill.setStatus(status);
+    EXPECT_TRUE(state(mill).endsWith(QStringLiteral("Block 5"))) << state(mill).toStdString();
+    PositionDisplay lathe(*machine::loadMachine("lathe"));
+    status.block.blockNumber = 30;
+    lathe.setStatus(status);
+    EXPECT_TRUE(state(lathe).endsWith(QStringLiteral("N30"))) << state(lathe).toStdString();
+    status.block.blockNumber = -1;
+    lathe.setStatus(status);
+    EXPECT_TRUE(state(lathe).endsWith(QStringLiteral("Line 7"))) << state(lathe).toStdString();
 }
 
 TEST(OverrideControls, KeysStepTheOverrideAndTheyAreTouchSized) {

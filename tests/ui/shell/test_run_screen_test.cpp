@@ -115,7 +115,7 @@ TEST(TestRunScreen, OpeningAnotherProgramForgetsTheOldOnesTestRunAndLines) {
     ASSERT_TRUE(
         QTest::qWaitFor([run] { return run->state() == TestRunController::State::Failed; }, 20000));
     ASSERT_NE(run->program(), nullptr);
-    // The test run's error names line 4 of BAD.H.
+    // The test run's error names block 3 (line 4) of BAD.H.
     QTreeWidget* list = window.messages()->list();
     const auto testRunRow = [list] {
         for (int i = 0; i < list->topLevelItemCount(); ++i) {
@@ -124,7 +124,7 @@ TEST(TestRunScreen, OpeningAnotherProgramForgetsTheOldOnesTestRunAndLines) {
         return -1;
     };
     ASSERT_GE(testRunRow(), 0);
-    EXPECT_EQ(list->topLevelItem(testRunRow())->text(2), QStringLiteral("4"));
+    EXPECT_EQ(list->topLevelItem(testRunRow())->text(2), QStringLiteral("3"));
 
     // Programming, then another program: the test run of BAD.H is dropped.
     window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);

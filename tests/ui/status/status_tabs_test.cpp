@@ -25,6 +25,7 @@ Status millStatus() {
     s.cycle = Status::Cycle{200, "DRILLING"};
     s.activeM = {3, 8};
     s.line = 20;
+    s.blockNumber = 17;  // a CYCL DEF's parameter lines before it
     s.tool.number = 3;
     s.tool.name = "MILL_D12";
     s.tool.lengthMm = 40.0;
@@ -77,7 +78,8 @@ TEST(StatusTabs, ProgramToolAndTransformationsInMillimetres) {
     EXPECT_EQ(tabs.valueOf(Tab::Program, "Label"), "LBL 1");
     EXPECT_EQ(tabs.valueOf(Tab::Program, "Cycle"), "200 DRILLING");
     EXPECT_EQ(tabs.valueOf(Tab::Program, "M functions"), "M3 M8");
-    EXPECT_EQ(tabs.valueOf(Tab::Program, "Line"), "20");
+    // The block as the program numbers it, not the file line.
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Block"), "17");
     EXPECT_EQ(tabs.valueOf(Tab::Program, "Unit"), "mm");
 
     EXPECT_EQ(tabs.valueOf(Tab::Tool, "Tool"), "3");
@@ -207,6 +209,20 @@ TEST(StatusTabs, FagorToolOffsetAndLocalLevels) {
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Zero offset"), "G54 G58");
     EXPECT_EQ(tabs.table(Tab::Parameters)->item(0, 2)->text(), "local, level 1");
     EXPECT_EQ(tabs.table(Tab::Parameters)->item(1, 2)->text(), "global");
+}
+
+TEST(StatusTabs, FagorBlocksByTheirNNumberAndByLineWithout) {
+    test::testApp();
+    StatusTabs tabs('P');
+    interp::ProgramStatus s;
+    s.parameterLetter = 'P';
+    s.line = 4;
+    s.blockNumber = 30;
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Block"), "N30");
+    s.blockNumber = -1;  // a FAGOR block without N
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Program, "Block"), "line 4");
 }
 
 TEST(StatusTabs, ProbeResult) {

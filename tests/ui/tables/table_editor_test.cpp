@@ -34,7 +34,7 @@ QModelIndex cellOf(const TncTableModel& model, int row, const char* column) {
 TEST(TableEditor, NumericCellsRefuseTextAndSavedValuesReadBack) {
     test::testApp();
     const fs::path file = writeToolTable("hmi_tables_edit");
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
     TncTableModel& model = *editor.model();
@@ -60,7 +60,7 @@ TEST(TableEditor, DuplicateToolNumberBlocksTheSave) {
     test::testApp();
     const fs::path file = writeToolTable("hmi_tables_duplicate");
     const std::string before = readWholeFile(file).value();
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     ASSERT_TRUE(editor.open(file));
     TncTableModel& model = *editor.model();
     editor.view()->setCurrentIndex(QModelIndex());
@@ -82,7 +82,7 @@ TEST(TableEditor, DuplicateToolNumberBlocksTheSave) {
 TEST(TableEditor, DeleteRowAsksAndCanBeUndone) {
     test::testApp();
     const fs::path file = writeToolTable("hmi_tables_delete");
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     ASSERT_TRUE(editor.open(file));
     TncTableModel& model = *editor.model();
     editor.view()->setCurrentIndex(QModelIndex());
@@ -107,7 +107,7 @@ TEST(TableEditor, PresetTableEditsAndUnits) {
     const fs::path dir = kerf::test::uniqueTempDir("hmi_tables_preset");
     ASSERT_FALSE(
         writeFileAtomically(dir / "PRESET.PR", tables::PresetTable::createDefault()).has_value());
-    TableEditor editor;
+    TableEditor editor(dir);
     ASSERT_TRUE(editor.open(dir / "PRESET.PR"));
     TncTableModel& model = *editor.model();
     const auto x = model.table().findColumn("X");
@@ -127,7 +127,7 @@ TEST(TableEditor, PresetTableEditsAndUnits) {
 
 TEST(TableEditor, MissingFileIsReported) {
     test::testApp();
-    TableEditor editor;
+    TableEditor editor("/nonexistent");
     QSignalSpy messages(&editor, &TableEditor::message);
     EXPECT_FALSE(editor.open("/nonexistent/TOOL.T"));
     EXPECT_EQ(messages.count(), 1);

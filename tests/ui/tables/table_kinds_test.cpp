@@ -55,7 +55,7 @@ TEST(TableKinds, DatumTableEditAndDeleteSaveTheExpectedBytes) {
                                      "0    +0        +0        origin\n"
                                      "1    +10       -5        vice\n"
                                      "[END]\n");
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
     EditableTableModel& model = *editor.tableModel();
@@ -85,7 +85,7 @@ TEST(TableKinds, DuplicateDatumNumberBlocksTheSave) {
         "1    +1        b\n"
         "[END]\n";
     const fs::path file = writeTable("hmi_kinds_datum_dup", "FIX.D", original);
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
     ASSERT_TRUE(
@@ -105,7 +105,7 @@ TEST(TableKinds, PointTableFlagSavesTheExpectedBytes) {
                                      "NR   X       Y       Z       FADE CLEAR\n"
                                      "0    +10     +20     +0\n"
                                      "[END]\n");
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
     EditableTableModel& model = *editor.tableModel();
@@ -136,7 +136,7 @@ TEST(TableKinds, ProbeTableEditsFeedAndRefusesBadWords) {
     const fs::path file = standardTablePath(dir, TableKind::Probe);
     EXPECT_EQ(file.filename(), "tchprobe.tp");
     ASSERT_FALSE(writeFileAtomically(file, defaultTableContent(TableKind::Probe)).has_value());
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
     EditableTableModel& model = *editor.tableModel();
@@ -173,7 +173,7 @@ TEST(TableKinds, FagorToolOffsetsInsertEditDeleteAndUndo) {
     const fs::path file = standardTablePath(dir, TableKind::FagorToolOffsets);
     ASSERT_FALSE(
         writeFileAtomically(file, "%TOOL OFFSETS,MX,\nD1 X12.5 Z-30 F3 R0.8\n").has_value());
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
     EXPECT_EQ(editor.model(), nullptr);  // not a TNC table
@@ -218,7 +218,7 @@ TEST(TableKinds, FagorZeroOffsetsHaveFixedRowsForTheMachineAxes) {
     const fs::path file = standardTablePath(dir, TableKind::FagorZeroOffsets);
     ASSERT_FALSE(
         writeFileAtomically(file, "%ZERO OFFSETS,MX,\nG54 X0 Z330\nACTIVE G54\n").has_value());
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     editor.setAxisLetters("XZ");
     QSignalSpy messages(&editor, &TableEditor::message);
     ASSERT_TRUE(editor.open(file));
@@ -241,7 +241,7 @@ TEST(TableKinds, FagorToolTableNewToolUsesItsOwnOffset) {
     const fs::path dir = kerf::test::uniqueTempDir("hmi_kinds_fagor_tools");
     const fs::path file = standardTablePath(dir, TableKind::FagorTools);
     ASSERT_FALSE(writeFileAtomically(file, "T1 D1 FAM3\n").has_value());
-    TableEditor editor;
+    TableEditor editor(file.parent_path());
     ASSERT_TRUE(editor.open(file));
     EditableTableModel& model = *editor.tableModel();
     ASSERT_TRUE(editor.insertRow());

@@ -46,10 +46,11 @@ struct Fixture {
             std::filesystem::path(KERF_SOURCE_DIR) / "tests/graphics/programs/TOOL.T",
             root / "TOOL.T");
         controller.setTickMs(0);  // the tests drive the playback with advance()
+        controller.setMachiningClock(motion::makeSimulatedClock);
     }
     std::filesystem::path root = kerf::test::uniqueTempDir("testrun");
     machine::MachineConfig machine;
-    TestRunController controller{machine, root, motion::makeSimulatedClock};
+    TestRunController controller{machine, root};
     // Starts the program and waits until it is interpreted.
     void start(const char* text, program::Dialect dialect = program::Dialect::Klartext,
                const char* name = "PARTS.H") {

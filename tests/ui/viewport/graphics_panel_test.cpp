@@ -64,7 +64,8 @@ TEST(GraphicsPanel, ShowsTheTestRunPicksBlocksAndLightsUpTheCursorBlock) {
     std::filesystem::copy_file(
         std::filesystem::path(KERF_SOURCE_DIR) / "tests/graphics/programs/TOOL.T", root / "TOOL.T");
     const machine::MachineConfig machine = *machine::loadMachine("mill");
-    TestRunController controller(machine, root, motion::makeSimulatedClock);
+    TestRunController controller(machine, root);
+    controller.setMachiningClock(motion::makeSimulatedClock);
     controller.setTickMs(0);
     GraphicsPanel panel(controller, machine);
     panel.resize(800, 600);

@@ -271,3 +271,23 @@ TEST_F(FagorRun, BackgroundCheckFailureIsReported) {
 
 }  // namespace
 }  // namespace kerf::fagor
+
+namespace kerf::fagor {
+namespace {
+
+TEST_F(FagorRun, CannedCycleOverwritesP299) {
+    // Spec part 2 §1.5: the machining cycles use global P299 for their own computation.
+    ASSERT_EQ(run("(P299=5)\n(P298=7)\nG95 F0.2 S500 M3\nG0 X70 Z2\n"
+                  "G81 X40 Z0 Q40 R-30 C3\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    double value = -1.0;
+    Problem problem;
+    ASSERT_TRUE(interpreter->parameters().get(299, value, problem));
+    EXPECT_EQ(value, 0.0);
+    ASSERT_TRUE(interpreter->parameters().get(298, value, problem));
+    EXPECT_EQ(value, 7.0);
+}
+
+}  // namespace
+}  // namespace kerf::fagor

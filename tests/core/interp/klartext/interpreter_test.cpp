@@ -134,6 +134,77 @@ TEST_F(InterpreterTest, BackgroundCheckGivesTheSameResult) {
     EXPECT_EQ(bad->diagnostics().front().line, 3u);
 }
 
+TEST_F(InterpreterTest, TheCheckFollowsProgramCalls) {
+    // A called program that is missing, or has an error, fails the main program's check at the
+    // call (or at the callee's own line), before the first block runs.
+    writeFileAtomically(dir / "M.H",
+                        "0 BEGIN PGM M MM\n1 L X+1 R0 FMAX\n2 CALL PGM GONE.H\n"
+                        "3 END PGM M MM\n");
+    auto missing = make();
+    EXPECT_FALSE(missing->load(dir / "M.H"));
+    ASSERT_TRUE(hasErrors(missing->diagnostics()));
+    const Diagnostic& call = missing->diagnostics().back();
+    EXPECT_EQ(call.file, (dir / "M.H").string());
+    EXPECT_EQ(call.line, 3u);
+    EXPECT_EQ(call.column, 12u);  // "2 CALL PGM GONE.H": the name starts at column 12
+
+    // M2 calls A, A calls B (without extension), B has an unknown block on its line 2.
+    writeFileAtomically(dir / "M2.H", "0 BEGIN PGM M2 MM\n1 CALL PGM A.H\n2 END PGM M2 MM\n");
+    writeFileAtomically(dir / "A.H", "0 BEGIN PGM A MM\n1 CALL PGM B\n2 END PGM A MM\n");
+    writeFileAtomically(dir / "B.H",
+                        "0 BEGIN PGM B MM\n1 L X+1 R0 FMAX\n2 BOGUS\n"
+                        "3 END PGM B MM\n");
+    auto nested = make();
+    EXPECT_FALSE(nested->load(dir / "M2.H"));
+    ASSERT_TRUE(hasErrors(nested->diagnostics()));
+    EXPECT_EQ(nested->diagnostics().front().file, (dir / "B.H").string());
+    EXPECT_EQ(nested->diagnostics().front().line, 3u);
+
+    // Repaired, the same chain passes, and a program calling itself is checked once.
+    writeFileAtomically(dir / "B.H", "0 BEGIN PGM B MM\n1 CALL PGM A.H\n2 END PGM B MM\n");
+    auto fine = make();
+    EXPECT_TRUE(fine->load(dir / "M2.H"));
+    EXPECT_FALSE(hasErrors(fine->diagnostics()));
+}
+
+TEST_F(InterpreterTest, NothingIsWrittenWhenACalledProgramHasAnError) {
+    // The background check covers the called programs too: the F-PRINT before the call to a
+    // faulty program must not write.
+    writeFileAtomically(dir / "MASK.A", "\"X\";\n");
+    writeFileAtomically(dir / "SUB.H", "0 BEGIN PGM SUB MM\n1 BOGUS\n2 END PGM SUB MM\n");
+    writeFileAtomically(dir / "W.H",
+                        "0 BEGIN PGM W MM\n1 FN 16: F-PRINT MASK.A / OUT.TXT\n"
+                        "2 CALL PGM SUB.H\n3 END PGM W MM\n");
+    auto k = make();
+    ASSERT_TRUE(k->load(dir / "W.H", KlartextInterpreter::CheckMode::Background));
+    while (k->run(out, 1) == interp::RunStatus::BudgetUsed) {
+    }
+    EXPECT_TRUE(k->checkFailed());
+    EXPECT_FALSE(fs::exists(dir / "OUT.TXT"));
+}
+
+TEST_F(InterpreterTest, AnAxisTheMachineLacksIsAnError) {
+    // The built-in mill has X, Y and Z: an A word is refused at its column instead of being
+    // dropped from the move.
+    ASSERT_EQ(machine.enabledAxisLetters(), "XYZ");
+    writeFileAtomically(dir / "R.H",
+                        "0 BEGIN PGM R MM\n1 L X+10 IA+90 R0 FMAX\n"
+                        "2 END PGM R MM\n");
+    auto k = make();
+    EXPECT_FALSE(k->load(dir / "R.H"));
+    ASSERT_TRUE(hasErrors(k->diagnostics()));
+    const Diagnostic& axis = k->diagnostics().front();
+    EXPECT_EQ(axis.line, 2u);
+    EXPECT_EQ(axis.column, 10u);  // "1 L X+10 IA+90": IA starts at column 10
+    EXPECT_EQ(axis.message(), "this machine has no axis A");
+    // A machine that has the axis accepts the same block.
+    machine::AxisConfig rotary;
+    rotary.letter = 'A';
+    machine.axes.push_back(rotary);
+    auto fourAxes = make();
+    EXPECT_TRUE(fourAxes->load(dir / "R.H"));
+}
+
 TEST_F(InterpreterTest, ProgramCallsCannotRecurseForever) {
     writeFileAtomically(dir / "SELF.H",
                         "0 BEGIN PGM SELF MM\n1 CALL PGM SELF.H\n2 END PGM SELF MM\n");

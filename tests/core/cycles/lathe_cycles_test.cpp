@@ -1,0 +1,110 @@
+// FAGOR lathe cycles as pure expansions: properties over many random sections and threads,
+// checked against independent geometry (the finished section, the helix of the thread).
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/cycles/lathe/section_turning.h"
+#include "core/cycles/lathe/threading.h"
+
+namespace kerf::cycles::lathe {
+namespace {
+
+// Depth of p below the finished taper A-B of an external turning (> 0: inside the part).
+double insidePart(const Vec2& p, const Vec2& a, const Vec2& b) {
+    if (p.x() > a.x() || p.x() < b.x()) return -1.0;  // outside the section's Z range
+    const double t = (p.x() - a.x()) / (b.x() - a.x());
+    return a.y() + t * (b.y() - a.y()) - p.y();
+}
+
+TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 500; ++trial) {
+        TurningSection s;
+        const Vec2 a(0.0, 5.0 + 20.0 * u(random));
+        const Vec2 b(-5.0 - 40.0 * u(random), a.y() + 15.0 * u(random));
+        s.start = a;
+        s.elements.push_back({b, std::nullopt, false});
+        s.maxStep = 0.2 + 3.0 * u(random);
+        s.allowanceX = u(random) < 0.5 ? 0.0 : u(random);
+        s.allowanceZ = u(random) < 0.5 ? 0.0 : u(random);
+        const double pick = u(random);
+        if (pick < 0.3) s.retract = 0.0;
+        if (pick > 0.6) s.retract = 2.0 * u(random);
+        s.finalRoughingFeed = u(random) < 0.5 ? 0.2 : 0.0;
+        s.finishingFeed = u(random) < 0.5 ? 0.1 : 0.0;
+        const Vec2 call(1.0 + s.allowanceZ, b.y() + s.allowanceX + 10.0 * u(random));
+        LathePath path(call);
+        LatheError error;
+        ASSERT_TRUE(expandTurningSection(s, call, path, error)) << error.messageTemplate;
+        Vec2 at = call;
+        int cuts = 0;
+        double lastLevel = call.y();
+        for (const LatheStep& step : path.steps()) {
+            // Sample the move: no point of it lies inside the finished section.
+            for (int k = 0; k <= 20; ++k) {
+                const Vec2 p = at + (step.to - at) * (k / 20.0);
+                ASSERT_LE(insidePart(p, a, b), 1e-9) << "trial " << trial;
+            }
+            const bool roughing = step.kind == LatheStep::Kind::Feed && step.feed == 0.0 &&
+                                  std::fabs(step.to.y() - at.y()) < 1e-12 &&
+                                  std::fabs(at.x() - call.x()) < 1e-12;
+            if (roughing) {
+                ++cuts;
+                EXPECT_LE(lastLevel - step.to.y(), s.maxStep + 1e-9);
+                lastLevel = step.to.y();
+            }
+            at = step.to;
+        }
+        // ceil(depth / C) passes down to the section plus its allowance.
+        const double depth = call.y() - (a.y() + s.allowanceX);
+        EXPECT_EQ(cuts, static_cast<int>(std::ceil(depth / s.maxStep - 1e-9))) << trial;
+        EXPECT_NEAR(lastLevel, a.y() + s.allowanceX, 1e-9);
+        EXPECT_EQ((at - call).norm(), 0.0);  // ends at the call point
+    }
+}
+
+TEST(LatheCycles, EveryThreadPassStartsOnTheSameHelix) {
+    std::mt19937 random(86);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        Thread t;
+        t.start = {5.0, 20.0};
+        t.end = {-30.0, 20.0 + (u(random) < 0.5 ? 0.0 : 5.0 * u(random))};
+        t.depth = 0.5 + 2.0 * u(random);
+        t.infeed = (u(random) < 0.5 ? 1.0 : -1.0) * (0.1 + 0.3 * u(random));
+        t.finishing = 0.2 * (u(random) - 0.5);
+        t.pitch = -(0.5 + 3.0 * u(random));  // along Z
+        t.infeedAngleDeg = 60.0 * (u(random) - 0.3);
+        t.spindleAngleDeg = 360.0 * u(random);
+        t.starts = 1 + static_cast<int>(3.0 * u(random));
+        t.safety = 1.0;
+        LathePath path(Vec2(10.0, 30.0));
+        LatheError error;
+        ASSERT_TRUE(expandThread(t, Vec2(10.0, 30.0), path, error)) << error.messageTemplate;
+        Vec2 at(10.0, 30.0);
+        int threads = 0;
+        for (const LatheStep& step : path.steps()) {
+            if (step.kind == LatheStep::Kind::Thread) {
+                ++threads;
+                // The helix of start j passes Z = start at angle W + 360 j / V: a cut starting
+                // at Z = z begins at W + 360 j / V + 360 (start - z) / P.
+                const double turns = (t.start.x() - at.x()) / -t.pitch;
+                double phase = step.angleDeg - t.spindleAngleDeg - 360.0 * turns;
+                phase = std::fmod(std::fmod(phase, 360.0) + 360.0, 360.0);
+                const double spacing = 360.0 / t.starts;
+                const double offStart = std::fmod(phase + 1e-6, spacing) - 1e-6;
+                EXPECT_NEAR(offStart, 0.0, 1e-6) << "trial " << trial;
+                EXPECT_NEAR(step.lead * std::fabs(step.to.x() - at.x()) / (step.to - at).norm(),
+                            -t.pitch, 1e-9);
+            }
+            at = step.to;
+        }
+        EXPECT_EQ(threads % t.starts, 0);
+    }
+}
+
+}  // namespace
+}  // namespace kerf::cycles::lathe

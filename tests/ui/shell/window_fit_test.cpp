@@ -1,0 +1,90 @@
+#include <QCoreApplication>
+#include <QPushButton>
+
+#include <gtest/gtest.h>
+
+#include "core/machine/machine_loader.h"
+#include "qt_test_app.h"
+#include "test_paths.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/mode_controller.h"
+#include "ui/shell/softkey_bar.h"
+#include "ui/shell/ui_language.h"
+
+// The panel is 1280x800: in every language, on every mode's every softkey row, on the mill and
+// the lathe, the window keeps that size. Long labels wrap or shrink inside their key; they never
+// push the window wider (it was 1287 px in English and 1352 px in Portuguese).
+namespace kerf::ui {
+namespace {
+
+struct Fit {
+    QString language;
+    const char* machine;
+};
+
+class WindowFit : public testing::TestWithParam<Fit> {};
+
+void expectFits(MainWindow& window, const QString& where) {
+    for (int row = 0; row < window.softkeys()->rowCount(); ++row) {
+        window.softkeys()->showRow(row);
+        QCoreApplication::processEvents();
+        EXPECT_LE(window.minimumSizeHint().width(), 1280) << where.toStdString() << " row " << row;
+        EXPECT_LE(window.minimumSizeHint().height(), 800) << where.toStdString() << " row " << row;
+        EXPECT_EQ(window.size(), QSize(1280, 800)) << where.toStdString() << " row " << row;
+    }
+}
+
+TEST_P(WindowFit, EveryScreenFits1280x800) {
+    test::testApp();
+    const Fit fit = GetParam();
+    HmiContext context;
+    context.machine = *machine::loadMachine(fit.machine);
+    const auto dir = kerf::test::uniqueTempDir("hmi_fit");
+    context.ncRoot = dir;
+    context.recoveryFolder = dir / "recovery";
+    MainWindow window(std::move(context));
+    ASSERT_TRUE(window.setLanguage(fit.language));
+    window.resize(1280, 800);
+    window.show();
+    QCoreApplication::processEvents();
+    for (int layout = 0; layout < 4; ++layout) {
+        for (auto mode : {task::ProgrammingMode::Programming, task::ProgrammingMode::TestRun}) {
+            window.modes().requestProgrammingMode(mode);
+            expectFits(window, QStringLiteral("programming mode %1").arg(static_cast<int>(mode)));
+        }
+        ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("layout")));
+    }
+    // The cycle catalogue's softkey levels: every group's row of cycles.
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("cyclDef")));
+    for (int key = 0; key < SoftkeyBar::kKeys; ++key) {
+        const QString id = window.softkeys()->keyId(key);
+        if (id.isEmpty() || id == QLatin1String("back") || id == QLatin1String("cycleOverview")) {
+            continue;
+        }
+        ASSERT_TRUE(window.softkeys()->press(key));
+        expectFits(window, QStringLiteral("cycle group ") + id);
+        ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("back")));
+    }
+    for (auto mode :
+         {task::MachineMode::Manual, task::MachineMode::Handwheel, task::MachineMode::Mdi,
+          task::MachineMode::SingleBlock, task::MachineMode::FullSequence}) {
+        window.modes().requestMachineMode(mode);
+        expectFits(window, QStringLiteral("machine mode %1").arg(static_cast<int>(mode)));
+    }
+    ASSERT_TRUE(window.setLanguage(QStringLiteral("en")));
+}
+
+std::string fitName(const testing::TestParamInfo<Fit>& info) {
+    return info.param.language.toStdString() + "_" + info.param.machine;
+}
+
+INSTANTIATE_TEST_SUITE_P(Languages, WindowFit,
+                         testing::Values(Fit{"en", "mill"}, Fit{"de", "mill"}, Fit{"es", "mill"},
+                                         Fit{"pl", "mill"}, Fit{"pt", "mill"}, Fit{"en", "lathe"},
+                                         Fit{"de", "lathe"}, Fit{"es", "lathe"}, Fit{"pl", "lathe"},
+                                         Fit{"pt", "lathe"}),
+                         fitName);
+
+}  // namespace
+}  // namespace kerf::ui
