@@ -12,6 +12,7 @@
 #include "motion/runtime/machine_realtime_options.h"
 #include "motion/runtime/realtime_motion_port.h"
 #include "motion/runtime/work_area_check.h"
+#include "motion/sim/simulated_clock.h"
 #include "ui/shell/hmi_main.h"
 #endif
 
@@ -74,6 +75,7 @@ int main(int argc, char** argv) {
             std::make_unique<kerf::motion::RealtimeMotionPort>(
                 config, kerf::motion::machineRealtimeOptions(config)));
     };
+    hmi.machiningClock = kerf::motion::makeSimulatedClock;
     // The test run checks the work area with the check of Program run's planner.
     hmi.checkMoves = &kerf::motion::makeWorkAreaCheck;
     app.add_option("--machine", hmi.machine, "machine for the HMI: mill, lathe or a TOML file");

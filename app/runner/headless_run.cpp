@@ -15,6 +15,7 @@
 #include "core/base/atomic_file.h"
 #include "core/canon/tee_sink.h"
 #include "core/canon/trace_printer.h"
+#include "motion/sim/simulated_clock.h"
 
 namespace kerf::app {
 
@@ -58,7 +59,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         printDiagnostics(refused, diagnostics);
         return 1;
     }
-    canon::PathStatistics statistics(session->machine.rapidVelocityMmPerS);
+    canon::PathStatistics statistics;
     DisplayModeTracker displayMode(diameterByDefault(session->machine));
     canon::TeeSink sinks;
     sinks.add(statistics);
@@ -69,6 +70,14 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     if (drives.active()) sinks.add(drives.sink());
     MotionOutput motion(options, *session);
     if (motion.active()) sinks.add(motion.sink());
+    // The report's machining time: the planner and the servo cycle in simulated time, those of
+    // --motion when it runs, else a clock of their own (only for a report: it costs the
+    // simulation).
+    std::unique_ptr<task::MachiningClock> clock;
+    if (options.reportFile && !motion.active()) {
+        clock = motion::makeSimulatedClock(session->machine);
+        sinks.add(*clock);
+    }
 
     std::FILE* traceStream = nullptr;
     std::unique_ptr<canon::TracePrinter> trace;
@@ -101,6 +110,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         picture.setStart(interpreter.nominalPosition());
         drives.setStart(interpreter.nominalPosition(), runProblems);
         motion.setStart(interpreter.nominalPosition());
+        if (clock) clock->setStart(interpreter.nominalPosition());
         for (;;) {
             if (drives.stopped()) break;  // a drive fault ends the program
             if (motion.refused()) break;  // e.g. beyond a soft limit: nothing moved
@@ -116,6 +126,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
                 world.probePosition = world.position;
                 if (motion.active()) world = motion.drain();
                 if (drives.active()) world = drives.drain();
+                if (clock) clock->sync();
                 interpreter.resume(world);
                 continue;
             }
@@ -137,7 +148,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     trace.reset();
     if (traceStream != nullptr && traceStream != stdout) std::fclose(traceStream);
     const bool rejected = session->interpreter && session->interpreter->checkFailed();
-    canon::PathStatistics nothingRan(session->machine.rapidVelocityMmPerS);
+    canon::PathStatistics nothingRan;
     if (rejected) {
         // The program has errors: it counts as never started.
         blocks = 0;
@@ -150,6 +161,15 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     picture.finish(session->ready && !rejected, runProblems);
     drives.finish(session->ready && !rejected, runProblems);
     motion.finish(session->ready && !rejected, runProblems);
+    double machiningTimeS = 0.0;
+    if (session->ready && !rejected) {
+        if (clock) {
+            clock->finish();
+            machiningTimeS = clock->totalS();
+        } else {
+            machiningTimeS = motion.machiningTimeS();
+        }
+    }
 
     RunSummary summary;
     summary.diagnostics = session->allDiagnostics();
@@ -158,6 +178,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     summary.dialect = program::dialectName(session->dialect);
     summary.blocksExecuted = blocks;
     summary.xInDiameter = displayMode.xInDiameter();
+    summary.machiningTimeS = machiningTimeS;
     printDiagnostics(summary.diagnostics, diagnostics);
 
     if (options.reportFile) {

@@ -73,6 +73,7 @@ struct MotionOutput::State final : canon::Sink {
     motion::MachineModel model;
     SoftLimitGate gate;  // soft limits and the planner's rules, before anything moves
     std::unique_ptr<motion::SimulatedMachine> machine;
+    double startS = 0.0;  // simulated time when the program started (the drives enabled)
     std::optional<motion::MotionReport> report;
     // The probe results the program waited for (one per sync after probe moves).
     struct ProbeResult {
@@ -101,6 +102,7 @@ void MotionOutput::setStart(const Pose& start) {
     simulation.startPosition = start.values;
     if (s.options.samples) simulation.samplesCsvPath = s.options.samples->string();
     s.machine = std::make_unique<motion::SimulatedMachine>(s.session.machine, simulation);
+    s.startS = s.machine->timeS();
     s.gate.start(start.values, *s.machine);
 }
 
@@ -143,6 +145,11 @@ void MotionOutput::finish(bool programRan, DiagnosticList& problems) {
         if (d.file.empty()) d.file = s.options.program.string();
         problems.push_back(std::move(d));
     }
+}
+
+double MotionOutput::machiningTimeS() const {
+    if (!m_state || !m_state->report) return 0.0;
+    return m_state->report->durationS - m_state->startS;
 }
 
 void MotionOutput::addToReport(nlohmann::json& report, bool xInDiameter) const {

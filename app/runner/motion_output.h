@@ -44,6 +44,8 @@ public:
     // After the run: executes the rest when the program ran (nothing when it was rejected) and
     // appends the refusal or motion errors to `problems`.
     void finish(bool programRan, DiagnosticList& problems);
+    // After finish(): simulated time from the program's start until everything was executed.
+    double machiningTimeS() const;
     // Adds "motion" to the report; positions like the report's (lathe X in diameter if so).
     void addToReport(nlohmann::json& report, bool xInDiameter) const;
 

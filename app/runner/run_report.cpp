@@ -68,7 +68,7 @@ nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatis
     report["feed_bounds"] = {{"min", lower}, {"max", upper}};
     report["final_position"] = position;
     report["tool_changes"] = statistics.toolChanges();
-    report["machining_time_s"] = clean(statistics.machiningTimeS());
+    report["machining_time_s"] = clean(summary.machiningTimeS);
     return report;
 }
 

@@ -31,6 +31,7 @@ struct RunSummary {
     DiagnosticList diagnostics;
     uint64_t blocksExecuted = 0;
     bool xInDiameter = false;
+    double machiningTimeS = 0.0;  // from motion in simulated time (task::MachiningClock)
 };
 
 // The JSON report of `kerf run` (keys documented in docs/headless.md).

@@ -16,11 +16,6 @@ double arcLengthMm(const Pose& start, const ArcMove& arc) {
     return std::hypot(planar, axial);
 }
 
-PathStatistics::PathStatistics(double rapidMmPerS) : m_rapidMmPerS(rapidMmPerS) {
-    m_feedBounds.min.fill(0.0);
-    m_feedBounds.max.fill(0.0);
-}
-
 void PathStatistics::addFeedPoint(const Pose& pose) {
     if (m_feedBounds.empty) {
         m_feedBounds.min = pose.values;
@@ -34,24 +29,17 @@ void PathStatistics::addFeedPoint(const Pose& pose) {
     }
 }
 
-void PathStatistics::addFeedTime(double lengthMm, double feed) {
-    double mmPerMin = m_feedMode == FeedMode::PerRevolution ? feed * m_spindleRpm : feed;
-    if (mmPerMin > 0.0) m_timeS += lengthMm / mmPerMin * 60.0;
-}
-
 void PathStatistics::consume(const Command& command) {
     const CommandBody& body = command.body;
     if (const auto* rapid = std::get_if<RapidMove>(&body)) {
         double length = (rapid->target.xyz() - m_position.xyz()).norm();
         ++m_rapidCount;
         m_rapidLength += length;
-        if (m_rapidMmPerS > 0.0) m_timeS += length / m_rapidMmPerS;
         m_position = rapid->target;
     } else if (const auto* line = std::get_if<LinearMove>(&body)) {
         double length = (line->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;
         m_feedLength += length;
-        addFeedTime(length, line->feed);
         addFeedPoint(m_position);
         addFeedPoint(line->target);
         m_position = line->target;
@@ -59,7 +47,6 @@ void PathStatistics::consume(const Command& command) {
         double length = arcLengthMm(m_position, *arc);
         ++m_feedCount;
         m_feedLength += length;
-        addFeedTime(length, arc->feed);
         addFeedPoint(m_position);
         addFeedPoint(arc->target);
         PlaneAxes axes = planeAxes(arc->plane);
@@ -79,9 +66,6 @@ void PathStatistics::consume(const Command& command) {
         double length = (synced->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;
         m_feedLength += length;
-        if (synced->leadMmPerRev > 0.0 && m_spindleRpm > 0.0) {
-            m_timeS += length / (synced->leadMmPerRev * m_spindleRpm) * 60.0;
-        }
         addFeedPoint(m_position);
         addFeedPoint(synced->target);
         m_position = synced->target;
@@ -89,18 +73,11 @@ void PathStatistics::consume(const Command& command) {
         double length = (probe->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;
         m_feedLength += length;
-        addFeedTime(length, probe->feed);
         addFeedPoint(m_position);
         addFeedPoint(probe->target);
         m_position = probe->target;
-    } else if (const auto* dwell = std::get_if<Dwell>(&body)) {
-        m_timeS += std::max(0.0, dwell->seconds);
     } else if (std::holds_alternative<ToolChange>(body)) {
         ++m_toolChanges;
-    } else if (const auto* spindle = std::get_if<SpindleControl>(&body)) {
-        m_spindleRpm = spindle->direction == SpindleDirection::Stopped ? 0.0 : spindle->speedRpm;
-    } else if (const auto* mode = std::get_if<SetFeedMode>(&body)) {
-        m_feedMode = mode->mode;
     }
 }
 

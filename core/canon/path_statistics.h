@@ -7,18 +7,15 @@
 namespace kerf::canon {
 
 // Sums up a canonical stream for reports and the test-run display: move counts and true geometric
-// path lengths, the bounding box of the feed path (start points and arc extremes included), tool
-// changes and an estimate of the machining time without acceleration (length / feed, rapid moves
-// at the machine's rapid speed, dwells).
+// path lengths, the bounding box of the feed path (start points and arc extremes included) and
+// tool changes. The machining time comes from motion (task::MachiningClock).
 class PathStatistics final : public Sink {
 public:
     struct Bounds {
-        std::array<double, kAxisCount> min;
-        std::array<double, kAxisCount> max;
+        std::array<double, kAxisCount> min{};
+        std::array<double, kAxisCount> max{};
         bool empty = true;
     };
-
-    explicit PathStatistics(double rapidMmPerS);
 
     // Position before the first command (the tool's position when the program starts).
     void setStart(const Pose& start) { m_position = start; }
@@ -31,13 +28,9 @@ public:
     const Bounds& feedBounds() const { return m_feedBounds; }
     const Pose& position() const { return m_position; }
     int toolChanges() const { return m_toolChanges; }
-    double machiningTimeS() const { return m_timeS; }
 
 private:
     void addFeedPoint(const Pose& pose);
-    void addFeedTime(double lengthMm, double feed);
-
-    double m_rapidMmPerS;
     Pose m_position{};
     int m_rapidCount = 0;
     int m_feedCount = 0;
@@ -45,9 +38,6 @@ private:
     double m_feedLength = 0.0;
     Bounds m_feedBounds{};
     int m_toolChanges = 0;
-    double m_timeS = 0.0;
-    double m_spindleRpm = 0.0;
-    FeedMode m_feedMode = FeedMode::PerMinute;
 };
 
 // True length of a helical or circular move starting at `start`.

@@ -68,6 +68,28 @@ void CurvatureStepWindow::range(size_t index, size_t first, size_t last, double 
                              begin);
 }
 
+size_t CurvatureStepWindow::windowEnd(size_t index, size_t point, double distance) const {
+    // Usually the point before is nearer; points at the same distance are outside too.
+    const double here = m_s[index];
+    if (point == index + 1 || m_s[point - 1] - here < distance) return point;
+    auto begin = m_s.begin();
+    return static_cast<size_t>(std::partition_point(begin + static_cast<std::ptrdiff_t>(index) + 1,
+                                                    begin + static_cast<std::ptrdiff_t>(point),
+                                                    [&](double s) { return s - here < distance; }) -
+                               begin);
+}
+
+size_t CurvatureStepWindow::windowStart(size_t index, size_t point, double distance) const {
+    const double here = m_s[index];
+    if (point + 1 == index || here - m_s[point + 1] < distance) return point + 1;
+    auto begin = m_s.begin();
+    return static_cast<size_t>(
+        std::partition_point(begin + static_cast<std::ptrdiff_t>(point) + 1,
+                             begin + static_cast<std::ptrdiff_t>(index),
+                             [&](double s) { return !(here - s < distance); }) -
+        begin);
+}
+
 void CurvatureStepWindow::extremes(size_t a, size_t b, AxisVector& least,
                                    AxisVector& largest) const {
     // Two spans of length 2^k that together cover [a, b].
@@ -80,22 +102,41 @@ void CurvatureStepWindow::extremes(size_t a, size_t b, AxisVector& least,
     }
 }
 
-AxisVector CurvatureStepWindow::runSums(size_t index, size_t lo, size_t hi) const {
+AxisVector CurvatureStepWindow::backSums(size_t index, size_t lo) const {
     // With P the prefix sums: a run lo' .. index sums to P[index + 1] - P[lo'] (lo' in
-    // [lo, index]), a run index .. hi' to P[hi' + 1] - P[index] (hi' + 1 in [index + 1, hi]).
-    const AxisVector& start = m_least[0][index];
+    // [lo, index]).
     const AxisVector& end = m_least[0][index + 1];
-    AxisVector backLeast{};
-    AxisVector backLargest{};
-    AxisVector frontLeast{};
-    AxisVector frontLargest{};
-    extremes(lo, index, backLeast, backLargest);
-    extremes(index + 1, hi, frontLeast, frontLargest);
+    AxisVector least{};
+    AxisVector largest{};
+    extremes(lo, index, least, largest);
     AxisVector sums{};
     for (size_t n = 0; n < m_axisCount; ++n) {
         const size_t a = m_axes[n];
-        sums[a] = std::max({end[a] - backLeast[a], backLargest[a] - end[a],
-                            frontLargest[a] - start[a], start[a] - frontLeast[a]});
+        sums[a] = std::max(end[a] - least[a], largest[a] - end[a]);
+    }
+    return sums;
+}
+
+AxisVector CurvatureStepWindow::frontSums(size_t index, size_t hi) const {
+    // A run index .. hi' sums to P[hi' + 1] - P[index] (hi' + 1 in [index + 1, hi]).
+    const AxisVector& start = m_least[0][index];
+    AxisVector least{};
+    AxisVector largest{};
+    extremes(index + 1, hi, least, largest);
+    AxisVector sums{};
+    for (size_t n = 0; n < m_axisCount; ++n) {
+        const size_t a = m_axes[n];
+        sums[a] = std::max(largest[a] - start[a], start[a] - least[a]);
+    }
+    return sums;
+}
+
+AxisVector CurvatureStepWindow::runSums(size_t index, size_t lo, size_t hi) const {
+    AxisVector sums = backSums(index, lo);
+    const AxisVector front = frontSums(index, hi);
+    for (size_t n = 0; n < m_axisCount; ++n) {
+        const size_t a = m_axes[n];
+        sums[a] = std::max(sums[a], front[a]);
     }
     return sums;
 }
@@ -104,52 +145,99 @@ double CurvatureStepWindow::cap(const MachineModel& model, size_t index, size_t 
                                 const PointJerkTerms& before, const PointJerkTerms& after,
                                 double upperBound) const {
     const double t = model.filterTimeS();
-    auto capOf = [&](const AxisVector& sum) {
-        return curvatureStepCap(model, sum, before, after, upperBound);
+    auto fits = [&](const AxisVector& sum, double v) {
+        return curvatureStepFits(model, sum, before, after, v);
     };
     // Everything within reach of the highest velocity fits: nothing to search. Otherwise no
     // point beyond that reach can matter either.
     size_t lo = 0;
     size_t hi = 0;
     range(index, first, last, upperBound * t, true, lo, hi);
-    auto fits = [&](const AxisVector& sum, double v) {
-        return curvatureStepFits(model, sum, before, after, v);
-    };
     if (fits(runSums(index, lo, hi), upperBound)) return upperBound;
     first = lo;
     last = hi - 1;
-    auto within = [&](double d, bool inclusive) {
-        range(index, first, last, d, inclusive, lo, hi);
-        return runSums(index, lo, hi);
+    const double here = m_s[index];
+    // A window radius d is feasible when the runs strictly within it allow v = d / T: on both
+    // sides at once, as the inequality holds per axis for the larger of the two sides' sums.
+    // Each side alone is monotone in d; its farthest feasible point is found by a binary search
+    // over its own points, where the window's end on that side is the point itself.
+    SideLimit ahead;
+    size_t aheadEnd = index + 1;  // one past the farthest point ahead feasible on its own
+    {
+        size_t b = last + 1;
+        while (aheadEnd < b) {
+            const size_t mid = aheadEnd + (b - aheadEnd) / 2;
+            const double d = m_s[mid] - here;
+            const size_t end = windowEnd(index, mid, d);
+            if (fits(frontSums(index, end), d / t))
+                aheadEnd = mid + 1;
+            else
+                b = mid;
+        }
+        ahead.found = aheadEnd > index + 1;
+        if (ahead.found) ahead.reached = m_s[aheadEnd - 1] - here;
+        if (aheadEnd <= last) ahead.next = m_s[aheadEnd] - here;
+        ahead.sums = frontSums(index, aheadEnd);
+    }
+    SideLimit behind;
+    size_t behindStart = first;  // the farthest point behind feasible on its own (or index)
+    {
+        size_t b = index;
+        while (behindStart < b) {
+            const size_t mid = behindStart + (b - behindStart) / 2;
+            const double d = here - m_s[mid];
+            const size_t start = windowStart(index, mid, d);
+            if (fits(backSums(index, start), d / t))
+                b = mid;
+            else
+                behindStart = mid + 1;
+        }
+        behind.found = behindStart < index;
+        if (behind.found) behind.reached = here - m_s[behindStart];
+        if (behindStart > first) behind.next = here - m_s[behindStart - 1];
+        behind.sums = backSums(index, behindStart);
+    }
+    // Whether the other side allows d: up to its farthest feasible point it does (monotone),
+    // from its next point on it does not; in between its window holds exactly the points up to
+    // the farthest one.
+    auto allows = [&](const SideLimit& side, double d) {
+        if (side.found && d <= side.reached) return true;
+        if (d >= side.next) return false;
+        return fits(side.sums, d / t);
     };
-    // A window radius d is feasible when the runs strictly within it allow v = d / T. That is
-    // monotone in d (a wider window holds more runs); the answer lies between the largest
-    // feasible breakpoint and the next.
-    auto feasible = [&](double d) { return fits(within(d, false), d / t); };
+    // The largest breakpoint feasible on both sides; the answer lies between it and the next.
     double best = 0.0;
-    // Forwards: distances m_s[k] - m_s[index] rise with k.
-    size_t a = index + 1;
-    size_t b = last + 1;
-    while (a < b) {
-        size_t mid = a + (b - a) / 2;
-        if (feasible(m_s[mid] - m_s[index]))
-            a = mid + 1;
-        else
-            b = mid;
+    {
+        // Ahead: the farthest point within aheadEnd that the back side allows.
+        size_t a = index + 1;
+        size_t b = aheadEnd;
+        if (b > a && allows(behind, m_s[b - 1] - here)) a = b;
+        while (a < b) {
+            const size_t mid = a + (b - a) / 2;
+            if (allows(behind, m_s[mid] - here))
+                a = mid + 1;
+            else
+                b = mid;
+        }
+        if (a > index + 1) best = std::max(best, m_s[a - 1] - here);
     }
-    if (a > index + 1) best = std::max(best, m_s[a - 1] - m_s[index]);
-    // Backwards: distances m_s[index] - m_s[k] rise as k falls.
-    a = first;
-    b = index;
-    while (a < b) {
-        size_t mid = a + (b - a) / 2;
-        if (feasible(m_s[index] - m_s[mid]))
-            b = mid;
-        else
-            a = mid + 1;
+    {
+        // Behind: the farthest point from behindStart on that the front side allows.
+        size_t a = behindStart;
+        size_t b = index;
+        if (a < b && allows(ahead, here - m_s[a])) b = a;
+        while (a < b) {
+            const size_t mid = a + (b - a) / 2;
+            if (allows(ahead, here - m_s[mid]))
+                b = mid;
+            else
+                a = mid + 1;
+        }
+        if (b < index) best = std::max(best, here - m_s[b]);
     }
-    if (a < index) best = std::max(best, m_s[index] - m_s[a]);
-    return std::max(best / t, capOf(within(best, true)));
+    range(index, first, last, best, true, lo, hi);
+    return std::max(best / t,
+                    curvatureStepCap(model, runSums(index, lo, hi), before, after, upperBound));
 }
 
 }  // namespace kerf::motion

@@ -14,6 +14,8 @@ constexpr double kTinyLength = 1e-6;
 constexpr size_t kNoEntry = static_cast<size_t>(-1);
 // An element keeps the tangential limits of the one before down to this factor below its own.
 constexpr double kMaxShareStepDown = 2.5;
+// Points of a curvature-step window kept beyond the reach (rounding of the distances).
+constexpr double kReachMarginMm = 1e-6;
 
 bool sameLimits(const Limits& a, const Limits& b) {
     return a.accel == b.accel && a.jerk == b.jerk;
@@ -166,10 +168,21 @@ AxisVector Lookahead::stepAt(size_t i) const {
 }
 
 void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
-    // The window starts where the run of elements holding `first` starts: earlier steps
-    // (already released elements) still count for their neighbours.
+    // Limits found final in an earlier pass stay.
+    while (first < last && isElement(first) && m_entries[first].stepCapFinal)
+        ++first;
+    if (first == last) return;
+    // A limit counts the steps within v T <= maxVelocity T of its point, also those of elements
+    // already released: the window starts that far back in the run holding `first`.
+    double reach = 0.0;
+    for (size_t i = first; i < last; ++i) {
+        if (isElement(i)) reach = std::max(reach, maxVelocity(m_entries[i]));
+    }
+    reach *= m_model.filterTimeS();
+    const double from = isElement(first) ? m_entries[first].item.element.sStart : 0.0;
     size_t begin = first;
-    while (begin > 0 && isElement(begin - 1) && !m_entries[begin - 1].stopAfter)
+    while (begin > 0 && isElement(begin - 1) && !m_entries[begin - 1].stopAfter &&
+           from - m_entries[begin].item.element.sStart <= reach + kReachMarginMm)
         --begin;
     m_steps.clear();
     m_runFirst.assign(last - begin, 0);
@@ -187,10 +200,12 @@ void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
         bool joined = i + 1 < last && isElement(i) && isElement(i + 1) && !m_entries[i].stopAfter;
         m_runLast[k] = joined ? m_runLast[k + 1] : k;
     }
+    const size_t lastPoint = last - begin - 1;
     for (size_t i = first; i < last; ++i) {
-        if (!isElement(i) || tiny(i)) continue;
+        if (!isElement(i) || tiny(i) || m_entries[i].stepCapFinal) continue;
         Entry& entry = m_entries[i];
         entry.stepCap = 1e300;
+        entry.stepCapFinal = true;
         size_t p = neighbourBefore(i);
         if (p == kNoEntry) continue;
         const Entry& before = m_entries[p];
@@ -207,6 +222,11 @@ void Lookahead::applyCurvatureSteps(size_t first, size_t last) {
         size_t k = i - begin;
         entry.stepCap =
             m_steps.cap(m_model, k, m_runFirst[k], m_runLast[k], termsBefore, termsAfter, v);
+        // The limit counts the points of its run within v T: it stays once the run has ended
+        // or has points beyond that reach (the planning passes after this one skip it).
+        entry.stepCapFinal =
+            m_runLast[k] < lastPoint ||
+            m_steps.position(lastPoint) - m_steps.position(k) > v * m_model.filterTimeS();
     }
 }
 

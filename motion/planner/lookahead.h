@@ -59,8 +59,9 @@ private:
         double localCap = 0.0;  // before curvature steps
         AxisVector nStart{};    // curvature vector at the ends
         AxisVector nEnd{};
-        double stepCap = 1e300;   // velocity limit of the curvature step at the start
-        bool outOfReach = false;  // the limit at the start is above any reachable velocity
+        double stepCap = 1e300;     // velocity limit of the curvature step at the start
+        bool stepCapFinal = false;  // no point still to come is within the step's reach
+        bool outOfReach = false;    // the limit at the start is above any reachable velocity
         bool prepared = false;
     };
 

@@ -78,7 +78,7 @@ struct SimulatedMachine::Impl {
         sample.pathVelocity = status.pathVelocity;
         sample.onFeedMove = servo.onFeedMove();
         sample.moveIndex = servo.currentMove();
-        recorder.record(sample);
+        if (options.measure) recorder.record(sample);
         if (options.onSample) options.onSample(sample, status);
         handleEvents();
     }
@@ -261,6 +261,10 @@ SimDriveSet& SimulatedMachine::drives() {
 }
 double SimulatedMachine::timeS() const {
     return m_impl->servo.status().timeS;
+}
+
+uint32_t SimulatedMachine::acceptedMoves() const {
+    return m_impl->planner.acceptedMoves();
 }
 
 }  // namespace kerf::motion

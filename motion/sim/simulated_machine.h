@@ -29,6 +29,7 @@ struct SimulationOptions {
     AxisVector startPosition{};  // tool tip at start, workpiece coordinates
     std::string samplesCsvPath;  // write every servo sample here (empty: no file)
     bool autoCycleStart = true;  // press cycle start at M0/M1/single-block stops
+    bool measure = true;         // measure the samples for report() (a clock needs no peaks)
     double maxSimulatedS = 24.0 * 3600.0;
     // The workpiece for probing: true when the tool tip (workpiece coordinates) touches it.
     // Empty: the machine file's [simulation.probe] box, if it enables one.
@@ -76,6 +77,8 @@ public:
     const MachineModel& model() const;
     SimDriveSet& drives();
     double timeS() const;
+    // Programmed moves the planner accepted so far (PathElement::moveIndex counts them).
+    uint32_t acceptedMoves() const;
 
 private:
     struct Impl;

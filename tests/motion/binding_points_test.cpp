@@ -68,6 +68,46 @@ BindingCount countBindingPoints(const std::vector<canon::Command>& commands) {
     return count;
 }
 
+std::vector<MotionItem> planned(const std::vector<canon::Command>& commands, bool inPieces) {
+    MachineModel model = makeMachineModel(millConfig(), {});
+    Planner planner(model);
+    planner.setPosition(Pose{}.values);
+    std::vector<MotionItem> items;
+    auto take = [&] {
+        while (auto item = planner.next())
+            items.push_back(*item);
+    };
+    for (const canon::Command& c : commands) {
+        EXPECT_TRUE(planner.add(c));
+        if (inPieces) take();
+    }
+    planner.flush();
+    take();
+    return items;
+}
+
+TEST(BindingPoints, PlanningInPiecesGivesTheLimitsOfOnePass) {
+    // Taken item by item, the look-ahead plans many times over a moving window and keeps the
+    // curvature-step limits it found final; all at once it plans once. Both must give the same
+    // limits (up to the rounding of the window's prefix sums): a limit kept too early would
+    // miss steps that came later within its reach.
+    for (int decimals : {4, 6}) {
+        auto commands = polylineCircle(10.0, 0.005, decimals);
+        std::vector<MotionItem> pieces = planned(commands, true);
+        std::vector<MotionItem> once = planned(commands, false);
+        ASSERT_EQ(pieces.size(), once.size());
+        size_t binding = 0;
+        for (size_t i = 0; i < once.size(); ++i) {
+            const PathElement& a = pieces[i].element;
+            const PathElement& b = once[i].element;
+            ASSERT_EQ(a.bindS, b.bindS) << i;
+            ASSERT_NEAR(a.bindVelocity, b.bindVelocity, 1e-12 * std::fabs(b.bindVelocity)) << i;
+            if (b.bindVelocity < kFarVelocity) ++binding;
+        }
+        EXPECT_GT(binding, once.size() / 2);  // the limits are exercised, not only the end
+    }
+}
+
 TEST(BindingPoints, FewOnAPolylineCircle) {
     // 20 mm of R50 as 4000 lines: one curve, every vertex alike but for 1e-6 mm of rounding.
     // Before, the share of the tangential limits flipped between neighbours (a binding point at

@@ -73,6 +73,7 @@ int runHmi(int argc, char** argv, const HmiOptions& options) {
     context.recoveryFolder = data / "recovery";
     context.programmingStation = options.programmingStation;
     context.machineSource = options.machine;
+    context.machiningClock = options.machiningClock;
     if (options.connectMachine && !options.programmingStation) {
         context.motion = [connect = options.connectMachine, config = *machine] {
             return connect(config);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/machine/machine_config.h"
+#include "core/task/machining_clock.h"
 #include "core/task/motion_port.h"
 #include "core/task/move_check.h"
 
@@ -25,6 +26,8 @@ struct HmiOptions {
     // Connects the machine (app/ decides: simulated or real drives); not called on a
     // programming station. Empty: no program run or manual operation.
     std::function<std::unique_ptr<task::MotionPort>(const machine::MachineConfig&)> connectMachine;
+    // Times the test run (app/ wires motion's simulated clock); also on a programming station.
+    task::MachiningClockFactory machiningClock;
     // The machine's check of a program's moves (soft limits, planner rules) for a workpiece
     // origin in machine coordinates: the test run checks with it (also on a programming
     // station). Empty: the test run does not check the work area.

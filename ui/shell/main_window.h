@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/machine/machine_config.h"
+#include "core/task/machining_clock.h"
 #include "core/task/move_check.h"
 #include "ui/files/new_program.h"
 #include "ui/session/machine_session.h"
@@ -39,7 +40,8 @@ struct HmiContext {
     bool programmingStation = false;       // no machine: Programming and Test run only
     std::string machineSource;  // --machine: a built-in name or the TOML file (settings write it)
     MotionFactory motion;       // the machine connection; none: no program run, no manual operation
-    task::MoveCheckFactory checkMoves;  // the machine's work-area check for the test run
+    task::MachiningClockFactory machiningClock;  // the test run's time; none: no time
+    task::MoveCheckFactory checkMoves;           // the machine's work-area check for the test run
 };
 
 // The operator panel: a header naming the machine mode and the programming mode, the message

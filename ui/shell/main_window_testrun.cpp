@@ -49,6 +49,7 @@ bool MainWindow::testRunOnScreen() const {
 
 void MainWindow::createGraphics(QWidget* parent) {
     m_testRun = new TestRunController(m_context.machine, m_context.ncRoot, this);
+    m_testRun->setMachiningClock(m_context.machiningClock);
     // The work area and the origin of Program run: with a machine the session's, without one
     // the machine file's preset and PRESET.PR.
     m_testRun->setWorkAreaCheck(m_context.checkMoves, [this] {

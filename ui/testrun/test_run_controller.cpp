@@ -83,6 +83,7 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     input.dialect = dialect;
     input.machine = m_machine;
     input.ncRoot = m_ncRoot;
+    input.clock = m_machiningClock;
     m_preparedOrigin = currentOrigin();
     input.presetInMachine = m_preparedOrigin;
     input.checkMoves = m_checkMoves;

@@ -44,6 +44,11 @@ public:
     // machine would refuse plays up to the refused block and ends Failed, the message naming
     // the block. The origin is asked again at every start: a moved preset prepares anew.
     void setWorkAreaCheck(task::MoveCheckFactory checkMoves, std::function<Pose()> presetInMachine);
+    // Times the programs prepared from now on as the machine runs them (see TestRunInput);
+    // none: no machining time.
+    void setMachiningClock(task::MachiningClockFactory clock) {
+        m_machiningClock = std::move(clock);
+    }
 
     // Interprets a program (replacing the one prepared); programReady() or failed() follows.
     void prepare(const QString& text, const std::filesystem::path& path, program::Dialect dialect);
@@ -103,6 +108,7 @@ private:
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;
+    task::MachiningClockFactory m_machiningClock;
     std::shared_ptr<const TestRunProgram> m_program;
     std::unique_ptr<graphics::ProgressiveStock> m_stock;
     QString m_preparedText;

@@ -20,11 +20,12 @@ constexpr long kStatusLookBack = 16;
 // Feeds every consumer of the test run from one canonical stream and keeps the stream.
 class Recorder final : public canon::Sink {
 public:
-    Recorder(TestRunProgram& out, double rapidMmPerS) : m_out(out), m_statistics(rapidMmPerS) {}
+    Recorder(TestRunProgram& out, task::MachiningClock* clock) : m_out(out), m_clock(clock) {}
 
     void setStart(const Pose& start) {
         m_statistics.setStart(start);
         m_toolpath.setStart(start);
+        if (m_clock != nullptr) m_clock->setStart(start);
     }
     // Commands the check refuses (and every one after) are not recorded.
     void setCheck(task::MoveCheck* check) { m_check = check; }
@@ -37,13 +38,24 @@ public:
         m_out.movesBefore.push_back(static_cast<uint32_t>(m_toolpath.data().moveCount()));
         m_toolpath.consume(command);
         m_out.commands.push_back(command);
-        m_out.endTimeS.push_back(m_statistics.machiningTimeS());
+        if (m_clock != nullptr) m_clock->consume(command);
+    }
+    // A sync point: the machine stops there before the program goes on.
+    void sync() {
+        if (m_clock != nullptr) m_clock->sync();
+    }
+    // Each command's end in machining time.
+    std::vector<double> finish() {
+        if (m_clock == nullptr) return std::vector<double>(m_out.commands.size(), 0.0);
+        m_clock->finish();
+        return m_clock->endTimesS();
     }
     const Pose& position() const { return m_statistics.position(); }
     graphics::ToolpathData takeToolpath() { return m_toolpath.take(); }
 
 private:
     TestRunProgram& m_out;
+    task::MachiningClock* m_clock;
     task::MoveCheck* m_check = nullptr;
     canon::PathStatistics m_statistics;
     graphics::ToolpathCollector m_toolpath;
@@ -160,7 +172,9 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
     out.diagnostics = program.diagnostics;
     std::unique_ptr<interp::Interpreter> interpreter = std::move(program.interpreter);
-    Recorder recorder(out, input.machine.rapidVelocityMmPerS);
+    std::unique_ptr<task::MachiningClock> clock =
+        input.clock ? input.clock(input.machine) : nullptr;
+    Recorder recorder(out, clock.get());
     std::unique_ptr<task::MoveCheck> check;
     if (interpreter && input.checkMoves) {
         check = input.checkMoves(program.streamOrigin.value_or(input.presetInMachine));
@@ -183,6 +197,7 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
                 interp::WorldSnapshot world;
                 world.position = recorder.position();
                 if (check) check->resumeAt(world.position);
+                recorder.sync();
                 interpreter->resume(world);
                 continue;
             }
@@ -198,6 +213,8 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
         }
         out.blocks = interpreter->blocksExecuted();
     }
+    out.endTimeS =
+        out.cancelled ? std::vector<double>(out.commands.size(), 0.0) : recorder.finish();
     if (interpreter && interpreter->diagnostics().size() > program.diagnostics.size()) {
         // Run-time diagnostics follow the check's, which loadProgram copied already.
         out.diagnostics.insert(

@@ -13,6 +13,7 @@
 #include "core/interp/program_status.h"
 #include "core/machine/machine_config.h"
 #include "core/program/dialect.h"
+#include "core/task/machining_clock.h"
 #include "core/task/move_check.h"
 #include "graphics/stock/stock_simulation.h"
 #include "graphics/toolpath/toolpath_data.h"
@@ -29,6 +30,9 @@ struct TestRunInput {
     machine::MachineConfig machine;
     std::filesystem::path ncRoot;  // called programs, tables; TOOL.T when it exists
     uint64_t maxBlocks = 20'000'000;
+    // Times the program as the machine runs it (app wires motion's simulated clock); without
+    // one every command ends at time 0.
+    task::MachiningClockFactory clock;
     // The workpiece origin in machine coordinates, as Program run would use it (the machine
     // file's preset, PRESET.PR row 0, an entry; a FAGOR program's zero offset takes precedence).
     Pose presetInMachine{};
@@ -37,8 +41,9 @@ struct TestRunInput {
 };
 
 // A program interpreted for the test run: its canonical stream with the machining time at the
-// end of each command (feed and rapid moves without acceleration, dwells), the toolpath to draw
-// and how to simulate its stock. Immutable once built; shared between threads.
+// end of each command (the planner and the servo cycle in simulated time, as the program runs on
+// the machine), the toolpath to draw and how to simulate its stock. Immutable once built; shared
+// between threads.
 struct TestRunProgram {
     std::vector<canon::Command> commands;
     std::vector<double> endTimeS;       // per command: machining time when it is done

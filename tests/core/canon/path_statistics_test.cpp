@@ -15,8 +15,8 @@ Pose xyz(double x, double y, double z) {
     return p;
 }
 
-TEST(PathStatistics, CountsLengthsBoundsAndTime) {
-    PathStatistics stats(500.0);
+TEST(PathStatistics, CountsLengthsAndBounds) {
+    PathStatistics stats;
     stats.setStart(xyz(0, 0, 0));
     stats.consume({{}, RapidMove{xyz(0, 0, 50)}});
     stats.consume({{}, LinearMove{xyz(30, 40, 50), 600}});  // 50 mm at 10 mm/s
@@ -33,16 +33,7 @@ TEST(PathStatistics, CountsLengthsBoundsAndTime) {
     // The half circle from 270 to 90 degrees passes 0 degrees: x reaches 40.
     EXPECT_NEAR(stats.feedBounds().max[0], 40, 1e-9);
     EXPECT_NEAR(stats.feedBounds().min[2], 47, 1e-9);
-    EXPECT_NEAR(stats.machiningTimeS(), 50.0 / 500 + (50 + arcLength) / 10 + 2, 1e-9);
     EXPECT_EQ(stats.toolChanges(), 1);
-}
-
-TEST(PathStatistics, FeedPerRevolutionUsesTheSpindleSpeed) {
-    PathStatistics stats(500.0);
-    stats.consume({{}, SpindleControl{SpindleDirection::Clockwise, 1000}});
-    stats.consume({{}, SetFeedMode{FeedMode::PerRevolution}});
-    stats.consume({{}, LinearMove{xyz(20, 0, 0), 0.2}});  // 200 mm/min: 20 mm in 6 s
-    EXPECT_NEAR(stats.machiningTimeS(), 6.0, 1e-9);
 }
 
 }  // namespace

@@ -11,8 +11,10 @@
 
 #include "core/base/atomic_file.h"
 #include "core/machine/machine_loader.h"
+#include "motion/sim/simulated_clock.h"
 #include "qt_test_app.h"
 #include "test_paths.h"
+#include "tests/support/machining_time_programs.h"
 #include "ui/cycles/cycle_dialog.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
@@ -31,6 +33,7 @@ HmiContext contextIn(const std::filesystem::path& dir) {
     context.machine = *machine::loadMachine("mill");
     context.ncRoot = dir;
     context.recoveryFolder = dir / "recovery";
+    context.machiningClock = motion::makeSimulatedClock;
     return context;
 }
 
@@ -61,9 +64,13 @@ TEST(TestRunScreen, StartRunsTheEditorsProgramAndReportsItsErrorsWithTheirLine) 
     ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testStart")));
     ASSERT_TRUE(QTest::qWaitFor(
         [run] { return run->state() == TestRunController::State::Finished; }, 20000));
-    const double expectedS = 1.0 + 2.0 + 5.0 / machine::loadMachine("mill")->rapidVelocityMmPerS;
-    EXPECT_NEAR(run->machiningTimeS(), expectedS, 1e-6);
-    EXPECT_TRUE(window.graphics()->timeLabel()->text().contains(QStringLiteral("0:00:04")));
+    // The time of the program run on the machine (simulated): more than the feeds' 3 s.
+    const double programRunS = kerf::test::simulatedProgramRunS(
+        dir / "LINE.H", window.program()->editor()->toPlainText().toStdString(), "mill");
+    EXPECT_NEAR(run->machiningTimeS(), programRunS, 0.01 * programRunS);
+    EXPECT_GT(run->machiningTimeS(), 3.0);
+    EXPECT_TRUE(window.graphics()->timeLabel()->text().contains(
+        GraphicsPanel::formatDuration(run->machiningTimeS())));
 
     // An error in the edited text: Start interprets the new text and stops at the bad line.
     ProgramEditor* editor = window.program()->editor();
@@ -181,13 +188,12 @@ TEST(TestRunScreen, ACycleWrittenThroughTheDialogRunsInTestRun) {
     ASSERT_TRUE(QTest::qWaitFor(
         [run] { return run->state() == TestRunController::State::Finished; }, 20000));
     // Spec cycle 200 from Z+50 (surface 0, clearance 2, depth 10 in infeeds of 5): feed Z+2 -> Z-5
-    // and Z-3 -> Z-10, 14 mm at F150 = 5.6 s; rapids Z+50 -> Z+2 (48), Z-5 -> Z+2 (7),
-    // Z+2 -> Z-3 (5), Z-10 -> Z+50 (60); before them the FMAX move from the start point (0, 0, 0)
-    // to (50, 50, 50), 50 * sqrt(3) mm. Test run times rapids at the machine's rapid velocity.
-    const double rapidMm = 48.0 + 7.0 + 5.0 + 60.0 + 50.0 * std::sqrt(3.0);
-    const double expectedS =
-        14.0 / 150.0 * 60.0 + rapidMm / machine::loadMachine("mill")->rapidVelocityMmPerS;
-    EXPECT_NEAR(run->machiningTimeS(), expectedS, 1e-6);
+    // and Z-3 -> Z-10, 14 mm at F150 = 5.6 s, then rapids. The test run takes the time of the
+    // program run on the machine (simulated).
+    const double programRunS = kerf::test::simulatedProgramRunS(
+        dir / "run" / "DRILL.H", editor->toPlainText().toStdString(), "mill");
+    EXPECT_NEAR(run->machiningTimeS(), programRunS, 0.01 * programRunS);
+    EXPECT_GT(run->machiningTimeS(), 5.6);
 }
 
 }  // namespace

@@ -1,12 +1,14 @@
 // Manual benchmark: how long the test run takes to interpret a long Klartext program (a zigzag
 // of N linear blocks) and how much of that the status snapshots cost. Figures in
-// docs/benchmarks-graphics.md. Usage: test_run_bench [BLOCKS]
+// docs/benchmarks.md. Usage: test_run_bench [BLOCKS] [--no-clock] (without the machining clock:
+// the interpretation alone).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "core/machine/machine_loader.h"
+#include "motion/sim/simulated_clock.h"
 #include "ui/testrun/test_run_program.h"
 
 int main(int argc, char** argv) {
@@ -14,6 +16,8 @@ int main(int argc, char** argv) {
     kerf::ui::TestRunInput input;
     input.machine = *kerf::machine::loadMachine("mill");
     input.path = "ZIGZAG.H";
+    const bool clock = !(argc > 2 && std::string(argv[2]) == "--no-clock");
+    if (clock) input.clock = kerf::motion::makeSimulatedClock;  // as in the HMI
     std::string& text = input.text;
     text =
         "0 BEGIN PGM ZIGZAG MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-10\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n"

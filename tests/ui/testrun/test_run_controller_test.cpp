@@ -9,8 +9,10 @@
 
 #include "core/machine/machine_loader.h"
 #include "graphics/stock/progressive_stock.h"
+#include "motion/sim/simulated_clock.h"
 #include "qt_test_app.h"
 #include "test_paths.h"
+#include "tests/support/machining_time_programs.h"
 
 namespace kerf::ui {
 namespace {
@@ -37,37 +39,38 @@ const char* kParts =
     "16 END PGM PARTS MM\n";
 
 struct Fixture {
-    std::filesystem::path root = kerf::test::uniqueTempDir("testrun");
-    machine::MachineConfig machine = *machine::loadMachine("mill");
-    TestRunController controller{machine, root};
-
-    Fixture() {
+    explicit Fixture(const char* machineName = "mill")
+        : machine(*machine::loadMachine(machineName)) {
         test::testApp();
         std::filesystem::copy_file(
             std::filesystem::path(KERF_SOURCE_DIR) / "tests/graphics/programs/TOOL.T",
             root / "TOOL.T");
         controller.setTickMs(0);  // the tests drive the playback with advance()
+        controller.setMachiningClock(motion::makeSimulatedClock);
     }
+    std::filesystem::path root = kerf::test::uniqueTempDir("testrun");
+    machine::MachineConfig machine;
+    TestRunController controller{machine, root};
     // Starts the program and waits until it is interpreted.
-    void start(const char* text, program::Dialect dialect = program::Dialect::Klartext) {
+    void start(const char* text, program::Dialect dialect = program::Dialect::Klartext,
+               const char* name = "PARTS.H") {
         QSignalSpy ready(&controller, &TestRunController::programReady);
-        controller.start(QString::fromUtf8(text), root / "PARTS.H", dialect);
+        controller.start(QString::fromUtf8(text), root / name, dialect);
         ASSERT_TRUE(ready.wait(20000));
     }
-    double rapidS(double lengthMm) const { return lengthMm / machine.rapidVelocityMmPerS; }
 };
 
-// Rapids: 5 + 25 + 15 + 15 + 15 + sqrt(30^2 + 20^2) + 7 mm; feeds: 15 mm at 100 mm/min twice,
-// 7 mm at 200 and 30 mm at 300 mm/min.
-double handComputedTimeS(const Fixture& f) {
-    return 9.0 + 9.0 + 2.1 + 6.0 + f.rapidS(5 + 25 + 15 + 15 + 15 + std::hypot(30.0, 20.0) + 7);
-}
+// Feeds alone: 15 mm at 100 mm/min twice, 7 mm at 200 and 30 mm at 300 mm/min.
+constexpr double kPartsFeedS = 9.0 + 9.0 + 2.1 + 6.0;
 
 TEST(TestRun, FinishesWithTheMachiningTimeAndRemovedVolumeOfTheProgram) {
     Fixture f;
     f.controller.setSpeed(TestRunSpeed::Max);
     f.start(kParts);
-    EXPECT_NEAR(f.controller.machiningTimeS(), handComputedTimeS(f), 1e-6);
+    // The time of the program run on the machine (simulated), not length / feed: within 1 %.
+    const double programRunS = kerf::test::simulatedProgramRunS(f.root / "PARTS.H", kParts, "mill");
+    EXPECT_NEAR(f.controller.machiningTimeS(), programRunS, 0.01 * programRunS);
+    EXPECT_GT(f.controller.machiningTimeS(), kPartsFeedS);
     EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
     EXPECT_DOUBLE_EQ(f.controller.playbackTimeS(), f.controller.machiningTimeS());
 
@@ -90,12 +93,21 @@ TEST(TestRun, SpeedSetsHowFastMachiningTimePassesAndTheToolFollowsThePath) {
     ASSERT_EQ(f.controller.state(), TestRunController::State::Playing);
     f.controller.advance(0.5);  // x10: five seconds of machining
     EXPECT_NEAR(f.controller.playbackTimeS(), 5.0, 1e-9);
-    // Five seconds in, the drill is on its way down the first hole (15, 20) at 100 mm/min.
-    const double drilling = 5.0 - f.rapidS(5 + 25);
+    // Five seconds in, the drill is on its way down the first hole (15, 20) at 100 mm/min since
+    // the end of the command before its move (line 7).
+    const TestRunProgram& program = *f.controller.program();
+    size_t drill = 0;
+    while (drill < program.commands.size() && program.commands[drill].location.line != 7)
+        ++drill;
+    ASSERT_GT(drill, 0u);
+    ASSERT_LT(drill, program.commands.size());
+    const double drilling = 5.0 - program.endTimeS[drill - 1];
     const Vec3 tool = f.controller.toolPosition();
     EXPECT_NEAR(tool.x(), 15.0, 1e-4);
     EXPECT_NEAR(tool.y(), 20.0, 1e-4);
-    EXPECT_NEAR(tool.z(), 5.0 - 100.0 / 60.0 * drilling, 1e-3);
+    // The playback interpolates a command linearly in its time, which includes the stop at the
+    // bottom (9.009 s for 15 mm at 100 mm/min): 0.007 mm off the feed's position.
+    EXPECT_NEAR(tool.z(), 5.0 - 100.0 / 60.0 * drilling, 1e-2);
     EXPECT_EQ(f.controller.currentLine(), 7);
     // The status tabs get the interpreter's state at that block: line 7, tool 1.
     const auto* status = f.controller.program()->statusAt(5.0);
@@ -130,6 +142,23 @@ TEST(TestRun, SpeedSetsHowFastMachiningTimePassesAndTheToolFollowsThePath) {
     EXPECT_LT(f.controller.playbackTimeS(), 5.0);
     f.controller.setSpeed(TestRunSpeed::Max);
     EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
+}
+
+TEST(TestRun, MachiningTimeIsThatOfTheSimulatedProgramRunOnBothMachines) {
+    // Before, the test run took length / feed: 26.70 s against the mill program's 27.80 s run,
+    // 59.44 s against the lathe program's 47.29 s (G96 at the speed of each move's start).
+    Fixture mill;
+    mill.start(kerf::test::kMillTimingProgram, program::Dialect::Klartext, "TIMING.H");
+    const double millRunS = kerf::test::simulatedProgramRunS(
+        mill.root / "TIMING.H", kerf::test::kMillTimingProgram, "mill");
+    EXPECT_NEAR(mill.controller.machiningTimeS(), millRunS, 0.01 * millRunS);
+    EXPECT_GT(mill.controller.machiningTimeS(), kerf::test::kMillFeedAndDwellS);
+
+    Fixture lathe("lathe");
+    lathe.start(kerf::test::kLatheTimingProgram, program::Dialect::Fagor, "TIMING.PIT");
+    const double latheRunS = kerf::test::simulatedProgramRunS(
+        lathe.root / "TIMING.PIT", kerf::test::kLatheTimingProgram, "lathe");
+    EXPECT_NEAR(lathe.controller.machiningTimeS(), latheRunS, 0.01 * latheRunS);
 }
 
 TEST(TestRun, AProgramWithAnErrorStopsWithADiagnosticAtItsLine) {

@@ -12,6 +12,7 @@
 
 #include "core/machine/machine_loader.h"
 #include "graphics/headless/virtual_display.h"
+#include "motion/sim/simulated_clock.h"
 #include "test_paths.h"
 #include "ui/viewport/viewport_widget.h"
 
@@ -64,6 +65,7 @@ TEST(GraphicsPanel, ShowsTheTestRunPicksBlocksAndLightsUpTheCursorBlock) {
         std::filesystem::path(KERF_SOURCE_DIR) / "tests/graphics/programs/TOOL.T", root / "TOOL.T");
     const machine::MachineConfig machine = *machine::loadMachine("mill");
     TestRunController controller(machine, root);
+    controller.setMachiningClock(motion::makeSimulatedClock);
     controller.setTickMs(0);
     GraphicsPanel panel(controller, machine);
     panel.resize(800, 600);
@@ -77,9 +79,10 @@ TEST(GraphicsPanel, ShowsTheTestRunPicksBlocksAndLightsUpTheCursorBlock) {
     // The blank appears before anything is cut.
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.scene().stats().stockTriangles > 0; }, 20000));
 
-    // Machining time: feeds 15 mm at F100 twice, 7 mm at F200, 30 mm at F300; rapids 118.06 mm.
-    const double rapidMm = 5 + 25 + 15 + 15 + 15 + std::hypot(30.0, 20.0) + 7;
-    const double totalS = 9.0 + 9.0 + 2.1 + 6.0 + rapidMm / machine.rapidVelocityMmPerS;
+    // Machining time: the program run's (simulated), more than the feeds' 26.1 s (15 mm at F100
+    // twice, 7 mm at F200, 30 mm at F300).
+    const double totalS = controller.machiningTimeS();
+    EXPECT_GT(totalS, 9.0 + 9.0 + 2.1 + 6.0);
     EXPECT_TRUE(panel.timeLabel()->text().endsWith(GraphicsPanel::formatDuration(totalS)))
         << panel.timeLabel()->text().toStdString();
 
