@@ -62,6 +62,11 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
     m_output.setMachineOffset(m_startOffset);
     m_compensation.setCompMode(m_settings.compMode);
     resetModal();
+    if (m_settings.machine != nullptr) {
+        for (char letter : m_settings.machine->enabledAxisLetters()) {
+            if (auto axis = axisFromLetter(letter)) m_machineAxes |= axisBit(*axis);
+        }
+    }
     const machine::AxisConfig* x =
         m_settings.machine != nullptr ? m_settings.machine->axis('X') : nullptr;
     m_streamDiameter = x != nullptr && x->diameterMode;
@@ -136,6 +141,7 @@ FagorProgram* FagorInterpreter::loadProgram(const std::filesystem::path& path, s
     program->path = path;
     program->fileId = m_sources.add(path.string());
     program->number = programNumberOf(path);
+    program->machineAxes = m_machineAxes;
     program->keepLabels = keepLabels;
     checkProgram(*program);
     m_programs.push_back(std::move(program));
@@ -155,6 +161,7 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
     program->path = path;
     program->fileId = m_sources.add(path.string());
     program->number = programNumberOf(path);
+    program->machineAxes = m_machineAxes;
     m_programs.push_back(std::move(owned));
     m_diagnosticsAtLoad = m_diagnostics.size();
     if (mode == CheckMode::Background) {
@@ -180,6 +187,7 @@ bool FagorInterpreter::loadText(std::string text, const std::string& path) {
     program->path = path;
     program->fileId = m_sources.add(path);
     program->number = programNumberOf(path);
+    program->machineAxes = m_machineAxes;
     checkProgram(*program);
     m_programs.push_back(std::move(owned));
     appendDiagnostics(m_diagnostics, program->diagnostics);

@@ -283,6 +283,7 @@ private:
     NoseCompensation m_compensation;
     ContourShaper m_shaper;
 
+    AxisMask m_machineAxes = 0;  // the enabled axes of the machine
     std::vector<std::unique_ptr<FagorProgram>> m_programs;
     std::thread m_checkThread;
     FagorProgram* m_checking = nullptr;

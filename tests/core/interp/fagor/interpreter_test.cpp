@@ -289,5 +289,48 @@ TEST_F(FagorRun, CannedCycleOverwritesP299) {
     EXPECT_EQ(value, 7.0);
 }
 
+TEST_F(FagorRun, CheckFailsAtAConstructThatCannotRunYet) {
+    // A run would stop at G66 and at the screen instruction: the check fails, nothing moves.
+    EXPECT_EQ(run("G0 X130 Z120\n"
+                  "G66 X20 Z100 I8 C2 S10 E20\n"
+                  "(ODW 1, 6, 33)\n"
+                  "M30\n"
+                  "N10 G01 X40 Z80\n"
+                  "N20 G01 X100 Z40\n"),
+              interp::RunStatus::Failed);
+    const std::string file = (root / "program.pim").string();
+    EXPECT_EQ(diagnostics(),
+              file + ":2:1: error: G66 (pattern repeat cycle) is not supported yet\n" + file +
+                  ":3:2: error: ODW is a screen customisation instruction: not "
+                  "supported; the program cannot run past this block\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CheckFailsAtAnAxisTheLatheLacks) {
+    // The built-in lathe has X and Z: Y and C words are errors at their column before anything
+    // runs (the run used to move X and Z first and stop at line 2).
+    EXPECT_EQ(run("G90 G0 X130 Z120\n"
+                  "G1 X100 Y10 F100\n"
+                  "G01 C90\n"
+                  "M30\n"),
+              interp::RunStatus::Failed);
+    const std::string file = (root / "program.pim").string();
+    EXPECT_EQ(diagnostics(), file + ":2:9: error: axis Y is not available on this machine\n" +
+                                 file + ":3:5: error: axis C is not available on this machine\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CycleParametersAndArcCentresAreNotAxes) {
+    // C of G81 is its pass depth, I and K an arc's centre: the lathe check accepts them.
+    EXPECT_EQ(run("G90 G95 F0.3 S1000 M3\n"
+                  "G00 X70 Z2\n"
+                  "G81 X40 Z0 Q40 R-30 C3 D1\n"
+                  "G00 X60 Z0\n"
+                  "G03 X60 Z-20 I0 K-10\n"
+                  "M30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+}
+
 }  // namespace
 }  // namespace kerf::fagor
