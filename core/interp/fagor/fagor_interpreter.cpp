@@ -106,7 +106,8 @@ bool FagorInterpreter::waitForCheck() {
     if (!m_checkThread.joinable()) return !m_checkFailed;
     m_checking->executionOffset.store(SIZE_MAX);
     m_checkThread.join();
-    const DiagnosticList& found = m_checking->diagnostics;
+    DiagnosticList found = m_checking->diagnostics;
+    checkCalledPrograms(*m_checking, found);
     if (hasErrors(found)) {
         // The program would not have started: only the check's findings count.
         m_diagnostics.erase(
@@ -171,8 +172,10 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
         m_checkThread = std::thread([program] { checkProgram(*program); });
     } else {
         checkProgram(*program);
-        appendDiagnostics(m_diagnostics, program->diagnostics);
-        if (hasErrors(program->diagnostics)) return false;
+        DiagnosticList found = program->diagnostics;
+        checkCalledPrograms(*program, found);
+        appendDiagnostics(m_diagnostics, found);
+        if (hasErrors(found)) return false;
     }
     enterProgram(program, BlockPosition{0, 1});
     m_status = interp::RunStatus::BudgetUsed;
@@ -190,8 +193,10 @@ bool FagorInterpreter::loadText(std::string text, const std::string& path) {
     program->machineAxes = m_machineAxes;
     checkProgram(*program);
     m_programs.push_back(std::move(owned));
-    appendDiagnostics(m_diagnostics, program->diagnostics);
-    if (hasErrors(program->diagnostics)) return false;
+    DiagnosticList found = program->diagnostics;
+    checkCalledPrograms(*program, found);
+    appendDiagnostics(m_diagnostics, found);
+    if (hasErrors(found)) return false;
     enterProgram(program, BlockPosition{0, 1});
     m_status = interp::RunStatus::BudgetUsed;
     return true;

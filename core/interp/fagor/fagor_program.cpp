@@ -148,6 +148,16 @@ void Checker::highLevel(const StatementInfo& info, const program::LogicalLine& l
             {info.labels[i], line.firstLine, program::columnOf(line.text, info.labelOffsets[i])});
     }
     m_flow = m_flow || info.flow;
+    if (info.opens) {
+        if (info.program >= 0) {
+            m_program.opened.push_back(static_cast<int>(info.program));
+        } else {
+            m_program.opensAny = true;
+        }
+    } else if (info.program >= 0 && info.kind != StatementInfo::Kind::DncDirectory) {
+        m_program.calls.push_back({static_cast<int>(info.program), line.firstLine,
+                                   program::columnOf(line.text, info.programOffset)});
+    }
     switch (info.kind) {
         case StatementInfo::Kind::Sub: {
             const int n = static_cast<int>(info.number);
@@ -304,6 +314,9 @@ void checkProgram(FagorProgram& program) {
     program.diagnostics.clear();
     program.labels.clear();
     program.subroutines.clear();
+    program.calls.clear();
+    program.opened.clear();
+    program.opensAny = false;
     Checker(program).run();
 }
 

@@ -25,6 +25,13 @@ struct SubroutineEntry {
     BlockPosition end;   // the block after (RET)
 };
 
+// An EXEC or MEXEC of a program given by a constant number.
+struct ProgramCall {
+    int number = 0;
+    uint32_t line = 0;
+    uint32_t column = 0;
+};
+
 // A loaded FAGOR program with its label and subroutine index, built by the program check.
 struct FagorProgram {
     std::shared_ptr<const program::SourceText> source;
@@ -37,7 +44,10 @@ struct FagorProgram {
     AxisMask machineAxes = (1u << kAxisCount) - 1;  // the machine's axes; all without a machine
     std::vector<std::pair<uint32_t, BlockPosition>> labels;  // sorted; first occurrence only
     std::vector<SubroutineEntry> subroutines;                // sorted by number
-    DiagnosticList diagnostics;                              // errors mean the program cannot run
+    std::vector<ProgramCall> calls;                          // in the order written
+    std::vector<int> opened;     // programs OPEN writes (constant numbers)
+    bool opensAny = false;       // an OPEN whose number is known only at run time
+    DiagnosticList diagnostics;  // errors mean the program cannot run
 
     // For a check running alongside execution (see FagorInterpreter::CheckMode).
     std::atomic<size_t> executionOffset{SIZE_MAX};

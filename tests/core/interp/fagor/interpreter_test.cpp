@@ -332,5 +332,35 @@ TEST_F(FagorRun, CycleParametersAndArcCentresAreNotAxes) {
         << diagnostics();
 }
 
+TEST_F(FagorRun, CheckFollowsExecToAMissingProgram) {
+    // The run would stop at the EXEC: the check fails at its P, before G0 moves.
+    EXPECT_EQ(run("G0 X10\n(EXEC P7)\nM30\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(),
+              (root / "program.pim").string() + ":2:7: error: program 7 is not in the NC root\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CheckFollowsExecIntoAFaultyProgram) {
+    // P7 runs P8, which moves an axis the lathe lacks: the check of P8 fails, and so do the
+    // EXECs that lead there.
+    write("P000007.PIM", "G0 X20\n(MEXEC P8)\nM30\n");
+    write("P000008.PIM", "G1 Y5\nM30\n");
+    EXPECT_EQ(run("G0 X10\n(EXEC P7)\nM30\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(), (root / "P000008.PIM").string() +
+                                 ":1:4: error: axis Y is not available on this machine\n" +
+                                 (root / "P000007.PIM").string() +
+                                 ":2:8: error: program 8 has errors\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CheckLeavesAProgramTheRunWritesToTheRun) {
+    // P9 does not exist before the run: OPEN creates it, then EXEC runs it.
+    EXPECT_EQ(run("(OPEN P9)\n(WRITE G0 X30)\n(WRITE M30)\n(EXEC P9)\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    // P9's G0 X30 (diameter: 15 in radius) on its line 2, after the header OPEN wrote.
+    EXPECT_EQ(out.lines, (std::vector<std::string>{"2:1 RAPID X15.0000 Z0.0000", "5:1 END M30"}));
+}
+
 }  // namespace
 }  // namespace kerf::fagor
