@@ -1,6 +1,7 @@
 // Program flow: GOTO, RPT, subroutines (CALL, PCALL, MCALL, M functions, interrupts), EXEC and
 // MEXEC.
 #include <algorithm>
+#include <set>
 
 #include "core/base/translate.h"
 #include "core/interp/fagor/fagor_interpreter.h"
@@ -108,6 +109,18 @@ bool FagorInterpreter::repeat(int64_t start, int64_t end, std::optional<int> pro
 }
 
 FagorProgram* FagorInterpreter::programByNumber(int number, bool keepLabels, Problem& problem) {
+    const size_t loaded = m_programs.size();
+    FagorProgram* p = programFileByNumber(number, keepLabels, problem);
+    if (p != nullptr && m_programs.size() > loaded && hasErrors(p->diagnostics)) {
+        appendDiagnostics(m_diagnostics, p->diagnostics);
+        problemOf(problem, "call", KERF_TR_NOOP("program {1} has errors"),
+                  {std::to_string(number)});
+        return nullptr;
+    }
+    return p;
+}
+
+FagorProgram* FagorInterpreter::programFileByNumber(int number, bool keepLabels, Problem& problem) {
     if (m_open.number == number) commitOpenProgram();  // what WRITE added so far is read back
     for (auto& p : m_programs) {
         if (p->number == number) {
@@ -124,19 +137,56 @@ FagorProgram* FagorInterpreter::programByNumber(int number, bool keepLabels, Pro
         if (p == nullptr) {
             problemOf(problem, "io", KERF_TR_NOOP("cannot read program {1}: {2}"),
                       {std::to_string(number), reason});
-            return nullptr;
-        }
-        if (hasErrors(p->diagnostics)) {
-            appendDiagnostics(m_diagnostics, p->diagnostics);
-            problemOf(problem, "call", KERF_TR_NOOP("program {1} has errors"),
-                      {std::to_string(number)});
-            return nullptr;
         }
         return p;
     }
     problemOf(problem, "call", KERF_TR_NOOP("program {1} is not in the NC root"),
               {std::to_string(number)});
     return nullptr;
+}
+
+void FagorInterpreter::checkCalledPrograms(const FagorProgram& program, DiagnosticList& out) {
+    std::vector<const FagorProgram*> pending{&program};
+    std::set<const FagorProgram*> seen{&program};
+    // A program the run writes with OPEN (EX-12.12 writes one, then EXECs it) is not there yet or
+    // will be replaced: the run checks it when it gets there.
+    std::set<int> written;
+    bool writesUnknown = false;
+    auto noteWrites = [&](const FagorProgram& p) {
+        written.insert(p.opened.begin(), p.opened.end());
+        writesUnknown = writesUnknown || p.opensAny;
+    };
+    noteWrites(program);
+    while (!pending.empty()) {
+        const FagorProgram* caller = pending.back();
+        pending.pop_back();
+        for (const ProgramCall& call : caller->calls) {
+            if (writesUnknown || written.count(call.number) != 0) continue;
+            auto error = [&](const Problem& problem) {
+                Diagnostic d =
+                    Diagnostic::make(Severity::Error, problem.code, caller->source->path(),
+                                     call.line, call.column, problem.messageTemplate);
+                d.args = problem.args;
+                appendDiagnostic(out, std::move(d));
+            };
+            Problem problem;
+            FagorProgram* callee = programFileByNumber(call.number, false, problem);
+            if (callee == nullptr) {
+                error(problem);
+                continue;
+            }
+            if (!seen.insert(callee).second) continue;
+            appendDiagnostics(out, callee->diagnostics);
+            if (hasErrors(callee->diagnostics)) {
+                problemOf(problem, "call", KERF_TR_NOOP("program {1} has errors"),
+                          {std::to_string(call.number)});
+                error(problem);
+                continue;
+            }
+            noteWrites(*callee);
+            pending.push_back(callee);
+        }
+    }
 }
 
 const SubroutineEntry* FagorInterpreter::findSubroutine(int number, FagorProgram*& owner,

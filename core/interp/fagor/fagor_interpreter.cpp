@@ -62,6 +62,11 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
     m_output.setMachineOffset(m_startOffset);
     m_compensation.setCompMode(m_settings.compMode);
     resetModal();
+    if (m_settings.machine != nullptr) {
+        for (char letter : m_settings.machine->enabledAxisLetters()) {
+            if (auto axis = axisFromLetter(letter)) m_machineAxes |= axisBit(*axis);
+        }
+    }
     const machine::AxisConfig* x =
         m_settings.machine != nullptr ? m_settings.machine->axis('X') : nullptr;
     m_streamDiameter = x != nullptr && x->diameterMode;
@@ -101,7 +106,8 @@ bool FagorInterpreter::waitForCheck() {
     if (!m_checkThread.joinable()) return !m_checkFailed;
     m_checking->executionOffset.store(SIZE_MAX);
     m_checkThread.join();
-    const DiagnosticList& found = m_checking->diagnostics;
+    DiagnosticList found = m_checking->diagnostics;
+    checkCalledPrograms(*m_checking, found);
     if (hasErrors(found)) {
         // The program would not have started: only the check's findings count.
         m_diagnostics.erase(
@@ -136,6 +142,7 @@ FagorProgram* FagorInterpreter::loadProgram(const std::filesystem::path& path, s
     program->path = path;
     program->fileId = m_sources.add(path.string());
     program->number = programNumberOf(path);
+    program->machineAxes = m_machineAxes;
     program->keepLabels = keepLabels;
     checkProgram(*program);
     m_programs.push_back(std::move(program));
@@ -155,6 +162,7 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
     program->path = path;
     program->fileId = m_sources.add(path.string());
     program->number = programNumberOf(path);
+    program->machineAxes = m_machineAxes;
     m_programs.push_back(std::move(owned));
     m_diagnosticsAtLoad = m_diagnostics.size();
     if (mode == CheckMode::Background) {
@@ -164,8 +172,10 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
         m_checkThread = std::thread([program] { checkProgram(*program); });
     } else {
         checkProgram(*program);
-        appendDiagnostics(m_diagnostics, program->diagnostics);
-        if (hasErrors(program->diagnostics)) return false;
+        DiagnosticList found = program->diagnostics;
+        checkCalledPrograms(*program, found);
+        appendDiagnostics(m_diagnostics, found);
+        if (hasErrors(found)) return false;
     }
     enterProgram(program, BlockPosition{0, 1});
     m_status = interp::RunStatus::BudgetUsed;
@@ -180,10 +190,13 @@ bool FagorInterpreter::loadText(std::string text, const std::string& path) {
     program->path = path;
     program->fileId = m_sources.add(path);
     program->number = programNumberOf(path);
+    program->machineAxes = m_machineAxes;
     checkProgram(*program);
     m_programs.push_back(std::move(owned));
-    appendDiagnostics(m_diagnostics, program->diagnostics);
-    if (hasErrors(program->diagnostics)) return false;
+    DiagnosticList found = program->diagnostics;
+    checkCalledPrograms(*program, found);
+    appendDiagnostics(m_diagnostics, found);
+    if (hasErrors(found)) return false;
     enterProgram(program, BlockPosition{0, 1});
     m_status = interp::RunStatus::BudgetUsed;
     return true;

@@ -164,6 +164,11 @@ private:
     bool callSubroutine(Frame frame, int number, const LocalAssignments* locals, Problem& problem);
     const SubroutineEntry* findSubroutine(int number, FagorProgram*& owner, Problem& problem);
     FagorProgram* programByNumber(int number, bool keepLabels, Problem& problem);
+    // The program with this number, loaded and checked (its errors not looked at yet).
+    FagorProgram* programFileByNumber(int number, bool keepLabels, Problem& problem);
+    // Follows the EXEC/MEXEC of constant program numbers, transitively: a missing program or one
+    // that fails its check is an error at the call, as the run would stop there.
+    void checkCalledPrograms(const FagorProgram& program, DiagnosticList& out);
     void runModalAfterMotion(int repetition);
     int repetitionOfBlock();
     void startPendingInterrupt();
@@ -283,6 +288,7 @@ private:
     NoseCompensation m_compensation;
     ContourShaper m_shaper;
 
+    AxisMask m_machineAxes = 0;  // the enabled axes of the machine
     std::vector<std::unique_ptr<FagorProgram>> m_programs;
     std::thread m_checkThread;
     FagorProgram* m_checking = nullptr;

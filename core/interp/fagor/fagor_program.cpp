@@ -106,12 +106,20 @@ void Checker::iso(const ParsedBlock& block, const program::LogicalLine& line) {
     for (uint8_t i = 0; i < iso.gCount; ++i)
         literal = literal && !iso.g[i].parameter;
     if (literal && !checkGFunctions(iso, problem)) {
-        const bool later = problem.code == "not-supported";
-        Diagnostic d = Diagnostic::make(
-            later ? Severity::Warning : Severity::Error, problem.code, m_file, line.firstLine,
-            program::columnOf(line.text, problem.offset), problem.messageTemplate);
-        d.args = problem.args;
-        appendDiagnostic(m_program.diagnostics, std::move(d));
+        // A G function not supported (yet) stops the run there, so it fails the check too.
+        diag(Severity::Error, problem.code.c_str(), line.firstLine,
+             program::columnOf(line.text, problem.offset), problem.messageTemplate.c_str(),
+             problem.args);
+    }
+    for (uint8_t i = 0; i < iso.axisCount; ++i) {
+        // The run stops at a word for an axis the machine lacks (G1 Y10 on a lathe).
+        const Axis axis = iso.axisOrder[i];
+        if ((m_program.machineAxes & axisBit(axis)) != 0) continue;
+        diag(Severity::Error, "axis", line.firstLine,
+             program::columnOf(line.text, iso.axes[static_cast<size_t>(axisIndex(axis))].offset),
+             KERF_TR_NOOP("axis {1} is not available on this machine"),
+             {std::string(1, axisLetter(axis))});
+        break;
     }
     const int cycle = iso.cycle.g;
     if (cycle == 66 || cycle == 68 || cycle == 69) {
@@ -140,6 +148,16 @@ void Checker::highLevel(const StatementInfo& info, const program::LogicalLine& l
             {info.labels[i], line.firstLine, program::columnOf(line.text, info.labelOffsets[i])});
     }
     m_flow = m_flow || info.flow;
+    if (info.opens) {
+        if (info.program >= 0) {
+            m_program.opened.push_back(static_cast<int>(info.program));
+        } else {
+            m_program.opensAny = true;
+        }
+    } else if (info.program >= 0 && info.kind != StatementInfo::Kind::DncDirectory) {
+        m_program.calls.push_back({static_cast<int>(info.program), line.firstLine,
+                                   program::columnOf(line.text, info.programOffset)});
+    }
     switch (info.kind) {
         case StatementInfo::Kind::Sub: {
             const int n = static_cast<int>(info.number);
@@ -178,14 +196,14 @@ void Checker::highLevel(const StatementInfo& info, const program::LogicalLine& l
             }
             break;
         case StatementInfo::Kind::Customization:
-            diag(Severity::Warning, "not-supported", line.firstLine,
+            diag(Severity::Error, "not-supported", line.firstLine,
                  program::columnOf(line.text, info.keywordOffset),
                  KERF_TR_NOOP("{1} is a screen customisation instruction: not supported; the "
                               "program cannot run past this block"),
                  {std::string(info.keyword)});
             break;
         case StatementInfo::Kind::DncDirectory:
-            diag(Severity::Warning, "not-available", line.firstLine,
+            diag(Severity::Error, "not-available", line.firstLine,
                  program::columnOf(line.text, info.keywordOffset),
                  KERF_TR_NOOP("programs on a PC over DNC are not available; the program cannot run "
                               "past this block"));
@@ -296,6 +314,9 @@ void checkProgram(FagorProgram& program) {
     program.diagnostics.clear();
     program.labels.clear();
     program.subroutines.clear();
+    program.calls.clear();
+    program.opened.clear();
+    program.opensAny = false;
     Checker(program).run();
 }
 

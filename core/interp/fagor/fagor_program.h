@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/base/diagnostic.h"
+#include "core/geometry/axes.h"
 #include "core/program/source_text.h"
 
 namespace kerf::fagor {
@@ -24,6 +25,13 @@ struct SubroutineEntry {
     BlockPosition end;   // the block after (RET)
 };
 
+// An EXEC or MEXEC of a program given by a constant number.
+struct ProgramCall {
+    int number = 0;
+    uint32_t line = 0;
+    uint32_t column = 0;
+};
+
 // A loaded FAGOR program with its label and subroutine index, built by the program check.
 struct FagorProgram {
     std::shared_ptr<const program::SourceText> source;
@@ -33,9 +41,13 @@ struct FagorProgram {
     bool oem = false;         // the header's attributes contain O
     bool keepLabels = false;  // keep the label index even without jumps (RPT P, GPOS from others)
     size_t end = SIZE_MAX;    // an end-of-file character stops the text here
+    AxisMask machineAxes = (1u << kAxisCount) - 1;  // the machine's axes; all without a machine
     std::vector<std::pair<uint32_t, BlockPosition>> labels;  // sorted; first occurrence only
     std::vector<SubroutineEntry> subroutines;                // sorted by number
-    DiagnosticList diagnostics;                              // errors mean the program cannot run
+    std::vector<ProgramCall> calls;                          // in the order written
+    std::vector<int> opened;     // programs OPEN writes (constant numbers)
+    bool opensAny = false;       // an OPEN whose number is known only at run time
+    DiagnosticList diagnostics;  // errors mean the program cannot run
 
     // For a check running alongside execution (see FagorInterpreter::CheckMode).
     std::atomic<size_t> executionOffset{SIZE_MAX};
@@ -47,7 +59,8 @@ struct FagorProgram {
 
 // Checks every block's syntax and the static rules, indexes labels (a duplicate label warns: the
 // first one is used) and subroutines, and reports jumps to labels that do not exist,
-// subroutines without RET or defined twice, and (as warnings) what this release does not run.
+// subroutines without RET or defined twice, axis words for axes the machine lacks, and what this
+// release does not run (errors: a program that passes the check runs).
 void checkProgram(FagorProgram& program);
 
 // The program number a file name gives ("P012345.PIM", "12345", "p7.pit"), or -1.

@@ -52,6 +52,21 @@ void StatementRunner::noteLabel(int64_t label, size_t offset, bool constant) {
     ++m_info.labelCount;
 }
 
+void StatementRunner::noteProgram(size_t offset) {
+    // A constant number (EXEC P7): the check can verify the program exists and passes its check.
+    const size_t start = m_s->position();
+    int64_t value = 0;
+    uint8_t digits = 0;
+    if (isDigit(m_s->peek()) && m_s->unsignedInteger(value, digits) && digits <= 6) {
+        const char next = m_s->peek();
+        if (next == '\0' || next == ',') {
+            m_info.program = value;
+            m_info.programOffset = offset;
+        }
+    }
+    m_s->setPosition(start);
+}
+
 bool StatementRunner::run(std::string_view text, size_t begin, size_t end, int repetition) {
     m_s.emplace(text.substr(0, end), begin);
     m_end = end;
@@ -460,6 +475,8 @@ bool StatementRunner::programStatement(std::string_view keyword) {
         return true;
     }
     if (!expect('P')) return false;
+    m_info.opens = keyword == "OPEN";
+    noteProgram(at);
     int64_t program = 0;
     if (!integerExpression(program, 0, 999999, "a program number")) return false;
     char mode = '\0';

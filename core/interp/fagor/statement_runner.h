@@ -66,7 +66,10 @@ struct StatementInfo {
     std::array<int64_t, 4> labels{};
     std::array<size_t, 4> labelOffsets{};
     uint8_t labelCount = 0;
-    bool flow = false;  // GOTO or RPT: the label index is needed
+    bool flow = false;         // GOTO or RPT: the label index is needed
+    int64_t program = -1;      // EXEC/MEXEC/OPEN P<constant>: the program it runs or writes
+    size_t programOffset = 0;  // of its P
+    bool opens = false;        // OPEN: a program the run creates (constant number or not)
     std::string_view keyword;
     size_t keywordOffset = 0;  // in the block text
 };
@@ -105,6 +108,7 @@ private:
     bool contextFailed(size_t offset);
     bool executing() const { return m_exec && m_context != nullptr; }
     void noteLabel(int64_t label, size_t offset, bool constant);
+    void noteProgram(size_t offset);
 
     StatementContext* m_context;
     std::optional<Scanner> m_s;

@@ -289,5 +289,78 @@ TEST_F(FagorRun, CannedCycleOverwritesP299) {
     EXPECT_EQ(value, 7.0);
 }
 
+TEST_F(FagorRun, CheckFailsAtAConstructThatCannotRunYet) {
+    // A run would stop at G66 and at the screen instruction: the check fails, nothing moves.
+    EXPECT_EQ(run("G0 X130 Z120\n"
+                  "G66 X20 Z100 I8 C2 S10 E20\n"
+                  "(ODW 1, 6, 33)\n"
+                  "M30\n"
+                  "N10 G01 X40 Z80\n"
+                  "N20 G01 X100 Z40\n"),
+              interp::RunStatus::Failed);
+    const std::string file = (root / "program.pim").string();
+    EXPECT_EQ(diagnostics(),
+              file + ":2:1: error: G66 (pattern repeat cycle) is not supported yet\n" + file +
+                  ":3:2: error: ODW is a screen customisation instruction: not "
+                  "supported; the program cannot run past this block\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CheckFailsAtAnAxisTheLatheLacks) {
+    // The built-in lathe has X and Z: Y and C words are errors at their column before anything
+    // runs (the run used to move X and Z first and stop at line 2).
+    EXPECT_EQ(run("G90 G0 X130 Z120\n"
+                  "G1 X100 Y10 F100\n"
+                  "G01 C90\n"
+                  "M30\n"),
+              interp::RunStatus::Failed);
+    const std::string file = (root / "program.pim").string();
+    EXPECT_EQ(diagnostics(), file + ":2:9: error: axis Y is not available on this machine\n" +
+                                 file + ":3:5: error: axis C is not available on this machine\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CycleParametersAndArcCentresAreNotAxes) {
+    // C of G81 is its pass depth, I and K an arc's centre: the lathe check accepts them.
+    EXPECT_EQ(run("G90 G95 F0.3 S1000 M3\n"
+                  "G00 X70 Z2\n"
+                  "G81 X40 Z0 Q40 R-30 C3 D1\n"
+                  "G00 X60 Z0\n"
+                  "G03 X60 Z-20 I0 K-10\n"
+                  "M30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+}
+
+TEST_F(FagorRun, CheckFollowsExecToAMissingProgram) {
+    // The run would stop at the EXEC: the check fails at its P, before G0 moves.
+    EXPECT_EQ(run("G0 X10\n(EXEC P7)\nM30\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(),
+              (root / "program.pim").string() + ":2:7: error: program 7 is not in the NC root\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CheckFollowsExecIntoAFaultyProgram) {
+    // P7 runs P8, which moves an axis the lathe lacks: the check of P8 fails, and so do the
+    // EXECs that lead there.
+    write("P000007.PIM", "G0 X20\n(MEXEC P8)\nM30\n");
+    write("P000008.PIM", "G1 Y5\nM30\n");
+    EXPECT_EQ(run("G0 X10\n(EXEC P7)\nM30\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(), (root / "P000008.PIM").string() +
+                                 ":1:4: error: axis Y is not available on this machine\n" +
+                                 (root / "P000007.PIM").string() +
+                                 ":2:8: error: program 8 has errors\n");
+    EXPECT_TRUE(out.lines.empty());
+}
+
+TEST_F(FagorRun, CheckLeavesAProgramTheRunWritesToTheRun) {
+    // P9 does not exist before the run: OPEN creates it, then EXEC runs it.
+    EXPECT_EQ(run("(OPEN P9)\n(WRITE G0 X30)\n(WRITE M30)\n(EXEC P9)\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    // P9's G0 X30 (diameter: 15 in radius) on its line 2, after the header OPEN wrote.
+    EXPECT_EQ(out.lines, (std::vector<std::string>{"2:1 RAPID X15.0000 Z0.0000", "5:1 END M30"}));
+}
+
 }  // namespace
 }  // namespace kerf::fagor
