@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -55,6 +54,38 @@ KerfRun runKerf(const fs::path& program, const std::string& arguments) {
     return run;
 }
 
+// The --samples file: its header and one row of numbers per servo cycle, read by column name.
+struct Samples {
+    std::string header;
+    std::vector<std::string> columns;
+    std::vector<std::vector<double>> rows;
+
+    size_t column(const std::string& name) const {
+        const auto it = std::find(columns.begin(), columns.end(), name);
+        EXPECT_NE(it, columns.end()) << "no column " << name << " in " << header;
+        return static_cast<size_t>(it - columns.begin());
+    }
+};
+
+Samples readSamples(const fs::path& file) {
+    Samples samples;
+    std::ifstream csv(file);
+    std::string line;
+    if (!std::getline(csv, samples.header)) return samples;
+    std::stringstream names(samples.header);
+    for (std::string name; std::getline(names, name, ',');)
+        samples.columns.push_back(name);
+    while (std::getline(csv, line)) {
+        std::vector<double> row;
+        std::stringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');)
+            row.push_back(std::stod(cell));
+        EXPECT_EQ(row.size(), samples.columns.size()) << line;
+        samples.rows.push_back(std::move(row));
+    }
+    return samples;
+}
+
 // Rest-to-rest time of a straight move of `length` at velocity `v` with acceleration `a` and
 // jerk `j` (time-optimal S-curve): no planner can be faster within these limits.
 double sCurveTime(double length, double v, double a, double j) {
@@ -100,19 +131,16 @@ TEST(KerfRunMotion, OneLineOnTheMillTakesTheJerkLimitedTime) {
     EXPECT_LE(motion["max_path_deviation_mm"].get<double>(), 1e-9);
 
     // The samples: a header and one row per servo cycle (1 ms), X rising to 100.
-    std::ifstream csv(samples);
-    std::string line;
-    std::getline(csv, line);
-    EXPECT_EQ(line, "t_s,X,Y,Z,spindle_deg,path_velocity,move");
-    size_t rows = 0;
+    const Samples table = readSamples(samples);
+    EXPECT_EQ(table.header, "t_s,X,Y,Z,spindle_deg,path_velocity,move");
+    const size_t X = table.column("X");
     double lastX = 0.0;
-    while (std::getline(csv, line)) {
-        ++rows;
-        const double sampleX = std::stod(line.substr(line.find(',') + 1));
-        EXPECT_GE(sampleX, lastX - 1e-12);
-        lastX = sampleX;
+    for (const auto& row : table.rows) {
+        EXPECT_GE(row[X], lastX - 1e-12);
+        lastX = row[X];
     }
-    EXPECT_NEAR(static_cast<double>(rows), motion["duration_s"].get<double>() / 1e-3, 1.0);
+    EXPECT_NEAR(static_cast<double>(table.rows.size()), motion["duration_s"].get<double>() / 1e-3,
+                1.0);
     EXPECT_NEAR(lastX, 100.0, 1e-9);
 }
 
@@ -191,16 +219,13 @@ TEST(KerfRunMotion, FagorThreadKeepsTheLeadPerSpindleRevolution) {
     const fs::path samples = outputDir() / "thread.csv";
     KerfRun run = runKerf(program, "--machine lathe --samples \"" + samples.string() + "\"");
     ASSERT_EQ(run.exitCode, 0) << run.errors;
-    std::ifstream csv(samples);
-    std::string line;
-    std::getline(csv, line);
-    ASSERT_EQ(line, "t_s,X,Z,spindle_deg,path_velocity,move");
+    const Samples table = readSamples(samples);
+    ASSERT_EQ(table.header, "t_s,X,Z,spindle_deg,path_velocity,move");
+    const size_t X = table.column("X"), Z = table.column("Z"), A = table.column("spindle_deg");
     std::vector<std::pair<double, double>> thread;  // Z and spindle angle on the thread
-    while (std::getline(csv, line)) {
-        double t = 0.0, x = 0.0, z = 0.0, angle = 0.0;
-        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &t, &x, &z, &angle), 4);
-        if (std::fabs(x - 20.0) < 1e-9 && z < 10.0 - 1e-6 && z > -30.0 + 1e-6)
-            thread.emplace_back(z, angle);
+    for (const auto& row : table.rows) {
+        if (std::fabs(row[X] - 20.0) < 1e-9 && row[Z] < 10.0 - 1e-6 && row[Z] > -30.0 + 1e-6)
+            thread.emplace_back(row[Z], row[A]);
     }
     ASSERT_GT(thread.size(), 1000u);  // 40 mm at 1000 mm/min: about 2.4 s
     const double start = thread.front().second - (10.0 - thread.front().first) / 2.0 * 360.0;
@@ -224,17 +249,13 @@ TEST(KerfRunMotion, FagorG86PassesStayOnOneHelix) {
     const fs::path samples = outputDir() / "g86.csv";
     KerfRun run = runKerf(program, "--machine lathe --samples \"" + samples.string() + "\"");
     ASSERT_EQ(run.exitCode, 0) << run.errors;
-    std::ifstream csv(samples);
-    std::string line;
-    std::getline(csv, line);
-    ASSERT_EQ(line, "t_s,X,Z,spindle_deg,path_velocity,move");
+    const Samples table = readSamples(samples);
+    ASSERT_EQ(table.header, "t_s,X,Z,spindle_deg,path_velocity,move");
+    const size_t X = table.column("X"), Z = table.column("Z"), A = table.column("spindle_deg"),
+                 V = table.column("path_velocity");
     size_t onThread = 0;
-    while (std::getline(csv, line)) {
-        double t = 0.0, x = 0.0, z = 0.0, angle = 0.0, velocity = 0.0;
-        int move = 0;
-        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%d", &t, &x, &z, &angle, &velocity,
-                              &move),
-                  6);
+    for (const auto& row : table.rows) {
+        const double x = row[X], z = row[Z], angle = row[A], velocity = row[V];
         // On a pass: at its depth, moving (at the start point the tool waits for the spindle
         // angle), past every pass's start point (Z 4.65 at the latest) and before the end.
         const bool atDepth = std::fabs(x - 19.7) < 1e-9 || std::fabs(x - 19.4) < 1e-9;
@@ -279,17 +300,14 @@ TEST(KerfRunMotion, TncTappingCyclesKeepTheSpindleLockedToZ) {
         runKerf(program, "--tool-table \"" + tools.string() +
                              "\" --work-offset Z-300 --samples \"" + samples.string() + "\"");
     ASSERT_EQ(run.exitCode, 0) << run.errors;
-    std::ifstream csv(samples);
-    std::string line;
-    std::getline(csv, line);
-    ASSERT_EQ(line, "t_s,X,Y,Z,spindle_deg,path_velocity,move");
+    const Samples table = readSamples(samples);
+    ASSERT_EQ(table.header, "t_s,X,Y,Z,spindle_deg,path_velocity,move");
+    const size_t X = table.column("X"), Z = table.column("Z"), A = table.column("spindle_deg"),
+                 M = table.column("move");
     std::vector<std::pair<double, double>> tapping, thread;  // Z and spindle angle
-    while (std::getline(csv, line)) {
-        double t = 0.0, x = 0.0, y = 0.0, z = 0.0, angle = 0.0, velocity = 0.0;
-        int move = 0;
-        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%d", &t, &x, &y, &z, &angle,
-                              &velocity, &move),
-                  7);
+    for (const auto& row : table.rows) {
+        const double x = row[X], z = row[Z], angle = row[A];
+        const int move = static_cast<int>(row[M]);
         if (move == 3 || move == 4) {
             EXPECT_NEAR(x, 10.0, 1e-9);
             tapping.emplace_back(z, angle);
@@ -359,15 +377,13 @@ TEST(KerfRunMotion, FagorG75TouchesTheFaceAndTheProgramGoesOnFromWhereTheAxesSto
     }
     // The X move runs at one Z: where G76 stopped, just above the face (the planner starts it
     // from the drives' actual position, which is within 1e-6 mm of the setpoint at rest).
-    std::ifstream csv(samples);
-    std::string line;
-    std::getline(csv, line);
-    ASSERT_EQ(line, "t_s,X,Z,spindle_deg,path_velocity,move");
+    const Samples table = readSamples(samples);
+    ASSERT_EQ(table.header, "t_s,X,Z,spindle_deg,path_velocity,move");
+    const size_t X = table.column("X"), Z = table.column("Z");
     double lowest = 1e9;
     std::vector<double> zDuringX;
-    while (std::getline(csv, line)) {
-        double t = 0.0, x = 0.0, z = 0.0;
-        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &t, &x, &z), 3);
+    for (const auto& row : table.rows) {
+        const double x = row[X], z = row[Z];
         lowest = std::min(lowest, z);
         // Up to X 30 (radius): the corner to Z20 is blended within the last few mm.
         if (x > 10.0 + 1e-6 && x < 30.0) zDuringX.push_back(z);
