@@ -611,6 +611,14 @@ Maschine: %3</translation>
         <source>Not referenced: Home all in Manual operation</source>
         <translation>Nicht referenziert: Alle referenzieren in Manueller Betrieb</translation>
     </message>
+    <message>
+        <source>Coolant on</source>
+        <translation>Kühlmittel ein</translation>
+    </message>
+    <message>
+        <source>Coolant off</source>
+        <translation>Kühlmittel aus</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

@@ -611,6 +611,14 @@ Máquina: %3</translation>
         <source>Not referenced: Home all in Manual operation</source>
         <translation>No referenciado: Referenciar todos en Funcionamiento manual</translation>
     </message>
+    <message>
+        <source>Coolant on</source>
+        <translation>Refrigerante activado</translation>
+    </message>
+    <message>
+        <source>Coolant off</source>
+        <translation>Refrigerante desactivado</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

@@ -614,6 +614,14 @@ Maszyna: %3</translation>
         <source>Not referenced: Home all in Manual operation</source>
         <translation>Niezbazowana: Bazuj wszystkie w Obsłudze ręcznej</translation>
     </message>
+    <message>
+        <source>Coolant on</source>
+        <translation>Chłodziwo wł.</translation>
+    </message>
+    <message>
+        <source>Coolant off</source>
+        <translation>Chłodziwo wył.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

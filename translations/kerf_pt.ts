@@ -612,6 +612,14 @@ Máquina: %3</translation>
         <source>Not referenced: Home all in Manual operation</source>
         <translation>Não referenciado: Referenciar todos em Funcionamento manual</translation>
     </message>
+    <message>
+        <source>Coolant on</source>
+        <translation>Refrigeração ligada</translation>
+    </message>
+    <message>
+        <source>Coolant off</source>
+        <translation>Refrigeração desligada</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

@@ -100,7 +100,10 @@ PositionDisplay::PositionDisplay(const machine::MachineConfig& machine, QWidget*
     m_spindle->setObjectName("spindleSpeed");
     layout->addWidget(m_tool);
     layout->addWidget(m_feed);
+    m_coolant = new QLabel(this);
+    m_coolant->setObjectName("coolant");
     layout->addWidget(m_spindle);
+    layout->addWidget(m_coolant);
     layout->addStretch(1);
     m_overrides = new OverrideControls(this);
     layout->addWidget(m_overrides);
@@ -162,6 +165,10 @@ QString PositionDisplay::toolText() const {
     return m_tool->text();
 }
 
+QString PositionDisplay::coolantText() const {
+    return m_coolant->text();
+}
+
 void PositionDisplay::refresh() {
     const bool inch = m_settings.inch;
     for (size_t i = 0; i < m_axes.size(); ++i) {
@@ -198,6 +205,7 @@ void PositionDisplay::refresh() {
     m_spindle->setText(tr("S %1 (actual %2) rpm")
                            .arg(m_status.programmedSpindleRpm, 0, 'f', 0)
                            .arg(m_status.actualSpindleRpm, 0, 'f', 0));
+    m_coolant->setText(m_status.coolant ? tr("Coolant on") : tr("Coolant off"));
 }
 
 void PositionDisplay::changeEvent(QEvent* event) {

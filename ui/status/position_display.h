@@ -17,8 +17,8 @@ class OverrideControls;
 
 // The position display of the machine modes: the machine's axes with the kind of position chosen
 // in MOD (ACTL, NOML, REF ACTL, REF NOML, LAG, DIST), in mm or inch, lathe X as a diameter where
-// the machine says so; the run state, active tool, S and F (programmed and actual) and the
-// override controls.
+// the machine says so; the run state, active tool, S and F (programmed and actual), the coolant as
+// the machine executes it, and the override controls.
 class PositionDisplay : public QWidget {
     Q_OBJECT
 
@@ -37,6 +37,7 @@ public:
     // The axis shows the not-referenced symbol (it has not been homed since power-on).
     bool notReferencedShown(Axis axis) const;
     QString toolText() const;
+    QString coolantText() const;
 
     // The value of one axis as the settings show it: the kind of position, lathe diameter, unit.
     static double shownValue(const task::AxisStatus& axis, PositionKind kind, bool diameter,
@@ -68,6 +69,7 @@ private:
     QLabel* m_state = nullptr;
     QLabel* m_tool = nullptr;
     QLabel* m_feed = nullptr;
+    QLabel* m_coolant = nullptr;
     QLabel* m_spindle = nullptr;
     OverrideControls* m_overrides = nullptr;
 };

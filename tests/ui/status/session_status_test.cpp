@@ -6,8 +6,10 @@
 
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
+#include "session_service.h"
 #include "simulated_machine.h"
 #include "ui/session/machine_session.h"
+#include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
 
 namespace kerf::ui {
@@ -41,6 +43,36 @@ TEST(SessionStatus, TabsShowTheRunningProgramsState) {
     EXPECT_EQ(tabs.valueOf(Tab::Program, "Cycle"), "7 DATUM SHIFT");
     EXPECT_EQ(tabs.valueOf(Tab::Parameters, "Q5"), "4");
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Datum shift X"), "2.000 mm");
+}
+
+TEST(SessionStatus, CoolantShowsWhatTheMachineExecutes) {
+    // M8 with block 1, a program stop in block 2, M9 with block 3: the display says "on" while
+    // the machine waits at the stop and "off" after the program ends.
+    test::testApp();
+    auto mill = machine::loadMachine("mill");
+    ASSERT_TRUE(mill.ok());
+    MachineSession session(*mill, test::connectSimulatedMachine(*mill), "");
+    PositionDisplay display(*mill);
+    QObject::connect(&session, &MachineSession::statusChanged, &display,
+                     &PositionDisplay::setStatus);
+    EXPECT_EQ(display.coolantText(), QStringLiteral("Coolant off"));
+    ASSERT_TRUE(
+        session.startProgram("0 BEGIN PGM C MM\n1 L X+1 Y+0 Z+0 R0 F500 M3 M8\n2 STOP\n"
+                             "3 L X+2 M9\n4 END PGM C MM\n",
+                             "C.H"));
+    // The display follows the status the session emits while it is serviced.
+    auto stateIs = [&session](task::RunState wanted) {
+        return [&session, wanted] { return session.runState() == wanted; };
+    };
+    ASSERT_TRUE(test::serviceUntil(session, stateIs(task::RunState::Stopped), 10s));
+    test::serviceUntil(
+        session, [] { return false; }, 50ms);  // the status after the stop
+    EXPECT_EQ(display.coolantText(), QStringLiteral("Coolant on"));
+    session.cycleStart();
+    ASSERT_TRUE(test::serviceUntil(session, stateIs(task::RunState::Finished), 10s));
+    test::serviceUntil(
+        session, [] { return false; }, 50ms);
+    EXPECT_EQ(display.coolantText(), QStringLiteral("Coolant off"));
 }
 
 }  // namespace
