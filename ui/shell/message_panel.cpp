@@ -20,6 +20,9 @@ constexpr int kFromCheckRole = Qt::UserRole + 2;
 constexpr int kBlockNumberRole = Qt::UserRole + 3;
 constexpr int kDialectRole = Qt::UserRole + 4;
 
+// Run messages kept; the oldest beyond this go (the check's findings are replaced by each check).
+constexpr int kMaxRunMessages = 200;
+
 QColor severityColor(Severity severity) {
     switch (severity) {
         case Severity::Error:
@@ -96,7 +99,17 @@ void MessagePanel::setCheckDiagnostics(const DiagnosticList& diagnostics) {
 }
 
 void MessagePanel::addMessage(Severity severity, const QString& text, int line) {
-    m_list->addTopLevelItem(makeItem(severity, text, line, false));
+    // Newest first: the run's messages sit above the check's findings, the latest at the top.
+    m_list->insertTopLevelItem(0, makeItem(severity, text, line, false));
+    int runMessages = 0;
+    for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
+        if (!m_list->topLevelItem(i)->data(0, kFromCheckRole).toBool()) ++runMessages;
+    }
+    for (int i = m_list->topLevelItemCount() - 1; i >= 0 && runMessages > kMaxRunMessages; --i) {
+        if (m_list->topLevelItem(i)->data(0, kFromCheckRole).toBool()) continue;
+        delete m_list->takeTopLevelItem(i);
+        --runMessages;
+    }
     refreshLine();
 }
 
@@ -138,7 +151,8 @@ void MessagePanel::setListVisible(bool visible) {
 }
 
 void MessagePanel::refreshLine() {
-    // The line shows the most severe message (the first of them) and how many there are.
+    // The line shows the most severe message (the newest of them: the list is newest first) and
+    // how many there are.
     QTreeWidgetItem* worst = nullptr;
     int worstSeverity = -1;
     for (int i = 0; i < m_list->topLevelItemCount(); ++i) {

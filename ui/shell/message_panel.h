@@ -16,6 +16,8 @@ namespace kerf::ui {
 // The message line under the header and the message list it opens: each message has a
 // severity, a text and the block it refers to, named by its block number (the file line where
 // the line has none). Activating a message that names a line asks the editor to jump there.
+// The list is newest first: the run's messages (the latest 200) above the last check's findings
+// (in file order, replaced by each check); the line shows the newest of the most severe.
 class MessagePanel : public QWidget {
     Q_OBJECT
 

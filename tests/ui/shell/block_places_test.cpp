@@ -72,12 +72,13 @@ TEST(BlockPlaces, MessagesNameTheBlockNumberAndTheLineOnlyWhereThereIsNone) {
     messages->addMessage(Severity::Warning, QStringLiteral("on the continuation"), 3);
     messages->addMessage(Severity::Error, QStringLiteral("beyond the limit"), 5);
     EXPECT_EQ(messages->list()->headerItem()->text(2), QStringLiteral("Block"));
-    EXPECT_EQ(messages->list()->topLevelItem(0)->text(2), QStringLiteral("line 3"));
-    EXPECT_EQ(messages->list()->topLevelItem(1)->text(2), QStringLiteral("3"));
+    // Newest first.
+    EXPECT_EQ(messages->list()->topLevelItem(0)->text(2), QStringLiteral("3"));
+    EXPECT_EQ(messages->list()->topLevelItem(1)->text(2), QStringLiteral("line 3"));
     EXPECT_TRUE(messages->line()->text().contains(QStringLiteral("Block 3: beyond the limit")))
         << messages->line()->text().toStdString();
     // Touching the message still jumps to its line.
-    messages->activate(1);
+    messages->activate(0);
     EXPECT_EQ(window.program()->editor()->currentLine(), 5);
 }
 
@@ -113,8 +114,8 @@ TEST(BlockPlaces, GoToTakesTheFagorNNumberOnALathe) {
     window.messages()->clearMessages();
     window.messages()->addMessage(Severity::Error, QStringLiteral("x"), 4);
     window.messages()->addMessage(Severity::Error, QStringLiteral("y"), 3);
-    EXPECT_EQ(window.messages()->list()->topLevelItem(0)->text(2), QStringLiteral("N30"));
-    EXPECT_EQ(window.messages()->list()->topLevelItem(1)->text(2), QStringLiteral("line 3"));
+    EXPECT_EQ(window.messages()->list()->topLevelItem(0)->text(2), QStringLiteral("line 3"));
+    EXPECT_EQ(window.messages()->list()->topLevelItem(1)->text(2), QStringLiteral("N30"));
 }
 
 TEST(BlockPlaces, AProgramWithoutBlockNumbersIsAddressedByLine) {

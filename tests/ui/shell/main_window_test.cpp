@@ -176,6 +176,28 @@ TEST(MainWindow, ClickingADiagnosticJumpsToItsLine) {
               QStringLiteral("4 BOGUS WORD"));
 }
 
+TEST(MainWindow, MessagesAreNewestFirstAndANewErrorIsNotHiddenByAnOldOne) {
+    test::testApp();
+    MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_message_order")));
+    MessagePanel* messages = window.messages();
+    messages->clearMessages();
+    messages->addMessage(Severity::Error, QStringLiteral("old error"), 0);
+    messages->addMessage(Severity::Warning, QStringLiteral("a warning"), 0);
+    messages->addMessage(Severity::Error, QStringLiteral("new error"), 0);
+    EXPECT_EQ(messages->list()->topLevelItem(0)->text(1), QStringLiteral("new error"));
+    EXPECT_EQ(messages->list()->topLevelItem(2)->text(1), QStringLiteral("old error"));
+    EXPECT_TRUE(messages->line()->text().contains(QStringLiteral("new error")))
+        << messages->line()->text().toStdString();
+    // The latest 200 run messages are kept, the check's findings stay below them.
+    messages->setCheckDiagnostics({Diagnostic::make(Severity::Warning, "t", "P.H", 2, 1, "found")});
+    for (int i = 0; i < 250; ++i)
+        messages->addMessage(Severity::Note, QStringLiteral("note %1").arg(i), 0);
+    EXPECT_EQ(messages->messageCount(), 201);
+    EXPECT_EQ(messages->list()->topLevelItem(0)->text(1), QStringLiteral("note 249"));
+    EXPECT_EQ(messages->list()->topLevelItem(199)->text(1), QStringLiteral("note 50"));
+    EXPECT_EQ(messages->list()->topLevelItem(200)->text(1), QStringLiteral("found"));
+}
+
 TEST(MainWindow, FilesAndTablesArePagesWithTheirOwnSoftkeys) {
     test::testApp();
     const auto dir = kerf::test::uniqueTempDir("hmi_window_pages");
