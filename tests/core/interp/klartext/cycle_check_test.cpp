@@ -114,5 +114,29 @@ TEST(CycleCheck, WholeNumberParameterRefusesFractions) {
               std::string::npos);
 }
 
+TEST(CycleCheck, CircularPocketFromAnOlderControlNeedsNoFeedReference) {
+    // A 252 block as written before Q439 existed (software -02; corpus VESELYparametr).
+    EXPECT_TRUE(check("0 BEGIN PGM P MM\n"
+                      "1 CYCL DEF 252 CIRCULAR POCKET ~\n"
+                      "    Q215=+0    ;MACHINING OPERATION ~\n"
+                      "    Q223=+60   ;CIRCLE DIAMETER ~\n"
+                      "    Q368=+0    ;ALLOWANCE FOR SIDE ~\n"
+                      "    Q207=+500  ;FEED RATE FOR MILLNG ~\n"
+                      "    Q351=+1    ;CLIMB OR UP-CUT ~\n"
+                      "    Q201=-2    ;DEPTH ~\n"
+                      "    Q202=+5    ;PLUNGING DEPTH ~\n"
+                      "    Q369=+0    ;ALLOWANCE FOR FLOOR ~\n"
+                      "    Q206=+150  ;FEED RATE FOR PLNGNG ~\n"
+                      "    Q338=+0    ;INFEED FOR FINISHING ~\n"
+                      "    Q200=+2    ;SET-UP CLEARANCE ~\n"
+                      "    Q203=-2.5  ;SURFACE COORDINATE ~\n"
+                      "    Q204=+50   ;2ND SET-UP CLEARANCE ~\n"
+                      "    Q370=+1    ;TOOL PATH OVERLAP ~\n"
+                      "    Q366=+1    ;PLUNGE ~\n"
+                      "    Q385=+500  ;FINISHING FEED RATE\n"
+                      "2 END PGM P MM\n")
+                    .empty());
+}
+
 }  // namespace
 }  // namespace kerf::klartext
