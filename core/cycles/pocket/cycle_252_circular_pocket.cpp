@@ -44,7 +44,7 @@ constexpr ParameterDescriptor kParameters[] = {
      .predef = true,
      .integer = true},
     kFinishingFeed,
-    kFeedReference,
+    common::addedLater(kFeedReference),  // added in -02
 };
 
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {

@@ -92,7 +92,7 @@ constexpr ParameterDescriptor kParameters[] = {
     common::kSecondClearance,
     kPlunge,
     kFinishingFeed,
-    kFeedReference,
+    common::addedLater(kFeedReference),  // added in -02
 };
 
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {

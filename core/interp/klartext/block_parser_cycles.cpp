@@ -134,6 +134,7 @@ bool BlockParser::parseCycleParameters(const program::LogicalLine& line,
         Cursor sc(text.substr(0, segmentEnd(line, s)), line.segments[s].joinedOffset);
         if (sc.atEnd()) continue;
         CycleParameter p;
+        p.offset = sc.position();
         if (!sc.acceptPrefix("Q")) {
             return failAt(sc.position(), "syntax", KERF_TR_NOOP("cycle parameter Qnnn= expected"));
         }
@@ -156,7 +157,10 @@ bool BlockParser::parseCycleParameters(const program::LogicalLine& line,
             if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
                 lead == '.') {
                 auto v = fp.wordValue();
-                if (v && vc.atEnd()) p.value = *v;
+                if (v && vc.atEnd()) {
+                    p.value = *v;
+                    p.literal = p.raw.find_first_of("Qq") == std::string::npos;
+                }
             }
         }
         out.push_back(std::move(p));

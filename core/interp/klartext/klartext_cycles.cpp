@@ -2,12 +2,11 @@
 // SEL PATTERN. Old-style sub-blocks are dispatched to klartext_transform.cpp.
 #include <algorithm>
 #include <array>
-#include <cmath>
 
-#include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/cycles/cycle_registry.h"
 #include "core/cycles/global_def.h"
+#include "core/cycles/parameter_check.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/point_table.h"
 
@@ -25,10 +24,6 @@ std::string trimmedUpper(std::string_view text) {
     for (char& c : out)
         c = upper(c);
     return out;
-}
-
-std::string parameterName(const cycles::ParameterDescriptor& p) {
-    return p.q != 0 ? "Q" + std::to_string(p.q) : std::string(p.word);
 }
 
 bool scalesWithUnit(cycles::Unit unit) {
@@ -89,12 +84,11 @@ bool KlartextInterpreter::resolveParameters(
     for (const cycles::ParameterDescriptor& d : descriptors) {
         auto it = std::find_if(written.rbegin(), written.rend(),
                                [&](const CycleParameter& p) { return p.q == d.q; });
-        const std::string name = parameterName(d);
+        const std::string name = cycles::parameterName(d);
         const std::string meaning = d.description;
         if (it == written.rend()) {
-            if (!d.optional) {
-                fail("cycle-parameter", KERF_TR_NOOP("{1}: parameter {2} ({3}) is missing"),
-                     {owner, name, meaning});
+            if (auto missing = cycles::missingParameterError(owner, d)) {
+                failCycle(*missing);
                 return false;
             }
             values.set(d.q, d.defaultValue * (scalesWithUnit(d.unit) ? scale : 1.0));
@@ -163,14 +157,8 @@ bool KlartextInterpreter::resolveParameters(
             return false;
         }
         const double value = *it->value;
-        const bool whole = !d.integer || std::fabs(value - std::round(value)) < 1e-9;
-        if (!(value >= d.min - 1e-9 && value <= d.max + 1e-9) || !whole) {
-            fail("cycle-range",
-                 d.integer ? KERF_TR_NOOP("{1}: parameter {2} ({3}) = {4} must be a whole number "
-                                          "from {5} to {6}")
-                           : KERF_TR_NOOP("{1}: parameter {2} ({3}) = {4} is outside {5} to {6}"),
-                 {owner, name, meaning, formatForMessage(value, 4), formatFixed(d.min, 4),
-                  formatFixed(d.max, 4)});
+        if (auto outside = cycles::parameterValueError(owner, d, value)) {
+            failCycle(*outside);
             return false;
         }
         values.set(d.q, value * (scalesWithUnit(d.unit) ? scale : 1.0));

@@ -8,6 +8,7 @@
 #include "core/cycles/cycle_registry.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/cycle_definition_check.h"
 #include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
@@ -159,12 +160,14 @@ void checkProgram(ProgramFile& program) {
             diag(Severity::Error, "not-supported", line.firstLine, 1,
                  KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
                  {deferred->feature});
-        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s);
-                   cycle && cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
-            diag(Severity::Error, "not-supported", line.firstLine, 1,
-                 KERF_TR_NOOP(
-                     "cycle {1} is not supported yet; the program cannot run past this block"),
-                 {std::to_string(cycle->number)});
+        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
+            if (cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
+                diag(Severity::Error, "not-supported", line.firstLine, 1,
+                     KERF_TR_NOOP(
+                         "cycle {1} is not supported yet; the program cannot run past this block"),
+                     {std::to_string(cycle->number)});
+            }
+            checkCycleParameters(*cycle, line, file, out);
         }
         if (!empty) firstBlock = false;
     }

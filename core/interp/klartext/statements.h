@@ -244,6 +244,8 @@ struct CycleParameter {
     std::string raw;  // value text as written ("+5", "PREDEF", "FAUTO", "Q1")
     std::optional<double> value;
     std::string comment;
+    size_t offset = 0;     // where "Qnnn=" starts in the block text
+    bool literal = false;  // `value` uses no Q parameter: known before the run
 };
 struct CycleDefinition {
     int number = 0;

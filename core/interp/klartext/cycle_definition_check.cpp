@@ -1,0 +1,44 @@
+#include "core/interp/klartext/cycle_definition_check.h"
+
+#include <algorithm>
+
+#include "core/cycles/cycle_registry.h"
+#include "core/cycles/parameter_check.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+void report(const cycles::CycleError& error, const std::string& file, uint32_t line,
+            uint32_t column, DiagnosticList& out) {
+    Diagnostic d =
+        Diagnostic::make(Severity::Error, error.code, file, line, column, error.messageTemplate);
+    d.args = error.args;
+    appendDiagnostic(out, std::move(d));
+}
+
+}  // namespace
+
+void checkCycleParameters(const CycleDefinition& def, const program::LogicalLine& line,
+                          const std::string& file, DiagnosticList& out) {
+    const cycles::CycleDescriptor* cycle = cycles::findCycle(def.number);
+    if (def.subNumber >= 0 || cycle == nullptr || cycle->oldStyle) return;
+    const std::string owner = "cycle " + std::to_string(def.number);
+    for (const cycles::ParameterDescriptor& d : cycle->parameters) {
+        // The run takes the last of repeated parameters.
+        auto it = std::find_if(def.parameters.rbegin(), def.parameters.rend(),
+                               [&](const CycleParameter& p) { return p.q == d.q; });
+        if (it == def.parameters.rend()) {
+            if (auto missing = cycles::missingParameterError(owner, d)) {
+                report(*missing, file, line.firstLine, 1, out);
+            }
+            continue;
+        }
+        if (it->isString || d.unit == cycles::Unit::Text || !it->literal) continue;
+        if (auto outside = cycles::parameterValueError(owner, d, *it->value)) {
+            report(*outside, file, line.lineAt(it->offset), line.columnAt(it->offset), out);
+        }
+    }
+}
+
+}  // namespace kerf::klartext
