@@ -164,8 +164,15 @@ QVariant SettingsModel::headerData(int section, Qt::Orientation orientation, int
 
 Qt::ItemFlags SettingsModel::flags(const QModelIndex& index) const {
     const Qt::ItemFlags base = QAbstractTableModel::flags(index);
-    if (!index.isValid() || isHeading(index.row()) || index.column() != Value) return base;
+    if (m_locked || !index.isValid() || isHeading(index.row()) || index.column() != Value)
+        return base;
     return base | Qt::ItemIsEditable;
+}
+
+void SettingsModel::setLocked(bool locked) {
+    if (locked == m_locked) return;
+    m_locked = locked;
+    emit dataChanged(index(0, Value), index(rowCount() - 1, Value));
 }
 
 bool SettingsModel::setData(const QModelIndex& index, const QVariant& value, int role) {
@@ -175,7 +182,7 @@ bool SettingsModel::setData(const QModelIndex& index, const QVariant& value, int
 
 bool SettingsModel::setValueText(const std::string& key, const QString& text) {
     const machine::ParameterDescriptor* descriptor = machine::findParameter(key);
-    if (descriptor == nullptr || text == valueText(key)) return false;
+    if (m_locked || descriptor == nullptr || text == valueText(key)) return false;
     machine::MachineConfig edited = m_config;
     if (MaybeError error = machine::setParameter(edited, key, parseValue(*descriptor, text))) {
         emit refused(*error);
