@@ -172,10 +172,13 @@ TEST_F(MachineScreens, ManualSpindleStartsAtTheEnteredSpeedWithinTheMachinesMaxi
     MachineSession* session = window->session();
     SoftkeyBar& bar = *window->softkeys();
     EXPECT_EQ(keyText(bar, "spindleSpeed"), QStringLiteral("S\n1000"));
+    const int spindleRow = bar.currentRow();  // the row keyText left on the screen
+    ASSERT_GT(spindleRow, 0);
     // The mill's spindle reaches 12000 rpm (presets/mill.toml): 20000 is cut to that.
     answerNumberDialog(20000);
     ASSERT_TRUE(bar.pressId("spindleSpeed"));
     EXPECT_DOUBLE_EQ(session->manualSpindleRpm(), 12000.0);
+    EXPECT_EQ(bar.currentRow(), spindleRow);  // the new label, on the same row
     answerNumberDialog(1500);
     ASSERT_TRUE(bar.pressId("spindleSpeed"));
     EXPECT_DOUBLE_EQ(session->manualSpindleRpm(), 1500.0);
