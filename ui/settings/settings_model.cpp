@@ -12,6 +12,8 @@ namespace kerf::ui {
 
 namespace {
 
+const char* const kCodeKey = "parameter_code";
+
 constexpr size_t kMaxUndo = 200;
 
 // The group of a key: "spindle" for "spindle.max_rpm", "axes.X" for "axes.X.max_velocity",
@@ -127,6 +129,8 @@ QVariant SettingsModel::data(const QModelIndex& index, int role) const {
             return role == Qt::ToolTipRole ? QString::fromStdString(row.key)
                                            : QString::fromStdString(nameOf(row.key));
         case Value:
+            // The code number itself is not shown to whoever has not given it.
+            if (m_locked && row.key == kCodeKey) return QStringLiteral("****");
             return valueText(row.key);
         case Unit:
             return QString::fromStdString(

@@ -131,6 +131,9 @@ TEST(SettingsPage, EditingAsksForTheCodeNumberViewingDoesNot) {
     const QModelIndex value = model.index(rapid, SettingsModel::Value);
     const QString before = model.data(value, Qt::DisplayRole).toString();
     EXPECT_FALSE(before.isEmpty());  // shown while locked
+    // ... but not the code number itself.
+    const QModelIndex codeValue = model.index(model.rowOf("parameter_code"), SettingsModel::Value);
+    EXPECT_EQ(model.data(codeValue, Qt::DisplayRole).toString(), QStringLiteral("****"));
     EXPECT_TRUE(page.locked());
     EXPECT_FALSE(model.flags(value) & Qt::ItemIsEditable);
     EXPECT_FALSE(model.setData(value, "750", Qt::EditRole));
@@ -151,6 +154,7 @@ TEST(SettingsPage, EditingAsksForTheCodeNumberViewingDoesNot) {
     unlockButton->click();
     EXPECT_FALSE(page.locked());
     EXPECT_TRUE(model.flags(value) & Qt::ItemIsEditable);
+    EXPECT_EQ(model.data(codeValue, Qt::DisplayRole).toString(), QStringLiteral("4711"));
     EXPECT_TRUE(model.setData(value, "750", Qt::EditRole));
     EXPECT_EQ(model.config().rapidVelocityMmPerS, 750.0);
 }
