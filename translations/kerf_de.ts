@@ -434,6 +434,25 @@ Satz</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::MdiDialog</name>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Positionieren mit Handeingabe</translation>
+    </message>
+    <message>
+        <source>Block (arrow keys: the blocks run before)</source>
+        <translation>Satz (Pfeiltasten: die zuvor ausgeführten Sätze)</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MessagePanel</name>
     <message>
         <source>Severity</source>
@@ -695,6 +714,22 @@ Maschine: %3</translation>
     <message>
         <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
         <translation>Kerf liest die Maschinenparameter beim Start: in %1 gespeicherte Änderungen gelten nach einem Neustart.</translation>
+    </message>
+    <message>
+        <source>Wrong code number: the machine parameters stay locked</source>
+        <translation>Falsche Schlüsselzahl: die Maschinenparameter bleiben gesperrt</translation>
+    </message>
+    <message>
+        <source>Machine parameters unlocked for editing</source>
+        <translation>Maschinenparameter zum Bearbeiten freigegeben</translation>
+    </message>
+    <message>
+        <source>Code number for editing</source>
+        <translation>Schlüsselzahl zum Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Freigeben</translation>
     </message>
 </context>
 <context>
@@ -5761,6 +5796,10 @@ editieren</translation>
         <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
         <translation>Bezug Vorschub (0 Werkzeugmitte, 1 Schneide beim Schlichten der Seite, 2 auch beim Schlichten des Bodens, 3 immer)</translation>
     </message>
+    <message>
+        <source>Code number asked before machine parameters may be edited</source>
+        <translation>Schlüsselzahl, die vor dem Bearbeiten der Maschinenparameter abgefragt wird</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5872,14 +5911,6 @@ block</source>
 ausführen</translation>
     </message>
     <message>
-        <source>Positioning with MDI</source>
-        <translation>Positionieren mit Handeingabe</translation>
-    </message>
-    <message>
-        <source>Block</source>
-        <translation>Satz</translation>
-    </message>
-    <message>
         <source>Set preset</source>
         <translation>Bezugspunkt setzen</translation>
     </message>
@@ -5932,6 +5963,14 @@ aus</translation>
 preset</source>
         <translation>Bezugspunkt
 setzen</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Spindeldrehzahl</translation>
+    </message>
+    <message>
+        <source>S in rpm (%1 to %2)</source>
+        <translation>S in 1/min (%1 bis %2)</translation>
     </message>
 </context>
 </TS>

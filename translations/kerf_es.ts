@@ -434,6 +434,25 @@ frase</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::MdiDialog</name>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Posicionamiento con MDI</translation>
+    </message>
+    <message>
+        <source>Block (arrow keys: the blocks run before)</source>
+        <translation>Bloque (teclas de flecha: los bloques ejecutados antes)</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MessagePanel</name>
     <message>
         <source>Severity</source>
@@ -695,6 +714,22 @@ Máquina: %3</translation>
     <message>
         <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
         <translation>Kerf lee los parámetros de máquina al arrancar: los cambios guardados en %1 se aplican tras reiniciar.</translation>
+    </message>
+    <message>
+        <source>Wrong code number: the machine parameters stay locked</source>
+        <translation>Código numérico incorrecto: los parámetros de máquina siguen bloqueados</translation>
+    </message>
+    <message>
+        <source>Machine parameters unlocked for editing</source>
+        <translation>Parámetros de máquina desbloqueados para editar</translation>
+    </message>
+    <message>
+        <source>Code number for editing</source>
+        <translation>Código numérico para editar</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Desbloquear</translation>
     </message>
 </context>
 <context>
@@ -5761,6 +5796,10 @@ ciclo</translation>
         <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
         <translation>Referencia del avance (0 centro de la herramienta, 1 filo en el acabado lateral, 2 también en el acabado del fondo, 3 siempre)</translation>
     </message>
+    <message>
+        <source>Code number asked before machine parameters may be edited</source>
+        <translation>Código numérico que se pide antes de editar los parámetros de máquina</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5873,14 +5912,6 @@ block</source>
 bloque</translation>
     </message>
     <message>
-        <source>Positioning with MDI</source>
-        <translation>Posicionamiento con MDI</translation>
-    </message>
-    <message>
-        <source>Block</source>
-        <translation>Bloque</translation>
-    </message>
-    <message>
         <source>Set preset</source>
         <translation>Fijar punto de referencia</translation>
     </message>
@@ -5933,6 +5964,14 @@ desconectado</translation>
 preset</source>
         <translation>Fijar
 punto ref.</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Velocidad del cabezal</translation>
+    </message>
+    <message>
+        <source>S in rpm (%1 to %2)</source>
+        <translation>S en rpm (%1 a %2)</translation>
     </message>
 </context>
 </TS>

@@ -436,6 +436,25 @@ bloku</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::MdiDialog</name>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Pozycjonowanie z MDI</translation>
+    </message>
+    <message>
+        <source>Block (arrow keys: the blocks run before)</source>
+        <translation>Blok (klawisze strzałek: bloki wykonane wcześniej)</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MessagePanel</name>
     <message>
         <source>Severity</source>
@@ -698,6 +717,22 @@ Maszyna: %3</translation>
     <message>
         <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
         <translation>Kerf wczytuje parametry maszynowe przy starcie: zmiany zapisane w %1 obowiązują po ponownym uruchomieniu.</translation>
+    </message>
+    <message>
+        <source>Wrong code number: the machine parameters stay locked</source>
+        <translation>Błędny kod liczbowy: parametry maszyny pozostają zablokowane</translation>
+    </message>
+    <message>
+        <source>Machine parameters unlocked for editing</source>
+        <translation>Parametry maszyny odblokowane do edycji</translation>
+    </message>
+    <message>
+        <source>Code number for editing</source>
+        <translation>Kod liczbowy do edycji</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Odblokuj</translation>
     </message>
 </context>
 <context>
@@ -5764,6 +5799,10 @@ cykl</translation>
         <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
         <translation>Odniesienie posuwu (0 środek narzędzia, 1 ostrze przy wykańczaniu boku, 2 także dna, 3 zawsze)</translation>
     </message>
+    <message>
+        <source>Code number asked before machine parameters may be edited</source>
+        <translation>Kod liczbowy wymagany przed edycją parametrów maszyny</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5876,14 +5915,6 @@ block</source>
 blok</translation>
     </message>
     <message>
-        <source>Positioning with MDI</source>
-        <translation>Pozycjonowanie z MDI</translation>
-    </message>
-    <message>
-        <source>Block</source>
-        <translation>Blok</translation>
-    </message>
-    <message>
         <source>Set preset</source>
         <translation>Ustaw punkt odniesienia</translation>
     </message>
@@ -5936,6 +5967,14 @@ wył.</translation>
 preset</source>
         <translation>Ustaw punkt
 odniesienia</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Prędkość obrotowa wrzeciona</translation>
+    </message>
+    <message>
+        <source>S in rpm (%1 to %2)</source>
+        <translation>S w obr/min (%1 do %2)</translation>
     </message>
 </context>
 </TS>

@@ -435,6 +435,25 @@ bloco</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::MdiDialog</name>
+    <message>
+        <source>Positioning with MDI</source>
+        <translation>Posicionamento com MDI</translation>
+    </message>
+    <message>
+        <source>Block (arrow keys: the blocks run before)</source>
+        <translation>Bloco (teclas de seta: os blocos executados antes)</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::MessagePanel</name>
     <message>
         <source>Severity</source>
@@ -696,6 +715,22 @@ Máquina: %3</translation>
     <message>
         <source>Kerf reads the machine parameters when it starts: saved changes to %1 apply after a restart.</source>
         <translation>O Kerf lê os parâmetros de máquina ao arrancar: as alterações guardadas em %1 aplicam-se depois de reiniciar.</translation>
+    </message>
+    <message>
+        <source>Wrong code number: the machine parameters stay locked</source>
+        <translation>Código numérico errado: os parâmetros da máquina continuam bloqueados</translation>
+    </message>
+    <message>
+        <source>Machine parameters unlocked for editing</source>
+        <translation>Parâmetros da máquina desbloqueados para edição</translation>
+    </message>
+    <message>
+        <source>Code number for editing</source>
+        <translation>Código numérico para editar</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Desbloquear</translation>
     </message>
 </context>
 <context>
@@ -5761,6 +5796,10 @@ ciclo</translation>
         <source>Feed rate reference (0 tool centre, 1 cutting edge when side finishing, 2 also floor finishing, 3 always)</source>
         <translation>Referência do avanço (0 centro da ferramenta, 1 gume no acabamento lateral, 2 também no acabamento do fundo, 3 sempre)</translation>
     </message>
+    <message>
+        <source>Code number asked before machine parameters may be edited</source>
+        <translation>Código numérico pedido antes de editar os parâmetros da máquina</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -5873,14 +5912,6 @@ block</source>
 bloco</translation>
     </message>
     <message>
-        <source>Positioning with MDI</source>
-        <translation>Posicionamento com MDI</translation>
-    </message>
-    <message>
-        <source>Block</source>
-        <translation>Bloco</translation>
-    </message>
-    <message>
         <source>Set preset</source>
         <translation>Definir ponto de referência</translation>
     </message>
@@ -5933,6 +5964,14 @@ desligado</translation>
 preset</source>
         <translation>Definir
 ponto ref.</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Rotação do fuso</translation>
+    </message>
+    <message>
+        <source>S in rpm (%1 to %2)</source>
+        <translation>S em rpm (%1 a %2)</translation>
     </message>
 </context>
 </TS>

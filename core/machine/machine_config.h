@@ -80,6 +80,9 @@ struct MachineConfig {
     double pathToleranceMm = 0.01;  // default corner-blending tolerance
     // The HMI runs programs and MDI only after a reference run (as a real control does).
     bool referenceRequired = true;
+    // Code number the HMI asks before machine parameters may be edited (the TNC's user
+    // parameters open with 123); viewing needs none.
+    int parameterCode = 123;
     DrivesConfig drives;
     BarConfig bar;                        // lathe only
     ProbeWorkpieceConfig probeWorkpiece;  // simulation only

@@ -57,6 +57,13 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "Programs and MDI run only after the axes are homed (Home all); false "
                            "lets a machine without reference switches run from power-on")}),
+        bindField<&MachineConfig::parameterCode>(
+            kMachine, {.key = "parameter_code",
+                       .unit = "code",
+                       .minimum = 0.0,
+                       .maximum = 99999999.0,
+                       .description = KERF_TR_NOOP(
+                           "Code number asked before machine parameters may be edited")}),
         bindField<&MachineConfig::spindle, &SpindleConfig::minRpm>(
             kMachine, {.key = "spindle.min_rpm",
                        .unit = "rpm",

@@ -1,6 +1,7 @@
 #include "ui/session/machine_session.h"
 
 #include <QTimer>
+#include <algorithm>
 
 #include "core/task/shifted_motion_port.h"
 #include "ui/common/diagnostic_text.h"
@@ -20,6 +21,7 @@ MachineSession::MachineSession(machine::MachineConfig machine,
       m_run(std::make_unique<task::ProgramRun>(*m_motion)) {
     registerDiagnosticMetaTypes();
     applyPresetTable();
+    setManualSpindleRpm(m_manualSpindleRpm);
     m_status = m_motion->status();
     m_timer = new QTimer(this);
     m_timer->setInterval(kServiceIntervalMs);
@@ -102,7 +104,12 @@ bool MachineSession::executeMdi(const QString& block) {
     source.startPosition.values = m_motion->world().position.values;
     source.presetInMachine = presetInMachine();
     m_programName.clear();
-    return start(loadProgram(m_machine, source), std::nullopt);
+    if (!start(loadProgram(m_machine, source), std::nullopt)) return false;
+    constexpr qsizetype kMaxMdiHistory = 50;
+    m_mdiHistory.removeAll(block.trimmed());
+    m_mdiHistory.prepend(block.trimmed());
+    if (m_mdiHistory.size() > kMaxMdiHistory) m_mdiHistory.removeLast();
+    return true;
 }
 
 bool MachineSession::start(LoadedProgram loaded, std::optional<uint32_t> startLine) {
@@ -265,11 +272,18 @@ bool MachineSession::homeAll() {
     return m_motion->home(std::nullopt);
 }
 
-bool MachineSession::spindle(bool on, double rpm) {
+double MachineSession::setManualSpindleRpm(double rpm) {
+    const machine::SpindleConfig& spindle = m_machine.spindle;
+    m_manualSpindleRpm = std::clamp(rpm, static_cast<double>(spindle.minRpm),
+                                    static_cast<double>(std::max(spindle.minRpm, spindle.maxRpm)));
+    return m_manualSpindleRpm;
+}
+
+bool MachineSession::spindle(bool on, std::optional<double> rpm) {
     if (refuseWhenBusy()) return false;
     canon::SpindleControl control;
     control.direction = on ? canon::SpindleDirection::Clockwise : canon::SpindleDirection::Stopped;
-    control.speedRpm = on ? rpm : 0.0;
+    control.speedRpm = on ? rpm.value_or(m_manualSpindleRpm) : 0.0;
     return m_motion->manualSpindle(control);
 }
 

@@ -2,6 +2,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -59,6 +60,8 @@ public:
     bool startProgram(const QString& text, const std::filesystem::path& path,
                       std::optional<uint32_t> startLine = std::nullopt);
     bool executeMdi(const QString& block);
+    // The MDI blocks started in this session, the latest first, each once (a rerun moves it up).
+    const QStringList& mdiHistory() const { return m_mdiHistory; }
     // Resumes after feed hold, a program stop or a single-block stop; after a jog away from the
     // interrupted program it first returns to where the program stopped (return to the contour).
     void cycleStart();
@@ -85,7 +88,11 @@ public:
     // Moves one axis by a distance (the handwheel's detents).
     bool jogDistance(Axis axis, double mm);
     bool homeAll();
-    bool spindle(bool on, double rpm = 1000.0);
+    // Without `rpm` the spindle starts at the manual speed (the S entry of Manual operation).
+    bool spindle(bool on, std::optional<double> rpm = std::nullopt);
+    // Sets the manual speed, limited to the machine's spindle range; returns the speed kept.
+    double setManualSpindleRpm(double rpm);
+    double manualSpindleRpm() const { return m_manualSpindleRpm; }
 
     // Electronic handwheel (simulated): each detent moves the selected axis by the factor
     // (1, 10 or 100) times 0.001 mm.
@@ -164,6 +171,8 @@ private:
     static constexpr int kProgramStatusEvery = 10;  // services (200 ms)
     int m_servicesSinceProgramStatus = 0;
     double m_incrementMm = 1.0;
+    double m_manualSpindleRpm = 1000.0;  // until the operator enters S
+    QStringList m_mdiHistory;
     Axis m_handwheelAxis = Axis::X;
     int m_handwheelFactor = 1;
     bool m_singleBlock = false;

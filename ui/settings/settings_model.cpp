@@ -12,6 +12,8 @@ namespace kerf::ui {
 
 namespace {
 
+const char* const kCodeKey = "parameter_code";
+
 constexpr size_t kMaxUndo = 200;
 
 // The group of a key: "spindle" for "spindle.max_rpm", "axes.X" for "axes.X.max_velocity",
@@ -127,6 +129,8 @@ QVariant SettingsModel::data(const QModelIndex& index, int role) const {
             return role == Qt::ToolTipRole ? QString::fromStdString(row.key)
                                            : QString::fromStdString(nameOf(row.key));
         case Value:
+            // The code number itself is not shown to whoever has not given it.
+            if (m_locked && row.key == kCodeKey) return QStringLiteral("****");
             return valueText(row.key);
         case Unit:
             return QString::fromStdString(
@@ -164,8 +168,15 @@ QVariant SettingsModel::headerData(int section, Qt::Orientation orientation, int
 
 Qt::ItemFlags SettingsModel::flags(const QModelIndex& index) const {
     const Qt::ItemFlags base = QAbstractTableModel::flags(index);
-    if (!index.isValid() || isHeading(index.row()) || index.column() != Value) return base;
+    if (m_locked || !index.isValid() || isHeading(index.row()) || index.column() != Value)
+        return base;
     return base | Qt::ItemIsEditable;
+}
+
+void SettingsModel::setLocked(bool locked) {
+    if (locked == m_locked) return;
+    m_locked = locked;
+    emit dataChanged(index(0, Value), index(rowCount() - 1, Value));
 }
 
 bool SettingsModel::setData(const QModelIndex& index, const QVariant& value, int role) {
@@ -175,7 +186,7 @@ bool SettingsModel::setData(const QModelIndex& index, const QVariant& value, int
 
 bool SettingsModel::setValueText(const std::string& key, const QString& text) {
     const machine::ParameterDescriptor* descriptor = machine::findParameter(key);
-    if (descriptor == nullptr || text == valueText(key)) return false;
+    if (m_locked || descriptor == nullptr || text == valueText(key)) return false;
     machine::MachineConfig edited = m_config;
     if (MaybeError error = machine::setParameter(edited, key, parseValue(*descriptor, text))) {
         emit refused(*error);

@@ -12,8 +12,8 @@ namespace kerf::ui {
 // The machine parameters as a table generated from the schema (core/machine/machine_schema):
 // a heading row per group ("Machine", "spindle", "Axis X" ...) followed by one row per
 // parameter with its value, unit, allowed values, default and description. Only the value is
-// editable; it is checked by the schema's setParameter, whose message names the key. Every
-// accepted change can be undone.
+// editable, and only while not locked; it is checked by the schema's setParameter, whose message
+// names the key. Every accepted change can be undone.
 class SettingsModel : public QAbstractTableModel {
     Q_OBJECT
 
@@ -39,6 +39,9 @@ public:
     bool setValueText(const std::string& key, const QString& text);
     void undo();
     bool modified() const { return m_modified; }
+    // Locked: the values are shown but not editable (the code number is not yet given).
+    void setLocked(bool locked);
+    bool locked() const { return m_locked; }
     void setSaved() { m_modified = false; }
 
 signals:
@@ -56,6 +59,7 @@ private:
     std::vector<Row> m_rows;
     std::vector<machine::MachineConfig> m_undo;
     bool m_modified = false;
+    bool m_locked = false;
 };
 
 }  // namespace kerf::ui

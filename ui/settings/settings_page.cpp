@@ -1,8 +1,11 @@
 #include "ui/settings/settings_page.h"
 
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QTableView>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -16,7 +19,7 @@ namespace kerf::ui {
 
 SettingsPage::SettingsPage(machine::MachineConfig config, std::filesystem::path file, bool builtIn,
                            QWidget* parent)
-    : QWidget(parent), m_file(std::move(file)), m_builtIn(builtIn) {
+    : QWidget(parent), m_file(std::move(file)), m_builtIn(builtIn), m_code(config.parameterCode) {
     setObjectName("settingsPage");
     registerDiagnosticMetaTypes();
     auto* layout = new QVBoxLayout(this);
@@ -28,7 +31,31 @@ SettingsPage::SettingsPage(machine::MachineConfig config, std::filesystem::path 
     m_note->setStyleSheet(QStringLiteral("background: #fff4ce; padding: 6px;"));
     layout->addWidget(m_title);
     layout->addWidget(m_note);
+    m_codeRow = new QWidget(this);
+    auto* codeLayout = new QHBoxLayout(m_codeRow);
+    codeLayout->setContentsMargins(0, 0, 0, 0);
+    m_codeLabel = new QLabel(m_codeRow);
+    m_codeEdit = new QLineEdit(m_codeRow);
+    m_codeEdit->setObjectName("settingsCode");
+    m_codeEdit->setEchoMode(QLineEdit::Password);
+    m_codeEdit->setMinimumHeight(48);  // a finger's target
+    m_codeEdit->setMaximumWidth(200);
+    m_unlockButton = new QPushButton(m_codeRow);
+    m_unlockButton->setObjectName("settingsUnlock");
+    m_unlockButton->setMinimumHeight(48);
+    codeLayout->addWidget(m_codeLabel);
+    codeLayout->addWidget(m_codeEdit);
+    codeLayout->addWidget(m_unlockButton);
+    codeLayout->addStretch(1);
+    layout->addWidget(m_codeRow);
+    const auto tryCode = [this] {
+        unlock(m_codeEdit->text());
+        m_codeEdit->clear();
+    };
+    connect(m_codeEdit, &QLineEdit::returnPressed, this, tryCode);
+    connect(m_unlockButton, &QPushButton::clicked, this, tryCode);
     m_model = new SettingsModel(std::move(config), this);
+    m_model->setLocked(true);
     connect(m_model, &SettingsModel::refused, this, &SettingsPage::report);
     m_view = new QTableView(this);
     m_view->setObjectName("settingsView");
@@ -42,6 +69,23 @@ SettingsPage::SettingsPage(machine::MachineConfig config, std::filesystem::path 
     // Long allowed ranges must not push the description off the screen; tooltips hold it all.
     for (int column = 0; column < SettingsModel::Description; ++column)
         m_view->setColumnWidth(column, std::min(m_view->columnWidth(column), 220));
+}
+
+bool SettingsPage::unlock(const QString& code) {
+    bool ok = false;
+    const int given = code.trimmed().toInt(&ok);
+    if (!ok || given != m_code) {
+        emit message(Severity::Error, tr("Wrong code number: the machine parameters stay locked"));
+        return false;
+    }
+    m_model->setLocked(false);
+    m_codeRow->hide();
+    emit message(Severity::Note, tr("Machine parameters unlocked for editing"));
+    return true;
+}
+
+bool SettingsPage::locked() const {
+    return m_model->locked();
 }
 
 bool SettingsPage::modified() const {
@@ -82,6 +126,8 @@ void SettingsPage::changeEvent(QEvent* event) {
 
 void SettingsPage::retranslate() {
     m_title->setText(tr("Machine parameters"));
+    m_codeLabel->setText(tr("Code number for editing"));
+    m_unlockButton->setText(tr("Unlock"));
     const QString file = QString::fromStdString(m_file.string());
     m_note->setText(
         m_builtIn

@@ -7,6 +7,8 @@
 #include "core/machine/machine_config.h"
 
 class QLabel;
+class QLineEdit;
+class QPushButton;
 class QTableView;
 
 namespace kerf::ui {
@@ -17,7 +19,8 @@ class SettingsModel;
 // the schema (the message names the key), checked as a whole by validateMachine before an
 // atomic save of the machine TOML. Kerf reads the machine when it starts, so the page says that
 // saved changes apply after a restart, and for a built-in machine where the file goes and how to
-// start with it.
+// start with it. The values are shown to anyone; editing them asks for the machine's code
+// number (parameter_code, 123 unless the machine file says otherwise) first, as on the TNC.
 class SettingsPage : public QWidget {
     Q_OBJECT
 
@@ -27,6 +30,9 @@ public:
     SettingsPage(machine::MachineConfig config, std::filesystem::path file, bool builtIn,
                  QWidget* parent = nullptr);
 
+    // Unlocks editing when `code` is the machine's code number; a wrong one is reported.
+    bool unlock(const QString& code);
+    bool locked() const;
     bool save();
     void undo();
     bool modified() const;
@@ -46,10 +52,15 @@ private:
 
     std::filesystem::path m_file;
     bool m_builtIn = false;
+    int m_code = 0;
     SettingsModel* m_model = nullptr;
     QTableView* m_view = nullptr;
     QLabel* m_title = nullptr;
     QLabel* m_note = nullptr;
+    QWidget* m_codeRow = nullptr;
+    QLabel* m_codeLabel = nullptr;
+    QLineEdit* m_codeEdit = nullptr;
+    QPushButton* m_unlockButton = nullptr;
 };
 
 }  // namespace kerf::ui

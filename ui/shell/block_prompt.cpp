@@ -1,6 +1,5 @@
 #include "ui/shell/block_prompt.h"
 
-#include <QAbstractSpinBox>
 #include <QCoreApplication>
 #include <QInputDialog>
 #include <QTextBlock>
@@ -9,6 +8,7 @@
 #include "ui/editor/block_numbers.h"
 #include "ui/editor/program_editor.h"
 #include "ui/shell/message_panel.h"
+#include "ui/shell/touch_dialog.h"
 
 namespace kerf::ui {
 
@@ -30,10 +30,7 @@ std::optional<int> askForBlockLine(QWidget* parent, const QString& title,
     dialog.setWindowTitle(title);
     dialog.setInputMode(QInputDialog::IntInput);
     const int currentLine = editor.currentLine();
-    // The field touch sized, as the other dialogs' fields.
-    for (QWidget* child : dialog.findChildren<QWidget*>()) {
-        if (qobject_cast<QAbstractSpinBox*>(child)) child->setMinimumHeight(48);
-    }
+    makeTouchSized(dialog);
     if (!numbersBlocks(document, dialect)) {
         dialog.setLabelText(BlockPrompt::tr("Line"));
         dialog.setIntRange(1, document.blockCount());

@@ -6,6 +6,7 @@
 
 #include "ui/session/machine_session.h"
 #include "ui/shell/manual_rows.h"
+#include "ui/shell/mdi_dialog.h"
 
 namespace kerf::ui {
 
@@ -96,11 +97,9 @@ SoftkeyRow mdiRow(const MachineRowContext& c) {
     return {
         {QStringLiteral("mdiExecute"), MachineRows::tr("Execute\nblock"),
          [session, parent] {
-             bool ok = false;
-             const QString block =
-                 QInputDialog::getText(parent, MachineRows::tr("Positioning with MDI"),
-                                       MachineRows::tr("Block"), QLineEdit::Normal, QString(), &ok);
-             if (ok && !block.trimmed().isEmpty()) session->executeMdi(block);
+             MdiDialog dialog(session->mdiHistory(), parent);
+             if (dialog.exec() == QDialog::Accepted && !dialog.block().isEmpty())
+                 session->executeMdi(dialog.block());
          }},
         {QStringLiteral("ncStop"), MachineRows::tr("NC stop\n(feed hold)"),
          [session] { session->feedHold(); }},

@@ -95,7 +95,12 @@ std::vector<SoftkeyRow> MainWindow::machineRows() {
     context.askStartBlock = [this] {
         return askForBlockLine(this, tr("Start at block"), *m_program->editor(), *m_messages);
     };
-    context.refresh = [this] { refreshSoftkeys(); };
+    // New labels, same row: the operator stays where the key was pressed.
+    context.refresh = [this] {
+        const int row = m_softkeys->currentRow();
+        refreshSoftkeys();
+        if (row < m_softkeys->rowCount()) m_softkeys->showRow(row);
+    };
     return machineModeRows(m_modes->machineMode(), context);
 }
 

@@ -5,6 +5,7 @@
 #include <QStringList>
 
 #include "ui/session/machine_session.h"
+#include "ui/shell/touch_dialog.h"
 
 namespace kerf::ui {
 
@@ -38,6 +39,22 @@ void askPreset(MachineSession* session, QWidget* parent) {
                                 0.0, -100000.0, 100000.0, 4, &ok);
     if (!ok) return;
     if (const auto a = axisFromLetter(axis.at(0).toLatin1())) session->setPresetByEntry(*a, value);
+}
+
+// Asks for the manual spindle speed, offered only within the machine's spindle range.
+void askSpindleSpeed(MachineSession* session, QWidget* parent) {
+    const machine::SpindleConfig& spindle = session->machine().spindle;
+    QInputDialog dialog(parent);
+    dialog.setObjectName(QStringLiteral("spindleSpeedPrompt"));
+    dialog.setWindowTitle(MachineRows::tr("Spindle speed"));
+    dialog.setLabelText(
+        MachineRows::tr("S in rpm (%1 to %2)").arg(spindle.minRpm).arg(spindle.maxRpm));
+    dialog.setInputMode(QInputDialog::IntInput);
+    dialog.setIntRange(spindle.minRpm, spindle.maxRpm);
+    dialog.setIntStep(100);
+    dialog.setIntValue(static_cast<int>(session->manualSpindleRpm()));
+    makeTouchSized(dialog);
+    if (dialog.exec() == QDialog::Accepted) session->setManualSpindleRpm(dialog.intValue());
 }
 
 }  // namespace
@@ -75,7 +92,14 @@ SoftkeyRow handwheelRow(const MachineRowContext& c) {
 SoftkeyRow manualFunctionsRow(const MachineRowContext& c) {
     MachineSession* session = c.session;
     QWidget* parent = c.dialogParent;
+    auto refresh = c.refresh;
     return {
+        {QStringLiteral("spindleSpeed"),
+         QStringLiteral("S\n%1").arg(QString::number(session->manualSpindleRpm(), 'f', 0)),
+         [session, parent, refresh] {
+             askSpindleSpeed(session, parent);
+             if (refresh) refresh();
+         }},
         {QStringLiteral("spindleOn"), MachineRows::tr("Spindle\non"),
          [session] { session->spindle(true); }},
         {QStringLiteral("spindleOff"), MachineRows::tr("Spindle\noff"),

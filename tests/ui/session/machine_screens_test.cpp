@@ -1,7 +1,14 @@
 // The machine screens in the window: a program run shows the program following the executing
 // block next to the positions; Manual operation and the handwheel on the softkeys.
+#include <QAbstractItemView>
+#include <QApplication>
+#include <QComboBox>
 #include <QFileSystemModel>
+#include <QInputDialog>
+#include <QLabel>
 #include <QPushButton>
+#include <QTest>
+#include <QTimer>
 #include <QTreeView>
 #include <chrono>
 #include <fstream>
@@ -19,7 +26,9 @@
 #include "ui/files/file_manager.h"
 #include "ui/shell/machine_keys.h"
 #include "ui/shell/main_window.h"
+#include "ui/shell/mdi_dialog.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/shell/softkey_bar.h"
 #include "ui/shell/workspace.h"
 #include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
@@ -51,11 +60,14 @@ std::optional<int> highlightedLine(const ProgramEditor& editor) {
 
 class MachineScreens : public testing::Test {
 protected:
-    MachineScreens() {
+    MachineScreens() { openWindow(true); }
+    void openWindow(bool referenceRequired) {
         test::testApp();
+        window.reset();
         dir = kerf::test::uniqueTempDir("hmi_machine_screens");
         HmiContext context;
         context.machine = *machine::loadMachine("mill");
+        context.machine.referenceRequired = referenceRequired;
         context.ncRoot = dir;
         context.recoveryFolder = dir / "recovery";
         context.motion = [config = context.machine] {
@@ -133,6 +145,104 @@ TEST_F(MachineScreens, TheHandwheelKeysChooseTheAxisAndTheStep) {
     EXPECT_NEAR(y(), 0.1, 1e-5);
     // Manual's functions are on the handwheel screen too.
     EXPECT_TRUE(window->softkeys()->pressId("coolantOn"));
+}
+
+// The text of the key with this id on whichever row of the softkey bar holds it, empty if none.
+QString keyText(SoftkeyBar& bar, const QString& id) {
+    for (int row = 0; row < bar.rowCount(); ++row) {
+        bar.showRow(row);
+        for (int i = 0; i < SoftkeyBar::kKeys; ++i)
+            if (bar.keyId(i) == id) return bar.keyButton(i)->text();
+    }
+    return {};
+}
+
+// Answers the next number dialog with `value`, as the operator would type it.
+void answerNumberDialog(int value) {
+    QTimer::singleShot(0, [value] {
+        auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(dialog, nullptr);
+        dialog->setIntValue(value);
+        dialog->accept();
+    });
+}
+
+TEST_F(MachineScreens, ManualSpindleStartsAtTheEnteredSpeedWithinTheMachinesMaximum) {
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    MachineSession* session = window->session();
+    SoftkeyBar& bar = *window->softkeys();
+    EXPECT_EQ(keyText(bar, "spindleSpeed"), QStringLiteral("S\n1000"));
+    const int spindleRow = bar.currentRow();  // the row keyText left on the screen
+    ASSERT_GT(spindleRow, 0);
+    // The mill's spindle reaches 12000 rpm (presets/mill.toml): 20000 is cut to that.
+    answerNumberDialog(20000);
+    ASSERT_TRUE(bar.pressId("spindleSpeed"));
+    EXPECT_DOUBLE_EQ(session->manualSpindleRpm(), 12000.0);
+    EXPECT_EQ(bar.currentRow(), spindleRow);  // the new label, on the same row
+    answerNumberDialog(1500);
+    ASSERT_TRUE(bar.pressId("spindleSpeed"));
+    EXPECT_DOUBLE_EQ(session->manualSpindleRpm(), 1500.0);
+    EXPECT_EQ(keyText(bar, "spindleSpeed"), QStringLiteral("S\n1500"));
+
+    ASSERT_TRUE(bar.pressId("spindleOn"));
+    ASSERT_TRUE(processUntil([&] { return session->status().actualSpindleRpm > 1499.0; }, 5s));
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 1500.0);
+    auto* status = window->positions()->findChild<QLabel*>("spindleSpeed");
+    ASSERT_NE(status, nullptr);
+    EXPECT_TRUE(status->text().startsWith(QStringLiteral("S 1500 ")))
+        << status->text().toStdString();
+    ASSERT_TRUE(bar.pressId("spindleOff"));
+    EXPECT_TRUE(processUntil([&] { return session->status().actualSpindleRpm == 0.0; }, 5s));
+}
+
+// Runs one MDI block through the MDI dialog; `choose` fills in the dialog as the operator would.
+void runMdi(MainWindow& window, const std::function<void(MdiDialog&)>& choose) {
+    QTimer::singleShot(0, [choose] {
+        auto* dialog = qobject_cast<MdiDialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(dialog, nullptr);
+        choose(*dialog);
+        dialog->okButton()->click();
+    });
+    ASSERT_TRUE(window.softkeys()->pressId("mdiExecute"));
+    ASSERT_TRUE(processUntil([&] { return window.session()->busy(); }, 2s));
+    ASSERT_TRUE(processUntil([&] { return !window.session()->busy(); }));
+}
+
+TEST_F(MachineScreens, MdiKeepsTheBlocksRunAndTheArrowKeysPickOneToRunAgain) {
+    openWindow(false);  // no reference run needed before MDI
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Mdi));
+    const QString first = QStringLiteral("L X+5 FMAX");
+    const QString second = QStringLiteral("L X+8 FMAX");
+    runMdi(*window, [&](MdiDialog& dialog) {
+        EXPECT_EQ(dialog.blockField()->count(), 0);  // nothing run yet
+        dialog.blockField()->setEditText(first);
+    });
+    EXPECT_NEAR(x(), 5.0, 1e-6);
+    runMdi(*window, [&](MdiDialog& dialog) {
+        EXPECT_TRUE(dialog.block().isEmpty());  // a new block starts from an empty field
+        dialog.blockField()->setEditText(second);
+    });
+    EXPECT_NEAR(x(), 8.0, 1e-6);
+    EXPECT_EQ(window->session()->mdiHistory(), QStringList({second, first}));
+
+    // Arrow down twice: the latest block, then the one before it; it runs again.
+    runMdi(*window, [&](MdiDialog& dialog) {
+        QComboBox* field = dialog.blockField();
+        ASSERT_EQ(field->count(), 2);
+        // Field, buttons and the list's rows are finger sized.
+        for (QWidget* widget :
+             {static_cast<QWidget*>(field), static_cast<QWidget*>(dialog.okButton()),
+              static_cast<QWidget*>(dialog.cancelButton())})
+            EXPECT_GE(widget->height(), SoftkeyBar::kMinimumKeyHeight);
+        EXPECT_GE(field->view()->sizeHintForRow(1), SoftkeyBar::kMinimumKeyHeight);
+        QTest::keyClick(field, Qt::Key_Down);
+        EXPECT_EQ(dialog.block(), second);
+        QTest::keyClick(field, Qt::Key_Down);
+        EXPECT_EQ(dialog.block(), first);
+    });
+    EXPECT_NEAR(x(), 5.0, 1e-6);
+    // Run again, it moves to the top and is kept once.
+    EXPECT_EQ(window->session()->mdiHistory(), QStringList({first, second}));
 }
 
 TEST(MachineScreensFiles, TheTablesFilterIncludesTouchProbeTables) {

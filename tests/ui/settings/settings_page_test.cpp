@@ -1,5 +1,7 @@
 #include "ui/settings/settings_page.h"
 
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
 
 #include <gtest/gtest.h>
@@ -60,6 +62,7 @@ TEST(SettingsPage, OutOfRangeIsRefusedNamingTheKeyAndAValidValueIsSavedAndReload
     const machine::MachineConfig mill = *machine::loadMachine("mill");
     SettingsPage page(mill, file, false);
     QSignalSpy messages(&page, &SettingsPage::message);
+    ASSERT_TRUE(page.unlock("123"));
     SettingsModel& model = *page.model();
 
     // The schema allows 0.1 ... 5000 mm/s.
@@ -100,6 +103,7 @@ TEST(SettingsPage, RulesBetweenParametersBlockTheSave) {
     ASSERT_FALSE(writeFileAtomically(file, "base = \"mill\"\n").has_value());
     SettingsPage page(*machine::loadMachine("mill"), file, false);
     QSignalSpy messages(&page, &SettingsPage::message);
+    ASSERT_TRUE(page.unlock("123"));
     // Each value is in range, but the spindle's minimum may not exceed its maximum.
     const QString maxRpm = page.model()
                                ->data(page.model()->index(page.model()->rowOf("spindle.max_rpm"),
@@ -112,6 +116,47 @@ TEST(SettingsPage, RulesBetweenParametersBlockTheSave) {
     EXPECT_TRUE(anyMessageContains(messages, "spindle"));
     EXPECT_TRUE(anyMessageContains(messages, "Not saved"));
     EXPECT_EQ(readWholeFile(file).value(), "base = \"mill\"\n");
+}
+
+TEST(SettingsPage, EditingAsksForTheCodeNumberViewingDoesNot) {
+    test::testApp();
+    const fs::path file = kerf::test::uniqueTempDir("hmi_settings_code") / "mill.toml";
+    machine::MachineConfig mill = *machine::loadMachine("mill");
+    EXPECT_EQ(mill.parameterCode, 123);  // the TNC's code for the user parameters
+    mill.parameterCode = 4711;
+    SettingsPage page(mill, file, false);
+    QSignalSpy messages(&page, &SettingsPage::message);
+    SettingsModel& model = *page.model();
+    const int rapid = model.rowOf("rapid_velocity");
+    const QModelIndex value = model.index(rapid, SettingsModel::Value);
+    const QString before = model.data(value, Qt::DisplayRole).toString();
+    EXPECT_FALSE(before.isEmpty());  // shown while locked
+    // ... but not the code number itself.
+    const QModelIndex codeValue = model.index(model.rowOf("parameter_code"), SettingsModel::Value);
+    EXPECT_EQ(model.data(codeValue, Qt::DisplayRole).toString(), QStringLiteral("****"));
+    EXPECT_TRUE(page.locked());
+    EXPECT_FALSE(model.flags(value) & Qt::ItemIsEditable);
+    EXPECT_FALSE(model.setData(value, "750", Qt::EditRole));
+    EXPECT_EQ(model.data(value, Qt::DisplayRole).toString(), before);
+
+    // The default 123 is not this machine's code; typed into the page's field it is refused.
+    auto* code = page.findChild<QLineEdit*>("settingsCode");
+    auto* unlockButton = page.findChild<QPushButton*>("settingsUnlock");
+    ASSERT_NE(code, nullptr);
+    ASSERT_NE(unlockButton, nullptr);
+    code->setText("123");
+    unlockButton->click();
+    EXPECT_TRUE(page.locked());
+    EXPECT_TRUE(anyMessageContains(messages, "Wrong code number"));
+    EXPECT_FALSE(page.unlock("abc"));
+
+    code->setText("4711");
+    unlockButton->click();
+    EXPECT_FALSE(page.locked());
+    EXPECT_TRUE(model.flags(value) & Qt::ItemIsEditable);
+    EXPECT_EQ(model.data(codeValue, Qt::DisplayRole).toString(), QStringLiteral("4711"));
+    EXPECT_TRUE(model.setData(value, "750", Qt::EditRole));
+    EXPECT_EQ(model.config().rapidVelocityMmPerS, 750.0);
 }
 
 }  // namespace

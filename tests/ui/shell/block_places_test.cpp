@@ -1,8 +1,10 @@
+#include <QAbstractSpinBox>
 #include <QInputDialog>
 #include <QPushButton>
 #include <QTimer>
 #include <QTreeWidget>
 #include <fstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -98,6 +100,34 @@ TEST(BlockPlaces, GoToTakesTheBlockNumber) {
     ASSERT_TRUE(window.softkeys()->pressId("goto"));
     EXPECT_EQ(window.program()->editor()->currentLine(), 5);
     ASSERT_EQ(window.messages()->messageCount(), before + 1);
+}
+
+TEST(BlockPlaces, TheGoToPromptsButtonsAndFieldAreFingerSized) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_block_touch");
+    std::ofstream(dir / "B.H") << kContinued;
+    MainWindow window(contextIn(dir));
+    window.show();
+    ASSERT_TRUE(window.openProgram(dir / "B.H"));
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    std::vector<int> buttonHeights;
+    int fieldHeight = 0;
+    auto* timer = new QTimer(&window);
+    QObject::connect(timer, &QTimer::timeout, timer, [&] {
+        auto* dialog = window.findChild<QInputDialog*>(QStringLiteral("blockPrompt"));
+        if (dialog == nullptr || !dialog->isVisible()) return;
+        timer->stop();
+        for (QPushButton* button : dialog->findChildren<QPushButton*>())
+            if (button->isVisible()) buttonHeights.push_back(button->height());
+        fieldHeight = dialog->findChild<QAbstractSpinBox*>()->height();
+        dialog->reject();
+    });
+    timer->start(5);
+    ASSERT_TRUE(window.softkeys()->pressId("goto"));
+    ASSERT_EQ(buttonHeights.size(), 2u);  // OK and Cancel
+    for (int height : buttonHeights)
+        EXPECT_GE(height, SoftkeyBar::kMinimumKeyHeight);
+    EXPECT_GE(fieldHeight, SoftkeyBar::kMinimumKeyHeight);
 }
 
 TEST(BlockPlaces, GoToTakesTheFagorNNumberOnALathe) {
