@@ -10,6 +10,14 @@ char axisLetter(Axis axis) {
     return kLetters[axisIndex(axis)];
 }
 
+AxisMask axisMaskOf(std::string_view letters) {
+    AxisMask mask = 0;
+    for (char letter : letters) {
+        if (auto axis = axisFromLetter(letter)) mask = static_cast<AxisMask>(mask | axisBit(*axis));
+    }
+    return mask;
+}
+
 std::optional<Axis> axisFromLetter(char letter) {
     switch (letter) {
         case 'X':

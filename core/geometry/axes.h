@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -42,5 +43,8 @@ inline constexpr AxisMask axisBit(Axis axis) {
     return static_cast<AxisMask>(1u << axisIndex(axis));
 }
 inline constexpr AxisMask kXyzMask = axisBit(Axis::X) | axisBit(Axis::Y) | axisBit(Axis::Z);
+inline constexpr AxisMask kAllAxesMask = static_cast<AxisMask>((1u << kAxisCount) - 1);
+// The axes named by their letters ("XZ"); letters that are not axes are ignored.
+AxisMask axisMaskOf(std::string_view letters);
 
 }  // namespace kerf

@@ -63,9 +63,7 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
     m_compensation.setCompMode(m_settings.compMode);
     resetModal();
     if (m_settings.machine != nullptr) {
-        for (char letter : m_settings.machine->enabledAxisLetters()) {
-            if (auto axis = axisFromLetter(letter)) m_machineAxes |= axisBit(*axis);
-        }
+        m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
     }
     const machine::AxisConfig* x =
         m_settings.machine != nullptr ? m_settings.machine->axis('X') : nullptr;

@@ -261,7 +261,7 @@ private:
 
     program::SourceRegistry& m_sources;
     KlartextSettings m_settings;
-    AxisMask m_machineAxes = 0x1ff;  // the machine's enabled axes; all without a machine
+    AxisMask m_machineAxes = kAllAxesMask;  // the machine's enabled axes; all without a machine
     program::NcRoot m_root;
     std::unique_ptr<FormulaEnvironment> m_environment;  // an Environment
     BlockParser m_parser;

@@ -37,7 +37,8 @@ struct ProgramFile {
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
     std::vector<ProgramCall> calls;
-    AxisMask machineAxes = 0x1ff;  // the axes the machine has; every axis when there is no machine
+    AxisMask machineAxes =
+        kAllAxesMask;  // the axes the machine has; every axis when there is no machine
 
     // For a check running alongside execution: how far execution has read. The check stays
     // within a window ahead of it so the text between them is all that is resident; SIZE_MAX lets

@@ -52,12 +52,4 @@ uint32_t columnOfAxisWord(std::string_view text, Axis axis) {
     return 1;
 }
 
-AxisMask axisMaskOf(std::string_view letters) {
-    AxisMask mask = 0;
-    for (char letter : letters) {
-        if (auto axis = axisFromLetter(letter)) mask |= axisBit(*axis);
-    }
-    return mask;
-}
-
 }  // namespace kerf::klartext

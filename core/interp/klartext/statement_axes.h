@@ -16,7 +16,4 @@ std::optional<Axis> axisMissingFrom(const Statement& statement, AxisMask machine
 // The 1-based column of the word for `axis` in a block's text ("A+90", "IA+5", "AQ1"), or 1.
 uint32_t columnOfAxisWord(std::string_view text, Axis axis);
 
-// The enabled axes of a machine given by their letters ("XYZ").
-AxisMask axisMaskOf(std::string_view letters);
-
 }  // namespace kerf::klartext
