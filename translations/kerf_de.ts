@@ -2917,10 +2917,6 @@ Status</translation>
         <translation>{1} gibt es an der 8035 T nicht</translation>
     </message>
     <message>
-        <source>{1} ({2}) is not supported yet</source>
-        <translation>{1} ({2}) wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>{1} ({2}) is not supported</source>
         <translation>{1} ({2}) wird nicht unterstützt</translation>
     </message>
@@ -5799,6 +5795,14 @@ editieren</translation>
     <message>
         <source>Code number asked before machine parameters may be edited</source>
         <translation>Schlüsselzahl, die vor dem Bearbeiten der Maschinenparameter abgefragt wird</translation>
+    </message>
+    <message>
+        <source>the profile has no length</source>
+        <translation>das Profil hat keine Länge</translation>
+    </message>
+    <message>
+        <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
+        <translation>das Profil lässt sich nicht im Abstand eines Durchgangs kopieren: es ist zu schmal</translation>
     </message>
 </context>
 <context>

@@ -2917,10 +2917,6 @@ estado</translation>
         <translation>{1} no existe en el 8035 T</translation>
     </message>
     <message>
-        <source>{1} ({2}) is not supported yet</source>
-        <translation>{1} ({2}) todavía no se admite</translation>
-    </message>
-    <message>
         <source>{1} ({2}) is not supported</source>
         <translation>{1} ({2}) no se admite</translation>
     </message>
@@ -5799,6 +5795,14 @@ ciclo</translation>
     <message>
         <source>Code number asked before machine parameters may be edited</source>
         <translation>Código numérico que se pide antes de editar los parámetros de máquina</translation>
+    </message>
+    <message>
+        <source>the profile has no length</source>
+        <translation>el perfil no tiene longitud</translation>
+    </message>
+    <message>
+        <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
+        <translation>el perfil no se puede copiar a la distancia de una pasada: es demasiado estrecho</translation>
     </message>
 </context>
 <context>

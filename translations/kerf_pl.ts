@@ -2920,10 +2920,6 @@ status</translation>
         <translation>{1} nie istnieje w 8035 T</translation>
     </message>
     <message>
-        <source>{1} ({2}) is not supported yet</source>
-        <translation>{1} ({2}) nie jest jeszcze obsługiwane</translation>
-    </message>
-    <message>
         <source>{1} ({2}) is not supported</source>
         <translation>{1} ({2}) nie jest obsługiwane</translation>
     </message>
@@ -5802,6 +5798,14 @@ cykl</translation>
     <message>
         <source>Code number asked before machine parameters may be edited</source>
         <translation>Kod liczbowy wymagany przed edycją parametrów maszyny</translation>
+    </message>
+    <message>
+        <source>the profile has no length</source>
+        <translation>profil nie ma długości</translation>
+    </message>
+    <message>
+        <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
+        <translation>profilu nie można skopiować w odległości przejścia: jest zbyt wąski</translation>
     </message>
 </context>
 <context>

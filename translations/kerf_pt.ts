@@ -2917,10 +2917,6 @@ estado</translation>
         <translation>{1} não existe no 8035 T</translation>
     </message>
     <message>
-        <source>{1} ({2}) is not supported yet</source>
-        <translation>{1} ({2}) ainda não é suportado</translation>
-    </message>
-    <message>
         <source>{1} ({2}) is not supported</source>
         <translation>{1} ({2}) não é suportado</translation>
     </message>
@@ -5799,6 +5795,14 @@ ciclo</translation>
     <message>
         <source>Code number asked before machine parameters may be edited</source>
         <translation>Código numérico pedido antes de editar os parâmetros da máquina</translation>
+    </message>
+    <message>
+        <source>the profile has no length</source>
+        <translation>o perfil não tem comprimento</translation>
+    </message>
+    <message>
+        <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
+        <translation>o perfil não pode ser copiado à distância de uma passada: é estreito demais</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 #include "core/base/translate.h"
 #include "core/cycles/lathe/axial_drilling.h"
 #include "core/cycles/lathe/grooving.h"
+#include "core/cycles/lathe/pattern_repeat.h"
 #include "core/cycles/lathe/section_turning.h"
 #include "core/cycles/lathe/threading.h"
 #include "core/interp/fagor/fagor_interpreter.h"
@@ -79,6 +80,25 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             ok = cycles::lathe::expandTurningSection(section, call, path, error);
             break;
         }
+        case 66: {
+            cycles::lathe::PatternRepeat cycle;
+            cycle.start = point('Z', 'X');
+            if (!readProfile(w, cycle.start, cycle.elements)) return false;
+            m_at.line = m_line.firstLine;
+            // A absent: the stock is measured along the tool's longer length (X on a tie).
+            const ToolOffset& tool = m_tool.data;
+            cycle.stockAlongZ = w.has('A') ? w['A'].value == 1.0
+                                           : std::fabs(tool.z) > std::fabs(tool.x);
+            cycle.stock = length(w['I'].value);
+            cycle.step = length(w['C'].value);
+            // The sign of L and M chooses the finishing pass's corners; M defaults to L.
+            cycle.allowanceX = std::fabs(len('L', 0.0));
+            if (w.has('M')) cycle.allowanceZ = std::fabs(length(w['M'].value));
+            cycle.finishingFeed = w.value('H', 0.0);
+            cycle.radiusTolerance = m_settings.circleToleranceMm;
+            ok = cycles::lathe::expandPatternRepeat(cycle, call, path, error);
+            break;
+        }
         case 83: {
             cycles::lathe::AxialHole hole;
             hole.start = point('Z', 'X');
@@ -148,7 +168,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             break;
         }
         default:
-            return true;  // G66: refused by checkGFunctions()
+            return true;
     }
     if (!ok) {
         const size_t offset =
@@ -162,7 +182,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
     // cancel it.
     if (g == 83 || g >= 86) m_modal.side = interp::CompSide::None;
     if (!runCycleSteps(path.steps(), iso)) return false;
-    if (g == 68 || g == 69) {
+    if (g == 66 || g == 68 || g == 69) {
         // Afterwards G00 and G40 (§1.4) and the last feed used: H, else F.
         m_modal.motion = 0;
         m_modal.side = interp::CompSide::None;

@@ -10,7 +10,6 @@ namespace kerf::fagor {
 namespace {
 
 constexpr uint16_t kM = kModal;
-constexpr uint16_t kDeferred = kNotSupportedYet;
 
 constexpr GFunction kFunctions[] = {
     {0, GGroup::Motion, kM, KERF_TR_NOOP("rapid positioning")},
@@ -56,7 +55,7 @@ constexpr GFunction kFunctions[] = {
     {57, GGroup::ZeroOffset, kM | kAlone, KERF_TR_NOOP("absolute zero offset 4")},
     {58, GGroup::ZeroOffset, kM | kAlone, KERF_TR_NOOP("additive zero offset 1")},
     {59, GGroup::ZeroOffset, kM | kAlone, KERF_TR_NOOP("additive zero offset 2")},
-    {66, GGroup::None, kDeferred, KERF_TR_NOOP("pattern repeat cycle")},
+    {66, GGroup::None, 0, KERF_TR_NOOP("pattern repeat cycle")},
     {68, GGroup::None, 0, KERF_TR_NOOP("stock removal cycle along X")},
     {69, GGroup::None, 0, KERF_TR_NOOP("stock removal cycle along Z")},
     {70, GGroup::Units, kM, KERF_TR_NOOP("programming in inches")},

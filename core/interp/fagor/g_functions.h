@@ -27,7 +27,6 @@ enum GFlag : uint16_t {
     kModal = 1u << 0,
     kAlone = 1u << 1,            // nothing else in the block but its own arguments
     kNoOtherG = 1u << 2,         // no other G function (G74)
-    kNotSupportedYet = 1u << 3,  // canned cycles and probing: a later issue
     kNotSupported = 1u << 4,     // G46 inclined axis: not in this release
     kCombinable = 1u << 5,       // may repeat its group in one block (G11 G12 G13)
 };

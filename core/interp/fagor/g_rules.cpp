@@ -48,12 +48,9 @@ bool checkGFunctions(const IsoBlock& iso, Problem& problem) {
             return fail(problem, w.offset, "unknown-g",
                         KERF_TR_NOOP("{1} does not exist on the 8035 T"), {gName(n)});
         }
-        if ((g->flags & (kNotSupportedYet | kNotSupported)) != 0) {
+        if ((g->flags & kNotSupported) != 0) {
             return fail(problem, w.offset, "not-supported",
-                        (g->flags & kNotSupportedYet) != 0
-                            ? KERF_TR_NOOP("{1} ({2}) is not supported yet")
-                            : KERF_TR_NOOP("{1} ({2}) is not supported"),
-                        {gName(n), g->meaning});
+                        KERF_TR_NOOP("{1} ({2}) is not supported"), {gName(n), g->meaning});
         }
         for (uint8_t j = 0; j < i; ++j) {
             const int m = static_cast<int>(iso.g[j].value);

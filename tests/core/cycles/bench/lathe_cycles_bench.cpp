@@ -2,6 +2,7 @@
 // steps, without the interpreter's output stage.
 #include <benchmark/benchmark.h>
 
+#include "core/cycles/lathe/pattern_repeat.h"
 #include "core/cycles/lathe/section_turning.h"
 #include "core/cycles/lathe/threading.h"
 
@@ -70,6 +71,33 @@ void BM_G68Profile100Elements(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_G68Profile100Elements)->Unit(benchmark::kMillisecond);
+
+// G66 over a 100-element profile (50 shoulders of 0.5 mm each followed by a taper, r0 to r50 over
+// 100 mm), I 10, C 0.5 from r70: 20 passes, each the exact offset of the profile (2 n^2 pair
+// tests for the offset's self-crossings).
+void BM_G66Profile100Elements(benchmark::State& state) {
+    PatternRepeat c;
+    c.start = {0.0, 0.0};
+    Vec2 at = c.start;
+    for (int i = 0; i < 50; ++i) {
+        at += Vec2(0.0, 0.5);
+        c.elements.push_back({at, std::nullopt, false});
+        at += Vec2(-2.0, 0.5);
+        c.elements.push_back({at, std::nullopt, false});
+    }
+    c.stock = 10.0;
+    c.step = 0.5;
+    c.allowanceX = 0.2;
+    c.finishingFeed = 0.1;
+    const Vec2 call(15.0, 70.0);
+    for (auto _ : state) {
+        LathePath path(call);
+        LatheError error;
+        benchmark::DoNotOptimize(expandPatternRepeat(c, call, path, error));
+        state.counters["moves"] = static_cast<double>(path.steps().size());
+    }
+}
+BENCHMARK(BM_G66Profile100Elements)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace kerf::cycles::lathe

@@ -290,19 +290,16 @@ TEST_F(FagorRun, CannedCycleOverwritesP299) {
 }
 
 TEST_F(FagorRun, CheckFailsAtAConstructThatCannotRunYet) {
-    // A run would stop at G66 and at the screen instruction: the check fails, nothing moves.
+    // A run would stop at the screen instruction: the check fails, nothing moves.
     EXPECT_EQ(run("G0 X130 Z120\n"
-                  "G66 X20 Z100 I8 C2 S10 E20\n"
+                  "G1 X100 Z100 F100\n"
                   "(ODW 1, 6, 33)\n"
-                  "M30\n"
-                  "N10 G01 X40 Z80\n"
-                  "N20 G01 X100 Z40\n"),
+                  "M30\n"),
               interp::RunStatus::Failed);
     const std::string file = (root / "program.pim").string();
-    EXPECT_EQ(diagnostics(),
-              file + ":2:1: error: G66 (pattern repeat cycle) is not supported yet\n" + file +
-                  ":3:2: error: ODW is a screen customisation instruction: not "
-                  "supported; the program cannot run past this block\n");
+    EXPECT_EQ(diagnostics(), file +
+                                 ":3:2: error: ODW is a screen customisation instruction: not "
+                                 "supported; the program cannot run past this block\n");
     EXPECT_TRUE(out.lines.empty());
 }
 

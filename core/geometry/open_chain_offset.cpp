@@ -1,0 +1,236 @@
+#include "core/geometry/open_chain_offset.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/geometry/arc_math.h"
+#include "core/geometry/segment_intersection.h"
+
+namespace kerf {
+
+namespace {
+
+constexpr double kSame = 1e-9;  // mm: points closer than this are one point
+
+// The segment moved sideways by `distance` (left positive). An arc whose inner side is smaller
+// than the distance turns inside out: the points at that distance lie beyond its centre.
+std::optional<PlanarSegment> offsetSegment(const PlanarSegment& s, double distance) {
+    if (s.kind == PlanarSegment::Kind::Line) {
+        const Vec2 shift = distance * leftNormal(s.startTangent());
+        return PlanarSegment::line(s.start + shift, s.end + shift);
+    }
+    // The left of a counter-clockwise arc is its centre.
+    const double r = s.radius();
+    const double scale = (s.sweep > 0.0 ? r - distance : r + distance) / r;
+    if (std::fabs(scale) * r < kSame) return std::nullopt;
+    return PlanarSegment{PlanarSegment::Kind::Arc, s.center + scale * (s.start - s.center),
+                         s.center + scale * (s.end - s.center), s.center, s.sweep};
+}
+
+// The signed angle an arc turns from `from` to `to` in its own direction, in [0, 2 pi) for a
+// counter-clockwise arc and (-2 pi, 0] for a clockwise one.
+double sweepBetween(const PlanarSegment& arc, const Vec2& from, const Vec2& to) {
+    const Vec2 u = from - arc.center;
+    const Vec2 v = to - arc.center;
+    double angle = std::atan2(cross2(u, v), u.dot(v));
+    if (arc.sweep > 0.0 && angle < 0.0) angle += kTwoPi;
+    if (arc.sweep < 0.0 && angle > 0.0) angle -= kTwoPi;
+    return angle;
+}
+
+// Where `p`, a point on the carrier of `s`, lies along it: 0 at the start, 1 at the end; empty
+// when it is off the segment.
+std::optional<double> along(const PlanarSegment& s, const Vec2& p) {
+    if ((p - s.start).norm() < kSame) return 0.0;
+    if ((p - s.end).norm() < kSame) return 1.0;
+    double t = 0.0;
+    if (s.kind == PlanarSegment::Kind::Line) {
+        const Vec2 d = s.end - s.start;
+        t = (p - s.start).dot(d) / d.squaredNorm();
+    } else {
+        t = sweepBetween(s, s.start, p) / s.sweep;
+    }
+    if (t < 0.0 || t > 1.0) return std::nullopt;
+    return t;
+}
+
+Vec2 pointAt(const PlanarSegment& s, double t) {
+    if (s.kind == PlanarSegment::Kind::Line) return s.start + t * (s.end - s.start);
+    const double a = t * s.sweep;
+    const Vec2 r = s.start - s.center;
+    return s.center + Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
+                           std::sin(a) * r.x() + std::cos(a) * r.y());
+}
+
+PlanarSegment piece(const PlanarSegment& s, double t0, double t1) {
+    if (s.kind == PlanarSegment::Kind::Line) {
+        return PlanarSegment::line(pointAt(s, t0), pointAt(s, t1));
+    }
+    return {PlanarSegment::Kind::Arc, pointAt(s, t0), pointAt(s, t1), s.center,
+            (t1 - t0) * s.sweep};
+}
+
+// The offset before its loops are removed: every element moved, convex corners joined by arcs
+// about the corner, concave ones by a line (it lies within the distance of the corner).
+std::vector<PlanarSegment> rawOffset(const std::vector<PlanarSegment>& chain, double distance) {
+    std::vector<PlanarSegment> raw;
+    std::optional<PlanarSegment> previous;  // moved
+    const PlanarSegment* original = nullptr;
+    for (const PlanarSegment& s : chain) {
+        const std::optional<PlanarSegment> moved = offsetSegment(s, distance);
+        if (!moved) continue;
+        if (previous && (previous->end - moved->start).norm() >= kSame) {
+            // Convexity is the chain's, not the offsets' (an arc turned inside out runs back).
+            const double turn = cross2(original->endTangent(), s.startTangent());
+            const bool convex = distance > 0.0 ? turn < 0.0 : turn > 0.0;
+            const Vec2 u = previous->end - s.start;
+            const Vec2 v = moved->start - s.start;
+            const double angle = std::fabs(std::atan2(cross2(u, v), u.dot(v)));
+            if (convex && std::fabs(u.norm() - std::fabs(distance)) < 1e-6) {
+                raw.push_back({PlanarSegment::Kind::Arc, previous->end, moved->start, s.start,
+                               distance > 0.0 ? -angle : angle});
+            } else {
+                raw.push_back(PlanarSegment::line(previous->end, moved->start));
+            }
+        }
+        raw.push_back(*moved);
+        previous = moved;
+        original = &s;
+    }
+    return raw;
+}
+
+Box2 boxOf(const PlanarSegment& s) {
+    Box2 box;
+    box.add(s.start);
+    box.add(s.end);
+    if (s.kind == PlanarSegment::Kind::Arc) addArcExtremes(box, s.center, s.start, s.sweep);
+    return box;
+}
+
+bool overlap(const Box2& a, const Box2& b) {
+    constexpr double m = 1e-6;
+    return a.min.x() <= b.max.x() + m && b.min.x() <= a.max.x() + m && a.min.y() <= b.max.y() + m &&
+           b.min.y() <= a.max.y() + m;
+}
+
+// Whether p lies closer than `distance` to the chain (boxes first: most elements are far).
+bool closerThan(const std::vector<PlanarSegment>& chain, const std::vector<Box2>& boxes,
+                const Vec2& p, double distance) {
+    for (size_t i = 0; i < chain.size(); ++i) {
+        const Box2& b = boxes[i];
+        if (p.x() < b.min.x() - distance || p.x() > b.max.x() + distance ||
+            p.y() < b.min.y() - distance || p.y() > b.max.y() + distance) {
+            continue;
+        }
+        if (chain[i].distanceTo(p) < distance) return true;
+    }
+    return false;
+}
+
+// Where `s` first crosses the line `coordinate axis = limit` moving in `direction`, as a place
+// along it (0 to 1).
+std::optional<double> firstCrossing(const PlanarSegment& s, int axis, double limit,
+                                    double direction) {
+    Vec2 a(limit, -1.0);
+    Vec2 b(limit, 1.0);
+    if (axis == 1) a = Vec2(-1.0, limit), b = Vec2(1.0, limit);
+    std::optional<double> first;
+    for (const Vec2& hit : carrierIntersections(s, PlanarSegment::line(a, b))) {
+        const std::optional<double> t = along(s, hit);
+        if (!t) continue;
+        const Vec2 tangent = s.kind == PlanarSegment::Kind::Line
+                                 ? s.startTangent()
+                                 : arcTangentAt(s.center, hit, s.sweep);
+        if (direction * tangent[axis] > 0.0 && (!first || *t < *first)) first = t;
+    }
+    return first;
+}
+
+}  // namespace
+
+std::optional<std::vector<PlanarSegment>> offsetOpenChain(const std::vector<PlanarSegment>& chain,
+                                                          double distance) {
+    if (std::fabs(distance) < kSame) return chain;
+    const std::vector<PlanarSegment> raw = rawOffset(chain, distance);
+    // Split the raw offset wherever it crosses itself ...
+    std::vector<std::vector<double>> cuts(raw.size());
+    std::vector<Box2> boxes;
+    boxes.reserve(raw.size());
+    for (const PlanarSegment& s : raw)
+        boxes.push_back(boxOf(s));
+    // Sweep along u: only elements whose boxes overlap along u are compared.
+    std::vector<size_t> order(raw.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return boxes[a].min.x() < boxes[b].min.x(); });
+    for (size_t a = 0; a < order.size(); ++a) {
+        const size_t i = order[a];
+        for (size_t b = a + 1; b < order.size(); ++b) {
+            const size_t j = order[b];
+            if (boxes[j].min.x() > boxes[i].max.x() + 1e-6) break;
+            if (!overlap(boxes[i], boxes[j])) continue;
+            for (const Vec2& hit : carrierIntersections(raw[i], raw[j])) {
+                const std::optional<double> ti = along(raw[i], hit);
+                const std::optional<double> tj = along(raw[j], hit);
+                if (!ti || !tj) continue;
+                cuts[i].push_back(*ti);
+                cuts[j].push_back(*tj);
+            }
+        }
+    }
+    // ... and where it enters the circles about the chain's ends, within which it would come
+    // closer to an end point than the distance ...
+    for (const Vec2& end : {chain.front().start, chain.back().end}) {
+        const Vec2 rim = end + Vec2(std::fabs(distance), 0.0);
+        const PlanarSegment circle{PlanarSegment::Kind::Arc, rim, rim, end, kTwoPi};
+        for (size_t i = 0; i < raw.size(); ++i) {
+            for (const Vec2& hit : carrierIntersections(raw[i], circle)) {
+                if (const std::optional<double> t = along(raw[i], hit)) cuts[i].push_back(*t);
+            }
+        }
+    }
+    // ... and keep the pieces that lie at the full distance from the chain: the others belong
+    // to loops that cut into it.
+    const double keep = std::fabs(distance) - 1e-7;
+    std::vector<Box2> chainBoxes;
+    chainBoxes.reserve(chain.size());
+    for (const PlanarSegment& s : chain)
+        chainBoxes.push_back(boxOf(s));
+    std::vector<PlanarSegment> out;
+    for (size_t i = 0; i < raw.size(); ++i) {
+        std::vector<double>& t = cuts[i];
+        t.push_back(0.0);
+        t.push_back(1.0);
+        std::sort(t.begin(), t.end());
+        for (size_t k = 0; k + 1 < t.size(); ++k) {
+            if (piece(raw[i], t[k], t[k + 1]).length() < kSame) continue;
+            const Vec2 middle = pointAt(raw[i], (t[k] + t[k + 1]) / 2.0);
+            if (closerThan(chain, chainBoxes, middle, keep)) continue;
+            const PlanarSegment part = piece(raw[i], t[k], t[k + 1]);
+            if (!out.empty() && (out.back().end - part.start).norm() > 1e-6) return std::nullopt;
+            out.push_back(part);
+            if (out.size() > 1) out.back().start = out[out.size() - 2].end;
+        }
+    }
+    return out;
+}
+
+std::vector<PlanarSegment> chainUpTo(const std::vector<PlanarSegment>& chain, int axis,
+                                     double limit, double direction) {
+    std::vector<PlanarSegment> out;
+    if (chain.empty() || direction * (chain.front().start[axis] - limit) > kSame) return out;
+    for (const PlanarSegment& s : chain) {
+        const std::optional<double> crossing = firstCrossing(s, axis, limit, direction);
+        if (!crossing) {
+            out.push_back(s);
+            continue;
+        }
+        if (*crossing > 0.0) out.push_back(piece(s, 0.0, *crossing));
+        break;
+    }
+    return out;
+}
+
+}  // namespace kerf
