@@ -5481,10 +5481,6 @@ editieren</translation>
         <translation>ein Bogen des Profils darf höchstens einen Viertelkreis umfassen</translation>
     </message>
     <message>
-        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
-        <translation>das Profil läuft unter das Material zurück (Einstich oder Hinterschnitt): noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>label N{1} of the profile is not in the program</source>
         <translation>die Satznummer N{1} des Profils ist nicht im Programm</translation>
     </message>
@@ -5803,6 +5799,14 @@ editieren</translation>
     <message>
         <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
         <translation>das Profil lässt sich nicht im Abstand eines Durchgangs kopieren: es ist zu schmal</translation>
+    </message>
+    <message>
+        <source>the profile runs back against the passes (an undercut): the tool cannot reach it</source>
+        <translation>das Profil läuft entgegen den Durchgängen zurück (Hinterschnitt): das Werkzeug erreicht es nicht</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material</source>
+        <translation>der Abschnitt läuft unter das Material zurück</translation>
     </message>
 </context>
 <context>

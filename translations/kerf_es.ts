@@ -5481,10 +5481,6 @@ ciclo</translation>
         <translation>un arco del perfil debe quedar dentro de un cuarto de círculo</translation>
     </message>
     <message>
-        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
-        <translation>el perfil vuelve por debajo del material (un canal o una entalla): todavía no se admite</translation>
-    </message>
-    <message>
         <source>label N{1} of the profile is not in the program</source>
         <translation>la etiqueta N{1} del perfil no está en el programa</translation>
     </message>
@@ -5803,6 +5799,14 @@ ciclo</translation>
     <message>
         <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
         <translation>el perfil no se puede copiar a la distancia de una pasada: es demasiado estrecho</translation>
+    </message>
+    <message>
+        <source>the profile runs back against the passes (an undercut): the tool cannot reach it</source>
+        <translation>el perfil retrocede contra las pasadas (un destalonado): la herramienta no puede alcanzarlo</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material</source>
+        <translation>el tramo vuelve por debajo del material</translation>
     </message>
 </context>
 <context>

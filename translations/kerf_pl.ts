@@ -5484,10 +5484,6 @@ cykl</translation>
         <translation>łuk profilu musi mieścić się w ćwiartce okręgu</translation>
     </message>
     <message>
-        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
-        <translation>profil cofa się pod materiał (kanał lub podcięcie): jeszcze nieobsługiwane</translation>
-    </message>
-    <message>
         <source>label N{1} of the profile is not in the program</source>
         <translation>etykiety N{1} profilu nie ma w programie</translation>
     </message>
@@ -5806,6 +5802,14 @@ cykl</translation>
     <message>
         <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
         <translation>profilu nie można skopiować w odległości przejścia: jest zbyt wąski</translation>
+    </message>
+    <message>
+        <source>the profile runs back against the passes (an undercut): the tool cannot reach it</source>
+        <translation>profil cofa się wbrew przejściom (podcięcie): narzędzie go nie osiągnie</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material</source>
+        <translation>odcinek cofa się pod materiał</translation>
     </message>
 </context>
 <context>

@@ -5481,10 +5481,6 @@ ciclo</translation>
         <translation>um arco do perfil deve ficar dentro de um quarto de círculo</translation>
     </message>
     <message>
-        <source>the profile runs back under the material (a channel or an undercut): not supported yet</source>
-        <translation>o perfil volta por baixo do material (um canal ou um rebaixo): ainda não suportado</translation>
-    </message>
-    <message>
         <source>label N{1} of the profile is not in the program</source>
         <translation>o rótulo N{1} do perfil não está no programa</translation>
     </message>
@@ -5803,6 +5799,14 @@ ciclo</translation>
     <message>
         <source>the profile cannot be copied at the distance of a pass: it is too narrow</source>
         <translation>o perfil não pode ser copiado à distância de uma passada: é estreito demais</translation>
+    </message>
+    <message>
+        <source>the profile runs back against the passes (an undercut): the tool cannot reach it</source>
+        <translation>o perfil volta contra as passadas (um rebaixo): a ferramenta não o alcança</translation>
+    </message>
+    <message>
+        <source>the section runs back under the material</source>
+        <translation>o trecho volta por baixo do material</translation>
     </message>
 </context>
 <context>

@@ -4,7 +4,8 @@
 //   args            optional options, one per line: "--machine lathe", "--tool-table TOOL.T",
 //                   "--stock" (material removal: the report's "stock" section) ...
 //   expected.json   values the report must contain (numbers within 1e-4 unless "tolerance" says
-//                   otherwise; arrays must have the same length; keys not listed are not checked)
+//                   otherwise, whole numbers such as counts exactly; arrays must have the same
+//                   length; keys not listed are not checked)
 //   expected.trace  the exact canonical trace
 //   expected.diag   the exact diagnostics, one per line, paths relative to the case folder
 // Each case runs in a temporary copy of its folder, so programs may write files.
@@ -96,6 +97,8 @@ void compareJson(const nlohmann::json& expected, const nlohmann::json& actual,
         for (size_t i = 0; i < expected.size(); ++i) {
             compareJson(expected[i], actual[i], path + "[" + std::to_string(i) + "]", tolerance);
         }
+    } else if (expected.is_number_integer() && actual.is_number_integer()) {
+        EXPECT_EQ(expected, actual) << path;  // counts are exact whatever the tolerance
     } else if (expected.is_number() && actual.is_number()) {
         EXPECT_NEAR(expected.get<double>(), actual.get<double>(), tolerance) << path;
     } else {

@@ -4,19 +4,15 @@
 #include <cmath>
 
 #include "core/base/translate.h"
+#include "core/cycles/lathe/channel_roughing.h"
+#include "core/cycles/lathe/turning_chain.h"
 #include "core/geometry/arc_math.h"
 
 namespace kerf::cycles::lathe {
 
 namespace {
 
-constexpr double kTolerance = 1e-9;
-
-// The cycle works in a (cut, step) frame: turning cuts along Z and steps in X, facing the other
-// way. Swapping the axes mirrors the plane: arcs turn the other way.
-Vec2 swapped(const Vec2& p, bool swap) {
-    return swap ? Vec2(p.y(), p.x()) : p;
-}
+constexpr double kTolerance = kChainTolerance;
 
 double sign(double v) {
     return v < 0.0 ? -1.0 : 1.0;
@@ -28,78 +24,6 @@ LatheError positionError(char letter) {
             KERF_TR_NOOP("the tool position is not correct for the cycle ({1})"),
             {std::string(1, letter)}};
 }
-
-// One element in the (cut, step) frame, a line or an arc, as a function of t in [0, 1].
-struct Section {
-    Vec2 a{0.0, 0.0};
-    Vec2 b{0.0, 0.0};
-    bool arc = false;
-    Vec2 c{0.0, 0.0};
-    double r = 0.0;
-    double theta0 = 0.0;
-    double sweep = 0.0;
-
-    Vec2 at(double t) const {
-        if (t <= 0.0) return a;
-        if (t >= 1.0) return b;
-        if (!arc) return a + t * (b - a);
-        const double theta = theta0 + t * sweep;
-        return c + r * Vec2(std::cos(theta), std::sin(theta));
-    }
-    // The parameter where the element reaches step level v (it is monotone in it: a line, or
-    // an arc within a quarter circle); a flat element is reached at its start.
-    double atLevel(double v) const {
-        if (!arc) {
-            const double dy = b.y() - a.y();
-            return std::fabs(dy) < kTolerance ? 0.0 : std::clamp((v - a.y()) / dy, 0.0, 1.0);
-        }
-        const double base = std::asin(std::clamp((v - c.y()) / r, -1.0, 1.0));
-        double best = 0.0;
-        double bestDistance = HUGE_VAL;
-        for (const double angle : {base, kPi - base}) {
-            for (const double turn : {-kTwoPi, 0.0, kTwoPi}) {
-                const double t = (angle + turn - theta0) / sweep;
-                const double distance = t < 0.0 ? -t : t > 1.0 ? t - 1.0 : 0.0;
-                if (distance < bestDistance) {
-                    bestDistance = distance;
-                    best = std::clamp(t, 0.0, 1.0);
-                }
-            }
-        }
-        return best;
-    }
-};
-
-// The profile as a chain of elements, parameter t in [0, n].
-struct Chain {
-    std::vector<Section> parts;
-
-    double size() const { return static_cast<double>(parts.size()); }
-    Vec2 start() const { return parts.front().a; }
-    Vec2 end() const { return parts.back().b; }
-    Vec2 at(double t) const {
-        const double i = std::clamp(std::floor(t), 0.0, size() - 1.0);
-        return parts[static_cast<size_t>(i)].at(t - i);
-    }
-    // The first parameter where the chain, growing steadily, reaches step level v.
-    double atLevel(double v, double side) const {
-        for (size_t i = 0; i < parts.size(); ++i) {
-            if (side * (parts[i].b.y() - v) >= -kTolerance) {
-                return static_cast<double>(i) + parts[i].atLevel(v);
-            }
-        }
-        return size();
-    }
-    Chain shifted(const Vec2& d) const {
-        Chain moved = *this;
-        for (Section& p : moved.parts) {
-            p.a += d;
-            p.b += d;
-            p.c += d;
-        }
-        return moved;
-    }
-};
 
 }  // namespace
 
@@ -133,9 +57,14 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
             // Swapping the axes mirrors the plane: the turning sense flips.
             s.theta0 = std::atan2(s.a.y() - s.c.y(), s.a.x() - s.c.x());
             s.sweep = arcSweep(s.a, s.b, s.c, e.ccw != f);
-            // Passes meet it once only if it stays within a quarter circle.
+            // Passes meet it once only if it stays within a quarter circle; a profile's arcs
+            // are split at their quadrant points.
             const double q0 = s.theta0 / (kPi / 2.0);
             const double q1 = (s.theta0 + s.sweep) / (kPi / 2.0);
+            if (section.channels) {
+                chain.addArcByQuadrants(s);
+                continue;
+            }
             if (std::ceil(std::min(q0, q1) + 1e-9) <= std::floor(std::max(q0, q1) - 1e-9)) {
                 error = {'I',
                          "cycle-geometry",
@@ -161,14 +90,21 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     const Vec2 b = chain.end();
     const double sideCut = -sign(b.x() - a.x());     // the call point lies before A
     const double sideStep = sign(call.y() - a.y());  // the material lies between call and A
-    // Every element moves away from the call point and grows towards it (no undercut).
+    // Every element moves away from the call point (no undercut) and, but in a profile with
+    // channels, grows towards it.
     for (const Section& s : chain.parts) {
-        if (sideCut * (s.b.x() - s.a.x()) > kTolerance ||
-            sideStep * (s.b.y() - s.a.y()) < -kTolerance) {
+        if (sideCut * (s.b.x() - s.a.x()) > kTolerance) {
             error = {f ? 'R' : 'Q',
                      "cycle-geometry",
-                     KERF_TR_NOOP("the profile runs back under the material (a channel or an "
-                                  "undercut): not supported yet"),
+                     KERF_TR_NOOP("the profile runs back against the passes (an undercut): the "
+                                  "tool cannot reach it"),
+                     {}};
+            return false;
+        }
+        if (!section.channels && sideStep * (s.b.y() - s.a.y()) < -kTolerance) {
+            error = {f ? 'R' : 'Q',
+                     "cycle-geometry",
+                     KERF_TR_NOOP("the section runs back under the material"),
                      {}};
             return false;
         }
@@ -187,27 +123,32 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     const Vec2 a1 = c1.start();
     const Vec2 b1 = c1.end();
     auto out = [&](const Vec2& p) { return swapped(p, f); };
-    auto onWall = [&](double v) { return sideStep * (v - b1.y()) >= -kTolerance; };
+    // A pass runs to B's wall when the profile never rises to its level.
+    const double highest = c1.lowest(-sideStep);
+    auto onWall = [&](double v) { return sideStep * (v - highest) >= -kTolerance; };
     auto levelT = [&](double v) { return onWall(v) ? c1.size() : c1.atLevel(v, sideStep); };
     // Where a pass at step level v meets the profile plus allowances (beyond B: B's wall).
     auto passEnd = [&](double v) {
         return onWall(v) ? Vec2(b1.x(), v) : Vec2(c1.at(levelT(v)).x(), v);
     };
-    // Follows `chain` from parameter t0 to t1 (t0 <= t1), element by element.
     auto follow = [&](const Chain& ch, double t0, double t1, double feed) {
-        for (size_t i = static_cast<size_t>(std::max(0.0, std::floor(t0)));
-             i < ch.parts.size() && static_cast<double>(i) < t1; ++i) {
-            const Section& part = ch.parts[i];
-            const double local = std::min(1.0, t1 - static_cast<double>(i));
-            const Vec2 to = part.at(local);
-            if (part.arc) {
-                path.arc(out(to), out(part.c), (part.sweep > 0.0) != f, feed);
-            } else {
-                path.feed(out(to), feed);
+        followChain(ch, t0, t1, feed, f, path);
+    };
+    // Whether the profile rises all the way from t0 to t1 (no channel in between).
+    auto rises = [&](double t0, double t1) {
+        for (auto i = static_cast<size_t>(std::floor(t0)); static_cast<double>(i) < t1; ++i) {
+            if (i < c1.parts.size() &&
+                sideStep * (c1.parts[i].b.y() - c1.parts[i].a.y()) < -kTolerance) {
+                return false;
             }
         }
+        return true;
     };
-    const double depth = sideStep * (call.y() - a1.y());
+    // The levels: equal steps down to A (plus allowances), or, with channels deeper than A, down
+    // to the profile's lowest point; the main passes stop at A.
+    const double lowest = section.channels ? c1.lowest(sideStep) : a1.y();
+    const double bottom = sideStep * (lowest - a1.y()) < -kTolerance ? lowest : a1.y();
+    const double depth = sideStep * (call.y() - bottom);
     const double count = depth > kTolerance ? std::ceil(depth / section.maxStep - 1e-9) : 0.0;
     if (count * (5.0 + c1.size()) > LathePath::kStepLimit) {
         error = tooManySteps('C');
@@ -216,22 +157,40 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     const int passes = static_cast<int>(count);
     const double step = passes > 0 ? depth / passes : 0.0;
     const double feed = section.roughingFeed;
-    double previous = call.y();
+    std::vector<double> levels;
     for (int k = 1; k <= passes; ++k) {
-        const double level = k == passes ? a1.y() : call.y() - sideStep * k * step;
-        path.rapid(out({call.x(), level}));  // 1-2
+        levels.push_back(k == passes ? bottom : call.y() - sideStep * k * step);
+    }
+    double previous = call.y();
+    for (const double level : levels) {
+        if (sideStep * (level - a1.y()) < -kTolerance) break;  // below A: channels only
+        path.rapid(out({call.x(), level}));                    // 1-2
         const Vec2 end = passEnd(level);
         path.feed(out(end), feed);  // 2-3
-        if (!section.retract) {
+        if (!section.retract && rises(levelT(level), levelT(previous))) {
             // 3-4 along the profile (and up B's wall) to the previous level.
             if (!onWall(level)) follow(c1, levelT(level), levelT(previous), feed);
             path.feed(out(passEnd(previous)), feed);
-        } else if (*section.retract > 0.0) {
+        } else if (section.retract && *section.retract > 0.0) {
             const double d = *section.retract;  // 3-4 at 45 degrees
             path.rapid(out(end + Vec2(sideCut * d, sideStep * d)));
         }
         path.rapid(out({call.x(), swapped(path.position(), f).y()}));  // 4-5
         previous = level;
+    }
+    if (section.channels) {
+        ChannelRoughing job;
+        job.chain = &c1;
+        job.levels = levels;
+        job.call = call;
+        job.side = sideStep;
+        job.passDirection = -sideCut;
+        job.retract = section.retract;
+        job.feed = feed;
+        job.plungeFeed = section.plungeFeed;
+        job.facing = f;
+        roughChannels(job, path);
+        path.rapid(callZx);  // along the call point's level, above the stock
     }
     // Final roughing pass and finishing pass: along the profile (plus allowances), up B's wall.
     auto along = [&](const Chain& ch, double passFeed) {

@@ -26,7 +26,9 @@ struct TurningSection {
     std::optional<double> retract;   // D: absent, 0 or a safety distance
     double allowanceX = 0.0;         // L, radius
     double allowanceZ = 0.0;         // M
+    bool channels = false;           // G68/G69: the profile may dip back into the material
     double roughingFeed = 0.0;       // the passes (0: the feed active at the call)
+    double plungeFeed = 0.0;         // K: down into channels (0: the roughing feed)
     double finalRoughingFeed = 0.0;  // F, 0: no final roughing pass
     double finishingFeed = 0.0;      // H, 0: no finishing pass
     double radiusTolerance = 0.01;   // mm: an arc's start and end radii may differ this much

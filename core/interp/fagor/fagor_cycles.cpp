@@ -66,6 +66,8 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             // Stock removal (G68 passes along Z, G69 along X) over the profile S..E.
             cycles::lathe::TurningSection section;
             section.facing = g == 69;
+            section.channels = true;
+            section.plungeFeed = w.value('K', 0.0);
             section.start = point('Z', 'X');
             if (!readProfile(w, section.start, section.elements)) return false;
             m_at.line = m_line.firstLine;
@@ -87,8 +89,8 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             m_at.line = m_line.firstLine;
             // A absent: the stock is measured along the tool's longer length (X on a tie).
             const ToolOffset& tool = m_tool.data;
-            cycle.stockAlongZ = w.has('A') ? w['A'].value == 1.0
-                                           : std::fabs(tool.z) > std::fabs(tool.x);
+            cycle.stockAlongZ =
+                w.has('A') ? w['A'].value == 1.0 : std::fabs(tool.z) > std::fabs(tool.x);
             cycle.stock = length(w['I'].value);
             cycle.step = length(w['C'].value);
             // The sign of L and M chooses the finishing pass's corners; M defaults to L.

@@ -66,6 +66,61 @@ TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {
     }
 }
 
+// The radius of a profile of lines at z (z between its start and its end, decreasing).
+double profileAt(const TurningSection& s, double z) {
+    Vec2 from = s.start;
+    for (const ProfileElement& e : s.elements) {
+        if (z >= e.end.x() - 1e-12) {
+            const double t = (from.x() - z) / (from.x() - e.end.x());
+            return from.y() + t * (e.end.y() - from.y());
+        }
+        from = e.end;
+    }
+    return from.y();
+}
+
+TEST(LatheCycles, StockRemovalWithChannelsNeverCutsIntoTheProfile) {
+    // G68 over random profiles that dip back into the material (channels within channels): no
+    // point of any move, rapid or feed, lies inside the finished profile, and the roughing
+    // reaches every channel's floor (some move touches the profile's lowest point).
+    std::mt19937 random(68);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        TurningSection s;
+        s.channels = true;
+        s.start = Vec2(0.0, 10.0 + 10.0 * u(random));
+        Vec2 at = s.start;
+        double lowest = at.y();
+        for (int i = 0; i < 8; ++i) {
+            at = Vec2(at.x() - 1.0 - 6.0 * u(random), 2.0 + 25.0 * u(random));
+            s.elements.push_back({at, std::nullopt, false});
+            lowest = std::min(lowest, at.y());
+        }
+        s.maxStep = 0.5 + 3.0 * u(random);
+        const double pick = u(random);
+        if (pick < 0.3) s.retract = 0.0;
+        if (pick > 0.6) s.retract = 2.0 * u(random);
+        s.finishingFeed = u(random) < 0.5 ? 0.1 : 0.0;
+        const Vec2 call(2.0, 30.0 + 5.0 * u(random));
+        LathePath path(call);
+        LatheError error;
+        ASSERT_TRUE(expandTurningSection(s, call, path, error)) << error.messageTemplate;
+        Vec2 from = call;
+        bool floorReached = false;
+        for (const LatheStep& step : path.steps()) {
+            for (int k = 0; k <= 40; ++k) {
+                const Vec2 p = from + (step.to - from) * (k / 40.0);
+                if (p.x() > s.start.x() || p.x() < at.x()) continue;  // beyond A or B
+                ASSERT_GE(p.y() - profileAt(s, p.x()), -1e-7)
+                    << "trial " << trial << " at Z" << p.x() << " r" << p.y();
+            }
+            floorReached = floorReached || std::fabs(step.to.y() - lowest) < 1e-9;
+            from = step.to;
+        }
+        EXPECT_TRUE(floorReached) << "trial " << trial;
+    }
+}
+
 TEST(LatheCycles, EveryThreadPassStartsOnTheSameHelix) {
     std::mt19937 random(86);
     std::uniform_real_distribution<double> u(0.0, 1.0);
