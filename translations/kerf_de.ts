@@ -5808,6 +5808,10 @@ editieren</translation>
         <source>the section runs back under the material</source>
         <translation>der Abschnitt läuft unter das Material zurück</translation>
     </message>
+    <message>
+        <source>{1} cannot make an arc to this end point</source>
+        <translation>{1} kann keinen Bogen zu diesem Endpunkt bilden</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

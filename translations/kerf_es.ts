@@ -5808,6 +5808,10 @@ ciclo</translation>
         <source>the section runs back under the material</source>
         <translation>el tramo vuelve por debajo del material</translation>
     </message>
+    <message>
+        <source>{1} cannot make an arc to this end point</source>
+        <translation>{1} no puede formar un arco hasta este punto final</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -5811,6 +5811,10 @@ cykl</translation>
         <source>the section runs back under the material</source>
         <translation>odcinek cofa się pod materiał</translation>
     </message>
+    <message>
+        <source>{1} cannot make an arc to this end point</source>
+        <translation>{1} nie może utworzyć łuku do tego punktu końcowego</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

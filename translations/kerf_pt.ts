@@ -5808,6 +5808,10 @@ ciclo</translation>
         <source>the section runs back under the material</source>
         <translation>o trecho volta por baixo do material</translation>
     </message>
+    <message>
+        <source>{1} cannot make an arc to this end point</source>
+        <translation>{1} não consegue formar um arco até este ponto final</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -164,10 +164,12 @@ private:
 
 }  // namespace
 
-void roughChannels(const ChannelRoughing& job, LathePath& path) {
+bool roughChannels(const ChannelRoughing& job, LathePath& path) {
     ChannelCutter cutter(job, path);
-    for (const Root& root : cutter.roots())
+    const std::vector<Root> roots = cutter.roots();
+    for (const Root& root : roots)
         cutter.cut(root);
+    return !roots.empty();
 }
 
 }  // namespace kerf::cycles::lathe

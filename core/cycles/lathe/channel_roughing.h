@@ -26,6 +26,7 @@ struct ChannelRoughing {
 // profile at K, a pass at the feed to the opposite wall, the retract D (absent: up that wall
 // along the profile), back to the entry, down to the next level; channels inside channels
 // afterwards, the same way. Between channels the tool leaves straight up to the call level.
-void roughChannels(const ChannelRoughing& job, LathePath& path);
+// False when the profile has no channel.
+bool roughChannels(const ChannelRoughing& job, LathePath& path);
 
 }  // namespace kerf::cycles::lathe

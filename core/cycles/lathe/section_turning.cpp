@@ -189,8 +189,7 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
         job.feed = feed;
         job.plungeFeed = section.plungeFeed;
         job.facing = f;
-        roughChannels(job, path);
-        path.rapid(callZx);  // along the call point's level, above the stock
+        if (roughChannels(job, path)) path.rapid(callZx);  // along the call point's level
     }
     // Final roughing pass and finishing pass: along the profile (plus allowances), up B's wall.
     auto along = [&](const Chain& ch, double passFeed) {

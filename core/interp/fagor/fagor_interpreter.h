@@ -225,6 +225,15 @@ private:
     // G68/G69: the profile from label S to label E (fagor_profile.cpp).
     bool readProfile(const CycleWords& w, const Vec2& start,
                      std::vector<cycles::lathe::ProfileElement>& out);
+    struct ProfileCorner {
+        size_t element = 0;  // the corner at the end of this element
+        bool round = true;   // G36, else G39
+        double size = 0.0;
+        uint32_t line = 0;
+        uint32_t column = 0;
+    };
+    bool shapeProfileCorners(const Vec2& start, const std::vector<ProfileCorner>& corners,
+                             std::vector<cycles::lathe::ProfileElement>& out, bool here);
 
     // Probing G75/G76 (fagor_probing.cpp).
     bool probeMove(const IsoBlock& iso);

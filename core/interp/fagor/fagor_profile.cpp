@@ -1,9 +1,12 @@
-// The profile of G68/G69 (spec part 2 §1.6): the blocks from label S to label E of program Q (or
-// the program with the cycle) read as geometry, lines and arcs from the cycle's X, Z.
+// The profile of G66/G68/G69 (spec part 2 §1.6): the blocks from label S to label E of program Q
+// (or the program with the cycle) read as geometry from the cycle's X, Z: lines, arcs (I/K, R,
+// G06 absolute centre, G08 tangent, G09 through a point) and the corners G36 rounds and G39
+// chamfers.
 #include <algorithm>
 #include <cmath>
 
 #include "core/base/translate.h"
+#include "core/geometry/contour_element.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
 namespace kerf::fagor {
@@ -60,6 +63,7 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
     bool incremental = m_modal.incremental;
     int motion = 1;
     Vec2 at = start;
+    std::vector<ProfileCorner> corners;  // G36/G39 at the end of an element
     // A problem in a profile block is reported at that block.
     auto refuse = [&](size_t offset, const char* message, std::vector<std::string> args) {
         if (program == m_program) {
@@ -80,6 +84,8 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         }
         if (block.kind != ParsedBlock::Kind::Iso) continue;
         const IsoBlock& iso = block.iso;
+        int arcForm = 0;  // G06, G08 or G09 in this block
+        std::optional<ProfileCorner> corner;
         for (uint8_t i = 0; i < iso.gCount; ++i) {
             const int g = static_cast<int>(iso.g[i].value);
             switch (g) {
@@ -87,6 +93,21 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                 case 2:
                 case 3:
                     motion = g;
+                    break;
+                case 6:
+                case 8:
+                case 9:
+                    arcForm = g;
+                    break;
+                case 36:
+                case 39:
+                    if (!(iso.cornerR.present && iso.cornerR.value > 0.0)) {
+                        return refuse(iso.g[i].offset,
+                                      KERF_TR_NOOP("{1} needs R greater than 0 right after it"),
+                                      {gName(g)});
+                    }
+                    corner = ProfileCorner{0, g == 36, length(iso.cornerR.value), line.firstLine,
+                                           program::columnOf(line.text, iso.g[i].offset)};
                     break;
                 case 90:
                 case 91:
@@ -97,11 +118,6 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                 case 50:
                     break;  // accepted and ignored (§1.6)
                 case 0:
-                case 6:
-                case 8:
-                case 9:
-                case 36:
-                case 39:
                 case 53:
                 case 70:
                 case 71:
@@ -146,9 +162,55 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         coordinate(plane.ordinate, end.y());
         cycles::lathe::ProfileElement element;
         element.end = end;
-        if (motion == 2 || motion == 3) {
+        if (arcForm == 8 || arcForm == 9) {
+            // G08 tangent to the previous element; G09 through the point I, K.
+            std::optional<Vec2> centre;
+            double sweep = 0.0;
+            if (arcForm == 8) {
+                if (out.empty()) {
+                    return refuse(0,
+                                  KERF_TR_NOOP("G08 needs a previous path in the plane to be "
+                                               "tangent to"),
+                                  {});
+                }
+                const Vec2 from = out.size() > 1 ? out[out.size() - 2].end : start;
+                const cycles::lathe::ProfileElement& previous = out.back();
+                const Vec2 tangent =
+                    previous.centre
+                        ? arcTangentAt(*previous.centre, previous.end,
+                                       arcSweep(from, previous.end, *previous.centre, previous.ccw))
+                        : (previous.end - from).normalized();
+                if (const auto arc = tangentArc(at, tangent, end)) {
+                    centre = arc->center;
+                    sweep = arc->sweep;
+                }
+            } else {
+                Vec2 middle = at;
+                const auto through = [&](Axis axis, const WordValue& word, double& value) {
+                    if (!word.present) return;
+                    const double v = axisValue(axis, word.value);
+                    value = incremental ? value + v : v;
+                };
+                through(plane.abscissa, iso.k, middle.x());
+                through(plane.ordinate, iso.i1, middle.y());
+                if (const auto circle = circleThrough(at, middle, end)) {
+                    centre = circle->center;
+                    sweep = arcSweep(at, end, circle->center, cross2(middle - at, end - at) > 0.0);
+                }
+            }
+            if (!centre || (end - at).norm() < 1e-9) {
+                return refuse(0, KERF_TR_NOOP("{1} cannot make an arc to this end point"),
+                              {gName(arcForm)});
+            }
+            element.centre = centre;
+            element.ccw = sweep > 0.0;
+        } else if (motion == 2 || motion == 3) {
             element.ccw = motion == 3;
-            if (iso.r.present) {
+            if (arcForm == 6) {
+                // G06: the centre I, K in absolute coordinates (I as X: diameter or radius).
+                element.centre = Vec2(axisValue(plane.abscissa, iso.k.value),
+                                      axisValue(plane.ordinate, iso.i1.value));
+            } else if (iso.r.present) {
                 const auto c = arcCenterFromRadius(at, end, length(iso.r.value), element.ccw);
                 if (!c) {
                     return refuse(iso.r.offset,
@@ -171,7 +233,72 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
             return refuse(0, KERF_TR_NOOP("the profile has more than 10000 elements"), {});
         }
         out.push_back(element);
+        if (corner) {
+            corner->element = out.size() - 1;
+            corners.push_back(*corner);
+        }
         at = end;
+    }
+    return shapeProfileCorners(start, corners, out, program == m_program);
+}
+
+bool FagorInterpreter::shapeProfileCorners(const Vec2& start,
+                                           const std::vector<ProfileCorner>& corners,
+                                           std::vector<cycles::lathe::ProfileElement>& out,
+                                           bool here) {
+    // From the last corner back, so that inserting keeps the earlier indices.
+    for (auto c = corners.rbegin(); c != corners.rend(); ++c) {
+        auto refuse = [&](const char* message) {
+            if (here) {
+                m_at.line = c->line;
+                m_at.column = c->column;
+            }
+            fail("cycle-profile", message, {});
+            return false;
+        };
+        const size_t i = c->element;
+        if (i + 1 >= out.size()) {
+            return refuse(KERF_TR_NOOP("the next block must be a contour element in the plane"));
+        }
+        // The two elements as contour elements of the plane (z, x) -> (X, Y).
+        auto element = [&](size_t k) {
+            const Vec2 from = k == 0 ? start : out[k - 1].end;
+            Pose a;
+            Pose b;
+            a[Axis::X] = from.x();
+            a[Axis::Y] = from.y();
+            b[Axis::X] = out[k].end.x();
+            b[Axis::Y] = out[k].end.y();
+            if (!out[k].centre) return ContourElement::line(Plane::XY, a, b);
+            return ContourElement::arc(Plane::XY, a, b, *out[k].centre,
+                                       arcSweep(from, out[k].end, *out[k].centre, out[k].ccw));
+        };
+        const ContourElement a = element(i);
+        const ContourElement b = element(i + 1);
+        cycles::lathe::ProfileElement inserted;
+        if (c->round) {
+            const auto f = fillet(a, b, c->size);
+            if (!f) {
+                return refuse(
+                    KERF_TR_NOOP("G36: the rounding radius does not fit between the elements"));
+            }
+            out[i].end = a.pointAt(f->paramOnA);
+            inserted.end = b.pointAt(f->paramOnB);
+            inserted.centre = f->center;
+            inserted.ccw = f->sweep > 0.0;
+        } else {
+            if (a.kind != ContourElement::Kind::Line || b.kind != ContourElement::Kind::Line) {
+                return refuse(KERF_TR_NOOP("G39 needs straight lines on both sides"));
+            }
+            const double la = a.planarLength();
+            const double lb = b.planarLength();
+            if (c->size >= la - 1e-9 || c->size >= lb - 1e-9) {
+                return refuse(KERF_TR_NOOP("G39: the chamfer is longer than an adjacent line"));
+            }
+            out[i].end = a.pointAt(1.0 - c->size / la);
+            inserted.end = b.pointAt(c->size / lb);
+        }
+        out.insert(out.begin() + static_cast<std::ptrdiff_t>(i) + 1, inserted);
     }
     return true;
 }
