@@ -5812,6 +5812,18 @@ editieren</translation>
         <source>{1} cannot make an arc to this end point</source>
         <translation>{1} kann keinen Bogen zu diesem Endpunkt bilden</translation>
     </message>
+    <message>
+        <source>a profile has one raw-stock part (one G00)</source>
+        <translation>ein Profil hat ein einziges Rohteilprofil (ein G00)</translation>
+    </message>
+    <message>
+        <source>the G00 block starts the raw-stock profile: it needs its point</source>
+        <translation>der G00-Satz beginnt das Rohteilprofil: er braucht seinen Punkt</translation>
+    </message>
+    <message>
+        <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
+        <translation>nach G00 braucht das Rohteilprofil G01, G02 oder G03</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -5812,6 +5812,18 @@ ciclo</translation>
         <source>{1} cannot make an arc to this end point</source>
         <translation>{1} no puede formar un arco hasta este punto final</translation>
     </message>
+    <message>
+        <source>a profile has one raw-stock part (one G00)</source>
+        <translation>un perfil tiene una sola parte de material en bruto (un G00)</translation>
+    </message>
+    <message>
+        <source>the G00 block starts the raw-stock profile: it needs its point</source>
+        <translation>el bloque G00 inicia el perfil del material en bruto: necesita su punto</translation>
+    </message>
+    <message>
+        <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
+        <translation>tras G00 el perfil del material en bruto necesita G01, G02 o G03</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -5815,6 +5815,18 @@ cykl</translation>
         <source>{1} cannot make an arc to this end point</source>
         <translation>{1} nie może utworzyć łuku do tego punktu końcowego</translation>
     </message>
+    <message>
+        <source>a profile has one raw-stock part (one G00)</source>
+        <translation>profil ma jedną część półfabrykatu (jedno G00)</translation>
+    </message>
+    <message>
+        <source>the G00 block starts the raw-stock profile: it needs its point</source>
+        <translation>blok G00 rozpoczyna profil półfabrykatu: potrzebuje swojego punktu</translation>
+    </message>
+    <message>
+        <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
+        <translation>po G00 profil półfabrykatu wymaga G01, G02 lub G03</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -5812,6 +5812,18 @@ ciclo</translation>
         <source>{1} cannot make an arc to this end point</source>
         <translation>{1} não consegue formar um arco até este ponto final</translation>
     </message>
+    <message>
+        <source>a profile has one raw-stock part (one G00)</source>
+        <translation>um perfil tem uma só parte de material bruto (um G00)</translation>
+    </message>
+    <message>
+        <source>the G00 block starts the raw-stock profile: it needs its point</source>
+        <translation>o bloco G00 inicia o perfil do material bruto: precisa do seu ponto</translation>
+    </message>
+    <message>
+        <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
+        <translation>após G00 o perfil do material bruto precisa de G01, G02 ou G03</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -91,7 +91,7 @@ private:
         const double entry = chain.at(stretch.enter).x();
         const double exit = toWall ? chain.end().x() : chain.at(stretch.exit).x();
         const Vec2 end(exit, level);
-        m_path.feed(out(end), m_job.feed);
+        cutAlongLevel(m_job.raw, m_job.side, exit, level, m_job.feed, m_job.facing, m_path);
         const double band = m_job.side * (above - level);
         if (m_job.retract && *m_job.retract > 0.0) {
             const double d = std::min({*m_job.retract, std::fabs(exit - entry), band});

@@ -12,6 +12,7 @@ namespace kerf::cycles::lathe {
 // dips back under a level, left by the main passes and roughed afterwards one by one.
 struct ChannelRoughing {
     const Chain* chain = nullptr;   // the profile plus its allowances, in the (cut, step) frame
+    const Chain* raw = nullptr;     // the raw-stock profile, if any
     std::vector<double> levels;     // the pass levels, from the first below the call point down
     Vec2 call{0.0, 0.0};            // the call point in the frame
     double side = 1.0;              // +1 when the material lies above the profile (towards call)

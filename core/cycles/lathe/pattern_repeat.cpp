@@ -24,9 +24,10 @@ LatheError geometryError(char letter, const char* message) {
     return {letter, "cycle-geometry", message, {}};
 }
 
-bool buildChain(const PatternRepeat& cycle, std::vector<PlanarSegment>& chain, LatheError& error) {
-    Vec2 from = cycle.start;
-    for (const ProfileElement& e : cycle.elements) {
+bool buildChain(const Vec2& start, const std::vector<ProfileElement>& elements,
+                const PatternRepeat& cycle, std::vector<PlanarSegment>& chain, LatheError& error) {
+    Vec2 from = start;
+    for (const ProfileElement& e : elements) {
         if ((e.end - from).norm() > kTolerance) {
             if (!e.centre) {
                 chain.push_back(PlanarSegment::line(from, e.end));
@@ -60,6 +61,64 @@ std::vector<PlanarSegment> moved(std::vector<PlanarSegment> chain, const Vec2& b
     return chain;
 }
 
+// The raw-stock profile as a dense polyline, to tell whether a pass meets its material: a point
+// is inside when the outline lies beyond it (towards the call point) along the measuring axis.
+class RawOutline {
+public:
+    RawOutline(const std::vector<PlanarSegment>& raw, int main, double outward)
+        : m_main(main), m_outward(outward) {
+        for (const PlanarSegment& s : raw)
+            sample(s, m_points);
+    }
+
+    // Whether any point of the pass lies in the raw stock (always, without one).
+    bool cuts(const std::vector<PlanarSegment>& pass) const {
+        if (m_points.empty()) return true;
+        std::vector<Vec2> points;
+        for (const PlanarSegment& s : pass)
+            sample(s, points);
+        for (const Vec2& p : points) {
+            if (inside(p)) return true;
+        }
+        return false;
+    }
+
+private:
+    static void sample(const PlanarSegment& s, std::vector<Vec2>& out) {
+        const int n = s.kind == PlanarSegment::Kind::Arc ? 64 : 1;
+        for (int k = 0; k <= n; ++k) {
+            const double t = static_cast<double>(k) / n;
+            if (s.kind == PlanarSegment::Kind::Line) {
+                out.push_back(s.start + t * (s.end - s.start));
+            } else {
+                const double a = t * s.sweep;
+                const Vec2 r = s.start - s.center;
+                out.push_back(s.center + Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
+                                              std::sin(a) * r.x() + std::cos(a) * r.y()));
+            }
+        }
+    }
+
+    bool inside(const Vec2& p) const {
+        const int measure = 1 - m_main;
+        for (size_t i = 1; i < m_points.size(); ++i) {
+            const Vec2& a = m_points[i - 1];
+            const Vec2& b = m_points[i];
+            const double lo = std::min(a[m_main], b[m_main]);
+            const double hi = std::max(a[m_main], b[m_main]);
+            if (p[m_main] < lo || p[m_main] > hi || hi - lo < kTolerance) continue;
+            const double t = (p[m_main] - a[m_main]) / (b[m_main] - a[m_main]);
+            const double edge = a[measure] + t * (b[measure] - a[measure]);
+            if (m_outward * (edge - p[measure]) > 1e-6) return true;
+        }
+        return false;
+    }
+
+    int m_main;
+    double m_outward;
+    std::vector<Vec2> m_points;
+};
+
 double distanceTo(const std::vector<PlanarSegment>& chain, const Vec2& p) {
     double nearest = HUGE_VAL;
     for (const PlanarSegment& s : chain)
@@ -72,7 +131,12 @@ double distanceTo(const std::vector<PlanarSegment>& chain, const Vec2& p) {
 bool expandPatternRepeat(const PatternRepeat& cycle, const Vec2& call, LathePath& path,
                          LatheError& error) {
     std::vector<PlanarSegment> profile;
-    if (!buildChain(cycle, profile, error)) return false;
+    if (!buildChain(cycle.start, cycle.elements, cycle, profile, error)) return false;
+    std::vector<PlanarSegment> raw;
+    if (!cycle.raw.elements.empty() &&
+        !buildChain(cycle.raw.start, cycle.raw.elements, cycle, raw, error)) {
+        return false;
+    }
     // Axis 0 is Z, 1 is X. The stock is measured along `measure`; the passes run along `main`.
     const int measure = cycle.stockAlongZ ? 0 : 1;
     const int main = 1 - measure;
@@ -141,6 +205,7 @@ bool expandPatternRepeat(const PatternRepeat& cycle, const Vec2& call, LathePath
             depths.push_back(cycle.stock - k * cycle.step);
         depths.push_back(allowance);
     }
+    const RawOutline outline(raw, main, outward[measure]);
     std::vector<PlanarSegment> pass;
     for (const double d : depths) {
         if (!passAt(d, pass)) {
@@ -148,7 +213,7 @@ bool expandPatternRepeat(const PatternRepeat& cycle, const Vec2& call, LathePath
                                                     "distance of a pass: it is too narrow"));
             return false;
         }
-        run(pass, 0.0);
+        if (outline.cuts(pass)) run(pass, 0.0);
     }
     if (cycle.finishingFeed > 0.0)
         run(chainUpTo(profile, main, limit, direction), cycle.finishingFeed);

@@ -19,6 +19,7 @@ struct PatternRepeat {
     double allowanceX = 0.0;           // |L|
     std::optional<double> allowanceZ;  // |M|; absent: |L| all round, the passes are offsets
     double finishingFeed = 0.0;        // H; 0: no finishing pass
+    RawStock raw;                      // passes wholly outside it are left out
     double radiusTolerance = 0.01;     // mm: an arc's start and end radii may differ this much
 };
 

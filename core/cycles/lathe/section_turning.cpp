@@ -25,19 +25,13 @@ LatheError positionError(char letter) {
             {std::string(1, letter)}};
 }
 
-}  // namespace
-
-bool shortArcIsCcw(const Vec2& a, const Vec2& b, const Vec2& centre) {
-    return arcSweep(a, b, centre, true) <= kPi;
-}
-
-bool expandTurningSection(const TurningSection& section, const Vec2& callZx, LathePath& path,
-                          LatheError& error) {
+// The elements from `start` in the cycle's frame; false with `error` for an arc whose ends are not
+// on one circle, or (G81-G85) one beyond a quarter circle.
+bool toChain(const Vec2& start, const std::vector<ProfileElement>& elements,
+             const TurningSection& section, Chain& chain, LatheError& error) {
     const bool f = section.facing;
-    const Vec2 call = swapped(callZx, f);
-    Chain chain;
-    Vec2 from = swapped(section.start, f);
-    for (const ProfileElement& e : section.elements) {
+    Vec2 from = swapped(start, f);
+    for (const ProfileElement& e : elements) {
         Section s;
         s.a = from;
         s.b = swapped(e.end, f);
@@ -59,12 +53,12 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
             s.sweep = arcSweep(s.a, s.b, s.c, e.ccw != f);
             // Passes meet it once only if it stays within a quarter circle; a profile's arcs
             // are split at their quadrant points.
-            const double q0 = s.theta0 / (kPi / 2.0);
-            const double q1 = (s.theta0 + s.sweep) / (kPi / 2.0);
             if (section.channels) {
                 chain.addArcByQuadrants(s);
                 continue;
             }
+            const double q0 = s.theta0 / (kPi / 2.0);
+            const double q1 = (s.theta0 + s.sweep) / (kPi / 2.0);
             if (std::ceil(std::min(q0, q1) + 1e-9) <= std::floor(std::max(q0, q1) - 1e-9)) {
                 error = {'I',
                          "cycle-geometry",
@@ -74,6 +68,27 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
             }
         }
         if ((s.b - s.a).norm() > kTolerance) chain.parts.push_back(s);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool shortArcIsCcw(const Vec2& a, const Vec2& b, const Vec2& centre) {
+    return arcSweep(a, b, centre, true) <= kPi;
+}
+
+bool expandTurningSection(const TurningSection& section, const Vec2& callZx, LathePath& path,
+                          LatheError& error) {
+    const bool f = section.facing;
+    const Vec2 call = swapped(callZx, f);
+    Chain chain;
+    if (!toChain(section.start, section.elements, section, chain, error)) return false;
+    Chain raw;
+    if (!section.raw.elements.empty()) {
+        TurningSection splitArcs = section;
+        splitArcs.channels = true;
+        if (!toChain(section.raw.start, section.raw.elements, splitArcs, raw, error)) return false;
     }
     if (chain.parts.empty() || std::fabs(chain.end().x() - chain.start().x()) < kTolerance) {
         // Turning needs a length along Z, facing along X: the passes run from A towards B.
@@ -148,7 +163,13 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     // to the profile's lowest point; the main passes stop at A.
     const double lowest = section.channels ? c1.lowest(sideStep) : a1.y();
     const double bottom = sideStep * (lowest - a1.y()) < -kTolerance ? lowest : a1.y();
-    const double depth = sideStep * (call.y() - bottom);
+    // With a raw stock the levels start at its top.
+    double top = call.y();
+    if (!raw.parts.empty() && sideStep * (top - raw.lowest(-sideStep)) > 0.0) {
+        top = raw.lowest(-sideStep);
+    }
+    const Chain* stock = raw.parts.empty() ? nullptr : &raw;
+    const double depth = sideStep * (top - bottom);
     const double count = depth > kTolerance ? std::ceil(depth / section.maxStep - 1e-9) : 0.0;
     if (count * (5.0 + c1.size()) > LathePath::kStepLimit) {
         error = tooManySteps('C');
@@ -159,14 +180,14 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     const double feed = section.roughingFeed;
     std::vector<double> levels;
     for (int k = 1; k <= passes; ++k) {
-        levels.push_back(k == passes ? bottom : call.y() - sideStep * k * step);
+        levels.push_back(k == passes ? bottom : top - sideStep * k * step);
     }
     double previous = call.y();
     for (const double level : levels) {
         if (sideStep * (level - a1.y()) < -kTolerance) break;  // below A: channels only
         path.rapid(out({call.x(), level}));                    // 1-2
         const Vec2 end = passEnd(level);
-        path.feed(out(end), feed);  // 2-3
+        cutAlongLevel(stock, sideStep, end.x(), level, feed, f, path);  // 2-3
         if (!section.retract && rises(levelT(level), levelT(previous))) {
             // 3-4 along the profile (and up B's wall) to the previous level.
             if (!onWall(level)) follow(c1, levelT(level), levelT(previous), feed);
@@ -181,6 +202,7 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     if (section.channels) {
         ChannelRoughing job;
         job.chain = &c1;
+        job.raw = stock;
         job.levels = levels;
         job.call = call;
         job.side = sideStep;

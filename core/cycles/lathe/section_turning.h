@@ -15,6 +15,14 @@ struct ProfileElement {
     bool ccw = false;
 };
 
+// The raw-stock profile of G66/G68/G69 (spec part 2 §1.6): the blank's outline, from `start`.
+// Only the material between it and the finished profile is cut; where a pass runs outside it, it
+// runs at rapid.
+struct RawStock {
+    Vec2 start{0.0, 0.0};
+    std::vector<ProfileElement> elements;  // empty: no raw-stock profile
+};
+
 // Straight passes over a profile that grows steadily away from the call point: G81/G84 and G68
 // (turning: passes along Z, stepping in X) and G82/G85 and G69 (facing: passes along X, stepping
 // in Z). G81-G85 have one element, A -> B; spec part 2 §2, retract model §1.7.
@@ -29,6 +37,7 @@ struct TurningSection {
     bool channels = false;           // G68/G69: the profile may dip back into the material
     double roughingFeed = 0.0;       // the passes (0: the feed active at the call)
     double plungeFeed = 0.0;         // K: down into channels (0: the roughing feed)
+    RawStock raw;                    // G68/G69
     double finalRoughingFeed = 0.0;  // F, 0: no final roughing pass
     double finishingFeed = 0.0;      // H, 0: no finishing pass
     double radiusTolerance = 0.01;   // mm: an arc's start and end radii may differ this much

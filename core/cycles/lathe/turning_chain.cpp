@@ -43,9 +43,9 @@ Vec2 Chain::at(double t) const {
 
 double Chain::atLevel(double v, double side) const {
     for (size_t i = 0; i < parts.size(); ++i) {
-        if (side * (parts[i].b.y() - v) >= -kChainTolerance) {
-            return static_cast<double>(i) + parts[i].atLevel(v);
-        }
+        const Section& p = parts[i];
+        if (side * (p.a.y() - v) > kChainTolerance) return static_cast<double>(i);
+        if (side * (p.b.y() - v) > kChainTolerance) return static_cast<double>(i) + p.atLevel(v);
     }
     return size();
 }
@@ -173,6 +173,42 @@ void followChain(const Chain& chain, double t0, double t1, double feed, bool fac
             path.feed(swapped(to, facing), feed);
         }
     }
+}
+
+void cutAlongLevel(const Chain* raw, double side, double toX, double level, double feed,
+                   bool facing, LathePath& path) {
+    const double fromX = swapped(path.position(), facing).x();
+    auto go = [&](double x, bool cutting) {
+        const Vec2 to = swapped(Vec2(x, level), facing);
+        if (cutting) {
+            path.feed(to, feed);
+        } else {
+            path.rapid(to);
+        }
+    };
+    if (raw == nullptr || raw->parts.empty()) {
+        go(toX, true);
+        return;
+    }
+    // The stretches of the level under the raw stock, in the order of travel.
+    const double direction = toX >= fromX ? 1.0 : -1.0;
+    std::vector<std::pair<double, double>> stock;
+    for (const LevelInterval& i : raw->intervalsAt(level, -side)) {
+        const double a = i.fromCallSide() ? raw->start().x() : raw->at(i.enter).x();
+        const double b = i.exit >= raw->size() ? raw->end().x() : raw->at(i.exit).x();
+        // In travel coordinates (x times the direction) the stretch runs from lo up to hi.
+        const double lo = std::max(std::min(a * direction, b * direction), fromX * direction);
+        const double hi = std::min(std::max(a * direction, b * direction), toX * direction);
+        if (hi > lo + kChainTolerance) stock.emplace_back(lo * direction, hi * direction);
+    }
+    std::sort(stock.begin(), stock.end(), [&](const auto& p, const auto& q) {
+        return p.first * direction < q.first * direction;
+    });
+    for (const auto& [start, end] : stock) {
+        go(start, false);
+        go(end, true);
+    }
+    go(toX, false);
 }
 
 }  // namespace kerf::cycles::lathe

@@ -46,7 +46,7 @@ struct Chain {
     Vec2 start() const { return parts.front().a; }
     Vec2 end() const { return parts.back().b; }
     Vec2 at(double t) const;
-    // The first parameter where the chain, growing steadily, reaches step level v.
+    // The first parameter where the chain rises above level v (a stretch at v is passed along).
     double atLevel(double v, double side) const;
     Chain shifted(const Vec2& d) const;
     // An arc split at the quadrant points it passes, so every part is monotone in both axes.
@@ -72,5 +72,11 @@ inline Vec2 swapped(const Vec2& p, bool swap) {
 // (z, x) (`facing`: the frame is swapped).
 void followChain(const Chain& chain, double t0, double t1, double feed, bool facing,
                  LathePath& path);
+
+// From the tool's place on `level` along it to `toX`: at `feed` where the raw stock `raw` lies
+// beyond the level (`side`: +1 when the material lies above it), at rapid where it does not;
+// all at the feed without a raw stock.
+void cutAlongLevel(const Chain* raw, double side, double toX, double level, double feed,
+                   bool facing, LathePath& path);
 
 }  // namespace kerf::cycles::lathe

@@ -69,7 +69,9 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             section.channels = true;
             section.plungeFeed = w.value('K', 0.0);
             section.start = point('Z', 'X');
-            if (!readProfile(w, section.start, section.elements)) return false;
+            RawProfile raw;
+            if (!readProfile(w, section.start, section.elements, raw)) return false;
+            section.raw = {raw.start, std::move(raw.elements)};
             m_at.line = m_line.firstLine;
             section.maxStep = length(w['C'].value);
             if (w.has('D')) section.retract = length(w['D'].value);
@@ -85,7 +87,9 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
         case 66: {
             cycles::lathe::PatternRepeat cycle;
             cycle.start = point('Z', 'X');
-            if (!readProfile(w, cycle.start, cycle.elements)) return false;
+            RawProfile raw;
+            if (!readProfile(w, cycle.start, cycle.elements, raw)) return false;
+            cycle.raw = {raw.start, std::move(raw.elements)};
             m_at.line = m_line.firstLine;
             // A absent: the stock is measured along the tool's longer length (X on a tie).
             const ToolOffset& tool = m_tool.data;

@@ -223,8 +223,12 @@ private:
     bool executeCycle(const IsoBlock& iso);
     bool runCycleSteps(const std::vector<cycles::lathe::LatheStep>& steps, const IsoBlock& iso);
     // G68/G69: the profile from label S to label E (fagor_profile.cpp).
+    struct RawProfile {
+        Vec2 start{0.0, 0.0};
+        std::vector<cycles::lathe::ProfileElement> elements;  // empty: no raw-stock profile
+    };
     bool readProfile(const CycleWords& w, const Vec2& start,
-                     std::vector<cycles::lathe::ProfileElement>& out);
+                     std::vector<cycles::lathe::ProfileElement>& finished, RawProfile& raw);
     struct ProfileCorner {
         size_t element = 0;  // the corner at the end of this element
         bool round = true;   // G36, else G39

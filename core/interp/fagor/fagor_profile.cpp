@@ -22,7 +22,8 @@ std::string gName(int n) {
 }  // namespace
 
 bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
-                                   std::vector<cycles::lathe::ProfileElement>& out) {
+                                   std::vector<cycles::lathe::ProfileElement>& finished,
+                                   RawProfile& raw) {
     if (!waitForCheck()) return false;
     FagorProgram* program = m_program;
     if (w.has('Q')) {
@@ -63,7 +64,11 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
     bool incremental = m_modal.incremental;
     int motion = 1;
     Vec2 at = start;
+    // The finished profile, then from its G00 block on the raw-stock profile (§1.6).
+    std::vector<cycles::lathe::ProfileElement>* target = &finished;
     std::vector<ProfileCorner> corners;  // G36/G39 at the end of an element
+    std::vector<ProfileCorner> rawCorners;
+    bool rawStarts = false;
     // A problem in a profile block is reported at that block.
     auto refuse = [&](size_t offset, const char* message, std::vector<std::string> args) {
         if (program == m_program) {
@@ -86,6 +91,7 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         const IsoBlock& iso = block.iso;
         int arcForm = 0;  // G06, G08 or G09 in this block
         std::optional<ProfileCorner> corner;
+        std::vector<cycles::lathe::ProfileElement>& out = *target;
         for (uint8_t i = 0; i < iso.gCount; ++i) {
             const int g = static_cast<int>(iso.g[i].value);
             switch (g) {
@@ -118,6 +124,14 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                 case 50:
                     break;  // accepted and ignored (§1.6)
                 case 0:
+                    if (target != &finished) {
+                        return refuse(iso.g[i].offset,
+                                      KERF_TR_NOOP("a profile has one raw-stock part (one G00)"),
+                                      {});
+                    }
+                    rawStarts = true;
+                    motion = 0;
+                    break;
                 case 53:
                 case 70:
                 case 71:
@@ -151,7 +165,15 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                               {std::string(1, axisLetter(axis))});
             }
         }
-        if (!iso.has(plane.abscissa) && !iso.has(plane.ordinate)) continue;
+        if (!iso.has(plane.abscissa) && !iso.has(plane.ordinate)) {
+            if (rawStarts) {
+                return refuse(0,
+                              KERF_TR_NOOP("the G00 block starts the raw-stock profile: it "
+                                           "needs its point"),
+                              {});
+            }
+            continue;
+        }
         Vec2 end = at;
         const auto coordinate = [&](Axis axis, double& value) {
             if (!iso.has(axis)) return;
@@ -160,6 +182,18 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         };
         coordinate(plane.abscissa, end.x());
         coordinate(plane.ordinate, end.y());
+        if (rawStarts) {
+            // The raw-stock profile starts here; G00 is modal, so its blocks name G01-G03.
+            raw.start = end;
+            target = &raw.elements;
+            rawStarts = false;
+            at = end;
+            continue;
+        }
+        if (motion == 0) {
+            return refuse(0, KERF_TR_NOOP("after G00 the raw-stock profile needs G01, G02 or G03"),
+                          {});
+        }
         cycles::lathe::ProfileElement element;
         element.end = end;
         if (arcForm == 8 || arcForm == 9) {
@@ -235,11 +269,13 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         out.push_back(element);
         if (corner) {
             corner->element = out.size() - 1;
-            corners.push_back(*corner);
+            (target == &finished ? corners : rawCorners).push_back(*corner);
         }
         at = end;
     }
-    return shapeProfileCorners(start, corners, out, program == m_program);
+    const bool here = program == m_program;
+    return shapeProfileCorners(start, corners, finished, here) &&
+           (raw.elements.empty() || shapeProfileCorners(raw.start, rawCorners, raw.elements, here));
 }
 
 bool FagorInterpreter::shapeProfileCorners(const Vec2& start,

@@ -63,6 +63,22 @@ TEST(PatternRepeat, ShoulderPassesAreOffsetsOfTheProfile) {
     }
 }
 
+TEST(PatternRepeat, PassesOutsideTheRawStockAreLeftOut) {
+    // A casting 3 mm over the shoulder profile (r13 to Z-20, r23 to Z-40): the pass 4 out lies
+    // wholly outside it and is left out; the passes 2 and 0.5 out cut it.
+    PatternRepeat cycle = shoulder();
+    cycle.raw.start = Vec2(0.0, 13.0);
+    cycle.raw.elements = {lineTo(-20.0, 13.0), lineTo(-20.0, 23.0), lineTo(-40.0, 23.0)};
+    const Vec2 call(5.0, 40.0);
+    LathePath path(call);
+    LatheError error;
+    ASSERT_TRUE(expandPatternRepeat(cycle, call, path, error)) << error.messageTemplate;
+    const std::vector<LatheStep>& s = path.steps();
+    ASSERT_EQ(s.size(), 2u * 7u);
+    expectStep(s[0], Kind::Rapid, 0.0, 12.0);
+    expectStep(s[7], Kind::Rapid, 0.0, 10.5);
+}
+
 TEST(PatternRepeat, FinishingPassFollowsTheProfileAtFeedH) {
     PatternRepeat cycle = shoulder();
     cycle.finishingFeed = 0.1;
