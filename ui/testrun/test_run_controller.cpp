@@ -2,6 +2,7 @@
 
 #include <QMetaObject>
 #include <QTimer>
+#include <algorithm>
 #include <limits>
 
 #include "graphics/stock/progressive_stock.h"
@@ -71,9 +72,10 @@ void TestRunController::stopWorker() {
 }
 
 void TestRunController::prepare(const QString& text, const std::filesystem::path& path,
-                                program::Dialect dialect) {
+                                program::Dialect dialect, const Pose& start) {
     stopWorker();
     m_timer->stop();
+    m_follower.reset();
     m_preparedText = text;
     m_preparedPath = path;
     TestRunInput input;
@@ -84,6 +86,9 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     input.machine = m_machine;
     input.ncRoot = m_ncRoot;
     input.clock = m_machiningClock;
+    input.startPosition = start;
+    m_preparedStart = start;
+    m_preparedDialect = dialect;
     m_preparedOrigin = currentOrigin();
     input.presetInMachine = m_preparedOrigin;
     input.checkMoves = m_checkMoves;
@@ -117,12 +122,13 @@ void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> prog
     emit programReady();
     emit progressChanged(m_timeS);
     publishStatus();
-    if (!playable()) {
+    if (!playable() && !m_followingMachine) {
         m_playWhenReady = false;
         setState(State::Failed);
         return;
     }
     setState(State::Ready);
+    if (m_followingMachine) return startFollowing();
     if (m_playWhenReady) {
         m_playWhenReady = false;
         play();
@@ -131,13 +137,16 @@ void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> prog
 
 void TestRunController::start(const QString& text, const std::filesystem::path& path,
                               program::Dialect dialect) {
+    m_followingMachine = false;
+    m_machinePlayback = false;
+    m_follower.reset();
     if (m_state == State::Interpreting) {
         m_playWhenReady = true;
         return;
     }
     // A preset set or edited since the preparation moves the work area under the program.
     if (!m_program || text != m_preparedText || path != m_preparedPath ||
-        currentOrigin().values != m_preparedOrigin.values) {
+        currentOrigin().values != m_preparedOrigin.values || m_preparedStart != Pose{}) {
         m_playWhenReady = true;
         prepare(text, path, dialect);
         return;
@@ -163,6 +172,8 @@ void TestRunController::stop() {
 
 void TestRunController::reset() {
     m_timer->stop();
+    m_followingMachine = false;
+    m_follower.reset();
     m_playWhenReady = false;
     if (!m_program || m_state == State::Interpreting) return;
     m_timeS = 0.0;
@@ -174,6 +185,9 @@ void TestRunController::reset() {
 }
 
 void TestRunController::clear() {
+    m_followingMachine = false;
+    m_machinePlayback = false;
+    m_follower.reset();
     stopWorker();
     ++m_generation;  // a result already queued belongs to the program before
     m_timer->stop();
@@ -208,7 +222,40 @@ double TestRunController::machiningTimeS() const {
 }
 
 Vec3 TestRunController::toolPosition() const {
+    if (m_follower && m_actual) return m_actual->xyz();
     return m_program ? m_program->toolPositionAt(m_timeS) : Vec3(0.0, 0.0, 0.0);
+}
+
+TestRunController::ExecutedPart TestRunController::executedPart() const {
+    ExecutedPart part;
+    if (!m_program) return part;
+    if (!m_follower) {
+        part.reached = m_program->placeAt(m_program->runPointAt(m_timeS));
+        return part;
+    }
+    if (!m_follower->startPoint()) return part;
+    const PathPlace start = m_program->placeAt(*m_follower->startPoint());
+    part.fromPoint = start.pointsDone > 0 ? start.pointsDone - 1 : 0;
+    part.reached = m_program->placeAt(m_follower->point());
+    return part;
+}
+
+double TestRunController::progressPercent() const {
+    const double total = machiningTimeS();
+    if (total <= 0.0) return m_state == State::Finished ? 100.0 : 0.0;
+    return std::clamp(100.0 * m_timeS / total, 0.0, 100.0);
+}
+
+double TestRunController::remainingTimeS() const {
+    return std::max(0.0, machiningTimeS() - m_timeS);
+}
+
+std::optional<SourceLocation> TestRunController::currentBlock() const {
+    if (!m_program) return std::nullopt;
+    const size_t index = m_follower ? m_follower->point().command : m_program->commandAt(m_timeS);
+    if (index >= m_program->commands.size() || (m_follower && !m_follower->startPoint()))
+        return std::nullopt;
+    return m_program->commands[index].location;
 }
 
 int TestRunController::currentLine() const {
@@ -253,17 +300,24 @@ void TestRunController::newStock() {
 
 void TestRunController::pushUpTo(double timeS) {
     if (!m_program || !m_stock) return;
-    const size_t end = std::min(m_program->commandAt(timeS), m_program->commands.size());
+    const size_t reached = m_follower ? m_follower->point().command : m_program->commandAt(timeS);
+    const size_t end = std::min(reached, m_program->commands.size());
     if (end <= m_pushed) return;
-    std::vector<canon::Command> batch(m_program->commands.begin() + static_cast<long>(m_pushed),
-                                      m_program->commands.begin() + static_cast<long>(end));
+    std::vector<canon::Command> batch;
+    for (size_t i = m_pushed; i < end; ++i) {
+        // Following the machine the drives' positions cut (cutTo), not the programmed moves.
+        if (m_follower && m_program->isMove(i)) continue;
+        batch.push_back(m_program->commands[i]);
+    }
     m_stock->push(std::move(batch));
     m_pushed = end;
 }
 
 void TestRunController::publishStatus() {
     const TestRunProgram::StatusSnapshot* snapshot =
-        m_program ? m_program->statusAt(m_timeS) : nullptr;
+        !m_program   ? nullptr
+        : m_follower ? m_program->statusOfCommand(m_follower->point().command)
+                     : m_program->statusAt(m_timeS);
     if (snapshot == nullptr || snapshot == m_shownStatus) return;
     m_shownStatus = snapshot;
     emit programStatusChanged(snapshot->status);
@@ -273,6 +327,102 @@ void TestRunController::setState(State state) {
     if (state == m_state) return;
     m_state = state;
     emit stateChanged();
+}
+
+void TestRunController::follow(const QString& text, const std::filesystem::path& path,
+                               program::Dialect dialect, const Pose& start) {
+    m_timer->stop();
+    m_playWhenReady = false;
+    m_followingMachine = true;
+    m_machinePlayback = true;
+    m_waitingSamples.clear();
+    m_endWhenReady.reset();
+    m_actual.reset();
+    m_sampleClock.invalidate();
+    const bool prepared = m_state != State::Interpreting && m_program && text == m_preparedText &&
+                          path == m_preparedPath && start == m_preparedStart &&
+                          currentOrigin().values == m_preparedOrigin.values;
+    if (!prepared) return prepare(text, path, dialect, start);
+    startFollowing();
+}
+
+void TestRunController::startFollowing() {
+    m_follower.emplace(*m_program);
+    m_timeS = 0.0;
+    m_shownStatus = nullptr;
+    newStock();
+    setState(State::Following);
+    emit progressChanged(m_timeS);
+    for (const MachineSample& sample : m_waitingSamples)
+        applySample(sample);
+    m_waitingSamples.clear();
+    if (m_endWhenReady) endFollowing(*m_endWhenReady);
+}
+
+void TestRunController::followMachine(const MachineSample& sample) {
+    if (!m_followingMachine) return;
+    if (m_sampleClock.isValid() && m_sampleClock.elapsed() < m_followIntervalMs) return;
+    m_sampleClock.start();
+    if (m_state == State::Interpreting) {
+        constexpr size_t kMaxWaitingSamples = 100'000;  // about an hour at 25 looks a second
+        if (m_waitingSamples.size() < kMaxWaitingSamples) m_waitingSamples.push_back(sample);
+        return;
+    }
+    if (m_state != State::Following) return;
+    applySample(sample);
+}
+
+void TestRunController::applySample(const MachineSample& sample) {
+    if (!m_follower) return;
+    if (sample.onPath) m_follower->observe(sample.block, sample.nominal);
+    // Tool changes and the blank of the blocks reached go to the stock before the cut.
+    m_timeS = std::max(m_timeS, m_program->timeAt(m_follower->point()));
+    pushUpTo(m_timeS);
+    cutTo(sample);
+    emit progressChanged(m_timeS);
+    publishStatus();
+}
+
+void TestRunController::cutTo(const MachineSample& sample) {
+    // The tip moves without the axes when the tool length changes (a tool change): no cut.
+    Pose toMachine;
+    for (size_t i = 0; i < toMachine.values.size(); ++i)
+        toMachine.values[i] = sample.machine.values[i] - sample.actual.values[i];
+    const bool jumped =
+        !m_actual || !m_toMachine || (toMachine.xyz() - m_toMachine->xyz()).norm() > 1e-6;
+    m_actual = sample.actual;
+    m_toMachine = toMachine;
+    if (!m_stock) return;
+    if (jumped) return m_stock->setStart(sample.actual);
+    canon::Command cut;
+    const size_t at = m_follower ? m_follower->point().command : 0;
+    const bool rapid = at < m_program->commands.size() &&
+                       std::holds_alternative<canon::RapidMove>(m_program->commands[at].body);
+    if (rapid) {
+        cut.body = canon::RapidMove{sample.actual};
+    } else {
+        cut.body = canon::LinearMove{sample.actual, 1.0};  // any feed: the stock needs none
+    }
+    m_stock->push(cut);
+}
+
+void TestRunController::endFollowing(bool completed) {
+    if (!m_followingMachine) return;
+    if (m_state == State::Interpreting) {
+        m_endWhenReady = completed;
+        return;
+    }
+    m_followingMachine = false;
+    if (m_state != State::Following || !m_follower) return;
+    if (completed) {
+        m_follower->finish();
+        m_timeS = m_program->machiningTimeS();
+        pushUpTo(m_timeS);
+    }
+    m_stock->finish();
+    emit progressChanged(m_timeS);
+    publishStatus();
+    setState(completed ? State::Finished : State::Stopped);
 }
 
 }  // namespace kerf::ui
