@@ -4,6 +4,7 @@
 #include "ui/session/machine_session.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
 #include "ui/testrun/test_run_controller.h"
 #include "ui/viewport/graphics_panel.h"
@@ -36,7 +37,12 @@ void MainWindow::connectLiveRun() {
     // it needs of it (kFollowIntervalMs).
     connect(m_session, &MachineSession::statusChanged, m_liveRun,
             [this](const task::MachineStatus& status) {
-                if (m_liveRun->following()) m_liveRun->followMachine(sampleOf(status));
+                if (!m_liveRun->following()) return m_positions->setProgrammedFeed(std::nullopt);
+                m_liveRun->followMachine(sampleOf(status));
+                // The feed of the move the machine executes, also in a cycle and per revolution.
+                if (const auto feed = m_liveRun->followedFeed()) {
+                    m_positions->setProgrammedFeed(ProgrammedFeed{feed->mm, feed->perRevolution});
+                }
             });
     connect(m_session, &MachineSession::runStateChanged, m_liveRun, [this](task::RunState state) {
         if (state == task::RunState::Finished) m_liveRun->endFollowing(true);

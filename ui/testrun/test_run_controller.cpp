@@ -250,6 +250,20 @@ double TestRunController::remainingTimeS() const {
     return std::max(0.0, machiningTimeS() - m_timeS);
 }
 
+std::optional<TestRunController::Feed> TestRunController::followedFeed() const {
+    if (!m_followingMachine || !m_follower || !m_follower->startPoint()) return std::nullopt;
+    const size_t index = m_follower->point().command;
+    if (index >= m_program->commands.size()) return std::nullopt;
+    Feed feed;
+    const canon::CommandBody& body = m_program->commands[index].body;
+    if (const auto* line = std::get_if<canon::LinearMove>(&body)) feed.mm = line->feed;
+    if (const auto* arc = std::get_if<canon::ArcMove>(&body)) feed.mm = arc->feed;
+    if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) feed.mm = probe->feed;
+    if (const auto* snapshot = m_program->statusOfCommand(index))
+        feed.perRevolution = snapshot->status.motion.feedPerRevolution;
+    return feed;
+}
+
 std::optional<SourceLocation> TestRunController::currentBlock() const {
     if (!m_program) return std::nullopt;
     const size_t index = m_follower ? m_follower->point().command : m_program->commandAt(m_timeS);

@@ -109,6 +109,13 @@ public:
     // Of the machining time (the planner's): the part done, 0..100, and the time left.
     double progressPercent() const;
     double remainingTimeS() const;
+    // Following the machine: the feed of the command it executes (0 for a rapid), per minute or
+    // per revolution as the block's feed mode says, in mm. None otherwise.
+    struct Feed {
+        double mm = 0.0;
+        bool perRevolution = false;
+    };
+    std::optional<Feed> followedFeed() const;
     void setFollowIntervalMs(int milliseconds) { m_followIntervalMs = milliseconds; }
     static constexpr int kFollowIntervalMs = 40;  // 25 pictures a second at most
 
