@@ -82,8 +82,9 @@ TEST_F(LiveStatus, TheToolTabShowsTheToolOfTheBlockTheMachineCutsNotOfTheReadAhe
     bool sawBlock3 = false;
     ASSERT_TRUE(processUntil([&] {
         if (status().block.line == 4 && status().axes[0].nominal > 10.0 &&
-            status().axes[0].nominal < 20.0 && tabs().programStatus().line == 4) {
+            status().axes[0].nominal < 20.0) {
             sawBlock3 = true;
+            EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Block"), "3");
             EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Tool, "Tool"), "1");
             EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Spindle"), "S 1000 rpm");
         }
