@@ -352,6 +352,8 @@ void TestRunController::follow(const QString& text, const std::filesystem::path&
     m_waitingSamples.clear();
     m_endWhenReady.reset();
     m_actual.reset();
+    m_toMachine.reset();
+    m_lastOnPath = false;
     m_sampleClock.invalidate();
     const bool prepared = m_state != State::Interpreting && m_program && text == m_preparedText &&
                           path == m_preparedPath && start == m_preparedStart &&
@@ -388,16 +390,25 @@ void TestRunController::followMachine(const MachineSample& sample) {
 
 void TestRunController::applySample(const MachineSample& sample) {
     if (!m_follower) return;
+    const size_t pointsBefore = m_program->placeAt(m_follower->point()).pointsDone;
+    const bool wasOnPath = m_lastOnPath && m_follower->startPoint().has_value();
     if (sample.onPath) m_follower->observe(sample.block, sample.nominal);
+    m_lastOnPath = sample.onPath;
     // Tool changes and the blank of the blocks reached go to the stock before the cut.
     m_timeS = std::max(m_timeS, m_program->timeAt(m_follower->point()));
     pushUpTo(m_timeS);
-    cutTo(sample);
+    // Along the path the machine went by the program's points between the two looks (an arc
+    // stays an arc); off it (held, jogged away, returning) straight to where the drives are.
+    const size_t pointsAfter = m_program->placeAt(m_follower->point()).pointsDone;
+    constexpr size_t kMaxPathPointsPerLook = 4096;
+    const bool alongPath = wasOnPath && sample.onPath && pointsAfter >= pointsBefore &&
+                           pointsAfter - pointsBefore <= kMaxPathPointsPerLook;
+    cutTo(sample, alongPath ? pointsBefore : pointsAfter, pointsAfter);
     emit progressChanged(m_timeS);
     publishStatus();
 }
 
-void TestRunController::cutTo(const MachineSample& sample) {
+void TestRunController::cutTo(const MachineSample& sample, size_t fromPoint, size_t toPoint) {
     // The tip moves without the axes when the tool length changes (a tool change): no cut.
     Pose toMachine;
     for (size_t i = 0; i < toMachine.values.size(); ++i)
@@ -408,16 +419,28 @@ void TestRunController::cutTo(const MachineSample& sample) {
     m_toMachine = toMachine;
     if (!m_stock) return;
     if (jumped) return m_stock->setStart(sample.actual);
-    canon::Command cut;
+    auto cut = [](const Pose& to, bool rapid) {
+        canon::Command c;
+        if (rapid) {
+            c.body = canon::RapidMove{to};
+        } else {
+            c.body = canon::LinearMove{to, 1.0};  // any feed: the stock needs none
+        }
+        return c;
+    };
+    std::vector<canon::Command> cuts;
+    const graphics::ToolpathData& path = *m_program->toolpath;
+    for (size_t i = fromPoint; i < toPoint && i < path.pointCount(); ++i) {
+        Pose to = sample.actual;
+        to.setXyz(path.point(i));
+        const std::optional<uint32_t> move = i > 0 ? path.moveOfSegment(i) : std::nullopt;
+        cuts.push_back(cut(to, move && path.kinds[*move] == graphics::MoveKind::Rapid));
+    }
     const size_t at = m_follower ? m_follower->point().command : 0;
     const bool rapid = at < m_program->commands.size() &&
                        std::holds_alternative<canon::RapidMove>(m_program->commands[at].body);
-    if (rapid) {
-        cut.body = canon::RapidMove{sample.actual};
-    } else {
-        cut.body = canon::LinearMove{sample.actual, 1.0};  // any feed: the stock needs none
-    }
-    m_stock->push(cut);
+    cuts.push_back(cut(sample.actual, rapid));
+    m_stock->push(std::move(cuts));
 }
 
 void TestRunController::endFollowing(bool completed) {

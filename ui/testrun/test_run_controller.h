@@ -157,7 +157,8 @@ private:
     void startFollowing();
     void applySample(const MachineSample& sample);
     // The stock follows the drives: a cut from the last position reported to this one.
-    void cutTo(const MachineSample& sample);
+    // Along the prepared path's points [fromPoint, toPoint) first (the machine passed them).
+    void cutTo(const MachineSample& sample, size_t fromPoint, size_t toPoint);
     void newStock();
     void pushUpTo(double timeS);
     void publishStatus();
@@ -200,6 +201,7 @@ private:
     std::optional<bool> m_endWhenReady;           // the run ended while it was prepared
     std::optional<Pose> m_actual;                 // last position the drives reported
     std::optional<Pose> m_toMachine;              // and from it to machine coordinates
+    bool m_lastOnPath = false;
     QElapsedTimer m_sampleClock;
     int m_followIntervalMs = kFollowIntervalMs;
 };

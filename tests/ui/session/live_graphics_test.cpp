@@ -160,5 +160,33 @@ TEST_F(LiveGraphics, ProgramRunDrawsWhereTheMachineIsAndCountsDownThePlannersTim
     EXPECT_NEAR(live->stock()->latest()->removedVolumeMm3, expected, 0.04 * expected);
 }
 
+// Two fast circles of R 3 with the 10 mm end mill (tool 2), looked at only every 150 ms: the
+// looks are a good part of the circle apart, and the stock must be cut along the circle, not
+// along the chords between them. Swept: a disk of R 3 + 5 = 8, 2 mm deep.
+TEST_F(LiveGraphics, TheStockIsCutAlongThePathTheMachineFollowsBetweenTwoLooks) {
+    std::ofstream(dir / "CIRC.H") << "0 BEGIN PGM CIRC MM\n"
+                                     "1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n"
+                                     "2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                                     "3 L Z+100 R0 FMAX\n"
+                                     "4 TOOL CALL 2 Z S3000\n"
+                                     "5 CC X+30 Y+30\n"
+                                     "6 L X+33 Y+30 Z+5 R0 FMAX\n"
+                                     "7 L Z-2 R0 F3000\n"
+                                     "8 C X+33 Y+30 DR+ F6000\n"
+                                     "9 C X+33 Y+30 DR+\n"
+                                     "10 L Z+5 R0 FMAX\n"
+                                     "11 END PGM CIRC MM\n";
+    ASSERT_TRUE(window->openProgram(dir / "CIRC.H"));
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    TestRunController* live = window->liveRun();
+    live->setFollowIntervalMs(150);
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    ASSERT_TRUE(processUntil([&] { return live->state() == TestRunController::State::Finished; }));
+    ASSERT_NE(live->stock(), nullptr);
+    ASSERT_TRUE(live->stock()->waitFinished(10s));
+    const double expected = 2.0 * std::numbers::pi * 8.0 * 8.0;
+    EXPECT_NEAR(live->stock()->latest()->removedVolumeMm3, expected, 0.015 * expected);
+}
+
 }  // namespace
 }  // namespace kerf::ui
