@@ -12,13 +12,14 @@ ExecutedPath::ExecutedPath() {
     m_polyData->SetLines(m_lines);
     m_mapper->SetInputData(m_polyData);
     m_mapper->ScalarVisibilityOff();
-    // Drawn over the path it covers (as the highlight is).
+    // Drawn over the path it covers, and over the highlight of the block being executed (the
+    // editor's cursor follows it), which then shows the rest of that block.
     m_mapper->SetResolveCoincidentTopologyToPolygonOffset();
-    m_mapper->SetRelativeCoincidentTopologyLineOffsetParameters(0.0, -10.0);
+    m_mapper->SetRelativeCoincidentTopologyLineOffsetParameters(0.0, -30.0);
     m_actor->SetMapper(m_mapper);
-    // Orange, wider than the path: no move kind has this colour.
+    // Orange, as wide as the highlight: no move kind has this colour.
     m_actor->GetProperty()->SetColor(1.0, 0.50, 0.10);
-    m_actor->GetProperty()->SetLineWidth(3.0f);
+    m_actor->GetProperty()->SetLineWidth(4.0f);
     m_actor->GetProperty()->LightingOff();
     m_actor->PickableOff();
     m_actor->VisibilityOff();
