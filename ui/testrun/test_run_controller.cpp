@@ -228,12 +228,8 @@ Vec3 TestRunController::toolPosition() const {
 
 TestRunController::ExecutedPart TestRunController::executedPart() const {
     ExecutedPart part;
-    if (!m_program) return part;
-    if (!m_follower) {
-        part.reached = m_program->placeAt(m_program->runPointAt(m_timeS));
-        return part;
-    }
-    if (!m_follower->startPoint()) return part;
+    // The test run draws the whole path in its colours; the machine's run what it has done.
+    if (!m_program || !m_follower || !m_follower->startPoint()) return part;
     const PathPlace start = m_program->placeAt(*m_follower->startPoint());
     part.fromPoint = start.pointsDone > 0 ? start.pointsDone - 1 : 0;
     part.reached = m_program->placeAt(m_follower->point());

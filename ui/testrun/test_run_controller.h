@@ -119,8 +119,8 @@ public:
     void setFollowIntervalMs(int milliseconds) { m_followIntervalMs = milliseconds; }
     static constexpr int kFollowIntervalMs = 40;  // 25 pictures a second at most
 
-    // The executed part of the toolpath: from the start of the run (the start block of a run
-    // started at a block) to the point reached.
+    // Following the machine, the executed part of the toolpath: from the start of the run (the
+    // start block of a run started at a block) to the point reached; empty otherwise.
     struct ExecutedPart {
         size_t fromPoint = 0;
         PathPlace reached;

@@ -18,10 +18,10 @@ namespace kerf::ui {
 class ViewportWidget;
 
 // The graphics panel of the workspace: the toolpath and stock of the test run in a 3D viewport
-// (views, zoom, rotate, pan by mouse and touch), the tool at the playback position, the part of
-// the path already played in its own colour, the machining time and the playback speed. Shown
-// a playback that follows the machine (Program run), it shows the tool where the machine is,
-// and instead of the time and the speed the block, the part done and the time remaining. A click
+// (views, zoom, rotate, pan by mouse and touch), the tool at the playback position, the machining
+// time and the playback speed. Shown a playback that follows the machine (Program run), it shows
+// the tool where the machine is, the part of the path executed in its own colour, and instead
+// of the time and the speed the block, the part done and the time remaining. A click
 // on the path names its block; the block at the editor's cursor lights up. Without an X display
 // (the offscreen platform) the 3D view is replaced by a note and everything else keeps working.
 // UI thread only.
