@@ -30,6 +30,7 @@ MachineSample sampleOf(const task::MachineStatus& status) {
 
 void MainWindow::connectLiveRun() {
     m_liveRun = new TestRunController(m_context.machine, m_context.ncRoot, this);
+    m_liveRun->setFollowsMachine(true);
     m_liveRun->setMachiningClock(m_context.machiningClock);
     // Prepared from the origin the machine's program runs from; the machine checks its moves.
     m_liveRun->setWorkAreaCheck({}, [this] { return m_session->presetInMachine(); });

@@ -104,8 +104,10 @@ public:
     // The machine's run ended; completed: it ran to its end (100 %, nothing remaining).
     void endFollowing(bool completed);
     bool following() const { return m_followingMachine; }
-    // This playback shows the machine's run (follow() was its last start).
+    // This playback shows the machine's runs (set, or follow() was its last start): the
+    // graphics show its progress, not a playback speed.
     bool followsMachine() const { return m_machinePlayback; }
+    void setFollowsMachine(bool on) { m_machinePlayback = on; }
     // Of the machining time (the planner's): the part done, 0..100, and the time left.
     double progressPercent() const;
     double remainingTimeS() const;

@@ -41,7 +41,7 @@ public:
     // Shows another playback (the test run, or Program run following the machine); the panel's
     // first one is the constructor's.
     void showPlayback(TestRunController& playback);
-    TestRunController& playback() const { return *m_testRun; }
+    TestRunController& playback() const { return *m_playback; }
 
     // "0:01:05": hours, minutes, seconds (rounded up, so a started second counts).
     static QString formatDuration(double seconds);
@@ -68,7 +68,7 @@ private:
     void scheduleFit();
     void fitWhenStockShown();
 
-    TestRunController* m_testRun;
+    TestRunController* m_playback;
     std::vector<QMetaObject::Connection> m_playbackConnections;
     bool m_lathe = false;
     std::unique_ptr<graphics::Scene> m_scene;
