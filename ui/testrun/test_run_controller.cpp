@@ -5,10 +5,19 @@
 #include <algorithm>
 #include <limits>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include "graphics/stock/progressive_stock.h"
 #include "ui/common/diagnostic_text.h"
 
 namespace kerf::ui {
+
+namespace {
+
+constexpr int kPreparationNice = 10;
+
+}  // namespace
 
 double speedFactor(TestRunSpeed speed) {
     switch (speed) {
@@ -95,6 +104,8 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     const uint64_t generation = ++m_generation;
     setState(State::Interpreting);
     m_worker = std::thread([this, input = std::move(input), generation] {
+        // Below the panel and the machine's threads: Program run prepares while the axes move.
+        setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPreparationNice);
         auto program =
             std::make_shared<const TestRunProgram>(interpretForTestRun(input, &m_cancel));
         if (program->cancelled) return;
