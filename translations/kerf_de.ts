@@ -157,6 +157,10 @@
         <source>Machining time %1 / %2</source>
         <translation>Bearbeitungszeit %1 / %2</translation>
     </message>
+    <message>
+        <source>%1   %2 % done   %3 remaining</source>
+        <translation>%1   %2 % erledigt   Restzeit %3</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineKeys</name>
@@ -637,6 +641,14 @@ Maschine: %3</translation>
     <message>
         <source>Coolant off</source>
         <translation>Kühlmittel aus</translation>
+    </message>
+    <message>
+        <source>inch/rev</source>
+        <translation>inch/U</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/U</translation>
     </message>
 </context>
 <context>

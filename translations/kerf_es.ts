@@ -157,6 +157,10 @@
         <source>Machining time %1 / %2</source>
         <translation>Tiempo de mecanizado %1 / %2</translation>
     </message>
+    <message>
+        <source>%1   %2 % done   %3 remaining</source>
+        <translation>%1   %2 % hecho   quedan %3</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineKeys</name>
@@ -637,6 +641,14 @@ Máquina: %3</translation>
     <message>
         <source>Coolant off</source>
         <translation>Refrigerante desactivado</translation>
+    </message>
+    <message>
+        <source>inch/rev</source>
+        <translation>inch/rev</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/rev</translation>
     </message>
 </context>
 <context>

@@ -158,6 +158,10 @@
         <source>Machining time %1 / %2</source>
         <translation>Czas obróbki %1 / %2</translation>
     </message>
+    <message>
+        <source>%1   %2 % done   %3 remaining</source>
+        <translation>%1   %2 % wykonano   pozostało %3</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineKeys</name>
@@ -640,6 +644,14 @@ Maszyna: %3</translation>
     <message>
         <source>Coolant off</source>
         <translation>Chłodziwo wył.</translation>
+    </message>
+    <message>
+        <source>inch/rev</source>
+        <translation>inch/obr</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/obr</translation>
     </message>
 </context>
 <context>

@@ -157,6 +157,10 @@
         <source>Machining time %1 / %2</source>
         <translation>Tempo de maquinagem %1 / %2</translation>
     </message>
+    <message>
+        <source>%1   %2 % done   %3 remaining</source>
+        <translation>%1   %2 % concluído   faltam %3</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineKeys</name>
@@ -638,6 +642,14 @@ Máquina: %3</translation>
     <message>
         <source>Coolant off</source>
         <translation>Refrigeração desligada</translation>
+    </message>
+    <message>
+        <source>inch/rev</source>
+        <translation>inch/rot</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/rot</translation>
     </message>
 </context>
 <context>

@@ -200,6 +200,7 @@ Scene::Impl::Impl(SceneOptions sceneOptions) : options(sceneOptions) {
     highlightActor->GetProperty()->LightingOff();
     highlightActor->VisibilityOff();
     renderer->AddActor(highlightActor);
+    renderer->AddActor(executed.actor());
 
     if (options.limits && !options.limits->empty) {
         const Bounds3& b = *options.limits;
@@ -318,6 +319,7 @@ void Scene::setToolpath(std::shared_ptr<const ToolpathData> data,
     d.data = std::move(data);
     d.geometry = std::move(geometry);
     clearHighlight();
+    d.executed.clear();
     if (!d.geometry) return;
     d.chunks.reserve(d.geometry->chunks.size());
     for (const ToolpathChunk& chunk : d.geometry->chunks) {
@@ -432,6 +434,16 @@ void Scene::setTool(const ToolGlyph& tool) {
 void Scene::setToolPosition(const Vec3& position) {
     if (!position.allFinite()) return;
     m_impl->toolActor->SetPosition(position.x(), position.y(), position.z());
+}
+
+void Scene::setExecutedPath(size_t fromPoint, size_t toPoint, const Vec3& tip) {
+    Impl& d = *m_impl;
+    if (!d.data) return d.executed.clear();
+    d.executed.show(*d.data, fromPoint, toPoint, tip);
+}
+
+void Scene::clearExecutedPath() {
+    m_impl->executed.clear();
 }
 
 void Scene::Impl::updateAxesScale() {
@@ -744,6 +756,7 @@ SceneStats Scene::stats() const {
             d.geometry->chunks[c].levels[static_cast<size_t>(d.chunks[c].level)].segmentCount();
     }
     stats.highlightedSegments = d.highlighted;
+    stats.executedSegments = d.executed.segments();
     stats.stockTriangles = d.stock ? d.stock->triangleCount() : 0;
     return stats;
 }

@@ -55,6 +55,7 @@ struct SceneStats {
     size_t segmentsSelected = 0;   // in the levels chosen at the last render (culling aside)
     std::vector<int> chunkLevels;  // level chosen per chunk at the last render
     size_t highlightedSegments = 0;
+    size_t executedSegments = 0;
     size_t stockTriangles = 0;
 };
 
@@ -74,6 +75,11 @@ public:
     void setStockMesh(std::shared_ptr<const Mesh> mesh);
     void setTool(const ToolGlyph& tool);
     void setToolPosition(const Vec3& position);
+    // The part of the toolpath already executed, drawn over the path in its own colour: the
+    // path's points [fromPoint, toPoint) and then `tip` (where the run is along the next
+    // segment). Moving on only appends; an empty range clears it.
+    void setExecutedPath(size_t fromPoint, size_t toPoint, const Vec3& tip);
+    void clearExecutedPath();
 
     // Camera presets; each fits the content (toolpath and stock) into the viewport.
     void setView(View view);

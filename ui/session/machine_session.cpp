@@ -92,6 +92,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     source.startPosition.values = m_motion->world().position.values;
     source.presetInMachine = presetInMachine();
     m_programName = programName(path);
+    m_programStart = source.startPosition;
     return start(loadProgram(m_machine, source), startLine);
 }
 
@@ -312,6 +313,9 @@ void MachineSession::service() {
     }
     if (state == m_lastState) return;
     m_lastState = state;
+    if (const interp::Interpreter* interpreter = m_run->interpreter();
+        interpreter && (state == task::RunState::Finished || state == task::RunState::Failed))
+        emit programStatusChanged(interpreter->programStatus());
     if (state == task::RunState::Failed) report(m_run->diagnostics());
     if (state == task::RunState::Finished) emit message(Severity::Note, tr("Program finished"), 0);
     if (state == task::RunState::Aborted) emit message(Severity::Warning, tr("Program stopped"), 0);

@@ -134,6 +134,9 @@ public:
     std::optional<int> executingLine() const;
     // The name (programName()) of the program started last; empty after MDI.
     const std::string& runningProgramName() const { return m_programName; }
+    // Where the tool tip stood when the program started last (workpiece coordinates, before a
+    // FAGOR zero offset moved the origin): its interpreter began there.
+    const Pose& programStart() const { return m_programStart; }
 
     // One step of the task: called by the timer; tests call it directly.
     void service();
@@ -141,7 +144,8 @@ public:
 signals:
     void statusChanged(const kerf::task::MachineStatus& status);
     void runStateChanged(kerf::task::RunState state);
-    // The running program's interpreter state, for the status tabs.
+    // The running program's interpreter state, for the status tabs: a few times a second while
+    // it runs, and once when it ends (an MDI block ends before the next picture).
     void programStatusChanged(const kerf::interp::ProgramStatus& status);
     void message(kerf::Severity severity, const QString& text, int line);
 
@@ -161,6 +165,7 @@ private:
     std::filesystem::path m_ncRoot;
     task::PresetStore m_presets;
     std::string m_programName;  // the running program's name in m_sources; empty: MDI
+    Pose m_programStart{};
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;
     std::unique_ptr<tables::ToolTable> m_tools;

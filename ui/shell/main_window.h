@@ -64,6 +64,8 @@ public:
     TableEditor* tables() const { return m_tables; }
     GraphicsPanel* graphics() const { return m_graphics; }
     TestRunController* testRun() const { return m_testRun; }
+    // Program run's graphics: the playback that follows the machine (nullptr without one).
+    TestRunController* liveRun() const { return m_liveRun; }
     // Test run of the editor's program (main_window_testrun.cpp).
     void startTestRun();
     PositionDisplay* positions() const { return m_positions; }
@@ -118,6 +120,8 @@ private:
     void connectSession();
     std::vector<SoftkeyRow> machineRows();
     void startEditorProgram(std::optional<uint32_t> startLine);
+    // Program run's graphics and status tabs follow the machine (main_window_live.cpp).
+    void connectLiveRun();
     // The graphics panel and the test run (main_window_testrun.cpp).
     void createGraphics(QWidget* parent);
     bool testRunOnScreen() const;
@@ -140,6 +144,7 @@ private:
     ProgramPanel* m_program = nullptr;
     GraphicsPanel* m_graphics = nullptr;
     TestRunController* m_testRun = nullptr;
+    TestRunController* m_liveRun = nullptr;
     StatusTabs* m_status = nullptr;
     PositionDisplay* m_positions = nullptr;
     MachineSession* m_session = nullptr;

@@ -17,6 +17,7 @@
 #include "ui/status/override_controls.h"
 #include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
+#include "ui/testrun/test_run_controller.h"
 
 namespace kerf::ui {
 
@@ -48,7 +49,13 @@ void MainWindow::connectSession() {
                 m_messages->addMessage(severity, text, line);
             });
     connect(m_session, &MachineSession::programStatusChanged, m_status,
-            &StatusTabs::setProgramStatus);
+            [this](const interp::ProgramStatus& status) {
+                // A program's status comes from the block the machine executes (connectLiveRun);
+                // the interpreter's own is read ahead. An MDI block is the one executed.
+                if (m_session->runningProgramName().empty() && !testRunOnScreen())
+                    m_status->setProgramStatus(status);
+            });
+    connectLiveRun();
     OverrideControls* overrides = m_positions->overrides();
     connect(overrides, &OverrideControls::feedOverrideChanged, m_session,
             &MachineSession::setFeedOverride);
@@ -110,7 +117,10 @@ void MainWindow::startEditorProgram(std::optional<uint32_t> startLine) {
         m_messages->addMessage(Severity::Error, tr("No program is open: open one in Files"));
         return;
     }
-    m_session->startProgram(m_program->editor()->toPlainText(), m_program->path(), startLine);
+    ProgramEditor* editor = m_program->editor();
+    if (m_session->startProgram(editor->toPlainText(), m_program->path(), startLine))
+        m_liveRun->follow(editor->toPlainText(), m_program->path(), editor->dialect(),
+                          m_session->programStart());
 }
 
 }  // namespace kerf::ui

@@ -146,6 +146,16 @@ void PositionDisplay::setStatus(const task::MachineStatus& status) {
     refresh();
 }
 
+void PositionDisplay::setProgrammedFeed(std::optional<ProgrammedFeed> feed) {
+    if (feed == m_programmedFeed) return;
+    m_programmedFeed = feed;
+    refresh();
+}
+
+QString PositionDisplay::feedText() const {
+    return m_feed->text();
+}
+
 void PositionDisplay::setRunState(const QString& text) {
     m_runState = text;
     refresh();
@@ -197,11 +207,24 @@ void PositionDisplay::refresh() {
     m_state->setText(state);
     m_tool->setText(tr("T %1").arg(m_status.toolNumber));
     const double feedScale = inch ? 1.0 / kMmPerInch : 1.0;
-    const int feedDecimals = inch ? 1 : 0;
-    m_feed->setText(tr("F %1 (actual %2) %3")
-                        .arg(m_status.programmedFeedMmPerMin * feedScale, 0, 'f', feedDecimals)
-                        .arg(m_status.actualFeedMmPerMin * feedScale, 0, 'f', feedDecimals)
-                        .arg(inch ? tr("inch/min") : tr("mm/min")));
+    if (m_programmedFeed && m_programmedFeed->perRevolution) {
+        // Per revolution as programmed; the actual one from the path speed and the spindle's.
+        const double rpm = m_status.actualSpindleRpm;
+        const double actual = rpm > 0.0 ? m_status.actualFeedMmPerMin / rpm : 0.0;
+        const int decimals = inch ? 4 : 3;
+        m_feed->setText(tr("F %1 (actual %2) %3")
+                            .arg(m_programmedFeed->mm * feedScale, 0, 'f', decimals)
+                            .arg(actual * feedScale, 0, 'f', decimals)
+                            .arg(inch ? tr("inch/rev") : tr("mm/rev")));
+    } else {
+        const double programmed =
+            m_programmedFeed ? m_programmedFeed->mm : m_status.programmedFeedMmPerMin;
+        const int decimals = inch ? 1 : 0;
+        m_feed->setText(tr("F %1 (actual %2) %3")
+                            .arg(programmed * feedScale, 0, 'f', decimals)
+                            .arg(m_status.actualFeedMmPerMin * feedScale, 0, 'f', decimals)
+                            .arg(inch ? tr("inch/min") : tr("mm/min")));
+    }
     m_spindle->setText(tr("S %1 (actual %2) rpm")
                            .arg(m_status.programmedSpindleRpm, 0, 'f', 0)
                            .arg(m_status.actualSpindleRpm, 0, 'f', 0));

@@ -3,6 +3,7 @@
 #include <QString>
 #include <QWidget>
 #include <array>
+#include <optional>
 
 #include "core/machine/machine_config.h"
 #include "core/program/dialect.h"
@@ -14,6 +15,14 @@ class QLabel;
 namespace kerf::ui {
 
 class OverrideControls;
+
+// The feed of the block the machine executes, as its program gives it: mm per minute, or per
+// revolution (G95, FU).
+struct ProgrammedFeed {
+    double mm = 0.0;
+    bool perRevolution = false;
+    friend bool operator==(const ProgrammedFeed&, const ProgrammedFeed&) = default;
+};
 
 // The position display of the machine modes: the machine's axes with the kind of position chosen
 // in MOD (ACTL, NOML, REF ACTL, REF NOML, LAG, DIST), in mm or inch, lathe X as a diameter where
@@ -28,6 +37,11 @@ public:
     void setDisplaySettings(const DisplaySettings& settings);
     const DisplaySettings& displaySettings() const { return m_settings; }
     void setStatus(const task::MachineStatus& status);
+    // While a program runs: its feed at the block the machine executes (inside a cycle the
+    // cycle's move), shown instead of the machine's; the actual feed is then shown in the same
+    // unit. None: the machine's feed in mm/min.
+    void setProgrammedFeed(std::optional<ProgrammedFeed> feed);
+    QString feedText() const;
     // The program run's state next to the machine's ("running", "feed hold", ...).
     void setRunState(const QString& text);
 
@@ -63,6 +77,7 @@ private:
     DisplaySettings m_settings;
     program::Dialect m_dialect;  // how the machine's programs number their blocks
     task::MachineStatus m_status;
+    std::optional<ProgrammedFeed> m_programmedFeed;
     QString m_runState;
     std::array<AxisRow, kAxisCount> m_axes{};
     QLabel* m_kind = nullptr;

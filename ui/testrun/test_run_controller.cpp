@@ -2,12 +2,22 @@
 
 #include <QMetaObject>
 #include <QTimer>
+#include <algorithm>
 #include <limits>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "graphics/stock/progressive_stock.h"
 #include "ui/common/diagnostic_text.h"
 
 namespace kerf::ui {
+
+namespace {
+
+constexpr int kPreparationNice = 10;
+
+}  // namespace
 
 double speedFactor(TestRunSpeed speed) {
     switch (speed) {
@@ -71,9 +81,10 @@ void TestRunController::stopWorker() {
 }
 
 void TestRunController::prepare(const QString& text, const std::filesystem::path& path,
-                                program::Dialect dialect) {
+                                program::Dialect dialect, const Pose& start) {
     stopWorker();
     m_timer->stop();
+    m_follower.reset();
     m_preparedText = text;
     m_preparedPath = path;
     TestRunInput input;
@@ -84,12 +95,17 @@ void TestRunController::prepare(const QString& text, const std::filesystem::path
     input.machine = m_machine;
     input.ncRoot = m_ncRoot;
     input.clock = m_machiningClock;
+    input.startPosition = start;
+    m_preparedStart = start;
+    m_preparedDialect = dialect;
     m_preparedOrigin = currentOrigin();
     input.presetInMachine = m_preparedOrigin;
     input.checkMoves = m_checkMoves;
     const uint64_t generation = ++m_generation;
     setState(State::Interpreting);
     m_worker = std::thread([this, input = std::move(input), generation] {
+        // Below the panel and the machine's threads: Program run prepares while the axes move.
+        setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPreparationNice);
         auto program =
             std::make_shared<const TestRunProgram>(interpretForTestRun(input, &m_cancel));
         if (program->cancelled) return;
@@ -117,12 +133,13 @@ void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> prog
     emit programReady();
     emit progressChanged(m_timeS);
     publishStatus();
-    if (!playable()) {
+    if (!playable() && !m_followingMachine) {
         m_playWhenReady = false;
         setState(State::Failed);
         return;
     }
     setState(State::Ready);
+    if (m_followingMachine) return startFollowing();
     if (m_playWhenReady) {
         m_playWhenReady = false;
         play();
@@ -131,13 +148,16 @@ void TestRunController::onInterpreted(std::shared_ptr<const TestRunProgram> prog
 
 void TestRunController::start(const QString& text, const std::filesystem::path& path,
                               program::Dialect dialect) {
+    m_followingMachine = false;
+    m_machinePlayback = false;
+    m_follower.reset();
     if (m_state == State::Interpreting) {
         m_playWhenReady = true;
         return;
     }
     // A preset set or edited since the preparation moves the work area under the program.
     if (!m_program || text != m_preparedText || path != m_preparedPath ||
-        currentOrigin().values != m_preparedOrigin.values) {
+        currentOrigin().values != m_preparedOrigin.values || m_preparedStart != Pose{}) {
         m_playWhenReady = true;
         prepare(text, path, dialect);
         return;
@@ -163,6 +183,8 @@ void TestRunController::stop() {
 
 void TestRunController::reset() {
     m_timer->stop();
+    m_followingMachine = false;
+    m_follower.reset();
     m_playWhenReady = false;
     if (!m_program || m_state == State::Interpreting) return;
     m_timeS = 0.0;
@@ -174,6 +196,9 @@ void TestRunController::reset() {
 }
 
 void TestRunController::clear() {
+    m_followingMachine = false;
+    m_machinePlayback = false;
+    m_follower.reset();
     stopWorker();
     ++m_generation;  // a result already queued belongs to the program before
     m_timer->stop();
@@ -208,7 +233,36 @@ double TestRunController::machiningTimeS() const {
 }
 
 Vec3 TestRunController::toolPosition() const {
+    if (m_follower && m_actual) return m_actual->xyz();
     return m_program ? m_program->toolPositionAt(m_timeS) : Vec3(0.0, 0.0, 0.0);
+}
+
+TestRunController::ExecutedPart TestRunController::executedPart() const {
+    ExecutedPart part;
+    // The test run draws the whole path in its colours; the machine's run what it has done.
+    if (!m_program || !m_follower || !m_follower->startPoint()) return part;
+    const PathPlace start = m_program->placeAt(*m_follower->startPoint());
+    part.fromPoint = start.pointsDone > 0 ? start.pointsDone - 1 : 0;
+    part.reached = m_program->placeAt(m_follower->point());
+    return part;
+}
+
+double TestRunController::progressPercent() const {
+    const double total = machiningTimeS();
+    if (total <= 0.0) return m_state == State::Finished ? 100.0 : 0.0;
+    return std::clamp(100.0 * m_timeS / total, 0.0, 100.0);
+}
+
+double TestRunController::remainingTimeS() const {
+    return std::max(0.0, machiningTimeS() - m_timeS);
+}
+
+std::optional<SourceLocation> TestRunController::currentBlock() const {
+    if (!m_program) return std::nullopt;
+    const size_t index = m_follower ? m_follower->point().command : m_program->commandAt(m_timeS);
+    if (index >= m_program->commands.size() || (m_follower && !m_follower->startPoint()))
+        return std::nullopt;
+    return m_program->commands[index].location;
 }
 
 int TestRunController::currentLine() const {
@@ -253,17 +307,24 @@ void TestRunController::newStock() {
 
 void TestRunController::pushUpTo(double timeS) {
     if (!m_program || !m_stock) return;
-    const size_t end = std::min(m_program->commandAt(timeS), m_program->commands.size());
+    const size_t reached = m_follower ? m_follower->point().command : m_program->commandAt(timeS);
+    const size_t end = std::min(reached, m_program->commands.size());
     if (end <= m_pushed) return;
-    std::vector<canon::Command> batch(m_program->commands.begin() + static_cast<long>(m_pushed),
-                                      m_program->commands.begin() + static_cast<long>(end));
+    std::vector<canon::Command> batch;
+    for (size_t i = m_pushed; i < end; ++i) {
+        // Following the machine the drives' positions cut (cutTo), not the programmed moves.
+        if (m_follower && m_program->isMove(i)) continue;
+        batch.push_back(m_program->commands[i]);
+    }
     m_stock->push(std::move(batch));
     m_pushed = end;
 }
 
 void TestRunController::publishStatus() {
     const TestRunProgram::StatusSnapshot* snapshot =
-        m_program ? m_program->statusAt(m_timeS) : nullptr;
+        !m_program   ? nullptr
+        : m_follower ? m_program->statusOfCommand(m_follower->point().command)
+                     : m_program->statusAt(m_timeS);
     if (snapshot == nullptr || snapshot == m_shownStatus) return;
     m_shownStatus = snapshot;
     emit programStatusChanged(snapshot->status);

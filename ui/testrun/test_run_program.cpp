@@ -104,29 +104,47 @@ size_t TestRunProgram::commandAt(double timeS) const {
 }
 
 Vec3 TestRunProgram::toolPositionAt(double timeS) const {
-    const Vec3 origin = start.xyz();
-    if (!toolpath || toolpath->pointCount() == 0) return origin;
-    const graphics::ToolpathData& path = *toolpath;
-    const Vec3 last = path.point(path.pointCount() - 1);
+    return placeAt(runPointAt(timeS)).tip;
+}
+
+RunPoint TestRunProgram::runPointAt(double timeS) const {
     const size_t index = commandAt(timeS);
-    if (index >= commands.size()) return last;
-    const uint32_t move = movesBefore[index];
-    if (move >= path.moveCount()) return last;
-    const auto [begin, end] = path.pointsOfMove(move);
-    const size_t from = begin > 0 ? begin - 1 : 0;
-    const bool moving =
-        index + 1 < movesBefore.size() ? movesBefore[index + 1] > move : path.moveCount() > move;
-    if (!moving || end <= begin) return path.point(from);
+    if (index >= commands.size()) return {commands.size(), 0.0};
     const double startS = index > 0 ? endTimeS[index - 1] : 0.0;
     const double durationS = endTimeS[index] - startS;
-    const double fraction =
-        durationS > 0.0 ? std::clamp((timeS - startS) / durationS, 0.0, 1.0) : 1.0;
+    return {index, durationS > 0.0 ? std::clamp((timeS - startS) / durationS, 0.0, 1.0) : 1.0};
+}
+
+double TestRunProgram::timeAt(const RunPoint& point) const {
+    if (point.command >= endTimeS.size()) return machiningTimeS();
+    const double startS = point.command > 0 ? endTimeS[point.command - 1] : 0.0;
+    return startS + point.fraction * (endTimeS[point.command] - startS);
+}
+
+bool TestRunProgram::isMove(size_t command) const {
+    if (command >= movesBefore.size() || !toolpath) return false;
+    const uint32_t move = movesBefore[command];
+    return command + 1 < movesBefore.size() ? movesBefore[command + 1] > move
+                                            : toolpath->moveCount() > move;
+}
+
+PathPlace TestRunProgram::placeAt(const RunPoint& point) const {
+    if (!toolpath || toolpath->pointCount() == 0) return {0, start.xyz()};
+    const graphics::ToolpathData& path = *toolpath;
+    const PathPlace end{path.pointCount(), path.point(path.pointCount() - 1)};
+    if (point.command >= commands.size()) return end;
+    const uint32_t move = movesBefore[point.command];
+    if (move >= path.moveCount()) return end;
+    const auto [begin, stop] = path.pointsOfMove(move);
+    const size_t from = begin > 0 ? begin - 1 : 0;
+    if (!isMove(point.command) || stop <= begin) return {from + 1, path.point(from)};
     // Points of a move are evenly spaced (lines: one segment; arcs: equal chords).
-    const double position = fraction * static_cast<double>(end - 1 - from);
-    const size_t i = from + std::min(static_cast<size_t>(position), end - 1 - from);
-    if (i + 1 >= end) return path.point(end - 1);
+    const double position =
+        std::clamp(point.fraction, 0.0, 1.0) * static_cast<double>(stop - 1 - from);
+    const size_t i = from + std::min(static_cast<size_t>(position), stop - 1 - from);
+    if (i + 1 >= stop) return {stop, path.point(stop - 1)};
     const double t = position - static_cast<double>(i - from);
-    return path.point(i) + (path.point(i + 1) - path.point(i)) * t;
+    return {i + 1, path.point(i) + (path.point(i + 1) - path.point(i)) * t};
 }
 
 const canon::ToolChange* TestRunProgram::toolAt(double timeS) const {
@@ -139,8 +157,11 @@ const canon::ToolChange* TestRunProgram::toolAt(double timeS) const {
 }
 
 const TestRunProgram::StatusSnapshot* TestRunProgram::statusAt(double timeS) const {
+    return statusOfCommand(commandAt(timeS));
+}
+
+const TestRunProgram::StatusSnapshot* TestRunProgram::statusOfCommand(size_t index) const {
     if (statuses.empty()) return nullptr;
-    const size_t index = commandAt(timeS);
     const auto it = std::upper_bound(
         statuses.begin(), statuses.end(), index,
         [](size_t i, const StatusSnapshot& snapshot) { return i < snapshot.commandsEnd; });
@@ -168,6 +189,7 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     source.ncRoot = input.ncRoot;
     source.dialect = input.dialect;
     source.presetInMachine = input.presetInMachine;
+    source.startPosition = input.startPosition;
     LoadedProgram program = loadProgram(input.machine, source);
     out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
     out.diagnostics = program.diagnostics;

@@ -36,8 +36,24 @@ struct TestRunInput {
     // The workpiece origin in machine coordinates, as Program run would use it (the machine
     // file's preset, PRESET.PR row 0, an entry; a FAGOR program's zero offset takes precedence).
     Pose presetInMachine{};
+    // Where the tool tip stands at the start (workpiece coordinates): the machine's position for
+    // Program run's graphics; the test run starts at the workpiece origin.
+    Pose startPosition{};
     // Checks the moves as the machine would (soft limits, planner rules); none: not checked.
     task::MoveCheckFactory checkMoves;
+};
+
+// A point of a run: the command being executed and how far along it (0..1; a move: of its
+// drawn points, which are evenly spaced; other commands: of their time).
+struct RunPoint {
+    size_t command = 0;
+    double fraction = 0.0;
+};
+
+// How much of the toolpath a run point has passed: its points [0, pointsDone), then `tip`.
+struct PathPlace {
+    size_t pointsDone = 0;
+    Vec3 tip{0.0, 0.0, 0.0};
 };
 
 // A program interpreted for the test run: its canonical stream with the machining time at the
@@ -72,10 +88,18 @@ struct TestRunProgram {
     size_t commandAt(double timeS) const;
     // The tool tip at a playback time, interpolated along the drawn toolpath.
     Vec3 toolPositionAt(double timeS) const;
+    RunPoint runPointAt(double timeS) const;
+    // Machining time at a run point (the whole time past the last command).
+    double timeAt(const RunPoint& point) const;
+    PathPlace placeAt(const RunPoint& point) const;
+    // The command moves the tool (it has points of its own in the toolpath).
+    bool isMove(size_t command) const;
     // The tool in the spindle at a playback time (null before the first tool change).
     const canon::ToolChange* toolAt(double timeS) const;
     // The status of the block being played at a playback time (null without any).
     const StatusSnapshot* statusAt(double timeS) const;
+    // The status of the block of a command (null without any).
+    const StatusSnapshot* statusOfCommand(size_t index) const;
 };
 
 // Interprets the program with the dialect's interpreter (Klartext or Fagor; TNC ISO is refused

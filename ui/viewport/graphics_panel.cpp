@@ -11,6 +11,7 @@
 
 #include "graphics/scene/machine_scene.h"
 #include "graphics/stock/progressive_stock.h"
+#include "ui/common/block_name.h"
 #include "ui/viewport/viewport_widget.h"
 
 namespace kerf::ui {
@@ -31,7 +32,7 @@ bool canRender3d() {
 GraphicsPanel::GraphicsPanel(TestRunController& testRun, const machine::MachineConfig& machine,
                              QWidget* parent)
     : QWidget(parent),
-      m_testRun(testRun),
+      m_playback(&testRun),
       m_lathe(machine.kind == machine::MachineKind::Lathe),
       m_scene(std::make_unique<graphics::Scene>(graphics::sceneOptionsFor(machine))) {
     setObjectName(QStringLiteral("graphicsPanel"));
@@ -80,25 +81,14 @@ GraphicsPanel::GraphicsPanel(TestRunController& testRun, const machine::MachineC
         button->setMinimumSize(56, 48);  // finger-sized
         button->setText(speedText(kSpeeds[i]));
         const TestRunSpeed speed = kSpeeds[i];
-        connect(button, &QToolButton::clicked, this, [this, speed] { m_testRun.setSpeed(speed); });
+        connect(button, &QToolButton::clicked, this,
+                [this, speed] { m_playback->setSpeed(speed); });
         strip->addWidget(button);
         m_speedButtons[i] = button;
     }
     layout->addLayout(strip);
 
-    connect(&m_testRun, &TestRunController::programReady, this, &GraphicsPanel::onProgramReady);
-    connect(&m_testRun, &TestRunController::progressChanged, this, &GraphicsPanel::onProgress);
-    connect(&m_testRun, &TestRunController::stockReplaced, this,
-            [this](const graphics::ProgressiveStock* stock) {
-                m_scene->setStockMesh(nullptr);
-                if (m_viewport != nullptr) m_viewport->followStock(stock);
-            });
-    connect(&m_testRun, &TestRunController::speedChanged, this, [this] {
-        for (size_t i = 0; i < kSpeeds.size(); ++i)
-            m_speedButtons[i]->setChecked(kSpeeds[i] == m_testRun.speed());
-    });
-    for (size_t i = 0; i < kSpeeds.size(); ++i)
-        m_speedButtons[i]->setChecked(kSpeeds[i] == m_testRun.speed());
+    connectPlayback();
     retranslate();
 }
 
@@ -108,6 +98,38 @@ GraphicsPanel::~GraphicsPanel() {
         m_viewport->followStock(nullptr);
         m_viewport->setScene(nullptr);
     }
+}
+
+void GraphicsPanel::connectPlayback() {
+    for (const QMetaObject::Connection& c : m_playbackConnections)
+        disconnect(c);
+    m_playbackConnections = {
+        connect(m_playback, &TestRunController::programReady, this, &GraphicsPanel::onProgramReady),
+        connect(m_playback, &TestRunController::progressChanged, this, &GraphicsPanel::onProgress),
+        connect(m_playback, &TestRunController::stateChanged, this, &GraphicsPanel::onProgress),
+        connect(m_playback, &TestRunController::stockReplaced, this,
+                &GraphicsPanel::onStockReplaced),
+        connect(m_playback, &TestRunController::speedChanged, this,
+                [this] {
+                    for (size_t i = 0; i < kSpeeds.size(); ++i)
+                        m_speedButtons[i]->setChecked(kSpeeds[i] == m_playback->speed());
+                }),
+    };
+    for (size_t i = 0; i < kSpeeds.size(); ++i)
+        m_speedButtons[i]->setChecked(kSpeeds[i] == m_playback->speed());
+}
+
+void GraphicsPanel::showPlayback(TestRunController& playback) {
+    if (&playback == m_playback) return;
+    m_playback = &playback;
+    connectPlayback();
+    onStockReplaced(m_playback->stock());
+    onProgramReady();
+}
+
+void GraphicsPanel::onStockReplaced(const graphics::ProgressiveStock* stock) {
+    m_scene->setStockMesh(nullptr);
+    if (m_viewport != nullptr) m_viewport->followStock(stock);
 }
 
 QToolButton* GraphicsPanel::speedButton(TestRunSpeed speed) const {
@@ -136,11 +158,12 @@ void GraphicsPanel::highlightLine(int line) {
 }
 
 void GraphicsPanel::onProgramReady() {
-    auto program = m_testRun.program();
+    auto program = m_playback->program();
     m_scene->setStockMesh(nullptr);
     if (!program) {
         // The test run forgot its program: nothing of it stays on screen.
         m_scene->setToolpath(nullptr, nullptr);
+        retranslate();
         if (m_viewport != nullptr) m_viewport->render();
         return;
     }
@@ -159,7 +182,7 @@ void GraphicsPanel::scheduleFit() {
 void GraphicsPanel::fitWhenStockShown() {
     // The blank comes from the stock worker a moment after the program: fit once it is drawn,
     // or when there is none to draw (no blank, or one derived only at the end), or after 2 s.
-    const auto* stock = m_testRun.stock();
+    const auto* stock = m_playback->stock();
     const auto latest = stock != nullptr ? stock->latest() : nullptr;
     const bool noBlank =
         latest == nullptr ||
@@ -177,9 +200,9 @@ void GraphicsPanel::resizeEvent(QResizeEvent* event) {
 
 void GraphicsPanel::onProgress() {
     retranslate();
-    auto program = m_testRun.program();
+    auto program = m_playback->program();
     if (!program) return;
-    const canon::ToolChange* tool = program->toolAt(m_testRun.playbackTimeS());
+    const canon::ToolChange* tool = program->toolAt(m_playback->playbackTimeS());
     if (tool != m_shownTool && tool != nullptr) {
         graphics::ToolGlyph glyph;
         glyph.axis = tool->toolAxis;
@@ -193,7 +216,9 @@ void GraphicsPanel::onProgress() {
         m_scene->setTool(glyph);
     }
     m_shownTool = tool;
-    m_scene->setToolPosition(m_testRun.toolPosition());
+    m_scene->setToolPosition(m_playback->toolPosition());
+    const TestRunController::ExecutedPart executed = m_playback->executedPart();
+    m_scene->setExecutedPath(executed.fromPoint, executed.reached.pointsDone, executed.reached.tip);
     if (m_viewport != nullptr) m_viewport->render();
 }
 
@@ -206,9 +231,25 @@ void GraphicsPanel::retranslate() {
     if (m_noDisplay != nullptr) m_noDisplay->setText(tr("The 3D graphics need a display"));
     m_speedTitle->setText(tr("Speed"));
     m_speedButtons.back()->setText(speedText(TestRunSpeed::Max));
-    m_time->setText(tr("Machining time %1 / %2")
-                        .arg(formatDuration(m_testRun.playbackTimeS()),
-                             formatDuration(m_testRun.machiningTimeS())));
+    // Following the machine: where it is and what is left, not the playback's speed.
+    const bool machine = m_playback->followsMachine();
+    m_speedTitle->setVisible(!machine);
+    for (QToolButton* button : m_speedButtons)
+        button->setVisible(!machine);
+    if (!machine) {
+        m_time->setText(tr("Machining time %1 / %2")
+                            .arg(formatDuration(m_playback->playbackTimeS()),
+                                 formatDuration(m_playback->machiningTimeS())));
+        return;
+    }
+    if (!m_playback->program()) return m_time->clear();
+    const std::optional<SourceLocation> block = m_playback->currentBlock();
+    const QString name =
+        block ? blockName(block->blockNumber, static_cast<int>(block->line), m_playback->dialect())
+              : QStringLiteral("-");
+    m_time->setText(tr("%1   %2 % done   %3 remaining")
+                        .arg(name, QString::number(m_playback->progressPercent(), 'f', 0),
+                             formatDuration(m_playback->remainingTimeS())));
 }
 
 }  // namespace kerf::ui

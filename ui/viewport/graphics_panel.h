@@ -3,6 +3,7 @@
 #include <QWidget>
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "core/machine/machine_config.h"
 #include "graphics/scene/scene.h"
@@ -18,9 +19,12 @@ class ViewportWidget;
 
 // The graphics panel of the workspace: the toolpath and stock of the test run in a 3D viewport
 // (views, zoom, rotate, pan by mouse and touch), the tool at the playback position, the machining
-// time and the playback speed. A click on the path names its block; the block at the editor's
-// cursor lights up. Without an X display (the offscreen platform) the 3D view is replaced by a
-// note and everything else keeps working. UI thread only.
+// time and the playback speed. Shown a playback that follows the machine (Program run), it shows
+// the tool where the machine is, the part of the path executed in its own colour, and instead
+// of the time and the speed the block, the part done and the time remaining. A click
+// on the path names its block; the block at the editor's cursor lights up. Without an X display
+// (the offscreen platform) the 3D view is replaced by a note and everything else keeps working.
+// UI thread only.
 class GraphicsPanel : public QWidget {
     Q_OBJECT
 
@@ -34,6 +38,10 @@ public:
     graphics::Scene& scene() { return *m_scene; }
     QLabel* timeLabel() const { return m_time; }
     QToolButton* speedButton(TestRunSpeed speed) const;
+    // Shows another playback (the test run, or Program run following the machine); the panel's
+    // first one is the constructor's.
+    void showPlayback(TestRunController& playback);
+    TestRunController& playback() const { return *m_playback; }
 
     // "0:01:05": hours, minutes, seconds (rounded up, so a started second counts).
     static QString formatDuration(double seconds);
@@ -53,12 +61,15 @@ protected:
 private:
     void onProgramReady();
     void onProgress();
+    void onStockReplaced(const graphics::ProgressiveStock* stock);
+    void connectPlayback();
     void retranslate();
     // Fits the view to the content once the viewport has its size and the blank is in.
     void scheduleFit();
     void fitWhenStockShown();
 
-    TestRunController& m_testRun;
+    TestRunController* m_playback;
+    std::vector<QMetaObject::Connection> m_playbackConnections;
     bool m_lathe = false;
     std::unique_ptr<graphics::Scene> m_scene;
     ViewportWidget* m_viewport = nullptr;

@@ -16,6 +16,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 
+#include "graphics/scene/detail/executed_path.h"
 #include "graphics/scene/scene.h"
 
 namespace kerf::graphics {
@@ -61,6 +62,7 @@ struct Scene::Impl {
     vtkNew<vtkActor> toolActor;
     vtkNew<vtkPolyDataMapper> highlightMapper;
     vtkNew<vtkActor> highlightActor;
+    ExecutedPath executed;
     vtkNew<vtkActor> limitsActor;
     vtkNew<vtkActor> axesActor;  // three coloured lines from the origin
     vtkNew<vtkPolyDataMapper> axesMapper;
