@@ -27,6 +27,10 @@ size_t ConversationalBlock::isoOffset(size_t offset) const {
                                [](size_t o, const Piece& p) { return o < p.start; });
     const Piece& piece = it == m_pieces.begin() ? *it : *std::prev(it);
     const size_t inside = offset >= piece.start ? offset - piece.start : 0;
+    // The blank after a piece belongs to what follows ("+5 DIV +Q2": the operator's word).
+    if (inside >= piece.length && it != m_pieces.end() && it != m_pieces.begin()) {
+        return it->isoOffset;
+    }
     // A verbatim piece maps character by character; a written keyword maps to its ISO word.
     if (piece.isoLength == piece.length) return piece.isoOffset + std::min(inside, piece.length);
     return piece.isoOffset + std::min(inside, piece.isoLength);

@@ -170,6 +170,11 @@ bool scanWords(std::string_view text, size_t from, IsoWords& out,
         // "L1,2" is label 1 twice, not a decimal comma.
         const bool labelNumber = letter == 'L' && valueAt < text.size() && isDigit(text[valueAt]);
         const size_t end = labelNumber ? digitsEnd(text, valueAt) : valueEnd(text, keyEnd);
+        if (end == std::string_view::npos && valueAt < text.size() &&
+            (text[valueAt] == '+' || text[valueAt] == '-')) {
+            return fail(problem, valueAt, KERF_TR_NOOP("value expected after '{1}'"),
+                        {std::string(word.key)});
+        }
         if (end == std::string_view::npos) {
             // Words that stand without a value: mirror axes (G28 X Y), G79 PAT.
             word.valueOffset = keyEnd;
