@@ -30,9 +30,8 @@ bool IsoBlockSyntax::takesParameterLines(std::string_view text) const {
 }
 
 bool IsoBlockSyntax::parseBlock(const program::LogicalLine& isoLine,
-                                const ConversationalBlock& block, klartext::Statement& out) {
-    m_line.joined = block.text();
-    m_line.text = m_line.joined;
+                                const ConversationalBlock& block, klartext::ParsedBlock& out) {
+    m_line.text = block.text();  // the block lives in m_translation until the next ISO block
     m_line.offset = isoLine.offset;
     m_line.nextOffset = isoLine.nextOffset;
     m_line.firstLine = isoLine.firstLine;
@@ -49,16 +48,15 @@ bool IsoBlockSyntax::parseBlock(const program::LogicalLine& isoLine,
         m_line.segments[s].text = m_line.text.substr(m_line.segments[s].joinedOffset,
                                                      end - m_line.segments[s].joinedOffset);
     }
-    if (!m_parser.parse(m_line, m_parsed)) {
+    if (!m_parser.parse(m_line, out)) {
         m_problem = m_parser.problem();
         m_problem.offset = block.isoOffset(m_problem.offset);
         return false;
     }
-    if (auto* cycle = std::get_if<klartext::CycleDefinition>(&m_parsed.statement)) {
+    if (auto* cycle = std::get_if<klartext::CycleDefinition>(&out.statement)) {
         for (klartext::CycleParameter& p : cycle->parameters)
             p.offset = block.isoOffset(p.offset);
     }
-    out = std::move(m_parsed.statement);
     return true;
 }
 
@@ -69,21 +67,17 @@ bool IsoBlockSyntax::parse(const program::LogicalLine& line, klartext::ParsedBlo
         m_problem = m_translator.problem();
         return false;
     }
-    out.blockNumber = m_translation.blockNumber;
-    out.hidden = m_translation.hidden;
     if (m_translation.direct) {
         out.statement = std::move(*m_translation.direct);
-        return true;
-    }
-    for (size_t i = 0; i < m_translation.blocks.size(); ++i) {
-        klartext::Statement statement;
-        if (!parseBlock(line, m_translation.blocks[i], statement)) return false;
-        if (i == 0) {
-            out.statement = std::move(statement);
-        } else {
-            out.more.push_back(std::move(statement));
+    } else {
+        const auto blocks = m_translation.blocks();
+        for (size_t i = 0; i < blocks.size(); ++i) {
+            if (!parseBlock(line, blocks[i], i == 0 ? out : m_parsed)) return false;
+            if (i > 0) out.more.push_back(std::move(m_parsed.statement));
         }
     }
+    out.blockNumber = m_translation.blockNumber;
+    out.hidden = m_translation.hidden;
     return true;
 }
 

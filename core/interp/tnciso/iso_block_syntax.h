@@ -18,8 +18,10 @@ public:
     bool takesParameterLines(std::string_view text) const override;
 
 private:
+    // Parses one conversational block into `out` (its statement; number and skip mark are the
+    // ISO block's).
     bool parseBlock(const program::LogicalLine& isoLine, const ConversationalBlock& block,
-                    klartext::Statement& out);
+                    klartext::ParsedBlock& out);
 
     klartext::BlockParser m_parser;
     IsoTranslator m_translator;

@@ -21,6 +21,26 @@ void ConversationalBlock::add(std::string_view text, size_t isoOffset, size_t is
     if (!joined) m_text.push_back(' ');
 }
 
+void ConversationalBlock::clear() {
+    m_text.clear();
+    m_pieces.clear();
+    m_lineStarts.assign(1, 0);
+}
+
+ConversationalBlock& Translation::newBlock() {
+    if (m_count == m_blocks.size()) m_blocks.emplace_back();
+    ConversationalBlock& block = m_blocks[m_count++];
+    block.clear();
+    return block;
+}
+
+void Translation::clear() {
+    m_count = 0;
+    direct.reset();
+    blockNumber = -1;
+    hidden = false;
+}
+
 size_t ConversationalBlock::isoOffset(size_t offset) const {
     if (m_pieces.empty()) return 0;
     auto it = std::upper_bound(m_pieces.begin(), m_pieces.end(), offset,
@@ -84,10 +104,7 @@ bool IsoTranslator::fail(size_t offset, const char* messageTemplate,
 }
 
 bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out) {
-    out.blocks.clear();
-    out.direct.reset();
-    out.blockNumber = -1;
-    out.hidden = false;
+    out.clear();
     const std::string_view text = line.text;
     size_t i = skipBlanks(text, 0);
     if (i < text.size() && text[i] == '/') {
@@ -106,7 +123,7 @@ bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out
         i = skipBlanks(text, i);
     }
     if (i >= text.size() || text[i] == ';' || text[i] == '*') return true;
-    Context c{line, text, out, m_words, {}};
+    Context c{line, text, out, m_words, m_used};
     if (text[i] == '%') return translateProgramWord(c, i);
     if (upper(text[i]) == 'D' && i + 1 < text.size() && isDigit(text[i + 1])) {
         return translateDFunction(c, i);
@@ -145,7 +162,7 @@ bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out
         return fail(m_words.parametersAt,
                     KERF_TR_NOOP("cycle parameters belong to a cycle block (G2xx, G4xx ...)"));
     }
-    c.used.assign(m_words.words.size(), false);
+    m_used.assign(m_words.words.size(), false);
     if (!translateWords(c)) return false;
     for (size_t w = 0; w < m_words.words.size(); ++w) {
         if (c.used[w]) continue;
@@ -484,7 +501,7 @@ bool IsoTranslator::translateWords(Context& c) {
                         KERF_TR_NOOP("no path function (G00, G01, G02 ...) is active"));
         }
         if (!translateMotion(c, m_motion)) return false;
-        ConversationalBlock& b = c.out.blocks.back();
+        ConversationalBlock& b = c.out.lastBlock();
         addComp(b);
         if (!addAxes(b, m_incremental)) return false;
         c.addFeedAndM(b);

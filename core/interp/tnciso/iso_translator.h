@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,7 @@ public:
     // Starts a further line: the cycle parameter lines of a CYCL DEF.
     void newLine() { m_lineStarts.push_back(m_text.size()); }
 
+    void clear();
     const std::string& text() const { return m_text; }
     const std::vector<size_t>& lineStarts() const { return m_lineStarts; }
     // The ISO offset of an offset in text().
@@ -42,10 +44,18 @@ private:
 };
 
 struct Translation {
-    std::vector<ConversationalBlock> blocks;
     std::optional<klartext::Statement> direct;  // a statement made without a conversational twin
     int64_t blockNumber = -1;
     bool hidden = false;
+
+    std::span<const ConversationalBlock> blocks() const { return {m_blocks.data(), m_count}; }
+    ConversationalBlock& newBlock();  // reuses the storage of earlier blocks
+    ConversationalBlock& lastBlock() { return m_blocks[m_count - 1]; }
+    void clear();
+
+private:
+    std::vector<ConversationalBlock> m_blocks;
+    size_t m_count = 0;
 };
 
 // Turns DIN/ISO blocks into conversational ones. The path function (G00, G01, G02 ...) and
@@ -68,6 +78,7 @@ private:
 
     klartext::ParseProblem m_problem;
     IsoWords m_words;
+    std::vector<bool> m_used;  // per word of m_words: taken by the translation
     std::vector<std::string> m_open;  // names of the programs whose header "%NAME G71" was read
     int m_motion = -1;          // modal path function: 0, 1, 2, 3, 5, 6, 10 ... 16
     bool m_incremental = false; // G91

@@ -43,6 +43,7 @@ bool parameterStarts(std::string_view text, size_t at) {
 }  // namespace
 
 const IsoWord* IsoWords::find(std::string_view key) const {
+    if (key[0] >= 'A' && key[0] <= 'Z' && !hasLetter(key[0])) return nullptr;
     for (const IsoWord& w : words) {
         if (w.key == key) return &w;
     }
@@ -89,6 +90,7 @@ bool scanWords(std::string_view text, size_t from, IsoWords& out,
                klartext::ParseProblem& problem) {
     out.words.clear();
     out.parametersAt = std::string_view::npos;
+    out.letters = 0;
     size_t i = from;
     while (true) {
         i = skipBlanks(text, i);
@@ -121,6 +123,7 @@ bool scanWords(std::string_view text, size_t from, IsoWords& out,
         }
         const char letter = upper(text[i]);
         const char next = i + 1 < text.size() ? upper(text[i + 1]) : '\0';
+        out.letters |= 1u << (letter - 'A');
         size_t keyEnd = i + 1;
         if ((letter == 'F' && (next == 'M' || next == 'A')) || (letter == 'P' && next == 'A')) {
             while (keyEnd < text.size() && isLetter(text[keyEnd]))

@@ -24,6 +24,11 @@ struct IsoWord {
 struct IsoWords {
     std::vector<IsoWord> words;
     size_t parametersAt = std::string_view::npos;  // the first "Qnnn=" of a cycle
+    uint32_t letters = 0;  // bit n: a word whose key starts with letter 'A' + n (quick lookups)
+    bool hasLetter(char upperLetter) const {
+        return upperLetter >= 'A' && upperLetter <= 'Z' &&
+               (letters & (1u << (upperLetter - 'A'))) != 0;
+    }
     const IsoWord* find(std::string_view key) const;
     const IsoWord* findG(int number) const;
 };

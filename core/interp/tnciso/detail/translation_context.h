@@ -14,10 +14,11 @@ struct IsoTranslator::Context {
     std::string_view text;
     Translation& out;
     const IsoWords& words;
-    std::vector<bool> used;
+    std::vector<bool>& used;
 
-    ConversationalBlock& newBlock() { return out.blocks.emplace_back(); }
+    ConversationalBlock& newBlock() { return out.newBlock(); }
     const IsoWord* take(std::string_view key) {
+        if (key[0] >= 'A' && key[0] <= 'Z' && !words.hasLetter(key[0])) return nullptr;
         for (size_t i = 0; i < words.words.size(); ++i) {
             if (!used[i] && words.words[i].key == key) {
                 used[i] = true;

@@ -26,7 +26,7 @@ std::vector<std::string> translate(const std::string& program) {
         }
         std::string text;
         if (translation.direct) text = "(deferred)";
-        for (const ConversationalBlock& block : translation.blocks) {
+        for (const ConversationalBlock& block : translation.blocks()) {
             if (!text.empty()) text += " | ";
             std::string joined;
             const auto& starts = block.lineStarts();
@@ -144,8 +144,8 @@ TEST(IsoTranslator, CyclesKeepTheirConversationalParameters) {
     IsoTranslator translator;
     Translation translation;
     ASSERT_TRUE(translator.translate(line, translation));
-    ASSERT_EQ(translation.blocks.size(), 1u);
-    EXPECT_EQ(translation.blocks[0].lineStarts().size(), 3u);
+    ASSERT_EQ(translation.blocks().size(), 1u);
+    EXPECT_EQ(translation.blocks()[0].lineStarts().size(), 3u);
 }
 
 TEST(IsoTranslator, OldCyclesAreOneBlock) {
