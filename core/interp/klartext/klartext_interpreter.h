@@ -146,8 +146,9 @@ private:
     void gotoLabel(const LabelTarget& target);
     void callProgram(const CallPgm& call);
     // The file a `CALL PGM name` from `callerFolder` opens, or why it cannot be called.
-    Expected<std::filesystem::path> calledProgramPath(
-        const std::string& name, const std::filesystem::path& callerFolder, bool isoCaller) const;
+    Expected<std::filesystem::path> calledProgramPath(const std::string& name,
+                                                      const std::filesystem::path& callerFolder,
+                                                      bool isoCaller) const;
     // Loads and checks every program `program` calls by name, and theirs, once each: a missing
     // or faulty called program fails the check of the main program, before anything runs.
     void checkCalledPrograms(const ProgramFile& program, DiagnosticList& out);
@@ -275,7 +276,7 @@ private:
     BlockParser m_parser;
     std::unique_ptr<BlockSyntax> m_isoParser;  // made when the first ISO program runs
     BlockSyntax* m_activeParser = &m_parser;   // the syntax of the program running
-    interp::ValueGuard m_out;  // every command leaves through it
+    interp::ValueGuard m_out;                  // every command leaves through it
     interp::PathBuilder m_path;
     QParameters m_q;
 

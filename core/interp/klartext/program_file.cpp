@@ -164,13 +164,14 @@ void checkProgram(ProgramFile& program) {
                 targets.push_back({jump->target, line.firstLine, 1});
             } else if (const auto* deferred = std::get_if<Deferred>(&s)) {
                 diag(Severity::Error, "not-supported", line.firstLine, 1,
-                     KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
+                     KERF_TR_NOOP(
+                         "{1} is not supported yet; the program cannot run past this block"),
                      {deferred->feature});
             } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
                 if (cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
                     diag(Severity::Error, "not-supported", line.firstLine, 1,
-                         KERF_TR_NOOP(
-                             "cycle {1} is not supported yet; the program cannot run past this block"),
+                         KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past "
+                                      "this block"),
                          {std::to_string(cycle->number)});
                 }
                 checkCycleParameters(*cycle, line, file, out);

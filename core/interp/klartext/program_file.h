@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/base/diagnostic.h"
-#include "core/interp/klartext/block_syntax.h"
 #include "core/geometry/axes.h"
+#include "core/interp/klartext/block_syntax.h"
 #include "core/program/source_text.h"
 
 namespace kerf::klartext {

@@ -67,13 +67,14 @@ size_t skipBlanks(std::string_view text, size_t at) {
 }
 
 bool isMotion(int g) {
-    return g == 0 || g == 1 || g == 2 || g == 3 || g == 5 || g == 6 || (g >= 10 && g <= 16 && g != 14);
+    return g == 0 || g == 1 || g == 2 || g == 3 || g == 5 || g == 6 ||
+           (g >= 10 && g <= 16 && g != 14);
 }
 
 // Parameter cycles: 2xx, SL 12x/139 (cycles 20-29, 39), probing 4xx and 14xx.
 bool isParameterCycle(int g) {
-    return (g >= 120 && g <= 129) || g == 139 || (g >= 200 && g <= 299) ||
-           (g >= 400 && g <= 499) || (g >= 1400 && g <= 1499);
+    return (g >= 120 && g <= 129) || g == 139 || (g >= 200 && g <= 299) || (g >= 400 && g <= 499) ||
+           (g >= 1400 && g <= 1499);
 }
 
 // The end of a block's text before its ';' comment (quotes respected) and the block end '*'.
@@ -250,13 +251,13 @@ bool IsoTranslator::translateDFunction(Context& c, size_t at) {
     } else {
         b.add("ERROR =", at, 0);
     }
-    static const char* const kOperators[] = {"", "+", "-", "*", "DIV", "SQRT", "SIN", "COS",
-                                             "LEN", "EQU", "NE", "GT", "LT", "ANG"};
+    static const char* const kOperators[] = {"",    "+",   "-",   "*",  "DIV", "SQRT", "SIN",
+                                             "COS", "LEN", "EQU", "NE", "GT",  "LT",   "ANG"};
     const int operands = fn == 0 || (fn >= 5 && fn <= 7) || fn == 14 ? 1 : 2;
     for (int p = 1; p <= operands + (jump ? 1 : 0); ++p) {
         i = skipBlanks(text, i);
-        const bool named = i + 2 < text.size() && upper(text[i]) == 'P' &&
-                           text[i + 1] == '0' && text[i + 2] == static_cast<char>('0' + p);
+        const bool named = i + 2 < text.size() && upper(text[i]) == 'P' && text[i + 1] == '0' &&
+                           text[i + 2] == static_cast<char>('0' + p);
         if (!named) {
             return fail(i, KERF_TR_NOOP("P0{1} expected"), {std::to_string(p)});
         }
@@ -331,12 +332,11 @@ bool IsoTranslator::translateWords(Context& c) {
         b.add(*comp == 40 ? "R0" : (*comp == 41 ? "RL" : "RR"), g->offset, c.end(*g) - g->offset);
     };
     auto axisOf = [](int g) { return g == 18 ? "Y" : (g == 19 ? "X" : "Z"); };
-    const bool axesPresent = std::any_of(c.words.words.begin(), c.words.words.end(),
-                                         [](const IsoWord& w) {
-                                             return w.key.size() == 1 &&
-                                                    std::string_view("XYZABCUVW").find(w.key[0]) !=
-                                                        std::string_view::npos;
-                                         });
+    const bool axesPresent =
+        std::any_of(c.words.words.begin(), c.words.words.end(), [](const IsoWord& w) {
+            return w.key.size() == 1 &&
+                   std::string_view("XYZABCUVW").find(w.key[0]) != std::string_view::npos;
+        });
     auto addAxes = [&](ConversationalBlock& b, bool incremental) {
         for (size_t w = 0; w < c.words.words.size(); ++w) {
             const IsoWord& word = c.words.words[w];
@@ -372,7 +372,8 @@ bool IsoTranslator::translateWords(Context& c) {
                     b.add("\"" + std::string(name->value) + "\"", name->offset,
                           name->value.size() + 2);
                 } else if (const IsoWord* l = c.take("L")) {
-                    if (l->repeat) return fail(l->offset, KERF_TR_NOOP("a label has no repeat count"));
+                    if (l->repeat)
+                        return fail(l->offset, KERF_TR_NOOP("a label has no repeat count"));
                     b.add(l->value, l->valueOffset, l->value.size());
                 } else {
                     return fail(c.end(g), KERF_TR_NOOP("label number expected (G98 L1)"));
@@ -562,7 +563,8 @@ bool IsoTranslator::translateMotion(Context& c, int motion) {
     }
     if (r != nullptr) c.addWord(b, *r, polar ? "PR" : "R", polar && m_incremental);
     if (h != nullptr) {
-        if (h->value.empty()) return fail(h->valueOffset, KERF_TR_NOOP("value expected after '{1}'"), {"H"});
+        if (h->value.empty())
+            return fail(h->valueOffset, KERF_TR_NOOP("value expected after '{1}'"), {"H"});
         c.addWord(b, *h, "PA", m_incremental);
     }
     if (motion == 2 || motion == 12) b.add("DR-", at, length);

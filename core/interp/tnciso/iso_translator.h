@@ -72,16 +72,17 @@ private:
     bool translateProgramWord(Context& c, size_t at);
     bool translateDFunction(Context& c, size_t at);
     bool translateMotion(Context& c, int motion);
-    bool translateCycle(Context& c, const IsoWord& g);             // iso_translator_cycles.cpp
-    bool translateOldCycle(Context& c, const IsoWord& g, bool& handled);  // iso_translator_cycles.cpp
+    bool translateCycle(Context& c, const IsoWord& g);  // iso_translator_cycles.cpp
+    bool translateOldCycle(Context& c, const IsoWord& g,
+                           bool& handled);  // iso_translator_cycles.cpp
     bool fail(size_t offset, const char* messageTemplate, std::vector<std::string> args = {});
 
     klartext::ParseProblem m_problem;
     IsoWords m_words;
-    std::vector<bool> m_used;  // per word of m_words: taken by the translation
+    std::vector<bool> m_used;         // per word of m_words: taken by the translation
     std::vector<std::string> m_open;  // names of the programs whose header "%NAME G71" was read
-    int m_motion = -1;          // modal path function: 0, 1, 2, 3, 5, 6, 10 ... 16
-    bool m_incremental = false; // G91
+    int m_motion = -1;                // modal path function: 0, 1, 2, 3, 5, 6, 10 ... 16
+    bool m_incremental = false;       // G91
 };
 
 }  // namespace kerf::tnciso

@@ -51,8 +51,8 @@ bool IsoTranslator::translateCycle(Context& c, const IsoWord& g) {
     bool parameterSeen = false;
     for (size_t s = 0; s < c.line.segments.size(); ++s) {
         const size_t segStart = s == 0 ? g.valueOffset : c.line.segments[s].joinedOffset;
-        const size_t segEnd = s + 1 < c.line.segments.size() ? c.line.segments[s + 1].joinedOffset
-                                                             : text.size();
+        const size_t segEnd =
+            s + 1 < c.line.segments.size() ? c.line.segments[s + 1].joinedOffset : text.size();
         size_t comment = text.find(';', segStart);
         if (comment == std::string_view::npos || comment > segEnd) comment = segEnd;
         std::vector<size_t> starts;
@@ -171,8 +171,9 @@ bool IsoTranslator::translateOldCycle(Context& c, const IsoWord& g, bool& handle
             }
             if (const IsoWord* name = c.take("\"")) list += std::string(name->value) + "/";
             if (list.empty()) {
-                return fail(at, g.number == 39 ? KERF_TR_NOOP("program name expected (P01 \"NAME\")")
-                                               : KERF_TR_NOOP("contour labels expected (P01 1)"));
+                return fail(at, g.number == 39
+                                    ? KERF_TR_NOOP("program name expected (P01 \"NAME\")")
+                                    : KERF_TR_NOOP("contour labels expected (P01 1)"));
             }
             list.pop_back();
             b.add(g.number == 39 ? "PGM " + list : "CONTOUR LABEL " + list, at, 0);

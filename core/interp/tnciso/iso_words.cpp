@@ -86,8 +86,7 @@ size_t valueEnd(std::string_view text, size_t at) {
     return end == i ? std::string_view::npos : end;
 }
 
-bool scanWords(std::string_view text, size_t from, IsoWords& out,
-               klartext::ParseProblem& problem) {
+bool scanWords(std::string_view text, size_t from, IsoWords& out, klartext::ParseProblem& problem) {
     out.words.clear();
     out.parametersAt = std::string_view::npos;
     out.letters = 0;

@@ -12,11 +12,11 @@ namespace kerf::tnciso {
 // One address word of a DIN/ISO block as written: "G01", "X+10", "R(Q1*2)", "P01 +5", "L1,2",
 // "DR-0.1", "FMAX". Values are kept as text; the conversational parser evaluates them.
 struct IsoWord {
-    std::string_view key;    // upper-case letters: "G", "X", "DR2", "P", "FMAX", "PAT", "\""
-    int number = -1;         // G, M, P and D: the number after the letter
-    std::string_view value;  // the value as written ("+10", "Q5", "(Q1+2)"; a name for '"')
-    size_t offset = 0;       // where the word starts in the block text
-    size_t valueOffset = 0;  // where its value starts
+    std::string_view key;       // upper-case letters: "G", "X", "DR2", "P", "FMAX", "PAT", "\""
+    int number = -1;            // G, M, P and D: the number after the letter
+    std::string_view value;     // the value as written ("+10", "Q5", "(Q1+2)"; a name for '"')
+    size_t offset = 0;          // where the word starts in the block text
+    size_t valueOffset = 0;     // where its value starts
     std::optional<int> repeat;  // "L1,2": 2
 };
 

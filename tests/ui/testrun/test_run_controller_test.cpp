@@ -182,9 +182,10 @@ TEST(TestRun, AProgramWithAnErrorStopsWithADiagnosticAtItsLine) {
 TEST(TestRun, ADinIsoProgramRunsOnTheSameEngine) {
     Fixture f;
     f.controller.setSpeed(TestRunSpeed::Max);
-    f.start("%PARTS G71 *\nN10 G00 G40 G90 X+10 Y+0 Z+5 *\nN20 G01 Z-1 F100 *\n"
-            "N30 X+40 *\nN99999999 %PARTS G71 *\n",
-            program::Dialect::TncIso, "PARTS.I");
+    f.start(
+        "%PARTS G71 *\nN10 G00 G40 G90 X+10 Y+0 Z+5 *\nN20 G01 Z-1 F100 *\n"
+        "N30 X+40 *\nN99999999 %PARTS G71 *\n",
+        program::Dialect::TncIso, "PARTS.I");
     EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
     // 6 mm down and 30 mm along X at 100 mm/min.
     EXPECT_GT(f.controller.machiningTimeS(), 36.0 * 60.0 / 100.0);

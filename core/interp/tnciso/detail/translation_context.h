@@ -29,8 +29,7 @@ struct IsoTranslator::Context {
     }
     bool has(std::string_view key) const { return words.find(key) != nullptr; }
     size_t end(const IsoWord& w) const {
-        return w.value.empty() ? w.offset + w.key.size()
-                               : w.valueOffset + w.value.size();
+        return w.value.empty() ? w.offset + w.key.size() : w.valueOffset + w.value.size();
     }
     // "X+10" as written, with an "I" before it for incremental dimensions.
     void addWord(ConversationalBlock& b, const IsoWord& w, std::string_view key,
@@ -55,6 +54,5 @@ struct IsoTranslator::Context {
         }
     }
 };
-
 
 }  // namespace kerf::tnciso

@@ -1,10 +1,10 @@
 // The conversational blocks each DIN/ISO block means, written from the TNC's ISO manual.
+#include "core/interp/tnciso/iso_translator.h"
+
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-
-#include "core/interp/tnciso/iso_translator.h"
 
 namespace kerf::tnciso {
 namespace {
@@ -106,11 +106,11 @@ TEST(IsoTranslator, ParameterFunctionsAndFormulas) {
                         "D14 P01 1002 *\n"
                         "D18: SYSREAD Q1 = ID20 NR1 *\n"
                         "Q7 = (Q1 + 2) * 3 *\n"),
-              (std::vector<std::string>{
-                  "FN 0: Q1 = +5", "FN 1: Q1 = +Q2 + +5", "FN 4: QL3 = +Q1 DIV -2",
-                  "FN 5: Q4 = SQRT +16", "FN 13: Q5 = +1 ANG +1",
-                  "FN 9: IF +Q1 EQU +10 GOTO LBL 5", "FN 12: IF +Q1 LT +Q2 GOTO LBL 7",
-                  "FN 14: ERROR = 1002", "FN 18: SYSREAD Q1 = ID20 NR1", "Q7 = (Q1 + 2) * 3"}));
+              (std::vector<std::string>{"FN 0: Q1 = +5", "FN 1: Q1 = +Q2 + +5",
+                                        "FN 4: QL3 = +Q1 DIV -2", "FN 5: Q4 = SQRT +16",
+                                        "FN 13: Q5 = +1 ANG +1", "FN 9: IF +Q1 EQU +10 GOTO LBL 5",
+                                        "FN 12: IF +Q1 LT +Q2 GOTO LBL 7", "FN 14: ERROR = 1002",
+                                        "FN 18: SYSREAD Q1 = ID20 NR1", "Q7 = (Q1 + 2) * 3"}));
 }
 
 TEST(IsoTranslator, ProgramHeaderEndAndCalls) {
@@ -158,16 +158,15 @@ TEST(IsoTranslator, OldCyclesAreOneBlock) {
                         "G36 S90 *\n"
                         "G62 T0.05 *\n"
                         "G39 P01 \"SUB.H\" *\n"),
-              (std::vector<std::string>{
-                  "CYCL DEF 7.0 DATUM SHIFT | CYCL DEF 7.1 X+10 Y+5",
-                  "CYCL DEF 7.0 DATUM SHIFT | CYCL DEF 7.1 #5",
-                  "CYCL DEF 8.0 MIRROR IMAGE | CYCL DEF 8.1 X Y",
-                  "CYCL DEF 10.0 ROTATION | CYCL DEF 10.1 IROT+45",
-                  "CYCL DEF 11.0 SCALING | CYCL DEF 11.1 SCL 0.8",
-                  "CYCL DEF 9.0 DWELL TIME | CYCL DEF 9.1 DWELL 1.5",
-                  "CYCL DEF 13.0 ORIENTATION | CYCL DEF 13.1 ANGLE 90",
-                  "CYCL DEF 32.0 TOLERANCE | CYCL DEF 32.1 T0.05",
-                  "CYCL DEF 12.0 PGM CALL | CYCL DEF 12.1 PGM SUB.H"}));
+              (std::vector<std::string>{"CYCL DEF 7.0 DATUM SHIFT | CYCL DEF 7.1 X+10 Y+5",
+                                        "CYCL DEF 7.0 DATUM SHIFT | CYCL DEF 7.1 #5",
+                                        "CYCL DEF 8.0 MIRROR IMAGE | CYCL DEF 8.1 X Y",
+                                        "CYCL DEF 10.0 ROTATION | CYCL DEF 10.1 IROT+45",
+                                        "CYCL DEF 11.0 SCALING | CYCL DEF 11.1 SCL 0.8",
+                                        "CYCL DEF 9.0 DWELL TIME | CYCL DEF 9.1 DWELL 1.5",
+                                        "CYCL DEF 13.0 ORIENTATION | CYCL DEF 13.1 ANGLE 90",
+                                        "CYCL DEF 32.0 TOLERANCE | CYCL DEF 32.1 T0.05",
+                                        "CYCL DEF 12.0 PGM CALL | CYCL DEF 12.1 PGM SUB.H"}));
 }
 
 TEST(IsoTranslator, ErrorsPointAtTheWord) {
@@ -182,7 +181,8 @@ TEST(IsoTranslator, ErrorsPointAtTheWord) {
                         "N90 G07 X+1 *\n"),
               (std::vector<std::string>{
                   "error at 5: no path function (G00, G01, G02 ...) is active",
-                  "error at 13: unknown G function G{1}", "error at 13: '{1}' is not allowed in this block",
+                  "error at 13: unknown G function G{1}",
+                  "error at 13: '{1}' is not allowed in this block",
                   "error at 13: a feed rate F is not allowed with rapid G{1}",
                   "error at 10: value expected after '{1}'",
                   "error at 5: G17/G18/G19 belong to a tool call (T) or a blank (G30)",
