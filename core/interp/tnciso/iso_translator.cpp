@@ -319,7 +319,7 @@ bool IsoTranslator::translateWords(Context& c) {
     }
     if (others.size() > 1) {
         return fail(others[1]->offset, KERF_TR_NOOP("G{1} and G{2} cannot share a block"),
-                    {std::to_string(others[0]->number), std::to_string(others[1]->number)});
+                    {gNumber(others[0]->number), gNumber(others[1]->number)});
     }
     auto markG = [&](int g) {
         for (size_t w = 0; w < c.words.words.size(); ++w) {
@@ -423,7 +423,7 @@ bool IsoTranslator::translateWords(Context& c) {
                 const IsoWord* r = c.take("R");
                 if (r == nullptr || r->value.empty()) {
                     return fail(c.end(g), KERF_TR_NOOP("R expected after G{1}"),
-                                {std::to_string(g.number)});
+                                {gNumber(g.number)});
                 }
                 ConversationalBlock& b = c.newBlock();
                 if (g.number == 24) {
@@ -442,7 +442,7 @@ bool IsoTranslator::translateWords(Context& c) {
             }
             default:
                 return fail(g.offset, KERF_TR_NOOP("unknown G function G{1}"),
-                            {std::to_string(g.number)});
+                            {gNumber(g.number)});
         }
     }
 

@@ -114,7 +114,7 @@ bool IsoTranslator::translateOldCycle(Context& c, const IsoWord& g, bool& handle
         const IsoWord* w = c.take(key);
         if (w == nullptr || w->value.empty()) {
             return fail(w ? w->valueOffset : c.end(g), KERF_TR_NOOP("{1} expected after G{2}"),
-                        {key, std::to_string(g.number)});
+                        {key, gNumber(g.number)});
         }
         c.addWord(b, *w, word, incremental);
         return true;

@@ -42,6 +42,10 @@ bool parameterStarts(std::string_view text, size_t at) {
 
 }  // namespace
 
+std::string gNumber(int number) {
+    return (number < 10 ? "0" : "") + std::to_string(number);
+}
+
 const IsoWord* IsoWords::find(std::string_view key) const {
     if (key[0] >= 'A' && key[0] <= 'Z' && !hasLetter(key[0])) return nullptr;
     for (const IsoWord& w : words) {

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct IsoWords {
     const IsoWord* find(std::string_view key) const;
     const IsoWord* findG(int number) const;
 };
+
+// "G04" for 4, "G200" for 200: a G number as the manual writes it, without the G.
+std::string gNumber(int number);
 
 // Splits `text` from `from` up to the block end '*' or a ';' comment. False (with `problem`) on
 // a word that cannot be read.
