@@ -270,6 +270,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         m_currentM = MWords{};
         if (m_block.hidden && m_settings.blockSkip) continue;
         execute(m_block.statement);
+        // The rest of a DIN/ISO block runs unless the first part stopped, jumped or called.
         for (size_t i = 0; i < m_block.more.size() && m_status == interp::RunStatus::BudgetUsed &&
                            m_reader->offset() == m_line.nextOffset;
              ++i) {
