@@ -441,8 +441,7 @@ bool IsoTranslator::translateWords(Context& c) {
                 return true;
             }
             default:
-                return fail(g.offset, KERF_TR_NOOP("unknown G function G{1}"),
-                            {gNumber(g.number)});
+                return fail(g.offset, KERF_TR_NOOP("unknown G function G{1}"), {gNumber(g.number)});
         }
     }
 
