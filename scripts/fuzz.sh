@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds a libFuzzer target with clang 14 and fuzzes it on one core.
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET]   (default 600 s, klartext; TARGET: klartext, fagor)
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET]   (default 600 s, klartext; TARGET: klartext, fagor, tnciso)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-600}

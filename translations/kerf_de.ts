@@ -5289,10 +5289,6 @@ editieren</translation>
         <translation>Den Cursor auf einen CYCL DEF-Satz setzen, um ihn zu editieren.</translation>
     </message>
     <message>
-        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
-        <translation>TNC-ISO-Programme (.I) werden nicht geprüft: Kerf interpretiert diesen Dialekt noch nicht</translation>
-    </message>
-    <message>
         <source>the file is outside the NC root</source>
         <translation>die Datei liegt außerhalb des NC-Stammverzeichnisses</translation>
     </message>
@@ -5335,10 +5331,6 @@ editieren</translation>
     <message>
         <source>cannot change the protection: {1}</source>
         <translation>Schutz kann nicht geändert werden: {1}</translation>
-    </message>
-    <message>
-        <source>the TNC ISO dialect is not supported yet</source>
-        <translation>der TNC-ISO-Dialekt wird noch nicht unterstützt</translation>
     </message>
     <message>
         <source>{1} needs a number, not &quot;{2}&quot;</source>
@@ -5831,6 +5823,106 @@ editieren</translation>
     <message>
         <source>the G00 block starts the raw-stock profile: it needs its point</source>
         <translation>der G00-Satz beginnt das Rohteilprofil: er braucht seinen Punkt</translation>
+    </message>
+    <message>
+        <source>cycle parameters belong to a cycle block (G2xx, G4xx ...)</source>
+        <translation>Zyklusparameter gehören in einen Zyklus-Satz (G2xx, G4xx ...)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not allowed in this block</source>
+        <translation>&apos;{1}&apos; ist in diesem Satz nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>program name expected after &apos;%&apos;</source>
+        <translation>Programmname nach &apos;%&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>P0{1} expected</source>
+        <translation>P0{1} erwartet</translation>
+    </message>
+    <message>
+        <source>label number expected</source>
+        <translation>Label-Nummer erwartet</translation>
+    </message>
+    <message>
+        <source>two path functions in one block</source>
+        <translation>zwei Bahnfunktionen in einem Satz</translation>
+    </message>
+    <message>
+        <source>G70/G71 belong to the program header &apos;%NAME&apos;</source>
+        <translation>G70/G71 gehören in den Programmkopf &apos;%NAME&apos;</translation>
+    </message>
+    <message>
+        <source>G{1} and G{2} cannot share a block</source>
+        <translation>G{1} und G{2} können nicht im selben Satz stehen</translation>
+    </message>
+    <message>
+        <source>value expected after &apos;{1}&apos;</source>
+        <translation>Wert nach &apos;{1}&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>a label has no repeat count</source>
+        <translation>ein Label hat keine Wiederholungszahl</translation>
+    </message>
+    <message>
+        <source>label number expected (G98 L1)</source>
+        <translation>Label-Nummer erwartet (G98 L1)</translation>
+    </message>
+    <message>
+        <source>tool number expected (T)</source>
+        <translation>Werkzeugnummer erwartet (T)</translation>
+    </message>
+    <message>
+        <source>the plane belongs to G30</source>
+        <translation>die Ebene gehört zu G30</translation>
+    </message>
+    <message>
+        <source>R expected after G{1}</source>
+        <translation>R nach G{1} erwartet</translation>
+    </message>
+    <message>
+        <source>unknown G function G{1}</source>
+        <translation>unbekannte G-Funktion G{1}</translation>
+    </message>
+    <message>
+        <source>G17/G18/G19 belong to a tool call (T) or a blank (G30)</source>
+        <translation>G17/G18/G19 gehören zu einem Werkzeug-Aufruf (T) oder einem Rohteil (G30)</translation>
+    </message>
+    <message>
+        <source>no path function (G00, G01, G02 ...) is active</source>
+        <translation>keine Bahnfunktion (G00, G01, G02 ...) aktiv</translation>
+    </message>
+    <message>
+        <source>a feed rate F is not allowed with rapid G{1}</source>
+        <translation>ein Vorschub F ist im Eilgang G{1} nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>{1} expected after G{2}</source>
+        <translation>{1} nach G{2} erwartet</translation>
+    </message>
+    <message>
+        <source>program name expected (P01 &quot;NAME&quot;)</source>
+        <translation>Programmname erwartet (P01 &quot;NAME&quot;)</translation>
+    </message>
+    <message>
+        <source>contour labels expected (P01 1)</source>
+        <translation>Kontur-Labels erwartet (P01 1)</translation>
+    </message>
+    <message>
+        <source>text after the block end &apos;*&apos;</source>
+        <translation>Text nach dem Satzende &apos;*&apos;</translation>
+    </message>
+    <message>
+        <source>closing &apos;&quot;&apos; missing</source>
+        <translation>schließendes &apos;&quot;&apos; fehlt</translation>
+    </message>
+    <message>
+        <source>number expected after &apos;{1}&apos;</source>
+        <translation>Zahl nach &apos;{1}&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>repeat count expected after &apos;,&apos;</source>
+        <translation>Wiederholungszahl nach &apos;,&apos; erwartet</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -5289,10 +5289,6 @@ ciclo</translation>
         <translation>Sitúe el cursor en un bloque CYCL DEF para editarlo.</translation>
     </message>
     <message>
-        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
-        <translation>Los programas TNC ISO (.I) no se comprueban: Kerf todavía no interpreta este dialecto</translation>
-    </message>
-    <message>
         <source>the file is outside the NC root</source>
         <translation>el archivo está fuera de la raíz NC</translation>
     </message>
@@ -5335,10 +5331,6 @@ ciclo</translation>
     <message>
         <source>cannot change the protection: {1}</source>
         <translation>no se puede cambiar la protección: {1}</translation>
-    </message>
-    <message>
-        <source>the TNC ISO dialect is not supported yet</source>
-        <translation>el dialecto TNC ISO todavía no está soportado</translation>
     </message>
     <message>
         <source>{1} needs a number, not &quot;{2}&quot;</source>
@@ -5831,6 +5823,106 @@ ciclo</translation>
     <message>
         <source>the G00 block starts the raw-stock profile: it needs its point</source>
         <translation>el bloque G00 inicia el perfil del material en bruto: necesita su punto</translation>
+    </message>
+    <message>
+        <source>cycle parameters belong to a cycle block (G2xx, G4xx ...)</source>
+        <translation>los parámetros de ciclo pertenecen a una frase de ciclo (G2xx, G4xx ...)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not allowed in this block</source>
+        <translation>&apos;{1}&apos; no está permitido en esta frase</translation>
+    </message>
+    <message>
+        <source>program name expected after &apos;%&apos;</source>
+        <translation>se esperaba un nombre de programa tras &apos;%&apos;</translation>
+    </message>
+    <message>
+        <source>P0{1} expected</source>
+        <translation>se esperaba P0{1}</translation>
+    </message>
+    <message>
+        <source>label number expected</source>
+        <translation>se esperaba un número de label</translation>
+    </message>
+    <message>
+        <source>two path functions in one block</source>
+        <translation>dos funciones de trayectoria en una frase</translation>
+    </message>
+    <message>
+        <source>G70/G71 belong to the program header &apos;%NAME&apos;</source>
+        <translation>G70/G71 pertenecen a la cabecera del programa &apos;%NAME&apos;</translation>
+    </message>
+    <message>
+        <source>G{1} and G{2} cannot share a block</source>
+        <translation>G{1} y G{2} no pueden compartir una frase</translation>
+    </message>
+    <message>
+        <source>value expected after &apos;{1}&apos;</source>
+        <translation>se esperaba un valor tras &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a label has no repeat count</source>
+        <translation>un label no tiene número de repeticiones</translation>
+    </message>
+    <message>
+        <source>label number expected (G98 L1)</source>
+        <translation>se esperaba un número de label (G98 L1)</translation>
+    </message>
+    <message>
+        <source>tool number expected (T)</source>
+        <translation>se esperaba un número de herramienta (T)</translation>
+    </message>
+    <message>
+        <source>the plane belongs to G30</source>
+        <translation>el plano pertenece a G30</translation>
+    </message>
+    <message>
+        <source>R expected after G{1}</source>
+        <translation>se esperaba R tras G{1}</translation>
+    </message>
+    <message>
+        <source>unknown G function G{1}</source>
+        <translation>función G desconocida G{1}</translation>
+    </message>
+    <message>
+        <source>G17/G18/G19 belong to a tool call (T) or a blank (G30)</source>
+        <translation>G17/G18/G19 pertenecen a una llamada de herramienta (T) o a una pieza en bruto (G30)</translation>
+    </message>
+    <message>
+        <source>no path function (G00, G01, G02 ...) is active</source>
+        <translation>no hay ninguna función de trayectoria (G00, G01, G02 ...) activa</translation>
+    </message>
+    <message>
+        <source>a feed rate F is not allowed with rapid G{1}</source>
+        <translation>no se permite un avance F con el rápido G{1}</translation>
+    </message>
+    <message>
+        <source>{1} expected after G{2}</source>
+        <translation>se esperaba {1} tras G{2}</translation>
+    </message>
+    <message>
+        <source>program name expected (P01 &quot;NAME&quot;)</source>
+        <translation>se esperaba un nombre de programa (P01 &quot;NAME&quot;)</translation>
+    </message>
+    <message>
+        <source>contour labels expected (P01 1)</source>
+        <translation>se esperaban labels de contorno (P01 1)</translation>
+    </message>
+    <message>
+        <source>text after the block end &apos;*&apos;</source>
+        <translation>texto tras el fin de frase &apos;*&apos;</translation>
+    </message>
+    <message>
+        <source>closing &apos;&quot;&apos; missing</source>
+        <translation>falta el &apos;&quot;&apos; de cierre</translation>
+    </message>
+    <message>
+        <source>number expected after &apos;{1}&apos;</source>
+        <translation>se esperaba un número tras &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>repeat count expected after &apos;,&apos;</source>
+        <translation>se esperaba el número de repeticiones tras &apos;,&apos;</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -5292,10 +5292,6 @@ cykl</translation>
         <translation>Ustaw kursor na bloku CYCL DEF, aby go edytować.</translation>
     </message>
     <message>
-        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
-        <translation>Programy TNC ISO (.I) nie są sprawdzane: Kerf nie interpretuje jeszcze tego dialektu</translation>
-    </message>
-    <message>
         <source>the file is outside the NC root</source>
         <translation>plik leży poza katalogiem głównym NC</translation>
     </message>
@@ -5338,10 +5334,6 @@ cykl</translation>
     <message>
         <source>cannot change the protection: {1}</source>
         <translation>nie można zmienić ochrony: {1}</translation>
-    </message>
-    <message>
-        <source>the TNC ISO dialect is not supported yet</source>
-        <translation>dialekt TNC ISO nie jest jeszcze obsługiwany</translation>
     </message>
     <message>
         <source>{1} needs a number, not &quot;{2}&quot;</source>
@@ -5834,6 +5826,106 @@ cykl</translation>
     <message>
         <source>the G00 block starts the raw-stock profile: it needs its point</source>
         <translation>blok G00 rozpoczyna profil półfabrykatu: potrzebuje swojego punktu</translation>
+    </message>
+    <message>
+        <source>cycle parameters belong to a cycle block (G2xx, G4xx ...)</source>
+        <translation>parametry cyklu należą do bloku cyklu (G2xx, G4xx ...)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not allowed in this block</source>
+        <translation>&apos;{1}&apos; nie jest dozwolone w tym bloku</translation>
+    </message>
+    <message>
+        <source>program name expected after &apos;%&apos;</source>
+        <translation>oczekiwano nazwy programu po &apos;%&apos;</translation>
+    </message>
+    <message>
+        <source>P0{1} expected</source>
+        <translation>oczekiwano P0{1}</translation>
+    </message>
+    <message>
+        <source>label number expected</source>
+        <translation>oczekiwano numeru etykiety</translation>
+    </message>
+    <message>
+        <source>two path functions in one block</source>
+        <translation>dwie funkcje toru w jednym bloku</translation>
+    </message>
+    <message>
+        <source>G70/G71 belong to the program header &apos;%NAME&apos;</source>
+        <translation>G70/G71 należą do nagłówka programu &apos;%NAME&apos;</translation>
+    </message>
+    <message>
+        <source>G{1} and G{2} cannot share a block</source>
+        <translation>G{1} i G{2} nie mogą być w jednym bloku</translation>
+    </message>
+    <message>
+        <source>value expected after &apos;{1}&apos;</source>
+        <translation>oczekiwano wartości po &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a label has no repeat count</source>
+        <translation>etykieta nie ma liczby powtórzeń</translation>
+    </message>
+    <message>
+        <source>label number expected (G98 L1)</source>
+        <translation>oczekiwano numeru etykiety (G98 L1)</translation>
+    </message>
+    <message>
+        <source>tool number expected (T)</source>
+        <translation>oczekiwano numeru narzędzia (T)</translation>
+    </message>
+    <message>
+        <source>the plane belongs to G30</source>
+        <translation>płaszczyzna należy do G30</translation>
+    </message>
+    <message>
+        <source>R expected after G{1}</source>
+        <translation>oczekiwano R po G{1}</translation>
+    </message>
+    <message>
+        <source>unknown G function G{1}</source>
+        <translation>nieznana funkcja G G{1}</translation>
+    </message>
+    <message>
+        <source>G17/G18/G19 belong to a tool call (T) or a blank (G30)</source>
+        <translation>G17/G18/G19 należą do wywołania narzędzia (T) lub półfabrykatu (G30)</translation>
+    </message>
+    <message>
+        <source>no path function (G00, G01, G02 ...) is active</source>
+        <translation>żadna funkcja toru (G00, G01, G02 ...) nie jest aktywna</translation>
+    </message>
+    <message>
+        <source>a feed rate F is not allowed with rapid G{1}</source>
+        <translation>posuw F nie jest dozwolony przy szybkim przesuwie G{1}</translation>
+    </message>
+    <message>
+        <source>{1} expected after G{2}</source>
+        <translation>oczekiwano {1} po G{2}</translation>
+    </message>
+    <message>
+        <source>program name expected (P01 &quot;NAME&quot;)</source>
+        <translation>oczekiwano nazwy programu (P01 &quot;NAME&quot;)</translation>
+    </message>
+    <message>
+        <source>contour labels expected (P01 1)</source>
+        <translation>oczekiwano etykiet konturu (P01 1)</translation>
+    </message>
+    <message>
+        <source>text after the block end &apos;*&apos;</source>
+        <translation>tekst po końcu bloku &apos;*&apos;</translation>
+    </message>
+    <message>
+        <source>closing &apos;&quot;&apos; missing</source>
+        <translation>brak zamykającego &apos;&quot;&apos;</translation>
+    </message>
+    <message>
+        <source>number expected after &apos;{1}&apos;</source>
+        <translation>oczekiwano liczby po &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>repeat count expected after &apos;,&apos;</source>
+        <translation>oczekiwano liczby powtórzeń po &apos;,&apos;</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

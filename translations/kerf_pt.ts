@@ -5289,10 +5289,6 @@ ciclo</translation>
         <translation>Coloque o cursor num bloco CYCL DEF para o editar.</translation>
     </message>
     <message>
-        <source>TNC ISO programs (.I) are not checked: Kerf does not interpret this dialect yet</source>
-        <translation>Os programas TNC ISO (.I) não são verificados: o Kerf ainda não interpreta este dialeto</translation>
-    </message>
-    <message>
         <source>the file is outside the NC root</source>
         <translation>o ficheiro está fora da raiz NC</translation>
     </message>
@@ -5335,10 +5331,6 @@ ciclo</translation>
     <message>
         <source>cannot change the protection: {1}</source>
         <translation>não é possível alterar a proteção: {1}</translation>
-    </message>
-    <message>
-        <source>the TNC ISO dialect is not supported yet</source>
-        <translation>o dialeto TNC ISO ainda não é suportado</translation>
     </message>
     <message>
         <source>{1} needs a number, not &quot;{2}&quot;</source>
@@ -5831,6 +5823,106 @@ ciclo</translation>
     <message>
         <source>the G00 block starts the raw-stock profile: it needs its point</source>
         <translation>o bloco G00 inicia o perfil do material bruto: precisa do seu ponto</translation>
+    </message>
+    <message>
+        <source>cycle parameters belong to a cycle block (G2xx, G4xx ...)</source>
+        <translation>os parâmetros de ciclo pertencem a um bloco de ciclo (G2xx, G4xx ...)</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is not allowed in this block</source>
+        <translation>&apos;{1}&apos; não é permitido neste bloco</translation>
+    </message>
+    <message>
+        <source>program name expected after &apos;%&apos;</source>
+        <translation>esperado nome de programa após &apos;%&apos;</translation>
+    </message>
+    <message>
+        <source>P0{1} expected</source>
+        <translation>esperado P0{1}</translation>
+    </message>
+    <message>
+        <source>label number expected</source>
+        <translation>esperado número de label</translation>
+    </message>
+    <message>
+        <source>two path functions in one block</source>
+        <translation>duas funções de trajetória num bloco</translation>
+    </message>
+    <message>
+        <source>G70/G71 belong to the program header &apos;%NAME&apos;</source>
+        <translation>G70/G71 pertencem ao cabeçalho do programa &apos;%NAME&apos;</translation>
+    </message>
+    <message>
+        <source>G{1} and G{2} cannot share a block</source>
+        <translation>G{1} e G{2} não podem partilhar um bloco</translation>
+    </message>
+    <message>
+        <source>value expected after &apos;{1}&apos;</source>
+        <translation>esperado valor após &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a label has no repeat count</source>
+        <translation>um label não tem número de repetições</translation>
+    </message>
+    <message>
+        <source>label number expected (G98 L1)</source>
+        <translation>esperado número de label (G98 L1)</translation>
+    </message>
+    <message>
+        <source>tool number expected (T)</source>
+        <translation>esperado número de ferramenta (T)</translation>
+    </message>
+    <message>
+        <source>the plane belongs to G30</source>
+        <translation>o plano pertence a G30</translation>
+    </message>
+    <message>
+        <source>R expected after G{1}</source>
+        <translation>esperado R após G{1}</translation>
+    </message>
+    <message>
+        <source>unknown G function G{1}</source>
+        <translation>função G desconhecida G{1}</translation>
+    </message>
+    <message>
+        <source>G17/G18/G19 belong to a tool call (T) or a blank (G30)</source>
+        <translation>G17/G18/G19 pertencem a uma chamada de ferramenta (T) ou a um bloco (G30)</translation>
+    </message>
+    <message>
+        <source>no path function (G00, G01, G02 ...) is active</source>
+        <translation>nenhuma função de trajetória (G00, G01, G02 ...) está ativa</translation>
+    </message>
+    <message>
+        <source>a feed rate F is not allowed with rapid G{1}</source>
+        <translation>não é permitido um avanço F com o rápido G{1}</translation>
+    </message>
+    <message>
+        <source>{1} expected after G{2}</source>
+        <translation>esperado {1} após G{2}</translation>
+    </message>
+    <message>
+        <source>program name expected (P01 &quot;NAME&quot;)</source>
+        <translation>esperado nome de programa (P01 &quot;NAME&quot;)</translation>
+    </message>
+    <message>
+        <source>contour labels expected (P01 1)</source>
+        <translation>esperados labels de contorno (P01 1)</translation>
+    </message>
+    <message>
+        <source>text after the block end &apos;*&apos;</source>
+        <translation>texto após o fim de bloco &apos;*&apos;</translation>
+    </message>
+    <message>
+        <source>closing &apos;&quot;&apos; missing</source>
+        <translation>falta o &apos;&quot;&apos; de fecho</translation>
+    </message>
+    <message>
+        <source>number expected after &apos;{1}&apos;</source>
+        <translation>esperado número após &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>repeat count expected after &apos;,&apos;</source>
+        <translation>esperado número de repetições após &apos;,&apos;</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

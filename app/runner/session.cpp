@@ -6,6 +6,7 @@
 #include "core/base/atomic_file.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/tnciso/tnciso.h"
 #include "core/machine/machine_loader.h"
 #include "core/program/nc_root.h"
 
@@ -113,13 +114,9 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         session->interpreter = std::move(interpreter);
         return session;
     }
-    if (session->dialect != program::Dialect::Klartext) {
-        session->diagnostics.push_back(
-            setupError(programPath.string(), KERF_TR_NOOP("the {1} dialect is not supported yet"),
-                       program::dialectName(session->dialect)));
-        return session;
-    }
+    // Conversational and DIN/ISO programs run on the same TNC engine (docs/tnciso.md).
     klartext::KlartextSettings settings;
+    tnciso::enableIso(settings, session->dialect == program::Dialect::TncIso);
     settings.machine = &session->machine;
     settings.tools = session->tools ? &*session->tools : nullptr;
     settings.ncRoot = ncRoot;

@@ -27,16 +27,26 @@ measure() {
 # Kerf is measured twice: trace to a file, and trace to standard output sent to /dev/null, which is
 # how rs274's canonical text is measured (FIGURES.md); the ratio uses the second.
 printf '%-22s %10s %14s %14s %10s %12s\n' program blocks "kerf blk/s" "kerf>null" "kerf RSS" "rs274 blk/s"
-for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q 1000000" "fagor 200000" "fagor 1000000"; do
+# ONLY="klartext tnciso" measures those dialects only (first word of each row).
+for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q 1000000" \
+  "tnciso 200000" "tnciso 1000000" "tnciso-q 200000" "tnciso-q 1000000" "fagor 200000" "fagor 1000000"; do
   read -r dialect blocks <<<"$spec"
+  [[ -n ${ONLY:-} && " $ONLY " != *" ${dialect%-q} "* ]] && continue
   ext=H; args=(); [[ $dialect == fagor ]] && { ext=pim; args=(--machine lathe --dialect fagor); }
-  python3 "$gen" "$blocks" --dialect "$dialect" -o "$work/p.$ext"
+  if [[ $dialect == tnciso* ]]; then
+    # The same path as the conversational program, written as DIN/ISO blocks.
+    ext=I
+    python3 "$gen" "$blocks" --dialect "${dialect/tnciso/klartext}" |
+      python3 "$root/scripts/bench/klartext_to_iso.py" >"$work/p.$ext"
+  else
+    python3 "$gen" "$blocks" --dialect "$dialect" -o "$work/p.$ext"
+  fi
   read -r kf kr < <(measure "$kerf" run "$work/p.$ext" "${args[@]}" --trace "$work/t.txt" --state-dir "$work")
   read -r kt _ < <(measure "$kerf" run "$work/p.$ext" "${args[@]}" --trace - --state-dir "$work")
   line=$(printf '%-22s %10s %14.0f %14.0f %9sK' "$dialect $blocks" "$blocks" "$(echo "$blocks / $kf" | bc -l)" \
     "$(echo "$blocks / $kt" | bc -l)" "$kr")
   if command -v rs274 >/dev/null && [[ $dialect != fagor ]]; then
-    if [[ $dialect == klartext ]]; then
+    if [[ $dialect == klartext || $dialect == tnciso ]]; then
       python3 "$gen" "$blocks" --dialect rs274 -o "$work/p.ngc"
     else
       python3 "$root/scripts/bench/rs274_loops.py" "$blocks" -o "$work/p.ngc"

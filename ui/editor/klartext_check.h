@@ -8,10 +8,10 @@
 
 namespace kerf::ui {
 
-// Checks a Klartext program text as `kerf check` would. Kept in a file without Qt headers:
-// Qt's `emit` macro collides with the interpreter's emit() member.
+// Checks a TNC program text (conversational, or DIN/ISO when `iso`) as `kerf check` would. Kept
+// in a file without Qt headers: Qt's `emit` macro collides with the interpreter's emit() member.
 DiagnosticList checkKlartextText(std::string text, const std::string& path,
                                  const machine::MachineConfig& machine,
-                                 const std::filesystem::path& ncRoot);
+                                 const std::filesystem::path& ncRoot, bool iso = false);
 
 }  // namespace kerf::ui

@@ -2,7 +2,6 @@
 
 #include <QMetaObject>
 
-#include "core/base/translate.h"
 #include "ui/editor/fagor_check.h"
 #include "ui/editor/klartext_check.h"
 
@@ -67,13 +66,9 @@ DiagnosticList ProgramChecker::checkText(const std::string& text, const Request&
         case program::Dialect::Fagor:
             return checkFagorText(text, request.path.string(), m_machine, m_ncRoot);
         case program::Dialect::TncIso:
-            break;
+            return checkKlartextText(text, request.path.string(), m_machine, m_ncRoot, true);
     }
-    // One note for the whole program, on no line (nothing to underline): the program may well be
-    // right, it is only not checked.
-    return {Diagnostic::make(Severity::Note, "check", request.path.string(), 0, 0,
-                             KERF_TR_NOOP("TNC ISO programs (.I) are not checked: Kerf does "
-                                          "not interpret this dialect yet"))};
+    return {};
 }
 
 }  // namespace kerf::ui

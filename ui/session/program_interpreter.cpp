@@ -6,6 +6,7 @@
 #include "core/base/translate.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/tnciso/tnciso.h"
 #include "core/program/nc_root.h"
 
 namespace kerf::ui {
@@ -46,12 +47,6 @@ LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSo
         if (ok) loaded.interpreter = std::move(fagor);
         return loaded;
     }
-    if (dialect != program::Dialect::Klartext) {
-        loaded.diagnostics.push_back(
-            Diagnostic::make(Severity::Error, "run.dialect", name, 0, 0,
-                             KERF_TR_NOOP("the TNC ISO dialect is not supported yet")));
-        return loaded;
-    }
     std::error_code error;
     const fs::path toolFile = source.ncRoot / "TOOL.T";
     if (fs::exists(fs::symlink_status(toolFile, error))) {
@@ -64,7 +59,9 @@ LoadedProgram loadProgram(const machine::MachineConfig& machine, const ProgramSo
         }
         loaded.tools = std::make_unique<tables::ToolTable>(std::move(*tools));
     }
+    // Conversational and DIN/ISO programs run on the same TNC engine (docs/tnciso.md).
     klartext::KlartextSettings settings;
+    tnciso::enableIso(settings, dialect == program::Dialect::TncIso);
     settings.machine = &machine;
     settings.tools = loaded.tools.get();
     settings.ncRoot = source.ncRoot;

@@ -1,20 +1,20 @@
 #pragma once
 
-#include "core/interp/klartext/formula.h"
-#include "core/interp/klartext/statements.h"
-#include "core/program/line_reader.h"
+#include "core/interp/klartext/block_syntax.h"
 
 namespace kerf::klartext {
 
 // Parses one logical line of a conversational program into a statement, evaluating the values it
 // contains through `environment` (nullptr: syntax check only, values read as 0).
-class BlockParser {
+class BlockParser final : public BlockSyntax {
 public:
     explicit BlockParser(FormulaEnvironment* environment) : m_env(environment) {}
 
     // False on a syntax error; problem() then says where (offset in line.text) and what.
-    bool parse(const program::LogicalLine& line, ParsedBlock& out);
-    const ParseProblem& problem() const { return m_problem; }
+    bool parse(const program::LogicalLine& line, ParsedBlock& out) override;
+    const ParseProblem& problem() const override { return m_problem; }
+    // CYCL DEF, GLOBAL DEF, PATTERN DEF and TCH PROBE take indented parameter lines.
+    bool takesParameterLines(std::string_view text) const override;
 
     // The head word of a block (after its number), for callers that need to know the block kind
     // before parsing it, e.g. "CYCL" or "LBL".

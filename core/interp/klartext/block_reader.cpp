@@ -42,27 +42,30 @@ bool isIndentedPatternLine(std::string_view line) {
            word == "PITCHCIRC";
 }
 
-bool takesParameterLines(std::string_view head) {
-    return head == "CYCL" || head == "GLOBAL" || head == "PATTERN" || head == "TCH";
-}
-
 }  // namespace
+
+bool BlockParser::takesParameterLines(std::string_view text) const {
+    std::string_view head = headWord(text);
+    if (head.size() < 3 || head.size() > 7) return false;
+    std::string upperHead(head);
+    for (char& c : upperHead)
+        c = upper(c);
+    return upperHead == "CYCL" || upperHead == "GLOBAL" || upperHead == "PATTERN" ||
+           upperHead == "TCH";
+}
 
 bool BlockReader::next(program::LogicalLine& line) {
     if (!m_lines.next(line)) return false;
     const char next = m_lines.peekByte();
     if (line.segments.size() == 1 && (next == ' ' || next == '\t')) {
-        std::string_view head = BlockParser::headWord(line.text);
-        if (head.size() >= 3 && head.size() <= 7) {
-            std::string upperHead(head);
-            for (char& c : upperHead)
-                c = upper(c);
-            if (takesParameterLines(upperHead)) {
-                const bool pattern = upperHead == "PATTERN";
-                while (isIndentedParameterLine(m_lines.peekLine()) ||
-                       (pattern && isIndentedPatternLine(m_lines.peekLine()))) {
-                    m_lines.appendNextLine(line);
-                }
+        static const BlockParser kConversational(nullptr);
+        const BlockSyntax& syntax = m_syntax != nullptr ? *m_syntax : kConversational;
+        if (syntax.takesParameterLines(line.text)) {
+            const std::string_view head = BlockParser::headWord(line.text);
+            const bool pattern = !head.empty() && upper(head[0]) == 'P';  // PATTERN DEF
+            while (isIndentedParameterLine(m_lines.peekLine()) ||
+                   (pattern && isIndentedPatternLine(m_lines.peekLine()))) {
+                m_lines.appendNextLine(line);
             }
         }
     }

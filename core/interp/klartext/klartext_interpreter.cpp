@@ -93,6 +93,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
     program->fileId = m_sources.add(path.string());
     program->folder = path.parent_path();
     program->machineAxes = m_machineAxes;
+    if (isIsoProgram(path, origin)) program->syntax = &m_settings.isoSyntax;
     if (check) checkProgram(*program);
     m_programs.push_back(std::move(program));
     return m_programs.back().get();
@@ -109,7 +110,7 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
     }
     m_diagnosticsAtLoad = m_diagnostics.size();
     if (mode == CheckMode::Background) {
-        program->inch = programUsesInch(*program->source);
+        program->inch = programUsesInch(*program);
         m_checking = program;
         program->followExecution = true;
         program->executionOffset.store(0);
@@ -131,6 +132,7 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     program->fileId = m_sources.add(path);
     program->folder = std::filesystem::path(path).parent_path();
     program->machineAxes = m_machineAxes;
+    if (isIsoProgram(path, Origin::Main)) program->syntax = &m_settings.isoSyntax;
     checkProgram(*program);
     DiagnosticList found = program->diagnostics;
     checkCalledPrograms(*program, found);
@@ -143,6 +145,23 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     return true;
 }
 
+bool KlartextInterpreter::isIsoProgram(const std::filesystem::path& path, Origin origin) const {
+    if (!m_settings.isoSyntax) return false;
+    if (origin == Origin::Main) return m_settings.mainProgramIso;
+    const std::string extension = path.extension().string();
+    return extension == ".I" || extension == ".i";
+}
+
+void KlartextInterpreter::selectProgram(const ProgramFile& program) {
+    if (program.syntax == nullptr) {
+        m_activeParser = &m_parser;
+    } else {
+        if (!m_isoParser) m_isoParser = (*program.syntax)(m_environment.get());
+        m_activeParser = m_isoParser.get();
+    }
+    m_reader.emplace(program.source->text(), m_activeParser);
+}
+
 void KlartextInterpreter::startLevel(ProgramFile* program, size_t returnOffset,
                                      uint32_t returnLine) {
     Level level;
@@ -152,7 +171,7 @@ void KlartextInterpreter::startLevel(ProgramFile* program, size_t returnOffset,
     level.inch = program->inch;
     m_levels.push_back(level);
     m_inch = program->inch;
-    m_reader.emplace(program->source->text());
+    selectProgram(*program);
     m_releasedBefore = 0;
 }
 
@@ -238,10 +257,10 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         m_cycleMovesInBlock = 0;
         const ProgramFile& program = *m_levels.back().program;
         m_at = SourceLocation{program.fileId, m_line.firstLine, 1, -1};
-        if (!m_parser.parse(m_line, m_block)) {
+        if (!m_activeParser->parse(m_line, m_block)) {
             // The syntax was checked on load, so this is an evaluation error (division by zero,
             // a function outside its domain ...).
-            const ParseProblem& p = m_parser.problem();
+            const ParseProblem& p = m_activeParser->problem();
             m_at.line = m_line.lineAt(p.offset);
             m_at.column = m_line.columnAt(p.offset);
             fail(p.code.c_str(), p.messageTemplate.c_str(), p.args);
@@ -251,6 +270,12 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
         m_currentM = MWords{};
         if (m_block.hidden && m_settings.blockSkip) continue;
         execute(m_block.statement);
+        // The rest of a DIN/ISO block runs unless the first part stopped, jumped or called.
+        for (size_t i = 0; i < m_block.more.size() && m_status == interp::RunStatus::BudgetUsed &&
+                           m_reader->offset() == m_line.nextOffset;
+             ++i) {
+            execute(m_block.more[i]);
+        }
         outputValuesOk();
     }
     if (m_status == interp::RunStatus::Failed && waitForCheck()) {
@@ -303,7 +328,7 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
             m_frames.pop_back();
         const Level& caller = m_levels.back();
         m_inch = caller.inch;
-        m_reader.emplace(caller.program->source->text());
+        selectProgram(*caller.program);
         m_releasedBefore = 0;
         m_reader->seek(finished.returnOffset, finished.returnLine);
         if (!m_pointRuns.empty() && m_pointRuns.back().callerLevel == m_levels.size()) {
@@ -428,14 +453,19 @@ void KlartextInterpreter::gotoLabel(const LabelTarget& target) {
 }
 
 Expected<std::filesystem::path> KlartextInterpreter::calledProgramPath(
-    const std::string& name, const std::filesystem::path& callerFolder) const {
+    const std::string& name, const std::filesystem::path& callerFolder, bool isoCaller) const {
     auto path = m_root.resolve(name, callerFolder);
     if (!path) return path.error();
     std::filesystem::path target = *path;
     std::error_code ignored;
     if (!std::filesystem::exists(target, ignored)) {
-        // The TNC accepts the name without its extension for conversational programs.
-        for (const char* ext : {".H", ".h"}) {
+        // The TNC accepts the name without its extension: conversational first, then DIN/ISO
+        // where the ISO syntax is available (an ISO caller looks for ISO programs first).
+        std::vector<const char*> extensions{".H", ".h"};
+        if (m_settings.isoSyntax) {
+            extensions.insert(isoCaller ? extensions.begin() : extensions.end(), {".I", ".i"});
+        }
+        for (const char* ext : extensions) {
             std::filesystem::path withExt = target;
             withExt += ext;
             if (std::filesystem::exists(withExt, ignored)) {
@@ -464,7 +494,7 @@ void KlartextInterpreter::checkCalledPrograms(const ProgramFile& program, Diagno
                 d.args = std::move(args);
                 appendDiagnostic(out, std::move(d));
             };
-            auto target = calledProgramPath(call.name, caller->folder);
+            auto target = calledProgramPath(call.name, caller->folder, caller->syntax != nullptr);
             if (!target) {
                 error("path", target.error().messageTemplate.c_str(), target.error().args);
                 continue;
@@ -484,7 +514,7 @@ void KlartextInterpreter::checkCalledPrograms(const ProgramFile& program, Diagno
 
 void KlartextInterpreter::callProgram(const CallPgm& call) {
     const ProgramFile& caller = *m_levels.back().program;
-    auto path = calledProgramPath(call.path, caller.folder);
+    auto path = calledProgramPath(call.path, caller.folder, caller.syntax != nullptr);
     if (!path) {
         fail("path", path.error().messageTemplate.c_str(), path.error().args);
         return;

@@ -51,9 +51,14 @@ struct KlartextSettings {
     unsigned long long partCounter = 0;
     int maxLabelNesting = 19;
     int maxProgramNesting = 19;
+    // The DIN/ISO syntax (core/interp/tnciso): called programs named `.I` are read with it, and
+    // the main program too when `mainProgramIso` is set. Unset: conversational only.
+    SyntaxMaker isoSyntax;
+    bool mainProgramIso = false;
 };
 
-// The TNC 320 conversational ("Klartext") front end.
+// The TNC 320 engine: runs conversational ("Klartext") programs, and DIN/ISO programs through the
+// syntax of core/interp/tnciso, with the same Q parameters, cycles, transformations and tables.
 class KlartextInterpreter final : public interp::Interpreter {
 public:
     KlartextInterpreter(program::SourceRegistry& sources, KlartextSettings settings);
@@ -127,6 +132,9 @@ private:
     enum class Origin : uint8_t { Main, Called };
     ProgramFile* loadProgram(const std::filesystem::path& path, std::string* error, Origin origin,
                              bool check = true);
+    // Whether the program at `path` is read as DIN/ISO; makes its reader and parser current.
+    bool isIsoProgram(const std::filesystem::path& path, Origin origin) const;
+    void selectProgram(const ProgramFile& program);
     void startLevel(ProgramFile* program, size_t returnOffset, uint32_t returnLine);
     bool endOfProgram(bool explicitEnd);
     void finish(bool emitEnd, int mCode);
@@ -138,8 +146,9 @@ private:
     void gotoLabel(const LabelTarget& target);
     void callProgram(const CallPgm& call);
     // The file a `CALL PGM name` from `callerFolder` opens, or why it cannot be called.
-    Expected<std::filesystem::path> calledProgramPath(
-        const std::string& name, const std::filesystem::path& callerFolder) const;
+    Expected<std::filesystem::path> calledProgramPath(const std::string& name,
+                                                      const std::filesystem::path& callerFolder,
+                                                      bool isoCaller) const;
     // Loads and checks every program `program` calls by name, and theirs, once each: a missing
     // or faulty called program fails the check of the main program, before anything runs.
     void checkCalledPrograms(const ProgramFile& program, DiagnosticList& out);
@@ -265,7 +274,9 @@ private:
     program::NcRoot m_root;
     std::unique_ptr<FormulaEnvironment> m_environment;  // an Environment
     BlockParser m_parser;
-    interp::ValueGuard m_out;  // every command leaves through it
+    std::unique_ptr<BlockSyntax> m_isoParser;  // made when the first ISO program runs
+    BlockSyntax* m_activeParser = &m_parser;   // the syntax of the program running
+    interp::ValueGuard m_out;                  // every command leaves through it
     interp::PathBuilder m_path;
     QParameters m_q;
 

@@ -41,13 +41,19 @@ std::string labelText(const LabelTarget& t) {
 
 }  // namespace
 
-bool programUsesInch(const program::SourceText& source) {
-    BlockReader reader(source.text());
+std::unique_ptr<BlockSyntax> makeSyntax(const ProgramFile& program,
+                                        FormulaEnvironment* environment) {
+    if (program.syntax != nullptr && *program.syntax) return (*program.syntax)(environment);
+    return std::make_unique<BlockParser>(environment);
+}
+
+bool programUsesInch(const ProgramFile& program) {
+    auto parser = makeSyntax(program, nullptr);
+    BlockReader reader(program.source->text(), parser.get());
     program::LogicalLine line;
-    BlockParser parser(nullptr);
     ParsedBlock block;
     while (reader.next(line)) {
-        if (!parser.parse(line, block)) return false;
+        if (!parser->parse(line, block)) return false;
         if (std::holds_alternative<Empty>(block.statement)) continue;
         const auto* begin = std::get_if<BeginPgm>(&block.statement);
         return begin != nullptr && begin->inch;
@@ -62,9 +68,9 @@ void checkProgram(ProgramFile& program) {
     program.namedLabels.clear();
     program.calls.clear();
     const std::string& file = program.source->path();
-    BlockReader reader(program.source->text());
+    auto parser = makeSyntax(program, nullptr);
+    BlockReader reader(program.source->text(), parser.get());
     program::LogicalLine line;
-    BlockParser parser(nullptr);
     ParsedBlock block;
     std::vector<PendingTarget> targets;
     bool sawBegin = false, sawEnd = false, firstBlock = true;
@@ -89,8 +95,8 @@ void checkProgram(ProgramFile& program) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
         }
-        if (!parser.parse(line, block)) {
-            const ParseProblem& p = parser.problem();
+        if (!parser->parse(line, block)) {
+            const ParseProblem& p = parser->problem();
             Diagnostic d = Diagnostic::make(Severity::Error, p.code, file, line.lineAt(p.offset),
                                             line.columnAt(p.offset), p.messageTemplate);
             d.args = p.args;
@@ -111,64 +117,69 @@ void checkProgram(ProgramFile& program) {
         } else if (!line.text.empty()) {
             if (unnumbered++ == 0) firstUnnumberedLine = line.firstLine;
         }
-        const Statement& s = block.statement;
-        if (auto missing = axisMissingFrom(s, program.machineAxes)) {
-            diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
-                 KERF_TR_NOOP("this machine has no axis {1}"),
-                 {std::string(1, axisLetter(*missing))});
-        }
-        if (const auto* begin = std::get_if<BeginPgm>(&s)) {
-            if (!firstBlock || sawBegin) {
-                diag(Severity::Error, "structure", line.firstLine, 1,
-                     KERF_TR_NOOP("BEGIN PGM must be the first block"));
+        auto checkStatement = [&](const Statement& s) {
+            if (auto missing = axisMissingFrom(s, program.machineAxes)) {
+                diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
+                     KERF_TR_NOOP("this machine has no axis {1}"),
+                     {std::string(1, axisLetter(*missing))});
             }
-            sawBegin = true;
-            beginName = begin->name;
-            program.inch = begin->inch;
-        } else if (const auto* end = std::get_if<EndPgm>(&s)) {
-            if (sawBegin && end->name != beginName) {
-                diag(Severity::Warning, "structure", line.firstLine, 1,
-                     KERF_TR_NOOP("END PGM {1} does not match BEGIN PGM {2}"),
-                     {end->name, beginName});
-            }
-            sawEnd = true;
-        } else if (const auto* label = std::get_if<Label>(&s)) {
-            LabelPosition position{line.nextOffset, reader.line()};
-            bool duplicate = false;
-            if (label->target.number) {
-                if (*label->target.number != 0) {
-                    duplicate =
-                        !program.numberedLabels.emplace(*label->target.number, position).second;
+            if (const auto* begin = std::get_if<BeginPgm>(&s)) {
+                if (!firstBlock || sawBegin) {
+                    diag(Severity::Error, "structure", line.firstLine, 1,
+                         KERF_TR_NOOP("BEGIN PGM must be the first block"));
                 }
-            } else if (label->target.name) {
-                duplicate = !program.namedLabels.emplace(*label->target.name, position).second;
-            }
-            if (duplicate) {
-                diag(Severity::Error, "label", line.firstLine, 1,
-                     KERF_TR_NOOP("label {1} is defined twice"), {labelText(label->target)});
-            }
-        } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
-            const size_t at = line.text.find(callPgm->path);
-            program.calls.push_back({callPgm->path,
-                                     line.lineAt(at == std::string_view::npos ? 0 : at),
-                                     line.columnAt(at == std::string_view::npos ? 0 : at)});
-        } else if (const auto* call = std::get_if<CallLabel>(&s)) {
-            targets.push_back({call->target, line.firstLine, 1});
-        } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {
-            targets.push_back({jump->target, line.firstLine, 1});
-        } else if (const auto* deferred = std::get_if<Deferred>(&s)) {
-            diag(Severity::Error, "not-supported", line.firstLine, 1,
-                 KERF_TR_NOOP("{1} is not supported yet; the program cannot run past this block"),
-                 {deferred->feature});
-        } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
-            if (cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
+                sawBegin = true;
+                beginName = begin->name;
+                program.inch = begin->inch;
+            } else if (const auto* end = std::get_if<EndPgm>(&s)) {
+                if (sawBegin && end->name != beginName) {
+                    diag(Severity::Warning, "structure", line.firstLine, 1,
+                         KERF_TR_NOOP("END PGM {1} does not match BEGIN PGM {2}"),
+                         {end->name, beginName});
+                }
+                sawEnd = true;
+            } else if (const auto* label = std::get_if<Label>(&s)) {
+                LabelPosition position{line.nextOffset, reader.line()};
+                bool duplicate = false;
+                if (label->target.number) {
+                    if (*label->target.number != 0) {
+                        duplicate =
+                            !program.numberedLabels.emplace(*label->target.number, position).second;
+                    }
+                } else if (label->target.name) {
+                    duplicate = !program.namedLabels.emplace(*label->target.name, position).second;
+                }
+                if (duplicate) {
+                    diag(Severity::Error, "label", line.firstLine, 1,
+                         KERF_TR_NOOP("label {1} is defined twice"), {labelText(label->target)});
+                }
+            } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
+                const size_t at = line.text.find(callPgm->path);
+                program.calls.push_back({callPgm->path,
+                                         line.lineAt(at == std::string_view::npos ? 0 : at),
+                                         line.columnAt(at == std::string_view::npos ? 0 : at)});
+            } else if (const auto* call = std::get_if<CallLabel>(&s)) {
+                targets.push_back({call->target, line.firstLine, 1});
+            } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {
+                targets.push_back({jump->target, line.firstLine, 1});
+            } else if (const auto* deferred = std::get_if<Deferred>(&s)) {
                 diag(Severity::Error, "not-supported", line.firstLine, 1,
                      KERF_TR_NOOP(
-                         "cycle {1} is not supported yet; the program cannot run past this block"),
-                     {std::to_string(cycle->number)});
+                         "{1} is not supported yet; the program cannot run past this block"),
+                     {deferred->feature});
+            } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
+                if (cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
+                    diag(Severity::Error, "not-supported", line.firstLine, 1,
+                         KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past "
+                                      "this block"),
+                         {std::to_string(cycle->number)});
+                }
+                checkCycleParameters(*cycle, line, file, out);
             }
-            checkCycleParameters(*cycle, line, file, out);
-        }
+        };
+        checkStatement(block.statement);
+        for (const Statement& s : block.more)
+            checkStatement(s);
         if (!empty) firstBlock = false;
     }
     for (const PendingTarget& t : targets) {

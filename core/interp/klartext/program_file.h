@@ -10,6 +10,7 @@
 
 #include "core/base/diagnostic.h"
 #include "core/geometry/axes.h"
+#include "core/interp/klartext/block_syntax.h"
 #include "core/program/source_text.h"
 
 namespace kerf::klartext {
@@ -37,6 +38,8 @@ struct ProgramFile {
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
     std::vector<ProgramCall> calls;
+    // The program's syntax when it is not conversational (a DIN/ISO program); not owned.
+    const SyntaxMaker* syntax = nullptr;
     AxisMask machineAxes =
         kAllAxesMask;  // the axes the machine has; every axis when there is no machine
 
@@ -57,6 +60,10 @@ struct ProgramFile {
 void checkProgram(ProgramFile& program);
 
 // Whether the program's BEGIN PGM block says INCH (its first block; MM otherwise).
-bool programUsesInch(const program::SourceText& source);
+bool programUsesInch(const ProgramFile& program);
+
+// A parser for the program's syntax, evaluating through `environment` (nullptr: check only).
+std::unique_ptr<BlockSyntax> makeSyntax(const ProgramFile& program,
+                                        FormulaEnvironment* environment);
 
 }  // namespace kerf::klartext

@@ -287,6 +287,9 @@ using Statement =
 
 struct ParsedBlock {
     Statement statement;
+    // Statements that follow in the same block: one DIN/ISO block can be several conversational
+    // ones ("G54 X+10" is CYCL DEF 7.0 and 7.1). Always empty for conversational text.
+    std::vector<Statement> more;
     int64_t blockNumber = -1;
     bool hidden = false;  // '/' block skip
 };

@@ -57,12 +57,12 @@ TEST(LiveCheck, FagorErrorAppearsInTheMessageListAtItsLine) {
         EXPECT_EQ(d.line, 3u) << d.format();
 }
 
-TEST(LiveCheck, TncIsoProgramGetsOneNoteNotAFlood) {
+TEST(LiveCheck, TncIsoProgramIsCheckedLikeKerfCheck) {
     test::testApp();
     const fs::path dir = kerf::test::uniqueTempDir("hmi_live_iso");
     ASSERT_FALSE(writeFileAtomically(dir / "P2.I",
-                                     "%P2 G71 *\nN10 G00 G40 G90 Z+50 *\nN20 X+0 Y+0 *\n"
-                                     "N30 G01 Z-5 F200 *\nN99999 %P2 G71 *\n")
+                                     "%P2 G71 *\nN10 G00 G40 G90 Z+50 *\nN20 X+0 Y+0 G77 *\n"
+                                     "N30 G01 Z-5 F200 *\nN99999999 %P2 G71 *\n")
                      .has_value());
     MainWindow window(contextIn(dir, "mill"));
     QSignalSpy checked(window.program(), &ProgramPanel::diagnosticsChanged);
@@ -70,13 +70,13 @@ TEST(LiveCheck, TncIsoProgramGetsOneNoteNotAFlood) {
     ASSERT_TRUE(checked.wait(10000));
     const DiagnosticList& diagnostics = window.program()->diagnostics();
     ASSERT_EQ(diagnostics.size(), 1u);
-    EXPECT_EQ(diagnostics[0].severity, Severity::Note);
-    EXPECT_EQ(diagnostics[0].line, 0u);  // nothing to underline
-    EXPECT_FALSE(hasErrors(diagnostics));
-    bool noted = false;
+    EXPECT_EQ(diagnostics[0].severity, Severity::Error);
+    EXPECT_EQ(diagnostics[0].line, 3u);
+    EXPECT_EQ(diagnostics[0].column, 13u);  // at G77
+    bool listedError = false;
     for (const auto& row : listed(window))
-        noted |= row[1].contains("TNC ISO programs (.I) are not checked");
-    EXPECT_TRUE(noted);
+        listedError |= row[1].contains("unknown G function G77");
+    EXPECT_TRUE(listedError);
 }
 
 }  // namespace

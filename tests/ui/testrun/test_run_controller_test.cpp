@@ -179,13 +179,19 @@ TEST(TestRun, AProgramWithAnErrorStopsWithADiagnosticAtItsLine) {
     EXPECT_EQ(f.controller.state(), TestRunController::State::Failed);
 }
 
-TEST(TestRun, ADialectWithoutAnInterpreterIsRefusedWithAMessage) {
+TEST(TestRun, ADinIsoProgramRunsOnTheSameEngine) {
     Fixture f;
-    QSignalSpy diagnostics(&f.controller, &TestRunController::diagnostic);
-    f.start("%PARTS\nN10 G00 X10\nN20 M30\n", program::Dialect::TncIso);
-    EXPECT_EQ(f.controller.state(), TestRunController::State::Failed);
-    ASSERT_EQ(diagnostics.count(), 1);
-    EXPECT_TRUE(diagnostics.at(0).at(1).toString().contains(QStringLiteral("dialect")));
+    f.controller.setSpeed(TestRunSpeed::Max);
+    f.start(
+        "%PARTS G71 *\nN10 G00 G40 G90 X+10 Y+0 Z+5 *\nN20 G01 Z-1 F100 *\n"
+        "N30 X+40 *\nN99999999 %PARTS G71 *\n",
+        program::Dialect::TncIso, "PARTS.I");
+    EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
+    // 6 mm down and 30 mm along X at 100 mm/min.
+    EXPECT_GT(f.controller.machiningTimeS(), 36.0 * 60.0 / 100.0);
+    const TestRunProgram& program = *f.controller.program();
+    ASSERT_FALSE(program.commands.empty());
+    EXPECT_EQ(program.commands.front().location.line, 2u);
 }
 
 }  // namespace
