@@ -1,0 +1,20 @@
+#pragma once
+
+#include "core/cycles/probing/probing_cycle.h"
+
+// The descriptors of the probing cycles, one per file group, collected by probing_registry.cpp.
+namespace kerf::cycles::probing {
+
+extern const ProbingCycleDescriptor kProbe400;
+extern const ProbingCycleDescriptor kProbe410;
+extern const ProbingCycleDescriptor kProbe411;
+extern const ProbingCycleDescriptor kProbe412;
+extern const ProbingCycleDescriptor kProbe413;
+extern const ProbingCycleDescriptor kProbe417;
+extern const ProbingCycleDescriptor kProbe419;
+extern const ProbingCycleDescriptor kProbe421;
+extern const ProbingCycleDescriptor kProbe422;
+extern const ProbingCycleDescriptor kProbe425;
+extern const ProbingCycleDescriptor kProbe426;
+
+}  // namespace kerf::cycles::probing
