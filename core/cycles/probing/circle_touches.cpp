@@ -18,7 +18,9 @@ std::optional<CycleError> probeCircle(int cycle, ProbeSequence& sequence,
     const double radius = touches.nominalDiameter / 2.0;
     // A hole too small to pre-position near its wall is probed from its centre.
     const bool fromCentre = touches.inside && radius - sequence.standOff() <= 0.0;
-    std::array<Vec2, 4> surface;
+    // The ball centres lie on a circle about the real centre, r_b closer to it in a hole and
+    // r_b further away on a stud, whichever way each touch went (spec 1.17 G4).
+    std::array<Vec2, 4> centres;
     for (int k = 0; k < touches.count; ++k) {
         const double a =
             (touches.startAngleDeg + k * touches.stepAngleDeg) * std::numbers::pi / 180.0;
@@ -26,18 +28,18 @@ std::optional<CycleError> probeCircle(int cycle, ProbeSequence& sequence,
         const Vec2 nominal = touches.centre + radius * outward;
         const Vec2 direction = touches.inside ? outward : Vec2(-outward);
         const Vec2* start = fromCentre ? &touches.centre : nullptr;
-        if (auto e =
-                sequence.touchInPlane(nominal, direction, surface[static_cast<size_t>(k)], start)) {
-            return e;
-        }
+        Vec2 surface;
+        if (auto e = sequence.touchInPlane(nominal, direction, surface, start)) return e;
+        centres[static_cast<size_t>(k)] = surface - sequence.ballRadius() * direction;
     }
     auto fitted =
-        fitCircle(std::span<const Vec2>(surface.data(), static_cast<size_t>(touches.count)));
+        fitCircle(std::span<const Vec2>(centres.data(), static_cast<size_t>(touches.count)));
     if (!fitted) {
         return probingError(cycle, "PRB-020",
                             KERF_TR_NOOP("cycle {1}: the touch points give no circle"));
     }
     circle = *fitted;
+    circle.radius += touches.inside ? sequence.ballRadius() : -sequence.ballRadius();
     return std::nullopt;
 }
 
