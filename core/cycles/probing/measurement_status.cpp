@@ -32,7 +32,8 @@ void MeasurementStatus::write(int cycle, const CycleValues& values, ProbingResul
 
 std::string logLine(const std::string& label, double value) {
     char number[64];
-    std::snprintf(number, sizeof number, "%+.4f", value);
+    // A value that rounds to zero prints as +0.0000, never -0.0000.
+    std::snprintf(number, sizeof number, "%+.4f", std::fabs(value) < 0.00005 ? 0.0 : value);
     std::string line = label;
     if (line.size() < 28) line.resize(28, ' ');
     return line + number;

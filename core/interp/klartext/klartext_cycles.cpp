@@ -168,6 +168,10 @@ bool KlartextInterpreter::resolveParameters(
 
 void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
     m_lastCycleDefined = def.number;
+    if (def.probe) {
+        executeProbeCycle(def);
+        return;
+    }
     if (def.subNumber >= 0) {
         executeOldCycle(def);
         return;
