@@ -167,8 +167,8 @@ private:
     void readVector(const std::string& fullKey, const toml::array& array) {
         if (array.size() != 3) {
             report(positionOf(array.source()),
-                   KERF_TR_NOOP("{1} = {2} must be an array of three numbers [x, y, z]"), fullKey,
-                   nodeText(array));
+                   KERF_TR_NOOP("{1} must be an array of three numbers [x, y, z], not {2}"),
+                   fullKey, std::to_string(array.size()));
             return;
         }
         for (size_t i = 0; i < 3; ++i) {
