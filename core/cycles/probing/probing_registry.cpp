@@ -6,9 +6,9 @@ namespace kerf::cycles::probing {
 
 namespace {
 
-const ProbingCycleDescriptor* const kAll[] = {&kProbe400, &kProbe410, &kProbe411, &kProbe412,
-                                              &kProbe413, &kProbe417, &kProbe419, &kProbe421,
-                                              &kProbe422, &kProbe425, &kProbe426};
+const ProbingCycleDescriptor* const kAll[] = {
+    &kProbe400, &kProbe410, &kProbe411, &kProbe412, &kProbe413, &kProbe414, &kProbe416,
+    &kProbe417, &kProbe419, &kProbe421, &kProbe422, &kProbe425, &kProbe426};
 
 }  // namespace
 

@@ -260,6 +260,46 @@ TEST(ProbingCycles, MeasureWidth425And426) {
     EXPECT_NEAR(result(r.results, 156), 20.0 / std::cos(kAngle) + 2 * kCosineError, kTolerance);
 }
 
+TEST(ProbingCycles, DatumOutsideCorner414FindsTheRealCorner) {
+    // Corner A (-X, -Y) of the blank, at the shift in reality. Each measured line is parallel to
+    // its turned face, the cosine error e in front of it: the front line moved by -e in y, the
+    // left line by -e in x. Intersecting them: corner + e (sin a - cos a) (cos a, sin a)
+    // + (0, -e).
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = defaults(414);
+    v.set(263, 20), v.set(264, 0), v.set(326, 30), v.set(296, 0), v.set(297, 20), v.set(327, 25);
+    v.set(304, 1);
+    CycleRun r = run(414, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const double e = kCosineError, c = std::cos(kAngle), s = std::sin(kAngle);
+    EXPECT_NEAR(result(r.results, 151), 1.5 + e * (s - c) * c, kTolerance);
+    EXPECT_NEAR(result(r.results, 152), -0.8 + e * (s - c) * s - e, kTolerance);
+    ASSERT_TRUE(r.results.basicRotationDeg);
+    EXPECT_NEAR(*r.results.basicRotationDeg, 0.7, 1e-7);
+    EXPECT_EQ(r.touches, 4);
+}
+
+TEST(ProbingCycles, BoltCircle416FindsTheTurnedCircleOfHoles) {
+    // Three holes of 10 mm on a 60 mm circle about (50, 30) at 0, 120 and 240 degrees.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, -10, -40), Vec3(100, 70, 0)}, true});
+    for (double deg : {0.0, 120.0, 240.0}) {
+        const double a = deg * std::numbers::pi / 180.0;
+        part.add(
+            {Cylinder{Vec2(50 + 30 * std::cos(a), 30 + 30 * std::sin(a)), 5.0, -30.0, 1.0}, false});
+    }
+    CycleValues v = defaults(416);
+    v.set(273, 50), v.set(274, 30), v.set(262, 60), v.set(291, 0), v.set(292, 120), v.set(293, 240);
+    CycleRun r = run(416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const Vec2 c = placed(Vec2(50, 30));
+    EXPECT_NEAR(result(r.results, 151), c.x(), kTolerance);
+    EXPECT_NEAR(result(r.results, 152), c.y(), kTolerance);
+    EXPECT_NEAR(result(r.results, 153), 60.0, kTolerance);
+    EXPECT_EQ(r.touches, 12);
+}
+
 TEST(ProbingCycles, ErrorsOfTheManual) {
     SimulatedWorkpiece part = misplaced();
     part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
