@@ -167,11 +167,11 @@ bool KlartextInterpreter::resolveParameters(
 }
 
 void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
-    m_lastCycleDefined = def.number;
     if (def.probe) {
         executeProbeCycle(def);
         return;
     }
+    m_lastCycleDefined = def.number;
     if (def.subNumber >= 0) {
         executeOldCycle(def);
         return;

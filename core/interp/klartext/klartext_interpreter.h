@@ -341,7 +341,8 @@ private:
     std::optional<tables::PresetTable> m_presetFile;
     std::optional<double> m_orientAngle;             // cycle 13
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
-    double m_basicRotationDeg = 0.0;                 // set by cycle 400 (kept in m_frame)
+    std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
+    double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)
     cycles::CoordinateFrame m_frame;
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;

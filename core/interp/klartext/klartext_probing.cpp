@@ -43,6 +43,10 @@ public:
         auto hit = m_part.touch(toPart(start), toPart(start + direction) - toPart(start), maxPath,
                                 m_probe.ballRadius);
         const Vec3 end = hit ? fromPart(*hit) : Vec3(start + maxPath * direction);
+        interp::ProgramStatus::Probe status;
+        status.triggered = hit.has_value();
+        status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(ballToTip(end)));
+        m_k.m_lastProbe = status;
         m_k.moveProgrammed(m_k.fromLocal(ballToTip(end)), false, m_probe.probingFeed);
         m_k.moveProgrammed(m_k.fromLocal(ballToTip(start)), true, 0.0);
         if (!hit) return std::nullopt;

@@ -83,6 +83,11 @@ TEST_F(ProbingTest, DatumOutsideCircleSetsThePresetAtTheRealStud) {
     EXPECT_NEAR(q(151), 1.5, 1e-6);
     EXPECT_NEAR(q(152), -0.8, 1e-6);
     EXPECT_NEAR(q(153), 50.0, 1e-6);
+    // The status shows the last touch, on the top: the tool tip (the ball's south pole) rests
+    // on the real top at -0.2.
+    const auto probe = interpreter->programStatus().probe;
+    ASSERT_TRUE(probe && probe->triggered);
+    EXPECT_NEAR(probe->position[Axis::Z], -0.2, 1e-6);
     // The next move to X0 Y0 Z10 goes to the real stud centre, 10 above its real top.
     const Pose end = interpreter->nominalPosition();
     EXPECT_NEAR(end[Axis::X], 1.5, 1e-6);
