@@ -8,7 +8,7 @@ namespace {
 
 const ProbingCycleDescriptor* const kAll[] = {
     &kProbe400, &kProbe410, &kProbe411, &kProbe412, &kProbe413, &kProbe414, &kProbe416,
-    &kProbe417, &kProbe419, &kProbe421, &kProbe422, &kProbe425, &kProbe426};
+    &kProbe417, &kProbe419, &kProbe421, &kProbe422, &kProbe425, &kProbe426, &kProbe1416};
 
 }  // namespace
 

@@ -18,5 +18,6 @@ extern const ProbingCycleDescriptor kProbe421;
 extern const ProbingCycleDescriptor kProbe422;
 extern const ProbingCycleDescriptor kProbe425;
 extern const ProbingCycleDescriptor kProbe426;
+extern const ProbingCycleDescriptor kProbe1416;
 
 }  // namespace kerf::cycles::probing

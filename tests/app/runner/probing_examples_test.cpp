@@ -68,6 +68,17 @@ TEST_F(ProbingExamples, SetupFindsTheCornerWritesThePresetAndTheLog) {
     EXPECT_NE(log.find("  centre line               +50.0000\n"), std::string::npos) << log;
 }
 
+TEST_F(ProbingExamples, Intersection1416OfSeed004MakesTheRealCornerTheDatum) {
+    // Q1120 = 1 and Q1121 = 1: the active preset moves to the measured corner and turns with the
+    // edge. The ball touches the faces turned by 0.7 degrees axis-parallel, so each measured
+    // line lies 2 (1 / cos 0.7deg - 1) = 0.15 um in front of its face: the corner is that close.
+    const nlohmann::json report = run("INTERSECT");
+    EXPECT_TRUE(report["ok"].get<bool>());
+    EXPECT_NEAR(report["final_position"]["X"].get<double>(), 1.5, 0.0002);
+    EXPECT_NEAR(report["final_position"]["Y"].get<double>(), -0.8, 0.0002);
+    EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 10.0, 1e-9);
+}
+
 TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
     EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
 }

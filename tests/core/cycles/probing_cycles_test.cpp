@@ -300,6 +300,45 @@ TEST(ProbingCycles, BoltCircle416FindsTheTurnedCircleOfHoles) {
     EXPECT_EQ(r.touches, 12);
 }
 
+TEST(ProbingCycles, Intersection1416FindsTheCornerOfTheTurnedBlank) {
+    // Edge 1 the front face (0 degrees, probed at +90), edge 2 the left face (90 degrees, probed
+    // at -90): the same measured lines as 414, so the same corner; both edges turned by 0.7.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = defaults(1416);
+    v.set(1100, 0), v.set(1101, 0), v.set(1102, -5);
+    v.set(1130, 0), v.set(1131, 1), v.set(1132, 10), v.set(1133, 40);
+    v.set(1134, 90), v.set(1135, -1), v.set(1136, 10), v.set(1137, 40);
+    v.set(1120, 1), v.set(1121, 5);
+    v.setText(400, "0.5-0.5");
+    v.setText(401, "0.5-0.5");
+    CycleRun r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const double e = kCosineError, c = std::cos(kAngle), s = std::sin(kAngle);
+    EXPECT_NEAR(result(r.results, 959), 1.5 + e * (s - c) * c, kTolerance);
+    EXPECT_NEAR(result(r.results, 960), -0.8 + e * (s - c) * s - e, kTolerance);
+    EXPECT_NEAR(result(r.results, 989), 1.5 + e * (s - c) * c, kTolerance);
+    EXPECT_NEAR(result(r.results, 964), 0.7, 1e-7);
+    // Touch 1 of edge 1 at x = 10 meets the front face at y = -0.8 + 8.5 tan a, and stops the
+    // cosine error in front of it.
+    EXPECT_NEAR(result(r.results, 951), -0.8 + 8.5 * std::tan(kAngle) - e, kTolerance);
+    EXPECT_NEAR(result(r.results, 981), -0.8 + 8.5 * std::tan(kAngle) - e, kTolerance);
+    // Along the surface normals: the front face lies about 0.7 mm outside its nominal place
+    // (material left: rework), the left face 1.1 to 1.5 mm inside it (scrap): scrap overall.
+    EXPECT_EQ(result(r.results, 183), 2.0);
+    ASSERT_TRUE(r.results.datum);
+    ASSERT_TRUE(r.results.basicRotationDeg);
+    EXPECT_NEAR(*r.results.basicRotationDeg, 0.7, 1e-7);
+    // Within a tolerance of 2 mm the part is good; Q1126 without Q1121 is PRB-010.
+    v.setText(400, "2"), v.setText(401, "2"), v.set(309, 2);
+    r = run(1416, v, part);
+    EXPECT_EQ(result(r.results, 183), 0.0);
+    v.set(1121, 0), v.set(1126, 1);
+    EXPECT_EQ(run(1416, v, part).error->code, "PRB-010");
+    v.set(1126, 0), v.setText(400, "abc");
+    EXPECT_EQ(run(1416, v, part).error->code, "cycle-parameter");
+}
+
 TEST(ProbingCycles, ErrorsOfTheManual) {
     SimulatedWorkpiece part = misplaced();
     part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
