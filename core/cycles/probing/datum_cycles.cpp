@@ -7,6 +7,7 @@
 #include "core/cycles/probing/datum_output.h"
 #include "core/cycles/probing/probing_parameters.h"
 #include "core/cycles/probing/probing_registry_entries.h"
+#include "core/cycles/probing/rectangle_touches.h"
 
 namespace kerf::cycles::probing {
 
@@ -85,28 +86,17 @@ std::optional<CycleError> rectangle(int cycle, bool inside, const CycleValues& v
                                     ProbingResults& results) {
     if (auto e = checkTransfer(cycle, v)) return e;
     ProbeSequence sequence(cycle, v, probe, machine);
-    const Vec2 centre(v.number(321), v.number(322));
-    const double half[2] = {v.number(323) / 2.0, v.number(324) / 2.0};
-    // Too small to pre-position near the walls: probe every side from the centre.
-    const bool fromCentre = inside && std::min(half[0], half[1]) - sequence.standOff() < 0.0;
-    std::array<Vec2, 4> touched;
-    for (size_t k = 0; k < touched.size(); ++k) {
-        const int axis = static_cast<int>(k / 2);
-        const double side = k % 2 == 0 ? -1.0 : 1.0;
-        Vec2 outward(0.0, 0.0);
-        outward[axis] = side;
-        const Vec2 nominal = centre + half[k / 2] * outward;
-        const Vec2 direction = inside ? outward : Vec2(-outward);
-        const Vec2* start = fromCentre ? &centre : nullptr;
-        if (auto e = sequence.touchInPlane(nominal, direction, touched[k], start)) return e;
+    MeasuredRectangle measured;
+    if (auto e = probeRectangle(sequence, Vec2(v.number(321), v.number(322)),
+                                Vec2(v.number(323), v.number(324)), inside, measured)) {
+        return e;
     }
-    DatumResult datum;
-    const Vec2 actual((touched[0].x() + touched[1].x()) / 2.0,
-                      (touched[2].y() + touched[3].y()) / 2.0);
+    const Vec2 actual = measured.centre;
     results.set(151, actual.x());
     results.set(152, actual.y());
-    results.set(154, std::fabs(touched[1].x() - touched[0].x()));
-    results.set(155, std::fabs(touched[3].y() - touched[2].y()));
+    results.set(154, measured.sides.x());
+    results.set(155, measured.sides.y());
+    DatumResult datum;
     datum.measured = {actual.x(), actual.y(), std::nullopt};
     datum.nominal = {v.number(331), v.number(332), 0.0};
     if (auto e = toolAxisDatum(sequence, v, datum)) return e;

@@ -14,10 +14,14 @@ extern const ProbingCycleDescriptor kProbe414;
 extern const ProbingCycleDescriptor kProbe416;
 extern const ProbingCycleDescriptor kProbe417;
 extern const ProbingCycleDescriptor kProbe419;
+extern const ProbingCycleDescriptor kProbe420;
 extern const ProbingCycleDescriptor kProbe421;
 extern const ProbingCycleDescriptor kProbe422;
 extern const ProbingCycleDescriptor kProbe425;
+extern const ProbingCycleDescriptor kProbe423;
+extern const ProbingCycleDescriptor kProbe424;
 extern const ProbingCycleDescriptor kProbe426;
+extern const ProbingCycleDescriptor kProbe427;
 extern const ProbingCycleDescriptor kProbe1416;
 
 }  // namespace kerf::cycles::probing

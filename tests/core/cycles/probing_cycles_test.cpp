@@ -339,6 +339,53 @@ TEST(ProbingCycles, Intersection1416FindsTheCornerOfTheTurnedBlank) {
     EXPECT_EQ(run(1416, v, part).error->code, "cycle-parameter");
 }
 
+TEST(ProbingCycles, MeasureAngle420RectanglesAndCoordinate427) {
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(-10, -10, -40), Vec3(110, 70, 0)}, true});
+    part.add({Box{Vec3(20, 10, -20), Vec3(80, 50, 1)}, false});
+    // 420 on the pocket's front wall from inside, probing -Y: the wall's angle.
+    CycleValues a = defaults(420);
+    a.set(263, 30), a.set(264, 10), a.set(265, 70), a.set(266, 10), a.set(272, 2), a.set(267, -1);
+    CycleRun r = run(420, a, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 150), 0.7, 1e-7);
+    // 423 on the pocket: as 410, compared with the nominal 60 x 40; 0.1 mm of side tolerance
+    // hold the 4.5 um a turned wall adds.
+    const Vec2 c = placed(Vec2(50, 30));
+    CycleValues m = defaults(423);
+    m.set(273, 50), m.set(274, 30), m.set(282, 60), m.set(283, 40);
+    m.set(284, 60.1), m.set(285, 59.9), m.set(286, 40.1), m.set(287, 39.9);
+    m.set(279, 0.5), m.set(280, 0.5);
+    r = run(423, m, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const double length = 60.0 / std::cos(kAngle) - 2 * kCosineError;
+    EXPECT_NEAR(result(r.results, 154), length, kTolerance);
+    EXPECT_NEAR(result(r.results, 164), length - 60.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 161), c.x() - (30.0 - c.y()) * std::tan(kAngle) - 50.0,
+                kTolerance);
+    // The centre is 1.1 mm off in X, beyond its 0.5 mm tolerance: scrap.
+    EXPECT_EQ(result(r.results, 182), 1.0);
+    // 424 on a stud of the same size: the turned walls add the cosine error outward.
+    SimulatedWorkpiece stud = misplaced();
+    stud.add({Box{Vec3(20, 10, -20), Vec3(80, 50, 0)}, true});
+    m.set(282, 62), m.set(283, 42), m.set(279, 0), m.set(280, 0);
+    m.set(284, 0), m.set(285, 0), m.set(286, 0), m.set(287, 0);
+    r = run(424, m, stud);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 155), 40.0 / std::cos(kAngle) + 2 * kCosineError, kTolerance);
+    EXPECT_EQ(result(r.results, 180), 1.0);  // nothing monitored
+    // 427 down onto the top: -0.2; within -0.3 ... -0.1 good, below 0 ... 0.1 scrap.
+    CycleValues z = defaults(427);
+    z.set(263, 50), z.set(264, 30), z.set(272, 3), z.set(261, 0), z.set(288, -0.1),
+        z.set(289, -0.3);
+    r = run(427, z, stud);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 160), -0.2, kTolerance);
+    EXPECT_EQ(result(r.results, 180), 1.0);
+    z.set(288, 0.1), z.set(289, 0.0);
+    EXPECT_EQ(result(run(427, z, stud).results, 182), 1.0);
+}
+
 TEST(ProbingCycles, ErrorsOfTheManual) {
     SimulatedWorkpiece part = misplaced();
     part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
