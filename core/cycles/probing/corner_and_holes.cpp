@@ -36,6 +36,27 @@ constexpr ParameterDescriptor kCornerParameters[] = {
     kToolAxisSurface,
     kDatumToolAxis};
 
+constexpr ParameterDescriptor kInsideCornerParameters[] = {
+    length(263, KERF_TR_NOOP("Corner, main axis")),
+    length(264, KERF_TR_NOOP("Corner, secondary axis")),
+    length(326, KERF_TR_NOOP("Spacing of touch points 1 and 2 in the main axis"), 0.0),
+    length(327, KERF_TR_NOOP("Spacing of touch points 3 and 4 in the secondary axis"), 0.0),
+    choice(308, KERF_TR_NOOP("Corner: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)"), 1, 4, 1),
+    kMeasuringHeight,
+    kSetUpClearance,
+    kClearanceHeight,
+    kMoveToClearance,
+    choice(304, KERF_TR_NOOP("Basic rotation too: 0 no, 1 yes"), 0, 1, 0),
+    kTableRow,
+    kDatumMain,
+    kDatumSecondary,
+    kTransfer,
+    kProbeToolAxis,
+    kToolAxisPointMain,
+    kToolAxisPointSecondary,
+    kToolAxisSurface,
+    kDatumToolAxis};
+
 constexpr ParameterDescriptor kBoltCircleParameters[] = {
     length(273, KERF_TR_NOOP("Bolt-circle centre, main axis")),
     length(274, KERF_TR_NOOP("Bolt-circle centre, secondary axis")),
@@ -63,6 +84,34 @@ double sign(double value) {
     return value < 0.0 ? -1.0 : 1.0;
 }
 
+// The corner where the lines through touches 1, 2 and 3, 4 meet (G3), the misalignment of the
+// first line (Q304) and the datum: what 414 and 415 share.
+std::optional<CycleError> cornerResults(int cycle, const CycleValues& v,
+                                        const std::array<Vec2, 4>& touched, ProbeSequence& sequence,
+                                        ProbingResults& results) {
+    auto corner = intersect(touched[0], touched[1], touched[2], touched[3]);
+    if (!corner) {
+        return probingError(cycle, "PRB-019",
+                            KERF_TR_NOOP("cycle {1}: the two edges are parallel"));
+    }
+    results.set(151, corner->x());
+    results.set(152, corner->y());
+    if (v.integer(304) == 1) {
+        // Line 1 runs along the main axis: its angle is the misalignment (either direction).
+        double angle = lineAngleDeg(touched[0], touched[1]);
+        if (angle > 90.0) angle -= 180.0;
+        if (angle <= -90.0) angle += 180.0;
+        results.basicRotationDeg = angle;
+    }
+    DatumResult datum;
+    datum.measured = {corner->x(), corner->y(), std::nullopt};
+    datum.nominal = {v.number(331), v.number(332), 0.0};
+    if (auto e = toolAxisDatum(sequence, v, datum)) return e;
+    sequence.retract();
+    setDatum(v, results, datum);
+    return std::nullopt;
+}
+
 // 414: line 1 (touches 1, 2) probed along S toward the level of point 3, line 2 (touches 3, 4)
 // along M from point 3 toward point 1; the corner is where the lines meet (G3).
 std::optional<CycleError> run414(const CycleValues& v, const ProbeData& probe,
@@ -81,26 +130,31 @@ std::optional<CycleError> run414(const CycleValues& v, const ProbeData& probe,
     if (auto e = sequence.touchInPlane(p2, alongS, touched[1])) return e;
     if (auto e = sequence.touchInPlane(p3, alongM, touched[2])) return e;
     if (auto e = sequence.touchInPlane(p4, alongM, touched[3])) return e;
-    auto corner = intersect(touched[0], touched[1], touched[2], touched[3]);
-    if (!corner) {
-        return probingError(414, "PRB-019", KERF_TR_NOOP("cycle {1}: the two edges are parallel"));
+    return cornerResults(414, v, touched, sequence, results);
+}
+
+// 415 (spec impl. note): (Q263, Q264) is the nominal corner of a pocket, Q308 which one. Line 1
+// runs along the wall parallel to the main axis, probed toward it; line 2 along the other wall;
+// the touches start clear of the other wall and move away from the corner by Q326, Q327.
+std::optional<CycleError> run415(const CycleValues& v, const ProbeData& probe,
+                                 ProbingMachine& machine, ProbingResults& results) {
+    if (auto e = checkTransfer(415, v)) return e;
+    ProbeSequence sequence(415, v, probe, machine);
+    const Vec2 corner(v.number(263), v.number(264));
+    const int number = v.integer(308);
+    const Vec2 side(number == 2 || number == 3 ? 1.0 : -1.0, number >= 3 ? 1.0 : -1.0);
+    const double clear = sequence.standOff();
+    const std::array<Vec2, 4> nominal = {
+        Vec2(corner.x() - side.x() * clear, corner.y()),
+        Vec2(corner.x() - side.x() * (clear + v.number(326)), corner.y()),
+        Vec2(corner.x(), corner.y() - side.y() * clear),
+        Vec2(corner.x(), corner.y() - side.y() * (clear + v.number(327)))};
+    std::array<Vec2, 4> touched;
+    for (size_t k = 0; k < touched.size(); ++k) {
+        const Vec2 direction = k < 2 ? Vec2(0.0, side.y()) : Vec2(side.x(), 0.0);
+        if (auto e = sequence.touchInPlane(nominal[k], direction, touched[k])) return e;
     }
-    results.set(151, corner->x());
-    results.set(152, corner->y());
-    if (v.integer(304) == 1) {
-        // Line 1 runs along the main axis: its angle is the misalignment (either direction).
-        double angle = lineAngleDeg(touched[0], touched[1]);
-        if (angle > 90.0) angle -= 180.0;
-        if (angle <= -90.0) angle += 180.0;
-        results.basicRotationDeg = angle;
-    }
-    DatumResult datum;
-    datum.measured = {corner->x(), corner->y(), std::nullopt};
-    datum.nominal = {v.number(331), v.number(332), 0.0};
-    if (auto e = toolAxisDatum(sequence, v, datum)) return e;
-    sequence.retract();
-    setDatum(v, results, datum);
-    return std::nullopt;
+    return cornerResults(415, v, touched, sequence, results);
 }
 
 // 416: each hole's centre from four touches outward from its nominal centre (G5), then the
@@ -156,6 +210,8 @@ std::optional<CycleError> run416(const CycleValues& v, const ProbeData& probe,
 
 const ProbingCycleDescriptor kProbe414{414, KERF_TR_NOOP("DATUM OUTSIDE CORNER"), kCornerParameters,
                                        run414, kCornerResults};
+const ProbingCycleDescriptor kProbe415{415, KERF_TR_NOOP("DATUM INSIDE CORNER"),
+                                       kInsideCornerParameters, run415, kCornerResults};
 const ProbingCycleDescriptor kProbe416{416, KERF_TR_NOOP("DATUM CIRCLE CENTER"),
                                        kBoltCircleParameters, run416, kBoltCircleResults};
 

@@ -11,6 +11,7 @@ extern const ProbingCycleDescriptor kProbe411;
 extern const ProbingCycleDescriptor kProbe412;
 extern const ProbingCycleDescriptor kProbe413;
 extern const ProbingCycleDescriptor kProbe414;
+extern const ProbingCycleDescriptor kProbe415;
 extern const ProbingCycleDescriptor kProbe416;
 extern const ProbingCycleDescriptor kProbe417;
 extern const ProbingCycleDescriptor kProbe419;

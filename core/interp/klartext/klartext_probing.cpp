@@ -175,6 +175,12 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
              {owner});
         return;
     }
+    if (values.number(330) != 0.0) {
+        warn("not-supported",
+             KERF_TR_NOOP("{1}: tool monitoring (Q330) is not supported yet: "
+                          "the tool table is not corrected"),
+             {owner});
+    }
     auto probe = activeProbe(def.number);
     if (!probe) return;
     if (!checkPathError(m_path.flush())) return;

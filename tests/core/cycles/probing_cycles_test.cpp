@@ -280,6 +280,23 @@ TEST(ProbingCycles, DatumOutsideCorner414FindsTheRealCorner) {
     EXPECT_EQ(r.touches, 4);
 }
 
+TEST(ProbingCycles, DatumInsideCorner415FindsThePocketCorner) {
+    // Corner 1 (-X, -Y) of a pocket; each measured line lies e in front of its wall, inside the
+    // pocket: the 414 result with the offsets reversed, K - e (sin a - cos a) (cos a, sin a)
+    // + (0, e).
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(-10, -10, -40), Vec3(110, 70, 0)}, true});
+    part.add({Box{Vec3(20, 10, -20), Vec3(80, 50, 1)}, false});
+    CycleValues v = defaults(415);
+    v.set(263, 20), v.set(264, 10), v.set(326, 20), v.set(327, 15), v.set(308, 1);
+    CycleRun r = run(415, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const double e = kCosineError, c = std::cos(kAngle), s = std::sin(kAngle);
+    const Vec2 k = placed(Vec2(20, 10));
+    EXPECT_NEAR(result(r.results, 151), k.x() - e * (s - c) * c, kTolerance);
+    EXPECT_NEAR(result(r.results, 152), k.y() - e * (s - c) * s + e, kTolerance);
+}
+
 TEST(ProbingCycles, BoltCircle416FindsTheTurnedCircleOfHoles) {
     // Three holes of 10 mm on a 60 mm circle about (50, 30) at 0, 120 and 240 degrees.
     SimulatedWorkpiece part = misplaced();
