@@ -1,8 +1,10 @@
 // TCH PROBE cycles (spec tnc-probing-cycles.md): the probe's data, the touches on the simulated
 // workpiece, and the results written where the TNC writes them (Q parameters, the active preset,
 // the preset table, the measuring log).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 
 #include "core/base/translate.h"
 #include "core/cycles/probing/probing_cycle.h"
@@ -12,6 +14,13 @@
 namespace kerf::klartext {
 
 namespace {
+
+// Result parameters that are not lengths: angles and status flags keep their value in INCH
+// programs.
+bool isLengthResult(uint16_t q) {
+    static constexpr uint16_t kOthers[] = {150, 180, 181, 182, 183, 964, 965, 994, 995};
+    return std::find(std::begin(kOthers), std::end(kOthers), q) == std::end(kOthers);
+}
 
 std::string upperName(std::string_view text) {
     std::string out(text);
@@ -194,7 +203,7 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         return;
     }
     for (const auto& [q, value] : results.parameters)
-        m_q.set(QRef{QKind::Q, q}, value / lengthScale());
+        m_q.set(QRef{QKind::Q, q}, isLengthResult(q) ? value / lengthScale() : value);
     if (results.protocol && !writeProtocol(def.number, cycle->name, *results.protocol)) return;
     if (results.datum && !applyDatum(def.number, results)) return;
     if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
