@@ -96,6 +96,18 @@ CycleRun run(int cycle, const CycleValues& v, const SimulatedWorkpiece& part) {
     return r;
 }
 
+TEST(ProbingCycles, RegistryHoldsEachCycleOnceInNumberOrder) {
+    const int expected[] = {400, 410, 411, 412, 413, 414, 415, 416, 417, 419,
+                            420, 421, 422, 423, 424, 425, 426, 427, 1416};
+    auto all = allProbingCycles();
+    ASSERT_EQ(all.size(), std::size(expected));
+    for (size_t i = 0; i < all.size(); ++i) {
+        EXPECT_EQ(all[i]->number, expected[i]);
+        EXPECT_EQ(findProbingCycle(expected[i]), all[i]);
+        EXPECT_NE(all[i]->run, nullptr);
+    }
+}
+
 TEST(ProbingCycles, BasicRotation400MeasuresTheTurnOfAnEdge) {
     SimulatedWorkpiece part = misplaced();
     part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
