@@ -65,6 +65,19 @@ struct ProbeWorkpieceConfig {
     friend bool operator==(const ProbeWorkpieceConfig&, const ProbeWorkpieceConfig&) = default;
 };
 
+// How the real blank lies compared with its programmed position (kerf run's simulated workpiece,
+// the touch probe finds it): shifted in machine axes, then rotated about the tool axis through
+// the blank's programmed origin (the workpiece datum). In the file: [simulation.setup] with
+// shift = [x, y, z] and rotation = degrees.
+struct SetupErrorConfig {
+    double shiftXMm = 0.0;
+    double shiftYMm = 0.0;
+    double shiftZMm = 0.0;
+    double rotationDeg = 0.0;
+
+    friend bool operator==(const SetupErrorConfig&, const SetupErrorConfig&) = default;
+};
+
 // The machine configuration. Every field except `axes[i].letter` is a parameter of the schema in
 // core/machine/machine_schema.h, which loads, checks and writes it; the default member values are
 // the schema defaults. New sections (drives, ...) become new member structs plus schema entries.
@@ -86,6 +99,7 @@ struct MachineConfig {
     DrivesConfig drives;
     BarConfig bar;                        // lathe only
     ProbeWorkpieceConfig probeWorkpiece;  // simulation only
+    SetupErrorConfig setupError;          // simulation only
 
     // The axis with this letter (enabled or not), or nullptr.
     const AxisConfig* axis(char letter) const;

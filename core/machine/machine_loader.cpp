@@ -145,6 +145,8 @@ private:
         const ParameterDescriptor* d = findParameter(fullKey);
         if (d && d->scope == ParameterScope::Machine) {
             readValue(*d, fullKey, node, AxisType::Linear);
+        } else if (node.is_array() && isVectorSection(fullKey)) {
+            readVector(fullKey, *node.as_array());
         } else if (isSection(fullKey)) {
             const toml::table* table = node.as_table();
             if (!table) {
@@ -159,6 +161,24 @@ private:
                 candidates.push_back(p.key);
             reportUnknownKey(key, fullKey, std::string(detail::closestKey(fullKey, candidates)));
         }
+    }
+
+    // A table of x, y and z (simulation.setup.shift) may be written as an array [x, y, z].
+    void readVector(const std::string& fullKey, const toml::array& array) {
+        if (array.size() != 3) {
+            report(positionOf(array.source()),
+                   KERF_TR_NOOP("{1} must be an array of three numbers [x, y, z], not {2}"),
+                   fullKey, std::to_string(array.size()));
+            return;
+        }
+        for (size_t i = 0; i < 3; ++i) {
+            const std::string component = fullKey + "." + "xyz"[i];
+            readValue(*findParameter(component), component, *array.get(i), AxisType::Linear);
+        }
+    }
+
+    static bool isVectorSection(const std::string& key) {
+        return findParameter(key + ".x") && findParameter(key + ".y") && findParameter(key + ".z");
     }
 
     void readAxes(const toml::key& key, const toml::node& node) {

@@ -177,6 +177,41 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
              .maximum = 100000.0,
              .description = KERF_TR_NOOP(
                  "Simulated probe workpiece: highest machine Z of the tool tip inside it")}),
+        bindField<&MachineConfig::setupError, &SetupErrorConfig::shiftXMm>(
+            kMachine,
+            {.key = "simulation.setup.shift.x",
+             .unit = "mm",
+             .minimum = -1000.0,
+             .maximum = 1000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulation: how far the real blank lies from its programmed position in machine "
+                 "X; write shift = [x, y, z]")}),
+        bindField<&MachineConfig::setupError, &SetupErrorConfig::shiftYMm>(
+            kMachine,
+            {.key = "simulation.setup.shift.y",
+             .unit = "mm",
+             .minimum = -1000.0,
+             .maximum = 1000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulation: how far the real blank lies from its programmed position in machine "
+                 "Y; write shift = [x, y, z]")}),
+        bindField<&MachineConfig::setupError, &SetupErrorConfig::shiftZMm>(
+            kMachine,
+            {.key = "simulation.setup.shift.z",
+             .unit = "mm",
+             .minimum = -1000.0,
+             .maximum = 1000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulation: how far the real blank lies from its programmed position in machine "
+                 "Z; write shift = [x, y, z]")}),
+        bindField<&MachineConfig::setupError, &SetupErrorConfig::rotationDeg>(
+            kMachine, {.key = "simulation.setup.rotation",
+                       .unit = "deg",
+                       .minimum = -180.0,
+                       .maximum = 180.0,
+                       .description = KERF_TR_NOOP(
+                           "Simulation: how far the real blank is turned about the tool axis, "
+                           "through its programmed origin")}),
         bindField<&MachineConfig::drives, &DrivesConfig::interface>(
             kMachine, {.key = "drives.interface",
                        .description = KERF_TR_NOOP("SocketCAN interface of the drive bus")}),

@@ -39,6 +39,7 @@ public:
     const Pose& pointShift() const { return m_pointShift; }
 
     const Pose& shift() const { return m_shift; }
+    const Pose& preset() const { return m_preset; }
     AxisMask mirror() const { return m_mirror; }
     double rotationDeg() const { return m_rotationDeg; }
     double scale() const { return m_scale; }

@@ -1039,6 +1039,13 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                               {std::to_string(*fn)});
         }
     }
+    if (head == "TCH") {
+        if (!cur.acceptKeyword("PROBE"))
+            return c.fail("syntax", KERF_TR_NOOP("PROBE expected after TCH"));
+        if (!parseCycleDef(line, cur.position(), out)) return false;
+        std::get<CycleDefinition>(out.statement).probe = true;
+        return true;
+    }
     if (head == "CYCL") {
         if (cur.acceptKeyword("DEF")) return parseCycleDef(line, cur.position(), out);
         if (cur.acceptKeyword("CALL")) {
@@ -1080,15 +1087,14 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         return true;
     }
     static const char* const kDeferredHeads[] = {
-        "PATTERN", "TCH",     "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",
-        "CONTOUR", "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",
-        "FSELECT", "FSELCT",  "LN",       "PRESET", "POLARKIN",   "FACING",    "TABDATA",
-        "OPEN",    "LIFTOFF", "WAIT",     "ERROR",  "MONITORING", "PARAXCOMP", "PARAXMODE",
-        "RESET",   "SYSREAD", "CFGWRITE", "CFGREAD"};
+        "PATTERN", "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",     "CONTOUR",
+        "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",       "FSELECT",
+        "FSELCT",  "LN",       "PRESET", "POLARKIN",   "FACING",    "TABDATA",   "OPEN",
+        "LIFTOFF", "WAIT",     "ERROR",  "MONITORING", "PARAXCOMP", "PARAXMODE", "RESET",
+        "SYSREAD", "CFGWRITE", "CFGREAD"};
     for (const char* candidate : kDeferredHeads) {
         if (head == candidate) {
             std::string feature(head);
-            if (head == "TCH") feature = "TCH PROBE";
             if (head == "PATTERN") feature = "PATTERN DEF";
             if (head == "GLOBAL") feature = "GLOBAL DEF";
             if (head == "SEL") {

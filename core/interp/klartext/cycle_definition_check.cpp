@@ -4,6 +4,7 @@
 
 #include "core/cycles/cycle_registry.h"
 #include "core/cycles/parameter_check.h"
+#include "core/cycles/probing/probing_cycle.h"
 
 namespace kerf::klartext {
 
@@ -21,10 +22,21 @@ void report(const cycles::CycleError& error, const std::string& file, uint32_t l
 
 void checkCycleParameters(const CycleDefinition& def, const program::LogicalLine& line,
                           const std::string& file, DiagnosticList& out) {
-    const cycles::CycleDescriptor* cycle = cycles::findCycle(def.number);
-    if (def.subNumber >= 0 || cycle == nullptr || cycle->oldStyle) return;
-    const std::string owner = "cycle " + std::to_string(def.number);
-    for (const cycles::ParameterDescriptor& d : cycle->parameters) {
+    if (def.subNumber >= 0) return;
+    std::span<const cycles::ParameterDescriptor> parameters;
+    std::string owner;
+    if (def.probe) {
+        const auto* probe = cycles::probing::findProbingCycle(def.number);
+        if (probe == nullptr) return;
+        parameters = probe->parameters;
+        owner = "touch probe cycle " + std::to_string(def.number);
+    } else {
+        const cycles::CycleDescriptor* cycle = cycles::findCycle(def.number);
+        if (cycle == nullptr || cycle->oldStyle) return;
+        parameters = cycle->parameters;
+        owner = "cycle " + std::to_string(def.number);
+    }
+    for (const cycles::ParameterDescriptor& d : parameters) {
         // The run takes the last of repeated parameters.
         auto it = std::find_if(def.parameters.rbegin(), def.parameters.rend(),
                                [&](const CycleParameter& p) { return p.q == d.q; });

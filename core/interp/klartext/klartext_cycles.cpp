@@ -167,6 +167,10 @@ bool KlartextInterpreter::resolveParameters(
 }
 
 void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
+    if (def.probe) {
+        executeProbeCycle(def);
+        return;
+    }
     m_lastCycleDefined = def.number;
     if (def.subNumber >= 0) {
         executeOldCycle(def);

@@ -13,6 +13,7 @@
 #include "core/cycles/cycle_descriptor.h"
 #include "core/cycles/cycle_values.h"
 #include "core/cycles/pattern/pattern_plan.h"
+#include "core/cycles/probing/probing_cycle.h"
 #include "core/cycles/transform/coordinate_frame.h"
 #include "core/interp/interpreter.h"
 #include "core/interp/klartext/block_parser.h"
@@ -27,7 +28,9 @@
 #include "core/tables/datum_table.h"
 #include "core/tables/free_table.h"
 #include "core/tables/preset_table.h"
+#include "core/tables/probe_table.h"
 #include "core/tables/tool_table.h"
+#include "core/workpiece/simulated_workpiece.h"
 
 namespace kerf::klartext {
 
@@ -87,6 +90,7 @@ public:
 private:
     class Environment;
     class CycleOutput;
+    class ProbeAdapter;
 
     struct Level {  // one program in the CALL PGM chain
         ProgramFile* program = nullptr;
@@ -219,6 +223,14 @@ private:
     std::optional<double> lastValue(const CycleDefinition& def, const char* what);
     // Coordinate transformations of path functions and cycles alike.
     std::optional<ContourElement> toWorkpiece(const ContourElement& element);
+    // Touch-probe cycles (klartext_probing.cpp).
+    void executeProbeCycle(const CycleDefinition& def);
+    std::optional<cycles::probing::ProbeData> activeProbe(int cycle);
+    workpiece::SimulatedWorkpiece simulatedPart() const;
+    bool writeProtocol(int cycle, const char* name, const std::vector<std::string>& lines);
+    bool applyDatum(int cycle, const cycles::probing::ProbingResults& results);
+    bool writePreset(int cycle, int row, const Pose& offset);
+    bool applyBasicRotation(int cycle, const cycles::probing::ProbingResults& results);
     // Cycle calls (klartext_cycle_calls.cpp).
     void executeCycleCall(const CycleCall& call);
     void callCycleHere(const cycles::CycleValues* overrides = nullptr);
@@ -323,6 +335,7 @@ private:
     int m_preparedTool = -1;
     std::map<int, tables::ToolData> m_programTools;  // TOOL DEF n L.. R.. in old programs
     std::optional<Vec3> m_blankMin;
+    std::optional<workpiece::Solid> m_blank;  // what the simulated touch probe touches
     MWords m_currentM;  // M functions of the block being executed (M91/M92 change coordinates)
     std::optional<tables::FreeTable> m_openTable;
     bool m_warnedNoToolTable = false;
@@ -337,7 +350,10 @@ private:
     std::optional<std::vector<cycles::PatternPoint>> m_pattern;  // PATTERN DEF or point table
     std::optional<tables::DatumTable> m_datumTable;
     std::optional<tables::PresetTable> m_presetFile;
-    std::optional<double> m_orientAngle;  // cycle 13
+    std::optional<double> m_orientAngle;             // cycle 13
+    std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
+    std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
+    double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)
     cycles::CoordinateFrame m_frame;
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;

@@ -279,6 +279,13 @@ void KlartextInterpreter::executeBlkForm(const BlkForm& blk) {
         cylinder.lengthMm = blk.length * scale;
         cylinder.distanceMm = blk.distance * scale;
         emit(canon::StockDefinition{cylinder});
+        m_blank.reset();
+        if (cylinder.axis == Axis::Z) {
+            m_blank = workpiece::Solid{
+                workpiece::Cylinder{Vec2(0.0, 0.0), cylinder.radiusMm,
+                                    cylinder.distanceMm - cylinder.lengthMm, cylinder.distanceMm},
+                true};
+        }
         return;
     }
     if (blk.kind == BlkForm::Kind::MinPoint) {
@@ -305,6 +312,7 @@ void KlartextInterpreter::executeBlkForm(const BlkForm& blk) {
         return;
     }
     emit(canon::StockDefinition{box});
+    m_blank = workpiece::Solid{workpiece::Box{box.min, box.max}, true};
 }
 
 }  // namespace kerf::klartext

@@ -60,6 +60,7 @@ interp::ProgramStatus KlartextInterpreter::programStatus() const {
         status.cycle = interp::ProgramStatus::Cycle{m_lastCycleDefined,
                                                     d != nullptr && d->name ? d->name : ""};
     }
+    status.probe = m_lastProbe;
     status.activeM.push_back(m_spindle == canon::SpindleDirection::Clockwise          ? 3
                              : m_spindle == canon::SpindleDirection::CounterClockwise ? 4
                                                                                       : 5);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/cycles/cycle_registry.h"
+#include "core/cycles/probing/probing_cycle.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
 #include "core/interp/klartext/cycle_definition_check.h"
@@ -168,7 +169,14 @@ void checkProgram(ProgramFile& program) {
                          "{1} is not supported yet; the program cannot run past this block"),
                      {deferred->feature});
             } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
-                if (cycle->subNumber <= 0 && cycles::findCycle(cycle->number) == nullptr) {
+                if (cycle->probe && (cycle->subNumber >= 0 ||
+                                     cycles::probing::findProbingCycle(cycle->number) == nullptr)) {
+                    diag(Severity::Error, "not-supported", line.firstLine, 1,
+                         KERF_TR_NOOP("touch probe cycle {1} is not supported yet; the program "
+                                      "cannot run past this block"),
+                         {std::to_string(cycle->number)});
+                } else if (!cycle->probe && cycle->subNumber <= 0 &&
+                           cycles::findCycle(cycle->number) == nullptr) {
                     diag(Severity::Error, "not-supported", line.firstLine, 1,
                          KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past "
                                       "this block"),

@@ -254,6 +254,7 @@ struct CycleDefinition {
     std::string rest;          // old style: the text after "n.m "
     cycles::CycleWords words;  // old style: `rest` as evaluated words (not for 12.1 PGM ...)
     std::vector<CycleParameter> parameters;
+    bool probe = false;  // TCH PROBE n: a touch-probe cycle (numbered apart from CYCL DEF)
 };
 // GLOBAL DEF nnn with its parameter lines.
 struct GlobalDefinition {

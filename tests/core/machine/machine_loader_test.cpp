@@ -7,6 +7,7 @@
 
 #include "core/base/atomic_file.h"
 #include "core/machine/machine_validation.h"
+#include "core/machine/machine_writer.h"
 
 namespace kerf::machine {
 namespace {
@@ -230,6 +231,30 @@ TEST(MachineLoaderErrors, SimulatedProbeBoxNeedsLowerBoundsBelowUpperOnes) {
     // Switched off, the bounds are not checked.
     EXPECT_EQ(problemsOf("base = \"lathe\"\n[simulation.probe]\nz_min = 5\nz_max = -2\n"),
               Lines{"(loaded)"});
+}
+
+TEST(MachineLoader, SetupErrorOfTheSimulatedPart) {
+    const MachineConfig config =
+        loaded("base = \"mill\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n");
+    EXPECT_EQ(config.setupError.shiftXMm, 1.5);
+    EXPECT_EQ(config.setupError.shiftYMm, -0.8);
+    EXPECT_EQ(config.setupError.shiftZMm, -0.2);
+    EXPECT_EQ(config.setupError.rotationDeg, 0.7);
+    // The writer spells the shift as a table of x, y, z; it reads back the same.
+    EXPECT_EQ(loaded(toToml(config)), config);
+    EXPECT_EQ(builtin("mill").setupError, SetupErrorConfig{});
+}
+
+TEST(MachineLoaderErrors, SetupErrorNeedsThreeNumbersInRange) {
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[simulation.setup]\nshift = [1.5, -0.8]\n"),
+              Lines{"mymill.toml:3:9: error: simulation.setup.shift must be an array of three "
+                    "numbers [x, y, z], not 2"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[simulation.setup]\nshift = [1, \"a\", 0]\n"),
+              Lines{"mymill.toml:3:13: error: simulation.setup.shift.y = \"a\" is a string; "
+                    "expected a number (mm)"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[simulation.setup]\nrotation = 200\n"),
+              Lines{"mymill.toml:3:12: error: simulation.setup.rotation = 200 is outside the "
+                    "allowed range -180 … 180 deg"});
 }
 
 TEST(MachineLoader, PresetAndSimulatedProbeFromTheFile) {

@@ -1,0 +1,210 @@
+// Cycle 1416 PROBING INTERSECTION (spec 8): two touches on each of two edges; the intersection of
+// the measured edges, their misalignment and the deviations along the surface normals. Working
+// plane XY (Q1139 = 3) only; no semi-automatic mode ("?", "@") and no extrusion (1493) yet.
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+
+#include "core/cycles/probing/probe_geometry.h"
+#include "core/cycles/probing/probe_sequence.h"
+#include "core/cycles/probing/probing_parameters.h"
+#include "core/cycles/probing/probing_registry_entries.h"
+
+namespace kerf::cycles::probing {
+
+namespace {
+
+using namespace parameters;
+
+constexpr ParameterDescriptor text(uint16_t q, const char* description) {
+    return {.q = q, .description = description, .unit = Unit::Text, .optional = true};
+}
+constexpr ParameterDescriptor distance(uint16_t q, const char* description) {
+    return {.q = q,
+            .description = description,
+            .unit = Unit::Millimetre,
+            .min = -999.999,
+            .max = 999.999};
+}
+constexpr ParameterDescriptor direction(uint16_t q, const char* description) {
+    return {.q = q,
+            .description = description,
+            .min = -1.0,
+            .max = 1.0,
+            .defaultValue = 1.0,
+            .integer = true};
+}
+
+constexpr ParameterDescriptor kParameters[] = {
+    length(1100, KERF_TR_NOOP("Nominal intersection, main axis")),
+    length(1101, KERF_TR_NOOP("Nominal intersection, secondary axis")),
+    {.q = 1102,
+     .description = KERF_TR_NOOP("Nominal position in the tool axis: the measuring height"),
+     .unit = Unit::Millimetre,
+     .min = -kLength,
+     .max = 9999.9999},
+    text(400, KERF_TR_NOOP("Tolerance of the 1st edge along its normal, e.g. \"0.1-0.1\"")),
+    angle(1130, KERF_TR_NOOP("Nominal angle of the 1st line"), 180.0),
+    direction(1131, KERF_TR_NOOP("Probing direction of the 1st line: +1 angle + 90, -1 - 90")),
+    distance(1132, KERF_TR_NOOP("Intersection to the 1st touch point of the 1st line")),
+    distance(1133, KERF_TR_NOOP("Intersection to the 2nd touch point of the 1st line")),
+    text(401, KERF_TR_NOOP("Tolerance of the 2nd edge along its normal")),
+    angle(1134, KERF_TR_NOOP("Nominal angle of the 2nd line"), 180.0),
+    direction(1135, KERF_TR_NOOP("Probing direction of the 2nd line: +1 angle + 90, -1 - 90")),
+    distance(1136, KERF_TR_NOOP("Intersection to the 1st touch point of the 2nd line")),
+    distance(1137, KERF_TR_NOOP("Intersection to the 2nd touch point of the 2nd line")),
+    choice(1139, KERF_TR_NOOP("Plane of the angles: 1 YZ, 2 ZX, 3 XY"), 1, 3, 3),
+    kSetUpClearance,
+    kClearanceHeight,
+    choice(1125,
+           KERF_TR_NOOP("Clearance height: -1 never, 0 cycle, 1 each edge, 2 each touch point"), -1,
+           2, 2),
+    choice(309, KERF_TR_NOOP("Tolerance error: 0 nothing, 1 stop, 2 stop on scrap only"), 0, 2, 0),
+    choice(1126, KERF_TR_NOOP("Align rotary axes: 0 no, 1 MOVE, 2 TURN"), 0, 2, 0),
+    choice(1120, KERF_TR_NOOP("Transfer position into the active preset: 0 no, 1 yes"), 0, 1, 0),
+    choice(1121, KERF_TR_NOOP("Accept rotation: 0 no, 1/3/5 basic rotation from edge 1/2/mean"), 0,
+           6, 0)};
+
+constexpr uint16_t kResults[] = {950, 951, 952, 953, 954, 955, 956, 957, 958, 959, 960, 964, 965,
+                                 980, 981, 982, 983, 984, 985, 986, 987, 988, 989, 990, 994, 995};
+
+// A tolerance "upper-lower" (both magnitudes: +upper, -lower) or "t" (±t); empty: none.
+struct Tolerance {
+    double upper = 0.0;
+    double lower = 0.0;
+    bool set = false;
+};
+std::optional<Tolerance> parseTolerance(const std::string& text) {
+    if (text.empty()) return Tolerance{};
+    char* end = nullptr;
+    const double upper = std::strtod(text.c_str(), &end);
+    if (end == text.c_str()) return std::nullopt;
+    if (*end == '\0') return Tolerance{upper, upper, true};
+    if (*end != '-') return std::nullopt;
+    const char* rest = end + 1;
+    const double lower = std::strtod(rest, &end);
+    if (end == rest || *end != '\0') return std::nullopt;
+    return Tolerance{upper, lower, true};
+}
+
+Vec2 unit(double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    return {std::cos(a), std::sin(a)};
+}
+
+std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, ProbingMachine& machine,
+                              ProbingResults& results) {
+    if (v.integer(1139) != 3) {
+        return probingError(1416, "not-supported",
+                            KERF_TR_NOOP("cycle {1}: only the XY plane (Q1139 = 3) so far"));
+    }
+    if (v.integer(1126) != 0 && v.integer(1121) == 0) {
+        return probingError(1416, "PRB-010",
+                            KERF_TR_NOOP("cycle {1}: aligning the rotary axes (Q1126) needs the "
+                                         "rotation accepted (Q1121)"));
+    }
+    if (v.integer(1126) != 0 || (v.integer(1121) % 2 == 0 && v.integer(1121) != 0)) {
+        return probingError(1416, "PRB-011",
+                            KERF_TR_NOOP("cycle {1}: this machine has no rotary table axis to "
+                                         "correct the rotation with"));
+    }
+    std::array<std::optional<Tolerance>, 2> tolerance = {parseTolerance(v.text(400)),
+                                                         parseTolerance(v.text(401))};
+    for (size_t i = 0; i < 2; ++i) {
+        if (!tolerance[i]) {
+            return probingError(1416, "cycle-parameter",
+                                KERF_TR_NOOP("cycle {1}: tolerance QS{2} = \"{3}\" is not "
+                                             "\"upper-lower\" or a number"),
+                                {std::to_string(400 + i), v.text(static_cast<uint16_t>(400 + i))});
+        }
+    }
+    // Q1125: 2 rises between touch points, 1 between the edges, 0 and -1 stay at the height.
+    CycleValues moves = v;
+    moves.set(261, v.number(1102));
+    moves.set(301, v.integer(1125) == 2 ? 1.0 : 0.0);
+    ProbeSequence sequence(1416, moves, probe, machine);
+    const Vec2 nominal(v.number(1100), v.number(1101));
+    const std::array<double, 2> angles = {v.number(1130), v.number(1134)};
+    std::array<Vec2, 4> points, touched;
+    std::array<Vec2, 2> directions;
+    for (size_t edge = 0; edge < 2; ++edge) {
+        const auto q = static_cast<uint16_t>(1130 + 4 * edge);
+        const Vec2 along = unit(angles[edge]);
+        directions[edge] = unit(angles[edge] + v.integer(q + 1) * 90.0);
+        for (size_t k = 0; k < 2; ++k) {
+            const size_t i = 2 * edge + k;
+            points[i] = nominal + v.number(static_cast<uint16_t>(q + 2 + k)) * along;
+            if (auto e = sequence.touchInPlane(points[i], directions[edge], touched[i])) return e;
+        }
+        if (v.integer(1125) == 1) sequence.retract();
+    }
+    if (v.integer(1125) != -1) sequence.retract();
+    auto corner = intersect(touched[0], touched[1], touched[2], touched[3]);
+    if (!corner) {
+        return probingError(1416, "PRB-019", KERF_TR_NOOP("cycle {1}: the two edges are parallel"));
+    }
+    // Three measured points and their deviations (the fourth is not exported, spec 8.3).
+    for (size_t i = 0; i < 3; ++i) {
+        const auto at = static_cast<uint16_t>(3 * i);
+        results.set(static_cast<uint16_t>(950 + at), touched[i].x());
+        results.set(static_cast<uint16_t>(951 + at), touched[i].y());
+        results.set(static_cast<uint16_t>(952 + at), v.number(1102));
+        results.set(static_cast<uint16_t>(980 + at), touched[i].x() - points[i].x());
+        results.set(static_cast<uint16_t>(981 + at), touched[i].y() - points[i].y());
+        results.set(static_cast<uint16_t>(982 + at), 0.0);
+    }
+    results.set(959, corner->x());
+    results.set(960, corner->y());
+    results.set(989, corner->x() - nominal.x());
+    results.set(990, corner->y() - nominal.y());
+    // Misalignment of each edge against its nominal angle, the line undirected (G7).
+    std::array<double, 2> misalignment;
+    for (size_t edge = 0; edge < 2; ++edge) {
+        double delta =
+            normalizedDeg(lineAngleDeg(touched[2 * edge], touched[2 * edge + 1]) - angles[edge]);
+        if (delta > 90.0) delta -= 180.0;
+        if (delta <= -90.0) delta += 180.0;
+        misalignment[edge] = delta;
+    }
+    const int accept = v.integer(1121);
+    const double rotation = accept >= 5   ? (misalignment[0] + misalignment[1]) / 2.0
+                            : accept >= 3 ? misalignment[1]
+                                          : misalignment[0];
+    results.set(964, rotation);
+    results.set(994, rotation);
+    // Deviation along each surface normal (against the probing direction): above the upper
+    // limit material is left (rework), below the lower limit too much is gone (scrap).
+    int status = 0;
+    for (size_t i = 0; i < 4; ++i) {
+        const size_t edge = i / 2;
+        if (!tolerance[edge]->set) continue;
+        const double deviation = (touched[i] - points[i]).dot(-directions[edge]);
+        if (deviation > tolerance[edge]->upper) status = std::max(status, 1);
+        if (deviation < -tolerance[edge]->lower) status = 2;
+    }
+    results.set(183, status);
+    const int reaction = v.integer(309);
+    if ((reaction == 1 && status != 0) || (reaction == 2 && status == 2)) {
+        results.toleranceStop =
+            probingError(1416, "PRB-006", KERF_TR_NOOP("cycle {1}: tolerance exceeded ({2})"),
+                         {status == 2 ? "scrap" : "rework"});
+    }
+    if (v.integer(1120) == 1) {
+        DatumResult datum;
+        datum.measured = {corner->x(), corner->y(), std::nullopt};
+        datum.nominal = {nominal.x(), nominal.y(), 0.0};
+        results.datum = datum;
+        results.transfer = 1;
+    }
+    if (accept != 0) results.basicRotationDeg = rotation;
+    results.tableRow = 0;
+    return std::nullopt;
+}
+
+}  // namespace
+
+const ProbingCycleDescriptor kProbe1416{1416, KERF_TR_NOOP("PROBING INTERSECTION"), kParameters,
+                                        run, kResults};
+
+}  // namespace kerf::cycles::probing

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/cycles/probing/probing_cycle.h"
+
+namespace kerf::cycles::probing {
+
+// Tolerance monitoring of the measuring cycles (spec 1.13): collects the monitored quantities,
+// then sets Q180 (good), Q181 (rework), Q182 (scrap) and, with Q309 = 1, the program stop.
+class MeasurementStatus {
+public:
+    enum class Feature : uint8_t { Inside, Outside };
+    explicit MeasurementStatus(Feature feature) : m_feature(feature) {}
+
+    // A size with limits `max`, `min` (both 0: not monitored).
+    void size(double actual, double max, double min);
+    // A position deviation with a tolerance (0: not monitored): beyond it is scrap.
+    void position(double deviation, double tolerance);
+
+    bool good() const { return !m_rework && !m_scrap; }
+    void write(int cycle, const CycleValues& values, ProbingResults& results) const;
+
+private:
+    Feature m_feature;
+    bool m_rework = false;
+    bool m_scrap = false;
+};
+
+// "label   value" with 4 decimals, the line format of the measuring logs (spec 1.15).
+std::string logLine(const std::string& label, double value);
+
+}  // namespace kerf::cycles::probing

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/cycles/cycle_context.h"
+#include "core/cycles/cycle_parameter.h"
+#include "core/cycles/cycle_values.h"
+
+// Touch-probe cycles (spec tnc-probing-cycles.md). A probing cycle moves the probe, touches,
+// computes and moves again; it talks to the machine through ProbingMachine, in the local frame
+// of the cycles (u main axis, v secondary axis, w tool axis; program coordinates). Positions are
+// those of the ball centre: the interpreter converts them to tool-tip positions.
+namespace kerf::cycles::probing {
+
+// The active touch probe: tool-table R (ball radius) and the linked touch-probe table row.
+struct ProbeData {
+    double ballRadius = 0.0;       // r_b
+    double probingFeed = 0.0;      // F, mm/min
+    double positioningFeed = 0.0;  // FMAX (F_PREPOS = FMAX_PROBE); 0: rapid traverse
+    double maxPath = 0.0;          // DIST
+    double setUp = 0.0;            // SET_UP
+};
+
+class ProbingMachine {
+public:
+    virtual ~ProbingMachine() = default;
+    virtual Vec3 ballCentre() const = 0;
+    // A positioning move of the ball centre at the probe's positioning feed.
+    virtual void moveTo(const Vec3& ballCentre) = 0;
+    // A touch from the current position along the unit vector `direction` at the probing feed:
+    // the ball centre when the stylus triggered, nothing when it did not within `maxPath`. The
+    // probe then returns to where the touch started.
+    virtual std::optional<Vec3> touch(const Vec3& direction, double maxPath) = 0;
+    // True when the stylus is deflected before a touch starts (PRB-002).
+    virtual bool deflected() const { return false; }
+};
+
+// Where a datum cycle puts the datum: the measured feature (local program coordinates, per local
+// axis u, v, w; unset axes are not measured) gets the nominal values (Q331, Q332, Q333 ...).
+struct DatumResult {
+    std::array<std::optional<double>, 3> measured;
+    std::array<double, 3> nominal{0.0, 0.0, 0.0};
+};
+
+struct ProbingResults {
+    std::vector<std::pair<uint16_t, double>> parameters;  // Q150..Q199 in mm and degrees
+    std::optional<DatumResult> datum;                     // 408-419
+    std::optional<double> basicRotationDeg;               // 400-405, 1416
+    int tableRow = 0;                                     // Q305
+    int transfer = 0;                                     // Q303: -1, 0 datum table, 1 presets
+    // Measuring log TCHPR<cycle>.TXT (Q281 = 1 or 2): the lines after the header.
+    std::optional<std::vector<std::string>> protocol;
+    bool protocolStop = false;                // Q281 = 2: stop after writing the log
+    std::optional<CycleError> toleranceStop;  // Q309 = 1 and a tolerance was exceeded
+
+    void set(uint16_t q, double value) { parameters.emplace_back(q, value); }
+};
+
+using ProbingFunction = std::optional<CycleError> (*)(const CycleValues&, const ProbeData&,
+                                                      ProbingMachine&, ProbingResults&);
+
+struct ProbingCycleDescriptor {
+    int number = 0;
+    const char* name = nullptr;  // English, KERF_TR_NOOP
+    std::span<const ParameterDescriptor> parameters;
+    ProbingFunction run = nullptr;
+    std::span<const uint16_t> results;  // set to 0 before the cycle runs (spec 1.11)
+};
+
+// The implemented probing cycles (TCH PROBE n); their numbers are independent of CYCL DEF's.
+std::span<const ProbingCycleDescriptor* const> allProbingCycles();
+const ProbingCycleDescriptor* findProbingCycle(int number);
+
+}  // namespace kerf::cycles::probing

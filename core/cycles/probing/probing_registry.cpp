@@ -1,0 +1,27 @@
+#include <algorithm>
+
+#include "core/cycles/probing/probing_registry_entries.h"
+
+namespace kerf::cycles::probing {
+
+namespace {
+
+const ProbingCycleDescriptor* const kAll[] = {
+    &kProbe400, &kProbe410, &kProbe411, &kProbe412, &kProbe413, &kProbe414, &kProbe415,
+    &kProbe416, &kProbe417, &kProbe419, &kProbe420, &kProbe421, &kProbe422, &kProbe423,
+    &kProbe424, &kProbe425, &kProbe426, &kProbe427, &kProbe1416};
+
+}  // namespace
+
+std::span<const ProbingCycleDescriptor* const> allProbingCycles() {
+    return kAll;
+}
+
+const ProbingCycleDescriptor* findProbingCycle(int number) {
+    auto it =
+        std::find_if(std::begin(kAll), std::end(kAll),
+                     [number](const ProbingCycleDescriptor* d) { return d->number == number; });
+    return it == std::end(kAll) ? nullptr : *it;
+}
+
+}  // namespace kerf::cycles::probing

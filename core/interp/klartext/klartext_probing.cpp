@@ -1,0 +1,318 @@
+// TCH PROBE cycles (spec tnc-probing-cycles.md): the probe's data, the touches on the simulated
+// workpiece, and the results written where the TNC writes them (Q parameters, the active preset,
+// the preset table, the measuring log).
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iterator>
+
+#include "core/base/translate.h"
+#include "core/cycles/probing/probing_cycle.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+#include "core/tables/probe_table.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+// Result parameters that are not lengths: angles and status flags keep their value in INCH
+// programs.
+bool isLengthResult(uint16_t q) {
+    static constexpr uint16_t kOthers[] = {150, 180, 181, 182, 183, 964, 965, 994, 995};
+    return std::find(std::begin(kOthers), std::end(kOthers), q) == std::end(kOthers);
+}
+
+std::string upperName(std::string_view text) {
+    std::string out(text);
+    for (char& c : out)
+        c = upper(c);
+    return out;
+}
+
+}  // namespace
+
+// The machine of a probing cycle in plain runs: moves go into the canonical stream, touches
+// are decided on the simulated workpiece (the program's blank placed with the machine file's
+// setup error). Positions are ball centres in the cycle's local frame.
+class KlartextInterpreter::ProbeAdapter final : public cycles::probing::ProbingMachine {
+public:
+    ProbeAdapter(KlartextInterpreter& interpreter, const cycles::probing::ProbeData& probe,
+                 const workpiece::SimulatedWorkpiece& part)
+        : m_k(interpreter), m_probe(probe), m_part(part) {}
+
+    Vec3 ballCentre() const override { return tipToBall(m_k.toLocal(m_k.m_programmed)); }
+
+    void moveTo(const Vec3& ballCentre) override {
+        const bool rapid = m_probe.positioningFeed <= 0.0;
+        m_k.moveProgrammed(m_k.fromLocal(ballToTip(ballCentre)), rapid, m_probe.positioningFeed);
+    }
+
+    std::optional<Vec3> touch(const Vec3& direction, double maxPath) override {
+        const Vec3 start = ballCentre();
+        auto hit = m_part.touch(toPart(start), toPart(start + direction) - toPart(start), maxPath,
+                                m_probe.ballRadius);
+        const Vec3 end = hit ? fromPart(*hit) : Vec3(start + maxPath * direction);
+        interp::ProgramStatus::Probe status;
+        status.triggered = hit.has_value();
+        status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(ballToTip(end)));
+        m_k.m_lastProbe = status;
+        m_k.moveProgrammed(m_k.fromLocal(ballToTip(end)), false, m_probe.probingFeed);
+        m_k.moveProgrammed(m_k.fromLocal(ballToTip(start)), true, 0.0);
+        if (!hit) return std::nullopt;
+        return end;
+    }
+
+    bool deflected() const override {
+        return m_part.touches(toPart(ballCentre()), m_probe.ballRadius);
+    }
+
+private:
+    Vec3 tipToBall(const Vec3& tip) const { return tip + Vec3(0.0, 0.0, m_probe.ballRadius); }
+    Vec3 ballToTip(const Vec3& ball) const { return ball - Vec3(0.0, 0.0, m_probe.ballRadius); }
+    // Local program coordinates <-> the workpiece frame of the start preset, where the part is.
+    Vec3 toPart(const Vec3& local) const {
+        return m_k.m_frame.toWorkpiece(m_k.fromLocal(local)).xyz();
+    }
+    Vec3 fromPart(const Vec3& part) const {
+        Pose p = m_k.m_frame.toWorkpiece(m_k.m_programmed);
+        p.setXyz(part);
+        return m_k.toLocal(m_k.m_frame.toProgram(p));
+    }
+
+    KlartextInterpreter& m_k;
+    const cycles::probing::ProbeData& m_probe;
+    const workpiece::SimulatedWorkpiece& m_part;
+};
+
+std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int cycle) {
+    if (m_tool.number < 0) {
+        fail("PRB-012",
+             KERF_TR_NOOP("touch probe cycle {1}: call the touch probe with TOOL CALL "
+                          "first (it defines the probe axis)"),
+             {std::to_string(cycle)});
+        return std::nullopt;
+    }
+    // The probe table row the tool links with TP_NO (row 1 without the column), read from the
+    // NC root; without a table the defaults of a new row.
+    int row = 1;
+    if (const tables::ToolTable* tools = m_settings.tools) {
+        const tables::ToolData* data = tools->byNumber(m_tool.number);
+        auto column = tools->table().findColumn("TP_NO");
+        if (data != nullptr && column) {
+            const std::string_view cell = tools->table().cell(data->row, *column);
+            if (!cell.empty()) row = std::atoi(std::string(cell).c_str());
+        }
+    }
+    if (!m_probeTable) {
+        const std::filesystem::path file = m_root.path() / "tchprobe.tp";
+        auto bytes = m_root.read(file);
+        auto table = bytes ? tables::ProbeTable::parse(*bytes, file.string())
+                           : tables::ProbeTable::parse(tables::ProbeTable::createDefault());
+        if (!table) {
+            fail(table.error().code.c_str(), table.error().messageTemplate.c_str(),
+                 table.error().args);
+            return std::nullopt;
+        }
+        m_probeTable = std::move(*table);
+    }
+    const tables::ProbeData* data = m_probeTable->byNumber(row);
+    if (data == nullptr) {
+        fail("PRB-012", KERF_TR_NOOP("touch probe cycle {1}: probe {2} is not in tchprobe.tp"),
+             {std::to_string(cycle), std::to_string(row)});
+        return std::nullopt;
+    }
+    cycles::probing::ProbeData probe;
+    probe.ballRadius = m_tool.effectiveRadius();
+    probe.probingFeed = data->probingFeed;
+    probe.positioningFeed = data->prepositionAtMachineRapid ? 0.0 : data->rapidFeed;
+    probe.maxPath = data->maxProbingPath;
+    probe.setUp = data->setUpClearance;
+    return probe;
+}
+
+workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
+    workpiece::Placement placement;
+    if (const machine::MachineConfig* machine = m_settings.machine) {
+        const machine::SetupErrorConfig& e = machine->setupError;
+        placement.shift = Vec3(e.shiftXMm, e.shiftYMm, e.shiftZMm);
+        placement.rotationDeg = e.rotationDeg;
+    }
+    workpiece::SimulatedWorkpiece part(placement);
+    if (m_blank) part.add(*m_blank);
+    return part;
+}
+
+void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
+    const auto* cycle = cycles::probing::findProbingCycle(def.number);
+    if (cycle == nullptr || def.subNumber >= 0) {
+        fail("not-supported", KERF_TR_NOOP("touch probe cycle {1} is not supported yet"),
+             {std::to_string(def.number)});
+        return;
+    }
+    const std::string owner = "touch probe cycle " + std::to_string(def.number);
+    cycles::CycleValues values;
+    std::vector<uint16_t> predef;
+    if (!resolveParameters(owner, cycle->parameters, def.parameters, values, &predef)) return;
+    for (uint16_t q : predef) {
+        if (std::find(m_globalSet.begin(), m_globalSet.end(), q) == m_globalSet.end()) {
+            fail("PRB-013", KERF_TR_NOOP("{1}: Q{2} is PREDEF but GLOBAL DEF 120 gives no value"),
+                 {owner, std::to_string(q)});
+            return;
+        }
+        values.set(q, m_globals.number(q));
+    }
+    if (def.number == 400 && m_basicRotationDeg != 0.0) {
+        // Cycle 400 cancels the basic rotation before it probes (spec 2).
+        const Pose at = m_frame.toWorkpiece(m_programmed);
+        m_frame.setRotation(m_frame.rotationDeg() - m_basicRotationDeg, false, workingPlane());
+        m_programmed = m_frame.toProgram(at);
+        m_basicRotationDeg = 0.0;
+    }
+    // A basic rotation is allowed; cycle 10 only in the datum cycles.
+    const bool datumCycle = def.number >= 408 && def.number <= 419;
+    const bool rotated = m_frame.rotationDeg() != m_basicRotationDeg;
+    if (m_frame.mirror() != 0 || m_frame.scale() != 1.0 || !m_frame.pointShift().xyz().isZero() ||
+        !m_frame.shift().xyz().isZero() || (rotated && !datumCycle)) {
+        fail("PRB-005",
+             KERF_TR_NOOP("{1}: probing is not possible while a coordinate "
+                          "transformation is active (cycles 7, 8, 10, 11, 26)"),
+             {owner});
+        return;
+    }
+    if (m_toolAxis != Axis::Z) {
+        fail("not-supported", KERF_TR_NOOP("{1}: probing runs with tool axis Z only so far"),
+             {owner});
+        return;
+    }
+    if (values.number(330) != 0.0) {
+        warn("not-supported",
+             KERF_TR_NOOP("{1}: tool monitoring (Q330) is not supported yet: "
+                          "the tool table is not corrected"),
+             {owner});
+    }
+    auto probe = activeProbe(def.number);
+    if (!probe) return;
+    if (!checkPathError(m_path.flush())) return;
+    for (uint16_t q : cycle->results)
+        m_q.set(QRef{QKind::Q, q}, 0.0);
+    const workpiece::SimulatedWorkpiece part = simulatedPart();
+    ProbeAdapter machine(*this, *probe, part);
+    cycles::probing::ProbingResults results;
+    if (auto error = cycle->run(values, *probe, machine, results)) {
+        failCycle(*error);
+        return;
+    }
+    for (const auto& [q, value] : results.parameters)
+        m_q.set(QRef{QKind::Q, q}, isLengthResult(q) ? value / lengthScale() : value);
+    if (results.protocol && !writeProtocol(def.number, cycle->name, *results.protocol)) return;
+    if (results.datum && !applyDatum(def.number, results)) return;
+    if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
+    if (results.toleranceStop) {
+        failCycle(*results.toleranceStop);
+        return;
+    }
+    if (results.protocolStop) emit(canon::ProgramStop{canon::StopKind::Program, -1});
+}
+
+bool KlartextInterpreter::writeProtocol(int cycle, const char* name,
+                                        const std::vector<std::string>& lines) {
+    if (!waitForCheck()) return false;
+    const ProgramFile& program = *m_levels.back().program;
+    std::string text =
+        "Measuring log for probing cycle " + std::to_string(cycle) + " " + upperName(name) + "\n";
+    text += "Measuring program: " + m_sources.displayName(program.fileId) + "\n";
+    for (const std::string& line : lines)
+        text += line + "\n";
+    text += "End of measuring log\n";
+    const std::filesystem::path file = m_root.path() / ("TCHPR" + std::to_string(cycle) + ".TXT");
+    if (auto error = m_root.replace(file, text)) {
+        fail("io", KERF_TR_NOOP("cannot write the measuring log {1}: {2}"),
+             {file.filename().string(), error->format()});
+        return false;
+    }
+    return true;
+}
+
+// Spec 1.12.1: Q305 = 0 sets the active preset (and row 0 of the preset table), Q305 > 0 with
+// Q303 = 1 writes that preset row without activating it.
+bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingResults& results) {
+    if (results.tableRow != 0 && results.transfer == 0) {
+        fail("not-supported",
+             KERF_TR_NOOP("touch probe cycle {1}: writing the datum table (Q303 = 0) is not "
+                          "supported yet"),
+             {std::to_string(cycle)});
+        return false;
+    }
+    // The measured feature moves to its nominal values along the axes of the active (possibly
+    // turned) frame: the preset moves by that difference, seen in workpiece coordinates.
+    Vec3 delta(0.0, 0.0, 0.0);
+    for (int i = 0; i < 3; ++i) {
+        const auto axis = static_cast<size_t>(i);
+        if (results.datum->measured[axis]) {
+            delta[i] = *results.datum->measured[axis] - results.datum->nominal[axis];
+        }
+    }
+    const Vec3 origin = toLocal(m_programmed);
+    const Vec3 moved = (m_frame.toWorkpiece(fromLocal(origin + delta)).xyz() -
+                        m_frame.toWorkpiece(fromLocal(origin)).xyz());
+    Pose offset = m_frame.preset();
+    offset.setXyz(offset.xyz() + moved);
+    const int row = results.tableRow;
+    if (!writePreset(cycle, row, offset)) return false;
+    if (row == 0) {
+        const Pose at = m_frame.toWorkpiece(m_programmed);
+        const double rotation = m_frame.rotationDeg();
+        m_frame.setPreset(offset);
+        // The basic rotation belongs to the preset: it stays.
+        if (rotation != 0.0) m_frame.setRotation(rotation, false, workingPlane());
+        m_programmed = m_frame.toProgram(at);
+    }
+    return true;
+}
+
+bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
+    if (!waitForCheck()) return false;
+    const std::filesystem::path file = m_root.path() / "PRESET.PR";
+    auto bytes = m_root.read(file);
+    auto table = bytes ? tables::PresetTable::parse(*bytes, file.string())
+                       : tables::PresetTable::parse(tables::PresetTable::createDefault());
+    if (!table) {
+        failCycle({table.error().code, table.error().messageTemplate, table.error().args});
+        return false;
+    }
+    if (table->byNumber(row) == nullptr) (void)table->addPreset(row);
+    for (Axis axis : {Axis::X, Axis::Y, Axis::Z}) {
+        const double ref = m_settings.presetInMachine[axis] + offset[axis];
+        if (auto error = table->setAxis(row, axisLetter(axis), ref)) {
+            failCycle({error->code, error->messageTemplate, error->args});
+            return false;
+        }
+    }
+    if (auto error = m_root.replace(file, table->serialize())) {
+        fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the preset table: {2}"),
+             {std::to_string(cycle), error->format()});
+        return false;
+    }
+    m_presetFile = std::move(*table);
+    return true;
+}
+
+// Cycle 400 with Q305 = 0: the basic rotation becomes active, kept as the rotation of the
+// working plane about the datum until the preset model has a basic-rotation column.
+bool KlartextInterpreter::applyBasicRotation(int cycle,
+                                             const cycles::probing::ProbingResults& results) {
+    if (results.tableRow != 0) {
+        fail("not-supported",
+             KERF_TR_NOOP("touch probe cycle {1}: writing a basic rotation to preset row Q305 "
+                          "is not supported yet"),
+             {std::to_string(cycle)});
+        return false;
+    }
+    const Pose at = m_frame.toWorkpiece(m_programmed);
+    m_frame.setRotation(m_frame.rotationDeg() + *results.basicRotationDeg, false, workingPlane());
+    m_programmed = m_frame.toProgram(at);
+    m_basicRotationDeg = *results.basicRotationDeg;
+    return true;
+}
+
+}  // namespace kerf::klartext

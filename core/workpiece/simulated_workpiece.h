@@ -1,0 +1,66 @@
+#pragma once
+
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "core/geometry/axes.h"
+
+namespace kerf::workpiece {
+
+// Shapes in the blank's programmed position, workpiece coordinates with the tool axis along z.
+struct Box {
+    Vec3 min{0.0, 0.0, 0.0};
+    Vec3 max{0.0, 0.0, 0.0};
+};
+// A cylinder about the tool axis from zMin to zMax.
+struct Cylinder {
+    Vec2 centre{0.0, 0.0};
+    double radius = 0.0;
+    double zMin = 0.0;
+    double zMax = 0.0;
+};
+
+// Material (the blank, a stud) or a cavity cut out of it (a hole, a pocket).
+struct Solid {
+    std::variant<Box, Cylinder> shape;
+    bool material = true;
+};
+
+// How the real part lies compared with its programmed position: rotated by `rotationDeg` about
+// the tool axis through the programmed origin, then shifted by `shift`.
+struct Placement {
+    Vec3 shift{0.0, 0.0, 0.0};
+    double rotationDeg = 0.0;
+};
+
+// The part a simulated touch probe touches: solids combined as (union of material) minus (union
+// of cavities), placed with a setup error the program does not know. Qt- and VTK-free, so the
+// headless run, the simulated machine and the graphics can share it.
+class SimulatedWorkpiece {
+public:
+    SimulatedWorkpiece() = default;
+    explicit SimulatedWorkpiece(Placement placement) : m_placement(placement) {}
+
+    void add(const Solid& solid) { m_solids.push_back(solid); }
+    bool empty() const { return m_solids.empty(); }
+    const Placement& placement() const { return m_placement; }
+
+    // Where a ball of `radius` whose centre starts at `start` and moves along the unit vector
+    // `direction` first touches the material: the ball centre at contact, or nothing when it
+    // travels `maxPath` freely. Coordinates are those of the machine (the real part's frame).
+    std::optional<Vec3> touch(const Vec3& start, const Vec3& direction, double maxPath,
+                              double radius) const;
+    // True when the ball already touches or penetrates material (a deflected stylus).
+    bool touches(const Vec3& centre, double radius) const;
+
+private:
+    // A lower bound of the distance from `p` to the material, negative inside; exact at faces
+    // away from the edges where two solids meet.
+    double distance(const Vec3& p) const;
+
+    Placement m_placement;
+    std::vector<Solid> m_solids;
+};
+
+}  // namespace kerf::workpiece

@@ -1,0 +1,86 @@
+// `kerf run` on examples/probing: the machine file misplaces the blank by 1.5 / -0.8 / -0.2 mm and
+// 0.7 degrees; the probing cycles find it (docs/probing.md).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class ProbingExamples : public testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("kerf_probing_examples_" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::copy(fs::path(KERF_SOURCE_DIR) / "examples/probing", dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    std::string read(const fs::path& file) {
+        std::stringstream text;
+        text << std::ifstream(file, std::ios::binary).rdbuf();
+        return text.str();
+    }
+    // kerf run on the example with its machine file; the report as JSON.
+    nlohmann::json run(const std::string& program, const std::string& options = "") {
+        const fs::path report = dir / (program + ".json");
+        const std::string command = std::string("\"") + KERF_BINARY + "\" run --machine \"" +
+                                    (dir / "machine.toml").string() + "\" " + options + " \"" +
+                                    (dir / (program + ".H")).string() + "\" --report \"" +
+                                    report.string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+        EXPECT_EQ(std::system(command.c_str()), 0) << read(dir / "errors");
+        EXPECT_EQ(read(dir / "errors"), "");
+        return nlohmann::json::parse(read(report));
+    }
+
+    fs::path dir;
+};
+
+TEST_F(ProbingExamples, Stud413MovesToTheRealCentreAboveTheRealTop) {
+    const nlohmann::json report = run("STUD413");
+    EXPECT_TRUE(report["ok"].get<bool>());
+    // L X+0 Y+0 Z+5 after the datum: the stud's real centre, 5 mm above its real top.
+    EXPECT_NEAR(report["final_position"]["X"].get<double>(), 1.5, 1e-6);
+    EXPECT_NEAR(report["final_position"]["Y"].get<double>(), -0.8, 1e-6);
+    EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 4.8, 1e-6);
+}
+
+TEST_F(ProbingExamples, SetupFindsTheCornerWritesThePresetAndTheLog) {
+    for (const char* options : {"", "--motion"}) {
+        const nlohmann::json report = run("SETUP", options);
+        // After the basic rotation and the datums, X0 Y0 is the real corner, Z0 the real top.
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 1.5, 1e-6) << options;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(), -0.8, 1e-6) << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 9.8, 1e-6) << options;
+    }
+    // Preset row 0 in machine coordinates: the built-in mill's workpiece origin is at Z -400.
+    const std::string presets = read(dir / "PRESET.PR");
+    EXPECT_NE(presets.find("+1.50000      -0.80000      -400.2"), std::string::npos) << presets;
+    const std::string log = read(dir / "TCHPR426.TXT");
+    EXPECT_NE(log.find("  length                    +100.0000\n"), std::string::npos) << log;
+    EXPECT_NE(log.find("  centre line               +50.0000\n"), std::string::npos) << log;
+}
+
+TEST_F(ProbingExamples, Intersection1416OfSeed004MakesTheRealCornerTheDatum) {
+    // Q1120 = 1 and Q1121 = 1: the active preset moves to the measured corner and turns with the
+    // edge. The ball touches the faces turned by 0.7 degrees axis-parallel, so each measured
+    // line lies 2 (1 / cos 0.7deg - 1) = 0.15 um in front of its face: the corner is that close.
+    const nlohmann::json report = run("INTERSECT");
+    EXPECT_TRUE(report["ok"].get<bool>());
+    EXPECT_NEAR(report["final_position"]["X"].get<double>(), 1.5, 0.0002);
+    EXPECT_NEAR(report["final_position"]["Y"].get<double>(), -0.8, 0.0002);
+    EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 10.0, 1e-9);
+}
+
+TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
+    EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
+}
+
+}  // namespace
