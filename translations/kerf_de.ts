@@ -5926,559 +5926,559 @@ editieren</translation>
     </message>
     <message>
         <source>cycle {1}: the stepping angle Q247 must be at least 5 degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: der Winkelschritt Q247 muss mindestens 5 Grad betragen</translation>
     </message>
     <message>
         <source>cycle {1}: the touch points give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: die Antastpunkte ergeben keinen Kreis</translation>
     </message>
     <message>
         <source>1st touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1. Antastpunkt Hauptachse</translation>
     </message>
     <message>
         <source>1st touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1. Antastpunkt Nebenachse</translation>
     </message>
     <message>
         <source>Spacing of touch points 1 and 2 in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand der Antastpunkte 1 und 2 in der Hauptachse</translation>
     </message>
     <message>
         <source>3rd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3. Antastpunkt Hauptachse</translation>
     </message>
     <message>
         <source>3rd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3. Antastpunkt Nebenachse</translation>
     </message>
     <message>
         <source>Spacing of touch points 3 and 4 in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand der Antastpunkte 3 und 4 in der Nebenachse</translation>
     </message>
     <message>
         <source>Basic rotation too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Auch Grunddrehung setzen: 0 nein, 1 ja</translation>
     </message>
     <message>
         <source>Corner, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ecke Hauptachse</translation>
     </message>
     <message>
         <source>Corner, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ecke Nebenachse</translation>
     </message>
     <message>
         <source>Corner: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ecke: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</translation>
     </message>
     <message>
         <source>Bolt-circle centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Lochkreis-Mitte Hauptachse</translation>
     </message>
     <message>
         <source>Bolt-circle centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Lochkreis-Mitte Nebenachse</translation>
     </message>
     <message>
         <source>Nominal bolt-circle diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Durchmesser des Lochkreises</translation>
     </message>
     <message>
         <source>Polar angle of the 1st hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Polarwinkel der 1. Bohrungsmitte</translation>
     </message>
     <message>
         <source>Polar angle of the 2nd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Polarwinkel der 2. Bohrungsmitte</translation>
     </message>
     <message>
         <source>Polar angle of the 3rd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Polarwinkel der 3. Bohrungsmitte</translation>
     </message>
     <message>
         <source>cycle {1}: the two edges are parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: die beiden Kanten sind parallel</translation>
     </message>
     <message>
         <source>cycle {1}: the hole centres give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: die Bohrungsmitten ergeben keinen Kreis</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT ECKE AUSSEN</translation>
     </message>
     <message>
         <source>DATUM INSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT ECKE INNEN</translation>
     </message>
     <message>
         <source>DATUM CIRCLE CENTER</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT LOCHKREIS-MITTE</translation>
     </message>
     <message>
         <source>Nominal intersection, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Schnittpunkt Hauptachse</translation>
     </message>
     <message>
         <source>Nominal intersection, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Schnittpunkt Nebenachse</translation>
     </message>
     <message>
         <source>Nominal position in the tool axis: the measuring height</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Position in der Werkzeugachse: die Messhöhe</translation>
     </message>
     <message>
         <source>Tolerance of the 1st edge along its normal, e.g. &quot;0.1-0.1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranz der 1. Kante entlang ihrer Normalen, z. B. &quot;0.1-0.1&quot;</translation>
     </message>
     <message>
         <source>Nominal angle of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Winkel der 1. Geraden</translation>
     </message>
     <message>
         <source>Probing direction of the 1st line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastrichtung der 1. Geraden: +1 Winkel + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand vom Schnittpunkt zum 1. Antastpunkt der 1. Geraden</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand vom Schnittpunkt zum 2. Antastpunkt der 1. Geraden</translation>
     </message>
     <message>
         <source>Tolerance of the 2nd edge along its normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranz der 2. Kante entlang ihrer Normalen</translation>
     </message>
     <message>
         <source>Nominal angle of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Winkel der 2. Geraden</translation>
     </message>
     <message>
         <source>Probing direction of the 2nd line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastrichtung der 2. Geraden: +1 Winkel + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand vom Schnittpunkt zum 1. Antastpunkt der 2. Geraden</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand vom Schnittpunkt zum 2. Antastpunkt der 2. Geraden</translation>
     </message>
     <message>
         <source>Plane of the angles: 1 YZ, 2 ZX, 3 XY</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebene der Winkel: 1 YZ, 2 ZX, 3 XY</translation>
     </message>
     <message>
         <source>Clearance height: -1 never, 0 cycle, 1 each edge, 2 each touch point</source>
-        <translation type="unfinished"></translation>
+        <translation>Sichere Höhe: -1 nie, 0 Zyklus, 1 jede Kante, 2 jeder Antastpunkt</translation>
     </message>
     <message>
         <source>Tolerance error: 0 nothing, 1 stop, 2 stop on scrap only</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranzfehler: 0 nichts, 1 Halt, 2 Halt nur bei Ausschuss</translation>
     </message>
     <message>
         <source>Align rotary axes: 0 no, 1 MOVE, 2 TURN</source>
-        <translation type="unfinished"></translation>
+        <translation>Drehachsen ausrichten: 0 nein, 1 MOVE, 2 TURN</translation>
     </message>
     <message>
         <source>Transfer position into the active preset: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Position in den aktiven Bezugspunkt übernehmen: 0 nein, 1 ja</translation>
     </message>
     <message>
         <source>Accept rotation: 0 no, 1/3/5 basic rotation from edge 1/2/mean</source>
-        <translation type="unfinished"></translation>
+        <translation>Drehung übernehmen: 0 nein, 1/3/5 Grunddrehung aus Kante 1/2/Mittelwert</translation>
     </message>
     <message>
         <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: bisher nur die XY-Ebene (Q1139 = 3)</translation>
     </message>
     <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: das Ausrichten der Drehachsen (Q1126) setzt die Übernahme der Drehung (Q1121) voraus</translation>
     </message>
     <message>
         <source>cycle {1}: this machine has no rotary table axis to correct the rotation with</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: diese Maschine hat keine Rundtischachse, mit der die Drehung korrigiert werden kann</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance QS{2} = &quot;{3}&quot; is not &quot;upper-lower&quot; or a number</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: Toleranz QS{2} = &quot;{3}&quot; ist weder &quot;oben-unten&quot; noch eine Zahl</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance exceeded ({2})</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: Toleranz überschritten ({2})</translation>
     </message>
     <message>
         <source>PROBING INTERSECTION</source>
-        <translation type="unfinished"></translation>
+        <translation>ANTASTEN SCHNITTPUNKT</translation>
     </message>
     <message>
         <source>2nd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2. Antastpunkt Hauptachse</translation>
     </message>
     <message>
         <source>2nd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2. Antastpunkt Nebenachse</translation>
     </message>
     <message>
         <source>Preset rotation angle: angle of the reference line</source>
-        <translation type="unfinished"></translation>
+        <translation>Voreinstellung Drehwinkel: Winkel der Bezugsgeraden</translation>
     </message>
     <message>
         <source>BASIC ROTATION</source>
-        <translation type="unfinished"></translation>
+        <translation>GRUNDDREHUNG</translation>
     </message>
     <message>
         <source>Centre in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Mitte in der Hauptachse</translation>
     </message>
     <message>
         <source>Centre in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Mitte in der Nebenachse</translation>
     </message>
     <message>
         <source>Side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Seitenlänge parallel zur Hauptachse</translation>
     </message>
     <message>
         <source>Side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Seitenlänge parallel zur Nebenachse</translation>
     </message>
     <message>
         <source>Touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastpunkt Hauptachse</translation>
     </message>
     <message>
         <source>Touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastpunkt Nebenachse</translation>
     </message>
     <message>
         <source>Touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastpunkt: Soll-Oberfläche in der Werkzeugachse</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main, 2 secondary, 3 tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Messachse: 1 Hauptachse, 2 Nebenachse, 3 Werkzeugachse</translation>
     </message>
     <message>
         <source>New datum in the measuring axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Bezugspunkt in der Messachse</translation>
     </message>
     <message>
         <source>DATUM INSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT RECHTECK INNEN</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT RECHTECK AUSSEN</translation>
     </message>
     <message>
         <source>DATUM INSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT KREIS INNEN</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT KREIS AUSSEN</translation>
     </message>
     <message>
         <source>DATUM IN TS AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT TS-ACHSE</translation>
     </message>
     <message>
         <source>DATUM IN ONE AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>BEZUGSPUNKT EINZELNE ACHSE</translation>
     </message>
     <message>
         <source>cycle {1}: define the measured-value transfer (Q303)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: die Messwert-Übergabe (Q303) definieren</translation>
     </message>
     <message>
         <source>Nominal centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Mitte Hauptachse</translation>
     </message>
     <message>
         <source>Nominal centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Mitte Nebenachse</translation>
     </message>
     <message>
         <source>Maximum permitted diameter (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größter zulässiger Durchmesser (0: nicht überwacht)</translation>
     </message>
     <message>
         <source>Minimum permitted diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinster zulässiger Durchmesser</translation>
     </message>
     <message>
         <source>Centre tolerance, main axis (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mittentoleranz Hauptachse (0: nicht überwacht)</translation>
     </message>
     <message>
         <source>Centre tolerance, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Mittentoleranz Nebenachse</translation>
     </message>
     <message>
         <source>Compatibility only, no effect</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur zur Kompatibilität, ohne Wirkung</translation>
     </message>
     <message>
         <source>Starting point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Startpunkt Hauptachse</translation>
     </message>
     <message>
         <source>Starting point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Startpunkt Nebenachse</translation>
     </message>
     <message>
         <source>Offset before the second measurement (0: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Versatz vor der zweiten Messung (0: keiner)</translation>
     </message>
     <message>
         <source>Nominal length</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Länge</translation>
     </message>
     <message>
         <source>Maximum permitted length (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größte zulässige Länge (0: nicht überwacht)</translation>
     </message>
     <message>
         <source>Minimum permitted length</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinste zulässige Länge</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Seitenlänge parallel zur Hauptachse</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Soll-Seitenlänge parallel zur Nebenachse</translation>
     </message>
     <message>
         <source>Maximum length of side 1 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größte Länge der Seite 1 (0: nicht überwacht)</translation>
     </message>
     <message>
         <source>Minimum length of side 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinste Länge der Seite 1</translation>
     </message>
     <message>
         <source>Maximum length of side 2 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größte Länge der Seite 2 (0: nicht überwacht)</translation>
     </message>
     <message>
         <source>Minimum length of side 2</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinste Länge der Seite 2</translation>
     </message>
     <message>
         <source>Maximum permitted value (0 with Q289 = 0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größter zulässiger Wert (0 bei Q289 = 0: nicht überwacht)</translation>
     </message>
     <message>
         <source>Minimum permitted value</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinster zulässiger Wert</translation>
     </message>
     <message>
         <source>MEASURE ANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN WINKEL</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE INSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN RECHTECK INNEN</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN RECHTECK AUSSEN</translation>
     </message>
     <message>
         <source>MEASURE COORDINATE</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN KOORDINATE</translation>
     </message>
     <message>
         <source>MEASURE HOLE</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN BOHRUNG</translation>
     </message>
     <message>
         <source>MEASURE CIRCLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN KREIS AUSSEN</translation>
     </message>
     <message>
         <source>MEASURE INSIDE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN BREITE INNEN</translation>
     </message>
     <message>
         <source>MEASURE RIDGE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>MESSEN STEG AUSSEN</translation>
     </message>
     <message>
         <source>cycle {1}: stylus already deflected</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: Taststift bereits ausgelenkt</translation>
     </message>
     <message>
         <source>cycle {1}: touch point not reached within the measuring path DIST = {2} mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Zyklus {1}: Antastpunkt innerhalb des Messwegs DIST = {2} mm nicht erreicht</translation>
     </message>
     <message>
         <source>Measuring height: ball centre in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Messhöhe: Kugelmitte in der Werkzeugachse</translation>
     </message>
     <message>
         <source>Set-up clearance, added to SET_UP of the probe table</source>
-        <translation type="unfinished"></translation>
+        <translation>Sicherheits-Abstand, zusätzlich zu SET_UP aus der Tastsystemtabelle</translation>
     </message>
     <message>
         <source>Clearance height: no collision with workpiece or fixtures</source>
-        <translation type="unfinished"></translation>
+        <translation>Sichere Höhe: keine Kollision mit Werkstück oder Spannmitteln</translation>
     </message>
     <message>
         <source>Move to clearance height between points: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Zwischen Punkten auf sichere Höhe fahren: 0 nein, 1 ja</translation>
     </message>
     <message>
         <source>Number in table: 0 sets the display (active preset)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nummer in Tabelle: 0 setzt die Anzeige (aktiver Bezugspunkt)</translation>
     </message>
     <message>
         <source>Measured-value transfer: 0 datum table, 1 preset table</source>
-        <translation type="unfinished"></translation>
+        <translation>Messwert-Übergabe: 0 Nullpunkt-Tabelle, 1 Bezugspunkttabelle</translation>
     </message>
     <message>
         <source>New datum in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Bezugspunkt in der Hauptachse</translation>
     </message>
     <message>
         <source>New datum in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Bezugspunkt in der Nebenachse</translation>
     </message>
     <message>
         <source>New datum in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Bezugspunkt in der Werkzeugachse</translation>
     </message>
     <message>
         <source>Probe in the tool axis too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Auch in der Werkzeugachse antasten: 0 nein, 1 ja</translation>
     </message>
     <message>
         <source>Tool-axis touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastpunkt Werkzeugachse: Koordinate Hauptachse</translation>
     </message>
     <message>
         <source>Tool-axis touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastpunkt Werkzeugachse: Koordinate Nebenachse</translation>
     </message>
     <message>
         <source>Tool-axis touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Antastpunkt Werkzeugachse: Soll-Oberfläche in der Werkzeugachse</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main axis, 2 secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Messachse: 1 Hauptachse, 2 Nebenachse</translation>
     </message>
     <message>
         <source>Traverse direction toward the workpiece: -1 or +1</source>
-        <translation type="unfinished"></translation>
+        <translation>Verfahrrichtung zum Werkstück: -1 oder +1</translation>
     </message>
     <message>
         <source>Starting angle: main axis to touch point 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwinkel: Hauptachse zu Antastpunkt 1</translation>
     </message>
     <message>
         <source>Stepping angle between touch points (sign = direction)</source>
-        <translation type="unfinished"></translation>
+        <translation>Winkelschritt zwischen den Antastpunkten (Vorzeichen = Richtung)</translation>
     </message>
     <message>
         <source>Number of touch points in the plane: 3 or 4</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzahl der Antastpunkte in der Ebene: 3 oder 4</translation>
     </message>
     <message>
         <source>Path between points: 0 straight line, 1 arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn zwischen den Punkten: 0 Gerade, 1 Kreisbogen</translation>
     </message>
     <message>
         <source>Measuring log: 0 none, 1 write TCHPRnnn.TXT, 2 also stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Messprotokoll: 0 keins, 1 TCHPRnnn.TXT schreiben, 2 zusätzlich anhalten</translation>
     </message>
     <message>
         <source>PGM stop on tolerance error: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>PGM-Stopp bei Toleranzfehler: 0 nein, 1 ja</translation>
     </message>
     <message>
         <source>Tool for monitoring: 0 none</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeug für Überwachung: 0 keins</translation>
     </message>
     <message>
         <source>PROBE expected after TCH</source>
-        <translation type="unfinished"></translation>
+        <translation>PROBE nach TCH erwartet</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: call the touch probe with TOOL CALL first (it defines the probe axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1}: zuerst das Tastsystem mit TOOL CALL aufrufen (es legt die Tastsystemachse fest)</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: probe {2} is not in tchprobe.tp</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1}: Tastsystem {2} ist nicht in tchprobe.tp</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1} wird noch nicht unterstützt</translation>
     </message>
     <message>
         <source>{1}: Q{2} is PREDEF but GLOBAL DEF 120 gives no value</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Q{2} ist PREDEF, aber GLOBAL DEF 120 liefert keinen Wert</translation>
     </message>
     <message>
         <source>{1}: probing is not possible while a coordinate transformation is active (cycles 7, 8, 10, 11, 26)</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Antasten ist nicht möglich, solange eine Koordinatenumrechnung aktiv ist (Zyklen 7, 8, 10, 11, 26)</translation>
     </message>
     <message>
         <source>{1}: probing runs with tool axis Z only so far</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Antasten funktioniert bisher nur mit Werkzeugachse Z</translation>
     </message>
     <message>
         <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Werkzeugüberwachung (Q330) wird noch nicht unterstützt: die Werkzeugtabelle wird nicht korrigiert</translation>
     </message>
     <message>
         <source>cannot write the measuring log {1}: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>Messprotokoll {1} kann nicht geschrieben werden: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1}: das Schreiben in die Nullpunkt-Tabelle (Q303 = 0) wird noch nicht unterstützt</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1}: die Bezugspunkttabelle kann nicht geschrieben werden: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1}: das Schreiben einer Grunddrehung in die Bezugspunkt-Zeile Q305 wird noch nicht unterstützt</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastsystemzyklus {1} wird noch nicht unterstützt; das Programm kann nicht über diesen Satz hinaus laufen</translation>
     </message>
     <message>
         <source>{1} must be an array of three numbers [x, y, z], not {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>{1} muss eine Liste aus drei Zahlen [x, y, z] sein, nicht {2}</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine X; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation: wie weit das reale Rohteil in Maschinen-X von seiner programmierten Lage abweicht; shift = [x, y, z] schreiben</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Y; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation: wie weit das reale Rohteil in Maschinen-Y von seiner programmierten Lage abweicht; shift = [x, y, z] schreiben</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Z; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation: wie weit das reale Rohteil in Maschinen-Z von seiner programmierten Lage abweicht; shift = [x, y, z] schreiben</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation: wie weit das reale Rohteil um die Werkzeugachse durch seinen programmierten Nullpunkt gedreht ist</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -5926,559 +5926,559 @@ ciclo</translation>
     </message>
     <message>
         <source>cycle {1}: the stepping angle Q247 must be at least 5 degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: el incremento angular Q247 debe ser de al menos 5 grados</translation>
     </message>
     <message>
         <source>cycle {1}: the touch points give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: los puntos de palpación no forman un círculo</translation>
     </message>
     <message>
         <source>1st touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1.er punto de palpación, eje principal</translation>
     </message>
     <message>
         <source>1st touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1.er punto de palpación, eje auxiliar</translation>
     </message>
     <message>
         <source>Spacing of touch points 1 and 2 in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia entre los puntos de palpación 1 y 2 en el eje principal</translation>
     </message>
     <message>
         <source>3rd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3.er punto de palpación, eje principal</translation>
     </message>
     <message>
         <source>3rd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3.er punto de palpación, eje auxiliar</translation>
     </message>
     <message>
         <source>Spacing of touch points 3 and 4 in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia entre los puntos de palpación 3 y 4 en el eje auxiliar</translation>
     </message>
     <message>
         <source>Basic rotation too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar también el giro básico: 0 no, 1 sí</translation>
     </message>
     <message>
         <source>Corner, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquina, eje principal</translation>
     </message>
     <message>
         <source>Corner, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquina, eje auxiliar</translation>
     </message>
     <message>
         <source>Corner: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquina: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</translation>
     </message>
     <message>
         <source>Bolt-circle centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro del círculo de taladros, eje principal</translation>
     </message>
     <message>
         <source>Bolt-circle centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro del círculo de taladros, eje auxiliar</translation>
     </message>
     <message>
         <source>Nominal bolt-circle diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro nominal del círculo de taladros</translation>
     </message>
     <message>
         <source>Polar angle of the 1st hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo polar del centro del 1.er taladro</translation>
     </message>
     <message>
         <source>Polar angle of the 2nd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo polar del centro del 2.º taladro</translation>
     </message>
     <message>
         <source>Polar angle of the 3rd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo polar del centro del 3.er taladro</translation>
     </message>
     <message>
         <source>cycle {1}: the two edges are parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: las dos aristas son paralelas</translation>
     </message>
     <message>
         <source>cycle {1}: the hole centres give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: los centros de los taladros no forman un círculo</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA ESQUINA EXTERIOR</translation>
     </message>
     <message>
         <source>DATUM INSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA ESQUINA INTERIOR</translation>
     </message>
     <message>
         <source>DATUM CIRCLE CENTER</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA CENTRO CÍRCULO DE TALADROS</translation>
     </message>
     <message>
         <source>Nominal intersection, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de intersección nominal, eje principal</translation>
     </message>
     <message>
         <source>Nominal intersection, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de intersección nominal, eje auxiliar</translation>
     </message>
     <message>
         <source>Nominal position in the tool axis: the measuring height</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición nominal en el eje de la herramienta: la altura de medición</translation>
     </message>
     <message>
         <source>Tolerance of the 1st edge along its normal, e.g. &quot;0.1-0.1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancia de la 1.ª arista a lo largo de su normal, p. ej. &quot;0.1-0.1&quot;</translation>
     </message>
     <message>
         <source>Nominal angle of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo nominal de la 1.ª recta</translation>
     </message>
     <message>
         <source>Probing direction of the 1st line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Dirección de palpación de la 1.ª recta: +1 ángulo + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia del punto de intersección al 1.er punto de palpación de la 1.ª recta</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia del punto de intersección al 2.º punto de palpación de la 1.ª recta</translation>
     </message>
     <message>
         <source>Tolerance of the 2nd edge along its normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancia de la 2.ª arista a lo largo de su normal</translation>
     </message>
     <message>
         <source>Nominal angle of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo nominal de la 2.ª recta</translation>
     </message>
     <message>
         <source>Probing direction of the 2nd line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Dirección de palpación de la 2.ª recta: +1 ángulo + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia del punto de intersección al 1.er punto de palpación de la 2.ª recta</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia del punto de intersección al 2.º punto de palpación de la 2.ª recta</translation>
     </message>
     <message>
         <source>Plane of the angles: 1 YZ, 2 ZX, 3 XY</source>
-        <translation type="unfinished"></translation>
+        <translation>Plano de los ángulos: 1 YZ, 2 ZX, 3 XY</translation>
     </message>
     <message>
         <source>Clearance height: -1 never, 0 cycle, 1 each edge, 2 each touch point</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura segura: -1 nunca, 0 ciclo, 1 cada arista, 2 cada punto de palpación</translation>
     </message>
     <message>
         <source>Tolerance error: 0 nothing, 1 stop, 2 stop on scrap only</source>
-        <translation type="unfinished"></translation>
+        <translation>Error de tolerancia: 0 nada, 1 parada, 2 parada solo con pieza rechazada</translation>
     </message>
     <message>
         <source>Align rotary axes: 0 no, 1 MOVE, 2 TURN</source>
-        <translation type="unfinished"></translation>
+        <translation>Alinear los ejes giratorios: 0 no, 1 MOVE, 2 TURN</translation>
     </message>
     <message>
         <source>Transfer position into the active preset: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Transferir la posición al punto de referencia activo: 0 no, 1 sí</translation>
     </message>
     <message>
         <source>Accept rotation: 0 no, 1/3/5 basic rotation from edge 1/2/mean</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceptar el giro: 0 no, 1/3/5 giro básico de la arista 1/2/media</translation>
     </message>
     <message>
         <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: por ahora solo el plano XY (Q1139 = 3)</translation>
     </message>
     <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: alinear los ejes giratorios (Q1126) requiere aceptar el giro (Q1121)</translation>
     </message>
     <message>
         <source>cycle {1}: this machine has no rotary table axis to correct the rotation with</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: esta máquina no tiene ningún eje de mesa giratoria con el que corregir el giro</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance QS{2} = &quot;{3}&quot; is not &quot;upper-lower&quot; or a number</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: la tolerancia QS{2} = &quot;{3}&quot; no es &quot;superior-inferior&quot; ni un número</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance exceeded ({2})</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: tolerancia sobrepasada ({2})</translation>
     </message>
     <message>
         <source>PROBING INTERSECTION</source>
-        <translation type="unfinished"></translation>
+        <translation>PALPAR PUNTO DE INTERSECCIÓN</translation>
     </message>
     <message>
         <source>2nd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2.º punto de palpación, eje principal</translation>
     </message>
     <message>
         <source>2nd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2.º punto de palpación, eje auxiliar</translation>
     </message>
     <message>
         <source>Preset rotation angle: angle of the reference line</source>
-        <translation type="unfinished"></translation>
+        <translation>Preajuste del ángulo de giro: ángulo de la recta de referencia</translation>
     </message>
     <message>
         <source>BASIC ROTATION</source>
-        <translation type="unfinished"></translation>
+        <translation>GIRO BÁSICO</translation>
     </message>
     <message>
         <source>Centre in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro en el eje principal</translation>
     </message>
     <message>
         <source>Centre in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro en el eje auxiliar</translation>
     </message>
     <message>
         <source>Side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud lateral paralela al eje principal</translation>
     </message>
     <message>
         <source>Side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud lateral paralela al eje auxiliar</translation>
     </message>
     <message>
         <source>Touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de palpación, eje principal</translation>
     </message>
     <message>
         <source>Touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de palpación, eje auxiliar</translation>
     </message>
     <message>
         <source>Touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de palpación, superficie nominal en el eje de la herramienta</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main, 2 secondary, 3 tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Eje de medición: 1 principal, 2 auxiliar, 3 eje de la herramienta</translation>
     </message>
     <message>
         <source>New datum in the measuring axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuevo punto de referencia en el eje de medición</translation>
     </message>
     <message>
         <source>DATUM INSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA RECTÁNGULO INTERIOR</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA RECTÁNGULO EXTERIOR</translation>
     </message>
     <message>
         <source>DATUM INSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA CÍRCULO INTERIOR</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA CÍRCULO EXTERIOR</translation>
     </message>
     <message>
         <source>DATUM IN TS AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA EJE DEL PALPADOR</translation>
     </message>
     <message>
         <source>DATUM IN ONE AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNTO DE REFERENCIA EN UN EJE</translation>
     </message>
     <message>
         <source>cycle {1}: define the measured-value transfer (Q303)</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: defina la transferencia del valor medido (Q303)</translation>
     </message>
     <message>
         <source>Nominal centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro nominal, eje principal</translation>
     </message>
     <message>
         <source>Nominal centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro nominal, eje auxiliar</translation>
     </message>
     <message>
         <source>Maximum permitted diameter (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro máximo admisible (0: sin supervisión)</translation>
     </message>
     <message>
         <source>Minimum permitted diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro mínimo admisible</translation>
     </message>
     <message>
         <source>Centre tolerance, main axis (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancia del centro, eje principal (0: sin supervisión)</translation>
     </message>
     <message>
         <source>Centre tolerance, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancia del centro, eje auxiliar</translation>
     </message>
     <message>
         <source>Compatibility only, no effect</source>
-        <translation type="unfinished"></translation>
+        <translation>Solo por compatibilidad, sin efecto</translation>
     </message>
     <message>
         <source>Starting point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto inicial, eje principal</translation>
     </message>
     <message>
         <source>Starting point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto inicial, eje auxiliar</translation>
     </message>
     <message>
         <source>Offset before the second measurement (0: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazamiento antes de la segunda medición (0: ninguno)</translation>
     </message>
     <message>
         <source>Nominal length</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud nominal</translation>
     </message>
     <message>
         <source>Maximum permitted length (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud máxima admisible (0: sin supervisión)</translation>
     </message>
     <message>
         <source>Minimum permitted length</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud mínima admisible</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud lateral nominal paralela al eje principal</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud lateral nominal paralela al eje auxiliar</translation>
     </message>
     <message>
         <source>Maximum length of side 1 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud máxima del lado 1 (0: sin supervisión)</translation>
     </message>
     <message>
         <source>Minimum length of side 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud mínima del lado 1</translation>
     </message>
     <message>
         <source>Maximum length of side 2 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud máxima del lado 2 (0: sin supervisión)</translation>
     </message>
     <message>
         <source>Minimum length of side 2</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud mínima del lado 2</translation>
     </message>
     <message>
         <source>Maximum permitted value (0 with Q289 = 0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor máximo admisible (0 con Q289 = 0: sin supervisión)</translation>
     </message>
     <message>
         <source>Minimum permitted value</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor mínimo admisible</translation>
     </message>
     <message>
         <source>MEASURE ANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR ÁNGULO</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE INSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR RECTÁNGULO INTERIOR</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR RECTÁNGULO EXTERIOR</translation>
     </message>
     <message>
         <source>MEASURE COORDINATE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR COORDENADA</translation>
     </message>
     <message>
         <source>MEASURE HOLE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR TALADRO</translation>
     </message>
     <message>
         <source>MEASURE CIRCLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR CÍRCULO EXTERIOR</translation>
     </message>
     <message>
         <source>MEASURE INSIDE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR ANCHURA INTERIOR</translation>
     </message>
     <message>
         <source>MEASURE RIDGE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR ANCHURA DE NERVIO</translation>
     </message>
     <message>
         <source>cycle {1}: stylus already deflected</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: el vástago ya está desviado</translation>
     </message>
     <message>
         <source>cycle {1}: touch point not reached within the measuring path DIST = {2} mm</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: no se ha alcanzado el punto de palpación dentro del recorrido de medición DIST = {2} mm</translation>
     </message>
     <message>
         <source>Measuring height: ball centre in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura de medición: centro de la bola en el eje de la herramienta</translation>
     </message>
     <message>
         <source>Set-up clearance, added to SET_UP of the probe table</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia de seguridad, sumada a SET_UP de la tabla de palpadores</translation>
     </message>
     <message>
         <source>Clearance height: no collision with workpiece or fixtures</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura segura: sin colisión con la pieza ni con los útiles de sujeción</translation>
     </message>
     <message>
         <source>Move to clearance height between points: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar a la altura segura entre puntos: 0 no, 1 sí</translation>
     </message>
     <message>
         <source>Number in table: 0 sets the display (active preset)</source>
-        <translation type="unfinished"></translation>
+        <translation>Número en la tabla: 0 fija la visualización (punto de referencia activo)</translation>
     </message>
     <message>
         <source>Measured-value transfer: 0 datum table, 1 preset table</source>
-        <translation type="unfinished"></translation>
+        <translation>Transferencia del valor medido: 0 tabla de puntos cero, 1 tabla de puntos de referencia</translation>
     </message>
     <message>
         <source>New datum in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuevo punto de referencia en el eje principal</translation>
     </message>
     <message>
         <source>New datum in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuevo punto de referencia en el eje auxiliar</translation>
     </message>
     <message>
         <source>New datum in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuevo punto de referencia en el eje de la herramienta</translation>
     </message>
     <message>
         <source>Probe in the tool axis too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Palpar también en el eje de la herramienta: 0 no, 1 sí</translation>
     </message>
     <message>
         <source>Tool-axis touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de palpación en el eje de la herramienta, eje principal</translation>
     </message>
     <message>
         <source>Tool-axis touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de palpación en el eje de la herramienta, eje auxiliar</translation>
     </message>
     <message>
         <source>Tool-axis touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de palpación en el eje de la herramienta, superficie nominal en el eje de la herramienta</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main axis, 2 secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Eje de medición: 1 eje principal, 2 eje auxiliar</translation>
     </message>
     <message>
         <source>Traverse direction toward the workpiece: -1 or +1</source>
-        <translation type="unfinished"></translation>
+        <translation>Dirección de desplazamiento hacia la pieza: -1 o +1</translation>
     </message>
     <message>
         <source>Starting angle: main axis to touch point 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo inicial: del eje principal al punto de palpación 1</translation>
     </message>
     <message>
         <source>Stepping angle between touch points (sign = direction)</source>
-        <translation type="unfinished"></translation>
+        <translation>Incremento angular entre los puntos de palpación (signo = dirección)</translation>
     </message>
     <message>
         <source>Number of touch points in the plane: 3 or 4</source>
-        <translation type="unfinished"></translation>
+        <translation>Número de puntos de palpación en el plano: 3 o 4</translation>
     </message>
     <message>
         <source>Path between points: 0 straight line, 1 arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Trayectoria entre puntos: 0 recta, 1 arco</translation>
     </message>
     <message>
         <source>Measuring log: 0 none, 1 write TCHPRnnn.TXT, 2 also stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Protocolo de medición: 0 ninguno, 1 escribir TCHPRnnn.TXT, 2 además parar</translation>
     </message>
     <message>
         <source>PGM stop on tolerance error: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Parada del PGM con error de tolerancia: 0 no, 1 sí</translation>
     </message>
     <message>
         <source>Tool for monitoring: 0 none</source>
-        <translation type="unfinished"></translation>
+        <translation>Herramienta para la supervisión: 0 ninguna</translation>
     </message>
     <message>
         <source>PROBE expected after TCH</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba PROBE tras TCH</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: call the touch probe with TOOL CALL first (it defines the probe axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de palpación {1}: llame primero al palpador con TOOL CALL (define el eje del palpador)</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: probe {2} is not in tchprobe.tp</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de palpación {1}: el palpador {2} no está en tchprobe.tp</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>el ciclo de palpación {1} todavía no se admite</translation>
     </message>
     <message>
         <source>{1}: Q{2} is PREDEF but GLOBAL DEF 120 gives no value</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Q{2} es PREDEF, pero GLOBAL DEF 120 no da ningún valor</translation>
     </message>
     <message>
         <source>{1}: probing is not possible while a coordinate transformation is active (cycles 7, 8, 10, 11, 26)</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: no es posible palpar mientras haya una conversión de coordenadas activa (ciclos 7, 8, 10, 11, 26)</translation>
     </message>
     <message>
         <source>{1}: probing runs with tool axis Z only so far</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: por ahora la palpación solo funciona con el eje de herramienta Z</translation>
     </message>
     <message>
         <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: la supervisión de la herramienta (Q330) todavía no se admite: la tabla de herramientas no se corrige</translation>
     </message>
     <message>
         <source>cannot write the measuring log {1}: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir el protocolo de medición {1}: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de palpación {1}: la escritura en la tabla de puntos cero (Q303 = 0) todavía no se admite</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de palpación {1}: no se puede escribir la tabla de puntos de referencia: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de palpación {1}: la escritura de un giro básico en la fila Q305 de la tabla de puntos de referencia todavía no se admite</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
-        <translation type="unfinished"></translation>
+        <translation>el ciclo de palpación {1} todavía no se admite; el programa no puede continuar más allá de este bloque</translation>
     </message>
     <message>
         <source>{1} must be an array of three numbers [x, y, z], not {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>{1} debe ser una lista de tres números [x, y, z], no {2}</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine X; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulación: cuánto se aparta la pieza en bruto real de su posición programada en X de máquina; escriba shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Y; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulación: cuánto se aparta la pieza en bruto real de su posición programada en Y de máquina; escriba shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Z; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulación: cuánto se aparta la pieza en bruto real de su posición programada en Z de máquina; escriba shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulación: cuánto está girada la pieza en bruto real alrededor del eje de la herramienta, a través de su origen programado</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -5929,559 +5929,559 @@ cykl</translation>
     </message>
     <message>
         <source>cycle {1}: the stepping angle Q247 must be at least 5 degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: krok kąta Q247 musi wynosić co najmniej 5 stopni</translation>
     </message>
     <message>
         <source>cycle {1}: the touch points give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: punkty próbkowania nie tworzą okręgu</translation>
     </message>
     <message>
         <source>1st touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1. punkt próbkowania, oś główna</translation>
     </message>
     <message>
         <source>1st touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1. punkt próbkowania, oś pomocnicza</translation>
     </message>
     <message>
         <source>Spacing of touch points 1 and 2 in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Odstęp punktów próbkowania 1 i 2 w osi głównej</translation>
     </message>
     <message>
         <source>3rd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3. punkt próbkowania, oś główna</translation>
     </message>
     <message>
         <source>3rd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3. punkt próbkowania, oś pomocnicza</translation>
     </message>
     <message>
         <source>Spacing of touch points 3 and 4 in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Odstęp punktów próbkowania 3 i 4 w osi pomocniczej</translation>
     </message>
     <message>
         <source>Basic rotation too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Również obrót podstawowy: 0 nie, 1 tak</translation>
     </message>
     <message>
         <source>Corner, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Naroże, oś główna</translation>
     </message>
     <message>
         <source>Corner, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Naroże, oś pomocnicza</translation>
     </message>
     <message>
         <source>Corner: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Naroże: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</translation>
     </message>
     <message>
         <source>Bolt-circle centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Środek okręgu otworów, oś główna</translation>
     </message>
     <message>
         <source>Bolt-circle centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Środek okręgu otworów, oś pomocnicza</translation>
     </message>
     <message>
         <source>Nominal bolt-circle diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Nominalna średnica okręgu otworów</translation>
     </message>
     <message>
         <source>Polar angle of the 1st hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Kąt biegunowy środka 1. otworu</translation>
     </message>
     <message>
         <source>Polar angle of the 2nd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Kąt biegunowy środka 2. otworu</translation>
     </message>
     <message>
         <source>Polar angle of the 3rd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Kąt biegunowy środka 3. otworu</translation>
     </message>
     <message>
         <source>cycle {1}: the two edges are parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: obie krawędzie są równoległe</translation>
     </message>
     <message>
         <source>cycle {1}: the hole centres give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: środki otworów nie tworzą okręgu</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA NAROŻE NA ZEWNĄTRZ</translation>
     </message>
     <message>
         <source>DATUM INSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA NAROŻE WEWNĄTRZ</translation>
     </message>
     <message>
         <source>DATUM CIRCLE CENTER</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA ŚRODEK OKRĘGU OTWORÓW</translation>
     </message>
     <message>
         <source>Nominal intersection, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nominalny punkt przecięcia, oś główna</translation>
     </message>
     <message>
         <source>Nominal intersection, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nominalny punkt przecięcia, oś pomocnicza</translation>
     </message>
     <message>
         <source>Nominal position in the tool axis: the measuring height</source>
-        <translation type="unfinished"></translation>
+        <translation>Pozycja nominalna w osi narzędzia: wysokość pomiaru</translation>
     </message>
     <message>
         <source>Tolerance of the 1st edge along its normal, e.g. &quot;0.1-0.1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancja 1. krawędzi wzdłuż jej normalnej, np. &quot;0.1-0.1&quot;</translation>
     </message>
     <message>
         <source>Nominal angle of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Kąt nominalny 1. prostej</translation>
     </message>
     <message>
         <source>Probing direction of the 1st line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Kierunek próbkowania 1. prostej: +1 kąt + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Odległość od punktu przecięcia do 1. punktu próbkowania 1. prostej</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Odległość od punktu przecięcia do 2. punktu próbkowania 1. prostej</translation>
     </message>
     <message>
         <source>Tolerance of the 2nd edge along its normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancja 2. krawędzi wzdłuż jej normalnej</translation>
     </message>
     <message>
         <source>Nominal angle of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Kąt nominalny 2. prostej</translation>
     </message>
     <message>
         <source>Probing direction of the 2nd line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Kierunek próbkowania 2. prostej: +1 kąt + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Odległość od punktu przecięcia do 1. punktu próbkowania 2. prostej</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Odległość od punktu przecięcia do 2. punktu próbkowania 2. prostej</translation>
     </message>
     <message>
         <source>Plane of the angles: 1 YZ, 2 ZX, 3 XY</source>
-        <translation type="unfinished"></translation>
+        <translation>Płaszczyzna kątów: 1 YZ, 2 ZX, 3 XY</translation>
     </message>
     <message>
         <source>Clearance height: -1 never, 0 cycle, 1 each edge, 2 each touch point</source>
-        <translation type="unfinished"></translation>
+        <translation>Bezpieczna wysokość: -1 nigdy, 0 cykl, 1 każda krawędź, 2 każdy punkt próbkowania</translation>
     </message>
     <message>
         <source>Tolerance error: 0 nothing, 1 stop, 2 stop on scrap only</source>
-        <translation type="unfinished"></translation>
+        <translation>Błąd tolerancji: 0 nic, 1 stop, 2 stop tylko przy wyrobie wadliwym</translation>
     </message>
     <message>
         <source>Align rotary axes: 0 no, 1 MOVE, 2 TURN</source>
-        <translation type="unfinished"></translation>
+        <translation>Ustawienie osi obrotowych: 0 nie, 1 MOVE, 2 TURN</translation>
     </message>
     <message>
         <source>Transfer position into the active preset: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Przejęcie pozycji do aktywnego punktu odniesienia: 0 nie, 1 tak</translation>
     </message>
     <message>
         <source>Accept rotation: 0 no, 1/3/5 basic rotation from edge 1/2/mean</source>
-        <translation type="unfinished"></translation>
+        <translation>Przejęcie obrotu: 0 nie, 1/3/5 obrót podstawowy z krawędzi 1/2/średniej</translation>
     </message>
     <message>
         <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: na razie tylko płaszczyzna XY (Q1139 = 3)</translation>
     </message>
     <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: ustawienie osi obrotowych (Q1126) wymaga przejęcia obrotu (Q1121)</translation>
     </message>
     <message>
         <source>cycle {1}: this machine has no rotary table axis to correct the rotation with</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: ta maszyna nie ma osi stołu obrotowego do skorygowania obrotu</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance QS{2} = &quot;{3}&quot; is not &quot;upper-lower&quot; or a number</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: tolerancja QS{2} = &quot;{3}&quot; nie jest ani &quot;górna-dolna&quot;, ani liczbą</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance exceeded ({2})</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: tolerancja przekroczona ({2})</translation>
     </message>
     <message>
         <source>PROBING INTERSECTION</source>
-        <translation type="unfinished"></translation>
+        <translation>PRÓBKOWANIE PUNKTU PRZECIĘCIA</translation>
     </message>
     <message>
         <source>2nd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2. punkt próbkowania, oś główna</translation>
     </message>
     <message>
         <source>2nd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2. punkt próbkowania, oś pomocnicza</translation>
     </message>
     <message>
         <source>Preset rotation angle: angle of the reference line</source>
-        <translation type="unfinished"></translation>
+        <translation>Nastawa kąta obrotu: kąt prostej odniesienia</translation>
     </message>
     <message>
         <source>BASIC ROTATION</source>
-        <translation type="unfinished"></translation>
+        <translation>OBRÓT PODSTAWOWY</translation>
     </message>
     <message>
         <source>Centre in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Środek w osi głównej</translation>
     </message>
     <message>
         <source>Centre in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Środek w osi pomocniczej</translation>
     </message>
     <message>
         <source>Side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Długość boku równoległego do osi głównej</translation>
     </message>
     <message>
         <source>Side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Długość boku równoległego do osi pomocniczej</translation>
     </message>
     <message>
         <source>Touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt próbkowania, oś główna</translation>
     </message>
     <message>
         <source>Touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt próbkowania, oś pomocnicza</translation>
     </message>
     <message>
         <source>Touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt próbkowania, powierzchnia nominalna w osi narzędzia</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main, 2 secondary, 3 tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Oś pomiarowa: 1 główna, 2 pomocnicza, 3 oś narzędzia</translation>
     </message>
     <message>
         <source>New datum in the measuring axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nowy punkt odniesienia w osi pomiarowej</translation>
     </message>
     <message>
         <source>DATUM INSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA PROSTOKĄT WEWNĄTRZ</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA PROSTOKĄT NA ZEWNĄTRZ</translation>
     </message>
     <message>
         <source>DATUM INSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA OKRĄG WEWNĄTRZ</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA OKRĄG NA ZEWNĄTRZ</translation>
     </message>
     <message>
         <source>DATUM IN TS AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA W OSI SONDY</translation>
     </message>
     <message>
         <source>DATUM IN ONE AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>PUNKT ODNIESIENIA W JEDNEJ OSI</translation>
     </message>
     <message>
         <source>cycle {1}: define the measured-value transfer (Q303)</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: zdefiniuj przekazanie wartości pomiaru (Q303)</translation>
     </message>
     <message>
         <source>Nominal centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Środek nominalny, oś główna</translation>
     </message>
     <message>
         <source>Nominal centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Środek nominalny, oś pomocnicza</translation>
     </message>
     <message>
         <source>Maximum permitted diameter (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maksymalna dopuszczalna średnica (0: bez nadzoru)</translation>
     </message>
     <message>
         <source>Minimum permitted diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimalna dopuszczalna średnica</translation>
     </message>
     <message>
         <source>Centre tolerance, main axis (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancja środka, oś główna (0: bez nadzoru)</translation>
     </message>
     <message>
         <source>Centre tolerance, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancja środka, oś pomocnicza</translation>
     </message>
     <message>
         <source>Compatibility only, no effect</source>
-        <translation type="unfinished"></translation>
+        <translation>Tylko dla zgodności, bez działania</translation>
     </message>
     <message>
         <source>Starting point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt startu, oś główna</translation>
     </message>
     <message>
         <source>Starting point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt startu, oś pomocnicza</translation>
     </message>
     <message>
         <source>Offset before the second measurement (0: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Przesunięcie przed drugim pomiarem (0: brak)</translation>
     </message>
     <message>
         <source>Nominal length</source>
-        <translation type="unfinished"></translation>
+        <translation>Długość nominalna</translation>
     </message>
     <message>
         <source>Maximum permitted length (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maksymalna dopuszczalna długość (0: bez nadzoru)</translation>
     </message>
     <message>
         <source>Minimum permitted length</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimalna dopuszczalna długość</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nominalna długość boku równoległego do osi głównej</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nominalna długość boku równoległego do osi pomocniczej</translation>
     </message>
     <message>
         <source>Maximum length of side 1 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maksymalna długość boku 1 (0: bez nadzoru)</translation>
     </message>
     <message>
         <source>Minimum length of side 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimalna długość boku 1</translation>
     </message>
     <message>
         <source>Maximum length of side 2 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maksymalna długość boku 2 (0: bez nadzoru)</translation>
     </message>
     <message>
         <source>Minimum length of side 2</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimalna długość boku 2</translation>
     </message>
     <message>
         <source>Maximum permitted value (0 with Q289 = 0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maksymalna dopuszczalna wartość (0 przy Q289 = 0: bez nadzoru)</translation>
     </message>
     <message>
         <source>Minimum permitted value</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimalna dopuszczalna wartość</translation>
     </message>
     <message>
         <source>MEASURE ANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR KĄTA</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE INSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR PROSTOKĄTA WEWNĄTRZ</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR PROSTOKĄTA NA ZEWNĄTRZ</translation>
     </message>
     <message>
         <source>MEASURE COORDINATE</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR WSPÓŁRZĘDNEJ</translation>
     </message>
     <message>
         <source>MEASURE HOLE</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR OTWORU</translation>
     </message>
     <message>
         <source>MEASURE CIRCLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR OKRĘGU NA ZEWNĄTRZ</translation>
     </message>
     <message>
         <source>MEASURE INSIDE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR SZEROKOŚCI WEWNĄTRZ</translation>
     </message>
     <message>
         <source>MEASURE RIDGE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>POMIAR SZEROKOŚCI MOSTKA</translation>
     </message>
     <message>
         <source>cycle {1}: stylus already deflected</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: trzpień już wychylony</translation>
     </message>
     <message>
         <source>cycle {1}: touch point not reached within the measuring path DIST = {2} mm</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl {1}: nie osiągnięto punktu próbkowania w obrębie drogi pomiarowej DIST = {2} mm</translation>
     </message>
     <message>
         <source>Measuring height: ball centre in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Wysokość pomiaru: środek kulki w osi narzędzia</translation>
     </message>
     <message>
         <source>Set-up clearance, added to SET_UP of the probe table</source>
-        <translation type="unfinished"></translation>
+        <translation>Odstęp bezpieczeństwa, dodawany do SET_UP z tabeli sond</translation>
     </message>
     <message>
         <source>Clearance height: no collision with workpiece or fixtures</source>
-        <translation type="unfinished"></translation>
+        <translation>Bezpieczna wysokość: brak kolizji z przedmiotem lub mocowaniem</translation>
     </message>
     <message>
         <source>Move to clearance height between points: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Przejazd na bezpieczną wysokość między punktami: 0 nie, 1 tak</translation>
     </message>
     <message>
         <source>Number in table: 0 sets the display (active preset)</source>
-        <translation type="unfinished"></translation>
+        <translation>Numer w tabeli: 0 ustawia wskazanie (aktywny punkt odniesienia)</translation>
     </message>
     <message>
         <source>Measured-value transfer: 0 datum table, 1 preset table</source>
-        <translation type="unfinished"></translation>
+        <translation>Przekazanie wartości pomiaru: 0 tabela punktów zerowych, 1 tabela punktów odniesienia</translation>
     </message>
     <message>
         <source>New datum in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nowy punkt odniesienia w osi głównej</translation>
     </message>
     <message>
         <source>New datum in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nowy punkt odniesienia w osi pomocniczej</translation>
     </message>
     <message>
         <source>New datum in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Nowy punkt odniesienia w osi narzędzia</translation>
     </message>
     <message>
         <source>Probe in the tool axis too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Próbkowanie również w osi narzędzia: 0 nie, 1 tak</translation>
     </message>
     <message>
         <source>Tool-axis touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt próbkowania w osi narzędzia, oś główna</translation>
     </message>
     <message>
         <source>Tool-axis touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt próbkowania w osi narzędzia, oś pomocnicza</translation>
     </message>
     <message>
         <source>Tool-axis touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt próbkowania w osi narzędzia, powierzchnia nominalna w osi narzędzia</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main axis, 2 secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Oś pomiarowa: 1 oś główna, 2 oś pomocnicza</translation>
     </message>
     <message>
         <source>Traverse direction toward the workpiece: -1 or +1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kierunek przemieszczenia w stronę przedmiotu: -1 lub +1</translation>
     </message>
     <message>
         <source>Starting angle: main axis to touch point 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kąt startu: od osi głównej do punktu próbkowania 1</translation>
     </message>
     <message>
         <source>Stepping angle between touch points (sign = direction)</source>
-        <translation type="unfinished"></translation>
+        <translation>Krok kąta między punktami próbkowania (znak = kierunek)</translation>
     </message>
     <message>
         <source>Number of touch points in the plane: 3 or 4</source>
-        <translation type="unfinished"></translation>
+        <translation>Liczba punktów próbkowania w płaszczyźnie: 3 lub 4</translation>
     </message>
     <message>
         <source>Path between points: 0 straight line, 1 arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Tor między punktami: 0 prosta, 1 łuk</translation>
     </message>
     <message>
         <source>Measuring log: 0 none, 1 write TCHPRnnn.TXT, 2 also stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Protokół pomiaru: 0 brak, 1 zapis TCHPRnnn.TXT, 2 także zatrzymanie</translation>
     </message>
     <message>
         <source>PGM stop on tolerance error: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Stop PGM przy błędzie tolerancji: 0 nie, 1 tak</translation>
     </message>
     <message>
         <source>Tool for monitoring: 0 none</source>
-        <translation type="unfinished"></translation>
+        <translation>Narzędzie do nadzoru: 0 brak</translation>
     </message>
     <message>
         <source>PROBE expected after TCH</source>
-        <translation type="unfinished"></translation>
+        <translation>po TCH oczekiwano PROBE</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: call the touch probe with TOOL CALL first (it defines the probe axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1}: najpierw wywołaj sondę przez TOOL CALL (określa ona oś sondy)</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: probe {2} is not in tchprobe.tp</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1}: sondy {2} nie ma w tchprobe.tp</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1} nie jest jeszcze obsługiwany</translation>
     </message>
     <message>
         <source>{1}: Q{2} is PREDEF but GLOBAL DEF 120 gives no value</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Q{2} to PREDEF, ale GLOBAL DEF 120 nie podaje wartości</translation>
     </message>
     <message>
         <source>{1}: probing is not possible while a coordinate transformation is active (cycles 7, 8, 10, 11, 26)</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: próbkowanie nie jest możliwe, gdy aktywne jest przeliczanie współrzędnych (cykle 7, 8, 10, 11, 26)</translation>
     </message>
     <message>
         <source>{1}: probing runs with tool axis Z only so far</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: próbkowanie działa na razie tylko z osią narzędzia Z</translation>
     </message>
     <message>
         <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: nadzór narzędzia (Q330) nie jest jeszcze obsługiwany: tabela narzędzi nie jest korygowana</translation>
     </message>
     <message>
         <source>cannot write the measuring log {1}: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>nie można zapisać protokołu pomiaru {1}: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1}: zapis do tabeli punktów zerowych (Q303 = 0) nie jest jeszcze obsługiwany</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1}: nie można zapisać tabeli punktów odniesienia: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1}: zapis obrotu podstawowego do wiersza Q305 tabeli punktów odniesienia nie jest jeszcze obsługiwany</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
-        <translation type="unfinished"></translation>
+        <translation>cykl próbkowania {1} nie jest jeszcze obsługiwany; program nie może wykonać się poza ten blok</translation>
     </message>
     <message>
         <source>{1} must be an array of three numbers [x, y, z], not {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>{1} musi być listą trzech liczb [x, y, z], nie {2}</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine X; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Symulacja: o ile rzeczywisty półfabrykat odbiega od zaprogramowanego położenia w X maszyny; napisz shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Y; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Symulacja: o ile rzeczywisty półfabrykat odbiega od zaprogramowanego położenia w Y maszyny; napisz shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Z; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Symulacja: o ile rzeczywisty półfabrykat odbiega od zaprogramowanego położenia w Z maszyny; napisz shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
-        <translation type="unfinished"></translation>
+        <translation>Symulacja: o ile rzeczywisty półfabrykat jest obrócony wokół osi narzędzia przechodzącej przez jego zaprogramowany punkt zerowy</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -5926,559 +5926,559 @@ ciclo</translation>
     </message>
     <message>
         <source>cycle {1}: the stepping angle Q247 must be at least 5 degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: o incremento angular Q247 tem de ser de pelo menos 5 graus</translation>
     </message>
     <message>
         <source>cycle {1}: the touch points give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: os pontos de apalpação não formam um círculo</translation>
     </message>
     <message>
         <source>1st touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1.º ponto de apalpação, eixo principal</translation>
     </message>
     <message>
         <source>1st touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>1.º ponto de apalpação, eixo secundário</translation>
     </message>
     <message>
         <source>Spacing of touch points 1 and 2 in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância entre os pontos de apalpação 1 e 2 no eixo principal</translation>
     </message>
     <message>
         <source>3rd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3.º ponto de apalpação, eixo principal</translation>
     </message>
     <message>
         <source>3rd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>3.º ponto de apalpação, eixo secundário</translation>
     </message>
     <message>
         <source>Spacing of touch points 3 and 4 in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância entre os pontos de apalpação 3 e 4 no eixo secundário</translation>
     </message>
     <message>
         <source>Basic rotation too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Definir também a rotação básica: 0 não, 1 sim</translation>
     </message>
     <message>
         <source>Corner, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquina, eixo principal</translation>
     </message>
     <message>
         <source>Corner, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquina, eixo secundário</translation>
     </message>
     <message>
         <source>Corner: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquina: 1 (-M -S), 2 (+M -S), 3 (+M +S), 4 (-M +S)</translation>
     </message>
     <message>
         <source>Bolt-circle centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro do círculo de furos, eixo principal</translation>
     </message>
     <message>
         <source>Bolt-circle centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro do círculo de furos, eixo secundário</translation>
     </message>
     <message>
         <source>Nominal bolt-circle diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Diâmetro nominal do círculo de furos</translation>
     </message>
     <message>
         <source>Polar angle of the 1st hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Ângulo polar do centro do 1.º furo</translation>
     </message>
     <message>
         <source>Polar angle of the 2nd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Ângulo polar do centro do 2.º furo</translation>
     </message>
     <message>
         <source>Polar angle of the 3rd hole centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Ângulo polar do centro do 3.º furo</translation>
     </message>
     <message>
         <source>cycle {1}: the two edges are parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: as duas arestas são paralelas</translation>
     </message>
     <message>
         <source>cycle {1}: the hole centres give no circle</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: os centros dos furos não formam um círculo</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA ESQUINA EXTERIOR</translation>
     </message>
     <message>
         <source>DATUM INSIDE CORNER</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA ESQUINA INTERIOR</translation>
     </message>
     <message>
         <source>DATUM CIRCLE CENTER</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA CENTRO DO CÍRCULO DE FUROS</translation>
     </message>
     <message>
         <source>Nominal intersection, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de interseção nominal, eixo principal</translation>
     </message>
     <message>
         <source>Nominal intersection, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de interseção nominal, eixo secundário</translation>
     </message>
     <message>
         <source>Nominal position in the tool axis: the measuring height</source>
-        <translation type="unfinished"></translation>
+        <translation>Posição nominal no eixo da ferramenta: a altura de medição</translation>
     </message>
     <message>
         <source>Tolerance of the 1st edge along its normal, e.g. &quot;0.1-0.1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerância da 1.ª aresta ao longo da sua normal, p. ex. &quot;0.1-0.1&quot;</translation>
     </message>
     <message>
         <source>Nominal angle of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Ângulo nominal da 1.ª reta</translation>
     </message>
     <message>
         <source>Probing direction of the 1st line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Direção de apalpação da 1.ª reta: +1 ângulo + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância do ponto de interseção ao 1.º ponto de apalpação da 1.ª reta</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 1st line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância do ponto de interseção ao 2.º ponto de apalpação da 1.ª reta</translation>
     </message>
     <message>
         <source>Tolerance of the 2nd edge along its normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerância da 2.ª aresta ao longo da sua normal</translation>
     </message>
     <message>
         <source>Nominal angle of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Ângulo nominal da 2.ª reta</translation>
     </message>
     <message>
         <source>Probing direction of the 2nd line: +1 angle + 90, -1 - 90</source>
-        <translation type="unfinished"></translation>
+        <translation>Direção de apalpação da 2.ª reta: +1 ângulo + 90, -1 - 90</translation>
     </message>
     <message>
         <source>Intersection to the 1st touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância do ponto de interseção ao 1.º ponto de apalpação da 2.ª reta</translation>
     </message>
     <message>
         <source>Intersection to the 2nd touch point of the 2nd line</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância do ponto de interseção ao 2.º ponto de apalpação da 2.ª reta</translation>
     </message>
     <message>
         <source>Plane of the angles: 1 YZ, 2 ZX, 3 XY</source>
-        <translation type="unfinished"></translation>
+        <translation>Plano dos ângulos: 1 YZ, 2 ZX, 3 XY</translation>
     </message>
     <message>
         <source>Clearance height: -1 never, 0 cycle, 1 each edge, 2 each touch point</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura segura: -1 nunca, 0 ciclo, 1 cada aresta, 2 cada ponto de apalpação</translation>
     </message>
     <message>
         <source>Tolerance error: 0 nothing, 1 stop, 2 stop on scrap only</source>
-        <translation type="unfinished"></translation>
+        <translation>Erro de tolerância: 0 nada, 1 paragem, 2 paragem só com peça rejeitada</translation>
     </message>
     <message>
         <source>Align rotary axes: 0 no, 1 MOVE, 2 TURN</source>
-        <translation type="unfinished"></translation>
+        <translation>Alinhar os eixos rotativos: 0 não, 1 MOVE, 2 TURN</translation>
     </message>
     <message>
         <source>Transfer position into the active preset: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Transferir a posição para o ponto de referência ativo: 0 não, 1 sim</translation>
     </message>
     <message>
         <source>Accept rotation: 0 no, 1/3/5 basic rotation from edge 1/2/mean</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceitar a rotação: 0 não, 1/3/5 rotação básica da aresta 1/2/média</translation>
     </message>
     <message>
         <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: por enquanto só o plano XY (Q1139 = 3)</translation>
     </message>
     <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: alinhar os eixos rotativos (Q1126) requer aceitar a rotação (Q1121)</translation>
     </message>
     <message>
         <source>cycle {1}: this machine has no rotary table axis to correct the rotation with</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: esta máquina não tem nenhum eixo de mesa rotativa para corrigir a rotação</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance QS{2} = &quot;{3}&quot; is not &quot;upper-lower&quot; or a number</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: a tolerância QS{2} = &quot;{3}&quot; não é &quot;superior-inferior&quot; nem um número</translation>
     </message>
     <message>
         <source>cycle {1}: tolerance exceeded ({2})</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: tolerância excedida ({2})</translation>
     </message>
     <message>
         <source>PROBING INTERSECTION</source>
-        <translation type="unfinished"></translation>
+        <translation>APALPAR PONTO DE INTERSEÇÃO</translation>
     </message>
     <message>
         <source>2nd touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2.º ponto de apalpação, eixo principal</translation>
     </message>
     <message>
         <source>2nd touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>2.º ponto de apalpação, eixo secundário</translation>
     </message>
     <message>
         <source>Preset rotation angle: angle of the reference line</source>
-        <translation type="unfinished"></translation>
+        <translation>Pré-definição do ângulo de rotação: ângulo da reta de referência</translation>
     </message>
     <message>
         <source>BASIC ROTATION</source>
-        <translation type="unfinished"></translation>
+        <translation>ROTAÇÃO BÁSICA</translation>
     </message>
     <message>
         <source>Centre in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro no eixo principal</translation>
     </message>
     <message>
         <source>Centre in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro no eixo secundário</translation>
     </message>
     <message>
         <source>Side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento lateral paralelo ao eixo principal</translation>
     </message>
     <message>
         <source>Side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento lateral paralelo ao eixo secundário</translation>
     </message>
     <message>
         <source>Touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de apalpação, eixo principal</translation>
     </message>
     <message>
         <source>Touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de apalpação, eixo secundário</translation>
     </message>
     <message>
         <source>Touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de apalpação, superfície nominal no eixo da ferramenta</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main, 2 secondary, 3 tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Eixo de medição: 1 principal, 2 secundário, 3 eixo da ferramenta</translation>
     </message>
     <message>
         <source>New datum in the measuring axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Novo ponto de referência no eixo de medição</translation>
     </message>
     <message>
         <source>DATUM INSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA RETÂNGULO INTERIOR</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE RECTANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA RETÂNGULO EXTERIOR</translation>
     </message>
     <message>
         <source>DATUM INSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA CÍRCULO INTERIOR</translation>
     </message>
     <message>
         <source>DATUM OUTSIDE CIRCLE</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA CÍRCULO EXTERIOR</translation>
     </message>
     <message>
         <source>DATUM IN TS AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA EIXO DO APALPADOR</translation>
     </message>
     <message>
         <source>DATUM IN ONE AXIS</source>
-        <translation type="unfinished"></translation>
+        <translation>PONTO DE REFERÊNCIA NUM EIXO</translation>
     </message>
     <message>
         <source>cycle {1}: define the measured-value transfer (Q303)</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: defina a transferência do valor medido (Q303)</translation>
     </message>
     <message>
         <source>Nominal centre, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro nominal, eixo principal</translation>
     </message>
     <message>
         <source>Nominal centre, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro nominal, eixo secundário</translation>
     </message>
     <message>
         <source>Maximum permitted diameter (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Diâmetro máximo admissível (0: sem monitorização)</translation>
     </message>
     <message>
         <source>Minimum permitted diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Diâmetro mínimo admissível</translation>
     </message>
     <message>
         <source>Centre tolerance, main axis (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerância do centro, eixo principal (0: sem monitorização)</translation>
     </message>
     <message>
         <source>Centre tolerance, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerância do centro, eixo secundário</translation>
     </message>
     <message>
         <source>Compatibility only, no effect</source>
-        <translation type="unfinished"></translation>
+        <translation>Só para compatibilidade, sem efeito</translation>
     </message>
     <message>
         <source>Starting point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto inicial, eixo principal</translation>
     </message>
     <message>
         <source>Starting point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto inicial, eixo secundário</translation>
     </message>
     <message>
         <source>Offset before the second measurement (0: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Desvio antes da segunda medição (0: nenhum)</translation>
     </message>
     <message>
         <source>Nominal length</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento nominal</translation>
     </message>
     <message>
         <source>Maximum permitted length (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento máximo admissível (0: sem monitorização)</translation>
     </message>
     <message>
         <source>Minimum permitted length</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento mínimo admissível</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento lateral nominal paralelo ao eixo principal</translation>
     </message>
     <message>
         <source>Nominal side length parallel to the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento lateral nominal paralelo ao eixo secundário</translation>
     </message>
     <message>
         <source>Maximum length of side 1 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento máximo do lado 1 (0: sem monitorização)</translation>
     </message>
     <message>
         <source>Minimum length of side 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento mínimo do lado 1</translation>
     </message>
     <message>
         <source>Maximum length of side 2 (0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento máximo do lado 2 (0: sem monitorização)</translation>
     </message>
     <message>
         <source>Minimum length of side 2</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprimento mínimo do lado 2</translation>
     </message>
     <message>
         <source>Maximum permitted value (0 with Q289 = 0: not monitored)</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor máximo admissível (0 com Q289 = 0: sem monitorização)</translation>
     </message>
     <message>
         <source>Minimum permitted value</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor mínimo admissível</translation>
     </message>
     <message>
         <source>MEASURE ANGLE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR ÂNGULO</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE INSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR RETÂNGULO INTERIOR</translation>
     </message>
     <message>
         <source>MEASURE RECTANGLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR RETÂNGULO EXTERIOR</translation>
     </message>
     <message>
         <source>MEASURE COORDINATE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR COORDENADA</translation>
     </message>
     <message>
         <source>MEASURE HOLE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR FURO</translation>
     </message>
     <message>
         <source>MEASURE CIRCLE OUTSIDE</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR CÍRCULO EXTERIOR</translation>
     </message>
     <message>
         <source>MEASURE INSIDE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR LARGURA INTERIOR</translation>
     </message>
     <message>
         <source>MEASURE RIDGE WIDTH</source>
-        <translation type="unfinished"></translation>
+        <translation>MEDIR LARGURA DA NERVURA</translation>
     </message>
     <message>
         <source>cycle {1}: stylus already deflected</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: a haste já está desviada</translation>
     </message>
     <message>
         <source>cycle {1}: touch point not reached within the measuring path DIST = {2} mm</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo {1}: ponto de apalpação não alcançado dentro do percurso de medição DIST = {2} mm</translation>
     </message>
     <message>
         <source>Measuring height: ball centre in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura de medição: centro da esfera no eixo da ferramenta</translation>
     </message>
     <message>
         <source>Set-up clearance, added to SET_UP of the probe table</source>
-        <translation type="unfinished"></translation>
+        <translation>Distância de segurança, somada a SET_UP da tabela de apalpadores</translation>
     </message>
     <message>
         <source>Clearance height: no collision with workpiece or fixtures</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura segura: sem colisão com a peça nem com os dispositivos de fixação</translation>
     </message>
     <message>
         <source>Move to clearance height between points: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Deslocar à altura segura entre pontos: 0 não, 1 sim</translation>
     </message>
     <message>
         <source>Number in table: 0 sets the display (active preset)</source>
-        <translation type="unfinished"></translation>
+        <translation>Número na tabela: 0 define a visualização (ponto de referência ativo)</translation>
     </message>
     <message>
         <source>Measured-value transfer: 0 datum table, 1 preset table</source>
-        <translation type="unfinished"></translation>
+        <translation>Transferência do valor medido: 0 tabela de pontos zero, 1 tabela de pontos de referência</translation>
     </message>
     <message>
         <source>New datum in the main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Novo ponto de referência no eixo principal</translation>
     </message>
     <message>
         <source>New datum in the secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Novo ponto de referência no eixo secundário</translation>
     </message>
     <message>
         <source>New datum in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Novo ponto de referência no eixo da ferramenta</translation>
     </message>
     <message>
         <source>Probe in the tool axis too: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Apalpar também no eixo da ferramenta: 0 não, 1 sim</translation>
     </message>
     <message>
         <source>Tool-axis touch point, main axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de apalpação no eixo da ferramenta, eixo principal</translation>
     </message>
     <message>
         <source>Tool-axis touch point, secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de apalpação no eixo da ferramenta, eixo secundário</translation>
     </message>
     <message>
         <source>Tool-axis touch point, nominal surface in the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponto de apalpação no eixo da ferramenta, superfície nominal no eixo da ferramenta</translation>
     </message>
     <message>
         <source>Measuring axis: 1 main axis, 2 secondary axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Eixo de medição: 1 eixo principal, 2 eixo secundário</translation>
     </message>
     <message>
         <source>Traverse direction toward the workpiece: -1 or +1</source>
-        <translation type="unfinished"></translation>
+        <translation>Direção de deslocação para a peça: -1 ou +1</translation>
     </message>
     <message>
         <source>Starting angle: main axis to touch point 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ângulo inicial: do eixo principal ao ponto de apalpação 1</translation>
     </message>
     <message>
         <source>Stepping angle between touch points (sign = direction)</source>
-        <translation type="unfinished"></translation>
+        <translation>Incremento angular entre os pontos de apalpação (sinal = direção)</translation>
     </message>
     <message>
         <source>Number of touch points in the plane: 3 or 4</source>
-        <translation type="unfinished"></translation>
+        <translation>Número de pontos de apalpação no plano: 3 ou 4</translation>
     </message>
     <message>
         <source>Path between points: 0 straight line, 1 arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Trajetória entre pontos: 0 reta, 1 arco</translation>
     </message>
     <message>
         <source>Measuring log: 0 none, 1 write TCHPRnnn.TXT, 2 also stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Protocolo de medição: 0 nenhum, 1 escrever TCHPRnnn.TXT, 2 também parar</translation>
     </message>
     <message>
         <source>PGM stop on tolerance error: 0 no, 1 yes</source>
-        <translation type="unfinished"></translation>
+        <translation>Paragem do PGM com erro de tolerância: 0 não, 1 sim</translation>
     </message>
     <message>
         <source>Tool for monitoring: 0 none</source>
-        <translation type="unfinished"></translation>
+        <translation>Ferramenta para monitorização: 0 nenhuma</translation>
     </message>
     <message>
         <source>PROBE expected after TCH</source>
-        <translation type="unfinished"></translation>
+        <translation>PROBE esperado depois de TCH</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: call the touch probe with TOOL CALL first (it defines the probe axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de apalpação {1}: chame primeiro o apalpador com TOOL CALL (define o eixo do apalpador)</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: probe {2} is not in tchprobe.tp</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de apalpação {1}: o apalpador {2} não está em tchprobe.tp</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>o ciclo de apalpação {1} ainda não é suportado</translation>
     </message>
     <message>
         <source>{1}: Q{2} is PREDEF but GLOBAL DEF 120 gives no value</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: Q{2} é PREDEF, mas GLOBAL DEF 120 não dá nenhum valor</translation>
     </message>
     <message>
         <source>{1}: probing is not possible while a coordinate transformation is active (cycles 7, 8, 10, 11, 26)</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: não é possível apalpar enquanto estiver ativa uma conversão de coordenadas (ciclos 7, 8, 10, 11, 26)</translation>
     </message>
     <message>
         <source>{1}: probing runs with tool axis Z only so far</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: por enquanto a apalpação só funciona com o eixo da ferramenta Z</translation>
     </message>
     <message>
         <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation type="unfinished"></translation>
+        <translation>{1}: a monitorização da ferramenta (Q330) ainda não é suportada: a tabela de ferramentas não é corrigida</translation>
     </message>
     <message>
         <source>cannot write the measuring log {1}: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>não é possível escrever o protocolo de medição {1}: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de apalpação {1}: a escrita na tabela de pontos zero (Q303 = 0) ainda não é suportada</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de apalpação {1}: não é possível escrever a tabela de pontos de referência: {2}</translation>
     </message>
     <message>
         <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation type="unfinished"></translation>
+        <translation>ciclo de apalpação {1}: a escrita de uma rotação básica na linha Q305 da tabela de pontos de referência ainda não é suportada</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
-        <translation type="unfinished"></translation>
+        <translation>o ciclo de apalpação {1} ainda não é suportado; o programa não pode continuar para além deste bloco</translation>
     </message>
     <message>
         <source>{1} must be an array of three numbers [x, y, z], not {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>{1} tem de ser uma lista de três números [x, y, z], não {2}</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine X; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulação: quanto a peça bruta real se afasta da sua posição programada no X da máquina; escreva shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Y; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulação: quanto a peça bruta real se afasta da sua posição programada no Y da máquina; escreva shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank lies from its programmed position in machine Z; write shift = [x, y, z]</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulação: quanto a peça bruta real se afasta da sua posição programada no Z da máquina; escreva shift = [x, y, z]</translation>
     </message>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulação: quanto a peça bruta real está rodada em torno do eixo da ferramenta, através da sua origem programada</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
