@@ -55,10 +55,10 @@ FagorCycleDialog::FagorCycleDialog(int g, QWidget* parent)
         m_inputs.push_back(input);
         m_descriptions.push_back(description);
     }
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(rows);
-    scroll->setWidgetResizable(true);
-    left->addWidget(scroll, 1);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidget(rows);
+    m_scroll->setWidgetResizable(true);
+    left->addWidget(m_scroll, 1);
     m_legend = new QLabel(this);
     left->addWidget(m_legend);
 
@@ -110,6 +110,8 @@ void FagorCycleDialog::setCurrentField(int field) {
     m_current = field;
     const FagorField& f = m_fields[static_cast<size_t>(field)];
     m_picture->setField(f.label());
+    // Enter moves down the parameters: the field being entered stays in view.
+    m_scroll->ensureWidgetVisible(m_inputs[static_cast<size_t>(field)]);
     m_fieldHelp->setText(
         QStringLiteral("%1: %2").arg(f.label(), QCoreApplication::translate("kerf", f.meaning)));
 }

@@ -9,6 +9,7 @@
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QScrollArea;
 
 namespace kerf::ui {
 
@@ -54,6 +55,7 @@ private:
     std::vector<FagorField> m_fields;
     std::vector<QLineEdit*> m_inputs;
     std::vector<QLabel*> m_descriptions;
+    QScrollArea* m_scroll = nullptr;
     QLabel* m_title = nullptr;
     QLabel* m_legend = nullptr;
     QLabel* m_message = nullptr;

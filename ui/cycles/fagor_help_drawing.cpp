@@ -37,7 +37,7 @@ QPainterPath insert(QPointF tip) {
 
 // The stepped shaft of the turning cycles, the raw stock above it, the finishing allowance
 // (dashed, 4 over the profile) and two roughing passes from the start point.
-HelpDrawing turningProfile(bool patternRepeat, bool curved) {
+HelpDrawing turningProfile(bool patternRepeat, bool curved, bool facing) {
     HelpDrawing d;
     d.solid = polygon({{kZero, kAxis}, {kZero, 55}, {40, 55}, {40, 38}, {88, 38}, {88, kAxis}});
     axisAndZero(d);
@@ -46,18 +46,29 @@ HelpDrawing turningProfile(bool patternRepeat, bool curved) {
     d.lines.addPath(dashes({kZero, 51}, {36, 51}));
     d.lines.addPath(dashes({36, 51}, {36, 34}));
     d.lines.addPath(dashes({36, 34}, {88, 34}));
-    d.lines.addPath(polyline({{93, 26}, {36, 26}}));
-    d.lines.addPath(polyline({{93, 30}, {36, 30}}));
+    // G69, G82 and G85 face: their passes go down along X and step along Z.
+    if (facing) {
+        d.lines.addPath(polyline({{62, 14}, {62, 34}}));
+        d.lines.addPath(polyline({{69, 14}, {69, 34}}));
+    } else {
+        d.lines.addPath(polyline({{93, 24}, {36, 24}}));
+        d.lines.addPath(polyline({{93, 31}, {36, 31}}));
+    }
     d.lines.addPath(insert({93, 20}));
     d.lines.addPath(ring({93, 20}, 1.5));
     d.dimensions = {
         {{"X"}, arrow({96, kAxis}, {96, 20}), {97, 60}},
         {{"Z"}, arrow({kZero, 10}, {93, 10}), {50, 8}},
-        {{"C"}, arrow({70, 26}, {70, 30}), {71, 24}},
         {{"L"}, arrow({24, 55}, {24, 51}), {25, 49}},
         {{"M"}, arrow({40, 45}, {36, 45}), {30, 44}},
-        {{"D"}, arrow({36, 26}, {32, 22}, true), {27, 22}},
     };
+    if (facing) {
+        d.dimensions.push_back({{"C"}, arrow({62, 17}, {69, 17}), {64, 15}});
+        d.dimensions.push_back({{"D"}, arrow({62, 34}, {58, 30}, true), {53, 30}});
+    } else {
+        d.dimensions.push_back({{"C"}, arrow({70, 24}, {70, 31}), {71, 23}});
+        d.dimensions.push_back({{"D"}, arrow({36, 24}, {32, 20}, true), {27, 20}});
+    }
     if (patternRepeat) {
         d.dimensions.push_back({{"I"}, arrow({80, 20}, {80, 34}), {81, 32}});
     } else {
@@ -84,10 +95,10 @@ HelpDrawing thread() {
     HelpDrawing d;
     d.solid = polygon({{kZero, kAxis}, {kZero, 40}, {88, 40}, {88, kAxis}});
     axisAndZero(d);
-    for (double z = 24; z < 80; z += 8) {
+    for (double z = 24; z < 84; z += 10) {
         d.lines.moveTo(z, 40);
-        d.lines.lineTo(z + 4, 46);
-        d.lines.lineTo(z + 8, 40);
+        d.lines.lineTo(z + 5, 50);
+        d.lines.lineTo(z + 10, 40);
     }
     d.lines.addPath(insert({84, 34}));
     d.lines.addPath(ring({92, 34}, 1.5));
@@ -97,12 +108,12 @@ HelpDrawing thread() {
         {{"Z"}, arrow({kZero, 10}, {92, 10}), {50, 8}},
         {{"Q"}, arrow({16, kAxis}, {16, 40}), {17, 66}},
         {{"R"}, arrow({kZero, 16}, {24, 16}), {12, 14}},
-        {{"I"}, arrow({50, 40}, {50, 46}), {51, 52}},
-        {{"B"}, arrow({60, 40}, {60, 43}), {61, 50}},
-        {{"C"}, arrow({32, 30}, {40, 30}), {34, 28}},
+        {{"I"}, arrow({49, 40}, {49, 50}), {42, 56}},
+        {{"B"}, arrow({59, 40}, {59, 45}), {56, 56}},
+        {{"C"}, arrow({34, 30}, {44, 30}), {37, 28}},
         {{"D"}, arrow({92, 40}, {92, 34}), {86, 30}},
-        {{"J"}, arrow({24, 24}, {32, 24}), {26, 22}},
-        {{"A"}, angleArc({68, 46}, 7, 90, -30), {70, 36}},
+        {{"J"}, arrow({24, 24}, {34, 24}), {27, 22}},
+        {{"A"}, angleArc({69, 50}, 8, 90, -27), {72, 38}},
     };
     return d;
 }
@@ -148,9 +159,9 @@ HelpDrawing hole() {
         {{"X", "Z"}, ring({60, axis}, 2), {62, 60}},
         {{"I"}, arrow({60, 88}, {30, 88}), {44, 94}},
         {{"B"}, arrow({60, 40}, {44, 40}), {50, 38}},
-        {{"D"}, arrow({64, 30}, {60, 30}), {62, 28}},
+        {{"D"}, arrow({60, 28}, {68, 28}), {62, 26}},
         {{"C"}, arrow({48, 62}, {44, 62}), {44, 68}},
-        {{"H"}, arrow({44, 36}, {52, 36}, true), {46, 34}},
+        {{"H"}, arrow({44, 34}, {52, 34}, true), {40, 33}},
         {{"K"}, ring({30, axis}, 2.5), {22, 60}},
     };
     return d;
@@ -161,13 +172,13 @@ HelpDrawing hole() {
 HelpDrawing fagorHelpDrawing(int g) {
     switch (g) {
         case 66: {
-            HelpDrawing d = turningProfile(true, false);
+            HelpDrawing d = turningProfile(true, false, false);
             profileLabels(d);
             return d;
         }
         case 68:
         case 69: {
-            HelpDrawing d = turningProfile(false, false);
+            HelpDrawing d = turningProfile(false, false, g == 69);
             std::erase_if(d.dimensions, [](const HelpDimension& dim) {
                 return dim.keys.contains("Q") || dim.keys.contains("R");
             });
@@ -176,10 +187,10 @@ HelpDrawing fagorHelpDrawing(int g) {
         }
         case 81:
         case 82:
-            return turningProfile(false, false);
+            return turningProfile(false, false, g == 82);
         case 84:
         case 85:
-            return turningProfile(false, true);
+            return turningProfile(false, true, g == 85);
         case 83:
             return hole();
         case 86:

@@ -1,5 +1,6 @@
 #include <QCoreApplication>
 #include <QPushButton>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -54,10 +55,14 @@ TEST_P(WindowFit, EveryScreenFits1280x800) {
         }
         ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("layout")));
     }
-    // The cycle catalogue's softkey levels: every group's row of cycles.
+    // The cycle catalogue's softkey levels: every group's row of cycles; on the lathe (a FAGOR
+    // program) the rows of the FAGOR canned cycles.
     window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
-    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("cyclDef")));
-    for (int key = 0; key < SoftkeyBar::kKeys; ++key) {
+    const bool fagor = window.softkeys()->pressId(QStringLiteral("fagorCycles"));
+    EXPECT_EQ(fagor, std::string(fit.machine) == "lathe");
+    if (fagor) expectFits(window, QStringLiteral("FAGOR canned cycles"));
+    ASSERT_TRUE(fagor || window.softkeys()->pressId(QStringLiteral("cyclDef")));
+    for (int key = 0; key < SoftkeyBar::kKeys && !fagor; ++key) {
         const QString id = window.softkeys()->keyId(key);
         if (id.isEmpty() || id == QLatin1String("back") || id == QLatin1String("cycleOverview")) {
             continue;
