@@ -6001,6 +6001,30 @@ zyklen</translation>
         <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
         <translation>Den Cursor auf einen Festzyklus-Satz (G66-G89) setzen, um ihn zu bearbeiten.</translation>
     </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Einzelsatzausführung</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Automatische Ausführung</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Editieren</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

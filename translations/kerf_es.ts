@@ -6001,6 +6001,30 @@ fijos</translation>
         <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
         <translation>Sitúe el cursor en un bloque de ciclo fijo (G66-G89) para editarlo.</translation>
     </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Ejecución bloque a bloque</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Ejecución automática</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Edición</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

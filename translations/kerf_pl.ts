@@ -6004,6 +6004,30 @@ stałe</translation>
         <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
         <translation>Ustaw kursor na bloku cyklu stałego (G66-G89), aby go edytować.</translation>
     </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Wykonanie blok po bloku</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Wykonanie automatyczne</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Edycja</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Symulacja</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6001,6 +6001,30 @@ fixos</translation>
         <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
         <translation>Coloque o cursor num bloco de ciclo fixo (G66-G89) para o editar.</translation>
     </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Execução bloco a bloco</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Execução automática</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Edição</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulação</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
