@@ -213,10 +213,15 @@ std::optional<QString> checkFagorField(int g, const FagorField& field, const QSt
     if (!parseBlock(prefix + QLatin1Char(letter) + value, out, problem) &&
         problem.offset >= static_cast<size_t>(prefix.size()))
         return translated(problem);
-    for (const fagor::CycleParameter& other : fagor::cycleSyntax(g)->parameters) {
-        if (other.letter != letter && out.iso.cycle.has(other.letter))
-            return QCoreApplication::translate("kerf", "One value per field");
-    }
+    // Another word, or a comment or repetition that would swallow the parameters after it.
+    const bool oneWord = std::all_of(value.begin(), value.end(), [](QChar c) {
+        return c.isLetterOrNumber() || c == QLatin1Char('.') || c == QLatin1Char('+') ||
+               c == QLatin1Char('-');
+    });
+    bool otherWord = false;
+    for (const fagor::CycleParameter& other : fagor::cycleSyntax(g)->parameters)
+        otherWord = otherWord || (other.letter != letter && out.iso.cycle.has(other.letter));
+    if (!oneWord || otherWord) return QCoreApplication::translate("kerf", "One value per field");
     return std::nullopt;
 }
 

@@ -160,7 +160,8 @@ TEST(FagorCycleDialog, RefusesValuesOutsideTheManualsFormat) {
     } refused[] = {
         {68, 'C', "0"},   {68, 'C', "-2"},    {68, 'C', "123456"}, {68, 'C', "1.123456"},
         {66, 'A', "2"},   {68, 'S', "10000"}, {68, 'S', "1.5"},    {68, 'C', "2 F1"},
-        {68, 'C', "2F1"}, {83, 'I', "0"},     {86, 'B', "0"},      {88, 'K', "-1"},
+        {68, 'C', "2F1"}, {83, 'I', "0"},     {68, 'E', "20;"},    {68, 'E', "20 N3"},
+        {86, 'B', "0"},   {88, 'K', "-1"},
     };
     for (const auto& r : refused) {
         FagorCycleDialog dialog(r.g);
