@@ -40,6 +40,25 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FagorCycleDialog</name>
+    <message>
+        <source>Canned cycle</source>
+        <translation>Festzyklus</translation>
+    </message>
+    <message>
+        <source>* required</source>
+        <translation>* Pflichtangabe</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::FagorTableModel</name>
     <message>
         <source>Key</source>
@@ -6479,6 +6498,200 @@ editieren</translation>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
         <translation>Simulation: wie weit das reale Rohteil um die Werkzeugachse durch seinen programmierten Nullpunkt gedreht ist</translation>
+    </message>
+    <message>
+        <source>X of the start point</source>
+        <translation>X des Startpunkts</translation>
+    </message>
+    <message>
+        <source>Z of the start point</source>
+        <translation>Z des Startpunkts</translation>
+    </message>
+    <message>
+        <source>Program that holds the profile</source>
+        <translation>Programm, das das Profil enthält</translation>
+    </message>
+    <message>
+        <source>X of the end point</source>
+        <translation>X des Endpunkts</translation>
+    </message>
+    <message>
+        <source>Peck reduction factor (tapping: tapping type)</source>
+        <translation>Abnahmefaktor der Bohrschritte (Gewindebohren: Art des Gewindebohrens)</translation>
+    </message>
+    <message>
+        <source>Z of the end point</source>
+        <translation>Z des Endpunkts</translation>
+    </message>
+    <message>
+        <source>Label of the first profile block</source>
+        <translation>Marke des ersten Profilsatzes</translation>
+    </message>
+    <message>
+        <source>Minimum infeed increment</source>
+        <translation>Kleinste Zustellung</translation>
+    </message>
+    <message>
+        <source>Label of the last profile block</source>
+        <translation>Marke des letzten Profilsatzes</translation>
+    </message>
+    <message>
+        <source>Pass step</source>
+        <translation>Zustellung je Durchgang</translation>
+    </message>
+    <message>
+        <source>Maximum pass step</source>
+        <translation>Maximale Zustellung je Durchgang</translation>
+    </message>
+    <message>
+        <source>Rapid approach to the previous peck</source>
+        <translation>Eilgang-Annäherung an den vorigen Bohrschritt</translation>
+    </message>
+    <message>
+        <source>Thread pitch</source>
+        <translation>Gewindesteigung</translation>
+    </message>
+    <message>
+        <source>Maximum step between plunges</source>
+        <translation>Maximaler Abstand zwischen den Einstichen</translation>
+    </message>
+    <message>
+        <source>Stock to remove</source>
+        <translation>Abzutragendes Material</translation>
+    </message>
+    <message>
+        <source>X distance from the start point to the arc centre</source>
+        <translation>X-Abstand vom Startpunkt zum Kreismittelpunkt</translation>
+    </message>
+    <message>
+        <source>Depth from the start point</source>
+        <translation>Tiefe ab dem Startpunkt</translation>
+    </message>
+    <message>
+        <source>Total thread depth</source>
+        <translation>Gesamte Gewindetiefe</translation>
+    </message>
+    <message>
+        <source>Feed for plunging into valleys</source>
+        <translation>Vorschub beim Eintauchen in Täler</translation>
+    </message>
+    <message>
+        <source>Z distance from the start point to the arc centre</source>
+        <translation>Z-Abstand vom Startpunkt zum Kreismittelpunkt</translation>
+    </message>
+    <message>
+        <source>Measured point of a thread to repass</source>
+        <translation>Messpunkt eines nachzuschneidenden Gewindes</translation>
+    </message>
+    <message>
+        <source>Dwell at the bottom</source>
+        <translation>Verweilzeit am Grund</translation>
+    </message>
+    <message>
+        <source>Infeed angle</source>
+        <translation>Zustellwinkel</translation>
+    </message>
+    <message>
+        <source>Main machining axis (0: Z, 1: X)</source>
+        <translation>Hauptbearbeitungsachse (0: Z, 1: X)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in X</source>
+        <translation>Schlichtaufmaß in X</translation>
+    </message>
+    <message>
+        <source>Minimum peck depth</source>
+        <translation>Minimale Bohrschritttiefe</translation>
+    </message>
+    <message>
+        <source>Finishing pass allowance</source>
+        <translation>Aufmaß für den Schlichtdurchgang</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in Z</source>
+        <translation>Schlichtaufmaß in Z</translation>
+    </message>
+    <message>
+        <source>Pitch change per revolution</source>
+        <translation>Steigungsänderung pro Umdrehung</translation>
+    </message>
+    <message>
+        <source>Rapid retract after each peck</source>
+        <translation>Eilgang-Rückzug nach jedem Bohrschritt</translation>
+    </message>
+    <message>
+        <source>Feed of the finishing pass</source>
+        <translation>Vorschub des Schlichtdurchgangs</translation>
+    </message>
+    <message>
+        <source>Feed of the final roughing pass</source>
+        <translation>Vorschub des letzten Schruppdurchgangs</translation>
+    </message>
+    <message>
+        <source>Safety distance from the thread start</source>
+        <translation>Sicherheitsabstand zum Gewindeanfang</translation>
+    </message>
+    <message>
+        <source>Safety distance for the retract</source>
+        <translation>Sicherheitsabstand für den Rückzug</translation>
+    </message>
+    <message>
+        <source>Peck depth (0: tapping)</source>
+        <translation>Bohrschritttiefe (0: Gewindebohren)</translation>
+    </message>
+    <message>
+        <source>Depth of the first pass (negative: constant step)</source>
+        <translation>Tiefe des ersten Durchgangs (negativ: konstante Zustellung)</translation>
+    </message>
+    <message>
+        <source>Thread run-out</source>
+        <translation>Gewindeauslauf</translation>
+    </message>
+    <message>
+        <source>Spindle angle at the start or measured point</source>
+        <translation>Spindelwinkel am Start- oder Messpunkt</translation>
+    </message>
+    <message>
+        <source>Number of thread starts</source>
+        <translation>Anzahl der Gewindegänge</translation>
+    </message>
+    <message>
+        <source>One value per field</source>
+        <translation>Ein Wert pro Feld</translation>
+    </message>
+    <message>
+        <source>Canned
+cycles</source>
+        <translation>Fest-
+zyklen</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
+        <translation>Den Cursor auf einen Festzyklus-Satz (G66-G89) setzen, um ihn zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Einzelsatzausführung</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Automatische Ausführung</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Editieren</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -40,6 +40,25 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FagorCycleDialog</name>
+    <message>
+        <source>Canned cycle</source>
+        <translation>Ciclo fijo</translation>
+    </message>
+    <message>
+        <source>* required</source>
+        <translation>* obligatorio</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::FagorTableModel</name>
     <message>
         <source>Key</source>
@@ -6479,6 +6498,200 @@ ciclo</translation>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
         <translation>Simulación: cuánto está girada la pieza en bruto real alrededor del eje de la herramienta, a través de su origen programado</translation>
+    </message>
+    <message>
+        <source>X of the start point</source>
+        <translation>X del punto inicial</translation>
+    </message>
+    <message>
+        <source>Z of the start point</source>
+        <translation>Z del punto inicial</translation>
+    </message>
+    <message>
+        <source>Program that holds the profile</source>
+        <translation>Programa que contiene el perfil</translation>
+    </message>
+    <message>
+        <source>X of the end point</source>
+        <translation>X del punto final</translation>
+    </message>
+    <message>
+        <source>Peck reduction factor (tapping: tapping type)</source>
+        <translation>Factor de reducción del paso de taladrado (roscado: tipo de roscado)</translation>
+    </message>
+    <message>
+        <source>Z of the end point</source>
+        <translation>Z del punto final</translation>
+    </message>
+    <message>
+        <source>Label of the first profile block</source>
+        <translation>Etiqueta del primer bloque del perfil</translation>
+    </message>
+    <message>
+        <source>Minimum infeed increment</source>
+        <translation>Incremento mínimo de profundización</translation>
+    </message>
+    <message>
+        <source>Label of the last profile block</source>
+        <translation>Etiqueta del último bloque del perfil</translation>
+    </message>
+    <message>
+        <source>Pass step</source>
+        <translation>Paso de mecanizado</translation>
+    </message>
+    <message>
+        <source>Maximum pass step</source>
+        <translation>Paso máximo de mecanizado</translation>
+    </message>
+    <message>
+        <source>Rapid approach to the previous peck</source>
+        <translation>Aproximación en rápido al paso anterior</translation>
+    </message>
+    <message>
+        <source>Thread pitch</source>
+        <translation>Paso de rosca</translation>
+    </message>
+    <message>
+        <source>Maximum step between plunges</source>
+        <translation>Paso máximo entre penetraciones</translation>
+    </message>
+    <message>
+        <source>Stock to remove</source>
+        <translation>Material a eliminar</translation>
+    </message>
+    <message>
+        <source>X distance from the start point to the arc centre</source>
+        <translation>Distancia en X del punto inicial al centro del arco</translation>
+    </message>
+    <message>
+        <source>Depth from the start point</source>
+        <translation>Profundidad desde el punto inicial</translation>
+    </message>
+    <message>
+        <source>Total thread depth</source>
+        <translation>Profundidad total de la rosca</translation>
+    </message>
+    <message>
+        <source>Feed for plunging into valleys</source>
+        <translation>Avance de penetración en los valles</translation>
+    </message>
+    <message>
+        <source>Z distance from the start point to the arc centre</source>
+        <translation>Distancia en Z del punto inicial al centro del arco</translation>
+    </message>
+    <message>
+        <source>Measured point of a thread to repass</source>
+        <translation>Punto de medición de una rosca a repasar</translation>
+    </message>
+    <message>
+        <source>Dwell at the bottom</source>
+        <translation>Temporización en el fondo</translation>
+    </message>
+    <message>
+        <source>Infeed angle</source>
+        <translation>Ángulo de penetración</translation>
+    </message>
+    <message>
+        <source>Main machining axis (0: Z, 1: X)</source>
+        <translation>Eje principal de mecanizado (0: Z, 1: X)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in X</source>
+        <translation>Demasía de acabado en X</translation>
+    </message>
+    <message>
+        <source>Minimum peck depth</source>
+        <translation>Paso mínimo de taladrado</translation>
+    </message>
+    <message>
+        <source>Finishing pass allowance</source>
+        <translation>Demasía para la pasada de acabado</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in Z</source>
+        <translation>Demasía de acabado en Z</translation>
+    </message>
+    <message>
+        <source>Pitch change per revolution</source>
+        <translation>Variación del paso por vuelta</translation>
+    </message>
+    <message>
+        <source>Rapid retract after each peck</source>
+        <translation>Retroceso en rápido tras cada paso</translation>
+    </message>
+    <message>
+        <source>Feed of the finishing pass</source>
+        <translation>Avance de la pasada de acabado</translation>
+    </message>
+    <message>
+        <source>Feed of the final roughing pass</source>
+        <translation>Avance de la última pasada de desbaste</translation>
+    </message>
+    <message>
+        <source>Safety distance from the thread start</source>
+        <translation>Distancia de seguridad desde el inicio de la rosca</translation>
+    </message>
+    <message>
+        <source>Safety distance for the retract</source>
+        <translation>Distancia de seguridad para el retroceso</translation>
+    </message>
+    <message>
+        <source>Peck depth (0: tapping)</source>
+        <translation>Paso de taladrado (0: roscado con macho)</translation>
+    </message>
+    <message>
+        <source>Depth of the first pass (negative: constant step)</source>
+        <translation>Profundidad de la primera pasada (negativa: paso constante)</translation>
+    </message>
+    <message>
+        <source>Thread run-out</source>
+        <translation>Salida de la rosca</translation>
+    </message>
+    <message>
+        <source>Spindle angle at the start or measured point</source>
+        <translation>Ángulo del cabezal en el punto inicial o de medición</translation>
+    </message>
+    <message>
+        <source>Number of thread starts</source>
+        <translation>Número de entradas de la rosca</translation>
+    </message>
+    <message>
+        <source>One value per field</source>
+        <translation>Un valor por campo</translation>
+    </message>
+    <message>
+        <source>Canned
+cycles</source>
+        <translation>Ciclos
+fijos</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
+        <translation>Sitúe el cursor en un bloque de ciclo fijo (G66-G89) para editarlo.</translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Ejecución bloque a bloque</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Ejecución automática</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Edición</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -40,6 +40,25 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FagorCycleDialog</name>
+    <message>
+        <source>Canned cycle</source>
+        <translation>Cykl stały</translation>
+    </message>
+    <message>
+        <source>* required</source>
+        <translation>* wymagane</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::FagorTableModel</name>
     <message>
         <source>Key</source>
@@ -6482,6 +6501,200 @@ cykl</translation>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
         <translation>Symulacja: o ile rzeczywisty półfabrykat jest obrócony wokół osi narzędzia przechodzącej przez jego zaprogramowany punkt zerowy</translation>
+    </message>
+    <message>
+        <source>X of the start point</source>
+        <translation>X punktu początkowego</translation>
+    </message>
+    <message>
+        <source>Z of the start point</source>
+        <translation>Z punktu początkowego</translation>
+    </message>
+    <message>
+        <source>Program that holds the profile</source>
+        <translation>Program zawierający profil</translation>
+    </message>
+    <message>
+        <source>X of the end point</source>
+        <translation>X punktu końcowego</translation>
+    </message>
+    <message>
+        <source>Peck reduction factor (tapping: tapping type)</source>
+        <translation>Współczynnik zmniejszania kroku wiercenia (gwintowanie: rodzaj gwintowania)</translation>
+    </message>
+    <message>
+        <source>Z of the end point</source>
+        <translation>Z punktu końcowego</translation>
+    </message>
+    <message>
+        <source>Label of the first profile block</source>
+        <translation>Etykieta pierwszego bloku profilu</translation>
+    </message>
+    <message>
+        <source>Minimum infeed increment</source>
+        <translation>Minimalny przyrost dosuwu</translation>
+    </message>
+    <message>
+        <source>Label of the last profile block</source>
+        <translation>Etykieta ostatniego bloku profilu</translation>
+    </message>
+    <message>
+        <source>Pass step</source>
+        <translation>Krok przejścia</translation>
+    </message>
+    <message>
+        <source>Maximum pass step</source>
+        <translation>Maksymalny krok przejścia</translation>
+    </message>
+    <message>
+        <source>Rapid approach to the previous peck</source>
+        <translation>Szybki dojazd do poprzedniego kroku</translation>
+    </message>
+    <message>
+        <source>Thread pitch</source>
+        <translation>Skok gwintu</translation>
+    </message>
+    <message>
+        <source>Maximum step between plunges</source>
+        <translation>Maksymalny odstęp między wcięciami</translation>
+    </message>
+    <message>
+        <source>Stock to remove</source>
+        <translation>Naddatek do usunięcia</translation>
+    </message>
+    <message>
+        <source>X distance from the start point to the arc centre</source>
+        <translation>Odległość w X od punktu początkowego do środka łuku</translation>
+    </message>
+    <message>
+        <source>Depth from the start point</source>
+        <translation>Głębokość od punktu początkowego</translation>
+    </message>
+    <message>
+        <source>Total thread depth</source>
+        <translation>Całkowita głębokość gwintu</translation>
+    </message>
+    <message>
+        <source>Feed for plunging into valleys</source>
+        <translation>Posuw wcinania w zagłębienia</translation>
+    </message>
+    <message>
+        <source>Z distance from the start point to the arc centre</source>
+        <translation>Odległość w Z od punktu początkowego do środka łuku</translation>
+    </message>
+    <message>
+        <source>Measured point of a thread to repass</source>
+        <translation>Punkt pomiarowy gwintu do poprawienia</translation>
+    </message>
+    <message>
+        <source>Dwell at the bottom</source>
+        <translation>Postój na dnie</translation>
+    </message>
+    <message>
+        <source>Infeed angle</source>
+        <translation>Kąt dosuwu</translation>
+    </message>
+    <message>
+        <source>Main machining axis (0: Z, 1: X)</source>
+        <translation>Główna oś obróbki (0: Z, 1: X)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in X</source>
+        <translation>Naddatek na wykończenie w X</translation>
+    </message>
+    <message>
+        <source>Minimum peck depth</source>
+        <translation>Minimalny krok wiercenia</translation>
+    </message>
+    <message>
+        <source>Finishing pass allowance</source>
+        <translation>Naddatek przejścia wykańczającego</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in Z</source>
+        <translation>Naddatek na wykończenie w Z</translation>
+    </message>
+    <message>
+        <source>Pitch change per revolution</source>
+        <translation>Zmiana skoku na obrót</translation>
+    </message>
+    <message>
+        <source>Rapid retract after each peck</source>
+        <translation>Szybkie wycofanie po każdym kroku</translation>
+    </message>
+    <message>
+        <source>Feed of the finishing pass</source>
+        <translation>Posuw przejścia wykańczającego</translation>
+    </message>
+    <message>
+        <source>Feed of the final roughing pass</source>
+        <translation>Posuw ostatniego przejścia zgrubnego</translation>
+    </message>
+    <message>
+        <source>Safety distance from the thread start</source>
+        <translation>Odległość bezpieczna od początku gwintu</translation>
+    </message>
+    <message>
+        <source>Safety distance for the retract</source>
+        <translation>Odległość bezpieczna do wycofania</translation>
+    </message>
+    <message>
+        <source>Peck depth (0: tapping)</source>
+        <translation>Krok wiercenia (0: gwintowanie)</translation>
+    </message>
+    <message>
+        <source>Depth of the first pass (negative: constant step)</source>
+        <translation>Głębokość pierwszego przejścia (ujemna: stały krok)</translation>
+    </message>
+    <message>
+        <source>Thread run-out</source>
+        <translation>Wybieg gwintu</translation>
+    </message>
+    <message>
+        <source>Spindle angle at the start or measured point</source>
+        <translation>Kąt wrzeciona w punkcie początkowym lub pomiarowym</translation>
+    </message>
+    <message>
+        <source>Number of thread starts</source>
+        <translation>Liczba wejść gwintu</translation>
+    </message>
+    <message>
+        <source>One value per field</source>
+        <translation>Jedna wartość na pole</translation>
+    </message>
+    <message>
+        <source>Canned
+cycles</source>
+        <translation>Cykle
+stałe</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
+        <translation>Ustaw kursor na bloku cyklu stałego (G66-G89), aby go edytować.</translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Wykonanie blok po bloku</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Wykonanie automatyczne</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Edycja</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Symulacja</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

@@ -40,6 +40,25 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FagorCycleDialog</name>
+    <message>
+        <source>Canned cycle</source>
+        <translation>Ciclo fixo</translation>
+    </message>
+    <message>
+        <source>* required</source>
+        <translation>* obrigatório</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::FagorTableModel</name>
     <message>
         <source>Key</source>
@@ -6479,6 +6498,200 @@ ciclo</translation>
     <message>
         <source>Simulation: how far the real blank is turned about the tool axis, through its programmed origin</source>
         <translation>Simulação: quanto a peça bruta real está rodada em torno do eixo da ferramenta, através da sua origem programada</translation>
+    </message>
+    <message>
+        <source>X of the start point</source>
+        <translation>X do ponto inicial</translation>
+    </message>
+    <message>
+        <source>Z of the start point</source>
+        <translation>Z do ponto inicial</translation>
+    </message>
+    <message>
+        <source>Program that holds the profile</source>
+        <translation>Programa que contém o perfil</translation>
+    </message>
+    <message>
+        <source>X of the end point</source>
+        <translation>X do ponto final</translation>
+    </message>
+    <message>
+        <source>Peck reduction factor (tapping: tapping type)</source>
+        <translation>Fator de redução do passo de furação (roscagem: tipo de roscagem)</translation>
+    </message>
+    <message>
+        <source>Z of the end point</source>
+        <translation>Z do ponto final</translation>
+    </message>
+    <message>
+        <source>Label of the first profile block</source>
+        <translation>Etiqueta do primeiro bloco do perfil</translation>
+    </message>
+    <message>
+        <source>Minimum infeed increment</source>
+        <translation>Incremento mínimo de penetração</translation>
+    </message>
+    <message>
+        <source>Label of the last profile block</source>
+        <translation>Etiqueta do último bloco do perfil</translation>
+    </message>
+    <message>
+        <source>Pass step</source>
+        <translation>Passo de passagem</translation>
+    </message>
+    <message>
+        <source>Maximum pass step</source>
+        <translation>Passo máximo de passagem</translation>
+    </message>
+    <message>
+        <source>Rapid approach to the previous peck</source>
+        <translation>Aproximação rápida ao passo anterior</translation>
+    </message>
+    <message>
+        <source>Thread pitch</source>
+        <translation>Passo da rosca</translation>
+    </message>
+    <message>
+        <source>Maximum step between plunges</source>
+        <translation>Passo máximo entre penetrações</translation>
+    </message>
+    <message>
+        <source>Stock to remove</source>
+        <translation>Material a remover</translation>
+    </message>
+    <message>
+        <source>X distance from the start point to the arc centre</source>
+        <translation>Distância em X do ponto inicial ao centro do arco</translation>
+    </message>
+    <message>
+        <source>Depth from the start point</source>
+        <translation>Profundidade a partir do ponto inicial</translation>
+    </message>
+    <message>
+        <source>Total thread depth</source>
+        <translation>Profundidade total da rosca</translation>
+    </message>
+    <message>
+        <source>Feed for plunging into valleys</source>
+        <translation>Avanço de penetração nos vales</translation>
+    </message>
+    <message>
+        <source>Z distance from the start point to the arc centre</source>
+        <translation>Distância em Z do ponto inicial ao centro do arco</translation>
+    </message>
+    <message>
+        <source>Measured point of a thread to repass</source>
+        <translation>Ponto medido de uma rosca a repassar</translation>
+    </message>
+    <message>
+        <source>Dwell at the bottom</source>
+        <translation>Tempo de espera no fundo</translation>
+    </message>
+    <message>
+        <source>Infeed angle</source>
+        <translation>Ângulo de penetração</translation>
+    </message>
+    <message>
+        <source>Main machining axis (0: Z, 1: X)</source>
+        <translation>Eixo principal de maquinação (0: Z, 1: X)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in X</source>
+        <translation>Sobremetal de acabamento em X</translation>
+    </message>
+    <message>
+        <source>Minimum peck depth</source>
+        <translation>Passo mínimo de furação</translation>
+    </message>
+    <message>
+        <source>Finishing pass allowance</source>
+        <translation>Sobremetal da passagem de acabamento</translation>
+    </message>
+    <message>
+        <source>Finishing allowance in Z</source>
+        <translation>Sobremetal de acabamento em Z</translation>
+    </message>
+    <message>
+        <source>Pitch change per revolution</source>
+        <translation>Variação do passo por rotação</translation>
+    </message>
+    <message>
+        <source>Rapid retract after each peck</source>
+        <translation>Recuo rápido após cada passo</translation>
+    </message>
+    <message>
+        <source>Feed of the finishing pass</source>
+        <translation>Avanço da passagem de acabamento</translation>
+    </message>
+    <message>
+        <source>Feed of the final roughing pass</source>
+        <translation>Avanço da última passagem de desbaste</translation>
+    </message>
+    <message>
+        <source>Safety distance from the thread start</source>
+        <translation>Distância de segurança desde o início da rosca</translation>
+    </message>
+    <message>
+        <source>Safety distance for the retract</source>
+        <translation>Distância de segurança para o recuo</translation>
+    </message>
+    <message>
+        <source>Peck depth (0: tapping)</source>
+        <translation>Passo de furação (0: roscagem)</translation>
+    </message>
+    <message>
+        <source>Depth of the first pass (negative: constant step)</source>
+        <translation>Profundidade da primeira passagem (negativa: passo constante)</translation>
+    </message>
+    <message>
+        <source>Thread run-out</source>
+        <translation>Saída da rosca</translation>
+    </message>
+    <message>
+        <source>Spindle angle at the start or measured point</source>
+        <translation>Ângulo da árvore no ponto inicial ou medido</translation>
+    </message>
+    <message>
+        <source>Number of thread starts</source>
+        <translation>Número de entradas da rosca</translation>
+    </message>
+    <message>
+        <source>One value per field</source>
+        <translation>Um valor por campo</translation>
+    </message>
+    <message>
+        <source>Canned
+cycles</source>
+        <translation>Ciclos
+fixos</translation>
+    </message>
+    <message>
+        <source>Put the cursor on a canned cycle block (G66-G89) to edit it.</source>
+        <translation>Coloque o cursor num bloco de ciclo fixo (G66-G89) para o editar.</translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation>JOG</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Single-block execution</source>
+        <translation>Execução bloco a bloco</translation>
+    </message>
+    <message>
+        <source>Automatic execution</source>
+        <translation>Execução automática</translation>
+    </message>
+    <message>
+        <source>Editing</source>
+        <translation>Edição</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulação</translation>
     </message>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>

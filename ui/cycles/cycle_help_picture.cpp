@@ -2,6 +2,7 @@
 
 #include <QPainter>
 #include <algorithm>
+#include <utility>
 
 #include "ui/cycles/cycle_fields.h"
 
@@ -41,6 +42,11 @@ void CycleHelpPicture::setCycle(const cycles::CycleDescriptor& cycle) {
             }
         }
     }
+    update();
+}
+
+void CycleHelpPicture::setDrawing(HelpDrawing drawing) {
+    m_drawing = std::move(drawing);
     update();
 }
 

@@ -17,6 +17,8 @@ public:
     explicit CycleHelpPicture(QWidget* parent = nullptr);
 
     void setCycle(const cycles::CycleDescriptor& cycle);
+    // A drawing made for the caller's own fields (the FAGOR cycles), shown as it is.
+    void setDrawing(HelpDrawing drawing);
     // The field being entered ("Q200", "ROT"...); the picture highlights its dimension if it has
     // one.
     void setField(const QString& label);

@@ -4,6 +4,7 @@
 #include <QMessageBox>
 
 #include "ui/cycles/cycle_catalogue.h"
+#include "ui/cycles/fagor_softkeys.h"
 #include "ui/cycles/program_entry.h"
 #include "ui/editor/program_editor.h"
 
@@ -83,6 +84,8 @@ std::vector<SoftkeyRow> cycleRows(int section, ProgramEditor* editor, QWidget* p
 
 std::vector<SoftkeyRow> programmingEntryRows(ProgramEditor* editor, QWidget* parent,
                                              SoftkeyPaging paging) {
+    if (editor->dialect() == program::Dialect::Fagor)
+        return fagorProgrammingRows(editor, parent, paging);
     return {
         {
             {"cyclDef", QStringLiteral("CYCL\nDEF"),

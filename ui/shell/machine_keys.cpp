@@ -100,10 +100,10 @@ QPushButton* MachineKeys::programmingKey(task::ProgrammingMode mode) const {
 
 void MachineKeys::retranslate() {
     for (task::MachineMode mode : kMachineModes) {
-        machineKey(mode)->setText(wrapLabel(ModeController::machineModeText(mode)));
+        machineKey(mode)->setText(wrapLabel(m_modes.machineModeText(mode)));
     }
     for (task::ProgrammingMode mode : kProgrammingModes) {
-        programmingKey(mode)->setText(ModeController::programmingModeText(mode));
+        programmingKey(mode)->setText(m_modes.programmingModeText(mode));
     }
     m_machineOn->setText(wrapLabel(tr("Machine on")));
     m_emergencyStop->setText(wrapLabel(tr("EMERGENCY STOP")));

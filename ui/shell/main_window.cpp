@@ -45,6 +45,7 @@ QLabel* makeModeLabel(const QString& name, QWidget* parent) {
 MainWindow::MainWindow(HmiContext context, QWidget* parent)
     : QMainWindow(parent), m_context(std::move(context)) {
     m_modes = new ModeController(!m_context.programmingStation, this);
+    m_modes->setFagorNames(m_context.machine.kind == machine::MachineKind::Lathe);
     auto* central = new QWidget(this);
     auto* layout = new QVBoxLayout(central);
     layout->setContentsMargins(6, 6, 6, 6);
@@ -195,9 +196,9 @@ void MainWindow::refreshHeader() {
     const QString active = QStringLiteral("background: #1f4e79; color: white; font-weight: bold;");
     const QString passive = QStringLiteral("background: #d9d9d9; color: #303030;");
     m_machineMode->setText(m_modes->machineConnected()
-                               ? ModeController::machineModeText(m_modes->machineMode())
+                               ? m_modes->machineModeText(m_modes->machineMode())
                                : tr("Programming station"));
-    m_programmingMode->setText(ModeController::programmingModeText(m_modes->programmingMode()));
+    m_programmingMode->setText(m_modes->programmingModeText(m_modes->programmingMode()));
     m_machineMode->setStyleSheet(machineOnScreen ? active : passive);
     m_programmingMode->setStyleSheet(machineOnScreen ? passive : active);
 }

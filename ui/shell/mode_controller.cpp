@@ -2,6 +2,8 @@
 
 #include <QCoreApplication>
 
+#include "ui/shell/fagor_mode_names.h"
+
 namespace kerf::ui {
 
 namespace {
@@ -46,12 +48,14 @@ void ModeController::requestProgrammingMode(task::ProgrammingMode mode) {
     emit modesChanged();
 }
 
-QString ModeController::machineModeText(task::MachineMode mode) {
-    return QCoreApplication::translate("kerf", task::machineModeName(mode));
+QString ModeController::machineModeText(task::MachineMode mode) const {
+    return QCoreApplication::translate(
+        "kerf", m_fagorNames ? fagorMachineModeName(mode) : task::machineModeName(mode));
 }
 
-QString ModeController::programmingModeText(task::ProgrammingMode mode) {
-    return QCoreApplication::translate("kerf", task::programmingModeName(mode));
+QString ModeController::programmingModeText(task::ProgrammingMode mode) const {
+    return QCoreApplication::translate(
+        "kerf", m_fagorNames ? fagorProgrammingModeName(mode) : task::programmingModeName(mode));
 }
 
 }  // namespace kerf::ui

@@ -35,8 +35,11 @@ public:
     bool requestMachineMode(task::MachineMode mode);
     void requestProgrammingMode(task::ProgrammingMode mode);
 
-    static QString machineModeText(task::MachineMode mode);
-    static QString programmingModeText(task::ProgrammingMode mode);
+    // A FAGOR lathe shows the 8035's mode names (fagor_mode_names.h) instead of the TNC's; set
+    // before the mode keys are made.
+    void setFagorNames(bool fagor) { m_fagorNames = fagor; }
+    QString machineModeText(task::MachineMode mode) const;
+    QString programmingModeText(task::ProgrammingMode mode) const;
 
 signals:
     void modesChanged();
@@ -46,6 +49,7 @@ private:
     task::ModeMachine m_modes;
     ScreenMode m_screen = ScreenMode::Machine;
     std::function<bool()> m_moving;
+    bool m_fagorNames = false;
 };
 
 }  // namespace kerf::ui

@@ -58,6 +58,32 @@ TEST(MainWindow, SoftkeysAreTouchSizedAtBothPanelSizes) {
         window.windowTitle().contains(QString::fromStdString(machine::loadMachine("mill")->name)));
 }
 
+// On the lathe the modes have the 8035's names (OPMODE, spec part 2 §5.15), in every language.
+TEST(MainWindow, LatheNamesTheModesAsTheFagorDoes) {
+    test::testApp();
+    HmiContext context = contextIn(kerf::test::uniqueTempDir("hmi_window_fagor_modes"));
+    context.machine = *machine::loadMachine("lathe");
+    MainWindow window(std::move(context));
+    window.show();
+    const auto keyText = [&window](MachineMode mode) {
+        return window.machineKeys()->machineKey(mode)->text().replace('\n', ' ');
+    };
+    EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("JOG"));
+    EXPECT_EQ(labelText(window, "programmingMode"), QStringLiteral("Editing"));
+    EXPECT_EQ(keyText(MachineMode::Manual), QStringLiteral("JOG"));
+    EXPECT_EQ(keyText(MachineMode::Handwheel), QStringLiteral("Electronic handwheel"));
+    EXPECT_EQ(keyText(MachineMode::Mdi), QStringLiteral("MDI"));
+    EXPECT_EQ(keyText(MachineMode::SingleBlock), QStringLiteral("Single-block execution"));
+    EXPECT_EQ(keyText(MachineMode::FullSequence), QStringLiteral("Automatic execution"));
+    EXPECT_EQ(window.machineKeys()->programmingKey(ProgrammingMode::TestRun)->text(),
+              QStringLiteral("Simulation"));
+    ASSERT_TRUE(window.setLanguage(QStringLiteral("es")));
+    QCoreApplication::processEvents();  // the widgets retranslate on the posted LanguageChange
+    EXPECT_EQ(keyText(MachineMode::FullSequence), QStringLiteral("Ejecución automática"));
+    EXPECT_EQ(labelText(window, "programmingMode"), QStringLiteral("Edición"));
+    ASSERT_TRUE(window.setLanguage(QStringLiteral("en")));
+}
+
 TEST(MainWindow, HeaderFollowsModeKeys) {
     test::testApp();
     MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_window_modes")));

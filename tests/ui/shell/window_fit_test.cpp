@@ -1,5 +1,7 @@
 #include <QCoreApplication>
 #include <QPushButton>
+#include <fstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +73,16 @@ TEST_P(WindowFit, EveryScreenFits1280x800) {
           task::MachineMode::SingleBlock, task::MachineMode::FullSequence}) {
         window.modes().requestMachineMode(mode);
         expectFits(window, QStringLiteral("machine mode %1").arg(static_cast<int>(mode)));
+    }
+    if (std::string(fit.machine) == "lathe") {
+        // A FAGOR program: the rows of its canned cycles G66-G89.
+        const auto part = dir / "PART.pim";
+        std::ofstream(part) << "N10 G00 X20 Z5\nN20 M30\n";
+        ASSERT_TRUE(window.openProgram(part));
+        window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+        ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("fagorCycles")));
+        expectFits(window, QStringLiteral("FAGOR canned cycles"));
+        ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("back")));
     }
     ASSERT_TRUE(window.setLanguage(QStringLiteral("en")));
 }

@@ -1,0 +1,207 @@
+#include "ui/cycles/fagor_help_drawing.h"
+
+#include <QPolygonF>
+
+#include "ui/cycles/help_shapes.h"
+
+namespace kerf::ui {
+
+namespace {
+
+// Everything is drawn over the spindle axis at y 88 and the part zero W at its left end.
+constexpr double kAxis = 88;
+constexpr double kZero = 8;
+
+QPainterPath polygon(std::initializer_list<QPointF> points) {
+    QPainterPath path;
+    path.addPolygon(QPolygonF(QVector<QPointF>(points)));
+    path.closeSubpath();
+    return path;
+}
+
+QPainterPath polyline(std::initializer_list<QPointF> points) {
+    QPainterPath path;
+    path.addPolygon(QPolygonF(QVector<QPointF>(points)));
+    return path;
+}
+
+void axisAndZero(HelpDrawing& d) {
+    d.lines.addPath(dashes({2, kAxis}, {98, kAxis}));
+    d.lines.addPath(ring({kZero, kAxis}, 1.5));
+}
+
+// A turning insert with its tip at `tip`, coming from the upper right.
+QPainterPath insert(QPointF tip) {
+    return polygon({tip, tip + QPointF(6, -3), tip + QPointF(2, -8)});
+}
+
+// The stepped shaft of the turning cycles, the raw stock above it, the finishing allowance
+// (dashed, 4 over the profile) and two roughing passes from the start point.
+HelpDrawing turningProfile(bool patternRepeat, bool curved, bool facing) {
+    HelpDrawing d;
+    d.solid = polygon({{kZero, kAxis}, {kZero, 55}, {40, 55}, {40, 38}, {88, 38}, {88, kAxis}});
+    axisAndZero(d);
+    d.lines.addPath(dashes({kZero, 20}, {88, 20}));
+    d.lines.addPath(dashes({88, 20}, {88, 38}));
+    d.lines.addPath(dashes({kZero, 51}, {36, 51}));
+    d.lines.addPath(dashes({36, 51}, {36, 34}));
+    d.lines.addPath(dashes({36, 34}, {88, 34}));
+    // G69, G82 and G85 face: their passes go down along X and step along Z.
+    if (facing) {
+        d.lines.addPath(polyline({{62, 14}, {62, 34}}));
+        d.lines.addPath(polyline({{69, 14}, {69, 34}}));
+    } else {
+        d.lines.addPath(polyline({{93, 24}, {36, 24}}));
+        d.lines.addPath(polyline({{93, 31}, {36, 31}}));
+    }
+    d.lines.addPath(insert({93, 20}));
+    d.lines.addPath(ring({93, 20}, 1.5));
+    d.dimensions = {
+        {{"X"}, arrow({96, kAxis}, {96, 20}), {97, 60}},
+        {{"Z"}, arrow({kZero, 10}, {93, 10}), {50, 8}},
+        {{"L"}, arrow({24, 55}, {24, 51}), {25, 49}},
+        {{"M"}, arrow({40, 45}, {36, 45}), {30, 44}},
+    };
+    if (facing) {
+        d.dimensions.push_back({{"C"}, arrow({62, 17}, {69, 17}), {64, 15}});
+        d.dimensions.push_back({{"D"}, arrow({62, 34}, {58, 30}, true), {53, 30}});
+    } else {
+        d.dimensions.push_back({{"C"}, arrow({70, 24}, {70, 31}), {71, 23}});
+        d.dimensions.push_back({{"D"}, arrow({36, 24}, {32, 20}, true), {27, 20}});
+    }
+    if (patternRepeat) {
+        d.dimensions.push_back({{"I"}, arrow({80, 20}, {80, 34}), {81, 32}});
+    } else {
+        d.dimensions.push_back({{"Q"}, arrow({44, kAxis}, {44, 55}), {45, 72}});
+        d.dimensions.push_back({{"R"}, arrow({kZero, 62}, {40, 62}), {22, 61}});
+    }
+    if (curved) {
+        d.lines.addPath(ring({64, 70}, 1.5));
+        d.dimensions.push_back({{"I"}, arrow({88, 38}, {88, 70}), {89, 56}});
+        d.dimensions.push_back({{"K"}, arrow({88, 74}, {64, 74}), {74, 80}});
+    }
+    return d;
+}
+
+// Profile cycles G66, G68 and G69 name the profile by the labels of its first and last block.
+void profileLabels(HelpDrawing& d) {
+    d.dimensions.push_back({{"S"}, ring({kZero, 55}, 2.5), {10, 52}});
+    d.dimensions.push_back({{"E"}, ring({88, 38}, 2.5), {82, 44}});
+}
+
+// A thread on the shaft from the start point (right) to the end point (left): depth I, the
+// first pass B, pitch C, infeed angle A, the approach D and the run-out J.
+HelpDrawing thread() {
+    HelpDrawing d;
+    d.solid = polygon({{kZero, kAxis}, {kZero, 40}, {88, 40}, {88, kAxis}});
+    axisAndZero(d);
+    for (double z = 24; z < 84; z += 10) {
+        d.lines.moveTo(z, 40);
+        d.lines.lineTo(z + 5, 50);
+        d.lines.lineTo(z + 10, 40);
+    }
+    d.lines.addPath(insert({84, 34}));
+    d.lines.addPath(ring({92, 34}, 1.5));
+    d.lines.addPath(ring({24, 40}, 1.5));
+    d.dimensions = {
+        {{"X"}, arrow({96, kAxis}, {96, 34}), {97, 60}},
+        {{"Z"}, arrow({kZero, 10}, {92, 10}), {50, 8}},
+        {{"Q"}, arrow({16, kAxis}, {16, 40}), {17, 66}},
+        {{"R"}, arrow({kZero, 16}, {24, 16}), {12, 14}},
+        {{"I"}, arrow({49, 40}, {49, 50}), {42, 56}},
+        {{"B"}, arrow({59, 40}, {59, 45}), {56, 56}},
+        {{"C"}, arrow({34, 30}, {44, 30}), {37, 28}},
+        {{"D"}, arrow({92, 40}, {92, 34}), {86, 30}},
+        {{"J"}, arrow({24, 24}, {34, 24}), {27, 22}},
+        {{"A"}, angleArc({69, 50}, 8, 90, -27), {72, 38}},
+    };
+    return d;
+}
+
+// A groove from the start point (X, Z) to the bottom (Q) and the far wall (R), cut by
+// plunges at most C apart.
+HelpDrawing groove() {
+    HelpDrawing d;
+    d.solid = polygon({{kZero, kAxis},
+                       {kZero, 35},
+                       {40, 35},
+                       {40, 60},
+                       {65, 60},
+                       {65, 35},
+                       {88, 35},
+                       {88, kAxis}});
+    axisAndZero(d);
+    d.lines.addRect(40, 12, 8, 20);  // the grooving blade over the start point
+    d.lines.addPath(ring({40, 35}, 1.5));
+    d.dimensions = {
+        {{"X"}, arrow({94, kAxis}, {94, 35}), {95, 60}},
+        {{"Z"}, arrow({kZero, 8}, {40, 8}), {22, 6}},
+        {{"Q"}, arrow({52, kAxis}, {52, 60}), {53, 76}},
+        {{"R"}, arrow({kZero, 4}, {65, 4}), {50, 3}},
+        {{"C"}, arrow({42, 56}, {50, 56}), {43, 54}},
+        {{"D"}, arrow({36, 35}, {36, 29}), {30, 30}},
+        {{"K"}, ring({42, 60}, 2.5), {44, 66}},
+    };
+    return d;
+}
+
+// A hole drilled toward -Z from the start point at the face: depth I, peck B, the approach D,
+// the rapid return C before each peck and the retract H.
+HelpDrawing hole() {
+    HelpDrawing d;
+    constexpr double axis = 50;
+    d.solid = polygon(
+        {{kZero, 20}, {60, 20}, {60, 44}, {30, 44}, {30, 56}, {60, 56}, {60, 80}, {kZero, 80}});
+    d.lines.addPath(dashes({2, axis}, {98, axis}));
+    d.lines.addPath(polygon({{68, 46}, {95, 46}, {95, 54}, {68, 54}, {64, axis}}));
+    d.lines.addPath(dashes({44, 44}, {44, 56}));
+    d.dimensions = {
+        {{"X", "Z"}, ring({60, axis}, 2), {62, 60}},
+        {{"I"}, arrow({60, 88}, {30, 88}), {44, 94}},
+        {{"B"}, arrow({60, 40}, {44, 40}), {50, 38}},
+        {{"D"}, arrow({60, 28}, {68, 28}), {62, 26}},
+        {{"C"}, arrow({48, 62}, {44, 62}), {44, 68}},
+        {{"H"}, arrow({44, 34}, {52, 34}, true), {40, 33}},
+        {{"K"}, ring({30, axis}, 2.5), {22, 60}},
+    };
+    return d;
+}
+
+}  // namespace
+
+HelpDrawing fagorHelpDrawing(int g) {
+    switch (g) {
+        case 66: {
+            HelpDrawing d = turningProfile(true, false, false);
+            profileLabels(d);
+            return d;
+        }
+        case 68:
+        case 69: {
+            HelpDrawing d = turningProfile(false, false, g == 69);
+            std::erase_if(d.dimensions, [](const HelpDimension& dim) {
+                return dim.keys.contains("Q") || dim.keys.contains("R");
+            });
+            profileLabels(d);
+            return d;
+        }
+        case 81:
+        case 82:
+            return turningProfile(false, false, g == 82);
+        case 84:
+        case 85:
+            return turningProfile(false, true, g == 85);
+        case 83:
+            return hole();
+        case 86:
+        case 87:
+            return thread();
+        case 88:
+        case 89:
+            return groove();
+        default:
+            return {};
+    }
+}
+
+}  // namespace kerf::ui
