@@ -33,6 +33,8 @@ PlanarSegment arcThrough(const Vec2& start, const Vec2& end, const Vec2& center,
     return {PlanarSegment::Kind::Arc, start, end, center, sweep};
 }
 
+}  // namespace
+
 // Intersections of the carriers (infinite line, full circle) of two segments.
 std::vector<Vec2> carrierIntersections(const PlanarSegment& a, const PlanarSegment& b) {
     using Kind = PlanarSegment::Kind;
@@ -74,8 +76,6 @@ std::vector<Vec2> carrierIntersections(const PlanarSegment& a, const PlanarSegme
     out.push_back(a.center + x * u - h * n);
     return out;
 }
-
-}  // namespace
 
 PlanarSegment PlanarSegment::line(const Vec2& start, const Vec2& end) {
     return {Kind::Line, start, end, Vec2(0.0, 0.0), 0.0};

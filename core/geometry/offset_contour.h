@@ -67,6 +67,9 @@ ClosedContour arcSlot(double pitchRadius, double startRad, double sweepRad, doub
 // or chamfer needs more than half a side, or for fewer than 3 corners.
 std::optional<ClosedContour> regularPolygon(double circumradius, int corners, double cornerRadius);
 
+// Intersections of the carriers (infinite line, full circle) of two segments.
+std::vector<Vec2> carrierIntersections(const PlanarSegment& a, const PlanarSegment& b);
+
 // Circle about the origin, counter-clockwise from angle 0.
 ClosedContour circleContour(double radius);
 
