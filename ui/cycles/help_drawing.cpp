@@ -338,6 +338,7 @@ HelpDrawing helpDrawing(const cycles::CycleDescriptor& cycle) {
         case CycleGroup::Special:
             return specialSymbols(cycle.number);
         case CycleGroup::PocketsStudsSlots:
+        case CycleGroup::Contours:
             return pocketPlan();
     }
     return drillingSection(false);
