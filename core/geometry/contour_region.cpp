@@ -325,17 +325,45 @@ private:
     std::vector<Piece>& m_pieces;
 };
 
+double perimeter(const std::vector<Vec2>& points) {
+    double sum = 0.0;
+    for (size_t i = 0; i < points.size(); ++i)
+        sum += (points[(i + 1) % points.size()] - points[i]).norm();
+    return sum;
+}
+
+// The polygon itself, when no exact rebuild fits it.
+ClosedContour polygonContour(const std::vector<Vec2>& points) {
+    ClosedContour out;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Vec2& a = points[i];
+        const Vec2& b = points[(i + 1) % points.size()];
+        if ((b - a).norm() >= kSame) out.segments.push_back(PlanarSegment::line(a, b));
+    }
+    return out;
+}
+
 Region rebuildAll(const Paths& solution, std::vector<Piece> pieces) {
     Region out;
-    const double tiny = kMatch * kMatch * kScale * kScale;
     for (const Path& path : solution) {
-        if (path.size() < 3 || std::fabs(ClipperLib::Area(path)) < tiny) continue;
+        if (path.size() < 3) continue;
         std::vector<Vec2> points;
         points.reserve(path.size());
         for (const IntPoint& p : path)
             points.push_back(toVec(p));
+        // Slivers thinner than the matching tolerance are rounding noise between boundaries
+        // that coincide (a rest region along a wall both tools reach).
+        const double area = ClipperLib::Area(path) / (kScale * kScale);
+        const double length = perimeter(points);
+        if (2.0 * std::fabs(area) <= kMatch * length) continue;
         Rebuilder rebuilder(points, pieces);
-        if (auto contour = rebuilder.rebuild()) out.boundaries.push_back(std::move(*contour));
+        std::optional<ClosedContour> contour = rebuilder.rebuild();
+        // The exact pieces must enclose what the polygon encloses (within the flattening).
+        const double slack = 2.0 * kMatch * length;
+        if (!contour || std::fabs(contour->signedArea() - area) > slack) {
+            contour = polygonContour(points);
+        }
+        out.boundaries.push_back(std::move(*contour));
     }
     return out;
 }
