@@ -18,8 +18,8 @@ using ClipperLib::Paths;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kScale = 1e6;       // Clipper units per mm (1 nm)
-constexpr double kFlatten = 0.2e-3;  // mm: largest gap between an arc and its chords
-constexpr double kMatch = 1e-3;      // mm: a polygon point lies on an exact piece
+constexpr double kFlatten = 0.5e-3;  // mm: largest gap between an arc and its chords
+constexpr double kMatch = 2e-3;      // mm: a polygon point lies on an exact piece
 constexpr double kSame = 1e-9;       // mm: shorter segments are left out
 
 double cross(const Vec2& a, const Vec2& b) {

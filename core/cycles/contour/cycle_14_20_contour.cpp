@@ -9,6 +9,13 @@ namespace {
 
 using namespace contour;
 
+// "CYCL DEF 14.1 CONTOUR LABEL 1/2/3": the keyword is language-dependent, the numbers count.
+constexpr ParameterDescriptor kLabels[] = {
+    {.word = "LABEL",
+     .description = KERF_TR_NOOP("Label numbers of the contour subprograms (up to 12, "
+                                 "separated by /)"),
+     .unit = Unit::Text}};
+
 constexpr ParameterDescriptor kContourData[] = {
     {.q = 1,
      .description = KERF_TR_NOOP("Depth: workpiece surface to bottom (sign = direction)"),
@@ -73,7 +80,7 @@ const CycleDescriptor kCycle14{.number = 14,
                                .activation = Activation::Def,
                                .group = CycleGroup::Contours,
                                .oldStyle = true,
-                               .parameters = {}};
+                               .parameters = kLabels};
 const CycleDescriptor kCycle20{.number = 20,
                                .name = KERF_TR_NOOP("CONTOUR DATA"),
                                .activation = Activation::Def,
