@@ -56,7 +56,9 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     const Region region = toolCentreRegion(area, rougher->radius + d.sideAllowance);
     if (region.empty()) return pocket::toolTooLarge(21);
     std::vector<ClearingPass> passes;
-    if (auto e = planClearing(21, region, d.overlap * rougher->radius, d.climb, passes)) return e;
+    if (auto e = planClearing(21, region, d.overlap * rougher->radius, d.climb, planningStart(ctx),
+                              passes))
+        return e;
     const double holeDepth = d.depth - d.floorAllowance;
     std::vector<double> depths;
     if (auto e = infeedDepths(21, 0.0, holeDepth, v.number(10), depths)) return e;

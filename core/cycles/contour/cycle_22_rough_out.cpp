@@ -109,7 +109,9 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     }
     std::vector<ClearingPass> passes;
     if (!region.empty()) {
-        if (auto e = planClearing(22, region, d.overlap * radius, d.climb, passes)) return e;
+        if (auto e =
+                planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
+            return e;
     }
     std::vector<double> depths;
     if (auto e = infeedDepths(22, 0.0, d.depth - d.floorAllowance, v.number(10), depths)) return e;

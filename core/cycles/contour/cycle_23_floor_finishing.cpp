@@ -35,7 +35,8 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     const Region region = toolCentreRegion(area, radius + d.sideAllowance);
     if (region.empty()) return pocket::toolTooLarge(23);
     std::vector<ClearingPass> passes;
-    if (auto e = planClearing(23, region, d.overlap * radius, d.climb, passes)) return e;
+    if (auto e = planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
+        return e;
 
     if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
     // Down at rapid to the set-up clearance above the roughed floor, then at Q11 to the floor.

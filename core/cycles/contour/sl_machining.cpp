@@ -105,7 +105,7 @@ std::optional<CycleError> infeedDepths(int cycle, double from, double to, double
 }
 
 std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
-                                       std::vector<ClearingPass>& out) {
+                                       const Vec2& from, std::vector<ClearingPass>& out) {
     out.clear();
     // The levels of the offsets, outermost first; a point of level k has 0 ... k steps of room
     // around it inside the outermost region.
@@ -115,7 +115,7 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
         if (levels.size() >= kMaxRings) return tooManyMoves(cycle);
         levels.push_back(std::move(level));
     }
-    Vec2 at{0.0, 0.0};
+    Vec2 at = from;
     bool first = true;
     size_t atLevel = 0;
     for (size_t k = levels.size(); k-- > 0;) {
@@ -123,15 +123,14 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
         while (!left.empty()) {
             size_t best = 0;
             double bestDistance = std::numeric_limits<double>::infinity();
-            for (size_t i = 0; i < left.size() && !first; ++i) {
+            for (size_t i = 0; i < left.size(); ++i) {
                 const double d = left[i].distanceTo(at);
                 if (d < bestDistance) {
                     bestDistance = d;
                     best = i;
                 }
             }
-            ClosedContour pass = climb ? left[best] : left[best].reversed();
-            if (!first) pass = startingNearest(pass, at);
+            ClosedContour pass = startingNearest(climb ? left[best] : left[best].reversed(), at);
             left.erase(left.begin() + static_cast<std::ptrdiff_t>(best));
             ClearingPass p;
             p.path = std::move(pass);
@@ -147,6 +146,10 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
         }
     }
     return std::nullopt;
+}
+
+Vec2 planningStart(const CycleContext& ctx) {
+    return ctx.contours.front().contour.segments.front().start;
 }
 
 void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed) {

@@ -55,9 +55,13 @@ struct ClearingPass {
 
 // Contour-parallel clearing of `region` from the inside out: the region and its offsets inwards
 // by `step`, innermost first, each pass starting where it is nearest to the end of the pass
-// before. Climb: the region's own direction; up-cut: reversed.
+// before (the first nearest to `from`). Climb: the region's own direction; up-cut: reversed.
 std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
-                                       std::vector<ClearingPass>& out);
+                                       const Vec2& from, std::vector<ClearingPass>& out);
+
+// Where clearings start: near the first contour's start point, the same for cycles 21, 22 and 23
+// wherever the tool stands, so that 21 drills where 22 plunges.
+Vec2 planningStart(const CycleContext& context);
 
 // Runs a clearing at the tool-axis coordinate `w`: the first pass from above (rapid to
 // set-up clearance over the start, to `reentryW`, plunge at `plunge`), the others by their link.
