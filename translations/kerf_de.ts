@@ -5928,6 +5928,46 @@ editieren</translation>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>das Kontur-Unterprogramm LBL {1} braucht Radiuskorrektur RL oder RR (Tasche oder Insel)</translation>
     </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>FRAESTIEFE</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>BAHN-UEBERLAPPUNG</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>SICHERE HOEHE</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>RUNDUNGSRADIUS</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>DREHSINN</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>VORSCHUB RAEUMEN</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>RAEUMWERKZEUG</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>VORRAEUM-WERKZEUG</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>VORSCHUB PENDELN</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>NACHRAEUMSTRATEGIE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -5928,6 +5928,46 @@ ciclo</translation>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>el subprograma de contorno LBL {1} necesita corrección de radio RL o RR (cajera o isla)</translation>
     </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>PROFUNDIDAD FRESADO</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>SOLAPAMIENTO TRAY.</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>ALTURA SEGURIDAD</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>RADIO REDONDEO</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>SENTIDO DE GIRO</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>AVANCE DESBASTE</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>HERRAM. DESBASTE</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>HERRAM. PREDESBASTE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>AVANCE PENDULADO</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>ESTRATEGIA DESB.FINO</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

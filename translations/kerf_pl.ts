@@ -5931,6 +5931,46 @@ cykl</translation>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>podprogram konturu LBL {1} wymaga korekcji promienia RL lub RR (kieszeń lub wyspa)</translation>
     </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>GLEBOKOSC FREZOW.</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>NAKLADANIE TOROW</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>BEZPIECZNA WYSOKOSC</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>PROMIEN ZAOKRAGL.</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>KIERUNEK OBROTU</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>POSUW PRZECIAGANIA</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>NARZ. PRZECIAGANIA</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>NARZ. WSTEPNE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>POSUW RUCHU WAHADL.</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>STRATEGIA DOKONCZ.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

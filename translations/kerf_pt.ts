@@ -5928,6 +5928,46 @@ ciclo</translation>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>o subprograma de contorno LBL {1} precisa de correção de raio RL ou RR (caixa ou ilha)</translation>
     </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>PROFUNDIDADE FRESAR</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>SOBREPOSICAO TRAJ.</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>ALTURA DE SEGURANCA</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>RAIO ARREDONDAMENTO</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>SENTIDO DE ROTACAO</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>AVANCO DESBASTE</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>FERRAM. DESBASTE</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>FERRAM. PRE-DESBASTE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>AVANCO PENDULAR</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>ESTRAT. DESB. FINO</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -11,7 +11,7 @@ using namespace contour;
 
 // "CYCL DEF 14.1 CONTOUR LABEL 1/2/3": the keyword is language-dependent, the numbers count.
 constexpr ParameterDescriptor kLabels[] = {
-    {.word = "LABEL",
+    {.word = "CONTOUR LABEL",
      .description = KERF_TR_NOOP("Label numbers of the contour subprograms (up to 12, "
                                  "separated by /)"),
      .unit = Unit::Text}};
