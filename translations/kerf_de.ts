@@ -6694,6 +6694,174 @@ zyklen</translation>
         <translation>Simulation</translation>
     </message>
     <message>
+        <source>Label numbers of the contour subprograms (up to 12, separated by /)</source>
+        <translation>Labelnummern der Kontur-Unterprogramme (bis zu 12, durch / getrennt)</translation>
+    </message>
+    <message>
+        <source>Inside corner rounding radius</source>
+        <translation>Rundungsradius an Innenecken</translation>
+    </message>
+    <message>
+        <source>CONTOUR</source>
+        <translation>KONTUR</translation>
+    </message>
+    <message>
+        <source>CONTOUR DATA</source>
+        <translation>KONTUR-DATEN</translation>
+    </message>
+    <message>
+        <source>Rough-out tool number (0: the tool in the spindle)</source>
+        <translation>Nummer des Räumwerkzeugs (0: Werkzeug in der Spindel)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a pocket among the contours of cycle 14</source>
+        <translation>Zyklus {1} braucht eine Tasche unter den Konturen von Zyklus 14</translation>
+    </message>
+    <message>
+        <source>cycle {1}: tool {2} ({3}) is not in the tool table</source>
+        <translation>Zyklus {1}: Werkzeug {2} ({3}) ist nicht in der Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>PILOT DRILLING</source>
+        <translation>VORBOHREN</translation>
+    </message>
+    <message>
+        <source>Coarse roughing tool number (0: none)</source>
+        <translation>Nummer des Vorräumwerkzeugs (0: keines)</translation>
+    </message>
+    <message>
+        <source>Feed rate for reciprocation</source>
+        <translation>Vorschub Pendeln</translation>
+    </message>
+    <message>
+        <source>Feed rate factor in %</source>
+        <translation>Vorschubfaktor in %</translation>
+    </message>
+    <message>
+        <source>Fine roughing strategy (0 along the contour, 1 retract between areas)</source>
+        <translation>Nachräumstrategie (0 entlang der Kontur, 1 Abheben zwischen den Bereichen)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the feed rate for reciprocation Q19 needs the plunge angle ANGLE of the tool</source>
+        <translation>Zyklus {1}: der Vorschub Pendeln Q19 braucht den Eintauchwinkel ANGLE des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
+        <translation>Zyklus {1}: helixförmiges Eintauchen (Q19 mit einem Werkzeug-ANGLE unter 90) wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT</source>
+        <translation>RAEUMEN</translation>
+    </message>
+    <message>
+        <source>FLOOR FINISHING</source>
+        <translation>SCHLICHTEN TIEFE</translation>
+    </message>
+    <message>
+        <source>SIDE FINISHING</source>
+        <translation>SCHLICHTEN SEITE</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 20 CONTOUR DATA before it</source>
+        <translation>Zyklus {1} braucht davor Zyklus 20 KONTUR-DATEN</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 14 CONTOUR before it</source>
+        <translation>Zyklus {1} braucht davor Zyklus 14 KONTUR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the islands of cycle 14 cover the whole pocket</source>
+        <translation>Zyklus {1}: die Inseln von Zyklus 14 bedecken die ganze Tasche</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: milling feed)</source>
+        <translation>Vorschub Rückzug (0: Fräsvorschub)</translation>
+    </message>
+    <message>
+        <source>cycle 14: a label number from 1 to 65535 expected</source>
+        <translation>Zyklus 14: eine Labelnummer von 1 bis 65535 erwartet</translation>
+    </message>
+    <message>
+        <source>cycle 14: label numbers are separated by &apos;/&apos;</source>
+        <translation>Zyklus 14: Labelnummern werden durch &apos;/&apos; getrennt</translation>
+    </message>
+    <message>
+        <source>cycle 14 lists 1 to 12 label numbers</source>
+        <translation>Zyklus 14 nennt 1 bis 12 Labelnummern</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour subprogram</source>
+        <translation>dieser Satz ist in einem Kontur-Unterprogramm nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>a contour subprogram must not move in the tool axis</source>
+        <translation>ein Kontur-Unterprogramm darf nicht in der Werkzeugachse verfahren</translation>
+    </message>
+    <message>
+        <source>the first block of a contour subprogram must be a straight line with both working-plane axes</source>
+        <translation>der erste Satz eines Kontur-Unterprogramms muss eine Gerade mit beiden Achsen der Bearbeitungsebene sein</translation>
+    </message>
+    <message>
+        <source>a contour subprogram has more than 16384 blocks</source>
+        <translation>ein Kontur-Unterprogramm hat mehr als 16384 Sätze</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} has no contour</source>
+        <translation>das Kontur-Unterprogramm LBL {1} enthält keine Kontur</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} encloses no area</source>
+        <translation>die Kontur von LBL {1} umschließt keine Fläche</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} intersects itself</source>
+        <translation>die Kontur von LBL {1} schneidet sich selbst</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
+        <translation>das Kontur-Unterprogramm LBL {1} braucht Radiuskorrektur RL oder RR (Tasche oder Insel)</translation>
+    </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>FRAESTIEFE</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>BAHN-UEBERLAPPUNG</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>SICHERE HOEHE</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>RUNDUNGSRADIUS</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>DREHSINN</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>VORSCHUB RAEUMEN</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>RAEUMWERKZEUG</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>VORRAEUM-WERKZEUG</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>VORSCHUB PENDELN</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>NACHRAEUMSTRATEGIE</translation>
+    </message>
+    <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>nach G00 braucht das Rohteilprofil G01, G02 oder G03</translation>
     </message>

@@ -6694,6 +6694,174 @@ fijos</translation>
         <translation>Simulación</translation>
     </message>
     <message>
+        <source>Label numbers of the contour subprograms (up to 12, separated by /)</source>
+        <translation>Números de label de los subprogramas de contorno (hasta 12, separados por /)</translation>
+    </message>
+    <message>
+        <source>Inside corner rounding radius</source>
+        <translation>Radio de redondeo en esquinas interiores</translation>
+    </message>
+    <message>
+        <source>CONTOUR</source>
+        <translation>CONTORNO</translation>
+    </message>
+    <message>
+        <source>CONTOUR DATA</source>
+        <translation>DATOS DEL CONTORNO</translation>
+    </message>
+    <message>
+        <source>Rough-out tool number (0: the tool in the spindle)</source>
+        <translation>Número de la herramienta de desbaste (0: la herramienta del cabezal)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a pocket among the contours of cycle 14</source>
+        <translation>el ciclo {1} necesita una cajera entre los contornos del ciclo 14</translation>
+    </message>
+    <message>
+        <source>cycle {1}: tool {2} ({3}) is not in the tool table</source>
+        <translation>ciclo {1}: la herramienta {2} ({3}) no está en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>PILOT DRILLING</source>
+        <translation>PRETALADRADO</translation>
+    </message>
+    <message>
+        <source>Coarse roughing tool number (0: none)</source>
+        <translation>Número de la herramienta de predesbaste (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>Feed rate for reciprocation</source>
+        <translation>Avance de pendulado</translation>
+    </message>
+    <message>
+        <source>Feed rate factor in %</source>
+        <translation>Factor de avance en %</translation>
+    </message>
+    <message>
+        <source>Fine roughing strategy (0 along the contour, 1 retract between areas)</source>
+        <translation>Estrategia de desbaste fino (0 a lo largo del contorno, 1 retirar entre zonas)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the feed rate for reciprocation Q19 needs the plunge angle ANGLE of the tool</source>
+        <translation>ciclo {1}: el avance de pendulado Q19 necesita el ángulo de profundización ANGLE de la herramienta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
+        <translation>ciclo {1}: la profundización helicoidal (Q19 con un ANGLE de herramienta inferior a 90) aún no está soportada</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT</source>
+        <translation>DESBASTE</translation>
+    </message>
+    <message>
+        <source>FLOOR FINISHING</source>
+        <translation>ACABADO EN PROFUNDIDAD</translation>
+    </message>
+    <message>
+        <source>SIDE FINISHING</source>
+        <translation>ACABADO LATERAL</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 20 CONTOUR DATA before it</source>
+        <translation>el ciclo {1} necesita antes el ciclo 20 DATOS DEL CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 14 CONTOUR before it</source>
+        <translation>el ciclo {1} necesita antes el ciclo 14 CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the islands of cycle 14 cover the whole pocket</source>
+        <translation>ciclo {1}: las islas del ciclo 14 cubren toda la cajera</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: milling feed)</source>
+        <translation>Avance de retroceso (0: avance de fresado)</translation>
+    </message>
+    <message>
+        <source>cycle 14: a label number from 1 to 65535 expected</source>
+        <translation>ciclo 14: se espera un número de label de 1 a 65535</translation>
+    </message>
+    <message>
+        <source>cycle 14: label numbers are separated by &apos;/&apos;</source>
+        <translation>ciclo 14: los números de label se separan con &apos;/&apos;</translation>
+    </message>
+    <message>
+        <source>cycle 14 lists 1 to 12 label numbers</source>
+        <translation>el ciclo 14 enumera de 1 a 12 números de label</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour subprogram</source>
+        <translation>esta frase no está permitida en un subprograma de contorno</translation>
+    </message>
+    <message>
+        <source>a contour subprogram must not move in the tool axis</source>
+        <translation>un subprograma de contorno no debe desplazarse en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>the first block of a contour subprogram must be a straight line with both working-plane axes</source>
+        <translation>la primera frase de un subprograma de contorno debe ser una recta con ambos ejes del plano de mecanizado</translation>
+    </message>
+    <message>
+        <source>a contour subprogram has more than 16384 blocks</source>
+        <translation>un subprograma de contorno tiene más de 16384 frases</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} has no contour</source>
+        <translation>el subprograma de contorno LBL {1} no tiene contorno</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} encloses no area</source>
+        <translation>el contorno de LBL {1} no encierra ninguna superficie</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} intersects itself</source>
+        <translation>el contorno de LBL {1} se corta a sí mismo</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
+        <translation>el subprograma de contorno LBL {1} necesita corrección de radio RL o RR (cajera o isla)</translation>
+    </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>PROFUNDIDAD FRESADO</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>SOLAPAMIENTO TRAY.</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>ALTURA SEGURIDAD</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>RADIO REDONDEO</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>SENTIDO DE GIRO</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>AVANCE DESBASTE</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>HERRAM. DESBASTE</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>HERRAM. PREDESBASTE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>AVANCE PENDULADO</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>ESTRATEGIA DESB.FINO</translation>
+    </message>
+    <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>tras G00 el perfil del material en bruto necesita G01, G02 o G03</translation>
     </message>

@@ -6697,6 +6697,174 @@ stałe</translation>
         <translation>Symulacja</translation>
     </message>
     <message>
+        <source>Label numbers of the contour subprograms (up to 12, separated by /)</source>
+        <translation>Numery etykiet podprogramów konturu (do 12, oddzielone /)</translation>
+    </message>
+    <message>
+        <source>Inside corner rounding radius</source>
+        <translation>Promień zaokrąglenia naroży wewnętrznych</translation>
+    </message>
+    <message>
+        <source>CONTOUR</source>
+        <translation>KONTUR</translation>
+    </message>
+    <message>
+        <source>CONTOUR DATA</source>
+        <translation>DANE KONTURU</translation>
+    </message>
+    <message>
+        <source>Rough-out tool number (0: the tool in the spindle)</source>
+        <translation>Numer narzędzia do przeciągania (0: narzędzie we wrzecionie)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a pocket among the contours of cycle 14</source>
+        <translation>cykl {1} wymaga kieszeni wśród konturów cyklu 14</translation>
+    </message>
+    <message>
+        <source>cycle {1}: tool {2} ({3}) is not in the tool table</source>
+        <translation>cykl {1}: narzędzia {2} ({3}) nie ma w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>PILOT DRILLING</source>
+        <translation>WIERCENIE WSTEPNE</translation>
+    </message>
+    <message>
+        <source>Coarse roughing tool number (0: none)</source>
+        <translation>Numer narzędzia do obróbki zgrubnej wstępnej (0: brak)</translation>
+    </message>
+    <message>
+        <source>Feed rate for reciprocation</source>
+        <translation>Posuw ruchu wahadłowego</translation>
+    </message>
+    <message>
+        <source>Feed rate factor in %</source>
+        <translation>Współczynnik posuwu w %</translation>
+    </message>
+    <message>
+        <source>Fine roughing strategy (0 along the contour, 1 retract between areas)</source>
+        <translation>Strategia obróbki wykańczającej zgrubnej (0 wzdłuż konturu, 1 odsunięcie między obszarami)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the feed rate for reciprocation Q19 needs the plunge angle ANGLE of the tool</source>
+        <translation>cykl {1}: posuw ruchu wahadłowego Q19 wymaga kąta wcięcia ANGLE narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
+        <translation>cykl {1}: wcięcie po linii śrubowej (Q19 z ANGLE narzędzia poniżej 90) nie jest jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT</source>
+        <translation>PRZECIAGANIE</translation>
+    </message>
+    <message>
+        <source>FLOOR FINISHING</source>
+        <translation>OBROBKA NA GOTOWO DNA</translation>
+    </message>
+    <message>
+        <source>SIDE FINISHING</source>
+        <translation>OBROBKA NA GOTOWO BOKU</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 20 CONTOUR DATA before it</source>
+        <translation>cykl {1} wymaga wcześniej cyklu 20 DANE KONTURU</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 14 CONTOUR before it</source>
+        <translation>cykl {1} wymaga wcześniej cyklu 14 KONTUR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the islands of cycle 14 cover the whole pocket</source>
+        <translation>cykl {1}: wyspy cyklu 14 pokrywają całą kieszeń</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: milling feed)</source>
+        <translation>Posuw wycofania (0: posuw frezowania)</translation>
+    </message>
+    <message>
+        <source>cycle 14: a label number from 1 to 65535 expected</source>
+        <translation>cykl 14: oczekiwano numeru etykiety od 1 do 65535</translation>
+    </message>
+    <message>
+        <source>cycle 14: label numbers are separated by &apos;/&apos;</source>
+        <translation>cykl 14: numery etykiet oddziela się znakiem &apos;/&apos;</translation>
+    </message>
+    <message>
+        <source>cycle 14 lists 1 to 12 label numbers</source>
+        <translation>cykl 14 podaje od 1 do 12 numerów etykiet</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour subprogram</source>
+        <translation>ten blok jest niedozwolony w podprogramie konturu</translation>
+    </message>
+    <message>
+        <source>a contour subprogram must not move in the tool axis</source>
+        <translation>podprogram konturu nie może przemieszczać w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>the first block of a contour subprogram must be a straight line with both working-plane axes</source>
+        <translation>pierwszy blok podprogramu konturu musi być prostą z obiema osiami płaszczyzny obróbki</translation>
+    </message>
+    <message>
+        <source>a contour subprogram has more than 16384 blocks</source>
+        <translation>podprogram konturu ma więcej niż 16384 bloki</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} has no contour</source>
+        <translation>podprogram konturu LBL {1} nie zawiera konturu</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} encloses no area</source>
+        <translation>kontur LBL {1} nie obejmuje żadnej powierzchni</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} intersects itself</source>
+        <translation>kontur LBL {1} przecina sam siebie</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
+        <translation>podprogram konturu LBL {1} wymaga korekcji promienia RL lub RR (kieszeń lub wyspa)</translation>
+    </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>GLEBOKOSC FREZOW.</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>NAKLADANIE TOROW</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>BEZPIECZNA WYSOKOSC</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>PROMIEN ZAOKRAGL.</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>KIERUNEK OBROTU</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>POSUW PRZECIAGANIA</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>NARZ. PRZECIAGANIA</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>NARZ. WSTEPNE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>POSUW RUCHU WAHADL.</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>STRATEGIA DOKONCZ.</translation>
+    </message>
+    <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>po G00 profil półfabrykatu wymaga G01, G02 lub G03</translation>
     </message>

@@ -6694,6 +6694,174 @@ fixos</translation>
         <translation>Simulação</translation>
     </message>
     <message>
+        <source>Label numbers of the contour subprograms (up to 12, separated by /)</source>
+        <translation>Números de label dos subprogramas de contorno (até 12, separados por /)</translation>
+    </message>
+    <message>
+        <source>Inside corner rounding radius</source>
+        <translation>Raio de arredondamento nos cantos interiores</translation>
+    </message>
+    <message>
+        <source>CONTOUR</source>
+        <translation>CONTORNO</translation>
+    </message>
+    <message>
+        <source>CONTOUR DATA</source>
+        <translation>DADOS DO CONTORNO</translation>
+    </message>
+    <message>
+        <source>Rough-out tool number (0: the tool in the spindle)</source>
+        <translation>Número da ferramenta de desbaste (0: a ferramenta na árvore)</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a pocket among the contours of cycle 14</source>
+        <translation>o ciclo {1} precisa de uma caixa entre os contornos do ciclo 14</translation>
+    </message>
+    <message>
+        <source>cycle {1}: tool {2} ({3}) is not in the tool table</source>
+        <translation>ciclo {1}: a ferramenta {2} ({3}) não está na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>PILOT DRILLING</source>
+        <translation>PRÉ-FURAR</translation>
+    </message>
+    <message>
+        <source>Coarse roughing tool number (0: none)</source>
+        <translation>Número da ferramenta de desbaste prévio (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>Feed rate for reciprocation</source>
+        <translation>Avanço de pendular</translation>
+    </message>
+    <message>
+        <source>Feed rate factor in %</source>
+        <translation>Fator de avanço em %</translation>
+    </message>
+    <message>
+        <source>Fine roughing strategy (0 along the contour, 1 retract between areas)</source>
+        <translation>Estratégia de desbaste fino (0 ao longo do contorno, 1 retrair entre áreas)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the feed rate for reciprocation Q19 needs the plunge angle ANGLE of the tool</source>
+        <translation>ciclo {1}: o avanço de pendular Q19 precisa do ângulo de penetração ANGLE da ferramenta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
+        <translation>ciclo {1}: a penetração helicoidal (Q19 com um ANGLE da ferramenta inferior a 90) ainda não é suportada</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT</source>
+        <translation>DESBASTAR</translation>
+    </message>
+    <message>
+        <source>FLOOR FINISHING</source>
+        <translation>ACABAMENTO EM PROFUNDIDADE</translation>
+    </message>
+    <message>
+        <source>SIDE FINISHING</source>
+        <translation>ACABAMENTO LATERAL</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 20 CONTOUR DATA before it</source>
+        <translation>o ciclo {1} precisa antes do ciclo 20 DADOS DO CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs cycle 14 CONTOUR before it</source>
+        <translation>o ciclo {1} precisa antes do ciclo 14 CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the islands of cycle 14 cover the whole pocket</source>
+        <translation>ciclo {1}: as ilhas do ciclo 14 cobrem a caixa inteira</translation>
+    </message>
+    <message>
+        <source>Retraction feed rate (0: milling feed)</source>
+        <translation>Avanço de retrocesso (0: avanço de fresagem)</translation>
+    </message>
+    <message>
+        <source>cycle 14: a label number from 1 to 65535 expected</source>
+        <translation>ciclo 14: esperado um número de label de 1 a 65535</translation>
+    </message>
+    <message>
+        <source>cycle 14: label numbers are separated by &apos;/&apos;</source>
+        <translation>ciclo 14: os números de label são separados por &apos;/&apos;</translation>
+    </message>
+    <message>
+        <source>cycle 14 lists 1 to 12 label numbers</source>
+        <translation>o ciclo 14 lista de 1 a 12 números de label</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour subprogram</source>
+        <translation>este bloco não é permitido num subprograma de contorno</translation>
+    </message>
+    <message>
+        <source>a contour subprogram must not move in the tool axis</source>
+        <translation>um subprograma de contorno não deve deslocar no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>the first block of a contour subprogram must be a straight line with both working-plane axes</source>
+        <translation>o primeiro bloco de um subprograma de contorno deve ser uma reta com os dois eixos do plano de maquinagem</translation>
+    </message>
+    <message>
+        <source>a contour subprogram has more than 16384 blocks</source>
+        <translation>um subprograma de contorno tem mais de 16384 blocos</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} has no contour</source>
+        <translation>o subprograma de contorno LBL {1} não tem contorno</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} encloses no area</source>
+        <translation>o contorno de LBL {1} não delimita nenhuma área</translation>
+    </message>
+    <message>
+        <source>the contour of LBL {1} intersects itself</source>
+        <translation>o contorno de LBL {1} interseta-se a si mesmo</translation>
+    </message>
+    <message>
+        <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
+        <translation>o subprograma de contorno LBL {1} precisa de correção de raio RL ou RR (caixa ou ilha)</translation>
+    </message>
+    <message>
+        <source>MILLING DEPTH</source>
+        <translation>PROFUNDIDADE FRESAR</translation>
+    </message>
+    <message>
+        <source>TOOL PATH OVERLAP</source>
+        <translation>SOBREPOSICAO TRAJ.</translation>
+    </message>
+    <message>
+        <source>CLEARANCE HEIGHT</source>
+        <translation>ALTURA DE SEGURANCA</translation>
+    </message>
+    <message>
+        <source>ROUNDING RADIUS</source>
+        <translation>RAIO ARREDONDAMENTO</translation>
+    </message>
+    <message>
+        <source>ROTATIONAL DIRECTION</source>
+        <translation>SENTIDO DE ROTACAO</translation>
+    </message>
+    <message>
+        <source>FEED RATE F. ROUGHNG</source>
+        <translation>AVANCO DESBASTE</translation>
+    </message>
+    <message>
+        <source>ROUGH-OUT TOOL</source>
+        <translation>FERRAM. DESBASTE</translation>
+    </message>
+    <message>
+        <source>COARSE ROUGHING TOOL</source>
+        <translation>FERRAM. PRE-DESBASTE</translation>
+    </message>
+    <message>
+        <source>FEED RATE FOR RECIP.</source>
+        <translation>AVANCO PENDULAR</translation>
+    </message>
+    <message>
+        <source>FINE ROUGH STRATEGY</source>
+        <translation>ESTRAT. DESB. FINO</translation>
+    </message>
+    <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>após G00 o perfil do material bruto precisa de G01, G02 ou G03</translation>
     </message>

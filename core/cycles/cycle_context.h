@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -7,6 +8,7 @@
 #include "core/canon/commands.h"
 #include "core/cycles/cycle_values.h"
 #include "core/geometry/axes.h"
+#include "core/geometry/offset_contour.h"
 
 // What a cycle reads and how it emits its moves. Cycles work in a local frame of the working
 // plane: u = main axis, v = secondary axis, w = tool axis (positive away from the workpiece), in
@@ -36,6 +38,14 @@ struct DateTime {
     int second = 0;
 };
 
+// One contour subprogram listed in cycle 14 (SL cycles), as programmed: its direction and its
+// radius compensation tell a pocket (the tool inside) from an island (the tool outside).
+struct SubContour {
+    ClosedContour contour;
+    bool island = false;
+    int label = 0;
+};
+
 struct CycleContext {
     Vec3 start{0.0, 0.0, 0.0};  // tool position when the cycle starts (hole centre in the plane)
     ToolInfo tool;
@@ -47,6 +57,13 @@ struct CycleContext {
     bool mirroredSecondary = false;
     DateTime now;                    // cycle 225 %time
     unsigned long long counter = 0;  // cycle 225 %count: the MOD counter (0 in test run)
+    // SL cycles 21-24: the subcontours of cycle 14 (empty without it), the values of cycle 20
+    // (null without it), the tools of the table by number (Q13, Q18; R without DR) and the
+    // radius of the tool that last roughed this contour (cycle 22; 0: none).
+    std::vector<SubContour> contours;
+    const CycleValues* contourData = nullptr;
+    std::function<std::optional<ToolInfo>(int)> toolByNumber;
+    double roughingRadius = 0.0;
 };
 
 // A problem that stops the cycle; the interpreter adds the location of the calling block.

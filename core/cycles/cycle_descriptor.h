@@ -20,7 +20,8 @@ enum class CycleGroup : uint8_t {
     Pattern,
     Transformation,
     Special,
-    PocketsStudsSlots
+    PocketsStudsSlots,
+    Contours  // SL cycles 14, 20-24
 };
 
 struct PatternPlan;

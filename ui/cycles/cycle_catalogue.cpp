@@ -37,6 +37,7 @@ CatalogueGroup catalogueGroup(const cycles::CycleDescriptor& cycle) {
         case CycleGroup::Special:
             return CatalogueGroup::SpecialCycles;
         case CycleGroup::PocketsStudsSlots:
+        case CycleGroup::Contours:  // SL cycles: no group of their own in the catalogue yet
             return CatalogueGroup::PocketsStudsSlots;
     }
     return CatalogueGroup::SpecialCycles;

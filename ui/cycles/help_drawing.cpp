@@ -89,6 +89,21 @@ HelpDrawing faceMilling() {
 }
 
 // Cycles 251-257: the outline of the pocket, stud or slot in plan with its sizes.
+// SL cycles: the drilling section read as a pocket (its walls the contour) with the allowances
+// of cycle 20 and the contour labels of cycle 14 on the walls.
+HelpDrawing contourSection() {
+    HelpDrawing d = drillingSection(false);
+    QPainterPath walls;
+    walls.moveTo(45, 50);
+    walls.lineTo(45, 85);
+    walls.lineTo(55, 85);
+    walls.lineTo(55, 50);
+    d.dimensions.push_back({{"CONTOUR LABEL"}, walls, {47, 92}});
+    d.dimensions.push_back({{"Q3", "Q14"}, arrow({45, 75}, {48, 75}), {35, 75}});
+    d.dimensions.push_back({{"Q4"}, arrow({50, 85}, {50, 82}), {51, 80}});
+    return d;
+}
+
 HelpDrawing pocketPlan() {
     HelpDrawing d;
     d.solid.addRoundedRect(QRectF(25, 30, 55, 40), 8, 8);
@@ -289,6 +304,8 @@ HelpDrawing helpDrawing(const cycles::CycleDescriptor& cycle) {
             return specialSymbols(cycle.number);
         case CycleGroup::PocketsStudsSlots:
             return pocketPlan();
+        case CycleGroup::Contours:
+            return contourSection();
     }
     return drillingSection(false);
 }

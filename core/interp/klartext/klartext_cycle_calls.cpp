@@ -169,6 +169,23 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
              {std::to_string(kCycleMovesPerBlock)});
         return false;
     }
+    if (d.group == cycles::CycleGroup::Contours) {
+        if (!captureContours(ctx.contours)) return false;
+        ctx.contourData = m_contourData ? &*m_contourData : nullptr;
+        ctx.roughingRadius = m_roughingRadius;
+        ctx.toolByNumber = [this](int number) -> std::optional<cycles::ToolInfo> {
+            const tables::ToolData* data =
+                m_settings.tools ? m_settings.tools->byNumber(number) : nullptr;
+            auto own = m_programTools.find(number);
+            if (own != m_programTools.end()) data = &own->second;
+            if (data == nullptr) return std::nullopt;
+            cycles::ToolInfo tool;
+            tool.number = number;
+            tool.radius = data->radius;  // without DR (spec: cycles 21 and 22)
+            tool.length = data->length;
+            return tool;
+        };
+    }
     const canon::FeedMode mode = m_feedMode;
     CycleOutput out(*this);
     cycles::CyclePath path(out, ctx.start);
@@ -184,6 +201,7 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
         failCycle(*error);
         return false;
     }
+    if (d.number == 22) m_roughingRadius = ctx.tool.radius;
     return m_status != interp::RunStatus::Failed;
 }
 
@@ -196,7 +214,8 @@ void KlartextInterpreter::callCycleHere(const cycles::CycleValues* overrides) {
 }
 
 void KlartextInterpreter::afterPositioning(const MWords& m) {
-    if (m_modalCycleCall && !hasM(m, 89) && !hasM(m, 99) && m_status != interp::RunStatus::Failed) {
+    if (m_modalCycleCall && m_capturePath == nullptr && !hasM(m, 89) && !hasM(m, 99) &&
+        m_status != interp::RunStatus::Failed) {
         callCycleHere();
     }
 }

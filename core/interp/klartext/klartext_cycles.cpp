@@ -200,6 +200,8 @@ void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
     }
     if (d->pattern != nullptr) {
         runPatternCycle(*d, stored.values);
+    } else if (def.number == 20) {
+        m_contourData = std::move(stored.values);
     } else if (def.number == 247) {
         const Pose at = m_frame.toWorkpiece(m_programmed);
         presetting(stored.values);
@@ -213,7 +215,7 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
         int number;
         Handler handler;
     };
-    static constexpr std::array<Entry, 11> kHandlers = {{
+    static constexpr std::array<Entry, 12> kHandlers = {{
         {7, &KlartextInterpreter::datumShift},
         {8, &KlartextInterpreter::mirrorImage},
         {9, &KlartextInterpreter::dwellTime},
@@ -221,6 +223,7 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
         {11, &KlartextInterpreter::scaling},
         {12, &KlartextInterpreter::programCall},
         {13, &KlartextInterpreter::spindleOrientation},
+        {14, &KlartextInterpreter::contourLabels},
         {18, &KlartextInterpreter::threadCutting},
         {19, &KlartextInterpreter::workingPlane},
         {26, &KlartextInterpreter::axisScaling},

@@ -227,7 +227,7 @@ bool KlartextInterpreter::outputValuesOk() {
 }
 
 void KlartextInterpreter::emit(canon::CommandBody body) {
-    m_path.addCommand(canon::Command{m_at, std::move(body)});
+    activePath().addCommand(canon::Command{m_at, std::move(body)});
 }
 
 // ---- the run loop ----------------------------------------------------------------------------

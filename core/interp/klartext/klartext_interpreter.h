@@ -220,6 +220,12 @@ private:
     void spindleOrientation(const CycleDefinition& def);
     void threadCutting(const CycleDefinition& def);
     void tolerance(const CycleDefinition& def);
+    // Cycle 14 and the contour subprograms of the SL cycles (klartext_contours.cpp).
+    void contourLabels(const CycleDefinition& def);
+    bool captureContours(std::vector<cycles::SubContour>& out);
+    bool captureContour(const LabelPosition& position, int label, cycles::SubContour& out);
+    // Where moves go: the canonical stream, or a contour subprogram being read.
+    interp::PathBuilder& activePath() { return m_capturePath ? *m_capturePath : m_path; }
     std::optional<double> lastValue(const CycleDefinition& def, const char* what);
     // Coordinate transformations of path functions and cycles alike.
     std::optional<ContourElement> toWorkpiece(const ContourElement& element);
@@ -358,6 +364,12 @@ private:
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;
     std::vector<ProgramAtPoints> m_pointRuns;  // cycle 12 at pattern points, innermost last
+    // SL cycles: the labels of cycle 14, the values of cycle 20, the radius of the tool of the
+    // last cycle 22 (cycle 24's condition), and the path of a contour subprogram being read.
+    std::vector<int> m_contourLabels;
+    std::optional<cycles::CycleValues> m_contourData;
+    double m_roughingRadius = 0.0;
+    interp::PathBuilder* m_capturePath = nullptr;
 };
 
 }  // namespace kerf::klartext

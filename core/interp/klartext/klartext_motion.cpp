@@ -96,7 +96,7 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
     // A mirror image puts the tool on the other side of the mirrored contour.
     if (m_frame.flipsOrientation(element.plane)) move.side = flipped(move.side);
     move.location = m_at;
-    if (!checkPathError(m_path.addMove(move))) return;
+    if (!checkPathError(activePath().addMove(move))) return;
     m_programmed = element.end;
     if (element.movesInPlane()) {
         m_lastTangent = element.endTangent();
@@ -327,8 +327,8 @@ void KlartextInterpreter::executeCorner(bool chamfer, double size, const FeedWor
         feed = value;
     }
     size *= lengthScale() * m_frame.planeScale(workingPlane());
-    auto error =
-        chamfer ? m_path.addChamfer(size, feed, m_at) : m_path.addRounding(size, feed, m_at);
+    auto error = chamfer ? activePath().addChamfer(size, feed, m_at)
+                         : activePath().addRounding(size, feed, m_at);
     checkPathError(error);
 }
 

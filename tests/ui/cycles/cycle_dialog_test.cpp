@@ -279,8 +279,8 @@ TEST(CycleDialog, EveryCycleWrittenWithItsDefaultsOrSampleValuesChecksClean) {
     test::testApp();
     // Old-style words without a default get a value an operator would type.
     const std::map<std::pair<int, int>, QString> typed = {
-        {{7, 0}, "+10"},  {{7, 1}, "I-5"},  {{8, 0}, "X Y"},  {{10, 0}, "I45"},  {{12, 0}, "SUB.H"},
-        {{19, 1}, "+10"}, {{26, 0}, "1.5"}, {{26, 3}, "+20"}, {{225, 0}, "KERF"}};
+        {{7, 0}, "+10"},  {{7, 1}, "I-5"},  {{8, 0}, "X Y"},  {{10, 0}, "I45"}, {{12, 0}, "SUB.H"},
+        {{14, 0}, "1/2"}, {{19, 1}, "+10"}, {{26, 0}, "1.5"}, {{26, 3}, "+20"}, {{225, 0}, "KERF"}};
     QStringList program{"BEGIN PGM ALL MM"};
     for (const cycles::CycleDescriptor* cycle : cycles::allCycles()) {
         CycleDialog dialog(*cycle, false);

@@ -38,9 +38,7 @@ const std::map<std::string, std::string> kKnownBad = {
 // others run to their end or to a problem of their own (the cycles 7, 8, 9, 10, 26 and 32 they use
 // all run).
 const std::vector<std::string> kStopAtUnsupported = {
-    "668.klartext",             // cycle 5 (obsolete circular pocket)
-    "SLII001.klartext",         // cycle 14 (SL contour)
-    "VESELYparametr.klartext",  // cycle 14 (SL contour)
+    "668.klartext",  // cycle 5 (obsolete circular pocket)
 };
 
 bool endsWith(const std::string& name, const std::string& suffix) {

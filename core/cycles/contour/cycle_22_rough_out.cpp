@@ -1,0 +1,139 @@
+// Cycle 22 ROUGH-OUT (spec §6): the area of cycle 14 cleared contour-parallel from the inside
+// out at each plunging depth, islands milled around; with Q18 only what a coarser tool left.
+#include <cmath>
+
+#include "core/cycles/contour/sl_machining.h"
+#include "core/cycles/contour/sl_parameters.h"
+#include "core/cycles/detail/cycle_list.h"
+#include "core/cycles/pocket/milling_setup.h"
+
+namespace kerf::cycles {
+
+namespace {
+
+using namespace contour;
+
+constexpr ParameterDescriptor kParameters[] = {
+    kPlungingDepth,
+    kPlungeFeed,
+    kMillingFeed,
+    {.q = 18,
+     .description = KERF_TR_NOOP("Coarse roughing tool number (0: none)"),
+     .min = 0.0,
+     .max = 99999.0,
+     .defaultValue = 0.0},
+    {.q = 19,
+     .description = KERF_TR_NOOP("Feed rate for reciprocation"),
+     .unit = Unit::FeedPerMinute,
+     .min = 0.0,
+     .max = kFeed,
+     .defaultValue = 0.0,
+     .keywords = kFeedWords},
+    common::addedLater(kRetractionFeed),
+    common::addedLater({.q = 401,
+                        .description = KERF_TR_NOOP("Feed rate factor in %"),
+                        .unit = Unit::Percent,
+                        .min = 0.0001,
+                        .max = 100.0,
+                        .defaultValue = 100.0}),
+    common::addedLater({.q = 404,
+                        .description = KERF_TR_NOOP("Fine roughing strategy (0 along the contour, "
+                                                    "1 retract between areas)"),
+                        .min = 0.0,
+                        .max = 1.0,
+                        .defaultValue = 0.0,
+                        .integer = true}),
+};
+
+// Q19 with the tool's ANGLE (spec): 0 vertical at Q11; ANGLE 90 vertical at Q19; no ANGLE is an
+// error; a helix for other angles is not done yet.
+std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& ctx, Feed& out) {
+    out = v.feed(11);
+    if (v.number(19) <= 0.0) return std::nullopt;
+    const double angle = ctx.tool.plungeAngleDeg;
+    if (angle <= 0.0) {
+        return contourError(22, KERF_TR_NOOP("cycle {1}: the feed rate for reciprocation Q19 "
+                                             "needs the plunge angle ANGLE of the tool"));
+    }
+    if (std::fabs(angle - 90.0) > 1e-9) {
+        return contourError(22, KERF_TR_NOOP("cycle {1}: helical plunging (Q19 with a tool "
+                                             "ANGLE below 90) is not supported yet"));
+    }
+    out = v.feed(19);
+    return std::nullopt;
+}
+
+// With a coarse roughing tool: only where it could not reach (the rest material, which does not
+// know the coarse tool's DR), widened by the tool radius so the tool reaches all of it.
+std::optional<CycleError> restRegion(const CycleValues& v, const CycleContext& ctx,
+                                     const ContourArea& area, const ContourData& d,
+                                     Region& region) {
+    const int number = static_cast<int>(v.number(18));
+    std::optional<ToolInfo> coarse = ctx.toolByNumber ? ctx.toolByNumber(number) : std::nullopt;
+    if (!coarse) {
+        return CycleError{"cycle-tool",
+                          KERF_TR_NOOP("cycle {1}: tool {2} ({3}) is not in the tool table"),
+                          {"22", std::to_string(number), "Q18"}};
+    }
+    const Region coarseCentre = toolCentreRegion(area, coarse->radius + d.sideAllowance);
+    const Region cleared = offsetRegion(coarseCentre, coarse->radius);
+    const Region rest = subtract(offsetRegion(area.area, -d.sideAllowance), cleared);
+    region = rest.empty() ? Region{} : intersect(region, offsetRegion(rest, ctx.tool.radius));
+    return std::nullopt;
+}
+
+std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
+    ContourData d;
+    if (auto e = readContourData(22, ctx, d)) return e;
+    ContourArea area;
+    if (auto e = combineContours(22, ctx, area)) return e;
+    if (area.islandsOnly) {
+        return contourError(22, KERF_TR_NOOP("cycle {1} needs a pocket among the contours of "
+                                             "cycle 14"));
+    }
+    const double radius = ctx.tool.radius;
+    if (radius <= 0.0) {
+        return CycleError{"cycle-tool",
+                          KERF_TR_NOOP("cycle {1} needs a tool with a radius greater than 0"),
+                          {"22"}};
+    }
+    Feed plunge;
+    if (auto e = plungeFeed(v, ctx, plunge)) return e;
+    const Feed mill = v.feed(12);
+    const Feed retract = v.feedOr(208, 12);
+    Region region = toolCentreRegion(area, radius + d.sideAllowance);
+    if (region.empty()) return pocket::toolTooLarge(22);
+    const bool rest = v.number(18) > 0.0;
+    if (rest) {
+        if (auto e = restRegion(v, ctx, area, d, region)) return e;
+    }
+    std::vector<ClearingPass> passes;
+    if (!region.empty()) {
+        if (auto e =
+                planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
+            return e;
+    }
+    std::vector<double> depths;
+    if (auto e = infeedDepths(22, 0.0, d.depth - d.floorAllowance, v.number(10), depths)) return e;
+    if (passes.empty() || depths.empty()) return std::nullopt;
+
+    if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
+    double previous = 0.0;
+    for (double depth : depths) {
+        runClearing(path, passes, d, d.at(depth), d.at(previous) + d.up * d.setUpClearance, mill,
+                    plunge);
+        previous = depth;
+    }
+    path.moveW(d.clearanceHeight, retract);
+    return std::nullopt;
+}
+
+}  // namespace
+
+const CycleDescriptor kCycle22{.number = 22,
+                               .name = KERF_TR_NOOP("ROUGH-OUT"),
+                               .group = CycleGroup::Contours,
+                               .parameters = kParameters,
+                               .expand = expand};
+
+}  // namespace kerf::cycles

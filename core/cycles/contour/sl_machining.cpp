@@ -1,0 +1,183 @@
+#include "core/cycles/contour/sl_machining.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/base/translate.h"
+#include "core/cycles/drilling/hole_levels.h"
+
+namespace kerf::cycles::contour {
+
+namespace {
+
+constexpr size_t kMaxLevels = 10000;
+constexpr size_t kMaxRings = 10000;
+
+// A subcontour's area, counter-clockwise.
+Region areaOf(const SubContour& sub) {
+    return regionOf(sub.contour);
+}
+
+}  // namespace
+
+CycleError contourError(int cycle, const char* messageTemplate) {
+    return CycleError{"cycle-contour", messageTemplate, {std::to_string(cycle)}};
+}
+
+std::optional<CycleError> readContourData(int cycle, const CycleContext& ctx, ContourData& out) {
+    if (ctx.contourData == nullptr) {
+        return contourError(cycle, KERF_TR_NOOP("cycle {1} needs cycle 20 CONTOUR DATA before it"));
+    }
+    const CycleValues& v = *ctx.contourData;
+    if (auto e = checkDepthSign(20, 1, v.number(1), ctx)) return e;
+    out.depth = std::fabs(v.number(1));
+    out.up = v.number(1) > 0.0 ? -1.0 : 1.0;
+    out.overlap = v.number(2);
+    out.sideAllowance = v.number(3);
+    out.floorAllowance = v.number(4);
+    out.surface = v.number(5);
+    out.setUpClearance = v.number(6);
+    out.clearanceHeight = v.number(7);
+    // A mirror image reverses the paths; the direction is swapped to keep the milling type.
+    out.climb = v.integer(9) >= 0;
+    if (ctx.mirroredMain != ctx.mirroredSecondary) out.climb = !out.climb;
+    return std::nullopt;
+}
+
+std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx, ContourArea& out) {
+    if (ctx.contours.empty()) {
+        return contourError(cycle, KERF_TR_NOOP("cycle {1} needs cycle 14 CONTOUR before it"));
+    }
+    std::optional<Region> pockets;
+    std::optional<Vec2> firstStart;
+    Region islands;
+    for (const SubContour& sub : ctx.contours) {
+        const Region area = areaOf(sub);
+        if (sub.island) {
+            islands = islands.empty() ? area : unite(islands, area);
+            continue;
+        }
+        if (!pockets) {
+            pockets = area;
+            firstStart = sub.contour.segments.front().start;
+            continue;
+        }
+        // Spec §6.2: the first pocket starting inside a later one keeps the common area only.
+        const bool inside =
+            area.contains(*firstStart) && sub.contour.distanceTo(*firstStart) > 1e-6;
+        pockets = inside ? intersect(*pockets, area) : unite(*pockets, area);
+    }
+    if (!pockets) {
+        out.area = islands;
+        out.islandsOnly = true;
+        return std::nullopt;
+    }
+    out.area = islands.empty() ? *pockets : subtract(*pockets, islands);
+    out.islandsOnly = false;
+    if (out.area.empty()) {
+        return contourError(cycle, KERF_TR_NOOP("cycle {1}: the islands of cycle 14 cover the "
+                                                "whole pocket"));
+    }
+    return std::nullopt;
+}
+
+Region toolCentreRegion(const ContourArea& area, double inset) {
+    if (!area.islandsOnly) return offsetRegion(area.area, -inset);
+    // Around islands only: the tool centre stays outside them, the free side on the left.
+    Region around = offsetRegion(area.area, inset);
+    for (ClosedContour& c : around.boundaries)
+        c = c.reversed();
+    return around;
+}
+
+std::optional<CycleError> infeedDepths(int cycle, double from, double to, double step,
+                                       std::vector<double>& out) {
+    out.clear();
+    const double span = to - from;
+    if (span <= 1e-9) return std::nullopt;
+    step = std::fabs(step);
+    const double count = step > 0.0 ? std::ceil(span / step - 1e-9) : 1.0;
+    if (count > static_cast<double>(kMaxLevels)) return tooManyMoves(cycle);
+    const int n = static_cast<int>(count);
+    for (int k = 1; k <= n; ++k)
+        out.push_back(k == n ? to : from + k * step);
+    return std::nullopt;
+}
+
+std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
+                                       const Vec2& from, std::vector<ClearingPass>& out) {
+    out.clear();
+    // The levels of the offsets, outermost first; a point of level k has 0 ... k steps of room
+    // around it inside the outermost region.
+    std::vector<Region> levels;
+    for (Region level = region; !level.empty();
+         level = offsetRegion(region, -step * static_cast<double>(levels.size()))) {
+        if (levels.size() >= kMaxRings) return tooManyMoves(cycle);
+        levels.push_back(std::move(level));
+    }
+    Vec2 at = from;
+    bool first = true;
+    size_t atLevel = 0;
+    for (size_t k = levels.size(); k-- > 0;) {
+        std::vector<ClosedContour> left = levels[k].boundaries;
+        while (!left.empty()) {
+            size_t best = 0;
+            double bestDistance = std::numeric_limits<double>::infinity();
+            for (size_t i = 0; i < left.size(); ++i) {
+                const double d = left[i].distanceTo(at);
+                if (d < bestDistance) {
+                    bestDistance = d;
+                    best = i;
+                }
+            }
+            ClosedContour pass = startingNearest(climb ? left[best] : left[best].reversed(), at);
+            left.erase(left.begin() + static_cast<std::ptrdiff_t>(best));
+            ClearingPass p;
+            p.path = std::move(pass);
+            const Vec2 start = p.path.segments.front().start;
+            // A disc of radius (level x step) about a point of that level lies inside the
+            // outermost region, so a straight move that short stays inside it.
+            const double room = static_cast<double>(std::max(k, atLevel)) * step;
+            p.straightLink = !first && (start - at).norm() <= room + 1e-9;
+            at = start;
+            atLevel = k;
+            first = false;
+            out.push_back(std::move(p));
+        }
+    }
+    return std::nullopt;
+}
+
+Vec2 planningStart(const CycleContext& ctx) {
+    return ctx.contours.front().contour.segments.front().start;
+}
+
+void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed) {
+    const double w = path.w();
+    for (const PlanarSegment& s : contour.segments) {
+        if (s.kind == PlanarSegment::Kind::Line) {
+            path.moveUv(s.end, feed);
+        } else {
+            path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
+        }
+    }
+}
+
+void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const ContourData& data,
+                 double w, double reentryW, const Feed& mill, const Feed& plunge) {
+    for (const ClearingPass& pass : passes) {
+        const Vec2 start = pass.path.segments.front().start;
+        if (pass.straightLink) {
+            path.moveUv(start, mill);
+        } else {
+            // Over islands and uncut material: up to the set-up clearance above the surface.
+            if ((path.w() - data.aboveSurface()) * data.up < 0.0) path.rapidW(data.aboveSurface());
+            path.rapidUv(start);
+            path.rapidW(reentryW);
+            path.moveW(w, plunge);
+        }
+        followPath(path, pass.path, mill);
+    }
+}
+
+}  // namespace kerf::cycles::contour

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/cycles/cycle_context.h"
+#include "core/cycles/cycle_path.h"
+#include "core/geometry/contour_region.h"
+
+// What the SL cycles 21-24 share (spec §6): cycle 20's data, the area of cycle 14's superimposed
+// subcontours, the depth levels and the contour-parallel clearing of a tool-centre region.
+namespace kerf::cycles::contour {
+
+struct ContourData {     // cycle 20
+    double depth = 0.0;  // |Q1|
+    double up = 1.0;     // +1 when Q1 points into -w (the usual negative depth)
+    double overlap = 1.0;
+    double sideAllowance = 0.0;
+    double floorAllowance = 0.0;
+    double surface = 0.0;
+    double setUpClearance = 0.0;
+    double clearanceHeight = 0.0;
+    bool climb = true;  // Q9, after a mirror image
+
+    // The tool-axis coordinate `depthBelow` (>= 0) into the material.
+    double at(double depthBelow) const { return surface - up * depthBelow; }
+    double aboveSurface() const { return at(-setUpClearance); }
+};
+
+std::optional<CycleError> readContourData(int cycle, const CycleContext& context, ContourData& out);
+
+// The machined area: pockets superimposed in cycle 14's order (a pocket adds its area, or keeps
+// only the common area when the first pocket starts inside it), islands taken away. Without
+// any pocket, `islandsOnly` is set and `area` is the union of the islands.
+struct ContourArea {
+    Region area;
+    bool islandsOnly = false;
+};
+std::optional<CycleError> combineContours(int cycle, const CycleContext& context, ContourArea& out);
+
+// Where the tool centre may be: `inset` from every wall (outside the islands when islands only),
+// with the area left of every boundary.
+Region toolCentreRegion(const ContourArea& area, double inset);
+
+// Infeed depths (> 0) from `from` to `to` in steps of at most |step| (0: one), the last at `to`.
+std::optional<CycleError> infeedDepths(int cycle, double from, double to, double step,
+                                       std::vector<double>& out);
+
+// One closed path of a clearing and whether the tool reaches it by a straight move at the
+// depth (within the region) or must lift and plunge again.
+struct ClearingPass {
+    ClosedContour path;
+    bool straightLink = false;
+};
+
+// Contour-parallel clearing of `region` from the inside out: the region and its offsets inwards
+// by `step`, innermost first, each pass starting where it is nearest to the end of the pass
+// before (the first nearest to `from`). Climb: the region's own direction; up-cut: reversed.
+std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
+                                       const Vec2& from, std::vector<ClearingPass>& out);
+
+// Where clearings start: near the first contour's start point, the same for cycles 21, 22 and 23
+// wherever the tool stands, so that 21 drills where 22 plunges.
+Vec2 planningStart(const CycleContext& context);
+
+// Runs a clearing at the tool-axis coordinate `w`: the first pass from above (rapid to
+// set-up clearance over the start, to `reentryW`, plunge at `plunge`), the others by their link.
+void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const ContourData& data,
+                 double w, double reentryW, const Feed& mill, const Feed& plunge);
+
+// Follows a closed path from its start at the current height.
+void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed);
+
+CycleError contourError(int cycle, const char* messageTemplate);
+
+}  // namespace kerf::cycles::contour

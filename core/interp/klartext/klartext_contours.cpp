@@ -1,0 +1,270 @@
+// Cycle 14 CONTOUR and the contour subprograms of the SL cycles (spec §6.1): at a cycle call
+// each listed label is read with the interpreter's own path functions (CC, C, CR, CT, RND, CHF,
+// polar), its moves kept instead of sent on, and turned into a closed chain of lines and arcs.
+#include <cmath>
+#include <type_traits>
+
+#include "core/base/translate.h"
+#include "core/geometry/contour_region.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+
+namespace kerf::klartext {
+
+namespace {
+
+constexpr size_t kMaxContourBlocks = 16384;  // spec: contour elements of one SL cycle
+constexpr size_t kMaxContourLabels = 12;
+
+// Keeps what a contour subprogram would have sent to the canonical stream.
+class MoveCapture final : public canon::Sink {
+public:
+    void consume(const canon::Command& command) override { commands.push_back(command); }
+    std::vector<canon::Command> commands;
+};
+
+// Blocks a contour subprogram may hold: path functions and parameter calculations.
+bool allowedInContour(const Statement& s) {
+    return std::holds_alternative<Empty>(s) || std::holds_alternative<LinearBlock>(s) ||
+           std::holds_alternative<CircleCenter>(s) || std::holds_alternative<CircleBlock>(s) ||
+           std::holds_alternative<CircleRadiusBlock>(s) ||
+           std::holds_alternative<CircleTangentBlock>(s) || std::holds_alternative<RoundBlock>(s) ||
+           std::holds_alternative<ChamferBlock>(s) || std::holds_alternative<LinePolarBlock>(s) ||
+           std::holds_alternative<CirclePolarBlock>(s) ||
+           std::holds_alternative<CircleTangentPolarBlock>(s) ||
+           std::holds_alternative<QAssign>(s) || std::holds_alternative<QStringAssign>(s);
+}
+
+const Coordinates* coordinatesOf(const Statement& s) {
+    return std::visit(
+        [](const auto& b) -> const Coordinates* {
+            if constexpr (requires { b.coords; }) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(b.coords)>, Coordinates>) {
+                    return &b.coords;
+                }
+            }
+            return nullptr;
+        },
+        s);
+}
+
+bool movesInPlane(const Statement& s) {
+    return std::holds_alternative<LinearBlock>(s) || std::holds_alternative<CircleBlock>(s) ||
+           std::holds_alternative<CircleRadiusBlock>(s) ||
+           std::holds_alternative<CircleTangentBlock>(s) ||
+           std::holds_alternative<LinePolarBlock>(s) ||
+           std::holds_alternative<CirclePolarBlock>(s) ||
+           std::holds_alternative<CircleTangentPolarBlock>(s);
+}
+
+}  // namespace
+
+// "CYCL DEF 14.1 CONTOUR LABEL 1/2/3" (KONTURLABEL1 /2, LABEL CONTORNO1/2 ...): the keyword is
+// language-dependent, the numbers after it are the labels.
+void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
+    if (def.subNumber != 1) return;
+    const std::string& text = def.rest;
+    size_t at = text.find_first_of("0123456789");
+    std::vector<int> labels;
+    while (at != std::string::npos && at < text.size()) {
+        size_t end = at;
+        long value = 0;
+        while (end < text.size() && isDigit(text[end]) && value <= 65535) {
+            value = value * 10 + (text[end] - '0');
+            ++end;
+        }
+        if (value < 1 || value > 65535) {
+            fail("cycle-syntax", KERF_TR_NOOP("cycle 14: a label number from 1 to 65535 expected"));
+            return;
+        }
+        labels.push_back(static_cast<int>(value));
+        while (end < text.size() && (text[end] == ' ' || text[end] == '\t'))
+            ++end;
+        if (end >= text.size() || text[end] == ';') break;
+        if (text[end] != '/') {
+            fail("cycle-syntax", KERF_TR_NOOP("cycle 14: label numbers are separated by '/'"));
+            return;
+        }
+        at = text.find_first_of("0123456789", end + 1);
+    }
+    if (labels.empty() || labels.size() > kMaxContourLabels) {
+        fail("cycle-syntax", KERF_TR_NOOP("cycle 14 lists 1 to 12 label numbers"));
+        return;
+    }
+    m_contourLabels = std::move(labels);
+}
+
+bool KlartextInterpreter::captureContours(std::vector<cycles::SubContour>& out) {
+    out.clear();
+    for (int label : m_contourLabels) {
+        LabelTarget target;
+        target.number = label;
+        const LabelPosition* position = resolveLabel(target);
+        if (position == nullptr) return false;
+        cycles::SubContour sub;
+        if (!captureContour(*position, label, sub)) return false;
+        out.push_back(std::move(sub));
+    }
+    return true;
+}
+
+bool KlartextInterpreter::captureContour(const LabelPosition& position, int label,
+                                         cycles::SubContour& out) {
+    // The subprogram runs in program coordinates (the cycle's moves are transformed later),
+    // without compensation (RL/RR only tell pocket from island), from the current position.
+    const Pose programmed = m_programmed;
+    const CompWord comp = m_comp;
+    const std::optional<Vec2> lastTangent = m_lastTangent;
+    const Plane lastTangentPlane = m_lastTangentPlane;
+    const Direction direction = m_direction;
+    const cycles::CoordinateFrame frame = m_frame;
+    const SourceLocation callAt = m_at;
+    const canon::FeedMode feedMode = m_feedMode;
+    const double feed = m_feed;
+    const bool feedSet = m_feedSet;
+    // Feeds of a contour subprogram do not matter (the cycle has its own): any will do.
+    if (!m_feedSet) {
+        m_feed = 1.0;
+        m_feedSet = true;
+    }
+    m_frame = cycles::CoordinateFrame{};
+    m_comp = CompWord::Off;
+    MoveCapture capture;
+    interp::PathBuilder builder(capture);
+    builder.reset(m_programmed);
+    builder.setToolRadius(0.0);
+    m_capturePath = &builder;
+
+    const ProgramFile& program = *m_levels.back().program;
+    const Plane plane = workingPlane();
+    const PlaneAxes axes = planeAxes(plane);
+    BlockReader reader(program.source->text());
+    reader.seek(position.offset, position.line);
+    program::LogicalLine line;
+    ParsedBlock parsed;
+    bool firstBlock = true;
+    bool firstMove = true;
+    std::optional<CompWord> side;
+    size_t count = 0;
+    while (m_status != interp::RunStatus::Failed && reader.next(line)) {
+        m_at = SourceLocation{program.fileId, line.firstLine, 1, -1};
+        if (!m_parser.parse(line, parsed)) {
+            const ParseProblem& p = m_parser.problem();
+            m_at.line = line.lineAt(p.offset);
+            m_at.column = line.columnAt(p.offset);
+            fail(p.code.c_str(), p.messageTemplate.c_str(), p.args);
+            break;
+        }
+        m_at.blockNumber = parsed.blockNumber;
+        const Statement& s = parsed.statement;
+        if (std::holds_alternative<Label>(s)) {
+            if (firstBlock) {
+                firstBlock = false;
+                continue;
+            }
+            break;  // LBL 0, or the next subprogram
+        }
+        firstBlock = false;
+        if (!allowedInContour(s)) {
+            fail("contour", KERF_TR_NOOP("this block is not allowed in a contour subprogram"));
+            break;
+        }
+        if (const Coordinates* c = coordinatesOf(s); c != nullptr && c->has(axes.normal)) {
+            fail("contour", KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
+            break;
+        }
+        if (firstMove && movesInPlane(s)) {
+            const auto* l = std::get_if<LinearBlock>(&s);
+            if (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second)) {
+                fail("contour", KERF_TR_NOOP("the first block of a contour subprogram must be a "
+                                             "straight line with both working-plane axes"));
+                break;
+            }
+        }
+        if (++count > kMaxContourBlocks) {
+            fail("contour", KERF_TR_NOOP("a contour subprogram has more than 16384 blocks"));
+            break;
+        }
+        execute(s);
+        if (firstMove && movesInPlane(s)) {
+            firstMove = false;
+            side = m_comp;
+        }
+    }
+    if (m_status != interp::RunStatus::Failed) checkPathError(builder.flush());
+    m_capturePath = nullptr;
+    m_programmed = programmed;
+    m_comp = comp;
+    m_lastTangent = lastTangent;
+    m_lastTangentPlane = lastTangentPlane;
+    m_direction = direction;
+    m_frame = frame;
+    m_at = callAt;
+    m_feedMode = feedMode;
+    m_feed = feed;
+    m_feedSet = feedSet;
+    if (m_status == interp::RunStatus::Failed) return false;
+
+    // The moves after the first (which leads to the start point) are the contour.
+    ClosedContour contour;
+    std::optional<Vec2> from;
+    for (const canon::Command& command : capture.commands) {
+        const Pose* target = nullptr;
+        const canon::ArcMove* arc = std::get_if<canon::ArcMove>(&command.body);
+        if (const auto* r = std::get_if<canon::RapidMove>(&command.body)) target = &r->target;
+        if (const auto* l = std::get_if<canon::LinearMove>(&command.body)) target = &l->target;
+        if (arc != nullptr) target = &arc->target;
+        if (target == nullptr) continue;
+        const Vec2 to{(*target)[axes.first], (*target)[axes.second]};
+        if (from && (to - *from).norm() > 1e-9) {
+            if (arc != nullptr) {
+                const Vec2 centre{arc->center[axisIndex(axes.first)],
+                                  arc->center[axisIndex(axes.second)]};
+                contour.segments.push_back(
+                    {PlanarSegment::Kind::Arc, *from, to, centre, arc->sweepRad});
+            } else {
+                contour.segments.push_back(PlanarSegment::line(*from, to));
+            }
+        } else if (from && arc != nullptr && std::fabs(arc->sweepRad) > 1e-9) {
+            const Vec2 centre{arc->center[axisIndex(axes.first)],
+                              arc->center[axisIndex(axes.second)]};
+            contour.segments.push_back(PlanarSegment::arc(*from, centre, arc->sweepRad));
+        }
+        from = to;
+    }
+    const std::vector<std::string> args{std::to_string(label)};
+    if (contour.empty()) {
+        fail("contour", KERF_TR_NOOP("the contour subprogram LBL {1} has no contour"), args);
+        return false;
+    }
+    // The control closes a contour that ends elsewhere with a straight line (the islands of the
+    // seed's chapter 7 example end one side short of their start).
+    const Vec2 start = contour.segments.front().start;
+    if ((contour.segments.back().end - start).norm() > 1e-6) {
+        contour.segments.push_back(PlanarSegment::line(contour.segments.back().end, start));
+    }
+    contour.segments.back().end = start;
+    if (std::fabs(contour.signedArea()) < 1e-9) {
+        fail("contour", KERF_TR_NOOP("the contour of LBL {1} encloses no area"), args);
+        return false;
+    }
+    if (selfIntersects(contour)) {
+        fail("contour", KERF_TR_NOOP("the contour of LBL {1} intersects itself"), args);
+        return false;
+    }
+    if (side != CompWord::Left && side != CompWord::Right) {
+        fail("contour",
+             KERF_TR_NOOP("the contour subprogram LBL {1} needs radius compensation RL or RR "
+                          "(pocket or island)"),
+             args);
+        return false;
+    }
+    // Spec §6.1: the tool inside the loop makes a pocket: clockwise with RR, counter-clockwise
+    // with RL. A mirror image of the subprogram keeps that relation, so program coordinates do.
+    const bool counterClockwise = contour.signedArea() > 0.0;
+    out.island = counterClockwise == (side == CompWord::Right);
+    out.contour = std::move(contour);
+    out.label = label;
+    return true;
+}
+
+}  // namespace kerf::klartext

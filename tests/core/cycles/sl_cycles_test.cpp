@@ -1,0 +1,288 @@
+// SL cycles 21-24 called directly with hand-made subcontours: the superimposed area, the depths,
+// the clearing rings and the errors. Values derived by hand in the comments.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "core/cycles/contour/sl_machining.h"
+#include "core/cycles/cycle_registry.h"
+
+namespace kerf::cycles {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Move {
+    enum Kind { Rapid, Line, Arc } kind;
+    Vec3 target;
+    Vec2 centre;
+    double sweep;
+    Feed feed;
+};
+
+struct Recorder final : CycleEmitter {
+    std::vector<Move> moves;
+    void rapid(const Vec3& t) override {
+        moves.push_back({Move::Rapid, t, Vec2::Zero(), 0.0, Feed::rapid()});
+    }
+    void line(const Vec3& t, const Feed& f) override {
+        moves.push_back({Move::Line, t, Vec2::Zero(), 0.0, f});
+    }
+    void arc(const Vec3& t, const Vec2& c, double s, const Feed& f) override {
+        moves.push_back({Move::Arc, t, c, s, f});
+    }
+    void threadMove(const Vec3&, double, double) override {}
+    void dwell(double) override {}
+    void spindle(canon::SpindleDirection, double) override {}
+    void orientSpindle(double) override {}
+    void miscFunction(int) override {}
+
+    // Arcs at height w about the origin with radius r.
+    size_t arcsAbout(const Vec2& centre, double r, double w) const {
+        size_t n = 0;
+        for (const Move& m : moves) {
+            const Vec2 end(m.target.x(), m.target.y());
+            if (m.kind == Move::Arc && std::fabs(m.target.z() - w) < 1e-9 &&
+                (m.centre - centre).norm() < 1e-9 && std::fabs((end - centre).norm() - r) < 1e-9) {
+                ++n;
+            }
+        }
+        return n;
+    }
+    // Total angle turned on arcs at height w about `centre` with radius r.
+    double turnAbout(const Vec2& centre, double r, double w) const {
+        double sum = 0.0;
+        for (const Move& m : moves) {
+            const Vec2 end(m.target.x(), m.target.y());
+            if (m.kind == Move::Arc && std::fabs(m.target.z() - w) < 1e-9 &&
+                (m.centre - centre).norm() < 1e-9 && std::fabs((end - centre).norm() - r) < 1e-9) {
+                sum += std::fabs(m.sweep);
+            }
+        }
+        return sum;
+    }
+};
+
+ClosedContour rectangle(double u0, double v0, double u1, double v1) {
+    const Vec2 p[] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
+    ClosedContour c;
+    for (size_t i = 0; i < 4; ++i)
+        c.segments.push_back(PlanarSegment::line(p[i], p[(i + 1) % 4]));
+    return c;
+}
+
+CycleValues contourData(double depth, double side, double floor) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{1, depth}, {2, 1.0}, {3, side},
+                                                  {4, floor}, {5, 0.0}, {6, 2.0},
+                                                  {7, 50.0},  {8, 0.0}, {9, 1.0}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    return v;
+}
+
+// The example: a 60 x 40 pocket about the origin, an island of 20 mm diameter in its
+// middle, tool R5.
+CycleContext pocketWithIsland(const CycleValues& data, double islandRadius = 10.0) {
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.contours.push_back({rectangle(-30, -20, 30, 20), false, 1});
+    ctx.contours.push_back({circleContour(islandRadius), true, 2});
+    ctx.contourData = &data;
+    return ctx;
+}
+
+std::optional<CycleError> run(int cycle, const CycleValues& v, const CycleContext& ctx,
+                              Recorder& out) {
+    CyclePath path(out, ctx.start);
+    return findCycle(cycle)->expand(v, ctx, path);
+}
+
+CycleValues roughOut(double plungingDepth) {
+    CycleValues v;
+    v.set(10, plungingDepth);
+    v.set(11, 100.0);
+    v.set(12, 350.0);
+    v.set(18, 0.0);
+    v.set(19, 0.0);
+    v.set(208, 0.0);
+    return v;
+}
+
+// Allowance 0.5, overlap 1: tool-centre rings at 5.5 and 10.5 from the walls. Ring 1: the
+// rectangle |u| <= 24.5, |v| <= 14.5 less the circle 10 + 5 + 0.5 = 15.5, which reaches beyond
+// v = 14.5: two regions, each closed by an arc of radius 15.5. Ring 2: |u| <= 19.5, |v| <= 9.5
+// less the circle 20.5, which also crosses u = +-19.5 (at v = +-sqrt(20.5^2 - 19.5^2)): four
+// corner regions, each with an arc of radius 20.5. At
+// 15.5 from the walls (|v| <= 4.5, circle 25.5) nothing is left. Depth 10 in infeeds of 5.
+TEST(SlCycles, RoughOutClearsAroundTheIslandAtEachInfeed) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(22, roughOut(5.0), pocketWithIsland(data), out));
+    // The arcs (a pass may start inside one and end on its rest): 15.5 from v = 14.5 to -14.5
+    // on each side, 20.5 between v = 9.5 and v = sqrt(40) in each corner.
+    const double ring1 = 4.0 * std::atan2(14.5, std::sqrt(30.0));
+    const double ring2 = 4.0 * (std::asin(9.5 / 20.5) - std::asin(std::sqrt(40.0) / 20.5));
+    for (double w : {-5.0, -10.0}) {
+        EXPECT_NEAR(out.turnAbout({0.0, 0.0}, 15.5, w), ring1, 1e-9) << w;
+        EXPECT_NEAR(out.turnAbout({0.0, 0.0}, 20.5, w), ring2, 1e-9) << w;
+        EXPECT_GE(out.arcsAbout({0.0, 0.0}, 20.5, w), 4u) << w;
+    }
+    double lowest = 1e9;
+    for (const Move& m : out.moves) {
+        lowest = std::min(lowest, m.target.z());
+        if (m.target.z() >= 0.0) continue;
+        // Never nearer than R + allowance to a wall or to the island.
+        EXPECT_LE(std::fabs(m.target.x()), 24.5 + 1e-9);
+        EXPECT_LE(std::fabs(m.target.y()), 14.5 + 1e-9);
+        EXPECT_GE(Vec2(m.target.x(), m.target.y()).norm(), 15.5 - 1e-9);
+    }
+    EXPECT_NEAR(lowest, -10.0, 1e-12);
+    // Every plunge is at Q11 and every move in the plane at Q12; the end at Q7 at Q12 (Q208 0).
+    for (size_t i = 1; i < out.moves.size(); ++i) {
+        const Move& m = out.moves[i];
+        if (m.kind == Move::Rapid) continue;
+        const Vec3 from = out.moves[i - 1].target;
+        const bool down = m.target.z() < from.z() - 1e-9;
+        const bool up = m.target.z() > from.z() + 1e-9;
+        EXPECT_DOUBLE_EQ(m.feed.value, down ? 100.0 : 350.0) << i;
+        if (up) {
+            EXPECT_NEAR(m.target.z(), 50.0, 1e-12);
+        }
+    }
+    EXPECT_NEAR(out.moves.back().target.z(), 50.0, 1e-12);
+}
+
+// A smaller island (r 3): ring 1 has a hole of radius 3 + 5.5 = 8.5; ring 2 (|v| <= 9.5) is cut
+// by the circle 13.5 into two regions whose arcs span 4 asin(9.5 / 13.5) together; ring 3
+// (|v| <= 4.5, circle 18.5) is empty. Q9 = -1 runs them the other way.
+TEST(SlCycles, UpCutRunsTheRingsTheOtherWay) {
+    CycleValues data = contourData(-5.0, 0.5, 0.0);
+    Recorder climb;
+    ASSERT_FALSE(run(22, roughOut(5.0), pocketWithIsland(data, 3.0), climb));
+    data.set(9, -1.0);
+    Recorder upCut;
+    ASSERT_FALSE(run(22, roughOut(5.0), pocketWithIsland(data, 3.0), upCut));
+    auto sweepAbout = [](const Recorder& r, double radius) {
+        double sum = 0.0;
+        for (const Move& m : r.moves) {
+            const Vec2 end(m.target.x(), m.target.y());
+            if (m.kind == Move::Arc && m.centre.norm() < 1e-9 &&
+                std::fabs(end.norm() - radius) < 1e-9) {
+                sum += m.sweep;
+            }
+        }
+        return sum;
+    };
+    // Climb: the holes clockwise (the area on the left), up-cut counter-clockwise.
+    EXPECT_NEAR(sweepAbout(climb, 8.5), -2.0 * kPi, 1e-9);
+    EXPECT_NEAR(sweepAbout(upCut, 8.5), 2.0 * kPi, 1e-9);
+    EXPECT_NEAR(sweepAbout(climb, 13.5), -4.0 * std::asin(9.5 / 13.5), 1e-9);
+    EXPECT_NEAR(sweepAbout(upCut, 13.5), 4.0 * std::asin(9.5 / 13.5), 1e-9);
+}
+
+// Cycle 21 drills where 22 plunges: depth 10 less the floor allowance 0.5 in infeeds of 5: down
+// to -5 at Q11, out to the set-up clearance, back to 0.6 mm above -5, down to -9.5.
+TEST(SlCycles, PilotDrillingPecksToTheDepthLessTheFloorAllowance) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.5);
+    CycleValues v;
+    v.set(10, 5.0);
+    v.set(11, 250.0);
+    v.set(13, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(21, v, pocketWithIsland(data, 3.0), out));
+    std::vector<double> feeds;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Line) feeds.push_back(m.target.z());
+    }
+    ASSERT_GE(feeds.size(), 2u);
+    EXPECT_NEAR(feeds[0], -5.0, 1e-12);
+    EXPECT_NEAR(feeds[1], -9.5, 1e-12);
+    bool advancedStop = false;
+    for (const Move& m : out.moves)
+        advancedStop =
+            advancedStop || (m.kind == Move::Rapid && std::fabs(m.target.z() + 4.4) < 1e-12);
+    EXPECT_TRUE(advancedStop);
+    EXPECT_NEAR(out.moves.back().target.z(), 50.0, 1e-12);
+}
+
+// Cycle 24 after roughing with R5 and Q3 0.5: the walls at R5 + Q14 0: the rectangle |u| <= 25,
+// |v| <= 15 and the circle 8 + 5 = 13 about the island, each at depths 5 and 10.
+TEST(SlCycles, SideFinishingFollowsEveryBoundaryAtEachInfeed) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.0);
+    CycleContext ctx = pocketWithIsland(data, 8.0);
+    ctx.roughingRadius = 5.0;
+    CycleValues v;
+    v.set(9, 1.0);
+    v.set(10, 5.0);
+    v.set(11, 100.0);
+    v.set(12, 400.0);
+    v.set(14, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(24, v, ctx, out));
+    for (double w : {-5.0, -10.0})
+        EXPECT_EQ(out.arcsAbout({0.0, 0.0}, 13.0, w), 1u) << w;
+    size_t wallLines = 0;
+    for (const Move& m : out.moves) {
+        if (m.kind != Move::Line || m.target.z() > -5.0 + 1e-9) continue;
+        if (std::fabs(std::fabs(m.target.x()) - 25.0) < 1e-9 ||
+            std::fabs(std::fabs(m.target.y()) - 15.0) < 1e-9) {
+            ++wallLines;
+        }
+    }
+    EXPECT_GE(wallLines, 8u);  // four sides at two depths
+    // Q14 + R must stay below Q3 + R(roughing): 0 + 5 < 0.5 + 5, but 0.6 + 5 is not.
+    v.set(14, 0.6);
+    Recorder refused;
+    auto error = run(24, v, ctx, refused);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-tool");
+}
+
+TEST(SlCycles, ErrorsWithoutContourOrDataAndForATooLargeTool) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.0);
+    Recorder out;
+    CycleContext ctx = pocketWithIsland(data);
+    ctx.contourData = nullptr;
+    auto noData = run(22, roughOut(5.0), ctx, out);
+    ASSERT_TRUE(noData);
+    EXPECT_EQ(noData->code, "cycle-contour");
+    ctx = pocketWithIsland(data);
+    ctx.contours.clear();
+    auto noContour = run(22, roughOut(5.0), ctx, out);
+    ASSERT_TRUE(noContour);
+    EXPECT_EQ(noContour->code, "cycle-contour");
+    ctx = pocketWithIsland(data);
+    ctx.tool.radius = 20.0;  // 40 mm wide pocket: no room for R20 + 0.5
+    auto tooLarge = run(22, roughOut(5.0), ctx, out);
+    ASSERT_TRUE(tooLarge);
+    EXPECT_EQ(tooLarge->code, "cycle-tool");
+}
+
+// Spec §6.2 with the circles of the seed: pocket A (r 25 about X35 Y50) and B (about X65).
+TEST(SlCycles, SuperimposedPocketsUnionIntersectionDifference) {
+    const CycleValues data = contourData(-10.0, 0.0, 0.0);
+    auto circleAt = [](double u) { return circleContour(25.0).placed({u, 50.0}, 0.0); };
+    const double lens = 2.0 * 625.0 * std::acos(0.6) - 15.0 * 40.0;
+    CycleContext ctx;
+    ctx.contourData = &data;
+    // A starts at X10 (outside B): the sum.
+    ctx.contours = {{startingNearest(circleAt(35.0), {10.0, 50.0}), false, 1},
+                    {circleAt(65.0), false, 2}};
+    contour::ContourArea area;
+    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    EXPECT_NEAR(area.area.area(), 2.0 * kPi * 625.0 - lens, 1e-6);
+    // A starts at X60 (inside B): the intersection.
+    ctx.contours[0].contour = startingNearest(circleAt(35.0), {60.0, 50.0});
+    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    EXPECT_NEAR(area.area.area(), lens, 1e-6);
+    // B an island: the difference.
+    ctx.contours[1].island = true;
+    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    EXPECT_NEAR(area.area.area(), kPi * 625.0 - lens, 1e-6);
+}
+
+}  // namespace
+}  // namespace kerf::cycles
