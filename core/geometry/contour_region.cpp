@@ -1,7 +1,5 @@
 #include "core/geometry/contour_region.h"
 
-#include "core/geometry/segment_intersection.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,6 +7,8 @@
 #include <optional>
 
 #include <clipper.hpp>
+
+#include "core/geometry/segment_intersection.h"
 
 namespace kerf {
 

@@ -25,10 +25,10 @@ enum class GGroup : uint8_t {
 
 enum GFlag : uint16_t {
     kModal = 1u << 0,
-    kAlone = 1u << 1,            // nothing else in the block but its own arguments
-    kNoOtherG = 1u << 2,         // no other G function (G74)
-    kNotSupported = 1u << 4,     // G46 inclined axis: not in this release
-    kCombinable = 1u << 5,       // may repeat its group in one block (G11 G12 G13)
+    kAlone = 1u << 1,         // nothing else in the block but its own arguments
+    kNoOtherG = 1u << 2,      // no other G function (G74)
+    kNotSupported = 1u << 4,  // G46 inclined axis: not in this release
+    kCombinable = 1u << 5,    // may repeat its group in one block (G11 G12 G13)
 };
 
 // One G function of the FAGOR 8035 T (spec part 1 §4, part 2 appendix A).
