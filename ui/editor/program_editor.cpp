@@ -8,6 +8,7 @@
 
 #include "ui/common/diagnostic_text.h"
 #include "ui/editor/block_numbers.h"
+#include "ui/editor/label_references.h"
 #include "ui/editor/renumber_job.h"
 #include "ui/editor/visible_highlighter.h"
 
@@ -95,6 +96,7 @@ void ProgramEditor::insertBlock() {
         const long long inserted =
             readBlockNumber(cursor.block().text(), dialect()).value_or(BlockNumber{}).number;
         BlockCounter counter(dialect(), inserted);
+        RenamedLabels renamed;
         for (QTextBlock next = cursor.block().next(); next.isValid(); next = next.next()) {
             const long long previous = counter.last();
             const auto numbered = counter.next(next.text());
@@ -102,9 +104,12 @@ void ProgramEditor::insertBlock() {
             // ISO numbers only need to keep ascending.
             if (dialect() != program::Dialect::Klartext && numbered->current.number > previous)
                 break;
-            if (numbered->current.number != numbered->wanted)
-                writeBlockNumber(edit, next, numbered->current, numbered->wanted, dialect());
+            if (numbered->current.number == numbered->wanted) continue;
+            writeBlockNumber(edit, next, numbered->current, numbered->wanted, dialect());
+            renamed.emplace(numbered->current.number, numbered->wanted);
         }
+        // FAGOR block numbers are labels: what jumps to them or names them follows them.
+        if (dialect() == program::Dialect::Fagor) renameLabelReferences(*document(), edit, renamed);
         edit.endEditBlock();
     } else {
         m_numbersStale = true;

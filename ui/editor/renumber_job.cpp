@@ -61,15 +61,23 @@ void RenumberJob::runSlice() {
                 m_changed = true;
             }
             writeBlockNumber(m_edit, block, numbered->current, numbered->wanted, dialect);
+            if (dialect == program::Dialect::Fagor)
+                m_renamed.emplace(numbered->current.number, numbered->wanted);
         }
         if (clock.elapsed() >= m_sliceMs) break;
     }
-    if (editing) m_edit.endEditBlock();
     if (block.isValid()) {
+        if (editing) m_edit.endEditBlock();
         m_nextBlock = block.blockNumber();
         QTimer::singleShot(0, this, &RenumberJob::runSlice);
         return;
     }
+    if (!m_renamed.empty()) {
+        if (!editing) m_edit.joinPreviousEditBlock();
+        renameLabelReferences(*m_document, m_edit, m_renamed);
+        editing = true;
+    }
+    if (editing) m_edit.endEditBlock();
     m_running = false;
     emit finished(m_changed);
 }

@@ -6,6 +6,7 @@
 
 #include "core/program/dialect.h"
 #include "ui/editor/block_numbers.h"
+#include "ui/editor/label_references.h"
 
 class QTextBlock;
 class QTextDocument;
@@ -19,7 +20,8 @@ void writeBlockNumber(QTextCursor& edit, const QTextBlock& block, const BlockNum
 // Renumbers a long program in slices of a few milliseconds between events, so that the UI stays
 // responsive (a million blocks take seconds). Only the numbers that change are replaced, and all
 // slices form one edit block: undo restores the old numbers in one step. The document must not be
-// edited otherwise until finished() (the editor is read-only meanwhile).
+// edited otherwise until finished() (the editor is read-only meanwhile). In FAGOR programs the
+// references to the renumbered labels follow them at the end, in the same edit block.
 class RenumberJob : public QObject {
     Q_OBJECT
 
@@ -48,6 +50,7 @@ private:
     int m_sliceMs = 40;
     bool m_changed = false;
     bool m_running = false;
+    RenamedLabels m_renamed;  // FAGOR: old label -> new label
 };
 
 }  // namespace kerf::ui

@@ -70,6 +70,43 @@ TEST(ProgramEditor, IsoBlocksKeepTheirStep) {
     EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 G00 X0", "N30 ", "N40 M30"}));
 }
 
+TEST(ProgramEditor, FagorReferencesFollowTheirLabelsWhenABlockIsInserted) {
+    // The inserted block takes N30; the old N30 becomes N40, and the jump to it follows.
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    editor.setPlainText(lines({"N10 G90", "N20 (GOTO N30)", "N30 M30"}));
+    placeCursorAtEndOfLine(editor, 2);
+    editor.insertBlock();
+    EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 (GOTO N40)", "N30 ", "N40 M30"}));
+    editor.undo();
+    EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 (GOTO N30)", "N30 M30"}));
+}
+
+TEST(ProgramEditor, RenumberingAFagorProgramKeepsItsJumpsAndProfilesOnTheirLabels) {
+    // From N1 in steps of 10 the profile's N30 and N40 become N71 and N81: the G69's S and E, the
+    // GOTO and the first two values of RPT follow (its third is a count); a comment, and a G68
+    // whose profile is in program Q5, do not change.
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    editor.setPlainText(lines({"N1 G90 G95 F0.2 S800 M3", "N2 G00 X70 Z5",
+                               "N3 G69 X60 Z-10 C2.5 D1 H0.1 S30 E40 ; S30 E40", "N4 (GOTO N30)",
+                               "N5 (RPT N30, N40, N3)", "N6 G68 X0 Z0 C2 S30 E40 Q5", "N7 M30",
+                               "N30 G01 X40 Z-10", "G01 Z-4", "N40 G01 X20 Z0"}));
+    QSignalSpy done(&editor, &ProgramEditor::renumbered);
+    editor.renumber();
+    ASSERT_EQ(done.size(), 1);
+    EXPECT_EQ(editor.toPlainText(),
+              lines({"N1 G90 G95 F0.2 S800 M3", "N11 G00 X70 Z5",
+                     "N21 G69 X60 Z-10 C2.5 D1 H0.1 S71 E81 ; S30 E40", "N31 (GOTO N71)",
+                     "N41 (RPT N71, N81, N3)", "N51 G68 X0 Z0 C2 S30 E40 Q5", "N61 M30",
+                     "N71 G01 X40 Z-10", "G01 Z-4", "N81 G01 X20 Z0"}));
+    editor.undo();  // one step restores numbers and references
+    EXPECT_EQ(editor.document()->findBlockByNumber(3).text(), QStringLiteral("N4 (GOTO N30)"));
+    EXPECT_EQ(editor.document()->findBlockByNumber(7).text(), QStringLiteral("N30 G01 X40 Z-10"));
+}
+
 TEST(ProgramEditor, LongProgramsAreRenumberedInSlicesOnRequest) {
     test::testApp();
     ProgramEditor editor;
