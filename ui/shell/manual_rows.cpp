@@ -24,21 +24,34 @@ std::vector<char> machineAxes(const MachineSession& session) {
     return letters;
 }
 
-// Asks for the axis and the value its position should show now.
+// Asks for the axis and the value its position should show now, in touch-sized dialogs.
 void askPreset(MachineSession* session, QWidget* parent) {
     QStringList axes;
     for (char letter : machineAxes(*session))
         axes << QString(QChar(letter));
-    bool ok = false;
-    const QString axis = QInputDialog::getItem(parent, MachineRows::tr("Set preset"),
-                                               MachineRows::tr("Axis"), axes, 0, false, &ok);
-    if (!ok || axis.isEmpty()) return;
-    const double value =
-        QInputDialog::getDouble(parent, MachineRows::tr("Set preset"),
-                                MachineRows::tr("Position of %1 at the current point").arg(axis),
-                                0.0, -100000.0, 100000.0, 4, &ok);
-    if (!ok) return;
-    if (const auto a = axisFromLetter(axis.at(0).toLatin1())) session->setPresetByEntry(*a, value);
+    if (axes.isEmpty()) return;
+    QInputDialog axisDialog(parent);
+    axisDialog.setObjectName(QStringLiteral("presetAxisPrompt"));
+    axisDialog.setWindowTitle(MachineRows::tr("Set preset"));
+    axisDialog.setLabelText(MachineRows::tr("Axis"));
+    axisDialog.setComboBoxItems(axes);
+    axisDialog.setComboBoxEditable(false);
+    makeTouchSized(axisDialog);
+    if (axisDialog.exec() != QDialog::Accepted || axisDialog.textValue().isEmpty()) return;
+    const QString axis = axisDialog.textValue();
+    QInputDialog valueDialog(parent);
+    valueDialog.setObjectName(QStringLiteral("presetValuePrompt"));
+    valueDialog.setWindowTitle(MachineRows::tr("Set preset"));
+    valueDialog.setLabelText(MachineRows::tr("Position of %1 at the current point").arg(axis));
+    valueDialog.setInputMode(QInputDialog::DoubleInput);
+    valueDialog.setDoubleRange(-100000.0, 100000.0);
+    valueDialog.setDoubleDecimals(4);
+    valueDialog.setDoubleValue(0.0);
+    makeTouchSized(valueDialog);
+    if (valueDialog.exec() != QDialog::Accepted) return;
+    if (const auto a = axisFromLetter(axis.at(0).toLatin1())) {
+        session->setPresetByEntry(*a, valueDialog.doubleValue());
+    }
 }
 
 // Asks for the manual spindle speed, offered only within the machine's spindle range.

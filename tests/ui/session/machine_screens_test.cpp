@@ -1,11 +1,14 @@
 // The machine screens in the window: a program run shows the program following the executing
 // block next to the positions; Manual operation and the handwheel on the softkeys.
+#include <QAbstractButton>
 #include <QAbstractItemView>
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QFileSystemModel>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTest>
 #include <QTimer>
@@ -165,6 +168,50 @@ void answerNumberDialog(int value) {
         dialog->setIntValue(value);
         dialog->accept();
     });
+}
+
+// Checks that every field and button of the open dialog can be hit with a finger.
+void expectTouchSized(QDialog& dialog) {
+    for (QWidget* child : dialog.findChildren<QWidget*>()) {
+        if (qobject_cast<QAbstractButton*>(child) || qobject_cast<QAbstractSpinBox*>(child) ||
+            qobject_cast<QComboBox*>(child) || qobject_cast<QLineEdit*>(child)) {
+            EXPECT_GE(child->height(), 48) << child->metaObject()->className();
+        }
+    }
+}
+
+TEST_F(MachineScreens, SetPresetAsksForAxisAndValueInTouchSizedDialogs) {
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    MachineSession* session = window->session();
+    SoftkeyBar& bar = *window->softkeys();
+    keyText(bar, "setPreset");  // brings its row on the screen
+    const double machineX =
+        session->status().axes[static_cast<size_t>(axisIndex(Axis::X))].machineActual;
+    bool sawAxis = false;
+    bool sawValue = false;
+    QTimer::singleShot(0, [&] {
+        auto* axisDialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(axisDialog, nullptr);
+        EXPECT_EQ(axisDialog->objectName(), QStringLiteral("presetAxisPrompt"));
+        expectTouchSized(*axisDialog);
+        sawAxis = true;
+        axisDialog->setTextValue(QStringLiteral("X"));
+        QTimer::singleShot(0, [&] {
+            auto* valueDialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+            ASSERT_NE(valueDialog, nullptr);
+            EXPECT_EQ(valueDialog->objectName(), QStringLiteral("presetValuePrompt"));
+            expectTouchSized(*valueDialog);
+            sawValue = true;
+            valueDialog->setDoubleValue(25.0);
+            valueDialog->accept();
+        });
+        axisDialog->accept();
+    });
+    ASSERT_TRUE(bar.pressId("setPreset"));
+    EXPECT_TRUE(sawAxis);
+    EXPECT_TRUE(sawValue);
+    // The tool stays where it is; its X now reads 25: the origin lies 25 below it.
+    EXPECT_NEAR(session->presetInMachine()[Axis::X], machineX - 25.0, 1e-6);
 }
 
 TEST_F(MachineScreens, ManualSpindleStartsAtTheEnteredSpeedWithinTheMachinesMaximum) {
