@@ -9,6 +9,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 packages=(
   g++ cmake ninja-build ccache pkg-config
   qtbase5-dev qttools5-dev qttools5-dev-tools libqt5svg5-dev
+  qttranslations5-l10n  # Qt's own dialog buttons (Cancel, Save ...) in the HMI's languages
   libvtk9-dev libvtk9-qt-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libpolyclipping-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev

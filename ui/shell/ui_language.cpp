@@ -2,6 +2,8 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QLibraryInfo>
+#include <QLocale>
 #include <QTranslator>
 #include <memory>
 
@@ -20,6 +22,25 @@ const QString kTranslationFolder = QStringLiteral(":/translations");
 std::unique_ptr<QTranslator>& installedTranslator() {
     static std::unique_ptr<QTranslator> translator;
     return translator;
+}
+
+// Qt's own texts (the standard buttons: Cancel, Save, Discard ...) from Debian's
+// qttranslations5-l10n; without it they stay English.
+std::unique_ptr<QTranslator>& qtTranslator() {
+    static std::unique_ptr<QTranslator> translator;
+    return translator;
+}
+
+void switchQtTexts(const QString& code) {
+    if (qtTranslator()) QCoreApplication::removeTranslator(qtTranslator().get());
+    qtTranslator().reset();
+    if (code == QLatin1String("en")) return;
+    auto translator = std::make_unique<QTranslator>();
+    if (translator->load(QLocale(code), QStringLiteral("qtbase"), QStringLiteral("_"),
+                         QLibraryInfo::location(QLibraryInfo::TranslationsPath))) {
+        QCoreApplication::installTranslator(translator.get());
+        qtTranslator() = std::move(translator);
+    }
 }
 
 QString& languageCode() {
@@ -46,6 +67,7 @@ bool switchLanguage(const QString& code) {
         !translator->load(QStringLiteral("kerf_") + code, kTranslationFolder)) {
         return false;
     }
+    switchQtTexts(code);
     if (installedTranslator()) QCoreApplication::removeTranslator(installedTranslator().get());
     installedTranslator().reset();
     if (code != QLatin1String("en")) {

@@ -1,3 +1,4 @@
+#include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -70,6 +71,26 @@ TEST(Language, GermanAndSpanishTranslateTheWindow) {
     EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("Manual operation"));
     EXPECT_EQ(translatedMessage(pitchIsZero()),
               QStringLiteral("cycle 262: the thread pitch Q239 is 0"));
+}
+
+TEST(Language, QtsOwnDialogButtonsSpeakTheLanguage) {
+    // The standard buttons of the prompts (unsaved program, table, quit) come from Qt's own
+    // translations: Cancel in every language of the HMI, and back in English.
+    test::testApp();
+    const auto cancelText = [] {
+        QDialogButtonBox box(QDialogButtonBox::Cancel);
+        return box.button(QDialogButtonBox::Cancel)->text().remove(QLatin1Char('&'));
+    };
+    ASSERT_TRUE(switchLanguage(QStringLiteral("de")));
+    EXPECT_EQ(cancelText(), QStringLiteral("Abbrechen"));
+    ASSERT_TRUE(switchLanguage(QStringLiteral("es")));
+    EXPECT_EQ(cancelText(), QStringLiteral("Cancelar"));
+    ASSERT_TRUE(switchLanguage(QStringLiteral("pl")));
+    EXPECT_EQ(cancelText(), QStringLiteral("Anuluj"));
+    ASSERT_TRUE(switchLanguage(QStringLiteral("pt")));  // Debian ships Brazilian Portuguese
+    EXPECT_EQ(cancelText(), QStringLiteral("Cancelar"));
+    ASSERT_TRUE(switchLanguage(QStringLiteral("en")));
+    EXPECT_EQ(cancelText(), QStringLiteral("Cancel"));
 }
 
 TEST(Language, CoreDiagnosticsAreTranslatedInPortugueseAndPolish) {
