@@ -156,7 +156,7 @@ bool MainWindow::showTable(const std::filesystem::path& path) {
             }
         }
     }
-    if (!m_tables->open(path)) return false;
+    if (!settleUnsavedTableEdits() || !m_tables->open(path)) return false;
     m_page = Page::Table;
     m_workspace->showPage(m_tables);
     refreshSoftkeys();

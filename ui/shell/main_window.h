@@ -109,6 +109,11 @@ private:
     bool showProgram(const std::filesystem::path& path);
     // Unsaved edits of the program shown: saved, discarded or kept (false: the operator cancels).
     bool settleUnsavedEdits();
+    // The same for the table being edited, before another table opens and before quitting.
+    bool settleUnsavedTableEdits();
+    // Asks about the unsaved edits of `name`; true when they are saved or given up.
+    bool settle(const QString& name, const std::function<bool()>& save,
+                const std::function<void()>& discard);
     void retranslate();
     void refreshHeader();
     void refreshSoftkeys();

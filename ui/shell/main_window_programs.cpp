@@ -13,6 +13,7 @@
 #include "ui/shell/main_window.h"
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/tables/table_editor.h"
 
 namespace kerf::ui {
 
@@ -25,6 +26,20 @@ bool MainWindow::settleUnsavedEdits() {
     const QString name = m_program->path().empty()
                              ? tr("The program")
                              : QString::fromStdString(m_program->path().filename().string());
+    return settle(
+        name, [this] { return m_program->save(); }, [this] { m_program->abandonEdits(); });
+}
+
+bool MainWindow::settleUnsavedTableEdits() {
+    if (!m_tables->modified()) return true;
+    // Discarding needs nothing: the next table, or quitting, replaces the edited one.
+    return settle(
+        QString::fromStdString(m_tables->path().filename().string()),
+        [this] { return m_tables->save(); }, [] {});
+}
+
+bool MainWindow::settle(const QString& name, const std::function<bool()>& save,
+                        const std::function<void()>& discard) {
     UnsavedChoice choice = UnsavedChoice::Cancel;
     if (m_prompts.unsavedEdits) {
         choice = m_prompts.unsavedEdits(name);
@@ -38,9 +53,9 @@ bool MainWindow::settleUnsavedEdits() {
     }
     switch (choice) {
         case UnsavedChoice::Save:
-            return m_program->save();
+            return save();
         case UnsavedChoice::Discard:
-            m_program->abandonEdits();
+            discard();
             return true;
         case UnsavedChoice::Cancel:
             break;
@@ -108,7 +123,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
             m_session->stop();
         }
     }
-    if (!settleUnsavedEdits()) return event->ignore();
+    if (!settleUnsavedEdits() || !settleUnsavedTableEdits()) return event->ignore();
     // What is still unsaved (a save that failed) is kept in the recovery folder.
     if (m_program->modified()) m_program->autosave();
     QMainWindow::closeEvent(event);

@@ -20,6 +20,8 @@
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
+#include "ui/tables/table_editor.h"
+#include "ui/tables/tnc_table_model.h"
 
 namespace kerf::ui {
 namespace {
@@ -178,6 +180,48 @@ TEST(UnsavedEdits, ClosingAsksAndCancelKeepsTheWindowOpen) {
     answer = MainWindow::UnsavedChoice::Save;
     EXPECT_TRUE(window.close());
     EXPECT_EQ(fileText(dir / "A.H"), "0 BEGIN PGM A MM\n1 L Z+50 R0 FMAX M3\n2 END PGM A MM\n");
+}
+
+TEST(UnsavedEdits, AnotherTableOrQuittingAsksAboutAnEditedTable) {
+    // An edited cell of TOOL.T was lost when another table opened or the window closed.
+    test::testApp();
+    const fs::path dir = kerf::test::uniqueTempDir("hmi_unsaved_table");
+    MainWindow window(contextIn(dir));
+    QStringList asked;
+    MainWindow::UnsavedChoice answer = MainWindow::UnsavedChoice::Cancel;
+    MainWindow::Prompts prompts;
+    prompts.unsavedEdits = [&](const QString& name) {
+        asked << name;
+        return answer;
+    };
+    window.setPrompts(prompts);
+    ASSERT_TRUE(window.openFile(dir / "TOOL.T"));  // the standard table of a fresh NC root
+    TncTableModel* model = window.tables()->model();
+    ASSERT_NE(model, nullptr);
+    int lengthColumn = -1;
+    for (int c = 0; c < model->columnCount(); ++c) {
+        const QString header = model->headerData(c, Qt::Horizontal, Qt::DisplayRole).toString();
+        if (header == QStringLiteral("L") || header.startsWith(QStringLiteral("L\n"))) {
+            lengthColumn = c;
+        }
+    }
+    ASSERT_GE(lengthColumn, 0);
+    ASSERT_GT(model->rowCount(), 0);
+    ASSERT_TRUE(
+        model->setData(model->index(0, lengthColumn), QStringLiteral("123.456"), Qt::EditRole));
+    ASSERT_TRUE(window.tables()->modified());
+    // Cancel: the edited table stays.
+    EXPECT_FALSE(window.openFile(dir / "PRESET.PR"));
+    EXPECT_EQ(asked, QStringList{QStringLiteral("TOOL.T")});
+    EXPECT_EQ(window.tables()->path(), dir / "TOOL.T");
+    EXPECT_TRUE(window.tables()->modified());
+    // Quitting asks too; Save writes the edit before the window closes.
+    window.show();
+    EXPECT_FALSE(window.close());
+    answer = MainWindow::UnsavedChoice::Save;
+    EXPECT_TRUE(window.close());
+    EXPECT_EQ(asked.size(), 3);
+    EXPECT_NE(fileText(dir / "TOOL.T").find("123.456"), std::string::npos);
 }
 
 }  // namespace
