@@ -6865,6 +6865,10 @@ zyklen</translation>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>nach G00 braucht das Rohteilprofil G01, G02 oder G03</translation>
     </message>
+    <message>
+        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>die Kontur von LBL {1} liegt mehr als 1.000.000 mm vom Nullpunkt entfernt</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6865,6 +6865,10 @@ fijos</translation>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>tras G00 el perfil del material en bruto necesita G01, G02 o G03</translation>
     </message>
+    <message>
+        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>el contorno de LBL {1} está a más de 1.000.000 mm del origen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6868,6 +6868,10 @@ stałe</translation>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>po G00 profil półfabrykatu wymaga G01, G02 lub G03</translation>
     </message>
+    <message>
+        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>kontur LBL {1} leży dalej niż 1 000 000 mm od punktu zerowego</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6865,6 +6865,10 @@ fixos</translation>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>após G00 o perfil do material bruto precisa de G01, G02 ou G03</translation>
     </message>
+    <message>
+        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>o contorno de LBL {1} fica a mais de 1.000.000 mm da origem</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

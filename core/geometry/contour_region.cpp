@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -38,8 +39,13 @@ Vec2 rotated(const Vec2& p, double angle) {
     return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
 }
 
+// Clamped to the engine's range, so that a point no caller should pass cannot overflow the grid.
 IntPoint toInt(const Vec2& p) {
-    return {std::llround(p.x() * kScale), std::llround(p.y() * kScale)};
+    static constexpr double kLimit = kMaxContourCoordinateMm * kScale;
+    const auto grid = [](double v) {
+        return std::llround(std::isfinite(v) ? std::clamp(v * kScale, -kLimit, kLimit) : 0.0);
+    };
+    return {grid(p.x()), grid(p.y())};
 }
 
 Vec2 toVec(const IntPoint& p) {
@@ -375,7 +381,11 @@ Region boolean(ClipperLib::ClipType type, const Region& a, const Region& b) {
     clipper.AddPaths(flattened(a, 0.0), ClipperLib::ptSubject, true);
     clipper.AddPaths(flattened(b, 0.0), ClipperLib::ptClip, true);
     Paths solution;
-    clipper.Execute(type, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    try {
+        clipper.Execute(type, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    } catch (const std::exception&) {
+        return {};  // Clipper's range exceeded: the callers' range check makes this unreachable
+    }
     std::vector<Piece> pieces;
     addPieces(a, 0.0, pieces);
     addPieces(b, 0.0, pieces);
@@ -422,10 +432,16 @@ Region intersect(const Region& a, const Region& b) {
 }
 
 Region offsetRegion(const Region& region, double distance) {
+    // Farther than the engine's range everything vanishes inwards; outwards it is out of range.
+    if (!std::isfinite(distance) || std::fabs(distance) > kMaxContourCoordinateMm) return {};
     ClipperLib::ClipperOffset offset(2.0, kFlatten * kScale / 2.0);
     offset.AddPaths(flattened(region, distance), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
     Paths solution;
-    offset.Execute(solution, distance * kScale);
+    try {
+        offset.Execute(solution, distance * kScale);
+    } catch (const std::exception&) {
+        return {};
+    }
     std::vector<Piece> pieces;
     addPieces(region, distance, pieces);
     return rebuildAll(solution, std::move(pieces));
@@ -435,7 +451,11 @@ bool selfIntersects(const ClosedContour& contour) {
     Path path;
     flattenInto(contour, 0.0, path);
     Paths simple;
-    ClipperLib::SimplifyPolygon(path, simple, ClipperLib::pftNonZero);
+    try {
+        ClipperLib::SimplifyPolygon(path, simple, ClipperLib::pftNonZero);
+    } catch (const std::exception&) {
+        return true;  // not a contour the engine can take
+    }
     if (simple.size() != 1) return true;
     const double before = std::fabs(ClipperLib::Area(path));
     const double after = std::fabs(ClipperLib::Area(simple.front()));

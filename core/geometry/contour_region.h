@@ -10,6 +10,10 @@
 // of an outward offset is an arc about the corner), cut at their exact intersections.
 namespace kerf {
 
+// The engine works on an integer grid of 1 nm: coordinates must stay within this many mm of the
+// origin (far beyond any machine; the callers refuse contours outside it).
+inline constexpr double kMaxContourCoordinateMm = 1e6;
+
 // Outer boundaries counter-clockwise, holes clockwise: the area lies left of every boundary.
 struct Region {
     std::vector<ClosedContour> boundaries;

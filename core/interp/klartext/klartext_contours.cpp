@@ -236,6 +236,18 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
         fail("contour", KERF_TR_NOOP("the contour subprogram LBL {1} has no contour"), args);
         return false;
     }
+    // Beyond any machine's reach the contour engine's integer grid would overflow.
+    for (const PlanarSegment& s : contour.segments) {
+        for (const Vec2& p : {s.start, s.end, s.center}) {
+            if (!p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxContourCoordinateMm) {
+                fail(
+                    "contour",
+                    KERF_TR_NOOP("the contour of LBL {1} lies beyond 1,000,000 mm from the origin"),
+                    args);
+                return false;
+            }
+        }
+    }
     // The control closes a contour that ends elsewhere with a straight line (the islands of the
     // seed's chapter 7 example end one side short of their start).
     const Vec2 start = contour.segments.front().start;
