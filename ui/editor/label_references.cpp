@@ -9,15 +9,16 @@ namespace kerf::ui {
 
 namespace {
 
-// Replaces the number in capture group `group` of every match of `pattern` in text[0, end).
-void renameIn(QString& text, int end, const QRegularExpression& pattern, int group,
+// Renames the label numbers in capture groups 1 to `groups` of every match of `pattern` in
+// text[0, end).
+void renameIn(QString& text, int end, const QRegularExpression& pattern, int groups,
               const RenamedLabels& renamed) {
     int shift = 0;
     auto it = pattern.globalMatch(text.left(end));
     QString out = text;
     while (it.hasNext()) {
         const QRegularExpressionMatch m = it.next();
-        for (int g = 1; g <= group; ++g) {
+        for (int g = 1; g <= groups; ++g) {
             if (m.capturedStart(g) < 0) continue;
             bool ok = false;
             const long long number = m.captured(g).toLongLong(&ok);

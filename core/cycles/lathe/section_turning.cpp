@@ -25,11 +25,12 @@ LatheError positionError(char letter) {
             {std::string(1, letter)}};
 }
 
-// The elements from `start` in the cycle's frame; false with `error` for an arc whose ends are not
-// on one circle, or (G81-G85) one beyond a quarter circle.
-bool toChain(const Vec2& start, const std::vector<ProfileElement>& elements,
-             const TurningSection& section, Chain& chain, LatheError& error) {
-    const bool f = section.facing;
+// The elements from `start` in the cycle's frame (`facing`: swapped); arcs split at their quadrant
+// points (`splitArcs`), or else refused beyond a quarter circle (G81-G85). False with `error` for
+// an arc whose ends are not on one circle within `radiusTolerance`.
+bool toChain(const Vec2& start, const std::vector<ProfileElement>& elements, bool facing,
+             double radiusTolerance, bool splitArcs, Chain& chain, LatheError& error) {
+    const bool f = facing;
     Vec2 from = swapped(start, f);
     for (const ProfileElement& e : elements) {
         Section s;
@@ -40,7 +41,7 @@ bool toChain(const Vec2& start, const std::vector<ProfileElement>& elements,
             s.arc = true;
             s.c = swapped(*e.centre, f);
             s.r = (s.a - s.c).norm();
-            if (std::fabs((s.b - s.c).norm() - s.r) > section.radiusTolerance || s.r < kTolerance) {
+            if (std::fabs((s.b - s.c).norm() - s.r) > radiusTolerance || s.r < kTolerance) {
                 error = {'I',
                          "cycle-geometry",
                          KERF_TR_NOOP("the start and the end of an arc are not on one circle "
@@ -53,7 +54,7 @@ bool toChain(const Vec2& start, const std::vector<ProfileElement>& elements,
             s.sweep = arcSweep(s.a, s.b, s.c, e.ccw != f);
             // Passes meet it once only if it stays within a quarter circle; a profile's arcs
             // are split at their quadrant points.
-            if (section.channels) {
+            if (splitArcs) {
                 chain.addArcByQuadrants(s);
                 continue;
             }
@@ -83,12 +84,16 @@ bool expandTurningSection(const TurningSection& section, const Vec2& callZx, Lat
     const bool f = section.facing;
     const Vec2 call = swapped(callZx, f);
     Chain chain;
-    if (!toChain(section.start, section.elements, section, chain, error)) return false;
+    if (!toChain(section.start, section.elements, f, section.radiusTolerance, section.channels,
+                 chain, error)) {
+        return false;
+    }
     Chain raw;
     if (!section.raw.elements.empty()) {
-        TurningSection splitArcs = section;
-        splitArcs.channels = true;
-        if (!toChain(section.raw.start, section.raw.elements, splitArcs, raw, error)) return false;
+        if (!toChain(section.raw.start, section.raw.elements, f, section.radiusTolerance, true, raw,
+                     error)) {
+            return false;
+        }
     }
     if (chain.parts.empty() || std::fabs(chain.end().x() - chain.start().x()) < kTolerance) {
         // Turning needs a length along Z, facing along X: the passes run from A towards B.
