@@ -191,6 +191,10 @@
         <source>EMERGENCY STOP</source>
         <translation>NOT-AUS</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>NOT-HALT entriegeln</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -225,6 +229,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Die Achsen sind nicht referenziert: zuerst in Manueller Betrieb Alle referenzieren ausführen</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>Der NOT-HALT-Taster ist gedrückt: entriegeln, dann Maschine ein</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Zuerst den NOT-HALT-Taster entriegeln</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>Der NOT-HALT-Kreis ist noch offen</translation>
     </message>
 </context>
 <context>

@@ -191,6 +191,10 @@
         <source>EMERGENCY STOP</source>
         <translation>PARADA DE EMERGENCIA</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>Desbloquear PARADA DE EMERGENCIA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -225,6 +229,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Los ejes no están referenciados: ejecute primero Referenciar todos en Funcionamiento manual</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>La seta de emergencia está pulsada: desbloquéela y luego Máquina en marcha</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Desbloquee primero la seta de emergencia</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>El circuito de emergencia sigue abierto</translation>
     </message>
 </context>
 <context>

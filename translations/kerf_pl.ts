@@ -192,6 +192,10 @@
         <source>EMERGENCY STOP</source>
         <translation>STOP AWARYJNY</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>Odblokuj STOP AWARYJNY</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -226,6 +230,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Osie nie są zbazowane: najpierw wykonaj Bazuj wszystkie w Obsłudze ręcznej</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>Wyłącznik awaryjny jest wciśnięty: odblokuj go, potem Maszyna wł.</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Najpierw odblokuj wyłącznik awaryjny</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>Obwód wyłącznika awaryjnego jest nadal otwarty</translation>
     </message>
 </context>
 <context>

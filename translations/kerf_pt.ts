@@ -191,6 +191,10 @@
         <source>EMERGENCY STOP</source>
         <translation>PARADA DE EMERGÊNCIA</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>Destravar PARADA DE EMERGÊNCIA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -225,6 +229,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Os eixos não estão referenciados: execute primeiro Referenciar todos em Funcionamento manual</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>O botão de emergência está premido: destrave-o e depois Máquina ligada</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Destrave primeiro o botão de emergência</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>O circuito de emergência ainda está aberto</translation>
     </message>
 </context>
 <context>
