@@ -5300,10 +5300,6 @@ especiales</translation>
         <translation>%1: introduzca al menos una coordenada</translation>
     </message>
     <message>
-        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
-        <translation>Los diálogos de ciclos y de funciones de trayectoria escriben programas Klartext (.H).</translation>
-    </message>
-    <message>
         <source>Cycle
 overview</source>
         <translation>Resumen
@@ -6884,6 +6880,26 @@ fijos</translation>
     <message>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>el contorno de LBL {1} está a más de 1.000.000 mm del origen</translation>
+    </message>
+    <message>
+        <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
+        <translation>Una frase ISO es absoluta (G90) o incremental (G91): introduzca todas las coordenadas con I o ninguna</translation>
+    </message>
+    <message>
+        <source>ISO programs have no FAUTO: enter the feed</source>
+        <translation>Los programas ISO no tienen FAUTO: introduzca el avance</translation>
+    </message>
+    <message>
+        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
+        <translation>En programas ISO este ciclo se escribe como su propia función G; el diálogo solo escribe ciclos con parámetros</translation>
+    </message>
+    <message>
+        <source>This cycle has no ISO form</source>
+        <translation>Este ciclo no tiene forma ISO</translation>
+    </message>
+    <message>
+        <source>This block has no ISO form</source>
+        <translation>Esta frase no tiene forma ISO</translation>
     </message>
 </context>
 <context>

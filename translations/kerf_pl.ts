@@ -5303,10 +5303,6 @@ specjalne</translation>
         <translation>%1: wprowadź co najmniej jedną współrzędną</translation>
     </message>
     <message>
-        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
-        <translation>Dialogi cykli i funkcji toru zapisują programy Klartext (.H).</translation>
-    </message>
-    <message>
         <source>Cycle
 overview</source>
         <translation>Przegląd
@@ -6887,6 +6883,26 @@ stałe</translation>
     <message>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>kontur LBL {1} leży dalej niż 1 000 000 mm od punktu zerowego</translation>
+    </message>
+    <message>
+        <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
+        <translation>Blok ISO jest albo absolutny (G90), albo przyrostowy (G91): wpisz wszystkie współrzędne z I albo żadnej</translation>
+    </message>
+    <message>
+        <source>ISO programs have no FAUTO: enter the feed</source>
+        <translation>Programy ISO nie mają FAUTO: wpisz posuw</translation>
+    </message>
+    <message>
+        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
+        <translation>W programach ISO ten cykl zapisuje się jako własną funkcję G; dialog zapisuje tylko cykle z parametrami</translation>
+    </message>
+    <message>
+        <source>This cycle has no ISO form</source>
+        <translation>Ten cykl nie ma postaci ISO</translation>
+    </message>
+    <message>
+        <source>This block has no ISO form</source>
+        <translation>Ten blok nie ma postaci ISO</translation>
     </message>
 </context>
 <context>
