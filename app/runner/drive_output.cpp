@@ -81,8 +81,8 @@ canon::Sink& DriveOutput::sink() {
 }
 
 std::string DriveOutput::fileOf(uint32_t fileId) const {
-    return fileId < m_session.sources.size() ? m_session.sources.path(fileId)
-                                             : m_options.program.string();
+    return fileId < m_session.sources().size() ? m_session.sources().path(fileId)
+                                               : m_options.program.string();
 }
 
 void DriveOutput::setStart(const Pose& start, DiagnosticList& problems) {
@@ -149,7 +149,7 @@ void DriveOutput::finish(bool programRan, DiagnosticList& problems) {
             d.file = m_options.program.string();
         } else if (d.file.empty() && at.line > 0) {
             // Where the program was when the drives stopped.
-            d.file = m_session.sources.displayName(at.fileId);
+            d.file = m_session.sources().displayName(at.fileId);
             d.line = at.line;
             d.column = at.column;
         }

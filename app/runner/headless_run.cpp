@@ -96,7 +96,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         if (traceStream != nullptr) {
             canon::TraceFormat format;
             format.axes = axisMaskOf(session->machine);
-            const program::SourceRegistry* sources = &session->sources;
+            const program::SourceRegistry* sources = &session->sources();
             format.fileName = [sources](uint32_t id) { return sources->displayName(id); };
             trace = std::make_unique<canon::TracePrinter>(traceStream, std::move(format));
             sinks.add(*trace);
@@ -104,8 +104,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     }
 
     uint64_t blocks = 0;
-    if (session->ready) {
-        interp::Interpreter& interpreter = *session->interpreter;
+    if (session->ready()) {
+        interp::Interpreter& interpreter = *session->program.interpreter;
         statistics.setStart(interpreter.nominalPosition());
         picture.setStart(interpreter.nominalPosition());
         drives.setStart(interpreter.nominalPosition(), runProblems);
@@ -148,7 +148,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     }
     trace.reset();
     if (traceStream != nullptr && traceStream != stdout) std::fclose(traceStream);
-    const bool rejected = session->interpreter && session->interpreter->checkFailed();
+    const bool rejected =
+        session->program.interpreter && session->program.interpreter->checkFailed();
     canon::PathStatistics nothingRan;
     if (rejected) {
         // The program has errors: it counts as never started.
@@ -159,11 +160,11 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         }
     }
     const canon::PathStatistics& results = rejected ? nothingRan : statistics;
-    picture.finish(session->ready && !rejected, runProblems);
-    drives.finish(session->ready && !rejected, runProblems);
-    motion.finish(session->ready && !rejected, runProblems);
+    picture.finish(session->ready() && !rejected, runProblems);
+    drives.finish(session->ready() && !rejected, runProblems);
+    motion.finish(session->ready() && !rejected, runProblems);
     double machiningTimeS = 0.0;
-    if (session->ready && !rejected) {
+    if (session->ready() && !rejected) {
         if (clock) {
             clock->finish();
             machiningTimeS = clock->totalS();
@@ -175,8 +176,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     RunSummary summary;
     summary.diagnostics = session->allDiagnostics();
     appendDiagnostics(summary.diagnostics, runProblems);
-    summary.ok = session->ready && !rejected && !hasErrors(summary.diagnostics);
-    summary.dialect = program::dialectName(session->dialect);
+    summary.ok = session->ready() && !rejected && !hasErrors(summary.diagnostics);
+    summary.dialect = program::dialectName(session->program.dialect);
     summary.blocksExecuted = blocks;
     summary.xInDiameter = displayMode.xInDiameter();
     summary.machiningTimeS = machiningTimeS;

@@ -64,8 +64,8 @@ struct MotionOutput::State final : canon::Sink {
     }
 
     std::string fileOf(uint32_t fileId) const {
-        return fileId < session.sources.size() ? session.sources.path(fileId)
-                                               : options.program.string();
+        return fileId < session.sources().size() ? session.sources().path(fileId)
+                                                 : options.program.string();
     }
 
     const RunOptions& options;

@@ -69,8 +69,8 @@ PictureOutput::PictureOutput(const RunOptions& options, const Session& session)
     }
     // Point angles (T-ANGLE) by tool number, copied: the canonical tool change carries L, R, R2.
     std::map<int, double> pointAngles;
-    if (session.tools) {
-        for (const tables::ToolData& row : session.tools->tools()) {
+    if (session.program.tools) {
+        for (const tables::ToolData& row : session.program.tools->tools()) {
             if (row.index == 0) pointAngles[row.number] = row.pointAngle;
         }
     }

@@ -3,12 +3,7 @@
 #include <cstdlib>
 
 #include "app/runner/workpiece_origin.h"
-#include "core/base/atomic_file.h"
-#include "core/interp/fagor/fagor_interpreter.h"
-#include "core/interp/klartext/klartext_interpreter.h"
-#include "core/interp/tnciso/tnciso.h"
 #include "core/machine/machine_loader.h"
-#include "core/program/nc_root.h"
 
 namespace kerf::app {
 
@@ -32,16 +27,16 @@ fs::path defaultStateDir() {
 
 DiagnosticList Session::allDiagnostics() const {
     DiagnosticList all = diagnostics;
-    if (interpreter) {
-        appendDiagnostics(all, interpreter->diagnostics());
-    }
+    appendDiagnostics(all, program.diagnostics());
     return all;
 }
 
 std::vector<fs::path> Session::inputs() const {
     std::vector<fs::path> all = setupFiles;
-    for (uint32_t id = 0; id < sources.size(); ++id)
-        all.emplace_back(sources.path(id));
+    if (program.sources) {
+        for (uint32_t id = 0; id < program.sources->size(); ++id)
+            all.emplace_back(program.sources->path(id));
+    }
     return all;
 }
 
@@ -57,82 +52,36 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     session->machine = *machine;
     const Pose origin = workpieceOrigin(session->machine, options.workOffset);
     session->workOffset = origin;
-    const bool lathe = session->machine.kind == machine::MachineKind::Lathe;
+    task::ProgramRequest request;
     if (options.dialect) {
-        auto dialect = program::dialectFromName(*options.dialect);
-        if (!dialect) {
+        request.dialect = program::dialectFromName(*options.dialect);
+        if (!request.dialect) {
             session->diagnostics.push_back(
                 setupError("", KERF_TR_NOOP("unknown dialect '{1}' (klartext, tnciso, fagor)"),
                            *options.dialect));
             return session;
         }
-        session->dialect = *dialect;
-    } else {
-        session->dialect = program::dialectForFile(options.program.string(), lathe);
     }
-    const fs::path programPath = fs::absolute(options.program);
-    const fs::path ncRoot =
-        options.ncRoot ? fs::absolute(*options.ncRoot) : programPath.parent_path();
-    std::error_code ignored;
-    const program::NcRoot root(ncRoot);
-    session->setupFiles.push_back(programPath);
+    request.path = fs::absolute(options.program);
+    request.ncRoot = options.ncRoot ? fs::absolute(*options.ncRoot) : request.path.parent_path();
+    request.toolTable = options.toolTable;
+    request.blockSkip = options.blockSkip;
+    request.presetInMachine = origin;
+    request.backgroundCheck = backgroundCheck;
+    const fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
+    if (!stateDir.empty()) {
+        std::error_code ignored;
+        fs::create_directories(stateDir, ignored);
+        request.remanentFile = stateDir / "qr_parameters.txt";
+    }
+    session->setupFiles.push_back(request.path);
     for (const char* table : {"TOOL.T", "PRESET.PR", "fagor_tool_offsets.tab",
                               "fagor_zero_offsets.tab", "fagor_tools.tab"}) {
-        session->setupFiles.push_back(ncRoot / table);
+        session->setupFiles.push_back(request.ncRoot / table);
     }
-    std::optional<fs::path> toolFile = options.toolTable;
-    if (toolFile) session->setupFiles.push_back(*toolFile);
-    if (!toolFile && fs::exists(fs::symlink_status(ncRoot / "TOOL.T", ignored))) {
-        toolFile = ncRoot / "TOOL.T";
-    }
-    if (toolFile) {
-        // --tool-table names any file; TOOL.T of the NC root has to be inside it.
-        auto bytes = options.toolTable ? readWholeFile(*toolFile) : root.read(*toolFile);
-        auto tools = bytes ? tables::ToolTable::parse(*bytes, toolFile->string()) : bytes.error();
-        if (!tools) {
-            session->diagnostics.push_back(tools.error());
-            return session;
-        }
-        session->tools = std::move(*tools);
-    }
-    if (session->dialect == program::Dialect::Fagor) {
-        // The FAGOR tables live in the NC root (docs/fagor.md, "Tables").
-        fagor::FagorSettings settings;
-        settings.machine = &session->machine;
-        settings.ncRoot = ncRoot;
-        settings.toolOffsetFile = ncRoot / "fagor_tool_offsets.tab";
-        settings.zeroOffsetFile = ncRoot / "fagor_zero_offsets.tab";
-        settings.toolFile = ncRoot / "fagor_tools.tab";
-        settings.blockSkip = options.blockSkip ? 1 : 0;
-        settings.presetInMachine = origin;
-        auto interpreter =
-            std::make_unique<fagor::FagorInterpreter>(session->sources, std::move(settings));
-        session->workOffset = interpreter->streamOrigin();
-        session->ready = interpreter->load(
-            programPath, backgroundCheck ? fagor::FagorInterpreter::CheckMode::Background
-                                         : fagor::FagorInterpreter::CheckMode::Inline);
-        session->interpreter = std::move(interpreter);
-        return session;
-    }
-    // Conversational and DIN/ISO programs run on the same TNC engine (docs/tnciso.md).
-    klartext::KlartextSettings settings;
-    tnciso::enableIso(settings, session->dialect == program::Dialect::TncIso);
-    settings.machine = &session->machine;
-    settings.tools = session->tools ? &*session->tools : nullptr;
-    settings.ncRoot = ncRoot;
-    settings.blockSkip = options.blockSkip;
-    settings.presetInMachine = origin;
-    fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
-    if (!stateDir.empty()) {
-        fs::create_directories(stateDir, ignored);
-        settings.remanentFile = stateDir / "qr_parameters.txt";
-    }
-    auto interpreter =
-        std::make_unique<klartext::KlartextInterpreter>(session->sources, std::move(settings));
-    session->ready = interpreter->load(
-        programPath, backgroundCheck ? klartext::KlartextInterpreter::CheckMode::Background
-                                     : klartext::KlartextInterpreter::CheckMode::Inline);
-    session->interpreter = std::move(interpreter);
+    if (options.toolTable) session->setupFiles.push_back(*options.toolTable);
+    session->program = task::loadProgram(session->machine, request);
+    if (session->program.streamOrigin) session->workOffset = *session->program.streamOrigin;
     return session;
 }
 

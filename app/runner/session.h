@@ -9,26 +9,22 @@
 #include "core/base/diagnostic.h"
 #include "core/interp/interpreter.h"
 #include "core/machine/machine_config.h"
-#include "core/program/dialect.h"
-#include "core/program/source_registry.h"
-#include "core/tables/tool_table.h"
+#include "core/task/program_loader.h"
 
 namespace kerf::app {
 
-// Everything one headless run needs: the machine, the tool table, the loaded program and its
-// interpreter. Problems found while setting up (machine, tables, dialect) are in `diagnostics`;
-// the program's own are in interpreter->diagnostics().
+// Everything one headless run needs: the machine and the program loaded by task::loadProgram
+// (its sources, tool table and interpreter). Problems of the machine file and the options are in
+// `diagnostics`; the program's own in program.diagnostics().
 struct Session {
     machine::MachineConfig machine;
-    std::optional<tables::ToolTable> tools;
-    program::SourceRegistry sources;
-    program::Dialect dialect = program::Dialect::Klartext;
-    std::unique_ptr<interp::Interpreter> interpreter;
+    task::LoadedProgram program;
     DiagnosticList diagnostics;
     DiagnosticList allDiagnostics() const;
     // The files the run reads: the program, the tables, the programs loaded so far.
     std::vector<std::filesystem::path> inputs() const;
-    bool ready = false;  // the program loaded without errors and can run
+    bool ready() const { return program.ready; }  // loaded without errors: it can run
+    const program::SourceRegistry& sources() const { return *program.sources; }
     // Machine coordinates of the stream's origin, motion's work offset: the workpiece origin
     // (machine file presets, --work-offset) or, for FAGOR, the zero offset active at the start.
     Pose workOffset{};

@@ -64,10 +64,10 @@ std::unique_ptr<StockSimulation> machine(const std::string& program) {
     options.program = kPrograms / program;
     options.toolTable = kPrograms / "TOOL.T";
     auto session = app::openSession(options);
-    EXPECT_TRUE(session && session->ready);
+    EXPECT_TRUE(session && session->ready());
     auto stock = std::make_unique<StockSimulation>();
-    if (!session || !session->ready) return stock;
-    interp::Interpreter& interpreter = *session->interpreter;
+    if (!session || !session->ready()) return stock;
+    interp::Interpreter& interpreter = *session->program.interpreter;
     stock->setStart(interpreter.nominalPosition());
     for (;;) {
         const interp::RunStatus status = interpreter.run(*stock, 100000);

@@ -2,8 +2,7 @@
 
 #include <QMetaObject>
 
-#include "ui/editor/fagor_check.h"
-#include "ui/editor/klartext_check.h"
+#include "ui/editor/program_text_check.h"
 
 namespace kerf::ui {
 
@@ -60,15 +59,7 @@ void ProgramChecker::work() {
 }
 
 DiagnosticList ProgramChecker::checkText(const std::string& text, const Request& request) const {
-    switch (request.dialect) {
-        case program::Dialect::Klartext:
-            return checkKlartextText(text, request.path.string(), m_machine, m_ncRoot);
-        case program::Dialect::Fagor:
-            return checkFagorText(text, request.path.string(), m_machine, m_ncRoot);
-        case program::Dialect::TncIso:
-            return checkKlartextText(text, request.path.string(), m_machine, m_ncRoot, true);
-    }
-    return {};
+    return checkProgramText(text, request.path.string(), request.dialect, m_machine, m_ncRoot);
 }
 
 }  // namespace kerf::ui

@@ -3,9 +3,9 @@
 #include <QTimer>
 #include <algorithm>
 
+#include "core/task/program_loader.h"
 #include "core/task/shifted_motion_port.h"
 #include "ui/common/diagnostic_text.h"
-#include "ui/session/program_interpreter.h"
 #include "ui/session/program_origin.h"
 
 namespace kerf::ui {
@@ -90,27 +90,27 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
                                   std::optional<uint32_t> startLine) {
     if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
     applyPresetTable();
-    ProgramSource source;
-    source.text = program.toStdString();
-    source.path = path;
-    source.ncRoot = m_ncRoot;
-    source.startPosition.values = m_motion->world().position.values;
-    source.presetInMachine = presetInMachine();
-    m_programName = programName(path);
-    m_programStart = source.startPosition;
-    return start(loadProgram(m_machine, source), startLine);
+    task::ProgramRequest request;
+    request.text = program.toStdString();
+    request.path = path;
+    request.ncRoot = m_ncRoot;
+    request.startPosition.values = m_motion->world().position.values;
+    request.presetInMachine = presetInMachine();
+    m_programName = task::programName(path);
+    m_programStart = request.startPosition;
+    return start(task::loadProgram(m_machine, request), startLine);
 }
 
 bool MachineSession::executeMdi(const QString& block) {
     if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
     applyPresetTable();
-    ProgramSource source;
-    source.text = mdiProgram(m_machine, block.trimmed().toStdString());
-    source.ncRoot = m_ncRoot;
-    source.startPosition.values = m_motion->world().position.values;
-    source.presetInMachine = presetInMachine();
+    task::ProgramRequest request;
+    request.text = task::mdiProgram(m_machine, block.trimmed().toStdString());
+    request.ncRoot = m_ncRoot;
+    request.startPosition.values = m_motion->world().position.values;
+    request.presetInMachine = presetInMachine();
     m_programName.clear();
-    if (!start(loadProgram(m_machine, source), std::nullopt)) return false;
+    if (!start(task::loadProgram(m_machine, request), std::nullopt)) return false;
     constexpr qsizetype kMaxMdiHistory = 50;
     m_mdiHistory.removeAll(block.trimmed());
     m_mdiHistory.prepend(block.trimmed());
@@ -118,9 +118,9 @@ bool MachineSession::executeMdi(const QString& block) {
     return true;
 }
 
-bool MachineSession::start(LoadedProgram loaded, std::optional<uint32_t> startLine) {
-    if (!loaded.interpreter) {
-        report(loaded.diagnostics);
+bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> startLine) {
+    if (!loaded.ready) {
+        report(loaded.diagnostics());
         emit message(Severity::Error, tr("The program has errors and cannot be started"), 0);
         return false;
     }

@@ -26,11 +26,10 @@ class ToolTable;
 }
 namespace kerf::task {
 class ShiftedMotionPort;
-}
+struct LoadedProgram;
+}  // namespace kerf::task
 
 namespace kerf::ui {
-
-struct LoadedProgram;
 
 // Makes the connection to the machine (app/ decides: simulated or real drives). The programming
 // station has none.
@@ -153,7 +152,7 @@ signals:
     void message(kerf::Severity severity, const QString& text, int line);
 
 private:
-    bool start(LoadedProgram loaded, std::optional<uint32_t> startLine);
+    bool start(task::LoadedProgram loaded, std::optional<uint32_t> startLine);
     bool refuseWhenBusy();
     // Programs and MDI wait for the reference run unless the machine file needs none.
     bool refuseWhenNotReferenced();

@@ -2,10 +2,10 @@
 
 #include <QTextBlock>
 
+#include "core/task/program_loader.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/session/machine_session.h"
-#include "ui/session/program_interpreter.h"
 
 namespace kerf::ui {
 
@@ -25,7 +25,7 @@ ExecutingBlockFollower::ExecutingBlockFollower(MachineSession& session, ProgramP
 void ExecutingBlockFollower::follow() {
     ProgramEditor& editor = *m_program.editor();
     const bool shown = !m_program.path().empty() &&
-                       programName(m_program.path()) == m_session.runningProgramName();
+                       task::programName(m_program.path()) == m_session.runningProgramName();
     const std::optional<int> line = shown ? m_session.executingLine() : std::nullopt;
     if (line) {
         if (!m_following) {

@@ -5,7 +5,7 @@
 
 #include "core/canon/path_statistics.h"
 #include "core/tables/tool_table.h"
-#include "ui/session/program_interpreter.h"
+#include "core/task/program_loader.h"
 
 namespace kerf::ui {
 
@@ -183,17 +183,20 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     TestRunProgram out;
     // The same loading as a program run on the machine: dialect by file and machine, TOOL.T of
     // the NC root.
-    ProgramSource source;
-    source.text = input.text;
-    source.path = input.path;
-    source.ncRoot = input.ncRoot;
-    source.dialect = input.dialect;
-    source.presetInMachine = input.presetInMachine;
-    source.startPosition = input.startPosition;
-    LoadedProgram program = loadProgram(input.machine, source);
+    task::ProgramRequest request;
+    request.text = input.text;
+    request.path = input.path;
+    request.ncRoot = input.ncRoot;
+    request.dialect = input.dialect;
+    request.presetInMachine = input.presetInMachine;
+    request.startPosition = input.startPosition;
+    task::LoadedProgram program = task::loadProgram(input.machine, request);
     out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
-    out.diagnostics = program.diagnostics;
-    std::unique_ptr<interp::Interpreter> interpreter = std::move(program.interpreter);
+    out.diagnostics = program.diagnostics();
+    const size_t checkDiagnostics =
+        program.interpreter ? program.interpreter->diagnostics().size() : 0;
+    std::unique_ptr<interp::Interpreter> interpreter =
+        program.ready ? std::move(program.interpreter) : nullptr;
     std::unique_ptr<task::MachiningClock> clock =
         input.clock ? input.clock(input.machine) : nullptr;
     Recorder recorder(out, clock.get());
@@ -237,11 +240,11 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     }
     out.endTimeS =
         out.cancelled ? std::vector<double>(out.commands.size(), 0.0) : recorder.finish();
-    if (interpreter && interpreter->diagnostics().size() > program.diagnostics.size()) {
-        // Run-time diagnostics follow the check's, which loadProgram copied already.
+    if (interpreter && interpreter->diagnostics().size() > checkDiagnostics) {
+        // Run-time diagnostics follow the check's, which were taken at the load already.
         out.diagnostics.insert(
             out.diagnostics.end(),
-            interpreter->diagnostics().begin() + static_cast<long>(program.diagnostics.size()),
+            interpreter->diagnostics().begin() + static_cast<long>(checkDiagnostics),
             interpreter->diagnostics().end());
     }
     if (out.refusedAt) {

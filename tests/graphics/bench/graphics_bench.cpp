@@ -68,23 +68,23 @@ int main(int argc, char** argv) {
     app::RunOptions options;
     options.program = argv[1];
     auto session = app::openSession(options);
-    if (!session->ready) {
+    if (!session->ready()) {
         std::fprintf(stderr, "program does not load\n");
         return 1;
     }
     Recorder recorder;
     auto t = Clock::now();
     for (;;) {
-        const auto status = session->interpreter->run(recorder, 1u << 16);
+        const auto status = session->program.interpreter->run(recorder, 1u << 16);
         if (status == interp::RunStatus::NeedsSync) {
             interp::WorldSnapshot world;
-            session->interpreter->resume(world);
+            session->program.interpreter->resume(world);
             continue;
         }
         if (status != interp::RunStatus::BudgetUsed) break;
     }
     const double interpretS = since(t);
-    const Pose start = session->interpreter->nominalPosition();
+    const Pose start = session->program.interpreter->nominalPosition();
     std::printf("program: %s\ncanonical commands: %zu (interpreted in %.3f s)\n", argv[1],
                 recorder.commands.size(), interpretS);
 

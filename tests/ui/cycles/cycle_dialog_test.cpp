@@ -21,7 +21,7 @@
 #include "ui/cycles/cycle_help_picture.h"
 #include "ui/cycles/parameter_comments.h"
 #include "ui/cycles/program_blocks.h"
-#include "ui/editor/klartext_check.h"
+#include "ui/editor/program_text_check.h"
 
 namespace kerf::ui {
 namespace {
@@ -51,7 +51,8 @@ void typeDrillingValues(CycleDialog& dialog) {
 DiagnosticList check(const QString& text) {
     const auto machine = machine::loadMachine("mill");
     EXPECT_TRUE(machine.ok());
-    return checkKlartextText(text.toStdString(), "DRILL.H", *machine, {});
+    return checkProgramText(text.toStdString(), "DRILL.H", program::Dialect::Klartext, *machine,
+                            {});
 }
 
 TEST(CycleDialog, WritesTheDrillingCycleAtTheCursorAndTheProgramChecksClean) {

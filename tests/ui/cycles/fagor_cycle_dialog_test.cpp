@@ -18,8 +18,8 @@
 #include "ui/cycles/cycle_help_picture.h"
 #include "ui/cycles/fagor_program_entry.h"
 #include "ui/cycles/fagor_softkeys.h"
-#include "ui/editor/fagor_check.h"
 #include "ui/editor/program_editor.h"
+#include "ui/editor/program_text_check.h"
 
 namespace kerf::ui {
 namespace {
@@ -285,7 +285,7 @@ TEST(FagorProgrammingSoftkeys, CannedCycleKeyWritesTheBlockAndTheProgramChecksCl
     const auto lathe = machine::loadMachine("lathe");
     ASSERT_TRUE(lathe.ok());
     const DiagnosticList diagnostics =
-        checkFagorText(written.toStdString(), "PART.pim", *lathe, {});
+        checkProgramText(written.toStdString(), "PART.pim", program::Dialect::Fagor, *lathe, {});
     for (const Diagnostic& d : diagnostics)
         ADD_FAILURE() << d.messageTemplate;
     // Cancelled: nothing written, still one undo step for the cycle.

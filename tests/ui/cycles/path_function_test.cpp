@@ -22,8 +22,8 @@
 #include "ui/cycles/cycle_help_picture.h"
 #include "ui/cycles/path_function_dialog.h"
 #include "ui/cycles/programming_softkeys.h"
-#include "ui/editor/klartext_check.h"
 #include "ui/editor/program_editor.h"
+#include "ui/editor/program_text_check.h"
 
 namespace kerf::ui {
 namespace {
@@ -98,7 +98,8 @@ TEST(PathFunctionDialog, WritesTheBlocksTheParserReads) {
         "\n11 L X+10 Y+0\n12 " + tangent.block() + "\n13 L Z+50 R0 FMAX M2\n14 END PGM PATH MM";
     const auto machine = machine::loadMachine("mill");
     ASSERT_TRUE(machine.ok());
-    for (const Diagnostic& d : checkKlartextText(program.toStdString(), "PATH.H", *machine, {}))
+    for (const Diagnostic& d : checkProgramText(program.toStdString(), "PATH.H",
+                                                program::Dialect::Klartext, *machine, {}))
         ADD_FAILURE() << d.format() << "\n" << program.toStdString();
 }
 
