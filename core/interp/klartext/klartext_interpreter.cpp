@@ -93,6 +93,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
     program->fileId = m_sources.add(path.string());
     program->folder = path.parent_path();
     program->machineAxes = m_machineAxes;
+    program->tools = m_settings.tools;
     if (isIsoProgram(path, origin)) program->syntax = &m_settings.isoSyntax;
     if (check) checkProgram(*program);
     m_programs.push_back(std::move(program));
@@ -132,6 +133,7 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     program->fileId = m_sources.add(path);
     program->folder = std::filesystem::path(path).parent_path();
     program->machineAxes = m_machineAxes;
+    program->tools = m_settings.tools;
     if (isIsoProgram(path, Origin::Main)) program->syntax = &m_settings.isoSyntax;
     checkProgram(*program);
     DiagnosticList found = program->diagnostics;

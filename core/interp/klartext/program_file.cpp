@@ -74,6 +74,14 @@ void checkProgram(ProgramFile& program) {
     program::LogicalLine line;
     ParsedBlock block;
     std::vector<PendingTarget> targets;
+    // Literal TOOL CALLs, checked at the end against the table and the program's TOOL DEFs.
+    struct PendingTool {
+        ToolCall call;
+        uint32_t line = 0;
+    };
+    std::vector<PendingTool> toolCalls;
+    std::set<int> definedNumbers;
+    std::set<std::string> definedNames;
     bool sawBegin = false, sawEnd = false, firstBlock = true;
     std::string beginName;
     int64_t lastNumber = -1;
@@ -159,6 +167,11 @@ void checkProgram(ProgramFile& program) {
                 program.calls.push_back({callPgm->path,
                                          line.lineAt(at == std::string_view::npos ? 0 : at),
                                          line.columnAt(at == std::string_view::npos ? 0 : at)});
+            } else if (const auto* tool = std::get_if<ToolCall>(&s)) {
+                if (program.tools != nullptr) toolCalls.push_back({*tool, line.firstLine});
+            } else if (const auto* def = std::get_if<ToolDef>(&s)) {
+                if (def->number) definedNumbers.insert(*def->number);
+                if (def->name) definedNames.insert(*def->name);
             } else if (const auto* call = std::get_if<CallLabel>(&s)) {
                 targets.push_back({call->target, line.firstLine, 1});
             } else if (const auto* jump = std::get_if<ConditionalJump>(&s)) {
@@ -198,6 +211,19 @@ void checkProgram(ProgramFile& program) {
             diag(Severity::Error, "label", t.line, t.column,
                  KERF_TR_NOOP("label {1} is not defined"), {labelText(t.target)});
         }
+    }
+    // As the run would: a tool neither in the table nor defined in the program stops it. Tool 0
+    // (no tool) and tools named by Q parameters (0 or "" here) are the run's to check.
+    for (const PendingTool& t : toolCalls) {
+        const ToolCall& c = t.call;
+        const bool byNumber = c.number && *c.number != 0;
+        const bool byName = !c.number && c.name && !c.name->empty();
+        if (byNumber && (definedNumbers.count(*c.number) || program.tools->byNumber(*c.number)))
+            continue;
+        if (byName && (definedNames.count(*c.name) || program.tools->byName(*c.name))) continue;
+        if (!byNumber && !byName) continue;
+        diag(Severity::Error, "tool", t.line, 1, KERF_TR_NOOP("tool {1} is not in the tool table"),
+             {byNumber ? std::to_string(*c.number) : "\"" + *c.name + "\""});
     }
     if (numbered > 0 && unnumbered > 0) {
         diag(Severity::Warning, "block-number", firstUnnumberedLine, 1,

@@ -12,6 +12,7 @@
 #include "core/geometry/axes.h"
 #include "core/interp/klartext/block_syntax.h"
 #include "core/program/source_text.h"
+#include "core/tables/tool_table.h"
 
 namespace kerf::klartext {
 
@@ -40,6 +41,9 @@ struct ProgramFile {
     std::vector<ProgramCall> calls;
     // The program's syntax when it is not conversational (a DIN/ISO program); not owned.
     const SyntaxMaker* syntax = nullptr;
+    // The tool table the program runs with (nullptr: none): literal TOOL CALLs are checked
+    // against it and the program's own TOOL DEFs.
+    const tables::ToolTable* tools = nullptr;
     AxisMask machineAxes =
         kAllAxesMask;  // the axes the machine has; every axis when there is no machine
 

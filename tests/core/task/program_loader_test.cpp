@@ -1,0 +1,84 @@
+#include "core/task/program_loader.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "core/machine/machine_loader.h"
+
+// The one loader of kerf run/check, the HMI and the editor's check: the same program gives the
+// same verdict whether it comes from the file or from an editor's text.
+namespace kerf::task {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ProgramLoaderTest : public testing::Test {
+protected:
+    void SetUp() override {
+        root = fs::temp_directory_path() / ("kerf_loader_" + std::to_string(::getpid()));
+        fs::remove_all(root);
+        fs::create_directories(root);
+        std::ofstream(root / "TOOL.T") << "BEGIN TOOL.T MM\nT    NAME   L      R\n"
+                                          "1    MILL   +50    +4\n[END]\n";
+        mill = *machine::loadMachine("mill");
+    }
+    void TearDown() override { fs::remove_all(root); }
+
+    // From the file, then from the same text as the editor holds it.
+    std::pair<LoadedProgram, LoadedProgram> loadBoth(const std::string& name,
+                                                     const std::string& text) {
+        std::ofstream(root / name) << text;
+        ProgramRequest request;
+        request.path = root / name;
+        request.ncRoot = root;
+        LoadedProgram file = loadProgram(mill, request);
+        request.text = text;
+        return {std::move(file), loadProgram(mill, request)};
+    }
+
+    fs::path root;
+    machine::MachineConfig mill;
+};
+
+TEST_F(ProgramLoaderTest, AToolNeitherInTheTableNorDefinedFailsTheCheckAsTheRunWould) {
+    const auto [file, text] = loadBoth("T.H",
+                                       "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S1000\n"
+                                       "2 TOOL CALL 77 Z\n3 END PGM T MM\n");
+    for (const LoadedProgram* loaded : {&file, &text}) {
+        EXPECT_FALSE(loaded->ready);
+        const DiagnosticList all = loaded->diagnostics();
+        ASSERT_EQ(all.size(), 1u);
+        EXPECT_EQ(all[0].line, 3u);
+        EXPECT_EQ(all[0].message(), "tool 77 is not in the tool table");
+    }
+    // Defined in the program (TOOL DEF), or named as in the table: it runs.
+    const auto [defined, definedText] =
+        loadBoth("D.H",
+                 "0 BEGIN PGM D MM\n1 TOOL DEF 77 L+10 R+3\n2 TOOL CALL 77 Z S1000\n"
+                 "3 TOOL CALL \"MILL\" Z\n4 END PGM D MM\n");
+    EXPECT_TRUE(defined.ready) << defined.diagnostics().front().message();
+    EXPECT_TRUE(definedText.ready);
+    ASSERT_NE(defined.tools, nullptr);
+    EXPECT_EQ(defined.tools->byNumber(1)->length, 50.0);
+}
+
+TEST_F(ProgramLoaderTest, TheFileNameDecidesTheDialectAndAnUnreadableTableStopsTheLoad) {
+    const auto [iso, isoText] = loadBoth("P.I",
+                                         "%P G71 *\nN1 T1 G17 S1000 *\nN2 G00 G90 X+0 *\n"
+                                         "N99999999 %P G71 *\n");
+    EXPECT_EQ(iso.dialect, program::Dialect::TncIso);
+    EXPECT_TRUE(iso.ready);
+    EXPECT_TRUE(isoText.ready);
+    std::ofstream(root / "TOOL.T") << "not a tool table\n";
+    const auto [broken, brokenText] = loadBoth("B.H", "0 BEGIN PGM B MM\n1 END PGM B MM\n");
+    EXPECT_FALSE(broken.ready);
+    EXPECT_EQ(broken.interpreter, nullptr);
+    ASSERT_FALSE(broken.setupDiagnostics.empty());
+    EXPECT_NE(broken.setupDiagnostics.front().file.find("TOOL.T"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace kerf::task
