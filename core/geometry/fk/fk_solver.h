@@ -10,7 +10,7 @@
 #include "core/geometry/offset_contour.h"
 
 // Resolves a sequence of FK elements into lines and arcs as soon as the data given so far
-// determine them (docs/contours.md, "FK free contour programming"). Pure: no interpreter state,
+// determine them (docs/klartext.md, "FK free contour programming"). Pure: no interpreter state,
 // the caller feeds elements, FSELECT choices and the end of the sequence, and emits what comes
 // back in order.
 namespace kerf::fk {
