@@ -51,6 +51,10 @@ void FkSolver::begin(const Vec2& start, std::optional<Vec2> tangent) {
 void FkSolver::remember(int64_t blockNumber, const Vec2& end, const Vec2& endTangent,
                         std::optional<Vec2> centre) {
     if (blockNumber < 0) return;
+    // An FK element is remembered by the solver and again when the caller emits it.
+    if (!m_references.empty() && m_references.back().block == blockNumber) {
+        m_references.pop_back();
+    }
     m_references.push_back({blockNumber, end, endTangent, centre});
     if (m_references.size() > kMaxReferences) m_references.pop_front();
 }
