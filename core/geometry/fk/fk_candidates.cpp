@@ -67,6 +67,11 @@ Known knownData(const FkElement& e, const CandidateContext& c) {
     if (px && py) k.pd = Vec2(*px, *py);
     for (const auto& p : e.pointsOn)
         if (p) k.pointsOn.push_back(*p);
+    // A point at distance 0 lies on the element.
+    if (k.pd && e.distance && *e.distance <= kFkTolerance) {
+        k.pointsOn.push_back(*k.pd);
+        k.pd.reset();
+    }
     return k;
 }
 

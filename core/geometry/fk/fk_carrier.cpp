@@ -133,7 +133,7 @@ std::vector<Vec2> tangentPointsFrom(const Vec2& from, const Vec2& centre, double
     const Vec2 toCentre = centre - from;
     const double d = toCentre.norm();
     std::vector<Vec2> out;
-    if (d < radius - kFkTolerance * std::max(1.0, d)) return out;
+    if (d <= kFkTolerance || d < radius - kFkTolerance * std::max(1.0, d)) return out;
     const double tangentLength = std::sqrt(std::max(0.0, d * d - radius * radius));
     const Vec2 u = toCentre / d;
     // The touching points seen from `from`: angle asin(r/d) either side of the centre.

@@ -1,5 +1,6 @@
 #include "core/geometry/fk/fk_solver.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/base/translate.h"
@@ -32,11 +33,31 @@ void orderAlongCircle(std::vector<Vec2>& points, const Carrier& circle, const Ve
     });
 }
 
+bool sameSegment(const PlanarSegment& a, const PlanarSegment& b) {
+    const double tol =
+        kFkTolerance * std::max({1.0, a.end.cwiseAbs().maxCoeff(), a.center.cwiseAbs().maxCoeff()});
+    return a.kind == b.kind && (a.end - b.end).norm() <= tol &&
+           (a.kind == PlanarSegment::Kind::Line ||
+            ((a.center - b.center).norm() <= tol && std::fabs(a.sweep - b.sweep) <= 1e-9));
+}
+
 FkProblem problemAt(size_t tag, const char* messageTemplate, std::vector<std::string> args = {}) {
     return FkProblem{tag, false, messageTemplate, std::move(args)};
 }
 
 }  // namespace
+
+void FkSolver::addChoice(std::vector<Choice>& choices, Choice choice) {
+    // Different constructions may give the same element (D = 0, a touching pair): one solution.
+    for (const Choice& c : choices) {
+        if (sameSegment(c.segment, choice.segment) &&
+            c.next.has_value() == choice.next.has_value() &&
+            (!c.next || c.next->sameAs(*choice.next))) {
+            return;
+        }
+    }
+    choices.push_back(std::move(choice));
+}
 
 void FkSolver::begin(const Vec2& start, std::optional<Vec2> tangent) {
     m_window.clear();
@@ -236,7 +257,7 @@ FkSolver::Outcome FkSolver::advance(FkStep& step) {
         EndCandidates ends = endCandidates(first.element, c0, m_start, context);
         if (ends.found == Found::Some) {
             for (const Vec2& end : ends.ends)
-                choices.push_back({segmentOf(c0, m_start, end), c0, std::nullopt});
+                addChoice(choices, {segmentOf(c0, m_start, end), c0, std::nullopt});
             continue;
         }
         if (ends.found == Found::Contradiction) continue;
@@ -256,6 +277,10 @@ FkSolver::Outcome FkSolver::advance(FkStep& step) {
             continue;
         }
         for (const Carrier& c1 : nexts.carriers) {
+            if (second.element.isTangent() && !c0.circle && !c1.circle) {
+                mustWait = true;  // a line continued by a line: nothing marks the joint
+                continue;
+            }
             std::vector<Vec2> meet;
             if (second.element.isTangent()) {
                 if (auto p = touchPoint(c0, c1)) meet.push_back(*p);
@@ -271,7 +296,7 @@ FkSolver::Outcome FkSolver::advance(FkStep& step) {
             }
             for (const Vec2& p : meet) {
                 if (!runsForward(first.element, c0, m_start, p)) continue;
-                choices.push_back({segmentOf(c0, m_start, p), c0, c1});
+                addChoice(choices, {segmentOf(c0, m_start, p), c0, c1});
             }
         }
     }

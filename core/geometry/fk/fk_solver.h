@@ -84,6 +84,7 @@ private:
     enum class Outcome : uint8_t { Waiting, Resolved, Ambiguous, Failed };
 
     Outcome advance(FkStep& step);
+    static void addChoice(std::vector<Choice>& choices, Choice choice);
     void commit(const Choice& choice, FkStep& step);
     bool resolveReferences(FkElement& element, size_t tag, const std::optional<Vec2>& pole,
                            FkStep& step) const;

@@ -157,6 +157,46 @@ TEST(FkSolver, EndPointFromAPointOnTheElement) {
     expectPoint(step.resolved[1].segment.end, 50.0, 20.0);
 }
 
+// D 0: the point lies on the line, so the line runs through (0,0) and (10,10) as above.
+TEST(FkSolver, PointAtDistanceZeroLiesOnTheElement) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement diagonal = line();
+    diagonal.pdx = abs(10.0);
+    diagonal.pdy = abs(10.0);
+    diagonal.distance = 0.0;
+    EXPECT_TRUE(solver.add(diagonal, 1, std::nullopt).resolved.empty());
+    FkElement flat = line();
+    flat.an = abs(0.0);
+    flat.x = abs(50.0);
+    flat.y = abs(20.0);
+    FkStep step = solver.add(flat, 2, std::nullopt);
+    EXPECT_EQ(step.choices, 0u);
+    ASSERT_EQ(step.resolved.size(), 2u);
+    expectPoint(step.resolved[0].segment.end, 20.0, 20.0);
+}
+
+// An arc about the origin r10, counter-clockwise from (10,0), left by a tangent line running in
+// -X: it touches where the arc runs in -X, at (0,10); the line ends at X-30.
+TEST(FkSolver, TangentLineLeavesAnOpenArc) {
+    FkSolver solver;
+    solver.begin({10.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.ccx = abs(0.0);
+    a.ccy = abs(0.0);
+    a.radius = 10.0;
+    EXPECT_TRUE(solver.add(a, 1, std::nullopt).resolved.empty());
+    FkElement leave = line();
+    leave.kind = FkKind::TangentLine;
+    leave.an = abs(180.0);
+    leave.x = abs(-30.0);
+    FkStep step = solver.add(leave, 2, std::nullopt);
+    ASSERT_EQ(step.resolved.size(), 2u);
+    expectPoint(step.resolved[0].segment.end, 0.0, 10.0);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, kPi / 2.0, 1e-9);
+    expectPoint(step.resolved[1].segment.end, -30.0, 10.0);
+}
+
 // Block 12 ends at (30,0). Block 13: polar radius 10 more than block 12's end (30 + 10) at 90
 // degrees about the pole (0,0): (0,40). Block 14: centre 30 left of block 12's end, on Y 0: the
 // origin; counter-clockwise to (-40,0), a quarter circle. Block 15: 90 degrees more than block
@@ -245,6 +285,25 @@ TEST(FkSolverErrors, UnderDeterminedAtTheEndOfTheSequence) {
     ASSERT_TRUE(step.problem);
     EXPECT_EQ(step.problem->tag, 7u);
     EXPECT_NE(std::string(step.problem->messageTemplate).find("not determined"), std::string::npos);
+}
+
+// A line continued tangentially by a line: the joint could be anywhere on it.
+TEST(FkSolverErrors, TangentLineAfterAnOpenLineLeavesTheJointOpen) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = line();
+    a.an = abs(0.0);
+    EXPECT_FALSE(solver.add(a, 1, std::nullopt).problem);
+    FkElement b = line();
+    b.kind = FkKind::TangentLine;
+    b.x = abs(50.0);
+    b.y = abs(0.0);
+    FkStep step = solver.add(b, 2, std::nullopt);
+    EXPECT_FALSE(step.problem);
+    EXPECT_TRUE(step.resolved.empty());
+    step = solver.finish();
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 1u);
 }
 
 TEST(FkSolverErrors, TooManyUndeterminedElementsInARow) {
