@@ -84,6 +84,10 @@ std::vector<Vec2> throughPoints(const Known& k, const CandidateContext& c) {
     return points;
 }
 
+bool runsAlong(const Carrier& carrier, const Vec2& axis) {
+    return !carrier.circle && std::fabs(cross2(carrier.dir, axis)) <= kFkTolerance;
+}
+
 bool sameDirection(const Vec2& a, const Vec2& b) {
     return (a - b).norm() <= 1e-6;
 }
@@ -138,6 +142,10 @@ CarrierCandidates lineCandidates(const FkElement& e, const Known& k, const Candi
         found.push_back(Carrier::line(points.front(), along));
     } else if (!points.empty() && dir) {
         found.push_back(Carrier::line(points.front(), *dir));
+    } else if (dir && k.y && std::fabs(dir->y()) <= kFkTolerance) {
+        found.push_back(Carrier::line({0.0, *k.y}, *dir));  // "FL AN+0 Y+20": the line y = 20
+    } else if (dir && k.x && std::fabs(dir->x()) <= kFkTolerance) {
+        found.push_back(Carrier::line({*k.x, 0.0}, *dir));
     } else if (dir && circle) {
         const Carrier& t = circle->carrier;
         // The line runs along the circle's direction of travel where it touches it.
@@ -310,9 +318,9 @@ EndCandidates endCandidates(const FkElement& e, const Carrier& carrier, const Ve
     bool given = true;
     if (k.end) {
         ends.push_back(*k.end);
-    } else if (k.x) {
+    } else if (k.x && !runsAlong(carrier, {0.0, 1.0})) {
         ends = intersect(carrier, Carrier::line({*k.x, 0.0}, {0.0, 1.0}));
-    } else if (k.y) {
+    } else if (k.y && !runsAlong(carrier, {1.0, 0.0})) {
         ends = intersect(carrier, Carrier::line({0.0, *k.y}, {1.0, 0.0}));
     } else if (k.pr && here.pole) {
         ends = intersect(carrier, Carrier::arc(*here.pole, *k.pr, true));
@@ -329,7 +337,16 @@ EndCandidates endCandidates(const FkElement& e, const Carrier& carrier, const Ve
     } else {
         given = false;
     }
-    if (!given) return {};
+    if (!given) {
+        // X of a line parallel to Y (or Y of one parallel to X) says where the line lies, not
+        // where it ends.
+        const double tol = kFkTolerance * carrier.scale();
+        if ((k.x && std::fabs(carrier.point.x() - *k.x) > tol) ||
+            (k.y && std::fabs(carrier.point.y() - *k.y) > tol)) {
+            return {Found::Contradiction, {}};
+        }
+        return {};
+    }
     // Every other datum of the end point must agree.
     EndCandidates out;
     for (const Vec2& p : ends) {
