@@ -123,19 +123,15 @@ CarrierCandidates lineCandidates(const FkElement& e, const Known& k, const Candi
     std::optional<Vec2> dir = k.direction;
     if (!dir && e.isTangent() && c.start && c.startTangent) dir = *c.startTangent;
     const std::vector<Neighbour> touching = neighbours(e, c);
-    std::vector<Carrier> found;
-    // A line tangent to a line is that line.
+    const Neighbour* circle = nullptr;
+    const Neighbour* straight = nullptr;
     for (const Neighbour& n : touching) {
-        if (!n.carrier.circle && found.empty()) found.push_back(n.carrier);
+        const Neighbour*& slot = n.carrier.circle ? circle : straight;
+        if (slot == nullptr) slot = &n;
     }
-    auto firstCircle = [&]() -> const Neighbour* {
-        for (const Neighbour& n : touching)
-            if (n.carrier.circle) return &n;
-        return nullptr;
-    };
-    const Neighbour* circle = firstCircle();
-    if (!found.empty()) {
-        // taken from the tangential line
+    std::vector<Carrier> found;
+    if (straight != nullptr) {
+        found.push_back(straight->carrier);  // a line tangent to a line is that line
     } else if (points.size() >= 2 && (points.back() - points.front()).norm() > kFkTolerance) {
         Vec2 along = (points.back() - points.front()).normalized();
         if (dir && dir->dot(along) < 0.0) along = -along;
@@ -302,10 +298,8 @@ CarrierCandidates carrierCandidates(const FkElement& element, const CandidateCon
                            : lineCandidates(element, k, context);
 }
 
-bool runsForward(const FkElement& element, const Carrier& carrier, const Vec2& start,
-                 const Vec2& end) {
+bool runsForward(const Carrier& carrier, const Vec2& start, const Vec2& end) {
     if (carrier.circle) return true;  // an arc may close on itself (a full circle)
-    (void)element;
     return carrier.dir.dot(end - start) > kFkTolerance * carrier.scale();
 }
 
@@ -351,7 +345,7 @@ EndCandidates endCandidates(const FkElement& e, const Carrier& carrier, const Ve
     EndCandidates out;
     for (const Vec2& p : ends) {
         const double tol = kFkTolerance * std::max(carrier.scale(), p.cwiseAbs().maxCoeff());
-        bool ok = carrier.contains(p) && runsForward(e, carrier, start, p);
+        bool ok = carrier.contains(p) && runsForward(carrier, start, p);
         if (k.x && std::fabs(p.x() - *k.x) > tol) ok = false;
         if (k.y && std::fabs(p.y() - *k.y) > tol) ok = false;
         if (k.pr && here.pole && std::fabs((p - *here.pole).norm() - *k.pr) > tol) ok = false;

@@ -40,8 +40,8 @@ struct EndCandidates {
 EndCandidates endCandidates(const FkElement& element, const Carrier& carrier, const Vec2& start,
                             const CandidateContext& context);
 
-// Whether a finished element (start, end on carrier) satisfies its direction data.
-bool runsForward(const FkElement& element, const Carrier& carrier, const Vec2& start,
-                 const Vec2& end);
+// Whether an element from start to end on its carrier runs the carrier's way (lines; an arc may
+// end anywhere on its circle, its start too).
+bool runsForward(const Carrier& carrier, const Vec2& start, const Vec2& end);
 
 }  // namespace kerf::fk

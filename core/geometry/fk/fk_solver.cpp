@@ -295,7 +295,7 @@ FkSolver::Outcome FkSolver::advance(FkStep& step) {
                 orderAlongCircle(meet, c0, m_start);
             }
             for (const Vec2& p : meet) {
-                if (!runsForward(first.element, c0, m_start, p)) continue;
+                if (!runsForward(c0, m_start, p)) continue;
                 addChoice(choices, {segmentOf(c0, m_start, p), c0, c1});
             }
         }

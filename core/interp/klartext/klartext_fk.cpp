@@ -122,6 +122,8 @@ void KlartextInterpreter::emitFkElement(const fk::FkResolved& resolved) {
                    : ContourElement::line(Plane::XY, m_programmed, target),
                rapid, feed, block.words);
     applyMFunctions(block.words.m, false);
+    // An FK arc computes its own centre: a CC before it is no longer valid (enter it again).
+    if (arc) m_pole.set = false;
     for (const auto& [statement, at] : block.after) {
         if (m_status == interp::RunStatus::Failed) return;
         m_at = at;

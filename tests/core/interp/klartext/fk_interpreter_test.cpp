@@ -141,6 +141,16 @@ TEST_F(FkInterpreterTest, FselectPicksTheSecondCentre) {
     EXPECT_NEAR(arc(0).sweepRad, kPi / 3.0, 1e-9);
 }
 
+// The manual: a CC before an FK arc is no longer valid after it.
+TEST_F(FkInterpreterTest, AnFkArcInvalidatesTheCircleCentre) {
+    EXPECT_EQ(run("0 BEGIN PGM FK MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 CC X+0 Y+10\n"
+                  "3 FC X+20 Y+0 DR+ R20 F100\n4 FSELECT 2\n5 C X+0 Y+0 DR+\n6 END PGM FK MM\n"),
+              interp::RunStatus::Failed);
+    ASSERT_FALSE(interpreter->diagnostics().empty());
+    EXPECT_EQ(interpreter->diagnostics().back().line, 6u);
+    EXPECT_EQ(out.moves.size(), 1u);  // the FK arc ran
+}
+
 TEST_F(FkInterpreterTest, OnlyInTheXyPlane) {
     EXPECT_EQ(run("0 BEGIN PGM FK MM\n1 TOOL CALL 0 Y\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
                   "3 FL X+10 Z+0 F100\n4 END PGM FK MM\n"),
