@@ -151,6 +151,15 @@ TEST_F(FkInterpreterTest, AnFkArcInvalidatesTheCircleCentre) {
     EXPECT_EQ(out.moves.size(), 1u);  // the FK arc ran
 }
 
+// FK data are values like any other: Q parameters and formulas.
+TEST_F(FkInterpreterTest, QParametersInFkData) {
+    ASSERT_EQ(run("0 BEGIN PGM FK MM\n1 Q1 = 12\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
+                  "3 FL X+Q1 Y+(Q1/4) F100\n4 END PGM FK MM\n"),
+              interp::RunStatus::Finished);
+    ASSERT_EQ(out.moves.size(), 1u);
+    expectPoint(end(0), 12.0, 3.0);
+}
+
 TEST_F(FkInterpreterTest, OnlyInTheXyPlane) {
     EXPECT_EQ(run("0 BEGIN PGM FK MM\n1 TOOL CALL 0 Y\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
                   "3 FL X+10 Z+0 F100\n4 END PGM FK MM\n"),
