@@ -108,5 +108,75 @@ TEST(FkSolverProperty, RoundedConvexPolygons) {
     EXPECT_GT(checked, 100);  // most random polygons are usable
 }
 
+// Random FK data, mostly nonsense: the solver answers every block (a step, a choice or a
+// problem), never hangs, and what it resolves is finite and connected.
+TEST(FkSolverProperty, RandomDataGiveFiniteConnectedElementsOrAProblem) {
+    std::mt19937 random(321);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto value = [&](double range) { return FkValue{(unit(random) - 0.5) * range, false, {}}; };
+    auto maybe = [&](double p) { return unit(random) < p; };
+    size_t resolvedCount = 0, problems = 0;
+    for (int trial = 0; trial < 1000; ++trial) {
+        FkSolver solver;
+        Vec2 at(0.0, 0.0);
+        solver.begin(at, std::nullopt);
+        std::optional<Vec2> pole;
+        bool stopped = false;
+        auto check = [&](const FkStep& step) {
+            for (const FkResolved& r : step.resolved) {
+                const PlanarSegment& s = r.segment;
+                ASSERT_TRUE(s.start.allFinite() && s.end.allFinite() && s.center.allFinite() &&
+                            std::isfinite(s.sweep))
+                    << "trial " << trial;
+                EXPECT_LT((s.start - at).norm(), 1e-6 * (1.0 + at.norm())) << "trial " << trial;
+                at = s.end;
+                ++resolvedCount;
+            }
+            if (step.problem) {
+                ++problems;
+                stopped = true;
+            }
+            if (step.choices > 0) {
+                EXPECT_EQ(step.choices, solver.alternatives().size());
+            }
+        };
+        for (int block = 0; block < 12 && !stopped; ++block) {
+            if (solver.awaitingChoice()) {
+                check(solver.select(1 + static_cast<int>(unit(random) * 3.0)));
+                continue;
+            }
+            if (maybe(0.2)) pole = Vec2(value(40.0).value, value(40.0).value);
+            FkElement e;
+            e.kind = static_cast<FkKind>(static_cast<int>(unit(random) * 4.0) % 4);
+            e.blockNumber = block;
+            if (maybe(0.3)) e.x = value(100.0);
+            if (maybe(0.3)) e.y = value(100.0);
+            if (maybe(0.15) && pole) e.pr = FkValue{unit(random) * 50.0, false, {}};
+            if (maybe(0.15) && pole) e.pa = value(720.0);
+            if (maybe(0.3)) e.an = value(720.0);
+            if (maybe(0.1)) e.length = 1.0 + unit(random) * 30.0;
+            if (e.isArc()) {
+                e.rotation = static_cast<FkRotation>(static_cast<int>(unit(random) * 3.0) % 3);
+                if (maybe(0.5)) e.radius = 1.0 + unit(random) * 40.0;
+                if (maybe(0.3)) e.ccx = value(100.0);
+                if (maybe(0.3)) e.ccy = value(100.0);
+                if (maybe(0.1)) e.endAngleAboutCentre = value(720.0).value;
+            }
+            if (maybe(0.2)) {
+                e.pdx = value(100.0);
+                e.pdy = value(100.0);
+                e.distance = unit(random) * 20.0;
+            }
+            if (maybe(0.2)) e.pointsOn[0] = Vec2(value(100.0).value, value(100.0).value);
+            if (maybe(0.1) && block > 0) e.x = FkValue{value(20.0).value, true, block - 1};
+            check(solver.add(e, static_cast<size_t>(block), pole));
+        }
+        if (!stopped) check(solver.finish());
+    }
+    // The generator is not only producing errors.
+    EXPECT_GT(resolvedCount, 50u);
+    EXPECT_GT(problems, 100u);
+}
+
 }  // namespace
 }  // namespace kerf::fk
