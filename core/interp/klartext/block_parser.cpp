@@ -1086,6 +1086,10 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         }
         return true;
     }
+    if (head == "FPOL" || head == "FL" || head == "FLT" || head == "FC" || head == "FCT" ||
+        head == "FSELECT" || head == "FSELCT") {
+        return parseFk(head, line, cur.position(), out);
+    }
     static const char* const kDeferredHeads[] = {
         "PATTERN", "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",     "CONTOUR",
         "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",       "FSELECT",
@@ -1101,8 +1105,6 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 std::string_view what = cur.word();
                 feature = "SEL " + upperCopy(what);
             }
-            if (head[0] == 'F' && head != "FUNCTION" && head != "FACING")
-                feature = "FK programming";
             return deferred(feature);
         }
     }

@@ -31,6 +31,9 @@ private:
     bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parsePatternDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parseValue(Cursor& cursor, double& out);
+    // FK free contour blocks (block_parser_fk.cpp); `head` is FPOL, FL, FLT, FC, FCT or FSELECT.
+    bool parseFk(std::string_view head, const program::LogicalLine& line, size_t at,
+                 ParsedBlock& out);
     bool failAt(size_t offset, const char* code, const char* messageTemplate,
                 std::vector<std::string> args = {});
 

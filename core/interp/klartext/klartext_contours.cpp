@@ -31,7 +31,9 @@ bool allowedInContour(const Statement& s) {
            std::holds_alternative<ChamferBlock>(s) || std::holds_alternative<LinePolarBlock>(s) ||
            std::holds_alternative<CirclePolarBlock>(s) ||
            std::holds_alternative<CircleTangentPolarBlock>(s) ||
-           std::holds_alternative<QAssign>(s) || std::holds_alternative<QStringAssign>(s);
+           std::holds_alternative<QAssign>(s) || std::holds_alternative<QStringAssign>(s) ||
+           std::holds_alternative<FkBlock>(s) || std::holds_alternative<FkPole>(s) ||
+           std::holds_alternative<FkSelect>(s);
 }
 
 const Coordinates* coordinatesOf(const Statement& s) {
@@ -53,7 +55,7 @@ bool movesInPlane(const Statement& s) {
            std::holds_alternative<CircleTangentBlock>(s) ||
            std::holds_alternative<LinePolarBlock>(s) ||
            std::holds_alternative<CirclePolarBlock>(s) ||
-           std::holds_alternative<CircleTangentPolarBlock>(s);
+           std::holds_alternative<CircleTangentPolarBlock>(s) || std::holds_alternative<FkBlock>(s);
 }
 
 }  // namespace
@@ -133,6 +135,10 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
     builder.reset(m_programmed);
     builder.setToolRadius(0.0);
     m_capturePath = &builder;
+    // The subprogram's FK sequence is its own: the caller's FPOL stays valid in it.
+    FkState outerFk = std::move(m_fk);
+    m_fk = FkState{};
+    m_fk.pole = outerFk.pole;
 
     const ProgramFile& program = *m_levels.back().program;
     const Plane plane = workingPlane();
@@ -190,8 +196,10 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
             side = m_comp;
         }
     }
+    finishFk();
     if (m_status != interp::RunStatus::Failed) checkPathError(builder.flush());
     m_capturePath = nullptr;
+    m_fk = std::move(outerFk);
     m_programmed = programmed;
     m_comp = comp;
     m_lastTangent = lastTangent;

@@ -86,6 +86,9 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const SelectTable& b) { self.executeSelectTable(b); }
         void operator()(const SelectPattern& b) { self.executeSelectPattern(b); }
         void operator()(const CycleCall& b) { self.executeCycleCall(b); }
+        void operator()(const FkBlock& b) { self.executeFk(b); }
+        void operator()(const FkPole& b) { self.executeFkPole(b); }
+        void operator()(const FkSelect& b) { self.executeFkSelect(b); }
         void operator()(const Deferred& b) {
             self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
         }
@@ -95,6 +98,7 @@ void KlartextInterpreter::execute(const Statement& statement) {
              {std::string(1, axisLetter(*missing))});
         return;
     }
+    if (routeThroughFk(statement) || m_status == interp::RunStatus::Failed) return;
     std::visit(Visitor{*this}, statement);
 }
 

@@ -320,6 +320,8 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
 }
 
 bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
+    finishFk();
+    if (m_status == interp::RunStatus::Failed) return false;
     if (m_levels.size() > 1) {
         // Back to the calling program after its CALL PGM block.
         Level finished = m_levels.back();

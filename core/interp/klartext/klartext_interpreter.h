@@ -15,6 +15,7 @@
 #include "core/cycles/pattern/pattern_plan.h"
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/cycles/transform/coordinate_frame.h"
+#include "core/geometry/fk/fk_solver.h"
 #include "core/interp/interpreter.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
@@ -220,6 +221,29 @@ private:
     void spindleOrientation(const CycleDefinition& def);
     void threadCutting(const CycleDefinition& def);
     void tolerance(const CycleDefinition& def);
+    // FK free contour programming (klartext_fk.cpp): blocks go to the solver, resolved elements
+    // are emitted as lines and arcs with the words and location of their own block.
+    struct FkBlockState {
+        SourceLocation at;
+        CommonWords words;
+        std::vector<std::pair<Statement, SourceLocation>> after;  // RND/CHF after the element
+    };
+    struct FkState {
+        fk::FkSolver solver;
+        bool active = false;  // an FK sequence is open
+        std::map<size_t, FkBlockState> blocks;
+        size_t nextTag = 0;
+        std::optional<Vec2> pole;  // FPOL stays until the next FPOL
+    };
+    void executeFk(const FkBlock& block);
+    void executeFkSelect(const FkSelect& select);
+    void executeFkPole(const FkPole& pole);
+    // True when `statement` was taken by the open FK sequence (RND/CHF between FK elements).
+    // Other blocks end the sequence first.
+    bool routeThroughFk(const Statement& statement);
+    void finishFk();
+    void applyFkStep(const fk::FkStep& step);
+    void emitFkElement(const fk::FkResolved& resolved);
     // Cycle 14 and the contour subprograms of the SL cycles (klartext_contours.cpp).
     void contourLabels(const CycleDefinition& def);
     bool captureContours(std::vector<cycles::SubContour>& out);
@@ -370,6 +394,7 @@ private:
     std::optional<cycles::CycleValues> m_contourData;
     double m_roughingRadius = 0.0;
     interp::PathBuilder* m_capturePath = nullptr;
+    FkState m_fk;
 };
 
 }  // namespace kerf::klartext

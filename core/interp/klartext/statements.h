@@ -9,6 +9,7 @@
 #include "core/cycles/cycle_word.h"
 #include "core/cycles/pattern/pattern_definition.h"
 #include "core/geometry/axes.h"
+#include "core/geometry/fk/fk_element.h"
 #include "core/interp/klartext/q_parameters.h"
 
 // One conversational block after parsing. Values are already evaluated (Q parameters read when the
@@ -230,6 +231,18 @@ struct TableAccess {  // FN 27 / FN 28
     QRef parameter;  // first parameter written or read
 };
 
+// FK free contour programming: FL, FLT, FC, FCT (solved by core/geometry/fk), FPOL, FSELECT.
+struct FkBlock {
+    fk::FkElement element;
+    CommonWords words;
+};
+struct FkPole {
+    double x = 0.0, y = 0.0;
+};
+struct FkSelect {
+    int choice = 1;
+};
+
 // Blocks that parse and are kept but that this release does not execute yet (fixed cycles,
 // patterns, probing, FK, PLANE ...). `feature` names them in the diagnostic.
 struct Deferred {
@@ -284,7 +297,7 @@ using Statement =
                  CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
                  ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
                  TableAccess, CycleDefinition, GlobalDefinition, PatternDefinition, SelectTable,
-                 SelectPattern, CycleCall, Deferred>;
+                 SelectPattern, CycleCall, FkBlock, FkPole, FkSelect, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

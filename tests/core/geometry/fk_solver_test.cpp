@@ -1,0 +1,398 @@
+// FK contours dimensioned by hand; every expected point is worked out in the comments.
+#include "core/geometry/fk/fk_solver.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/geometry/arc_math.h"
+
+namespace kerf::fk {
+namespace {
+
+constexpr double kTol = 1e-6;
+
+FkValue abs(double v) {
+    return FkValue{v, false, std::nullopt};
+}
+FkValue relativeTo(int64_t block, double v) {
+    return FkValue{v, true, block};
+}
+
+void expectPoint(const Vec2& p, double x, double y) {
+    EXPECT_NEAR(p.x(), x, kTol);
+    EXPECT_NEAR(p.y(), y, kTol);
+}
+
+FkElement line() {
+    return FkElement{};
+}
+FkElement arc(FkRotation rotation) {
+    FkElement e;
+    e.kind = FkKind::Arc;
+    e.rotation = rotation;
+    return e;
+}
+
+// The manual's pocket (seed example C20): a circle r30 about (30,30) with a slot 20 wide at 60
+// degrees into a circle r20 whose centre lies 55 from (30,30) at 60 degrees. With u = (cos 60,
+// sin 60) and n = (-sin 60, cos 60) the slot sides are the lines 10 n + t u and -10 n + t u;
+// they meet the big circle at t = +-sqrt(30^2 - 10^2) = +-28.284271 and the small one at
+// t = 55 -+ sqrt(20^2 - 10^2) = 37.679492 and 72.320508.
+TEST(FkSolver, SeedPocketWithItsFselectChoices) {
+    const Vec2 o(30.0, 30.0), u(0.5, std::sqrt(3.0) / 2.0), n(-std::sqrt(3.0) / 2.0, 0.5);
+    FkSolver solver;
+    solver.begin({0.0, 30.0}, Vec2(0.0, 1.0));
+    FkElement big = arc(FkRotation::Cw);
+    big.radius = 30.0;
+    big.ccx = abs(30.0);
+    big.ccy = abs(30.0);
+    FkStep step = solver.add(big, 17, std::nullopt);
+    EXPECT_TRUE(step.resolved.empty());
+    EXPECT_EQ(step.choices, 0u);
+
+    FkElement side = line();
+    side.an = abs(60.0);
+    side.pdx = abs(30.0);
+    side.pdy = abs(30.0);
+    side.distance = 10.0;
+    step = solver.add(side, 18, std::nullopt);
+    ASSERT_FALSE(step.problem);
+    ASSERT_EQ(step.choices, 4u);  // two sides of the slot, two crossings with the circle each
+    // Right side first, each side's crossing farther along the line first: 3 is the left side
+    // (+10 n) at t = +28.28.
+    const Vec2 slotEntry = o + 10.0 * n + 28.284271247 * u;
+    expectPoint(solver.alternatives()[2].segment.end, slotEntry.x(), slotEntry.y());
+    expectPoint(solver.alternatives()[0].segment.end, (o - 10.0 * n + 28.284271247 * u).x(),
+                (o - 10.0 * n + 28.284271247 * u).y());
+    step = solver.select(3);
+    ASSERT_EQ(step.resolved.size(), 1u);
+    EXPECT_EQ(step.resolved[0].tag, 17u);
+    expectPoint(step.resolved[0].segment.end, 35.481882, 59.494897);  // (30-8.66+14.14, 30+5+24.49)
+    EXPECT_LT(step.resolved[0].segment.sweep, 0.0);
+
+    FkElement small = arc(FkRotation::Cw);
+    small.radius = 20.0;
+    small.ccpr = abs(55.0);
+    small.ccpa = abs(60.0);
+    step = solver.add(small, 21, Vec2(30.0, 30.0));
+    ASSERT_EQ(step.choices, 2u);
+    step = solver.select(2);  // the nearer crossing, t = 37.68
+    ASSERT_EQ(step.resolved.size(), 1u);
+    EXPECT_EQ(step.resolved[0].tag, 18u);
+    expectPoint(step.resolved[0].segment.end, 40.179492, 67.631397);
+
+    FkElement back = line();
+    back.an = abs(-120.0);
+    back.pdx = abs(30.0);
+    back.pdy = abs(30.0);
+    back.distance = 10.0;
+    step = solver.add(back, 23, Vec2(30.0, 30.0));
+    ASSERT_EQ(step.choices, 4u);
+    step = solver.select(3);
+    ASSERT_EQ(step.resolved.size(), 1u);
+    // -10 n + 37.68 u = (57.5, 57.63): straight below the small circle's centre (57.5, 77.63).
+    expectPoint(step.resolved[0].segment.end, 57.5, 57.631397);
+    EXPECT_NEAR(std::fabs(step.resolved[0].segment.sweep), degToRad(300.0),
+                1e-6);  // all but the slot's 60 degrees
+
+    FkElement closing = arc(FkRotation::Cw);
+    closing.x = abs(0.0);
+    closing.radius = 30.0;
+    closing.ccx = abs(30.0);
+    closing.ccy = abs(30.0);
+    step = solver.add(closing, 25, Vec2(30.0, 30.0));
+    ASSERT_EQ(step.choices, 2u);
+    step = solver.select(2);
+    ASSERT_EQ(step.resolved.size(), 2u);  // the slot side and then the closing arc at once
+    expectPoint(step.resolved[0].segment.end, 52.802390, 49.494897);
+    expectPoint(step.resolved[1].segment.end, 0.0, 30.0);
+    EXPECT_FALSE(solver.finish().problem);
+}
+
+// A line along X from the origin, an arc r10 counter-clockwise tangent to it, and a line tangent
+// to the arc that runs up through (30,50) at 90 degrees: the arc's centre is 10 above the first
+// line and 10 left of x = 30, so (20,10); the arc runs from (20,0) to (30,10). The arc is known
+// only by its radius and tangency until the third block arrives.
+TEST(FkSolver, TangentArcBetweenLinesKnownOnlyByRadius) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement first = line();
+    first.an = abs(0.0);
+    EXPECT_TRUE(solver.add(first, 1, std::nullopt).resolved.empty());
+    FkElement round = arc(FkRotation::Ccw);
+    round.kind = FkKind::TangentArc;
+    round.radius = 10.0;
+    EXPECT_TRUE(solver.add(round, 2, std::nullopt).resolved.empty());
+    FkElement up = line();
+    up.kind = FkKind::TangentLine;
+    up.an = abs(90.0);
+    up.x = abs(30.0);
+    up.y = abs(50.0);
+    FkStep step = solver.add(up, 3, std::nullopt);
+    ASSERT_FALSE(step.problem);
+    ASSERT_EQ(step.resolved.size(), 3u);
+    expectPoint(step.resolved[0].segment.end, 20.0, 0.0);
+    expectPoint(step.resolved[1].segment.center, 20.0, 10.0);
+    expectPoint(step.resolved[1].segment.end, 30.0, 10.0);
+    EXPECT_NEAR(step.resolved[1].segment.sweep, kPi / 2.0, 1e-9);
+    expectPoint(step.resolved[2].segment.end, 30.0, 50.0);
+}
+
+// A line through the start (0,0) and the point P1 (10,10) ends where the next line, y = 20
+// through (50,20), begins: (20,20).
+TEST(FkSolver, EndPointFromAPointOnTheElement) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement diagonal = line();
+    diagonal.pointsOn[0] = Vec2(10.0, 10.0);
+    EXPECT_TRUE(solver.add(diagonal, 1, std::nullopt).resolved.empty());
+    FkElement flat = line();
+    flat.an = abs(0.0);
+    flat.x = abs(50.0);
+    flat.y = abs(20.0);
+    FkStep step = solver.add(flat, 2, std::nullopt);
+    ASSERT_EQ(step.resolved.size(), 2u);
+    expectPoint(step.resolved[0].segment.end, 20.0, 20.0);
+    expectPoint(step.resolved[1].segment.end, 50.0, 20.0);
+}
+
+// D 0: the point lies on the line, so the line runs through (0,0) and (10,10) as above.
+TEST(FkSolver, PointAtDistanceZeroLiesOnTheElement) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement diagonal = line();
+    diagonal.pdx = abs(10.0);
+    diagonal.pdy = abs(10.0);
+    diagonal.distance = 0.0;
+    EXPECT_TRUE(solver.add(diagonal, 1, std::nullopt).resolved.empty());
+    FkElement flat = line();
+    flat.an = abs(0.0);
+    flat.x = abs(50.0);
+    flat.y = abs(20.0);
+    FkStep step = solver.add(flat, 2, std::nullopt);
+    EXPECT_EQ(step.choices, 0u);
+    ASSERT_EQ(step.resolved.size(), 2u);
+    expectPoint(step.resolved[0].segment.end, 20.0, 20.0);
+}
+
+// An arc about the origin r10, counter-clockwise from (10,0), left by a tangent line running in
+// -X: it touches where the arc runs in -X, at (0,10); the line ends at X-30.
+TEST(FkSolver, TangentLineLeavesAnOpenArc) {
+    FkSolver solver;
+    solver.begin({10.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.ccx = abs(0.0);
+    a.ccy = abs(0.0);
+    a.radius = 10.0;
+    EXPECT_TRUE(solver.add(a, 1, std::nullopt).resolved.empty());
+    FkElement leave = line();
+    leave.kind = FkKind::TangentLine;
+    leave.an = abs(180.0);
+    leave.x = abs(-30.0);
+    FkStep step = solver.add(leave, 2, std::nullopt);
+    ASSERT_EQ(step.resolved.size(), 2u);
+    expectPoint(step.resolved[0].segment.end, 0.0, 10.0);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, kPi / 2.0, 1e-9);
+    expectPoint(step.resolved[1].segment.end, -30.0, 10.0);
+}
+
+// Block 12 ends at (30,0). Block 13: polar radius 10 more than block 12's end (30 + 10) at 90
+// degrees about the pole (0,0): (0,40). Block 14: centre 30 left of block 12's end, on Y 0: the
+// origin; counter-clockwise to (-40,0), a quarter circle. Block 15: 90 degrees more than block
+// 12's direction (0), LEN 10: from (-40,0) to (-40,10).
+TEST(FkSolver, RelativeDataReferToEarlierBlocks) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement b12 = line();
+    b12.blockNumber = 12;
+    b12.x = abs(30.0);
+    b12.y = abs(0.0);
+    ASSERT_EQ(solver.add(b12, 12, std::nullopt).resolved.size(), 1u);
+    FkElement b13 = line();
+    b13.blockNumber = 13;
+    b13.pr = relativeTo(12, 10.0);
+    b13.pa = abs(90.0);
+    FkStep step = solver.add(b13, 13, Vec2(0.0, 0.0));
+    ASSERT_EQ(step.resolved.size(), 1u);
+    expectPoint(step.resolved[0].segment.end, 0.0, 40.0);
+    FkElement b14 = arc(FkRotation::Ccw);
+    b14.blockNumber = 14;
+    b14.ccx = relativeTo(12, -30.0);
+    b14.ccy = abs(0.0);
+    b14.x = abs(-40.0);
+    b14.y = abs(0.0);
+    step = solver.add(b14, 14, Vec2(0.0, 0.0));
+    ASSERT_EQ(step.resolved.size(), 1u);
+    expectPoint(step.resolved[0].segment.center, 0.0, 0.0);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, kPi / 2.0, 1e-9);
+    FkElement b15 = line();
+    b15.an = relativeTo(12, 90.0);
+    b15.length = 10.0;
+    step = solver.add(b15, 15, Vec2(0.0, 0.0));
+    ASSERT_EQ(step.resolved.size(), 1u);
+    expectPoint(step.resolved[0].segment.end, -40.0, 10.0);
+}
+
+// An arc r20 counter-clockwise from (0,0) to (20,0): the centre is (10,-17.32) (the long way,
+// 300 degrees) or (10,17.32) (60 degrees). FSELECT picks either.
+TEST(FkSolver, FselectChoosesEitherSolution) {
+    for (int choice : {1, 2}) {
+        FkSolver solver;
+        solver.begin({0.0, 0.0}, std::nullopt);
+        FkElement a = arc(FkRotation::Ccw);
+        a.radius = 20.0;
+        a.x = abs(20.0);
+        a.y = abs(0.0);
+        FkStep step = solver.add(a, 1, std::nullopt);
+        ASSERT_EQ(step.choices, 2u);
+        step = solver.select(choice);
+        ASSERT_EQ(step.resolved.size(), 1u);
+        const PlanarSegment& s = step.resolved[0].segment;
+        expectPoint(s.end, 20.0, 0.0);
+        const double h = std::sqrt(300.0);
+        expectPoint(s.center, 10.0, choice == 1 ? -h : h);
+        EXPECT_NEAR(s.sweep, degToRad(choice == 1 ? 300.0 : 60.0), 1e-9);
+    }
+}
+
+TEST(FkSolver, ClosedContourEndsAtItsStart) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = line();
+    a.closeStart = true;
+    a.x = abs(40.0);
+    a.y = abs(0.0);
+    ASSERT_EQ(solver.add(a, 1, std::nullopt).resolved.size(), 1u);
+    FkElement b = line();
+    b.x = abs(0.0);
+    b.y = abs(30.0);
+    ASSERT_EQ(solver.add(b, 2, std::nullopt).resolved.size(), 1u);
+    FkElement c = line();
+    c.closeEnd = true;
+    FkStep step = solver.add(c, 3, std::nullopt);
+    ASSERT_EQ(step.resolved.size(), 1u);
+    expectPoint(step.resolved[0].segment.end, 0.0, 0.0);
+}
+
+TEST(FkSolverErrors, UnderDeterminedAtTheEndOfTheSequence) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = line();
+    a.an = abs(30.0);
+    EXPECT_FALSE(solver.add(a, 7, std::nullopt).problem);
+    FkStep step = solver.finish();
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 7u);
+    EXPECT_NE(std::string(step.problem->messageTemplate).find("not determined"), std::string::npos);
+}
+
+// A line continued tangentially by a line: the joint could be anywhere on it.
+TEST(FkSolverErrors, TangentLineAfterAnOpenLineLeavesTheJointOpen) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = line();
+    a.an = abs(0.0);
+    EXPECT_FALSE(solver.add(a, 1, std::nullopt).problem);
+    FkElement b = line();
+    b.kind = FkKind::TangentLine;
+    b.x = abs(50.0);
+    b.y = abs(0.0);
+    FkStep step = solver.add(b, 2, std::nullopt);
+    EXPECT_FALSE(step.problem);
+    EXPECT_TRUE(step.resolved.empty());
+    step = solver.finish();
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 1u);
+}
+
+TEST(FkSolverErrors, TooManyUndeterminedElementsInARow) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.radius = 10.0;  // no centre, no end: every one waits for the next
+    for (size_t tag = 1; tag <= FkSolver::kMaxWaiting; ++tag)
+        EXPECT_FALSE(solver.add(a, tag, std::nullopt).problem);
+    FkStep step = solver.add(a, 9, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 1u);
+}
+
+TEST(FkSolverErrors, ContradictionAtTheBlockThatMakesIt) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = line();
+    a.x = abs(10.0);
+    a.y = abs(0.0);
+    a.an = abs(90.0);  // (0,0) to (10,0) does not run at 90 degrees
+    FkStep step = solver.add(a, 4, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 4u);
+    EXPECT_NE(std::string(step.problem->messageTemplate).find("contradict"), std::string::npos);
+
+    // A circle about (100,0) r10 never meets a line along X at y = 50.
+    FkSolver second;
+    second.begin({0.0, 50.0}, std::nullopt);
+    FkElement l = line();
+    l.an = abs(0.0);
+    EXPECT_FALSE(second.add(l, 1, std::nullopt).problem);
+    FkElement c = arc(FkRotation::Ccw);
+    c.ccx = abs(100.0);
+    c.ccy = abs(0.0);
+    c.radius = 10.0;
+    step = second.add(c, 2, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 2u);
+}
+
+TEST(FkSolverErrors, FselectMissingOutOfRangeOrWithoutChoice) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    EXPECT_TRUE(solver.select(1).problem->atCaller);
+    FkElement a = arc(FkRotation::Ccw);
+    a.radius = 20.0;
+    a.x = abs(20.0);
+    a.y = abs(0.0);
+    ASSERT_EQ(solver.add(a, 5, std::nullopt).choices, 2u);
+    FkStep step = solver.select(3);
+    ASSERT_TRUE(step.problem);
+    EXPECT_TRUE(step.problem->atCaller);
+    EXPECT_EQ(step.problem->args, (std::vector<std::string>{"3", "2"}));
+    step = solver.add(line(), 6, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 5u);
+    EXPECT_NE(std::string(step.problem->messageTemplate).find("FSELECT"), std::string::npos);
+    step = solver.finish();
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->tag, 5u);
+}
+
+TEST(FkSolverErrors, BadReferencesPolarWithoutPoleAndBadValues) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = line();
+    a.x = relativeTo(99, 5.0);
+    FkStep step = solver.add(a, 1, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_EQ(step.problem->args, std::vector<std::string>{"99"});
+
+    FkElement b = line();
+    b.pr = abs(10.0);
+    b.pa = abs(0.0);
+    step = solver.add(b, 2, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_NE(std::string(step.problem->messageTemplate).find("FPOL"), std::string::npos);
+
+    FkElement c = arc(FkRotation::Cw);
+    c.radius = -5.0;
+    EXPECT_TRUE(solver.add(c, 3, std::nullopt).problem);
+
+    FkElement d = line();
+    d.closeEnd = true;
+    step = solver.add(d, 4, std::nullopt);
+    ASSERT_TRUE(step.problem);
+    EXPECT_NE(std::string(step.problem->messageTemplate).find("CLSD+"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace kerf::fk
