@@ -6901,6 +6901,90 @@ zyklen</translation>
         <source>This block has no ISO form</source>
         <translation>Dieser Satz hat keine ISO-Form</translation>
     </message>
+    <message>
+        <source>FK: the relative data refer to block {1}, which is not among the last 64 determined blocks</source>
+        <translation>FK: Die relativen Daten beziehen sich auf Satz {1}, der nicht unter den letzten 64 bestimmten Sätzen ist</translation>
+    </message>
+    <message>
+        <source>FK: polar data need a pole FPOL</source>
+        <translation>FK: Polare Daten brauchen einen Pol FPOL</translation>
+    </message>
+    <message>
+        <source>FK: this element has {1} solutions: choose one with FSELECT in the next block</source>
+        <translation>FK: Dieses Element hat {1} Lösungen: eine mit FSELECT im nächsten Satz wählen</translation>
+    </message>
+    <message>
+        <source>FK: R and LEN must be positive, D must not be negative</source>
+        <translation>FK: R und LEN müssen positiv sein, D darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <source>FK: CLSD- without a CLSD+ before it</source>
+        <translation>FK: CLSD- ohne vorheriges CLSD+</translation>
+    </message>
+    <message>
+        <source>FSELECT without an FK element with several solutions before it</source>
+        <translation>FSELECT ohne vorheriges FK-Element mit mehreren Lösungen</translation>
+    </message>
+    <message>
+        <source>FSELECT {1}: the element has {2} solutions</source>
+        <translation>FSELECT {1}: Das Element hat {2} Lösungen</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined: the FK sequence ends before enough data are given</source>
+        <translation>FK: Dieses Element ist nicht bestimmt: die FK-Folge endet, bevor genug Daten gegeben sind</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined by the blocks that follow it</source>
+        <translation>FK: Dieses Element wird durch die folgenden Sätze nicht bestimmt</translation>
+    </message>
+    <message>
+        <source>FK: the data of this block contradict the contour: no solution</source>
+        <translation>FK: Die Daten dieses Satzes widersprechen der Kontur: keine Lösung</translation>
+    </message>
+    <message>
+        <source>FSELECT needs the number of a solution (1 to 99)</source>
+        <translation>FSELECT braucht die Nummer einer Lösung (1 bis 99)</translation>
+    </message>
+    <message>
+        <source>unexpected text</source>
+        <translation>unerwarteter Text</translation>
+    </message>
+    <message>
+        <source>FPOL takes X and Y once each</source>
+        <translation>FPOL nimmt X und Y je einmal</translation>
+    </message>
+    <message>
+        <source>FPOL needs X and Y</source>
+        <translation>FPOL braucht X und Y</translation>
+    </message>
+    <message>
+        <source>this FK datum is programmed twice</source>
+        <translation>Diese FK-Angabe ist zweimal programmiert</translation>
+    </message>
+    <message>
+        <source>CLSD+ or CLSD- expected</source>
+        <translation>CLSD+ oder CLSD- erwartet</translation>
+    </message>
+    <message>
+        <source>the block number relative data refer to expected</source>
+        <translation>Satznummer erwartet, auf die sich die relativen Daten beziehen</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in an FK block</source>
+        <translation>unerwartetes &apos;{1}&apos; in einem FK-Satz</translation>
+    </message>
+    <message>
+        <source>P{1}X and P{1}Y are given together</source>
+        <translation>P{1}X und P{1}Y werden zusammen angegeben</translation>
+    </message>
+    <message>
+        <source>{1} needs an incremental value {2} in the same block</source>
+        <translation>{1} braucht einen inkrementalen Wert {2} im selben Satz</translation>
+    </message>
+    <message>
+        <source>FK programming works in the XY plane only (tool axis Z)</source>
+        <translation>FK-Programmierung arbeitet nur in der XY-Ebene (Werkzeugachse Z)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

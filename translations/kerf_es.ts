@@ -6901,6 +6901,90 @@ fijos</translation>
         <source>This block has no ISO form</source>
         <translation>Esta frase no tiene forma ISO</translation>
     </message>
+    <message>
+        <source>FK: the relative data refer to block {1}, which is not among the last 64 determined blocks</source>
+        <translation>FK: los datos relativos se refieren a la frase {1}, que no está entre las últimas 64 frases determinadas</translation>
+    </message>
+    <message>
+        <source>FK: polar data need a pole FPOL</source>
+        <translation>FK: los datos polares necesitan un polo FPOL</translation>
+    </message>
+    <message>
+        <source>FK: this element has {1} solutions: choose one with FSELECT in the next block</source>
+        <translation>FK: este elemento tiene {1} soluciones: elija una con FSELECT en la frase siguiente</translation>
+    </message>
+    <message>
+        <source>FK: R and LEN must be positive, D must not be negative</source>
+        <translation>FK: R y LEN deben ser positivos, D no puede ser negativo</translation>
+    </message>
+    <message>
+        <source>FK: CLSD- without a CLSD+ before it</source>
+        <translation>FK: CLSD- sin un CLSD+ antes</translation>
+    </message>
+    <message>
+        <source>FSELECT without an FK element with several solutions before it</source>
+        <translation>FSELECT sin un elemento FK con varias soluciones antes</translation>
+    </message>
+    <message>
+        <source>FSELECT {1}: the element has {2} solutions</source>
+        <translation>FSELECT {1}: el elemento tiene {2} soluciones</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined: the FK sequence ends before enough data are given</source>
+        <translation>FK: este elemento no está determinado: la secuencia FK termina antes de dar suficientes datos</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined by the blocks that follow it</source>
+        <translation>FK: las frases siguientes no determinan este elemento</translation>
+    </message>
+    <message>
+        <source>FK: the data of this block contradict the contour: no solution</source>
+        <translation>FK: los datos de esta frase contradicen el contorno: no hay solución</translation>
+    </message>
+    <message>
+        <source>FSELECT needs the number of a solution (1 to 99)</source>
+        <translation>FSELECT necesita el número de una solución (1 a 99)</translation>
+    </message>
+    <message>
+        <source>unexpected text</source>
+        <translation>texto inesperado</translation>
+    </message>
+    <message>
+        <source>FPOL takes X and Y once each</source>
+        <translation>FPOL admite X e Y una vez cada uno</translation>
+    </message>
+    <message>
+        <source>FPOL needs X and Y</source>
+        <translation>FPOL necesita X e Y</translation>
+    </message>
+    <message>
+        <source>this FK datum is programmed twice</source>
+        <translation>este dato FK está programado dos veces</translation>
+    </message>
+    <message>
+        <source>CLSD+ or CLSD- expected</source>
+        <translation>se esperaba CLSD+ o CLSD-</translation>
+    </message>
+    <message>
+        <source>the block number relative data refer to expected</source>
+        <translation>se esperaba el número de frase al que se refieren los datos relativos</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in an FK block</source>
+        <translation>&apos;{1}&apos; inesperado en una frase FK</translation>
+    </message>
+    <message>
+        <source>P{1}X and P{1}Y are given together</source>
+        <translation>P{1}X y P{1}Y se dan juntos</translation>
+    </message>
+    <message>
+        <source>{1} needs an incremental value {2} in the same block</source>
+        <translation>{1} necesita un valor incremental {2} en la misma frase</translation>
+    </message>
+    <message>
+        <source>FK programming works in the XY plane only (tool axis Z)</source>
+        <translation>La programación FK solo funciona en el plano XY (eje de herramienta Z)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

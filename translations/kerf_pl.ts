@@ -6904,6 +6904,90 @@ stałe</translation>
         <source>This block has no ISO form</source>
         <translation>Ten blok nie ma postaci ISO</translation>
     </message>
+    <message>
+        <source>FK: the relative data refer to block {1}, which is not among the last 64 determined blocks</source>
+        <translation>FK: dane przyrostowe odnoszą się do bloku {1}, którego nie ma wśród ostatnich 64 wyznaczonych bloków</translation>
+    </message>
+    <message>
+        <source>FK: polar data need a pole FPOL</source>
+        <translation>FK: dane biegunowe wymagają bieguna FPOL</translation>
+    </message>
+    <message>
+        <source>FK: this element has {1} solutions: choose one with FSELECT in the next block</source>
+        <translation>FK: ten element ma {1} rozwiązań: wybierz jedno przez FSELECT w następnym bloku</translation>
+    </message>
+    <message>
+        <source>FK: R and LEN must be positive, D must not be negative</source>
+        <translation>FK: R i LEN muszą być dodatnie, D nie może być ujemne</translation>
+    </message>
+    <message>
+        <source>FK: CLSD- without a CLSD+ before it</source>
+        <translation>FK: CLSD- bez wcześniejszego CLSD+</translation>
+    </message>
+    <message>
+        <source>FSELECT without an FK element with several solutions before it</source>
+        <translation>FSELECT bez wcześniejszego elementu FK o kilku rozwiązaniach</translation>
+    </message>
+    <message>
+        <source>FSELECT {1}: the element has {2} solutions</source>
+        <translation>FSELECT {1}: element ma {2} rozwiązań</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined: the FK sequence ends before enough data are given</source>
+        <translation>FK: ten element nie jest wyznaczony: sekwencja FK kończy się, zanim podano dość danych</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined by the blocks that follow it</source>
+        <translation>FK: następne bloki nie wyznaczają tego elementu</translation>
+    </message>
+    <message>
+        <source>FK: the data of this block contradict the contour: no solution</source>
+        <translation>FK: dane tego bloku są sprzeczne z konturem: brak rozwiązania</translation>
+    </message>
+    <message>
+        <source>FSELECT needs the number of a solution (1 to 99)</source>
+        <translation>FSELECT wymaga numeru rozwiązania (1 do 99)</translation>
+    </message>
+    <message>
+        <source>unexpected text</source>
+        <translation>nieoczekiwany tekst</translation>
+    </message>
+    <message>
+        <source>FPOL takes X and Y once each</source>
+        <translation>FPOL przyjmuje X i Y po jednym razie</translation>
+    </message>
+    <message>
+        <source>FPOL needs X and Y</source>
+        <translation>FPOL wymaga X i Y</translation>
+    </message>
+    <message>
+        <source>this FK datum is programmed twice</source>
+        <translation>ta dana FK jest zaprogramowana dwa razy</translation>
+    </message>
+    <message>
+        <source>CLSD+ or CLSD- expected</source>
+        <translation>oczekiwano CLSD+ lub CLSD-</translation>
+    </message>
+    <message>
+        <source>the block number relative data refer to expected</source>
+        <translation>oczekiwano numeru bloku, do którego odnoszą się dane przyrostowe</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in an FK block</source>
+        <translation>nieoczekiwane &apos;{1}&apos; w bloku FK</translation>
+    </message>
+    <message>
+        <source>P{1}X and P{1}Y are given together</source>
+        <translation>P{1}X i P{1}Y podaje się razem</translation>
+    </message>
+    <message>
+        <source>{1} needs an incremental value {2} in the same block</source>
+        <translation>{1} wymaga wartości przyrostowej {2} w tym samym bloku</translation>
+    </message>
+    <message>
+        <source>FK programming works in the XY plane only (tool axis Z)</source>
+        <translation>Programowanie FK działa tylko w płaszczyźnie XY (oś narzędzia Z)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6901,6 +6901,90 @@ fixos</translation>
         <source>This block has no ISO form</source>
         <translation>Este bloco não tem forma ISO</translation>
     </message>
+    <message>
+        <source>FK: the relative data refer to block {1}, which is not among the last 64 determined blocks</source>
+        <translation>FK: os dados relativos referem-se ao bloco {1}, que não está entre os últimos 64 blocos determinados</translation>
+    </message>
+    <message>
+        <source>FK: polar data need a pole FPOL</source>
+        <translation>FK: os dados polares precisam de um polo FPOL</translation>
+    </message>
+    <message>
+        <source>FK: this element has {1} solutions: choose one with FSELECT in the next block</source>
+        <translation>FK: este elemento tem {1} soluções: escolha uma com FSELECT no bloco seguinte</translation>
+    </message>
+    <message>
+        <source>FK: R and LEN must be positive, D must not be negative</source>
+        <translation>FK: R e LEN têm de ser positivos, D não pode ser negativo</translation>
+    </message>
+    <message>
+        <source>FK: CLSD- without a CLSD+ before it</source>
+        <translation>FK: CLSD- sem um CLSD+ antes</translation>
+    </message>
+    <message>
+        <source>FSELECT without an FK element with several solutions before it</source>
+        <translation>FSELECT sem um elemento FK com várias soluções antes</translation>
+    </message>
+    <message>
+        <source>FSELECT {1}: the element has {2} solutions</source>
+        <translation>FSELECT {1}: o elemento tem {2} soluções</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined: the FK sequence ends before enough data are given</source>
+        <translation>FK: este elemento não está determinado: a sequência FK termina antes de haver dados suficientes</translation>
+    </message>
+    <message>
+        <source>FK: this element is not determined by the blocks that follow it</source>
+        <translation>FK: os blocos seguintes não determinam este elemento</translation>
+    </message>
+    <message>
+        <source>FK: the data of this block contradict the contour: no solution</source>
+        <translation>FK: os dados deste bloco contradizem o contorno: sem solução</translation>
+    </message>
+    <message>
+        <source>FSELECT needs the number of a solution (1 to 99)</source>
+        <translation>FSELECT precisa do número de uma solução (1 a 99)</translation>
+    </message>
+    <message>
+        <source>unexpected text</source>
+        <translation>texto inesperado</translation>
+    </message>
+    <message>
+        <source>FPOL takes X and Y once each</source>
+        <translation>FPOL aceita X e Y uma vez cada</translation>
+    </message>
+    <message>
+        <source>FPOL needs X and Y</source>
+        <translation>FPOL precisa de X e Y</translation>
+    </message>
+    <message>
+        <source>this FK datum is programmed twice</source>
+        <translation>este dado FK está programado duas vezes</translation>
+    </message>
+    <message>
+        <source>CLSD+ or CLSD- expected</source>
+        <translation>esperava-se CLSD+ ou CLSD-</translation>
+    </message>
+    <message>
+        <source>the block number relative data refer to expected</source>
+        <translation>esperava-se o número do bloco a que os dados relativos se referem</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;{1}&apos; in an FK block</source>
+        <translation>&apos;{1}&apos; inesperado num bloco FK</translation>
+    </message>
+    <message>
+        <source>P{1}X and P{1}Y are given together</source>
+        <translation>P{1}X e P{1}Y indicam-se em conjunto</translation>
+    </message>
+    <message>
+        <source>{1} needs an incremental value {2} in the same block</source>
+        <translation>{1} precisa de um valor incremental {2} no mesmo bloco</translation>
+    </message>
+    <message>
+        <source>FK programming works in the XY plane only (tool axis Z)</source>
+        <translation>A programação FK só funciona no plano XY (eixo da ferramenta Z)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
