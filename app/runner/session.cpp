@@ -119,6 +119,7 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     tnciso::enableIso(settings, session->dialect == program::Dialect::TncIso);
     settings.machine = &session->machine;
     settings.tools = session->tools ? &*session->tools : nullptr;
+    if (toolFile) settings.toolTableFile = *toolFile;
     settings.ncRoot = ncRoot;
     settings.blockSkip = options.blockSkip;
     settings.presetInMachine = origin;

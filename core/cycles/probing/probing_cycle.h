@@ -63,16 +63,23 @@ struct ProbingResults {
 using ProbingFunction = std::optional<CycleError> (*)(const CycleValues&, const ProbeData&,
                                                       ProbingMachine&, ProbingResults&);
 
+// The TT cycles (tool_measurement.h) run through their own interface; `run` is unset for them.
+enum class ToolMeasurementKind : uint8_t { None, Calibrate, Length, Radius, LengthAndRadius };
+
 struct ProbingCycleDescriptor {
     int number = 0;
     const char* name = nullptr;  // English, KERF_TR_NOOP
     std::span<const ParameterDescriptor> parameters;
     ProbingFunction run = nullptr;
     std::span<const uint16_t> results;  // set to 0 before the cycle runs (spec 1.11)
+    ToolMeasurementKind toolMeasurement = ToolMeasurementKind::None;
 };
 
 // The implemented probing cycles (TCH PROBE n); their numbers are independent of CYCL DEF's.
 std::span<const ProbingCycleDescriptor* const> allProbingCycles();
 const ProbingCycleDescriptor* findProbingCycle(int number);
+// The old-format TT cycles 30-33 (sub-blocks 30.0 ... 33.3): the new cycle they run as (480-483),
+// or nullptr.
+const ProbingCycleDescriptor* findOldToolProbeCycle(int number);
 
 }  // namespace kerf::cycles::probing

@@ -24,5 +24,9 @@ extern const ProbingCycleDescriptor kProbe424;
 extern const ProbingCycleDescriptor kProbe426;
 extern const ProbingCycleDescriptor kProbe427;
 extern const ProbingCycleDescriptor kProbe1416;
+extern const ProbingCycleDescriptor kProbe480;
+extern const ProbingCycleDescriptor kProbe481;
+extern const ProbingCycleDescriptor kProbe482;
+extern const ProbingCycleDescriptor kProbe483;
 
 }  // namespace kerf::cycles::probing

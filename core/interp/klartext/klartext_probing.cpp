@@ -95,7 +95,7 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     // The probe table row the tool links with TP_NO (row 1 without the column), read from the
     // NC root; without a table the defaults of a new row.
     int row = 1;
-    if (const tables::ToolTable* tools = m_settings.tools) {
+    if (const tables::ToolTable* tools = toolTable()) {
         const tables::ToolData* data = tools->byNumber(m_tool.number);
         auto column = tools->table().findColumn("TP_NO");
         if (data != nullptr && column) {
@@ -143,6 +143,10 @@ workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
 }
 
 void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
+    if (def.subNumber >= 0 && cycles::probing::findOldToolProbeCycle(def.number) != nullptr) {
+        executeOldToolProbeBlock(def);
+        return;
+    }
     const auto* cycle = cycles::probing::findProbingCycle(def.number);
     if (cycle == nullptr || def.subNumber >= 0) {
         fail("not-supported", KERF_TR_NOOP("touch probe cycle {1} is not supported yet"),
@@ -160,6 +164,10 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
             return;
         }
         values.set(q, m_globals.number(q));
+    }
+    if (cycle->toolMeasurement != cycles::probing::ToolMeasurementKind::None) {
+        executeToolMeasurement(*cycle, values, false, 0);
+        return;
     }
     if (def.number == 400 && m_basicRotationDeg != 0.0) {
         // Cycle 400 cancels the basic rotation before it probes (spec 2).
