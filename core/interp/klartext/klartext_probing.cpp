@@ -18,7 +18,8 @@ namespace {
 // Result parameters that are not lengths: angles and status flags keep their value in INCH
 // programs.
 bool isLengthResult(uint16_t q) {
-    static constexpr uint16_t kOthers[] = {150, 180, 181, 182, 183, 964, 965, 994, 995};
+    static constexpr uint16_t kOthers[] = {150, 158, 159, 170, 171, 172, 180,
+                                           181, 182, 183, 964, 965, 994, 995};
     return std::find(std::begin(kOthers), std::end(kOthers), q) == std::end(kOthers);
 }
 
@@ -169,8 +170,8 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         executeToolMeasurement(*cycle, values, false, 0);
         return;
     }
-    if (def.number == 400 && m_basicRotationDeg != 0.0) {
-        // Cycle 400 cancels the basic rotation before it probes (spec 2).
+    if (def.number >= 400 && def.number <= 402 && m_basicRotationDeg != 0.0) {
+        // Cycles 400-402 cancel the basic rotation before they probe (spec 2).
         const Pose at = m_frame.toWorkpiece(m_programmed);
         m_frame.setRotation(m_frame.rotationDeg() - m_basicRotationDeg, false, workingPlane());
         m_programmed = m_frame.toProgram(at);

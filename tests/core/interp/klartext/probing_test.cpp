@@ -168,7 +168,7 @@ TEST_F(ProbingTest, ErrorsOfTheManual) {
               interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("PRB-001"), std::string::npos) << firstError();
     // A probing cycle Kerf does not have yet is refused before the program starts.
-    EXPECT_EQ(run("1 TCH PROBE 431 MEASURE PLANE\n  Q263=+0\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(run("1 TCH PROBE 444 PROBING IN 3-D\n  Q263=+0\n"), interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("not supported"), std::string::npos) << firstError();
     // Out-of-range values are found by the check, at their line.
     EXPECT_EQ(run("1 TOOL CALL 1 Z\n2 TCH PROBE 419 DATUM IN ONE AXIS\n  Q272=7\n"),
