@@ -6456,10 +6456,6 @@ editieren</translation>
         <translation>{1}: Antasten funktioniert bisher nur mit Werkzeugachse Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: Werkzeugüberwachung (Q330) wird noch nicht unterstützt: die Werkzeugtabelle wird nicht korrigiert</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>Messprotokoll {1} kann nicht geschrieben werden: {2}</translation>
     </message>
@@ -7088,6 +7084,14 @@ zyklen</translation>
     <message>
         <source>TT: probing feed with a stationary spindle</source>
         <translation>TT: Antastvorschub bei stehender Spindel</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>Tastsystemzyklus {1}: das zu überwachende Werkzeug (Q330 = {2}) ist nicht in der Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>Tastsystemzyklus {1}: Werkzeug {2} ist gebrochen (Abweichung {3} mm über RBREAK); es ist gesperrt</translation>
     </message>
 </context>
 <context>

@@ -6456,10 +6456,6 @@ ciclo</translation>
         <translation>{1}: por ahora la palpación solo funciona con el eje de herramienta Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: la supervisión de la herramienta (Q330) todavía no se admite: la tabla de herramientas no se corrige</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>no se puede escribir el protocolo de medición {1}: {2}</translation>
     </message>
@@ -7088,6 +7084,14 @@ fijos</translation>
     <message>
         <source>TT: probing feed with a stationary spindle</source>
         <translation>TT: avance de palpación con el cabezal parado</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>ciclo de palpación {1}: la herramienta a supervisar (Q330 = {2}) no está en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>ciclo de palpación {1}: la herramienta {2} está rota (desviación {3} mm superior a RBREAK); queda bloqueada</translation>
     </message>
 </context>
 <context>

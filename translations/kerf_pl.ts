@@ -6459,10 +6459,6 @@ cykl</translation>
         <translation>{1}: próbkowanie działa na razie tylko z osią narzędzia Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: nadzór narzędzia (Q330) nie jest jeszcze obsługiwany: tabela narzędzi nie jest korygowana</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>nie można zapisać protokołu pomiaru {1}: {2}</translation>
     </message>
@@ -7091,6 +7087,14 @@ stałe</translation>
     <message>
         <source>TT: probing feed with a stationary spindle</source>
         <translation>TT: posuw próbkowania przy zatrzymanym wrzecionie</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>cykl sondy {1}: nadzorowanego narzędzia (Q330 = {2}) nie ma w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>cykl sondy {1}: narzędzie {2} jest złamane (odchyłka {3} mm ponad RBREAK); zostało zablokowane</translation>
     </message>
 </context>
 <context>

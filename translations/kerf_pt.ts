@@ -6456,10 +6456,6 @@ ciclo</translation>
         <translation>{1}: por enquanto a apalpação só funciona com o eixo da ferramenta Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: a monitorização da ferramenta (Q330) ainda não é suportada: a tabela de ferramentas não é corrigida</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>não é possível escrever o protocolo de medição {1}: {2}</translation>
     </message>
@@ -7088,6 +7084,14 @@ fixos</translation>
     <message>
         <source>TT: probing feed with a stationary spindle</source>
         <translation>TT: avanço de apalpação com a árvore parada</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>ciclo de apalpação {1}: a ferramenta a supervisionar (Q330 = {2}) não está na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>ciclo de apalpação {1}: a ferramenta {2} está partida (desvio {3} mm acima de RBREAK); fica bloqueada</translation>
     </message>
 </context>
 <context>

@@ -89,6 +89,8 @@ std::optional<CycleError> run430(const CycleValues& v, const ProbeData& probe,
     status.position(deviation.x(), v.number(279));
     status.position(deviation.y(), v.number(280));
     status.write(430, v, results);
+    results.toolCorrection =
+        ToolCorrection{.delta = 0.5 * (diameter - v.number(262)), .breakageOnly = true};
     if (v.integer(281) != 0) {
         results.protocol = std::vector<std::string>{
             "Nominal values:",

@@ -247,7 +247,13 @@ private:
                                 const cycles::CycleValues& values, bool oldFormat,
                                 uint16_t statusParameter);
     std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
-    bool writeToolTable(int cycle, const cycles::probing::ToolMeasurementResult& result);
+    struct ToolTableEdit {  // what a probing cycle writes into a tool's row
+        std::optional<double> length, radius, deltaLength, deltaRadius;
+        bool lock = false;  // TL = L
+    };
+    bool writeToolTable(int cycle, int tool, const ToolTableEdit& edit);
+    bool applyToolMonitoring(int cycle, double monitored,
+                             const cycles::probing::ToolCorrection& correction);
     // The tool data TOOL CALL reads: the table as the TT cycles left it.
     const tables::ToolTable* toolTable() const {
         return m_toolTable ? &*m_toolTable : m_settings.tools;

@@ -193,12 +193,6 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
              {owner});
         return;
     }
-    if (values.number(330) != 0.0) {
-        warn("not-supported",
-             KERF_TR_NOOP("{1}: tool monitoring (Q330) is not supported yet: "
-                          "the tool table is not corrected"),
-             {owner});
-    }
     auto probe = activeProbe(def.number);
     if (!probe) return;
     if (!checkPathError(m_path.flush())) return;
@@ -214,6 +208,10 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     for (const auto& [q, value] : results.parameters)
         m_q.set(QRef{QKind::Q, q}, isLengthResult(q) ? value / lengthScale() : value);
     if (results.protocol && !writeProtocol(def.number, cycle->name, *results.protocol)) return;
+    if (results.toolCorrection && values.number(330) != 0.0 &&
+        !applyToolMonitoring(def.number, values.number(330), *results.toolCorrection)) {
+        return;
+    }
     if (results.datum && !applyDatum(def.number, results)) return;
     if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
     if (results.toleranceStop) {

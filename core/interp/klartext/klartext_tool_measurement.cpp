@@ -266,16 +266,19 @@ void KlartextInterpreter::executeToolMeasurement(
     if (request.length) m_q.set(QRef{QKind::Q, 115}, result.lengthDeviation / lengthScale());
     if (request.radius) m_q.set(QRef{QKind::Q, 116}, result.radiusDeviation / lengthScale());
     if (status != 0) m_q.set(QRef{QKind::Q, status}, result.status);
-    if (request.mode != 2) writeToolTable(cycle.number, result);
+    if (request.mode != 2) {
+        writeToolTable(cycle.number, m_tool.number,
+                       {result.newLength, result.newRadius, result.newDeltaLength,
+                        result.newDeltaRadius, result.lock});
+    }
 }
 
-// The measured values into TOOL.T (atomically, after the program check), and into the active
-// tool at once (spec 7.1: "take effect automatically at the end of the probing cycle").
-bool KlartextInterpreter::writeToolTable(int cycle,
-                                         const cycles::probing::ToolMeasurementResult& result) {
+// Measured values into TOOL.T (atomically, after the program check); a change of the tool in
+// the spindle takes effect at once (spec 7.1: "take effect automatically at the end of the
+// probing cycle").
+bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdit& edit) {
     if (!waitForCheck()) return false;
     tables::ToolTable table = *toolTable();
-    const int tool = m_tool.number;
     auto set = [&](const char* column, const std::optional<double>& value) -> bool {
         if (!value) return true;
         if (auto error = table.setNumber(tool, column, *value)) {
@@ -284,11 +287,11 @@ bool KlartextInterpreter::writeToolTable(int cycle,
         }
         return true;
     };
-    if (!set("L", result.newLength) || !set("R", result.newRadius) ||
-        !set("DL", result.newDeltaLength) || !set("DR", result.newDeltaRadius)) {
+    if (!set("L", edit.length) || !set("R", edit.radius) || !set("DL", edit.deltaLength) ||
+        !set("DR", edit.deltaRadius)) {
         return false;
     }
-    if (result.lock) {
+    if (edit.lock) {
         if (auto error = table.setText(tool, "TL", "L")) {
             failCycle({error->code, error->messageTemplate, error->args});
             return false;
@@ -302,6 +305,7 @@ bool KlartextInterpreter::writeToolTable(int cycle,
         return false;
     }
     m_toolTable = std::move(table);
+    if (tool != m_tool.number) return true;
     const tables::ToolData* row = m_toolTable->byNumber(tool);
     m_tool.length = row->length;
     m_tool.radius = row->radius;
@@ -311,6 +315,39 @@ bool KlartextInterpreter::writeToolTable(int cycle,
     m_path.setToolRadius(m_tool.effectiveRadius());
     m_q.set({QKind::Q, 108}, m_tool.effectiveRadius() / lengthScale());
     m_q.set({QKind::Q, 114}, m_tool.effectiveLength() / lengthScale());
+    return true;
+}
+
+// Q330 (spec 1.14): the monitored tool's DR (DL for 427 in the tool axis) gets the deviation
+// added, even within tolerance; beyond its RBREAK the tool is locked and the program stops.
+bool KlartextInterpreter::applyToolMonitoring(int cycle, double monitored,
+                                              const cycles::probing::ToolCorrection& correction) {
+    const int tool = static_cast<int>(monitored);
+    const tables::ToolData* row = toolTable() != nullptr ? toolTable()->byNumber(tool) : nullptr;
+    if (row == nullptr) {
+        fail("PRB-012",
+             KERF_TR_NOOP("touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in "
+                          "the tool table"),
+             {std::to_string(cycle), std::to_string(tool)});
+        return false;
+    }
+    ToolTableEdit edit;
+    if (!correction.breakageOnly) {
+        (correction.length ? edit.deltaLength : edit.deltaRadius) =
+            (correction.length ? row->deltaLength : row->deltaRadius) + correction.delta;
+    }
+    const double breakage = toolTable()->numberCell(tool, "RBREAK").value_or(0.0);
+    edit.lock = breakage > 0.0 && std::abs(correction.delta) > breakage;
+    if ((edit.deltaLength || edit.deltaRadius || edit.lock) && !writeToolTable(cycle, tool, edit)) {
+        return false;
+    }
+    if (edit.lock) {
+        fail("PRB-007",
+             KERF_TR_NOOP("touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond "
+                          "RBREAK); it is locked"),
+             {std::to_string(cycle), std::to_string(tool), std::to_string(correction.delta)});
+        return false;
+    }
     return true;
 }
 

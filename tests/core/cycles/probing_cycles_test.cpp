@@ -490,13 +490,20 @@ TEST(ProbingCycles, MeasureWidth425And426) {
     EXPECT_NEAR(result(r.results, 156), slot, kTolerance);
     EXPECT_NEAR(result(r.results, 157), c.x() - (30.0 - c.y()) * std::tan(kAngle), kTolerance);
     EXPECT_NEAR(result(r.results, 166), slot - 20.0, kTolerance);
+    // Q330: a slot too wide means the tool cut too large: DR grows by half the excess.
+    ASSERT_TRUE(r.results.toolCorrection);
+    EXPECT_NEAR(r.results.toolCorrection->delta, (slot - 20.0) / 2.0, kTolerance);
+    EXPECT_FALSE(r.results.toolCorrection->length);
     EXPECT_EQ(result(r.results, 180), 1.0);
 
     SimulatedWorkpiece ridge = misplaced();
     ridge.add({Box{Vec3(40, 10, -20), Vec3(60, 50, 0)}, true});
     r = run(426, v, ridge);
     ASSERT_FALSE(r.error) << r.error->code;
-    EXPECT_NEAR(result(r.results, 156), 20.0 / std::cos(kAngle) + 2 * kCosineError, kTolerance);
+    const double width = 20.0 / std::cos(kAngle) + 2 * kCosineError;
+    EXPECT_NEAR(result(r.results, 156), width, kTolerance);
+    // A ridge too wide: the tool cut too small, DR shrinks.
+    EXPECT_NEAR(r.results.toolCorrection->delta, -(width - 20.0) / 2.0, kTolerance);
 }
 
 TEST(ProbingCycles, DatumOutsideCorner414FindsTheRealCorner) {

@@ -22,12 +22,14 @@ public:
     std::vector<canon::Command> commands;
 };
 
-// Tool 3: L 100, R 5, 4 teeth, LTOL 0.1, RTOL 0.05, LBREAK 0.3, RBREAK 0.2. Tool 9: a
-// calibration pin L 50, R 5.
+// Tool 1: a workpiece touch probe, ball radius 2. Tool 3: L 100, R 5, 4 teeth, LTOL 0.1, RTOL 0.05,
+// LBREAK 0.3, RBREAK 0.2. Tool 9: a calibration pin L 50, R 5.
 tables::ToolTable toolTable() {
     auto table = *tables::ToolTable::parse(tables::ToolTable::createDefault());
-    for (int number : {3, 9})
+    for (int number : {1, 3, 9})
         EXPECT_FALSE(table.addTool(number));
+    EXPECT_FALSE(table.setNumber(1, "L", 50.0));  // the workpiece probe of the Q330 tests
+    EXPECT_FALSE(table.setNumber(1, "R", 2.0));
     EXPECT_FALSE(table.setNumber(3, "L", 100.0));
     EXPECT_FALSE(table.setNumber(3, "R", 5.0));
     EXPECT_FALSE(table.setNumber(3, "CUT", 4));
@@ -263,6 +265,44 @@ TEST_F(ToolMeasurementTest, OldCalibrationCycle30) {
                                     std::abs(move.target[Axis::Y] - 50.0) < 1e-9);
     }
     EXPECT_TRUE(overCentre);
+}
+
+// Cycle 427 on the blank's top (Z 0) or left face (X 0), monitoring tool 3 (RBREAK 0.2).
+std::string coordinate427(int axis, int direction, double max, double min) {
+    return "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+           "3 TOOL CALL 1 Z\n4 L X-10 Y+30 Z+50 R0 FMAX\n"
+           "5 TCH PROBE 427 MEASURE COORDINATE\n  Q263=+" +
+           std::string(axis == 3 ? "50" : "0") +
+           "\n  Q264=+30\n  Q261=" + std::string(axis == 3 ? "+0" : "-5") +
+           "\n  Q320=0\n  Q272=" + std::to_string(axis) + "\n  Q267=" + std::to_string(direction) +
+           "\n  Q260=+20\n  Q281=0\n  Q288=" + std::to_string(max) +
+           "\n  Q289=" + std::to_string(min) + "\n  Q309=0\n  Q330=3\n";
+}
+
+TEST_F(ToolMeasurementTest, ToolMonitoringQ330CorrectsTheMachiningTool) {
+    useMachine("");
+    // The top lies at 0, the limits' middle at 0.15: the tool cut 0.15 too deep, DL += 0.15.
+    ASSERT_FALSE(tools.setNumber(3, "DL", 0.01));
+    ASSERT_EQ(run(coordinate427(3, -1, 0.2, 0.1)), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(written().byNumber(3)->deltaLength, 0.16, 1e-9);
+    EXPECT_EQ(written().byNumber(3)->deltaRadius, 0.0);
+    // The left face, touched along +X, lies at 0 where -0.1 was meant: 0.1 more material is gone,
+    // DR += 0.1. The probe (tool 1) keeps its data.
+    fs::remove(dir / "TOOL.T");
+    ASSERT_EQ(run(coordinate427(1, 1, 0.1, -0.3)), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(written().byNumber(3)->deltaRadius, 0.1, 1e-9);
+    EXPECT_EQ(written().byNumber(1)->deltaRadius, 0.0);
+    EXPECT_NEAR(q(108), 2.0, 1e-12);
+    // 0.5 beyond the middle: more than RBREAK 0.2, the tool is locked and the program stops.
+    fs::remove(dir / "TOOL.T");
+    ASSERT_EQ(run(coordinate427(3, -1, 0.6, 0.4)), interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("PRB-007"), std::string::npos) << firstError();
+    EXPECT_TRUE(written().byNumber(3)->locked);
+    // A tool to monitor that is not in the table.
+    std::string program = coordinate427(3, -1, 0.2, 0.1);
+    program.replace(program.find("Q330=3"), 6, "Q330=7");
+    ASSERT_EQ(run(program), interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("Q330 = 7"), std::string::npos) << firstError();
 }
 
 TEST_F(ToolMeasurementTest, Errors) {
