@@ -18,7 +18,11 @@ class KlartextInterpreter::ToolProbeAdapter final : public cycles::probing::Tool
 public:
     ToolProbeAdapter(KlartextInterpreter& interpreter, const workpiece::SimulatedToolProbe& tt,
                      workpiece::RealTool tool)
-        : m_k(interpreter), m_tt(tt), m_tool(tool) {}
+        : m_k(interpreter),
+          m_tt(tt),
+          m_tool(tool),
+          m_direction(interpreter.m_spindle),
+          m_rpm(interpreter.m_spindleSpeed) {}
 
     Vec3 gauge() const override {
         return m_k.m_frame.toWorkpiece(m_k.m_programmed).xyz() + presetInMachine() +
@@ -61,8 +65,9 @@ private:
     KlartextInterpreter& m_k;
     const workpiece::SimulatedToolProbe& m_tt;
     workpiece::RealTool m_tool;
-    canon::SpindleDirection m_direction = canon::SpindleDirection::Stopped;
-    double m_rpm = 0.0;
+    // The spindle as the stream last set it: the program's, then the cycle's.
+    canon::SpindleDirection m_direction;
+    double m_rpm;
 };
 
 namespace {

@@ -145,6 +145,29 @@ TEST_F(ToolMeasurementTest, LengthCheckWritesTheDeviationIntoDL) {
     EXPECT_TRUE(probingFeed);
 }
 
+TEST_F(ToolMeasurementTest, StationaryToolStopsTheRunningSpindleAndRestartsItAfterwards) {
+    useMachine("[[simulation.tool_error]]\ntool = 3\nlength = 0.05\n");
+    ASSERT_FALSE(tools.setNumber(3, "R-OFFS", 0.0));  // over the centre, spindle stopped
+    ASSERT_EQ(run("1 TOOL CALL 3 Z S1000\n2 L X+0 Y+0 Z+250 R0 FMAX M3\n"
+                  "3 TCH PROBE 481 TOOL LENGTH\n  Q340=1\n  Q260=+200\n  Q341=0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(115), 0.05, 1e-9);
+    const auto spindles = commandsOf<canon::SpindleControl>();
+    ASSERT_EQ(spindles.size(), 3u);  // M3, stop for the touch, M3 again
+    EXPECT_EQ(spindles[1].direction, canon::SpindleDirection::Stopped);
+    EXPECT_EQ(spindles[2].direction, canon::SpindleDirection::Clockwise);
+    EXPECT_EQ(spindles[2].speedRpm, 1000.0);
+    const auto probe = interpreter->programStatus().probe;
+    ASSERT_TRUE(probe && probe->triggered);
+    EXPECT_NEAR(probe->position[Axis::X], -200.0, 1e-9);
+    // The probing feed of a stationary spindle.
+    bool probingFeed = false;
+    for (const auto& move : commandsOf<canon::LinearMove>())
+        probingFeed = probingFeed || move.feed == 50.0;
+    EXPECT_TRUE(probingFeed);
+}
+
 TEST_F(ToolMeasurementTest, RadiusCheckWritesTheDeviationIntoDR) {
     useMachine("[[simulation.tool_error]]\ntool = 3\nradius = -0.012\n");
     ASSERT_EQ(run("1 TOOL CALL 3 Z\n2 L X+0 Y+0 Z+250 R0 FMAX\n"
