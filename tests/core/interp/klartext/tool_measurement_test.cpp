@@ -154,7 +154,8 @@ TEST_F(ToolMeasurementTest, StationaryToolStopsTheRunningSpindleAndRestartsItAft
         << firstError();
     EXPECT_NEAR(q(115), 0.05, 1e-9);
     const auto spindles = commandsOf<canon::SpindleControl>();
-    ASSERT_EQ(spindles.size(), 3u);  // M3, stop for the touch, M3 again
+    // M3, stop for the touch, M3 again, and the stop of END PGM.
+    ASSERT_EQ(spindles.size(), 4u);
     EXPECT_EQ(spindles[1].direction, canon::SpindleDirection::Stopped);
     EXPECT_EQ(spindles[2].direction, canon::SpindleDirection::Clockwise);
     EXPECT_EQ(spindles[2].speedRpm, 1000.0);
