@@ -6468,10 +6468,6 @@ editieren</translation>
         <translation>{1}: Antasten funktioniert bisher nur mit Werkzeugachse Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: Werkzeugüberwachung (Q330) wird noch nicht unterstützt: die Werkzeugtabelle wird nicht korrigiert</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>Messprotokoll {1} kann nicht geschrieben werden: {2}</translation>
     </message>
@@ -6980,6 +6976,234 @@ zyklen</translation>
     <message>
         <source>{1} needs an incremental value {2} in the same block</source>
         <translation>{1} braucht einen inkrementalen Wert {2} im selben Satz</translation>
+    </message>
+    <message>
+        <source>1st touch point, nominal surface in the tool axis</source>
+        <translation>1. Antastpunkt: Soll-Oberfläche in der Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>2nd touch point, nominal surface in the tool axis</source>
+        <translation>2. Antastpunkt: Soll-Oberfläche in der Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>3rd touch point, nominal surface in the tool axis</source>
+        <translation>3. Antastpunkt: Soll-Oberfläche in der Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the three touch points lie on one line</source>
+        <translation>Zyklus {1}: die drei Antastpunkte liegen auf einer Geraden</translation>
+    </message>
+    <message>
+        <source>MEASURE BOLT HOLE CIRC</source>
+        <translation>MESSEN LOCHKREIS</translation>
+    </message>
+    <message>
+        <source>MEASURE PLANE</source>
+        <translation>MESSEN EBENE</translation>
+    </message>
+    <message>
+        <source>1st centre, main axis</source>
+        <translation>1. Mitte Hauptachse</translation>
+    </message>
+    <message>
+        <source>1st centre, secondary axis</source>
+        <translation>1. Mitte Nebenachse</translation>
+    </message>
+    <message>
+        <source>2nd centre, main axis</source>
+        <translation>2. Mitte Hauptachse</translation>
+    </message>
+    <message>
+        <source>2nd centre, secondary axis</source>
+        <translation>2. Mitte Nebenachse</translation>
+    </message>
+    <message>
+        <source>Compensation: 0 basic rotation, 1 rotary table</source>
+        <translation>Kompensation: 0 Grunddrehung, 1 Rundtisch</translation>
+    </message>
+    <message>
+        <source>Set the rotary axis display to 0 after alignment: 0 no, 1 yes</source>
+        <translation>Anzeige der Drehachse nach dem Ausrichten auf 0 setzen: 0 nein, 1 ja</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 1 (rather too large)</source>
+        <translation>Durchmesser Zapfen 1 (eher zu groß)</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 2 (rather too large)</source>
+        <translation>Durchmesser Zapfen 2 (eher zu groß)</translation>
+    </message>
+    <message>
+        <source>Measuring height at stud 2: ball centre in the tool axis</source>
+        <translation>Messhöhe am Zapfen 2: Kugelmitte in der Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>3rd centre, main axis</source>
+        <translation>3. Mitte Hauptachse</translation>
+    </message>
+    <message>
+        <source>3rd centre, secondary axis</source>
+        <translation>3. Mitte Nebenachse</translation>
+    </message>
+    <message>
+        <source>4th centre, main axis</source>
+        <translation>4. Mitte Hauptachse</translation>
+    </message>
+    <message>
+        <source>4th centre, secondary axis</source>
+        <translation>4. Mitte Nebenachse</translation>
+    </message>
+    <message>
+        <source>ROT 2 HOLES</source>
+        <translation>ROT 2 BOHRUNGEN</translation>
+    </message>
+    <message>
+        <source>ROT 2 STUDS</source>
+        <translation>ROT 2 ZAPFEN</translation>
+    </message>
+    <message>
+        <source>DATUM FROM 4 HOLES</source>
+        <translation>BEZUGSPUNKT MITTE 4 BOHRUNGEN</translation>
+    </message>
+    <message>
+        <source>Width of the slot or ridge, whatever its orientation</source>
+        <translation>Breite der Nut oder des Stegs, unabhängig von ihrer Lage</translation>
+    </message>
+    <message>
+        <source>New datum in the measuring axis for the centre</source>
+        <translation>Neuer Bezugspunkt in der Messachse für die Mitte</translation>
+    </message>
+    <message>
+        <source>SLOT CENTER REF PT</source>
+        <translation>BEZUGSPUNKT MITTE NUT</translation>
+    </message>
+    <message>
+        <source>RIDGE CENTER REF PT</source>
+        <translation>BEZUGSPUNKT MITTE STEG</translation>
+    </message>
+    <message>
+        <source>Tool measurement: 0 write L/R, 1 compare and write DL/DR, 2 compare</source>
+        <translation>Werkzeugmessung: 0 L/R schreiben, 1 vergleichen und DL/DR schreiben, 2 vergleichen</translation>
+    </message>
+    <message>
+        <source>Probe each tooth: 0 no, 1 yes</source>
+        <translation>Einzelschneiden antasten: 0 nein, 1 ja</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TT</source>
+        <translation>TT KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>TOOL LENGTH</source>
+        <translation>WERKZEUG-LAENGE</translation>
+    </message>
+    <message>
+        <source>TOOL RADIUS</source>
+        <translation>WERKZEUG-RADIUS</translation>
+    </message>
+    <message>
+        <source>MEASURE TOOL</source>
+        <translation>WERKZEUG MESSEN</translation>
+    </message>
+    <message>
+        <source>TCH PROBE {1}.{2} without TCH PROBE {1}.0 before it</source>
+        <translation>TCH PROBE {1}.{2} ohne vorheriges TCH PROBE {1}.0</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: a number after &apos;:&apos; expected</source>
+        <translation>{1}.{2}: nach &apos;:&apos; wird eine Zahl erwartet</translation>
+    </message>
+    <message>
+        <source>{1}: sub-blocks .1, .2 and .3 are needed</source>
+        <translation>{1}: die Teilsätze .1, .2 und .3 werden benötigt</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the machine has no tool touch probe ([simulation.tool_probe] enabled = true)</source>
+        <translation>Tastsystemzyklus {1}: die Maschine hat kein Werkzeug-Tastsystem ([simulation.tool_probe] enabled = true)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool measurement is not possible while mirroring or scaling is active (cycles 8, 11, 26)</source>
+        <translation>Tastsystemzyklus {1}: Werkzeugvermessung ist bei aktiver Spiegelung oder Maßfaktor nicht möglich (Zyklen 8, 11, 26)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: probing runs with tool axis Z only so far</source>
+        <translation>Tastsystemzyklus {1}: Antasten läuft bisher nur mit Werkzeugachse Z</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: call the tool to be measured from the tool table TOOL.T with TOOL CALL first</source>
+        <translation>Tastsystemzyklus {1}: zuerst das zu vermessende Werkzeug aus der Werkzeugtabelle TOOL.T mit TOOL CALL aufrufen</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the tool table: {2}</source>
+        <translation>Tastsystemzyklus {1}: die Werkzeugtabelle kann nicht geschrieben werden: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be tables [[{1}]] with tool, length and radius</source>
+        <translation>{1} müssen Tabellen [[{1}]] mit tool, length und radius sein</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is out of range: a tool number 0 ... 32767, lengths within +-10 mm</source>
+        <translation>{1} = {2} liegt außerhalb des Bereichs: eine Werkzeugnummer 0 ... 32767, Längen innerhalb +-10 mm</translation>
+    </message>
+    <message>
+        <source>{1} needs a tool number</source>
+        <translation>{1} braucht eine Werkzeugnummer</translation>
+    </message>
+    <message>
+        <source>{1}: tool {2} is given twice</source>
+        <translation>{1}: Werkzeug {2} ist zweimal angegeben</translation>
+    </message>
+    <message>
+        <source>Simulation: the machine has a tool touch probe (TT) for the tool measuring cycles 30-33 and 480-483</source>
+        <translation>Simulation: die Maschine hat ein Werkzeug-Tastsystem (TT) für die Werkzeugmesszyklen 30-33 und 480-483</translation>
+    </message>
+    <message>
+        <source>TT: machine X of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Maschinen-X der Mitte der Messfläche; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>TT: machine Y of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Maschinen-Y der Mitte der Messfläche; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>TT: machine Z of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Maschinen-Z der Mitte der Messfläche; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>TT: diameter of the disc stylus (side of a cube stylus)</source>
+        <translation>TT: Durchmesser des Scheiben-Tasters (Seite eines Würfel-Tasters)</translation>
+    </message>
+    <message>
+        <source>TT: stylus shape, a disc or a cube</source>
+        <translation>TT: Form des Tasters, Scheibe oder Würfel</translation>
+    </message>
+    <message>
+        <source>TT: how far below the top of the stylus the end face of the tool sits when its radius is measured</source>
+        <translation>TT: wie weit unter der Oberkante des Tasters die Stirnseite des Werkzeugs bei der Radiusmessung steht</translation>
+    </message>
+    <message>
+        <source>TT: safety zone above the stylus, and how far before the stylus each touch starts</source>
+        <translation>TT: Sicherheitszone über dem Taster, und wie weit vor dem Taster jede Antastung beginnt</translation>
+    </message>
+    <message>
+        <source>TT: highest cutting-edge speed of a rotating tool; sets the measuring speed</source>
+        <translation>TT: höchste Schneidengeschwindigkeit eines drehenden Werkzeugs; legt die Messdrehzahl fest</translation>
+    </message>
+    <message>
+        <source>TT: measuring error allowed with a rotating tool; probing feed = tolerance x speed</source>
+        <translation>TT: zulässiger Messfehler bei drehendem Werkzeug; Antastvorschub = Toleranz x Drehzahl</translation>
+    </message>
+    <message>
+        <source>TT: probing feed with a stationary spindle</source>
+        <translation>TT: Antastvorschub bei stehender Spindel</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>Tastsystemzyklus {1}: das zu überwachende Werkzeug (Q330 = {2}) ist nicht in der Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>Tastsystemzyklus {1}: Werkzeug {2} ist gebrochen (Abweichung {3} mm über RBREAK); es ist gesperrt</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

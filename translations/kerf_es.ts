@@ -6468,10 +6468,6 @@ ciclo</translation>
         <translation>{1}: por ahora la palpación solo funciona con el eje de herramienta Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: la supervisión de la herramienta (Q330) todavía no se admite: la tabla de herramientas no se corrige</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>no se puede escribir el protocolo de medición {1}: {2}</translation>
     </message>
@@ -6980,6 +6976,234 @@ fijos</translation>
     <message>
         <source>{1} needs an incremental value {2} in the same block</source>
         <translation>{1} necesita un valor incremental {2} en la misma frase</translation>
+    </message>
+    <message>
+        <source>1st touch point, nominal surface in the tool axis</source>
+        <translation>1.er punto de palpación, superficie nominal en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>2nd touch point, nominal surface in the tool axis</source>
+        <translation>2.º punto de palpación, superficie nominal en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>3rd touch point, nominal surface in the tool axis</source>
+        <translation>3.er punto de palpación, superficie nominal en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the three touch points lie on one line</source>
+        <translation>ciclo {1}: los tres puntos de palpación están en una recta</translation>
+    </message>
+    <message>
+        <source>MEASURE BOLT HOLE CIRC</source>
+        <translation>MEDIR CIRCULO DE TALADROS</translation>
+    </message>
+    <message>
+        <source>MEASURE PLANE</source>
+        <translation>MEDIR PLANO</translation>
+    </message>
+    <message>
+        <source>1st centre, main axis</source>
+        <translation>1.er centro, eje principal</translation>
+    </message>
+    <message>
+        <source>1st centre, secondary axis</source>
+        <translation>1.er centro, eje auxiliar</translation>
+    </message>
+    <message>
+        <source>2nd centre, main axis</source>
+        <translation>2.º centro, eje principal</translation>
+    </message>
+    <message>
+        <source>2nd centre, secondary axis</source>
+        <translation>2.º centro, eje auxiliar</translation>
+    </message>
+    <message>
+        <source>Compensation: 0 basic rotation, 1 rotary table</source>
+        <translation>Compensación: 0 giro básico, 1 mesa giratoria</translation>
+    </message>
+    <message>
+        <source>Set the rotary axis display to 0 after alignment: 0 no, 1 yes</source>
+        <translation>Poner a 0 la visualización del eje giratorio tras alinear: 0 no, 1 sí</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 1 (rather too large)</source>
+        <translation>Diámetro de la isla 1 (mejor demasiado grande)</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 2 (rather too large)</source>
+        <translation>Diámetro de la isla 2 (mejor demasiado grande)</translation>
+    </message>
+    <message>
+        <source>Measuring height at stud 2: ball centre in the tool axis</source>
+        <translation>Altura de medición en la isla 2: centro de la bola en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>3rd centre, main axis</source>
+        <translation>3.er centro, eje principal</translation>
+    </message>
+    <message>
+        <source>3rd centre, secondary axis</source>
+        <translation>3.er centro, eje auxiliar</translation>
+    </message>
+    <message>
+        <source>4th centre, main axis</source>
+        <translation>4.º centro, eje principal</translation>
+    </message>
+    <message>
+        <source>4th centre, secondary axis</source>
+        <translation>4.º centro, eje auxiliar</translation>
+    </message>
+    <message>
+        <source>ROT 2 HOLES</source>
+        <translation>ROT 2 TALADROS</translation>
+    </message>
+    <message>
+        <source>ROT 2 STUDS</source>
+        <translation>ROT 2 ISLAS</translation>
+    </message>
+    <message>
+        <source>DATUM FROM 4 HOLES</source>
+        <translation>PUNTO DE REFERENCIA 4 TALADROS</translation>
+    </message>
+    <message>
+        <source>Width of the slot or ridge, whatever its orientation</source>
+        <translation>Anchura de la ranura o del nervio, sea cual sea su orientación</translation>
+    </message>
+    <message>
+        <source>New datum in the measuring axis for the centre</source>
+        <translation>Nuevo punto de referencia en el eje de medición para el centro</translation>
+    </message>
+    <message>
+        <source>SLOT CENTER REF PT</source>
+        <translation>PUNTO REF. CENTRO RANURA</translation>
+    </message>
+    <message>
+        <source>RIDGE CENTER REF PT</source>
+        <translation>PUNTO REF. CENTRO NERVIO</translation>
+    </message>
+    <message>
+        <source>Tool measurement: 0 write L/R, 1 compare and write DL/DR, 2 compare</source>
+        <translation>Medición de herramienta: 0 escribir L/R, 1 comparar y escribir DL/DR, 2 comparar</translation>
+    </message>
+    <message>
+        <source>Probe each tooth: 0 no, 1 yes</source>
+        <translation>Palpar cada diente: 0 no, 1 sí</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TT</source>
+        <translation>CALIBRAR TT</translation>
+    </message>
+    <message>
+        <source>TOOL LENGTH</source>
+        <translation>LONGITUD HERRAMIENTA</translation>
+    </message>
+    <message>
+        <source>TOOL RADIUS</source>
+        <translation>RADIO HERRAMIENTA</translation>
+    </message>
+    <message>
+        <source>MEASURE TOOL</source>
+        <translation>MEDIR HERRAMIENTA</translation>
+    </message>
+    <message>
+        <source>TCH PROBE {1}.{2} without TCH PROBE {1}.0 before it</source>
+        <translation>TCH PROBE {1}.{2} sin TCH PROBE {1}.0 antes</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: a number after &apos;:&apos; expected</source>
+        <translation>{1}.{2}: se espera un número tras &apos;:&apos;</translation>
+    </message>
+    <message>
+        <source>{1}: sub-blocks .1, .2 and .3 are needed</source>
+        <translation>{1}: se necesitan las frases parciales .1, .2 y .3</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the machine has no tool touch probe ([simulation.tool_probe] enabled = true)</source>
+        <translation>ciclo de palpación {1}: la máquina no tiene palpador de herramienta ([simulation.tool_probe] enabled = true)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool measurement is not possible while mirroring or scaling is active (cycles 8, 11, 26)</source>
+        <translation>ciclo de palpación {1}: la medición de herramienta no es posible con espejo o factor de escala activos (ciclos 8, 11, 26)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: probing runs with tool axis Z only so far</source>
+        <translation>ciclo de palpación {1}: por ahora la palpación solo funciona con el eje de herramienta Z</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: call the tool to be measured from the tool table TOOL.T with TOOL CALL first</source>
+        <translation>ciclo de palpación {1}: llame primero con TOOL CALL a la herramienta a medir de la tabla TOOL.T</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the tool table: {2}</source>
+        <translation>ciclo de palpación {1}: no se puede escribir la tabla de herramientas: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be tables [[{1}]] with tool, length and radius</source>
+        <translation>{1} deben ser tablas [[{1}]] con tool, length y radius</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is out of range: a tool number 0 ... 32767, lengths within +-10 mm</source>
+        <translation>{1} = {2} está fuera de rango: un número de herramienta 0 ... 32767, longitudes dentro de +-10 mm</translation>
+    </message>
+    <message>
+        <source>{1} needs a tool number</source>
+        <translation>{1} necesita un número de herramienta</translation>
+    </message>
+    <message>
+        <source>{1}: tool {2} is given twice</source>
+        <translation>{1}: la herramienta {2} se indica dos veces</translation>
+    </message>
+    <message>
+        <source>Simulation: the machine has a tool touch probe (TT) for the tool measuring cycles 30-33 and 480-483</source>
+        <translation>Simulación: la máquina tiene un palpador de herramienta (TT) para los ciclos de medición de herramienta 30-33 y 480-483</translation>
+    </message>
+    <message>
+        <source>TT: machine X of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: X de máquina del centro de la superficie de medición; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: machine Y of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Y de máquina del centro de la superficie de medición; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: machine Z of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Z de máquina del centro de la superficie de medición; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: diameter of the disc stylus (side of a cube stylus)</source>
+        <translation>TT: diámetro del vástago de disco (lado de un vástago cúbico)</translation>
+    </message>
+    <message>
+        <source>TT: stylus shape, a disc or a cube</source>
+        <translation>TT: forma del vástago, disco o cubo</translation>
+    </message>
+    <message>
+        <source>TT: how far below the top of the stylus the end face of the tool sits when its radius is measured</source>
+        <translation>TT: a qué distancia bajo la parte superior del vástago queda la cara frontal de la herramienta al medir su radio</translation>
+    </message>
+    <message>
+        <source>TT: safety zone above the stylus, and how far before the stylus each touch starts</source>
+        <translation>TT: zona de seguridad sobre el vástago, y a qué distancia de él empieza cada palpación</translation>
+    </message>
+    <message>
+        <source>TT: highest cutting-edge speed of a rotating tool; sets the measuring speed</source>
+        <translation>TT: velocidad de corte máxima de una herramienta que gira; fija la velocidad de medición</translation>
+    </message>
+    <message>
+        <source>TT: measuring error allowed with a rotating tool; probing feed = tolerance x speed</source>
+        <translation>TT: error de medición admisible con la herramienta girando; avance de palpación = tolerancia x velocidad</translation>
+    </message>
+    <message>
+        <source>TT: probing feed with a stationary spindle</source>
+        <translation>TT: avance de palpación con el cabezal parado</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>ciclo de palpación {1}: la herramienta a supervisar (Q330 = {2}) no está en la tabla de herramientas</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>ciclo de palpación {1}: la herramienta {2} está rota (desviación {3} mm superior a RBREAK); queda bloqueada</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

@@ -6471,10 +6471,6 @@ cykl</translation>
         <translation>{1}: próbkowanie działa na razie tylko z osią narzędzia Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: nadzór narzędzia (Q330) nie jest jeszcze obsługiwany: tabela narzędzi nie jest korygowana</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>nie można zapisać protokołu pomiaru {1}: {2}</translation>
     </message>
@@ -6983,6 +6979,234 @@ stałe</translation>
     <message>
         <source>{1} needs an incremental value {2} in the same block</source>
         <translation>{1} wymaga wartości przyrostowej {2} w tym samym bloku</translation>
+    </message>
+    <message>
+        <source>1st touch point, nominal surface in the tool axis</source>
+        <translation>1. punkt próbkowania, powierzchnia nominalna w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>2nd touch point, nominal surface in the tool axis</source>
+        <translation>2. punkt próbkowania, powierzchnia nominalna w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>3rd touch point, nominal surface in the tool axis</source>
+        <translation>3. punkt próbkowania, powierzchnia nominalna w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the three touch points lie on one line</source>
+        <translation>cykl {1}: trzy punkty próbkowania leżą na jednej prostej</translation>
+    </message>
+    <message>
+        <source>MEASURE BOLT HOLE CIRC</source>
+        <translation>POMIAR OKREGU ODWIERTOW</translation>
+    </message>
+    <message>
+        <source>MEASURE PLANE</source>
+        <translation>POMIAR PLASZCZYZNY</translation>
+    </message>
+    <message>
+        <source>1st centre, main axis</source>
+        <translation>1. środek, oś główna</translation>
+    </message>
+    <message>
+        <source>1st centre, secondary axis</source>
+        <translation>1. środek, oś pomocnicza</translation>
+    </message>
+    <message>
+        <source>2nd centre, main axis</source>
+        <translation>2. środek, oś główna</translation>
+    </message>
+    <message>
+        <source>2nd centre, secondary axis</source>
+        <translation>2. środek, oś pomocnicza</translation>
+    </message>
+    <message>
+        <source>Compensation: 0 basic rotation, 1 rotary table</source>
+        <translation>Kompensacja: 0 obrót bazowy, 1 stół obrotowy</translation>
+    </message>
+    <message>
+        <source>Set the rotary axis display to 0 after alignment: 0 no, 1 yes</source>
+        <translation>Ustawić wskazanie osi obrotowej na 0 po wyrównaniu: 0 nie, 1 tak</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 1 (rather too large)</source>
+        <translation>Średnica czopu 1 (raczej za duża)</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 2 (rather too large)</source>
+        <translation>Średnica czopu 2 (raczej za duża)</translation>
+    </message>
+    <message>
+        <source>Measuring height at stud 2: ball centre in the tool axis</source>
+        <translation>Wysokość pomiaru przy czopie 2: środek kulki w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>3rd centre, main axis</source>
+        <translation>3. środek, oś główna</translation>
+    </message>
+    <message>
+        <source>3rd centre, secondary axis</source>
+        <translation>3. środek, oś pomocnicza</translation>
+    </message>
+    <message>
+        <source>4th centre, main axis</source>
+        <translation>4. środek, oś główna</translation>
+    </message>
+    <message>
+        <source>4th centre, secondary axis</source>
+        <translation>4. środek, oś pomocnicza</translation>
+    </message>
+    <message>
+        <source>ROT 2 HOLES</source>
+        <translation>ROT 2 ODWIERTY</translation>
+    </message>
+    <message>
+        <source>ROT 2 STUDS</source>
+        <translation>ROT 2 CZOPY</translation>
+    </message>
+    <message>
+        <source>DATUM FROM 4 HOLES</source>
+        <translation>PKT. ODN. 4 ODWIERTY</translation>
+    </message>
+    <message>
+        <source>Width of the slot or ridge, whatever its orientation</source>
+        <translation>Szerokość rowka lub mostka, niezależnie od położenia</translation>
+    </message>
+    <message>
+        <source>New datum in the measuring axis for the centre</source>
+        <translation>Nowy punkt odniesienia w osi pomiaru dla środka</translation>
+    </message>
+    <message>
+        <source>SLOT CENTER REF PT</source>
+        <translation>PKT ODN. SRODEK ROWKA</translation>
+    </message>
+    <message>
+        <source>RIDGE CENTER REF PT</source>
+        <translation>PKT ODN. SRODEK MOSTKA</translation>
+    </message>
+    <message>
+        <source>Tool measurement: 0 write L/R, 1 compare and write DL/DR, 2 compare</source>
+        <translation>Pomiar narzędzia: 0 zapisać L/R, 1 porównać i zapisać DL/DR, 2 porównać</translation>
+    </message>
+    <message>
+        <source>Probe each tooth: 0 no, 1 yes</source>
+        <translation>Próbkować każde ostrze: 0 nie, 1 tak</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TT</source>
+        <translation>TT KALIBROWAC</translation>
+    </message>
+    <message>
+        <source>TOOL LENGTH</source>
+        <translation>DLUGOSC NARZEDZIA</translation>
+    </message>
+    <message>
+        <source>TOOL RADIUS</source>
+        <translation>PROMIEN NARZEDZIA</translation>
+    </message>
+    <message>
+        <source>MEASURE TOOL</source>
+        <translation>POMIAR NARZEDZIA</translation>
+    </message>
+    <message>
+        <source>TCH PROBE {1}.{2} without TCH PROBE {1}.0 before it</source>
+        <translation>TCH PROBE {1}.{2} bez poprzedzającego TCH PROBE {1}.0</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: a number after &apos;:&apos; expected</source>
+        <translation>{1}.{2}: po &apos;:&apos; oczekiwana liczba</translation>
+    </message>
+    <message>
+        <source>{1}: sub-blocks .1, .2 and .3 are needed</source>
+        <translation>{1}: potrzebne są bloki częściowe .1, .2 i .3</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the machine has no tool touch probe ([simulation.tool_probe] enabled = true)</source>
+        <translation>cykl sondy {1}: maszyna nie ma sondy narzędziowej ([simulation.tool_probe] enabled = true)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool measurement is not possible while mirroring or scaling is active (cycles 8, 11, 26)</source>
+        <translation>cykl sondy {1}: pomiar narzędzia nie jest możliwy przy aktywnym odbiciu lustrzanym lub skalowaniu (cykle 8, 11, 26)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: probing runs with tool axis Z only so far</source>
+        <translation>cykl sondy {1}: próbkowanie działa na razie tylko z osią narzędzia Z</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: call the tool to be measured from the tool table TOOL.T with TOOL CALL first</source>
+        <translation>cykl sondy {1}: najpierw wywołać mierzone narzędzie z tabeli narzędzi TOOL.T przez TOOL CALL</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the tool table: {2}</source>
+        <translation>cykl sondy {1}: nie można zapisać tabeli narzędzi: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be tables [[{1}]] with tool, length and radius</source>
+        <translation>{1} muszą być tabelami [[{1}]] z tool, length i radius</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is out of range: a tool number 0 ... 32767, lengths within +-10 mm</source>
+        <translation>{1} = {2} poza zakresem: numer narzędzia 0 ... 32767, długości w granicach +-10 mm</translation>
+    </message>
+    <message>
+        <source>{1} needs a tool number</source>
+        <translation>{1} wymaga numeru narzędzia</translation>
+    </message>
+    <message>
+        <source>{1}: tool {2} is given twice</source>
+        <translation>{1}: narzędzie {2} podano dwukrotnie</translation>
+    </message>
+    <message>
+        <source>Simulation: the machine has a tool touch probe (TT) for the tool measuring cycles 30-33 and 480-483</source>
+        <translation>Symulacja: maszyna ma sondę narzędziową (TT) dla cykli pomiaru narzędzi 30-33 i 480-483</translation>
+    </message>
+    <message>
+        <source>TT: machine X of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: maszynowe X środka powierzchni pomiarowej; zapisać centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: machine Y of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: maszynowe Y środka powierzchni pomiarowej; zapisać centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: machine Z of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: maszynowe Z środka powierzchni pomiarowej; zapisać centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: diameter of the disc stylus (side of a cube stylus)</source>
+        <translation>TT: średnica trzpienia tarczowego (bok trzpienia sześciennego)</translation>
+    </message>
+    <message>
+        <source>TT: stylus shape, a disc or a cube</source>
+        <translation>TT: kształt trzpienia, tarcza lub sześcian</translation>
+    </message>
+    <message>
+        <source>TT: how far below the top of the stylus the end face of the tool sits when its radius is measured</source>
+        <translation>TT: jak głęboko pod górną krawędzią trzpienia znajduje się czoło narzędzia przy pomiarze promienia</translation>
+    </message>
+    <message>
+        <source>TT: safety zone above the stylus, and how far before the stylus each touch starts</source>
+        <translation>TT: strefa bezpieczeństwa nad trzpieniem i odległość przed trzpieniem, z której zaczyna się każde próbkowanie</translation>
+    </message>
+    <message>
+        <source>TT: highest cutting-edge speed of a rotating tool; sets the measuring speed</source>
+        <translation>TT: największa prędkość ostrza obracającego się narzędzia; określa prędkość pomiaru</translation>
+    </message>
+    <message>
+        <source>TT: measuring error allowed with a rotating tool; probing feed = tolerance x speed</source>
+        <translation>TT: dopuszczalny błąd pomiaru przy obracającym się narzędziu; posuw próbkowania = tolerancja x prędkość</translation>
+    </message>
+    <message>
+        <source>TT: probing feed with a stationary spindle</source>
+        <translation>TT: posuw próbkowania przy zatrzymanym wrzecionie</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>cykl sondy {1}: nadzorowanego narzędzia (Q330 = {2}) nie ma w tabeli narzędzi</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>cykl sondy {1}: narzędzie {2} jest złamane (odchyłka {3} mm ponad RBREAK); zostało zablokowane</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

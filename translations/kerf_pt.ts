@@ -6468,10 +6468,6 @@ ciclo</translation>
         <translation>{1}: por enquanto a apalpação só funciona com o eixo da ferramenta Z</translation>
     </message>
     <message>
-        <source>{1}: tool monitoring (Q330) is not supported yet: the tool table is not corrected</source>
-        <translation>{1}: a monitorização da ferramenta (Q330) ainda não é suportada: a tabela de ferramentas não é corrigida</translation>
-    </message>
-    <message>
         <source>cannot write the measuring log {1}: {2}</source>
         <translation>não é possível escrever o protocolo de medição {1}: {2}</translation>
     </message>
@@ -6980,6 +6976,234 @@ fixos</translation>
     <message>
         <source>{1} needs an incremental value {2} in the same block</source>
         <translation>{1} precisa de um valor incremental {2} no mesmo bloco</translation>
+    </message>
+    <message>
+        <source>1st touch point, nominal surface in the tool axis</source>
+        <translation>1.º ponto de apalpação, superfície nominal no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>2nd touch point, nominal surface in the tool axis</source>
+        <translation>2.º ponto de apalpação, superfície nominal no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>3rd touch point, nominal surface in the tool axis</source>
+        <translation>3.º ponto de apalpação, superfície nominal no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the three touch points lie on one line</source>
+        <translation>ciclo {1}: os três pontos de apalpação estão numa reta</translation>
+    </message>
+    <message>
+        <source>MEASURE BOLT HOLE CIRC</source>
+        <translation>MEDIR CIRC FUROS</translation>
+    </message>
+    <message>
+        <source>MEASURE PLANE</source>
+        <translation>MEDIR PLANO</translation>
+    </message>
+    <message>
+        <source>1st centre, main axis</source>
+        <translation>1.º centro, eixo principal</translation>
+    </message>
+    <message>
+        <source>1st centre, secondary axis</source>
+        <translation>1.º centro, eixo secundário</translation>
+    </message>
+    <message>
+        <source>2nd centre, main axis</source>
+        <translation>2.º centro, eixo principal</translation>
+    </message>
+    <message>
+        <source>2nd centre, secondary axis</source>
+        <translation>2.º centro, eixo secundário</translation>
+    </message>
+    <message>
+        <source>Compensation: 0 basic rotation, 1 rotary table</source>
+        <translation>Compensação: 0 rotação básica, 1 mesa rotativa</translation>
+    </message>
+    <message>
+        <source>Set the rotary axis display to 0 after alignment: 0 no, 1 yes</source>
+        <translation>Pôr a 0 a visualização do eixo rotativo após o alinhamento: 0 não, 1 sim</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 1 (rather too large)</source>
+        <translation>Diâmetro da ilha 1 (de preferência demasiado grande)</translation>
+    </message>
+    <message>
+        <source>Diameter of stud 2 (rather too large)</source>
+        <translation>Diâmetro da ilha 2 (de preferência demasiado grande)</translation>
+    </message>
+    <message>
+        <source>Measuring height at stud 2: ball centre in the tool axis</source>
+        <translation>Altura de medição na ilha 2: centro da esfera no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>3rd centre, main axis</source>
+        <translation>3.º centro, eixo principal</translation>
+    </message>
+    <message>
+        <source>3rd centre, secondary axis</source>
+        <translation>3.º centro, eixo secundário</translation>
+    </message>
+    <message>
+        <source>4th centre, main axis</source>
+        <translation>4.º centro, eixo principal</translation>
+    </message>
+    <message>
+        <source>4th centre, secondary axis</source>
+        <translation>4.º centro, eixo secundário</translation>
+    </message>
+    <message>
+        <source>ROT 2 HOLES</source>
+        <translation>ROT 2 FUROS</translation>
+    </message>
+    <message>
+        <source>ROT 2 STUDS</source>
+        <translation>ROT 2 ILHAS</translation>
+    </message>
+    <message>
+        <source>DATUM FROM 4 HOLES</source>
+        <translation>PONTO REF 4 FUROS</translation>
+    </message>
+    <message>
+        <source>Width of the slot or ridge, whatever its orientation</source>
+        <translation>Largura da ranhura ou da nervura, seja qual for a sua orientação</translation>
+    </message>
+    <message>
+        <source>New datum in the measuring axis for the centre</source>
+        <translation>Novo ponto de referência no eixo de medição para o centro</translation>
+    </message>
+    <message>
+        <source>SLOT CENTER REF PT</source>
+        <translation>PTO.REF.CENTRO RAN.</translation>
+    </message>
+    <message>
+        <source>RIDGE CENTER REF PT</source>
+        <translation>PTO.REF.CENTRO NERVURA</translation>
+    </message>
+    <message>
+        <source>Tool measurement: 0 write L/R, 1 compare and write DL/DR, 2 compare</source>
+        <translation>Medição da ferramenta: 0 escrever L/R, 1 comparar e escrever DL/DR, 2 comparar</translation>
+    </message>
+    <message>
+        <source>Probe each tooth: 0 no, 1 yes</source>
+        <translation>Apalpar cada dente: 0 não, 1 sim</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TT</source>
+        <translation>CALIBRACAO TT</translation>
+    </message>
+    <message>
+        <source>TOOL LENGTH</source>
+        <translation>COMPR. FERRAMENTA</translation>
+    </message>
+    <message>
+        <source>TOOL RADIUS</source>
+        <translation>RAIO FERRAMENTA</translation>
+    </message>
+    <message>
+        <source>MEASURE TOOL</source>
+        <translation>MEDIR FERRAMENTA</translation>
+    </message>
+    <message>
+        <source>TCH PROBE {1}.{2} without TCH PROBE {1}.0 before it</source>
+        <translation>TCH PROBE {1}.{2} sem TCH PROBE {1}.0 antes</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: a number after &apos;:&apos; expected</source>
+        <translation>{1}.{2}: espera-se um número após &apos;:&apos;</translation>
+    </message>
+    <message>
+        <source>{1}: sub-blocks .1, .2 and .3 are needed</source>
+        <translation>{1}: são necessários os blocos parciais .1, .2 e .3</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the machine has no tool touch probe ([simulation.tool_probe] enabled = true)</source>
+        <translation>ciclo de apalpação {1}: a máquina não tem apalpador de ferramenta ([simulation.tool_probe] enabled = true)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool measurement is not possible while mirroring or scaling is active (cycles 8, 11, 26)</source>
+        <translation>ciclo de apalpação {1}: a medição da ferramenta não é possível com espelho ou fator de escala ativos (ciclos 8, 11, 26)</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: probing runs with tool axis Z only so far</source>
+        <translation>ciclo de apalpação {1}: por enquanto a apalpação só funciona com o eixo da ferramenta Z</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: call the tool to be measured from the tool table TOOL.T with TOOL CALL first</source>
+        <translation>ciclo de apalpação {1}: chame primeiro com TOOL CALL a ferramenta a medir da tabela TOOL.T</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the tool table: {2}</source>
+        <translation>ciclo de apalpação {1}: não é possível escrever a tabela de ferramentas: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be tables [[{1}]] with tool, length and radius</source>
+        <translation>{1} têm de ser tabelas [[{1}]] com tool, length e radius</translation>
+    </message>
+    <message>
+        <source>{1} = {2} is out of range: a tool number 0 ... 32767, lengths within +-10 mm</source>
+        <translation>{1} = {2} está fora do intervalo: um número de ferramenta 0 ... 32767, comprimentos dentro de +-10 mm</translation>
+    </message>
+    <message>
+        <source>{1} needs a tool number</source>
+        <translation>{1} precisa de um número de ferramenta</translation>
+    </message>
+    <message>
+        <source>{1}: tool {2} is given twice</source>
+        <translation>{1}: a ferramenta {2} está indicada duas vezes</translation>
+    </message>
+    <message>
+        <source>Simulation: the machine has a tool touch probe (TT) for the tool measuring cycles 30-33 and 480-483</source>
+        <translation>Simulação: a máquina tem um apalpador de ferramenta (TT) para os ciclos de medição de ferramenta 30-33 e 480-483</translation>
+    </message>
+    <message>
+        <source>TT: machine X of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: X de máquina do centro da superfície de medição; escreva centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: machine Y of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Y de máquina do centro da superfície de medição; escreva centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: machine Z of the centre of the measuring surface; write centre = [x, y, z]</source>
+        <translation>TT: Z de máquina do centro da superfície de medição; escreva centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>TT: diameter of the disc stylus (side of a cube stylus)</source>
+        <translation>TT: diâmetro da haste de disco (lado de uma haste cúbica)</translation>
+    </message>
+    <message>
+        <source>TT: stylus shape, a disc or a cube</source>
+        <translation>TT: forma da haste, disco ou cubo</translation>
+    </message>
+    <message>
+        <source>TT: how far below the top of the stylus the end face of the tool sits when its radius is measured</source>
+        <translation>TT: a que distância abaixo do topo da haste fica a face frontal da ferramenta ao medir o seu raio</translation>
+    </message>
+    <message>
+        <source>TT: safety zone above the stylus, and how far before the stylus each touch starts</source>
+        <translation>TT: zona de segurança acima da haste, e a que distância dela começa cada apalpação</translation>
+    </message>
+    <message>
+        <source>TT: highest cutting-edge speed of a rotating tool; sets the measuring speed</source>
+        <translation>TT: velocidade de corte máxima de uma ferramenta em rotação; define a velocidade de medição</translation>
+    </message>
+    <message>
+        <source>TT: measuring error allowed with a rotating tool; probing feed = tolerance x speed</source>
+        <translation>TT: erro de medição admissível com a ferramenta em rotação; avanço de apalpação = tolerância x velocidade</translation>
+    </message>
+    <message>
+        <source>TT: probing feed with a stationary spindle</source>
+        <translation>TT: avanço de apalpação com a árvore parada</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in the tool table</source>
+        <translation>ciclo de apalpação {1}: a ferramenta a supervisionar (Q330 = {2}) não está na tabela de ferramentas</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond RBREAK); it is locked</source>
+        <translation>ciclo de apalpação {1}: a ferramenta {2} está partida (desvio {3} mm acima de RBREAK); fica bloqueada</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

@@ -15,6 +15,12 @@ AxisConfig* MachineConfig::axis(char letter) {
     return const_cast<AxisConfig*>(std::as_const(*this).axis(letter));
 }
 
+const ToolErrorConfig* MachineConfig::toolError(int tool) const {
+    auto it = std::find_if(toolErrors.begin(), toolErrors.end(),
+                           [tool](const ToolErrorConfig& e) { return e.tool == tool; });
+    return it == toolErrors.end() ? nullptr : &*it;
+}
+
 std::string MachineConfig::enabledAxisLetters() const {
     std::string letters;
     for (const AxisConfig& a : axes) {

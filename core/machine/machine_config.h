@@ -78,6 +78,40 @@ struct SetupErrorConfig {
     friend bool operator==(const SetupErrorConfig&, const SetupErrorConfig&) = default;
 };
 
+// The tool touch probe (TT) of the simulated machine: a round stylus (disc) or a square one
+// (cube, sides along X and Y) whose measuring surface (the top face) is centred on `centre`, in
+// machine coordinates; its sides reach down without end. Kerf has no other TT description, so
+// these are also the nominal values the TT cycles start from (the TNC's centerPos); cycle 30/480
+// calibrates them. In the file: [simulation.tool_probe].
+enum class ToolProbeShape : uint8_t { Disc, Cube };
+
+struct ToolProbeConfig {
+    bool enabled = false;
+    double centreXMm = 0.0;
+    double centreYMm = 0.0;
+    double centreZMm = 0.0;
+    double diameterMm = 40.0;  // a cube's side
+    ToolProbeShape shape = ToolProbeShape::Disc;
+    double offsetToolAxisMm = 2.0;             // radius measurement: end face below the top
+    double safetyDistanceMm = 5.0;             // clearance above the stylus and before each touch
+    double maxPeripheralSpeedMPerMin = 100.0;  // rotating tool: cutting-edge speed
+    double measureToleranceMm = 0.005;         // rotating tool: probing feed = tolerance * rpm
+    double probingFeedMmPerMin = 50.0;         // stationary spindle
+
+    friend bool operator==(const ToolProbeConfig&, const ToolProbeConfig&) = default;
+};
+
+// How a real tool differs from its tool-table entry (L + DL, R + DR as the table held them when the
+// run started): the error the TT cycles find. In the file: [[simulation.tool_error]] with tool,
+// length and radius.
+struct ToolErrorConfig {
+    int tool = 0;
+    double lengthMm = 0.0;
+    double radiusMm = 0.0;
+
+    friend bool operator==(const ToolErrorConfig&, const ToolErrorConfig&) = default;
+};
+
 // The machine configuration. Every field except `axes[i].letter` is a parameter of the schema in
 // core/machine/machine_schema.h, which loads, checks and writes it; the default member values are
 // the schema defaults. New sections (drives, ...) become new member structs plus schema entries.
@@ -97,13 +131,17 @@ struct MachineConfig {
     // parameters open with 123); viewing needs none.
     int parameterCode = 123;
     DrivesConfig drives;
-    BarConfig bar;                        // lathe only
-    ProbeWorkpieceConfig probeWorkpiece;  // simulation only
-    SetupErrorConfig setupError;          // simulation only
+    BarConfig bar;                            // lathe only
+    ProbeWorkpieceConfig probeWorkpiece;      // simulation only
+    SetupErrorConfig setupError;              // simulation only
+    ToolProbeConfig toolProbe;                // simulation only
+    std::vector<ToolErrorConfig> toolErrors;  // simulation only; each tool at most once
 
     // The axis with this letter (enabled or not), or nullptr.
     const AxisConfig* axis(char letter) const;
     AxisConfig* axis(char letter);
+    // The simulated error of a tool, or nullptr when it has none.
+    const ToolErrorConfig* toolError(int tool) const;
 
     // Letters of the enabled axes in display order, e.g. "XZ" for the built-in lathe.
     std::string enabledAxisLetters() const;

@@ -1,6 +1,7 @@
 #include "core/machine/machine_loader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -145,6 +146,8 @@ private:
         const ParameterDescriptor* d = findParameter(fullKey);
         if (d && d->scope == ParameterScope::Machine) {
             readValue(*d, fullKey, node, AxisType::Linear);
+        } else if (fullKey == kToolErrorKey) {
+            readToolErrors(node);
         } else if (node.is_array() && isVectorSection(fullKey)) {
             readVector(fullKey, *node.as_array());
         } else if (isSection(fullKey)) {
@@ -160,6 +163,60 @@ private:
             for (const auto& p : machineParameters())
                 candidates.push_back(p.key);
             reportUnknownKey(key, fullKey, std::string(detail::closestKey(fullKey, candidates)));
+        }
+    }
+
+    static constexpr std::string_view kToolErrorKey = "simulation.tool_error";
+
+    // [[simulation.tool_error]]: an array of tables, each with tool, length and radius.
+    void readToolErrors(const toml::node& node) {
+        const toml::array* array = node.as_array();
+        if (array == nullptr || !array->is_array_of_tables()) {
+            report(positionOf(node.source()),
+                   KERF_TR_NOOP("{1} must be tables [[{1}]] with tool, length and radius"),
+                   std::string(kToolErrorKey));
+            return;
+        }
+        for (const toml::node& entry : *array) {
+            ToolErrorConfig error;
+            bool ok = true;
+            for (auto&& [key, value] : *entry.as_table()) {
+                const std::string fullKey =
+                    std::string(kToolErrorKey) + "." + std::string(key.str());
+                const TextPosition at = positionOf(value.source());
+                const auto* integer = value.as_integer();
+                const std::optional<double> number =
+                    value.is_number() ? std::optional(value.as_floating_point()
+                                                          ? value.as_floating_point()->get()
+                                                          : static_cast<double>(integer->get()))
+                                      : std::nullopt;
+                if (key.str() == "tool" && integer && integer->get() >= 0 &&
+                    integer->get() <= 32767) {
+                    error.tool = static_cast<int>(integer->get());
+                } else if ((key.str() == "length" || key.str() == "radius") && number &&
+                           std::abs(*number) <= 10.0) {
+                    (key.str() == "length" ? error.lengthMm : error.radiusMm) = *number;
+                } else if (key.str() == "tool" || key.str() == "length" || key.str() == "radius") {
+                    report(at,
+                           KERF_TR_NOOP("{1} = {2} is out of range: a tool number 0 ... 32767, "
+                                        "lengths within +-10 mm"),
+                           fullKey, nodeText(value));
+                    ok = false;
+                } else {
+                    reportUnknownKey(key, fullKey, "");
+                    ok = false;
+                }
+            }
+            if (!entry.as_table()->contains("tool")) {
+                report(positionOf(entry.source()), KERF_TR_NOOP("{1} needs a tool number"),
+                       std::string(kToolErrorKey));
+                ok = false;
+            } else if (ok && m_config.toolError(error.tool) != nullptr) {
+                report(positionOf(entry.source()), KERF_TR_NOOP("{1}: tool {2} is given twice"),
+                       std::string(kToolErrorKey), std::to_string(error.tool));
+                ok = false;
+            }
+            if (ok) m_config.toolErrors.push_back(error);
         }
     }
 

@@ -212,6 +212,78 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "Simulation: how far the real blank is turned about the tool axis, "
                            "through its programmed origin")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::enabled>(
+            kMachine, {.key = "simulation.tool_probe.enabled",
+                       .description = KERF_TR_NOOP(
+                           "Simulation: the machine has a tool touch probe (TT) for the tool "
+                           "measuring cycles 30-33 and 480-483")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::centreXMm>(
+            kMachine, {.key = "simulation.tool_probe.centre.x",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP("TT: machine X of the centre of the measuring "
+                                                   "surface; write centre = [x, y, z]")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::centreYMm>(
+            kMachine, {.key = "simulation.tool_probe.centre.y",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP("TT: machine Y of the centre of the measuring "
+                                                   "surface; write centre = [x, y, z]")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::centreZMm>(
+            kMachine, {.key = "simulation.tool_probe.centre.z",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP("TT: machine Z of the centre of the measuring "
+                                                   "surface; write centre = [x, y, z]")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::diameterMm>(
+            kMachine, {.key = "simulation.tool_probe.diameter",
+                       .unit = "mm",
+                       .minimum = 1.0,
+                       .maximum = 1000.0,
+                       .description = KERF_TR_NOOP(
+                           "TT: diameter of the disc stylus (side of a cube stylus)")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::shape>(
+            kMachine, {.key = "simulation.tool_probe.type",
+                       .description = KERF_TR_NOOP("TT: stylus shape, a disc or a cube")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::offsetToolAxisMm>(
+            kMachine,
+            {.key = "simulation.tool_probe.offset_tool_axis",
+             .unit = "mm",
+             .minimum = 0.0,
+             .maximum = 100.0,
+             .description = KERF_TR_NOOP("TT: how far below the top of the stylus the end face of "
+                                         "the tool sits when its radius is measured")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::safetyDistanceMm>(
+            kMachine, {.key = "simulation.tool_probe.safety_distance",
+                       .unit = "mm",
+                       .minimum = 0.1,
+                       .maximum = 100.0,
+                       .description = KERF_TR_NOOP("TT: safety zone above the stylus, and how far "
+                                                   "before the stylus each touch starts")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::maxPeripheralSpeedMPerMin>(
+            kMachine,
+            {.key = "simulation.tool_probe.max_peripheral_speed",
+             .unit = "m/min",
+             .minimum = 1.0,
+             .maximum = 1000.0,
+             .description = KERF_TR_NOOP(
+                 "TT: highest cutting-edge speed of a rotating tool; sets the measuring speed")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::measureToleranceMm>(
+            kMachine, {.key = "simulation.tool_probe.measure_tolerance",
+                       .unit = "mm",
+                       .minimum = 0.0001,
+                       .maximum = 1.0,
+                       .description = KERF_TR_NOOP("TT: measuring error allowed with a rotating "
+                                                   "tool; probing feed = tolerance x speed")}),
+        bindField<&MachineConfig::toolProbe, &ToolProbeConfig::probingFeedMmPerMin>(
+            kMachine, {.key = "simulation.tool_probe.probing_feed",
+                       .unit = "mm/min",
+                       .minimum = 1.0,
+                       .maximum = 10000.0,
+                       .description = KERF_TR_NOOP("TT: probing feed with a stationary spindle")}),
         bindField<&MachineConfig::drives, &DrivesConfig::interface>(
             kMachine, {.key = "drives.interface",
                        .description = KERF_TR_NOOP("SocketCAN interface of the drive bus")}),

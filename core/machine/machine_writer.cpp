@@ -60,6 +60,12 @@ std::string toToml(const MachineConfig& config) {
         out += "]\n";
         writeSection(out, config, section);
     }
+    for (const ToolErrorConfig& error : config.toolErrors) {
+        out += "\n[[simulation.tool_error]]\n";
+        writeLine(out, "tool", int64_t{error.tool}, "");
+        writeLine(out, "length", error.lengthMm, "mm");
+        writeLine(out, "radius", error.radiusMm, "mm");
+    }
     for (const AxisConfig& axis : config.axes) {
         out += "\n[axes.";
         out += axis.letter;

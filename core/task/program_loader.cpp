@@ -73,6 +73,8 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     tnciso::enableIso(settings, loaded.dialect == program::Dialect::TncIso);
     settings.machine = &machine;
     settings.tools = loaded.tools.get();
+    // The TT cycles write measured tools back; empty: TOOL.T of the NC root.
+    if (request.toolTable) settings.toolTableFile = *request.toolTable;
     settings.ncRoot = request.ncRoot;
     settings.blockSkip = request.blockSkip;
     settings.startPosition = request.startPosition;

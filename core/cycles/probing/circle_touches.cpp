@@ -43,4 +43,23 @@ std::optional<CycleError> probeCircle(int cycle, ProbeSequence& sequence,
     return std::nullopt;
 }
 
+std::optional<CycleError> probeHoleCentre(int cycle, ProbeSequence& sequence, const Vec2& nominal,
+                                          Vec2& centre) {
+    std::array<Vec2, 4> balls;
+    for (size_t k = 0; k < balls.size(); ++k) {
+        const double d = static_cast<double>(k) * std::numbers::pi / 2.0;
+        const Vec2 direction(std::cos(d), std::sin(d));
+        Vec2 surface;
+        if (auto e = sequence.touchInPlane(nominal, direction, surface, &nominal)) return e;
+        balls[k] = surface - sequence.ballRadius() * direction;
+    }
+    auto hole = fitCircle(balls);
+    if (!hole) {
+        return probingError(cycle, "PRB-020",
+                            KERF_TR_NOOP("cycle {1}: the touch points give no circle"));
+    }
+    centre = hole->centre;
+    return std::nullopt;
+}
+
 }  // namespace kerf::cycles::probing

@@ -20,4 +20,9 @@ struct CircleTouches {
 std::optional<CycleError> probeCircle(int cycle, ProbeSequence& sequence,
                                       const CircleTouches& touches, FittedCircle& circle);
 
+// A hole of unknown diameter (G5, 401, 416, 418, 430): four touches from its nominal centre, along
+// +M, +S, -M, -S, each at most DIST; its centre from the circle through the ball centres.
+std::optional<CycleError> probeHoleCentre(int cycle, ProbeSequence& sequence, const Vec2& nominal,
+                                          Vec2& centre);
+
 }  // namespace kerf::cycles::probing

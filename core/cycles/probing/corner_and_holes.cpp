@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/cycles/probing/circle_touches.h"
 #include "core/cycles/probing/datum_output.h"
 #include "core/cycles/probing/probe_geometry.h"
 #include "core/cycles/probing/probing_parameters.h"
@@ -172,20 +173,7 @@ std::optional<CycleError> run416(const CycleValues& v, const ProbeData& probe,
     for (size_t h = 0; h < holeCentres.size(); ++h) {
         const double a = v.number(static_cast<uint16_t>(291 + h)) * std::numbers::pi / 180.0;
         const Vec2 nominal = centre + v.number(262) / 2.0 * Vec2(std::cos(a), std::sin(a));
-        std::array<Vec2, 4> balls;
-        for (size_t k = 0; k < balls.size(); ++k) {
-            const double d = static_cast<double>(k) * std::numbers::pi / 2.0;
-            const Vec2 direction(std::cos(d), std::sin(d));
-            Vec2 surface;
-            if (auto e = sequence.touchInPlane(nominal, direction, surface, &nominal)) return e;
-            balls[k] = surface - probe.ballRadius * direction;
-        }
-        auto hole = fitCircle(balls);
-        if (!hole) {
-            return probingError(416, "PRB-020",
-                                KERF_TR_NOOP("cycle {1}: the touch points give no circle"));
-        }
-        holeCentres[h] = hole->centre;
+        if (auto e = probeHoleCentre(416, sequence, nominal, holeCentres[h])) return e;
         sequence.retract();
     }
     auto circle = fitCircle(holeCentres);

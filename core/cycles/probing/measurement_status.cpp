@@ -11,8 +11,9 @@ namespace kerf::cycles::probing {
 void MeasurementStatus::size(double actual, double max, double min) {
     if (max == 0.0 && min == 0.0) return;
     const bool inside = m_feature == Feature::Inside;
-    if (actual > max) (inside ? m_scrap : m_rework) = true;
-    if (actual < min) (inside ? m_rework : m_scrap) = true;
+    const bool pattern = m_feature == Feature::Pattern;
+    if (actual > max) (inside || pattern ? m_scrap : m_rework) = true;
+    if (actual < min) (inside && !pattern ? m_rework : m_scrap) = true;
 }
 
 void MeasurementStatus::position(double deviation, double tolerance) {

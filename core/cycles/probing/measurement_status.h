@@ -11,7 +11,8 @@ namespace kerf::cycles::probing {
 // then sets Q180 (good), Q181 (rework), Q182 (scrap) and, with Q309 = 1, the program stop.
 class MeasurementStatus {
 public:
-    enum class Feature : uint8_t { Inside, Outside };
+    // Pattern: the diameter of a bolt-hole circle (430), scrap either way.
+    enum class Feature : uint8_t { Inside, Outside, Pattern };
     explicit MeasurementStatus(Feature feature) : m_feature(feature) {}
 
     // A size with limits `max`, `min` (both 0: not monitored).

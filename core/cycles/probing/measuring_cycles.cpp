@@ -131,6 +131,9 @@ std::optional<CycleError> measureCircle(int cycle, bool inside, const CycleValue
     status.position(deviation.x(), v.number(279));
     status.position(deviation.y(), v.number(280));
     status.write(cycle, v, results);
+    // A hole too large: the tool cut larger than its radius says (spec 1.14).
+    const double diameterDeviation = diameter - v.number(262);
+    results.toolCorrection = ToolCorrection{.delta = (inside ? 0.5 : -0.5) * diameterDeviation};
     if (v.integer(281) != 0) {
         results.protocol = std::vector<std::string>{
             "Nominal values:",
@@ -204,6 +207,7 @@ std::optional<CycleError> measureWidth(int cycle, bool inside, const CycleValues
                                     : MeasurementStatus::Feature::Outside);
     status.size(measured, v.number(288), v.number(289));
     status.write(cycle, v, results);
+    results.toolCorrection = ToolCorrection{.delta = (inside ? 0.5 : -0.5) * (measured - width)};
     if (v.integer(281) != 0) {
         results.protocol =
             std::vector<std::string>{"Nominal values:",
@@ -284,6 +288,11 @@ std::optional<CycleError> measureRectangle(int cycle, bool inside, const CycleVa
     status.position(deviation.x(), v.number(279));
     status.position(deviation.y(), v.number(280));
     status.write(cycle, v, results);
+    // The side with the larger deviation (spec 1.14 leaves the choice open).
+    const double side = std::fabs(sideDeviation.x()) >= std::fabs(sideDeviation.y())
+                            ? sideDeviation.x()
+                            : sideDeviation.y();
+    results.toolCorrection = ToolCorrection{.delta = (inside ? 0.5 : -0.5) * side};
     if (v.integer(281) != 0) {
         results.protocol =
             std::vector<std::string>{"Nominal values:",
@@ -339,6 +348,12 @@ std::optional<CycleError> run427(const CycleValues& v, const ProbeData& probe,
     MeasurementStatus status(MeasurementStatus::Feature::Outside);
     status.size(measured, v.number(288), v.number(289));
     status.write(427, v, results);
+    // Against the middle of the limits (spec 1.14, open point); material left outward of the
+    // touched face (its normal -Q267 along the axis, +T in the tool axis) means the tool was
+    // effectively smaller or shorter.
+    const double outward = (measured - (v.number(288) + v.number(289)) / 2.0) *
+                           (axis == 2 ? 1.0 : -static_cast<double>(v.integer(267)));
+    results.toolCorrection = ToolCorrection{.length = axis == 2, .delta = -outward};
     if (v.integer(281) != 0) {
         results.protocol = std::vector<std::string>{"Given limits:",
                                                     logLine("  max. value", v.number(288)),

@@ -46,6 +46,14 @@ struct DatumResult {
     std::array<double, 3> nominal{0.0, 0.0, 0.0};
 };
 
+// Tool monitoring with Q330 (spec 1.14): what the measured deviation adds to the monitored
+// tool's DR (or DL), and the size compared with its RBREAK.
+struct ToolCorrection {
+    bool length = false;        // DL (427 in the tool axis) instead of DR
+    double delta = 0.0;         // added to DR or DL
+    bool breakageOnly = false;  // 430: no correction, breakage monitoring only
+};
+
 struct ProbingResults {
     std::vector<std::pair<uint16_t, double>> parameters;  // Q150..Q199 in mm and degrees
     std::optional<DatumResult> datum;                     // 408-419
@@ -54,8 +62,9 @@ struct ProbingResults {
     int transfer = 0;                                     // Q303: -1, 0 datum table, 1 presets
     // Measuring log TCHPR<cycle>.TXT (Q281 = 1 or 2): the lines after the header.
     std::optional<std::vector<std::string>> protocol;
-    bool protocolStop = false;                // Q281 = 2: stop after writing the log
-    std::optional<CycleError> toleranceStop;  // Q309 = 1 and a tolerance was exceeded
+    bool protocolStop = false;                     // Q281 = 2: stop after writing the log
+    std::optional<CycleError> toleranceStop;       // Q309 = 1 and a tolerance was exceeded
+    std::optional<ToolCorrection> toolCorrection;  // applied when Q330 names a tool
 
     void set(uint16_t q, double value) { parameters.emplace_back(q, value); }
 };
@@ -63,16 +72,23 @@ struct ProbingResults {
 using ProbingFunction = std::optional<CycleError> (*)(const CycleValues&, const ProbeData&,
                                                       ProbingMachine&, ProbingResults&);
 
+// The TT cycles (tool_measurement.h) run through their own interface; `run` is unset for them.
+enum class ToolMeasurementKind : uint8_t { None, Calibrate, Length, Radius, LengthAndRadius };
+
 struct ProbingCycleDescriptor {
     int number = 0;
     const char* name = nullptr;  // English, KERF_TR_NOOP
     std::span<const ParameterDescriptor> parameters;
     ProbingFunction run = nullptr;
     std::span<const uint16_t> results;  // set to 0 before the cycle runs (spec 1.11)
+    ToolMeasurementKind toolMeasurement = ToolMeasurementKind::None;
 };
 
 // The implemented probing cycles (TCH PROBE n); their numbers are independent of CYCL DEF's.
 std::span<const ProbingCycleDescriptor* const> allProbingCycles();
 const ProbingCycleDescriptor* findProbingCycle(int number);
+// The old-format TT cycles 30-33 (sub-blocks 30.0 ... 33.3): the new cycle they run as (480-483),
+// or nullptr.
+const ProbingCycleDescriptor* findOldToolProbeCycle(int number);
 
 }  // namespace kerf::cycles::probing

@@ -6,6 +6,10 @@
 namespace kerf::cycles::probing {
 
 extern const ProbingCycleDescriptor kProbe400;
+extern const ProbingCycleDescriptor kProbe401;
+extern const ProbingCycleDescriptor kProbe402;
+extern const ProbingCycleDescriptor kProbe408;
+extern const ProbingCycleDescriptor kProbe409;
 extern const ProbingCycleDescriptor kProbe410;
 extern const ProbingCycleDescriptor kProbe411;
 extern const ProbingCycleDescriptor kProbe412;
@@ -14,6 +18,7 @@ extern const ProbingCycleDescriptor kProbe414;
 extern const ProbingCycleDescriptor kProbe415;
 extern const ProbingCycleDescriptor kProbe416;
 extern const ProbingCycleDescriptor kProbe417;
+extern const ProbingCycleDescriptor kProbe418;
 extern const ProbingCycleDescriptor kProbe419;
 extern const ProbingCycleDescriptor kProbe420;
 extern const ProbingCycleDescriptor kProbe421;
@@ -24,5 +29,11 @@ extern const ProbingCycleDescriptor kProbe424;
 extern const ProbingCycleDescriptor kProbe426;
 extern const ProbingCycleDescriptor kProbe427;
 extern const ProbingCycleDescriptor kProbe1416;
+extern const ProbingCycleDescriptor kProbe430;
+extern const ProbingCycleDescriptor kProbe431;
+extern const ProbingCycleDescriptor kProbe480;
+extern const ProbingCycleDescriptor kProbe481;
+extern const ProbingCycleDescriptor kProbe482;
+extern const ProbingCycleDescriptor kProbe483;
 
 }  // namespace kerf::cycles::probing

@@ -1042,7 +1042,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     if (head == "TCH") {
         if (!cur.acceptKeyword("PROBE"))
             return c.fail("syntax", KERF_TR_NOOP("PROBE expected after TCH"));
-        if (!parseCycleDef(line, cur.position(), out)) return false;
+        if (!parseCycleDef(line, cur.position(), out, true)) return false;
         std::get<CycleDefinition>(out.statement).probe = true;
         return true;
     }

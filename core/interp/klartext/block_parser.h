@@ -25,7 +25,9 @@ public:
 private:
     bool parseStatement(Context& c, const program::LogicalLine& line, ParsedBlock& out);
     // Cycle blocks (block_parser_cycles.cpp). Each reports a problem in m_problem.
-    bool parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    // `probe`: TCH PROBE n, whose sub-blocks stay text (31.1 CHECK: 1 Q5).
+    bool parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out,
+                       bool probe = false);
     bool parseCycleParameters(const program::LogicalLine& line, std::vector<CycleParameter>& out);
     bool parseCycleWords(std::string_view text, size_t from, cycles::CycleWords& out);
     bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);

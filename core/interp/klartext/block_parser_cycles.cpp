@@ -81,7 +81,8 @@ bool BlockParser::parseValue(Cursor& cur, double& out) {
     return true;
 }
 
-bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out) {
+bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out,
+                                bool probe) {
     const std::string_view text = line.text;
     Cursor cur(text, at);
     CycleDefinition b;
@@ -110,8 +111,8 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
         // Sub-blocks of the cycles Kerf runs are words with values; the others (12.1 PGM with
         // a file name, obsolete and SL cycles) stay text.
         static constexpr int kWordCycles[] = {7, 8, 9, 10, 11, 13, 18, 26, 32};
-        const bool words = std::find(std::begin(kWordCycles), std::end(kWordCycles), b.number) !=
-                           std::end(kWordCycles);
+        const bool words = !probe && std::find(std::begin(kWordCycles), std::end(kWordCycles),
+                                               b.number) != std::end(kWordCycles);
         if (b.subNumber > 0 && words) {
             if (!parseCycleWords(text.substr(0, std::max(headerEnd, cur.position())), restAt,
                                  b.words)) {

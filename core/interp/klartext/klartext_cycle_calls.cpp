@@ -174,8 +174,7 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
         ctx.contourData = m_contourData ? &*m_contourData : nullptr;
         ctx.roughingRadius = m_roughingRadius;
         ctx.toolByNumber = [this](int number) -> std::optional<cycles::ToolInfo> {
-            const tables::ToolData* data =
-                m_settings.tools ? m_settings.tools->byNumber(number) : nullptr;
+            const tables::ToolData* data = toolTable() ? toolTable()->byNumber(number) : nullptr;
             auto own = m_programTools.find(number);
             if (own != m_programTools.end()) data = &own->second;
             if (data == nullptr) return std::nullopt;

@@ -105,7 +105,7 @@ std::optional<double> KlartextInterpreter::sysReadValue(const SysRead& read, boo
             const tables::ToolData* data = nullptr;
             tables::ToolData active;
             int number = read.hasIdx ? read.idx : m_tool.number;
-            if (number == m_tool.number || !m_settings.tools) {
+            if (number == m_tool.number || !toolTable()) {
                 active.length = m_tool.length;
                 active.radius = m_tool.radius;
                 active.radius2 = m_tool.radius2;
@@ -114,7 +114,7 @@ std::optional<double> KlartextInterpreter::sysReadValue(const SysRead& read, boo
                 active.deltaRadius2 = m_tool.tableDr2;
                 data = &active;
             } else {
-                data = m_settings.tools->byNumber(number);
+                data = toolTable()->byNumber(number);
             }
             if (data == nullptr) return std::nullopt;
             switch (read.nr) {

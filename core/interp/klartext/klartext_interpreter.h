@@ -14,6 +14,7 @@
 #include "core/cycles/cycle_values.h"
 #include "core/cycles/pattern/pattern_plan.h"
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/cycles/probing/tool_measurement.h"
 #include "core/cycles/transform/coordinate_frame.h"
 #include "core/geometry/fk/fk_solver.h"
 #include "core/interp/interpreter.h"
@@ -40,6 +41,8 @@ struct KlartextSettings {
     // Tool data for TOOL CALL. Without a table every tool is accepted with zero geometry and a
     // warning, so that programs can be checked without the machine's tool table.
     const tables::ToolTable* tools = nullptr;
+    // Where the TT cycles write `tools` back (inside the NC root); empty: TOOL.T of the NC root.
+    std::filesystem::path toolTableFile;
     std::filesystem::path ncRoot;        // CALL PGM, FN 16 and FN 26 stay inside it
     std::filesystem::path remanentFile;  // QR parameters; empty: not kept between runs
     Pose presetInMachine{};              // the active preset (workpiece datum), machine coords
@@ -92,6 +95,7 @@ private:
     class Environment;
     class CycleOutput;
     class ProbeAdapter;
+    class ToolProbeAdapter;
 
     struct Level {  // one program in the CALL PGM chain
         ProgramFile* program = nullptr;
@@ -261,6 +265,23 @@ private:
     bool applyDatum(int cycle, const cycles::probing::ProbingResults& results);
     bool writePreset(int cycle, int row, const Pose& offset);
     bool applyBasicRotation(int cycle, const cycles::probing::ProbingResults& results);
+    // The TT cycles 30-33 / 480-483 (klartext_tool_measurement.cpp).
+    void executeOldToolProbeBlock(const CycleDefinition& def);
+    void executeToolMeasurement(const cycles::probing::ProbingCycleDescriptor& cycle,
+                                const cycles::CycleValues& values, bool oldFormat,
+                                uint16_t statusParameter);
+    std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
+    struct ToolTableEdit {  // what a probing cycle writes into a tool's row
+        std::optional<double> length, radius, deltaLength, deltaRadius;
+        bool lock = false;  // TL = L
+    };
+    bool writeToolTable(int cycle, int tool, const ToolTableEdit& edit);
+    bool applyToolMonitoring(int cycle, double monitored,
+                             const cycles::probing::ToolCorrection& correction);
+    // The tool data TOOL CALL reads: the table as the TT cycles left it.
+    const tables::ToolTable* toolTable() const {
+        return m_toolTable ? &*m_toolTable : m_settings.tools;
+    }
     // Cycle calls (klartext_cycle_calls.cpp).
     void executeCycleCall(const CycleCall& call);
     void callCycleHere(const cycles::CycleValues* overrides = nullptr);
@@ -380,7 +401,16 @@ private:
     std::optional<std::vector<cycles::PatternPoint>> m_pattern;  // PATTERN DEF or point table
     std::optional<tables::DatumTable> m_datumTable;
     std::optional<tables::PresetTable> m_presetFile;
-    std::optional<double> m_orientAngle;             // cycle 13
+    std::optional<double> m_orientAngle;           // cycle 13
+    std::optional<tables::ToolTable> m_toolTable;  // TOOL.T once a TT cycle has written it
+    std::optional<cycles::probing::ToolProbeData> m_ttCalibration;  // cycle 30/480 of this run
+    // An old-format TT cycle (TCH PROBE 31.0 ...) collecting its sub-blocks.
+    struct OldToolProbe {
+        int number = -1;
+        cycles::CycleValues values;
+        uint16_t statusParameter = 0;  // 0: none
+    };
+    OldToolProbe m_oldToolProbe;
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)

@@ -199,9 +199,9 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
             auto own = m_programTools.find(*call.number);
             if (own != m_programTools.end()) data = &own->second;
         }
-        if (data == nullptr && m_settings.tools != nullptr) {
-            data = call.number ? m_settings.tools->byNumber(*call.number)
-                               : m_settings.tools->byName(*call.name);
+        if (data == nullptr && toolTable() != nullptr) {
+            data =
+                call.number ? toolTable()->byNumber(*call.number) : toolTable()->byName(*call.name);
         }
         tables::ToolData placeholder;
         if (data == nullptr) {

@@ -18,7 +18,8 @@ namespace {
 // Result parameters that are not lengths: angles and status flags keep their value in INCH
 // programs.
 bool isLengthResult(uint16_t q) {
-    static constexpr uint16_t kOthers[] = {150, 180, 181, 182, 183, 964, 965, 994, 995};
+    static constexpr uint16_t kOthers[] = {150, 158, 159, 170, 171, 172, 180,
+                                           181, 182, 183, 964, 965, 994, 995};
     return std::find(std::begin(kOthers), std::end(kOthers), q) == std::end(kOthers);
 }
 
@@ -95,7 +96,7 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     // The probe table row the tool links with TP_NO (row 1 without the column), read from the
     // NC root; without a table the defaults of a new row.
     int row = 1;
-    if (const tables::ToolTable* tools = m_settings.tools) {
+    if (const tables::ToolTable* tools = toolTable()) {
         const tables::ToolData* data = tools->byNumber(m_tool.number);
         auto column = tools->table().findColumn("TP_NO");
         if (data != nullptr && column) {
@@ -143,6 +144,10 @@ workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
 }
 
 void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
+    if (def.subNumber >= 0 && cycles::probing::findOldToolProbeCycle(def.number) != nullptr) {
+        executeOldToolProbeBlock(def);
+        return;
+    }
     const auto* cycle = cycles::probing::findProbingCycle(def.number);
     if (cycle == nullptr || def.subNumber >= 0) {
         fail("not-supported", KERF_TR_NOOP("touch probe cycle {1} is not supported yet"),
@@ -161,8 +166,12 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         }
         values.set(q, m_globals.number(q));
     }
-    if (def.number == 400 && m_basicRotationDeg != 0.0) {
-        // Cycle 400 cancels the basic rotation before it probes (spec 2).
+    if (cycle->toolMeasurement != cycles::probing::ToolMeasurementKind::None) {
+        executeToolMeasurement(*cycle, values, false, 0);
+        return;
+    }
+    if (def.number >= 400 && def.number <= 402 && m_basicRotationDeg != 0.0) {
+        // Cycles 400-402 cancel the basic rotation before they probe (spec 2).
         const Pose at = m_frame.toWorkpiece(m_programmed);
         m_frame.setRotation(m_frame.rotationDeg() - m_basicRotationDeg, false, workingPlane());
         m_programmed = m_frame.toProgram(at);
@@ -184,12 +193,6 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
              {owner});
         return;
     }
-    if (values.number(330) != 0.0) {
-        warn("not-supported",
-             KERF_TR_NOOP("{1}: tool monitoring (Q330) is not supported yet: "
-                          "the tool table is not corrected"),
-             {owner});
-    }
     auto probe = activeProbe(def.number);
     if (!probe) return;
     if (!checkPathError(m_path.flush())) return;
@@ -205,6 +208,10 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     for (const auto& [q, value] : results.parameters)
         m_q.set(QRef{QKind::Q, q}, isLengthResult(q) ? value / lengthScale() : value);
     if (results.protocol && !writeProtocol(def.number, cycle->name, *results.protocol)) return;
+    if (results.toolCorrection && values.number(330) != 0.0 &&
+        !applyToolMonitoring(def.number, values.number(330), *results.toolCorrection)) {
+        return;
+    }
     if (results.datum && !applyDatum(def.number, results)) return;
     if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
     if (results.toleranceStop) {

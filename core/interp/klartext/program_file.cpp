@@ -182,8 +182,11 @@ void checkProgram(ProgramFile& program) {
                          "{1} is not supported yet; the program cannot run past this block"),
                      {deferred->feature});
             } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
-                if (cycle->probe && (cycle->subNumber >= 0 ||
-                                     cycles::probing::findProbingCycle(cycle->number) == nullptr)) {
+                const bool known =
+                    cycle->subNumber >= 0
+                        ? cycles::probing::findOldToolProbeCycle(cycle->number) != nullptr
+                        : cycles::probing::findProbingCycle(cycle->number) != nullptr;
+                if (cycle->probe && !known) {
                     diag(Severity::Error, "not-supported", line.firstLine, 1,
                          KERF_TR_NOOP("touch probe cycle {1} is not supported yet; the program "
                                       "cannot run past this block"),

@@ -79,6 +79,20 @@ TEST_F(ProbingExamples, Intersection1416OfSeed004MakesTheRealCornerTheDatum) {
     EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 10.0, 1e-9);
 }
 
+TEST_F(ProbingExamples, ToolMeasurementWritesTheRealToolsDeltasIntoTheToolTable) {
+    // The machine file makes tool 5 really 0.05 longer and 0.012 thinner than TOOL.T says; 483
+    // with Q340 = 1 writes exactly that into DL and DR, plain and under --motion.
+    for (const char* options : {"", "--motion"}) {
+        fs::copy_file(fs::path(KERF_SOURCE_DIR) / "examples/probing/TOOL.T", dir / "TOOL.T",
+                      fs::copy_options::overwrite_existing);
+        EXPECT_TRUE(run("TOOLMEAS", options)["ok"].get<bool>()) << options;
+        const std::string tools = read(dir / "TOOL.T");
+        EXPECT_NE(tools.find("MILL_D10    +80       +5        +0.05     -0.012"), std::string::npos)
+            << options << "\n"
+            << tools;
+    }
+}
+
 TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
     EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
 }

@@ -97,15 +97,23 @@ CycleRun run(int cycle, const CycleValues& v, const SimulatedWorkpiece& part) {
 }
 
 TEST(ProbingCycles, RegistryHoldsEachCycleOnceInNumberOrder) {
-    const int expected[] = {400, 410, 411, 412, 413, 414, 415, 416, 417, 419,
-                            420, 421, 422, 423, 424, 425, 426, 427, 1416};
+    const int expected[] = {400, 401, 402, 408, 409, 410, 411, 412, 413, 414,
+                            415, 416, 417, 418, 419, 420, 421, 422, 423, 424,
+                            425, 426, 427, 430, 431, 480, 481, 482, 483, 1416};
     auto all = allProbingCycles();
     ASSERT_EQ(all.size(), std::size(expected));
     for (size_t i = 0; i < all.size(); ++i) {
         EXPECT_EQ(all[i]->number, expected[i]);
         EXPECT_EQ(findProbingCycle(expected[i]), all[i]);
-        EXPECT_NE(all[i]->run, nullptr);
+        // The TT cycles run through their own interface (tool_measurement.h).
+        const bool tt = all[i]->number >= 480 && all[i]->number <= 483;
+        EXPECT_EQ(all[i]->run == nullptr, tt) << all[i]->number;
+        EXPECT_EQ(all[i]->toolMeasurement != ToolMeasurementKind::None, tt) << all[i]->number;
     }
+    // The old TT cycles 30-33 run as 480-483.
+    EXPECT_EQ(findOldToolProbeCycle(31), findProbingCycle(481));
+    EXPECT_EQ(findOldToolProbeCycle(34), nullptr);
+    EXPECT_EQ(findOldToolProbeCycle(0), nullptr);
 }
 
 TEST(ProbingCycles, BasicRotation400MeasuresTheTurnOfAnEdge) {
@@ -248,6 +256,225 @@ TEST(ProbingCycles, DatumInToolAxis417AndSingleAxis419) {
     EXPECT_NEAR(result(r.results, 160), -0.2, kTolerance);
 }
 
+TEST(ProbingCycles, SlotAndRidgeCentre408And409) {
+    // Placed square: a slot 20 wide centred at X 37 has its centre line at 37, the datum Q405.
+    SimulatedWorkpiece square;
+    square.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    square.add({Box{Vec3(27, 10, -20), Vec3(47, 50, 1)}, false});
+    CycleValues v = defaults(408);
+    v.set(321, 37), v.set(322, 30), v.set(311, 20), v.set(272, 1), v.set(405, 5);
+    CycleRun r = run(408, v, square);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 157), 37.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 166), 20.0, kTolerance);
+    ASSERT_TRUE(r.results.datum && r.results.datum->measured[0]);
+    EXPECT_NEAR(*r.results.datum->measured[0], 37.0, kTolerance);
+    EXPECT_FALSE(r.results.datum->measured[1]);
+    EXPECT_EQ(r.results.datum->nominal[0], 5.0);
+
+    // Misplaced: along X the turned slot measures 20 / cos a (each touch short of its wall),
+    // its centre line crossing Y 30 as for 425.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    part.add({Box{Vec3(27, 10, -20), Vec3(47, 50, 1)}, false});
+    const Vec2 c = placed(Vec2(37, 30));
+    r = run(408, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 157), c.x() - (30.0 - c.y()) * std::tan(kAngle), kTolerance);
+    EXPECT_NEAR(result(r.results, 166), 20.0 / std::cos(kAngle) - 2 * kCosineError, kTolerance);
+
+    // A slot 6 wide is narrower than 2 (r_b + SET_UP): both touches start from its centre.
+    SimulatedWorkpiece narrow;
+    narrow.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    narrow.add({Box{Vec3(20, 34, -20), Vec3(80, 40, 1)}, false});
+    CycleValues n = defaults(408);
+    n.set(321, 50), n.set(322, 37), n.set(311, 6), n.set(272, 2), n.set(301, 1);
+    r = run(408, n, narrow);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 157), 37.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 166), 6.0, kTolerance);
+    EXPECT_TRUE(r.results.datum->measured[1]);
+
+    // A ridge 20 wide along Y at Y 25, misplaced, with the top touched too (Q381).
+    SimulatedWorkpiece ridge = misplaced();
+    ridge.add({Box{Vec3(10, 15, -20), Vec3(90, 35, 0)}, true});
+    CycleValues g = defaults(409);
+    g.set(321, 50), g.set(322, 25), g.set(311, 20), g.set(272, 2);
+    g.set(381, 1), g.set(382, 50), g.set(383, 25), g.set(384, 0), g.set(333, 1);
+    r = run(409, g, ridge);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const Vec2 m = placed(Vec2(50, 25));
+    EXPECT_NEAR(result(r.results, 157), m.y() + (50.0 - m.x()) * std::tan(kAngle), kTolerance);
+    EXPECT_NEAR(result(r.results, 166), 20.0 / std::cos(kAngle) + 2 * kCosineError, kTolerance);
+    EXPECT_NEAR(*r.results.datum->measured[2], -0.2, kTolerance);
+    EXPECT_EQ(r.results.datum->nominal[2], 1.0);
+
+    // Q305 > 0 with Q303 = -1: PRB-004 before anything moves.
+    g.set(305, 3), g.set(303, -1);
+    r = run(409, g, ridge);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "PRB-004");
+    EXPECT_EQ(r.touches, 0);
+}
+
+TEST(ProbingCycles, RotationFromTwoHoles401AndTwoStuds402) {
+    // Two holes (diameters 10 and 14, unknown to 401) at (20, 15) and (80, 35): the line between
+    // their real centres is the programmed line turned by a, so 401 finds atan(20 / 60) + a.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    part.add({Cylinder{Vec2(20, 15), 5.0, -20, 1}, false});
+    part.add({Cylinder{Vec2(80, 35), 7.0, -20, 1}, false});
+    const double line = std::atan2(20.0, 60.0) * 180.0 / std::numbers::pi;
+    CycleValues v = defaults(401);
+    v.set(268, 20), v.set(269, 15), v.set(270, 80), v.set(271, 35), v.set(307, 10);
+    CycleRun r = run(401, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(*r.results.basicRotationDeg, line + 0.7 - 10.0, 1e-7);
+    EXPECT_EQ(r.touches, 8);
+    v.set(402, 1);
+    r = run(401, v, part);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "PRB-011");
+
+    // Two studs of diameters 20 and 30, the second 5 lower: 402 at the two measuring heights.
+    SimulatedWorkpiece studs = misplaced();
+    studs.add({Cylinder{Vec2(20, 15), 10.0, -20, 0}, true});
+    studs.add({Cylinder{Vec2(80, 35), 15.0, -20, -5}, true});
+    CycleValues s = defaults(402);
+    s.set(268, 20), s.set(269, 15), s.set(313, 22), s.set(261, -3);
+    s.set(270, 80), s.set(271, 35), s.set(314, 32), s.set(315, -8);
+    r = run(402, s, studs);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(*r.results.basicRotationDeg, line + 0.7, 1e-7);
+    // Measuring stud 2 1 mm above its top finds nothing.
+    s.set(315, -2);
+    r = run(402, s, studs);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "PRB-001");
+}
+
+TEST(ProbingCycles, DatumFromFourHoles418) {
+    // Holes at the corners of a rectangle 130 x 60: the diagonals 1-3 and 2-4 cross at its
+    // centre (85, 55), which lies at placed(85, 55).
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(170, 110, 0)}, true});
+    const Vec2 holes[] = {{20, 25}, {150, 25}, {150, 85}, {20, 85}};
+    for (const Vec2& h : holes)
+        part.add({Cylinder{h, 4.0, -20, 1}, false});
+    CycleValues v = defaults(418);
+    v.set(268, 20), v.set(269, 25), v.set(270, 150), v.set(271, 25);
+    v.set(316, 150), v.set(317, 85), v.set(318, 20), v.set(319, 85);
+    v.set(331, 1), v.set(332, 2);
+    CycleRun r = run(418, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const Vec2 c = placed(Vec2(85, 55));
+    EXPECT_NEAR(result(r.results, 151), c.x(), kTolerance);
+    EXPECT_NEAR(result(r.results, 152), c.y(), kTolerance);
+    EXPECT_EQ(r.touches, 16);
+    ASSERT_TRUE(r.results.datum);
+    EXPECT_EQ(r.results.datum->nominal[0], 1.0);
+    EXPECT_EQ(r.results.datum->nominal[1], 2.0);
+    // Holes 2 and 4 given in the order of 1 and 3: the two lines are parallel.
+    v.set(270, 20), v.set(271, 45), v.set(318, 150), v.set(319, 105);
+    SimulatedWorkpiece parallel;
+    parallel.add({Box{Vec3(0, 0, -40), Vec3(170, 110, 0)}, true});
+    for (const Vec2& h : {Vec2(20, 25), Vec2(20, 45), Vec2(150, 85), Vec2(150, 105)})
+        parallel.add({Cylinder{h, 4.0, -20, 1}, false});
+    r = run(418, v, parallel);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "PRB-019");
+}
+
+TEST(ProbingCycles, MeasureBoltHoleCircle430) {
+    // Holes of diameter 8 at 0, 90 and 180 degrees on a circle of diameter 40 about (50, 30).
+    const auto partWith = [](SimulatedWorkpiece part) {
+        part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+        for (const Vec2& h : {Vec2(70, 30), Vec2(50, 50), Vec2(30, 30)})
+            part.add({Cylinder{h, 4.0, -20, 1}, false});
+        return part;
+    };
+    CycleValues v = defaults(430);
+    v.set(273, 50), v.set(274, 30), v.set(262, 40), v.set(291, 0), v.set(292, 90);
+    v.set(293, 180), v.set(288, 40.1), v.set(289, 39.9), v.set(279, 0.15), v.set(280, 0.15);
+    CycleRun r = run(430, v, partWith(SimulatedWorkpiece()));
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_NEAR(result(r.results, 151), 50.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 152), 30.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 153), 40.0, kTolerance);
+    EXPECT_EQ(result(r.results, 180), 1.0);
+    // Misplaced, the circle keeps its diameter; its centre is off by more than 0.15: scrap.
+    r = run(430, v, partWith(misplaced()));
+    ASSERT_FALSE(r.error) << r.error->code;
+    const Vec2 c = placed(Vec2(50, 30));
+    EXPECT_NEAR(result(r.results, 161), c.x() - 50.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 162), c.y() - 30.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 163), 0.0, kTolerance);
+    EXPECT_EQ(result(r.results, 180), 0.0);
+    EXPECT_EQ(result(r.results, 181), 0.0);
+    EXPECT_EQ(result(r.results, 182), 1.0);
+    // A bolt circle too small is scrap too (not rework, spec 1.13).
+    v.set(279, 0), v.set(280, 0), v.set(288, 40.5), v.set(289, 40.2);
+    r = run(430, v, partWith(SimulatedWorkpiece()));
+    EXPECT_EQ(result(r.results, 182), 1.0);
+    EXPECT_EQ(result(r.results, 181), 0.0);
+}
+
+// A machine whose only surface is the plane z = t0 + a x + b y: a ball coming down along -z
+// touches it where its centre is r sqrt(1 + a^2 + b^2) above the plane.
+class PlaneMachine final : public ProbingMachine {
+public:
+    PlaneMachine(double t0, double a, double b) : m_t0(t0), m_a(a), m_b(b) {}
+    Vec3 ballCentre() const override { return m_at; }
+    void moveTo(const Vec3& to) override { m_at = to; }
+    std::optional<Vec3> touch(const Vec3& direction, double maxPath) override {
+        EXPECT_EQ(direction, Vec3(0, 0, -1));
+        const double contact = m_t0 + m_a * m_at.x() + m_b * m_at.y() +
+                               probe().ballRadius * std::sqrt(1 + m_a * m_a + m_b * m_b);
+        if (m_at.z() - contact > maxPath) return std::nullopt;
+        return Vec3(m_at.x(), m_at.y(), contact);
+    }
+
+private:
+    double m_t0, m_a, m_b;
+    Vec3 m_at{0.0, 0.0, 50.0};
+};
+
+TEST(ProbingCycles, MeasurePlane431GivesProjectionAndSpatialAngles) {
+    CycleValues v = defaults(431);
+    v.set(263, 20), v.set(264, 20), v.set(294, 3);
+    v.set(265, 50), v.set(266, 20), v.set(295, 4);
+    v.set(296, 20), v.set(297, 50), v.set(298, 3);
+    const double deg = std::numbers::pi / 180.0;
+    // Rising by 3 degrees along the main axis: turned about S, B = -3.
+    PlaneMachine alongMain(2.0, std::tan(3 * deg), 0.0);
+    ProbingResults r;
+    ASSERT_FALSE(findProbingCycle(431)->run(v, probe(), alongMain, r));
+    EXPECT_NEAR(result(r, 158), 0.0, 1e-9);
+    EXPECT_NEAR(result(r, 159), -3.0, 1e-9);
+    EXPECT_NEAR(result(r, 170), 0.0, 1e-9);
+    EXPECT_NEAR(result(r, 171), -3.0, 1e-9);
+    EXPECT_NEAR(result(r, 172), 0.0, 1e-9);
+    // The surface heights at the points, less the ball's cosine error r (1 / cos 3deg - 1).
+    const double lift = 2.0 * (1.0 / std::cos(3 * deg) - 1.0);
+    EXPECT_NEAR(result(r, 173), 2.0 + 20 * std::tan(3 * deg) + lift, 1e-9);
+    EXPECT_NEAR(result(r, 174), 2.0 + 50 * std::tan(3 * deg) + lift, 1e-9);
+    // Rising by 4 degrees along the secondary axis: turned about M, A = +4.
+    PlaneMachine alongSecondary(2.0, 0.0, std::tan(4 * deg));
+    r = {};
+    ASSERT_FALSE(findProbingCycle(431)->run(v, probe(), alongSecondary, r));
+    EXPECT_NEAR(result(r, 158), 4.0, 1e-9);
+    EXPECT_NEAR(result(r, 159), 0.0, 1e-9);
+    EXPECT_NEAR(result(r, 170), 4.0, 1e-9);
+    EXPECT_NEAR(result(r, 171), 0.0, 1e-9);
+    EXPECT_NEAR(result(r, 172), 0.0, 1e-9);
+    // Three points on one line: PRB-008.
+    v.set(296, 80), v.set(297, 20);
+    r = {};
+    auto error = findProbingCycle(431)->run(v, probe(), alongSecondary, r);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "PRB-008");
+}
+
 TEST(ProbingCycles, MeasureWidth425And426) {
     // A slot 20 wide along x, turned: along x it measures 20 / cos a, its centre line as 410.
     SimulatedWorkpiece part = misplaced();
@@ -263,13 +490,20 @@ TEST(ProbingCycles, MeasureWidth425And426) {
     EXPECT_NEAR(result(r.results, 156), slot, kTolerance);
     EXPECT_NEAR(result(r.results, 157), c.x() - (30.0 - c.y()) * std::tan(kAngle), kTolerance);
     EXPECT_NEAR(result(r.results, 166), slot - 20.0, kTolerance);
+    // Q330: a slot too wide means the tool cut too large: DR grows by half the excess.
+    ASSERT_TRUE(r.results.toolCorrection);
+    EXPECT_NEAR(r.results.toolCorrection->delta, (slot - 20.0) / 2.0, kTolerance);
+    EXPECT_FALSE(r.results.toolCorrection->length);
     EXPECT_EQ(result(r.results, 180), 1.0);
 
     SimulatedWorkpiece ridge = misplaced();
     ridge.add({Box{Vec3(40, 10, -20), Vec3(60, 50, 0)}, true});
     r = run(426, v, ridge);
     ASSERT_FALSE(r.error) << r.error->code;
-    EXPECT_NEAR(result(r.results, 156), 20.0 / std::cos(kAngle) + 2 * kCosineError, kTolerance);
+    const double width = 20.0 / std::cos(kAngle) + 2 * kCosineError;
+    EXPECT_NEAR(result(r.results, 156), width, kTolerance);
+    // A ridge too wide: the tool cut too small, DR shrinks.
+    EXPECT_NEAR(r.results.toolCorrection->delta, -(width - 20.0) / 2.0, kTolerance);
 }
 
 TEST(ProbingCycles, DatumOutsideCorner414FindsTheRealCorner) {

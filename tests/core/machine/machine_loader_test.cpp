@@ -257,6 +257,49 @@ TEST(MachineLoaderErrors, SetupErrorNeedsThreeNumbersInRange) {
                     "allowed range -180 … 180 deg"});
 }
 
+TEST(MachineLoader, ToolTouchProbeAndToolErrors) {
+    const MachineConfig config = loaded(
+        "base = \"mill\"\n[simulation.tool_probe]\nenabled = true\n"
+        "centre = [-200.0, 50.0, -300.0]\ndiameter = 30.0\ntype = \"cube\"\n"
+        "[[simulation.tool_error]]\ntool = 3\nlength = -0.05\nradius = -0.012\n"
+        "[[simulation.tool_error]]\ntool = 7\nlength = 0.1\n");
+    EXPECT_TRUE(config.toolProbe.enabled);
+    EXPECT_EQ(config.toolProbe.centreXMm, -200.0);
+    EXPECT_EQ(config.toolProbe.centreYMm, 50.0);
+    EXPECT_EQ(config.toolProbe.centreZMm, -300.0);
+    EXPECT_EQ(config.toolProbe.diameterMm, 30.0);
+    EXPECT_EQ(config.toolProbe.shape, ToolProbeShape::Cube);
+    ASSERT_EQ(config.toolErrors.size(), 2u);
+    EXPECT_EQ(config.toolErrors[0], (ToolErrorConfig{3, -0.05, -0.012}));
+    EXPECT_EQ(config.toolErrors[1], (ToolErrorConfig{7, 0.1, 0.0}));
+    ASSERT_NE(config.toolError(7), nullptr);
+    EXPECT_EQ(config.toolError(7)->lengthMm, 0.1);
+    EXPECT_EQ(config.toolError(4), nullptr);
+    // The writer gives [[simulation.tool_error]] tables back; they read back the same.
+    EXPECT_EQ(loaded(toToml(config)), config);
+    EXPECT_TRUE(builtin("mill").toolErrors.empty());
+    EXPECT_FALSE(builtin("mill").toolProbe.enabled);
+}
+
+TEST(MachineLoaderErrors, ToolErrorsNeedAToolOnceAndSmallLengths) {
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\nlength = 0.1\n"),
+              Lines{"mymill.toml:2:1: error: simulation.tool_error needs a tool number"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 3\nlength = 11\n"),
+              Lines{"mymill.toml:4:10: error: simulation.tool_error.length = 11 is out of "
+                    "range: a tool number 0 ... 32767, lengths within +-10 mm"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 3\n"
+                         "[[simulation.tool_error]]\ntool = 3\n"),
+              Lines{"mymill.toml:4:1: error: simulation.tool_error: tool 3 is given twice"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 3\nlenght = 1\n"),
+              Lines{"mymill.toml:4:1: error: unknown key simulation.tool_error.lenght"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[simulation]\ntool_error = 3\n"),
+              Lines{"mymill.toml:3:14: error: simulation.tool_error must be tables "
+                    "[[simulation.tool_error]] with tool, length and radius"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[simulation.tool_probe]\ntype = \"ball\"\n"),
+              Lines{"mymill.toml:3:8: error: simulation.tool_probe.type = \"ball\" is not one "
+                    "of disc, cube"});
+}
+
 TEST(MachineLoader, PresetAndSimulatedProbeFromTheFile) {
     const MachineConfig config = loaded(
         "base = \"lathe\"\n[axes.Z]\npreset = -100\n"

@@ -154,6 +154,27 @@ TEST_F(ProbingTest, BasicRotationAndTwoEdgesMakeTheCornerTheDatum) {
               "End of measuring log\n");
 }
 
+TEST_F(ProbingTest, RidgeCentre409MakesTheRealCentreLineTheDatum) {
+    // The blank is a ridge 100 wide along X; measured along X at Y 30, its real centre line
+    // crosses there at c.x - (30 - c.y) tan a with c the placed centre (50, 30), as for 425.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double cx = 50.0 * std::cos(a) - 30.0 * std::sin(a) + 1.5;
+    const double cy = 50.0 * std::sin(a) + 30.0 * std::cos(a) - 0.8;
+    ASSERT_EQ(run("1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                  "3 TOOL CALL 1 Z\n4 L X+50 Y+30 Z+50 R0 FMAX\n"
+                  "5 TCH PROBE 409 RIDGE CENTER REF PT\n  Q321=+50\n  Q322=+30\n  Q311=100\n"
+                  "  Q272=1\n  Q261=-5\n  Q320=0\n  Q260=+20\n  Q305=0\n  Q405=+0\n"
+                  "  Q303=+1\n  Q381=0\n  Q382=+0\n  Q383=+0\n  Q384=+0\n  Q333=+0\n"
+                  "6 L X+0 Y+30 Z+10 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double line = cx - (30.0 - cy) * std::tan(a);
+    EXPECT_NEAR(q(157), line, 1e-6);
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], line, 1e-6);
+    EXPECT_NEAR(end[Axis::Y], 30.0, 1e-9);  // only the measuring axis moves
+}
+
 TEST_F(ProbingTest, ErrorsOfTheManual) {
     // Probing needs the probe called first.
     EXPECT_EQ(run("1 BLK FORM CYLINDER Z R25 L30 DIST+0\n"
@@ -168,7 +189,7 @@ TEST_F(ProbingTest, ErrorsOfTheManual) {
               interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("PRB-001"), std::string::npos) << firstError();
     // A probing cycle Kerf does not have yet is refused before the program starts.
-    EXPECT_EQ(run("1 TCH PROBE 431 MEASURE PLANE\n  Q263=+0\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(run("1 TCH PROBE 444 PROBING IN 3-D\n  Q263=+0\n"), interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("not supported"), std::string::npos) << firstError();
     // Out-of-range values are found by the check, at their line.
     EXPECT_EQ(run("1 TOOL CALL 1 Z\n2 TCH PROBE 419 DATUM IN ONE AXIS\n  Q272=7\n"),

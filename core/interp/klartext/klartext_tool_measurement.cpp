@@ -1,0 +1,359 @@
+// The TT cycles 30-33 / 480-483 (spec 7): tool measurement on the machine file's simulated tool
+// touch probe, with the real tool differing from its table entry by [[simulation.tool_error]];
+// the measured values go into the tool table and take effect at once.
+#include <cmath>
+#include <cstdlib>
+
+#include "core/base/translate.h"
+#include "core/cycles/parameter_check.h"
+#include "core/interp/klartext/klartext_interpreter.h"
+#include "core/workpiece/simulated_tool_probe.h"
+
+namespace kerf::klartext {
+
+// The machine of a TT cycle in plain runs: moves go into the canonical stream, touches are
+// decided on the simulated TT with the real tool. Positions are the spindle's gauge point in
+// machine coordinates; the interpreter positions the tool tip with the tool's current length.
+class KlartextInterpreter::ToolProbeAdapter final : public cycles::probing::ToolProbingMachine {
+public:
+    ToolProbeAdapter(KlartextInterpreter& interpreter, const workpiece::SimulatedToolProbe& tt,
+                     workpiece::RealTool tool)
+        : m_k(interpreter),
+          m_tt(tt),
+          m_tool(tool),
+          m_direction(interpreter.m_spindle),
+          m_rpm(interpreter.m_spindleSpeed) {}
+
+    Vec3 gauge() const override {
+        return m_k.m_frame.toWorkpiece(m_k.m_programmed).xyz() + presetInMachine() +
+               Vec3(0.0, 0.0, m_k.m_tool.effectiveLength());
+    }
+    void moveTo(const Vec3& gauge) override { m_k.moveProgrammed(program(gauge), true, 0.0); }
+    void spindle(canon::SpindleDirection direction, double rpm) override {
+        if (direction == m_direction && rpm == m_rpm) return;
+        m_direction = direction;
+        m_rpm = rpm;
+        m_k.emit(canon::SpindleControl{direction, rpm});
+    }
+    void orientSpindle(double angleDeg) override { m_k.emit(canon::SpindleOrient{angleDeg}); }
+
+    std::optional<Vec3> touch(const Vec3& direction, double maxPath, double feed) override {
+        const Vec3 start = gauge();
+        auto hit = m_tt.touch(start, direction, maxPath, m_tool);
+        const Vec3 end = hit ? *hit : Vec3(start + maxPath * direction);
+        interp::ProgramStatus::Probe status;
+        status.triggered = hit.has_value();
+        status.position = m_k.m_frame.toWorkpiece(program(end));
+        m_k.m_lastProbe = status;
+        m_k.moveProgrammed(program(end), false, feed);
+        m_k.moveProgrammed(program(start), true, 0.0);
+        return hit;
+    }
+    bool deflected() const override { return m_tt.touches(gauge(), m_tool); }
+
+    // Puts the spindle back as the program had it.
+    void restoreSpindle() { spindle(m_k.m_spindle, m_k.m_spindleSpeed); }
+
+private:
+    Vec3 presetInMachine() const { return m_k.m_settings.presetInMachine.xyz(); }
+    Pose program(const Vec3& gauge) const {
+        Pose workpiece = m_k.m_frame.toWorkpiece(m_k.m_programmed);
+        workpiece.setXyz(gauge - presetInMachine() - Vec3(0.0, 0.0, m_k.m_tool.effectiveLength()));
+        return m_k.m_frame.toProgram(workpiece);
+    }
+
+    KlartextInterpreter& m_k;
+    const workpiece::SimulatedToolProbe& m_tt;
+    workpiece::RealTool m_tool;
+    // The spindle as the stream last set it: the program's, then the cycle's.
+    canon::SpindleDirection m_direction;
+    double m_rpm;
+};
+
+namespace {
+
+// The number after the last ':' of an old-format sub-block ("31.1 CHECK: 1 Q5") and, when
+// `status` is given, an optional Q parameter after it.
+bool oldBlockValue(std::string_view rest, double& value, uint16_t* status) {
+    const size_t colon = rest.rfind(':');
+    if (colon == std::string_view::npos) return false;
+    const std::string text(rest.substr(colon + 1));
+    char* end = nullptr;
+    value = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || !std::isfinite(value)) return false;
+    std::string_view tail(end);
+    while (!tail.empty() && tail.front() == ' ')
+        tail.remove_prefix(1);
+    if (tail.empty()) return true;
+    if (status == nullptr || (tail.front() != 'Q' && tail.front() != 'q')) return false;
+    char* qEnd = nullptr;
+    const std::string digits(tail.substr(1));
+    const long q = std::strtol(digits.c_str(), &qEnd, 10);
+    if (qEnd == digits.c_str() || q < 0 || q > 1999) return false;
+    for (const char* c = qEnd; *c != '\0'; ++c) {
+        if (*c != ' ') return false;
+    }
+    *status = static_cast<uint16_t>(q);
+    return true;
+}
+
+}  // namespace
+
+// Old format: 30.0 / 30.1 HEIGHT; 31.0 ... 33.0 / .1 CHECK: mode [Qn] / .2 HEIGHT / .3 PROBING
+// THE TEETH. The cycle runs with its last sub-block.
+void KlartextInterpreter::executeOldToolProbeBlock(const CycleDefinition& def) {
+    const auto* cycle = cycles::probing::findOldToolProbeCycle(def.number);
+    const std::string owner = "TCH PROBE " + std::to_string(def.number);
+    if (def.subNumber == 0) {
+        m_oldToolProbe = OldToolProbe{def.number, {}, 0};
+        return;
+    }
+    if (m_oldToolProbe.number != def.number) {
+        fail("cycle-syntax", KERF_TR_NOOP("TCH PROBE {1}.{2} without TCH PROBE {1}.0 before it"),
+             {std::to_string(def.number), std::to_string(def.subNumber)});
+        return;
+    }
+    const bool calibrate = def.number == 30;
+    const int last = calibrate ? 1 : 3;
+    double value = 0.0;
+    const bool check = !calibrate && def.subNumber == 1;
+    uint16_t status = 0;
+    if (def.subNumber > last || !oldBlockValue(def.rest, value, check ? &status : nullptr)) {
+        fail("cycle-syntax", KERF_TR_NOOP("{1}.{2}: a number after ':' expected"),
+             {owner, std::to_string(def.subNumber)});
+        return;
+    }
+    // The sub-blocks hold Q260 (HEIGHT), Q340 (CHECK) and Q341 (PROBING THE TEETH).
+    const uint16_t q = calibrate || def.subNumber == 2 ? 260 : (def.subNumber == 1 ? 340 : 341);
+    for (const cycles::ParameterDescriptor& d : cycle->parameters) {
+        if (d.q != q) continue;
+        if (auto outside = cycles::parameterValueError(owner, d, value)) {
+            failCycle(*outside);
+            return;
+        }
+    }
+    m_oldToolProbe.values.set(q, q == 260 ? value * lengthScale() : value);
+    if (check) m_oldToolProbe.statusParameter = status;
+    if (def.subNumber < last) return;
+    const cycles::CycleValues values = m_oldToolProbe.values;
+    const uint16_t statusParameter = m_oldToolProbe.statusParameter;
+    m_oldToolProbe = OldToolProbe{};
+    if (!calibrate && (!values.has(340) || !values.has(260) || !values.has(341))) {
+        fail("cycle-syntax", KERF_TR_NOOP("{1}: sub-blocks .1, .2 and .3 are needed"), {owner});
+        return;
+    }
+    executeToolMeasurement(*cycle, values, true, statusParameter);
+}
+
+std::optional<cycles::probing::ToolProbeData> KlartextInterpreter::toolProbeData(int cycle) {
+    const machine::MachineConfig* machine = m_settings.machine;
+    if (machine == nullptr || !machine->toolProbe.enabled) {
+        fail("PRB-023",
+             KERF_TR_NOOP("touch probe cycle {1}: the machine has no tool touch probe "
+                          "([simulation.tool_probe] enabled = true)"),
+             {std::to_string(cycle)});
+        return std::nullopt;
+    }
+    if (m_ttCalibration) return m_ttCalibration;
+    const machine::ToolProbeConfig& c = machine->toolProbe;
+    cycles::probing::ToolProbeData tt;
+    tt.top = Vec3(c.centreXMm, c.centreYMm, c.centreZMm);
+    tt.diameter = c.diameterMm;
+    tt.cube = c.shape == machine::ToolProbeShape::Cube;
+    tt.offsetToolAxis = c.offsetToolAxisMm;
+    tt.safetyDistance = c.safetyDistanceMm;
+    tt.maxPeripheralSpeed = c.maxPeripheralSpeedMPerMin;
+    tt.measureTolerance = c.measureToleranceMm;
+    tt.probingFeed = c.probingFeedMmPerMin;
+    tt.maxRpm = machine->spindle.maxRpm;
+    return tt;
+}
+
+void KlartextInterpreter::executeToolMeasurement(
+    const cycles::probing::ProbingCycleDescriptor& cycle, const cycles::CycleValues& values,
+    bool oldFormat, uint16_t statusParameter) {
+    using cycles::probing::ToolMeasurementKind;
+    const std::string number = std::to_string(cycle.number);
+    if (m_frame.mirror() != 0 || m_frame.scale() != 1.0) {
+        fail("PRB-005",
+             KERF_TR_NOOP("touch probe cycle {1}: tool measurement is not possible while "
+                          "mirroring or scaling is active (cycles 8, 11, 26)"),
+             {number});
+        return;
+    }
+    if (m_toolAxis != Axis::Z) {
+        fail("not-supported",
+             KERF_TR_NOOP("touch probe cycle {1}: probing runs with tool axis Z only so far"),
+             {number});
+        return;
+    }
+    const tables::ToolData* row = m_tool.number >= 0 && toolTable() != nullptr
+                                      ? toolTable()->byNumber(m_tool.number)
+                                      : nullptr;
+    if (row == nullptr) {
+        fail("PRB-012",
+             KERF_TR_NOOP("touch probe cycle {1}: call the tool to be measured from the tool "
+                          "table TOOL.T with TOOL CALL first"),
+             {number});
+        return;
+    }
+    auto tt = toolProbeData(cycle.number);
+    if (!tt) return;
+    if (!checkPathError(m_path.flush())) return;
+    // 481-483 give the status in Q199, 31-33 in the parameter of their CHECK block (or none).
+    const uint16_t status = oldFormat ? statusParameter : 199;
+    for (uint16_t q : cycle.results) {
+        if (q != 199) m_q.set(QRef{QKind::Q, q}, 0.0);
+    }
+    if (status != 0) m_q.set(QRef{QKind::Q, status}, 0.0);
+
+    const tables::ToolTable& table = *toolTable();
+    cycles::probing::MeasuredToolData tool;
+    tool.length = row->length;
+    tool.radius = row->radius;
+    tool.deltaLength = row->deltaLength;
+    tool.deltaRadius = row->deltaRadius;
+    tool.cutterCount = row->cutterCount;
+    tool.lengthWear = table.numberCell(row->number, "LTOL").value_or(0.0);
+    tool.radiusWear = table.numberCell(row->number, "RTOL").value_or(0.0);
+    tool.lengthBreak = table.numberCell(row->number, "LBREAK").value_or(0.0);
+    tool.radiusBreak = table.numberCell(row->number, "RBREAK").value_or(0.0);
+    tool.radiusOffset = table.numberCell(row->number, "R-OFFS");
+    tool.lengthOffset = table.numberCell(row->number, "L-OFFS").value_or(0.0);
+    tool.cuttingDirection = table.numberCell(row->number, "DIRECT").value_or(-1.0);
+
+    // The real tool: as the table held it when the run started, plus the machine file's error.
+    const tables::ToolData* original =
+        m_settings.tools != nullptr ? m_settings.tools->byNumber(row->number) : nullptr;
+    const tables::ToolData& start = original != nullptr ? *original : *row;
+    workpiece::RealTool real{start.length + start.deltaLength, start.radius + start.deltaRadius};
+    if (const machine::ToolErrorConfig* error = m_settings.machine->toolError(row->number)) {
+        real.length += error->lengthMm;
+        real.radius += error->radiusMm;
+    }
+    const machine::ToolProbeConfig& c = m_settings.machine->toolProbe;
+    const workpiece::SimulatedToolProbe simulated({Vec3(c.centreXMm, c.centreYMm, c.centreZMm),
+                                                   c.diameterMm,
+                                                   c.shape == machine::ToolProbeShape::Cube});
+    ToolProbeAdapter machine(*this, simulated, real);
+
+    // Q260 is a tool-tip height of the active datum.
+    Pose clearance = m_programmed;
+    clearance[Axis::Z] = values.number(260);
+    const double clearanceZ =
+        m_frame.toWorkpiece(clearance)[Axis::Z] + m_settings.presetInMachine[Axis::Z];
+
+    if (cycle.toolMeasurement == ToolMeasurementKind::Calibrate) {
+        cycles::probing::ToolProbeData calibrated;
+        auto error = cycles::probing::calibrateToolProbe(cycle.number, clearanceZ, *tt, tool,
+                                                         machine, calibrated);
+        machine.restoreSpindle();
+        if (error) {
+            failCycle(*error);
+            return;
+        }
+        m_ttCalibration = calibrated;
+        return;
+    }
+    cycles::probing::ToolMeasurementRequest request;
+    request.length = cycle.toolMeasurement != ToolMeasurementKind::Radius;
+    request.radius = cycle.toolMeasurement != ToolMeasurementKind::Length;
+    request.mode = values.integer(340);
+    request.clearanceZ = clearanceZ;
+    request.teeth = values.integer(341) == 1;
+    cycles::probing::ToolMeasurementResult result;
+    auto error = cycles::probing::measureTool(cycle.number, request, *tt, tool, machine, result);
+    machine.restoreSpindle();
+    if (error) {
+        failCycle(*error);
+        return;
+    }
+    if (request.length) m_q.set(QRef{QKind::Q, 115}, result.lengthDeviation / lengthScale());
+    if (request.radius) m_q.set(QRef{QKind::Q, 116}, result.radiusDeviation / lengthScale());
+    if (status != 0) m_q.set(QRef{QKind::Q, status}, result.status);
+    if (request.mode != 2) {
+        writeToolTable(cycle.number, m_tool.number,
+                       {result.newLength, result.newRadius, result.newDeltaLength,
+                        result.newDeltaRadius, result.lock});
+    }
+}
+
+// Measured values into TOOL.T (atomically, after the program check); a change of the tool in
+// the spindle takes effect at once (spec 7.1: "take effect automatically at the end of the
+// probing cycle").
+bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdit& edit) {
+    if (!waitForCheck()) return false;
+    tables::ToolTable table = *toolTable();
+    auto set = [&](const char* column, const std::optional<double>& value) -> bool {
+        if (!value) return true;
+        if (auto error = table.setNumber(tool, column, *value)) {
+            failCycle({error->code, error->messageTemplate, error->args});
+            return false;
+        }
+        return true;
+    };
+    if (!set("L", edit.length) || !set("R", edit.radius) || !set("DL", edit.deltaLength) ||
+        !set("DR", edit.deltaRadius)) {
+        return false;
+    }
+    if (edit.lock) {
+        if (auto error = table.setText(tool, "TL", "L")) {
+            failCycle({error->code, error->messageTemplate, error->args});
+            return false;
+        }
+    }
+    const std::filesystem::path file =
+        m_settings.toolTableFile.empty() ? m_root.path() / "TOOL.T" : m_settings.toolTableFile;
+    if (auto error = m_root.replace(file, table.serialize())) {
+        fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the tool table: {2}"),
+             {std::to_string(cycle), error->format()});
+        return false;
+    }
+    m_toolTable = std::move(table);
+    if (tool != m_tool.number) return true;
+    const tables::ToolData* row = m_toolTable->byNumber(tool);
+    m_tool.length = row->length;
+    m_tool.radius = row->radius;
+    m_tool.tableDl = row->deltaLength;
+    m_tool.tableDr = row->deltaRadius;
+    emit(canon::ToolUpdate{m_tool.geometry(), m_toolAxis});
+    m_path.setToolRadius(m_tool.effectiveRadius());
+    m_q.set({QKind::Q, 108}, m_tool.effectiveRadius() / lengthScale());
+    m_q.set({QKind::Q, 114}, m_tool.effectiveLength() / lengthScale());
+    return true;
+}
+
+// Q330 (spec 1.14): the monitored tool's DR (DL for 427 in the tool axis) gets the deviation
+// added, even within tolerance; beyond its RBREAK the tool is locked and the program stops.
+bool KlartextInterpreter::applyToolMonitoring(int cycle, double monitored,
+                                              const cycles::probing::ToolCorrection& correction) {
+    const int tool = static_cast<int>(monitored);
+    const tables::ToolData* row = toolTable() != nullptr ? toolTable()->byNumber(tool) : nullptr;
+    if (row == nullptr) {
+        fail("PRB-012",
+             KERF_TR_NOOP("touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in "
+                          "the tool table"),
+             {std::to_string(cycle), std::to_string(tool)});
+        return false;
+    }
+    ToolTableEdit edit;
+    if (!correction.breakageOnly) {
+        (correction.length ? edit.deltaLength : edit.deltaRadius) =
+            (correction.length ? row->deltaLength : row->deltaRadius) + correction.delta;
+    }
+    const double breakage = toolTable()->numberCell(tool, "RBREAK").value_or(0.0);
+    edit.lock = breakage > 0.0 && std::abs(correction.delta) > breakage;
+    if ((edit.deltaLength || edit.deltaRadius || edit.lock) && !writeToolTable(cycle, tool, edit)) {
+        return false;
+    }
+    if (edit.lock) {
+        fail("PRB-007",
+             KERF_TR_NOOP("touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond "
+                          "RBREAK); it is locked"),
+             {std::to_string(cycle), std::to_string(tool), std::to_string(correction.delta)});
+        return false;
+    }
+    return true;
+}
+
+}  // namespace kerf::klartext
