@@ -6869,6 +6869,90 @@ zyklen</translation>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>die Kontur von LBL {1} liegt mehr als 1.000.000 mm vom Nullpunkt entfernt</translation>
     </message>
+    <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Gleichlauf oder Gegenlauf (+1 Gleichlauf, -1 Gegenlauf, 0 abwechselnd)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Akzeptiertes Restmaterial</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Maximaler Verbindungsabstand</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Bahnverlängerung</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>Zyklus {1}: mit Zyklus 270 muss das Kontur-Unterprogramm ohne RL/RR programmiert sein (Q391 gibt die Seite vor)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>Zyklus {1}: Restbearbeitung (Q18) wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>KONTUR-ZUG</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Art der An-/Wegfahrt (1 Kreisbogen, 2 tangentiale Gerade, 3 senkrecht)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Radiuskorrektur (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Radius des An-/Wegfahrkreises</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Mittelpunktswinkel des An-/Wegfahrkreises</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Abstand des Hilfspunkts</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>KONTURZUG-DATEN</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>Zyklus {1}: Zyklus 14 muss genau ein Kontur-Unterprogramm enthalten (die Mittellinie der Nut)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>Zyklus {1}: der Startpunkt einer geschlossenen Nut darf nicht auf einer Konturecke liegen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>Zyklus {1}: die Zustell-Tiefe Q202 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>Zyklus {1}: die Nutbreite abzüglich der Aufmaße Seite ist größer als der doppelte Werkzeugdurchmesser</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>Zyklus {1}: die Zustellung pro Umdrehung Q436 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Zustellung pro Umdrehung (Trochoidalschleife)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Eintauchstrategie (0 senkrecht, 1 ohne Funktion, 2 pendelnd)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>KONTURNUT TROCHOIDAL</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

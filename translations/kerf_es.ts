@@ -6869,6 +6869,90 @@ fijos</translation>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>el contorno de LBL {1} está a más de 1.000.000 mm del origen</translation>
     </message>
+    <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Fresado sincronizado o a contramarcha (+1 sincronizado, -1 contramarcha, 0 alternado)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Material residual aceptado</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Distancia máxima de conexión</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Prolongación de la trayectoria</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>ciclo {1}: con el ciclo 270 el subprograma de contorno debe programarse sin RL/RR (Q391 da el lado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>ciclo {1}: el mecanizado de material residual (Q18) aún no está soportado</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>TRAZADO CONTORNO</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Tipo de aproximación/salida (1 arco, 2 recta tangencial, 3 perpendicular)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Corrección de radio (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Radio del arco de aproximación/salida</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Ángulo central del arco de aproximación/salida</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Distancia del punto auxiliar</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>DATOS TRAZADO CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>ciclo {1}: el ciclo 14 debe indicar exactamente un subprograma de contorno (la línea central de la ranura)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>ciclo {1}: el punto inicial de una ranura cerrada no puede estar en una esquina del contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>ciclo {1}: la profundidad de pasada Q202 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>ciclo {1}: el ancho de ranura menos las sobremedidas laterales es mayor que el doble del diámetro de la herramienta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>ciclo {1}: el avance por vuelta Q436 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Avance por vuelta (bucle trocoidal)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Estrategia de profundización (0 vertical, 1 sin función, 2 pendular)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>RANURA TROCOIDAL</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6872,6 +6872,90 @@ stałe</translation>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>kontur LBL {1} leży dalej niż 1 000 000 mm od punktu zerowego</translation>
     </message>
+    <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Frezowanie współbieżne lub przeciwbieżne (+1 współbieżne, -1 przeciwbieżne, 0 na przemian)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Akceptowany materiał resztkowy</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Maksymalna odległość połączenia</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Wydłużenie toru</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>cykl {1}: z cyklem 270 podprogram konturu musi być zaprogramowany bez RL/RR (Q391 określa stronę)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>cykl {1}: obróbka materiału resztkowego (Q18) nie jest jeszcze obsługiwana</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>LINIA KONTURU</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Rodzaj dosunięcia/odsunięcia (1 łuk, 2 prosta styczna, 3 prostopadle)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Korekcja promienia (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Promień łuku dosunięcia/odsunięcia</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Kąt środkowy łuku dosunięcia/odsunięcia</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Odległość punktu pomocniczego</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>DANE LINII KONTURU</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>cykl {1}: cykl 14 musi zawierać dokładnie jeden podprogram konturu (linię środkową rowka)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>cykl {1}: punkt startu zamkniętego rowka nie może leżeć na narożu konturu</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>cykl {1}: głębokość dosuwu Q202 musi być większa od 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>cykl {1}: szerokość rowka pomniejszona o naddatki boczne jest większa niż dwukrotna średnica narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>cykl {1}: dosuw na obrót Q436 musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Dosuw na obrót (pętla trochoidalna)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Strategia wcięcia (0 pionowo, 1 bez funkcji, 2 ruchem wahadłowym)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>ROWEK KONTURU TROCHOIDALNIE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6869,6 +6869,90 @@ fixos</translation>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>o contorno de LBL {1} fica a mais de 1.000.000 mm da origem</translation>
     </message>
+    <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Fresagem sincronizada ou em contramarcha (+1 sincronizada, -1 contramarcha, 0 alternada)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Material residual aceite</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Distância máxima de ligação</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Prolongamento da trajetória</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>ciclo {1}: com o ciclo 270 o subprograma de contorno deve ser programado sem RL/RR (Q391 define o lado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>ciclo {1}: a maquinagem de material residual (Q18) ainda não é suportada</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>TRAÇADO DE CONTORNO</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Tipo de aproximação/saída (1 arco, 2 reta tangencial, 3 perpendicular)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Correção do raio (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Raio do arco de aproximação/saída</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Ângulo central do arco de aproximação/saída</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Distância do ponto auxiliar</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>DADOS DE TRAÇADO DE CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>ciclo {1}: o ciclo 14 deve indicar exatamente um subprograma de contorno (a linha central da ranhura)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>ciclo {1}: o ponto inicial de uma ranhura fechada não pode estar sobre uma esquina do contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>ciclo {1}: a profundidade de passo Q202 deve ser maior que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>ciclo {1}: a largura da ranhura menos os sobre-metais laterais é maior que o dobro do diâmetro da ferramenta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>ciclo {1}: o avanço por rotação Q436 deve ser maior que 0</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Avanço por rotação (laço trocoidal)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Estratégia de afundamento (0 perpendicular, 1 sem função, 2 pendular)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>RANHURA DE CONTORNO TROCOIDAL</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
