@@ -14,5 +14,6 @@ extern const CycleDescriptor kCycle200, kCycle201, kCycle202, kCycle203, kCycle2
     kCycle240, kCycle241, kCycle247, kCycle251, kCycle252, kCycle253, kCycle254, kCycle256,
     kCycle257, kCycle258, kCycle262, kCycle263, kCycle264, kCycle265, kCycle267;
 extern const CycleDescriptor kCycle25, kCycle270, kCycle275;  // contour train, trochoidal slot
+extern const CycleDescriptor kCycle233;                       // face milling with side walls
 
 }  // namespace kerf::cycles
