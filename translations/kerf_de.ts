@@ -6953,6 +6953,42 @@ zyklen</translation>
         <source>TROCHOIDAL SLOT</source>
         <translation>KONTURNUT TROCHOIDAL</translation>
     </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Strategie (0 mäanderförmig außen, 1 mäanderförmig am Rand, 2 zeilenweise, 3 zeilenweise bis zum Rand, 4 spiralförmig)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Fräsrichtung (1 Hauptachse, 2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1. Begrenzung (0 keine, -1/+1 Hauptachse, -2/+2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2. Begrenzung (0 keine, -1/+1 Hauptachse, -2/+2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3. Begrenzung (0 keine, -1/+1 Hauptachse, -2/+2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Eckenradius</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>Zyklus {1}: Begrenzungen Q347-Q349 sind mit der Spiralstrategie Q389 = 4 nicht möglich</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>Zyklus {1}: Wände an beiden Enden der Fräsrichtung werden noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>Zyklus {1}: das Werkzeug ist zu groß für die Fläche zwischen ihren Wänden</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6953,6 +6953,42 @@ fijos</translation>
         <source>TROCHOIDAL SLOT</source>
         <translation>RANURA TROCOIDAL</translation>
     </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Estrategia (0 meandro fuera, 1 meandro en el borde, 2 línea a línea, 3 línea a línea hasta el borde, 4 espiral)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Dirección de fresado (1 eje principal, 2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1er límite (0 ninguno, -1/+1 eje principal, -2/+2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2º límite (0 ninguno, -1/+1 eje principal, -2/+2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3er límite (0 ninguno, -1/+1 eje principal, -2/+2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Radio de esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>ciclo {1}: los límites Q347-Q349 no son posibles con la estrategia en espiral Q389 = 4</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>ciclo {1}: las paredes en ambos extremos de la dirección de fresado aún no están soportadas</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>ciclo {1}: la herramienta es demasiado grande para la superficie entre sus paredes</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6956,6 +6956,42 @@ stałe</translation>
         <source>TROCHOIDAL SLOT</source>
         <translation>ROWEK KONTURU TROCHOIDALNIE</translation>
     </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Strategia (0 meander na zewnątrz, 1 meander na krawędzi, 2 wierszami, 3 wierszami do krawędzi, 4 spirala)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Kierunek frezowania (1 oś główna, 2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1. ograniczenie (0 brak, -1/+1 oś główna, -2/+2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2. ograniczenie (0 brak, -1/+1 oś główna, -2/+2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3. ograniczenie (0 brak, -1/+1 oś główna, -2/+2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Promień naroża</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>cykl {1}: ograniczenia Q347-Q349 nie są możliwe ze strategią spiralną Q389 = 4</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>cykl {1}: ścianki na obu końcach kierunku frezowania nie są jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>cykl {1}: narzędzie jest za duże dla powierzchni między jej ściankami</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6953,6 +6953,42 @@ fixos</translation>
         <source>TROCHOIDAL SLOT</source>
         <translation>RANHURA DE CONTORNO TROCOIDAL</translation>
     </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Estratégia (0 meandro fora, 1 meandro na aresta, 2 linha a linha, 3 linha a linha até à aresta, 4 espiral)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Direção de fresagem (1 eixo principal, 2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1.º limite (0 nenhum, -1/+1 eixo principal, -2/+2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2.º limite (0 nenhum, -1/+1 eixo principal, -2/+2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3.º limite (0 nenhum, -1/+1 eixo principal, -2/+2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Raio de esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>ciclo {1}: os limites Q347-Q349 não são possíveis com a estratégia em espiral Q389 = 4</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>ciclo {1}: paredes em ambas as extremidades da direção de fresagem ainda não são suportadas</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>ciclo {1}: a ferramenta é demasiado grande para a superfície entre as suas paredes</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
