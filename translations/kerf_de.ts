@@ -6989,6 +6989,62 @@ zyklen</translation>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
         <translation>Zyklus {1}: das Werkzeug ist zu groß für die Fläche zwischen ihren Wänden</translation>
     </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. BEGRENZUNG</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. BEGRENZUNG</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. BEGRENZUNG</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>FRÄSRICHTUNG</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>ANFAHRART</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>RADIUSKORREKTUR</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>RADIUS</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>MITTELPUNKTSWINKEL</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>ABSTAND</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>ZUST. PRO UMDR.</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>RESTMATERIAL</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>VERBINDUNGSABSTAND</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>BAHNVERLÄNGERUNG</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>FRÄSSTRATEGIE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

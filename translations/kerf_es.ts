@@ -6989,6 +6989,62 @@ fijos</translation>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
         <translation>ciclo {1}: la herramienta es demasiado grande para la superficie entre sus paredes</translation>
     </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. LIMITE</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. LIMITE</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. LIMITE</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>DIRECCIÓN FRESADO</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>TIPO APROXIMACIÓN</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>CORRECCIÓN RADIO</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>RADIO</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>ÁNGULO CENTRAL</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>DISTANCIA</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>AVANCE POR VUELTA</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>MATERIAL RESIDUAL</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>DISTANCIA CONEXIÓN</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>PROLONG. TRAYECT.</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>ESTRATEGIA FRESADO</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

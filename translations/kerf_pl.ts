@@ -6992,6 +6992,62 @@ stałe</translation>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
         <translation>cykl {1}: narzędzie jest za duże dla powierzchni między jej ściankami</translation>
     </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. OGRANICZENIE</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. OGRANICZENIE</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. OGRANICZENIE</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>KIERUNEK FREZOWANIA</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>RODZAJ DOSUNIĘCIA</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>KOREKCJA PROMIENIA</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>PROMIEŃ</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>KĄT ŚRODKOWY</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>ODSTĘP</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>DOSUW NA OBRÓT</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>MATERIAŁ RESZTKOWY</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>ODLEGŁOŚĆ POŁĄCZENIA</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>WYDŁUŻENIE TORU</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>STRATEGIA FREZOWANIA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -6989,6 +6989,62 @@ fixos</translation>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
         <translation>ciclo {1}: a ferramenta é demasiado grande para a superfície entre as suas paredes</translation>
     </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. LIMITE</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. LIMITE</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. LIMITE</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>DIREÇÃO FRESAGEM</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>TIPO APROXIMAÇÃO</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>CORREÇÃO RAIO</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>RAIO</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>ÂNGULO CENTRAL</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>DISTÂNCIA</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>AVANÇO POR ROTAÇÃO</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>MATERIAL RESIDUAL</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>DISTÂNCIA LIGAÇÃO</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>PROLONG. TRAJETÓRIA</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>ESTRATÉGIA FRESAGEM</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
