@@ -7045,6 +7045,22 @@ zyklen</translation>
         <source>MILLING STRATEGY</source>
         <translation>FRÄSSTRATEGIE</translation>
     </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>Zyklus {1}: Zyklus 14 muss genau ein Kontur-Unterprogramm enthalten</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>Zyklus {1}: das Werkzeug steht beim Aufruf unterhalb der Sicheren Höhe Q7</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>3D-KONTUR-ZUG</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>der erste Satz eines 3D-Kontur-Unterprogramms muss auch die Werkzeugachse enthalten</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -7045,6 +7045,22 @@ fijos</translation>
         <source>MILLING STRATEGY</source>
         <translation>ESTRATEGIA FRESADO</translation>
     </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>ciclo {1}: el ciclo 14 debe indicar exactamente un subprograma de contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>ciclo {1}: la herramienta está por debajo de la altura de seguridad Q7 en la llamada</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>TRAZADO CONTORNO 3D</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>la primera frase de un subprograma de contorno 3D también debe indicar el eje de la herramienta</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -7048,6 +7048,22 @@ stałe</translation>
         <source>MILLING STRATEGY</source>
         <translation>STRATEGIA FREZOWANIA</translation>
     </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>cykl {1}: cykl 14 musi zawierać dokładnie jeden podprogram konturu</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>cykl {1}: narzędzie znajduje się przy wywołaniu poniżej wysokości bezpiecznej Q7</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>LINIA KONTURU 3D</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>pierwszy blok podprogramu konturu 3D musi podawać także oś narzędzia</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -7045,6 +7045,22 @@ fixos</translation>
         <source>MILLING STRATEGY</source>
         <translation>ESTRATÉGIA FRESAGEM</translation>
     </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>ciclo {1}: o ciclo 14 deve indicar exatamente um subprograma de contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>ciclo {1}: a ferramenta está abaixo da altura segura Q7 na chamada</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>TRAÇADO DO CONTORNO 3D</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>o primeiro bloco de um subprograma de contorno 3D também deve indicar o eixo da ferramenta</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -3,6 +3,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/canon/commands.h"
@@ -46,13 +47,15 @@ struct SubContour {
     int label = 0;
 };
 
-// Cycles 25 and 275: the first contour subprogram of cycle 14 as a path, open or closed, as
+// Cycles 25, 275 and 276: the first contour subprogram of cycle 14 as a path, open or closed, as
 // programmed (25: the contour to follow; 275: the slot's centre line).
 struct ContourTrain {
     std::vector<PlanarSegment> segments;
     int side = 0;           // radius compensation of its first move: +1 RL, -1 RR, 0 R0
     bool closed = false;    // ends where it starts
     bool approach = false;  // begins with an APPR block (275: an open slot)
+    // 276: the tool-axis coordinate at the start and end of each segment (empty: planar).
+    std::vector<std::pair<double, double>> heights;
     size_t labelCount = 0;  // labels listed in cycle 14
     int label = 0;
 };

@@ -180,6 +180,7 @@ constexpr CycleComment kCycleComments[] = {
     {257, 223, QT_TRANSLATE_NOOP("kerf", "FINISHED PART DIA.")},
     {258, 220, QT_TRANSLATE_NOOP("kerf", "RADIUS / CHAMFER")},
     {275, 219, QT_TRANSLATE_NOOP("kerf", "SLOT WIDTH")},
+    {276, 12, QT_TRANSLATE_NOOP("kerf", "FEED RATE FOR MILLING")},
     {262, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},
     {263, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},
     {264, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},

@@ -1,8 +1,12 @@
 #include "core/cycles/contour/contour_train.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include "core/base/translate.h"
+#include "core/cycles/contour/sl_machining.h"
 #include "core/geometry/arc_math.h"
 #include "core/geometry/contour_region.h"
 #include "core/geometry/open_chain_offset.h"
@@ -25,6 +29,19 @@ Chain reversedChain(const Chain& chain) {
     for (auto it = chain.rbegin(); it != chain.rend(); ++it)
         out.push_back(it->reversed());
     return out;
+}
+
+std::optional<CycleError> trainToolSide(int cycle, const CycleContext& ctx, int& side) {
+    side = ctx.train.side;
+    if (ctx.trainData == nullptr) return std::nullopt;
+    if (side != 0) {
+        return contourError(cycle, KERF_TR_NOOP("cycle {1}: with cycle 270 the contour "
+                                                "subprogram must be programmed without RL/RR "
+                                                "(Q391 gives the side)"));
+    }
+    const int q391 = ctx.trainData->integer(391);
+    side = q391 == 1 ? 1 : q391 == 2 ? -1 : 0;
+    return std::nullopt;
 }
 
 Chain trainCentrePath(const ContourTrain& train, int side, double distance) {
@@ -121,6 +138,60 @@ void followChain(CyclePath& path, const Chain& chain, const Feed& feed) {
     for (const PlanarSegment& s : chain) {
         if (s.kind == PlanarSegment::Kind::Line) {
             path.moveUv(s.end, feed);
+        } else {
+            path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
+        }
+    }
+}
+
+namespace {
+
+// Where along the segment (0 ... 1) its point nearest to `p` lies.
+double fractionNear(const PlanarSegment& s, const Vec2& p) {
+    if (s.kind == PlanarSegment::Kind::Line) {
+        const Vec2 d = s.end - s.start;
+        const double lengthSquared = d.squaredNorm();
+        return lengthSquared > 0.0 ? std::clamp((p - s.start).dot(d) / lengthSquared, 0.0, 1.0)
+                                   : 0.0;
+    }
+    const Vec2 a = s.start - s.center;
+    const Vec2 b = p - s.center;
+    double angle = std::atan2(cross2(a, b), a.dot(b));  // from the start, counter-clockwise
+    if (s.sweep < 0.0) angle = -angle;
+    if (angle < 0.0) angle += 2.0 * std::numbers::pi;
+    const double sweep = std::fabs(s.sweep);
+    if (angle > sweep) {  // beyond the end: the nearer end
+        return angle - sweep < 2.0 * std::numbers::pi - angle ? 1.0 : 0.0;
+    }
+    return sweep > 0.0 ? angle / sweep : 0.0;
+}
+
+}  // namespace
+
+double heightNear(const ContourTrain& train, const Vec2& p, bool fromEnd) {
+    const size_t n = std::min(train.segments.size(), train.heights.size());
+    size_t best = 0;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < n; ++k) {
+        const size_t i = fromEnd ? n - 1 - k : k;
+        const double d = train.segments[i].distanceTo(p);
+        if (d < bestDistance - 1e-9) {
+            bestDistance = d;
+            best = i;
+        }
+    }
+    if (n == 0) return 0.0;
+    const auto [from, to] = train.heights[best];
+    return from + (to - from) * fractionNear(train.segments[best], p);
+}
+
+void followChain3d(CyclePath& path, const Chain& chain, const ContourTrain& train, double shift,
+                   const Feed& feed) {
+    for (size_t i = 0; i < chain.size(); ++i) {
+        const PlanarSegment& s = chain[i];
+        const double w = heightNear(train, s.end, i + 1 == chain.size()) + shift;
+        if (s.kind == PlanarSegment::Kind::Line) {
+            path.move({s.end.x(), s.end.y(), w}, feed);
         } else {
             path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
         }

@@ -14,6 +14,10 @@ using Chain = std::vector<PlanarSegment>;
 
 Chain reversedChain(const Chain& chain);
 
+// The side of the tool (+1 left, -1 right, 0 on the path): the subprogram's RL/RR, or cycle
+// 270's Q391 (then the subprogram must be written without compensation).
+std::optional<CycleError> trainToolSide(int cycle, const CycleContext& context, int& side);
+
 // The tool centre `distance` (>= 0) beside the path on side `side` (+1 left of its direction,
 // -1 right, 0 on the path itself). A closed path gives a closed path starting nearest to its
 // start. Empty when the tool does not fit (the offset vanishes or splits).
@@ -39,5 +43,13 @@ void departPath(CyclePath& path, const TrainApproach& a, const Chain& chain, int
 
 // Follows an open or closed chain from its start at the current tool-axis height.
 void followChain(CyclePath& path, const Chain& chain, const Feed& feed);
+
+// Cycle 276: the tool-axis coordinate of the programmed path where it is nearest to `p` (ties:
+// the first segment, or the last with `fromEnd`), each segment's height linear along it.
+double heightNear(const ContourTrain& train, const Vec2& p, bool fromEnd);
+
+// Follows a chain beside a 3-D path: each segment ends at the path's height there plus `shift`.
+void followChain3d(CyclePath& path, const Chain& chain, const ContourTrain& train, double shift,
+                   const Feed& feed);
 
 }  // namespace kerf::cycles::contour

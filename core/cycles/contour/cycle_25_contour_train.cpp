@@ -75,21 +75,6 @@ constexpr ParameterDescriptor kParameters[] = {
                         .defaultValue = 2.0}),
 };
 
-// The side of the tool: the subprogram's RL/RR, or cycle 270's Q391 (then the subprogram must
-// be written without compensation).
-std::optional<CycleError> toolSide(const CycleContext& ctx, int& side) {
-    side = ctx.train.side;
-    if (ctx.trainData == nullptr) return std::nullopt;
-    if (side != 0) {
-        return contourError(25, KERF_TR_NOOP("cycle {1}: with cycle 270 the contour subprogram "
-                                             "must be programmed without RL/RR (Q391 gives the "
-                                             "side)"));
-    }
-    const int q391 = ctx.trainData->integer(391);
-    side = q391 == 1 ? 1 : q391 == 2 ? -1 : 0;
-    return std::nullopt;
-}
-
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
     if (ctx.train.labelCount == 0) {
         return contourError(25, KERF_TR_NOOP("cycle {1} needs cycle 14 CONTOUR before it"));
@@ -100,7 +85,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                                              "yet"));
     }
     int side = 0;
-    if (auto e = toolSide(ctx, side)) return e;
+    if (auto e = trainToolSide(25, ctx, side)) return e;
     const double distance = ctx.tool.radius + v.number(3);
     if (side != 0 && distance < 0.0) return pocket::toolTooLarge(25);
     const Chain centre = trainCentrePath(ctx.train, side, distance);

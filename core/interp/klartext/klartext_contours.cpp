@@ -111,17 +111,21 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     out = cycles::ContourTrain{};
     out.labelCount = m_contourLabels.size();
     if (m_contourLabels.empty()) return true;  // the cycle asks for cycle 14
-    // Spec §6.1: cycle 25 uses the first label only, 275 needs exactly one (it checks).
+    // Spec §6.1: cycle 25 uses the first label only, 275 and 276 need exactly one (they check).
     LabelTarget target;
     target.number = m_contourLabels.front();
     const LabelPosition* position = resolveLabel(target);
     if (position == nullptr) return false;
     CapturedChain chain;
-    if (!captureChain(*position, cycle == 275, chain)) return false;
+    ChainRules rules;
+    rules.approach = cycle == 275;
+    rules.toolAxis = cycle == 276;
+    if (!captureChain(*position, rules, chain)) return false;
     if (!checkContourReach(chain.segments, *target.number)) return false;
     out.segments = std::move(chain.segments);
     out.side = chain.side == CompWord::Left ? 1 : chain.side == CompWord::Right ? -1 : 0;
     out.approach = chain.approach;
+    if (rules.toolAxis) out.heights = std::move(chain.heights);
     out.label = *target.number;
     const Vec2 start = out.segments.front().start;
     out.closed = (out.segments.back().end - start).norm() <= 1e-6;
@@ -129,7 +133,7 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     return true;
 }
 
-bool KlartextInterpreter::captureChain(const LabelPosition& position, bool approachAllowed,
+bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules rules,
                                        CapturedChain& out) {
     // The subprogram runs in program coordinates (the cycle's moves are transformed later),
     // without compensation (RL/RR only tell pocket from island), from the current position.
@@ -188,11 +192,12 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, bool appro
         }
         firstBlock = false;
         const bool approach = std::holds_alternative<ApproachBlock>(s);
-        if (!allowedInContour(s) && !(approach && approachAllowed)) {
+        if (!allowedInContour(s) && !(approach && rules.approach)) {
             fail("contour", KERF_TR_NOOP("this block is not allowed in a contour subprogram"));
             break;
         }
-        if (const Coordinates* c = coordinatesOf(s); c != nullptr && c->has(axes.normal)) {
+        if (const Coordinates* c = coordinatesOf(s);
+            c != nullptr && c->has(axes.normal) && !rules.toolAxis) {
             fail("contour", KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
             break;
         }
@@ -202,6 +207,11 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, bool appro
             if (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second)) {
                 fail("contour", KERF_TR_NOOP("the first block of a contour subprogram must be a "
                                              "straight line with both working-plane axes"));
+                break;
+            }
+            if (rules.toolAxis && !l->coords.has(axes.normal)) {
+                fail("contour", KERF_TR_NOOP("the first block of a 3-D contour subprogram must "
+                                             "give the tool axis too"));
                 break;
             }
         }
@@ -232,7 +242,9 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, bool appro
     // The moves after the first (which leads to the start point) are the contour.
     std::vector<PlanarSegment>& contour = out.segments;
     contour.clear();
+    out.heights.clear();
     std::optional<Vec2> from;
+    double fromW = 0.0;
     for (const canon::Command& command : capture.commands) {
         const Pose* target = nullptr;
         const canon::ArcMove* arc = std::get_if<canon::ArcMove>(&command.body);
@@ -241,6 +253,8 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, bool appro
         if (arc != nullptr) target = &arc->target;
         if (target == nullptr) continue;
         const Vec2 to{(*target)[axes.first], (*target)[axes.second]};
+        const double toW = (*target)[axes.normal];
+        const size_t before = contour.size();
         if (from && (to - *from).norm() > 1e-9) {
             if (arc != nullptr) {
                 const Vec2 centre{arc->center[axisIndex(axes.first)],
@@ -254,7 +268,9 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, bool appro
                               arc->center[axisIndex(axes.second)]};
             contour.push_back(PlanarSegment::arc(*from, centre, arc->sweepRad));
         }
+        if (contour.size() > before) out.heights.emplace_back(fromW, toW);
         from = to;
+        fromW = toW;
     }
     out.side = side.value_or(CompWord::Off);
     return true;
@@ -284,7 +300,7 @@ bool KlartextInterpreter::checkContourReach(const std::vector<PlanarSegment>& se
 bool KlartextInterpreter::captureContour(const LabelPosition& position, int label,
                                          cycles::SubContour& out) {
     CapturedChain chain;
-    if (!captureChain(position, false, chain)) return false;
+    if (!captureChain(position, ChainRules{}, chain)) return false;
     if (!checkContourReach(chain.segments, label)) return false;
     ClosedContour contour;
     contour.segments = std::move(chain.segments);

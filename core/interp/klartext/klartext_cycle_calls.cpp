@@ -170,7 +170,7 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
         return false;
     }
     if (d.group == cycles::CycleGroup::Contours) {
-        if (d.number == 25 || d.number == 275) {
+        if (d.number == 25 || d.number == 275 || d.number == 276) {
             if (!captureTrain(d.number, ctx.train)) return false;
             ctx.trainData = m_trainData ? &*m_trainData : nullptr;
         } else if (!captureContours(ctx.contours)) {

@@ -241,5 +241,25 @@ TEST(ContourTrain, Errors) {
     EXPECT_NE(e->messageTemplate.find("without RL/RR"), std::string::npos);
 }
 
+// Cycle 276 follows the heights of a 3-D path: the line X0..20 from Z-1 to Z-3 with R0 is
+// followed on itself, the end at Z-3; the tool must come from at or above Q7; one label only.
+TEST(ContourTrain3d, FollowsTheHeightsAndRefusesATooLowStart) {
+    CycleContext ctx = trainContext({PlanarSegment::line({0.0, 0.0}, {20.0, 0.0})});
+    ctx.train.heights = {{-1.0, -3.0}};
+    CycleValues v = train(0.0, 1);
+    v.set(1, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(276, v, ctx, out));
+    ASSERT_GE(out.moves.size(), 4u);
+    const Move& cut = out.moves[out.moves.size() - 2];
+    EXPECT_NEAR((cut.target - Vec3(20.0, 0.0, -3.0)).norm(), 0.0, 1e-9);
+    CycleContext low = ctx;
+    low.start.z() = 10.0;  // below Q7 = 50
+    EXPECT_TRUE(run(276, v, low, out));
+    CycleContext two = ctx;
+    two.train.labelCount = 2;
+    EXPECT_TRUE(run(276, v, two, out));
+}
+
 }  // namespace
 }  // namespace kerf::cycles
