@@ -7206,6 +7206,198 @@ zyklen</translation>
         <translation>Tastsystemzyklus {1}: Werkzeug {2} ist gebrochen (Abweichung {3} mm über RBREAK); es ist gesperrt</translation>
     </message>
     <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Gleichlauf oder Gegenlauf (+1 Gleichlauf, -1 Gegenlauf, 0 abwechselnd)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Akzeptiertes Restmaterial</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Maximaler Verbindungsabstand</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Bahnverlängerung</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>Zyklus {1}: mit Zyklus 270 muss das Kontur-Unterprogramm ohne RL/RR programmiert sein (Q391 gibt die Seite vor)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>Zyklus {1}: Restbearbeitung (Q18) wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>KONTUR-ZUG</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Art der An-/Wegfahrt (1 Kreisbogen, 2 tangentiale Gerade, 3 senkrecht)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Radiuskorrektur (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Radius des An-/Wegfahrkreises</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Mittelpunktswinkel des An-/Wegfahrkreises</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Abstand des Hilfspunkts</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>KONTURZUG-DATEN</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>Zyklus {1}: Zyklus 14 muss genau ein Kontur-Unterprogramm enthalten (die Mittellinie der Nut)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>Zyklus {1}: der Startpunkt einer geschlossenen Nut darf nicht auf einer Konturecke liegen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>Zyklus {1}: die Zustell-Tiefe Q202 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>Zyklus {1}: die Nutbreite abzüglich der Aufmaße Seite ist größer als der doppelte Werkzeugdurchmesser</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>Zyklus {1}: die Zustellung pro Umdrehung Q436 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Zustellung pro Umdrehung (Trochoidalschleife)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Eintauchstrategie (0 senkrecht, 1 ohne Funktion, 2 pendelnd)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>KONTURNUT TROCHOIDAL</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Strategie (0 mäanderförmig außen, 1 mäanderförmig am Rand, 2 zeilenweise, 3 zeilenweise bis zum Rand, 4 spiralförmig)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Fräsrichtung (1 Hauptachse, 2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1. Begrenzung (0 keine, -1/+1 Hauptachse, -2/+2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2. Begrenzung (0 keine, -1/+1 Hauptachse, -2/+2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3. Begrenzung (0 keine, -1/+1 Hauptachse, -2/+2 Nebenachse)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Eckenradius</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>Zyklus {1}: Begrenzungen Q347-Q349 sind mit der Spiralstrategie Q389 = 4 nicht möglich</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>Zyklus {1}: Wände an beiden Enden der Fräsrichtung werden noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>Zyklus {1}: das Werkzeug ist zu groß für die Fläche zwischen ihren Wänden</translation>
+    </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. BEGRENZUNG</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. BEGRENZUNG</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. BEGRENZUNG</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>FRÄSRICHTUNG</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>ANFAHRART</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>RADIUSKORREKTUR</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>RADIUS</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>MITTELPUNKTSWINKEL</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>ABSTAND</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>ZUST. PRO UMDR.</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>RESTMATERIAL</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>VERBINDUNGSABSTAND</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>BAHNVERLÄNGERUNG</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>FRÄSSTRATEGIE</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>Zyklus {1}: Zyklus 14 muss genau ein Kontur-Unterprogramm enthalten</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>Zyklus {1}: das Werkzeug steht beim Aufruf unterhalb der Sicheren Höhe Q7</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>3D-KONTUR-ZUG</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>der erste Satz eines 3D-Kontur-Unterprogramms muss auch die Werkzeugachse enthalten</translation>
+    </message>
+    <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>FK-Programmierung arbeitet nur in der XY-Ebene (Werkzeugachse Z)</translation>
     </message>

@@ -7206,6 +7206,198 @@ fijos</translation>
         <translation>ciclo de palpación {1}: la herramienta {2} está rota (desviación {3} mm superior a RBREAK); queda bloqueada</translation>
     </message>
     <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Fresado sincronizado o a contramarcha (+1 sincronizado, -1 contramarcha, 0 alternado)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Material residual aceptado</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Distancia máxima de conexión</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Prolongación de la trayectoria</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>ciclo {1}: con el ciclo 270 el subprograma de contorno debe programarse sin RL/RR (Q391 da el lado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>ciclo {1}: el mecanizado de material residual (Q18) aún no está soportado</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>TRAZADO CONTORNO</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Tipo de aproximación/salida (1 arco, 2 recta tangencial, 3 perpendicular)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Corrección de radio (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Radio del arco de aproximación/salida</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Ángulo central del arco de aproximación/salida</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Distancia del punto auxiliar</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>DATOS TRAZADO CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>ciclo {1}: el ciclo 14 debe indicar exactamente un subprograma de contorno (la línea central de la ranura)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>ciclo {1}: el punto inicial de una ranura cerrada no puede estar en una esquina del contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>ciclo {1}: la profundidad de pasada Q202 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>ciclo {1}: el ancho de ranura menos las sobremedidas laterales es mayor que el doble del diámetro de la herramienta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>ciclo {1}: el avance por vuelta Q436 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Avance por vuelta (bucle trocoidal)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Estrategia de profundización (0 vertical, 1 sin función, 2 pendular)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>RANURA TROCOIDAL</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Estrategia (0 meandro fuera, 1 meandro en el borde, 2 línea a línea, 3 línea a línea hasta el borde, 4 espiral)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Dirección de fresado (1 eje principal, 2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1er límite (0 ninguno, -1/+1 eje principal, -2/+2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2º límite (0 ninguno, -1/+1 eje principal, -2/+2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3er límite (0 ninguno, -1/+1 eje principal, -2/+2 eje secundario)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Radio de esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>ciclo {1}: los límites Q347-Q349 no son posibles con la estrategia en espiral Q389 = 4</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>ciclo {1}: las paredes en ambos extremos de la dirección de fresado aún no están soportadas</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>ciclo {1}: la herramienta es demasiado grande para la superficie entre sus paredes</translation>
+    </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. LIMITE</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. LIMITE</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. LIMITE</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>DIRECCIÓN FRESADO</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>TIPO APROXIMACIÓN</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>CORRECCIÓN RADIO</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>RADIO</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>ÁNGULO CENTRAL</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>DISTANCIA</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>AVANCE POR VUELTA</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>MATERIAL RESIDUAL</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>DISTANCIA CONEXIÓN</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>PROLONG. TRAYECT.</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>ESTRATEGIA FRESADO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>ciclo {1}: el ciclo 14 debe indicar exactamente un subprograma de contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>ciclo {1}: la herramienta está por debajo de la altura de seguridad Q7 en la llamada</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>TRAZADO CONTORNO 3D</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>la primera frase de un subprograma de contorno 3D también debe indicar el eje de la herramienta</translation>
+    </message>
+    <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>La programación FK solo funciona en el plano XY (eje de herramienta Z)</translation>
     </message>

@@ -7209,6 +7209,198 @@ stałe</translation>
         <translation>cykl sondy {1}: narzędzie {2} jest złamane (odchyłka {3} mm ponad RBREAK); zostało zablokowane</translation>
     </message>
     <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Frezowanie współbieżne lub przeciwbieżne (+1 współbieżne, -1 przeciwbieżne, 0 na przemian)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Akceptowany materiał resztkowy</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Maksymalna odległość połączenia</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Wydłużenie toru</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>cykl {1}: z cyklem 270 podprogram konturu musi być zaprogramowany bez RL/RR (Q391 określa stronę)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>cykl {1}: obróbka materiału resztkowego (Q18) nie jest jeszcze obsługiwana</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>LINIA KONTURU</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Rodzaj dosunięcia/odsunięcia (1 łuk, 2 prosta styczna, 3 prostopadle)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Korekcja promienia (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Promień łuku dosunięcia/odsunięcia</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Kąt środkowy łuku dosunięcia/odsunięcia</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Odległość punktu pomocniczego</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>DANE LINII KONTURU</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>cykl {1}: cykl 14 musi zawierać dokładnie jeden podprogram konturu (linię środkową rowka)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>cykl {1}: punkt startu zamkniętego rowka nie może leżeć na narożu konturu</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>cykl {1}: głębokość dosuwu Q202 musi być większa od 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>cykl {1}: szerokość rowka pomniejszona o naddatki boczne jest większa niż dwukrotna średnica narzędzia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>cykl {1}: dosuw na obrót Q436 musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Dosuw na obrót (pętla trochoidalna)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Strategia wcięcia (0 pionowo, 1 bez funkcji, 2 ruchem wahadłowym)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>ROWEK KONTURU TROCHOIDALNIE</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Strategia (0 meander na zewnątrz, 1 meander na krawędzi, 2 wierszami, 3 wierszami do krawędzi, 4 spirala)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Kierunek frezowania (1 oś główna, 2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1. ograniczenie (0 brak, -1/+1 oś główna, -2/+2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2. ograniczenie (0 brak, -1/+1 oś główna, -2/+2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3. ograniczenie (0 brak, -1/+1 oś główna, -2/+2 oś pomocnicza)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Promień naroża</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>cykl {1}: ograniczenia Q347-Q349 nie są możliwe ze strategią spiralną Q389 = 4</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>cykl {1}: ścianki na obu końcach kierunku frezowania nie są jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>cykl {1}: narzędzie jest za duże dla powierzchni między jej ściankami</translation>
+    </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. OGRANICZENIE</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. OGRANICZENIE</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. OGRANICZENIE</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>KIERUNEK FREZOWANIA</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>RODZAJ DOSUNIĘCIA</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>KOREKCJA PROMIENIA</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>PROMIEŃ</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>KĄT ŚRODKOWY</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>ODSTĘP</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>DOSUW NA OBRÓT</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>MATERIAŁ RESZTKOWY</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>ODLEGŁOŚĆ POŁĄCZENIA</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>WYDŁUŻENIE TORU</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>STRATEGIA FREZOWANIA</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>cykl {1}: cykl 14 musi zawierać dokładnie jeden podprogram konturu</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>cykl {1}: narzędzie znajduje się przy wywołaniu poniżej wysokości bezpiecznej Q7</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>LINIA KONTURU 3D</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>pierwszy blok podprogramu konturu 3D musi podawać także oś narzędzia</translation>
+    </message>
+    <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>Programowanie FK działa tylko w płaszczyźnie XY (oś narzędzia Z)</translation>
     </message>

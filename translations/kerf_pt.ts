@@ -7206,6 +7206,198 @@ fixos</translation>
         <translation>ciclo de apalpação {1}: a ferramenta {2} está partida (desvio {3} mm acima de RBREAK); fica bloqueada</translation>
     </message>
     <message>
+        <source>Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)</source>
+        <translation>Fresagem sincronizada ou em contramarcha (+1 sincronizada, -1 contramarcha, 0 alternada)</translation>
+    </message>
+    <message>
+        <source>Accepted residual material</source>
+        <translation>Material residual aceite</translation>
+    </message>
+    <message>
+        <source>Maximum connection distance</source>
+        <translation>Distância máxima de ligação</translation>
+    </message>
+    <message>
+        <source>Path extension</source>
+        <translation>Prolongamento da trajetória</translation>
+    </message>
+    <message>
+        <source>cycle {1}: with cycle 270 the contour subprogram must be programmed without RL/RR (Q391 gives the side)</source>
+        <translation>ciclo {1}: com o ciclo 270 o subprograma de contorno deve ser programado sem RL/RR (Q391 define o lado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
+        <translation>ciclo {1}: a maquinagem de material residual (Q18) ainda não é suportada</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN</source>
+        <translation>TRAÇADO DE CONTORNO</translation>
+    </message>
+    <message>
+        <source>Type of approach/departure (1 arc, 2 tangent line, 3 perpendicular)</source>
+        <translation>Tipo de aproximação/saída (1 arco, 2 reta tangencial, 3 perpendicular)</translation>
+    </message>
+    <message>
+        <source>Radius compensation (0 R0, 1 RL, 2 RR)</source>
+        <translation>Correção do raio (0 R0, 1 RL, 2 RR)</translation>
+    </message>
+    <message>
+        <source>Radius of the approach/departure arc</source>
+        <translation>Raio do arco de aproximação/saída</translation>
+    </message>
+    <message>
+        <source>Centre angle of the approach/departure arc</source>
+        <translation>Ângulo central do arco de aproximação/saída</translation>
+    </message>
+    <message>
+        <source>Distance of the auxiliary point</source>
+        <translation>Distância do ponto auxiliar</translation>
+    </message>
+    <message>
+        <source>CONTOUR TRAIN DATA</source>
+        <translation>DADOS DE TRAÇADO DE CONTORNO</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram (the slot&apos;s centre line)</source>
+        <translation>ciclo {1}: o ciclo 14 deve indicar exatamente um subprograma de contorno (a linha central da ranhura)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the start point of a closed slot must not lie on a corner of the contour</source>
+        <translation>ciclo {1}: o ponto inicial de uma ranhura fechada não pode estar sobre uma esquina do contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the plunging depth Q202 must be greater than 0</source>
+        <translation>ciclo {1}: a profundidade de passo Q202 deve ser maior que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot width less the side allowances is more than twice the tool diameter</source>
+        <translation>ciclo {1}: a largura da ranhura menos os sobre-metais laterais é maior que o dobro do diâmetro da ferramenta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the infeed per revolution Q436 must be greater than 0</source>
+        <translation>ciclo {1}: o avanço por rotação Q436 deve ser maior que 0</translation>
+    </message>
+    <message>
+        <source>Infeed per revolution (trochoidal loop)</source>
+        <translation>Avanço por rotação (laço trocoidal)</translation>
+    </message>
+    <message>
+        <source>Plunging strategy (0 vertical, 1 no function, 2 reciprocating)</source>
+        <translation>Estratégia de afundamento (0 perpendicular, 1 sem função, 2 pendular)</translation>
+    </message>
+    <message>
+        <source>TROCHOIDAL SLOT</source>
+        <translation>RANHURA DE CONTORNO TROCOIDAL</translation>
+    </message>
+    <message>
+        <source>Strategy (0 meander outside, 1 meander on the edge, 2 line by line, 3 line by line to the edge, 4 spiral)</source>
+        <translation>Estratégia (0 meandro fora, 1 meandro na aresta, 2 linha a linha, 3 linha a linha até à aresta, 4 espiral)</translation>
+    </message>
+    <message>
+        <source>Milling direction (1 main axis, 2 secondary axis)</source>
+        <translation>Direção de fresagem (1 eixo principal, 2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>1st limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>1.º limite (0 nenhum, -1/+1 eixo principal, -2/+2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>2nd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>2.º limite (0 nenhum, -1/+1 eixo principal, -2/+2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>3rd limit (0 none, -1/+1 main axis, -2/+2 secondary axis)</source>
+        <translation>3.º limite (0 nenhum, -1/+1 eixo principal, -2/+2 eixo secundário)</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Raio de esquina</translation>
+    </message>
+    <message>
+        <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
+        <translation>ciclo {1}: os limites Q347-Q349 não são possíveis com a estratégia em espiral Q389 = 4</translation>
+    </message>
+    <message>
+        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
+        <translation>ciclo {1}: paredes em ambas as extremidades da direção de fresagem ainda não são suportadas</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is too large for the face between its walls</source>
+        <translation>ciclo {1}: a ferramenta é demasiado grande para a superfície entre as suas paredes</translation>
+    </message>
+    <message>
+        <source>1ST LIMIT</source>
+        <translation>1. LIMITE</translation>
+    </message>
+    <message>
+        <source>2ND LIMIT</source>
+        <translation>2. LIMITE</translation>
+    </message>
+    <message>
+        <source>3RD LIMIT</source>
+        <translation>3. LIMITE</translation>
+    </message>
+    <message>
+        <source>MILLING DIRECTION</source>
+        <translation>DIREÇÃO FRESAGEM</translation>
+    </message>
+    <message>
+        <source>TYPE OF APPROACH</source>
+        <translation>TIPO APROXIMAÇÃO</translation>
+    </message>
+    <message>
+        <source>RADIUS COMPENSATION</source>
+        <translation>CORREÇÃO RAIO</translation>
+    </message>
+    <message>
+        <source>RADIUS</source>
+        <translation>RAIO</translation>
+    </message>
+    <message>
+        <source>CENTER ANGLE</source>
+        <translation>ÂNGULO CENTRAL</translation>
+    </message>
+    <message>
+        <source>DISTANCE</source>
+        <translation>DISTÂNCIA</translation>
+    </message>
+    <message>
+        <source>INFEED PER REV.</source>
+        <translation>AVANÇO POR ROTAÇÃO</translation>
+    </message>
+    <message>
+        <source>RESIDUAL MATERIAL</source>
+        <translation>MATERIAL RESIDUAL</translation>
+    </message>
+    <message>
+        <source>CONNECTION DISTANCE</source>
+        <translation>DISTÂNCIA LIGAÇÃO</translation>
+    </message>
+    <message>
+        <source>PATH EXTENSION</source>
+        <translation>PROLONG. TRAJETÓRIA</translation>
+    </message>
+    <message>
+        <source>MILLING STRATEGY</source>
+        <translation>ESTRATÉGIA FRESAGEM</translation>
+    </message>
+    <message>
+        <source>cycle {1}: cycle 14 must list exactly one contour subprogram</source>
+        <translation>ciclo {1}: o ciclo 14 deve indicar exatamente um subprograma de contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool is below the clearance height Q7 at the call</source>
+        <translation>ciclo {1}: a ferramenta está abaixo da altura segura Q7 na chamada</translation>
+    </message>
+    <message>
+        <source>3-D CONTOUR TRAIN</source>
+        <translation>TRAÇADO DO CONTORNO 3D</translation>
+    </message>
+    <message>
+        <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
+        <translation>o primeiro bloco de um subprograma de contorno 3D também deve indicar o eixo da ferramenta</translation>
+    </message>
+    <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>A programação FK só funciona no plano XY (eixo da ferramenta Z)</translation>
     </message>

@@ -3,6 +3,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/canon/commands.h"
@@ -46,6 +47,19 @@ struct SubContour {
     int label = 0;
 };
 
+// Cycles 25, 275 and 276: the first contour subprogram of cycle 14 as a path, open or closed, as
+// programmed (25: the contour to follow; 275: the slot's centre line).
+struct ContourTrain {
+    std::vector<PlanarSegment> segments;
+    int side = 0;           // radius compensation of its first move: +1 RL, -1 RR, 0 R0
+    bool closed = false;    // ends where it starts
+    bool approach = false;  // begins with an APPR block (275: an open slot)
+    // 276: the tool-axis coordinate at the start and end of each segment (empty: planar).
+    std::vector<std::pair<double, double>> heights;
+    size_t labelCount = 0;  // labels listed in cycle 14
+    int label = 0;
+};
+
 struct CycleContext {
     Vec3 start{0.0, 0.0, 0.0};  // tool position when the cycle starts (hole centre in the plane)
     ToolInfo tool;
@@ -64,6 +78,9 @@ struct CycleContext {
     const CycleValues* contourData = nullptr;
     std::function<std::optional<ToolInfo>(int)> toolByNumber;
     double roughingRadius = 0.0;
+    // Cycles 25 and 275: the contour as a path; cycle 270's values (null without it).
+    ContourTrain train;
+    const CycleValues* trainData = nullptr;
 };
 
 // A problem that stops the cycle; the interpreter adds the location of the calling block.

@@ -23,8 +23,8 @@ CatalogueGroup catalogueGroup(const cycles::CycleDescriptor& cycle) {
     using cycles::CycleGroup;
     // Cycle 18 is a tapping cycle in the registry; the TNC lists it with the special cycles.
     if (cycle.number == 18) return CatalogueGroup::SpecialCycles;
-    // Face milling 232 sits with the pockets on the TNC softkeys.
-    if (cycle.number == 232) return CatalogueGroup::PocketsStudsSlots;
+    // Face milling 232 and 233 sit with the pockets on the TNC softkeys.
+    if (cycle.number == 232 || cycle.number == 233) return CatalogueGroup::PocketsStudsSlots;
     switch (cycle.group) {
         case CycleGroup::Drilling:
         case CycleGroup::Tapping:

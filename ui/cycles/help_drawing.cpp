@@ -104,6 +104,27 @@ HelpDrawing contourSection() {
     return d;
 }
 
+// Cycle 270: the contour seen from above, the tool coming onto it on an arc of radius Q392 over
+// the centre angle Q393 (or from an auxiliary point Q394 away).
+HelpDrawing contourTrainApproach() {
+    HelpDrawing d;
+    d.lines.moveTo(10, 70);
+    d.lines.lineTo(90, 70);
+    const QPointF centre(50, 45);
+    QPainterPath approach;
+    approach.arcMoveTo(QRectF(25, 20, 50, 50), 180);
+    approach.arcTo(QRectF(25, 20, 50, 50), 180, 90);
+    d.lines.addPath(approach);
+    d.solid.addEllipse(QPointF(25, 45), 3, 3);
+    d.dimensions = {
+        {{"Q392"}, arrow(centre, {50, 70}), {52, 58}},
+        {{"Q393"}, angleArc(centre, 12, 180, 90), {34, 36}},
+        {{"Q394"}, arrow({25, 45}, {25, 70}), {12, 58}},
+        {{"Q390", "Q391"}, dashes({50, 70}, {90, 70}), {62, 80}},
+    };
+    return d;
+}
+
 HelpDrawing pocketPlan() {
     HelpDrawing d;
     d.solid.addRoundedRect(QRectF(25, 30, 55, 40), 8, 8);
@@ -288,7 +309,7 @@ const HelpDimension* HelpDrawing::find(const QString& key) const {
 
 HelpDrawing helpDrawing(const cycles::CycleDescriptor& cycle) {
     using cycles::CycleGroup;
-    if (cycle.number == 232) return faceMilling();
+    if (cycle.number == 232 || cycle.number == 233) return faceMilling();
     if (cycle.number == 225) return engraving();
     switch (cycle.group) {
         case CycleGroup::Drilling:
@@ -305,7 +326,7 @@ HelpDrawing helpDrawing(const cycles::CycleDescriptor& cycle) {
         case CycleGroup::PocketsStudsSlots:
             return pocketPlan();
         case CycleGroup::Contours:
-            return contourSection();
+            return cycle.number == 270 ? contourTrainApproach() : contourSection();
     }
     return drillingSection(false);
 }

@@ -13,5 +13,8 @@ extern const CycleDescriptor kCycle200, kCycle201, kCycle202, kCycle203, kCycle2
     kCycle206, kCycle207, kCycle208, kCycle209, kCycle220, kCycle221, kCycle225, kCycle232,
     kCycle240, kCycle241, kCycle247, kCycle251, kCycle252, kCycle253, kCycle254, kCycle256,
     kCycle257, kCycle258, kCycle262, kCycle263, kCycle264, kCycle265, kCycle267;
+extern const CycleDescriptor kCycle25, kCycle270, kCycle275,
+    kCycle276;                           // contour train, trochoidal slot
+extern const CycleDescriptor kCycle233;  // face milling with side walls
 
 }  // namespace kerf::cycles

@@ -70,6 +70,11 @@ void approachArc(CyclePath& path, const ClosedContour& contour, const Vec2& norm
 void departureArc(CyclePath& path, const ClosedContour& contour, const Vec2& normal, double radius,
                   const Feed& feed);
 
+// Zig-zag along `stroke` down to `toW`, dropping at most `drop` per stroke (signed like the
+// infeed), then strokes at the depth back to the stroke's start.
+void reciprocateDown(CyclePath& path, const PlanarSegment& stroke, double toW, double drop,
+                     const Feed& feed);
+
 CycleError toolTooLarge(int cycle);
 
 }  // namespace kerf::cycles::pocket

@@ -102,30 +102,6 @@ PlanarSegment corePrefix(const PlanarSegment& core, double length) {
     return PlanarSegment::line(core.start, core.start + length * axis);
 }
 
-// Zig-zag along `stroke` down to `toW`, then strokes at the depth to flatten the ramp and end
-// where the stroke starts (the core's start: in a circular slot a straight way back would leave
-// the slot).
-void reciprocateDown(CyclePath& path, const PlanarSegment& stroke, double toW, double drop,
-                     const Feed& feed) {
-    bool forward = true;
-    auto go = [&](double w) {
-        const PlanarSegment s = forward ? stroke : stroke.reversed();
-        if (s.kind == PlanarSegment::Kind::Arc) {
-            path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
-        } else {
-            path.move({s.end.x(), s.end.y(), w}, feed);
-        }
-        forward = !forward;
-    };
-    // `drop` is signed like the infeed direction (positive when moving down in w).
-    while ((path.w() - toW) * drop > 1e-9) {
-        const double next = path.w() - drop;
-        go((next - toW) * drop > 0.0 ? next : toW);
-    }
-    go(toW);
-    if (!forward) go(toW);
-}
-
 }  // namespace
 
 PocketShape roundedPocket(double length, double width, double cornerRadius) {

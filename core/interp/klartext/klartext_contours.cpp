@@ -109,8 +109,34 @@ bool KlartextInterpreter::captureContours(std::vector<cycles::SubContour>& out) 
     return true;
 }
 
-bool KlartextInterpreter::captureContour(const LabelPosition& position, int label,
-                                         cycles::SubContour& out) {
+bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
+    out = cycles::ContourTrain{};
+    out.labelCount = m_contourLabels.size();
+    if (m_contourLabels.empty()) return true;  // the cycle asks for cycle 14
+    // Spec §6.1: cycle 25 uses the first label only, 275 and 276 need exactly one (they check).
+    LabelTarget target;
+    target.number = m_contourLabels.front();
+    const LabelPosition* position = resolveLabel(target);
+    if (position == nullptr) return false;
+    CapturedChain chain;
+    ChainRules rules;
+    rules.approach = cycle == 275;
+    rules.toolAxis = cycle == 276;
+    if (!captureChain(*position, rules, chain)) return false;
+    if (!checkContourReach(chain.segments, *target.number)) return false;
+    out.segments = std::move(chain.segments);
+    out.side = chain.side == CompWord::Left ? 1 : chain.side == CompWord::Right ? -1 : 0;
+    out.approach = chain.approach;
+    if (rules.toolAxis) out.heights = std::move(chain.heights);
+    out.label = *target.number;
+    const Vec2 start = out.segments.front().start;
+    out.closed = (out.segments.back().end - start).norm() <= 1e-6;
+    if (out.closed) out.segments.back().end = start;
+    return true;
+}
+
+bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules rules,
+                                       CapturedChain& out) {
     // The subprogram runs in program coordinates (the cycle's moves are transformed later),
     // without compensation (RL/RR only tell pocket from island), from the current position.
     const Pose programmed = m_programmed;
@@ -150,6 +176,7 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
     bool firstBlock = true;
     bool firstMove = true;
     std::optional<CompWord> side;
+    out.approach = false;
     size_t count = 0;
     while (m_status != interp::RunStatus::Failed && reader.next(line)) {
         m_at = SourceLocation{program.fileId, line.firstLine, 1, -1};
@@ -170,19 +197,27 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
             break;  // LBL 0, or the next subprogram
         }
         firstBlock = false;
-        if (!allowedInContour(s)) {
+        const bool approach = std::holds_alternative<ApproachBlock>(s);
+        if (!allowedInContour(s) && !(approach && rules.approach)) {
             fail("contour", KERF_TR_NOOP("this block is not allowed in a contour subprogram"));
             break;
         }
-        if (const Coordinates* c = coordinatesOf(s); c != nullptr && c->has(axes.normal)) {
+        if (const Coordinates* c = coordinatesOf(s);
+            c != nullptr && c->has(axes.normal) && !rules.toolAxis) {
             fail("contour", KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
             break;
         }
-        if (firstMove && movesInPlane(s)) {
+        if (firstMove && approach) out.approach = true;
+        if (firstMove && movesInPlane(s) && !out.approach) {
             const auto* l = std::get_if<LinearBlock>(&s);
             if (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second)) {
                 fail("contour", KERF_TR_NOOP("the first block of a contour subprogram must be a "
                                              "straight line with both working-plane axes"));
+                break;
+            }
+            if (rules.toolAxis && !l->coords.has(axes.normal)) {
+                fail("contour", KERF_TR_NOOP("the first block of a 3-D contour subprogram must "
+                                             "give the tool axis too"));
                 break;
             }
         }
@@ -191,7 +226,7 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
             break;
         }
         execute(s);
-        if (firstMove && movesInPlane(s)) {
+        if (firstMove && (movesInPlane(s) || approach)) {
             firstMove = false;
             side = m_comp;
         }
@@ -213,8 +248,11 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
     if (m_status == interp::RunStatus::Failed) return false;
 
     // The moves after the first (which leads to the start point) are the contour.
-    ClosedContour contour;
+    std::vector<PlanarSegment>& contour = out.segments;
+    contour.clear();
+    out.heights.clear();
     std::optional<Vec2> from;
+    double fromW = 0.0;
     for (const canon::Command& command : capture.commands) {
         const Pose* target = nullptr;
         const canon::ArcMove* arc = std::get_if<canon::ArcMove>(&command.body);
@@ -223,29 +261,37 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
         if (arc != nullptr) target = &arc->target;
         if (target == nullptr) continue;
         const Vec2 to{(*target)[axes.first], (*target)[axes.second]};
+        const double toW = (*target)[axes.normal];
+        const size_t before = contour.size();
         if (from && (to - *from).norm() > 1e-9) {
             if (arc != nullptr) {
                 const Vec2 centre{arc->center[axisIndex(axes.first)],
                                   arc->center[axisIndex(axes.second)]};
-                contour.segments.push_back(
-                    {PlanarSegment::Kind::Arc, *from, to, centre, arc->sweepRad});
+                contour.push_back({PlanarSegment::Kind::Arc, *from, to, centre, arc->sweepRad});
             } else {
-                contour.segments.push_back(PlanarSegment::line(*from, to));
+                contour.push_back(PlanarSegment::line(*from, to));
             }
         } else if (from && arc != nullptr && std::fabs(arc->sweepRad) > 1e-9) {
             const Vec2 centre{arc->center[axisIndex(axes.first)],
                               arc->center[axisIndex(axes.second)]};
-            contour.segments.push_back(PlanarSegment::arc(*from, centre, arc->sweepRad));
+            contour.push_back(PlanarSegment::arc(*from, centre, arc->sweepRad));
         }
+        if (contour.size() > before) out.heights.emplace_back(fromW, toW);
         from = to;
+        fromW = toW;
     }
+    out.side = side.value_or(CompWord::Off);
+    return true;
+}
+
+// Contour coordinates beyond any machine's reach would overflow the contour engine's grid.
+bool KlartextInterpreter::checkContourReach(const std::vector<PlanarSegment>& segments, int label) {
     const std::vector<std::string> args{std::to_string(label)};
-    if (contour.empty()) {
+    if (segments.empty()) {
         fail("contour", KERF_TR_NOOP("the contour subprogram LBL {1} has no contour"), args);
         return false;
     }
-    // Beyond any machine's reach the contour engine's integer grid would overflow.
-    for (const PlanarSegment& s : contour.segments) {
+    for (const PlanarSegment& s : segments) {
         for (const Vec2& p : {s.start, s.end, s.center}) {
             if (!p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxContourCoordinateMm) {
                 fail(
@@ -256,6 +302,18 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
             }
         }
     }
+    return true;
+}
+
+bool KlartextInterpreter::captureContour(const LabelPosition& position, int label,
+                                         cycles::SubContour& out) {
+    CapturedChain chain;
+    if (!captureChain(position, ChainRules{}, chain)) return false;
+    if (!checkContourReach(chain.segments, label)) return false;
+    ClosedContour contour;
+    contour.segments = std::move(chain.segments);
+    const std::optional<CompWord> side = chain.side;
+    const std::vector<std::string> args{std::to_string(label)};
     // The control closes a contour that ends elsewhere with a straight line (the islands of the
     // seed's chapter 7 example end one side short of their start).
     const Vec2 start = contour.segments.front().start;

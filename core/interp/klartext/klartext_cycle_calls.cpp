@@ -170,7 +170,12 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
         return false;
     }
     if (d.group == cycles::CycleGroup::Contours) {
-        if (!captureContours(ctx.contours)) return false;
+        if (d.number == 25 || d.number == 275 || d.number == 276) {
+            if (!captureTrain(d.number, ctx.train)) return false;
+            ctx.trainData = m_trainData ? &*m_trainData : nullptr;
+        } else if (!captureContours(ctx.contours)) {
+            return false;
+        }
         ctx.contourData = m_contourData ? &*m_contourData : nullptr;
         ctx.roughingRadius = m_roughingRadius;
         ctx.toolByNumber = [this](int number) -> std::optional<cycles::ToolInfo> {

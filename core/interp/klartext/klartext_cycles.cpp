@@ -202,6 +202,8 @@ void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
         runPatternCycle(*d, stored.values);
     } else if (def.number == 20) {
         m_contourData = std::move(stored.values);
+    } else if (def.number == 270) {
+        m_trainData = std::move(stored.values);
     } else if (def.number == 247) {
         const Pose at = m_frame.toWorkpiece(m_programmed);
         presetting(stored.values);

@@ -252,6 +252,20 @@ private:
     void contourLabels(const CycleDefinition& def);
     bool captureContours(std::vector<cycles::SubContour>& out);
     bool captureContour(const LabelPosition& position, int label, cycles::SubContour& out);
+    // Cycles 25, 275 and 276: the first label's contour as a path, open or closed.
+    bool captureTrain(int cycle, cycles::ContourTrain& out);
+    struct ChainRules {
+        bool approach = false;  // APPR/DEP allowed (275)
+        bool toolAxis = false;  // tool-axis coordinates allowed (276)
+    };
+    struct CapturedChain {
+        std::vector<PlanarSegment> segments;
+        std::vector<std::pair<double, double>> heights;  // tool axis at each segment's ends
+        CompWord side = CompWord::Off;                   // of the first move
+        bool approach = false;                           // the first move is an APPR block
+    };
+    bool captureChain(const LabelPosition& position, ChainRules rules, CapturedChain& out);
+    bool checkContourReach(const std::vector<PlanarSegment>& segments, int label);
     // Where moves go: the canonical stream, or a contour subprogram being read.
     interp::PathBuilder& activePath() { return m_capturePath ? *m_capturePath : m_path; }
     std::optional<double> lastValue(const CycleDefinition& def, const char* what);
@@ -422,6 +436,7 @@ private:
     // last cycle 22 (cycle 24's condition), and the path of a contour subprogram being read.
     std::vector<int> m_contourLabels;
     std::optional<cycles::CycleValues> m_contourData;
+    std::optional<cycles::CycleValues> m_trainData;  // cycle 270
     double m_roughingRadius = 0.0;
     interp::PathBuilder* m_capturePath = nullptr;
     FkState m_fk;

@@ -401,7 +401,7 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
         if (m_frame.flipsOrientation(workingPlane())) spec.side = flipped(spec.side);
         spec.contourPoint = m_frame.toWorkpiece(target);
         spec.moveToolAxis = block.coords.has(m_toolAxis);
-        if (!checkPathError(m_path.addApproach(spec))) return;
+        if (!checkPathError(activePath().addApproach(spec))) return;
         m_programmed = target;
     } else {
         if (block.kind == ApproachKind::LCT && !block.polar &&
@@ -410,9 +410,9 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
             return;
         }
         spec.endPoint = m_frame.toWorkpiece(target);
-        if (!checkPathError(m_path.addDeparture(spec))) return;
+        if (!checkPathError(activePath().addDeparture(spec))) return;
         m_comp = CompWord::Off;
-        m_programmed = m_frame.toProgram(m_path.toolPosition());
+        m_programmed = m_frame.toProgram(activePath().toolPosition());
         m_lastTangent.reset();
     }
     applyMFunctions(block.words.m, false);

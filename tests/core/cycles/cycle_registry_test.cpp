@@ -12,12 +12,12 @@ TEST(CycleRegistry, ListsEveryImplementedCycleOnce) {
     std::set<int> numbers;
     for (const CycleDescriptor* c : allCycles())
         EXPECT_TRUE(numbers.insert(c->number).second);
-    for (int n : {7,   8,   9,   10,  11,  12,  13,  14,  18,  19,  20,  21,  22,  23,  24,  26,
-                  32,  200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 220, 221, 225, 232, 240,
-                  241, 247, 251, 252, 253, 254, 256, 257, 258, 262, 263, 264, 265, 267}) {
+    for (int n :
+         {7,   8,   9,   10,  11,  12,  13,  14,  18,  19,  20,  21,  22,  23,  24,  26,  32,
+          200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 220, 221, 225, 232, 240, 241, 247,
+          251, 252, 253, 254, 256, 257, 258, 262, 263, 264, 265, 267, 25,  270, 275, 233, 276}) {
         EXPECT_NE(findCycle(n), nullptr) << n;
     }
-    EXPECT_EQ(findCycle(233), nullptr);  // face milling with side walls comes later
 }
 
 TEST(CycleRegistry, DescriptorsAreComplete) {
