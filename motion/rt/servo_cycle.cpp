@@ -460,6 +460,7 @@ bool ServoCycle::runAction(const MotionItem& item) noexcept {
 void ServoCycle::runProgram() noexcept {
     bool stepped = false;
     m_currentMove = 0;
+    m_currentFirstMove = 0;
     // Every pass but the last pops an item: at most the queue, whatever the path passed.
     for (size_t guard = 0; guard <= kItemRingCapacity; ++guard) {
         if (m_items.empty()) {
@@ -487,6 +488,7 @@ void ServoCycle::runProgram() noexcept {
         const PathElement& e = item.element;
         if (!m_elementEntered) enterElement(e);
         m_currentMove = e.moveIndex;
+        m_currentFirstMove = e.firstMoveIndex > 0 ? e.firstMoveIndex : e.moveIndex;
         m_status.itemSequence = item.sequence;
         m_status.source = item.source;
         if (!stepped) {
@@ -724,7 +726,8 @@ void ServoCycle::cycle() noexcept {
     }
     processCommands();
     if (m_mode == MotionMode::Idle && !m_items.empty()) m_mode = MotionMode::Program;
-    if (m_mode != MotionMode::Program && m_mode != MotionMode::Hold) m_currentMove = 0;
+    if (m_mode != MotionMode::Program && m_mode != MotionMode::Hold)
+        m_currentMove = m_currentFirstMove = 0;
     switch (m_mode) {
         case MotionMode::Hold:
         case MotionMode::Stopped:

@@ -78,6 +78,7 @@ struct SimulatedMachine::Impl {
         sample.pathVelocity = status.pathVelocity;
         sample.onFeedMove = servo.onFeedMove();
         sample.moveIndex = servo.currentMove();
+        sample.firstMoveIndex = servo.currentFirstMove();
         if (options.measure) recorder.record(sample);
         if (options.onSample) options.onSample(sample, status);
         handleEvents();
