@@ -142,6 +142,12 @@ void PolylineSmoother::take(double deviation, bool final, std::vector<SmoothPiec
         // The knot at the span's end needs the chords 2h beyond it.
         if (!final && sEnd - sKnot < kSpanMm + 2.0 * kChordMm) break;
         size_t b = std::max(m_knot + 1, vertexBefore(sKnot + kSpanMm));
+        if (final) {
+            // Equal spans to the end of the run: no short span with a noisy tail is left.
+            const double spans = std::ceil((sEnd - sKnot) / kSpanMm);
+            b = spans <= 1.0 ? segments()
+                             : std::max(m_knot + 1, vertexBefore(sKnot + (sEnd - sKnot) / spans));
+        }
         if (!m_tangentKnown) m_knotTangent = tangentAt(m_knot);
         const V3 p0 = xyz(vertex(m_knot).position);
         SmoothPiece piece;
