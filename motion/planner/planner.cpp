@@ -9,6 +9,7 @@
 #include "core/geometry/arc_math.h"
 #include "core/geometry/plane.h"
 #include "motion/planner/corner_blend.h"
+#include "motion/planner/share_ladder.h"
 #include "motion/planner/soft_limits.h"
 
 namespace kerf::motion {
@@ -22,6 +23,11 @@ constexpr double kMaxSmoothSegmentMm = 1.0;
 constexpr double kMaxSmoothTurn = 10.0 * kPi / 180.0;
 // Shorter runs are not worth a fit: their corners are blended as usual.
 constexpr size_t kMinRunSegments = 4;
+// Beyond this distance from the last stop no share ladder can reach (shareLadder's stages).
+constexpr double kFarFromStop = 100.0;
+// Shorter curves (the blends of a polyline's corners) keep one share: stages on them would only
+// add binding points between them and the lines.
+constexpr double kMinLadderElementMm = 0.1;
 
 AxisVector toAxes(const Pose& pose) {
     return pose.values;
@@ -72,6 +78,7 @@ void Planner::reset(const AxisVector& tip) {
     m_pending.reset();
     m_short.reset();
     m_run.clear();
+    m_sinceStop = 0.0;
     m_synchronised = false;
     m_refused = false;
     setPosition(tip);
@@ -523,19 +530,69 @@ void Planner::cornerTo(Move& move) {
     move.trimStart = blend.trimAfter;
 }
 
-void Planner::emitPending(double trimEnd) {
+void Planner::emitPending(double trimEnd, bool stopFollows) {
     if (!m_pending) return;
     const Move& move = *m_pending;
     double end = move.geometry.length - trimEnd;
     if (end - move.trimStart > 1e-9) {
         emitElement(move, trimmed(move.geometry, move.trimStart, end),
-                    move.tolerance - move.fitDeviation, move.endsBlock);
+                    move.tolerance - move.fitDeviation, move.endsBlock, stopFollows);
     }
     m_pending.reset();
 }
 
 void Planner::emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
-                          bool blockEnd) {
+                          bool blockEnd, bool stopFollows) {
+    std::array<ShareStage, 4> stages;
+    size_t count = 0;
+    if (geometry.curved() && geometry.length >= kMinLadderElementMm &&
+        move.feedKind == FeedKind::PerMinute && move.blendable &&
+        (m_sinceStop < kFarFromStop || stopFollows)) {
+        count = shareLadder(m_model, geometry, contourBudget, move.feed, stages);
+    }
+    if (count == 0) {
+        pushElement(move, geometry, contourBudget, blockEnd, nullptr);
+        return;
+    }
+    // Stage k holds where the distance from the stop before (or, when one follows, to the stop
+    // after) is below the stages' lengths up to k: pieces between those breakpoints.
+    const double length = geometry.length;
+    const double sinceStop = m_sinceStop;  // at the start of the element (pushElement adds)
+    std::array<double, 10> cuts{};
+    size_t cutCount = 0;
+    double reach = 0.0;
+    for (size_t k = 0; k < count; ++k) {
+        reach += stages[k].length;
+        for (double cut : {reach - sinceStop, stopFollows ? length - reach : -1.0}) {
+            if (cut > 1e-6 && cut < length - 1e-6) cuts[cutCount++] = cut;
+        }
+    }
+    std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(cutCount));
+    auto stageAt = [&](double s) {
+        double sum = 0.0;
+        for (size_t k = 0; k < count; ++k) {
+            sum += stages[k].length;
+            if (sinceStop + s < sum || (stopFollows && length - s < sum)) return k;
+        }
+        return count;
+    };
+    double from = 0.0;
+    for (size_t i = 0; i <= cutCount; ++i) {
+        const double to = i < cutCount ? cuts[i] : length;
+        if (to - from < 1e-9) continue;
+        // Pieces of one stage next to each other stay one.
+        const size_t stage = stageAt((from + to) / 2.0);
+        if (i < cutCount &&
+            stageAt((to + (i + 1 < cutCount ? cuts[i + 1] : length)) / 2.0) == stage)
+            continue;
+        pushElement(move, trimmed(geometry, from, to), contourBudget, blockEnd && to >= length,
+                    stage < count ? &stages[stage] : nullptr);
+        from = to;
+    }
+}
+
+void Planner::pushElement(const Move& move, const PathGeometry& geometry, double contourBudget,
+                          bool blockEnd, const ShareStage* stage) {
     MotionItem item;
     item.kind = MotionItem::Kind::Element;
     item.sequence = ++m_sequence;
@@ -560,7 +617,12 @@ void Planner::emitElement(const Move& move, const PathGeometry& geometry, double
     } else if (move.feedKind != FeedKind::Rapid) {
         e.capVelocity = m_model.maxFeed;
     }
+    if (stage) {
+        e.limits = stage->limits;
+        e.capVelocity = std::min(e.capVelocity, stage->cap);
+    }
     m_pathS += geometry.length;
+    m_sinceStop += geometry.length;
     m_lookahead.push(item, contourBudget);
 }
 
@@ -571,8 +633,9 @@ void Planner::exactStop() {
 
 void Planner::stopAfterPending() {
     settleShort();
-    emitPending(0.0);
+    emitPending(0.0, true);
     m_lookahead.stopHere();
+    m_sinceStop = 0.0;
 }
 
 void Planner::emitAction(const Action& action, const SourceLocation& source) {

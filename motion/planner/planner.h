@@ -10,6 +10,7 @@
 #include "motion/kinematics/machine_model.h"
 #include "motion/planner/lookahead.h"
 #include "motion/planner/polyline_smoother.h"
+#include "motion/planner/share_ladder.h"
 #include "motion/port/motion_item.h"
 
 // The motion planner: turns the canonical command stream into path elements and actions for the
@@ -95,7 +96,8 @@ private:
     void releaseRun(bool final);
     void endRun();
     bool acceptGeometry(const PathGeometry& geometry, const SourceLocation& source);
-    void emitPending(double trimEnd);
+    // `stopFollows`: the motion stops at the end of the pending move.
+    void emitPending(double trimEnd, bool stopFollows = false);
     void cornerTo(Move& move);
     // A short line whose corner with the pending move would need more than half of it is held
     // back, so that the next move can blend across it (blendAcrossShort) instead of turning twice
@@ -103,8 +105,11 @@ private:
     bool worthHolding(const Move& move) const;
     bool blendAcrossShort(Move& move);
     void settleShort();
+    // A curve near a stop is cut where the tangential share may change (shareLadder).
     void emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
-                     bool blockEnd);
+                     bool blockEnd, bool stopFollows = false);
+    void pushElement(const Move& move, const PathGeometry& geometry, double contourBudget,
+                     bool blockEnd, const ShareStage* stage);
     // Ends any run being smoothed, then stops after the pending move.
     void exactStop();
     void stopAfterPending();
@@ -118,6 +123,7 @@ private:
     Lookahead m_lookahead;
     AxisVector m_position{};
     double m_pathS = 0.0;
+    double m_sinceStop = 0.0;  // path length since the motion last stopped
     uint64_t m_sequence = 0;
     std::optional<Move> m_pending;
     std::optional<Move> m_short;  // held between m_pending and the next move

@@ -307,8 +307,12 @@ size_t ServoCycle::collectConstraints(size_t first, std::span<Constraint> out) c
             lastBind = p.bindS;
         }
     }
+    // The end of what is queued, unless the planner's binding points already stop there (then
+    // they meet it with the limits of each element on the way, not this one's).
     const MotionItem& last = m_items.peek(m_items.size() - 1);
-    if (last.kind == MotionItem::Kind::Element) out[count++] = {last.element.sEnd(), 0.0};
+    if (last.kind == MotionItem::Kind::Element &&
+        !(last.element.bindS == last.element.sEnd() && last.element.bindVelocity == 0.0))
+        out[count++] = {last.element.sEnd(), 0.0};
     if (m_singleBlock && m_singleBlockS >= 0.0) out[count++] = {m_singleBlockS, 0.0};
     return count;
 }
