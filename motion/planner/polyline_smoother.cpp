@@ -57,6 +57,7 @@ void PolylineSmoother::start(const AxisVector& first) {
     m_base = 0;
     m_knot = 0;
     m_tangentKnown = false;
+    m_span = kSpanMm;
 }
 
 void PolylineSmoother::add(const AxisVector& vertex) {
@@ -141,10 +142,10 @@ void PolylineSmoother::take(double deviation, bool final, std::vector<SmoothPiec
         const double sEnd = m_points.back().s;
         // The knot at the span's end needs the chords 2h beyond it.
         if (!final && sEnd - sKnot < kSpanMm + 2.0 * kChordMm) break;
-        size_t b = std::max(m_knot + 1, vertexBefore(sKnot + kSpanMm));
-        if (final) {
+        size_t b = std::max(m_knot + 1, vertexBefore(sKnot + m_span));
+        if (final && sEnd - sKnot <= 2.0 * m_span) {
             // Equal spans to the end of the run: no short span with a noisy tail is left.
-            const double spans = std::ceil((sEnd - sKnot) / kSpanMm);
+            const double spans = std::ceil((sEnd - sKnot) / m_span);
             b = spans <= 1.0 ? segments()
                              : std::max(m_knot + 1, vertexBefore(sKnot + (sEnd - sKnot) / spans));
         }
@@ -176,6 +177,9 @@ void PolylineSmoother::take(double deviation, bool final, std::vector<SmoothPiec
             }
             b = std::clamp(vertexBefore(sKnot + (vertex(b).s - sKnot) / 2.0), m_knot + 1, b - 1);
         }
+        // After a split, the next span starts from twice the length that fitted: a run that does
+        // not describe a curve costs O(1) attempts per segment, not a halving from 2 mm each time.
+        m_span = std::min(kSpanMm, 2.0 * (vertex(piece.lastSegment).s - sKnot));
         out.push_back(piece);
         m_knot = piece.lastSegment;
         // Keep the vertices the next knots' chords can reach back to.

@@ -66,6 +66,7 @@ private:
     size_t m_knot = 0;  // vertex where the next piece starts
     Vec3Array m_knotTangent{};
     bool m_tangentKnown = false;  // m_knotTangent is the end tangent of the last fitted piece
+    double m_span = kSpanMm;      // longest span tried next
 };
 
 }  // namespace kerf::motion
