@@ -7,8 +7,9 @@ Usage: scripts/bench/motion_paths.py [--kerf build/ci/app/kerf] [--tools DIR] [-
 Prints one Markdown table row per path. The bound is bounds.topp_acc along the exact curve plus
 A/J for the jerk ramps; "over" marks an axis above its acceleration or jerk limit by more than 1 %.
 With --check (the ctest subset, tests/app) the exit code is 1 when any axis is over a limit by
-more than 1 %, when the path leaves the programmed path by more than the tolerance (0.01 mm) or a path runs faster than its time-optimal bound (impossible within the limits:
-the planner or its report is wrong), or when a run fails.
+more than 1 %, when the report's path deviation exceeds the tolerance (0.01 mm), when a path runs
+faster than its time-optimal bound (impossible within the limits: the planner or its report is
+wrong), or when a run fails.
 """
 import argparse
 import json
