@@ -60,6 +60,10 @@ int main(int argc, char** argv) {
                   "execute through planner and servo cycle in simulated time (report: motion)");
     run->add_option("--samples", runOptions.samples,
                     "with --motion: write every servo cycle's setpoints as CSV");
+    run->add_option("--emergency-stop-at", runOptions.emergencyStopAtS,
+                    "with --motion: press the simulated emergency-stop button at this simulated "
+                    "time (s since the program started)")
+        ->check(CLI::NonNegativeNumber);
     run->add_option("--work-offset", runOptions.workOffset,
                     "machine coordinates of the workpiece origin on the axes named, e.g. "
                     "Z-300 (default: the machine file's presets)");
@@ -109,6 +113,10 @@ int main(int argc, char** argv) {
         }
         if (runOptions.workOffset && !kerf::app::parseWorkOffset(*runOptions.workOffset)) {
             std::cerr << "kerf: --work-offset must be axis letters with values, e.g. X10,Z-300\n";
+            return 2;
+        }
+        if (runOptions.emergencyStopAtS && !runOptions.motion && !runOptions.samples) {
+            std::cerr << "kerf: --emergency-stop-at needs --motion\n";
             return 2;
         }
         if (auto error = kerf::app::checkDriveOptions(runOptions)) {

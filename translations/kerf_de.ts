@@ -191,6 +191,10 @@
         <source>EMERGENCY STOP</source>
         <translation>NOT-AUS</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>NOT-HALT entriegeln</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -225,6 +229,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Die Achsen sind nicht referenziert: zuerst in Manueller Betrieb Alle referenzieren ausführen</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>Der NOT-HALT-Taster ist gedrückt: entriegeln, dann Maschine ein</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Zuerst den NOT-HALT-Taster entriegeln</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>Der NOT-HALT-Kreis ist noch offen</translation>
     </message>
 </context>
 <context>
@@ -5284,10 +5300,6 @@ zyklen</translation>
         <translation>%1: mindestens eine Koordinate eingeben</translation>
     </message>
     <message>
-        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
-        <translation>Die Zyklus- und Bahnfunktions-Dialoge schreiben Klartext-Programme (.H).</translation>
-    </message>
-    <message>
         <source>Cycle
 overview</source>
         <translation>Zyklus-
@@ -6868,6 +6880,26 @@ zyklen</translation>
     <message>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>die Kontur von LBL {1} liegt mehr als 1.000.000 mm vom Nullpunkt entfernt</translation>
+    </message>
+    <message>
+        <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
+        <translation>Ein ISO-Satz ist entweder absolut (G90) oder inkremental (G91): alle Koordinaten mit I eingeben oder keine</translation>
+    </message>
+    <message>
+        <source>ISO programs have no FAUTO: enter the feed</source>
+        <translation>ISO-Programme kennen kein FAUTO: Vorschub eingeben</translation>
+    </message>
+    <message>
+        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
+        <translation>In ISO-Programmen wird dieser Zyklus als eigene G-Funktion geschrieben; der Dialog schreibt nur Parameterzyklen</translation>
+    </message>
+    <message>
+        <source>This cycle has no ISO form</source>
+        <translation>Dieser Zyklus hat keine ISO-Form</translation>
+    </message>
+    <message>
+        <source>This block has no ISO form</source>
+        <translation>Dieser Satz hat keine ISO-Form</translation>
     </message>
 </context>
 <context>

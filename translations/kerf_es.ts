@@ -191,6 +191,10 @@
         <source>EMERGENCY STOP</source>
         <translation>PARADA DE EMERGENCIA</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>Desbloquear PARADA DE EMERGENCIA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -225,6 +229,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Los ejes no están referenciados: ejecute primero Referenciar todos en Funcionamiento manual</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>La seta de emergencia está pulsada: desbloquéela y luego Máquina en marcha</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Desbloquee primero la seta de emergencia</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>El circuito de emergencia sigue abierto</translation>
     </message>
 </context>
 <context>
@@ -5284,10 +5300,6 @@ especiales</translation>
         <translation>%1: introduzca al menos una coordenada</translation>
     </message>
     <message>
-        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
-        <translation>Los diálogos de ciclos y de funciones de trayectoria escriben programas Klartext (.H).</translation>
-    </message>
-    <message>
         <source>Cycle
 overview</source>
         <translation>Resumen
@@ -6868,6 +6880,26 @@ fijos</translation>
     <message>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>el contorno de LBL {1} está a más de 1.000.000 mm del origen</translation>
+    </message>
+    <message>
+        <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
+        <translation>Una frase ISO es absoluta (G90) o incremental (G91): introduzca todas las coordenadas con I o ninguna</translation>
+    </message>
+    <message>
+        <source>ISO programs have no FAUTO: enter the feed</source>
+        <translation>Los programas ISO no tienen FAUTO: introduzca el avance</translation>
+    </message>
+    <message>
+        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
+        <translation>En programas ISO este ciclo se escribe como su propia función G; el diálogo solo escribe ciclos con parámetros</translation>
+    </message>
+    <message>
+        <source>This cycle has no ISO form</source>
+        <translation>Este ciclo no tiene forma ISO</translation>
+    </message>
+    <message>
+        <source>This block has no ISO form</source>
+        <translation>Esta frase no tiene forma ISO</translation>
     </message>
 </context>
 <context>

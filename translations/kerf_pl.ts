@@ -192,6 +192,10 @@
         <source>EMERGENCY STOP</source>
         <translation>STOP AWARYJNY</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>Odblokuj STOP AWARYJNY</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -226,6 +230,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Osie nie są zbazowane: najpierw wykonaj Bazuj wszystkie w Obsłudze ręcznej</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>Wyłącznik awaryjny jest wciśnięty: odblokuj go, potem Maszyna wł.</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Najpierw odblokuj wyłącznik awaryjny</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>Obwód wyłącznika awaryjnego jest nadal otwarty</translation>
     </message>
 </context>
 <context>
@@ -5287,10 +5303,6 @@ specjalne</translation>
         <translation>%1: wprowadź co najmniej jedną współrzędną</translation>
     </message>
     <message>
-        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
-        <translation>Dialogi cykli i funkcji toru zapisują programy Klartext (.H).</translation>
-    </message>
-    <message>
         <source>Cycle
 overview</source>
         <translation>Przegląd
@@ -6871,6 +6883,26 @@ stałe</translation>
     <message>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>kontur LBL {1} leży dalej niż 1 000 000 mm od punktu zerowego</translation>
+    </message>
+    <message>
+        <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
+        <translation>Blok ISO jest albo absolutny (G90), albo przyrostowy (G91): wpisz wszystkie współrzędne z I albo żadnej</translation>
+    </message>
+    <message>
+        <source>ISO programs have no FAUTO: enter the feed</source>
+        <translation>Programy ISO nie mają FAUTO: wpisz posuw</translation>
+    </message>
+    <message>
+        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
+        <translation>W programach ISO ten cykl zapisuje się jako własną funkcję G; dialog zapisuje tylko cykle z parametrami</translation>
+    </message>
+    <message>
+        <source>This cycle has no ISO form</source>
+        <translation>Ten cykl nie ma postaci ISO</translation>
+    </message>
+    <message>
+        <source>This block has no ISO form</source>
+        <translation>Ten blok nie ma postaci ISO</translation>
     </message>
 </context>
 <context>

@@ -191,6 +191,10 @@
         <source>EMERGENCY STOP</source>
         <translation>PARADA DE EMERGÊNCIA</translation>
     </message>
+    <message>
+        <source>Release EMERGENCY STOP</source>
+        <translation>Destravar PARADA DE EMERGÊNCIA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MachineSession</name>
@@ -225,6 +229,18 @@
     <message>
         <source>The axes are not referenced: run Home all in Manual operation first</source>
         <translation>Os eixos não estão referenciados: execute primeiro Referenciar todos em Funcionamento manual</translation>
+    </message>
+    <message>
+        <source>The emergency stop button is pressed: release it, then Machine on</source>
+        <translation>O botão de emergência está premido: destrave-o e depois Máquina ligada</translation>
+    </message>
+    <message>
+        <source>Release the emergency stop button first</source>
+        <translation>Destrave primeiro o botão de emergência</translation>
+    </message>
+    <message>
+        <source>The emergency stop chain is still open</source>
+        <translation>O circuito de emergência ainda está aberto</translation>
     </message>
 </context>
 <context>
@@ -5284,10 +5300,6 @@ especiais</translation>
         <translation>%1: introduza pelo menos uma coordenada</translation>
     </message>
     <message>
-        <source>The cycle and path-function dialogs write Klartext programs (.H).</source>
-        <translation>Os diálogos de ciclos e de funções de trajetória escrevem programas Klartext (.H).</translation>
-    </message>
-    <message>
         <source>Cycle
 overview</source>
         <translation>Resumo
@@ -6868,6 +6880,26 @@ fixos</translation>
     <message>
         <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
         <translation>o contorno de LBL {1} fica a mais de 1.000.000 mm da origem</translation>
+    </message>
+    <message>
+        <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
+        <translation>Um bloco ISO é absoluto (G90) ou incremental (G91): introduza todas as coordenadas com I ou nenhuma</translation>
+    </message>
+    <message>
+        <source>ISO programs have no FAUTO: enter the feed</source>
+        <translation>Os programas ISO não têm FAUTO: introduza o avanço</translation>
+    </message>
+    <message>
+        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
+        <translation>Em programas ISO este ciclo escreve-se como a sua própria função G; o diálogo só escreve ciclos com parâmetros</translation>
+    </message>
+    <message>
+        <source>This cycle has no ISO form</source>
+        <translation>Este ciclo não tem forma ISO</translation>
+    </message>
+    <message>
+        <source>This block has no ISO form</source>
+        <translation>Este bloco não tem forma ISO</translation>
     </message>
 </context>
 <context>

@@ -114,6 +114,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         for (;;) {
             if (drives.stopped()) break;  // a drive fault ends the program
             if (motion.refused()) break;  // e.g. beyond a soft limit: nothing moved
+            if (motion.halted()) break;   // an emergency stop ended the program
             const uint64_t left = options.maxBlocks - interpreter.blocksExecuted();
             interp::RunStatus status =
                 interpreter.run(sinks, std::min(drives.blocksPerSlice(kBlocksPerSlice), left));

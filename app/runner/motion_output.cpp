@@ -101,6 +101,7 @@ void MotionOutput::setStart(const Pose& start) {
     simulation.motion = motionOptions(s.session);
     simulation.startPosition = start.values;
     if (s.options.samples) simulation.samplesCsvPath = s.options.samples->string();
+    if (s.options.emergencyStopAtS) simulation.emergencyStopAtS = *s.options.emergencyStopAtS;
     s.machine = std::make_unique<motion::SimulatedMachine>(s.session.machine, simulation);
     s.startS = s.machine->timeS();
     s.gate.start(start.values, *s.machine);
@@ -108,6 +109,10 @@ void MotionOutput::setStart(const Pose& start) {
 
 bool MotionOutput::refused() const {
     return m_state && m_state->gate.refused();
+}
+
+bool MotionOutput::halted() const {
+    return m_state && m_state->machine && m_state->machine->halted();
 }
 
 interp::WorldSnapshot MotionOutput::drain() {

@@ -39,6 +39,8 @@ public:
     void setStart(const Pose& start);
     // A soft limit or another planner rule refused the program: interpret no further.
     bool refused() const;
+    // An emergency stop or a drive fault ended the program on the simulated machine.
+    bool halted() const;
     // Executes everything so far: the world at a sync point (probe result, position).
     interp::WorldSnapshot drain();
     // After the run: executes the rest when the program ran (nothing when it was rejected) and

@@ -35,6 +35,7 @@ struct RunOptions {
     // Motion in simulated time (app/runner/motion_output.h, docs/motion.md); --samples implies it.
     bool motion = false;
     std::optional<std::filesystem::path> samples;  // CSV of every servo cycle's setpoints
+    std::optional<double> emergencyStopAtS;        // simulated E-stop button, s after the start
     std::optional<std::string> workOffset;  // "X0,Y0,Z-300": workpiece origin, machine coords
 };
 

@@ -51,6 +51,7 @@ struct MachineStatus {
     int toolNumber = 0;    // 0: no tool
     bool coolant = false;  // flood or mist on
     bool singleBlock = false;
+    bool emergencyStopOpen = false;  // the E-stop chain is open (button pressed)
     double servoTimeS = 0.0;  // the servo cycle's clock (simulated time on a simulated machine)
     SourceLocation block;     // the block being executed
 };

@@ -45,6 +45,11 @@ public:
     // suit a port without a machine.
     virtual void emergencyStop() {}
     virtual bool machineOn() { return false; }
+    // The simulated machine's emergency-stop button, which latches like the mushroom button on
+    // a machine: pressed, its chain opens and the servo cycle stops everything at once and keeps
+    // the drives off until it is released and the machine switched on. False where there is no
+    // simulated button (real drives: their chain is wired, not simulated).
+    virtual bool setEmergencyStopButton(bool /*pressed*/) { return false; }
     virtual void setSingleBlock(bool on) = 0;
 
     // What the HMI needs beyond a program run. The defaults suit a port without a machine

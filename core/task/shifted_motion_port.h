@@ -31,6 +31,9 @@ public:
     void quickStop() override { m_machine->quickStop(); }
     void emergencyStop() override { m_machine->emergencyStop(); }
     bool machineOn() override { return m_machine->machineOn(); }
+    bool setEmergencyStopButton(bool pressed) override {
+        return m_machine->setEmergencyStopButton(pressed);
+    }
     void setSingleBlock(bool on) override { m_machine->setSingleBlock(on); }
 
     void setFeedOverride(double fraction) override { m_machine->setFeedOverride(fraction); }

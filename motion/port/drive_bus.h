@@ -53,6 +53,9 @@ public:
     virtual void setPosition(int joint, double position) noexcept = 0;
     // Touch probe: arm (or disarm) the latch of every joint on the probe input edge.
     virtual void armProbe(bool armed) noexcept = 0;
+    // The emergency-stop chain (the mushroom button's contacts): true while it is open. Read
+    // every cycle; a bus without such an input reports it closed.
+    virtual bool emergencyStopOpen() const noexcept { return false; }
 };
 
 }  // namespace kerf::motion

@@ -45,8 +45,9 @@ struct MotionStatus {
     uint16_t homedMask = 0;     // bit per joint
     uint8_t coolant = 0;        // bit 0 flood, bit 1 mist (as the Coolant action)
     bool singleBlock = false;
-    uint64_t lateCycles = 0;    // cycles that started later than one period after the previous
-    double maxCycleCpuS = 0.0;  // longest servo cycle computation
+    bool emergencyStopOpen = false;  // the E-stop chain is open: the machine cannot be switched on
+    uint64_t lateCycles = 0;         // cycles that started later than one period after the previous
+    double maxCycleCpuS = 0.0;       // longest servo cycle computation
     double maxFollowingError = 0.0;
 };
 

@@ -76,6 +76,15 @@ void ServoCycle::emit(MotionEventKind kind, int joint, double value,
     m_events.push(event);
 }
 
+void ServoCycle::enterEmergencyStop() noexcept {
+    m_bus.request(DriveRequest::QuickStop);
+    abortProgram();
+    m_mover = JointMover{};
+    m_homingPhase = HomingPhase::Off;
+    m_mode = MotionMode::EmergencyStop;
+    emit(MotionEventKind::Aborted, -1, 0.0, m_setpoint);
+}
+
 void ServoCycle::readFeedback() noexcept {
     std::span<JointFeedback> feedback(m_feedback.data(), static_cast<size_t>(m_model.jointCount));
     BusResult result = m_bus.read(feedback);
@@ -166,15 +175,12 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
             }
             break;
         case OperatorCommandKind::EmergencyStop:
-            m_bus.request(DriveRequest::QuickStop);
-            abortProgram();
-            m_mover = JointMover{};
-            m_homingPhase = HomingPhase::Off;
-            m_mode = MotionMode::EmergencyStop;
-            emit(MotionEventKind::Aborted, -1, 0.0, m_setpoint);
+            enterEmergencyStop();
             break;
         case OperatorCommandKind::Reset:
-            if (m_mode == MotionMode::EmergencyStop || m_mode == MotionMode::Fault) {
+            // While the E-stop chain is open the drives must stay off, whatever the panel says.
+            if ((m_mode == MotionMode::EmergencyStop || m_mode == MotionMode::Fault) &&
+                !m_status.emergencyStopOpen) {
                 m_bus.request(DriveRequest::FaultReset);
                 m_bus.request(DriveRequest::Enable);
                 m_mode = MotionMode::Idle;
@@ -717,6 +723,8 @@ void ServoCycle::cycle() noexcept {
     ++m_status.cycle;
     m_status.timeS += m_dt;
     readFeedback();
+    m_status.emergencyStopOpen = m_bus.emergencyStopOpen();
+    if (m_status.emergencyStopOpen && m_mode != MotionMode::EmergencyStop) enterEmergencyStop();
     for (int j = 0; j < m_model.jointCount; ++j) {
         const JointFeedback& fb = m_feedback[static_cast<size_t>(j)];
         if (fb.state == DriveState::Fault && m_mode != MotionMode::Fault &&

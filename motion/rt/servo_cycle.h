@@ -78,6 +78,7 @@ private:
     void followFeedback() noexcept;
     void writeOutputs() noexcept;
     void abortProgram() noexcept;
+    void enterEmergencyStop() noexcept;  // quick stop, program aborted, drives off until Reset
     void stopSpindleAndCoolant() noexcept;
     double liveFeed(FeedKind kind, double feed) const noexcept;
     // What the interpolator moves towards on element e: its cap and live feed, 0 when stopping.

@@ -159,6 +159,12 @@ bool RealtimeMachine::drained() const {
            m_planner.pendingLength() == 0.0;
 }
 
+bool RealtimeMachine::setEmergencyStopButton(bool pressed) {
+    if (!m_simDrives) return false;
+    m_simDrives->setEmergencyStopPressed(pressed);
+    return true;
+}
+
 bool RealtimeMachine::command(const OperatorCommand& command) {
     return m_commands.push(command);
 }

@@ -69,6 +69,8 @@ public:
     Planner& planner() { return m_planner; }
 
     bool command(const OperatorCommand& command);
+    // Simulated drives: press or release the emergency-stop button (false on a real bus).
+    bool setEmergencyStopButton(bool pressed);
     std::optional<MotionEvent> nextEvent();
 
     MotionStatus status() const { return m_status.read(); }

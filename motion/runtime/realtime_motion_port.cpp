@@ -107,7 +107,12 @@ bool RealtimeMotionPort::submit(const canon::Command& command) {
     Submitted s;
     s.block = command.location;
     s.target = moveTarget(command.body);
-    s.feedMmPerMin = moveFeed(command.body);
+    if (const auto* mode = std::get_if<canon::SetFeedMode>(&command.body))
+        m_feedPerRevolution = mode->mode == canon::FeedMode::PerRevolution;
+    if (const auto* spindle = std::get_if<canon::SpindleControl>(&command.body))
+        m_submittedRpm = spindle->speedRpm;
+    // A feed per revolution (G95) shows as the path feed it gives at the programmed speed.
+    s.feedMmPerMin = moveFeed(command.body) * (m_feedPerRevolution ? m_submittedRpm : 1.0);
     if (const auto* tool = std::get_if<canon::ToolChange>(&command.body)) {
         s.tool = tool->number;
         s.toolLength = tool->geometry.lengthMm;
@@ -283,9 +288,20 @@ void RealtimeMotionPort::emergencyStop() {
     m_fault = "emergency stop";
 }
 
+bool RealtimeMotionPort::setEmergencyStopButton(bool pressed) {
+    if (!m_machine->setEmergencyStopButton(pressed)) return false;
+    if (pressed) {
+        m_replan = true;
+        m_programmedRpm = 0.0;
+        m_fault = "emergency stop button pressed";
+    }
+    return true;
+}
+
 bool RealtimeMotionPort::machineOn() {
-    const MotionMode mode = m_machine->status().mode;
-    if (mode != MotionMode::EmergencyStop && mode != MotionMode::Fault) return false;
+    const MotionStatus now = m_machine->status();
+    if (now.mode != MotionMode::EmergencyStop && now.mode != MotionMode::Fault) return false;
+    if (now.emergencyStopOpen) return false;
     m_fault.clear();
     return m_machine->command({OperatorCommandKind::Reset});
 }
@@ -382,6 +398,7 @@ task::MachineStatus RealtimeMotionPort::status() const {
     s.programmedFeedMmPerMin = moving ? m_executing.feedMmPerMin : 0.0;
     s.toolNumber = m_tool;
     s.singleBlock = m_singleBlock;
+    s.emergencyStopOpen = now.emergencyStopOpen;
     s.servoTimeS = now.timeS;
     for (int j = 0; j < model.jointCount; ++j) {
         const int axis = model.jointAxis[static_cast<size_t>(j)];

@@ -37,6 +37,7 @@ public:
     void quickStop() override;
     void emergencyStop() override;
     bool machineOn() override;
+    bool setEmergencyStopButton(bool pressed) override;
     void setSingleBlock(bool on) override;
 
     void setFeedOverride(double fraction) override;
@@ -83,6 +84,9 @@ private:
     int m_tool = 0;
     double m_toolLength = 0.0;
     double m_programmedRpm = 0.0;
+    // The feed mode and spindle speed as submitted (ahead of execution), for the feed shown.
+    bool m_feedPerRevolution = false;
+    double m_submittedRpm = 0.0;
     double m_feedOverride = 1.0;
     double m_rapidOverride = 1.0;
     bool m_singleBlock = false;

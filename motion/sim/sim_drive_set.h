@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <functional>
 
 #include "motion/kinematics/machine_model.h"
@@ -35,6 +36,8 @@ public:
     void setProbeEvent(ProbeEvent event) noexcept { m_probeEvent = event; }
     ProbeEvent probeEvent() const noexcept { return m_probeEvent; }
     void injectFault(int joint, uint16_t code) noexcept;
+    // The simulated E-stop button: pressed (chain open) or released. Any thread.
+    void setEmergencyStopPressed(bool pressed) noexcept { m_emergencyStop.store(pressed); }
 
     // One period of the drives (after the servo cycle wrote its setpoints).
     void advance(double dt) noexcept;
@@ -48,6 +51,7 @@ public:
     void request(DriveRequest request) noexcept override;
     void setPosition(int joint, double position) noexcept override;
     void armProbe(bool armed) noexcept override;
+    bool emergencyStopOpen() const noexcept override { return m_emergencyStop.load(); }
 
 private:
     const MachineModel& m_model;
@@ -68,6 +72,7 @@ private:
     bool m_latched = false;
     bool m_haveSetpoint = false;
     ProbeSurface m_probeSurface;
+    std::atomic<bool> m_emergencyStop{false};
 };
 
 }  // namespace kerf::motion

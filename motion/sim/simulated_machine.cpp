@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/base/fixed_format.h"
 #include "motion/planner/planner.h"
 #include "motion/rt/servo_cycle.h"
 #include "motion/sim/probe_workpiece.h"
@@ -46,6 +47,9 @@ struct SimulatedMachine::Impl {
         // Let the drives enable before the program starts.
         for (int i = 0; i < options.drives.enableCycles + 2; ++i)
             cycle();
+        startTimeS = servo.status().timeS;
+        if (options.emergencyStopAtS >= 0.0)
+            emergencyStopTimeS = startTimeS + options.emergencyStopAtS;
     }
 
     AxisVector tipOf(const std::array<double, kMaxJoints>& joints) const {
@@ -61,6 +65,8 @@ struct SimulatedMachine::Impl {
     }
 
     void cycle() {
+        if (emergencyStopTimeS >= 0.0 && servo.status().timeS >= emergencyStopTimeS - 1e-9)
+            drives.setEmergencyStopPressed(true);
         servo.cycle();
         drives.advance(model.periodS);
         const MotionStatus& status = servo.status();
@@ -79,7 +85,9 @@ struct SimulatedMachine::Impl {
         sample.onFeedMove = servo.onFeedMove();
         sample.moveIndex = servo.currentMove();
         sample.firstMoveIndex = servo.currentFirstMove();
-        if (options.measure) recorder.record(sample);
+        // After an emergency stop or a fault the drives brake on their own ramps: the setpoints
+        // follow them and are no longer the planned motion the report measures.
+        if (options.measure && !halted()) recorder.record(sample);
         if (options.onSample) options.onSample(sample, status);
         handleEvents();
     }
@@ -112,16 +120,37 @@ struct SimulatedMachine::Impl {
                     diagnostics.push_back(d);
                     break;
                 }
+                case MotionEventKind::Aborted:
+                    if (servo.status().emergencyStopOpen) {
+                        Diagnostic d;
+                        d.code = "motion.emergency-stop";
+                        d.messageTemplate = KERF_TR_NOOP(
+                            "Emergency stop at {1} s after the start (the button was pressed): "
+                            "every axis and the spindle were stopped and the program was aborted.");
+                        d.args = {formatFixed(e.timeS - startTimeS, 3)};
+                        d.line = e.source.line;
+                        d.column = 1;
+                        d.severity = Severity::Error;
+                        diagnostics.push_back(d);
+                    }
+                    break;
                 default:
                     break;
             }
         }
     }
 
+    bool halted() const {
+        const MotionMode mode = servo.status().mode;
+        return mode == MotionMode::EmergencyStop || mode == MotionMode::Fault;
+    }
+
     void pump() {
         while (auto item = planner.next()) {
-            while (items->full())
+            // A halted servo cycle takes nothing from the ring: what is planned is dropped.
+            while (items->full() && !halted())
                 cycle();
+            if (halted()) return;
             items->push(*item);
         }
     }
@@ -168,6 +197,8 @@ struct SimulatedMachine::Impl {
     MotionRecorder recorder;
     interp::WorldSnapshot world;
     DiagnosticList diagnostics;
+    double startTimeS = 0.0;           // the drives enabled: the program may start
+    double emergencyStopTimeS = -1.0;  // simulated time of the button press; negative: never
 };
 
 SimulatedMachine::SimulatedMachine(const machine::MachineConfig& config, SimulationOptions options)
@@ -177,7 +208,7 @@ SimulatedMachine::~SimulatedMachine() = default;
 
 void SimulatedMachine::consume(const canon::Command& command) {
     Impl& m = *m_impl;
-    if (m.planner.refused()) return;
+    if (m.planner.refused() || m.halted()) return;
     if (const auto* probe = std::get_if<canon::ProbeMove>(&command.body)) {
         const auto event =
             probe->untilRelease ? SimDriveSet::ProbeEvent::Release : SimDriveSet::ProbeEvent::Touch;
@@ -266,6 +297,10 @@ double SimulatedMachine::timeS() const {
 
 uint32_t SimulatedMachine::acceptedMoves() const {
     return m_impl->planner.acceptedMoves();
+}
+
+bool SimulatedMachine::halted() const {
+    return m_impl->halted();
 }
 
 }  // namespace kerf::motion

@@ -31,6 +31,9 @@ struct SimulationOptions {
     bool autoCycleStart = true;  // press cycle start at M0/M1/single-block stops
     bool measure = true;         // measure the samples for report() (a clock needs no peaks)
     double maxSimulatedS = 24.0 * 3600.0;
+    // Presses the simulated emergency-stop button this long (s) after the drives enabled (the
+    // program's start); negative: never.
+    double emergencyStopAtS = -1.0;
     // The workpiece for probing: true when the tool tip (workpiece coordinates) touches it.
     // Empty: the machine file's [simulation.probe] box, if it enables one.
     std::function<bool(const AxisVector& tip)> probeSurface;
@@ -79,6 +82,8 @@ public:
     double timeS() const;
     // Programmed moves the planner accepted so far (PathElement::moveIndex counts them).
     uint32_t acceptedMoves() const;
+    // An emergency stop or a drive fault ended the program: later commands are dropped.
+    bool halted() const;
 
 private:
     struct Impl;

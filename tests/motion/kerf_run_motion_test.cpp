@@ -144,6 +144,31 @@ TEST(KerfRunMotion, OneLineOnTheMillTakesTheJerkLimitedTime) {
     EXPECT_NEAR(lastX, 100.0, 1e-9);
 }
 
+TEST(KerfRunMotion, TheEmergencyStopButtonEndsTheRunWhereTheAxesStopped) {
+    // X at 600 mm/min = 10 mm/s from X0: after 3 s about 30 mm (less the ramp, a few ms, and
+    // the 6 ms setpoint filter); the drives stop from 10 mm/s within 10^2 / (2 * 5000) = 0.01 mm.
+    const fs::path program = writeProgram("estop.H",
+                                          "0 BEGIN PGM ESTOP MM\n"
+                                          "1 L X+100 R0 F600\n"
+                                          "2 L Y+50\n"
+                                          "3 END PGM ESTOP MM\n");
+    KerfRun run = runKerf(program, "--emergency-stop-at 3");
+    EXPECT_EQ(run.exitCode, 1) << run.errors;
+    EXPECT_FALSE(run.report["ok"].get<bool>());
+    const double x = run.report["motion"]["final_position"]["X"].get<double>();
+    EXPECT_GT(x, 29.8);
+    EXPECT_LT(x, 30.01);
+    EXPECT_EQ(run.report["motion"]["final_position"]["Y"].get<double>(), 0.0);
+    // Named at the block that was running (file line 2), with the time after the start.
+    EXPECT_NE(run.errors.find("estop.H:2:1: error: Emergency stop at 3.00"), std::string::npos)
+        << run.errors;
+    // Without --motion there is no machine whose button could be pressed.
+    const std::string usage = std::string("\"") + KERF_BINARY + "\" run \"" + program.string() +
+                              "\" --emergency-stop-at 1 2>/dev/null";
+    const int status = std::system(usage.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);
+}
+
 TEST(KerfRunMotion, ASoftLimitRefusesTheProgramBeforeAnythingMoves) {
     // The mill's X ends at +400 mm: block 2 would reach 500. Block 1 is fine but must not move.
     // --work-offset Z0 puts the workpiece origin at the machine origin (the mill's own preset is

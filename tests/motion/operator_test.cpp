@@ -167,6 +167,33 @@ TEST(EmergencyStop, DrivesStopThemselvesAndResetEnablesThemAgain) {
     EXPECT_NEAR(run.sim->status().commandedPosition[0], run.sim->status().actualPosition[0], 1e-6);
 }
 
+// The E-stop button's chain is an input, not a command: while it is open nothing can switch the
+// drives on; released, Reset does.
+TEST(EmergencyStop, TheOpenChainStopsTheProgramAndRefusesResetUntilReleased) {
+    int cycles = 0;
+    TestRun run = runCommands(millConfig(), longLine(), Pose{}, {},
+                              [&](SimulatedMachine& sim, const Sample&, const MotionStatus&) {
+                                  if (++cycles == 1500) sim.drives().setEmergencyStopPressed(true);
+                              });
+    const MotionStatus& status = run.sim->status();
+    EXPECT_EQ(status.mode, MotionMode::EmergencyStop);
+    EXPECT_TRUE(status.emergencyStopOpen);
+    // 50 mm/s for about 1.5 s: far from the end at X200, and stopped within the drives' ramp.
+    EXPECT_GT(run.report.finalPosition[0], 50.0);
+    EXPECT_LT(run.report.finalPosition[0], 80.0);
+    run.sim->runFor(0.02);
+    run.sim->command({OperatorCommandKind::Reset});
+    run.sim->runFor(0.05);
+    EXPECT_EQ(status.mode, MotionMode::EmergencyStop) << "switched on with the chain open";
+    run.sim->drives().setEmergencyStopPressed(false);
+    run.sim->runFor(0.002);
+    EXPECT_FALSE(status.emergencyStopOpen);
+    EXPECT_EQ(status.mode, MotionMode::EmergencyStop) << "releasing the button is not Reset";
+    run.sim->command({OperatorCommandKind::Reset});
+    run.sim->runFor(0.05);
+    EXPECT_EQ(status.mode, MotionMode::Idle);
+}
+
 TEST(Probing, StopsOnTriggerAndLatchesTheContactPoint) {
     SimulationOptions options;
     // The workpiece top is at Z = -2.5 under X 0..50.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/program/dialect.h"
 #include "ui/cycles/path_function.h"
 
 class QPlainTextEdit;
@@ -7,11 +8,16 @@ class QWidget;
 
 namespace kerf::ui {
 
-// Opens the cycle and path-function dialogs over a Klartext program and writes what they
-// return at the cursor (one undo step each), as the TNC's programming keys do.
+struct LineRange;
+
+// Opens the cycle and path-function dialogs over a Klartext or TNC ISO program and writes what
+// they return at the cursor (one undo step each), as the TNC's programming keys do. An entry
+// without an ISO form (an old-style cycle, FAUTO, mixed absolute and incremental coordinates) is
+// explained in a message and not written.
 class ProgramEntry {
 public:
-    ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent);
+    ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent,
+                 program::Dialect dialect = program::Dialect::Klartext);
 
     // The cycle overview (as the TNC's GOTO), then the chosen cycle's dialog.
     bool chooseCycle();
@@ -25,8 +31,13 @@ public:
     bool pathFunction(PathFunction function);
 
 private:
+    // Writes the Klartext `blocks` (or their ISO form) at the cursor, or into `replace`.
+    bool write(const QStringList& blocks, const LineRange* replace = nullptr);
+    bool writePath(PathFunction function, const QStringList& values);
+
     QPlainTextEdit& m_editor;
     QWidget* m_parent;
+    program::Dialect m_dialect;
 };
 
 }  // namespace kerf::ui

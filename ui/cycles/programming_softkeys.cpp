@@ -12,19 +12,11 @@ namespace kerf::ui {
 
 namespace {
 
-// Runs `action` on a ProgramEntry when the program is Klartext; the dialogs write no ISO.
+// Runs `action` on a ProgramEntry writing the program's dialect (Klartext or TNC ISO).
 std::function<void()> entryAction(ProgramEditor* editor, QWidget* parent,
                                   std::function<void(ProgramEntry&)> action) {
     return [editor, parent, action] {
-        if (editor->dialect() != program::Dialect::Klartext) {
-            QMessageBox::information(
-                parent, QCoreApplication::translate("kerf", "Programming"),
-                QCoreApplication::translate("kerf",
-                                            "The cycle and path-function dialogs write Klartext "
-                                            "programs (.H)."));
-            return;
-        }
-        ProgramEntry entry(*editor, parent);
+        ProgramEntry entry(*editor, parent, editor->dialect());
         action(entry);
         editor->setFocus();
     };

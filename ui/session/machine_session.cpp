@@ -45,6 +45,11 @@ bool MachineSession::busy() const {
 
 bool MachineSession::refuseWhenBusy() {
     if (!busy() && m_status.state == task::MachineState::Idle) return false;
+    if (m_emergencyStopPressed) {
+        emit message(Severity::Error,
+                     tr("The emergency stop button is pressed: release it, then Machine on"), 0);
+        return true;
+    }
     if (m_status.state == task::MachineState::EmergencyStop ||
         m_status.state == task::MachineState::Fault) {
         emit message(Severity::Error,
@@ -156,12 +161,29 @@ void MachineSession::stop() {
 
 void MachineSession::emergencyStop() {
     m_motion->emergencyStop();
+    m_emergencyStopPressed = m_motion->setEmergencyStopButton(true);
     m_run->abort();
     service();
 }
 
+void MachineSession::releaseEmergencyStop() {
+    if (!m_emergencyStopPressed) return;
+    m_motion->setEmergencyStopButton(false);
+    m_emergencyStopPressed = false;
+    service();
+}
+
 bool MachineSession::machineOn() {
+    if (m_emergencyStopPressed) {
+        emit message(Severity::Warning, tr("Release the emergency stop button first"), 0);
+        return false;
+    }
     if (m_motion->machineOn()) return true;
+    // The servo cycle may not have seen the released button yet: one cycle later it has.
+    if (m_motion->status().emergencyStopOpen) {
+        emit message(Severity::Warning, tr("The emergency stop chain is still open"), 0);
+        return false;
+    }
     emit message(Severity::Warning, tr("The machine is on already"), 0);
     return false;
 }

@@ -70,10 +70,13 @@ public:
     // idle, with the spindle and the coolant off.
     void stop();
     // The emergency stop key (or the machine's input): the drives stop at once and are
-    // disabled, a program is aborted; nothing moves until machineOn().
+    // disabled, a program is aborted; nothing moves until machineOn(). On the simulated
+    // machine the key is the machine's latching button: it stays pressed until released.
     void emergencyStop();
+    void releaseEmergencyStop();
+    bool emergencyStopPressed() const { return m_emergencyStopPressed; }
     // Switches the machine on again after an emergency stop or a drive fault; false (and a
-    // message) when it is on already.
+    // message) when it is on already or the emergency stop button is still pressed.
     bool machineOn();
     void setSingleBlock(bool on);
     bool singleBlock() const { return m_singleBlock; }
@@ -164,7 +167,8 @@ private:
     std::unique_ptr<task::ShiftedMotionPort> m_motion;
     std::filesystem::path m_ncRoot;
     task::PresetStore m_presets;
-    std::string m_programName;  // the running program's name in m_sources; empty: MDI
+    std::string m_programName;            // the running program's name in m_sources; empty: MDI
+    bool m_emergencyStopPressed = false;  // the simulated machine's button latched
     Pose m_programStart{};
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;

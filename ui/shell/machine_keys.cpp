@@ -81,10 +81,13 @@ MachineKeys::MachineKeys(ModeController& modes, QWidget* parent) : QWidget(paren
     m_emergencyStop = makeModeKey(this, QStringLiteral("emergencyStop"));
     m_emergencyStop->setCheckable(false);
     // Red and bold as the mushroom button on the machine; it never changes with the modes.
-    m_emergencyStop->setStyleSheet(
-        QStringLiteral("QPushButton { background: #c00000; color: white; font-weight: bold; "
-                       "border: 2px solid #600000; border-radius: 3px; }"));
-    connect(m_emergencyStop, &QPushButton::clicked, this, &MachineKeys::emergencyStopPressed);
+    applyEmergencyStopLook();
+    connect(m_emergencyStop, &QPushButton::clicked, this, [this] {
+        if (m_emergencyStopLatched)
+            emit emergencyStopReleased();
+        else
+            emit emergencyStopPressed();
+    });
     layout->addWidget(m_emergencyStop);
     connect(&m_modes, &ModeController::modesChanged, this, &MachineKeys::refresh);
     retranslate();
@@ -106,8 +109,26 @@ void MachineKeys::retranslate() {
         programmingKey(mode)->setText(m_modes.programmingModeText(mode));
     }
     m_machineOn->setText(wrapLabel(tr("Machine on")));
-    m_emergencyStop->setText(wrapLabel(tr("EMERGENCY STOP")));
+    m_emergencyStop->setText(
+        wrapLabel(m_emergencyStopLatched ? tr("Release EMERGENCY STOP") : tr("EMERGENCY STOP")));
     refresh();
+}
+
+void MachineKeys::setEmergencyStopPressed(bool pressed) {
+    if (pressed == m_emergencyStopLatched) return;
+    m_emergencyStopLatched = pressed;
+    applyEmergencyStopLook();
+    retranslate();
+}
+
+void MachineKeys::applyEmergencyStopLook() {
+    // Pressed, the button is darker and sunk, as a latched mushroom button looks.
+    m_emergencyStop->setStyleSheet(
+        m_emergencyStopLatched
+            ? QStringLiteral("QPushButton { background: #700000; color: white; font-weight: "
+                             "bold; border: 4px inset #300000; border-radius: 3px; }")
+            : QStringLiteral("QPushButton { background: #c00000; color: white; font-weight: "
+                             "bold; border: 2px solid #600000; border-radius: 3px; }"));
 }
 
 void MachineKeys::refresh() {

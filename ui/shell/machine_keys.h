@@ -24,20 +24,25 @@ public:
     QPushButton* programmingKey(task::ProgrammingMode mode) const;
     QPushButton* emergencyStopKey() const { return m_emergencyStop; }
     QPushButton* machineOnKey() const { return m_machineOn; }
+    // A latching emergency stop button (the simulated machine's) shows pressed until released.
+    void setEmergencyStopPressed(bool pressed);
     void retranslate();
 
 signals:
     void emergencyStopPressed();
+    void emergencyStopReleased();
     void machineOnPressed();
 
 private:
     void refresh();
+    void applyEmergencyStopLook();
 
     ModeController& m_modes;
     std::vector<QPushButton*> m_machineKeys;      // indexed by MachineMode
     std::vector<QPushButton*> m_programmingKeys;  // indexed by ProgrammingMode
     QPushButton* m_emergencyStop = nullptr;
     QPushButton* m_machineOn = nullptr;
+    bool m_emergencyStopLatched = false;
 };
 
 }  // namespace kerf::ui

@@ -66,6 +66,10 @@ void MainWindow::connectSession() {
     new ExecutingBlockFollower(*m_session, *m_program, this);
     connect(m_machineKeys, &MachineKeys::emergencyStopPressed, m_session,
             &MachineSession::emergencyStop);
+    connect(m_machineKeys, &MachineKeys::emergencyStopReleased, m_session,
+            &MachineSession::releaseEmergencyStop);
+    connect(m_session, &MachineSession::statusChanged, m_machineKeys,
+            [this] { m_machineKeys->setEmergencyStopPressed(m_session->emergencyStopPressed()); });
     connect(m_machineKeys, &MachineKeys::machineOnPressed, m_session, &MachineSession::machineOn);
     // The keyboard's Pause key is an emergency stop too, whatever has the focus.
     auto* emergencyKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);

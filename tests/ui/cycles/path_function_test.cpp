@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QTest>
 #include <QTextBlock>
 #include <QTimer>
@@ -14,6 +15,7 @@
 #include "core/cycles/cycle_registry.h"
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
+#include "run_program.h"
 #include "ui/cycles/cycle_catalogue.h"
 #include "ui/cycles/cycle_catalogue_dialog.h"
 #include "ui/cycles/cycle_dialog.h"
@@ -237,6 +239,101 @@ TEST(ProgrammingSoftkeys, CyclDefGroupCycleWritesTheDefinitionAtTheCursor) {
     findKey(entry, "editCycle")();
     EXPECT_TRUE(editor.toPlainText().contains("  Q201=-14     ;DEPTH ~"));
     EXPECT_FALSE(editor.toPlainText().contains("Q201=-12"));
+}
+
+// The same keys over a TNC ISO program write its ISO forms (docs/tnciso.md): "G200 DRILLING" with
+// the Q lines, G01/G02 with G90 or G91, G79, numbered "N.. *" before the end block; what has no
+// ISO form is explained and not written. The result runs on the ISO front end.
+TEST(ProgrammingSoftkeys, OverAnIsoProgramTheDialogsWriteIsoBlocks) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(program::Dialect::TncIso);
+    editor.setPlainText(
+        "%K G71 *\nN1 G30 G17 X+0 Y+0 Z-20 *\nN2 G31 G90 X+100 Y+100 Z+0 *\n"
+        "N3 T1 G17 S2000 *\nN4 G00 G40 G90 X+10 Y+10 Z+50 *\n"
+        "N99999999 %K G71 *");
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(4)));
+    std::vector<SoftkeyRow> shown;
+    SoftkeyPaging paging{[&shown](std::vector<SoftkeyRow> rows) { shown = std::move(rows); },
+                         [] {}};
+    const auto findKey = [](const std::vector<SoftkeyRow>& rows, const QString& id) {
+        for (const SoftkeyRow& row : rows) {
+            for (const Softkey& key : row) {
+                if (key.id == id) return key.action;
+            }
+        }
+        return std::function<void()>();
+    };
+    const std::vector<SoftkeyRow> entry = programmingEntryRows(&editor, nullptr, paging);
+    findKey(entry, "cyclDef")();
+    findKey(shown, "cycleGroup0")();
+    ASSERT_TRUE(findKey(shown, "cycle200"));
+    answerNextDialog<CycleDialog>([](CycleDialog& dialog) {
+        dialog.input(1)->setText("-12");  // Q201
+        dialog.accept();
+    });
+    findKey(shown, "cycle200")();
+    QStringList lines = editor.toPlainText().split('\n');
+    ASSERT_GE(lines.size(), 8);
+    EXPECT_EQ(lines[5], "N5 G200 DRILLING");
+    EXPECT_TRUE(lines.contains("  Q201=-12     ;DEPTH")) << editor.toPlainText().toStdString();
+    EXPECT_TRUE(lines[lines.size() - 2].endsWith(" *")) << "the cycle block is closed";
+    EXPECT_EQ(lines.last(), "N99999999 %K G71 *");
+
+    // The cursor is on the definition: L, then CYCL CALL, go after it.
+    answerNextDialog<PathFunctionDialog>([](PathFunctionDialog& dialog) {
+        qobject_cast<QLineEdit*>(dialog.input(0))->setText("30");
+        qobject_cast<QLineEdit*>(dialog.input(1))->setText("20");
+        qobject_cast<QLineEdit*>(dialog.input(4))->setText("300");
+        dialog.accept();
+    });
+    findKey(entry, "pathL")();
+    findKey(entry, "cyclCall")();
+    EXPECT_TRUE(editor.toPlainText().endsWith(
+        "\nN6 G01 G90 X+30 Y+20 F300 *\nN7 G79 *\nN99999999 %K G71 *"))
+        << editor.toPlainText().toStdString();
+    answerNextDialog<PathFunctionDialog>([](PathFunctionDialog& dialog) {
+        qobject_cast<QLineEdit*>(dialog.input(0))->setText("i10");
+        qobject_cast<QLineEdit*>(dialog.input(1))->setText("40");
+        qobject_cast<QComboBox*>(dialog.input(2))->setCurrentIndex(1);  // DR+
+        // Mixed absolute and incremental: the message box that follows explains it.
+        answerNextDialog<QMessageBox>([](QMessageBox& box) {
+            EXPECT_TRUE(box.text().contains("G91")) << box.text().toStdString();
+            box.accept();
+        });
+        dialog.accept();
+    });
+    findKey(entry, "pathC")();
+    EXPECT_FALSE(editor.toPlainText().contains("G03")) << editor.toPlainText().toStdString();
+
+    // Edit cycle reads the ISO block back and writes it in place with its number.
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(6)));
+    answerNextDialog<CycleDialog>([](CycleDialog& dialog) {
+        EXPECT_EQ(dialog.input(1)->text(), "-12");
+        dialog.input(1)->setText("-14");
+        dialog.accept();
+    });
+    findKey(entry, "editCycle")();
+    lines = editor.toPlainText().split('\n');
+    EXPECT_EQ(lines[5], "N5 G200 DRILLING");
+    EXPECT_TRUE(lines.contains("  Q201=-14     ;DEPTH")) << editor.toPlainText().toStdString();
+
+    // The program the dialogs wrote runs on the ISO front end: the drilling reaches Z-14.
+    const test::ProgramRun run = test::runIsoProgram(editor.toPlainText().toStdString());
+    EXPECT_TRUE(run.finished);
+    EXPECT_TRUE(run.diagnostics.empty())
+        << (run.diagnostics.empty() ? "" : run.diagnostics.front().message());
+    ASSERT_FALSE(run.feedZ.empty());
+    EXPECT_NEAR(*std::min_element(run.feedZ.begin(), run.feedZ.end()), -14.0, 1e-9);
+
+    // Inserted between N1 and N2, the blocks after it move up by the program's step.
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(1)));
+    findKey(entry, "cyclCall")();
+    lines = editor.toPlainText().split('\n');
+    EXPECT_EQ(lines[2], "N2 G79 *");
+    EXPECT_EQ(lines[3], "N3 G31 G90 X+100 Y+100 Z+0 *");
+    EXPECT_TRUE(lines.contains("N8 G79 *")) << editor.toPlainText().toStdString();
+    EXPECT_EQ(lines.last(), "N99999999 %K G71 *");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "run_program.h"
 
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/tnciso/tnciso.h"
 #include "core/machine/machine_loader.h"
 #include "core/program/source_registry.h"
 
@@ -17,18 +18,17 @@ public:
     std::vector<double> feedZ;
 };
 
-}  // namespace
-
-ProgramRun runKlartextProgram(const std::string& text) {
+ProgramRun runProgram(const std::string& text, bool iso) {
     ProgramRun run;
     const auto machine = machine::loadMachine("mill");
     if (!machine) return run;
     program::SourceRegistry sources;
     klartext::KlartextSettings settings;
     settings.machine = &*machine;
+    if (iso) tnciso::enableIso(settings, true);
     klartext::KlartextInterpreter interpreter(sources, settings);
     FeedRecorder recorder;
-    if (interpreter.loadText(text, "RUN.H")) {
+    if (interpreter.loadText(text, iso ? "RUN.I" : "RUN.H")) {
         for (;;) {
             const interp::RunStatus status = interpreter.run(recorder, 1000);
             if (status == interp::RunStatus::NeedsSync) {
@@ -47,6 +47,16 @@ ProgramRun runKlartextProgram(const std::string& text) {
     }
     run.feedZ = recorder.feedZ;
     return run;
+}
+
+}  // namespace
+
+ProgramRun runKlartextProgram(const std::string& text) {
+    return runProgram(text, false);
+}
+
+ProgramRun runIsoProgram(const std::string& text) {
+    return runProgram(text, true);
 }
 
 }  // namespace kerf::ui::test

@@ -17,5 +17,7 @@ struct ProgramRun {
 };
 
 ProgramRun runKlartextProgram(const std::string& text);
+// The same for a TNC DIN/ISO program.
+ProgramRun runIsoProgram(const std::string& text);
 
 }  // namespace kerf::ui::test

@@ -324,10 +324,18 @@ TEST_F(MachineScreens, TheEmergencyStopKeyStopsAProgramAndMachineOnSwitchesTheMa
     ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
     processUntil([] { return false; }, 100ms);
     EXPECT_EQ(session->status().state, task::MachineState::EmergencyStop);
+    // The key latches as the machine's button does: Machine on is refused until it is released.
+    EXPECT_TRUE(keys->emergencyStopKey()->text().contains("Release"));
+    EXPECT_TRUE(window->grab().save("emergency_stop_screen.png"));
+    keys->machineOnKey()->click();
+    processUntil([] { return false; }, 100ms);
+    EXPECT_EQ(session->status().state, task::MachineState::EmergencyStop);
+    keys->emergencyStopKey()->click();
+    ASSERT_TRUE(processUntil([&] { return !session->status().emergencyStopOpen; }, 1s));
+    EXPECT_FALSE(keys->emergencyStopKey()->text().contains("Release"));
     keys->machineOnKey()->click();
     ASSERT_TRUE(
         processUntil([&] { return session->status().state == task::MachineState::Idle; }, 2s));
-    EXPECT_TRUE(window->grab().save("emergency_stop_screen.png"));
 }
 
 }  // namespace

@@ -275,5 +275,26 @@ TEST(MachineSessionLathe, RunsAFagorProgramWithXInDiameter) {
     EXPECT_NEAR(session.status().axes[2].nominal, 10.0, 1e-6);
 }
 
+// G95: F is mm per revolution; the feed shown while a block runs is the path feed it gives at
+// the programmed speed, 0.2 mm x 1000 rpm = 200 mm/min (it used to show 0.2 as mm/min).
+TEST(MachineSessionLathe, AFeedPerRevolutionShowsAsThePathFeedAtTheProgrammedSpeed) {
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    ASSERT_TRUE(session.startProgram(
+        "N1 G90 G00 X40 Z10\nN2 G95 S1000 M3\nN3 G01 Z-20 F0.2\nN4 M30\n", "FEED.PIT"));
+    double shown = 0.0;
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    while (session.runState() == RunState::Running && std::chrono::steady_clock::now() < deadline) {
+        session.service();
+        if (session.status().block.line == 3) shown = session.status().programmedFeedMmPerMin;
+        if (shown > 0.0) break;
+        std::this_thread::sleep_for(2ms);
+    }
+    EXPECT_NEAR(shown, 200.0, 1e-9);
+    session.stop();
+}
+
 }  // namespace
 }  // namespace kerf::ui

@@ -246,6 +246,13 @@ TEST_F(MachineStopTest, EmergencyStopLeavesEveryStateAndMachineOnReturnsToReady)
         EXPECT_FALSE(session->executeMdi("L X+0 R0 FMAX"));
         // The simulated drives' own quick-stop ramp takes milliseconds.
         serviceUntil([] { return false; }, 50ms);
+        // The simulated button latches: the machine stays off until it is released.
+        EXPECT_TRUE(session->emergencyStopPressed());
+        EXPECT_TRUE(status().emergencyStopOpen);
+        EXPECT_FALSE(session->machineOn()) << "on with the button pressed";
+        session->releaseEmergencyStop();
+        ASSERT_TRUE(serviceUntil([this] { return !status().emergencyStopOpen; }, 500ms));
+        EXPECT_EQ(status().state, MachineState::EmergencyStop) << "released is not on";
         ASSERT_TRUE(session->machineOn());
         ASSERT_TRUE(serviceUntil([this] { return ready(); }, 2s));
         EXPECT_FALSE(session->machineOn()) << "on twice";

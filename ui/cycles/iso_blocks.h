@@ -1,0 +1,29 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include "ui/cycles/path_function.h"
+
+// The TNC DIN/ISO forms of what the programming dialogs write (docs/tnciso.md), so that the
+// dialogs serve `.I` programs too: a parameter cycle "G200 DRILLING" with its "  Q200=+2 ;..."
+// lines, G79 for CYCL CALL, G00/G01/G02/G03/G06/G24/G25 and I/J for the path functions, "T n G17
+// S.." for TOOL CALL. Texts without block number and without the closing '*'.
+namespace kerf::ui {
+
+// The ISO block, or the message (UI language) why the entry has no ISO form.
+struct IsoResult {
+    QString block;
+    QString error;  // empty: `block` is valid
+};
+
+// From the Klartext cycle definition writeCycleBlocks returns (new-style cycles only; the old
+// cycles' one-block ISO forms are not written by the dialogs).
+IsoResult isoCycleBlock(const QStringList& klartextBlocks);
+// Back: an ISO cycle block (number and '*' removed) as the Klartext block readCycleBlocks reads;
+// empty when it is not a parameter cycle.
+QString klartextCycleBlock(const QString& isoBlock);
+// The path function or TOOL CALL from the dialog's values (checked by checkPathFunction).
+IsoResult isoPathBlock(PathFunction function, const QStringList& values);
+
+}  // namespace kerf::ui
