@@ -19,6 +19,9 @@ struct MotionOptions {
     double maxFeedOverride = 1.5;
     bool startHomed = true;            // simulation: joints count as homed at start
     double jogVelocityFraction = 0.2;  // continuous jog default, of the axis velocity
+    // Runs of short lines followed as a curve fitted within the tolerance (docs/motion.md);
+    // off: every vertex is a corner (for tests of the look-ahead on many short elements).
+    bool smoothPolylines = true;
 };
 
 struct AxisModel {

@@ -3,18 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "motion/planner/biarc.h"
+
 namespace kerf::motion {
 
 namespace {
 
 using V3 = Vec3Array;
 
-V3 sub(const V3& a, const V3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-V3 add(const V3& a, const V3& b) {
-    return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
 V3 scale(const V3& a, double f) {
     return {a[0] * f, a[1] * f, a[2] * f};
 }
@@ -37,25 +33,6 @@ AxisVector withXyz(const AxisVector& base, const V3& p) {
     out[1] = p[1];
     out[2] = p[2];
     return out;
-}
-
-// Biarc from (p0, t0) to (p1, t1) with equal tangent legs; the joint tangent is parallel to
-// the line between the two leg ends.
-int biarc(const AxisVector& base, const V3& p0, const V3& t0, const V3& p1, const V3& t1,
-          std::array<PathGeometry, 2>& arcs) {
-    V3 v = sub(p1, p0);
-    V3 t = add(t0, t1);
-    double c = dot(t0, t1);
-    double vt = dot(v, t);
-    double vv = dot(v, v);
-    double d = vv / (vt + std::sqrt(vt * vt + 2.0 * (1.0 - c) * vv));
-    V3 q0 = add(p0, scale(t0, d));
-    V3 q1 = sub(p1, scale(t1, d));
-    V3 joint = scale(add(q0, q1), 0.5);
-    arcs[0] = makeTangentArc(withXyz(base, p0), t0, withXyz(base, joint));
-    V3 jointTangent = unit(sub(q1, q0));
-    arcs[1] = makeTangentArc(withXyz(base, joint), jointTangent, withXyz(base, p1));
-    return 2;
 }
 
 }  // namespace
@@ -90,8 +67,8 @@ CornerBlend blendCornerFrom(const PathGeometry& before, const PathGeometry& afte
     PathPoint b = pointAt(after, trimAfter);
     blend.trimBefore = trimBefore;
     blend.trimAfter = trimAfter;
-    blend.arcCount = biarc(a.position, xyz(a.position), unit(xyz(a.tangent)), xyz(b.position),
-                           unit(xyz(b.tangent)), blend.arcs);
+    blend.arcCount = makeBiarc(a.position, xyz(a.position), unit(xyz(a.tangent)), xyz(b.position),
+                               unit(xyz(b.tangent)), blend.arcs);
     blend.deviation = biarcDeviation(blend, before, after);
     if (blend.deviation > deviation) blend.arcCount = 0;
     return blend;
@@ -122,7 +99,7 @@ CornerBlend blendCorner(const PathGeometry& before, const PathGeometry& after, d
             blend.deviation = trim * (1.0 - std::cos(theta / 2.0)) / std::tan(theta / 2.0);
             return blend;
         }
-        blend.arcCount = biarc(a.position, pa, ta, pb, tb, blend.arcs);
+        blend.arcCount = makeBiarc(a.position, pa, ta, pb, tb, blend.arcs);
         double worst = biarcDeviation(blend, before, after);
         blend.deviation = worst;
         if (worst <= deviation) return blend;
@@ -142,8 +119,8 @@ CornerBlend blendAcross(const PathGeometry& before, const PathGeometry& middle,
         PathPoint a = pointAt(before, before.length - trim);
         blend.trimBefore = trim;
         blend.trimAfter = trimAfter;
-        blend.arcCount = biarc(a.position, xyz(a.position), unit(xyz(a.tangent)), xyz(b.position),
-                               unit(xyz(b.tangent)), blend.arcs);
+        blend.arcCount = makeBiarc(a.position, xyz(a.position), unit(xyz(a.tangent)),
+                                   xyz(b.position), unit(xyz(b.tangent)), blend.arcs);
         double worst = 0.0;
         for (int k = 0; k < blend.arcCount && worst <= deviation; ++k) {
             const PathGeometry& arc = blend.arcs[static_cast<size_t>(k)];

@@ -99,7 +99,11 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
     double nominal =
         e.feedKind == FeedKind::Rapid || e.feedKind == FeedKind::PerMinute ? e.feed : 1e300;
     double bestCap = -1.0;
+    // Limits of its own (a stage of a share ladder near a stop, share_ladder.h): as they are.
+    const bool ownShare = e.limits.accel > 0.0 && e.feedKind != FeedKind::SpindleSynced;
+    if (ownShare) entry.limits = e.limits;
     for (double share : kTangentialShares) {
+        if (ownShare) break;
         Limits limits = tangentialLimits(m_model, entry.bounds, share);
         if (e.limits.accel > 0.0) {
             limits = {std::min(limits.accel, e.limits.accel * share / kTangentialShares[0]),

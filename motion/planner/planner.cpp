@@ -9,6 +9,7 @@
 #include "core/geometry/arc_math.h"
 #include "core/geometry/plane.h"
 #include "motion/planner/corner_blend.h"
+#include "motion/planner/share_ladder.h"
 #include "motion/planner/soft_limits.h"
 
 namespace kerf::motion {
@@ -16,6 +17,17 @@ namespace kerf::motion {
 namespace {
 
 constexpr double kMaxBlendAngle = 175.0 * kPi / 180.0;
+// Polyline smoothing: segments up to this length join a run, and a vertex turning more than
+// this stays a corner (a real corner of the part, not a point of a curve).
+constexpr double kMaxSmoothSegmentMm = 1.0;
+constexpr double kMaxSmoothTurn = 10.0 * kPi / 180.0;
+// Shorter runs are not worth a fit: their corners are blended as usual.
+constexpr size_t kMinRunSegments = 4;
+// Beyond this distance from the last stop no share ladder can reach (shareLadder's stages).
+constexpr double kFarFromStop = 100.0;
+// Shorter curves (the blends of a polyline's corners) keep one share: stages on them would only
+// add binding points between them and the lines.
+constexpr double kMinLadderElementMm = 0.1;
 
 AxisVector toAxes(const Pose& pose) {
     return pose.values;
@@ -65,6 +77,8 @@ void Planner::reset(const AxisVector& tip) {
     m_lookahead.clear();
     m_pending.reset();
     m_short.reset();
+    m_run.clear();
+    m_sinceStop = 0.0;
     m_synchronised = false;
     m_refused = false;
     setPosition(tip);
@@ -73,6 +87,8 @@ void Planner::reset(const AxisVector& tip) {
 double Planner::pendingLength() const {
     double pending = m_pending ? m_pending->geometry.length - m_pending->trimStart : 0.0;
     if (m_short) pending += m_short->geometry.length;
+    for (const Move& move : m_run)
+        pending += move.geometry.length;
     return m_lookahead.pendingLength() + pending;
 }
 
@@ -307,18 +323,97 @@ void Planner::addMove(Move move, const AxisVector& target, const SourceLocation&
     m_lastMoveGeometry = move.geometry;
     move.blendable = !move.probe && move.feedKind != FeedKind::SpindleSynced &&
                      movesOnlyXyz(move.geometry) && !m_exactStop;
+    if (smoothable(move)) {
+        if (!m_run.empty() && !continuesRun(move)) endRun();
+        if (m_run.empty()) {
+            m_smoother.start(m_position);
+            m_runFirst = 1;
+        }
+        m_run.push_back(move);
+        m_smoother.add(target);
+        releaseRun(false);
+    } else {
+        endRun();
+        pushMove(move);
+    }
+    m_position = target;
+}
+
+void Planner::pushMove(Move move) {
     if (m_short && !blendAcrossShort(move)) settleShort();
     if (m_short) {
         m_short.reset();
     } else if (m_pending && worthHolding(move)) {
         m_short = move;
-        m_position = target;
         return;
     } else if (m_pending) {
         cornerTo(move);
     }
     m_pending = move;
-    m_position = target;
+}
+
+bool Planner::smoothable(const Move& move) const {
+    return m_model.options.smoothPolylines && move.blendable && move.feedMove &&
+           move.feedKind == FeedKind::PerMinute && !move.geometry.curved() &&
+           move.tolerance > 0.0 && move.geometry.length <= kMaxSmoothSegmentMm;
+}
+
+bool Planner::continuesRun(const Move& move) const {
+    const Move& last = m_run.back();
+    return last.feed == move.feed && last.tolerance == move.tolerance &&
+           cornerAngle(last.geometry, move.geometry) <= kMaxSmoothTurn;
+}
+
+void Planner::releaseRun(bool final) {
+    if (m_run.empty()) return;
+    if (final && m_runFirst == 1 && m_run.size() < kMinRunSegments) {
+        std::deque<Move> run;
+        run.swap(m_run);
+        for (Move& move : run)
+            pushMove(move);
+        return;
+    }
+    // Half the tolerance for the fitted curve, the other half for the servo filter (as blends).
+    const double deviation = m_run.front().tolerance / 2.0;
+    m_pieces.clear();
+    m_smoother.take(deviation, final, m_pieces);
+    for (const SmoothPiece& piece : m_pieces) {
+        const Move& last = m_run[piece.lastSegment - m_runFirst];
+        if (!piece.fitted) {
+            pushMove(last);
+            continue;
+        }
+        // Each arc is named after the programmed moves it replaces (the last one holding its
+        // end), so that the path deviation is measured from them.
+        Move arc = m_run[piece.jointSegment - m_runFirst];
+        arc.firstIndex = m_run[piece.firstSegment - m_runFirst].index;
+        arc.geometry = piece.arcs[0];
+        arc.tangentJoin = piece.tangentToPrevious;
+        arc.endsBlock = false;
+        arc.trimStart = 0.0;
+        arc.fitDeviation = piece.deviation;
+        arc.reachStart = m_run[piece.firstSegment - m_runFirst].geometry.length / 2.0;
+        pushMove(arc);
+        arc = last;
+        arc.firstIndex = m_run[piece.jointSegment - m_runFirst].index;
+        arc.geometry = piece.arcs[1];
+        arc.tangentJoin = true;
+        arc.trimStart = 0.0;
+        arc.fitDeviation = piece.deviation;
+        arc.reachEnd = last.geometry.length / 2.0;
+        pushMove(arc);
+    }
+    if (!m_pieces.empty()) {
+        const size_t released = m_pieces.back().lastSegment + 1 - m_runFirst;
+        m_run.erase(m_run.begin(), m_run.begin() + static_cast<std::ptrdiff_t>(released));
+        m_runFirst += released;
+    }
+}
+
+void Planner::endRun() {
+    if (m_run.empty()) return;
+    releaseRun(true);
+    m_run.clear();
 }
 
 bool Planner::worthHolding(const Move& move) const {
@@ -346,12 +441,13 @@ bool Planner::blendAcrossShort(Move& move) {
     if (!move.blendable || middle.feedKind != move.feedKind || m_exactStop ||
         cornerAngle(before.geometry, move.geometry) > kMaxBlendAngle)
         return false;
-    double tolerance = std::min(middle.tolerance, move.tolerance);
+    // A fitted curve has used part of the tolerance already.
+    double fitted = std::max(before.fitDeviation, move.fitDeviation);
+    double tolerance = std::min(middle.tolerance, move.tolerance) - fitted;
     if (tolerance <= 0.0) return false;
-    double maxBefore =
-        std::min(before.geometry.length / 2.0, before.geometry.length - before.trimStart);
+    double maxBefore = std::min(before.blendReachEnd(), before.geometry.length - before.trimStart);
     CornerBlend blend = blendAcross(before.geometry, middle.geometry, move.geometry,
-                                    tolerance / 2.0, maxBefore, move.geometry.length / 2.0);
+                                    tolerance / 2.0, maxBefore, move.blendReachStart());
     if (blend.arcCount == 0) return false;
     // Only when it turns more gently than the corner it replaces (half the middle, see above).
     double theta = cornerAngle(before.geometry, middle.geometry);
@@ -359,8 +455,14 @@ bool Planner::blendAcrossShort(Move& move) {
     for (int i = 0; i < blend.arcCount; ++i) {
         if (blend.arcs[static_cast<size_t>(i)].curvature() >= replaced) return false;
     }
-    // Named after the middle move, so that the path deviation is measured from the move before.
+    // Named after the middle move, so that the path deviation is measured from the move before;
+    // when it reaches into a fitted curve, after the moves that curve stands for too.
     Move corner = middle;
+    if (move.firstIndex > 0) {
+        corner.index = move.index;
+        corner.firstIndex = middle.index;
+    }
+    if (before.firstIndex > 0) corner.firstIndex = before.firstIndex;
     corner.feed = std::min({before.feed, middle.feed, move.feed});
     corner.feedMove = before.feedMove || middle.feedMove || move.feedMove;
     emitPending(blend.trimBefore);  // ends `before`
@@ -381,6 +483,10 @@ void Planner::settleShort() {
 
 void Planner::cornerTo(Move& move) {
     Move& before = *m_pending;
+    if (move.tangentJoin) {
+        emitPending(0.0);
+        return;
+    }
     double theta = cornerAngle(before.geometry, move.geometry);
     bool sameRegime = before.feedKind == move.feedKind;
     if (theta < 1e-9 && sameRegime && !m_exactStop) {
@@ -389,15 +495,16 @@ void Planner::cornerTo(Move& move) {
     }
     if (!before.blendable || !move.blendable || !sameRegime || theta > kMaxBlendAngle ||
         move.tolerance <= 0.0) {
-        exactStop();
+        stopAfterPending();
         return;
     }
     // Half the tolerance for the blend, the other half for the servo filter's contour error.
-    double deviation = move.tolerance / 2.0;
-    double maxBefore =
-        std::min(before.geometry.length / 2.0, before.geometry.length - before.trimStart);
-    CornerBlend blend = blendCorner(before.geometry, move.geometry, deviation, maxBefore,
-                                    move.geometry.length / 2.0);
+    // A fitted curve has used part of the tolerance already.
+    double fitted = std::max(before.fitDeviation, move.fitDeviation);
+    double deviation = move.tolerance / 2.0 - fitted;
+    double maxBefore = std::min(before.blendReachEnd(), before.geometry.length - before.trimStart);
+    CornerBlend blend =
+        blendCorner(before.geometry, move.geometry, deviation, maxBefore, move.blendReachStart());
     // A sliver left between two blends would only add curvature steps: take it into the blend.
     double rest = before.geometry.length - before.trimStart - blend.trimBefore;
     if (blend.arcCount > 0 && rest > 0.0 && rest < 0.1 * before.geometry.length) {
@@ -407,32 +514,85 @@ void Planner::cornerTo(Move& move) {
         if (whole.arcCount > 0) blend = whole;
     }
     if (blend.arcCount == 0) {
-        exactStop();
+        stopAfterPending();
         return;
     }
     Move corner = move;
+    // A blend from a fitted curve may reach back over several of the moves it stands for.
+    if (before.firstIndex > 0) corner.firstIndex = before.firstIndex;
     corner.feed = std::min(before.feed, move.feed);
     corner.feedMove = before.feedMove || move.feedMove;
     emitPending(blend.trimBefore);  // ends `before`
     for (int i = 0; i < blend.arcCount; ++i) {
-        emitElement(corner, blend.arcs[static_cast<size_t>(i)], move.tolerance - blend.deviation,
-                    false);
+        emitElement(corner, blend.arcs[static_cast<size_t>(i)],
+                    move.tolerance - fitted - blend.deviation, false);
     }
     move.trimStart = blend.trimAfter;
 }
 
-void Planner::emitPending(double trimEnd) {
+void Planner::emitPending(double trimEnd, bool stopFollows) {
     if (!m_pending) return;
     const Move& move = *m_pending;
     double end = move.geometry.length - trimEnd;
     if (end - move.trimStart > 1e-9) {
-        emitElement(move, trimmed(move.geometry, move.trimStart, end), move.tolerance, true);
+        emitElement(move, trimmed(move.geometry, move.trimStart, end),
+                    move.tolerance - move.fitDeviation, move.endsBlock, stopFollows);
     }
     m_pending.reset();
 }
 
 void Planner::emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
-                          bool blockEnd) {
+                          bool blockEnd, bool stopFollows) {
+    std::array<ShareStage, 4> stages;
+    size_t count = 0;
+    if (geometry.curved() && geometry.length >= kMinLadderElementMm &&
+        move.feedKind == FeedKind::PerMinute && move.blendable &&
+        (m_sinceStop < kFarFromStop || stopFollows)) {
+        count = shareLadder(m_model, geometry, contourBudget, move.feed, stages);
+    }
+    if (count == 0) {
+        pushElement(move, geometry, contourBudget, blockEnd, nullptr);
+        return;
+    }
+    // Stage k holds where the distance from the stop before (or, when one follows, to the stop
+    // after) is below the stages' lengths up to k: pieces between those breakpoints.
+    const double length = geometry.length;
+    const double sinceStop = m_sinceStop;  // at the start of the element (pushElement adds)
+    std::array<double, 10> cuts{};
+    size_t cutCount = 0;
+    double reach = 0.0;
+    for (size_t k = 0; k < count; ++k) {
+        reach += stages[k].length;
+        for (double cut : {reach - sinceStop, stopFollows ? length - reach : -1.0}) {
+            if (cut > 1e-6 && cut < length - 1e-6) cuts[cutCount++] = cut;
+        }
+    }
+    std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(cutCount));
+    auto stageAt = [&](double s) {
+        double sum = 0.0;
+        for (size_t k = 0; k < count; ++k) {
+            sum += stages[k].length;
+            if (sinceStop + s < sum || (stopFollows && length - s < sum)) return k;
+        }
+        return count;
+    };
+    double from = 0.0;
+    for (size_t i = 0; i <= cutCount; ++i) {
+        const double to = i < cutCount ? cuts[i] : length;
+        if (to - from < 1e-9) continue;
+        // Pieces of one stage next to each other stay one.
+        const size_t stage = stageAt((from + to) / 2.0);
+        if (i < cutCount &&
+            stageAt((to + (i + 1 < cutCount ? cuts[i + 1] : length)) / 2.0) == stage)
+            continue;
+        pushElement(move, trimmed(geometry, from, to), contourBudget, blockEnd && to >= length,
+                    stage < count ? &stages[stage] : nullptr);
+        from = to;
+    }
+}
+
+void Planner::pushElement(const Move& move, const PathGeometry& geometry, double contourBudget,
+                          bool blockEnd, const ShareStage* stage) {
     MotionItem item;
     item.kind = MotionItem::Kind::Element;
     item.sequence = ++m_sequence;
@@ -447,6 +607,7 @@ void Planner::emitElement(const Move& move, const PathGeometry& geometry, double
     e.blockEnd = blockEnd;
     e.spindleDegPerUnit = move.spindleDegPerUnit;
     e.moveIndex = move.index;
+    e.firstMoveIndex = move.firstIndex;
     e.source = move.source;
     if (move.feedKind == FeedKind::SpindleSynced) {
         double lead = move.feed;
@@ -456,14 +617,25 @@ void Planner::emitElement(const Move& move, const PathGeometry& geometry, double
     } else if (move.feedKind != FeedKind::Rapid) {
         e.capVelocity = m_model.maxFeed;
     }
+    if (stage) {
+        e.limits = stage->limits;
+        e.capVelocity = std::min(e.capVelocity, stage->cap);
+    }
     m_pathS += geometry.length;
+    m_sinceStop += geometry.length;
     m_lookahead.push(item, contourBudget);
 }
 
 void Planner::exactStop() {
+    endRun();
+    stopAfterPending();
+}
+
+void Planner::stopAfterPending() {
     settleShort();
-    emitPending(0.0);
+    emitPending(0.0, true);
     m_lookahead.stopHere();
+    m_sinceStop = 0.0;
 }
 
 void Planner::emitAction(const Action& action, const SourceLocation& source) {

@@ -1,11 +1,16 @@
 #pragma once
 
+#include <algorithm>
+#include <deque>
 #include <optional>
+#include <vector>
 
 #include "core/base/diagnostic.h"
 #include "core/canon/commands.h"
 #include "motion/kinematics/machine_model.h"
 #include "motion/planner/lookahead.h"
+#include "motion/planner/polyline_smoother.h"
+#include "motion/planner/share_ladder.h"
 #include "motion/port/motion_item.h"
 
 // The motion planner: turns the canonical command stream into path elements and actions for the
@@ -66,11 +71,33 @@ private:
         double tolerance = 0.0;
         uint32_t index = 0;
         SourceLocation source;
+        bool endsBlock = true;      // the programmed block ends where this move ends
+        bool tangentJoin = false;   // starts with the end tangent of the move before (smoothing)
+        double fitDeviation = 0.0;  // of a fitted curve from the programmed polyline
+        uint32_t firstIndex = 0;    // of a fitted curve: the first programmed move it replaces
+        // How far a corner blend may reach into the move at its start and end (0: half of it).
+        // A fitted curve lets the blends at its ends reach as far as the programmed segments
+        // there would: a longer blend turns more gently, but at the tangential share of a curve.
+        double reachStart = 0.0;
+        double reachEnd = 0.0;
+        double blendReachStart() const { return reach(reachStart); }
+        double blendReachEnd() const { return reach(reachEnd); }
+        double reach(double limit) const {
+            return limit > 0.0 ? std::min(limit, geometry.length / 2.0) : geometry.length / 2.0;
+        }
     };
 
     void addMove(Move move, const AxisVector& target, const SourceLocation& source);
+    // Corners, held short lines and blends for the next move of the path.
+    void pushMove(Move move);
+    // Runs of short lines smoothed within the tolerance (PolylineSmoother).
+    bool smoothable(const Move& move) const;
+    bool continuesRun(const Move& move) const;
+    void releaseRun(bool final);
+    void endRun();
     bool acceptGeometry(const PathGeometry& geometry, const SourceLocation& source);
-    void emitPending(double trimEnd);
+    // `stopFollows`: the motion stops at the end of the pending move.
+    void emitPending(double trimEnd, bool stopFollows = false);
     void cornerTo(Move& move);
     // A short line whose corner with the pending move would need more than half of it is held
     // back, so that the next move can blend across it (blendAcrossShort) instead of turning twice
@@ -78,9 +105,14 @@ private:
     bool worthHolding(const Move& move) const;
     bool blendAcrossShort(Move& move);
     void settleShort();
+    // A curve near a stop is cut where the tangential share may change (shareLadder).
     void emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
-                     bool blockEnd);
+                     bool blockEnd, bool stopFollows = false);
+    void pushElement(const Move& move, const PathGeometry& geometry, double contourBudget,
+                     bool blockEnd, const ShareStage* stage);
+    // Ends any run being smoothed, then stops after the pending move.
     void exactStop();
+    void stopAfterPending();
     void emitAction(const Action& action, const SourceLocation& source);
     void endSynchronisation(const SourceLocation& source);
     void refuse(Diagnostic diagnostic);
@@ -91,9 +123,14 @@ private:
     Lookahead m_lookahead;
     AxisVector m_position{};
     double m_pathS = 0.0;
+    double m_sinceStop = 0.0;  // path length since the motion last stopped
     uint64_t m_sequence = 0;
     std::optional<Move> m_pending;
     std::optional<Move> m_short;  // held between m_pending and the next move
+    PolylineSmoother m_smoother;
+    std::deque<Move> m_run;  // the segments of the run being smoothed not yet released
+    size_t m_runFirst = 1;   // the smoother's segment number of m_run.front()
+    std::vector<SmoothPiece> m_pieces;
     double m_tolerance = 0.0;
     double m_toolLength = 0.0;
     canon::FeedMode m_feedMode = canon::FeedMode::PerMinute;

@@ -38,6 +38,9 @@ struct PathElement {
     bool probe = false;      // stop when the probe triggers
     bool blockEnd = false;   // the programmed block ends at the end of this element
     uint32_t moveIndex = 0;  // programmed move it belongs to (a blend: the move after it)
+    // First programmed move it stands for when it replaces several (a curve fitted to a
+    // polyline, moveIndex being the last); 0: moveIndex alone.
+    uint32_t firstMoveIndex = 0;
     SourceLocation source;
 
     double sEnd() const noexcept { return sStart + geometry.length; }

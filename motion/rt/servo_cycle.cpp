@@ -313,8 +313,12 @@ size_t ServoCycle::collectConstraints(size_t first, std::span<Constraint> out) c
             lastBind = p.bindS;
         }
     }
+    // The end of what is queued, unless the planner's binding points already stop there (then
+    // they meet it with the limits of each element on the way, not this one's).
     const MotionItem& last = m_items.peek(m_items.size() - 1);
-    if (last.kind == MotionItem::Kind::Element) out[count++] = {last.element.sEnd(), 0.0};
+    if (last.kind == MotionItem::Kind::Element &&
+        !(last.element.bindS == last.element.sEnd() && last.element.bindVelocity == 0.0))
+        out[count++] = {last.element.sEnd(), 0.0};
     if (m_singleBlock && m_singleBlockS >= 0.0) out[count++] = {m_singleBlockS, 0.0};
     return count;
 }
@@ -466,6 +470,7 @@ bool ServoCycle::runAction(const MotionItem& item) noexcept {
 void ServoCycle::runProgram() noexcept {
     bool stepped = false;
     m_currentMove = 0;
+    m_currentFirstMove = 0;
     // Every pass but the last pops an item: at most the queue, whatever the path passed.
     for (size_t guard = 0; guard <= kItemRingCapacity; ++guard) {
         if (m_items.empty()) {
@@ -493,6 +498,7 @@ void ServoCycle::runProgram() noexcept {
         const PathElement& e = item.element;
         if (!m_elementEntered) enterElement(e);
         m_currentMove = e.moveIndex;
+        m_currentFirstMove = e.firstMoveIndex > 0 ? e.firstMoveIndex : e.moveIndex;
         m_status.itemSequence = item.sequence;
         m_status.source = item.source;
         if (!stepped) {
@@ -732,7 +738,8 @@ void ServoCycle::cycle() noexcept {
     }
     processCommands();
     if (m_mode == MotionMode::Idle && !m_items.empty()) m_mode = MotionMode::Program;
-    if (m_mode != MotionMode::Program && m_mode != MotionMode::Hold) m_currentMove = 0;
+    if (m_mode != MotionMode::Program && m_mode != MotionMode::Hold)
+        m_currentMove = m_currentFirstMove = 0;
     switch (m_mode) {
         case MotionMode::Hold:
         case MotionMode::Stopped:

@@ -49,6 +49,8 @@ public:
     }
     // Programmed move the interpolator is on (PathElement::moveIndex; 0 outside a program move).
     uint32_t currentMove() const noexcept { return m_currentMove; }
+    // The first programmed move the current element stands for (PathElement::firstMoveIndex).
+    uint32_t currentFirstMove() const noexcept { return m_currentFirstMove; }
     double pathS() const noexcept { return m_gen.state().s; }
     // Timing measured by the thread that calls cycle().
     void noteTiming(bool late, double cpuS) noexcept;
@@ -118,6 +120,7 @@ private:
     bool m_waitingStart = false;
     bool m_onFeedMove = false;
     uint32_t m_currentMove = 0;
+    uint32_t m_currentFirstMove = 0;
     bool m_elementEntered = false;
     bool m_actionStarted = false;
     double m_actionTimer = 0.0;

@@ -72,7 +72,8 @@ void MotionRecorder::record(const Sample& sample) {
         if (m_feedStart < 0.0) m_feedStart = sample.timeS - dt;
         m_feedEnd = sample.timeS;
     }
-    m_recentMoves[m_recentNext] = sample.moveIndex;
+    m_recentMoves[m_recentNext] =
+        sample.firstMoveIndex > 0 ? sample.firstMoveIndex : sample.moveIndex;
     m_recentNext = (m_recentNext + 1) % m_recentMoves.size();
     if (sample.moveIndex > 0 && !m_moves.empty()) {
         // The move before the oldest one too: its end is the corner a blend starts from.

@@ -27,7 +27,8 @@ struct Sample {
     AxisVector tip{};     // tool tip setpoint, workpiece coordinates
     double spindleDeg = 0.0;
     double pathVelocity = 0.0;
-    uint32_t moveIndex = 0;  // programmed move being interpolated (0: none)
+    uint32_t moveIndex = 0;       // programmed move being interpolated (0: none)
+    uint32_t firstMoveIndex = 0;  // the first one the element being interpolated stands for
     bool onFeedMove = false;
 };
 

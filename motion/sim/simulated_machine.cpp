@@ -84,6 +84,7 @@ struct SimulatedMachine::Impl {
         sample.pathVelocity = status.pathVelocity;
         sample.onFeedMove = servo.onFeedMove();
         sample.moveIndex = servo.currentMove();
+        sample.firstMoveIndex = servo.currentFirstMove();
         // After an emergency stop or a fault the drives brake on their own ramps: the setpoints
         // follow them and are no longer the planned motion the report measures.
         if (options.measure && !halted()) recorder.record(sample);

@@ -7,8 +7,9 @@ Usage: scripts/bench/motion_paths.py [--kerf build/ci/app/kerf] [--tools DIR] [-
 Prints one Markdown table row per path. The bound is bounds.topp_acc along the exact curve plus
 A/J for the jerk ramps; "over" marks an axis above its acceleration or jerk limit by more than 1 %.
 With --check (the ctest subset, tests/app) the exit code is 1 when any axis is over a limit by
-more than 1 % or a path runs faster than its time-optimal bound (impossible within the limits:
-the planner or its report is wrong), or when a run fails.
+more than 1 %, when the report's path deviation exceeds the tolerance (0.01 mm), when a path runs
+faster than its time-optimal bound (impossible within the limits: the planner or its report is
+wrong), or when a run fails.
 """
 import argparse
 import json
@@ -20,6 +21,7 @@ import tempfile
 
 ACCEL = 2000.0
 JERK = 1e6
+TOLERANCE = 0.01
 
 # (label, gen.py arguments, geometry for the bound: (kind, R))
 PATHS = [
@@ -64,8 +66,8 @@ def main():
     ap.add_argument("--check", action="store_true", help="exit 1 on a limit or bound violation")
     a = ap.parse_args()
     failures = []
-    print("| path (100 mm, F6000 unless noted) | feed time s | bound s | ratio | max acc X/Y/Z mm/s² | max jerk X/Y/Z 1e6 mm/s³ | over 1 % |")
-    print("|---|---|---|---|---|---|---|")
+    print("| path (100 mm, F6000 unless noted) | feed time s | bound s | ratio | max acc X/Y/Z mm/s² | max jerk X/Y/Z 1e6 mm/s³ | over 1 % | max deviation mm |")
+    print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as work:
         for n, (label, args, geometry) in enumerate(PATHS):
             if a.quick and n not in QUICK:
@@ -86,10 +88,13 @@ def main():
             acc = "/".join("%.0f" % axes[x]["max_accel"] for x in "XYZ")
             jerk = "/".join("%.2f" % (axes[x]["max_jerk"] / 1e6) for x in "XYZ")
             over = [x for x in "XYZ" if axes[x]["max_accel"] > ACCEL * 1.01 or axes[x]["max_jerk"] > JERK * 1.01]
-            print("| %s | %.3f | %.3f | %.2fx | %s | %s | %s |" % (
+            deviation = motion["max_path_deviation_mm"]
+            print("| %s | %.3f | %.3f | %.2fx | %s | %s | %s | %.4f |" % (
                 label, motion["feed_time_s"], b, motion["feed_time_s"] / b, acc, jerk,
-                ", ".join(over) if over else "–"))
+                ", ".join(over) if over else "–", deviation))
             sys.stdout.flush()
+            if deviation > TOLERANCE * 1.01:
+                failures.append("%s: path deviation %.4f mm beyond the tolerance" % (label, deviation))
             if over:
                 failures.append("%s: axis %s over its limit" % (label, ", ".join(over)))
             if motion["feed_time_s"] < b * 0.999:

@@ -47,6 +47,8 @@ struct BindingCount {
 
 BindingCount countBindingPoints(const std::vector<canon::Command>& commands) {
     MachineModel model = makeMachineModel(millConfig(), {});
+    // The look-ahead on thousands of short elements: the polyline as programmed.
+    model.options.smoothPolylines = false;
     Planner planner(model);
     planner.setPosition(Pose{}.values);
     std::set<double> binding;
@@ -70,6 +72,8 @@ BindingCount countBindingPoints(const std::vector<canon::Command>& commands) {
 
 std::vector<MotionItem> planned(const std::vector<canon::Command>& commands, bool inPieces) {
     MachineModel model = makeMachineModel(millConfig(), {});
+    // The look-ahead on thousands of short elements: the polyline as programmed.
+    model.options.smoothPolylines = false;
     Planner planner(model);
     planner.setPosition(Pose{}.values);
     std::vector<MotionItem> items;

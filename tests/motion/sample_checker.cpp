@@ -147,7 +147,9 @@ void SampleChecker::addSample(const Sample& sample) {
     m_history[1] = m_history[0];
     m_history[0] = sample.joints;
     ++m_count;
-    m_recentMoves[m_recentNext] = sample.moveIndex;
+    // An element fitted to several programmed moves stands for all of them.
+    m_recentMoves[m_recentNext] =
+        sample.firstMoveIndex > 0 ? sample.firstMoveIndex : sample.moveIndex;
     m_recentNext = (m_recentNext + 1) % m_recentMoves.size();
     uint32_t oldest = sample.moveIndex;
     for (uint32_t index : m_recentMoves) {
