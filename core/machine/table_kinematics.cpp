@@ -16,9 +16,12 @@ constexpr double kParallel = 1e-9;
 
 Vec3 unitOf(char rotaryLetter) {
     switch (rotaryLetter) {
-        case 'A': return Vec3::UnitX();
-        case 'B': return Vec3::UnitY();
-        default: return Vec3::UnitZ();
+        case 'A':
+            return Vec3::UnitX();
+        case 'B':
+            return Vec3::UnitY();
+        default:
+            return Vec3::UnitZ();
     }
 }
 
@@ -123,8 +126,7 @@ double TableKinematics::alignedSecondaryDeg(const Vec3& frameX, double primaryDe
     return wrapped(angleAbout(unitOf(m_secondary), from, frameX).value_or(0.0));
 }
 
-std::optional<double> TableKinematics::placed(double angle, const Limits& limits,
-                                              double current) {
+std::optional<double> TableKinematics::placed(double angle, const Limits& limits, double current) {
     // The turn of `angle` nearest to `current`, then the nearest inside the limits.
     const double nearest = current + std::remainder(angle - current, 360.0);
     if (limits.endless) return nearest;
@@ -150,8 +152,7 @@ std::optional<RotaryAngles> TableKinematics::choose(const RotarySolutions& solut
         auto q = m_two ? placed(s.secondaryDeg, m_secondaryLimits, current.secondaryDeg)
                        : std::optional<double>(0.0);
         if (!p || !q) continue;
-        const double path =
-            std::abs(*p - current.primaryDeg) + std::abs(*q - current.secondaryDeg);
+        const double path = std::abs(*p - current.primaryDeg) + std::abs(*q - current.secondaryDeg);
         if (!best || path < bestPath - 1e-9) {
             best = RotaryAngles{*p, *q};
             bestPath = path;

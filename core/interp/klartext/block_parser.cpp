@@ -1086,6 +1086,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         }
         return true;
     }
+    if (head == "PLANE") return parsePlane(line, cur.position(), out);
     static const char* const kDeferredHeads[] = {
         "PATTERN", "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",     "CONTOUR",
         "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",       "FSELECT",

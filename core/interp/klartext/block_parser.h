@@ -30,6 +30,7 @@ private:
     bool parseCycleWords(std::string_view text, size_t from, cycles::CycleWords& out);
     bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parsePatternDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    bool parsePlane(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parseValue(Cursor& cursor, double& out);
     bool failAt(size_t offset, const char* code, const char* messageTemplate,
                 std::vector<std::string> args = {});

@@ -77,7 +77,11 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
             if (axis == m_toolAxis) out -= m_tool.effectiveLength();
         } else {
             double& out = target.values[static_cast<size_t>(i)];
-            out = word.incremental ? out + value : value;
+            if (rotary) {
+                out = rotaryTarget(axis, out, value, word.incremental);
+            } else {
+                out = word.incremental ? out + value : value;
+            }
         }
     }
     return machine ? m_frame.toProgram(work) : target;
@@ -113,6 +117,7 @@ void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
     Pose target = targetOf(block.coords);
+    if (!rotaryWithinLimits(target)) return;
     submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
                block.words);
     applyMFunctions(block.words.m, false);

@@ -103,8 +103,8 @@ TEST(TableKinematics, InverseOfTheToolAxisLeavesTheSecondaryFree) {
     EXPECT_NEAR(s.list[0].primaryDeg, 0.0, kEps);
     EXPECT_NEAR(s.list[0].secondaryDeg, 30.0, kEps);
     // TABLE ROT: a plane turned 30 deg about Z is aligned by C+30 (C turns the part back by 30).
-    EXPECT_NEAR(k.alignedSecondaryDeg(Vec3(std::cos(M_PI / 6), std::sin(M_PI / 6), 0.0), 0.0),
-                30.0, kEps);
+    EXPECT_NEAR(k.alignedSecondaryDeg(Vec3(std::cos(M_PI / 6), std::sin(M_PI / 6), 0.0), 0.0), 30.0,
+                kEps);
 }
 
 TEST(TableKinematics, ChoiceBySequenceAndShortestPath) {
@@ -144,9 +144,9 @@ TEST(TableKinematics, OneTableReachesOnlyItsPlane) {
 
 TEST(TableKinematics, ValidationNamesTheKey) {
     DiagnosticList problems;
-    auto config = parseMachine(
-        "base = \"mill\"\n[kinematics]\ntype = \"table-table\"\nprimary = \"B\"\n", "k.toml",
-        &problems);
+    auto config =
+        parseMachine("base = \"mill\"\n[kinematics]\ntype = \"table-table\"\nprimary = \"B\"\n",
+                     "k.toml", &problems);
     EXPECT_FALSE(config.ok());
     ASSERT_FALSE(problems.empty());
     EXPECT_NE(problems.front().message().find("kinematics.primary = \"B\" is not an enabled "
