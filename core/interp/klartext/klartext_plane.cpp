@@ -117,10 +117,7 @@ std::optional<machine::RotaryAngles> KlartextInterpreter::solvePlane(
     const Eigen::Matrix3d& rotation, PlaneBlock::Sequence sequence, bool tableRotation,
     std::string_view feature) {
     if (!m_kinematics) {
-        bool rotary = false;
-        for (char letter : {'A', 'B', 'C'})
-            rotary = rotary || (m_machineAxes & axisBit(*axisFromLetter(letter))) != 0;
-        if (!rotary) {
+        if ((m_machineAxes & axisMaskOf("ABC")) == 0) {
             fail("not-supported", KERF_TR_NOOP("{1} needs rotary axes: this machine has none"),
                  {std::string(feature)});
         } else {
@@ -218,7 +215,14 @@ void KlartextInterpreter::executePlane(const PlaneBlock& b) {
 }
 
 void KlartextInterpreter::workingPlane(const CycleDefinition& def) {
-    if (def.subNumber == 0) return;  // 19.0 alone: the next 19.1 gives the angles
+    if (def.subNumber == 0) {
+        // 19.0 alone: the next 19.1 gives the angles; a machine without rotary axes says no now.
+        if ((m_machineAxes & axisMaskOf("ABC")) == 0) {
+            fail("not-supported", KERF_TR_NOOP("{1} needs rotary axes: this machine has none"),
+                 {"cycle 19 (working plane)"});
+        }
+        return;
+    }
     Vec3 angles = Vec3::Zero();
     std::optional<double> feed;
     double distance = 0.0;
