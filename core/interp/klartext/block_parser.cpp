@@ -1087,6 +1087,11 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         return true;
     }
     if (head == "PLANE") return parsePlane(line, cur.position(), out);
+    if (head == "FUNCTION") {
+        bool handled = false;
+        const bool ok = parseTcpm(line, cur.position(), out, handled);
+        if (handled) return ok;
+    }
     static const char* const kDeferredHeads[] = {
         "PATTERN", "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",     "CONTOUR",
         "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",       "FSELECT",

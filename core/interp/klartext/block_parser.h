@@ -31,6 +31,8 @@ private:
     bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parsePatternDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parsePlane(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    // FUNCTION TCPM / FUNCTION RESET TCPM; false with nothing reported for other FUNCTIONs.
+    bool parseTcpm(const program::LogicalLine& line, size_t at, ParsedBlock& out, bool& handled);
     bool parseValue(Cursor& cursor, double& out);
     bool failAt(size_t offset, const char* code, const char* messageTemplate,
                 std::vector<std::string> args = {});

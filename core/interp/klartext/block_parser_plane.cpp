@@ -1,5 +1,5 @@
-// PLANE blocks: the tilted working plane. The form (SPATIAL, PROJECTED, ...) and its numbers,
-// then the positioning words in any order:
+// PLANE blocks: the tilted working plane, and FUNCTION TCPM. The form (SPATIAL, PROJECTED, ...) and
+// its numbers, then the positioning words in any order:
 //   PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN MB MAX FMAX SEQ+ TABLE ROT
 //   PLANE RESET STAY
 #include <iterator>
@@ -10,6 +10,13 @@
 namespace kerf::klartext {
 
 namespace {
+
+std::string upperCopyOf(std::string_view text) {
+    std::string out(text);
+    for (char& c : out)
+        c = upper(c);
+    return out;
+}
 
 struct PlaneForm {
     const char* keyword;
@@ -135,6 +142,46 @@ bool BlockParser::parsePlane(const program::LogicalLine& line, size_t at, Parsed
         return failAt(cur.position(), "syntax", KERF_TR_NOOP("PLANE: MOVE, TURN or STAY expected"));
     }
     out.statement = b;
+    return true;
+}
+
+bool BlockParser::parseTcpm(const program::LogicalLine& line, size_t at, ParsedBlock& out,
+                            bool& handled) {
+    Cursor cur(line.text, at);
+    const bool reset = cur.acceptKeyword("RESET");
+    if (!cur.acceptKeyword("TCPM")) return false;
+    handled = true;
+    if (reset) {
+        if (!cur.atEnd()) {
+            return failAt(cur.position(), "syntax", KERF_TR_NOOP("unexpected '{1}'"),
+                          {std::string(cur.word())});
+        }
+        out.statement = TcpmBlock{false};
+        return true;
+    }
+    // The options Kerf implements: the feed along the tool tip, rotary axes as axis positions,
+    // interpolation of the axes.
+    static const char* const kOptions[][2] = {
+        {"F", "TCP"}, {"AXIS", "POS"}, {"PATHCTRL", "AXIS"}, {"REFPNT", "TIP-TIP"}};
+    while (!cur.atEnd()) {
+        const size_t wordAt = cur.position();
+        bool known = false;
+        for (const auto& option : kOptions) {
+            if (cur.acceptKeyword(option[0])) {
+                cur.skipBlanks();
+                known = upperCopyOf(cur.word()) == option[1];
+                break;
+            }
+        }
+        if (!known) {
+            cur.setPosition(wordAt);
+            return failAt(wordAt, "not-supported",
+                          KERF_TR_NOOP("FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and "
+                                       "REFPNT TIP-TIP are supported, not '{1}'"),
+                          {std::string(cur.restUntilComment())});
+        }
+    }
+    out.statement = TcpmBlock{true};
     return true;
 }
 

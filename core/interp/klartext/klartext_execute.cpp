@@ -87,6 +87,7 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const SelectPattern& b) { self.executeSelectPattern(b); }
         void operator()(const CycleCall& b) { self.executeCycleCall(b); }
         void operator()(const PlaneBlock& b) { self.executePlane(b); }
+        void operator()(const TcpmBlock& b) { self.switchTcpm(b.on); }
         void operator()(const Deferred& b) {
             self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
         }

@@ -306,6 +306,13 @@ private:
     // False (and the run failed) when a rotary axis would leave its soft limits.
     bool rotaryWithinLimits(const Pose& programTarget);
 
+    // TCPM (klartext_tcpm.cpp): tool-tip positions on the part while the tables turn.
+    void switchTcpm(bool on);
+    machine::RotaryAngles tableAnglesOf(const Pose& pose) const;
+    Pose axesOfTip(const Pose& tip) const;  // workpiece tip -> stream (linear axes)
+    Pose tipOf(const Pose& axes) const;     // and back
+    void moveWithTcpm(const Pose& programTarget, bool rapid, double feed);
+
     // Q parameter functions and FN blocks (klartext_functions.cpp).
     void executeSysRead(const SysRead& read);
     std::optional<double> sysReadValue(const SysRead& read, bool& needsSync);
@@ -401,6 +408,7 @@ private:
     Eigen::Matrix3d m_tableTurn = Eigen::Matrix3d::Identity();
     Vec3 m_tableOffset = Vec3::Zero();
     bool m_shortestRotary = false;
+    bool m_tcpm = false;  // M128 / FUNCTION TCPM
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;
     std::vector<ProgramAtPoints> m_pointRuns;  // cycle 12 at pattern points, innermost last

@@ -117,6 +117,10 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 m_shortestRotary = n == 126;  // rotaryTarget(): the short way, from this block
                 break;
             case 94:
+                break;
+            case 128:
+            case 129:
+                switchTcpm(n == 128);
                 break;  // endless axes always show their angle below 360 (rotaryTarget())
             case 89:    // modal cycle call, from this block on
             case 99:    // cycle call in this block only

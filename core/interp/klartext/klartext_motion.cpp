@@ -90,6 +90,10 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
+    if (m_tcpm && element.kind != ContourElement::Kind::Line) {
+        fail("not-supported", KERF_TR_NOOP("circles with TCPM are not supported yet"));
+        return;
+    }
     auto transformed = toWorkpiece(element);
     if (!transformed) return;
     interp::PathMove move;
@@ -118,6 +122,12 @@ void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     if (m_status == interp::RunStatus::Failed) return;
     Pose target = targetOf(block.coords);
     if (!rotaryWithinLimits(target)) return;
+    if (m_tcpm) {
+        moveWithTcpm(target, rapid, feed);
+        applyMFunctions(block.words.m, false);
+        afterPositioning(block.words.m);
+        return;
+    }
     submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
                block.words);
     applyMFunctions(block.words.m, false);

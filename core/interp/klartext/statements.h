@@ -251,6 +251,12 @@ struct PlaneBlock {
     bool tableRotation = false;  // TABLE ROT (else COORD ROT)
 };
 
+// FUNCTION TCPM ... / FUNCTION RESET TCPM (block_parser_plane.cpp): programmed positions are
+// tool-tip positions on the part while the rotary axes move (as M128 / M129).
+struct TcpmBlock {
+    bool on = false;
+};
+
 // Blocks that parse and are kept but that this release does not execute yet (fixed cycles,
 // patterns, probing, FK, PLANE ...). `feature` names them in the diagnostic.
 struct Deferred {
@@ -305,7 +311,7 @@ using Statement =
                  CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
                  ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
                  TableAccess, CycleDefinition, GlobalDefinition, PatternDefinition, SelectTable,
-                 SelectPattern, CycleCall, PlaneBlock, Deferred>;
+                 SelectPattern, CycleCall, PlaneBlock, TcpmBlock, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

@@ -188,5 +188,23 @@ TEST_F(PlaneTest, EndlessAxisTurnsTheShortWayWithM126) {
     EXPECT_NEAR(k->nominalPosition()[Axis::C], 0.0, 1e-9);  // -10, 20, back to 0
 }
 
+// TCPM: the tip stays at (0, 0, 50) on the part while B turns to 90: the table's Ry(-90) carries
+// it to the axes (-50, 0, 0); then C+90 with the tip at (10, 0, 50): Rz(-90) gives (0, -10, 50).
+TEST_F(PlaneTest, TcpmComputesTheAxesFromTheTip) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+50 R0 FMAX\n2 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                  "3 L B+90 F1000\n4 FUNCTION RESET TCPM\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    expectAt(-50.0, 0.0, 0.0);
+    ASSERT_EQ(run("mill5", "1 L X+10 Y+0 Z+50 R0 FMAX\n2 M128\n3 L C+90 F1000\n4 M129\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    expectAt(0.0, -10.0, 50.0);
+    EXPECT_EQ(run("mill", "1 M128\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(run("mill5", "1 FUNCTION TCPM F CONT AXIS POS PATHCTRL AXIS\n"),
+              interp::RunStatus::Failed);
+}
+
 }  // namespace
 }  // namespace kerf::klartext
