@@ -277,8 +277,6 @@ private:
     struct TiltState {
         bool active = false;
         Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // tilted axes, untilted coords
-        Vec3 spatialDeg = Vec3::Zero();                          // SPA SPB SPC of it
-        machine::RotaryAngles angles;                            // the tables' solution
     };
     struct TiltRequest {
         Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();

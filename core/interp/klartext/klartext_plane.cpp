@@ -24,17 +24,6 @@ Eigen::Matrix3d spatial(double a, double b, double c) {
     return principalRotation('C', c) * principalRotation('B', b) * principalRotation('A', a);
 }
 
-// The spatial angles of a rotation (inverse of spatial(); B in [-90, 90]).
-Vec3 spatialAngles(const Eigen::Matrix3d& r) {
-    const double b = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
-    if (std::abs(std::cos(b)) < kDegenerate) {
-        // Gimbal lock: A and C turn about the same axis; put it all into A.
-        return Vec3(std::atan2(-r(1, 2), r(1, 1)) * kDegPerRad, b * kDegPerRad, 0.0);
-    }
-    return Vec3(std::atan2(r(2, 1), r(2, 2)) * kDegPerRad, b * kDegPerRad,
-                std::atan2(r(1, 0), r(0, 0)) * kDegPerRad);
-}
-
 // The rotation whose columns are the tilted X, Y and Z axes: X along `x`, Z along `z`.
 std::optional<Eigen::Matrix3d> frameOf(const Vec3& x, const Vec3& z) {
     if (z.norm() < kDegenerate) return std::nullopt;
@@ -281,8 +270,6 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
         m_frame.setTilt(request.rotation);
         m_tilt.active = true;
         m_tilt.rotation = request.rotation;
-        m_tilt.spatialDeg = spatialAngles(request.rotation);
-        m_tilt.angles = request.angles;
     }
     m_tableTurn = Eigen::Matrix3d::Identity();
     m_tableOffset = Vec3::Zero();
