@@ -4140,14 +4140,6 @@ Status</translation>
         <translation>Zyklus 247: Bezugspunkt {1} ist nicht in der Bezugspunkttabelle</translation>
     </message>
     <message>
-        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
-        <translation>Zyklus 19 (Bearbeitungsebene) braucht Drehachsen: diese Maschine hat keine</translation>
-    </message>
-    <message>
-        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
-        <translation>Zyklus 19 (Bearbeitungsebene): Schwenk-Kinematik wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>cycle {1}: {2} expected</source>
         <translation>Zyklus {1}: {2} erwartet</translation>
     </message>
@@ -7396,6 +7388,142 @@ zyklen</translation>
     <message>
         <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
         <translation>der erste Satz eines 3D-Kontur-Unterprogramms muss auch die Werkzeugachse enthalten</translation>
+    </message>
+    <message>
+        <source>PLANE: SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL or RESET expected</source>
+        <translation>PLANE: SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL oder RESET erwartet</translation>
+    </message>
+    <message>
+        <source>PLANE {1}: {2} expected</source>
+        <translation>PLANE {1}: {2} erwartet</translation>
+    </message>
+    <message>
+        <source>PLANE RELATIV: SPA, SPB or SPC expected</source>
+        <translation>PLANE RELATIV: SPA, SPB oder SPC erwartet</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: an angle of A, B or C expected</source>
+        <translation>PLANE AXIAL: ein Winkel von A, B oder C erwartet</translation>
+    </message>
+    <message>
+        <source>SEQ+ or SEQ- expected</source>
+        <translation>SEQ+ oder SEQ- erwartet</translation>
+    </message>
+    <message>
+        <source>ROT expected</source>
+        <translation>ROT erwartet</translation>
+    </message>
+    <message>
+        <source>PLANE: unexpected &apos;{1}&apos;</source>
+        <translation>PLANE: unerwartetes &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>PLANE: MOVE, TURN or STAY expected</source>
+        <translation>PLANE: MOVE, TURN oder STAY erwartet</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: nur F TCP, AXIS POS, PATHCTRL AXIS und REFPNT TIP-TIP werden unterstützt, nicht &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>circles with TCPM are not supported yet</source>
+        <translation>Kreise mit TCPM werden noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>PLANE: the points or vectors do not define a plane</source>
+        <translation>PLANE: die Punkte oder Vektoren bestimmen keine Ebene</translation>
+    </message>
+    <message>
+        <source>{1} needs rotary axes: this machine has none</source>
+        <translation>{1} braucht Drehachsen: diese Maschine hat keine</translation>
+    </message>
+    <message>
+        <source>{1} needs the rotary tables described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>{1} braucht die in der Maschinendatei beschriebenen Rundtische ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>the rotary axes of this machine cannot turn the tool perpendicular to this plane</source>
+        <translation>die Drehachsen dieser Maschine können das Werkzeug nicht senkrecht zu dieser Ebene stellen</translation>
+    </message>
+    <message>
+        <source>no solution for the rotary axes lies within their soft limits (and the SEQ chosen): {1}</source>
+        <translation>keine Lösung für die Drehachsen liegt innerhalb ihrer Software-Endschalter (und des gewählten SEQ): {1}</translation>
+    </message>
+    <message>
+        <source>PLANE with radius compensation RL/RR: program R0 first</source>
+        <translation>PLANE mit Radiuskorrektur RL/RR: zuerst R0 programmieren</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
+        <translation>PLANE AXIAL: {1} ist kein Rundtisch dieser Maschine</translation>
+    </message>
+    <message>
+        <source>cycle 19: unexpected &apos;{1}&apos;</source>
+        <translation>Zyklus 19: unerwartetes &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
+        <translation>der Satz würde die Achse {1} auf {2} Grad (Maschinenkoordinaten) fahren, über ihren Software-Endschalter {3} hinaus</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM braucht die in der Maschinendatei beschriebenen Rundtische ([kinematics], z. B. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
+        <translation>TCPM in einer geschwenkten Bearbeitungsebene wird noch nicht unterstützt: zuerst PLANE RESET</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR with TCPM is not supported yet</source>
+        <translation>Radiuskorrektur RL/RR mit TCPM wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
+        <translation>TCPM: die Drehachsen drehen in diesem Satz zu weit, um die Werkzeugspitze auf der Geraden zu halten; den Satz teilen</translation>
+    </message>
+    <message>
+        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
+        <translation>Wie die Drehachsen das Werkstück tragen: keine, ein Rundtisch oder ein Tisch auf einem Schwenktisch</translation>
+    </message>
+    <message>
+        <source>Rotary axis nearest the machine base (it carries the other table)</source>
+        <translation>Drehachse nächst dem Maschinenbett (sie trägt den anderen Tisch)</translation>
+    </message>
+    <message>
+        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
+        <translation>table-table: Drehachse auf dem ersten Tisch, trägt das Werkstück</translation>
+    </message>
+    <message>
+        <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Maschinen-X, wo sich die Drehachsen treffen; pivot = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Machine Y where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Maschinen-Y, wo sich die Drehachsen treffen; pivot = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Machine Z where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Maschinen-Z, wo sich die Drehachsen treffen; pivot = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Rotary: turns without end; no soft limits, M126 takes the short way</source>
+        <translation>Drehachse: dreht endlos; keine Software-Endschalter, M126 fährt den kurzen Weg</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a rotary axis</source>
+        <translation>{1} = true ist nur bei einer Drehachse erlaubt</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
+        <translation>{1} = &quot;{2}&quot; ist keine aktive Drehachse dieser Maschine</translation>
+    </message>
+    <message>
+        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
+        <translation>kinematics.primary einer Maschine mit zwei Tischen schwenkt den Tisch: A oder B, nicht C</translation>
+    </message>
+    <message>
+        <source>kinematics.secondary must be another axis than kinematics.primary</source>
+        <translation>kinematics.secondary muss eine andere Achse als kinematics.primary sein</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

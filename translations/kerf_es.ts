@@ -4140,14 +4140,6 @@ estado</translation>
         <translation>ciclo 247: el punto de referencia {1} no está en la tabla de puntos de referencia</translation>
     </message>
     <message>
-        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
-        <translation>el ciclo 19 (plano de mecanizado) necesita ejes giratorios: esta máquina no tiene ninguno</translation>
-    </message>
-    <message>
-        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
-        <translation>ciclo 19 (plano de mecanizado): la cinemática de inclinación todavía no se admite</translation>
-    </message>
-    <message>
         <source>cycle {1}: {2} expected</source>
         <translation>ciclo {1}: se esperaba {2}</translation>
     </message>
@@ -7396,6 +7388,142 @@ fijos</translation>
     <message>
         <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
         <translation>la primera frase de un subprograma de contorno 3D también debe indicar el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>PLANE: SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL or RESET expected</source>
+        <translation>PLANE: se esperaba SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL o RESET</translation>
+    </message>
+    <message>
+        <source>PLANE {1}: {2} expected</source>
+        <translation>PLANE {1}: se esperaba {2}</translation>
+    </message>
+    <message>
+        <source>PLANE RELATIV: SPA, SPB or SPC expected</source>
+        <translation>PLANE RELATIV: se esperaba SPA, SPB o SPC</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: an angle of A, B or C expected</source>
+        <translation>PLANE AXIAL: se esperaba un ángulo de A, B o C</translation>
+    </message>
+    <message>
+        <source>SEQ+ or SEQ- expected</source>
+        <translation>se esperaba SEQ+ o SEQ-</translation>
+    </message>
+    <message>
+        <source>ROT expected</source>
+        <translation>se esperaba ROT</translation>
+    </message>
+    <message>
+        <source>PLANE: unexpected &apos;{1}&apos;</source>
+        <translation>PLANE: &apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>PLANE: MOVE, TURN or STAY expected</source>
+        <translation>PLANE: se esperaba MOVE, TURN o STAY</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: solo se admiten F TCP, AXIS POS, PATHCTRL AXIS y REFPNT TIP-TIP, no &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>circles with TCPM are not supported yet</source>
+        <translation>los círculos con TCPM aún no se admiten</translation>
+    </message>
+    <message>
+        <source>PLANE: the points or vectors do not define a plane</source>
+        <translation>PLANE: los puntos o vectores no definen un plano</translation>
+    </message>
+    <message>
+        <source>{1} needs rotary axes: this machine has none</source>
+        <translation>{1} necesita ejes rotativos: esta máquina no tiene ninguno</translation>
+    </message>
+    <message>
+        <source>{1} needs the rotary tables described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>{1} necesita las mesas giratorias descritas en el archivo de máquina ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>the rotary axes of this machine cannot turn the tool perpendicular to this plane</source>
+        <translation>los ejes rotativos de esta máquina no pueden poner la herramienta perpendicular a este plano</translation>
+    </message>
+    <message>
+        <source>no solution for the rotary axes lies within their soft limits (and the SEQ chosen): {1}</source>
+        <translation>ninguna solución para los ejes rotativos queda dentro de sus límites de software (y del SEQ elegido): {1}</translation>
+    </message>
+    <message>
+        <source>PLANE with radius compensation RL/RR: program R0 first</source>
+        <translation>PLANE con corrección de radio RL/RR: programe R0 antes</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
+        <translation>PLANE AXIAL: {1} no es una mesa giratoria de esta máquina</translation>
+    </message>
+    <message>
+        <source>cycle 19: unexpected &apos;{1}&apos;</source>
+        <translation>ciclo 19: &apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
+        <translation>el movimiento llevaría el eje {1} a {2} grados (coordenadas de máquina), más allá de su límite de software {3}</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM necesita las mesas giratorias descritas en el archivo de máquina ([kinematics], p. ej. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
+        <translation>TCPM en un plano de trabajo inclinado aún no se admite: primero PLANE RESET</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR with TCPM is not supported yet</source>
+        <translation>la corrección de radio RL/RR con TCPM aún no se admite</translation>
+    </message>
+    <message>
+        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
+        <translation>TCPM: los ejes rotativos giran demasiado en esta frase para mantener la punta de la herramienta en la recta; divida la frase</translation>
+    </message>
+    <message>
+        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
+        <translation>Cómo llevan la pieza los ejes rotativos: ninguno, una mesa giratoria o una mesa sobre una mesa basculante</translation>
+    </message>
+    <message>
+        <source>Rotary axis nearest the machine base (it carries the other table)</source>
+        <translation>Eje rotativo más cercano a la base de la máquina (lleva la otra mesa)</translation>
+    </message>
+    <message>
+        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
+        <translation>table-table: eje rotativo sobre la primera mesa, que lleva la pieza</translation>
+    </message>
+    <message>
+        <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>X de máquina donde se cruzan los ejes rotativos; escriba pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Machine Y where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Y de máquina donde se cruzan los ejes rotativos; escriba pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Machine Z where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Z de máquina donde se cruzan los ejes rotativos; escriba pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Rotary: turns without end; no soft limits, M126 takes the short way</source>
+        <translation>Rotativo: gira sin fin; sin límites de software, M126 toma el camino corto</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a rotary axis</source>
+        <translation>{1} = true solo se permite en un eje rotativo</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
+        <translation>{1} = &quot;{2}&quot; no es un eje rotativo activo de esta máquina</translation>
+    </message>
+    <message>
+        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
+        <translation>kinematics.primary de una máquina de dos mesas bascula la mesa: A o B, no C</translation>
+    </message>
+    <message>
+        <source>kinematics.secondary must be another axis than kinematics.primary</source>
+        <translation>kinematics.secondary debe ser otro eje distinto de kinematics.primary</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

@@ -4143,14 +4143,6 @@ status</translation>
         <translation>cykl 247: punktu odniesienia {1} nie ma w tabeli punktów odniesienia</translation>
     </message>
     <message>
-        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
-        <translation>cykl 19 (płaszczyzna obróbki) wymaga osi obrotowych: ta maszyna ich nie ma</translation>
-    </message>
-    <message>
-        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
-        <translation>cykl 19 (płaszczyzna obróbki): kinematyka nachylenia nie jest jeszcze obsługiwana</translation>
-    </message>
-    <message>
         <source>cycle {1}: {2} expected</source>
         <translation>cykl {1}: oczekiwano {2}</translation>
     </message>
@@ -7399,6 +7391,142 @@ stałe</translation>
     <message>
         <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
         <translation>pierwszy blok podprogramu konturu 3D musi podawać także oś narzędzia</translation>
+    </message>
+    <message>
+        <source>PLANE: SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL or RESET expected</source>
+        <translation>PLANE: oczekiwano SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL lub RESET</translation>
+    </message>
+    <message>
+        <source>PLANE {1}: {2} expected</source>
+        <translation>PLANE {1}: oczekiwano {2}</translation>
+    </message>
+    <message>
+        <source>PLANE RELATIV: SPA, SPB or SPC expected</source>
+        <translation>PLANE RELATIV: oczekiwano SPA, SPB lub SPC</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: an angle of A, B or C expected</source>
+        <translation>PLANE AXIAL: oczekiwano kąta A, B lub C</translation>
+    </message>
+    <message>
+        <source>SEQ+ or SEQ- expected</source>
+        <translation>oczekiwano SEQ+ lub SEQ-</translation>
+    </message>
+    <message>
+        <source>ROT expected</source>
+        <translation>oczekiwano ROT</translation>
+    </message>
+    <message>
+        <source>PLANE: unexpected &apos;{1}&apos;</source>
+        <translation>PLANE: nieoczekiwane &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>PLANE: MOVE, TURN or STAY expected</source>
+        <translation>PLANE: oczekiwano MOVE, TURN lub STAY</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: obsługiwane są tylko F TCP, AXIS POS, PATHCTRL AXIS i REFPNT TIP-TIP, nie &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>circles with TCPM are not supported yet</source>
+        <translation>okręgi z TCPM nie są jeszcze obsługiwane</translation>
+    </message>
+    <message>
+        <source>PLANE: the points or vectors do not define a plane</source>
+        <translation>PLANE: punkty lub wektory nie określają płaszczyzny</translation>
+    </message>
+    <message>
+        <source>{1} needs rotary axes: this machine has none</source>
+        <translation>{1} wymaga osi obrotowych: ta maszyna ich nie ma</translation>
+    </message>
+    <message>
+        <source>{1} needs the rotary tables described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>{1} wymaga stołów obrotowych opisanych w pliku maszyny ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>the rotary axes of this machine cannot turn the tool perpendicular to this plane</source>
+        <translation>osie obrotowe tej maszyny nie mogą ustawić narzędzia prostopadle do tej płaszczyzny</translation>
+    </message>
+    <message>
+        <source>no solution for the rotary axes lies within their soft limits (and the SEQ chosen): {1}</source>
+        <translation>żadne rozwiązanie dla osi obrotowych nie leży w ich programowych wyłącznikach krańcowych (i wybranym SEQ): {1}</translation>
+    </message>
+    <message>
+        <source>PLANE with radius compensation RL/RR: program R0 first</source>
+        <translation>PLANE z korekcją promienia RL/RR: najpierw zaprogramuj R0</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
+        <translation>PLANE AXIAL: {1} nie jest stołem obrotowym tej maszyny</translation>
+    </message>
+    <message>
+        <source>cycle 19: unexpected &apos;{1}&apos;</source>
+        <translation>cykl 19: nieoczekiwane &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
+        <translation>ruch doprowadziłby oś {1} do {2} stopni (współrzędne maszynowe), poza jej programowy wyłącznik krańcowy {3}</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM wymaga stołów obrotowych opisanych w pliku maszyny ([kinematics], np. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
+        <translation>TCPM w nachylonej płaszczyźnie obróbki nie jest jeszcze obsługiwane: najpierw PLANE RESET</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR with TCPM is not supported yet</source>
+        <translation>korekcja promienia RL/RR z TCPM nie jest jeszcze obsługiwana</translation>
+    </message>
+    <message>
+        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
+        <translation>TCPM: osie obrotowe obracają się w tym bloku za daleko, by utrzymać wierzchołek narzędzia na prostej; podziel blok</translation>
+    </message>
+    <message>
+        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
+        <translation>Jak osie obrotowe niosą przedmiot: brak, jeden stół obrotowy lub stół na stole wychylnym</translation>
+    </message>
+    <message>
+        <source>Rotary axis nearest the machine base (it carries the other table)</source>
+        <translation>Oś obrotowa najbliżej podstawy maszyny (niesie drugi stół)</translation>
+    </message>
+    <message>
+        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
+        <translation>table-table: oś obrotowa na pierwszym stole, niesie przedmiot</translation>
+    </message>
+    <message>
+        <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>X maszyny, gdzie spotykają się osie obrotowe; zapisz pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Machine Y where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Y maszyny, gdzie spotykają się osie obrotowe; zapisz pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Machine Z where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Z maszyny, gdzie spotykają się osie obrotowe; zapisz pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Rotary: turns without end; no soft limits, M126 takes the short way</source>
+        <translation>Obrotowa: obraca się bez końca; bez programowych wyłączników krańcowych, M126 wybiera krótszą drogę</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a rotary axis</source>
+        <translation>{1} = true jest dozwolone tylko dla osi obrotowej</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
+        <translation>{1} = &quot;{2}&quot; nie jest włączoną osią obrotową tej maszyny</translation>
+    </message>
+    <message>
+        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
+        <translation>kinematics.primary maszyny z dwoma stołami wychyla stół: A lub B, nie C</translation>
+    </message>
+    <message>
+        <source>kinematics.secondary must be another axis than kinematics.primary</source>
+        <translation>kinematics.secondary musi być inną osią niż kinematics.primary</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

@@ -4140,14 +4140,6 @@ estado</translation>
         <translation>ciclo 247: o ponto de referência {1} não está na tabela de pontos de referência</translation>
     </message>
     <message>
-        <source>cycle 19 (working plane) needs rotary axes: this machine has none</source>
-        <translation>o ciclo 19 (plano de maquinagem) precisa de eixos rotativos: esta máquina não tem nenhum</translation>
-    </message>
-    <message>
-        <source>cycle 19 (working plane): tilting kinematics are not supported yet</source>
-        <translation>ciclo 19 (plano de maquinagem): a cinemática de inclinação ainda não é suportada</translation>
-    </message>
-    <message>
         <source>cycle {1}: {2} expected</source>
         <translation>ciclo {1}: {2} esperado</translation>
     </message>
@@ -7396,6 +7388,142 @@ fixos</translation>
     <message>
         <source>the first block of a 3-D contour subprogram must give the tool axis too</source>
         <translation>o primeiro bloco de um subprograma de contorno 3D também deve indicar o eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>PLANE: SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL or RESET expected</source>
+        <translation>PLANE: esperado SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL ou RESET</translation>
+    </message>
+    <message>
+        <source>PLANE {1}: {2} expected</source>
+        <translation>PLANE {1}: esperado {2}</translation>
+    </message>
+    <message>
+        <source>PLANE RELATIV: SPA, SPB or SPC expected</source>
+        <translation>PLANE RELATIV: esperado SPA, SPB ou SPC</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: an angle of A, B or C expected</source>
+        <translation>PLANE AXIAL: esperado um ângulo de A, B ou C</translation>
+    </message>
+    <message>
+        <source>SEQ+ or SEQ- expected</source>
+        <translation>esperado SEQ+ ou SEQ-</translation>
+    </message>
+    <message>
+        <source>ROT expected</source>
+        <translation>esperado ROT</translation>
+    </message>
+    <message>
+        <source>PLANE: unexpected &apos;{1}&apos;</source>
+        <translation>PLANE: &apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>PLANE: MOVE, TURN or STAY expected</source>
+        <translation>PLANE: esperado MOVE, TURN ou STAY</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: só F TCP, AXIS POS, PATHCTRL AXIS e REFPNT TIP-TIP são suportados, não &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>circles with TCPM are not supported yet</source>
+        <translation>círculos com TCPM ainda não são suportados</translation>
+    </message>
+    <message>
+        <source>PLANE: the points or vectors do not define a plane</source>
+        <translation>PLANE: os pontos ou vetores não definem um plano</translation>
+    </message>
+    <message>
+        <source>{1} needs rotary axes: this machine has none</source>
+        <translation>{1} precisa de eixos rotativos: esta máquina não tem nenhum</translation>
+    </message>
+    <message>
+        <source>{1} needs the rotary tables described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>{1} precisa das mesas rotativas descritas no ficheiro da máquina ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>the rotary axes of this machine cannot turn the tool perpendicular to this plane</source>
+        <translation>os eixos rotativos desta máquina não conseguem pôr a ferramenta perpendicular a este plano</translation>
+    </message>
+    <message>
+        <source>no solution for the rotary axes lies within their soft limits (and the SEQ chosen): {1}</source>
+        <translation>nenhuma solução para os eixos rotativos fica dentro dos seus limites de software (e do SEQ escolhido): {1}</translation>
+    </message>
+    <message>
+        <source>PLANE with radius compensation RL/RR: program R0 first</source>
+        <translation>PLANE com correção de raio RL/RR: programe R0 primeiro</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
+        <translation>PLANE AXIAL: {1} não é uma mesa rotativa desta máquina</translation>
+    </message>
+    <message>
+        <source>cycle 19: unexpected &apos;{1}&apos;</source>
+        <translation>ciclo 19: &apos;{1}&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
+        <translation>o movimento levaria o eixo {1} a {2} graus (coordenadas da máquina), além do seu limite de software {3}</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM precisa das mesas rotativas descritas no ficheiro da máquina ([kinematics], p. ex. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
+        <translation>TCPM num plano de maquinagem inclinado ainda não é suportado: primeiro PLANE RESET</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR with TCPM is not supported yet</source>
+        <translation>correção de raio RL/RR com TCPM ainda não é suportada</translation>
+    </message>
+    <message>
+        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
+        <translation>TCPM: os eixos rotativos rodam demasiado neste bloco para manter a ponta da ferramenta na reta; divida o bloco</translation>
+    </message>
+    <message>
+        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
+        <translation>Como os eixos rotativos levam a peça: nenhum, uma mesa rotativa ou uma mesa sobre uma mesa basculante</translation>
+    </message>
+    <message>
+        <source>Rotary axis nearest the machine base (it carries the other table)</source>
+        <translation>Eixo rotativo mais próximo da base da máquina (leva a outra mesa)</translation>
+    </message>
+    <message>
+        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
+        <translation>table-table: eixo rotativo sobre a primeira mesa, que leva a peça</translation>
+    </message>
+    <message>
+        <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>X da máquina onde os eixos rotativos se cruzam; escreva pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Machine Y where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Y da máquina onde os eixos rotativos se cruzam; escreva pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Machine Z where the rotary axes meet; write pivot = [x, y, z]</source>
+        <translation>Z da máquina onde os eixos rotativos se cruzam; escreva pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Rotary: turns without end; no soft limits, M126 takes the short way</source>
+        <translation>Rotativo: roda sem fim; sem limites de software, M126 segue o caminho curto</translation>
+    </message>
+    <message>
+        <source>{1} = true is only allowed on a rotary axis</source>
+        <translation>{1} = true só é permitido num eixo rotativo</translation>
+    </message>
+    <message>
+        <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
+        <translation>{1} = &quot;{2}&quot; não é um eixo rotativo ativo desta máquina</translation>
+    </message>
+    <message>
+        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
+        <translation>kinematics.primary de uma máquina de duas mesas inclina a mesa: A ou B, não C</translation>
+    </message>
+    <message>
+        <source>kinematics.secondary must be another axis than kinematics.primary</source>
+        <translation>kinematics.secondary tem de ser outro eixo que kinematics.primary</translation>
     </message>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>

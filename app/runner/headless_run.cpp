@@ -181,6 +181,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     summary.blocksExecuted = blocks;
     summary.xInDiameter = displayMode.xInDiameter();
     summary.machiningTimeS = machiningTimeS;
+    summary.workOffset = session->workOffset;
     printDiagnostics(summary.diagnostics, diagnostics);
 
     if (options.reportFile) {

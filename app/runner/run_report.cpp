@@ -50,6 +50,7 @@ nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatis
     nlohmann::json lower = nlohmann::json::object();
     nlohmann::json upper = nlohmann::json::object();
     nlohmann::json position = nlohmann::json::object();
+    nlohmann::json machinePosition = nlohmann::json::object();
     const auto& bounds = statistics.feedBounds();
     for (char letter : machine.enabledAxisLetters()) {
         auto axis = axisFromLetter(letter);
@@ -58,6 +59,10 @@ nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatis
         const std::string key(1, letter);
         position[key] =
             clean(displayed(letter, statistics.position().values[i], summary.xInDiameter));
+        // Machine coordinates of the tool tip: every axis as its drive stands (rotary axes in
+        // degrees, a lathe's X as a radius).
+        machinePosition[key] =
+            clean(statistics.position().values[i] + summary.workOffset.values[i]);
         if (!bounds.empty) {
             double a = displayed(letter, bounds.min[i], summary.xInDiameter);
             double b = displayed(letter, bounds.max[i], summary.xInDiameter);
@@ -67,6 +72,7 @@ nlohmann::json buildRunReport(const RunSummary& summary, const canon::PathStatis
     }
     report["feed_bounds"] = {{"min", lower}, {"max", upper}};
     report["final_position"] = position;
+    report["final_machine_position"] = machinePosition;
     report["tool_changes"] = statistics.toolChanges();
     report["machining_time_s"] = clean(summary.machiningTimeS);
     return report;

@@ -32,6 +32,7 @@ struct RunSummary {
     uint64_t blocksExecuted = 0;
     bool xInDiameter = false;
     double machiningTimeS = 0.0;  // from motion in simulated time (task::MachiningClock)
+    Pose workOffset{};            // machine coordinates of the stream's origin (the preset)
 };
 
 // The JSON report of `kerf run` (keys documented in docs/headless.md).

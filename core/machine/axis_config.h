@@ -29,7 +29,10 @@ struct AxisConfig {
     double presetPosition = 0.0;
     bool optional = false;  // may be switched off in the file (a removable rotary table)
     bool enabled = true;
-    bool diameterMode = false;  // lathe X: programmed and displayed as a diameter
+    bool diameterMode = false;
+    // Rotary: turns without end (a C table); no soft limits, positions shown modulo 360 with M94
+    // and reached the short way with M126.
+    bool endless = false;  // lathe X: programmed and displayed as a diameter
     // The axis's drive on the CANopen bus (drivers/).
     int driveNode = 0;                    // node-ID; 0: none
     double driveCountsPerUnit = 10000.0;  // drive position units per mm or degree

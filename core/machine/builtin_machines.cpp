@@ -5,12 +5,14 @@
 namespace kerf::machine {
 
 const std::vector<std::string_view>& builtinMachineNames() {
-    static const std::vector<std::string_view> names{"mill", "lathe"};
+    static const std::vector<std::string_view> names{"mill", "mill4", "mill5", "lathe"};
     return names;
 }
 
 std::string_view builtinMachineToml(std::string_view name) {
     if (name == "mill") return detail::millPresetToml();
+    if (name == "mill4") return detail::mill4PresetToml();
+    if (name == "mill5") return detail::mill5PresetToml();
     if (name == "lathe") return detail::lathePresetToml();
     return {};
 }

@@ -5,7 +5,7 @@
 
 namespace kerf::machine {
 
-// Names of the machines available without a file: "mill", "lathe".
+// Names of the machines available without a file: "mill", "mill4", "mill5", "lathe".
 const std::vector<std::string_view>& builtinMachineNames();
 
 // The TOML text of a built-in machine (the files in core/machine/presets/, embedded at build

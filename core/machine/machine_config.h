@@ -112,6 +112,23 @@ struct ToolErrorConfig {
     friend bool operator==(const ToolErrorConfig&, const ToolErrorConfig&) = default;
 };
 
+// How the rotary axes are built (core/machine/table_kinematics.h computes with it). A table
+// carries the workpiece: "table" is one rotary table (the primary axis), "table-table" a
+// secondary table mounted on the primary one (a trunnion B or A with a C table on it). The axes
+// meet at the pivot, in machine coordinates at all rotary axes 0.
+enum class KinematicsType : uint8_t { None, Table, TableTable };
+
+struct KinematicsConfig {
+    KinematicsType type = KinematicsType::None;
+    char primary = 'B';    // the rotary axis nearest the machine base
+    char secondary = 'C';  // table-table: the axis on the primary table, carrying the workpiece
+    double pivotXMm = 0.0;
+    double pivotYMm = 0.0;
+    double pivotZMm = 0.0;
+
+    friend bool operator==(const KinematicsConfig&, const KinematicsConfig&) = default;
+};
+
 // The machine configuration. Every field except `axes[i].letter` is a parameter of the schema in
 // core/machine/machine_schema.h, which loads, checks and writes it; the default member values are
 // the schema defaults. New sections (drives, ...) become new member structs plus schema entries.
@@ -131,6 +148,7 @@ struct MachineConfig {
     // parameters open with 123); viewing needs none.
     int parameterCode = 123;
     DrivesConfig drives;
+    KinematicsConfig kinematics;
     BarConfig bar;                            // lathe only
     ProbeWorkpieceConfig probeWorkpiece;      // simulation only
     SetupErrorConfig setupError;              // simulation only

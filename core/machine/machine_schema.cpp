@@ -94,6 +94,41 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "CiA 402 mode of the spindle drive: cyclic synchronous or profile "
                            "velocity")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::type>(
+            kMachine, {.key = "kinematics.type",
+                       .description = KERF_TR_NOOP(
+                           "How the rotary axes carry the workpiece: none, one rotary table, or "
+                           "a table on a tilting table")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::primary>(
+            kMachine, {.key = "kinematics.primary",
+                       .description = KERF_TR_NOOP(
+                           "Rotary axis nearest the machine base (it carries the other table)")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::secondary>(
+            kMachine, {.key = "kinematics.secondary",
+                       .description = KERF_TR_NOOP(
+                           "table-table: rotary axis on the primary table, carrying the "
+                           "workpiece")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::pivotXMm>(
+            kMachine, {.key = "kinematics.pivot.x",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Machine X where the rotary axes meet; write pivot = [x, y, z]")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::pivotYMm>(
+            kMachine, {.key = "kinematics.pivot.y",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Machine Y where the rotary axes meet; write pivot = [x, y, z]")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::pivotZMm>(
+            kMachine, {.key = "kinematics.pivot.z",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Machine Z where the rotary axes meet; write pivot = [x, y, z]")}),
         bindField<&MachineConfig::bar, &BarConfig::diameterMm>(
             kMachine, {.key = "bar.diameter",
                        .unit = "mm",
@@ -421,6 +456,10 @@ const std::vector<FieldBinding<AxisConfig>>& axisBindings() {
             kAxis, {.key = "diameter_mode",
                     .description =
                         KERF_TR_NOOP("Lathe: the axis is programmed and displayed as a diameter")}),
+        bindField<&AxisConfig::endless>(
+            kAxis, {.key = "endless",
+                    .description = KERF_TR_NOOP(
+                        "Rotary: turns without end; no soft limits, M126 takes the short way")}),
         bindField<&AxisConfig::driveNode>(
             kAxis, {.key = "drive_node",
                     .unit = "node-ID",

@@ -95,6 +95,11 @@ void checkAxis(const MachineConfig& config, const AxisConfig& axis, Validator& v
         v.report({enabledKey, table}, KERF_TR_NOOP("{1} = false is only allowed when {2} = true"),
                  enabledKey, key("optional"));
     }
+    if (axis.endless && axis.type != AxisType::Rotary) {
+        std::string endlessKey = key("endless");
+        v.report({endlessKey, table}, KERF_TR_NOOP("{1} = true is only allowed on a rotary axis"),
+                 endlessKey);
+    }
     if (axis.diameterMode && (config.kind != MachineKind::Lathe || axis.type != AxisType::Linear)) {
         std::string diameterKey = key("diameter_mode");
         v.report({diameterKey, table},
@@ -126,6 +131,34 @@ void checkAxes(const MachineConfig& config, Validator& v) {
     }
 }
 
+// The axes of the kinematics must be rotary axes of the machine; a tilting (primary) axis of a
+// table-table machine turns about X or Y, and the secondary axis is another one.
+void checkKinematics(const MachineConfig& config, Validator& v) {
+    const KinematicsConfig& k = config.kinematics;
+    if (k.type == KinematicsType::None) return;
+    auto checkRotary = [&](const char* key, char letter) {
+        const AxisConfig* axis = config.axis(letter);
+        if (!axis || !axis->enabled || axis->type != AxisType::Rotary) {
+            v.report({key, "kinematics.type"},
+                     KERF_TR_NOOP("{1} = \"{2}\" is not an enabled rotary axis of this machine"),
+                     key, std::string(1, letter));
+            return false;
+        }
+        return true;
+    };
+    if (!checkRotary("kinematics.primary", k.primary)) return;
+    if (k.type != KinematicsType::TableTable) return;
+    if (!checkRotary("kinematics.secondary", k.secondary)) return;
+    if (k.primary == 'C') {
+        v.report({"kinematics.primary", "kinematics.type"},
+                 KERF_TR_NOOP("kinematics.primary of a table-table machine tilts the table: A or "
+                              "B, not C"));
+    } else if (k.secondary == k.primary) {
+        v.report({"kinematics.secondary", "kinematics.type"},
+                 KERF_TR_NOOP("kinematics.secondary must be another axis than kinematics.primary"));
+    }
+}
+
 void checkMachine(const MachineConfig& config, Validator& v) {
     std::string toolAxis = "\"" + std::string(1, config.toolAxis) + "\"";
     const AxisConfig* tool = config.axis(config.toolAxis);
@@ -153,6 +186,7 @@ void checkMachine(const MachineConfig& config, Validator& v) {
         v.report({low, high}, KERF_TR_NOOP("{1} = {2} must be less than {3} = {4}"), low,
                  formatNumber(bounds[i][0]), high, formatNumber(bounds[i][1]));
     }
+    checkKinematics(config, v);
     if (config.bar.diameterMm > 0.0 && config.bar.boreDiameterMm >= config.bar.diameterMm) {
         v.report({"bar.bore_diameter", "bar.diameter"},
                  KERF_TR_NOOP("{1} = {2} must be smaller than {3} = {4}"), "bar.bore_diameter",

@@ -17,8 +17,9 @@ MachineModel makeMachineModel(const machine::MachineConfig& config, const Motion
         AxisModel& m = model.axes[static_cast<size_t>(axisIndex(*index))];
         m.enabled = true;
         m.rotary = axis.type == machine::AxisType::Rotary;
-        m.minLimit = axis.minLimit;
-        m.maxLimit = axis.maxLimit;
+        // An endless rotary axis has no soft limits (1e9 deg: far beyond any program).
+        m.minLimit = axis.endless ? -1e9 : axis.minLimit;
+        m.maxLimit = axis.endless ? 1e9 : axis.maxLimit;
         m.velocity = axis.maxVelocityPerS;
         m.accel = axis.maxAccelerationPerS2;
         m.jerk = axis.maxJerkPerS3;

@@ -2,7 +2,8 @@
 // expectations written by hand next to the program:
 //   program.*       the NC program (any extension; the dialect follows it or the `args` file)
 //   args            optional options, one per line: "--machine lathe", "--tool-table TOOL.T",
-//                   "--stock" (material removal: the report's "stock" section) ...
+//                   "--stock" (material removal: the report's "stock" section),
+//                   "--work-offset Z-350" ...
 //   expected.json   values the report must contain (numbers within 1e-4 unless "tolerance" says
 //                   otherwise, whole numbers such as counts exactly; arrays must have the same
 //                   length; keys not listed are not checked)
@@ -73,6 +74,8 @@ RunOptions optionsFor(const fs::path& dir) {
             options.maxBlocks = std::stoull(value);
         } else if (key == "--stock") {
             options.stock = true;
+        } else if (key == "--work-offset") {
+            options.workOffset = value;
         } else if (key == "--block-skip") {
             options.blockSkip = true;
         } else if (!key.empty()) {

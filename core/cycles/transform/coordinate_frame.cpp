@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 namespace kerf::cycles {
 
 namespace {
@@ -41,16 +43,24 @@ Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
     for (int i = 0; i < kAxisCount; ++i) {
         const auto k = static_cast<size_t>(i);
         if ((m_mirror & axisBit(axisAt(i))) != 0) p.values[k] = -p.values[k];
-        p.values[k] += m_shift.values[k] + m_preset.values[k];
+        p.values[k] += m_shift.values[k];
     }
+    if (m_tilted) p.setXyz(m_tiltOrigin + m_tilt * p.xyz());
+    for (size_t k = 0; k < p.values.size(); ++k)
+        p.values[k] += m_preset.values[k];
+    if (m_tabled) p.setXyz(m_table * p.xyz() + m_tableOffset);
     return p;
 }
 
 Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
     Pose p = workpiece;
+    if (m_tabled) p.setXyz(m_table.transpose() * (p.xyz() - m_tableOffset));
+    for (size_t k = 0; k < p.values.size(); ++k)
+        p.values[k] -= m_preset.values[k];
+    if (m_tilted) p.setXyz(m_tilt.transpose() * (p.xyz() - m_tiltOrigin));
     for (int i = 0; i < kAxisCount; ++i) {
         const auto k = static_cast<size_t>(i);
-        p.values[k] -= m_shift.values[k] + m_preset.values[k];
+        p.values[k] -= m_shift.values[k];
         if ((m_mirror & axisBit(axisAt(i))) != 0) p.values[k] = -p.values[k];
     }
     rotate(p, m_rotationPlane, -m_rotationDeg);
@@ -65,15 +75,35 @@ Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
     return p;
 }
 
+namespace {
+
+// The unit normal of a plane (the axis that is not in it).
+Vec3 normalOf(Plane plane) {
+    const PlaneAxes axes = planeAxes(plane);
+    Vec3 first = Vec3::Zero(), second = Vec3::Zero();
+    first[axisIndex(axes.first)] = 1.0;
+    second[axisIndex(axes.second)] = 1.0;
+    return first.cross(second);
+}
+
+}  // namespace
+
 bool CoordinateFrame::flipsOrientation(Plane plane) const {
     const PlaneAxes axes = planeAxes(plane);
     const bool a = (m_mirror & axisBit(axes.first)) != 0;
     const bool b = (m_mirror & axisBit(axes.second)) != 0;
-    return a != b;
+    // A spatial turn that lays the plane upside down reverses its arcs too.
+    const Vec3 n = normalOf(plane);
+    const bool turned = (m_tilted || m_tabled) && (spatialTurn() * n).dot(n) < 0.0;
+    return (a != b) != turned;
 }
 
 bool CoordinateFrame::keepsArcs(Plane plane) const {
     if (m_rotationDeg != 0.0 && plane != m_rotationPlane) return false;
+    if (m_tilted || m_tabled) {
+        const Vec3 n = normalOf(plane);
+        if (std::abs(std::abs((spatialTurn() * n).dot(n)) - 1.0) > 1e-9) return false;
+    }
     const PlaneAxes axes = planeAxes(plane);
     return m_axisScale[static_cast<size_t>(axes.first)] ==
            m_axisScale[static_cast<size_t>(axes.second)];
@@ -84,6 +114,7 @@ double CoordinateFrame::planeScale(Plane plane) const {
 }
 
 bool CoordinateFrame::identity() const {
+    if (m_tilted || m_tabled) return false;
     if (m_mirror != 0 || m_rotationDeg != 0.0 || m_scale != 1.0) return false;
     for (size_t k = 0; k < static_cast<size_t>(kAxisCount); ++k) {
         if (m_shift.values[k] != 0.0 || m_preset.values[k] != 0.0 || m_axisScale[k] != 1.0 ||
@@ -112,10 +143,38 @@ void CoordinateFrame::setAxisScaleCentre(Axis axis, double centre) {
 }
 
 void CoordinateFrame::setPreset(const Pose& offset) {
-    const Pose pointShift = m_pointShift;  // belongs to the running program call, not to 247
+    // The point shift belongs to the running program call, the tilt and the tables' turn to the
+    // machine: cycle 247 keeps them.
+    CoordinateFrame kept = *this;
     *this = CoordinateFrame();
     m_preset = offset;
-    m_pointShift = pointShift;
+    m_pointShift = kept.m_pointShift;
+    m_tilted = kept.m_tilted;
+    m_tilt = kept.m_tilt;
+    m_tiltOrigin = kept.m_tiltOrigin;
+    m_tabled = kept.m_tabled;
+    m_table = kept.m_table;
+    m_tableOffset = kept.m_tableOffset;
+}
+
+void CoordinateFrame::setTilt(const Eigen::Matrix3d& rotation) {
+    m_tiltOrigin += m_tilt * m_shift.xyz();
+    m_shift.setXyz(Vec3::Zero());
+    m_tilt = rotation;
+    m_tilted = true;
+}
+
+void CoordinateFrame::clearTilt() {
+    m_shift.setXyz(m_tiltOrigin + m_tilt * m_shift.xyz());
+    m_tiltOrigin = Vec3::Zero();
+    m_tilt = Eigen::Matrix3d::Identity();
+    m_tilted = false;
+}
+
+void CoordinateFrame::setTable(const Eigen::Matrix3d& rotation, const Vec3& offset) {
+    m_table = rotation;
+    m_tableOffset = offset;
+    m_tabled = !rotation.isIdentity(1e-12) || !offset.isZero(1e-12);
 }
 
 }  // namespace kerf::cycles

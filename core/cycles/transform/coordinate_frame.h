@@ -11,7 +11,10 @@ namespace kerf::cycles {
 // canonical stream). Applied innermost first:
 //   26 axis-specific scaling about its centre, 11 scaling about the datum, 10 rotation in the
 //   working plane about the datum, 8 mirroring about the datum, 7 datum shift, 247 preset.
-// Scaling acts on linear axes only, rotation on the two axes of its plane.
+// Scaling acts on linear axes only, rotation on the two axes of its plane. Two more stages turn
+// the linear axes in space: the tilted working plane (cycle 19, PLANE) between the datum shift and
+// the preset, and, outermost, the turn of the rotary tables that carry the workpiece, so that the
+// canonical stream holds the positions of the machine's linear axes (machine minus preset).
 class CoordinateFrame {
 public:
     Pose toWorkpiece(const Pose& program) const;
@@ -38,6 +41,17 @@ public:
     void setPointShift(const Pose& shift) { m_pointShift = shift; }
     const Pose& pointShift() const { return m_pointShift; }
 
+    // The tilted working plane: `rotation` takes tilted axes to untilted ones, about the datum
+    // active now; the datum shift active now becomes part of the tilt, later shifts act in the
+    // tilted system (spec: a shift before cycle 19 shifts the machine-based system).
+    void setTilt(const Eigen::Matrix3d& rotation);
+    // Back to the untilted plane; a datum shift made in the tilted system is kept, turned back.
+    void clearTilt();
+    bool tilted() const { return m_tilted; }
+    const Eigen::Matrix3d& tilt() const { return m_tilt; }
+    // The rotary tables stand turned: linear axes = rotation * workpiece + offset.
+    void setTable(const Eigen::Matrix3d& rotation, const Vec3& offset);
+
     const Pose& shift() const { return m_shift; }
     const Pose& preset() const { return m_preset; }
     AxisMask mirror() const { return m_mirror; }
@@ -56,6 +70,14 @@ private:
     Pose m_axisScaleCentre{};
     Pose m_preset{};
     Pose m_pointShift{};
+    bool m_tilted = false;
+    Eigen::Matrix3d m_tilt = Eigen::Matrix3d::Identity();
+    Vec3 m_tiltOrigin = Vec3::Zero();
+    bool m_tabled = false;
+    Eigen::Matrix3d m_table = Eigen::Matrix3d::Identity();
+    Vec3 m_tableOffset = Vec3::Zero();
+    // Tilt and table together: how the frame turns the linear axes.
+    Eigen::Matrix3d spatialTurn() const { return m_table * m_tilt; }
 };
 
 bool isLinearAxis(Axis axis);

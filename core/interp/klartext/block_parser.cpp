@@ -1090,12 +1090,17 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         head == "FSELECT" || head == "FSELCT") {
         return parseFk(head, line, cur.position(), out);
     }
+    if (head == "PLANE") return parsePlane(line, cur.position(), out);
+    if (head == "FUNCTION") {
+        bool handled = false;
+        const bool ok = parseTcpm(line, cur.position(), out, handled);
+        if (handled) return ok;
+    }
     static const char* const kDeferredHeads[] = {
-        "PATTERN", "SEL",      "GLOBAL", "PLANE",      "FUNCTION",  "TRANS",     "CONTOUR",
-        "SPEC",    "FPOL",     "FL",     "FLT",        "FC",        "FCT",       "FSELECT",
-        "FSELCT",  "LN",       "PRESET", "POLARKIN",   "FACING",    "TABDATA",   "OPEN",
-        "LIFTOFF", "WAIT",     "ERROR",  "MONITORING", "PARAXCOMP", "PARAXMODE", "RESET",
-        "SYSREAD", "CFGWRITE", "CFGREAD"};
+        "PATTERN",   "SEL",     "GLOBAL",  "FUNCTION", "TRANS",      "CONTOUR",
+        "SPEC",      "LN",      "PRESET",  "POLARKIN", "FACING",     "TABDATA",
+        "OPEN",      "LIFTOFF", "WAIT",    "ERROR",    "MONITORING", "PARAXCOMP",
+        "PARAXMODE", "RESET",   "SYSREAD", "CFGWRITE", "CFGREAD"};
     for (const char* candidate : kDeferredHeads) {
         if (head == candidate) {
             std::string feature(head);

@@ -32,6 +32,9 @@ private:
     bool parseCycleWords(std::string_view text, size_t from, cycles::CycleWords& out);
     bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parsePatternDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    bool parsePlane(const program::LogicalLine& line, size_t at, ParsedBlock& out);
+    // FUNCTION TCPM / FUNCTION RESET TCPM; false with nothing reported for other FUNCTIONs.
+    bool parseTcpm(const program::LogicalLine& line, size_t at, ParsedBlock& out, bool& handled);
     bool parseValue(Cursor& cursor, double& out);
     // FK free contour blocks (block_parser_fk.cpp); `head` is FPOL, FL, FLT, FC, FCT or FSELECT.
     bool parseFk(std::string_view head, const program::LogicalLine& line, size_t at,

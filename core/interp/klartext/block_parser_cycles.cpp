@@ -110,7 +110,7 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
     if (b.subNumber >= 0) {
         // Sub-blocks of the cycles Kerf runs are words with values; the others (12.1 PGM with
         // a file name, obsolete and SL cycles) stay text.
-        static constexpr int kWordCycles[] = {7, 8, 9, 10, 11, 13, 18, 26, 32};
+        static constexpr int kWordCycles[] = {7, 8, 9, 10, 11, 13, 18, 19, 26, 32};
         const bool words = !probe && std::find(std::begin(kWordCycles), std::end(kWordCycles),
                                                b.number) != std::end(kWordCycles);
         if (b.subNumber > 0 && words) {

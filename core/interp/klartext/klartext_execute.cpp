@@ -89,6 +89,8 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const FkBlock& b) { self.executeFk(b); }
         void operator()(const FkPole& b) { self.executeFkPole(b); }
         void operator()(const FkSelect& b) { self.executeFkSelect(b); }
+        void operator()(const PlaneBlock& b) { self.executePlane(b); }
+        void operator()(const TcpmBlock& b) { self.switchTcpm(b.on); }
         void operator()(const Deferred& b) {
             self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
         }

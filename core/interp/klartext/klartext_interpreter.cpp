@@ -39,6 +39,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
     if (m_settings.machine != nullptr) {
         m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
         if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;
+        m_kinematics = machine::TableKinematics::of(*m_settings.machine);
     }
     m_programmed = m_settings.startPosition;
     m_path.reset(m_programmed);

@@ -25,6 +25,7 @@
 #include "core/interp/path/path_builder.h"
 #include "core/interp/path/value_guard.h"
 #include "core/machine/machine_config.h"
+#include "core/machine/table_kinematics.h"
 #include "core/program/nc_root.h"
 #include "core/program/source_registry.h"
 #include "core/tables/datum_table.h"
@@ -331,6 +332,44 @@ private:
     Vec3 toLocal(const Pose& pose) const;
     Pose fromLocal(const Vec3& local) const;
 
+    // The tilted working plane and the rotary axes (klartext_plane.cpp).
+    struct TiltState {
+        bool active = false;
+        Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // tilted axes, untilted coords
+    };
+    struct TiltRequest {
+        Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+        machine::RotaryAngles angles;
+        bool reset = false;
+        PlaneBlock::Positioning positioning = PlaneBlock::Positioning::Stay;
+        double distance = 0.0;  // MOVE: the point this far along the tool stays put
+        bool rapid = true;
+        double feed = 0.0;
+        std::optional<double> retract;  // MB
+        bool retractMax = false;        // MB MAX
+    };
+    void executePlane(const PlaneBlock& block);
+    std::optional<Eigen::Matrix3d> planeRotation(const PlaneBlock& block);
+    machine::RotaryAngles currentTableAngles() const;
+    std::optional<machine::RotaryAngles> solvePlane(const Eigen::Matrix3d& rotation,
+                                                    PlaneBlock::Sequence sequence,
+                                                    bool tableRotation, std::string_view feature);
+    void applyTilt(const TiltRequest& request);
+    // A line in stream coordinates (the machine's linear axes), past the transformations.
+    void emitStreamMove(const Pose& from, const Pose& to, bool rapid, double feed);
+    // Where a rotary axis word takes the axis (program coordinates): endless axes count from
+    // the angle shown modulo 360, or take the short way with M126.
+    double rotaryTarget(Axis axis, double current, double programmed, bool incremental) const;
+    // False (and the run failed) when a rotary axis would leave its soft limits.
+    bool rotaryWithinLimits(const Pose& programTarget);
+
+    // TCPM (klartext_tcpm.cpp): tool-tip positions on the part while the tables turn.
+    void switchTcpm(bool on);
+    machine::RotaryAngles tableAnglesOf(const Pose& pose) const;
+    Pose axesOfTip(const Pose& tip) const;  // workpiece tip -> stream (linear axes)
+    Pose tipOf(const Pose& axes) const;     // and back
+    void moveWithTcpm(const Pose& programTarget, bool rapid, double feed);
+
     // Q parameter functions and FN blocks (klartext_functions.cpp).
     void executeSysRead(const SysRead& read);
     std::optional<double> sysReadValue(const SysRead& read, bool& needsSync);
@@ -429,6 +468,13 @@ private:
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)
     cycles::CoordinateFrame m_frame;
+    // Rotary tables of the machine, the tilted plane, the tables' turn in m_frame, and M126.
+    std::optional<machine::TableKinematics> m_kinematics;
+    TiltState m_tilt;
+    Eigen::Matrix3d m_tableTurn = Eigen::Matrix3d::Identity();
+    Vec3 m_tableOffset = Vec3::Zero();
+    bool m_shortestRotary = false;
+    bool m_tcpm = false;  // M128 / FUNCTION TCPM
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;
     std::vector<ProgramAtPoints> m_pointRuns;  // cycle 12 at pattern points, innermost last

@@ -112,6 +112,16 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
             case 91:
             case 92:
                 break;  // coordinates of this block, see targetOf()
+            case 126:
+            case 127:
+                m_shortestRotary = n == 126;  // rotaryTarget(): the short way, from this block
+                break;
+            case 94:
+                break;
+            case 128:
+            case 129:
+                switchTcpm(n == 128);
+                break;  // endless axes always show their angle below 360 (rotaryTarget())
             case 89:    // modal cycle call, from this block on
             case 99:    // cycle call in this block only
                 m_modalCycleCall = n == 89;

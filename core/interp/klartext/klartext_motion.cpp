@@ -77,7 +77,11 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
             if (axis == m_toolAxis) out -= m_tool.effectiveLength();
         } else {
             double& out = target.values[static_cast<size_t>(i)];
-            out = word.incremental ? out + value : value;
+            if (rotary) {
+                out = rotaryTarget(axis, out, value, word.incremental);
+            } else {
+                out = word.incremental ? out + value : value;
+            }
         }
     }
     return machine ? m_frame.toProgram(work) : target;
@@ -86,6 +90,10 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
+    if (m_tcpm && element.kind != ContourElement::Kind::Line) {
+        fail("not-supported", KERF_TR_NOOP("circles with TCPM are not supported yet"));
+        return;
+    }
     auto transformed = toWorkpiece(element);
     if (!transformed) return;
     interp::PathMove move;
@@ -119,6 +127,13 @@ void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
     Pose target = targetOf(block.coords);
+    if (!rotaryWithinLimits(target)) return;
+    if (m_tcpm) {
+        moveWithTcpm(target, rapid, feed);
+        applyMFunctions(block.words.m, false);
+        afterPositioning(block.words.m);
+        return;
+    }
     submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
                block.words);
     applyMFunctions(block.words.m, false);

@@ -151,22 +151,6 @@ void KlartextInterpreter::presetting(const cycles::CycleValues& values) {
     m_frame.setPreset(offset);
 }
 
-void KlartextInterpreter::workingPlane(const CycleDefinition& def) {
-    if (def.subNumber != 0) return;
-    bool rotary = false;
-    if (m_settings.machine != nullptr) {
-        for (char letter : {'A', 'B', 'C'})
-            rotary = rotary || m_settings.machine->axis(letter);
-    }
-    if (!rotary) {
-        fail("not-supported",
-             KERF_TR_NOOP("cycle 19 (working plane) needs rotary axes: this machine has none"));
-    } else {
-        fail("not-supported",
-             KERF_TR_NOOP("cycle 19 (working plane): tilting kinematics are not supported yet"));
-    }
-}
-
 std::optional<double> KlartextInterpreter::lastValue(const CycleDefinition& def, const char* what) {
     for (auto it = def.words.rbegin(); it != def.words.rend(); ++it) {
         if (it->value) return it->value;

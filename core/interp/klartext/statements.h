@@ -243,6 +243,33 @@ struct FkSelect {
     int choice = 1;
 };
 
+// PLANE: the tilted working plane (block_parser_plane.cpp, klartext_plane.cpp).
+struct PlaneBlock {
+    enum class Kind : uint8_t { Spatial, Projected, Euler, Vector, Points, Relative, Axial, Reset };
+    enum class Positioning : uint8_t { Stay, Turn, Move };
+    enum class Sequence : uint8_t { Shortest, Positive, Negative };  // (none), SEQ+, SEQ-
+    Kind kind = Kind::Reset;
+    // The numbers in the order written: SPA SPB SPC, PROPR PROMIN ROT, EULPR EULNU EULROT,
+    // BX BY BZ NX NY NZ, P1X ... P3Z; RELATIV: the angle and `relativeAxis` (0 SPA, 1 SPB, 2 SPC);
+    // AXIAL: A B C with `axialPresent`.
+    std::array<double, 9> values{};
+    int relativeAxis = 0;
+    std::array<bool, 3> axialPresent{};
+    Positioning positioning = Positioning::Stay;
+    double distance = 0.0;          // MOVE DIST: tool tip to the point kept during tilting
+    FeedWord feed;                  // F or FMAX of the rotary positioning
+    std::optional<double> retract;  // MB: retract along the tool axis before tilting
+    bool retractMax = false;        // MB MAX
+    Sequence sequence = Sequence::Shortest;
+    bool tableRotation = false;  // TABLE ROT (else COORD ROT)
+};
+
+// FUNCTION TCPM ... / FUNCTION RESET TCPM (block_parser_plane.cpp): programmed positions are
+// tool-tip positions on the part while the rotary axes move (as M128 / M129).
+struct TcpmBlock {
+    bool on = false;
+};
+
 // Blocks that parse and are kept but that this release does not execute yet (fixed cycles,
 // patterns, probing, FK, PLANE ...). `feature` names them in the diagnostic.
 struct Deferred {
@@ -297,7 +324,8 @@ using Statement =
                  CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
                  ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
                  TableAccess, CycleDefinition, GlobalDefinition, PatternDefinition, SelectTable,
-                 SelectPattern, CycleCall, FkBlock, FkPole, FkSelect, Deferred>;
+                 SelectPattern, CycleCall, FkBlock, FkPole, FkSelect, PlaneBlock, TcpmBlock,
+                 Deferred>;
 
 struct ParsedBlock {
     Statement statement;

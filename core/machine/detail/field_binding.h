@@ -103,6 +103,14 @@ struct FieldCodec<ToolProbeShape> : EnumCodec<ToolProbeShape> {
     }
 };
 
+template <>
+struct FieldCodec<KinematicsType> : EnumCodec<KinematicsType> {
+    static const std::vector<std::string_view>& names() {
+        static const std::vector<std::string_view> list{"none", "table", "table-table"};
+        return list;
+    }
+};
+
 // A char member holds an axis letter, written as a one-letter string.
 template <>
 struct FieldCodec<char> {

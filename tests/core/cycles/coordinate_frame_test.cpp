@@ -32,6 +32,45 @@ TEST(CoordinateFrame, ScaleRotateMirrorShiftInThisOrder) {
     EXPECT_FALSE(f.keepsArcs(Plane::ZX));  // rotated about Z
 }
 
+// The tilt sits between the datum shift and the preset, the tables' turn outermost. A shift made
+// before the tilt stays in the untilted system, one made after it acts along the tilted axes.
+TEST(CoordinateFrame, TiltAndTableTurnComposeWithTheShift) {
+    // About Y by +90: tilted X = (0, 0, -1), tilted Z = (1, 0, 0).
+    Eigen::Matrix3d tilt;
+    tilt << 0, 0, 1, 0, 1, 0, -1, 0, 0;
+    CoordinateFrame f;
+    f.setShift(Axis::X, 20.0, false);
+    f.setTilt(tilt);
+    f.setShift(Axis::X, 5.0, false);  // along the tilted X: the part's -Z
+    // (1, 2, 3) + (5, 0, 0) = (6, 2, 3); tilted: (3, 2, -6); + (20, 0, 0).
+    Pose w = f.toWorkpiece(xyz(1.0, 2.0, 3.0));
+    EXPECT_NEAR(w[Axis::X], 23.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Y], 2.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Z], -6.0, 1e-12);
+    // The table turns the part back by Ry(-90) and moves it by (1, 0, 0): (-z, y, x) + (1, 0, 0).
+    f.setTable(tilt.transpose(), Vec3(1.0, 0.0, 0.0));
+    w = f.toWorkpiece(xyz(1.0, 2.0, 3.0));
+    EXPECT_NEAR(w[Axis::X], 7.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Y], 2.0, 1e-12);
+    EXPECT_NEAR(w[Axis::Z], 23.0, 1e-12);
+    const Pose back = f.toProgram(w);
+    EXPECT_NEAR(back[Axis::X], 1.0, 1e-12);
+    EXPECT_NEAR(back[Axis::Y], 2.0, 1e-12);
+    EXPECT_NEAR(back[Axis::Z], 3.0, 1e-12);
+    // Table and tilt cancel: arcs of every plane stay arcs, none turns over.
+    EXPECT_TRUE(f.keepsArcs(Plane::XY));
+    EXPECT_FALSE(f.flipsOrientation(Plane::XY));
+    // Without the table's turn the XY plane stands upright: no arcs in it.
+    f.setTable(Eigen::Matrix3d::Identity(), Vec3::Zero());
+    EXPECT_FALSE(f.keepsArcs(Plane::XY));
+    EXPECT_TRUE(f.keepsArcs(Plane::ZX));
+    // Untilting keeps the tilted shift, turned back: 20 along X and 5 along the part's -Z.
+    f.clearTilt();
+    EXPECT_NEAR(f.shift()[Axis::X], 20.0, 1e-12);
+    EXPECT_NEAR(f.shift()[Axis::Z], -5.0, 1e-12);
+    EXPECT_FALSE(f.tilted());
+}
+
 TEST(CoordinateFrame, AxisScalingAboutItsCentre) {
     CoordinateFrame f;
     CycleWords words = {

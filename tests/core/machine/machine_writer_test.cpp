@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/machine/builtin_machines.h"
 #include "core/machine/machine_loader.h"
 
 namespace kerf::machine {
@@ -18,7 +19,7 @@ MachineConfig reparse(const MachineConfig& config) {
 }
 
 TEST(MachineWriter, BuiltinsRoundTrip) {
-    for (std::string_view name : {"mill", "lathe"}) {
+    for (std::string_view name : builtinMachineNames()) {
         MachineConfig config = loadMachine(name).value();
         EXPECT_EQ(reparse(config), config) << name;
     }

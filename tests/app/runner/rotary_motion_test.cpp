@@ -1,0 +1,155 @@
+// `kerf run --motion` on mill5 with rotary moves: the B and C joints keep their limits in deg/s,
+// deg/s^2 and deg/s^3 (core/machine/presets/mill5.toml), the machine ends where the golden case
+// computed by hand (tests/golden/klartext/plane_spatial_stay_q121_mill5), and a rotary axis beyond
+// its soft limit stops the program with the block named.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& file) {
+    std::stringstream text;
+    text << std::ifstream(file, std::ios::binary).rdbuf();
+    return text.str();
+}
+
+class RotaryMotion : public testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("kerf_rotary_motion_" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::copy(fs::path(KERF_SOURCE_DIR) / "tests/golden/klartext/plane_spatial_stay_q121_mill5",
+                 dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    // kerf run on mill5; the exit code and the report.
+    int run(const std::string& program, nlohmann::json& report) {
+        const std::string command =
+            std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
+            (dir / "TOOL.T").string() + "\" --motion \"" + (dir / program).string() +
+            "\" --report \"" + (dir / "report.json").string() + "\" 2> \"" +
+            (dir / "errors").string() + "\"";
+        const int status = std::system(command.c_str());
+        report = nlohmann::json::parse(readText(dir / "report.json"));
+        return status;
+    }
+
+    fs::path dir;
+};
+
+TEST_F(RotaryMotion, RotaryJointsKeepTheirLimits) {
+    nlohmann::json report;
+    ASSERT_EQ(run("program.H", report), 0) << readText(dir / "errors");
+    ASSERT_TRUE(report["ok"].get<bool>());
+    const nlohmann::json& axes = report["motion"]["axes"];
+    // Both tables turn 90 deg at rapid: B reaches its 90 deg/s, C (180 deg/s) is held to B's
+    // time; neither goes beyond its limits (1 % for the servo cycle's sampling).
+    EXPECT_NEAR(axes["B"]["max_velocity"].get<double>(), 90.0, 0.9);
+    EXPECT_LE(axes["B"]["max_accel"].get<double>(), 720.0 * 1.01);
+    EXPECT_LE(axes["B"]["max_jerk"].get<double>(), 100000.0 * 1.01);
+    EXPECT_GT(axes["C"]["max_velocity"].get<double>(), 0.0);
+    EXPECT_LE(axes["C"]["max_velocity"].get<double>(), 180.0 * 1.01);
+    EXPECT_LE(axes["C"]["max_accel"].get<double>(), 1440.0 * 1.01);
+    const nlohmann::json& end = report["motion"]["final_position"];
+    EXPECT_NEAR(end["X"].get<double>(), -5.0, 1e-3);
+    EXPECT_NEAR(end["Y"].get<double>(), 30.0, 1e-3);
+    EXPECT_NEAR(end["Z"].get<double>(), 100.0, 1e-3);
+    EXPECT_NEAR(end["B"].get<double>(), 0.0, 1e-3);
+    EXPECT_NEAR(end["C"].get<double>(), 0.0, 1e-3);
+    EXPECT_NEAR(report["final_machine_position"]["Z"].get<double>(), -300.0, 1e-6);
+}
+
+TEST_F(RotaryMotion, RotaryBeyondItsSoftLimitIsRefused) {
+    std::ofstream(dir / "LIMIT.H") << "0 BEGIN PGM LIMIT MM\n1 L B+100 FMAX\n2 L B+115 FMAX\n"
+                                      "3 END PGM LIMIT MM\n";
+    nlohmann::json report;
+    EXPECT_NE(run("LIMIT.H", report), 0);
+    EXPECT_FALSE(report["ok"].get<bool>());
+    EXPECT_NE(readText(dir / "errors")
+                  .find("LIMIT.H:3:1: error: the move would take axis B to 115.000 deg (machine "
+                        "coordinates), beyond its soft limit 110.000"),
+              std::string::npos)
+        << readText(dir / "errors");
+}
+
+}  // namespace
+
+namespace {
+
+// Distance from p to the segment a-b.
+double toSegment(const double p[3], const double a[3], const double b[3]) {
+    double ab[3], ap[3], t = 0.0, len2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        ab[i] = b[i] - a[i];
+        ap[i] = p[i] - a[i];
+        t += ab[i] * ap[i];
+        len2 += ab[i] * ab[i];
+    }
+    t = len2 > 0.0 ? std::clamp(t / len2, 0.0, 1.0) : 0.0;
+    double d2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+        d2 += (ap[i] - t * ab[i]) * (ap[i] - t * ab[i]);
+    return std::sqrt(d2);
+}
+
+// TCPM on mill5 (origin at the pivot): the tip stays at (0, 0, 50) while B turns to 90, goes
+// along X to (10, 0, 50) while B turns back, then stays while C turns 90. Every servo cycle's
+// axes, turned back to the part (tip = Rz(C) Ry(B) axes), lie on the programmed path within the
+// machine's path tolerance (0.01 mm).
+TEST_F(RotaryMotion, TcpmKeepsTheTipOnTheProgrammedLine) {
+    std::ofstream(dir / "TCPM.H") << "0 BEGIN PGM TCPM MM\n1 TOOL CALL 4 Z S1000\n"
+                                     "2 L X+0 Y+0 Z+50 R0 FMAX\n"
+                                     "3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                                     "4 L B+90 F3000\n5 L X+10 B+0 F1000\n6 L C+90 F3000\n"
+                                     "7 FUNCTION RESET TCPM\n8 END PGM TCPM MM\n";
+    const std::string samples = (dir / "samples.csv").string();
+    const std::string command =
+        std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
+        (dir / "TOOL.T").string() + "\" --motion --samples \"" + samples + "\" \"" +
+        (dir / "TCPM.H").string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir / "errors");
+    std::istringstream csv(readText(samples));
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line, "t_s,X,Y,Z,B,C,spindle_deg,path_velocity,move");
+    // The start: the tip of the 60 mm tool below the untooled start point.
+    const double origin[3] = {0, 0, -60}, above[3] = {0, 0, 50}, end[3] = {10, 0, 50};
+    double worst = 0.0, lastB = 0.0, lastC = 0.0;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        double v[6];
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3],
+                              &v[4], &v[5]),
+                  6);
+        const double b = v[4] * M_PI / 180.0, c = v[5] * M_PI / 180.0;
+        // Ry(B), then Rz(C).
+        const double x1 = std::cos(b) * v[1] + std::sin(b) * v[3];
+        const double z1 = -std::sin(b) * v[1] + std::cos(b) * v[3];
+        const double tip[3] = {std::cos(c) * x1 - std::sin(c) * v[2],
+                               std::sin(c) * x1 + std::cos(c) * v[2], z1};
+        worst =
+            std::max(worst, std::min(toSegment(tip, origin, above), toSegment(tip, above, end)));
+        lastB = v[4];
+        lastC = v[5];
+        ++rows;
+    }
+    EXPECT_GT(rows, 1000);
+    EXPECT_LE(worst, 0.01);
+    EXPECT_NEAR(lastB, 0.0, 1e-6);
+    EXPECT_NEAR(lastC, 90.0, 1e-6);
+}
+
+}  // namespace
