@@ -1121,6 +1121,22 @@ verschiebungen</translation>
         <source>Table</source>
         <translation>Tabelle</translation>
     </message>
+    <message>
+        <source>%1 was changed on disk (e.g. by a tool measurement): reloaded</source>
+        <translation>%1 wurde auf dem Datenträger geändert (z. B. durch eine Werkzeugvermessung): neu geladen</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk while you edit it: saving would overwrite those changes</source>
+        <translation>%1 wurde auf dem Datenträger geändert, während Sie sie bearbeiten: Speichern würde diese Änderungen überschreiben</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk since it was opened here (e.g. by a tool measurement). Overwrite it with the table shown?</source>
+        <translation>%1 wurde auf dem Datenträger geändert, seit sie hier geöffnet wurde (z. B. durch eine Werkzeugvermessung). Mit der angezeigten Tabelle überschreiben?</translation>
+    </message>
+    <message>
+        <source>Not saved: the file on disk is kept</source>
+        <translation>Nicht gespeichert: die Datei auf dem Datenträger bleibt</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TestRunController</name>

@@ -1121,6 +1121,22 @@ de origen</translation>
         <source>Table</source>
         <translation>Tabla</translation>
     </message>
+    <message>
+        <source>%1 was changed on disk (e.g. by a tool measurement): reloaded</source>
+        <translation>%1 se modificó en el disco (p. ej. por una medición de herramienta): recargada</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk while you edit it: saving would overwrite those changes</source>
+        <translation>%1 se modificó en el disco mientras la edita: guardar sobrescribiría esos cambios</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk since it was opened here (e.g. by a tool measurement). Overwrite it with the table shown?</source>
+        <translation>%1 se modificó en el disco desde que se abrió aquí (p. ej. por una medición de herramienta). ¿Sobrescribirla con la tabla mostrada?</translation>
+    </message>
+    <message>
+        <source>Not saved: the file on disk is kept</source>
+        <translation>No guardado: se conserva el archivo del disco</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TestRunController</name>

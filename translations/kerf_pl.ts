@@ -1124,6 +1124,22 @@ punktu zerowego</translation>
         <source>Table</source>
         <translation>Tabela</translation>
     </message>
+    <message>
+        <source>%1 was changed on disk (e.g. by a tool measurement): reloaded</source>
+        <translation>%1 zmieniono na dysku (np. przez pomiar narzędzia): wczytano ponownie</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk while you edit it: saving would overwrite those changes</source>
+        <translation>%1 zmieniono na dysku podczas edycji: zapis nadpisałby te zmiany</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk since it was opened here (e.g. by a tool measurement). Overwrite it with the table shown?</source>
+        <translation>%1 zmieniono na dysku od otwarcia tutaj (np. przez pomiar narzędzia). Nadpisać ją wyświetlaną tabelą?</translation>
+    </message>
+    <message>
+        <source>Not saved: the file on disk is kept</source>
+        <translation>Nie zapisano: plik na dysku pozostaje</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TestRunController</name>

@@ -1121,6 +1121,22 @@ offsets</source>
         <source>Table</source>
         <translation>Tabela</translation>
     </message>
+    <message>
+        <source>%1 was changed on disk (e.g. by a tool measurement): reloaded</source>
+        <translation>%1 foi alterada no disco (p. ex. por uma medição de ferramenta): recarregada</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk while you edit it: saving would overwrite those changes</source>
+        <translation>%1 foi alterada no disco enquanto a edita: guardar substituiria essas alterações</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk since it was opened here (e.g. by a tool measurement). Overwrite it with the table shown?</source>
+        <translation>%1 foi alterada no disco desde que foi aberta aqui (p. ex. por uma medição de ferramenta). Substituí-la pela tabela mostrada?</translation>
+    </message>
+    <message>
+        <source>Not saved: the file on disk is kept</source>
+        <translation>Não guardado: mantém-se o ficheiro do disco</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TestRunController</name>

@@ -7,6 +7,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QTableView>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include "core/base/atomic_file.h"
@@ -39,7 +40,43 @@ TableEditor::TableEditor(std::filesystem::path ncRoot, QWidget* parent)
     m_view->verticalHeader()->setDefaultSectionSize(36);
     m_view->setSelectionBehavior(QAbstractItemView::SelectItems);
     layout->addWidget(m_view, 1);
+    m_diskCheck = new QTimer(this);
+    m_diskCheck->setInterval(1000);
+    connect(m_diskCheck, &QTimer::timeout, this, [this] {
+        if (isVisible()) checkFileOnDisk();
+    });
+    m_diskCheck->start();
     retranslate();
+}
+
+std::optional<TableEditor::FileStamp> TableEditor::stampOnDisk() const {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(m_path, error);
+    if (error) return std::nullopt;
+    const auto size = std::filesystem::file_size(m_path, error);
+    if (error) return std::nullopt;
+    return FileStamp{time, size};
+}
+
+void TableEditor::checkFileOnDisk() {
+    if (m_model == nullptr || m_path.empty()) return;
+    const auto now = stampOnDisk();
+    if (!now || now == m_stamp) return;
+    if (!modified()) {
+        const std::filesystem::path path = m_path;
+        if (open(path)) {
+            emit message(Severity::Note,
+                         tr("%1 was changed on disk (e.g. by a tool measurement): reloaded")
+                             .arg(QString::fromStdString(path.filename().string())));
+        }
+        return;
+    }
+    if (m_warnedChanged) return;
+    m_warnedChanged = true;
+    emit message(Severity::Warning,
+                 tr("%1 was changed on disk while you edit it: saving would overwrite those "
+                    "changes")
+                     .arg(QString::fromStdString(m_path.filename().string())));
 }
 
 void TableEditor::retranslate() {
@@ -89,6 +126,8 @@ bool TableEditor::open(const std::filesystem::path& path) {
     m_model = model;
     m_view->resizeColumnsToContents();
     m_title->setText(QString::fromStdString(path.filename().string()));
+    m_stamp = stampOnDisk();
+    m_warnedChanged = false;
     for (const Diagnostic& d : validate())
         reportDiagnostic(d);
     return true;
@@ -115,12 +154,27 @@ bool TableEditor::save() {
         emit message(Severity::Error, tr("Not saved: correct the table first"));
         return false;
     }
+    if (const auto now = stampOnDisk(); now && m_stamp && now != m_stamp) {
+        const QString question =
+            tr("%1 was changed on disk since it was opened here (e.g. by a tool measurement). "
+               "Overwrite it with the table shown?")
+                .arg(QString::fromStdString(m_path.filename().string()));
+        const bool confirmed =
+            m_confirm ? m_confirm(question)
+                      : QMessageBox::question(this, tr("Table"), question) == QMessageBox::Yes;
+        if (!confirmed) {
+            emit message(Severity::Warning, tr("Not saved: the file on disk is kept"));
+            return false;
+        }
+    }
     // Through the NC root: never outside it, never through a link (docs/files.md).
     if (const MaybeError error = program::NcRoot(m_ncRoot).replace(m_path, m_model->content())) {
         reportDiagnostic(*error);
         return false;
     }
     m_model->setSaved();
+    m_stamp = stampOnDisk();
+    m_warnedChanged = false;
     emit message(Severity::Note,
                  tr("Saved %1").arg(QString::fromStdString(m_path.filename().string())));
     return true;

@@ -4,6 +4,7 @@
 #include <QWidget>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "core/base/diagnostic.h"
@@ -11,6 +12,7 @@
 class QLineEdit;
 class QLabel;
 class QTableView;
+class QTimer;
 
 namespace kerf::ui {
 
@@ -31,7 +33,12 @@ public:
     ~TableEditor() override;
 
     bool open(const std::filesystem::path& path);
+    // Refuses (unless confirmed) to overwrite a file that changed on disk since it was opened or
+    // saved here: a program run may have written measured tools into TOOL.T meanwhile.
     bool save();
+    // The file changed on disk: reloaded when nothing is edited, else a warning (once). Called
+    // every second while the editor is shown; tests call it directly.
+    void checkFileOnDisk();
     const std::filesystem::path& path() const { return m_path; }
     bool modified() const;
 
@@ -61,6 +68,13 @@ private:
     void retranslate();
     void reportDiagnostic(const Diagnostic& d);
     EditableTableModel* loadModel(const std::filesystem::path& path);
+    // What identifies the file's version on disk: its modification time and size.
+    struct FileStamp {
+        std::filesystem::file_time_type time;
+        std::uintmax_t size = 0;
+        bool operator==(const FileStamp&) const = default;
+    };
+    std::optional<FileStamp> stampOnDisk() const;
 
     std::filesystem::path m_ncRoot;
     std::filesystem::path m_path;
@@ -70,6 +84,9 @@ private:
     QLabel* m_title = nullptr;
     QLineEdit* m_search = nullptr;
     std::function<bool(const QString&)> m_confirm;
+    std::optional<FileStamp> m_stamp;  // the file as opened or saved here
+    bool m_warnedChanged = false;
+    QTimer* m_diskCheck = nullptr;
 };
 
 }  // namespace kerf::ui

@@ -2,6 +2,7 @@
 
 #include <QSignalSpy>
 #include <QTableView>
+#include <chrono>
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,43 @@ TEST(TableEditor, NumericCellsRefuseTextAndSavedValuesReadBack) {
     ASSERT_NE(reloaded->byNumber(0), nullptr);
     EXPECT_DOUBLE_EQ(reloaded->byNumber(0)->length, 12.5);
     EXPECT_EQ(reloaded->byNumber(0)->name, "MILL_D10");
+}
+
+// A program run's tool measurement rewrites TOOL.T while the table is open: an unedited table
+// reloads; edits are not saved over the new file unless the operator says so.
+TEST(TableEditor, AFileChangedOnDiskIsReloadedOrNotOverwrittenUnasked) {
+    test::testApp();
+    const fs::path file = writeToolTable("hmi_tables_changed_on_disk");
+    TableEditor editor(file.parent_path());
+    ASSERT_TRUE(editor.open(file));
+    const auto writeLengthElsewhere = [&](const char* length) {
+        TableEditor other(file.parent_path());
+        ASSERT_TRUE(other.open(file));
+        ASSERT_TRUE(other.model()->setData(cellOf(*other.model(), 0, "L"), length, Qt::EditRole));
+        ASSERT_TRUE(other.save());
+        // A later time than any the editor saw, whatever the file system's clock resolution.
+        fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
+    };
+    writeLengthElsewhere("33");
+    editor.checkFileOnDisk();
+    EXPECT_EQ(editor.model()->data(cellOf(*editor.model(), 0, "L"), Qt::DisplayRole).toDouble(),
+              33.0);
+
+    ASSERT_TRUE(editor.model()->setData(cellOf(*editor.model(), 0, "NAME"), "MINE", Qt::EditRole));
+    writeLengthElsewhere("44");
+    QSignalSpy messages(&editor, &TableEditor::message);
+    editor.checkFileOnDisk();
+    ASSERT_EQ(messages.count(), 1);
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Warning);
+    EXPECT_TRUE(editor.modified()) << "the edits are kept";
+    bool overwrite = false;
+    editor.setConfirm([&overwrite](const QString&) { return overwrite; });
+    EXPECT_FALSE(editor.save());
+    EXPECT_DOUBLE_EQ(tables::ToolTable::load(file)->byNumber(0)->length, 44.0);
+    overwrite = true;
+    EXPECT_TRUE(editor.save());
+    EXPECT_EQ(tables::ToolTable::load(file)->byNumber(0)->name, "MINE");
+    EXPECT_DOUBLE_EQ(tables::ToolTable::load(file)->byNumber(0)->length, 33.0);
 }
 
 TEST(TableEditor, DuplicateToolNumberBlocksTheSave) {
