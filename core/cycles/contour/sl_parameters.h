@@ -2,8 +2,8 @@
 
 #include "core/cycles/common_parameters.h"
 
-// Parameters shared by the SL cycles 20-24 (spec §6), with the ranges of the TNC 320 manual.
-// Texts already used elsewhere are reused so that they stay translated.
+// Parameters shared by the SL cycles 20-25 and 276 (spec §6), with the ranges of the TNC 320
+// manual. Texts already used elsewhere are reused so that they stay translated.
 namespace kerf::cycles::contour {
 
 using common::kFeed;
@@ -11,6 +11,41 @@ using common::kLength;
 
 inline constexpr uint8_t kFeedWords = kFeedAuto | kFeedPerRev | kFeedPerTooth;
 
+inline constexpr ParameterDescriptor kContourDepth{
+    .q = 1,
+    .description = KERF_TR_NOOP("Depth: workpiece surface to bottom (sign = direction)"),
+    .unit = Unit::Millimetre,
+    .min = -kLength,
+    .max = kLength,
+    .defaultValue = -20.0};
+inline constexpr ParameterDescriptor kSideAllowance{
+    .q = 3,
+    .description = KERF_TR_NOOP("Finishing allowance for the side"),
+    .unit = Unit::Millimetre,
+    .min = -kLength,
+    .max = kLength,
+    .defaultValue = 0.0};
+inline constexpr ParameterDescriptor kSurfaceCoordinate{
+    .q = 5,
+    .description = KERF_TR_NOOP("Workpiece surface coordinate"),
+    .unit = Unit::Millimetre,
+    .min = -kLength,
+    .max = kLength,
+    .defaultValue = 0.0};
+inline constexpr ParameterDescriptor kClearanceHeight{
+    .q = 7,
+    .description = KERF_TR_NOOP("Clearance height (absolute)"),
+    .unit = Unit::Millimetre,
+    .min = -kLength,
+    .max = kLength,
+    .defaultValue = 50.0};
+inline constexpr ParameterDescriptor kClimbOrUpCut{
+    .q = 15,
+    .description = KERF_TR_NOOP("Climb or up-cut (+1 climb, -1 up-cut, 0 alternating)"),
+    .min = -1.0,
+    .max = 1.0,
+    .defaultValue = 1.0,
+    .integer = true};
 inline constexpr ParameterDescriptor kPlungingDepth{
     .q = 10,
     .description = KERF_TR_NOOP("Plunging depth per infeed"),
