@@ -92,28 +92,15 @@ std::optional<CycleError> run430(const CycleValues& v, const ProbeData& probe,
     results.toolCorrection =
         ToolCorrection{.delta = 0.5 * (diameter - v.number(262)), .breakageOnly = true};
     if (v.integer(281) != 0) {
-        results.protocol = std::vector<std::string>{
-            "Nominal values:",
-            logLine("  centre main axis", nominal.x()),
-            logLine("  centre secondary axis", nominal.y()),
-            logLine("  diameter", v.number(262)),
-            "Given limits:",
-            logLine("  max. centre main axis", nominal.x() + v.number(279)),
-            logLine("  min. centre main axis", nominal.x() - v.number(279)),
-            logLine("  max. centre secondary", nominal.y() + v.number(280)),
-            logLine("  min. centre secondary", nominal.y() - v.number(280)),
-            logLine("  max. diameter", v.number(288)),
-            logLine("  min. diameter", v.number(289)),
-            "Actual values:",
-            logLine("  centre main axis", circle->centre.x()),
-            logLine("  centre secondary axis", circle->centre.y()),
-            logLine("  diameter", diameter),
-            "Deviations:",
-            logLine("  centre main axis", deviation.x()),
-            logLine("  centre secondary axis", deviation.y()),
-            logLine("  diameter", diameter - v.number(262)),
-            "Further measuring results:",
-            logLine("  measuring height", v.number(261))};
+        results.protocol = circleLog({.nominalCentre = nominal,
+                                      .nominalDiameter = v.number(262),
+                                      .centreToleranceMain = v.number(279),
+                                      .centreToleranceSecondary = v.number(280),
+                                      .maxDiameter = v.number(288),
+                                      .minDiameter = v.number(289),
+                                      .actualCentre = circle->centre,
+                                      .actualDiameter = diameter,
+                                      .measuringHeight = v.number(261)});
         results.protocolStop = v.integer(281) == 2;
     }
     return std::nullopt;

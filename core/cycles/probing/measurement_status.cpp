@@ -40,4 +40,30 @@ std::string logLine(const std::string& label, double value) {
     return line + number;
 }
 
+std::vector<std::string> circleLog(const CircleLog& log) {
+    const Vec2 deviation = log.actualCentre - log.nominalCentre;
+    return {
+        "Nominal values:",
+        logLine("  centre main axis", log.nominalCentre.x()),
+        logLine("  centre secondary axis", log.nominalCentre.y()),
+        logLine("  diameter", log.nominalDiameter),
+        "Given limits:",
+        logLine("  max. centre main axis", log.nominalCentre.x() + log.centreToleranceMain),
+        logLine("  min. centre main axis", log.nominalCentre.x() - log.centreToleranceMain),
+        logLine("  max. centre secondary", log.nominalCentre.y() + log.centreToleranceSecondary),
+        logLine("  min. centre secondary", log.nominalCentre.y() - log.centreToleranceSecondary),
+        logLine("  max. diameter", log.maxDiameter),
+        logLine("  min. diameter", log.minDiameter),
+        "Actual values:",
+        logLine("  centre main axis", log.actualCentre.x()),
+        logLine("  centre secondary axis", log.actualCentre.y()),
+        logLine("  diameter", log.actualDiameter),
+        "Deviations:",
+        logLine("  centre main axis", deviation.x()),
+        logLine("  centre secondary axis", deviation.y()),
+        logLine("  diameter", log.actualDiameter - log.nominalDiameter),
+        "Further measuring results:",
+        logLine("  measuring height", log.measuringHeight)};
+}
+
 }  // namespace kerf::cycles::probing

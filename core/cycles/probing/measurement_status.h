@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/geometry/axes.h"
 
 namespace kerf::cycles::probing {
 
@@ -31,5 +32,20 @@ private:
 
 // "label   value" with 4 decimals, the line format of the measuring logs (spec 1.15).
 std::string logLine(const std::string& label, double value);
+
+// The measuring log of a circle (421, 422, 430): nominal centre and diameter with the limits,
+// actual values, deviations, and the measuring height (spec 1.15).
+struct CircleLog {
+    Vec2 nominalCentre;
+    double nominalDiameter = 0.0;
+    double centreToleranceMain = 0.0;       // Q279
+    double centreToleranceSecondary = 0.0;  // Q280
+    double maxDiameter = 0.0;
+    double minDiameter = 0.0;
+    Vec2 actualCentre;
+    double actualDiameter = 0.0;
+    double measuringHeight = 0.0;  // Q261
+};
+std::vector<std::string> circleLog(const CircleLog& log);
 
 }  // namespace kerf::cycles::probing
