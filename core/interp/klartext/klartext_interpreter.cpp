@@ -96,6 +96,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
     program->machineAxes = m_machineAxes;
     program->tools = m_settings.tools;
     if (isIsoProgram(path, origin)) program->syntax = &m_settings.isoSyntax;
+    program->mainProgram = origin == Origin::Main;
     if (check) checkProgram(*program);
     m_programs.push_back(std::move(program));
     return m_programs.back().get();
@@ -136,6 +137,7 @@ bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
     program->machineAxes = m_machineAxes;
     program->tools = m_settings.tools;
     if (isIsoProgram(path, Origin::Main)) program->syntax = &m_settings.isoSyntax;
+    program->mainProgram = true;
     checkProgram(*program);
     DiagnosticList found = program->diagnostics;
     checkCalledPrograms(*program, found);

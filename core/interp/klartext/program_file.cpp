@@ -3,6 +3,7 @@
 #include <chrono>
 #include <set>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "core/cycles/cycle_registry.h"
@@ -96,6 +97,23 @@ void checkProgram(ProgramFile& program) {
         appendDiagnostic(out, std::move(d));
     };
 
+    // A feed move before any feed is programmed stops the run ("feed rate is missing"). Followed
+    // from the main program's start in file order while that is the order of execution: until
+    // the first label, call or jump.
+    bool followFeed = program.mainProgram;
+    bool feedKnown = false;
+    auto feedMove = [&](const FeedWord& feed) {
+        if (!followFeed) return;
+        if (feed.kind == FeedWord::Kind::Max) return;  // FMAX needs none and sets none
+        if (feed.kind != FeedWord::Kind::None) {
+            feedKnown = true;  // F words and FAUTO set the feed
+            return;
+        }
+        if (feedKnown) return;
+        diag(Severity::Error, "feed", line.firstLine, 1, KERF_TR_NOOP("feed rate is missing"));
+        followFeed = false;  // one report; the run stops here
+    };
+
     constexpr size_t kWindow = 16u << 20;
     while (reader.next(line)) {
         if (program.followExecution) {
@@ -132,6 +150,26 @@ void checkProgram(ProgramFile& program) {
                      KERF_TR_NOOP("this machine has no axis {1}"),
                      {std::string(1, axisLetter(*missing))});
             }
+            std::visit(
+                [&](const auto& b) {
+                    using T = std::decay_t<decltype(b)>;
+                    if constexpr (std::is_same_v<T, Label> || std::is_same_v<T, CallLabel> ||
+                                  std::is_same_v<T, CallPgm> ||
+                                  std::is_same_v<T, ConditionalJump>) {
+                        followFeed = false;
+                    } else if constexpr (std::is_same_v<T, RoundBlock> ||
+                                         std::is_same_v<T, ChamferBlock>) {
+                        if (b.feed.kind != FeedWord::Kind::None) feedMove(b.feed);
+                    } else if constexpr (std::is_same_v<T, PlaneBlock>) {
+                        if (b.feed.kind != FeedWord::Kind::None) feedMove(b.feed);
+                    } else if constexpr (std::is_same_v<T, CycleCall> ||
+                                         std::is_same_v<T, MFunctionBlock>) {
+                        if (b.words.feed.kind != FeedWord::Kind::None) feedMove(b.words.feed);
+                    } else if constexpr (requires { b.words.feed; }) {
+                        feedMove(b.words.feed);  // L, C, CR, CT, LP, CP, CTP, APPR/DEP, FK
+                    }
+                },
+                s);
             if (const auto* begin = std::get_if<BeginPgm>(&s)) {
                 if (!firstBlock || sawBegin) {
                     diag(Severity::Error, "structure", line.firstLine, 1,

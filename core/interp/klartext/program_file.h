@@ -52,6 +52,8 @@ struct ProgramFile {
     // it run freely (execution waits for it).
     std::atomic<size_t> executionOffset{SIZE_MAX};
     bool followExecution = false;
+    // The program the run starts with (not one it calls): only its flow is known from its start.
+    bool mainProgram = false;
 
     const LabelPosition* findLabel(int number) const;
     const LabelPosition* findLabel(const std::string& name) const;

@@ -80,5 +80,29 @@ TEST_F(ProgramLoaderTest, TheFileNameDecidesTheDialectAndAnUnreadableTableStopsT
     EXPECT_NE(broken.setupDiagnostics.front().file.find("TOOL.T"), std::string::npos);
 }
 
+// kerf run stops at a feed move before any feed is programmed: the check says so at that block.
+// Where the order of execution is not the file's (a subprogram sets the feed), it stays silent.
+TEST_F(ProgramLoaderTest, AFeedMoveBeforeAnyFeedFailsTheCheck) {
+    const auto [missing, missingText] =
+        loadBoth("F.H",
+                 "0 BEGIN PGM F MM\n1 TOOL CALL 1 Z S1000\n2 L Z+5 R0 FMAX\n"
+                 "3 L M3\n4 L X+10 Y+0\n5 END PGM F MM\n");
+    for (const LoadedProgram* loaded : {&missing, &missingText}) {
+        EXPECT_FALSE(loaded->ready);
+        const DiagnosticList all = loaded->diagnostics();
+        ASSERT_EQ(all.size(), 1u);
+        EXPECT_EQ(all[0].line, 5u);
+        EXPECT_EQ(all[0].message(), "feed rate is missing");
+    }
+    const auto [given, givenText] = loadBoth(
+        "G.H", "0 BEGIN PGM G MM\n1 TOOL CALL 1 Z S1000\n2 L X+10 F200\n3 L Y+5\n4 END PGM G MM\n");
+    EXPECT_TRUE(given.ready);
+    const auto [called, calledText] =
+        loadBoth("S.H",
+                 "0 BEGIN PGM S MM\n1 TOOL CALL 1 Z S1000\n2 CALL LBL 1\n3 L X+10\n"
+                 "4 M30\n5 LBL 1\n6 L Z+5 F100\n7 LBL 0\n8 END PGM S MM\n");
+    EXPECT_TRUE(called.ready) << called.diagnostics().front().message();
+}
+
 }  // namespace
 }  // namespace kerf::task

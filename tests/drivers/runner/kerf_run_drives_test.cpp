@@ -188,7 +188,7 @@ TEST_F(KerfRunDrives, RefusedBlockStopsTheRunBeforeAnythingMoves) {
     std::ofstream(m_dir / "refused.H") << "0 BEGIN PGM REFUSED MM\n"
                                           "1 L X+10 Y+5 Z+2 R0 FMAX\n"
                                           "2 L Z+500 FMAX\n"
-                                          "3 L X+20\n"
+                                          "3 L X+20 F500\n"
                                           "4 END PGM REFUSED MM\n";
     KerfResult r = run("--drives can-sim", "refused.H");
     EXPECT_EQ(r.exitCode, 1);
