@@ -17,15 +17,16 @@ namespace kerf::ui {
 ProgramEntry::ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent, program::Dialect dialect)
     : m_editor(editor), m_parent(dialogParent), m_dialect(dialect) {}
 
+bool ProgramEntry::explain(const QString& why) {
+    QMessageBox::information(m_parent, QCoreApplication::translate("kerf", "Programming"), why);
+    return false;
+}
+
 bool ProgramEntry::write(const QStringList& blocks, const LineRange* replace) {
     QStringList written = blocks;
     if (m_dialect == program::Dialect::TncIso) {
         const IsoResult iso = isoCycleBlock(blocks);
-        if (!iso.error.isEmpty()) {
-            QMessageBox::information(m_parent, QCoreApplication::translate("kerf", "Programming"),
-                                     iso.error);
-            return false;
-        }
+        if (!iso.error.isEmpty()) return explain(iso.error);
         written = QStringList{iso.block};
     }
     if (replace)
@@ -41,11 +42,7 @@ bool ProgramEntry::writePath(PathFunction function, const QStringList& values) {
         return true;
     }
     const IsoResult iso = isoPathBlock(function, values);
-    if (!iso.error.isEmpty()) {
-        QMessageBox::information(m_parent, QCoreApplication::translate("kerf", "Programming"),
-                                 iso.error);
-        return false;
-    }
+    if (!iso.error.isEmpty()) return explain(iso.error);
     insertBlocks(m_editor, {iso.block}, m_dialect);
     return true;
 }

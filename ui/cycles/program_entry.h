@@ -4,6 +4,7 @@
 #include "ui/cycles/path_function.h"
 
 class QPlainTextEdit;
+class QString;
 class QWidget;
 
 namespace kerf::ui {
@@ -34,6 +35,8 @@ private:
     // Writes the Klartext `blocks` (or their ISO form) at the cursor, or into `replace`.
     bool write(const QStringList& blocks, const LineRange* replace = nullptr);
     bool writePath(PathFunction function, const QStringList& values);
+    // Tells the operator why nothing was written; false.
+    bool explain(const QString& why);
 
     QPlainTextEdit& m_editor;
     QWidget* m_parent;
