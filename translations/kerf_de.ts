@@ -7545,6 +7545,14 @@ zyklen</translation>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>FK-Programmierung arbeitet nur in der XY-Ebene (Werkzeugachse Z)</translation>
     </message>
+    <message>
+        <source>P{1} expected after G18</source>
+        <translation>P{1} nach G18 erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
+        <translation>&apos;{1}&apos; ist eine Ausgabe dieses Laufs und kann nicht gelesen werden</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

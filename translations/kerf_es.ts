@@ -7545,6 +7545,14 @@ fijos</translation>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>La programación FK solo funciona en el plano XY (eje de herramienta Z)</translation>
     </message>
+    <message>
+        <source>P{1} expected after G18</source>
+        <translation>se esperaba P{1} después de G18</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
+        <translation>&apos;{1}&apos; es una salida de esta ejecución y no se puede leer</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

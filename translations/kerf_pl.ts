@@ -7548,6 +7548,14 @@ stałe</translation>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>Programowanie FK działa tylko w płaszczyźnie XY (oś narzędzia Z)</translation>
     </message>
+    <message>
+        <source>P{1} expected after G18</source>
+        <translation>oczekiwano P{1} po G18</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
+        <translation>&apos;{1}&apos; jest wyjściem tego przebiegu i nie może być odczytany</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -7545,6 +7545,14 @@ fixos</translation>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>A programação FK só funciona no plano XY (eixo da ferramenta Z)</translation>
     </message>
+    <message>
+        <source>P{1} expected after G18</source>
+        <translation>esperado P{1} após G18</translation>
+    </message>
+    <message>
+        <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
+        <translation>&apos;{1}&apos; é uma saída desta execução e não pode ser lido</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

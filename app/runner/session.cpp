@@ -65,6 +65,10 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     request.path = fs::absolute(options.program);
     request.ncRoot = options.ncRoot ? fs::absolute(*options.ncRoot) : request.path.parent_path();
     request.toolTable = options.toolTable;
+    for (const auto* output : {&options.traceFile, &options.samples, &options.reportFile,
+                               &options.png, &options.canTrace}) {
+        if (*output && **output != "-") request.runOutputs.push_back(fs::absolute(**output));
+    }
     request.blockSkip = options.blockSkip;
     request.presetInMachine = origin;
     request.backgroundCheck = backgroundCheck;

@@ -70,7 +70,8 @@ Diagnostic pathError(const char* messageTemplate, const fs::path& path) {
 
 }  // namespace
 
-NcRoot::NcRoot(fs::path root) : m_root(canonicalOrNormal(root)) {}
+NcRoot::NcRoot(fs::path root, std::vector<fs::path> runOutputs)
+    : m_root(canonicalOrNormal(root)), m_runOutputs(std::move(runOutputs)) {}
 
 bool NcRoot::contains(const fs::path& path) const {
     fs::path real = withLinksResolved(path);
@@ -99,6 +100,12 @@ Expected<FileDescriptor> NcRoot::openResolved(const fs::path& finalPath, int fla
 }
 
 Expected<std::string> NcRoot::read(const fs::path& finalPath) const {
+    for (const fs::path& output : m_runOutputs) {
+        if (sameFile(finalPath, output)) {
+            return pathError(KERF_TR_NOOP("'{1}' is an output of this run and cannot be read"),
+                             finalPath);
+        }
+    }
     auto fd = openResolved(finalPath, O_RDONLY | O_NONBLOCK | O_NOCTTY);
     if (!fd) return fd.error();
     return readOpenFile(fd->get(), finalPath);

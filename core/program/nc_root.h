@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <memory>
 #include <string_view>
+#include <vector>
 
 #include "core/base/expected.h"
 #include "core/base/open_beneath.h"
@@ -22,7 +23,10 @@ namespace kerf::program {
 // atomically.
 class NcRoot {
 public:
-    explicit NcRoot(std::filesystem::path root);
+    // `runOutputs`: files the running command writes (kerf run --trace, --report ...); a program
+    // or table of that name is refused, so a program named only at run time never reads a file
+    // that the run is overwriting.
+    explicit NcRoot(std::filesystem::path root, std::vector<std::filesystem::path> runOutputs = {});
 
     const std::filesystem::path& path() const { return m_root; }
 
@@ -49,6 +53,7 @@ private:
     Expected<FileDescriptor> openResolved(const std::filesystem::path& finalPath, int flags) const;
 
     std::filesystem::path m_root;
+    std::vector<std::filesystem::path> m_runOutputs;
 };
 
 }  // namespace kerf::program

@@ -50,6 +50,7 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
     fagor::FagorSettings settings;
     settings.machine = &machine;
     settings.ncRoot = request.ncRoot;
+    settings.runOutputs = request.runOutputs;
     if (!request.ncRoot.empty()) {
         // The FAGOR tables live in the NC root (docs/fagor.md, "Tables").
         settings.toolOffsetFile = request.ncRoot / "fagor_tool_offsets.tab";
@@ -58,6 +59,13 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
     }
     settings.blockSkip = request.blockSkip ? 1 : 0;
     settings.presetInMachine = request.presetInMachine;
+    if (request.startPosition) {
+        for (size_t i = 0; i < settings.startInMachine.values.size(); ++i) {
+            settings.startInMachine.values[i] =
+                request.startPosition->values[i] + request.presetInMachine.values[i];
+        }
+        settings.startKnown = true;
+    }
     auto interpreter = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
     loaded.streamOrigin = interpreter->streamOrigin();
     loaded.ready = load(*interpreter, request,
@@ -76,8 +84,9 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     // The TT cycles write measured tools back; empty: TOOL.T of the NC root.
     if (request.toolTable) settings.toolTableFile = *request.toolTable;
     settings.ncRoot = request.ncRoot;
+    settings.runOutputs = request.runOutputs;
     settings.blockSkip = request.blockSkip;
-    settings.startPosition = request.startPosition;
+    settings.startPosition = request.startPosition.value_or(Pose{});
     settings.presetInMachine = request.presetInMachine;
     settings.remanentFile = request.remanentFile;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/base/diagnostic.h"
 #include "core/interp/interpreter.h"
@@ -26,9 +27,12 @@ struct ProgramRequest {
     std::optional<program::Dialect> dialect;
     std::filesystem::path ncRoot;  // its TOOL.T and FAGOR tables; the programs it may call
     std::optional<std::filesystem::path> toolTable;  // any file instead of the NC root's TOOL.T
+    std::vector<std::filesystem::path> runOutputs;   // files the run writes: never read as input
     std::filesystem::path remanentFile;              // where QR parameters are kept; empty: not
     bool blockSkip = false;
-    Pose startPosition{};    // where the tool tip stands, workpiece coordinates
+    // Where the tool tip stands, workpiece coordinates; unset: at the origin the program's
+    // coordinates start from (kerf run).
+    std::optional<Pose> startPosition;
     Pose presetInMachine{};  // the workpiece origin, machine coordinates (M91, FAGOR G53/G74)
     // Check alongside execution (KlartextInterpreter::CheckMode::Background); the caller must
     // then honour Interpreter::checkFailed().

@@ -479,9 +479,12 @@ void Scene::Impl::updateAxesScale() {
 }
 
 Bounds3 Scene::Impl::contentBounds() const {
+    // The blank and the cutting moves fill the picture, as on the control: the rapids from the
+    // home position (Z+400 over a 20 mm part) would shrink the part to a few pixels.
     Bounds3 bounds;
-    if (geometry) bounds.add(geometry->bounds);
     if (stock) bounds.add(stock->bounds);
+    if (data) bounds.add(data->feedBounds);
+    if (bounds.empty && geometry) bounds.add(geometry->bounds);
     return bounds;
 }
 

@@ -249,6 +249,24 @@ TEST_F(KerfFileAccess, OutputsRefuseToOverwriteWhatTheRunReads) {
     EXPECT_NE(readFile(root() / "trace.txt").find("X10"), std::string::npos);
 }
 
+// A program named only when the run reaches it (cycle 12) is not known when the outputs are
+// checked; the run refuses to read a file it is writing instead of running it.
+TEST_F(KerfFileAccess, AProgramCalledDuringTheRunUnderAnOutputsNameIsRefused) {
+    writeFile(root() / "main.H",
+              "0 BEGIN PGM MAIN MM\n1 CYCL DEF 12.0 PGM CALL\n2 CYCL DEF 12.1 PGM SUB.H\n"
+              "3 L X+0 Y+0 Z+0 R0 FMAX\n4 CYCL CALL\n5 END PGM MAIN MM\n");
+    const std::string sub = "0 BEGIN PGM SUB MM\n1 L X+7 R0 FMAX\n2 END PGM SUB MM\n";
+    writeFile(root() / "SUB.H", sub);
+    Result refused = kerf("run root/main.H --report root/SUB.H");
+    EXPECT_EQ(refused.exitCode, 1) << refused.errors;
+    EXPECT_NE(refused.errors.find("is an output of this run"), std::string::npos) << refused.errors;
+    EXPECT_EQ(refused.errors.find("X+7"), std::string::npos);
+    writeFile(root() / "SUB.H", sub);
+    Result ok = kerf("run root/main.H --report root/report.json");
+    EXPECT_EQ(ok.exitCode, 0) << ok.errors;
+    EXPECT_NE(readFile(root() / "report.json").find("7"), std::string::npos);
+}
+
 TEST_F(KerfFileAccess, ProgramTruncatedWhileItRunsDoesNotCrash) {
     writeFile(root() / "loop.H",
               "0 BEGIN PGM L MM\n1 LBL 1\n2 L IX+0 FMAX\n"

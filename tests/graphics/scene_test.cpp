@@ -75,6 +75,28 @@ CanonBuilder square() {
     return b;
 }
 
+// The picture fits the cutting moves (and the blank), not the rapid from the home position far
+// above the part: after homing the part would be a few pixels on screen.
+TEST(Scene, TheFitLeavesOutRapidsAwayFromThePart) {
+    CanonBuilder b;
+    b.rapid(0, 0, 400).rapid(0, 0, 2).line(0, 0, 0);
+    b.line(100, 0, 0).line(100, 100, 0).line(0, 100, 0).line(0, 0, 0).rapid(0, 0, 400);
+    Built built = build(b);
+    Scene scene;
+    scene.setToolpath(built.data, built.geometry);
+    const Bounds3 box = scene.contentBounds();
+    EXPECT_DOUBLE_EQ(box.max.z(), 2.0);  // the first feed move starts at Z+2
+    EXPECT_DOUBLE_EQ(box.min.z(), 0.0);
+    EXPECT_DOUBLE_EQ(box.max.x(), 100.0);
+    EXPECT_DOUBLE_EQ(box.max.y(), 100.0);
+    // Rapids only (nothing is cut): they are the picture.
+    CanonBuilder rapids;
+    rapids.rapid(0, 0, 400).rapid(50, 0, 10);
+    Built onlyRapids = build(rapids);
+    scene.setToolpath(onlyRapids.data, onlyRapids.geometry);
+    EXPECT_DOUBLE_EQ(scene.contentBounds().max.z(), 400.0);
+}
+
 TEST(Scene, TopViewPicksEachEdgeOfASquare) {
     ASSERT_FALSE(checkDisplay().has_value());
     Scene scene;
@@ -142,8 +164,9 @@ char colourNear(const std::vector<uint8_t>& rgb, int width, int x, int y) {
 }
 
 TEST(SceneImage, RapidFeedAndArcMovesHaveTheirOwnColours) {
-    // Top view, 400 x 400: the square 0..100 fills 400 / 1.08 px, 3.704 px per mm about (200,
-    // 200). Bottom edge a rapid, right edge a feed, a circle of radius 25 about the centre.
+    // Top view, 400 x 400: the feed moves (X 25..100, Y 0..100; the fit leaves the rapids out)
+    // fill 400 / 1.08 px in Y, 3.704 px per mm about (62.5, 50). Bottom edge a rapid, right edge
+    // a feed, a circle of radius 25 about (50, 50).
     CanonBuilder b;
     b.rapid(0, 0, 0)
         .rapid(100, 0, 0)
@@ -161,12 +184,15 @@ TEST(SceneImage, RapidFeedAndArcMovesHaveTheirOwnColours) {
     const auto rgb = renderer.renderRgb(scene);
     const double pxPerMm = 200.0 / 54.0;
     auto px = [&](double mm) {
-        return static_cast<int>(std::lround(200.0 + (mm - 50.0) * pxPerMm));
+        return static_cast<int>(std::lround(200.0 + (mm - 62.5) * pxPerMm));
     };
-    EXPECT_EQ(colourNear(rgb, 400, px(50), px(100)), 'r');       // bottom edge, Y = 0 (y down)
-    EXPECT_EQ(colourNear(rgb, 400, px(100), px(50) - 60), 'c');  // right edge
-    EXPECT_EQ(colourNear(rgb, 400, px(25), px(50)), 'g');        // left of the circle
-    EXPECT_EQ(colourNear(rgb, 400, px(50), px(50) + 30), '-');   // inside the circle: nothing
+    auto py = [&](double mm) {
+        return static_cast<int>(std::lround(200.0 - (mm - 50.0) * pxPerMm));
+    };
+    EXPECT_EQ(colourNear(rgb, 400, px(50), py(0)), 'r');         // bottom edge, Y = 0 (y down)
+    EXPECT_EQ(colourNear(rgb, 400, px(100), py(50) - 60), 'c');  // right edge
+    EXPECT_EQ(colourNear(rgb, 400, px(25), py(50)), 'g');        // left of the circle
+    EXPECT_EQ(colourNear(rgb, 400, px(50), py(50) + 30), '-');   // inside the circle: nothing
 }
 
 TEST(Scene, HighlightsTheSegmentsOfABlock) {

@@ -94,10 +94,10 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     request.text = program.toStdString();
     request.path = path;
     request.ncRoot = m_ncRoot;
-    request.startPosition.values = m_motion->world().position.values;
+    m_programStart.values = m_motion->world().position.values;
+    request.startPosition = m_programStart;
     request.presetInMachine = presetInMachine();
     m_programName = task::programName(path);
-    m_programStart = request.startPosition;
     return start(task::loadProgram(m_machine, request), startLine);
 }
 
@@ -107,7 +107,8 @@ bool MachineSession::executeMdi(const QString& block) {
     task::ProgramRequest request;
     request.text = task::mdiProgram(m_machine, block.trimmed().toStdString());
     request.ncRoot = m_ncRoot;
-    request.startPosition.values = m_motion->world().position.values;
+    request.startPosition = Pose{};
+    request.startPosition->values = m_motion->world().position.values;
     request.presetInMachine = presetInMachine();
     m_programName.clear();
     if (!start(task::loadProgram(m_machine, request), std::nullopt)) return false;

@@ -37,7 +37,8 @@ Pose sum(const Pose& a, const Pose& b) {
 FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettings settings)
     : m_sources(sources),
       m_settings(std::move(settings)),
-      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot),
+      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot,
+             m_settings.runOutputs),
       m_parser(this),
       m_runner(this),
       m_compensation(m_output),
@@ -58,6 +59,10 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
         if (m_zeroOffsets) m_startOffset = sum(m_startOffset, m_zeroOffsets->plcOffset());
     }
     m_offset = m_startOffset;
+    if (m_settings.startKnown) {
+        for (size_t i = 0; i < m_position.values.size(); ++i)
+            m_position.values[i] = m_settings.startInMachine.values[i] - m_startOffset.values[i];
+    }
     m_output.setZones(&m_zones);
     m_output.setMachineOffset(m_startOffset);
     m_compensation.setCompMode(m_settings.compMode);

@@ -55,7 +55,12 @@ bool FagorInterpreter::setSpindleSpeed(const IsoBlock& iso) {
             fail("spindle", KERF_TR_NOOP("G96 needs S: no cutting speed was programmed before"));
             return false;
         }
-        if (m_spindle.gear == 0 && !m_settings.autoGear) {
+        // The range may be selected in the G96 block itself (its M functions run after S).
+        bool gearInBlock = false;
+        for (uint8_t i = 0; i < iso.mCount; ++i)
+            gearInBlock =
+                gearInBlock || (iso.m[i].number.value >= 41 && iso.m[i].number.value <= 44);
+        if (m_spindle.gear == 0 && !gearInBlock && !m_settings.autoGear) {
             fail("spindle", KERF_TR_NOOP("G96 needs a spindle gear range (M41-M44) first"));
             return false;
         }

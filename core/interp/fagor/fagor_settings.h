@@ -16,14 +16,19 @@ namespace kerf::fagor {
 // defaults Kerf uses (docs/fagor.md, "Machine parameters"), and the files of the run.
 struct FagorSettings {
     const machine::MachineConfig* machine = nullptr;  // required
-    std::filesystem::path ncRoot;          // EXEC, OPEN, CALL into other programs stay inside it
-    std::filesystem::path toolOffsetFile;  // empty: no table (every offset is zero)
-    std::filesystem::path zeroOffsetFile;  // empty: no table
-    std::filesystem::path toolFile;        // empty: tool n uses offset n
-    uint8_t blockSkip = 0;                 // PLC marks BLKSKIP1-3 (bit 0: '/' and '/1')
+    std::filesystem::path ncRoot;  // EXEC, OPEN, CALL into other programs stay inside it
+    std::vector<std::filesystem::path> runOutputs;  // files the run writes: never read
+    std::filesystem::path toolOffsetFile;           // empty: no table (every offset is zero)
+    std::filesystem::path zeroOffsetFile;           // empty: no table
+    std::filesystem::path toolFile;                 // empty: tool n uses offset n
+    uint8_t blockSkip = 0;                          // PLC marks BLKSKIP1-3 (bit 0: '/' and '/1')
     // The machine's workpiece origin (machine file presets, kerf run --work-offset), machine
     // coordinates: the zero offset in effect when the table selects none (like G92).
     Pose presetInMachine{};
+    // Where the tool stands when the program starts, machine coordinates (the panel knows it;
+    // kerf run starts at the program's origin): the first move is drawn from there.
+    Pose startInMachine{};
+    bool startKnown = false;
 
     // General machine parameters.
     bool imoveLinear = false;                   // IMOVE: G01 (true) or G00 at reset

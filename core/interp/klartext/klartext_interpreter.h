@@ -44,11 +44,12 @@ struct KlartextSettings {
     const tables::ToolTable* tools = nullptr;
     // Where the TT cycles write `tools` back (inside the NC root); empty: TOOL.T of the NC root.
     std::filesystem::path toolTableFile;
-    std::filesystem::path ncRoot;        // CALL PGM, FN 16 and FN 26 stay inside it
-    std::filesystem::path remanentFile;  // QR parameters; empty: not kept between runs
-    Pose presetInMachine{};              // the active preset (workpiece datum), machine coords
-    Pose startPosition{};                // tool tip at the start, workpiece coordinates
-    bool blockSkip = false;              // skip blocks marked with '/'
+    std::filesystem::path ncRoot;                   // CALL PGM, FN 16 and FN 26 stay inside it
+    std::vector<std::filesystem::path> runOutputs;  // files the run writes: never read
+    std::filesystem::path remanentFile;             // QR parameters; empty: not kept between runs
+    Pose presetInMachine{};  // the active preset (workpiece datum), machine coords
+    Pose startPosition{};    // tool tip at the start, workpiece coordinates
+    bool blockSkip = false;  // skip blocks marked with '/'
     // Cycle 247 reads presets from this table (PRESET.PR in the NC root when not given).
     const tables::PresetTable* presets = nullptr;
     // Machine parameter displayDepthErr: a positive cycle depth is an error.

@@ -102,9 +102,16 @@ void checkProgram(ProgramFile& program) {
     // the first label, call or jump.
     bool followFeed = program.mainProgram;
     bool feedKnown = false;
+    bool toolCallFeedKnown = false;  // FAUTO takes the feed of a TOOL CALL
     auto feedMove = [&](const FeedWord& feed) {
         if (!followFeed) return;
         if (feed.kind == FeedWord::Kind::Max) return;  // FMAX needs none and sets none
+        if (feed.kind == FeedWord::Kind::Auto && !toolCallFeedKnown) {
+            diag(Severity::Error, "feed", line.firstLine, 1,
+                 KERF_TR_NOOP("FAUTO: the TOOL CALL block gave no feed rate F"));
+            followFeed = false;
+            return;
+        }
         if (feed.kind != FeedWord::Kind::None) {
             feedKnown = true;  // F words and FAUTO set the feed
             return;
@@ -157,6 +164,8 @@ void checkProgram(ProgramFile& program) {
                                   std::is_same_v<T, CallPgm> ||
                                   std::is_same_v<T, ConditionalJump>) {
                         followFeed = false;
+                    } else if constexpr (std::is_same_v<T, ToolCall>) {
+                        if (b.feed) toolCallFeedKnown = true;
                     } else if constexpr (std::is_same_v<T, RoundBlock> ||
                                          std::is_same_v<T, ChamferBlock>) {
                         if (b.feed.kind != FeedWord::Kind::None) feedMove(b.feed);

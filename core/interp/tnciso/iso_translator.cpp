@@ -371,6 +371,9 @@ bool IsoTranslator::translateWords(Context& c) {
                 if (const IsoWord* name = c.take("\"")) {
                     b.add("\"" + std::string(name->value) + "\"", name->offset,
                           name->value.size() + 2);
+                    // G98 L"NAME" as well as G98 "NAME"
+                    const IsoWord* l = c.words.find("L");
+                    if (l != nullptr && l->value.empty()) c.take("L");
                 } else if (const IsoWord* l = c.take("L")) {
                     if (l->repeat)
                         return fail(l->offset, KERF_TR_NOOP("a label has no repeat count"));
@@ -449,8 +452,13 @@ bool IsoTranslator::translateWords(Context& c) {
     if (const IsoWord* l = c.take("L")) {
         ConversationalBlock& b = c.newBlock();
         b.add("CALL LBL", l->offset, 1);
-        if (l->value.empty()) return fail(l->valueOffset, KERF_TR_NOOP("label number expected"));
-        b.add(l->value, l->valueOffset, l->value.size());
+        if (const IsoWord* name = l->value.empty() ? c.take("\"") : nullptr) {
+            b.add("\"" + std::string(name->value) + "\"", name->offset, name->value.size() + 2);
+        } else if (l->value.empty()) {
+            return fail(l->valueOffset, KERF_TR_NOOP("label number expected"));
+        } else {
+            b.add(l->value, l->valueOffset, l->value.size());
+        }
         if (l->repeat && *l->repeat > 0) b.add("REP " + std::to_string(*l->repeat), c.end(*l), 0);
         return true;
     }
@@ -472,6 +480,9 @@ bool IsoTranslator::translateWords(Context& c) {
         }
         return true;
     }
+    // The seed's ISO code of cycle 18 is G18, also the plane ZX: with its parameters P01/P02
+    // and neither T nor G30 it is the cycle.
+    if (plane == 18 && c.words.hasLetter('P')) return translateThreadCutting(c);
     if (plane) {
         return fail(c.words.findG(*plane)->offset,
                     KERF_TR_NOOP("G17/G18/G19 belong to a tool call (T) or a blank (G30)"));

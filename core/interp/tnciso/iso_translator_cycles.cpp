@@ -184,4 +184,23 @@ bool IsoTranslator::translateOldCycle(Context& c, const IsoWord& g, bool& handle
     }
 }
 
+// G18 P01 depth P02 pitch: cycle 18 THREAD CUTTING (its ISO code is the plane's, G18).
+bool IsoTranslator::translateThreadCutting(Context& c) {
+    const IsoWord& g = *c.words.findG(18);
+    c.newBlock().add("CYCL DEF 18.0 THREAD CUTTING", g.offset, 3);
+    size_t at = c.end(g);
+    for (const auto& [number, word] : {std::pair{1, "DEPTH "}, std::pair{2, "PITCH "}}) {
+        const IsoWord* p = c.take("P");
+        if (p == nullptr || p->number != number || p->value.empty()) {
+            return fail(p != nullptr ? p->offset : at, KERF_TR_NOOP("P{1} expected after G18"),
+                        {"0" + std::to_string(number)});
+        }
+        at = c.end(*p);
+        ConversationalBlock& b = c.newBlock();
+        b.add("CYCL DEF 18." + std::to_string(number), g.offset, 3);
+        c.addWord(b, *p, word, false);
+    }
+    return true;
+}
+
 }  // namespace kerf::tnciso

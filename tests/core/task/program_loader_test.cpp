@@ -104,5 +104,50 @@ TEST_F(ProgramLoaderTest, AFeedMoveBeforeAnyFeedFailsTheCheck) {
     EXPECT_TRUE(called.ready) << called.diagnostics().front().message();
 }
 
+// FAUTO is the feed of the TOOL CALL: without an F there the run stops at the FAUTO block.
+TEST_F(ProgramLoaderTest, FautoWithoutAFeedInTheToolCallFailsTheCheck) {
+    const auto [missing, missingText] =
+        loadBoth("A.H",
+                 "0 BEGIN PGM A MM\n1 TOOL CALL 1 Z S1000\n2 L Z+5 R0 FMAX\n"
+                 "3 L X+10 Y+0 FAUTO\n4 END PGM A MM\n");
+    for (const LoadedProgram* loaded : {&missing, &missingText}) {
+        EXPECT_FALSE(loaded->ready);
+        const DiagnosticList all = loaded->diagnostics();
+        ASSERT_EQ(all.size(), 1u);
+        EXPECT_EQ(all[0].line, 4u);
+        EXPECT_EQ(all[0].message(), "FAUTO: the TOOL CALL block gave no feed rate F");
+    }
+    const auto [given, givenText] =
+        loadBoth("B.H",
+                 "0 BEGIN PGM B MM\n1 TOOL CALL 1 Z S1000 F250\n2 L X+10 FAUTO\n"
+                 "3 END PGM B MM\n");
+    EXPECT_TRUE(given.ready) << given.diagnostics().front().message();
+}
+
+// The panel starts a lathe program where the tool stands: its first move starts there, as it
+// does on a mill, not at the workpiece origin (the program's picture drew it from there).
+TEST_F(ProgramLoaderTest, ALatheProgramStartsWhereThePanelSaysTheToolStands) {
+    const machine::MachineConfig lathe = *machine::loadMachine("lathe");
+    ProgramRequest request;
+    request.path = root / "P1.PIM";
+    request.text = "G00 X20 Z5\nM30\n";
+    request.ncRoot = root;
+    request.presetInMachine.values[2] = 200.0;  // workpiece origin at machine Z200
+    request.startPosition = Pose{};
+    request.startPosition->values[0] = 40.0;  // X and Z of the tool, workpiece coordinates
+    request.startPosition->values[2] = 80.0;
+    const LoadedProgram loaded = loadProgram(lathe, request);
+    ASSERT_TRUE(loaded.ready) << (loaded.diagnostics().empty() ? ""
+                                                               : loaded.diagnostics()[0].format());
+    ASSERT_TRUE(loaded.streamOrigin.has_value());
+    EXPECT_DOUBLE_EQ(loaded.streamOrigin->values[2], 200.0);
+    const Pose start = loaded.interpreter->nominalPosition();
+    EXPECT_DOUBLE_EQ(start.values[0], 40.0);
+    EXPECT_DOUBLE_EQ(start.values[2], 80.0);
+    // Without a start (kerf run) the program starts at its origin.
+    request.startPosition.reset();
+    EXPECT_DOUBLE_EQ(loadProgram(lathe, request).interpreter->nominalPosition().values[2], 0.0);
+}
+
 }  // namespace
 }  // namespace kerf::task

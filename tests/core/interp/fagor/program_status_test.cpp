@@ -192,6 +192,16 @@ TEST_F(FagorStatus, ConstantSurfaceSpeedLimitAndFeedPerRevolution) {
     EXPECT_DOUBLE_EQ(rpm.motion.spindleRpm, 1200.0);
 }
 
+// The gear range may be selected in the G96 block itself (spec part 1 §8.6: "in that block or an
+// earlier one"); the run refused it.
+TEST_F(FagorStatus, TheGearRangeMayComeInTheG96Block) {
+    const std::string program = "G92 S2500\nG96 S150 M41 M3\nG95 G1 X20 Z-5 F0.2\nM30\n";
+    const Status css = runThroughLine(program, 3);
+    ASSERT_TRUE(css.motion.surfaceMPerMin.has_value());
+    EXPECT_DOUBLE_EQ(*css.motion.surfaceMPerMin, 150.0);
+    EXPECT_DOUBLE_EQ(css.motion.spindleLimitRpm, 2500.0);
+}
+
 TEST_F(FagorStatus, InchProgramSaysInch) {
     const Status s = runThroughLine("G70\nG0 X1 Z0\nM30\n", 2);
     EXPECT_TRUE(s.inch);

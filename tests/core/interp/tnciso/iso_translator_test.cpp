@@ -87,12 +87,15 @@ TEST(IsoTranslator, CornersApproachToolsBlanksAndLabels) {
                         "L3,2 *\n"
                         "L3,0 *\n"
                         "G38 M5 *\n"
-                        "M3 M8 *\n"),
+                        "M3 M8 *\n"
+                        "G98 L\"EDGE\" *\n"
+                        "L\"EDGE\" *\n"),
               (std::vector<std::string>{
                   "CHF 2", "RND R3 F100", "RND R5", "RND R5", "TOOL CALL 5 Z S3000 DL+0.1 DR-0.2",
                   "TOOL CALL Y S100", "TOOL CALL S2000 | M3", "TOOL DEF 3 L+50 R+4",
                   "BLK FORM 0.1 Z X+0 Y+0 Z-40", "BLK FORM 0.2 IX+100 IY+100 IZ+40", "LBL 3",
-                  "CALL LBL 3 REP 2", "CALL LBL 3", "STOP M5", "M3 M8"}));
+                  "CALL LBL 3 REP 2", "CALL LBL 3", "STOP M5", "M3 M8", "LBL \"EDGE\"",
+                  "CALL LBL \"EDGE\""}));
 }
 
 TEST(IsoTranslator, ParameterFunctionsAndFormulas) {
@@ -167,6 +170,19 @@ TEST(IsoTranslator, OldCyclesAreOneBlock) {
                                         "CYCL DEF 13.0 ORIENTATION | CYCL DEF 13.1 ANGLE 90",
                                         "CYCL DEF 32.0 TOLERANCE | CYCL DEF 32.1 T0.05",
                                         "CYCL DEF 12.0 PGM CALL | CYCL DEF 12.1 PGM SUB.H"}));
+}
+
+// The seed gives cycle 18 the ISO code G18, the plane ZX's: its parameters make it the cycle.
+TEST(IsoTranslator, G18WithItsParametersIsThreadCutting) {
+    EXPECT_EQ(translate("G18 P01 -20 P02 +1.5 *\n"
+                        "T1 G18 S500 *\n"
+                        "G18 P01 -20 *\n"
+                        "G18 *\n"),
+              (std::vector<std::string>{
+                  "CYCL DEF 18.0 THREAD CUTTING | CYCL DEF 18.1 DEPTH -20 | "
+                  "CYCL DEF 18.2 PITCH +1.5",
+                  "TOOL CALL 1 Y S500", "error at 12: P{1} expected after G18",
+                  "error at 1: G17/G18/G19 belong to a tool call (T) or a blank (G30)"}));
 }
 
 TEST(IsoTranslator, ErrorsPointAtTheWord) {
