@@ -20,6 +20,7 @@
 #include "core/interp/interpreter.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/fk_trace.h"
 #include "core/interp/klartext/program_file.h"
 #include "core/interp/klartext/q_parameters.h"
 #include "core/interp/path/path_builder.h"
@@ -91,6 +92,9 @@ public:
     interp::ProgramStatus programStatus() const override;  // klartext_status.cpp
 
     const QParameters& parameters() const { return m_q; }
+    // Records what the FK solver does into `trace` (nullptr: nothing), for the programming
+    // graphics; the trace must outlive the run.
+    void traceFk(FkTrace* trace) { m_fkTrace = trace; }
 
 private:
     class Environment;
@@ -249,6 +253,7 @@ private:
     void finishFk();
     void applyFkStep(const fk::FkStep& step);
     void emitFkElement(const fk::FkResolved& resolved);
+    void traceAmbiguity();  // the solver offers alternatives: m_fkTrace records them
     // Cycle 14 and the contour subprograms of the SL cycles (klartext_contours.cpp).
     void contourLabels(const CycleDefinition& def);
     bool captureContours(std::vector<cycles::SubContour>& out);
@@ -486,6 +491,7 @@ private:
     double m_roughingRadius = 0.0;
     interp::PathBuilder* m_capturePath = nullptr;
     FkState m_fk;
+    FkTrace* m_fkTrace = nullptr;
 };
 
 }  // namespace kerf::klartext
