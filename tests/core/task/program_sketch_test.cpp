@@ -40,7 +40,9 @@ std::string withSelect(const std::string& select) {
     return text;
 }
 
-bool near(const Vec2& a, const Vec2& b) { return (a - b).norm() < 1e-9; }
+bool near(const Vec2& a, const Vec2& b) {
+    return (a - b).norm() < 1e-9;
+}
 
 const Diagnostic* fkError(const ProgramSketch& sketch) {
     for (const Diagnostic& d : sketch.diagnostics)
@@ -62,8 +64,7 @@ TEST(ProgramSketch, AnArcByRadiusAndEndOffersBothCentresAndWantsFselectAtItsBloc
         EXPECT_TRUE(near(s.start, {0.0, 0.0}));
         EXPECT_TRUE(near(s.end, {10.0, 10.0}));
         if (near(s.center, {0.0, 10.0}) && std::fabs(s.sweep - kPi / 2) < 1e-9) ++quarter;
-        if (near(s.center, {10.0, 0.0}) && std::fabs(s.sweep - 3 * kPi / 2) < 1e-9)
-            ++threeQuarters;
+        if (near(s.center, {10.0, 0.0}) && std::fabs(s.sweep - 3 * kPi / 2) < 1e-9) ++threeQuarters;
     }
     EXPECT_EQ(quarter, 1);
     EXPECT_EQ(threeQuarters, 1);
