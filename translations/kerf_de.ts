@@ -163,6 +163,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Kontur</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>FK-Element bestimmt</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>FK-Element nicht bestimmt</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Lösung %1 von %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Andere Lösungen</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7544,6 +7567,18 @@ zyklen</translation>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>FK-Programmierung arbeitet nur in der XY-Ebene (Werkzeugachse Z)</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Lösung
+zeigen</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Lösung
+wählen</translation>
     </message>
 </context>
 <context>

@@ -163,6 +163,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Contorno</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>Elemento FK determinado</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>Elemento FK no determinado</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Solución %1 de %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Otras soluciones</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7544,6 +7567,18 @@ fijos</translation>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>La programación FK solo funciona en el plano XY (eje de herramienta Z)</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Mostrar
+solución</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Seleccionar
+solución</translation>
     </message>
 </context>
 <context>

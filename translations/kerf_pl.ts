@@ -164,6 +164,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Kontur</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>Element FK określony</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>Element FK nieokreślony</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Rozwiązanie %1 z %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Inne rozwiązania</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7547,6 +7570,18 @@ stałe</translation>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>Programowanie FK działa tylko w płaszczyźnie XY (oś narzędzia Z)</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Pokaż
+rozwiązanie</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Wybierz
+rozwiązanie</translation>
     </message>
 </context>
 <context>

@@ -163,6 +163,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Contorno</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>Elemento FK determinado</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>Elemento FK não determinado</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Solução %1 de %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Outras soluções</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7544,6 +7567,18 @@ fixos</translation>
     <message>
         <source>FK programming works in the XY plane only (tool axis Z)</source>
         <translation>A programação FK só funciona no plano XY (eixo da ferramenta Z)</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Mostrar
+solução</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Selecionar
+solução</translation>
     </message>
 </context>
 <context>
