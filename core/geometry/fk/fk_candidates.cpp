@@ -277,6 +277,14 @@ CarrierCandidates arcCandidates(const FkElement& e, const Known& k, const Candid
             std::vector<Carrier> loci =
                 centreLoci(k, points, e.radius, ccw, tangentAtStart, touching, centres);
             if (centres.empty() && loci.size() >= 2) centres = intersect(loci[0], loci[1]);
+            if (centres.empty() && loci.size() == 1 && e.radius && k.pd && e.distance) {
+                // PD at distance D: the centre lies R + D from it (PD outside the arc), then
+                // |R - D| (inside).
+                for (double apart : {*e.radius + *e.distance, std::fabs(*e.radius - *e.distance)})
+                    if (apart > kFkTolerance)
+                        for (const Vec2& p : intersect(loci[0], Carrier::arc(*k.pd, apart, true)))
+                            centres.push_back(p);
+            }
             if (centres.empty() && loci.size() < 2 && !e.radius && points.size() >= 3) {
                 if (auto circle = circleThrough(points[0], points[1], points[2])) {
                     centres.push_back(circle->center);

@@ -465,5 +465,27 @@ TEST(FkSolver, CrossedTangentLineBetweenArcsOfOppositeRotation) {
     EXPECT_NEAR(step.resolved[2].segment.sweep, -2.0 * kPi / 3.0, 1e-9);
 }
 
+// An arc r10 counter-clockwise from (0,0) whose circle passes 5 from PD (0,25), ending on X+10.
+// Its centre lies 10 from the start and 10 + 5 = 15 from PD: x^2 + y^2 = 100 and
+// x^2 + (y - 25)^2 = 225 give y = 10, x = 0; inside (5 from PD) there is none (y = 14 > 10). The
+// circle about (0,10) meets X 10 at (10,10): a quarter turn.
+TEST(FkSolver, ArcFromAPointAtDistanceD) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.radius = 10.0;
+    a.pdx = abs(0.0);
+    a.pdy = abs(25.0);
+    a.distance = 5.0;
+    a.x = abs(10.0);
+    FkStep step = solver.add(a, 1, std::nullopt);
+    ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+    EXPECT_EQ(step.choices, 0u);
+    ASSERT_EQ(step.resolved.size(), 1u);
+    expectPoint(step.resolved[0].segment.center, 0.0, 10.0);
+    expectPoint(step.resolved[0].segment.end, 10.0, 10.0);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, kPi / 2.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace kerf::fk
