@@ -22,7 +22,9 @@ namespace kerf::program {
 // atomically.
 class NcRoot {
 public:
-    explicit NcRoot(std::filesystem::path root);
+    // `writes` false: replace() admits a write as usual but leaves the file as it is (a dry run
+    // of the editor's check must not change the NC root).
+    explicit NcRoot(std::filesystem::path root, bool writes = true);
 
     const std::filesystem::path& path() const { return m_root; }
 
@@ -49,6 +51,7 @@ private:
     Expected<FileDescriptor> openResolved(const std::filesystem::path& finalPath, int flags) const;
 
     std::filesystem::path m_root;
+    bool m_writes = true;
 };
 
 }  // namespace kerf::program

@@ -28,6 +28,8 @@ struct ProgramRequest {
     std::optional<std::filesystem::path> toolTable;  // any file instead of the NC root's TOOL.T
     std::filesystem::path remanentFile;              // where QR parameters are kept; empty: not
     bool blockSkip = false;
+    // False for a dry run (the editor's check): files the program writes are checked, not written.
+    bool writeFiles = true;
     Pose startPosition{};    // where the tool tip stands, workpiece coordinates
     Pose presetInMachine{};  // the workpiece origin, machine coordinates (M91, FAGOR G53/G74)
     // Check alongside execution (KlartextInterpreter::CheckMode::Background); the caller must

@@ -83,7 +83,10 @@ bool mayUseFk(std::string_view text) {
 ProgramSketch sketchProgram(const machine::MachineConfig& machine, const ProgramRequest& request,
                             const std::atomic<bool>* cancel, uint64_t maxBlocks) {
     ProgramSketch sketch;
-    LoadedProgram program = loadProgram(machine, request);
+    ProgramRequest dry = request;
+    dry.writeFiles = false;  // checking never writes (FN 16, the TT cycles' TOOL.T ...)
+    dry.remanentFile.clear();
+    LoadedProgram program = loadProgram(machine, dry);
     sketch.diagnostics = program.diagnostics();
     auto* interpreter = dynamic_cast<klartext::KlartextInterpreter*>(program.interpreter.get());
     if (!program.ready || interpreter == nullptr || !request.text || !mayUseFk(*request.text))

@@ -114,6 +114,7 @@ void FkSketchView::paintEvent(QPaintEvent*) {
     for (const auto& element : fk.elements) {
         if (element.segment) frame.include(*element.segment);
         if (element.givenEnd) frame.include(*element.givenEnd);
+        if (element.sequenceStart) frame.include(*element.sequenceStart);
     }
     if (offering)
         for (const auto& s : ambiguities[static_cast<size_t>(m_ambiguity)].alternatives)
@@ -140,12 +141,7 @@ void FkSketchView::paintEvent(QPaintEvent*) {
     }
     int open = 0;
     for (const auto& element : fk.elements) {
-        if (!lastEnd) {
-            // Where the FK sequence starts: the end of the last move before it.
-            for (const auto& move : m_sketch->moves)
-                if (move.at.line < element.at.line && !isFkLine(move.at.line))
-                    lastEnd = move.segment.end;
-        }
+        if (element.sequenceStart) lastEnd = element.sequenceStart;
         if (element.segment) {
             painter.setPen(pen(kDetermined, 2.5 * wide(element.at.line)));
             painter.drawPath(frame.path(*element.segment));

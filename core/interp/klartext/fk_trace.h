@@ -17,6 +17,7 @@ struct FkTrace {
         SourceLocation at;                     // the FK block
         std::optional<PlanarSegment> segment;  // empty: not determined (yet)
         std::optional<Vec2> givenEnd;          // X and Y given absolutely: where it ends
+        std::optional<Vec2> sequenceStart;     // the first of an FK sequence: where it starts
     };
     struct Ambiguity {
         SourceLocation at;     // the element that has several solutions

@@ -72,10 +72,12 @@ void KlartextInterpreter::executeFk(const FkBlock& block) {
         fail("fk", KERF_TR_NOOP("FK programming works in the XY plane only (tool axis Z)"));
         return;
     }
+    std::optional<Vec2> sequenceStart;
     if (!m_fk.active) {
+        sequenceStart = Vec2(m_programmed[Axis::X], m_programmed[Axis::Y]);
         const std::optional<Vec2> tangent =
             m_lastTangentPlane == Plane::XY ? m_lastTangent : std::nullopt;
-        m_fk.solver.begin({m_programmed[Axis::X], m_programmed[Axis::Y]}, tangent);
+        m_fk.solver.begin(*sequenceStart, tangent);
         m_fk.active = true;
         m_fk.blocks.clear();
     }
@@ -83,7 +85,7 @@ void KlartextInterpreter::executeFk(const FkBlock& block) {
     m_fk.blocks[tag] = FkBlockState{m_at, block.words, {}};
     const fk::FkElement element = scaled(block.element, lengthScale());
     if (m_fkTrace != nullptr)
-        m_fkTrace->elements.push_back({m_at, std::nullopt, givenEnd(element)});
+        m_fkTrace->elements.push_back({m_at, std::nullopt, givenEnd(element), sequenceStart});
     applyFkStep(m_fk.solver.add(element, tag, m_fk.pole));
 }
 

@@ -32,7 +32,8 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
                                          KlartextSettings settings)
     : m_sources(sources),
       m_settings(std::move(settings)),
-      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot),
+      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot,
+             m_settings.writeFiles),
       m_environment(std::make_unique<Environment>(*this)),
       m_parser(m_environment.get()),
       m_path(m_out) {

@@ -47,9 +47,10 @@ struct KlartextSettings {
     std::filesystem::path toolTableFile;
     std::filesystem::path ncRoot;        // CALL PGM, FN 16 and FN 26 stay inside it
     std::filesystem::path remanentFile;  // QR parameters; empty: not kept between runs
-    Pose presetInMachine{};              // the active preset (workpiece datum), machine coords
-    Pose startPosition{};                // tool tip at the start, workpiece coordinates
-    bool blockSkip = false;              // skip blocks marked with '/'
+    bool writeFiles = true;  // false: FN 16, tables and TOOL.T are admitted but not written
+    Pose presetInMachine{};  // the active preset (workpiece datum), machine coords
+    Pose startPosition{};    // tool tip at the start, workpiece coordinates
+    bool blockSkip = false;  // skip blocks marked with '/'
     // Cycle 247 reads presets from this table (PRESET.PR in the NC root when not given).
     const tables::PresetTable* presets = nullptr;
     // Machine parameter displayDepthErr: a positive cycle depth is an error.

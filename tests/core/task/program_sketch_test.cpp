@@ -1,11 +1,14 @@
 #include "core/task/program_sketch.h"
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "core/base/atomic_file.h"
 #include "core/machine/machine_loader.h"
+#include "test_paths.h"
 
 // The editor's dry run for FK programs: the geometry the solver offers and its errors at their
 // blocks, checked against circles and lines worked out by hand.
@@ -77,6 +80,8 @@ TEST(ProgramSketch, AnArcByRadiusAndEndOffersBothCentresAndWantsFselectAtItsBloc
     ASSERT_FALSE(sketch.fk.elements.empty());
     EXPECT_EQ(sketch.fk.elements[0].at.line, 4u);
     EXPECT_FALSE(sketch.fk.elements[0].segment.has_value());
+    ASSERT_TRUE(sketch.fk.elements[0].sequenceStart.has_value());
+    EXPECT_TRUE(near(*sketch.fk.elements[0].sequenceStart, {0.0, 0.0}));
     ASSERT_TRUE(sketch.fk.elements[0].givenEnd.has_value());
     EXPECT_TRUE(near(*sketch.fk.elements[0].givenEnd, {10.0, 10.0}));
 }
@@ -142,10 +147,31 @@ TEST(ProgramSketch, OnlyProgramsThatMayUseFkAreRun) {
         "0 BEGIN PGM A MM\n1 L X+10 Y+0 R0 F200\n2 FL X+20 Y+0\n3 L X+20 Y+5\n"
         "4 END PGM A MM\n");
     EXPECT_EQ(fkError(fk), nullptr);
+    ASSERT_EQ(fk.fk.elements.size(), 1u);
+    ASSERT_TRUE(fk.fk.elements[0].sequenceStart.has_value());
+    EXPECT_TRUE(near(*fk.fk.elements[0].sequenceStart, {10.0, 0.0}));
     ASSERT_EQ(fk.moves.size(), 3u);
     EXPECT_EQ(fk.moves[0].at.line, 2u);
     EXPECT_EQ(fk.moves[2].at.line, 4u);
     EXPECT_TRUE(near(fk.moves[2].segment.end, {20.0, 5.0}));
+}
+
+// The editor checks as the operator types: its dry run must not write the NC root. The same
+// program run for real writes OUT.TXT (InterpreterTest.FPrintWritesInsideTheNcRoot).
+TEST(ProgramSketch, TheDryRunWritesNoFile) {
+    const auto dir = kerf::test::uniqueTempDir("sketch_no_writes");
+    ASSERT_FALSE(writeFileAtomically(dir / "MASK.A", "\"R = %5.2F\", Q1;\n").has_value());
+    ProgramRequest request;
+    request.path = dir / "FK.H";
+    request.ncRoot = dir;
+    request.text =
+        "0 BEGIN PGM FK MM\n1 Q1 = 2.5\n2 FN 16: F-PRINT MASK.A / OUT.TXT\n"
+        "3 L X+0 Y+0 R0 F200\n4 FL X+10 Y+0\n5 END PGM FK MM\n";
+    const ProgramSketch sketch = sketchProgram(*machine::loadMachine("mill"), request);
+    EXPECT_EQ(fkError(sketch), nullptr);
+    ASSERT_EQ(sketch.fk.elements.size(), 1u);  // it ran past FN 16
+    EXPECT_TRUE(sketch.fk.elements[0].segment.has_value());
+    EXPECT_FALSE(std::filesystem::exists(dir / "OUT.TXT"));
 }
 
 }  // namespace
