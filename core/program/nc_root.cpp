@@ -70,7 +70,7 @@ Diagnostic pathError(const char* messageTemplate, const fs::path& path) {
 
 }  // namespace
 
-NcRoot::NcRoot(fs::path root, bool writes) : m_root(canonicalOrNormal(root)), m_writes(writes) {}
+NcRoot::NcRoot(fs::path root) : m_root(canonicalOrNormal(root)) {}
 
 bool NcRoot::contains(const fs::path& path) const {
     fs::path real = withLinksResolved(path);
@@ -124,7 +124,6 @@ MaybeError NcRoot::admitWrite(const fs::path& finalPath) const {
 
 MaybeError NcRoot::replace(const fs::path& finalPath, std::string_view content) const {
     if (MaybeError refused = admitWrite(finalPath)) return refused;
-    if (!m_writes) return std::nullopt;
     const fs::path parent = finalPath.has_parent_path() ? finalPath.parent_path() : fs::path(".");
     auto folder = openResolved(parent, O_RDONLY | O_DIRECTORY);
     if (!folder) return folder.error();

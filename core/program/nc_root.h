@@ -22,9 +22,7 @@ namespace kerf::program {
 // atomically.
 class NcRoot {
 public:
-    // `writes` false: replace() admits a write as usual but leaves the file as it is (a dry run
-    // of the editor's check must not change the NC root).
-    explicit NcRoot(std::filesystem::path root, bool writes = true);
+    explicit NcRoot(std::filesystem::path root);
 
     const std::filesystem::path& path() const { return m_root; }
 
@@ -51,7 +49,6 @@ private:
     Expected<FileDescriptor> openResolved(const std::filesystem::path& finalPath, int flags) const;
 
     std::filesystem::path m_root;
-    bool m_writes = true;
 };
 
 }  // namespace kerf::program

@@ -11,7 +11,7 @@ namespace kerf::ui {
 
 bool writeFkSelect(ProgramPanel& panel, int solution) {
     const std::optional<ProgramPanel::FkOffer> offer = panel.fkOffer();
-    if (!offer || solution < 1 || solution > offer->solutions) return false;
+    if (!offer || panel.fkOfferStale() || solution < 1 || solution > offer->solutions) return false;
     ProgramEditor& editor = *panel.editor();
     const QStringList block{QStringLiteral("FSELECT %1").arg(solution)};
     if (offer->selectLine > 0) {

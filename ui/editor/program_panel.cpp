@@ -255,6 +255,7 @@ void ProgramPanel::checkNow() {
 
 void ProgramPanel::onEdited() {
     if (m_loading) return;
+    m_sketchStale = true;
     m_autosaveTimer->start();
     m_checkTimer->start();
 }
@@ -262,6 +263,7 @@ void ProgramPanel::onEdited() {
 void ProgramPanel::showSketch(std::shared_ptr<const task::ProgramSketch> sketch) {
     // While the check of a new text is under way, the graphics keep the last contour.
     m_sketch = std::move(sketch);
+    m_sketchStale = false;
     m_sketchView->setSketch(m_sketch);
     m_sketchView->setVisible(m_sketch && !m_sketch->fk.elements.empty());
     refreshFkOffer(true);

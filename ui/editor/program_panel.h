@@ -80,6 +80,9 @@ public:
         uint32_t selectLine = 0;  // the line of the FSELECT written; 0: none
     };
     std::optional<FkOffer> fkOffer() const;
+    // The text changed since the offer was found: its lines may be out of date until the check
+    // of the new text comes back.
+    bool fkOfferStale() const { return m_sketchStale; }
     // Draws the next solution of the offer highlighted (after the last, the first).
     void showNextFkSolution();
     FkSketchView* fkSketch() const { return m_sketchView; }
@@ -129,6 +132,7 @@ private:
     std::shared_ptr<const task::ProgramSketch> m_sketch;
     int m_offer = -1;  // index into the sketch's FK ambiguities; -1: none
     int m_shownSolution = 1;
+    bool m_sketchStale = false;
     ProgramLoader* m_loader = nullptr;
     BackgroundWriter* m_writer = nullptr;
     QTimer* m_autosaveTimer = nullptr;

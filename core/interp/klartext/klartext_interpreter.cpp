@@ -32,8 +32,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
                                          KlartextSettings settings)
     : m_sources(sources),
       m_settings(std::move(settings)),
-      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot,
-             m_settings.writeFiles),
+      m_root(m_settings.ncRoot.empty() ? std::filesystem::path(".") : m_settings.ncRoot),
       m_environment(std::make_unique<Environment>(*this)),
       m_parser(m_environment.get()),
       m_path(m_out) {
@@ -195,6 +194,13 @@ Diagnostic KlartextInterpreter::diagnosticAt(Severity severity, const char* code
     d.line = m_at.line;
     d.column = m_at.column;
     return d;
+}
+
+MaybeError KlartextInterpreter::replaceFile(const std::filesystem::path& file,
+                                            std::string_view content) const {
+    // A dry run (the editor's check) admits the write as a run would and leaves the file.
+    if (!m_settings.writeFiles) return m_root.admitWrite(file);
+    return m_root.replace(file, content);
 }
 
 void KlartextInterpreter::fail(const char* code, const char* messageTemplate,

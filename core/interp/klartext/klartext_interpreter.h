@@ -47,7 +47,7 @@ struct KlartextSettings {
     std::filesystem::path toolTableFile;
     std::filesystem::path ncRoot;        // CALL PGM, FN 16 and FN 26 stay inside it
     std::filesystem::path remanentFile;  // QR parameters; empty: not kept between runs
-    bool writeFiles = true;  // false: FN 16, tables and TOOL.T are admitted but not written
+    bool writeFiles = true;  // false: files the program writes are admitted, not written
     Pose presetInMachine{};  // the active preset (workpiece datum), machine coords
     Pose startPosition{};    // tool tip at the start, workpiece coordinates
     bool blockSkip = false;  // skip blocks marked with '/'
@@ -254,7 +254,11 @@ private:
     void finishFk();
     void applyFkStep(const fk::FkStep& step);
     void emitFkElement(const fk::FkResolved& resolved);
-    void traceAmbiguity();  // the solver offers alternatives: m_fkTrace records them
+    void traceAmbiguity();
+    // Every file the program writes (FN 16, tables, TOOL.T) goes through here: with
+    // writeFiles false it is admitted but not written.
+    MaybeError replaceFile(const std::filesystem::path& file, std::string_view content)
+        const;  // the solver offers alternatives: m_fkTrace records them
     // Cycle 14 and the contour subprograms of the SL cycles (klartext_contours.cpp).
     void contourLabels(const CycleDefinition& def);
     bool captureContours(std::vector<cycles::SubContour>& out);

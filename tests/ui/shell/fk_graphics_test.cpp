@@ -8,6 +8,7 @@
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
 #include "test_paths.h"
+#include "ui/cycles/fk_solution_keys.h"
 #include "ui/editor/fk_sketch_view.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
@@ -81,6 +82,15 @@ TEST(FkGraphics, AnAmbiguousArcOffersItsTwoSolutionsAndSelectWritesFselect) {
                 1e-9);
     EXPECT_NEAR(std::min((centres[0] - Vec2(10, 0)).norm(), (centres[1] - Vec2(10, 0)).norm()), 0.0,
                 1e-9);
+
+    // An edit makes the offer's lines stale: nothing is written until the check comes back.
+    QTest::keyClick(&editor, Qt::Key_Space);
+    EXPECT_TRUE(panel.fkOfferStale());
+    const QString edited = editor.toPlainText();
+    EXPECT_FALSE(writeFkSelect(panel, 1));
+    EXPECT_EQ(editor.toPlainText(), edited);
+    QTest::keyClick(&editor, Qt::Key_Backspace);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !panel.fkOfferStale(); }, 10000));
 
     // Show solution cycles 1 -> 2 -> 1 -> 2; Select solution writes the one shown.
     ASSERT_TRUE(window.softkeys()->pressId("fkShowSolution"));
