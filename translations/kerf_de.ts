@@ -163,6 +163,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Kontur</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>FK-Element bestimmt</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>FK-Element nicht bestimmt</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Lösung %1 von %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Andere Lösungen</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7548,6 +7571,18 @@ zyklen</translation>
     <message>
         <source>P{1} expected after G18</source>
         <translation>P{1} nach G18 erwartet</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Lösung
+zeigen</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Lösung
+wählen</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

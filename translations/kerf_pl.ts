@@ -164,6 +164,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Kontur</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>Element FK określony</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>Element FK nieokreślony</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Rozwiązanie %1 z %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Inne rozwiązania</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7551,6 +7574,18 @@ stałe</translation>
     <message>
         <source>P{1} expected after G18</source>
         <translation>oczekiwano P{1} po G18</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Pokaż
+rozwiązanie</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Wybierz
+rozwiązanie</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -163,6 +163,29 @@
     </message>
 </context>
 <context>
+    <name>kerf::ui::FkSketchView</name>
+    <message>
+        <source>Contour</source>
+        <translation>Contorno</translation>
+    </message>
+    <message>
+        <source>FK element determined</source>
+        <translation>Elemento FK determinado</translation>
+    </message>
+    <message>
+        <source>FK element not determined</source>
+        <translation>Elemento FK não determinado</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2</source>
+        <translation>Solução %1 de %2</translation>
+    </message>
+    <message>
+        <source>Other solutions</source>
+        <translation>Outras soluções</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::GraphicsPanel</name>
     <message>
         <source>The 3D graphics need a display</source>
@@ -7548,6 +7571,18 @@ fixos</translation>
     <message>
         <source>P{1} expected after G18</source>
         <translation>esperado P{1} após G18</translation>
+    </message>
+    <message>
+        <source>Show
+solution</source>
+        <translation>Mostrar
+solução</translation>
+    </message>
+    <message>
+        <source>Select
+solution</source>
+        <translation>Selecionar
+solução</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -89,6 +89,7 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.startPosition = request.startPosition.value_or(Pose{});
     settings.presetInMachine = request.presetInMachine;
     settings.remanentFile = request.remanentFile;
+    settings.writeFiles = request.writeFiles;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
     loaded.ready =
         load(*interpreter, request,

@@ -30,6 +30,8 @@ struct ProgramRequest {
     std::vector<std::filesystem::path> runOutputs;   // files the run writes: never read as input
     std::filesystem::path remanentFile;              // where QR parameters are kept; empty: not
     bool blockSkip = false;
+    // False for a dry run (the editor's check): files the program writes are checked, not written.
+    bool writeFiles = true;
     // Where the tool tip stands, workpiece coordinates; unset: at the origin the program's
     // coordinates start from (kerf run).
     std::optional<Pose> startPosition;

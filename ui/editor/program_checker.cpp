@@ -2,8 +2,6 @@
 
 #include <QMetaObject>
 
-#include "ui/editor/program_text_check.h"
-
 namespace kerf::ui {
 
 ProgramChecker::ProgramChecker(machine::MachineConfig machine, std::filesystem::path ncRoot,
@@ -30,6 +28,7 @@ uint64_t ProgramChecker::check(const QString& text, const std::filesystem::path&
         request = ++m_generation;
         // A shallow copy: the UTF-8 conversion of a large program is done by the worker.
         m_pending = Request{text, path, dialect, request};
+        m_cancel.store(true);
     }
     m_wake.notify_one();
     return request;
@@ -44,22 +43,31 @@ void ProgramChecker::work() {
             if (m_quit) return;
             request = std::move(*m_pending);
             m_pending.reset();
+            m_cancel.store(false);
         }
-        DiagnosticList diagnostics = checkText(request.text.toStdString(), request);
+        auto sketch =
+            std::make_shared<task::ProgramSketch>(sketchText(request.text.toStdString(), request));
         std::lock_guard lock(m_mutex);
         if (request.generation != m_generation || m_quit) continue;  // the text changed meanwhile
         // Queued to the UI thread; dropped by Qt if this object is gone by then.
         QMetaObject::invokeMethod(
             this,
-            [this, request = request.generation, diagnostics = std::move(diagnostics)] {
-                emit checked(request, diagnostics);
+            [this, request = request.generation,
+             sketch = std::shared_ptr<const task::ProgramSketch>(std::move(sketch))] {
+                emit sketched(request, sketch);
+                emit checked(request, sketch->diagnostics);
             },
             Qt::QueuedConnection);
     }
 }
 
-DiagnosticList ProgramChecker::checkText(const std::string& text, const Request& request) const {
-    return checkProgramText(text, request.path.string(), request.dialect, m_machine, m_ncRoot);
+task::ProgramSketch ProgramChecker::sketchText(std::string text, const Request& request) const {
+    task::ProgramRequest load;
+    load.text = std::move(text);
+    load.path = request.path;
+    load.dialect = request.dialect;
+    load.ncRoot = m_ncRoot;
+    return task::sketchProgram(m_machine, load, &m_cancel);
 }
 
 }  // namespace kerf::ui

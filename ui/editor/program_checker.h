@@ -2,8 +2,10 @@
 
 #include <QObject>
 #include <QString>
+#include <atomic>
 #include <condition_variable>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -11,6 +13,7 @@
 #include "core/base/diagnostic.h"
 #include "core/machine/machine_config.h"
 #include "core/program/dialect.h"
+#include "core/task/program_sketch.h"
 
 namespace kerf::ui {
 
@@ -18,7 +21,10 @@ namespace kerf::ui {
 // UI thread. A new request replaces one not started yet; results of an outdated text are
 // dropped. Each result names its request: a receiver that swapped its document meanwhile knows
 // the result is not about what it shows. Klartext and FAGOR programs are checked as `kerf check`
-// does; TNC ISO, which Kerf does not interpret yet, gets a single note saying so.
+// does; TNC ISO, which Kerf does not interpret yet, gets a single note saying so. A Klartext
+// program with FK blocks is also run dry (task::sketchProgram): the FK solver's errors join the
+// diagnostics and sketched() brings its contour for the programming graphics. A new request
+// cancels a dry run under way.
 class ProgramChecker : public QObject {
     Q_OBJECT
 
@@ -33,6 +39,8 @@ public:
 
 signals:
     void checked(quint64 request, const kerf::DiagnosticList& diagnostics);
+    // Before checked() of the same request.
+    void sketched(quint64 request, std::shared_ptr<const kerf::task::ProgramSketch> sketch);
 
 private:
     struct Request {
@@ -42,7 +50,7 @@ private:
         uint64_t generation = 0;
     };
     void work();
-    DiagnosticList checkText(const std::string& text, const Request& request) const;
+    task::ProgramSketch sketchText(std::string text, const Request& request) const;
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;
@@ -50,6 +58,7 @@ private:
     std::condition_variable m_wake;
     std::optional<Request> m_pending;
     bool m_quit = false;
+    std::atomic<bool> m_cancel{false};  // the text changed: the dry run under way is outdated
     uint64_t m_generation = 0;
     std::thread m_worker;
 };

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QLabel>
+#include <QSplitter>
 #include <QTextDocument>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -10,6 +11,7 @@
 #include "ui/common/diagnostic_text.h"
 #include "ui/editor/background_writer.h"
 #include "ui/editor/find_bar.h"
+#include "ui/editor/fk_sketch_view.h"
 #include "ui/editor/program_checker.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_loader.h"
@@ -37,13 +39,26 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     m_title = new QLabel(this);
     m_title->setObjectName("programTitle");
-    m_editor = new ProgramEditor(this);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    m_editor = new ProgramEditor(split);
+    m_sketchView = new FkSketchView(split);
+    m_sketchView->hide();  // until the program has FK blocks
+    split->addWidget(m_editor);
+    split->addWidget(m_sketchView);
     m_findBar = new FindBar(m_editor, this);
     layout->addWidget(m_title);
-    layout->addWidget(m_editor, 1);
+    layout->addWidget(split, 1);
     layout->addWidget(m_findBar);
+    connect(m_editor, &QPlainTextEdit::cursorPositionChanged, this, [this] {
+        m_sketchView->setCursorLine(m_editor->currentLine());
+        refreshFkOffer(false);
+    });
 
     m_checker = new ProgramChecker(m_settings.machine, m_settings.ncRoot, this);
+    connect(m_checker, &ProgramChecker::sketched, this,
+            [this](quint64 request, std::shared_ptr<const task::ProgramSketch> sketch) {
+                if (request == m_awaitedCheck) showSketch(std::move(sketch));
+            });
     connect(m_checker, &ProgramChecker::checked, this,
             [this](quint64 request, const DiagnosticList& diagnostics) {
                 // A result of another text (an earlier edit, the program shown before) would
@@ -109,6 +124,7 @@ ProgramPanel::~ProgramPanel() = default;
 void ProgramPanel::forgetDiagnostics() {
     m_checkTimer->stop();
     m_awaitedCheck = 0;
+    showSketch(nullptr);
     if (m_diagnostics.empty()) return;
     m_diagnostics.clear();
     m_editor->setDiagnostics(m_diagnostics);
@@ -239,8 +255,67 @@ void ProgramPanel::checkNow() {
 
 void ProgramPanel::onEdited() {
     if (m_loading) return;
+    m_sketchStale = true;
     m_autosaveTimer->start();
     m_checkTimer->start();
+}
+
+void ProgramPanel::showSketch(std::shared_ptr<const task::ProgramSketch> sketch) {
+    // While the check of a new text is under way, the graphics keep the last contour.
+    m_sketch = std::move(sketch);
+    m_sketchStale = false;
+    m_sketchView->setSketch(m_sketch);
+    m_sketchView->setVisible(m_sketch && !m_sketch->fk.elements.empty());
+    refreshFkOffer(true);
+}
+
+void ProgramPanel::refreshFkOffer(bool newSketch) {
+    const bool offered = m_offer >= 0;
+    const int before = m_offer;
+    m_offer = -1;
+    if (m_sketch) {
+        const auto& choices = m_sketch->fk.ambiguities;
+        const auto cursor = static_cast<uint32_t>(m_editor->currentLine());
+        for (size_t i = 0; i < choices.size() && m_offer < 0; ++i) {
+            const auto& c = choices[i];
+            if (c.at.line == cursor || c.after.line == cursor ||
+                (c.selectAt && c.selectAt->line == cursor))
+                m_offer = static_cast<int>(i);
+        }
+        for (size_t i = 0; i < choices.size() && m_offer < 0; ++i)
+            if (choices[i].selected == 0) m_offer = static_cast<int>(i);
+    }
+    if (m_offer >= 0 && (newSketch || m_offer != before)) {
+        // A new offer shows the solution written (or the first); the same one after an edit
+        // keeps the solution the operator was looking at.
+        const auto& choice = m_sketch->fk.ambiguities[static_cast<size_t>(m_offer)];
+        const int count = static_cast<int>(choice.alternatives.size());
+        if (choice.selected > 0)
+            m_shownSolution = choice.selected;
+        else if (m_offer != before || m_shownSolution > count)
+            m_shownSolution = 1;
+    }
+    m_sketchView->setOffer(m_offer, m_shownSolution);
+    if (offered != (m_offer >= 0)) emit fkOfferChanged();
+}
+
+std::optional<ProgramPanel::FkOffer> ProgramPanel::fkOffer() const {
+    if (m_offer < 0 || !m_sketch) return std::nullopt;
+    const auto& choice = m_sketch->fk.ambiguities[static_cast<size_t>(m_offer)];
+    FkOffer offer;
+    offer.solutions = static_cast<int>(choice.alternatives.size());
+    offer.shown = m_shownSolution;
+    offer.chosen = choice.selected;
+    offer.afterLine = choice.after.line;
+    offer.selectLine = choice.selectAt ? choice.selectAt->line : 0;
+    return offer;
+}
+
+void ProgramPanel::showNextFkSolution() {
+    const std::optional<FkOffer> offer = fkOffer();
+    if (!offer) return;
+    m_shownSolution = offer->shown % offer->solutions + 1;
+    m_sketchView->setOffer(m_offer, m_shownSolution);
 }
 
 void ProgramPanel::changeEvent(QEvent* event) {

@@ -3,10 +3,12 @@
 #include <QString>
 #include <QWidget>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "core/base/diagnostic.h"
 #include "core/machine/machine_config.h"
+#include "core/task/program_sketch.h"
 #include "ui/editor/program_file.h"
 #include "ui/editor/recovery_store.h"
 
@@ -17,13 +19,15 @@ namespace kerf::ui {
 
 class BackgroundWriter;
 class FindBar;
+class FkSketchView;
 class ProgramChecker;
 class ProgramLoader;
 class ProgramEditor;
 
 // The program panel of the workspace: the open program's name, the editor and its find bar.
 // It checks the text a moment after each edit, autosaves unsaved edits to the recovery store
-// and saves atomically in the file's own encoding and line ends.
+// and saves atomically in the file's own encoding and line ends. A program with FK blocks gets
+// the FK programming graphics beside the editor (FkSketchView), from the same check.
 class ProgramPanel : public QWidget {
     Q_OBJECT
 
@@ -66,6 +70,23 @@ public:
     void checkNow();
     const DiagnosticList& diagnostics() const { return m_diagnostics; }
 
+    // An FK element with several solutions, offered for FSELECT: the one at the cursor (its
+    // block, the block after which FSELECT belongs, or its FSELECT), else the first not chosen.
+    struct FkOffer {
+        int solutions = 0;
+        int shown = 1;            // the solution drawn highlighted, 1-based
+        int chosen = 0;           // the n of the FSELECT already written; 0: none
+        uint32_t afterLine = 0;   // FSELECT belongs after this block (1-based line)
+        uint32_t selectLine = 0;  // the line of the FSELECT written; 0: none
+    };
+    std::optional<FkOffer> fkOffer() const;
+    // The text changed since the offer was found: its lines may be out of date until the check
+    // of the new text comes back.
+    bool fkOfferStale() const { return m_sketchStale; }
+    // Draws the next solution of the offer highlighted (after the last, the first).
+    void showNextFkSolution();
+    FkSketchView* fkSketch() const { return m_sketchView; }
+
     ProgramEditor* editor() const { return m_editor; }
     FindBar* findBar() const { return m_findBar; }
     ProgramChecker* checker() const { return m_checker; }
@@ -74,6 +95,8 @@ signals:
     void message(kerf::Severity severity, const QString& text);
     void diagnosticsChanged(const kerf::DiagnosticList& diagnostics);
     void fileChanged();
+    // An FK offer appeared or went away (the softkeys to choose a solution follow it).
+    void fkOfferChanged();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -87,6 +110,10 @@ private:
     // block the UI thread).
     void finishOpen(const std::filesystem::path& path, const QString& text);
     void refreshTitle();
+    void showSketch(std::shared_ptr<const task::ProgramSketch> sketch);
+    // Finds the offer for the cursor (after a new check: `newSketch`); fkOfferChanged() only
+    // when an offer appears or goes, so that the softkeys do not jump after every edit.
+    void refreshFkOffer(bool newSketch);
     bool write();
     bool finishWrite(const MaybeError& error);
 
@@ -101,6 +128,11 @@ private:
     ProgramEditor* m_editor = nullptr;
     FindBar* m_findBar = nullptr;
     ProgramChecker* m_checker = nullptr;
+    FkSketchView* m_sketchView = nullptr;
+    std::shared_ptr<const task::ProgramSketch> m_sketch;
+    int m_offer = -1;  // index into the sketch's FK ambiguities; -1: none
+    int m_shownSolution = 1;
+    bool m_sketchStale = false;
     ProgramLoader* m_loader = nullptr;
     BackgroundWriter* m_writer = nullptr;
     QTimer* m_autosaveTimer = nullptr;

@@ -10,6 +10,7 @@
 
 #include "core/program/nc_root.h"
 #include "ui/common/diagnostic_text.h"
+#include "ui/cycles/fk_solution_keys.h"
 #include "ui/cycles/programming_softkeys.h"
 #include "ui/editor/block_numbers.h"
 #include "ui/editor/find_bar.h"
@@ -114,6 +115,12 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
             &MessagePanel::setCheckDiagnostics);
     connect(m_program, &ProgramPanel::fileChanged, m_messages, &MessagePanel::forgetLines);
     connect(m_program, &ProgramPanel::message, m_messages, relay);
+    // The FK solution keys come and go with an element that has several solutions.
+    connect(m_program, &ProgramPanel::fkOfferChanged, this, [this] {
+        if (m_page == Page::Panels && m_modes->screen() == ScreenMode::Programming &&
+            !testRunOnScreen())
+            refreshSoftkeys();
+    });
     retranslate();
     resize(1280, 800);
 }
@@ -264,6 +271,7 @@ void MainWindow::refreshSoftkeys() {
         rows.push_back(commonRow());
     } else if (m_modes->screen() == ScreenMode::Programming) {
         ProgramEditor* editor = m_program->editor();
+        if (m_program->fkOffer()) rows.push_back(fkSolutionRow(*m_program));
         rows.push_back({
             {"save", tr("Save"), [this] { m_program->save(); }},
             {"find", tr("Find /\nreplace"), [this] { m_program->findBar()->open(); }},

@@ -1,5 +1,6 @@
 #include "core/geometry/fk/fk_candidates.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geometry/arc_math.h"
@@ -118,6 +119,31 @@ CarrierCandidates finish(std::vector<Carrier> candidates, const std::vector<bool
     return out;
 }
 
+// Lines leaving circle `from` and entering circle `to`, each along the circle's direction of
+// travel. A line of direction d touches a circle (centre c, radius r, s = +1 counter-clockwise,
+// -1 clockwise) at c - s r n, n = leftNormal(d); both touch points on one line of direction d
+// means cross(d, cTo - cFrom) = sTo rTo - sFrom rFrom: sin(phi - theta) = k / |cTo - cFrom| with
+// d = (cos theta, sin theta) and phi the direction from centre to centre. Of the two directions,
+// those that run from the first touch point to the second are kept.
+std::vector<Carrier> tangentsBetween(const Carrier& from, const Carrier& to) {
+    const Vec2 apart = to.centre - from.centre;
+    const double distance = apart.norm();
+    const double k = (to.ccw ? to.radius : -to.radius) - (from.ccw ? from.radius : -from.radius);
+    if (distance <= kFkTolerance || std::fabs(k) > distance + kFkTolerance) return {};
+    const double phi = std::atan2(apart.y(), apart.x());
+    const double offset = std::asin(std::clamp(k / distance, -1.0, 1.0));
+    std::vector<Carrier> out;
+    for (double theta : {phi - offset, phi - (kPi - offset)}) {
+        const Vec2 d(std::cos(theta), std::sin(theta));
+        const Vec2 n = leftNormal(d);
+        const Vec2 leave = from.centre - (from.ccw ? 1.0 : -1.0) * from.radius * n;
+        const Vec2 enter = to.centre - (to.ccw ? 1.0 : -1.0) * to.radius * n;
+        if (d.dot(enter - leave) > kFkTolerance * from.scale())
+            out.push_back(Carrier::line(leave, d));
+    }
+    return out;
+}
+
 CarrierCandidates lineCandidates(const FkElement& e, const Known& k, const CandidateContext& c) {
     const std::vector<Vec2> points = throughPoints(k, c);
     std::optional<Vec2> dir = k.direction;
@@ -125,13 +151,18 @@ CarrierCandidates lineCandidates(const FkElement& e, const Known& k, const Candi
     const std::vector<Neighbour> touching = neighbours(e, c);
     const Neighbour* circle = nullptr;
     const Neighbour* straight = nullptr;
+    const Neighbour* circleAfter = nullptr;
     for (const Neighbour& n : touching) {
         const Neighbour*& slot = n.carrier.circle ? circle : straight;
         if (slot == nullptr) slot = &n;
+        if (n.carrier.circle && !n.before) circleAfter = &n;
     }
     std::vector<Carrier> found;
     if (straight != nullptr) {
         found.push_back(straight->carrier);  // a line tangent to a line is that line
+    } else if (points.empty() && !dir && circle != nullptr && circle->before &&
+               circleAfter != nullptr) {
+        found = tangentsBetween(circle->carrier, circleAfter->carrier);  // between two arcs
     } else if (points.size() >= 2 && (points.back() - points.front()).norm() > kFkTolerance) {
         Vec2 along = (points.back() - points.front()).normalized();
         if (dir && dir->dot(along) < 0.0) along = -along;
@@ -246,6 +277,14 @@ CarrierCandidates arcCandidates(const FkElement& e, const Known& k, const Candid
             std::vector<Carrier> loci =
                 centreLoci(k, points, e.radius, ccw, tangentAtStart, touching, centres);
             if (centres.empty() && loci.size() >= 2) centres = intersect(loci[0], loci[1]);
+            if (centres.empty() && loci.size() == 1 && e.radius && k.pd && e.distance) {
+                // PD at distance D: the centre lies R + D from it (PD outside the arc), then
+                // |R - D| (inside).
+                for (double apart : {*e.radius + *e.distance, std::fabs(*e.radius - *e.distance)})
+                    if (apart > kFkTolerance)
+                        for (const Vec2& p : intersect(loci[0], Carrier::arc(*k.pd, apart, true)))
+                            centres.push_back(p);
+            }
             if (centres.empty() && loci.size() < 2 && !e.radius && points.size() >= 3) {
                 if (auto circle = circleThrough(points[0], points[1], points[2])) {
                     centres.push_back(circle->center);

@@ -22,6 +22,16 @@ fk::FkElement scaled(fk::FkElement e, double scale) {
     return e;
 }
 
+// An end point given absolutely in both coordinates: the graphics can show it before the
+// element is determined.
+std::optional<Vec2> givenEnd(const fk::FkElement& e) {
+    auto absolute = [](const std::optional<fk::FkValue>& v) {
+        return v && !v->incremental && !v->reference;
+    };
+    if (!absolute(e.x) || !absolute(e.y)) return std::nullopt;
+    return Vec2(e.x->value, e.y->value);
+}
+
 }  // namespace
 
 bool KlartextInterpreter::routeThroughFk(const Statement& statement) {
@@ -62,16 +72,21 @@ void KlartextInterpreter::executeFk(const FkBlock& block) {
         fail("fk", KERF_TR_NOOP("FK programming works in the XY plane only (tool axis Z)"));
         return;
     }
+    std::optional<Vec2> sequenceStart;
     if (!m_fk.active) {
+        sequenceStart = Vec2(m_programmed[Axis::X], m_programmed[Axis::Y]);
         const std::optional<Vec2> tangent =
             m_lastTangentPlane == Plane::XY ? m_lastTangent : std::nullopt;
-        m_fk.solver.begin({m_programmed[Axis::X], m_programmed[Axis::Y]}, tangent);
+        m_fk.solver.begin(*sequenceStart, tangent);
         m_fk.active = true;
         m_fk.blocks.clear();
     }
     const size_t tag = m_fk.nextTag++;
     m_fk.blocks[tag] = FkBlockState{m_at, block.words, {}};
-    applyFkStep(m_fk.solver.add(scaled(block.element, lengthScale()), tag, m_fk.pole));
+    const fk::FkElement element = scaled(block.element, lengthScale());
+    if (m_fkTrace != nullptr)
+        m_fkTrace->elements.push_back({m_at, std::nullopt, givenEnd(element), sequenceStart});
+    applyFkStep(m_fk.solver.add(element, tag, m_fk.pole));
 }
 
 void KlartextInterpreter::executeFkSelect(const FkSelect& select) {
@@ -79,7 +94,16 @@ void KlartextInterpreter::executeFkSelect(const FkSelect& select) {
         fail("fk", KERF_TR_NOOP("FSELECT without an FK element with several solutions before it"));
         return;
     }
+    // The choice answers the last ambiguity recorded (selecting may open the next one).
+    const bool traced =
+        m_fkTrace != nullptr && m_fk.solver.awaitingChoice() && !m_fkTrace->ambiguities.empty();
+    const size_t answered = traced ? m_fkTrace->ambiguities.size() - 1 : 0;
+    const SourceLocation here = m_at;
     applyFkStep(m_fk.solver.select(select.choice));
+    if (traced && m_status != interp::RunStatus::Failed) {
+        m_fkTrace->ambiguities[answered].selectAt = here;
+        m_fkTrace->ambiguities[answered].selected = select.choice;
+    }
 }
 
 void KlartextInterpreter::applyFkStep(const fk::FkStep& step) {
@@ -87,6 +111,7 @@ void KlartextInterpreter::applyFkStep(const fk::FkStep& step) {
         if (m_status == interp::RunStatus::Failed) return;
         emitFkElement(resolved);
     }
+    if (step.choices > 1 && m_fkTrace != nullptr) traceAmbiguity();
     if (!step.problem || m_status == interp::RunStatus::Failed) return;
     if (!step.problem->atCaller) {
         auto blamed = m_fk.blocks.find(step.problem->tag);
@@ -95,11 +120,30 @@ void KlartextInterpreter::applyFkStep(const fk::FkStep& step) {
     fail("fk", step.problem->messageTemplate, step.problem->args);
 }
 
+void KlartextInterpreter::traceAmbiguity() {
+    const std::vector<fk::FkAlternative>& alternatives = m_fk.solver.alternatives();
+    auto element = m_fk.blocks.find(alternatives.front().tag);
+    FkTrace::Ambiguity ambiguity;
+    ambiguity.at = element != m_fk.blocks.end() ? element->second.at : m_at;
+    ambiguity.after = m_at;
+    for (const fk::FkAlternative& alternative : alternatives)
+        ambiguity.alternatives.push_back(alternative.segment);
+    m_fkTrace->ambiguities.push_back(std::move(ambiguity));
+}
+
 void KlartextInterpreter::emitFkElement(const fk::FkResolved& resolved) {
     auto found = m_fk.blocks.find(resolved.tag);
     if (found == m_fk.blocks.end()) return;
     const FkBlockState block = std::move(found->second);
     m_fk.blocks.erase(found);
+    if (m_fkTrace != nullptr) {
+        for (auto it = m_fkTrace->elements.rbegin(); it != m_fkTrace->elements.rend(); ++it) {
+            if (it->at == block.at) {
+                it->segment = resolved.segment;
+                break;
+            }
+        }
+    }
     const SourceLocation here = m_at;
     m_at = block.at;
     bool rapid = false;

@@ -64,7 +64,7 @@ void KlartextInterpreter::executePrint(const PrintBlock& print) {
         auto previous = m_root.read(*outputPath);
         if (previous) content = *previous + content;
     }
-    if (auto error = m_root.replace(*outputPath, content)) {
+    if (auto error = replaceFile(*outputPath, content)) {
         appendDiagnostic(m_diagnostics, *error);
         fail("io", KERF_TR_NOOP("cannot write {1}"), {print.outputFile});
     }
@@ -276,7 +276,7 @@ void KlartextInterpreter::executeTableAccess(const TableAccess& access) {
             values.push_back(m_q.get(ref));
         }
         auto error = m_openTable->write(access.row, access.columns, values);
-        if (!error) error = m_root.replace(m_openTable->path(), m_openTable->table().serialize());
+        if (!error) error = replaceFile(m_openTable->path(), m_openTable->table().serialize());
         if (error) {
             appendDiagnostic(m_diagnostics, *error);
             fail("table", KERF_TR_NOOP("FN 27: cannot write row {1}"),

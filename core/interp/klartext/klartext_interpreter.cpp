@@ -197,6 +197,13 @@ Diagnostic KlartextInterpreter::diagnosticAt(Severity severity, const char* code
     return d;
 }
 
+MaybeError KlartextInterpreter::replaceFile(const std::filesystem::path& file,
+                                            std::string_view content) const {
+    // A dry run (the editor's check) admits the write as a run would and leaves the file.
+    if (!m_settings.writeFiles) return m_root.admitWrite(file);
+    return m_root.replace(file, content);
+}
+
 void KlartextInterpreter::fail(const char* code, const char* messageTemplate,
                                std::vector<std::string> args) {
     appendDiagnostic(m_diagnostics,

@@ -20,6 +20,7 @@
 #include "core/interp/interpreter.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/fk_trace.h"
 #include "core/interp/klartext/program_file.h"
 #include "core/interp/klartext/q_parameters.h"
 #include "core/interp/path/path_builder.h"
@@ -47,6 +48,7 @@ struct KlartextSettings {
     std::filesystem::path ncRoot;                   // CALL PGM, FN 16 and FN 26 stay inside it
     std::vector<std::filesystem::path> runOutputs;  // files the run writes: never read
     std::filesystem::path remanentFile;             // QR parameters; empty: not kept between runs
+    bool writeFiles = true;  // false: files the program writes are admitted, not written
     Pose presetInMachine{};  // the active preset (workpiece datum), machine coords
     Pose startPosition{};    // tool tip at the start, workpiece coordinates
     bool blockSkip = false;  // skip blocks marked with '/'
@@ -92,6 +94,9 @@ public:
     interp::ProgramStatus programStatus() const override;  // klartext_status.cpp
 
     const QParameters& parameters() const { return m_q; }
+    // Records what the FK solver does into `trace` (nullptr: nothing), for the programming
+    // graphics; the trace must outlive the run.
+    void traceFk(FkTrace* trace) { m_fkTrace = trace; }
 
 private:
     class Environment;
@@ -250,6 +255,11 @@ private:
     void finishFk();
     void applyFkStep(const fk::FkStep& step);
     void emitFkElement(const fk::FkResolved& resolved);
+    void traceAmbiguity();
+    // Every file the program writes (FN 16, tables, TOOL.T) goes through here: with
+    // writeFiles false it is admitted but not written.
+    MaybeError replaceFile(const std::filesystem::path& file, std::string_view content)
+        const;  // the solver offers alternatives: m_fkTrace records them
     // Cycle 14 and the contour subprograms of the SL cycles (klartext_contours.cpp).
     void contourLabels(const CycleDefinition& def);
     bool captureContours(std::vector<cycles::SubContour>& out);
@@ -487,6 +497,7 @@ private:
     double m_roughingRadius = 0.0;
     interp::PathBuilder* m_capturePath = nullptr;
     FkState m_fk;
+    FkTrace* m_fkTrace = nullptr;
 };
 
 }  // namespace kerf::klartext

@@ -232,7 +232,7 @@ bool KlartextInterpreter::writeProtocol(int cycle, const char* name,
         text += line + "\n";
     text += "End of measuring log\n";
     const std::filesystem::path file = m_root.path() / ("TCHPR" + std::to_string(cycle) + ".TXT");
-    if (auto error = m_root.replace(file, text)) {
+    if (auto error = replaceFile(file, text)) {
         fail("io", KERF_TR_NOOP("cannot write the measuring log {1}: {2}"),
              {file.filename().string(), error->format()});
         return false;
@@ -295,7 +295,7 @@ bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
             return false;
         }
     }
-    if (auto error = m_root.replace(file, table->serialize())) {
+    if (auto error = replaceFile(file, table->serialize())) {
         fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the preset table: {2}"),
              {std::to_string(cycle), error->format()});
         return false;

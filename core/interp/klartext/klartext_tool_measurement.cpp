@@ -304,7 +304,7 @@ bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdi
     }
     const std::filesystem::path file =
         m_settings.toolTableFile.empty() ? m_root.path() / "TOOL.T" : m_settings.toolTableFile;
-    if (auto error = m_root.replace(file, table.serialize())) {
+    if (auto error = replaceFile(file, table.serialize())) {
         fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the tool table: {2}"),
              {std::to_string(cycle), error->format()});
         return false;

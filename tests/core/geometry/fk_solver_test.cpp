@@ -394,5 +394,98 @@ TEST(FkSolverErrors, BadReferencesPolarWithoutPoleAndBadValues) {
     EXPECT_NE(std::string(step.problem->messageTemplate).find("CLSD+"), std::string::npos);
 }
 
+// A tangent line between two arcs given by centre and radius, nothing else. Circle A about
+// (0,0) r10 counter-clockwise from (-10,0); circle B about (30,0) r10 counter-clockwise to
+// (40,0). Equal radii, same rotation: the line is parallel to the centre line, on the side where
+// both run in +X: y = -10, from (0,-10) to (30,-10). A turns 90 degrees to it, B 90 from it.
+TEST(FkSolver, TangentLineBetweenTwoArcsWithTheSameRotation) {
+    FkSolver solver;
+    solver.begin({-10.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.ccx = abs(0.0);
+    a.ccy = abs(0.0);
+    a.radius = 10.0;
+    EXPECT_TRUE(solver.add(a, 1, std::nullopt).resolved.empty());
+    FkElement between = line();
+    between.kind = FkKind::TangentLine;
+    EXPECT_TRUE(solver.add(between, 2, std::nullopt).resolved.empty());
+    FkElement b = arc(FkRotation::Ccw);
+    b.kind = FkKind::TangentArc;
+    b.ccx = abs(30.0);
+    b.ccy = abs(0.0);
+    b.radius = 10.0;
+    b.x = abs(40.0);
+    b.y = abs(0.0);
+    FkStep step = solver.add(b, 3, std::nullopt);
+    ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+    EXPECT_EQ(step.choices, 0u);
+    ASSERT_EQ(step.resolved.size(), 3u);
+    expectPoint(step.resolved[0].segment.end, 0.0, -10.0);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, kPi / 2.0, 1e-9);
+    expectPoint(step.resolved[1].segment.start, 0.0, -10.0);
+    expectPoint(step.resolved[1].segment.end, 30.0, -10.0);
+    expectPoint(step.resolved[2].segment.end, 40.0, 0.0);
+    EXPECT_NEAR(step.resolved[2].segment.sweep, kPi / 2.0, 1e-9);
+}
+
+// The crossed tangent: A about (0,0) r10 counter-clockwise, B about (40,0) r10 clockwise. A line
+// of direction (cos t, sin t) touching both with their directions of travel satisfies
+// sin(0 - t) = (-10 - 10) / 40, t = 30 degrees (150 degrees runs backwards). It leaves A at
+// (0,0) - 10 (-sin 30, cos 30) = (5, -8.660254) and enters B at (40,0) + 10 (-sin 30, cos 30) =
+// (35, 8.660254). A turns from 180 to 300 degrees (+120), B from 120 to 0 degrees (-120) to
+// (50,0).
+TEST(FkSolver, CrossedTangentLineBetweenArcsOfOppositeRotation) {
+    FkSolver solver;
+    solver.begin({-10.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.ccx = abs(0.0);
+    a.ccy = abs(0.0);
+    a.radius = 10.0;
+    EXPECT_TRUE(solver.add(a, 1, std::nullopt).resolved.empty());
+    FkElement between = line();
+    between.kind = FkKind::TangentLine;
+    EXPECT_TRUE(solver.add(between, 2, std::nullopt).resolved.empty());
+    FkElement b = arc(FkRotation::Cw);
+    b.kind = FkKind::TangentArc;
+    b.ccx = abs(40.0);
+    b.ccy = abs(0.0);
+    b.radius = 10.0;
+    b.x = abs(50.0);
+    b.y = abs(0.0);
+    FkStep step = solver.add(b, 3, std::nullopt);
+    ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+    EXPECT_EQ(step.choices, 0u);
+    ASSERT_EQ(step.resolved.size(), 3u);
+    const double h = 10.0 * std::sqrt(3.0) / 2.0;
+    expectPoint(step.resolved[0].segment.end, 5.0, -h);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, 2.0 * kPi / 3.0, 1e-9);
+    expectPoint(step.resolved[1].segment.end, 35.0, h);
+    EXPECT_NEAR(step.resolved[1].segment.length(), std::sqrt(1200.0), 1e-9);
+    expectPoint(step.resolved[2].segment.end, 50.0, 0.0);
+    EXPECT_NEAR(step.resolved[2].segment.sweep, -2.0 * kPi / 3.0, 1e-9);
+}
+
+// An arc r10 counter-clockwise from (0,0) whose circle passes 5 from PD (0,25), ending on X+10.
+// Its centre lies 10 from the start and 10 + 5 = 15 from PD: x^2 + y^2 = 100 and
+// x^2 + (y - 25)^2 = 225 give y = 10, x = 0; inside (5 from PD) there is none (y = 14 > 10). The
+// circle about (0,10) meets X 10 at (10,10): a quarter turn.
+TEST(FkSolver, ArcFromAPointAtDistanceD) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, std::nullopt);
+    FkElement a = arc(FkRotation::Ccw);
+    a.radius = 10.0;
+    a.pdx = abs(0.0);
+    a.pdy = abs(25.0);
+    a.distance = 5.0;
+    a.x = abs(10.0);
+    FkStep step = solver.add(a, 1, std::nullopt);
+    ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+    EXPECT_EQ(step.choices, 0u);
+    ASSERT_EQ(step.resolved.size(), 1u);
+    expectPoint(step.resolved[0].segment.center, 0.0, 10.0);
+    expectPoint(step.resolved[0].segment.end, 10.0, 10.0);
+    EXPECT_NEAR(step.resolved[0].segment.sweep, kPi / 2.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace kerf::fk
