@@ -93,10 +93,12 @@ void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
         return;
     }
     m_contourLabels = std::move(labels);
+    m_contourSource = ContourSource::Labels;
 }
 
 bool KlartextInterpreter::captureContours(std::vector<cycles::SubContour>& out) {
     out.clear();
+    if (m_contourSource != ContourSource::Labels) return true;
     for (int label : m_contourLabels) {
         LabelTarget target;
         target.number = label;
@@ -122,7 +124,7 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     ChainRules rules;
     rules.approach = cycle == 275;
     rules.toolAxis = cycle == 276;
-    if (!captureChain(*position, rules, chain)) return false;
+    if (!captureChain(*m_levels.back().program, *position, rules, chain)) return false;
     if (!checkContourReach(chain.segments, *target.number)) return false;
     out.segments = std::move(chain.segments);
     out.side = chain.side == CompWord::Left ? 1 : chain.side == CompWord::Right ? -1 : 0;
@@ -135,8 +137,8 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     return true;
 }
 
-bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules rules,
-                                       CapturedChain& out) {
+bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPosition& position,
+                                       ChainRules rules, CapturedChain& out) {
     // The subprogram runs in program coordinates (the cycle's moves are transformed later),
     // without compensation (RL/RR only tell pocket from island), from the current position.
     const Pose programmed = m_programmed;
@@ -166,7 +168,6 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
     m_fk = FkState{};
     m_fk.pole = outerFk.pole;
 
-    const ProgramFile& program = *m_levels.back().program;
     const Plane plane = workingPlane();
     const PlaneAxes axes = planeAxes(plane);
     BlockReader reader(program.source->text());
@@ -189,6 +190,8 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
         }
         m_at.blockNumber = parsed.blockNumber;
         const Statement& s = parsed.statement;
+        if (rules.formula && std::holds_alternative<BeginPgm>(s)) continue;
+        if (rules.formula && std::holds_alternative<EndPgm>(s)) break;
         if (std::holds_alternative<Label>(s)) {
             if (firstBlock) {
                 firstBlock = false;
@@ -203,19 +206,21 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
             break;
         }
         if (const Coordinates* c = coordinatesOf(s);
-            c != nullptr && c->has(axes.normal) && !rules.toolAxis) {
+            c != nullptr && c->has(axes.normal) && !rules.toolAxis && !rules.formula) {
             fail("contour", KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
             break;
         }
         if (firstMove && approach) out.approach = true;
         if (firstMove && movesInPlane(s) && !out.approach) {
             const auto* l = std::get_if<LinearBlock>(&s);
-            if (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second)) {
+            const bool polarLine = rules.formula && std::holds_alternative<LinePolarBlock>(s);
+            if (!polarLine &&
+                (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second))) {
                 fail("contour", KERF_TR_NOOP("the first block of a contour subprogram must be a "
                                              "straight line with both working-plane axes"));
                 break;
             }
-            if (rules.toolAxis && !l->coords.has(axes.normal)) {
+            if (rules.toolAxis && l != nullptr && !l->coords.has(axes.normal)) {
                 fail("contour", KERF_TR_NOOP("the first block of a 3-D contour subprogram must "
                                              "give the tool axis too"));
                 break;
@@ -308,7 +313,7 @@ bool KlartextInterpreter::checkContourReach(const std::vector<PlanarSegment>& se
 bool KlartextInterpreter::captureContour(const LabelPosition& position, int label,
                                          cycles::SubContour& out) {
     CapturedChain chain;
-    if (!captureChain(position, ChainRules{}, chain)) return false;
+    if (!captureChain(*m_levels.back().program, position, ChainRules{}, chain)) return false;
     if (!checkContourReach(chain.segments, label)) return false;
     ClosedContour contour;
     contour.segments = std::move(chain.segments);
