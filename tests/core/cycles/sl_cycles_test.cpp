@@ -271,16 +271,18 @@ TEST(SlCycles, SuperimposedPocketsUnionIntersectionDifference) {
     // A starts at X10 (outside B): the sum.
     ctx.contours = {{startingNearest(circleAt(35.0), {10.0, 50.0}), false, 1},
                     {circleAt(65.0), false, 2}};
+    contour::ContourData d;
+    d.depth = 10.0;
     contour::ContourArea area;
-    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    ASSERT_FALSE(contour::combineContours(22, ctx, d, area));
     EXPECT_NEAR(area.area.area(), 2.0 * kPi * 625.0 - lens, 1e-6);
     // A starts at X60 (inside B): the intersection.
     ctx.contours[0].contour = startingNearest(circleAt(35.0), {60.0, 50.0});
-    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    ASSERT_FALSE(contour::combineContours(22, ctx, d, area));
     EXPECT_NEAR(area.area.area(), lens, 1e-6);
     // B an island: the difference.
     ctx.contours[1].island = true;
-    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    ASSERT_FALSE(contour::combineContours(22, ctx, d, area));
     EXPECT_NEAR(area.area.area(), kPi * 625.0 - lens, 1e-6);
 }
 
