@@ -109,6 +109,7 @@ void KlartextInterpreter::executeContourFormula(const ContourFormula& formula) {
 bool KlartextInterpreter::captureFormula(std::optional<cycles::ContourFormula>& out) {
     out.reset();
     if (m_contourSource == ContourSource::Labels) return true;
+    m_subcontourFrame = cycles::CoordinateFrame{};
     cycles::ContourFormula formula;
     if (m_contourSource == ContourSource::Formula) {
         if (!runDefinitionProgram(formula)) return false;

@@ -22,7 +22,17 @@ public:
     std::vector<canon::Command> commands;
 };
 
-// Blocks a contour subprogram may hold: path functions and parameter calculations.
+// Coordinate transformations (datum shift, mirror image, rotation, scaling) may be programmed in
+// a contour subprogram (spec §8: they act on the following subprograms of the same call).
+bool isTransformation(const Statement& s) {
+    const auto* cycle = std::get_if<CycleDefinition>(&s);
+    if (cycle == nullptr || cycle->probe || cycle->subNumber < 0) return false;
+    return cycle->number == 7 || cycle->number == 8 || cycle->number == 10 || cycle->number == 11 ||
+           cycle->number == 26;
+}
+
+// Blocks a contour subprogram may hold: path functions, parameter calculations and
+// transformations.
 bool allowedInContour(const Statement& s) {
     return std::holds_alternative<Empty>(s) || std::holds_alternative<LinearBlock>(s) ||
            std::holds_alternative<CircleCenter>(s) || std::holds_alternative<CircleBlock>(s) ||
@@ -33,7 +43,7 @@ bool allowedInContour(const Statement& s) {
            std::holds_alternative<CircleTangentPolarBlock>(s) ||
            std::holds_alternative<QAssign>(s) || std::holds_alternative<QStringAssign>(s) ||
            std::holds_alternative<FkBlock>(s) || std::holds_alternative<FkPole>(s) ||
-           std::holds_alternative<FkSelect>(s);
+           std::holds_alternative<FkSelect>(s) || isTransformation(s);
 }
 
 const Coordinates* coordinatesOf(const Statement& s) {
@@ -62,9 +72,10 @@ bool movesInPlane(const Statement& s) {
 
 // "CYCL DEF 14.1 CONTOUR LABEL 1/2/3" (KONTURLABEL1 /2, LABEL CONTORNO1/2 ...): the keyword is
 // language-dependent, the numbers after it are the labels.
+// The single-block form "CYCL DEF 14 CONTOUR LABEL 1/2/3" has the same text after the number.
 void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
-    if (def.subNumber != 1) return;
-    const std::string& text = def.rest;
+    if (def.subNumber != 1 && def.subNumber >= 0) return;
+    const std::string& text = def.subNumber == 1 ? def.rest : def.name;
     size_t at = text.find_first_of("0123456789");
     std::vector<int> labels;
     while (at != std::string::npos && at < text.size()) {
@@ -99,6 +110,7 @@ void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
 bool KlartextInterpreter::captureContours(std::vector<cycles::SubContour>& out) {
     out.clear();
     if (m_contourSource != ContourSource::Labels) return true;
+    m_subcontourFrame = cycles::CoordinateFrame{};
     for (int label : m_contourLabels) {
         LabelTarget target;
         target.number = label;
@@ -115,6 +127,7 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     out = cycles::ContourTrain{};
     out.labelCount = m_contourLabels.size();
     if (m_contourLabels.empty()) return true;  // the cycle asks for cycle 14
+    m_subcontourFrame = cycles::CoordinateFrame{};
     // Spec §6.1: cycle 25 uses the first label only, 275 and 276 need exactly one (they check).
     LabelTarget target;
     target.number = m_contourLabels.front();
@@ -151,12 +164,14 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
     const canon::FeedMode feedMode = m_feedMode;
     const double feed = m_feed;
     const bool feedSet = m_feedSet;
+    const int lastCycle = m_lastCycleDefined;
     // Feeds of a contour subprogram do not matter (the cycle has its own): any will do.
     if (!m_feedSet) {
         m_feed = 1.0;
         m_feedSet = true;
     }
-    m_frame = cycles::CoordinateFrame{};
+    // Transformations of earlier subprograms of this call still act (m_subcontourFrame).
+    m_frame = m_subcontourFrame;
     m_comp = CompWord::Off;
     MoveCapture capture;
     interp::PathBuilder builder(capture);
@@ -234,11 +249,16 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
         if (firstMove && (movesInPlane(s) || approach)) {
             firstMove = false;
             side = m_comp;
+            // A mirror image in the subprogram turns the contour: RL and RR swap with it.
+            if (m_frame.flipsOrientation(plane) &&
+                (side == CompWord::Left || side == CompWord::Right))
+                side = side == CompWord::Left ? CompWord::Right : CompWord::Left;
         }
     }
     finishFk();
     if (m_status != interp::RunStatus::Failed) checkPathError(builder.flush());
     m_capturePath = nullptr;
+    m_subcontourFrame = m_frame;
     m_fk = std::move(outerFk);
     m_programmed = programmed;
     m_comp = comp;
@@ -250,6 +270,7 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
     m_feedMode = feedMode;
     m_feed = feed;
     m_feedSet = feedSet;
+    m_lastCycleDefined = lastCycle;
     if (m_status == interp::RunStatus::Failed) return false;
 
     // The moves after the first (which leads to the start point) are the contour.

@@ -506,6 +506,8 @@ private:
     std::filesystem::path m_contourFolder;   // and the folder of the program that selected it
     ContourDefinition m_simpleContours;      // CONTOUR DEF
     FormulaBuild* m_formulaBuild = nullptr;  // a definition program being read
+    // Transformations programmed in the contour subprograms of the cycle being called.
+    cycles::CoordinateFrame m_subcontourFrame;
     FkState m_fk;
 };
 
