@@ -46,6 +46,18 @@ bool allowedInContour(const Statement& s) {
            std::holds_alternative<FkSelect>(s) || isTransformation(s);
 }
 
+// M functions of a contour subprogram have no effect (spec §8: "F and M are ignored"): the
+// machine state the cycle runs with stays as it was.
+Statement withoutMFunctions(const Statement& s) {
+    Statement copy = s;
+    std::visit(
+        [](auto& b) {
+            if constexpr (requires { b.words.m; }) b.words.m = MWords{};
+        },
+        copy);
+    return copy;
+}
+
 const Coordinates* coordinatesOf(const Statement& s) {
     return std::visit(
         [](const auto& b) -> const Coordinates* {
@@ -245,7 +257,7 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
             fail("contour", KERF_TR_NOOP("a contour subprogram has more than 16384 blocks"));
             break;
         }
-        execute(s);
+        execute(withoutMFunctions(s));
         if (firstMove && (movesInPlane(s) || approach)) {
             firstMove = false;
             side = m_comp;
