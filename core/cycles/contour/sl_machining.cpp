@@ -38,6 +38,7 @@ std::optional<CycleError> readContourData(int cycle, const CycleContext& ctx, Co
     out.surface = v.number(5);
     out.setUpClearance = v.number(6);
     out.clearanceHeight = v.number(7);
+    out.cornerRadius = v.number(8);
     // A mirror image reverses the paths; the direction is swapped to keep the milling type.
     out.climb = v.integer(9) >= 0;
     if (ctx.mirroredMain != ctx.mirroredSecondary) out.climb = !out.climb;
@@ -69,6 +70,7 @@ std::optional<CycleError> formulaArea(int cycle, const ContourFormula& formula,
 
 std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx,
                                           const ContourData& data, ContourArea& out) {
+    out.cornerRadius = data.cornerRadius;
     if (ctx.formula) return formulaArea(cycle, *ctx.formula, data, out);
     if (ctx.contours.empty()) {
         return contourError(cycle, KERF_TR_NOOP("cycle {1} needs cycle 14 CONTOUR before it"));
@@ -109,7 +111,12 @@ std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx,
 }
 
 Region toolCentreRegion(const ContourArea& area, double inset, size_t level) {
-    if (!area.islandsOnly) return offsetRegion(area.levels[level].area, -inset);
+    if (!area.islandsOnly) {
+        const Region centre = offsetRegion(area.levels[level].area, -inset);
+        if (area.cornerRadius <= 0.0 || centre.empty()) return centre;
+        const Region core = offsetRegion(centre, -area.cornerRadius);
+        return core.empty() ? core : offsetRegion(core, area.cornerRadius);
+    }
     // Around islands only: the tool centre stays outside them, the free side on the left.
     Region around = offsetRegion(area.area, inset);
     for (ClosedContour& c : around.boundaries)

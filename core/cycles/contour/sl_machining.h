@@ -21,7 +21,8 @@ struct ContourData {     // cycle 20
     double surface = 0.0;
     double setUpClearance = 0.0;
     double clearanceHeight = 0.0;
-    bool climb = true;  // Q9, after a mirror image
+    double cornerRadius = 0.0;  // Q8: inside corners of the tool-centre paths rounded
+    bool climb = true;          // Q9, after a mirror image
 
     // The tool-axis coordinate `depthBelow` (>= 0) into the material.
     double at(double depthBelow) const { return surface - up * depthBelow; }
@@ -38,6 +39,7 @@ std::optional<CycleError> readContourData(int cycle, const CycleContext& context
 struct ContourArea {
     Region area;  // at the surface
     bool islandsOnly = false;
+    double cornerRadius = 0.0;  // cycle 20's Q8
     std::vector<AreaLevel> levels;
     double deepest() const { return levels.back().bottom; }
 };
@@ -45,7 +47,9 @@ std::optional<CycleError> combineContours(int cycle, const CycleContext& context
                                           const ContourData& data, ContourArea& out);
 
 // Where the tool centre may be at one of the area's levels: `inset` from every wall (outside the
-// islands when islands only), with the area left of every boundary.
+// islands when islands only), with the area left of every boundary. Its convex corners (the
+// inside corners of a pocket) are rounded with Q8: every point of it lies on a disc of radius Q8
+// inside it.
 Region toolCentreRegion(const ContourArea& area, double inset, size_t level = 0);
 
 // The level of the area at `depthBelow` the surface.
