@@ -7585,6 +7585,98 @@ solution</source>
 wählen</translation>
     </message>
     <message>
+        <source>cycle {1}: the contour formula leaves no area to machine</source>
+        <translation>Zyklus {1}: die Konturformel lässt keine Fläche zum Bearbeiten übrig</translation>
+    </message>
+    <message>
+        <source>parentheses nested too deep</source>
+        <translation>Klammern zu tief verschachtelt</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 or &apos;(&apos; expected</source>
+        <translation>Konturbeschreibung QC1 ... QC65535 oder &apos;(&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>program name in quotes expected</source>
+        <translation>Programmname in Anführungszeichen erwartet</translation>
+    </message>
+    <message>
+        <source>DEPTH value expected</source>
+        <translation>Wert für DEPTH erwartet</translation>
+    </message>
+    <message>
+        <source>unexpected text &apos;{1}&apos;</source>
+        <translation>unerwarteter Text &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 expected</source>
+        <translation>Konturbeschreibung QC1 ... QC65535 erwartet</translation>
+    </message>
+    <message>
+        <source>pocket P1 ... P9 or island I1 ... I9 expected</source>
+        <translation>Tasche P1 ... P9 oder Insel I1 ... I9 erwartet</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF combines at most 9 subcontours</source>
+        <translation>CONTOUR DEF verknüpft höchstens 9 Teilkonturen</translation>
+    </message>
+    <message>
+        <source>the first subcontour of CONTOUR DEF must be a pocket (P)</source>
+        <translation>die erste Teilkontur von CONTOUR DEF muss eine Tasche (P) sein</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF needs a pocket P1 = &quot;program&quot;</source>
+        <translation>CONTOUR DEF braucht eine Tasche P1 = &quot;Programm&quot;</translation>
+    </message>
+    <message>
+        <source>a contour formula combines at most 128 contours</source>
+        <translation>eine Konturformel verknüpft höchstens 128 Konturen</translation>
+    </message>
+    <message>
+        <source>QC{1} is not declared (DECLARE CONTOUR)</source>
+        <translation>QC{1} ist nicht deklariert (DECLARE CONTOUR)</translation>
+    </message>
+    <message>
+        <source>the contour formula is too long</source>
+        <translation>die Konturformel ist zu lang</translation>
+    </message>
+    <message>
+        <source>cannot read the contour program {1}: {2}</source>
+        <translation>das Konturprogramm {1} kann nicht gelesen werden: {2}</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has errors</source>
+        <translation>das Konturprogramm {1} enthält Fehler</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour-definition program</source>
+        <translation>dieser Satz ist in einem Konturdefinitions-Programm nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>every contour needs a DEPTH when one has it (DEPTH0: the depth of cycle 20)</source>
+        <translation>jede Kontur braucht DEPTH, wenn eine es hat (DEPTH0: die Tiefe aus Zyklus 20)</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no formula QC.. = ...</source>
+        <translation>das Konturprogramm {1} hat keine Formel QC.. = ...</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no contour</source>
+        <translation>das Konturprogramm {1} enthält keine Kontur</translation>
+    </message>
+    <message>
+        <source>the contour of {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>die Kontur von {1} liegt weiter als 1.000.000 mm vom Nullpunkt</translation>
+    </message>
+    <message>
+        <source>the contour of {1} encloses no area</source>
+        <translation>die Kontur von {1} schließt keine Fläche ein</translation>
+    </message>
+    <message>
+        <source>the contour of {1} intersects itself</source>
+        <translation>die Kontur von {1} schneidet sich selbst</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; ist eine Ausgabe dieses Laufs und kann nicht gelesen werden</translation>
     </message>

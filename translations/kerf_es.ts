@@ -7585,6 +7585,98 @@ solution</source>
 solución</translation>
     </message>
     <message>
+        <source>cycle {1}: the contour formula leaves no area to machine</source>
+        <translation>ciclo {1}: la fórmula de contorno no deja ninguna superficie que mecanizar</translation>
+    </message>
+    <message>
+        <source>parentheses nested too deep</source>
+        <translation>paréntesis anidados demasiado profundamente</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 or &apos;(&apos; expected</source>
+        <translation>se espera un descriptor de contorno QC1 ... QC65535 o &apos;(&apos;</translation>
+    </message>
+    <message>
+        <source>program name in quotes expected</source>
+        <translation>se espera el nombre del programa entre comillas</translation>
+    </message>
+    <message>
+        <source>DEPTH value expected</source>
+        <translation>se espera un valor para DEPTH</translation>
+    </message>
+    <message>
+        <source>unexpected text &apos;{1}&apos;</source>
+        <translation>texto inesperado &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 expected</source>
+        <translation>se espera un descriptor de contorno QC1 ... QC65535</translation>
+    </message>
+    <message>
+        <source>pocket P1 ... P9 or island I1 ... I9 expected</source>
+        <translation>se espera una cajera P1 ... P9 o una isla I1 ... I9</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF combines at most 9 subcontours</source>
+        <translation>CONTOUR DEF combina como máximo 9 subcontornos</translation>
+    </message>
+    <message>
+        <source>the first subcontour of CONTOUR DEF must be a pocket (P)</source>
+        <translation>el primer subcontorno de CONTOUR DEF debe ser una cajera (P)</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF needs a pocket P1 = &quot;program&quot;</source>
+        <translation>CONTOUR DEF necesita una cajera P1 = &quot;programa&quot;</translation>
+    </message>
+    <message>
+        <source>a contour formula combines at most 128 contours</source>
+        <translation>una fórmula de contorno combina como máximo 128 contornos</translation>
+    </message>
+    <message>
+        <source>QC{1} is not declared (DECLARE CONTOUR)</source>
+        <translation>QC{1} no está declarado (DECLARE CONTOUR)</translation>
+    </message>
+    <message>
+        <source>the contour formula is too long</source>
+        <translation>la fórmula de contorno es demasiado larga</translation>
+    </message>
+    <message>
+        <source>cannot read the contour program {1}: {2}</source>
+        <translation>no se puede leer el programa de contorno {1}: {2}</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has errors</source>
+        <translation>el programa de contorno {1} contiene errores</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour-definition program</source>
+        <translation>esta frase no está permitida en un programa de definición de contorno</translation>
+    </message>
+    <message>
+        <source>every contour needs a DEPTH when one has it (DEPTH0: the depth of cycle 20)</source>
+        <translation>cada contorno necesita DEPTH cuando uno lo tiene (DEPTH0: la profundidad del ciclo 20)</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no formula QC.. = ...</source>
+        <translation>el programa de contorno {1} no tiene fórmula QC.. = ...</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no contour</source>
+        <translation>el programa de contorno {1} no tiene contorno</translation>
+    </message>
+    <message>
+        <source>the contour of {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>el contorno de {1} está a más de 1.000.000 mm del origen</translation>
+    </message>
+    <message>
+        <source>the contour of {1} encloses no area</source>
+        <translation>el contorno de {1} no encierra ninguna superficie</translation>
+    </message>
+    <message>
+        <source>the contour of {1} intersects itself</source>
+        <translation>el contorno de {1} se corta a sí mismo</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; es una salida de esta ejecución y no se puede leer</translation>
     </message>

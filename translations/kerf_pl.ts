@@ -7588,6 +7588,98 @@ solution</source>
 rozwiązanie</translation>
     </message>
     <message>
+        <source>cycle {1}: the contour formula leaves no area to machine</source>
+        <translation>cykl {1}: formuła konturu nie pozostawia powierzchni do obróbki</translation>
+    </message>
+    <message>
+        <source>parentheses nested too deep</source>
+        <translation>nawiasy zagnieżdżone zbyt głęboko</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 or &apos;(&apos; expected</source>
+        <translation>oczekiwano deskryptora konturu QC1 ... QC65535 lub &apos;(&apos;</translation>
+    </message>
+    <message>
+        <source>program name in quotes expected</source>
+        <translation>oczekiwano nazwy programu w cudzysłowie</translation>
+    </message>
+    <message>
+        <source>DEPTH value expected</source>
+        <translation>oczekiwano wartości DEPTH</translation>
+    </message>
+    <message>
+        <source>unexpected text &apos;{1}&apos;</source>
+        <translation>nieoczekiwany tekst &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 expected</source>
+        <translation>oczekiwano deskryptora konturu QC1 ... QC65535</translation>
+    </message>
+    <message>
+        <source>pocket P1 ... P9 or island I1 ... I9 expected</source>
+        <translation>oczekiwano kieszeni P1 ... P9 lub wysepki I1 ... I9</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF combines at most 9 subcontours</source>
+        <translation>CONTOUR DEF łączy najwyżej 9 konturów częściowych</translation>
+    </message>
+    <message>
+        <source>the first subcontour of CONTOUR DEF must be a pocket (P)</source>
+        <translation>pierwszy kontur częściowy CONTOUR DEF musi być kieszenią (P)</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF needs a pocket P1 = &quot;program&quot;</source>
+        <translation>CONTOUR DEF wymaga kieszeni P1 = &quot;program&quot;</translation>
+    </message>
+    <message>
+        <source>a contour formula combines at most 128 contours</source>
+        <translation>formuła konturu łączy najwyżej 128 konturów</translation>
+    </message>
+    <message>
+        <source>QC{1} is not declared (DECLARE CONTOUR)</source>
+        <translation>QC{1} nie jest zadeklarowany (DECLARE CONTOUR)</translation>
+    </message>
+    <message>
+        <source>the contour formula is too long</source>
+        <translation>formuła konturu jest zbyt długa</translation>
+    </message>
+    <message>
+        <source>cannot read the contour program {1}: {2}</source>
+        <translation>nie można odczytać programu konturu {1}: {2}</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has errors</source>
+        <translation>program konturu {1} zawiera błędy</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour-definition program</source>
+        <translation>ten blok jest niedozwolony w programie definicji konturu</translation>
+    </message>
+    <message>
+        <source>every contour needs a DEPTH when one has it (DEPTH0: the depth of cycle 20)</source>
+        <translation>każdy kontur wymaga DEPTH, gdy jeden go ma (DEPTH0: głębokość z cyklu 20)</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no formula QC.. = ...</source>
+        <translation>program konturu {1} nie ma formuły QC.. = ...</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no contour</source>
+        <translation>program konturu {1} nie zawiera konturu</translation>
+    </message>
+    <message>
+        <source>the contour of {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>kontur {1} leży dalej niż 1 000 000 mm od punktu zerowego</translation>
+    </message>
+    <message>
+        <source>the contour of {1} encloses no area</source>
+        <translation>kontur {1} nie obejmuje żadnej powierzchni</translation>
+    </message>
+    <message>
+        <source>the contour of {1} intersects itself</source>
+        <translation>kontur {1} przecina sam siebie</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; jest wyjściem tego przebiegu i nie może być odczytany</translation>
     </message>

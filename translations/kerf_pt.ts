@@ -7585,6 +7585,98 @@ solution</source>
 solução</translation>
     </message>
     <message>
+        <source>cycle {1}: the contour formula leaves no area to machine</source>
+        <translation>ciclo {1}: a fórmula de contorno não deixa nenhuma área para maquinar</translation>
+    </message>
+    <message>
+        <source>parentheses nested too deep</source>
+        <translation>parênteses aninhados demasiado profundamente</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 or &apos;(&apos; expected</source>
+        <translation>esperado um descritor de contorno QC1 ... QC65535 ou &apos;(&apos;</translation>
+    </message>
+    <message>
+        <source>program name in quotes expected</source>
+        <translation>esperado o nome do programa entre aspas</translation>
+    </message>
+    <message>
+        <source>DEPTH value expected</source>
+        <translation>esperado um valor para DEPTH</translation>
+    </message>
+    <message>
+        <source>unexpected text &apos;{1}&apos;</source>
+        <translation>texto inesperado &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>a contour descriptor QC1 ... QC65535 expected</source>
+        <translation>esperado um descritor de contorno QC1 ... QC65535</translation>
+    </message>
+    <message>
+        <source>pocket P1 ... P9 or island I1 ... I9 expected</source>
+        <translation>esperada uma caixa P1 ... P9 ou uma ilha I1 ... I9</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF combines at most 9 subcontours</source>
+        <translation>CONTOUR DEF combina no máximo 9 subcontornos</translation>
+    </message>
+    <message>
+        <source>the first subcontour of CONTOUR DEF must be a pocket (P)</source>
+        <translation>o primeiro subcontorno de CONTOUR DEF tem de ser uma caixa (P)</translation>
+    </message>
+    <message>
+        <source>CONTOUR DEF needs a pocket P1 = &quot;program&quot;</source>
+        <translation>CONTOUR DEF precisa de uma caixa P1 = &quot;programa&quot;</translation>
+    </message>
+    <message>
+        <source>a contour formula combines at most 128 contours</source>
+        <translation>uma fórmula de contorno combina no máximo 128 contornos</translation>
+    </message>
+    <message>
+        <source>QC{1} is not declared (DECLARE CONTOUR)</source>
+        <translation>QC{1} não está declarado (DECLARE CONTOUR)</translation>
+    </message>
+    <message>
+        <source>the contour formula is too long</source>
+        <translation>a fórmula de contorno é demasiado longa</translation>
+    </message>
+    <message>
+        <source>cannot read the contour program {1}: {2}</source>
+        <translation>não é possível ler o programa de contorno {1}: {2}</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has errors</source>
+        <translation>o programa de contorno {1} contém erros</translation>
+    </message>
+    <message>
+        <source>this block is not allowed in a contour-definition program</source>
+        <translation>este bloco não é permitido num programa de definição de contorno</translation>
+    </message>
+    <message>
+        <source>every contour needs a DEPTH when one has it (DEPTH0: the depth of cycle 20)</source>
+        <translation>cada contorno precisa de DEPTH quando um o tem (DEPTH0: a profundidade do ciclo 20)</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no formula QC.. = ...</source>
+        <translation>o programa de contorno {1} não tem fórmula QC.. = ...</translation>
+    </message>
+    <message>
+        <source>the contour program {1} has no contour</source>
+        <translation>o programa de contorno {1} não tem contorno</translation>
+    </message>
+    <message>
+        <source>the contour of {1} lies beyond 1,000,000 mm from the origin</source>
+        <translation>o contorno de {1} está a mais de 1.000.000 mm da origem</translation>
+    </message>
+    <message>
+        <source>the contour of {1} encloses no area</source>
+        <translation>o contorno de {1} não encerra nenhuma área</translation>
+    </message>
+    <message>
+        <source>the contour of {1} intersects itself</source>
+        <translation>o contorno de {1} intersecta-se a si próprio</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; é uma saída desta execução e não pode ser lido</translation>
     </message>

@@ -47,6 +47,25 @@ struct SubContour {
     int label = 0;
 };
 
+// The contour formula (spec §8) instead of cycle 14: subcontours (all pockets unless `island`,
+// the simple formula's I<n>) and how they combine, in postfix order.
+struct FormulaContour {
+    ClosedContour contour;
+    // How deep the area reaches below the surface (0: cycle 20's depth); for an island the depth
+    // of its top below the surface (0: the island reaches up to the surface).
+    double depth = 0.0;
+    bool island = false;
+};
+struct FormulaStep {
+    enum class Kind : uint8_t { Contour, Union, Intersection, Difference, SymmetricDifference };
+    Kind kind = Kind::Contour;
+    size_t contour = 0;  // index into `contours` for Kind::Contour
+};
+struct ContourFormula {
+    std::vector<FormulaContour> contours;
+    std::vector<FormulaStep> steps;
+};
+
 // Cycles 25, 275 and 276: the first contour subprogram of cycle 14 as a path, open or closed, as
 // programmed (25: the contour to follow; 275: the slot's centre line).
 struct ContourTrain {
@@ -75,6 +94,7 @@ struct CycleContext {
     // (null without it), the tools of the table by number (Q13, Q18; R without DR) and the
     // radius of the tool that last roughed this contour (cycle 22; 0: none).
     std::vector<SubContour> contours;
+    std::optional<ContourFormula> formula;  // SEL CONTOUR or CONTOUR DEF instead of cycle 14
     const CycleValues* contourData = nullptr;
     std::function<std::optional<ToolInfo>(int)> toolByNumber;
     double roughingRadius = 0.0;

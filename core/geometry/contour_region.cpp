@@ -221,9 +221,15 @@ private:
 
     bool edgeOn(size_t piece, size_t edge) const {
         const Piece& p = m_pieces[piece];
+        return p.holds(point(edge)) && edgeGoesOn(piece, edge);
+    }
+    // The rest of edgeOn for an edge whose start the piece is known to hold (it held the edge
+    // before): the hot path of long runs along flattened arcs.
+    bool edgeGoesOn(size_t piece, size_t edge) const {
+        const Piece& p = m_pieces[piece];
         const Vec2 a = point(edge);
         const Vec2 b = point(edge + 1);
-        return p.holds(a) && p.holds(b) && p.holds((a + b) / 2.0);
+        return p.holds(b) && p.holds((a + b) / 2.0);
     }
 
     // Greedy: each run goes on while some piece holds all its edges (fewest runs).
@@ -235,7 +241,7 @@ private:
             if (!runs.empty()) {
                 std::vector<size_t> still;
                 for (size_t p : runs.back().pieces) {
-                    if (edgeOn(p, edge)) still.push_back(p);
+                    if (edgeGoesOn(p, edge)) still.push_back(p);
                 }
                 if (!still.empty()) {
                     runs.back().pieces = std::move(still);

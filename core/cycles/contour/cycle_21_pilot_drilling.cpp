@@ -34,7 +34,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     ContourData d;
     if (auto e = readContourData(21, ctx, d)) return e;
     ContourArea area;
-    if (auto e = combineContours(21, ctx, area)) return e;
+    if (auto e = combineContours(21, ctx, d, area)) return e;
     if (area.islandsOnly) {
         return contourError(21, KERF_TR_NOOP("cycle {1} needs a pocket among the contours of "
                                              "cycle 14"));
@@ -59,18 +59,29 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (auto e = planClearing(21, region, d.overlap * rougher->radius, d.climb, planningStart(ctx),
                               passes))
         return e;
-    const double holeDepth = d.depth - d.floorAllowance;
-    std::vector<double> depths;
-    if (auto e = infeedDepths(21, 0.0, holeDepth, v.number(10), depths)) return e;
-    if (depths.empty()) return std::nullopt;
-    const double t = advancedStop(holeDepth);
+    // A hole goes down to the deepest level whose tool-centre region holds it (contour formula
+    // with DEPTH), less the floor allowance.
+    std::vector<Region> levelRegions{region};
+    for (size_t k = 1; k < area.levels.size(); ++k)
+        levelRegions.push_back(toolCentreRegion(area, rougher->radius + d.sideAllowance, k));
     const Feed feed = v.feed(11);
 
-    if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
+    bool started = false;
     for (const ClearingPass& pass : passes) {
         if (pass.straightLink) continue;
+        const Vec2 at = pass.path.segments.front().start;
+        size_t level = 0;
+        while (level + 1 < levelRegions.size() && levelRegions[level + 1].contains(at))
+            ++level;
+        const double holeDepth = area.levels[level].bottom - d.floorAllowance;
+        std::vector<double> depths;
+        if (auto e = infeedDepths(21, 0.0, holeDepth, v.number(10), depths)) return e;
+        if (depths.empty()) continue;
+        const double t = advancedStop(holeDepth);
+        if (!started && (path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
+        started = true;
         if ((path.w() - d.aboveSurface()) * d.up < 0.0) path.rapidW(d.aboveSurface());
-        path.rapidUv(pass.path.segments.front().start);
+        path.rapidUv(at);
         path.rapidW(d.aboveSurface());
         for (size_t i = 0; i < depths.size(); ++i) {
             if (i > 0) {
@@ -81,6 +92,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         }
         path.rapidW(d.aboveSurface());
     }
+    if (!started) return std::nullopt;
     path.rapidW(d.clearanceHeight);
     return std::nullopt;
 }

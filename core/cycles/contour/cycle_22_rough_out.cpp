@@ -1,5 +1,6 @@
 // Cycle 22 ROUGH-OUT (spec §6): the area of cycle 14 cleared contour-parallel from the inside
 // out at each plunging depth, islands milled around; with Q18 only what a coarser tool left.
+#include <algorithm>
 #include <cmath>
 
 #include "core/cycles/contour/sl_machining.h"
@@ -66,7 +67,7 @@ std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& c
 // With a coarse roughing tool: only where it could not reach (the rest material, which does not
 // know the coarse tool's DR), widened by the tool radius so the tool reaches all of it.
 std::optional<CycleError> restRegion(const CycleValues& v, const CycleContext& ctx,
-                                     const ContourArea& area, const ContourData& d,
+                                     const ContourArea& area, size_t level, const ContourData& d,
                                      Region& region) {
     const int number = static_cast<int>(v.number(18));
     std::optional<ToolInfo> coarse = ctx.toolByNumber ? ctx.toolByNumber(number) : std::nullopt;
@@ -75,10 +76,26 @@ std::optional<CycleError> restRegion(const CycleValues& v, const CycleContext& c
                           KERF_TR_NOOP("cycle {1}: tool {2} ({3}) is not in the tool table"),
                           {"22", std::to_string(number), "Q18"}};
     }
-    const Region coarseCentre = toolCentreRegion(area, coarse->radius + d.sideAllowance);
+    const Region coarseCentre = toolCentreRegion(area, coarse->radius + d.sideAllowance, level);
     const Region cleared = offsetRegion(coarseCentre, coarse->radius);
-    const Region rest = subtract(offsetRegion(area.area, -d.sideAllowance), cleared);
+    const Region rest = subtract(offsetRegion(area.levels[level].area, -d.sideAllowance), cleared);
     region = rest.empty() ? Region{} : intersect(region, offsetRegion(rest, ctx.tool.radius));
+    return std::nullopt;
+}
+
+// The roughing depths: Q10 steps to the deepest floor less Q4, and each shallower level's floor
+// less Q4 (a contour formula with DEPTH), so that every floor keeps its allowance.
+std::optional<CycleError> roughingDepths(const CycleValues& v, const ContourArea& area,
+                                         const ContourData& d, std::vector<double>& out) {
+    if (auto e = infeedDepths(22, 0.0, area.deepest() - d.floorAllowance, v.number(10), out))
+        return e;
+    for (size_t k = 0; k + 1 < area.levels.size(); ++k) {
+        const double floor = area.levels[k].bottom - d.floorAllowance;
+        if (floor > 1e-9) out.push_back(floor);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end(), [](double a, double b) { return b - a < 1e-9; }),
+              out.end());
     return std::nullopt;
 }
 
@@ -86,7 +103,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     ContourData d;
     if (auto e = readContourData(22, ctx, d)) return e;
     ContourArea area;
-    if (auto e = combineContours(22, ctx, area)) return e;
+    if (auto e = combineContours(22, ctx, d, area)) return e;
     if (area.islandsOnly) {
         return contourError(22, KERF_TR_NOOP("cycle {1} needs a pocket among the contours of "
                                              "cycle 14"));
@@ -101,30 +118,42 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (auto e = plungeFeed(v, ctx, plunge)) return e;
     const Feed mill = v.feed(12);
     const Feed retract = v.feedOr(208, 12);
-    Region region = toolCentreRegion(area, radius + d.sideAllowance);
-    if (region.empty()) return pocket::toolTooLarge(22);
-    const bool rest = v.number(18) > 0.0;
-    if (rest) {
-        if (auto e = restRegion(v, ctx, area, d, region)) return e;
-    }
-    std::vector<ClearingPass> passes;
-    if (!region.empty()) {
-        if (auto e =
-                planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
-            return e;
-    }
+    // The clearing of each level, planned when a depth first needs it.
+    std::vector<std::optional<std::vector<ClearingPass>>> plans(area.levels.size());
+    auto plan = [&](size_t level) -> std::optional<CycleError> {
+        if (plans[level]) return std::nullopt;
+        Region region = toolCentreRegion(area, radius + d.sideAllowance, level);
+        if (region.empty() && level == 0) return pocket::toolTooLarge(22);
+        if (v.number(18) > 0.0 && !region.empty()) {
+            if (auto e = restRegion(v, ctx, area, level, d, region)) return e;
+        }
+        std::vector<ClearingPass> passes;
+        if (!region.empty()) {
+            if (auto e = planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx),
+                                      passes))
+                return e;
+        }
+        plans[level] = std::move(passes);
+        return std::nullopt;
+    };
+    if (auto e = plan(0)) return e;
     std::vector<double> depths;
-    if (auto e = infeedDepths(22, 0.0, d.depth - d.floorAllowance, v.number(10), depths)) return e;
-    if (passes.empty() || depths.empty()) return std::nullopt;
+    if (auto e = roughingDepths(v, area, d, depths)) return e;
+    if (depths.empty()) return std::nullopt;
 
-    if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
+    bool started = false;
     double previous = 0.0;
     for (double depth : depths) {
-        runClearing(path, passes, d, d.at(depth), d.at(previous) + d.up * d.setUpClearance, mill,
-                    plunge);
+        const size_t level = levelAt(area, depth + d.floorAllowance);
+        if (auto e = plan(level)) return e;
+        if (plans[level]->empty()) continue;
+        if (!started && (path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
+        started = true;
+        runClearing(path, *plans[level], d, d.at(depth), d.at(previous) + d.up * d.setUpClearance,
+                    mill, plunge);
         previous = depth;
     }
-    path.moveW(d.clearanceHeight, retract);
+    if (started) path.moveW(d.clearanceHeight, retract);
     return std::nullopt;
 }
 

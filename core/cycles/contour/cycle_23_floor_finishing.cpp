@@ -17,11 +17,22 @@ constexpr ParameterDescriptor kParameters[] = {
     common::addedLater(kRetractionFeed),
 };
 
+// The tool-centre region over the floor of one level: where the level's area does not go deeper
+// (the tool may reach over the deeper part, which is already finished lower down).
+Region floorRegion(const ContourArea& area, size_t level, double inset, double radius) {
+    Region region = toolCentreRegion(area, inset, level);
+    if (level + 1 < area.levels.size() && !region.empty()) {
+        const Region floor = subtract(area.levels[level].area, area.levels[level + 1].area);
+        region = floor.empty() ? Region{} : intersect(region, offsetRegion(floor, radius));
+    }
+    return region;
+}
+
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
     ContourData d;
     if (auto e = readContourData(23, ctx, d)) return e;
     ContourArea area;
-    if (auto e = combineContours(23, ctx, area)) return e;
+    if (auto e = combineContours(23, ctx, d, area)) return e;
     if (area.islandsOnly) {
         return contourError(23, KERF_TR_NOOP("cycle {1} needs a pocket among the contours of "
                                              "cycle 14"));
@@ -32,17 +43,23 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                           KERF_TR_NOOP("cycle {1} needs a tool with a radius greater than 0"),
                           {"23"}};
     }
-    const Region region = toolCentreRegion(area, radius + d.sideAllowance);
-    if (region.empty()) return pocket::toolTooLarge(23);
-    std::vector<ClearingPass> passes;
-    if (auto e = planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
-        return e;
+    if (toolCentreRegion(area, radius + d.sideAllowance).empty()) return pocket::toolTooLarge(23);
 
     if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
-    // Down at rapid to the set-up clearance above the roughed floor, then at Q11 to the floor.
-    const double roughFloor = d.at(d.depth - d.floorAllowance);
-    runClearing(path, passes, d, d.at(d.depth), roughFloor + d.up * d.setUpClearance, v.feed(12),
-                v.feed(11));
+    // Each floor, shallowest first: down at rapid to the set-up clearance above the roughed
+    // floor, then at Q11 to the floor.
+    for (size_t level = 0; level < area.levels.size(); ++level) {
+        const Region region = floorRegion(area, level, radius + d.sideAllowance, radius);
+        if (region.empty()) continue;
+        std::vector<ClearingPass> passes;
+        if (auto e =
+                planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
+            return e;
+        const double bottom = area.levels[level].bottom;
+        const double roughFloor = d.at(bottom - d.floorAllowance);
+        runClearing(path, passes, d, d.at(bottom), roughFloor + d.up * d.setUpClearance, v.feed(12),
+                    v.feed(11));
+    }
     path.moveW(d.clearanceHeight, v.feedOr(208, 12));
     return std::nullopt;
 }

@@ -50,42 +50,48 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     ContourData d;
     if (auto e = readContourData(24, ctx, d)) return e;
     ContourArea area;
-    if (auto e = combineContours(24, ctx, area)) return e;
+    if (auto e = combineContours(24, ctx, d, area)) return e;
     const double radius = ctx.tool.radius;
     const double allowance = v.number(14);
     // Spec: Q14 + R(finishing) < Q3 + R(roughing), R(roughing) = 0 without cycle 22 before.
     if (radius <= 0.0 || allowance + radius >= d.sideAllowance + ctx.roughingRadius) {
         return pocket::toolTooLarge(24);
     }
-    const Region region = toolCentreRegion(area, radius + allowance);
-    if (region.empty()) return pocket::toolTooLarge(24);
+    if (toolCentreRegion(area, radius + allowance).empty()) return pocket::toolTooLarge(24);
     bool climb = v.integer(9) >= 0;
     if (ctx.mirroredMain != ctx.mirroredSecondary) climb = !climb;
-    std::vector<double> depths;
-    if (auto e = infeedDepths(24, 0.0, d.depth, v.number(10), depths)) return e;
     const Feed plunge = v.feed(11);
     const Feed mill = v.feed(12);
 
     if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
-    for (const ClosedContour& boundary : region.boundaries) {
-        const ClosedContour ring = climb ? boundary : boundary.reversed();
-        // The region, where the tool comes from, lies left of its own boundaries.
-        const Vec2 t = ring.segments.front().startTangent();
-        const Vec2 inward = climb ? Vec2(-t.y(), t.x()) : Vec2(t.y(), -t.x());
-        const double arcRadius = approachRadius(
-            region, ring, inward, std::max(d.sideAllowance - allowance, 0.0) + radius / 2.0);
-        const Vec2 entry = pocket::approachStart(ring, inward, arcRadius);
-        double previous = 0.0;
-        for (double depth : depths) {
-            if ((path.w() - d.aboveSurface()) * d.up < 0.0) path.rapidW(d.aboveSurface());
-            path.rapidUv(entry);
-            path.rapidW(d.at(previous) + d.up * d.setUpClearance);
-            path.moveW(d.at(depth), plunge);
-            if (arcRadius > 0.0) pocket::approachArc(path, ring, inward, arcRadius, mill);
-            followPath(path, ring, mill);
-            if (arcRadius > 0.0) pocket::departureArc(path, ring, inward, arcRadius, mill);
-            previous = depth;
+    // Each level's walls from the level above down to its bottom (one level without DEPTHs).
+    double top = 0.0;
+    for (size_t level = 0; level < area.levels.size(); ++level) {
+        const Region region = toolCentreRegion(area, radius + allowance, level);
+        std::vector<double> depths;
+        if (auto e = infeedDepths(24, top, area.levels[level].bottom, v.number(10), depths))
+            return e;
+        for (const ClosedContour& boundary : region.boundaries) {
+            const ClosedContour ring = climb ? boundary : boundary.reversed();
+            // The region, where the tool comes from, lies left of its own boundaries.
+            const Vec2 t = ring.segments.front().startTangent();
+            const Vec2 inward = climb ? Vec2(-t.y(), t.x()) : Vec2(t.y(), -t.x());
+            const double arcRadius = approachRadius(
+                region, ring, inward, std::max(d.sideAllowance - allowance, 0.0) + radius / 2.0);
+            const Vec2 entry = pocket::approachStart(ring, inward, arcRadius);
+            double previous = top;
+            for (double depth : depths) {
+                if ((path.w() - d.aboveSurface()) * d.up < 0.0) path.rapidW(d.aboveSurface());
+                path.rapidUv(entry);
+                path.rapidW(d.at(previous) + d.up * d.setUpClearance);
+                path.moveW(d.at(depth), plunge);
+                if (arcRadius > 0.0) pocket::approachArc(path, ring, inward, arcRadius, mill);
+                followPath(path, ring, mill);
+                if (arcRadius > 0.0) pocket::departureArc(path, ring, inward, arcRadius, mill);
+                previous = depth;
+            }
         }
+        top = area.levels[level].bottom;
     }
     path.rapidW(d.clearanceHeight);
     return std::nullopt;

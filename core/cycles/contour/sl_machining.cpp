@@ -38,13 +38,40 @@ std::optional<CycleError> readContourData(int cycle, const CycleContext& ctx, Co
     out.surface = v.number(5);
     out.setUpClearance = v.number(6);
     out.clearanceHeight = v.number(7);
+    out.cornerRadius = v.number(8);
     // A mirror image reverses the paths; the direction is swapped to keep the milling type.
     out.climb = v.integer(9) >= 0;
     if (ctx.mirroredMain != ctx.mirroredSecondary) out.climb = !out.climb;
     return std::nullopt;
 }
 
-std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx, ContourArea& out) {
+size_t levelAt(const ContourArea& area, double depthBelow) {
+    for (size_t k = 0; k < area.levels.size(); ++k) {
+        if (area.levels[k].bottom >= depthBelow - 1e-9) return k;
+    }
+    return area.levels.size() - 1;
+}
+
+namespace {
+
+std::optional<CycleError> formulaArea(int cycle, const ContourFormula& formula,
+                                      const ContourData& data, ContourArea& out) {
+    out.levels = formulaLevels(formula, data.depth);
+    out.islandsOnly = false;
+    if (out.levels.empty()) {
+        return contourError(cycle, KERF_TR_NOOP("cycle {1}: the contour formula leaves no area "
+                                                "to machine"));
+    }
+    out.area = out.levels.front().area;
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx,
+                                          const ContourData& data, ContourArea& out) {
+    out.cornerRadius = data.cornerRadius;
+    if (ctx.formula) return formulaArea(cycle, *ctx.formula, data, out);
     if (ctx.contours.empty()) {
         return contourError(cycle, KERF_TR_NOOP("cycle {1} needs cycle 14 CONTOUR before it"));
     }
@@ -70,6 +97,7 @@ std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx, Co
     if (!pockets) {
         out.area = islands;
         out.islandsOnly = true;
+        out.levels = {AreaLevel{data.depth, out.area}};
         return std::nullopt;
     }
     out.area = islands.empty() ? *pockets : subtract(*pockets, islands);
@@ -78,11 +106,17 @@ std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx, Co
         return contourError(cycle, KERF_TR_NOOP("cycle {1}: the islands of cycle 14 cover the "
                                                 "whole pocket"));
     }
+    out.levels = {AreaLevel{data.depth, out.area}};
     return std::nullopt;
 }
 
-Region toolCentreRegion(const ContourArea& area, double inset) {
-    if (!area.islandsOnly) return offsetRegion(area.area, -inset);
+Region toolCentreRegion(const ContourArea& area, double inset, size_t level) {
+    if (!area.islandsOnly) {
+        const Region centre = offsetRegion(area.levels[level].area, -inset);
+        if (area.cornerRadius <= 0.0 || centre.empty()) return centre;
+        const Region core = offsetRegion(centre, -area.cornerRadius);
+        return core.empty() ? core : offsetRegion(core, area.cornerRadius);
+    }
     // Around islands only: the tool centre stays outside them, the free side on the left.
     Region around = offsetRegion(area.area, inset);
     for (ClosedContour& c : around.boundaries)
@@ -149,6 +183,7 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
 }
 
 Vec2 planningStart(const CycleContext& ctx) {
+    if (ctx.formula) return ctx.formula->contours.front().contour.segments.front().start;
     return ctx.contours.front().contour.segments.front().start;
 }
 

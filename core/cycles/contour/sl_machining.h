@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/cycles/contour/formula_area.h"
 #include "core/cycles/cycle_context.h"
 #include "core/cycles/cycle_path.h"
 #include "core/geometry/contour_region.h"
@@ -20,7 +21,8 @@ struct ContourData {     // cycle 20
     double surface = 0.0;
     double setUpClearance = 0.0;
     double clearanceHeight = 0.0;
-    bool climb = true;  // Q9, after a mirror image
+    double cornerRadius = 0.0;  // Q8: inside corners of the tool-centre paths rounded
+    bool climb = true;          // Q9, after a mirror image
 
     // The tool-axis coordinate `depthBelow` (>= 0) into the material.
     double at(double depthBelow) const { return surface - up * depthBelow; }
@@ -31,16 +33,27 @@ std::optional<CycleError> readContourData(int cycle, const CycleContext& context
 
 // The machined area: pockets superimposed in cycle 14's order (a pocket adds its area, or keeps
 // only the common area when the first pocket starts inside it), islands taken away. Without
-// any pocket, `islandsOnly` is set and `area` is the union of the islands.
+// any pocket, `islandsOnly` is set and `area` is the union of the islands. With a contour
+// formula the area of its formula; `levels` holds it level by level (one level down to cycle
+// 20's depth unless subcontours have their own DEPTH).
 struct ContourArea {
-    Region area;
+    Region area;  // at the surface
     bool islandsOnly = false;
+    double cornerRadius = 0.0;  // cycle 20's Q8
+    std::vector<AreaLevel> levels;
+    double deepest() const { return levels.back().bottom; }
 };
-std::optional<CycleError> combineContours(int cycle, const CycleContext& context, ContourArea& out);
+std::optional<CycleError> combineContours(int cycle, const CycleContext& context,
+                                          const ContourData& data, ContourArea& out);
 
-// Where the tool centre may be: `inset` from every wall (outside the islands when islands only),
-// with the area left of every boundary.
-Region toolCentreRegion(const ContourArea& area, double inset);
+// Where the tool centre may be at one of the area's levels: `inset` from every wall (outside the
+// islands when islands only), with the area left of every boundary. Its convex corners (the
+// inside corners of a pocket) are rounded with Q8: every point of it lies on a disc of radius Q8
+// inside it.
+Region toolCentreRegion(const ContourArea& area, double inset, size_t level = 0);
+
+// The level of the area at `depthBelow` the surface.
+size_t levelAt(const ContourArea& area, double depthBelow);
 
 // Infeed depths (> 0) from `from` to `to` in steps of at most |step| (0: one), the last at `to`.
 std::optional<CycleError> infeedDepths(int cycle, double from, double to, double step,

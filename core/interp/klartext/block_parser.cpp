@@ -705,6 +705,10 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         out.statement = b;
         return true;
     }
+    if (head == "QC" || ((head == "SEL" || head == "DECLARE") && cur.peekKeyword("CONTOUR")) ||
+        (head == "CONTOUR" && cur.peekKeyword("DEF"))) {
+        return parseContourFormula(head, line, head == "QC" ? headAt : cur.position(), out);
+    }
     if (head == "Q" || head == "QL" || head == "QR" || head == "QS" || head == "DECLARE") {
         if (head == "DECLARE") {
             if (!cur.acceptKeyword("STRING")) return deferred("DECLARE");

@@ -39,6 +39,10 @@ private:
     // FK free contour blocks (block_parser_fk.cpp); `head` is FPOL, FL, FLT, FC, FCT or FSELECT.
     bool parseFk(std::string_view head, const program::LogicalLine& line, size_t at,
                  ParsedBlock& out);
+    // Contour formula blocks (block_parser_contour_formula.cpp); `head` is SEL or DECLARE (before
+    // CONTOUR), CONTOUR (before DEF) or QC, whose `at` is where QC starts.
+    bool parseContourFormula(std::string_view head, const program::LogicalLine& line, size_t at,
+                             ParsedBlock& out);
     bool failAt(size_t offset, const char* code, const char* messageTemplate,
                 std::vector<std::string> args = {});
 

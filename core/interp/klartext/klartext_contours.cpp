@@ -22,7 +22,17 @@ public:
     std::vector<canon::Command> commands;
 };
 
-// Blocks a contour subprogram may hold: path functions and parameter calculations.
+// Coordinate transformations (datum shift, mirror image, rotation, scaling) may be programmed in
+// a contour subprogram (spec §8: they act on the following subprograms of the same call).
+bool isTransformation(const Statement& s) {
+    const auto* cycle = std::get_if<CycleDefinition>(&s);
+    if (cycle == nullptr || cycle->probe || cycle->subNumber < 0) return false;
+    return cycle->number == 7 || cycle->number == 8 || cycle->number == 10 || cycle->number == 11 ||
+           cycle->number == 26;
+}
+
+// Blocks a contour subprogram may hold: path functions, parameter calculations and
+// transformations.
 bool allowedInContour(const Statement& s) {
     return std::holds_alternative<Empty>(s) || std::holds_alternative<LinearBlock>(s) ||
            std::holds_alternative<CircleCenter>(s) || std::holds_alternative<CircleBlock>(s) ||
@@ -33,7 +43,19 @@ bool allowedInContour(const Statement& s) {
            std::holds_alternative<CircleTangentPolarBlock>(s) ||
            std::holds_alternative<QAssign>(s) || std::holds_alternative<QStringAssign>(s) ||
            std::holds_alternative<FkBlock>(s) || std::holds_alternative<FkPole>(s) ||
-           std::holds_alternative<FkSelect>(s);
+           std::holds_alternative<FkSelect>(s) || isTransformation(s);
+}
+
+// M functions of a contour subprogram have no effect (spec §8: "F and M are ignored"): the
+// machine state the cycle runs with stays as it was.
+Statement withoutMFunctions(const Statement& s) {
+    Statement copy = s;
+    std::visit(
+        [](auto& b) {
+            if constexpr (requires { b.words.m; }) b.words.m = MWords{};
+        },
+        copy);
+    return copy;
 }
 
 const Coordinates* coordinatesOf(const Statement& s) {
@@ -62,9 +84,10 @@ bool movesInPlane(const Statement& s) {
 
 // "CYCL DEF 14.1 CONTOUR LABEL 1/2/3" (KONTURLABEL1 /2, LABEL CONTORNO1/2 ...): the keyword is
 // language-dependent, the numbers after it are the labels.
+// The single-block form "CYCL DEF 14 CONTOUR LABEL 1/2/3" has the same text after the number.
 void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
-    if (def.subNumber != 1) return;
-    const std::string& text = def.rest;
+    if (def.subNumber != 1 && def.subNumber >= 0) return;
+    const std::string& text = def.subNumber == 1 ? def.rest : def.name;
     size_t at = text.find_first_of("0123456789");
     std::vector<int> labels;
     while (at != std::string::npos && at < text.size()) {
@@ -93,10 +116,13 @@ void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
         return;
     }
     m_contourLabels = std::move(labels);
+    m_contourSource = ContourSource::Labels;
 }
 
 bool KlartextInterpreter::captureContours(std::vector<cycles::SubContour>& out) {
     out.clear();
+    if (m_contourSource != ContourSource::Labels) return true;
+    m_subcontourFrame = cycles::CoordinateFrame{};
     for (int label : m_contourLabels) {
         LabelTarget target;
         target.number = label;
@@ -113,6 +139,7 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     out = cycles::ContourTrain{};
     out.labelCount = m_contourLabels.size();
     if (m_contourLabels.empty()) return true;  // the cycle asks for cycle 14
+    m_subcontourFrame = cycles::CoordinateFrame{};
     // Spec §6.1: cycle 25 uses the first label only, 275 and 276 need exactly one (they check).
     LabelTarget target;
     target.number = m_contourLabels.front();
@@ -122,7 +149,7 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     ChainRules rules;
     rules.approach = cycle == 275;
     rules.toolAxis = cycle == 276;
-    if (!captureChain(*position, rules, chain)) return false;
+    if (!captureChain(*m_levels.back().program, *position, rules, chain)) return false;
     if (!checkContourReach(chain.segments, *target.number)) return false;
     out.segments = std::move(chain.segments);
     out.side = chain.side == CompWord::Left ? 1 : chain.side == CompWord::Right ? -1 : 0;
@@ -135,8 +162,8 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     return true;
 }
 
-bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules rules,
-                                       CapturedChain& out) {
+bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPosition& position,
+                                       ChainRules rules, CapturedChain& out) {
     // The subprogram runs in program coordinates (the cycle's moves are transformed later),
     // without compensation (RL/RR only tell pocket from island), from the current position.
     const Pose programmed = m_programmed;
@@ -149,12 +176,14 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
     const canon::FeedMode feedMode = m_feedMode;
     const double feed = m_feed;
     const bool feedSet = m_feedSet;
+    const int lastCycle = m_lastCycleDefined;
     // Feeds of a contour subprogram do not matter (the cycle has its own): any will do.
     if (!m_feedSet) {
         m_feed = 1.0;
         m_feedSet = true;
     }
-    m_frame = cycles::CoordinateFrame{};
+    // Transformations of earlier subprograms of this call still act (m_subcontourFrame).
+    m_frame = m_subcontourFrame;
     m_comp = CompWord::Off;
     MoveCapture capture;
     interp::PathBuilder builder(capture);
@@ -166,7 +195,6 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
     m_fk = FkState{};
     m_fk.pole = outerFk.pole;
 
-    const ProgramFile& program = *m_levels.back().program;
     const Plane plane = workingPlane();
     const PlaneAxes axes = planeAxes(plane);
     BlockReader reader(program.source->text());
@@ -189,6 +217,8 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
         }
         m_at.blockNumber = parsed.blockNumber;
         const Statement& s = parsed.statement;
+        if (rules.formula && std::holds_alternative<BeginPgm>(s)) continue;
+        if (rules.formula && std::holds_alternative<EndPgm>(s)) break;
         if (std::holds_alternative<Label>(s)) {
             if (firstBlock) {
                 firstBlock = false;
@@ -203,19 +233,21 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
             break;
         }
         if (const Coordinates* c = coordinatesOf(s);
-            c != nullptr && c->has(axes.normal) && !rules.toolAxis) {
+            c != nullptr && c->has(axes.normal) && !rules.toolAxis && !rules.formula) {
             fail("contour", KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
             break;
         }
         if (firstMove && approach) out.approach = true;
         if (firstMove && movesInPlane(s) && !out.approach) {
             const auto* l = std::get_if<LinearBlock>(&s);
-            if (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second)) {
+            const bool polarLine = rules.formula && std::holds_alternative<LinePolarBlock>(s);
+            if (!polarLine &&
+                (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second))) {
                 fail("contour", KERF_TR_NOOP("the first block of a contour subprogram must be a "
                                              "straight line with both working-plane axes"));
                 break;
             }
-            if (rules.toolAxis && !l->coords.has(axes.normal)) {
+            if (rules.toolAxis && l != nullptr && !l->coords.has(axes.normal)) {
                 fail("contour", KERF_TR_NOOP("the first block of a 3-D contour subprogram must "
                                              "give the tool axis too"));
                 break;
@@ -225,15 +257,20 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
             fail("contour", KERF_TR_NOOP("a contour subprogram has more than 16384 blocks"));
             break;
         }
-        execute(s);
+        execute(withoutMFunctions(s));
         if (firstMove && (movesInPlane(s) || approach)) {
             firstMove = false;
             side = m_comp;
+            // A mirror image in the subprogram turns the contour: RL and RR swap with it.
+            if (m_frame.flipsOrientation(plane) &&
+                (side == CompWord::Left || side == CompWord::Right))
+                side = side == CompWord::Left ? CompWord::Right : CompWord::Left;
         }
     }
     finishFk();
     if (m_status != interp::RunStatus::Failed) checkPathError(builder.flush());
     m_capturePath = nullptr;
+    m_subcontourFrame = m_frame;
     m_fk = std::move(outerFk);
     m_programmed = programmed;
     m_comp = comp;
@@ -245,6 +282,7 @@ bool KlartextInterpreter::captureChain(const LabelPosition& position, ChainRules
     m_feedMode = feedMode;
     m_feed = feed;
     m_feedSet = feedSet;
+    m_lastCycleDefined = lastCycle;
     if (m_status == interp::RunStatus::Failed) return false;
 
     // The moves after the first (which leads to the start point) are the contour.
@@ -308,7 +346,7 @@ bool KlartextInterpreter::checkContourReach(const std::vector<PlanarSegment>& se
 bool KlartextInterpreter::captureContour(const LabelPosition& position, int label,
                                          cycles::SubContour& out) {
     CapturedChain chain;
-    if (!captureChain(position, ChainRules{}, chain)) return false;
+    if (!captureChain(*m_levels.back().program, position, ChainRules{}, chain)) return false;
     if (!checkContourReach(chain.segments, label)) return false;
     ClosedContour contour;
     contour.segments = std::move(chain.segments);

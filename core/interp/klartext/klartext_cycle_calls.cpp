@@ -173,7 +173,7 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
         if (d.number == 25 || d.number == 275 || d.number == 276) {
             if (!captureTrain(d.number, ctx.train)) return false;
             ctx.trainData = m_trainData ? &*m_trainData : nullptr;
-        } else if (!captureContours(ctx.contours)) {
+        } else if (!captureContours(ctx.contours) || !captureFormula(ctx.formula)) {
             return false;
         }
         ctx.contourData = m_contourData ? &*m_contourData : nullptr;

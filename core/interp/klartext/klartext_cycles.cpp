@@ -176,6 +176,10 @@ void KlartextInterpreter::executeCycleDefinition(const CycleDefinition& def) {
         executeOldCycle(def);
         return;
     }
+    if (def.number == 14) {  // the single-block form "CYCL DEF 14 CONTOUR LABEL 1/2"
+        contourLabels(def);
+        return;
+    }
     const cycles::CycleDescriptor* d = cycles::findCycle(def.number);
     if (d == nullptr || d->oldStyle) {
         fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),

@@ -85,6 +85,10 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const PatternDefinition& b) { self.executePatternDef(b); }
         void operator()(const SelectTable& b) { self.executeSelectTable(b); }
         void operator()(const SelectPattern& b) { self.executeSelectPattern(b); }
+        void operator()(const SelectContour& b) { self.executeSelectContour(b); }
+        void operator()(const DeclareContour& b) { self.executeDeclareContour(b); }
+        void operator()(const ContourFormula& b) { self.executeContourFormula(b); }
+        void operator()(const ContourDefinition& b) { self.executeContourDefinition(b); }
         void operator()(const CycleCall& b) { self.executeCycleCall(b); }
         void operator()(const FkBlock& b) { self.executeFk(b); }
         void operator()(const FkPole& b) { self.executeFkPole(b); }

@@ -269,6 +269,9 @@ private:
     struct ChainRules {
         bool approach = false;  // APPR/DEP allowed (275)
         bool toolAxis = false;  // tool-axis coordinates allowed (276)
+        // A contour-description program of the contour formula: the whole program, its first
+        // move L or LP, tool-axis coordinates and radius compensation of no account.
+        bool formula = false;
     };
     struct CapturedChain {
         std::vector<PlanarSegment> segments;
@@ -276,8 +279,20 @@ private:
         CompWord side = CompWord::Off;                   // of the first move
         bool approach = false;                           // the first move is an APPR block
     };
-    bool captureChain(const LabelPosition& position, ChainRules rules, CapturedChain& out);
+    bool captureChain(const ProgramFile& program, const LabelPosition& position, ChainRules rules,
+                      CapturedChain& out);
     bool checkContourReach(const std::vector<PlanarSegment>& segments, int label);
+    // The contour formula (klartext_contour_formula.cpp): SEL CONTOUR and CONTOUR DEF select
+    // the SL contour instead of cycle 14, whichever was programmed last.
+    void executeSelectContour(const SelectContour& select);
+    void executeDeclareContour(const DeclareContour& declare);
+    void executeContourFormula(const ContourFormula& formula);
+    void executeContourDefinition(const ContourDefinition& definition);
+    bool captureFormula(std::optional<cycles::ContourFormula>& out);
+    bool runDefinitionProgram(cycles::ContourFormula& out);
+    bool captureProgramContour(const std::string& name, const std::filesystem::path& folder,
+                               cycles::FormulaContour& out);
+    struct FormulaBuild;
     // Where moves go: the canonical stream, or a contour subprogram being read.
     interp::PathBuilder& activePath() { return m_capturePath ? *m_capturePath : m_path; }
     std::optional<double> lastValue(const CycleDefinition& def, const char* what);
@@ -496,6 +511,14 @@ private:
     std::optional<cycles::CycleValues> m_trainData;  // cycle 270
     double m_roughingRadius = 0.0;
     interp::PathBuilder* m_capturePath = nullptr;
+    enum class ContourSource : uint8_t { Labels, Formula, Simple };
+    ContourSource m_contourSource = ContourSource::Labels;
+    std::string m_contourProgram;            // SEL CONTOUR: the definition program, as programmed
+    std::filesystem::path m_contourFolder;   // and the folder of the program that selected it
+    ContourDefinition m_simpleContours;      // CONTOUR DEF
+    FormulaBuild* m_formulaBuild = nullptr;  // a definition program being read
+    // Transformations programmed in the contour subprograms of the cycle being called.
+    cycles::CoordinateFrame m_subcontourFrame;
     FkState m_fk;
     FkTrace* m_fkTrace = nullptr;
 };

@@ -83,6 +83,7 @@ void checkProgram(ProgramFile& program) {
     std::vector<PendingTool> toolCalls;
     std::set<int> definedNumbers;
     std::set<std::string> definedNames;
+    std::set<int> declaredContours;  // QC descriptors (contour formula)
     bool sawBegin = false, sawEnd = false, firstBlock = true;
     std::string beginName;
     int64_t lastNumber = -1;
@@ -151,6 +152,12 @@ void checkProgram(ProgramFile& program) {
         } else if (!line.text.empty()) {
             if (unnumbered++ == 0) firstUnnumberedLine = line.firstLine;
         }
+        // A program the block names (CALL PGM, the contour formula's programs) is checked too.
+        auto addCall = [&](const std::string& name) {
+            const size_t at = line.text.find(name);
+            program.calls.push_back({name, line.lineAt(at == std::string_view::npos ? 0 : at),
+                                     line.columnAt(at == std::string_view::npos ? 0 : at)});
+        };
         auto checkStatement = [&](const Statement& s) {
             if (auto missing = axisMissingFrom(s, program.machineAxes)) {
                 diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
@@ -210,10 +217,26 @@ void checkProgram(ProgramFile& program) {
                          KERF_TR_NOOP("label {1} is defined twice"), {labelText(label->target)});
                 }
             } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
-                const size_t at = line.text.find(callPgm->path);
-                program.calls.push_back({callPgm->path,
-                                         line.lineAt(at == std::string_view::npos ? 0 : at),
-                                         line.columnAt(at == std::string_view::npos ? 0 : at)});
+                addCall(callPgm->path);
+            } else if (const auto* select = std::get_if<SelectContour>(&s)) {
+                addCall(select->path);
+            } else if (const auto* declare = std::get_if<DeclareContour>(&s)) {
+                addCall(declare->path);
+                declaredContours.insert(declare->descriptor);
+            } else if (const auto* definition = std::get_if<ContourDefinition>(&s)) {
+                for (const ContourDefinition::Item& item : definition->items)
+                    addCall(item.path);
+            } else if (const auto* formula = std::get_if<ContourFormula>(&s)) {
+                for (const ContourFormulaStep& step : formula->steps) {
+                    if (step.kind == ContourFormulaStep::Kind::Descriptor &&
+                        !declaredContours.count(step.descriptor)) {
+                        diag(Severity::Error, "contour", line.lineAt(step.offset),
+                             line.columnAt(step.offset),
+                             KERF_TR_NOOP("QC{1} is not declared (DECLARE CONTOUR)"),
+                             {std::to_string(step.descriptor)});
+                    }
+                }
+                declaredContours.insert(formula->target);
             } else if (const auto* tool = std::get_if<ToolCall>(&s)) {
                 if (program.tools != nullptr) toolCalls.push_back({*tool, line.firstLine});
             } else if (const auto* def = std::get_if<ToolDef>(&s)) {

@@ -310,6 +310,36 @@ struct SelectTable {  // SEL TABLE "datum table"
 struct SelectPattern {  // SEL PATTERN "point table"
     std::string path;
 };
+// Contour formula (spec §8): SEL CONTOUR "definition program", DECLARE CONTOUR QC1 = "program"
+// DEPTH5, QC10 = (QC1 | QC2) \ QC3, and the simple CONTOUR DEF P1 = "..." I2 = "..." DEPTH5.
+struct SelectContour {
+    std::string path;
+};
+struct DeclareContour {
+    int descriptor = 0;
+    std::string path;
+    double depth = 0.0;  // 0: cycle 20's depth
+    bool hasDepth = false;
+};
+struct ContourFormulaStep {  // postfix: descriptors and the operators & | ^ \ (left to right)
+    enum class Kind : uint8_t { Descriptor, Union, Intersection, Difference, SymmetricDifference };
+    Kind kind = Kind::Descriptor;
+    int descriptor = 0;
+    size_t offset = 0;  // in the block text, for errors
+};
+struct ContourFormula {
+    int target = 0;
+    std::vector<ContourFormulaStep> steps;
+};
+struct ContourDefinition {
+    struct Item {
+        bool island = false;
+        int number = 0;
+        std::string path;
+        double depth = 0.0;
+    };
+    std::vector<Item> items;
+};
 struct CycleCall {
     enum class Kind : uint8_t { Plain, Pattern, Position };
     Kind kind = Kind::Plain;
@@ -324,8 +354,8 @@ using Statement =
                  CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
                  ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
                  TableAccess, CycleDefinition, GlobalDefinition, PatternDefinition, SelectTable,
-                 SelectPattern, CycleCall, FkBlock, FkPole, FkSelect, PlaneBlock, TcpmBlock,
-                 Deferred>;
+                 SelectPattern, SelectContour, DeclareContour, ContourFormula, ContourDefinition,
+                 CycleCall, FkBlock, FkPole, FkSelect, PlaneBlock, TcpmBlock, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

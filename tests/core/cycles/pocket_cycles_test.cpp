@@ -1,6 +1,7 @@
 // Pocket, slot and stud cycles called directly: parameter effects and errors that the golden
 // cases (tests/golden/klartext/cycle_25x_*) and the material checks
 // (tests/graphics/pocket_material_test.cpp) do not show. Values derived by hand in the comments.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -300,6 +301,34 @@ TEST(PocketCycles, PolygonStudStartsBesideTheBlankOnASideNormal) {
     ASSERT_TRUE(error);
     EXPECT_EQ(error->code, "cycle-parameter");
     EXPECT_TRUE(none.moves.empty());
+}
+
+// 258 with a negative side allowance (spec: allowed): the hexagon of the test above, Q368 -0.5,
+// roughing and finishing: the last pass comes to 20 + R4 - 0.5 = 23.5 on +X (the polygon made
+// 0.5 smaller), there is no finishing ring at 24, and the start point stays 36 beside the blank.
+TEST(PocketCycles, PolygonStudWithNegativeSideAllowanceIsMadeSmaller) {
+    const CycleDescriptor* d = findCycle(258);
+    ASSERT_NE(d, nullptr);
+    const auto q368 = std::find_if(d->parameters.begin(), d->parameters.end(),
+                                   [](const ParameterDescriptor& p) { return p.q == 368; });
+    ASSERT_NE(q368, d->parameters.end());
+    EXPECT_LT(q368->min, -0.5);
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {573, 0},   {571, 40}, {222, 60}, {572, 6}, {224, 30},  {220, 0},  {368, -0.5},
+        {207, 500}, {351, 1},  {201, -5}, {202, 5}, {206, 150}, {200, 2},  {203, 0},
+        {204, 20},  {370, 1},  {215, 0},  {369, 0}, {338, 0},   {385, 500}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(258, v, toolR4(), out));
+    ASSERT_GE(out.moves.size(), 3u);
+    EXPECT_NEAR(out.moves[0].target.x(), 36.0, 1e-9);
+    double nearest = 1e9;
+    for (const Move& m : out.moves) {
+        if (m.kind != Move::Rapid) nearest = std::min(nearest, m.target.head<2>().norm());
+    }
+    EXPECT_NEAR(nearest, 23.5, 1e-9);
 }
 
 }  // namespace

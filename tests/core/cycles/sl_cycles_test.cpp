@@ -261,6 +261,34 @@ TEST(SlCycles, ErrorsWithoutContourOrDataAndForATooLargeTool) {
     EXPECT_EQ(tooLarge->code, "cycle-tool");
 }
 
+// Q8 rounds the inside corners of the tool-centre paths: a 60 x 40 pocket, tool R5, no
+// allowance: the outermost path is the rectangle |u| <= 25, |v| <= 15, its corners arcs of
+// radius 3 about (+-22, +-12) with Q8 = 3 (a quarter turn each), sharp without Q8.
+TEST(SlCycles, RoundingRadiusRoundsTheInsideCornersOfThePaths) {
+    CycleValues data = contourData(-5.0, 0.0, 0.0);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.contours.push_back({rectangle(-30, -20, 30, 20), false, 1});
+    ctx.contourData = &data;
+    Recorder sharp;
+    ASSERT_FALSE(run(22, roughOut(5.0), ctx, sharp));
+    data.set(8, 3.0);
+    Recorder rounded;
+    ASSERT_FALSE(run(22, roughOut(5.0), ctx, rounded));
+    for (const Vec2& corner : {Vec2(22, 12), Vec2(-22, 12), Vec2(-22, -12), Vec2(22, -12)}) {
+        EXPECT_NEAR(rounded.turnAbout(corner, 3.0, -5.0), kPi / 2.0, 1e-9) << corner.transpose();
+        EXPECT_EQ(sharp.arcsAbout(corner, 3.0, -5.0), 0u);
+    }
+    for (const Move& m : rounded.moves) {
+        // No point beyond the rounded corner: (|u| - 22)^2 + (|v| - 12)^2 <= 3^2 in the corners.
+        const double du = std::fabs(m.target.x()) - 22.0, dv = std::fabs(m.target.y()) - 12.0;
+        if (du > 0.0 && dv > 0.0) {
+            EXPECT_LE(std::hypot(du, dv), 3.0 + 1e-9);
+        }
+    }
+}
+
 // Spec §6.2 with the circles of the seed: pocket A (r 25 about X35 Y50) and B (about X65).
 TEST(SlCycles, SuperimposedPocketsUnionIntersectionDifference) {
     const CycleValues data = contourData(-10.0, 0.0, 0.0);
@@ -271,16 +299,18 @@ TEST(SlCycles, SuperimposedPocketsUnionIntersectionDifference) {
     // A starts at X10 (outside B): the sum.
     ctx.contours = {{startingNearest(circleAt(35.0), {10.0, 50.0}), false, 1},
                     {circleAt(65.0), false, 2}};
+    contour::ContourData d;
+    d.depth = 10.0;
     contour::ContourArea area;
-    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    ASSERT_FALSE(contour::combineContours(22, ctx, d, area));
     EXPECT_NEAR(area.area.area(), 2.0 * kPi * 625.0 - lens, 1e-6);
     // A starts at X60 (inside B): the intersection.
     ctx.contours[0].contour = startingNearest(circleAt(35.0), {60.0, 50.0});
-    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    ASSERT_FALSE(contour::combineContours(22, ctx, d, area));
     EXPECT_NEAR(area.area.area(), lens, 1e-6);
     // B an island: the difference.
     ctx.contours[1].island = true;
-    ASSERT_FALSE(contour::combineContours(22, ctx, area));
+    ASSERT_FALSE(contour::combineContours(22, ctx, d, area));
     EXPECT_NEAR(area.area.area(), kPi * 625.0 - lens, 1e-6);
 }
 

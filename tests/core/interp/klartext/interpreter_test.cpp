@@ -284,3 +284,39 @@ TEST_F(InterpreterTest, FuzzerFindingsGiveDiagnostics) {
 
 }  // namespace
 }  // namespace kerf::klartext
+
+namespace kerf::klartext {
+namespace {
+
+// Spec §8: M functions in a contour subprogram are ignored. The M8 of LBL 1 used to switch the
+// coolant on in the interpreter's state without a command, so END PGM then switched it off.
+TEST_F(InterpreterTest, MFunctionsOfAContourSubprogramHaveNoEffect) {
+    auto k = make();
+    const std::string text =
+        "0 BEGIN PGM P MM\n"
+        "1 TOOL DEF 1 L+0 R+4\n"
+        "2 TOOL CALL 1 Z S3000\n"
+        "3 L Z+100 R0 FMAX\n"
+        "4 CYCL DEF 14.0 CONTOUR\n"
+        "5 CYCL DEF 14.1 CONTOUR LABEL 1\n"
+        "6 CYCL DEF 20 CONTOUR DATA\n"
+        "  Q1=-5 ;DEPTH\n  Q2=1\n  Q3=+0\n  Q4=+0\n  Q5=+0\n  Q6=2\n"
+        "  Q7=+50\n  Q8=0\n  Q9=+1\n"
+        "7 CYCL DEF 22 ROUGH-OUT\n"
+        "  Q10=5\n  Q11=100\n  Q12=500\n  Q18=0\n  Q19=0\n"
+        "8 CYCL CALL M3\n"
+        "9 L Z+100 R0 FMAX M2\n"
+        "10 LBL 1\n"
+        "11 L X+10 Y+10 RL F200 M8\n"
+        "12 L X+30\n"
+        "13 L Y+30\n"
+        "14 L X+10\n"
+        "15 L Y+10\n"
+        "16 LBL 0\n"
+        "17 END PGM P MM\n";
+    ASSERT_EQ(runText(*k, text), interp::RunStatus::Finished);
+    EXPECT_TRUE(out.all<canon::CoolantControl>().empty());
+}
+
+}  // namespace
+}  // namespace kerf::klartext
