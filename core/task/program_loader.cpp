@@ -58,6 +58,7 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
     }
     settings.blockSkip = request.blockSkip ? 1 : 0;
     settings.presetInMachine = request.presetInMachine;
+    settings.userScreen = request.userScreen;
     auto interpreter = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
     loaded.streamOrigin = interpreter->streamOrigin();
     loaded.ready = load(*interpreter, request,
