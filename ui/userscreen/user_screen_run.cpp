@@ -62,29 +62,26 @@ void UserScreenRun::step() {
     NoOutput output;
     interp::Interpreter& interpreter = *m_program.interpreter;
     const interp::RunStatus status = interpreter.run(output, kBlocksPerTick);
-    if (m_screen->revision() != m_revision) {
+    bool ended = false;
+    if (status == interp::RunStatus::NeedsSync) {
+        if (m_screen->waiting() != fagor::UserScreen::Waiting::Nothing) {
+            m_timer.stop();
+            m_waitingForOperator = true;
+        } else {
+            // Another sync (a machine variable): the user channel does not move, go on.
+            interpreter.resume(interp::WorldSnapshot{interpreter.nominalPosition(), false, {}});
+        }
+    } else if (status != interp::RunStatus::BudgetUsed) {
+        m_timer.stop();
+        m_diagnostics = m_program.diagnostics();
+        ended = true;
+    }
+    // After the waiting state is known, so that the view shows what is asked for.
+    if (m_screen->revision() != m_revision || m_waitingForOperator || ended) {
         m_revision = m_screen->revision();
         emit changed();
     }
-    switch (status) {
-        case interp::RunStatus::BudgetUsed:
-            return;
-        case interp::RunStatus::NeedsSync:
-            if (m_screen->waiting() != fagor::UserScreen::Waiting::Nothing) {
-                m_timer.stop();
-                m_waitingForOperator = true;
-                return;
-            }
-            // Another sync (a machine variable): the user channel does not move, go on.
-            interpreter.resume(interp::WorldSnapshot{interpreter.nominalPosition(), false, {}});
-            return;
-        case interp::RunStatus::Finished:
-        case interp::RunStatus::Failed:
-            m_timer.stop();
-            m_diagnostics = m_program.diagnostics();
-            emit ended(status == interp::RunStatus::Failed);
-            return;
-    }
+    if (ended) emit this->ended(status == interp::RunStatus::Failed);
 }
 
 void UserScreenRun::resume() {

@@ -60,7 +60,7 @@ TEST_F(UserScreenRun, Ex12_19WritesTwoCycleCallsAndLeavesWithF7) {
     EXPECT_EQ(screen["inserted_blocks"],
               nlohmann::json::array({"( PCALL 1,X2,Y-3.5)", "( PCALL 2,A3,B1,C3)"}));
     EXPECT_TRUE(screen["left"].get<bool>());
-    EXPECT_EQ(screen["operator_inputs_used"].get<int>(), 10);
+    EXPECT_EQ(screen["operator_inputs_used"].get<int>(), 9);
     EXPECT_EQ(screen["inputs"][1].get<double>(), 3.0);  // the last cycle's A
     EXPECT_NE(out.find("inserted block: ( PCALL 2,A3,B1,C3)\n"), std::string::npos) << out;
 }
