@@ -73,6 +73,12 @@ void HeadlessOperator::noteBlockLimit(DiagnosticList& problems, uint64_t blocks)
         std::to_string(blocks)));
 }
 
+std::optional<Diagnostic> HeadlessOperator::dialectProblem(program::Dialect dialect) const {
+    if (!active() || dialect == program::Dialect::Fagor) return std::nullopt;
+    return Diagnostic::make(Severity::Error, "setup", m_program, 0, 0,
+                            KERF_TR_NOOP("--user-screen runs FAGOR customisation programs only"));
+}
+
 void HeadlessOperator::print(std::ostream& out) const {
     out << m_screen->describe();
 }

@@ -12,6 +12,7 @@
 #include "app/runner/run_options.h"
 #include "core/base/diagnostic.h"
 #include "core/interp/fagor/user_screen.h"
+#include "core/program/dialect.h"
 
 namespace kerf::app {
 
@@ -33,6 +34,8 @@ public:
     void noteBlockLimit(DiagnosticList& problems, uint64_t blocks) const;
     void print(std::ostream& out) const;
     void addToReport(nlohmann::json& report) const;
+    // A user screen runs FAGOR programs only: an error for another dialect.
+    std::optional<Diagnostic> dialectProblem(program::Dialect dialect) const;
 
 private:
     std::string m_program;

@@ -48,6 +48,10 @@ bool diameterByDefault(const machine::MachineConfig& machine) {
 int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     const HeadlessOperator screenOperator(options);
     auto session = openSession(options, false, screenOperator.screen());
+    if (auto refused = screenOperator.dialectProblem(session->program.dialect)) {
+        diagnostics << refused->format() << '\n';
+        return 1;
+    }
     DiagnosticList all = session->allDiagnostics();
     printDiagnostics(all, diagnostics);
     return hasErrors(all) ? 1 : 0;
@@ -59,6 +63,10 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     HeadlessOperator screenOperator(options);  // a FAGOR user screen (--user-screen)
     auto session =
         openSession(options, !traceToStdout && !screenOperator.active(), screenOperator.screen());
+    if (auto refused = screenOperator.dialectProblem(session->program.dialect)) {
+        diagnostics << refused->format() << '\n';
+        return 1;
+    }
     if (DiagnosticList refused = outputsOverwritingInputs(options, session->inputs());
         !refused.empty()) {
         printDiagnostics(refused, diagnostics);

@@ -96,4 +96,15 @@ TEST_F(UserScreenRun, ACustomisationProgramOutsideTheUserChannelFailsItsCheck) {
         << errors;
 }
 
+TEST_F(UserScreenRun, OnlyFagorProgramsRunOnTheUserScreen) {
+    { std::ofstream(dir / "A.H") << "BEGIN PGM A MM\nEND PGM A MM\n"; }
+    const std::string command = std::string("\"") + KERF_BINARY + "\" run --user-screen edit \"" +
+                                (dir / "A.H").string() + "\" 2> \"" + (dir / "errors").string() +
+                                "\"";
+    EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 1);
+    EXPECT_EQ(read(dir / "errors"), (dir / "A.H").string() +
+                                        ": error: --user-screen runs FAGOR customisation "
+                                        "programs only\n");
+}
+
 }  // namespace
