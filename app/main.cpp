@@ -28,6 +28,11 @@ void addProgramOptions(CLI::App& command, kerf::app::RunOptions& options) {
     command.add_option("--nc-root", options.ncRoot,
                        "folder the program may read and write (default: its folder)");
     command.add_flag("--block-skip", options.blockSkip, "skip blocks marked with /");
+    command
+        .add_option("--user-screen", options.userScreen,
+                    "FAGOR: run the program as the user customisation program of this mode "
+                    "(execution, edit, manual, diagnosis)")
+        ->check(CLI::IsMember({"execution", "edit", "manual", "diagnosis"}));
 }
 
 }  // namespace
@@ -68,6 +73,10 @@ int main(int argc, char** argv) {
     run->add_option("--work-offset", runOptions.workOffset,
                     "machine coordinates of the workpiece origin on the axes named, e.g. "
                     "Z-300 (default: the machine file's presets)");
+    run->add_option("--operator-input", runOptions.operatorInput,
+                    "with --user-screen: the operator's answers in order, e.g. F1,2.5,-3 (a key "
+                    "F1-F7, $FC00 or one character for WKEY, a number for IB)")
+        ->allow_extra_args(false);
     run->add_option("--inject-fault", runOptions.injectFaults,
                     "NODE:KIND@SECONDS, e.g. 2:heartbeat@1.5 (repeatable; see docs/drives.md)");
 

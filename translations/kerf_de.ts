@@ -494,6 +494,24 @@ Satz</translation>
         <source>Start at block</source>
         <translation>Start bei Satz</translation>
     </message>
+    <message>
+        <source>No user customisation program: %1 is not in the NC root</source>
+        <translation>Kein Anwender-Anpassungsprogramm: %1 ist nicht im NC-Verzeichnis</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Anwender</translation>
+    </message>
+    <message>
+        <source>Leave
+user screen</source>
+        <translation>Anwender-
+bild verlassen</translation>
+    </message>
+    <message>
+        <source>The program in the editor is protected: the block %1 of the user screen was not inserted</source>
+        <translation>Das Programm im Editor ist geschützt: der Satz %1 des Anwenderbilds wurde nicht eingefügt</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MdiDialog</name>
@@ -1170,6 +1188,41 @@ verschiebungen</translation>
     <message>
         <source>Test run: %1</source>
         <translation>Programm-Test: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::UserScreenView</name>
+    <message>
+        <source>User screen</source>
+        <translation>Anwenderbild</translation>
+    </message>
+    <message>
+        <source>User screen - page %1</source>
+        <translation>Anwenderbild - Seite %1</translation>
+    </message>
+    <message>
+        <source>Enter IB%1 (format %2%3.%4) and press Enter</source>
+        <translation>IB%1 eingeben (Format %2%3.%4) und Enter drücken</translation>
+    </message>
+    <message>
+        <source>Waiting for a key: press a softkey</source>
+        <translation>Warten auf eine Taste: einen Softkey drücken</translation>
+    </message>
+    <message>
+        <source>The customisation program has ended</source>
+        <translation>Das Anpassungsprogramm ist beendet</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Block being edited: %1</source>
+        <translation>Satz in Bearbeitung: %1</translation>
     </message>
 </context>
 <context>
@@ -2575,10 +2628,6 @@ Status</translation>
         <translation>Unterprogramm {1} ist doppelt definiert</translation>
     </message>
     <message>
-        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
-        <translation>{1} ist eine Anweisung zur Bildschirm-Anpassung: nicht unterstützt; das Programm kann nicht über diesen Satz hinaus laufen</translation>
-    </message>
-    <message>
         <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
         <translation>Programme auf einem PC über DNC sind nicht verfügbar; das Programm kann nicht über diesen Satz hinaus laufen</translation>
     </message>
@@ -3163,20 +3212,12 @@ Status</translation>
         <translation>INPUT erwartet</translation>
     </message>
     <message>
-        <source>input format expected</source>
-        <translation>Eingabeformat erwartet</translation>
-    </message>
-    <message>
         <source>DW expected</source>
         <translation>DW erwartet</translation>
     </message>
     <message>
         <source>SK expected</source>
         <translation>SK erwartet</translation>
-    </message>
-    <message>
-        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
-        <translation>{1} ist eine Anweisung zur Bildschirm-Anpassung: nicht unterstützt (gehört in Anwender-Anpassungsprogramme)</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is not a row key</source>
@@ -7675,6 +7716,62 @@ wählen</translation>
     <message>
         <source>the contour of {1} intersects itself</source>
         <translation>die Kontur von {1} schneidet sich selbst</translation>
+    </message>
+    <message>
+        <source>no input is asked for</source>
+        <translation>es wird keine Eingabe verlangt</translation>
+    </message>
+    <message>
+        <source>a customisation program runs in the user channel: it has no ISO blocks (no motion, no M, S, T)</source>
+        <translation>ein Anpassungsprogramm läuft im Anwenderkanal: es hat keine ISO-Sätze (keine Bewegung, kein M, S, T)</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: it runs only in a user customisation program (the user screen)</source>
+        <translation>{1} ist eine Anweisung zur Bildschirmanpassung: sie läuft nur in einem Anwender-Anpassungsprogramm (dem Anwenderbild)</translation>
+    </message>
+    <message>
+        <source>screen customisation instructions run only in a user customisation program (the user screen)</source>
+        <translation>Anweisungen zur Bildschirmanpassung laufen nur in einem Anwender-Anpassungsprogramm (dem Anwenderbild)</translation>
+    </message>
+    <message>
+        <source>data window {1} is not defined (ODW)</source>
+        <translation>das Datenfenster {1} ist nicht definiert (ODW)</translation>
+    </message>
+    <message>
+        <source>WKEY: keys come from the PLC or DNC (KEYSRC), which this control does not have</source>
+        <translation>WKEY: die Tasten kommen von der SPS oder DNC (KEYSRC), die diese Steuerung nicht hat</translation>
+    </message>
+    <message>
+        <source>WBUF runs only in the customisation program of the edit mode (USEREDIT)</source>
+        <translation>WBUF läuft nur im Anpassungsprogramm der Betriebsart Editieren (USEREDIT)</translation>
+    </message>
+    <message>
+        <source>{1}: inputs are IB0-IB25</source>
+        <translation>{1}: Eingaben sind IB0-IB25</translation>
+    </message>
+    <message>
+        <source>customisation instructions take global parameters, not the local P{1}</source>
+        <translation>Anpassungsanweisungen nehmen globale Parameter, nicht den lokalen P{1}</translation>
+    </message>
+    <message>
+        <source>input format [-]i.d expected (i integer digits 0-6, d decimals 0-5)</source>
+        <translation>Eingabeformat [-]i.d erwartet (i Vorkommastellen 0-6, d Nachkommastellen 0-5)</translation>
+    </message>
+    <message>
+        <source>a softkey text has at most 20 characters</source>
+        <translation>ein Softkey-Text hat höchstens 20 Zeichen</translation>
+    </message>
+    <message>
+        <source>only positive values are accepted here</source>
+        <translation>hier sind nur positive Werte zulässig</translation>
+    </message>
+    <message>
+        <source>a number is expected</source>
+        <translation>eine Zahl wird erwartet</translation>
+    </message>
+    <message>
+        <source>the number does not fit the input format</source>
+        <translation>die Zahl passt nicht zum Eingabeformat</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -494,6 +494,24 @@ frase</translation>
         <source>Start at block</source>
         <translation>Arranque en bloque</translation>
     </message>
+    <message>
+        <source>No user customisation program: %1 is not in the NC root</source>
+        <translation>No hay programa de personalización de usuario: %1 no está en la raíz NC</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Usuario</translation>
+    </message>
+    <message>
+        <source>Leave
+user screen</source>
+        <translation>Salir de
+pantalla usuario</translation>
+    </message>
+    <message>
+        <source>The program in the editor is protected: the block %1 of the user screen was not inserted</source>
+        <translation>El programa del editor está protegido: el bloque %1 de la pantalla de usuario no se ha insertado</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MdiDialog</name>
@@ -1170,6 +1188,41 @@ de origen</translation>
     <message>
         <source>Test run: %1</source>
         <translation>Test del programa: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::UserScreenView</name>
+    <message>
+        <source>User screen</source>
+        <translation>Pantalla de usuario</translation>
+    </message>
+    <message>
+        <source>User screen - page %1</source>
+        <translation>Pantalla de usuario - página %1</translation>
+    </message>
+    <message>
+        <source>Enter IB%1 (format %2%3.%4) and press Enter</source>
+        <translation>Introduzca IB%1 (formato %2%3.%4) y pulse Enter</translation>
+    </message>
+    <message>
+        <source>Waiting for a key: press a softkey</source>
+        <translation>Esperando una tecla: pulse una softkey</translation>
+    </message>
+    <message>
+        <source>The customisation program has ended</source>
+        <translation>El programa de personalización ha terminado</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>En ejecución</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>Block being edited: %1</source>
+        <translation>Bloque en edición: %1</translation>
     </message>
 </context>
 <context>
@@ -2575,10 +2628,6 @@ estado</translation>
         <translation>la subrutina {1} está definida dos veces</translation>
     </message>
     <message>
-        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
-        <translation>{1} es una instrucción de personalización de pantallas: no admitida; el programa no puede continuar más allá de este bloque</translation>
-    </message>
-    <message>
         <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
         <translation>no hay programas en un PC por DNC; el programa no puede continuar más allá de este bloque</translation>
     </message>
@@ -3163,20 +3212,12 @@ estado</translation>
         <translation>se esperaba INPUT</translation>
     </message>
     <message>
-        <source>input format expected</source>
-        <translation>se esperaba un formato de entrada</translation>
-    </message>
-    <message>
         <source>DW expected</source>
         <translation>se esperaba DW</translation>
     </message>
     <message>
         <source>SK expected</source>
         <translation>se esperaba SK</translation>
-    </message>
-    <message>
-        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
-        <translation>{1} es una instrucción de personalización de pantallas: no admitida (pertenece a los programas de personalización del usuario)</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is not a row key</source>
@@ -7675,6 +7716,62 @@ solución</translation>
     <message>
         <source>the contour of {1} intersects itself</source>
         <translation>el contorno de {1} se corta a sí mismo</translation>
+    </message>
+    <message>
+        <source>no input is asked for</source>
+        <translation>no se pide ninguna entrada</translation>
+    </message>
+    <message>
+        <source>a customisation program runs in the user channel: it has no ISO blocks (no motion, no M, S, T)</source>
+        <translation>un programa de personalización se ejecuta en el canal de usuario: no tiene bloques ISO (ni movimiento, ni M, S, T)</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: it runs only in a user customisation program (the user screen)</source>
+        <translation>{1} es una instrucción de personalización de pantalla: solo se ejecuta en un programa de personalización de usuario (la pantalla de usuario)</translation>
+    </message>
+    <message>
+        <source>screen customisation instructions run only in a user customisation program (the user screen)</source>
+        <translation>las instrucciones de personalización de pantalla solo se ejecutan en un programa de personalización de usuario (la pantalla de usuario)</translation>
+    </message>
+    <message>
+        <source>data window {1} is not defined (ODW)</source>
+        <translation>la ventana de datos {1} no está definida (ODW)</translation>
+    </message>
+    <message>
+        <source>WKEY: keys come from the PLC or DNC (KEYSRC), which this control does not have</source>
+        <translation>WKEY: las teclas vienen del PLC o del DNC (KEYSRC), que este control no tiene</translation>
+    </message>
+    <message>
+        <source>WBUF runs only in the customisation program of the edit mode (USEREDIT)</source>
+        <translation>WBUF solo se ejecuta en el programa de personalización del modo edición (USEREDIT)</translation>
+    </message>
+    <message>
+        <source>{1}: inputs are IB0-IB25</source>
+        <translation>{1}: las entradas son IB0-IB25</translation>
+    </message>
+    <message>
+        <source>customisation instructions take global parameters, not the local P{1}</source>
+        <translation>las instrucciones de personalización admiten parámetros globales, no el local P{1}</translation>
+    </message>
+    <message>
+        <source>input format [-]i.d expected (i integer digits 0-6, d decimals 0-5)</source>
+        <translation>se espera el formato de entrada [-]i.d (i dígitos enteros 0-6, d decimales 0-5)</translation>
+    </message>
+    <message>
+        <source>a softkey text has at most 20 characters</source>
+        <translation>el texto de una softkey tiene como máximo 20 caracteres</translation>
+    </message>
+    <message>
+        <source>only positive values are accepted here</source>
+        <translation>aquí solo se admiten valores positivos</translation>
+    </message>
+    <message>
+        <source>a number is expected</source>
+        <translation>se espera un número</translation>
+    </message>
+    <message>
+        <source>the number does not fit the input format</source>
+        <translation>el número no cabe en el formato de entrada</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -496,6 +496,24 @@ bloku</translation>
         <source>Start at block</source>
         <translation>Start od bloku</translation>
     </message>
+    <message>
+        <source>No user customisation program: %1 is not in the NC root</source>
+        <translation>Brak programu personalizacji użytkownika: %1 nie ma w katalogu NC</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Użytkownik</translation>
+    </message>
+    <message>
+        <source>Leave
+user screen</source>
+        <translation>Opuść ekran
+użytkownika</translation>
+    </message>
+    <message>
+        <source>The program in the editor is protected: the block %1 of the user screen was not inserted</source>
+        <translation>Program w edytorze jest chroniony: blok %1 ekranu użytkownika nie został wstawiony</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MdiDialog</name>
@@ -1173,6 +1191,41 @@ punktu zerowego</translation>
     <message>
         <source>Test run: %1</source>
         <translation>Test programu: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::UserScreenView</name>
+    <message>
+        <source>User screen</source>
+        <translation>Ekran użytkownika</translation>
+    </message>
+    <message>
+        <source>User screen - page %1</source>
+        <translation>Ekran użytkownika - strona %1</translation>
+    </message>
+    <message>
+        <source>Enter IB%1 (format %2%3.%4) and press Enter</source>
+        <translation>Wprowadź IB%1 (format %2%3.%4) i naciśnij Enter</translation>
+    </message>
+    <message>
+        <source>Waiting for a key: press a softkey</source>
+        <translation>Oczekiwanie na klawisz: naciśnij softkey</translation>
+    </message>
+    <message>
+        <source>The customisation program has ended</source>
+        <translation>Program personalizacji zakończył się</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Działa</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Zatrzymany</translation>
+    </message>
+    <message>
+        <source>Block being edited: %1</source>
+        <translation>Edytowany blok: %1</translation>
     </message>
 </context>
 <context>
@@ -2578,10 +2631,6 @@ status</translation>
         <translation>podprogram {1} jest zdefiniowany dwukrotnie</translation>
     </message>
     <message>
-        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
-        <translation>{1} jest instrukcją dostosowania ekranu: nieobsługiwana; program nie może wykonać się poza ten blok</translation>
-    </message>
-    <message>
         <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
         <translation>programy na PC przez DNC nie są dostępne; program nie może wykonać się poza ten blok</translation>
     </message>
@@ -3166,20 +3215,12 @@ status</translation>
         <translation>oczekiwano INPUT</translation>
     </message>
     <message>
-        <source>input format expected</source>
-        <translation>oczekiwano formatu wejścia</translation>
-    </message>
-    <message>
         <source>DW expected</source>
         <translation>oczekiwano DW</translation>
     </message>
     <message>
         <source>SK expected</source>
         <translation>oczekiwano SK</translation>
-    </message>
-    <message>
-        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
-        <translation>{1} jest instrukcją dostosowania ekranu: nieobsługiwana (należy do programów dostosowania użytkownika)</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is not a row key</source>
@@ -7678,6 +7719,62 @@ rozwiązanie</translation>
     <message>
         <source>the contour of {1} intersects itself</source>
         <translation>kontur {1} przecina sam siebie</translation>
+    </message>
+    <message>
+        <source>no input is asked for</source>
+        <translation>nie jest wymagane żadne wejście</translation>
+    </message>
+    <message>
+        <source>a customisation program runs in the user channel: it has no ISO blocks (no motion, no M, S, T)</source>
+        <translation>program personalizacji działa w kanale użytkownika: nie ma bloków ISO (bez ruchu, bez M, S, T)</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: it runs only in a user customisation program (the user screen)</source>
+        <translation>{1} jest instrukcją personalizacji ekranu: działa tylko w programie personalizacji użytkownika (ekran użytkownika)</translation>
+    </message>
+    <message>
+        <source>screen customisation instructions run only in a user customisation program (the user screen)</source>
+        <translation>instrukcje personalizacji ekranu działają tylko w programie personalizacji użytkownika (ekran użytkownika)</translation>
+    </message>
+    <message>
+        <source>data window {1} is not defined (ODW)</source>
+        <translation>okno danych {1} nie jest zdefiniowane (ODW)</translation>
+    </message>
+    <message>
+        <source>WKEY: keys come from the PLC or DNC (KEYSRC), which this control does not have</source>
+        <translation>WKEY: klawisze pochodzą z PLC lub DNC (KEYSRC), których to sterowanie nie ma</translation>
+    </message>
+    <message>
+        <source>WBUF runs only in the customisation program of the edit mode (USEREDIT)</source>
+        <translation>WBUF działa tylko w programie personalizacji trybu edycji (USEREDIT)</translation>
+    </message>
+    <message>
+        <source>{1}: inputs are IB0-IB25</source>
+        <translation>{1}: wejścia to IB0-IB25</translation>
+    </message>
+    <message>
+        <source>customisation instructions take global parameters, not the local P{1}</source>
+        <translation>instrukcje personalizacji przyjmują parametry globalne, nie lokalny P{1}</translation>
+    </message>
+    <message>
+        <source>input format [-]i.d expected (i integer digits 0-6, d decimals 0-5)</source>
+        <translation>oczekiwano formatu wejścia [-]i.d (i cyfr całkowitych 0-6, d miejsc dziesiętnych 0-5)</translation>
+    </message>
+    <message>
+        <source>a softkey text has at most 20 characters</source>
+        <translation>tekst softkeya ma najwyżej 20 znaków</translation>
+    </message>
+    <message>
+        <source>only positive values are accepted here</source>
+        <translation>tutaj dopuszczalne są tylko wartości dodatnie</translation>
+    </message>
+    <message>
+        <source>a number is expected</source>
+        <translation>oczekiwana jest liczba</translation>
+    </message>
+    <message>
+        <source>the number does not fit the input format</source>
+        <translation>liczba nie pasuje do formatu wejścia</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

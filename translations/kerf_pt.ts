@@ -495,6 +495,24 @@ bloco</translation>
         <source>Start at block</source>
         <translation>Iniciar no bloco</translation>
     </message>
+    <message>
+        <source>No user customisation program: %1 is not in the NC root</source>
+        <translation>Nenhum programa de personalização do usuário: %1 não está na raiz NC</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Usuário</translation>
+    </message>
+    <message>
+        <source>Leave
+user screen</source>
+        <translation>Sair da
+tela do usuário</translation>
+    </message>
+    <message>
+        <source>The program in the editor is protected: the block %1 of the user screen was not inserted</source>
+        <translation>O programa no editor está protegido: o bloco %1 da tela do usuário não foi inserido</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MdiDialog</name>
@@ -1170,6 +1188,41 @@ offsets</source>
     <message>
         <source>Test run: %1</source>
         <translation>Teste do programa: %1</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::UserScreenView</name>
+    <message>
+        <source>User screen</source>
+        <translation>Tela do usuário</translation>
+    </message>
+    <message>
+        <source>User screen - page %1</source>
+        <translation>Tela do usuário - página %1</translation>
+    </message>
+    <message>
+        <source>Enter IB%1 (format %2%3.%4) and press Enter</source>
+        <translation>Introduza IB%1 (formato %2%3.%4) e pressione Enter</translation>
+    </message>
+    <message>
+        <source>Waiting for a key: press a softkey</source>
+        <translation>Esperando uma tecla: pressione uma softkey</translation>
+    </message>
+    <message>
+        <source>The customisation program has ended</source>
+        <translation>O programa de personalização terminou</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Em execução</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Parado</translation>
+    </message>
+    <message>
+        <source>Block being edited: %1</source>
+        <translation>Bloco em edição: %1</translation>
     </message>
 </context>
 <context>
@@ -2575,10 +2628,6 @@ estado</translation>
         <translation>a sub-rotina {1} está definida duas vezes</translation>
     </message>
     <message>
-        <source>{1} is a screen customisation instruction: not supported; the program cannot run past this block</source>
-        <translation>{1} é uma instrução de personalização de ecrã: não suportada; o programa não pode continuar para além deste bloco</translation>
-    </message>
-    <message>
         <source>programs on a PC over DNC are not available; the program cannot run past this block</source>
         <translation>não há programas num PC por DNC; o programa não pode continuar para além deste bloco</translation>
     </message>
@@ -3163,20 +3212,12 @@ estado</translation>
         <translation>INPUT esperado</translation>
     </message>
     <message>
-        <source>input format expected</source>
-        <translation>formato de entrada esperado</translation>
-    </message>
-    <message>
         <source>DW expected</source>
         <translation>DW esperado</translation>
     </message>
     <message>
         <source>SK expected</source>
         <translation>SK esperado</translation>
-    </message>
-    <message>
-        <source>{1} is a screen customisation instruction: not supported (it belongs in user customisation programs)</source>
-        <translation>{1} é uma instrução de personalização de ecrã: não suportada (pertence aos programas de personalização do utilizador)</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is not a row key</source>
@@ -7675,6 +7716,62 @@ solução</translation>
     <message>
         <source>the contour of {1} intersects itself</source>
         <translation>o contorno de {1} intersecta-se a si próprio</translation>
+    </message>
+    <message>
+        <source>no input is asked for</source>
+        <translation>nenhuma entrada é pedida</translation>
+    </message>
+    <message>
+        <source>a customisation program runs in the user channel: it has no ISO blocks (no motion, no M, S, T)</source>
+        <translation>um programa de personalização é executado no canal do usuário: não tem blocos ISO (sem movimento, sem M, S, T)</translation>
+    </message>
+    <message>
+        <source>{1} is a screen customisation instruction: it runs only in a user customisation program (the user screen)</source>
+        <translation>{1} é uma instrução de personalização da tela: só é executada num programa de personalização do usuário (a tela do usuário)</translation>
+    </message>
+    <message>
+        <source>screen customisation instructions run only in a user customisation program (the user screen)</source>
+        <translation>as instruções de personalização da tela só são executadas num programa de personalização do usuário (a tela do usuário)</translation>
+    </message>
+    <message>
+        <source>data window {1} is not defined (ODW)</source>
+        <translation>a janela de dados {1} não está definida (ODW)</translation>
+    </message>
+    <message>
+        <source>WKEY: keys come from the PLC or DNC (KEYSRC), which this control does not have</source>
+        <translation>WKEY: as teclas vêm do PLC ou do DNC (KEYSRC), que este comando não tem</translation>
+    </message>
+    <message>
+        <source>WBUF runs only in the customisation program of the edit mode (USEREDIT)</source>
+        <translation>WBUF só é executado no programa de personalização do modo de edição (USEREDIT)</translation>
+    </message>
+    <message>
+        <source>{1}: inputs are IB0-IB25</source>
+        <translation>{1}: as entradas são IB0-IB25</translation>
+    </message>
+    <message>
+        <source>customisation instructions take global parameters, not the local P{1}</source>
+        <translation>as instruções de personalização aceitam parâmetros globais, não o local P{1}</translation>
+    </message>
+    <message>
+        <source>input format [-]i.d expected (i integer digits 0-6, d decimals 0-5)</source>
+        <translation>esperado o formato de entrada [-]i.d (i dígitos inteiros 0-6, d decimais 0-5)</translation>
+    </message>
+    <message>
+        <source>a softkey text has at most 20 characters</source>
+        <translation>o texto de uma softkey tem no máximo 20 caracteres</translation>
+    </message>
+    <message>
+        <source>only positive values are accepted here</source>
+        <translation>aqui só são aceitos valores positivos</translation>
+    </message>
+    <message>
+        <source>a number is expected</source>
+        <translation>é esperado um número</translation>
+    </message>
+    <message>
+        <source>the number does not fit the input format</source>
+        <translation>o número não cabe no formato de entrada</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <ostream>
 
 #include "app/runner/drive_output.h"
+#include "app/runner/headless_operator.h"
 #include "app/runner/motion_output.h"
 #include "app/runner/output_guard.h"
 #include "app/runner/picture_output.h"
@@ -44,7 +46,12 @@ bool diameterByDefault(const machine::MachineConfig& machine) {
 }  // namespace
 
 int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
-    auto session = openSession(options);
+    const HeadlessOperator screenOperator(options);
+    auto session = openSession(options, false, screenOperator.screen());
+    if (auto refused = screenOperator.dialectProblem(session->program.dialect)) {
+        diagnostics << refused->format() << '\n';
+        return 1;
+    }
     DiagnosticList all = session->allDiagnostics();
     printDiagnostics(all, diagnostics);
     return hasErrors(all) ? 1 : 0;
@@ -53,7 +60,13 @@ int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
 int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     // The check runs alongside execution unless the trace goes to a stream we cannot take back.
     const bool traceToStdout = options.traceFile && *options.traceFile == "-";
-    auto session = openSession(options, !traceToStdout);
+    HeadlessOperator screenOperator(options);  // a FAGOR user screen (--user-screen)
+    auto session =
+        openSession(options, !traceToStdout && !screenOperator.active(), screenOperator.screen());
+    if (auto refused = screenOperator.dialectProblem(session->program.dialect)) {
+        diagnostics << refused->format() << '\n';
+        return 1;
+    }
     if (DiagnosticList refused = outputsOverwritingInputs(options, session->inputs());
         !refused.empty()) {
         printDiagnostics(refused, diagnostics);
@@ -119,6 +132,7 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
             interp::RunStatus status =
                 interpreter.run(sinks, std::min(drives.blocksPerSlice(kBlocksPerSlice), left));
             if (status == interp::RunStatus::NeedsSync) {
+                if (screenOperator.waiting() && !screenOperator.answer(runProblems)) break;
                 // Without motion the machine is exactly where the program put it, and a probe
                 // move touches at its programmed end point.
                 interp::WorldSnapshot world;
@@ -132,6 +146,10 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
                 continue;
             }
             if (status != interp::RunStatus::BudgetUsed) break;
+            if (interpreter.blocksExecuted() >= options.maxBlocks && screenOperator.active()) {
+                screenOperator.noteBlockLimit(runProblems, options.maxBlocks);
+                break;
+            }
             if (interpreter.blocksExecuted() >= options.maxBlocks) {
                 runProblems.push_back(Diagnostic::make(
                     Severity::Error, "block-limit", options.program.string(), 0, 0,
@@ -183,12 +201,14 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     summary.machiningTimeS = machiningTimeS;
     summary.workOffset = session->workOffset;
     printDiagnostics(summary.diagnostics, diagnostics);
+    if (screenOperator.active() && !traceToStdout) screenOperator.print(std::cout);
 
     if (options.reportFile) {
         nlohmann::json report = buildRunReport(summary, results, session->machine);
         picture.addToReport(report);
         drives.addToReport(report, summary.xInDiameter);
         motion.addToReport(report, summary.xInDiameter);
+        if (screenOperator.active()) screenOperator.addToReport(report);
         if (auto error = writeFileAtomically(*options.reportFile, reportText(report))) {
             diagnostics << error->format() << '\n';
             return 1;

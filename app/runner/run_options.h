@@ -21,6 +21,11 @@ struct RunOptions {
     // Guard against endless loops: about two seconds of a tight loop (docs/headless.md).
     uint64_t maxBlocks = 10'000'000;
     bool blockSkip = false;
+    // FAGOR user channel (app/runner/headless_operator.h, docs/headless.md): the program runs as
+    // the customisation program of this mode (execution, edit, manual, diagnosis), answered by
+    // the operator inputs in order (a key name for WKEY, a number for IB).
+    std::optional<std::string> userScreen;
+    std::vector<std::string> operatorInput;
     // Pictures and material removal (app/runner/picture_output.h, docs/graphics.md).
     std::optional<std::filesystem::path> png;
     std::optional<std::string> view;  // 3d, top, front, side, section

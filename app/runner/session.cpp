@@ -40,7 +40,8 @@ std::vector<fs::path> Session::inputs() const {
     return all;
 }
 
-std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck) {
+std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck,
+                                     fagor::UserScreen* userScreen) {
     auto session = std::make_unique<Session>();
     DiagnosticList machineProblems;
     auto machine = machine::loadMachine(options.machine, &machineProblems);
@@ -72,6 +73,7 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     request.blockSkip = options.blockSkip;
     request.presetInMachine = origin;
     request.backgroundCheck = backgroundCheck;
+    request.userScreen = userScreen;
     const fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
     if (!stateDir.empty()) {
         std::error_code ignored;

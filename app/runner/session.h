@@ -33,6 +33,8 @@ struct Session {
 
 // With `backgroundCheck` the program's check runs alongside execution (see
 // KlartextInterpreter::CheckMode); the caller must then honour Interpreter::checkFailed().
-std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck = false);
+// With `userScreen` a FAGOR program runs as that screen's customisation program.
+std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck = false,
+                                     fagor::UserScreen* userScreen = nullptr);
 
 }  // namespace kerf::app

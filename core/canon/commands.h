@@ -108,7 +108,8 @@ struct ProbeMove {
     bool untilRelease = false;
 };
 
-enum class SyncReason : uint8_t { ReadPosition, ProbeResult, Inputs };
+// Operator: a FAGOR customisation program waits for a key (WKEY) or an input (IB).
+enum class SyncReason : uint8_t { ReadPosition, ProbeResult, Inputs, Operator };
 
 // The interpreter needs live machine data: motion must drain before it continues.
 struct SyncPoint {

@@ -81,6 +81,8 @@ const char* syncName(SyncReason reason) {
             return "PROBE";
         case SyncReason::Inputs:
             return "INPUTS";
+        case SyncReason::Operator:
+            return "OPERATOR";
         case SyncReason::ReadPosition:
             break;
     }

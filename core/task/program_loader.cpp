@@ -66,6 +66,7 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
         }
         settings.startKnown = true;
     }
+    settings.userScreen = request.userScreen;
     auto interpreter = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
     loaded.streamOrigin = interpreter->streamOrigin();
     loaded.ready = load(*interpreter, request,

@@ -17,6 +17,10 @@
 // ready interpreter with its dialect, tables, NC root and diagnostics. `kerf run`, `kerf check`,
 // the HMI's program run, MDI, test run and the editor's live check all load through it, so a
 // program checks, test-runs and runs the same everywhere.
+namespace kerf::fagor {
+class UserScreen;
+}
+
 namespace kerf::task {
 
 struct ProgramRequest {
@@ -39,6 +43,9 @@ struct ProgramRequest {
     // Check alongside execution (KlartextInterpreter::CheckMode::Background); the caller must
     // then honour Interpreter::checkFailed().
     bool backgroundCheck = false;
+    // FAGOR: run as the user customisation program of this screen (the user channel, spec part 2
+    // §6.8); it must outlive the interpreter.
+    fagor::UserScreen* userScreen = nullptr;
 };
 
 struct LoadedProgram {

@@ -264,6 +264,7 @@ std::vector<SoftkeyRow> MainWindow::tableRows() {
 void MainWindow::refreshSoftkeys() {
     if (m_page == Page::Files) return m_softkeys->setRows(fileRows());
     if (m_page == Page::Table) return m_softkeys->setRows(tableRows());
+    if (m_page == Page::UserScreen) return m_softkeys->setRows(userScreenRows());
     if (m_page != Page::Panels) return m_softkeys->setRows(setupRows());
     std::vector<SoftkeyRow> rows;
     if (testRunOnScreen()) {
@@ -298,6 +299,8 @@ void MainWindow::refreshSoftkeys() {
         rows = machineRows();
         rows.push_back(commonRow());
     }
+    if (m_context.machine.kind == machine::MachineKind::Lathe && !testRunOnScreen())
+        rows.push_back(userScreenOpenRow());
     m_softkeys->setRows(std::move(rows));
 }
 

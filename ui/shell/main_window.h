@@ -30,6 +30,8 @@ class TableChooser;
 class TableEditor;
 class GraphicsPanel;
 class TestRunController;
+class UserScreenRun;
+class UserScreenView;
 class Workspace;
 
 // What the window needs from the outside: the machine and the folders it works in.
@@ -95,6 +97,12 @@ public:
         std::function<std::optional<NewProgramSpec>()> newProgram;
     };
     void setPrompts(Prompts prompts);
+    // FAGOR lathe: runs the user customisation program of the mode on screen (USEREDIT.PIM in
+    // Programming, USERMAN.PIM in manual modes, USERDPLY.PIM in execution; NC root) on the user
+    // screen (main_window_userscreen.cpp). False when there is none or it fails its check.
+    bool openUserScreen();
+    UserScreenRun* userScreenRun() const { return m_userScreenRun; }
+    UserScreenView* userScreenView() const { return m_userScreenView; }
     // Switches the HMI to another language at run time ("en", "pt", "pl").
     bool setLanguage(const QString& code);
     void cycleLayout();
@@ -133,7 +141,13 @@ private:
     void prepareTestRun();
     std::vector<SoftkeyRow> testRunRows();
 
-    enum class Page { Panels, Files, Table, TableChooser, Settings, Mod };
+    // The FAGOR user screen (main_window_userscreen.cpp).
+    std::vector<SoftkeyRow> userScreenRows();
+    SoftkeyRow userScreenOpenRow();
+    void userScreenChanged();
+    void userScreenEnded(bool failed);
+
+    enum class Page { Panels, Files, Table, TableChooser, Settings, Mod, UserScreen };
     // The tables chooser, machine parameters and MOD (main_window_setup.cpp).
     void createSetupPages(QWidget* central);
     void showSetupPage(Page page);
@@ -160,6 +174,8 @@ private:
     TableChooser* m_tableChooser = nullptr;
     SettingsPage* m_settingsPage = nullptr;
     ModPage* m_modPage = nullptr;
+    UserScreenRun* m_userScreenRun = nullptr;
+    UserScreenView* m_userScreenView = nullptr;
     Page m_page = Page::Panels;
 };
 

@@ -43,6 +43,10 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
       m_runner(this),
       m_compensation(m_output),
       m_shaper(m_compensation) {
+    // A customisation program may nest five levels beyond its own (spec part 2 §6.8).
+    if (m_settings.userScreen != nullptr) {
+        m_settings.maxCallNesting = std::min(m_settings.maxCallNesting, 5);
+    }
     loadTable(m_root, m_settings.toolOffsetFile, m_toolOffsets, m_diagnostics);
     loadTable(m_root, m_settings.zeroOffsetFile, m_zeroOffsets, m_diagnostics);
     loadTable(m_root, m_settings.toolFile, m_toolTable, m_diagnostics);
@@ -146,6 +150,7 @@ FagorProgram* FagorInterpreter::loadProgram(const std::filesystem::path& path, s
     program->fileId = m_sources.add(path.string());
     program->number = programNumberOf(path);
     program->machineAxes = m_machineAxes;
+    program->userChannel = m_settings.userScreen != nullptr;
     program->keepLabels = keepLabels;
     checkProgram(*program);
     m_programs.push_back(std::move(program));
@@ -166,6 +171,7 @@ bool FagorInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
     program->fileId = m_sources.add(path.string());
     program->number = programNumberOf(path);
     program->machineAxes = m_machineAxes;
+    program->userChannel = m_settings.userScreen != nullptr;
     m_programs.push_back(std::move(owned));
     m_diagnosticsAtLoad = m_diagnostics.size();
     if (mode == CheckMode::Background) {
@@ -194,6 +200,7 @@ bool FagorInterpreter::loadText(std::string text, const std::string& path) {
     program->fileId = m_sources.add(path);
     program->number = programNumberOf(path);
     program->machineAxes = m_machineAxes;
+    program->userChannel = m_settings.userScreen != nullptr;
     checkProgram(*program);
     m_programs.push_back(std::move(owned));
     DiagnosticList found = program->diagnostics;
@@ -343,6 +350,13 @@ void FagorInterpreter::executeBlock() {
     if (m_block.label >= 0) m_lastLabel = m_block.label;
     switch (m_block.kind) {
         case ParsedBlock::Kind::Iso:
+            if (m_settings.userScreen != nullptr &&
+                (m_block.iso.gCount != 0 || m_block.iso.hasOtherWords())) {
+                fail("user-channel",
+                     KERF_TR_NOOP("a customisation program runs in the user channel: it has no "
+                                  "ISO blocks (no motion, no M, S, T)"));
+                return;
+            }
             executeIso(m_block.iso, repetitionOfBlock());
             break;
         case ParsedBlock::Kind::HighLevel: {

@@ -292,6 +292,11 @@ private:
     std::string substituteParameters(std::string_view text, bool marked);
     bool gpos(const VariableRef& ref, double& out, Problem& problem);
 
+    // Screen customisation instructions of the user channel (fagor_screen.cpp).
+    bool screen(const ScreenStatement& statement, Problem& problem) override;
+    // The block waits for the operator's key or input: it runs again after resume().
+    void waitForOperator();
+
     program::SourceRegistry& m_sources;
     FagorSettings m_settings;
     program::NcRoot m_root;
@@ -371,6 +376,8 @@ private:
     double m_timer = 0.0;
     double m_partCounter = 0.0;
     int m_keySource = 0;
+    int m_key = 0;                 // KEY: the last key the user channel read
+    bool m_askedOperator = false;  // the block being run again waited for a key or a number
     int m_probeInput = 1;
     int m_probeMode = 0;
     std::array<double, kAxisCount> m_secondUpperLimit{};

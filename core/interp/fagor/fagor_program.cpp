@@ -101,6 +101,12 @@ void Checker::header(std::string_view text, uint32_t line) {
 
 void Checker::iso(const ParsedBlock& block, const program::LogicalLine& line) {
     const IsoBlock& iso = block.iso;
+    if (m_program.userChannel && (iso.gCount != 0 || iso.hasOtherWords())) {
+        diag(Severity::Error, "user-channel", line.firstLine, 1,
+             KERF_TR_NOOP("a customisation program runs in the user channel: it has no ISO "
+                          "blocks (no motion, no M, S, T)"));
+        return;
+    }
     Problem problem;
     bool literal = true;
     for (uint8_t i = 0; i < iso.gCount; ++i)
@@ -196,11 +202,13 @@ void Checker::highLevel(const StatementInfo& info, const program::LogicalLine& l
             }
             break;
         case StatementInfo::Kind::Customization:
-            diag(Severity::Error, "not-supported", line.firstLine,
-                 program::columnOf(line.text, info.keywordOffset),
-                 KERF_TR_NOOP("{1} is a screen customisation instruction: not supported; the "
-                              "program cannot run past this block"),
-                 {std::string(info.keyword)});
+            if (!m_program.userChannel) {
+                diag(Severity::Error, "not-supported", line.firstLine,
+                     program::columnOf(line.text, info.keywordOffset),
+                     KERF_TR_NOOP("{1} is a screen customisation instruction: it runs only in a "
+                                  "user customisation program (the user screen)"),
+                     {std::string(info.keyword)});
+            }
             break;
         case StatementInfo::Kind::DncDirectory:
             diag(Severity::Error, "not-available", line.firstLine,

@@ -37,10 +37,11 @@ struct FagorProgram {
     std::shared_ptr<const program::SourceText> source;
     uint32_t fileId = 0;
     std::filesystem::path path;
-    int number = -1;          // from the file name (P012345.PIM, 012345): -1 if it has none
-    bool oem = false;         // the header's attributes contain O
-    bool keepLabels = false;  // keep the label index even without jumps (RPT P, GPOS from others)
-    size_t end = SIZE_MAX;    // an end-of-file character stops the text here
+    int number = -1;           // from the file name (P012345.PIM, 012345): -1 if it has none
+    bool oem = false;          // the header's attributes contain O
+    bool keepLabels = false;   // keep the label index even without jumps (RPT P, GPOS from others)
+    bool userChannel = false;  // a user customisation program: screen instructions, no ISO blocks
+    size_t end = SIZE_MAX;     // an end-of-file character stops the text here
     AxisMask machineAxes = (1u << kAxisCount) - 1;  // the machine's axes; all without a machine
     std::vector<std::pair<uint32_t, BlockPosition>> labels;  // sorted; first occurrence only
     std::vector<SubroutineEntry> subroutines;                // sorted by number

@@ -8,6 +8,7 @@
 #include "core/geometry/axes.h"
 #include "core/geometry/plane.h"
 #include "core/interp/fagor/m_functions.h"
+#include "core/interp/fagor/user_screen.h"
 #include "core/machine/machine_config.h"
 
 namespace kerf::fagor {
@@ -29,6 +30,11 @@ struct FagorSettings {
     // kerf run starts at the program's origin): the first move is drawn from there.
     Pose startInMachine{};
     bool startKnown = false;
+    // The user channel (spec part 2 §6.8): with a screen the program runs as the user
+    // customisation program of its mode, drawing on it and reading the operator's keys and input.
+    UserScreen* userScreen = nullptr;
+    // What IB0-IB25 hold for an ordinary program (the user screen's last inputs).
+    std::array<double, UserScreen::kInputs> inputValues{};
 
     // General machine parameters.
     bool imoveLinear = false;                   // IMOVE: G01 (true) or G00 at reset

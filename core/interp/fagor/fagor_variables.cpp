@@ -584,6 +584,18 @@ bool FagorInterpreter::readOtherVariable(const VariableRef& ref, double& out, Pr
         case VarId::KeySrc:
             out = m_keySource;
             return true;
+        case VarId::Key:
+            out = m_key;
+            return true;
+        case VarId::Ib:
+            if (ref.index < 0 || ref.index >= UserScreen::kInputs) {
+                return problemOf(problem, "variable", KERF_TR_NOOP("{1}: inputs are IB0-IB25"),
+                                 {nameOf(ref)});
+            }
+            out = m_settings.userScreen != nullptr
+                      ? m_settings.userScreen->input(ref.index)
+                      : m_settings.inputValues[static_cast<size_t>(ref.index)];
+            return true;
         case VarId::AnaO:
             if (ref.index < 1 || ref.index > 8) {
                 return problemOf(problem, "variable", KERF_TR_NOOP("{1}: outputs 1-8"),
@@ -605,7 +617,7 @@ bool FagorInterpreter::readOtherVariable(const VariableRef& ref, double& out, Pr
         case VarId::Rip:
             out = units(m_feed);
             return true;
-        default:  // KEY (no keyboard), PRBST (not touching), TIMEG (no dwell), ORGROT
+        default:  // PRBST (not touching), TIMEG (no dwell), ORGROT
             out = 0.0;
             return true;
     }
@@ -729,14 +741,21 @@ bool FagorInterpreter::writeOtherVariable(const VariableRef& ref, double value, 
             m_partCounter = value;
             return true;
         case VarId::Key:
-            return problemOf(problem, "variable",
-                             KERF_TR_NOOP("KEY can only be written in a customisation program"));
+            if (m_settings.userScreen == nullptr) {
+                return problemOf(
+                    problem, "variable",
+                    KERF_TR_NOOP("KEY can only be written in a customisation program"));
+            }
+            m_key = static_cast<int>(std::llround(value));
+            return true;
         case VarId::KeySrc:
             if (m_keySource != 0) {
                 return problemOf(problem, "variable",
                                  KERF_TR_NOOP("KEYSRC can only be changed while it is 0"));
             }
-            return flag(m_keySource, 0, 2);
+            if (!flag(m_keySource, 0, 2)) return false;
+            if (m_settings.userScreen != nullptr) m_settings.userScreen->setKeySource(m_keySource);
+            return true;
         case VarId::AnaO:
             if (ref.index < 1 || ref.index > 4 || std::fabs(value) > 10.0) {
                 return problemOf(problem, "variable",

@@ -90,7 +90,8 @@ bool StatementRunner::expect(char c) {
 }
 
 bool StatementRunner::expression(ExprValue& out) {
-    Expression e(*m_s, executing() ? m_context : nullptr);
+    ExpressionContext* values = m_values != nullptr ? m_values : m_context;
+    Expression e(*m_s, executing() ? values : nullptr);
     if (e.parse(out)) return true;
     m_problem = e.problem();
     return false;
@@ -546,72 +547,173 @@ bool StatementRunner::graphicZone() {
     return true;
 }
 
+namespace {
+
+// Customisation instructions take global parameters only (spec part 2 §6.8).
+class GlobalsOnly final : public ExpressionContext {
+public:
+    explicit GlobalsOnly(ExpressionContext& inner) : m_inner(inner) {}
+    bool readParameter(int number, double& out, Problem& problem) override {
+        if (number >= 0 && number <= 25) {
+            problem = Problem{0,
+                              "parameter",
+                              KERF_TR_NOOP("customisation instructions take global parameters, "
+                                           "not the local P{1}"),
+                              {std::to_string(number)}};
+            return false;
+        }
+        return m_inner.readParameter(number, out, problem);
+    }
+    bool readVariable(const VariableRef& ref, double& out, Problem& problem) override {
+        return m_inner.readVariable(ref, out, problem);
+    }
+
+private:
+    ExpressionContext& m_inner;
+};
+
+}  // namespace
+
+bool StatementRunner::screenNumbers(ScreenStatement& out,
+                                    const std::array<std::pair<int, int>, 3>& ranges, int count,
+                                    const std::array<const char*, 3>& names) {
+    for (int i = 0; i < count; ++i) {
+        const auto n = static_cast<size_t>(i);
+        if (i > 0 && !expect(',')) return false;
+        int64_t value = 0;
+        if (!integerExpression(value, ranges[n].first, ranges[n].second, names[n])) return false;
+        out.numbers[n] = static_cast<int>(value);
+    }
+    return true;
+}
+
+bool StatementRunner::inputFormat(InputFormat& out) {
+    // [-]i[.d]: i integer digits 0-6, d decimals 0-5.
+    m_s->skipBlanks();
+    const size_t at = m_s->position();
+    out.negative = m_s->accept('-');
+    const std::string_view text = m_s->text();
+    size_t i = m_s->position();
+    auto digit = [&](int max, int& into) {
+        if (i >= text.size() || !isDigit(text[i]) || text[i] - '0' > max) return false;
+        into = text[i++] - '0';
+        return true;
+    };
+    bool ok = digit(6, out.integerDigits);
+    out.decimals = 0;
+    if (ok && i < text.size() && text[i] == '.') {
+        ++i;
+        ok = digit(5, out.decimals);
+    }
+    if (!ok || (i < text.size() && isDigit(text[i]))) {
+        return fail(at, "syntax",
+                    KERF_TR_NOOP("input format [-]i.d expected (i integer digits 0-6, d decimals "
+                                 "0-5)"));
+    }
+    m_s->setPosition(i);
+    return true;
+}
+
+bool StatementRunner::windowData(std::string_view keyword, ScreenStatement& out) {
+    int64_t window = 0;
+    if (!integerExpression(window, 0, UserScreen::kWindows - 1, "a data window")) return false;
+    ExprValue v;
+    if (!expect('=') || !expression(v)) return false;
+    std::string text = keyword == "DWH"   ? hexadecimalText(v.number)
+                       : keyword == "DWB" ? binaryText(v.number)
+                                          : decimalText(v.number);
+    out.windows.push_back({static_cast<int>(window), std::move(text)});
+    return true;
+}
+
 bool StatementRunner::customization(std::string_view keyword) {
     const size_t at = m_s->position() - keyword.size();
     m_info.kind = StatementInfo::Kind::Customization;
-    ExprValue v;
-    std::string text;
-    auto expressions = [&](int n) {
-        for (int i = 0; i < n; ++i) {
-            if (i > 0 && !expect(',')) return false;
-            if (!expression(v)) return false;
-        }
-        return true;
-    };
-    auto windowIndex = [&] {
-        Expression e(*m_s, nullptr);
-        int index = 0;
-        if (e.parameterIndex(index)) return true;
-        m_problem = e.problem();
-        return false;
-    };
+    std::optional<GlobalsOnly> globals;
+    if (executing()) globals.emplace(*m_context);
+    m_values = globals ? &*globals : nullptr;
+    struct Restore {
+        ExpressionContext*& values;
+        ~Restore() { values = nullptr; }
+    } restore{m_values};
+    using Kind = ScreenStatement::Kind;
+    ScreenStatement st;
     bool ok = true;
     if (keyword == "PAGE") {
-        ok = expressions(1);
-    } else if (keyword == "SYMBOL" || keyword == "ODW") {
-        ok = expressions(3);
+        st.kind = Kind::Page;
+        ok = screenNumbers(st, {{{0, 255}}}, 1, {"a user page"});
+    } else if (keyword == "SYMBOL") {
+        st.kind = Kind::Symbol;
+        ok = screenNumbers(st, {{{0, 255}, {0, 639}, {0, 335}}}, 3,
+                           {"a symbol", "a pixel column", "a pixel row"});
+    } else if (keyword == "ODW") {
+        st.kind = Kind::DefineWindow;
+        ok = screenNumbers(st, {{{0, UserScreen::kWindows - 1}, {0, 20}, {0, 79}}}, 3,
+                           {"a data window", "a text row", "a text column"});
     } else if (keyword == "IB") {
-        ok = windowIndex() && expect('=');
+        st.kind = Kind::Input;
+        int64_t index = 0;
+        ok = integerExpression(index, 0, UserScreen::kInputs - 1, "an input variable") &&
+             expect('=');
+        st.index = static_cast<int>(index);
         if (ok && m_s->letters() != "INPUT")
             ok = fail(m_s->position(), "syntax", KERF_TR_NOOP("INPUT expected"));
-        ok = ok && quoted(text);
+        ok = ok && quoted(st.text);
         if (ok && m_s->accept(',')) {
-            m_s->accept('-');
-            ScannedNumber format;
-            if (!m_s->unsignedNumber(format))
-                ok = fail(m_s->position(), "syntax", KERF_TR_NOOP("input format expected"));
+            InputFormat format;
+            ok = inputFormat(format);
+            st.format = format;
         }
     } else if (keyword == "DW" || keyword == "DWH" || keyword == "DWB") {
-        ok = windowIndex() && expect('=') && expression(v);
+        st.kind = Kind::ShowData;
+        ok = windowData(keyword, st);
         while (ok && m_s->accept(',')) {
+            m_s->skipBlanks();
+            const size_t nextAt = m_s->position();
             const std::string_view next = m_s->letters();
             if (next != "DW" && next != "DWH" && next != "DWB") {
-                ok = fail(m_s->position(), "syntax", KERF_TR_NOOP("DW expected"));
+                ok = fail(nextAt, "syntax", KERF_TR_NOOP("DW expected"));
                 break;
             }
-            ok = windowIndex() && expect('=') && expression(v);
+            ok = windowData(next, st);
         }
     } else if (keyword == "SK") {
+        st.kind = Kind::Softkeys;
         do {
+            m_s->skipBlanks();
             if (m_s->peek() == 'S') {
-                if (m_s->letters() != "SK")
-                    ok = fail(m_s->position(), "syntax", KERF_TR_NOOP("SK expected"));
+                const size_t skAt = m_s->position();
+                if (m_s->letters() != "SK") ok = fail(skAt, "syntax", KERF_TR_NOOP("SK expected"));
             }
-            ok = ok && expression(v) && expect('=') && quoted(text);
+            int64_t key = 0;
+            std::string text;
+            ok = ok && integerExpression(key, 1, UserScreen::kSoftkeys, "a softkey") && expect('=');
+            const size_t textAt = m_s->position();
+            ok = ok && quoted(text);
+            if (ok && text.size() > 20) {
+                ok =
+                    fail(textAt, "range", KERF_TR_NOOP("a softkey text has at most 20 characters"));
+            }
+            st.softkeys.emplace_back(static_cast<int>(key), std::move(text));
         } while (ok && m_s->accept(','));
+    } else if (keyword == "WKEY") {
+        st.kind = Kind::WaitKey;
     } else if (keyword == "WBUF") {
+        st.kind = Kind::InsertBlock;
         if (m_s->peek() != '\0') {
-            ok = quoted(text);
-            if (ok && m_s->accept(',')) ok = expression(v);
+            st.kind = Kind::AppendToBlock;
+            ok = quoted(st.text);
+            if (ok && m_s->accept(',')) {
+                ExprValue v;
+                ok = expression(v);
+                st.value = v.number;
+            }
         }
+    } else if (keyword == "SYSTEM") {
+        st.kind = Kind::System;
     }
     if (!ok) return false;
-    if (executing()) {
-        return fail(at, "not-supported",
-                    KERF_TR_NOOP("{1} is a screen customisation instruction: not supported (it "
-                                 "belongs in user customisation programs)"),
-                    {std::string(keyword)});
-    }
+    if (executing() && !m_context->screen(st, m_problem)) return contextFailed(at);
     return true;
 }
 

@@ -5,8 +5,11 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "core/interp/fagor/expression.h"
+#include "core/interp/fagor/user_screen.h"
 
 namespace kerf::fagor {
 
@@ -26,6 +29,34 @@ enum class LockChange : uint8_t {
 };
 
 enum class CallKind : uint8_t { Call, PCall, MCall };
+
+// A screen customisation instruction with its values (spec part 2 §6.8), ranges checked.
+struct ScreenStatement {
+    enum class Kind : uint8_t {
+        Page,           // PAGE numbers[0]
+        Symbol,         // SYMBOL numbers[0] at column numbers[1], row numbers[2]
+        Input,          // IB index = INPUT text [, format]
+        DefineWindow,   // ODW numbers[0] at row numbers[1], column numbers[2]
+        ShowData,       // DW/DWH/DWB: windows
+        Softkeys,       // SK: softkeys
+        WaitKey,        // WKEY
+        AppendToBlock,  // WBUF text [, value]
+        InsertBlock,    // WBUF
+        System,         // SYSTEM
+    };
+    struct WindowData {
+        int window = 0;
+        std::string text;  // the value as the window shows it
+    };
+    Kind kind = Kind::Page;
+    std::array<int, 3> numbers{};
+    int index = 0;
+    std::string text;
+    std::optional<InputFormat> format;
+    std::optional<double> value;
+    std::vector<WindowData> windows;
+    std::vector<std::pair<int, std::string>> softkeys;
+};
 
 // What high-level statements do: the interpreter carries it out. Each returns false with
 // `problem` filled (code and message; the runner sets the offset) when it cannot.
@@ -52,6 +83,7 @@ public:
     virtual bool graphicZone(double zMin, double zMax, double inner, double outer,
                              Problem& problem) = 0;
     virtual bool changeLocks(LockChange change, Problem& problem) = 0;
+    virtual bool screen(const ScreenStatement& statement, Problem& problem) = 0;
     // REPOS: axes in the order listed.
     virtual bool reposition(const std::array<Axis, kAxisCount>& axes, int count,
                             Problem& problem) = 0;
@@ -101,6 +133,10 @@ private:
     bool callStatement(CallKind kind);
     bool programStatement(std::string_view keyword);
     bool customization(std::string_view keyword);
+    bool screenNumbers(ScreenStatement& out, const std::array<std::pair<int, int>, 3>& ranges,
+                       int count, const std::array<const char*, 3>& names);
+    bool inputFormat(InputFormat& out);
+    bool windowData(std::string_view keyword, ScreenStatement& out);
     bool reposition();
     bool graphicZone();
     bool fail(size_t offset, const char* code, const char* messageTemplate,
@@ -111,6 +147,7 @@ private:
     void noteProgram(size_t offset);
 
     StatementContext* m_context;
+    ExpressionContext* m_values = nullptr;  // instead of m_context for expressions, when set
     std::optional<Scanner> m_s;
     size_t m_end = 0;
     bool m_exec = false;

@@ -184,6 +184,7 @@ constexpr VariableInfo kVariables[] = {
     {"FIRST", I::First, S::Simple, F::Other, R},
     {"KEY", I::Key, S::Simple, F::Other, RW | P},
     {"KEYSRC", I::KeySrc, S::Simple, F::Other, RW},
+    {"IB", I::Ib, S::Table, F::Other, R},
     {"ANAI", I::AnaI, S::Table, F::Other, R | P},
     {"ANAO", I::AnaO, S::Table, F::Other, RW | P},
     {"CNCERR", I::CncErr, S::Simple, F::Other, NONE},

@@ -201,6 +201,7 @@ enum class VarId : uint8_t {
     First,
     Key,
     KeySrc,
+    Ib,
     AnaI,
     AnaO,
     CncErr,

@@ -45,6 +45,7 @@ TEST(TraceFormat, OtherCommands) {
     EXPECT_EQ(line(ProgramStop{StopKind::Program, -1}), "3:1 N2 STOP");
     EXPECT_EQ(line(Message{MessageKind::Print, "a\"b"}), "3:1 N2 MSG PRINT \"a\\\"b\"");
     EXPECT_EQ(line(SyncPoint{SyncReason::ReadPosition}), "3:1 N2 SYNC POSITION");
+    EXPECT_EQ(line(SyncPoint{SyncReason::Operator}), "3:1 N2 SYNC OPERATOR");
 }
 
 }  // namespace

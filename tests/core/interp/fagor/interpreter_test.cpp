@@ -298,8 +298,8 @@ TEST_F(FagorRun, CheckFailsAtAConstructThatCannotRunYet) {
               interp::RunStatus::Failed);
     const std::string file = (root / "program.pim").string();
     EXPECT_EQ(diagnostics(), file +
-                                 ":3:2: error: ODW is a screen customisation instruction: not "
-                                 "supported; the program cannot run past this block\n");
+                                 ":3:2: error: ODW is a screen customisation instruction: it "
+                                 "runs only in a user customisation program (the user screen)\n");
     EXPECT_TRUE(out.lines.empty());
 }
 

@@ -100,6 +100,11 @@ public:
         log.push_back("LOCK " + std::to_string(static_cast<int>(change)));
         return true;
     }
+    bool screen(const ScreenStatement& st, Problem&) override {
+        screens.push_back(st);
+        return true;
+    }
+    std::vector<ScreenStatement> screens;
     bool reposition(const std::array<Axis, kAxisCount>& axes, int count, Problem&) override {
         std::string s = "REPOS";
         for (int i = 0; i < count; ++i)
@@ -214,12 +219,77 @@ TEST(FagorStatements, CheckOnlyReportsStaticFacts) {
     EXPECT_EQ(runner.info().kind, StatementInfo::Kind::Customization);
 }
 
-TEST(FagorStatements, CustomisationIsNotSupported) {
-    for (const char* s : {"PAGE 10", "SYMBOL 1, 2, 3", "IB1=INPUT \"X:\", -6.5", "ODW 1,10,60",
-                          "DW1=DATE, DWH2=100", "SK 1=\"HELP\", SK 2=\"MAX\"", "WKEY",
-                          "WBUF \"X\", P100", "WBUF", "SYSTEM"}) {
-        EXPECT_EQ(failure(s).code, "not-supported") << s;
-    }
+TEST(FagorStatements, CustomisationInstructionsCarryTheirValues) {
+    using Kind = ScreenStatement::Kind;
+    Recorder r;
+    r.p[100] = 10;
+    r.p[101] = 3;
+    ASSERT_TRUE(run(r, "PAGE (P101+7)"));
+    EXPECT_EQ(r.screens.back().kind, Kind::Page);
+    EXPECT_EQ(r.screens.back().numbers[0], 10);
+    ASSERT_TRUE(run(r, "SYMBOL 7, 639, 335"));
+    EXPECT_EQ(r.screens.back().numbers, (std::array<int, 3>{7, 639, 335}));
+    ASSERT_TRUE(run(r, "ODW 2, 14, 33"));
+    EXPECT_EQ(r.screens.back().kind, Kind::DefineWindow);
+    EXPECT_EQ(r.screens.back().numbers, (std::array<int, 3>{2, 14, 33}));
+    // EX-12.14: the three number formats of the manual.
+    ASSERT_TRUE(run(r, "DW1 = 100, DWH2 = 100, DWB3 = 100, DW 4=P100/4"));
+    const auto& w = r.screens.back().windows;
+    ASSERT_EQ(w.size(), 4u);
+    EXPECT_EQ(w[0].window, 1);
+    EXPECT_EQ(w[0].text, "100");
+    EXPECT_EQ(w[1].text, "64");
+    EXPECT_EQ(w[2].text, "01100100");
+    EXPECT_EQ(w[3].window, 4);
+    EXPECT_EQ(w[3].text, "2.5");
+    ASSERT_TRUE(run(r, "SK 1=\"CICLO 1\",SK 2=\"CICLO 2\",SK 7=\"SALIR\""));
+    const auto& keys = r.screens.back().softkeys;
+    ASSERT_EQ(keys.size(), 3u);
+    EXPECT_EQ(keys[2], (std::pair<int, std::string>{7, "SALIR"}));
+    ASSERT_TRUE(run(r, "IB 1=INPUT \"X:\",-6.5"));
+    const ScreenStatement& input = r.screens.back();
+    EXPECT_EQ(input.kind, Kind::Input);
+    EXPECT_EQ(input.index, 1);
+    EXPECT_EQ(input.text, "X:");
+    ASSERT_TRUE(input.format.has_value());
+    EXPECT_TRUE(input.format->negative);
+    EXPECT_EQ(input.format->integerDigits, 6);
+    EXPECT_EQ(input.format->decimals, 5);
+    ASSERT_TRUE(run(r, "IB2=INPUT \"Feed\", 5.4"));
+    EXPECT_FALSE(r.screens.back().format->negative);
+    ASSERT_TRUE(run(r, "IB3=INPUT \"No wait\""));
+    EXPECT_FALSE(r.screens.back().format.has_value());
+    ASSERT_TRUE(run(r, "WBUF \"X\", P100"));
+    EXPECT_EQ(r.screens.back().kind, Kind::AppendToBlock);
+    EXPECT_EQ(r.screens.back().value, 10.0);
+    ASSERT_TRUE(run(r, "WBUF \"X P100\""));
+    EXPECT_FALSE(r.screens.back().value.has_value());
+    ASSERT_TRUE(run(r, "WBUF"));
+    EXPECT_EQ(r.screens.back().kind, Kind::InsertBlock);
+    ASSERT_TRUE(run(r, "WKEY"));
+    EXPECT_EQ(r.screens.back().kind, Kind::WaitKey);
+    ASSERT_TRUE(run(r, "IF KEY EQ $FC06 SYSTEM ELSE GOTO N5"));
+    EXPECT_EQ(r.log.back(), "GOTO 5");  // KEY reads 5 here
+}
+
+TEST(FagorStatements, CustomisationErrorsAtTheirValue) {
+    EXPECT_EQ(failure("ODW 26, 1, 1").messageTemplate,
+              "{1} must be a whole number from {2} to {3}, not {4}");
+    EXPECT_EQ(failure("ODW 1, 21, 1").args[0], "a text row");
+    EXPECT_EQ(failure("ODW 1, 1, 80").args[0], "a text column");
+    EXPECT_EQ(failure("PAGE 256").args[0], "a user page");
+    EXPECT_EQ(failure("SYMBOL 1, 640, 0").args[0], "a pixel column");
+    EXPECT_EQ(failure("SK 8=\"X\"").args[0], "a softkey");
+    EXPECT_EQ(failure("SK 1=\"123456789012345678901\"").offset, 6u);
+    EXPECT_EQ(failure("IB26=INPUT \"X\"").args[0], "an input variable");
+    EXPECT_EQ(failure("IB1=INPUT \"X\", 7.1").offset, 16u);
+    EXPECT_EQ(failure("IB1=INPUT \"X\", 6.6").code, "syntax");
+    EXPECT_EQ(failure("DW1=1, ODW 2").messageTemplate, "DW expected");
+    // Customisation instructions take no local parameters (spec part 2 §6.8).
+    const Problem local = failure("DW1=P3");
+    EXPECT_EQ(local.code, "parameter");
+    EXPECT_EQ(local.args[0], "3");
+    EXPECT_EQ(failure("PAGE A").code, "parameter");
 }
 
 TEST(FagorStatements, SyntaxErrors) {
