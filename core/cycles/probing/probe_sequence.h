@@ -26,6 +26,9 @@ public:
     // A touch along -w onto a nominal surface height `nominalW` at (u, v): gives the surface
     // height.
     std::optional<CycleError> touchDown(const Vec2& at, double nominalW, double& surfaceW);
+    // A touch along the unit `direction` from `start`, reached by the positioning logic: the
+    // ball centre at the trigger (444's touch along a surface normal).
+    std::optional<CycleError> touchFromPoint(const Vec3& start, const Vec3& direction, Vec3& ball);
     // Back to the clearance height at the end of the cycle.
     void retract();
 
