@@ -24,6 +24,7 @@ struct ProbeData {
     double maxPath = 0.0;          // DIST
     double setUp = 0.0;            // SET_UP
     bool track = false;            // TRACK ON or 441 Q399 = 1: orient the probe before each touch
+    double length = 0.0;           // L_p: the probe's effective length (461 calibrates it)
     // The machine's rotary table axes, nearest to the workpiece first ("CB" on a B/C trunnion
     // with C on B, "A" with one A table, empty without): 403 and 405 turn one of them.
     std::string tableAxes;
@@ -77,6 +78,12 @@ struct FastProbing {
     bool interrupt = true;                    // Q400
 };
 
+// 460-463: the probe's calibrated length and ball radius, for its row of the tool table.
+struct ProbeCalibration {
+    std::optional<double> length;
+    std::optional<double> radius;
+};
+
 struct ProbingResults {
     std::vector<std::pair<uint16_t, double>> parameters;  // Q150..Q199 in mm and degrees
     std::optional<DatumResult> datum;                     // 408-419
@@ -90,6 +97,7 @@ struct ProbingResults {
     std::optional<CycleError> toleranceStop;       // Q309 = 1 and a tolerance was exceeded
     std::optional<ToolCorrection> toolCorrection;  // applied when Q330 names a tool
     std::optional<FastProbing> fastProbing;        // 441
+    std::optional<ProbeCalibration> calibration;   // 460-463
 
     void set(uint16_t q, double value) { parameters.emplace_back(q, value); }
 };

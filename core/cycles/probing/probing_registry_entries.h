@@ -36,9 +36,13 @@ extern const ProbingCycleDescriptor kProbe430;
 extern const ProbingCycleDescriptor kProbe431;
 extern const ProbingCycleDescriptor kProbe441;
 extern const ProbingCycleDescriptor kProbe444;
+extern const ProbingCycleDescriptor kProbe461;
+extern const ProbingCycleDescriptor kProbe462;
+extern const ProbingCycleDescriptor kProbe463;
 extern const ProbingCycleDescriptor kProbe480;
 extern const ProbingCycleDescriptor kProbe481;
 extern const ProbingCycleDescriptor kProbe482;
 extern const ProbingCycleDescriptor kProbe483;
+extern const ProbingCycleDescriptor kProbe484;
 
 }  // namespace kerf::cycles::probing

@@ -33,6 +33,7 @@
 #include "core/tables/preset_table.h"
 #include "core/tables/probe_table.h"
 #include "core/tables/tool_table.h"
+#include "core/workpiece/simulated_tool_probe.h"
 #include "core/workpiece/simulated_workpiece.h"
 
 namespace kerf::klartext {
@@ -292,6 +293,7 @@ private:
                                 const cycles::CycleValues& values, bool oldFormat,
                                 uint16_t statusParameter);
     std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
+    workpiece::RealTool realTool(const tables::ToolData& row) const;
     struct ToolTableEdit {  // what a probing cycle writes into a tool's row
         std::optional<double> length, radius, deltaLength, deltaRadius;
         bool lock = false;  // TL = L

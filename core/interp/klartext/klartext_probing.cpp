@@ -38,9 +38,17 @@ std::string upperName(std::string_view text) {
 // setup error). Positions are ball centres in the cycle's local frame.
 class KlartextInterpreter::ProbeAdapter final : public cycles::probing::ProbingMachine {
 public:
+    // `real`: the stylus as it really is ([[simulation.tool_error]] of the probe), what the
+    // calibration cycles find; the control computes with the table's values.
     ProbeAdapter(KlartextInterpreter& interpreter, const cycles::probing::ProbeData& probe,
-                 const workpiece::SimulatedWorkpiece& part)
-        : m_k(interpreter), m_probe(probe), m_part(part) {}
+                 const workpiece::SimulatedWorkpiece& part, workpiece::RealTool real)
+        : m_k(interpreter),
+          m_probe(probe),
+          m_part(part),
+          m_realRadius(real.radius),
+          m_realOffset(0.0, 0.0,
+                       real.radius - probe.ballRadius -
+                           (real.length - interpreter.m_tool.effectiveLength())) {}
 
     Vec3 ballCentre() const override { return tipToBall(m_k.toLocal(m_k.m_programmed)); }
 
@@ -57,9 +65,11 @@ public:
             if (angle <= -180.0) angle += 360.0;  // -0 in y: (-180, 180]
             m_k.emit(canon::SpindleOrient{angle});
         }
-        auto hit = m_part.touch(toPart(start), toPart(start + direction) - toPart(start), maxPath,
-                                m_probe.ballRadius);
-        const Vec3 end = hit ? fromPart(*hit) : Vec3(start + maxPath * direction);
+        const Vec3 real = start + m_realOffset;
+        auto hit = m_part.touch(toPart(real), toPart(real + direction) - toPart(real), maxPath,
+                                m_realRadius);
+        const Vec3 end =
+            hit ? Vec3(fromPart(*hit) - m_realOffset) : Vec3(start + maxPath * direction);
         interp::ProgramStatus::Probe status;
         status.triggered = hit.has_value();
         status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(ballToTip(end)));
@@ -71,7 +81,7 @@ public:
     }
 
     bool deflected() const override {
-        return m_part.touches(toPart(ballCentre()), m_probe.ballRadius);
+        return m_part.touches(toPart(ballCentre() + m_realOffset), m_realRadius);
     }
 
 private:
@@ -103,6 +113,8 @@ private:
     KlartextInterpreter& m_k;
     const cycles::probing::ProbeData& m_probe;
     const workpiece::SimulatedWorkpiece& m_part;
+    double m_realRadius;
+    Vec3 m_realOffset;  // control's ball centre -> the real one
 };
 
 std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int cycle) {
@@ -149,6 +161,7 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     probe.maxPath = data->maxProbingPath;
     probe.setUp = data->setUpClearance;
     probe.tableAxes = tableAxisLetters();
+    probe.length = m_tool.effectiveLength();
     probe.track = data->track;
     if (m_fastProbing) {
         const cycles::Feed& feed = m_fastProbing->positioning;
@@ -196,6 +209,11 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         values.set(q, m_globals.number(q));
     }
     if (cycle->toolMeasurement != cycles::probing::ToolMeasurementKind::None) {
+        if (def.number == 484) {
+            // Q536 = 0: the operator jogs the pin over the TT, NC start goes on from there.
+            if (values.integer(536) == 0) emit(canon::ProgramStop{canon::StopKind::Program, -1});
+            values.set(260, toLocal(m_programmed).z());
+        }
         executeToolMeasurement(*cycle, values, false, 0);
         return;
     }
@@ -229,7 +247,11 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     for (uint16_t q : cycle->results)
         m_q.set(QRef{QKind::Q, q}, 0.0);
     const workpiece::SimulatedWorkpiece part = simulatedPart();
-    ProbeAdapter machine(*this, *probe, part);
+    workpiece::RealTool real{m_tool.effectiveLength(), m_tool.effectiveRadius()};
+    if (const tables::ToolTable* tools = toolTable()) {
+        if (const tables::ToolData* row = tools->byNumber(m_tool.number)) real = realTool(*row);
+    }
+    ProbeAdapter machine(*this, *probe, part, real);
     cycles::probing::ProbingResults results;
     if (auto error = cycle->run(values, *probe, machine, results)) {
         failCycle(*error);
@@ -245,6 +267,23 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     if (results.datum && !applyDatum(def.number, results)) return;
     if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
     if (results.rotary && !applyRotaryCompensation(def.number, results)) return;
+    if (results.calibration) {
+        // The probe's row: the calibrated L and R replace the table's, with no deltas.
+        if (toolTable() == nullptr || toolTable()->byNumber(m_tool.number) == nullptr) {
+            fail("PRB-015",
+                 KERF_TR_NOOP("touch probe cycle {1}: calibration writes the probe's row of the "
+                              "tool table TOOL.T: call the probe from it"),
+                 {std::to_string(def.number)});
+            return;
+        }
+        ToolTableEdit edit;
+        edit.length = results.calibration->length;
+        edit.radius = results.calibration->radius;
+        const tables::ToolData& row = *toolTable()->byNumber(m_tool.number);
+        if (edit.length && row.deltaLength != 0.0) edit.deltaLength = 0.0;
+        if (edit.radius && row.deltaRadius != 0.0) edit.deltaRadius = 0.0;
+        if (!writeToolTable(def.number, m_tool.number, edit)) return;
+    }
     if (results.toleranceStop) {
         failCycle(*results.toleranceStop);
         return;

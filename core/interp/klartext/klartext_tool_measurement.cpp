@@ -70,6 +70,21 @@ private:
     double m_rpm;
 };
 
+// The real tool: as the table held it when the run started, plus the machine file's error.
+workpiece::RealTool KlartextInterpreter::realTool(const tables::ToolData& row) const {
+    const tables::ToolData* original =
+        m_settings.tools != nullptr ? m_settings.tools->byNumber(row.number) : nullptr;
+    const tables::ToolData& start = original != nullptr ? *original : row;
+    workpiece::RealTool real{start.length + start.deltaLength, start.radius + start.deltaRadius};
+    const machine::ToolErrorConfig* error =
+        m_settings.machine != nullptr ? m_settings.machine->toolError(row.number) : nullptr;
+    if (error != nullptr) {
+        real.length += error->lengthMm;
+        real.radius += error->radiusMm;
+    }
+    return real;
+}
+
 namespace {
 
 // The number after the last ':' of an old-format sub-block ("31.1 CHECK: 1 Q5") and, when
@@ -222,15 +237,7 @@ void KlartextInterpreter::executeToolMeasurement(
     tool.lengthOffset = table.numberCell(row->number, "L-OFFS").value_or(0.0);
     tool.cuttingDirection = table.numberCell(row->number, "DIRECT").value_or(-1.0);
 
-    // The real tool: as the table held it when the run started, plus the machine file's error.
-    const tables::ToolData* original =
-        m_settings.tools != nullptr ? m_settings.tools->byNumber(row->number) : nullptr;
-    const tables::ToolData& start = original != nullptr ? *original : *row;
-    workpiece::RealTool real{start.length + start.deltaLength, start.radius + start.deltaRadius};
-    if (const machine::ToolErrorConfig* error = m_settings.machine->toolError(row->number)) {
-        real.length += error->lengthMm;
-        real.radius += error->radiusMm;
-    }
+    const workpiece::RealTool real = realTool(*row);
     const machine::ToolProbeConfig& c = m_settings.machine->toolProbe;
     const workpiece::SimulatedToolProbe simulated({Vec3(c.centreXMm, c.centreYMm, c.centreZMm),
                                                    c.diameterMm,

@@ -12,6 +12,7 @@
 #include "core/machine/machine_loader.h"
 #include "core/tables/datum_table.h"
 #include "core/tables/preset_table.h"
+#include "core/tables/tool_table.h"
 
 namespace kerf::klartext {
 namespace {
@@ -422,6 +423,55 @@ TEST_F(ProbingTest, Cycle441SetsThePositioningFeedAndTracking) {
     EXPECT_NEAR(orientations[2], 0.0, 1e-9);
     EXPECT_NEAR(orientations[3], 90.0, 1e-9);
     EXPECT_GT(feeds, 0u);
+}
+
+// The probe (tool 1, L 0 R 2 in the table) is really 0.1 longer with a ball 0.02 smaller.
+const char* kProbeError =
+    "base = \"mill\"\n[simulation.setup]\nshift = [0.5, -0.3, 0.0]\nrotation = 0.0\n"
+    "[[simulation.tool_error]]\ntool = 1\nlength = 0.1\nradius = -0.02\n";
+
+TEST_F(ProbingTest, Cycle461CalibratesTheProbeLengthOnTheTopFace) {
+    // The top face lies at Z 0 = Q434: the real tip touches it when the gauge point stands at
+    // 0.1, so L becomes 0.1 and takes effect at once (Q114).
+    useMachine(kProbeError);
+    ASSERT_EQ(run(std::string(kPlateProgram) + "5 L X+50 Y+30 Z+10 FMAX\n"
+                                               "6 TCH PROBE 461 CALIBRATE TS LENGTH\n  Q434=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(114), 0.1, 1e-9);
+    auto written = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(written.ok());
+    EXPECT_NEAR(written->byNumber(1)->length, 0.1, 1e-4);
+}
+
+TEST_F(ProbingTest, Cycle462CalibratesTheBallRadiusInARing) {
+    // A ring of radius 5 (the tube's bore), really 0.58 mm off where the probe starts: the
+    // coarse pass centres the probe, the fine pass finds ball centres on a circle of 5 - 1.98.
+    useMachine(kProbeError);
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R20 RI5 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+10 R0 FMAX\n4 L Z-5 FMAX\n"
+                  "5 TCH PROBE 462 CALIBRATE TS IN RING\n  Q407=+5\n  Q320=+0\n  Q423=+8\n"
+                  "  Q380=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], 0.5, 1e-9);  // over the real ring centre
+    EXPECT_NEAR(end[Axis::Y], -0.3, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle463CalibratesTheBallRadiusOnAStud) {
+    useMachine(kProbeError);
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R10 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+2 R0 FMAX\n"
+                  "4 TCH PROBE 463 CALIBRATE TS ON STUD\n  Q407=+10\n  Q320=+0\n  Q301=+1\n"
+                  "  Q423=+8\n  Q380=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    auto written = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(written.ok());
+    EXPECT_NEAR(written->byNumber(1)->radius, 1.98, 1e-4);
 }
 
 }  // namespace
