@@ -7713,6 +7713,10 @@ zyklen</translation>
         <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
         <translation>Tastsystemzyklus {1}: die Kalibrierung schreibt die Zeile des Tastsystems in der Werkzeugtabelle TOOL.T: das Tastsystem daraus aufrufen</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>Tastsystemzyklus {1}: die TT-Kalibrierung kann nicht geschrieben werden: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -7713,6 +7713,10 @@ fijos</translation>
         <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
         <translation>ciclo de palpación {1}: la calibración escribe la fila del palpador en la tabla de herramientas TOOL.T: llame al palpador desde ella</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>ciclo de palpación {1}: no se puede escribir la calibración del TT: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

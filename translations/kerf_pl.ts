@@ -7716,6 +7716,10 @@ stałe</translation>
         <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
         <translation>cykl sondy {1}: kalibracja zapisuje wiersz sondy w tabeli narzędzi TOOL.T: wywołać sondę z tej tabeli</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>cykl sondy {1}: nie można zapisać kalibracji TT: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

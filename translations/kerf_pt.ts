@@ -7713,6 +7713,10 @@ fixos</translation>
         <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
         <translation>ciclo de apalpação {1}: a calibração escreve a linha do apalpador na tabela de ferramentas TOOL.T: chame o apalpador a partir dela</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>ciclo de apalpação {1}: não é possível escrever a calibração do TT: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -294,6 +294,8 @@ private:
                                 uint16_t statusParameter);
     std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
     workpiece::RealTool realTool(const tables::ToolData& row) const;
+    void writeToolProbeCalibration(int cycle, const cycles::probing::ToolProbeData& tt);
+    void readToolProbeCalibration(cycles::probing::ToolProbeData& tt);
     struct ToolTableEdit {  // what a probing cycle writes into a tool's row
         std::optional<double> length, radius, deltaLength, deltaRadius;
         bool lock = false;  // TL = L
