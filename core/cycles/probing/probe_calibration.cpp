@@ -32,22 +32,6 @@ Vec2 unit(double degrees) {
     return {std::cos(a), std::sin(a)};
 }
 
-std::optional<CycleError> touchOnce(int cycle, const ProbeData& probe, ProbingMachine& machine,
-                                    const Vec3& direction, Vec3& ball) {
-    if (machine.deflected()) {
-        return probingError(cycle, "PRB-002", KERF_TR_NOOP("cycle {1}: stylus already deflected"));
-    }
-    auto hit = machine.touch(direction, probe.maxPath);
-    if (!hit) {
-        return probingError(cycle, "PRB-001",
-                            KERF_TR_NOOP("cycle {1}: touch point not reached within the "
-                                         "measuring path DIST = {2} mm"),
-                            {std::to_string(probe.maxPath)});
-    }
-    ball = *hit;
-    return std::nullopt;
-}
-
 std::optional<CycleError> fitted(int cycle, const std::vector<Vec2>& balls, FittedCircle& circle) {
     auto c = fitCircle(balls);
     if (!c) {
@@ -65,8 +49,9 @@ constexpr ParameterDescriptor k461Parameters[] = {
 // at the trigger less Q434 is the effective length (spec 6, impl. note).
 std::optional<CycleError> run461(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
+    ProbeSequence sequence(461, v, probe, machine);
     Vec3 ball;
-    if (auto e = touchOnce(461, probe, machine, Vec3(0.0, 0.0, -1.0), ball)) return e;
+    if (auto e = sequence.touchFrom(Vec3(0.0, 0.0, -1.0), ball)) return e;
     const double gauge = ball.z() - probe.ballRadius + probe.length;
     results.calibration = ProbeCalibration{gauge - v.number(434), std::nullopt};
     return std::nullopt;
@@ -80,6 +65,7 @@ constexpr ParameterDescriptor k462Parameters[] = {kRingRadius, kSetUpClearance, 
 std::optional<CycleError> run462(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
     const int fine = v.integer(423) < 3 ? 4 : v.integer(423);
+    ProbeSequence sequence(462, v, probe, machine);
     Vec3 centre = machine.ballCentre();
     FittedCircle circle;
     for (int count : {4, fine}) {
@@ -87,7 +73,7 @@ std::optional<CycleError> run462(const CycleValues& v, const ProbeData& probe,
         for (int k = 0; k < count; ++k) {
             const Vec2 d = unit(v.number(380) + 360.0 * k / count);
             Vec3 ball;
-            if (auto e = touchOnce(462, probe, machine, Vec3(d.x(), d.y(), 0.0), ball)) return e;
+            if (auto e = sequence.touchFrom(Vec3(d.x(), d.y(), 0.0), ball)) return e;
             balls.emplace_back(ball.x(), ball.y());
         }
         if (auto e = fitted(462, balls, circle)) return e;
@@ -108,6 +94,7 @@ constexpr ParameterDescriptor k463Parameters[] = {kRingRadius, kSetUpClearance, 
 std::optional<CycleError> run463(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
     const int fine = v.integer(423) < 3 ? 4 : v.integer(423);
+    ProbeSequence sequence(463, v, probe, machine);
     const double clearance = probe.setUp + v.number(320);
     const Vec3 start = machine.ballCentre();
     const double height = start.z() - clearance - 2.0 * probe.ballRadius;
@@ -121,9 +108,7 @@ std::optional<CycleError> run463(const CycleValues& v, const ProbeData& probe,
             machine.moveTo(Vec3(from.x(), from.y(), start.z()));
             machine.moveTo(Vec3(from.x(), from.y(), height));
             Vec3 ball;
-            if (auto e = touchOnce(463, probe, machine, Vec3(-d.x(), -d.y(), 0.0), ball)) {
-                return e;
-            }
+            if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
             balls.emplace_back(ball.x(), ball.y());
             machine.moveTo(Vec3(from.x(), from.y(), start.z()));
         }
