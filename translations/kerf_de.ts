@@ -6544,16 +6544,8 @@ editieren</translation>
         <translation>Messprotokoll {1} kann nicht geschrieben werden: {2}</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation>Tastsystemzyklus {1}: das Schreiben in die Nullpunkt-Tabelle (Q303 = 0) wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
         <translation>Tastsystemzyklus {1}: die Bezugspunkttabelle kann nicht geschrieben werden: {2}</translation>
-    </message>
-    <message>
-        <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation>Tastsystemzyklus {1}: das Schreiben einer Grunddrehung in die Bezugspunkt-Zeile Q305 wird noch nicht unterstützt</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
@@ -7772,6 +7764,186 @@ wählen</translation>
     <message>
         <source>the number does not fit the input format</source>
         <translation>die Zahl passt nicht zum Eingabeformat</translation>
+    </message>
+    <message>
+        <source>Exact radius of the calibration ring or stud</source>
+        <translation>Genauer Radius des Kalibrierrings oder -zapfens</translation>
+    </message>
+    <message>
+        <source>Number of touch points on the diameter (0: 4)</source>
+        <translation>Anzahl Antastpunkte am Durchmesser (0: 4)</translation>
+    </message>
+    <message>
+        <source>Reference angle: main axis to touch point 1</source>
+        <translation>Bezugswinkel: Hauptachse zum 1. Antastpunkt</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the ring&apos;s top face</source>
+        <translation>Bezugspunkt für die Länge: Höhe der Ringoberfläche</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS LENGTH</source>
+        <translation>TS LÄNGE KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS IN RING</source>
+        <translation>TS IM RING KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON STUD</source>
+        <translation>TS AM ZAPFEN KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>Measuring axis: 1 main axis, 2 secondary axis, 3 touch probe axis</source>
+        <translation>Messachse: 1 Hauptachse, 2 Nebenachse, 3 Tastsystemachse</translation>
+    </message>
+    <message>
+        <source>Axis for the compensation: 0 automatic, 4 A, 5 B, 6 C</source>
+        <translation>Achse für die Ausgleichsbewegung: 0 automatisch, 4 A, 5 B, 6 C</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 no, 1 yes</source>
+        <translation>Nach dem Ausrichten auf Null setzen: 0 nein, 1 ja</translation>
+    </message>
+    <message>
+        <source>Reference angle the probed line is aligned to</source>
+        <translation>Bezugswinkel, auf den die angetastete Gerade ausgerichtet wird</translation>
+    </message>
+    <message>
+        <source>cycle {1}: Q312 must be 0, 4, 5 or 6</source>
+        <translation>Zyklus {1}: Q312 muss 0, 4, 5 oder 6 sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the machine has no rotary table axis {2} to compensate the misalignment</source>
+        <translation>Zyklus {1}: die Maschine hat keine Rundtischachse {2}, um die Schieflage auszugleichen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the rotary axis {2} cannot compensate a misalignment about the axis of {3}</source>
+        <translation>Zyklus {1}: die Drehachse {2} kann keine Schieflage um die Achse von {3} ausgleichen</translation>
+    </message>
+    <message>
+        <source>Preset rotation angle: the basic rotation to set</source>
+        <translation>Drehwinkel: die zu setzende Grunddrehung</translation>
+    </message>
+    <message>
+        <source>Number in table: -1 the active preset, 0 preset 0 and active</source>
+        <translation>Nummer in Tabelle: -1 der aktive Bezugspunkt, 0 Bezugspunkt 0 und aktiv</translation>
+    </message>
+    <message>
+        <source>Hole centre, main axis</source>
+        <translation>Bohrungsmitte Hauptachse</translation>
+    </message>
+    <message>
+        <source>Hole centre, secondary axis: 0 aligns the hole to +Y</source>
+        <translation>Bohrungsmitte Nebenachse: 0 richtet die Bohrung auf +Y aus</translation>
+    </message>
+    <message>
+        <source>Nominal diameter (enter it on the small side)</source>
+        <translation>Solldurchmesser (eher zu klein eingeben)</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 the C display, n add to datum row n</source>
+        <translation>Nach dem Ausrichten Null setzen: 0 die C-Anzeige, n zu Nullpunktzeile n addieren</translation>
+    </message>
+    <message>
+        <source>BASIC ROTATION COMPENSATED VIA ROTARY AXIS</source>
+        <translation>GRUNDDREHUNG ÜBER DREHACHSE KOMPENSIEREN</translation>
+    </message>
+    <message>
+        <source>SET BASIC ROTATION</source>
+        <translation>GRUNDDREHUNG SETZEN</translation>
+    </message>
+    <message>
+        <source>ROT IN C AXIS</source>
+        <translation>ROT ÜBER C-ACHSE</translation>
+    </message>
+    <message>
+        <source>Positioning feed rate of the probe (FMAX: rapid traverse)</source>
+        <translation>Positioniervorschub des Tastsystems (FMAX: Eilgang)</translation>
+    </message>
+    <message>
+        <source>Pre-position at machine rapid: 0 no (Q396), 1 yes</source>
+        <translation>Vorpositionieren im Maschinen-Eilgang: 0 nein (Q396), 1 ja</translation>
+    </message>
+    <message>
+        <source>Angle tracking: 0 no, 1 orient the probe before each touch</source>
+        <translation>Winkelnachführung: 0 nein, 1 Tastsystem vor jedem Antasten orientieren</translation>
+    </message>
+    <message>
+        <source>Automatic interruption: 0 never, 1 when a cycle shows its log</source>
+        <translation>Automatische Unterbrechung: 0 nie, 1 wenn ein Zyklus sein Protokoll zeigt</translation>
+    </message>
+    <message>
+        <source>Nominal point, main axis</source>
+        <translation>Sollpunkt Hauptachse</translation>
+    </message>
+    <message>
+        <source>Nominal point, secondary axis</source>
+        <translation>Sollpunkt Nebenachse</translation>
+    </message>
+    <message>
+        <source>Nominal point, tool axis</source>
+        <translation>Sollpunkt Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>Surface normal, main axis component</source>
+        <translation>Flächennormale, Komponente Hauptachse</translation>
+    </message>
+    <message>
+        <source>Surface normal, secondary axis component</source>
+        <translation>Flächennormale, Komponente Nebenachse</translation>
+    </message>
+    <message>
+        <source>Surface normal, tool axis component</source>
+        <translation>Flächennormale, Komponente Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>Tolerance along the normal, e.g. &quot;0.4-0.1&quot;</source>
+        <translation>Toleranz entlang der Normalen, z. B. &quot;0.4-0.1&quot;</translation>
+    </message>
+    <message>
+        <source>Tolerance error: 0 nothing, 1 stop, 2 stop on undersize only</source>
+        <translation>Toleranzfehler: 0 nichts, 1 Stopp, 2 Stopp nur bei Untermaß</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the surface normal Q581..Q583 is zero</source>
+        <translation>Zyklus {1}: die Flächennormale Q581..Q583 ist null</translation>
+    </message>
+    <message>
+        <source>FAST PROBING</source>
+        <translation>SCHNELLES ANTASTEN</translation>
+    </message>
+    <message>
+        <source>PROBING IN 3-D</source>
+        <translation>ANTASTEN 3D</translation>
+    </message>
+    <message>
+        <source>Stop before running: 0 stop to position the tool, 1 no stop</source>
+        <translation>Stopp vor der Ausführung: 0 Stopp zum Positionieren des Werkzeugs, 1 kein Stopp</translation>
+    </message>
+    <message>
+        <source>CALIBRATE IR TT</source>
+        <translation>IR-TT KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
+        <translation>Tastsystemzyklus {1}: die Bezugspunkt-Tabelle hat keine Spalte SPC für die Grunddrehung der Zeile {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
+        <translation>Tastsystemzyklus {1}: Q303 = 0 schreibt in die aktive Nullpunkt-Tabelle: zuerst eine mit SEL TABLE wählen</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the datum table: {2}</source>
+        <translation>Tastsystemzyklus {1}: die Nullpunkt-Tabelle kann nicht geschrieben werden: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
+        <translation>Tastsystemzyklus {1}: die Kalibrierung schreibt die Zeile des Tastsystems in der Werkzeugtabelle TOOL.T: das Tastsystem daraus aufrufen</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>Tastsystemzyklus {1}: die TT-Kalibrierung kann nicht geschrieben werden: {2}</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -6544,16 +6544,8 @@ ciclo</translation>
         <translation>no se puede escribir el protocolo de medición {1}: {2}</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation>ciclo de palpación {1}: la escritura en la tabla de puntos cero (Q303 = 0) todavía no se admite</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
         <translation>ciclo de palpación {1}: no se puede escribir la tabla de puntos de referencia: {2}</translation>
-    </message>
-    <message>
-        <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation>ciclo de palpación {1}: la escritura de un giro básico en la fila Q305 de la tabla de puntos de referencia todavía no se admite</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
@@ -7772,6 +7764,186 @@ solución</translation>
     <message>
         <source>the number does not fit the input format</source>
         <translation>el número no cabe en el formato de entrada</translation>
+    </message>
+    <message>
+        <source>Exact radius of the calibration ring or stud</source>
+        <translation>Radio exacto del anillo o de la isla de calibración</translation>
+    </message>
+    <message>
+        <source>Number of touch points on the diameter (0: 4)</source>
+        <translation>Número de puntos de palpación en el diámetro (0: 4)</translation>
+    </message>
+    <message>
+        <source>Reference angle: main axis to touch point 1</source>
+        <translation>Ángulo de referencia: eje principal al punto de palpación 1</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the ring&apos;s top face</source>
+        <translation>Punto de referencia para la longitud: altura de la cara superior del anillo</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS LENGTH</source>
+        <translation>CALIBRAR LONGITUD TS</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS IN RING</source>
+        <translation>CALIBRAR TS EN ANILLO</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON STUD</source>
+        <translation>CALIBRAR TS EN ISLA</translation>
+    </message>
+    <message>
+        <source>Measuring axis: 1 main axis, 2 secondary axis, 3 touch probe axis</source>
+        <translation>Eje de medición: 1 eje principal, 2 eje secundario, 3 eje del palpador</translation>
+    </message>
+    <message>
+        <source>Axis for the compensation: 0 automatic, 4 A, 5 B, 6 C</source>
+        <translation>Eje para la compensación: 0 automático, 4 A, 5 B, 6 C</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 no, 1 yes</source>
+        <translation>Poner a cero tras la alineación: 0 no, 1 sí</translation>
+    </message>
+    <message>
+        <source>Reference angle the probed line is aligned to</source>
+        <translation>Ángulo de referencia al que se alinea la recta palpada</translation>
+    </message>
+    <message>
+        <source>cycle {1}: Q312 must be 0, 4, 5 or 6</source>
+        <translation>ciclo {1}: Q312 debe ser 0, 4, 5 o 6</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the machine has no rotary table axis {2} to compensate the misalignment</source>
+        <translation>ciclo {1}: la máquina no tiene el eje de mesa giratoria {2} para compensar la desalineación</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the rotary axis {2} cannot compensate a misalignment about the axis of {3}</source>
+        <translation>ciclo {1}: el eje giratorio {2} no puede compensar una desalineación alrededor del eje de {3}</translation>
+    </message>
+    <message>
+        <source>Preset rotation angle: the basic rotation to set</source>
+        <translation>Ángulo de giro: el giro básico que se fija</translation>
+    </message>
+    <message>
+        <source>Number in table: -1 the active preset, 0 preset 0 and active</source>
+        <translation>Número en la tabla: -1 el punto de referencia activo, 0 el punto 0 y activo</translation>
+    </message>
+    <message>
+        <source>Hole centre, main axis</source>
+        <translation>Centro del taladro, eje principal</translation>
+    </message>
+    <message>
+        <source>Hole centre, secondary axis: 0 aligns the hole to +Y</source>
+        <translation>Centro del taladro, eje secundario: 0 alinea el taladro con +Y</translation>
+    </message>
+    <message>
+        <source>Nominal diameter (enter it on the small side)</source>
+        <translation>Diámetro nominal (introducirlo más bien pequeño)</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 the C display, n add to datum row n</source>
+        <translation>Poner a cero tras la alineación: 0 la visualización de C, n sumar a la fila n de puntos cero</translation>
+    </message>
+    <message>
+        <source>BASIC ROTATION COMPENSATED VIA ROTARY AXIS</source>
+        <translation>GIRO BÁSICO COMPENSADO CON EJE GIRATORIO</translation>
+    </message>
+    <message>
+        <source>SET BASIC ROTATION</source>
+        <translation>FIJAR GIRO BÁSICO</translation>
+    </message>
+    <message>
+        <source>ROT IN C AXIS</source>
+        <translation>ROT CON EJE C</translation>
+    </message>
+    <message>
+        <source>Positioning feed rate of the probe (FMAX: rapid traverse)</source>
+        <translation>Avance de posicionamiento del palpador (FMAX: marcha rápida)</translation>
+    </message>
+    <message>
+        <source>Pre-position at machine rapid: 0 no (Q396), 1 yes</source>
+        <translation>Preposicionar en marcha rápida de la máquina: 0 no (Q396), 1 sí</translation>
+    </message>
+    <message>
+        <source>Angle tracking: 0 no, 1 orient the probe before each touch</source>
+        <translation>Seguimiento angular: 0 no, 1 orientar el palpador antes de cada palpación</translation>
+    </message>
+    <message>
+        <source>Automatic interruption: 0 never, 1 when a cycle shows its log</source>
+        <translation>Interrupción automática: 0 nunca, 1 cuando un ciclo muestra su protocolo</translation>
+    </message>
+    <message>
+        <source>Nominal point, main axis</source>
+        <translation>Punto nominal, eje principal</translation>
+    </message>
+    <message>
+        <source>Nominal point, secondary axis</source>
+        <translation>Punto nominal, eje secundario</translation>
+    </message>
+    <message>
+        <source>Nominal point, tool axis</source>
+        <translation>Punto nominal, eje de herramienta</translation>
+    </message>
+    <message>
+        <source>Surface normal, main axis component</source>
+        <translation>Normal a la superficie, componente del eje principal</translation>
+    </message>
+    <message>
+        <source>Surface normal, secondary axis component</source>
+        <translation>Normal a la superficie, componente del eje secundario</translation>
+    </message>
+    <message>
+        <source>Surface normal, tool axis component</source>
+        <translation>Normal a la superficie, componente del eje de herramienta</translation>
+    </message>
+    <message>
+        <source>Tolerance along the normal, e.g. &quot;0.4-0.1&quot;</source>
+        <translation>Tolerancia a lo largo de la normal, p. ej. &quot;0.4-0.1&quot;</translation>
+    </message>
+    <message>
+        <source>Tolerance error: 0 nothing, 1 stop, 2 stop on undersize only</source>
+        <translation>Error de tolerancia: 0 nada, 1 parada, 2 parada solo con medida inferior</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the surface normal Q581..Q583 is zero</source>
+        <translation>ciclo {1}: la normal a la superficie Q581..Q583 es nula</translation>
+    </message>
+    <message>
+        <source>FAST PROBING</source>
+        <translation>PALPACIÓN RÁPIDA</translation>
+    </message>
+    <message>
+        <source>PROBING IN 3-D</source>
+        <translation>PALPACIÓN 3D</translation>
+    </message>
+    <message>
+        <source>Stop before running: 0 stop to position the tool, 1 no stop</source>
+        <translation>Parada antes de ejecutar: 0 parada para posicionar la herramienta, 1 sin parada</translation>
+    </message>
+    <message>
+        <source>CALIBRATE IR TT</source>
+        <translation>CALIBRAR TT IR</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
+        <translation>ciclo de palpación {1}: la tabla de puntos de referencia no tiene columna SPC para el giro básico de la fila {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
+        <translation>ciclo de palpación {1}: Q303 = 0 escribe en la tabla de puntos cero activa: seleccione una antes con SEL TABLE</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the datum table: {2}</source>
+        <translation>ciclo de palpación {1}: no se puede escribir la tabla de puntos cero: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
+        <translation>ciclo de palpación {1}: la calibración escribe la fila del palpador en la tabla de herramientas TOOL.T: llame al palpador desde ella</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>ciclo de palpación {1}: no se puede escribir la calibración del TT: {2}</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

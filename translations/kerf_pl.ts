@@ -6547,16 +6547,8 @@ cykl</translation>
         <translation>nie można zapisać protokołu pomiaru {1}: {2}</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation>cykl próbkowania {1}: zapis do tabeli punktów zerowych (Q303 = 0) nie jest jeszcze obsługiwany</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
         <translation>cykl próbkowania {1}: nie można zapisać tabeli punktów odniesienia: {2}</translation>
-    </message>
-    <message>
-        <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation>cykl próbkowania {1}: zapis obrotu podstawowego do wiersza Q305 tabeli punktów odniesienia nie jest jeszcze obsługiwany</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
@@ -7775,6 +7767,186 @@ rozwiązanie</translation>
     <message>
         <source>the number does not fit the input format</source>
         <translation>liczba nie pasuje do formatu wejścia</translation>
+    </message>
+    <message>
+        <source>Exact radius of the calibration ring or stud</source>
+        <translation>Dokładny promień pierścienia lub czopu kalibracyjnego</translation>
+    </message>
+    <message>
+        <source>Number of touch points on the diameter (0: 4)</source>
+        <translation>Liczba punktów próbkowania na średnicy (0: 4)</translation>
+    </message>
+    <message>
+        <source>Reference angle: main axis to touch point 1</source>
+        <translation>Kąt odniesienia: oś główna do punktu próbkowania 1</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the ring&apos;s top face</source>
+        <translation>Punkt odniesienia dla długości: wysokość górnej powierzchni pierścienia</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS LENGTH</source>
+        <translation>KALIBROWANIE DŁUGOŚCI TS</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS IN RING</source>
+        <translation>KALIBROWANIE TS W PIERŚCIENIU</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON STUD</source>
+        <translation>KALIBROWANIE TS NA CZOPIE</translation>
+    </message>
+    <message>
+        <source>Measuring axis: 1 main axis, 2 secondary axis, 3 touch probe axis</source>
+        <translation>Oś pomiarowa: 1 oś główna, 2 oś pomocnicza, 3 oś sondy</translation>
+    </message>
+    <message>
+        <source>Axis for the compensation: 0 automatic, 4 A, 5 B, 6 C</source>
+        <translation>Oś kompensacji: 0 automatycznie, 4 A, 5 B, 6 C</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 no, 1 yes</source>
+        <translation>Zerowanie po wyrównaniu: 0 nie, 1 tak</translation>
+    </message>
+    <message>
+        <source>Reference angle the probed line is aligned to</source>
+        <translation>Kąt odniesienia, do którego wyrównywana jest próbkowana prosta</translation>
+    </message>
+    <message>
+        <source>cycle {1}: Q312 must be 0, 4, 5 or 6</source>
+        <translation>cykl {1}: Q312 musi wynosić 0, 4, 5 lub 6</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the machine has no rotary table axis {2} to compensate the misalignment</source>
+        <translation>cykl {1}: maszyna nie ma osi stołu obrotowego {2} do kompensacji ukośnego położenia</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the rotary axis {2} cannot compensate a misalignment about the axis of {3}</source>
+        <translation>cykl {1}: oś obrotowa {2} nie może skompensować ukośnego położenia wokół osi {3}</translation>
+    </message>
+    <message>
+        <source>Preset rotation angle: the basic rotation to set</source>
+        <translation>Kąt obrotu: obrót podstawowy do ustawienia</translation>
+    </message>
+    <message>
+        <source>Number in table: -1 the active preset, 0 preset 0 and active</source>
+        <translation>Numer w tabeli: -1 aktywny punkt bazowy, 0 punkt bazowy 0 i aktywny</translation>
+    </message>
+    <message>
+        <source>Hole centre, main axis</source>
+        <translation>Środek otworu, oś główna</translation>
+    </message>
+    <message>
+        <source>Hole centre, secondary axis: 0 aligns the hole to +Y</source>
+        <translation>Środek otworu, oś pomocnicza: 0 wyrównuje otwór do +Y</translation>
+    </message>
+    <message>
+        <source>Nominal diameter (enter it on the small side)</source>
+        <translation>Średnica nominalna (podać raczej mniejszą)</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 the C display, n add to datum row n</source>
+        <translation>Zerowanie po wyrównaniu: 0 wskazanie C, n dodać do wiersza n punktów zerowych</translation>
+    </message>
+    <message>
+        <source>BASIC ROTATION COMPENSATED VIA ROTARY AXIS</source>
+        <translation>OBRÓT PODSTAWOWY KOMPENSOWANY OSIĄ OBROTOWĄ</translation>
+    </message>
+    <message>
+        <source>SET BASIC ROTATION</source>
+        <translation>USTAWIENIE OBROTU PODSTAWOWEGO</translation>
+    </message>
+    <message>
+        <source>ROT IN C AXIS</source>
+        <translation>OBRÓT PRZEZ OŚ C</translation>
+    </message>
+    <message>
+        <source>Positioning feed rate of the probe (FMAX: rapid traverse)</source>
+        <translation>Posuw pozycjonowania sondy (FMAX: bieg szybki)</translation>
+    </message>
+    <message>
+        <source>Pre-position at machine rapid: 0 no (Q396), 1 yes</source>
+        <translation>Pozycjonowanie wstępne biegiem szybkim maszyny: 0 nie (Q396), 1 tak</translation>
+    </message>
+    <message>
+        <source>Angle tracking: 0 no, 1 orient the probe before each touch</source>
+        <translation>Nadążanie kątowe: 0 nie, 1 orientować sondę przed każdym próbkowaniem</translation>
+    </message>
+    <message>
+        <source>Automatic interruption: 0 never, 1 when a cycle shows its log</source>
+        <translation>Automatyczne przerwanie: 0 nigdy, 1 gdy cykl pokazuje protokół</translation>
+    </message>
+    <message>
+        <source>Nominal point, main axis</source>
+        <translation>Punkt nominalny, oś główna</translation>
+    </message>
+    <message>
+        <source>Nominal point, secondary axis</source>
+        <translation>Punkt nominalny, oś pomocnicza</translation>
+    </message>
+    <message>
+        <source>Nominal point, tool axis</source>
+        <translation>Punkt nominalny, oś narzędzia</translation>
+    </message>
+    <message>
+        <source>Surface normal, main axis component</source>
+        <translation>Normalna do powierzchni, składowa osi głównej</translation>
+    </message>
+    <message>
+        <source>Surface normal, secondary axis component</source>
+        <translation>Normalna do powierzchni, składowa osi pomocniczej</translation>
+    </message>
+    <message>
+        <source>Surface normal, tool axis component</source>
+        <translation>Normalna do powierzchni, składowa osi narzędzia</translation>
+    </message>
+    <message>
+        <source>Tolerance along the normal, e.g. &quot;0.4-0.1&quot;</source>
+        <translation>Tolerancja wzdłuż normalnej, np. &quot;0.4-0.1&quot;</translation>
+    </message>
+    <message>
+        <source>Tolerance error: 0 nothing, 1 stop, 2 stop on undersize only</source>
+        <translation>Błąd tolerancji: 0 nic, 1 stop, 2 stop tylko przy niedowymiarze</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the surface normal Q581..Q583 is zero</source>
+        <translation>cykl {1}: normalna do powierzchni Q581..Q583 jest zerowa</translation>
+    </message>
+    <message>
+        <source>FAST PROBING</source>
+        <translation>SZYBKIE PRÓBKOWANIE</translation>
+    </message>
+    <message>
+        <source>PROBING IN 3-D</source>
+        <translation>PRÓBKOWANIE 3D</translation>
+    </message>
+    <message>
+        <source>Stop before running: 0 stop to position the tool, 1 no stop</source>
+        <translation>Stop przed wykonaniem: 0 stop do pozycjonowania narzędzia, 1 bez stopu</translation>
+    </message>
+    <message>
+        <source>CALIBRATE IR TT</source>
+        <translation>KALIBROWANIE TT IR</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
+        <translation>cykl sondy {1}: tabela punktów bazowych nie ma kolumny SPC dla obrotu podstawowego wiersza {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
+        <translation>cykl sondy {1}: Q303 = 0 zapisuje aktywną tabelę punktów zerowych: najpierw wybrać ją przez SEL TABLE</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the datum table: {2}</source>
+        <translation>cykl sondy {1}: nie można zapisać tabeli punktów zerowych: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
+        <translation>cykl sondy {1}: kalibracja zapisuje wiersz sondy w tabeli narzędzi TOOL.T: wywołać sondę z tej tabeli</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>cykl sondy {1}: nie można zapisać kalibracji TT: {2}</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -6544,16 +6544,8 @@ ciclo</translation>
         <translation>não é possível escrever o protocolo de medição {1}: {2}</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: writing the datum table (Q303 = 0) is not supported yet</source>
-        <translation>ciclo de apalpação {1}: a escrita na tabela de pontos zero (Q303 = 0) ainda não é suportada</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: cannot write the preset table: {2}</source>
         <translation>ciclo de apalpação {1}: não é possível escrever a tabela de pontos de referência: {2}</translation>
-    </message>
-    <message>
-        <source>touch probe cycle {1}: writing a basic rotation to preset row Q305 is not supported yet</source>
-        <translation>ciclo de apalpação {1}: a escrita de uma rotação básica na linha Q305 da tabela de pontos de referência ainda não é suportada</translation>
     </message>
     <message>
         <source>touch probe cycle {1} is not supported yet; the program cannot run past this block</source>
@@ -7772,6 +7764,186 @@ solução</translation>
     <message>
         <source>the number does not fit the input format</source>
         <translation>o número não cabe no formato de entrada</translation>
+    </message>
+    <message>
+        <source>Exact radius of the calibration ring or stud</source>
+        <translation>Raio exato do anel ou da ilha de calibração</translation>
+    </message>
+    <message>
+        <source>Number of touch points on the diameter (0: 4)</source>
+        <translation>Número de pontos de apalpação no diâmetro (0: 4)</translation>
+    </message>
+    <message>
+        <source>Reference angle: main axis to touch point 1</source>
+        <translation>Ângulo de referência: eixo principal ao ponto de apalpação 1</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the ring&apos;s top face</source>
+        <translation>Ponto de referência para o comprimento: altura da face superior do anel</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS LENGTH</source>
+        <translation>CALIBRAR COMPRIMENTO DE TS</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS IN RING</source>
+        <translation>CALIBRAR TS NO ANEL</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON STUD</source>
+        <translation>CALIBRAR TS NA ILHA</translation>
+    </message>
+    <message>
+        <source>Measuring axis: 1 main axis, 2 secondary axis, 3 touch probe axis</source>
+        <translation>Eixo de medição: 1 eixo principal, 2 eixo secundário, 3 eixo do apalpador</translation>
+    </message>
+    <message>
+        <source>Axis for the compensation: 0 automatic, 4 A, 5 B, 6 C</source>
+        <translation>Eixo para a compensação: 0 automático, 4 A, 5 B, 6 C</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 no, 1 yes</source>
+        <translation>Colocar a zero após o alinhamento: 0 não, 1 sim</translation>
+    </message>
+    <message>
+        <source>Reference angle the probed line is aligned to</source>
+        <translation>Ângulo de referência ao qual a reta apalpada é alinhada</translation>
+    </message>
+    <message>
+        <source>cycle {1}: Q312 must be 0, 4, 5 or 6</source>
+        <translation>ciclo {1}: Q312 tem de ser 0, 4, 5 ou 6</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the machine has no rotary table axis {2} to compensate the misalignment</source>
+        <translation>ciclo {1}: a máquina não tem o eixo de mesa rotativa {2} para compensar o desalinhamento</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the rotary axis {2} cannot compensate a misalignment about the axis of {3}</source>
+        <translation>ciclo {1}: o eixo rotativo {2} não pode compensar um desalinhamento em torno do eixo de {3}</translation>
+    </message>
+    <message>
+        <source>Preset rotation angle: the basic rotation to set</source>
+        <translation>Ângulo de rotação: a rotação básica a definir</translation>
+    </message>
+    <message>
+        <source>Number in table: -1 the active preset, 0 preset 0 and active</source>
+        <translation>Número na tabela: -1 o ponto de referência ativo, 0 o ponto 0 e ativo</translation>
+    </message>
+    <message>
+        <source>Hole centre, main axis</source>
+        <translation>Centro do furo, eixo principal</translation>
+    </message>
+    <message>
+        <source>Hole centre, secondary axis: 0 aligns the hole to +Y</source>
+        <translation>Centro do furo, eixo secundário: 0 alinha o furo com +Y</translation>
+    </message>
+    <message>
+        <source>Nominal diameter (enter it on the small side)</source>
+        <translation>Diâmetro nominal (introduzi-lo de preferência menor)</translation>
+    </message>
+    <message>
+        <source>Set to zero after alignment: 0 the C display, n add to datum row n</source>
+        <translation>Colocar a zero após o alinhamento: 0 a visualização de C, n somar à linha n de pontos zero</translation>
+    </message>
+    <message>
+        <source>BASIC ROTATION COMPENSATED VIA ROTARY AXIS</source>
+        <translation>ROTAÇÃO BÁSICA COMPENSADA POR EIXO ROTATIVO</translation>
+    </message>
+    <message>
+        <source>SET BASIC ROTATION</source>
+        <translation>DEFINIR ROTAÇÃO BÁSICA</translation>
+    </message>
+    <message>
+        <source>ROT IN C AXIS</source>
+        <translation>ROT MEDIANTE EIXO C</translation>
+    </message>
+    <message>
+        <source>Positioning feed rate of the probe (FMAX: rapid traverse)</source>
+        <translation>Avanço de posicionamento do apalpador (FMAX: marcha rápida)</translation>
+    </message>
+    <message>
+        <source>Pre-position at machine rapid: 0 no (Q396), 1 yes</source>
+        <translation>Pré-posicionar em marcha rápida da máquina: 0 não (Q396), 1 sim</translation>
+    </message>
+    <message>
+        <source>Angle tracking: 0 no, 1 orient the probe before each touch</source>
+        <translation>Seguimento angular: 0 não, 1 orientar o apalpador antes de cada apalpação</translation>
+    </message>
+    <message>
+        <source>Automatic interruption: 0 never, 1 when a cycle shows its log</source>
+        <translation>Interrupção automática: 0 nunca, 1 quando um ciclo mostra o seu protocolo</translation>
+    </message>
+    <message>
+        <source>Nominal point, main axis</source>
+        <translation>Ponto nominal, eixo principal</translation>
+    </message>
+    <message>
+        <source>Nominal point, secondary axis</source>
+        <translation>Ponto nominal, eixo secundário</translation>
+    </message>
+    <message>
+        <source>Nominal point, tool axis</source>
+        <translation>Ponto nominal, eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Surface normal, main axis component</source>
+        <translation>Normal à superfície, componente do eixo principal</translation>
+    </message>
+    <message>
+        <source>Surface normal, secondary axis component</source>
+        <translation>Normal à superfície, componente do eixo secundário</translation>
+    </message>
+    <message>
+        <source>Surface normal, tool axis component</source>
+        <translation>Normal à superfície, componente do eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Tolerance along the normal, e.g. &quot;0.4-0.1&quot;</source>
+        <translation>Tolerância ao longo da normal, p. ex. &quot;0.4-0.1&quot;</translation>
+    </message>
+    <message>
+        <source>Tolerance error: 0 nothing, 1 stop, 2 stop on undersize only</source>
+        <translation>Erro de tolerância: 0 nada, 1 paragem, 2 paragem só com submedida</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the surface normal Q581..Q583 is zero</source>
+        <translation>ciclo {1}: a normal à superfície Q581..Q583 é nula</translation>
+    </message>
+    <message>
+        <source>FAST PROBING</source>
+        <translation>APALPAÇÃO RÁPIDA</translation>
+    </message>
+    <message>
+        <source>PROBING IN 3-D</source>
+        <translation>APALPAÇÃO 3D</translation>
+    </message>
+    <message>
+        <source>Stop before running: 0 stop to position the tool, 1 no stop</source>
+        <translation>Paragem antes de executar: 0 paragem para posicionar a ferramenta, 1 sem paragem</translation>
+    </message>
+    <message>
+        <source>CALIBRATE IR TT</source>
+        <translation>CALIBRAR TT IR</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
+        <translation>ciclo de apalpação {1}: a tabela de pontos de referência não tem coluna SPC para a rotação básica da linha {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
+        <translation>ciclo de apalpação {1}: Q303 = 0 escreve na tabela de pontos zero ativa: selecione uma antes com SEL TABLE</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the datum table: {2}</source>
+        <translation>ciclo de apalpação {1}: não é possível escrever a tabela de pontos zero: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: calibration writes the probe&apos;s row of the tool table TOOL.T: call the probe from it</source>
+        <translation>ciclo de apalpação {1}: a calibração escreve a linha do apalpador na tabela de ferramentas TOOL.T: chame o apalpador a partir dela</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the TT calibration: {2}</source>
+        <translation>ciclo de apalpação {1}: não é possível escrever a calibração do TT: {2}</translation>
     </message>
     <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>

@@ -74,6 +74,12 @@ std::optional<CycleError> ProbeSequence::touchDown(const Vec2& at, double nomina
     return std::nullopt;
 }
 
+std::optional<CycleError> ProbeSequence::touchFromPoint(const Vec3& start, const Vec3& direction,
+                                                        Vec3& ball) {
+    approach(start);
+    return touchFrom(direction.normalized(), ball);
+}
+
 void ProbeSequence::retract() {
     Vec3 at = m_machine.ballCentre();
     if (at.z() < clearanceCentre()) {

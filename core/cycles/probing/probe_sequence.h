@@ -26,13 +26,18 @@ public:
     // A touch along -w onto a nominal surface height `nominalW` at (u, v): gives the surface
     // height.
     std::optional<CycleError> touchDown(const Vec2& at, double nominalW, double& surfaceW);
+    // A touch along the unit `direction` from `start`, reached by the positioning logic: the
+    // ball centre at the trigger (444's touch along a surface normal).
+    std::optional<CycleError> touchFromPoint(const Vec3& start, const Vec3& direction, Vec3& ball);
+    // A touch from where the probe stands along the unit `direction` within DIST (PRB-001,
+    // PRB-002): the ball centre at the trigger.
+    std::optional<CycleError> touchFrom(const Vec3& direction, Vec3& trigger);
     // Back to the clearance height at the end of the cycle.
     void retract();
 
 private:
     // Ball centre to `target` following the positioning logic; `target` at measuring height.
     void approach(const Vec3& target);
-    std::optional<CycleError> touchFrom(const Vec3& direction, Vec3& trigger);
     double clearanceCentre() const { return m_values.number(260) + m_probe.ballRadius; }
 
     int m_cycle;

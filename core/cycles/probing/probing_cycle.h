@@ -23,6 +23,11 @@ struct ProbeData {
     double positioningFeed = 0.0;  // FMAX (F_PREPOS = FMAX_PROBE); 0: rapid traverse
     double maxPath = 0.0;          // DIST
     double setUp = 0.0;            // SET_UP
+    bool track = false;            // TRACK ON or 441 Q399 = 1: orient the probe before each touch
+    double length = 0.0;           // L_p: the probe's effective length (461 calibrates it)
+    // The machine's rotary table axes, nearest to the workpiece first ("CB" on a B/C trunnion
+    // with C on B, "A" with one A table, empty without): 403 and 405 turn one of them.
+    std::string tableAxes;
 };
 
 class ProbingMachine {
@@ -54,17 +59,45 @@ struct ToolCorrection {
     bool breakageOnly = false;  // 430: no correction, breakage monitoring only
 };
 
+// 403, 405: the rotary table axis turns by `turnDeg` (incremental) to cancel the measured
+// misalignment; Q337 then zeroes its display (the preset's offset for that axis) or, for 405
+// with Q337 > 0, adds the measured offset to that axis in row `datumRow` of the datum table.
+struct RotaryCompensation {
+    char axis = 'C';
+    double turnDeg = 0.0;
+    bool zeroDisplay = false;
+    std::optional<int> datumRow;
+};
+
+// 441 FAST PROBING: what the following probing cycles of the program use instead of the probe
+// table's FMAX and F_PREPOS, angle tracking, and whether Q281 = 2 may stop the program.
+struct FastProbing {
+    Feed positioning = Feed::perMinute(0.0);  // Q396 (FMAX: rapid traverse)
+    bool machineRapid = false;                // Q397
+    bool tracking = false;                    // Q399
+    bool interrupt = true;                    // Q400
+};
+
+// 460-463: the probe's calibrated length and ball radius, for its row of the tool table.
+struct ProbeCalibration {
+    std::optional<double> length;
+    std::optional<double> radius;
+};
+
 struct ProbingResults {
     std::vector<std::pair<uint16_t, double>> parameters;  // Q150..Q199 in mm and degrees
     std::optional<DatumResult> datum;                     // 408-419
-    std::optional<double> basicRotationDeg;               // 400-405, 1416
-    int tableRow = 0;                                     // Q305
+    std::optional<double> basicRotationDeg;               // 400-402, 404, 414, 1416
+    std::optional<RotaryCompensation> rotary;             // 403, 405
+    int tableRow = 0;                                     // Q305 (404: -1 the active preset)
     int transfer = 0;                                     // Q303: -1, 0 datum table, 1 presets
     // Measuring log TCHPR<cycle>.TXT (Q281 = 1 or 2): the lines after the header.
     std::optional<std::vector<std::string>> protocol;
     bool protocolStop = false;                     // Q281 = 2: stop after writing the log
     std::optional<CycleError> toleranceStop;       // Q309 = 1 and a tolerance was exceeded
     std::optional<ToolCorrection> toolCorrection;  // applied when Q330 names a tool
+    std::optional<FastProbing> fastProbing;        // 441
+    std::optional<ProbeCalibration> calibration;   // 460-463
 
     void set(uint16_t q, double value) { parameters.emplace_back(q, value); }
 };

@@ -8,6 +8,9 @@ namespace kerf::cycles::probing {
 extern const ProbingCycleDescriptor kProbe400;
 extern const ProbingCycleDescriptor kProbe401;
 extern const ProbingCycleDescriptor kProbe402;
+extern const ProbingCycleDescriptor kProbe403;
+extern const ProbingCycleDescriptor kProbe404;
+extern const ProbingCycleDescriptor kProbe405;
 extern const ProbingCycleDescriptor kProbe408;
 extern const ProbingCycleDescriptor kProbe409;
 extern const ProbingCycleDescriptor kProbe410;
@@ -31,9 +34,15 @@ extern const ProbingCycleDescriptor kProbe427;
 extern const ProbingCycleDescriptor kProbe1416;
 extern const ProbingCycleDescriptor kProbe430;
 extern const ProbingCycleDescriptor kProbe431;
+extern const ProbingCycleDescriptor kProbe441;
+extern const ProbingCycleDescriptor kProbe444;
+extern const ProbingCycleDescriptor kProbe461;
+extern const ProbingCycleDescriptor kProbe462;
+extern const ProbingCycleDescriptor kProbe463;
 extern const ProbingCycleDescriptor kProbe480;
 extern const ProbingCycleDescriptor kProbe481;
 extern const ProbingCycleDescriptor kProbe482;
 extern const ProbingCycleDescriptor kProbe483;
+extern const ProbingCycleDescriptor kProbe484;
 
 }  // namespace kerf::cycles::probing

@@ -15,6 +15,8 @@ constexpr ParameterDescriptor kProbeTeeth =
     choice(341, KERF_TR_NOOP("Probe each tooth: 0 no, 1 yes"), 0, 1, 0);
 
 constexpr ParameterDescriptor kCalibrateParameters[] = {kClearanceHeight};
+constexpr ParameterDescriptor kWirelessParameters[] = {choice(
+    536, KERF_TR_NOOP("Stop before running: 0 stop to position the tool, 1 no stop"), 0, 1, 0)};
 constexpr ParameterDescriptor kMeasureParameters[] = {kCheckMode, kClearanceHeight, kProbeTeeth};
 constexpr uint16_t kLengthResults[] = {115, 199};
 constexpr uint16_t kRadiusResults[] = {116, 199};
@@ -46,5 +48,14 @@ const ProbingCycleDescriptor kProbe483{.number = 483,
                                        .run = nullptr,
                                        .results = kToolResults,
                                        .toolMeasurement = ToolMeasurementKind::LengthAndRadius};
+
+// 484 calibrates from where the operator put the calibration pin (the interpreter takes its
+// height as the clearance height) after a stop with Q536 = 0.
+const ProbingCycleDescriptor kProbe484{.number = 484,
+                                       .name = KERF_TR_NOOP("CALIBRATE IR TT"),
+                                       .parameters = kWirelessParameters,
+                                       .run = nullptr,
+                                       .results = {},
+                                       .toolMeasurement = ToolMeasurementKind::Calibrate};
 
 }  // namespace kerf::cycles::probing

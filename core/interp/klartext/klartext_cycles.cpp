@@ -344,6 +344,7 @@ void KlartextInterpreter::executeSelectTable(const SelectTable& select) {
         return;
     }
     m_datumTable = std::move(*table);
+    m_datumTablePath = *path;
 }
 
 void KlartextInterpreter::executeSelectPattern(const SelectPattern& select) {

@@ -34,6 +34,7 @@
 #include "core/tables/preset_table.h"
 #include "core/tables/probe_table.h"
 #include "core/tables/tool_table.h"
+#include "core/workpiece/simulated_tool_probe.h"
 #include "core/workpiece/simulated_workpiece.h"
 
 namespace kerf::klartext {
@@ -306,12 +307,21 @@ private:
     bool applyDatum(int cycle, const cycles::probing::ProbingResults& results);
     bool writePreset(int cycle, int row, const Pose& offset);
     bool applyBasicRotation(int cycle, const cycles::probing::ProbingResults& results);
+    // klartext_probe_writes.cpp: 403/405's table turn, SPC of a preset row, the datum table.
+    std::string tableAxisLetters() const;
+    void activatePreset(const Pose& offset);
+    bool applyRotaryCompensation(int cycle, const cycles::probing::ProbingResults& results);
+    bool writePresetRotation(int cycle, int row, double degrees);
+    bool writeDatumRow(int cycle, int row, const std::vector<std::pair<char, double>>& axes);
     // The TT cycles 30-33 / 480-483 (klartext_tool_measurement.cpp).
     void executeOldToolProbeBlock(const CycleDefinition& def);
     void executeToolMeasurement(const cycles::probing::ProbingCycleDescriptor& cycle,
                                 const cycles::CycleValues& values, bool oldFormat,
                                 uint16_t statusParameter);
     std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
+    workpiece::RealTool realTool(const tables::ToolData& row) const;
+    void writeToolProbeCalibration(int cycle, const cycles::probing::ToolProbeData& tt);
+    void readToolProbeCalibration(cycles::probing::ToolProbeData& tt);
     struct ToolTableEdit {  // what a probing cycle writes into a tool's row
         std::optional<double> length, radius, deltaLength, deltaRadius;
         bool lock = false;  // TL = L
@@ -465,7 +475,8 @@ private:
     int m_preparedTool = -1;
     std::map<int, tables::ToolData> m_programTools;  // TOOL DEF n L.. R.. in old programs
     std::optional<Vec3> m_blankMin;
-    std::optional<workpiece::Solid> m_blank;  // what the simulated touch probe touches
+    // What the simulated touch probe touches: the blank (a tube's bore as a cavity).
+    std::vector<workpiece::Solid> m_blank;
     MWords m_currentM;  // M functions of the block being executed (M91/M92 change coordinates)
     std::optional<tables::FreeTable> m_openTable;
     bool m_warnedNoToolTable = false;
@@ -479,6 +490,7 @@ private:
     std::vector<uint16_t> m_globalSet;
     std::optional<std::vector<cycles::PatternPoint>> m_pattern;  // PATTERN DEF or point table
     std::optional<tables::DatumTable> m_datumTable;
+    std::optional<std::filesystem::path> m_datumTablePath;  // SEL TABLE: probing writes it back
     std::optional<tables::PresetTable> m_presetFile;
     std::optional<double> m_orientAngle;           // cycle 13
     std::optional<tables::ToolTable> m_toolTable;  // TOOL.T once a TT cycle has written it
@@ -493,6 +505,7 @@ private:
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)
+    std::optional<cycles::probing::FastProbing> m_fastProbing;  // cycle 441, until the end
     cycles::CoordinateFrame m_frame;
     // Rotary tables of the machine, the tilted plane, the tables' turn in m_frame, and M126.
     std::optional<machine::TableKinematics> m_kinematics;

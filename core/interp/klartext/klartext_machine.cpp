@@ -289,12 +289,19 @@ void KlartextInterpreter::executeBlkForm(const BlkForm& blk) {
         cylinder.lengthMm = blk.length * scale;
         cylinder.distanceMm = blk.distance * scale;
         emit(canon::StockDefinition{cylinder});
-        m_blank.reset();
+        m_blank.clear();
         if (cylinder.axis == Axis::Z) {
-            m_blank = workpiece::Solid{
-                workpiece::Cylinder{Vec2(0.0, 0.0), cylinder.radiusMm,
-                                    cylinder.distanceMm - cylinder.lengthMm, cylinder.distanceMm},
-                true};
+            const double bottom = cylinder.distanceMm - cylinder.lengthMm;
+            m_blank.push_back(workpiece::Solid{
+                workpiece::Cylinder{Vec2(0.0, 0.0), cylinder.radiusMm, bottom, cylinder.distanceMm},
+                true});
+            if (cylinder.innerRadiusMm > 0.0) {
+                // The bore runs through: the cavity reaches past both faces.
+                m_blank.push_back(
+                    workpiece::Solid{workpiece::Cylinder{Vec2(0.0, 0.0), cylinder.innerRadiusMm,
+                                                         bottom - 1.0, cylinder.distanceMm + 1.0},
+                                     false});
+            }
         }
         return;
     }
@@ -322,7 +329,7 @@ void KlartextInterpreter::executeBlkForm(const BlkForm& blk) {
         return;
     }
     emit(canon::StockDefinition{box});
-    m_blank = workpiece::Solid{workpiece::Box{box.min, box.max}, true};
+    m_blank = {workpiece::Solid{workpiece::Box{box.min, box.max}, true}};
 }
 
 }  // namespace kerf::klartext

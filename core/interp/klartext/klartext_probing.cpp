@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iterator>
+#include <numbers>
 
 #include "core/base/translate.h"
 #include "core/cycles/probing/probing_cycle.h"
@@ -37,9 +38,17 @@ std::string upperName(std::string_view text) {
 // setup error). Positions are ball centres in the cycle's local frame.
 class KlartextInterpreter::ProbeAdapter final : public cycles::probing::ProbingMachine {
 public:
+    // `real`: the stylus as it really is ([[simulation.tool_error]] of the probe), what the
+    // calibration cycles find; the control computes with the table's values.
     ProbeAdapter(KlartextInterpreter& interpreter, const cycles::probing::ProbeData& probe,
-                 const workpiece::SimulatedWorkpiece& part)
-        : m_k(interpreter), m_probe(probe), m_part(part) {}
+                 const workpiece::SimulatedWorkpiece& part, workpiece::RealTool real)
+        : m_k(interpreter),
+          m_probe(probe),
+          m_part(part),
+          m_realRadius(real.radius),
+          m_realOffset(0.0, 0.0,
+                       real.radius - probe.ballRadius -
+                           (real.length - interpreter.m_tool.effectiveLength())) {}
 
     Vec3 ballCentre() const override { return tipToBall(m_k.toLocal(m_k.m_programmed)); }
 
@@ -50,9 +59,17 @@ public:
 
     std::optional<Vec3> touch(const Vec3& direction, double maxPath) override {
         const Vec3 start = ballCentre();
-        auto hit = m_part.touch(toPart(start), toPart(start + direction) - toPart(start), maxPath,
-                                m_probe.ballRadius);
-        const Vec3 end = hit ? fromPart(*hit) : Vec3(start + maxPath * direction);
+        if (m_probe.track && direction.head<2>().norm() > 1e-9) {
+            // Angle tracking: the stylus faces the probing direction in the plane.
+            double angle = std::atan2(direction.y(), direction.x()) * 180.0 / std::numbers::pi;
+            if (angle <= -180.0) angle += 360.0;  // -0 in y: (-180, 180]
+            m_k.emit(canon::SpindleOrient{angle});
+        }
+        const Vec3 real = start + m_realOffset;
+        auto hit = m_part.touch(toPart(real), toPart(real + direction) - toPart(real), maxPath,
+                                m_realRadius);
+        const Vec3 end =
+            hit ? Vec3(fromPart(*hit) - m_realOffset) : Vec3(start + maxPath * direction);
         interp::ProgramStatus::Probe status;
         status.triggered = hit.has_value();
         status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(ballToTip(end)));
@@ -64,25 +81,40 @@ public:
     }
 
     bool deflected() const override {
-        return m_part.touches(toPart(ballCentre()), m_probe.ballRadius);
+        return m_part.touches(toPart(ballCentre() + m_realOffset), m_realRadius);
     }
 
 private:
     Vec3 tipToBall(const Vec3& tip) const { return tip + Vec3(0.0, 0.0, m_probe.ballRadius); }
     Vec3 ballToTip(const Vec3& ball) const { return ball - Vec3(0.0, 0.0, m_probe.ballRadius); }
-    // Local program coordinates <-> the workpiece frame of the start preset, where the part is.
+    // Local program coordinates <-> the workpiece frame of the start preset, where the part is
+    // when the rotary tables stand at 0; the tables carry it round as they stand now.
     Vec3 toPart(const Vec3& local) const {
-        return m_k.m_frame.toWorkpiece(m_k.fromLocal(local)).xyz();
+        const Vec3 stream = m_k.m_frame.toWorkpiece(m_k.fromLocal(local)).xyz();
+        if (!m_k.m_kinematics) return stream;
+        const machine::RotaryAngles angles = m_k.currentTableAngles();
+        return m_k.m_kinematics->workpieceToMachine(angles).transpose() *
+               (stream - tableOffset(angles));
     }
     Vec3 fromPart(const Vec3& part) const {
         Pose p = m_k.m_frame.toWorkpiece(m_k.m_programmed);
-        p.setXyz(part);
+        if (m_k.m_kinematics) {
+            const machine::RotaryAngles angles = m_k.currentTableAngles();
+            p.setXyz(m_k.m_kinematics->workpieceToMachine(angles) * part + tableOffset(angles));
+        } else {
+            p.setXyz(part);
+        }
         return m_k.toLocal(m_k.m_frame.toProgram(p));
+    }
+    Vec3 tableOffset(const machine::RotaryAngles& angles) const {
+        return m_k.m_kinematics->axesOf(Vec3::Zero(), angles, m_k.m_settings.presetInMachine.xyz());
     }
 
     KlartextInterpreter& m_k;
     const cycles::probing::ProbeData& m_probe;
     const workpiece::SimulatedWorkpiece& m_part;
+    double m_realRadius;
+    Vec3 m_realOffset;  // control's ball centre -> the real one
 };
 
 std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int cycle) {
@@ -128,6 +160,15 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     probe.positioningFeed = data->prepositionAtMachineRapid ? 0.0 : data->rapidFeed;
     probe.maxPath = data->maxProbingPath;
     probe.setUp = data->setUpClearance;
+    probe.tableAxes = tableAxisLetters();
+    probe.length = m_tool.effectiveLength();
+    probe.track = data->track;
+    if (m_fastProbing) {
+        const cycles::Feed& feed = m_fastProbing->positioning;
+        const bool rapid = m_fastProbing->machineRapid || feed.kind == cycles::Feed::Kind::Rapid;
+        probe.positioningFeed = rapid ? 0.0 : feed.value;
+        probe.track = m_fastProbing->tracking;
+    }
     return probe;
 }
 
@@ -139,7 +180,8 @@ workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
         placement.rotationDeg = e.rotationDeg;
     }
     workpiece::SimulatedWorkpiece part(placement);
-    if (m_blank) part.add(*m_blank);
+    for (const workpiece::Solid& solid : m_blank)
+        part.add(solid);
     return part;
 }
 
@@ -167,11 +209,17 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         values.set(q, m_globals.number(q));
     }
     if (cycle->toolMeasurement != cycles::probing::ToolMeasurementKind::None) {
+        if (def.number == 484) {
+            // Q536 = 0: the operator jogs the pin over the TT, NC start goes on from there.
+            if (values.integer(536) == 0) emit(canon::ProgramStop{canon::StopKind::Program, -1});
+            values.set(260, toLocal(m_programmed).z());
+        }
         executeToolMeasurement(*cycle, values, false, 0);
         return;
     }
-    if (def.number >= 400 && def.number <= 402 && m_basicRotationDeg != 0.0) {
-        // Cycles 400-402 cancel the basic rotation before they probe (spec 2).
+    if ((def.number <= 402 || def.number == 404) && m_basicRotationDeg != 0.0) {
+        // Cycles 400-402 cancel the basic rotation before they probe (spec 2), 404 before it
+        // sets a new one.
         const Pose at = m_frame.toWorkpiece(m_programmed);
         m_frame.setRotation(m_frame.rotationDeg() - m_basicRotationDeg, false, workingPlane());
         m_programmed = m_frame.toProgram(at);
@@ -199,7 +247,11 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     for (uint16_t q : cycle->results)
         m_q.set(QRef{QKind::Q, q}, 0.0);
     const workpiece::SimulatedWorkpiece part = simulatedPart();
-    ProbeAdapter machine(*this, *probe, part);
+    workpiece::RealTool real{m_tool.effectiveLength(), m_tool.effectiveRadius()};
+    if (const tables::ToolTable* tools = toolTable()) {
+        if (const tables::ToolData* row = tools->byNumber(m_tool.number)) real = realTool(*row);
+    }
+    ProbeAdapter machine(*this, *probe, part, real);
     cycles::probing::ProbingResults results;
     if (auto error = cycle->run(values, *probe, machine, results)) {
         failCycle(*error);
@@ -214,11 +266,32 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     }
     if (results.datum && !applyDatum(def.number, results)) return;
     if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
+    if (results.rotary && !applyRotaryCompensation(def.number, results)) return;
+    if (results.calibration) {
+        // The probe's row: the calibrated L and R replace the table's, with no deltas.
+        if (toolTable() == nullptr || toolTable()->byNumber(m_tool.number) == nullptr) {
+            fail("PRB-015",
+                 KERF_TR_NOOP("touch probe cycle {1}: calibration writes the probe's row of the "
+                              "tool table TOOL.T: call the probe from it"),
+                 {std::to_string(def.number)});
+            return;
+        }
+        ToolTableEdit edit;
+        edit.length = results.calibration->length;
+        edit.radius = results.calibration->radius;
+        const tables::ToolData& row = *toolTable()->byNumber(m_tool.number);
+        if (edit.length && row.deltaLength != 0.0) edit.deltaLength = 0.0;
+        if (edit.radius && row.deltaRadius != 0.0) edit.deltaRadius = 0.0;
+        if (!writeToolTable(def.number, m_tool.number, edit)) return;
+    }
     if (results.toleranceStop) {
         failCycle(*results.toleranceStop);
         return;
     }
-    if (results.protocolStop) emit(canon::ProgramStop{canon::StopKind::Program, -1});
+    if (results.fastProbing) m_fastProbing = results.fastProbing;
+    // 441 Q400 = 0: a log asked for on screen does not interrupt the program.
+    const bool interrupt = !m_fastProbing || m_fastProbing->interrupt;
+    if (results.protocolStop && interrupt) emit(canon::ProgramStop{canon::StopKind::Program, -1});
 }
 
 bool KlartextInterpreter::writeProtocol(int cycle, const char* name,
@@ -244,11 +317,17 @@ bool KlartextInterpreter::writeProtocol(int cycle, const char* name,
 // Q303 = 1 writes that preset row without activating it.
 bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingResults& results) {
     if (results.tableRow != 0 && results.transfer == 0) {
-        fail("not-supported",
-             KERF_TR_NOOP("touch probe cycle {1}: writing the datum table (Q303 = 0) is not "
-                          "supported yet"),
-             {std::to_string(cycle)});
-        return false;
+        // The datum table row gets the shift that gives the feature its nominal values in the
+        // active system (no datum shift is active while probing: PRB-005).
+        const PlaneAxes a = planeAxes(workingPlane());
+        const Axis programAxes[] = {a.first, a.second, a.normal};
+        std::vector<std::pair<char, double>> shift;
+        for (size_t i = 0; i < 3; ++i) {
+            if (!results.datum->measured[i]) continue;
+            shift.emplace_back(axisLetter(programAxes[i]),
+                               *results.datum->measured[i] - results.datum->nominal[i]);
+        }
+        return writeDatumRow(cycle, results.tableRow, shift);
     }
     // The measured feature moves to its nominal values along the axes of the active (possibly
     // turned) frame: the preset moves by that difference, seen in workpiece coordinates.
@@ -288,7 +367,10 @@ bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
         return false;
     }
     if (table->byNumber(row) == nullptr) (void)table->addPreset(row);
-    for (Axis axis : {Axis::X, Axis::Y, Axis::Z}) {
+    std::vector<Axis> axes{Axis::X, Axis::Y, Axis::Z};
+    for (char letter : tableAxisLetters())
+        axes.push_back(*axisFromLetter(letter));
+    for (Axis axis : axes) {
         const double ref = m_settings.presetInMachine[axis] + offset[axis];
         if (auto error = table->setAxis(row, axisLetter(axis), ref)) {
             failCycle({error->code, error->messageTemplate, error->args});
@@ -308,12 +390,9 @@ bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
 // working plane about the datum until the preset model has a basic-rotation column.
 bool KlartextInterpreter::applyBasicRotation(int cycle,
                                              const cycles::probing::ProbingResults& results) {
-    if (results.tableRow != 0) {
-        fail("not-supported",
-             KERF_TR_NOOP("touch probe cycle {1}: writing a basic rotation to preset row Q305 "
-                          "is not supported yet"),
-             {std::to_string(cycle)});
-        return false;
+    // Q305 > 0: stored in the row's SPC column, not activated.
+    if (results.tableRow > 0) {
+        return writePresetRotation(cycle, results.tableRow, *results.basicRotationDeg);
     }
     const Pose at = m_frame.toWorkpiece(m_programmed);
     m_frame.setRotation(m_frame.rotationDeg() + *results.basicRotationDeg, false, workingPlane());

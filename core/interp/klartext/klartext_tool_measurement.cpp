@@ -3,7 +3,9 @@
 // the measured values go into the tool table and take effect at once.
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
+#include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/cycles/parameter_check.h"
 #include "core/interp/klartext/klartext_interpreter.h"
@@ -69,6 +71,21 @@ private:
     canon::SpindleDirection m_direction;
     double m_rpm;
 };
+
+// The real tool: as the table held it when the run started, plus the machine file's error.
+workpiece::RealTool KlartextInterpreter::realTool(const tables::ToolData& row) const {
+    const tables::ToolData* original =
+        m_settings.tools != nullptr ? m_settings.tools->byNumber(row.number) : nullptr;
+    const tables::ToolData& start = original != nullptr ? *original : row;
+    workpiece::RealTool real{start.length + start.deltaLength, start.radius + start.deltaRadius};
+    const machine::ToolErrorConfig* error =
+        m_settings.machine != nullptr ? m_settings.machine->toolError(row.number) : nullptr;
+    if (error != nullptr) {
+        real.length += error->lengthMm;
+        real.radius += error->radiusMm;
+    }
+    return real;
+}
 
 namespace {
 
@@ -166,7 +183,46 @@ std::optional<cycles::probing::ToolProbeData> KlartextInterpreter::toolProbeData
     tt.measureTolerance = c.measureToleranceMm;
     tt.probingFeed = c.probingFeedMmPerMin;
     tt.maxRpm = machine->spindle.maxRpm;
+    readToolProbeCalibration(tt);
     return tt;
+}
+
+namespace {
+constexpr const char* kCalibrationFile = "TTCALIB.TXT";
+}
+
+// The last calibration (30/480/484) stays with the machine's NC root, so later runs start from
+// it: "TOP_X/TOP_Y/TOP_Z/DIAMETER value" lines, machine coordinates in mm.
+void KlartextInterpreter::writeToolProbeCalibration(int cycle,
+                                                    const cycles::probing::ToolProbeData& tt) {
+    if (!waitForCheck()) return;
+    std::string text;
+    auto line = [&text](const char* key, double value) {
+        text += std::string(key) + " " + formatFixed(value, 6) + "\n";
+    };
+    line("TOP_X", tt.top.x());
+    line("TOP_Y", tt.top.y());
+    line("TOP_Z", tt.top.z());
+    line("DIAMETER", tt.diameter);
+    if (auto error = m_root.replace(m_root.path() / kCalibrationFile, text)) {
+        fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the TT calibration: {2}"),
+             {std::to_string(cycle), error->format()});
+    }
+}
+
+void KlartextInterpreter::readToolProbeCalibration(cycles::probing::ToolProbeData& tt) {
+    auto bytes = m_root.read(m_root.path() / kCalibrationFile);
+    if (!bytes) return;
+    std::istringstream in{std::string(*bytes)};
+    std::string key;
+    double value = 0.0;
+    while (in >> key >> value) {
+        if (!std::isfinite(value)) continue;
+        if (key == "TOP_X") tt.top.x() = value;
+        if (key == "TOP_Y") tt.top.y() = value;
+        if (key == "TOP_Z") tt.top.z() = value;
+        if (key == "DIAMETER" && value > 0.0) tt.diameter = value;
+    }
 }
 
 void KlartextInterpreter::executeToolMeasurement(
@@ -222,15 +278,7 @@ void KlartextInterpreter::executeToolMeasurement(
     tool.lengthOffset = table.numberCell(row->number, "L-OFFS").value_or(0.0);
     tool.cuttingDirection = table.numberCell(row->number, "DIRECT").value_or(-1.0);
 
-    // The real tool: as the table held it when the run started, plus the machine file's error.
-    const tables::ToolData* original =
-        m_settings.tools != nullptr ? m_settings.tools->byNumber(row->number) : nullptr;
-    const tables::ToolData& start = original != nullptr ? *original : *row;
-    workpiece::RealTool real{start.length + start.deltaLength, start.radius + start.deltaRadius};
-    if (const machine::ToolErrorConfig* error = m_settings.machine->toolError(row->number)) {
-        real.length += error->lengthMm;
-        real.radius += error->radiusMm;
-    }
+    const workpiece::RealTool real = realTool(*row);
     const machine::ToolProbeConfig& c = m_settings.machine->toolProbe;
     const workpiece::SimulatedToolProbe simulated({Vec3(c.centreXMm, c.centreYMm, c.centreZMm),
                                                    c.diameterMm,
@@ -253,6 +301,7 @@ void KlartextInterpreter::executeToolMeasurement(
             return;
         }
         m_ttCalibration = calibrated;
+        writeToolProbeCalibration(cycle.number, calibrated);
         return;
     }
     cycles::probing::ToolMeasurementRequest request;

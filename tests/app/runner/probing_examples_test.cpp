@@ -29,10 +29,11 @@ protected:
         return text.str();
     }
     // kerf run on the example with its machine file; the report as JSON.
-    nlohmann::json run(const std::string& program, const std::string& options = "") {
+    nlohmann::json run(const std::string& program, const std::string& options = "",
+                       const std::string& machine = "machine.toml") {
         const fs::path report = dir / (program + ".json");
         const std::string command = std::string("\"") + KERF_BINARY + "\" run --machine \"" +
-                                    (dir / "machine.toml").string() + "\" " + options + " \"" +
+                                    (dir / machine).string() + "\" " + options + " \"" +
                                     (dir / (program + ".H")).string() + "\" --report \"" +
                                     report.string() + "\" 2> \"" + (dir / "errors").string() + "\"";
         EXPECT_EQ(std::system(command.c_str()), 0) << read(dir / "errors");
@@ -90,6 +91,16 @@ TEST_F(ProbingExamples, ToolMeasurementWritesTheRealToolsDeltasIntoTheToolTable)
         EXPECT_NE(tools.find("MILL_D10    +80       +5        +0.05     -0.012"), std::string::npos)
             << options << "\n"
             << tools;
+    }
+}
+
+TEST_F(ProbingExamples, Rotation403TurnsTheCTableOfMill5) {
+    // The front edge is turned by the setup's 0.7 degrees: 403 turns C by +0.7 (a table at
+    // angle t turns the part by -t), also under --motion.
+    for (const char* options : {"", "--motion"}) {
+        const nlohmann::json report = run("ROT403", options, "machine5.toml");
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["C"].get<double>(), 0.7, 1e-6) << options;
     }
 }
 

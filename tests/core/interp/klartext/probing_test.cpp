@@ -10,7 +10,9 @@
 #include "core/base/atomic_file.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
+#include "core/tables/datum_table.h"
 #include "core/tables/preset_table.h"
+#include "core/tables/tool_table.h"
 
 namespace kerf::klartext {
 namespace {
@@ -37,6 +39,9 @@ protected:
             "1    TS     +0     +2\n[END]\n");
     }
     void TearDown() override { fs::remove_all(dir); }
+    void useMachine(const std::string& toml) {
+        machine = *machine::parseMachine(toml, "test.toml");
+    }
 
     interp::RunStatus run(const std::string& body) {
         KlartextSettings settings;
@@ -188,13 +193,285 @@ TEST_F(ProbingTest, ErrorsOfTheManual) {
                   "  Q320=0\n  Q260=+20\n  Q305=0\n  Q333=+0\n  Q303=+1\n"),
               interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("PRB-001"), std::string::npos) << firstError();
-    // A probing cycle Kerf does not have yet is refused before the program starts.
-    EXPECT_EQ(run("1 TCH PROBE 444 PROBING IN 3-D\n  Q263=+0\n"), interp::RunStatus::Failed);
+    // A probing cycle Kerf does not have is refused before the program starts.
+    EXPECT_EQ(run("1 TCH PROBE 499 UNKNOWN\n  Q263=+0\n"), interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("not supported"), std::string::npos) << firstError();
     // Out-of-range values are found by the check, at their line.
     EXPECT_EQ(run("1 TOOL CALL 1 Z\n2 TCH PROBE 419 DATUM IN ONE AXIS\n  Q272=7\n"),
               interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("P.H:3:"), std::string::npos) << firstError();
+}
+
+const char* kPlateProgram =
+    "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+    "3 TOOL CALL 1 Z\n4 L X-10 Y-10 Z+50 R0 FMAX\n";
+
+std::string probe403(int axis, int zero, int row, int transfer) {
+    return "TCH PROBE 403 ROT IN ROTARY AXIS\n  Q263=+10\n  Q264=+0\n  Q265=+60\n  Q266=+0\n"
+           "  Q272=" +
+           std::to_string(axis) +
+           "\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n"
+           "  Q301=1\n  Q312=0\n  Q337=" +
+           std::to_string(zero) + "\n  Q305=" + std::to_string(row) +
+           "\n  Q303=" + std::to_string(transfer) + "\n  Q380=+0\n";
+}
+
+TEST_F(ProbingTest, Cycle403TurnsTheCTableByTheMisalignment) {
+    // mill5: the C table (nearest to the workpiece) turns about the pivot, which is the preset
+    // (machine 0, 0, -400). The front face is turned by the setup's 0.7 degrees: C turns by +0.7
+    // (a table at angle t turns the part by -t), after which a second 403 finds the face square.
+    useMachine("base = \"mill5\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n");
+    ASSERT_EQ(run(std::string(kPlateProgram) + "5 " + probe403(2, 0, 0, 1) + "6 Q10 = Q150\n7 " +
+                  probe403(2, 0, 0, 1) + "8 Q11 = Q150\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(10), 0.7, 1e-9);
+    EXPECT_NEAR(q(11), 0.0, 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::C], 0.7, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle403SetsTheTurnedAxisToZeroInThePreset) {
+    useMachine("base = \"mill5\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n");
+    ASSERT_EQ(run(std::string(kPlateProgram) + "5 " + probe403(2, 1, 0, 1) + "6 L C+0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    // The C axis stands at machine 0.7 and shows 0 (C+0 stays there); preset row 0 holds 0.7.
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::C], 0.7, 1e-9);
+    auto presets = tables::PresetTable::load(dir / "PRESET.PR");
+    ASSERT_TRUE(presets.ok());
+    ASSERT_NE(presets->byNumber(0), nullptr);
+    EXPECT_NEAR(*presets->byNumber(0)->axis('C'), 0.7, 1e-4);
+}
+
+TEST_F(ProbingTest, Cycle403LevelsTheTopFaceWithTheATable) {
+    // mill4: after L A+2 the table turns the part by -2 degrees about X: the top face falls by
+    // tan 2 deg per mm of +Y. Touches along -Z at Y 10 and Y 50 see that slope, so 403 measures
+    // -2 degrees about A and turns A back to 0 (the ball stands r_b / cos 2 deg above the face
+    // at both touches, which leaves the slope exact).
+    useMachine("base = \"mill4\"\n");
+    ASSERT_EQ(run(std::string(kPlateProgram) +
+                  "5 L A+2 FMAX\n"
+                  "6 TCH PROBE 403 ROT IN ROTARY AXIS\n  Q263=+50\n  Q264=+10\n  Q265=+50\n"
+                  "  Q266=+50\n  Q272=3\n  Q267=+1\n  Q261=+0\n  Q320=0\n  Q260=+20\n  Q301=1\n"
+                  "  Q312=0\n  Q337=0\n  Q305=0\n  Q303=1\n  Q380=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(150), -2.0, 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::A], 0.0, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle403NeedsTheRightRotaryAxis) {
+    // A turn about the tool axis cannot be compensated by mill4's A table, nor on a 3-axis mill.
+    useMachine("base = \"mill4\"\n");
+    EXPECT_EQ(run(std::string(kPlateProgram) + "5 " + probe403(2, 0, 0, 1)),
+              interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("PRB-011"), std::string::npos) << firstError();
+    useMachine("base = \"mill\"\n");
+    EXPECT_EQ(run(std::string(kPlateProgram) + "5 " + probe403(2, 0, 0, 1)),
+              interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("PRB-011"), std::string::npos) << firstError();
+}
+
+TEST_F(ProbingTest, Cycle405TurnsTheHoleOntoItsNominalAngle) {
+    // A tube (bore 16) whose centre really lies at (1, 29): nominal (0, 30) is at 90 degrees,
+    // the real centre at atan2(29, 1). C turns the part by the difference, so a second 405
+    // finds nothing left to turn; the C display is then zeroed (Q337 = 0).
+    useMachine("base = \"mill5\"\n[simulation.setup]\nshift = [1.0, 29.0, 0.0]\nrotation = 0.0\n");
+    const std::string probe405 =
+        "TCH PROBE 405 ROT IN C AXIS\n  Q321=+0\n  Q322=+30\n  Q262=16\n  Q325=+0\n"
+        "  Q247=90\n  Q261=-5\n  Q320=0\n  Q260=+20\n  Q301=0\n  Q337=0\n";
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R20 RI8 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+30 Z+50 R0 FMAX\n4 " +
+                  probe405 + "5 Q10 = Q150\n6 " + probe405 + "7 Q11 = Q150\n8 L C+0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double expected = 90.0 - std::atan2(29.0, 1.0) * 180.0 / std::numbers::pi;
+    EXPECT_NEAR(q(10), expected, 1e-9);
+    EXPECT_NEAR(q(11), 0.0, 1e-9);
+    // The table turned by -Q150; C+0 stays there.
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::C], -expected, 1e-9);
+    auto presets = tables::PresetTable::load(dir / "PRESET.PR");
+    ASSERT_TRUE(presets.ok());
+    EXPECT_NEAR(*presets->byNumber(0)->axis('C'), -expected, 1e-4);
+}
+
+TEST_F(ProbingTest, Cycle404SetsAndClearsTheBasicRotation) {
+    // 404 turns the working plane about the datum; Q307 = 0 clears it; Q305 = 3 stores 5 degrees
+    // in the SPC column of preset row 3 without turning anything.
+    writeFileAtomically(dir / "PRESET.PR",
+                        "BEGIN PRESET.PR MM\nNR   DOC   X        Y        Z        SPC\n"
+                        "0          +0       +0       +0       +0\n[END]\n");
+    const double a = 5.0 * std::numbers::pi / 180.0;
+    ASSERT_EQ(run("1 TOOL CALL 1 Z\n"
+                  "2 TCH PROBE 404 SET BASIC ROTATION\n  Q307=+5\n  Q305=-1\n"
+                  "3 L X+10 Y+0 Z+50 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 10.0 * std::cos(a), 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], 10.0 * std::sin(a), 1e-9);
+    ASSERT_EQ(run("1 TOOL CALL 1 Z\n"
+                  "2 TCH PROBE 404 SET BASIC ROTATION\n  Q307=+5\n  Q305=-1\n"
+                  "3 TCH PROBE 404 SET BASIC ROTATION\n  Q307=+0\n  Q305=0\n"
+                  "4 TCH PROBE 404 SET BASIC ROTATION\n  Q307=+5\n  Q305=3\n"
+                  "5 L X+10 Y+0 Z+50 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 10.0, 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], 0.0, 1e-9);
+    auto presets = tables::PresetTable::load(dir / "PRESET.PR");
+    ASSERT_TRUE(presets.ok());
+    const tables::PresetData* row3 = presets->byNumber(3);
+    ASSERT_NE(row3, nullptr);
+    auto spc = presets->table().findColumn("SPC");
+    ASSERT_TRUE(spc);
+    EXPECT_EQ(presets->table().number(row3->row, *spc), 5.0);
+}
+
+TEST_F(ProbingTest, DatumCycleWritesTheDatumTableWithQ303Zero) {
+    // 413 with Q303 = 0, Q305 = 2: row 2 of the datum table selected with SEL TABLE gets the
+    // shift that gives the real stud centre (1.5, -0.8) and its top (-0.2) the nominal 0.
+    writeFileAtomically(dir / "ZERO.D",
+                        "BEGIN ZERO.D MM\nD    X         Y         Z         DOC\n"
+                        "0    +0        +0        +0\n[END]\n");
+    std::string program(kStudAndDatum);
+    program.replace(program.find("Q305=0"), 6, "Q305=2");
+    program.replace(program.find("Q303=+1"), 7, "Q303=+0");
+    ASSERT_EQ(run("0 SEL TABLE \"ZERO.D\"\n" + program), interp::RunStatus::Finished)
+        << firstError();
+    auto datums = tables::DatumTable::load(dir / "ZERO.D");
+    ASSERT_TRUE(datums.ok());
+    const tables::DatumData* row2 = datums->byNumber(2);
+    ASSERT_NE(row2, nullptr);
+    EXPECT_NEAR(*row2->axis('X'), 1.5, 1e-4);
+    EXPECT_NEAR(*row2->axis('Y'), -0.8, 1e-4);
+    EXPECT_NEAR(*row2->axis('Z'), -0.2, 1e-4);
+    // The active preset is left alone.
+    EXPECT_FALSE(fs::exists(dir / "PRESET.PR"));
+}
+
+std::string probe444(const std::string& point, const std::string& normal,
+                     const std::string& tolerance, int reaction) {
+    return "TCH PROBE 444 PROBING IN 3-D\n" + point + normal + "  Q320=+0\n  Q260=+20\n" +
+           "  QS400=\"" + tolerance + "\"\n  Q309=" + std::to_string(reaction) + "\n";
+}
+
+TEST_F(ProbingTest, Cycle444ChecksAPointAlongItsNormal) {
+    // The top face really lies at Z -0.2: the point (50, 30, 0) with normal +Z is 0.2 under
+    // size, within "0.5-0.3" (good). On the left face (normal -X) at Y 30 the real face lies at
+    // x = 1.5 - 30.8 tan a (a = 0.7 deg, the face turned about the shifted origin), seen r_b
+    // (1/cos a - 1) nearer by an axis-parallel ball; 444 probes along +X, so the point is that
+    // far inside: undersize, beyond -0.1 (scrap, Q309 = 0 keeps running).
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double face = 1.5 - 30.8 * std::tan(a) - 2.0 * (1.0 / std::cos(a) - 1.0);
+    ASSERT_EQ(run(std::string(kPlateProgram) + "5 " +
+                  probe444("  Q263=+50\n  Q264=+30\n  Q294=+0\n",
+                           "  Q581=+0\n  Q582=+0\n  Q583=+2\n", "0.5-0.3", 1) +
+                  "6 Q10 = Q164\n7 Q11 = Q183\n8 Q12 = Q153\n9 " +
+                  probe444("  Q263=+0\n  Q264=+30\n  Q294=-5\n",
+                           "  Q581=-1\n  Q582=+0\n  Q583=+0\n", "0.5-0.1", 0)),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(10), -0.2, 1e-9);
+    EXPECT_EQ(q(11), 0.0);
+    EXPECT_NEAR(q(12), -0.2, 1e-9);
+    EXPECT_NEAR(q(151), face, 1e-9);
+    EXPECT_NEAR(q(152), 30.0, 1e-9);
+    EXPECT_NEAR(q(153), -5.0, 1e-9);
+    EXPECT_NEAR(q(161), face, 1e-9);
+    EXPECT_NEAR(q(164), -face, 1e-9);
+    EXPECT_EQ(q(183), 2.0);
+    EXPECT_TRUE(fs::exists(dir / "TCHPR444.TXT"));
+    // Q309 = 2 stops on undersize; "0.1+0.1" is no tolerance at all (good).
+    EXPECT_EQ(run(std::string(kPlateProgram) + "5 " +
+                  probe444("  Q263=+0\n  Q264=+30\n  Q294=-5\n",
+                           "  Q581=-1\n  Q582=+0\n  Q583=+0\n", "0.5-0.1", 2)),
+              interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("PRB-006"), std::string::npos) << firstError();
+    ASSERT_EQ(run(std::string(kPlateProgram) + "5 " +
+                  probe444("  Q263=+0\n  Q264=+30\n  Q294=-5\n",
+                           "  Q581=-1\n  Q582=+0\n  Q583=+0\n", "0.1+0.1", 2)),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_EQ(q(183), 0.0);
+}
+
+TEST_F(ProbingTest, Cycle441SetsThePositioningFeedAndTracking) {
+    // After 441 the positioning moves run at Q396 instead of rapid (the default probe table
+    // pre-positions at FMAX 3000), and each touch in the plane orients the spindle to its
+    // direction first (Q399 = 1): 413's four touches inward at 180, -90, 0 and 90 degrees.
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R25 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+50 R0 FMAX\n"
+                  "4 TCH PROBE 441 FAST PROBING\n  Q396=1234\n  Q397=0\n  Q399=1\n  Q400=0\n"
+                  "5 TCH PROBE 413 DATUM OUTSIDE CIRCLE\n"
+                  "  Q321=+0\n  Q322=+0\n  Q262=52\n  Q325=+0\n  Q247=+90\n"
+                  "  Q261=-5\n  Q320=0\n  Q260=+20\n  Q301=1\n  Q305=0\n  Q331=+0\n  Q332=+0\n"
+                  "  Q303=+1\n  Q381=0\n  Q382=+0\n  Q383=+0\n  Q384=+0\n  Q333=+0\n  Q423=4\n"
+                  "  Q365=1\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    std::vector<double> orientations;
+    size_t feeds = 0;
+    for (const canon::Command& c : out.commands) {
+        if (const auto* o = std::get_if<canon::SpindleOrient>(&c.body)) {
+            orientations.push_back(o->angleDeg);
+        }
+        if (const auto* m = std::get_if<canon::LinearMove>(&c.body)) feeds += m->feed == 1234.0;
+    }
+    ASSERT_EQ(orientations.size(), 4u);
+    EXPECT_NEAR(orientations[0], 180.0, 1e-9);
+    EXPECT_NEAR(orientations[1], -90.0, 1e-9);
+    EXPECT_NEAR(orientations[2], 0.0, 1e-9);
+    EXPECT_NEAR(orientations[3], 90.0, 1e-9);
+    EXPECT_GT(feeds, 0u);
+}
+
+// The probe (tool 1, L 0 R 2 in the table) is really 0.1 longer with a ball 0.02 smaller.
+const char* kProbeError =
+    "base = \"mill\"\n[simulation.setup]\nshift = [0.5, -0.3, 0.0]\nrotation = 0.0\n"
+    "[[simulation.tool_error]]\ntool = 1\nlength = 0.1\nradius = -0.02\n";
+
+TEST_F(ProbingTest, Cycle461CalibratesTheProbeLengthOnTheTopFace) {
+    // The top face lies at Z 0 = Q434: the real tip touches it when the gauge point stands at
+    // 0.1, so L becomes 0.1 and takes effect at once (Q114).
+    useMachine(kProbeError);
+    ASSERT_EQ(run(std::string(kPlateProgram) + "5 L X+50 Y+30 Z+10 FMAX\n"
+                                               "6 TCH PROBE 461 CALIBRATE TS LENGTH\n  Q434=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(114), 0.1, 1e-9);
+    auto written = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(written.ok());
+    EXPECT_NEAR(written->byNumber(1)->length, 0.1, 1e-4);
+}
+
+TEST_F(ProbingTest, Cycle462CalibratesTheBallRadiusInARing) {
+    // A ring of radius 5 (the tube's bore), really 0.58 mm off where the probe starts: the
+    // coarse pass centres the probe, the fine pass finds ball centres on a circle of 5 - 1.98.
+    useMachine(kProbeError);
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R20 RI5 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+10 R0 FMAX\n4 L Z-5 FMAX\n"
+                  "5 TCH PROBE 462 CALIBRATE TS IN RING\n  Q407=+5\n  Q320=+0\n  Q423=+8\n"
+                  "  Q380=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], 0.5, 1e-9);  // over the real ring centre
+    EXPECT_NEAR(end[Axis::Y], -0.3, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle463CalibratesTheBallRadiusOnAStud) {
+    useMachine(kProbeError);
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R10 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+2 R0 FMAX\n"
+                  "4 TCH PROBE 463 CALIBRATE TS ON STUD\n  Q407=+10\n  Q320=+0\n  Q301=+1\n"
+                  "  Q423=+8\n  Q380=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    auto written = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(written.ok());
+    EXPECT_NEAR(written->byNumber(1)->radius, 1.98, 1e-4);
 }
 
 }  // namespace

@@ -276,6 +276,52 @@ TEST_F(ToolMeasurementTest, CalibrationCorrectsTheProbeForLaterMeasurements) {
     EXPECT_NEAR(q(116), 0.008, 1e-9);
 }
 
+TEST_F(ToolMeasurementTest, WirelessCalibration484FromWhereThePinStands) {
+    // The same pin and tool as above: 484 calibrates from the pin's height (Z+250 here) and
+    // stops first with Q536 = 0, so the operator can position the pin.
+    useMachine(
+        "[[simulation.tool_error]]\ntool = 9\nlength = 0.1\nradius = -0.02\n"
+        "[[simulation.tool_error]]\ntool = 3\nlength = 0.05\nradius = -0.012\n");
+    ASSERT_EQ(run("1 TOOL CALL 9 Z\n2 L X+0 Y+0 Z+250 R0 FMAX\n"
+                  "3 TCH PROBE 484 CALIBRATE IR TT\n  Q536=+0\n"
+                  "4 TOOL CALL 3 Z\n5 TCH PROBE 483 MEASURE TOOL\n  Q340=1\n  Q260=+200\n"
+                  "  Q341=0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(115), -0.05, 1e-9);
+    EXPECT_NEAR(q(116), 0.008, 1e-9);
+    auto programStops = [this] {
+        size_t n = 0;
+        for (const auto& stop : commandsOf<canon::ProgramStop>())
+            n += stop.kind == canon::StopKind::Program;
+        return n;
+    };
+    EXPECT_EQ(programStops(), 1u);
+    ASSERT_EQ(run("1 TOOL CALL 9 Z\n2 L X+0 Y+0 Z+250 R0 FMAX\n"
+                  "3 TCH PROBE 484 CALIBRATE IR TT\n  Q536=+1\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_EQ(programStops(), 1u);  // the recorder keeps the first run's: no new stop
+}
+
+TEST_F(ToolMeasurementTest, CalibrationSurvivesTheRun) {
+    // The calibration of one run (as in CalibrationCorrectsTheProbeForLaterMeasurements) is kept
+    // in TTCALIB.TXT of the NC root: a later run measures tool 3 against the calibrated TT.
+    useMachine(
+        "[[simulation.tool_error]]\ntool = 9\nlength = 0.1\nradius = -0.02\n"
+        "[[simulation.tool_error]]\ntool = 3\nlength = 0.05\nradius = -0.012\n");
+    ASSERT_EQ(run("1 TOOL CALL 9 Z\n2 L X+0 Y+0 Z+250 R0 FMAX\n"
+                  "3 TCH PROBE 480 CALIBRATE TT\n  Q260=+200\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    ASSERT_EQ(run("1 TOOL CALL 3 Z\n2 TCH PROBE 483 MEASURE TOOL\n  Q340=2\n  Q260=+200\n"
+                  "  Q341=0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(115), -0.05, 1e-9);
+    EXPECT_NEAR(q(116), 0.008, 1e-9);
+}
+
 TEST_F(ToolMeasurementTest, OldCalibrationCycle30) {
     useMachine("");
     ASSERT_EQ(run("1 TOOL CALL 9 Z\n2 TCH PROBE 30.0 CALIBRATE TT\n3 TCH PROBE 30.1 HEIGHT: +90\n"
