@@ -204,7 +204,7 @@ void KlartextInterpreter::writeToolProbeCalibration(int cycle,
     line("TOP_Y", tt.top.y());
     line("TOP_Z", tt.top.z());
     line("DIAMETER", tt.diameter);
-    if (auto error = m_root.replace(m_root.path() / kCalibrationFile, text)) {
+    if (auto error = replaceFile(m_root.path() / kCalibrationFile, text)) {
         fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the TT calibration: {2}"),
              {std::to_string(cycle), error->format()});
     }
