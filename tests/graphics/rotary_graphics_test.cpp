@@ -1,0 +1,118 @@
+// Rotary tables in the graphics: a program on mill5 drills two holes into a side face of the blank
+// with PLANE SPATIAL SPB+90; the stock and the toolpath must show them on that face, not on top.
+//
+// By hand (rotary/side_holes.H). The blank is X-20..+20, Y-20..+20, Z-30..0; the workpiece origin
+// is the pivot (mill5's preset). SPB+90 turns the plane about Y by +90: tilted X = part -Z, tilted
+// Y = part Y, tilted Z (the tool) = part +X, so a tilted point (x', y', z') is the part's
+// (z', y', -x'). Hole 1 at X+10 Y+5 from Z+25 to Z+12: on the part the axis runs along X from 25 to
+// 12 at y 5, z -10: 8 mm deep behind the face x = 20. Hole 2 at X+20 Y-8: y -8, z -20, the same
+// depth. Tool D5 flat: each hole pi 2.5^2 8 = 157.08 mm^3.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "app/runner/session.h"
+#include "core/canon/tee_sink.h"
+#include "graphics/stock/stock_simulation.h"
+#include "graphics/toolpath/toolpath_data.h"
+
+namespace kerf {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+const fs::path kPrograms = fs::path(KERF_SOURCE_DIR) / "tests" / "graphics" / "rotary";
+
+struct Drawn {
+    std::unique_ptr<graphics::StockSimulation> stock;
+    graphics::ToolpathData path;
+};
+
+Drawn run(const std::string& program) {
+    app::RunOptions options;
+    options.program = kPrograms / program;
+    options.toolTable = kPrograms / "TOOL.T";
+    options.machine = "mill5";
+    auto session = app::openSession(options);
+    Drawn out;
+    EXPECT_TRUE(session && session->ready());
+    if (!session || !session->ready()) return out;
+    const auto frame = machine::WorkpieceFrame::of(session->machine, session->workOffset);
+    EXPECT_TRUE(frame.has_value());
+    graphics::StockOptions stockOptions;
+    stockOptions.workpieceFrame = frame;
+    out.stock = std::make_unique<graphics::StockSimulation>(stockOptions);
+    graphics::ToolpathOptions pathOptions;
+    pathOptions.workpieceFrame = frame;
+    graphics::ToolpathCollector path(pathOptions);
+    canon::TeeSink tee;
+    tee.add(*out.stock);
+    tee.add(path);
+    interp::Interpreter& interpreter = *session->program.interpreter;
+    out.stock->setStart(interpreter.nominalPosition());
+    path.setStart(interpreter.nominalPosition());
+    for (;;) {
+        const interp::RunStatus status = interpreter.run(tee, 100000);
+        if (status != interp::RunStatus::BudgetUsed) {
+            EXPECT_EQ(status, interp::RunStatus::Finished);
+            break;
+        }
+    }
+    for (const Diagnostic& d : interpreter.diagnostics())
+        EXPECT_NE(d.severity, Severity::Error) << d.code << " " << d.message;
+    out.stock->finish();
+    out.path = path.take();
+    return out;
+}
+
+TEST(RotaryGraphics, HolesDrilledInATiltedPlaneAreOnTheSideFace) {
+    const Drawn drawn = run("side_holes.H");
+    ASSERT_TRUE(drawn.stock);
+    const graphics::VoxelStock* voxels = drawn.stock->voxelStock();
+    ASSERT_NE(voxels, nullptr) << "a tilted tool needs the 3D stock";
+    EXPECT_EQ(drawn.stock->millStock(), nullptr);
+    // Inside the holes, half way down: air.
+    EXPECT_FALSE(voxels->solidAt({16.0, 5.0, -10.0}));
+    EXPECT_FALSE(voxels->solidAt({19.5, 5.0, -10.0}));
+    EXPECT_FALSE(voxels->solidAt({16.0, -8.0, -20.0}));
+    // Beside a hole, beyond its bottom, and the whole top face: material.
+    EXPECT_TRUE(voxels->solidAt({16.0, 5.0, -6.5}));
+    EXPECT_TRUE(voxels->solidAt({16.0, 8.5, -10.0}));
+    EXPECT_TRUE(voxels->solidAt({11.0, 5.0, -10.0}));
+    EXPECT_TRUE(voxels->solidAt({11.0, -8.0, -20.0}));
+    for (double x : {-10.0, 0.0, 10.0, 12.0, 16.0, 19.5})
+        for (double y : {-8.0, 5.0})
+            EXPECT_TRUE(voxels->solidAt({x, y, -0.2})) << "top face at X" << x << " Y" << y;
+    const double expected = 2.0 * kPi * 2.5 * 2.5 * 8.0;
+    EXPECT_NEAR(drawn.stock->removedVolumeMm3(), expected, 0.01 * expected);
+    EXPECT_EQ(drawn.stock->rapidCuts(), 0u);
+}
+
+TEST(RotaryGraphics, ToolpathIsDrawnOnTheTurnedPartWithTheToolsDirection) {
+    const Drawn drawn = run("side_holes.H");
+    const graphics::ToolpathData& path = drawn.path;
+    ASSERT_EQ(path.toolAxis.size(), path.xyz.size());
+    // The first feed move (block 8) ends at the bottom of hole 1, the tool along part +X.
+    bool found = false;
+    for (size_t m = 0; m < path.moveCount() && !found; ++m) {
+        if (path.kinds[m] != graphics::MoveKind::Feed) continue;
+        const auto [begin, end] = path.pointsOfMove(m);
+        ASSERT_LT(begin, end);
+        const Vec3 tip = path.point(end - 1);
+        EXPECT_NEAR(tip.x(), 12.0, 1e-4);
+        EXPECT_NEAR(tip.y(), 5.0, 1e-4);
+        EXPECT_NEAR(tip.z(), -10.0, 1e-4);
+        const Vec3 axis = path.toolAxisAt(end - 1);
+        EXPECT_NEAR(axis.x(), 1.0, 1e-6);
+        EXPECT_NEAR(axis.z(), 0.0, 1e-6);
+        found = true;
+    }
+    EXPECT_TRUE(found);
+    // The table's turn (TURN: B from 0 to 90) is drawn as an arc about the pivot, in steps of at
+    // most 1 deg: more than 90 points.
+    EXPECT_GT(path.pointCount(), 90u);
+}
+
+}  // namespace
+}  // namespace kerf
