@@ -60,7 +60,7 @@ Drawn run(const std::string& program) {
         }
     }
     for (const Diagnostic& d : interpreter.diagnostics())
-        EXPECT_NE(d.severity, Severity::Error) << d.code << " " << d.message;
+        EXPECT_NE(d.severity, Severity::Error) << d.code << " " << d.message();
     out.stock->finish();
     out.path = path.take();
     return out;
