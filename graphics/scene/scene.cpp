@@ -376,11 +376,13 @@ void Scene::setToolpath(std::shared_ptr<const ToolpathData> data,
             d.tool.reset();
         }
     }
-    // The tool's direction where a table tilts it: a line every so often, a tenth of the path long.
+    // The tool's direction where a table tilts it, a fifth of the cutting moves' extent long.
     constexpr size_t kMaxToolAxisLines = 400;
-    vtkSmartPointer<vtkPolyData> axes =
-        d.data ? toolAxisLines(*d.data, kMaxToolAxisLines, 0.1 * d.data->bounds.diagonal())
-               : nullptr;
+    vtkSmartPointer<vtkPolyData> axes;
+    if (d.data) {
+        const double length = std::clamp(0.2 * d.data->feedBounds.diagonal(), 2.0, 50.0);
+        axes = toolAxisLines(*d.data, kMaxToolAxisLines, length);
+    }
     d.toolAxisLines = axes ? static_cast<size_t>(axes->GetNumberOfLines()) : 0;
     if (axes) {
         d.toolAxesMapper->SetInputData(axes);

@@ -12,9 +12,20 @@ vtkSmartPointer<vtkPolyData> toolAxisLines(const ToolpathData& data, size_t maxL
                                            double lengthMm) {
     if (data.toolAxis.empty() || maxLines == 0) return nullptr;
     constexpr double kVertical = 1.0 - 1e-9;
+    // Feed moves at each point (a simultaneous move shows how the tool turns), rapids (a table's
+    // turn among them) at their end only.
     std::vector<size_t> tilted;
-    for (size_t i = 0; i < data.pointCount(); ++i) {
+    auto add = [&](size_t i) {
         if (data.toolAxisAt(i).z() < kVertical) tilted.push_back(i);
+    };
+    for (size_t m = 0; m < data.moveCount(); ++m) {
+        const auto [begin, end] = data.pointsOfMove(m);
+        if (begin >= end) continue;
+        if (data.kinds[m] == MoveKind::Rapid) {
+            add(end - 1);
+        } else {
+            for (size_t i = begin; i < end; ++i) add(i);
+        }
     }
     if (tilted.empty()) return nullptr;
     const size_t stride = (tilted.size() + maxLines - 1) / maxLines;

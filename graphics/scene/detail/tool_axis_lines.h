@@ -11,9 +11,9 @@
 
 namespace kerf::graphics {
 
-// One line of `lengthMm` from the tip up the tool at points of the path where the tool does not
-// stand along the workpiece's Z, at most `maxLines` spread evenly over them; null when there are
-// none (a 3-axis path, or a machine without rotary tables).
+// One line of `lengthMm` from the tip up the tool where the tool does not stand along the
+// workpiece's Z: at every point of a feed move, at the end of a rapid; at most `maxLines` spread
+// evenly over them. Null when there are none (a 3-axis path, a machine without rotary tables).
 vtkSmartPointer<vtkPolyData> toolAxisLines(const ToolpathData& data, size_t maxLines,
                                            double lengthMm);
 
