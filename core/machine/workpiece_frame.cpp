@@ -41,8 +41,8 @@ void WorkpieceFrame::sample(const Pose& from, const Pose& to, double maxStepDeg,
                             std::vector<ToolOnPart>& out) const {
     const RotaryAngles a = anglesOf(from);
     const RotaryAngles b = anglesOf(to);
-    const double turn = std::max(std::abs(b.primaryDeg - a.primaryDeg),
-                                 std::abs(b.secondaryDeg - a.secondaryDeg));
+    const double turn =
+        std::max(std::abs(b.primaryDeg - a.primaryDeg), std::abs(b.secondaryDeg - a.secondaryDeg));
     constexpr int kMaxSteps = 4096;
     const double steps = maxStepDeg > 0.0 ? std::ceil(turn / maxStepDeg) : 1.0;
     const int count = std::isfinite(steps) ? std::clamp(static_cast<int>(steps), 1, kMaxSteps) : 1;

@@ -24,7 +24,8 @@ vtkSmartPointer<vtkPolyData> toolAxisLines(const ToolpathData& data, size_t maxL
         if (data.kinds[m] == MoveKind::Rapid) {
             add(end - 1);
         } else {
-            for (size_t i = begin; i < end; ++i) add(i);
+            for (size_t i = begin; i < end; ++i)
+                add(i);
         }
     }
     if (tilted.empty()) return nullptr;

@@ -94,7 +94,8 @@ void StockSimulation::createBar(const LatheBar& bar, const std::string& source) 
 void StockSimulation::switchToVoxels() {
     m_removedBeforeVoxels = m_mill->removedVolumeMm3();
     m_initialVolumeMm3 = m_mill->initialVolumeMm3();
-    m_voxels = std::make_unique<VoxelStock>(VoxelStock::fromHeightField(*m_mill, m_options.maxVoxels));
+    m_voxels =
+        std::make_unique<VoxelStock>(VoxelStock::fromHeightField(*m_mill, m_options.maxVoxels));
     m_voxelBaselineMm3 = m_voxels->volumeMm3();
     m_mill.reset();
     note("stock: a tilted tool: simulated in voxels of " + std::to_string(m_voxels->cellMm()) +

@@ -46,8 +46,9 @@ struct StockOptions {
 };
 
 // Material removal driven by the canonical stream: a height field for the mill (voxels once a
-// tool stands tilted on the workpiece), a revolved 2D profile for the lathe. Feed and rapid moves cut (rapids into material are counted); arcs are
-// split into chords of a quarter cell. Consume on one thread (the mesh worker or the runner).
+// tool stands tilted on the workpiece), a revolved 2D profile for the lathe. Feed and rapid moves
+// cut (rapids into material are counted); arcs are split into chords of a quarter cell. Consume on
+// one thread (the mesh worker or the runner).
 class StockSimulation final : public canon::Sink {
 public:
     explicit StockSimulation(StockOptions options = {});

@@ -130,14 +130,13 @@ VoxelStock VoxelStock::fromHeightField(const HeightFieldStock& field, size_t max
         const double z = stock.m_origin.z() + (k + 0.5) * stock.m_cell;
         for (int j = 0; j < stock.m_ny; ++j) {
             const double y = stock.m_origin.y() + (j + 0.5) * stock.m_cell;
-            const int fj = std::clamp(
-                static_cast<int>((y - field.minCorner().y()) / fieldCell), 0, field.cellsY() - 1);
+            const int fj = std::clamp(static_cast<int>((y - field.minCorner().y()) / fieldCell), 0,
+                                      field.cellsY() - 1);
             uint64_t* words = &stock.m_bits[stock.row(j, k)];
             for (int i = 0; i < stock.m_nx; ++i) {
                 const double x = stock.m_origin.x() + (i + 0.5) * stock.m_cell;
-                const int fi =
-                    std::clamp(static_cast<int>((x - field.minCorner().x()) / fieldCell), 0,
-                               field.cellsX() - 1);
+                const int fi = std::clamp(static_cast<int>((x - field.minCorner().x()) / fieldCell),
+                                          0, field.cellsX() - 1);
                 if (field.hasMaterial(fi, fj) && z < field.topAt(fi, fj))
                     words[i >> 6] |= uint64_t{1} << (i & 63);
             }
@@ -213,7 +212,8 @@ bool VoxelStock::solidAt(const Vec3& p) const {
 
 size_t VoxelStock::solidVoxels() const {
     size_t count = 0;
-    for (uint64_t word : m_bits) count += static_cast<size_t>(std::popcount(word));
+    for (uint64_t word : m_bits)
+        count += static_cast<size_t>(std::popcount(word));
     return count;
 }
 
@@ -277,8 +277,7 @@ Mesh VoxelStock::mesh(int maxSide) const {
         return solid[at(I, J, K)] == 0;
     };
     // One quad per face between a solid cube and air, wound counter-clockwise seen from outside.
-    auto face = [&](const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
-                    const Vec3& n) {
+    auto face = [&](const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& n) {
         mesh.addQuad(mesh.addVertex(p0, n), mesh.addVertex(p1, n), mesh.addVertex(p2, n),
                      mesh.addVertex(p3, n));
     };

@@ -56,9 +56,9 @@ std::pair<size_t, size_t> ToolpathData::pointsOfMove(size_t move) const {
 }
 
 size_t ToolpathData::memoryBytes() const {
-    return (xyz.capacity() + toolAxis.capacity()) * sizeof(float) + firstPoint.capacity() * sizeof(uint32_t) +
-           kinds.capacity() * sizeof(MoveKind) + locations.capacity() * sizeof(SourceLocation) +
-           tools.capacity() * sizeof(ToolEvent);
+    return (xyz.capacity() + toolAxis.capacity()) * sizeof(float) +
+           firstPoint.capacity() * sizeof(uint32_t) + kinds.capacity() * sizeof(MoveKind) +
+           locations.capacity() * sizeof(SourceLocation) + tools.capacity() * sizeof(ToolEvent);
 }
 
 ToolpathCollector::ToolpathCollector(ToolpathOptions options) : m_options(options) {
@@ -101,7 +101,8 @@ machine::ToolOnPart ToolpathCollector::onPart(const Pose& stream) const {
 void ToolpathCollector::addPoint(const machine::ToolOnPart& p, bool feed) {
     addPoint(p.tip, feed);
     if (!m_options.workpieceFrame) return;
-    for (int k = 0; k < 3; ++k) m_data.toolAxis.push_back(static_cast<float>(p.axis[k]));
+    for (int k = 0; k < 3; ++k)
+        m_data.toolAxis.push_back(static_cast<float>(p.axis[k]));
 }
 
 void ToolpathCollector::addLine(const canon::Command& command, const Pose& target, MoveKind kind) {

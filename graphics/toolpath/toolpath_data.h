@@ -41,7 +41,7 @@ struct ToolEvent {
 // reaching them, so segment s (from point s - 1 to point s, s >= 1) belongs to the last move
 // whose firstPoint <= s. No object per segment.
 struct ToolpathData {
-    std::vector<float> xyz;                 // 3 floats per point; point 0 is the start position
+    std::vector<float> xyz;  // 3 floats per point; point 0 is the start position
     // A machine with rotary tables: per point the tool's direction on the workpiece (unit, from
     // the tip up the tool), 3 floats; empty on other machines (the tool stands along Z).
     std::vector<float> toolAxis;

@@ -71,12 +71,13 @@ TEST(WorkpieceFrame, SamplesASimultaneousMoveByTheTablesTurn) {
     const auto frame = WorkpieceFrame::of(load("mill5"), preset);
     ASSERT_TRUE(frame.has_value());
     std::vector<ToolOnPart> points;
-    frame->sample(streamPose(10.0, 0.0, 0.0, 0.0, 0.0), streamPose(10.0, 0.0, 0.0, 0.0, 90.0),
-                  10.0, points);
+    frame->sample(streamPose(10.0, 0.0, 0.0, 0.0, 0.0), streamPose(10.0, 0.0, 0.0, 0.0, 90.0), 10.0,
+                  points);
     ASSERT_EQ(points.size(), 9u);
-    for (const ToolOnPart& p : points) EXPECT_NEAR(p.tip.head<2>().norm(), 10.0, kEps);
-    expectVec(points[0].tip, {10.0 * std::cos(0.17453292519943295),
-                              10.0 * std::sin(0.17453292519943295), 0.0});
+    for (const ToolOnPart& p : points)
+        EXPECT_NEAR(p.tip.head<2>().norm(), 10.0, kEps);
+    expectVec(points[0].tip,
+              {10.0 * std::cos(0.17453292519943295), 10.0 * std::sin(0.17453292519943295), 0.0});
     expectVec(points.back().tip, {0.0, 10.0, 0.0});
     points.clear();
     frame->sample(streamPose(0.0, 0.0, 0.0, 0.0, 0.0), streamPose(5.0, 0.0, 0.0, 0.0, 0.0), 10.0,
