@@ -114,5 +114,40 @@ TEST(RotaryGraphics, ToolpathIsDrawnOnTheTurnedPartWithTheToolsDirection) {
     EXPECT_GT(path.pointCount(), 90u);
 }
 
+// A simultaneous move (rotary/tcpm_line.H): with TCPM the tip goes along the line y 0, z -5 from
+// X-30 to X+30 while B turns from 0 to 60. On the part every drawn point of it lies on that line
+// (within half the path tolerance of 0.01 mm, the interpreter's split) and the tool ends along
+// (sin 60, 0, cos 60). The flat D5 tool cuts a groove 5 deep: air on the line, material 2.5 mm
+// beside it (the tool turns about Y, so the groove stays R wide in Y) and below the lowest edge of
+// its tilted end, which inside the blank stays above z -5 - 2.5 sin 52 = -6.97.
+TEST(RotaryGraphics, SimultaneousMoveIsDrawnAndCutOnThePart) {
+    const Drawn drawn = run("tcpm_line.H");
+    ASSERT_TRUE(drawn.stock);
+    const graphics::ToolpathData& path = drawn.path;
+    size_t feedPoints = 0;
+    Vec3 lastAxis = Vec3::UnitZ();
+    for (size_t m = 0; m < path.moveCount(); ++m) {
+        if (path.kinds[m] != graphics::MoveKind::Feed) continue;
+        const auto [begin, end] = path.pointsOfMove(m);
+        for (size_t i = begin; i < end; ++i) {
+            const Vec3 p = path.point(i);
+            EXPECT_NEAR(p.y(), 0.0, 0.005) << "point " << i;
+            EXPECT_NEAR(p.z(), -5.0, 0.005) << "point " << i;
+            ++feedPoints;
+            lastAxis = path.toolAxisAt(i);
+        }
+    }
+    EXPECT_GT(feedPoints, 60u);  // B turns 60 deg: at least a point a degree
+    EXPECT_NEAR(lastAxis.x(), std::sqrt(3.0) / 2.0, 1e-6);
+    EXPECT_NEAR(lastAxis.z(), 0.5, 1e-6);
+    const graphics::VoxelStock* voxels = drawn.stock->voxelStock();
+    ASSERT_NE(voxels, nullptr);
+    for (double x : {-15.0, 0.0, 15.0}) {
+        EXPECT_FALSE(voxels->solidAt({x, 0.0, -4.0})) << "X" << x;
+        EXPECT_TRUE(voxels->solidAt({x, 3.0, -4.0})) << "X" << x;
+        EXPECT_TRUE(voxels->solidAt({x, 0.0, -7.2})) << "X" << x;
+    }
+}
+
 }  // namespace
 }  // namespace kerf
