@@ -52,7 +52,13 @@ public:
             return h0 - t * m_hd - m_cutter.heightAt(rho);
         };
         if (g(lo) >= 0.0 || g(hi) >= 0.0) return true;
-        for (int i = 0; i < 40 && hi - lo > 1e-9; ++i) {
+        // Upper bound of the maximum: the highest h against the profile at the nearest approach
+        // to the axis; most points below the tool end here.
+        const double nearest = m_rdSquared < 1e-18 ? lo : std::clamp(b / m_rdSquared, lo, hi);
+        const double hMax = std::max(h0 - lo * m_hd, h0 - hi * m_hd);
+        if (hMax < m_cutter.heightAt(std::min(m_radius, (r0 - nearest * m_rd).norm())))
+            return false;
+        for (int i = 0; i < 30 && hi - lo > 1e-9; ++i) {
             const double m1 = lo + (hi - lo) / 3.0;
             const double m2 = hi - (hi - lo) / 3.0;
             const double g1 = g(m1);
@@ -161,8 +167,11 @@ bool VoxelStock::cut(const Vec3& a, const Vec3& b, const Vec3& axis, const MillC
     const SweptCutter swept(a, b - a, u, cutter, radius, length);
     Vec3 lo = a.cwiseMin(b).cwiseMin(a + length * u).cwiseMin(b + length * u);
     Vec3 hi = a.cwiseMax(b).cwiseMax(a + length * u).cwiseMax(b + length * u);
-    lo -= Vec3::Constant(radius);
-    hi += Vec3::Constant(radius);
+    // A disc of radius R about u reaches R sqrt(1 - u_i^2) along axis i: a tool along Z does not
+    // reach below its tip.
+    const Vec3 reach = radius * (Vec3::Ones() - u.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
+    lo -= reach;
+    hi += reach;
     auto first = [&](double v, double origin) {
         return static_cast<int>(std::floor((v - origin) / m_cell - 0.5)) + 1;
     };
