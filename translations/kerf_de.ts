@@ -1050,6 +1050,14 @@ Maschine: %3</translation>
         <source>Block</source>
         <translation>Satz</translation>
     </message>
+    <message>
+        <source>Working plane</source>
+        <translation>Bearbeitungsebene</translation>
+    </message>
+    <message>
+        <source>Working plane %1</source>
+        <translation>Bearbeitungsebene %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

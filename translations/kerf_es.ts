@@ -1050,6 +1050,14 @@ Máquina: %3</translation>
         <source>Block</source>
         <translation>Bloque</translation>
     </message>
+    <message>
+        <source>Working plane</source>
+        <translation>Plano de trabajo</translation>
+    </message>
+    <message>
+        <source>Working plane %1</source>
+        <translation>Plano de trabajo %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

@@ -1053,6 +1053,14 @@ Maszyna: %3</translation>
         <source>Block</source>
         <translation>Blok</translation>
     </message>
+    <message>
+        <source>Working plane</source>
+        <translation>Płaszczyzna obróbki</translation>
+    </message>
+    <message>
+        <source>Working plane %1</source>
+        <translation>Płaszczyzna obróbki %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

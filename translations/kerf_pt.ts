@@ -1051,6 +1051,14 @@ Máquina: %3</translation>
         <source>Block</source>
         <translation>Bloco</translation>
     </message>
+    <message>
+        <source>Working plane</source>
+        <translation>Plano de trabalho</translation>
+    </message>
+    <message>
+        <source>Working plane %1</source>
+        <translation>Plano de trabalho %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

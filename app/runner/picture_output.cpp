@@ -63,8 +63,13 @@ PictureOutput::PictureOutput(const RunOptions& options, const Session& session)
     const graphics::SceneOptions machineScene = graphics::sceneOptionsFor(session.machine);
     s.lathe = machineScene.lathe;
     s.limits = machineScene.limits;
+    // A machine with rotary tables: the path and the stock on the part the tables turn.
+    const std::optional<machine::WorkpieceFrame> frame =
+        machine::WorkpieceFrame::of(session.machine, session.workOffset);
     if (options.png) {
-        s.toolpath = std::make_unique<graphics::ToolpathCollector>();
+        graphics::ToolpathOptions toolpathOptions;
+        toolpathOptions.workpieceFrame = frame;
+        s.toolpath = std::make_unique<graphics::ToolpathCollector>(std::move(toolpathOptions));
         s.tee.add(*s.toolpath);
     }
     // Point angles (T-ANGLE) by tool number, copied: the canonical tool change carries L, R, R2.
@@ -82,6 +87,7 @@ PictureOutput::PictureOutput(const RunOptions& options, const Session& session)
     };
     if (options.stock) {
         graphics::StockOptions stockOptions;
+        stockOptions.workpieceFrame = frame;
         stockOptions.machine =
             s.lathe ? graphics::StockMachine::Lathe : graphics::StockMachine::Mill;
         stockOptions.deriveStockFromPath = true;

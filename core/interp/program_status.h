@@ -45,6 +45,14 @@ struct ProgramStatus {
         AxisMask mirrored = 0;     // axes whose direction is reversed
         double rotationDeg = 0.0;  // about the tool axis
         std::array<double, kAxisCount> scale{1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+        // The tilted working plane (cycle 19, PLANE): its spatial angles and where the tool tip
+        // is in its coordinates (the program's, shifts included). None while untilted.
+        struct WorkingPlane {
+            std::array<double, 3> spatialDeg{};  // SPA, SPB, SPC
+            std::array<double, 3> positionMm{};  // X, Y, Z
+            friend bool operator==(const WorkingPlane&, const WorkingPlane&) = default;
+        };
+        std::optional<WorkingPlane> workingPlane;
         friend bool operator==(const Transformations&, const Transformations&) = default;
     };
     enum class ParameterScope : uint8_t {

@@ -47,6 +47,7 @@ public:
     bool twoTables() const { return m_two; }
     char primary() const { return m_primary; }
     char secondary() const { return m_secondary; }  // table-table only
+    const Vec3& pivot() const { return m_pivot; }
 
     // Takes vectors fixed to the workpiece into machine directions.
     Rotation workpieceToMachine(const RotaryAngles& angles) const;

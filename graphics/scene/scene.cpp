@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <Eigen/Geometry>
 #include <vtkActor.h>
@@ -31,6 +32,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "graphics/scene/detail/scene_impl.h"
+#include "graphics/scene/detail/tool_axis_lines.h"
 #include "graphics/scene/scene_vtk.h"
 #include "graphics/stock/tool_mesh.h"
 
@@ -190,6 +192,14 @@ Scene::Impl::Impl(SceneOptions sceneOptions) : options(sceneOptions) {
     toolActor->GetProperty()->SetOpacity(1.0);
     toolActor->VisibilityOff();
     renderer->AddActor(toolActor);
+
+    toolAxesMapper->ScalarVisibilityOff();
+    toolAxesActor->SetMapper(toolAxesMapper);
+    toolAxesActor->GetProperty()->SetColor(0.85, 0.55, 0.95);
+    toolAxesActor->GetProperty()->LightingOff();
+    toolAxesActor->PickableOff();
+    toolAxesActor->VisibilityOff();
+    renderer->AddActor(toolAxesActor);
 
     highlightMapper->ScalarVisibilityOff();
     highlightMapper->SetResolveCoincidentTopologyToPolygonOffset();
@@ -366,8 +376,25 @@ void Scene::setToolpath(std::shared_ptr<const ToolpathData> data,
             d.tool.reset();
         }
     }
-    if (d.data && d.data->pointCount() > 0)
-        setToolPosition(d.data->point(d.data->pointCount() - 1));
+    // The tool's direction where a table tilts it, a fifth of the cutting moves' extent long.
+    constexpr size_t kMaxToolAxisLines = 400;
+    vtkSmartPointer<vtkPolyData> axes;
+    if (d.data) {
+        const double length = std::clamp(0.2 * d.data->feedBounds.diagonal(), 2.0, 50.0);
+        axes = toolAxisLines(*d.data, kMaxToolAxisLines, length);
+    }
+    d.toolAxisLines = axes ? static_cast<size_t>(axes->GetNumberOfLines()) : 0;
+    if (axes) {
+        d.toolAxesMapper->SetInputData(axes);
+        d.toolAxesActor->VisibilityOn();
+    } else {
+        d.toolAxesMapper->RemoveAllInputs();
+        d.toolAxesActor->VisibilityOff();
+    }
+    if (d.data && d.data->pointCount() > 0) {
+        const size_t last = d.data->pointCount() - 1;
+        setToolPosition(d.data->point(last), d.data->toolAxisAt(last));
+    }
     d.updateAxesScale();
 }
 
@@ -431,9 +458,20 @@ void Scene::setTool(const ToolGlyph& tool) {
     d.toolActor->VisibilityOn();
 }
 
-void Scene::setToolPosition(const Vec3& position) {
+void Scene::setToolPosition(const Vec3& position, const Vec3& axis) {
     if (!position.allFinite()) return;
-    m_impl->toolActor->SetPosition(position.x(), position.y(), position.z());
+    vtkActor* tool = m_impl->toolActor;
+    tool->SetPosition(position.x(), position.y(), position.z());
+    const double norm = axis.norm();
+    if (!axis.allFinite() || norm < 1e-12) return;
+    // The turn from Z onto the axis, about the tip (the glyph's origin).
+    const Eigen::Quaterniond turn = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), axis / norm);
+    const Eigen::AngleAxisd angleAxis(turn);
+    tool->SetOrientation(0.0, 0.0, 0.0);
+    if (angleAxis.angle() > 1e-12) {
+        tool->RotateWXYZ(angleAxis.angle() * 180.0 / std::numbers::pi, angleAxis.axis().x(),
+                         angleAxis.axis().y(), angleAxis.axis().z());
+    }
 }
 
 void Scene::setExecutedPath(size_t fromPoint, size_t toPoint, const Vec3& tip) {
@@ -761,6 +799,7 @@ SceneStats Scene::stats() const {
     stats.highlightedSegments = d.highlighted;
     stats.executedSegments = d.executed.segments();
     stats.stockTriangles = d.stock ? d.stock->triangleCount() : 0;
+    stats.toolAxisLines = d.toolAxisLines;
     return stats;
 }
 

@@ -57,6 +57,7 @@ struct SceneStats {
     size_t highlightedSegments = 0;
     size_t executedSegments = 0;
     size_t stockTriangles = 0;
+    size_t toolAxisLines = 0;  // drawn along tilted moves
 };
 
 class Scene {
@@ -74,7 +75,9 @@ public:
     // Shaded stock (null or empty: none).
     void setStockMesh(std::shared_ptr<const Mesh> mesh);
     void setTool(const ToolGlyph& tool);
-    void setToolPosition(const Vec3& position);
+    // The tool's tip and its direction on the workpiece (unit, from the tip up the tool: a rotary
+    // table tilts it); the glyph, built along its axis, is turned from Z onto `axis`.
+    void setToolPosition(const Vec3& position, const Vec3& axis = Vec3::UnitZ());
     // The part of the toolpath already executed, drawn over the path in its own colour: the
     // path's points [fromPoint, toPoint) and then `tip` (where the run is along the next
     // segment). Moving on only appends; an empty range clears it.

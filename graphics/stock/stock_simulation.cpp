@@ -8,6 +8,11 @@
 
 namespace kerf::graphics {
 
+namespace {
+// A cube mesh has up to six quads per cell where the height field has one: fewer cells a side.
+constexpr int kMaxVoxelMeshSide = 200;
+}  // namespace
+
 StockSimulation::StockSimulation(StockOptions options) : m_options(std::move(options)) {
     if (!m_options.millCutter) {
         m_options.millCutter = [](const canon::ToolChange& tool) {
@@ -86,14 +91,33 @@ void StockSimulation::createBar(const LatheBar& bar, const std::string& source) 
     }
 }
 
-void StockSimulation::cutWithTool(const Vec3& from, const Vec3& to, bool rapid, size_t tool) {
+void StockSimulation::switchToVoxels() {
+    m_removedBeforeVoxels = m_mill->removedVolumeMm3();
+    m_initialVolumeMm3 = m_mill->initialVolumeMm3();
+    m_voxels =
+        std::make_unique<VoxelStock>(VoxelStock::fromHeightField(*m_mill, m_options.maxVoxels));
+    m_voxelBaselineMm3 = m_voxels->volumeMm3();
+    m_mill.reset();
+    note("stock: a tilted tool: simulated in voxels of " + std::to_string(m_voxels->cellMm()) +
+         " mm");
+}
+
+void StockSimulation::cutWithTool(const Vec3& from, const Vec3& to, const Vec3& axis, bool rapid,
+                                  size_t tool) {
     bool removed = false;
-    if (m_mill) {
+    if (m_mill || m_voxels) {
         if (m_toolAxes[tool] != Axis::Z) {
             note("stock: only tool axis Z is simulated on the mill");
             return;
         }
-        removed = m_mill->cut(from, to, m_cutters[tool]);
+        // The height field holds a tool along the workpiece's Z only.
+        constexpr double kVertical = 1.0 - 1e-9;
+        if (m_mill && axis.z() < kVertical) switchToVoxels();
+        if (m_voxels) {
+            removed = m_voxels->cut(from, to, axis, m_cutters[tool]);
+        } else {
+            removed = m_mill->cut(from, to, m_cutters[tool]);
+        }
     } else if (m_lathe) {
         removed = m_lathe->cut(from.x(), from.z(), to.x(), to.z(), m_inserts[tool]);
     }
@@ -103,7 +127,7 @@ void StockSimulation::cutWithTool(const Vec3& from, const Vec3& to, bool rapid, 
     }
 }
 
-void StockSimulation::cutSegment(const Vec3& from, const Vec3& to, bool rapid) {
+void StockSimulation::cutSegment(const Vec3& from, const Vec3& to, const Vec3& axis, bool rapid) {
     if (!from.allFinite() || !to.allFinite()) return;
     if (!rapid) {
         m_feedBounds.add(from);
@@ -115,10 +139,31 @@ void StockSimulation::cutSegment(const Vec3& from, const Vec3& to, bool rapid) {
             m_deferOverflow = true;
             return;
         }
-        m_deferred.push_back({from, to, static_cast<uint32_t>(m_tool), rapid});
+        m_deferred.push_back({from, to, axis, static_cast<uint32_t>(m_tool), rapid});
         return;
     }
-    cutWithTool(from, to, rapid, m_tool);
+    cutWithTool(from, to, axis, rapid, m_tool);
+}
+
+machine::ToolOnPart StockSimulation::onPart(const Pose& stream) const {
+    if (m_options.workpieceFrame) return m_options.workpieceFrame->toPart(stream);
+    return {stream.xyz(), Vec3::UnitZ()};
+}
+
+void StockSimulation::cutStreamLine(const Pose& from, const Pose& to, bool rapid) {
+    if (!m_options.workpieceFrame) {
+        cutSegment(from.xyz(), to.xyz(), Vec3::UnitZ(), rapid);
+        return;
+    }
+    const machine::WorkpieceFrame& frame = *m_options.workpieceFrame;
+    m_samples.clear();
+    frame.sample(from, to, m_options.maxTableStepDeg, m_samples);
+    machine::ToolOnPart last = frame.toPart(from);
+    for (const machine::ToolOnPart& next : m_samples) {
+        // Between two samples the tool turns by at most the step: cut with its mean direction.
+        cutSegment(last.tip, next.tip, (last.axis + next.axis).normalized(), rapid);
+        last = next;
+    }
 }
 
 void StockSimulation::consume(const canon::Command& command) {
@@ -126,7 +171,7 @@ void StockSimulation::consume(const canon::Command& command) {
     auto line = [&](const Pose& target, bool rapid) {
         if (!finiteXyz(target)) return;
         ++m_moves;
-        cutSegment(m_position.xyz(), target.xyz(), rapid);
+        cutStreamLine(m_position, target, rapid);
         m_position = target;
     };
     if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) {
@@ -142,10 +187,14 @@ void StockSimulation::consume(const canon::Command& command) {
         ++m_moves;
         m_scratch.clear();
         tessellateArc(m_position, *arc, std::max(1e-4, resolutionMm() * 0.25), 4096, m_scratch);
-        Vec3 from = m_position.xyz();
+        // Arcs keep the tables still (docs/klartext.md): one turn maps every chord.
+        Pose at = m_position;
+        machine::ToolOnPart from = onPart(at);
         for (const Vec3& p : m_scratch) {
-            cutSegment(from, p, false);
-            from = p;
+            at.setXyz(p);
+            const machine::ToolOnPart to = onPart(at);
+            cutSegment(from.tip, to.tip, to.axis, false);
+            from = to;
         }
         m_position = arc->target;
     } else if (const auto* tool = std::get_if<canon::ToolChange>(&body)) {
@@ -194,7 +243,7 @@ void StockSimulation::finish() {
         if (hasStock()) {
             note("stock: no blank in the program; derived from the feed path");
             for (const Deferred& move : m_deferred)
-                cutWithTool(move.from, move.to, move.rapid, move.tool);
+                cutWithTool(move.from, move.to, move.axis, move.rapid, move.tool);
         }
     }
     if (m_deferOverflow)
@@ -206,24 +255,28 @@ void StockSimulation::finish() {
 
 double StockSimulation::removedVolumeMm3() const {
     if (m_mill) return m_mill->removedVolumeMm3();
+    if (m_voxels) return m_removedBeforeVoxels + m_voxelBaselineMm3 - m_voxels->volumeMm3();
     if (m_lathe) return m_lathe->removedVolumeMm3();
     return 0.0;
 }
 
 double StockSimulation::initialVolumeMm3() const {
     if (m_mill) return m_mill->initialVolumeMm3();
+    if (m_voxels) return m_initialVolumeMm3;
     if (m_lathe) return m_lathe->initialVolumeMm3();
     return 0.0;
 }
 
 double StockSimulation::resolutionMm() const {
     if (m_mill) return m_mill->cellMm();
+    if (m_voxels) return m_voxels->cellMm();
     if (m_lathe) return m_lathe->cellMm();
     return m_options.resolutionMm;
 }
 
 Mesh StockSimulation::mesh(int maxSide) const {
     if (m_mill) return m_mill->mesh(maxSide);
+    if (m_voxels) return m_voxels->mesh(std::min(maxSide, kMaxVoxelMeshSide));
     if (m_lathe) return m_lathe->mesh(180.0, 48, maxSide);
     return {};
 }

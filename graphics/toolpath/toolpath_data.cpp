@@ -56,9 +56,9 @@ std::pair<size_t, size_t> ToolpathData::pointsOfMove(size_t move) const {
 }
 
 size_t ToolpathData::memoryBytes() const {
-    return xyz.capacity() * sizeof(float) + firstPoint.capacity() * sizeof(uint32_t) +
-           kinds.capacity() * sizeof(MoveKind) + locations.capacity() * sizeof(SourceLocation) +
-           tools.capacity() * sizeof(ToolEvent);
+    return (xyz.capacity() + toolAxis.capacity()) * sizeof(float) +
+           firstPoint.capacity() * sizeof(uint32_t) + kinds.capacity() * sizeof(MoveKind) +
+           locations.capacity() * sizeof(SourceLocation) + tools.capacity() * sizeof(ToolEvent);
 }
 
 ToolpathCollector::ToolpathCollector(ToolpathOptions options) : m_options(options) {
@@ -68,14 +68,14 @@ ToolpathCollector::ToolpathCollector(ToolpathOptions options) : m_options(option
 void ToolpathCollector::setStart(const Pose& start) {
     m_position = finiteXyz(start) ? start : Pose{};
     m_data = ToolpathData{};
-    addPoint(m_position.xyz(), false);
+    addPoint(onPart(m_position), false);
 }
 
 ToolpathData ToolpathCollector::take() {
     ToolpathData out = std::move(m_data);
     m_data = ToolpathData{};
     m_data.xInDiameter = out.xInDiameter;
-    addPoint(m_position.xyz(), false);
+    addPoint(onPart(m_position), false);
     return out;
 }
 
@@ -93,6 +93,18 @@ void ToolpathCollector::addPoint(const Vec3& p, bool feed) {
     if (feed) m_data.feedBounds.add(p);
 }
 
+machine::ToolOnPart ToolpathCollector::onPart(const Pose& stream) const {
+    if (m_options.workpieceFrame) return m_options.workpieceFrame->toPart(stream);
+    return {stream.xyz(), Vec3::UnitZ()};
+}
+
+void ToolpathCollector::addPoint(const machine::ToolOnPart& p, bool feed) {
+    addPoint(p.tip, feed);
+    if (!m_options.workpieceFrame) return;
+    for (int k = 0; k < 3; ++k)
+        m_data.toolAxis.push_back(static_cast<float>(p.axis[k]));
+}
+
 void ToolpathCollector::addLine(const canon::Command& command, const Pose& target, MoveKind kind) {
     if (!finiteXyz(target)) {
         ++m_data.skippedMoves;
@@ -102,14 +114,31 @@ void ToolpathCollector::addLine(const canon::Command& command, const Pose& targe
         m_data.truncated = true;
         return;
     }
+    if (m_options.workpieceFrame) {
+        m_samples.clear();
+        m_options.workpieceFrame->sample(m_position, target, m_options.maxTableStepDeg, m_samples);
+        if (m_data.pointCount() + m_samples.size() > m_options.maxPoints) {
+            m_data.truncated = true;
+            return;
+        }
+    }
     beginMove(command.location, kind);
-    const Vec3 from = m_position.xyz();
-    const Vec3 to = target.xyz();
+    const Pose from = m_position;
     m_position = target;
-    if (to == from) return;  // zero-length: the move exists (picking, highlight) but adds no point
     const bool feed = kind != MoveKind::Rapid;
-    if (feed && m_data.feedBounds.empty) m_data.feedBounds.add(from);
-    addPoint(to, feed);
+    if (!m_options.workpieceFrame) {
+        if (target.xyz() == from.xyz()) return;  // zero-length: the move exists but adds no point
+        if (feed && m_data.feedBounds.empty) m_data.feedBounds.add(from.xyz());
+        addPoint(target.xyz(), feed);
+        return;
+    }
+    Vec3 last = onPart(from).tip;
+    if (feed && m_data.feedBounds.empty) m_data.feedBounds.add(last);
+    for (const machine::ToolOnPart& p : m_samples) {
+        if (p.tip == last) continue;
+        addPoint(p, feed);
+        last = p.tip;
+    }
 }
 
 void ToolpathCollector::consume(const canon::Command& command) {
@@ -131,12 +160,15 @@ void ToolpathCollector::consume(const canon::Command& command) {
             return;
         }
         beginMove(command.location, MoveKind::Arc);
-        if (m_data.feedBounds.empty) m_data.feedBounds.add(m_position.xyz());
-        Vec3 last = m_position.xyz();
+        Pose at = m_position;
+        Vec3 last = onPart(at).tip;
+        if (m_data.feedBounds.empty) m_data.feedBounds.add(last);
         for (const Vec3& p : m_scratch) {
-            if (p == last) continue;
-            addPoint(p, true);
-            last = p;
+            at.setXyz(p);  // arcs keep the tables still: one turn maps every chord
+            const machine::ToolOnPart on = onPart(at);
+            if (on.tip == last) continue;
+            addPoint(on, true);
+            last = on.tip;
         }
         m_position = arc->target;
     } else if (const auto* synced = std::get_if<canon::SpindleSyncedMove>(&body)) {

@@ -9,6 +9,7 @@
 
 #include "core/base/source_location.h"
 #include "core/canon/commands.h"
+#include "core/machine/workpiece_frame.h"
 
 namespace kerf::graphics {
 
@@ -40,7 +41,10 @@ struct ToolEvent {
 // reaching them, so segment s (from point s - 1 to point s, s >= 1) belongs to the last move
 // whose firstPoint <= s. No object per segment.
 struct ToolpathData {
-    std::vector<float> xyz;                 // 3 floats per point; point 0 is the start position
+    std::vector<float> xyz;  // 3 floats per point; point 0 is the start position
+    // A machine with rotary tables: per point the tool's direction on the workpiece (unit, from
+    // the tip up the tool), 3 floats; empty on other machines (the tool stands along Z).
+    std::vector<float> toolAxis;
     std::vector<uint32_t> firstPoint;       // per move
     std::vector<MoveKind> kinds;            // per move
     std::vector<SourceLocation> locations;  // per move
@@ -56,6 +60,10 @@ struct ToolpathData {
     size_t moveCount() const { return firstPoint.size(); }
     size_t segmentCount() const { return pointCount() > 0 ? pointCount() - 1 : 0; }
     Vec3 point(size_t i) const { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
+    Vec3 toolAxisAt(size_t i) const {
+        if (3 * i + 2 >= toolAxis.size()) return Vec3::UnitZ();
+        return {toolAxis[3 * i], toolAxis[3 * i + 1], toolAxis[3 * i + 2]};
+    }
     // The move owning segment s (1 <= s < pointCount()); nullopt if none does.
     std::optional<uint32_t> moveOfSegment(size_t segment) const;
     // Points of move m: [begin, end).
@@ -68,6 +76,10 @@ struct ToolpathOptions {
     double arcChordToleranceMm = 0.002;  // world tolerance of the stored arc points
     int maxPointsPerArc = 4096;
     size_t maxPoints = 50'000'000;  // cap for endless programs (HMI stays responsive)
+    // A machine with rotary tables: the path is drawn on the workpiece the tables turn, a move
+    // whose tables turn in points at most `maxTableStepDeg` of turn apart.
+    std::optional<machine::WorkpieceFrame> workpieceFrame;
+    double maxTableStepDeg = 1.0;
 };
 
 // canon::Sink that collects the toolpath while the stream is consumed by everyone else.
@@ -87,12 +99,15 @@ public:
 private:
     void beginMove(const SourceLocation& location, MoveKind kind);
     void addPoint(const Vec3& p, bool feed);
+    void addPoint(const machine::ToolOnPart& p, bool feed);
+    machine::ToolOnPart onPart(const Pose& stream) const;
     void addLine(const canon::Command& command, const Pose& target, MoveKind kind);
 
     ToolpathOptions m_options;
     ToolpathData m_data;
     Pose m_position{};
     std::vector<Vec3> m_scratch;
+    std::vector<machine::ToolOnPart> m_samples;
 };
 
 }  // namespace kerf::graphics

@@ -275,6 +275,17 @@ void StatusTabs::fillTransformations() {
     }
     rows.push_back(
         {tr("Scaling"), uniform ? number(t.scale[0], 4) : factors.join(QStringLiteral("  "))});
+    // The tilted plane: its angles (NC words, not translated) and the tool in its coordinates.
+    if (const auto& plane = t.workingPlane) {
+        rows.push_back({tr("Working plane"),
+                        QStringLiteral("SPA %1  SPB %2  SPC %3")
+                            .arg(angleText(plane->spatialDeg[0]), angleText(plane->spatialDeg[1]),
+                                 angleText(plane->spatialDeg[2]))});
+        for (int i = 0; i < 3; ++i) {
+            rows.push_back({tr("Working plane %1").arg(axisName(i)),
+                            lengthText(plane->positionMm[static_cast<size_t>(i)], inch)});
+        }
+    }
     fill(m_transformations, rows);
 }
 

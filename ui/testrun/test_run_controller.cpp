@@ -233,8 +233,20 @@ double TestRunController::machiningTimeS() const {
 }
 
 Vec3 TestRunController::toolPosition() const {
-    if (m_follower && m_actual) return m_actual->xyz();
+    if (m_follower && m_actual) {
+        const auto& frame = m_program ? m_program->stockOptions.workpieceFrame : std::nullopt;
+        return frame ? frame->toPart(*m_actual).tip : m_actual->xyz();
+    }
     return m_program ? m_program->toolPositionAt(m_timeS) : Vec3(0.0, 0.0, 0.0);
+}
+
+Vec3 TestRunController::toolAxis() const {
+    if (!m_program) return Vec3::UnitZ();
+    if (m_follower && m_actual) {
+        const auto& frame = m_program->stockOptions.workpieceFrame;
+        return frame ? frame->toPart(*m_actual).axis : Vec3::UnitZ();
+    }
+    return m_program->toolAxisAt(m_timeS);
 }
 
 TestRunController::ExecutedPart TestRunController::executedPart() const {

@@ -137,6 +137,7 @@ public:
     // The stock being cut (null without a ready program). Replaced by reset() and prepare().
     const graphics::ProgressiveStock* stock() const { return m_stock.get(); }
     Vec3 toolPosition() const;
+    Vec3 toolAxis() const;  // the tool's direction on the workpiece (a rotary table tilts it)
     // Line of the block being played (0 before the first command).
     int currentLine() const;
     // The block being played or followed (none before the first command and after the last).

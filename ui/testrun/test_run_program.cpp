@@ -20,7 +20,8 @@ constexpr long kStatusLookBack = 16;
 // Feeds every consumer of the test run from one canonical stream and keeps the stream.
 class Recorder final : public canon::Sink {
 public:
-    Recorder(TestRunProgram& out, task::MachiningClock* clock) : m_out(out), m_clock(clock) {}
+    Recorder(TestRunProgram& out, task::MachiningClock* clock, graphics::ToolpathOptions toolpath)
+        : m_out(out), m_clock(clock), m_toolpath(std::move(toolpath)) {}
 
     void setStart(const Pose& start) {
         m_statistics.setStart(start);
@@ -68,8 +69,10 @@ Diagnostic testRunError(const std::string& file, const char* text, std::string a
 // The stock the runner's --stock would simulate: T-ANGLE from the tool table for drills, the
 // machine's bar on a lathe, a blank derived from the path when the program has none.
 graphics::StockOptions stockOptionsFor(const machine::MachineConfig& machine,
-                                       const tables::ToolTable* tools) {
+                                       const tables::ToolTable* tools,
+                                       const std::optional<machine::WorkpieceFrame>& frame) {
     graphics::StockOptions options;
+    options.workpieceFrame = frame;
     const bool lathe = machine.kind == machine::MachineKind::Lathe;
     options.machine = lathe ? graphics::StockMachine::Lathe : graphics::StockMachine::Mill;
     options.deriveStockFromPath = true;
@@ -105,6 +108,12 @@ size_t TestRunProgram::commandAt(double timeS) const {
 
 Vec3 TestRunProgram::toolPositionAt(double timeS) const {
     return placeAt(runPointAt(timeS)).tip;
+}
+
+Vec3 TestRunProgram::toolAxisAt(double timeS) const {
+    if (!toolpath || toolpath->pointCount() == 0) return Vec3::UnitZ();
+    const size_t reached = placeAt(runPointAt(timeS)).pointsDone;
+    return toolpath->toolAxisAt(std::min(reached, toolpath->pointCount() - 1));
 }
 
 RunPoint TestRunProgram::runPointAt(double timeS) const {
@@ -191,7 +200,10 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     request.presetInMachine = input.presetInMachine;
     request.startPosition = input.startPosition;
     task::LoadedProgram program = task::loadProgram(input.machine, request);
-    out.stockOptions = stockOptionsFor(input.machine, program.tools.get());
+    // A machine with rotary tables: the path and the stock on the part the tables turn.
+    const std::optional<machine::WorkpieceFrame> frame = machine::WorkpieceFrame::of(
+        input.machine, program.streamOrigin.value_or(input.presetInMachine));
+    out.stockOptions = stockOptionsFor(input.machine, program.tools.get(), frame);
     out.diagnostics = program.diagnostics();
     const size_t checkDiagnostics =
         program.interpreter ? program.interpreter->diagnostics().size() : 0;
@@ -199,7 +211,9 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
         program.ready ? std::move(program.interpreter) : nullptr;
     std::unique_ptr<task::MachiningClock> clock =
         input.clock ? input.clock(input.machine) : nullptr;
-    Recorder recorder(out, clock.get());
+    graphics::ToolpathOptions toolpathOptions;
+    toolpathOptions.workpieceFrame = frame;
+    Recorder recorder(out, clock.get(), std::move(toolpathOptions));
     std::unique_ptr<task::MoveCheck> check;
     if (interpreter && input.checkMoves) {
         check = input.checkMoves(program.streamOrigin.value_or(input.presetInMachine));

@@ -88,6 +88,8 @@ struct TestRunProgram {
     size_t commandAt(double timeS) const;
     // The tool tip at a playback time, interpolated along the drawn toolpath.
     Vec3 toolPositionAt(double timeS) const;
+    // The tool's direction on the workpiece there (+Z unless a rotary table tilts it).
+    Vec3 toolAxisAt(double timeS) const;
     RunPoint runPointAt(double timeS) const;
     // Machining time at a run point (the whole time past the last command).
     double timeAt(const RunPoint& point) const;

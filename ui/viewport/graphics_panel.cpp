@@ -216,7 +216,7 @@ void GraphicsPanel::onProgress() {
         m_scene->setTool(glyph);
     }
     m_shownTool = tool;
-    m_scene->setToolPosition(m_playback->toolPosition());
+    m_scene->setToolPosition(m_playback->toolPosition(), m_playback->toolAxis());
     const TestRunController::ExecutedPart executed = m_playback->executedPart();
     m_scene->setExecutedPath(executed.fromPoint, executed.reached.pointsDone, executed.reached.tip);
     if (m_viewport != nullptr) m_viewport->render();

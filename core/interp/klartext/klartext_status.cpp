@@ -1,4 +1,8 @@
 // The state the HMI status tabs show, copied out of the Klartext interpreter.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "core/cycles/cycle_registry.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 
@@ -40,6 +44,17 @@ void addParameters(const QParameters& q, interp::ProgramStatus& status) {
             status.parameters.push_back(std::move(p));
         }
     }
+}
+
+// SPA, SPB, SPC of a tilt R = Rz(SPC) Ry(SPB) Rx(SPA) (PLANE SPATIAL's order); SPA 0 where SPB
+// is +-90 and only SPC - SPA or SPC + SPA is defined.
+std::array<double, 3> spatialAnglesOf(const Eigen::Matrix3d& r) {
+    constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+    const double b = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
+    if (std::abs(r(2, 0)) > 1.0 - 1e-12)
+        return {0.0, b * kDegPerRad, std::atan2(-r(0, 1), r(1, 1)) * kDegPerRad};
+    return {std::atan2(r(2, 1), r(2, 2)) * kDegPerRad, b * kDegPerRad,
+            std::atan2(r(1, 0), r(0, 0)) * kDegPerRad};
 }
 
 }  // namespace
@@ -89,6 +104,12 @@ interp::ProgramStatus KlartextInterpreter::programStatus() const {
         const bool linear = cycles::isLinearAxis(static_cast<Axis>(i));
         t.scale[static_cast<size_t>(i)] =
             linear ? m_frame.scale() * m_frame.axisScale()[static_cast<size_t>(i)] : 1.0;
+    }
+    if (m_tilt.active) {
+        interp::ProgramStatus::Transformations::WorkingPlane plane;
+        plane.spatialDeg = spatialAnglesOf(m_tilt.rotation);
+        plane.positionMm = {m_programmed[Axis::X], m_programmed[Axis::Y], m_programmed[Axis::Z]};
+        t.workingPlane = plane;
     }
     addParameters(m_q, status);
     return status;

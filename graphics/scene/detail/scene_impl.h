@@ -60,6 +60,9 @@ struct Scene::Impl {
     vtkNew<vtkActor> stockActor;
     vtkNew<vtkPolyDataMapper> toolMapper;
     vtkNew<vtkActor> toolActor;
+    vtkNew<vtkPolyDataMapper> toolAxesMapper;
+    vtkNew<vtkActor> toolAxesActor;  // the tool's direction along tilted moves
+    size_t toolAxisLines = 0;
     vtkNew<vtkPolyDataMapper> highlightMapper;
     vtkNew<vtkActor> highlightActor;
     ExecutedPath executed;

@@ -99,6 +99,23 @@ TEST(StatusTabs, ProgramToolAndTransformationsInMillimetres) {
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Scaling"), "0.5000");
 }
 
+// Untilted: no working-plane rows; tilted: its angles and the tool in its coordinates.
+TEST(StatusTabs, TiltedWorkingPlaneShowsItsAnglesAndPosition) {
+    test::testApp();
+    StatusTabs tabs;
+    Status s = millStatus();
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane"), "");
+    s.transformations.workingPlane =
+        interp::ProgramStatus::Transformations::WorkingPlane{{0.0, 90.0, -15.5}, {10.0, 5.0, 12.0}};
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane"),
+              QString("SPA 0.000°  SPB 90.000°  SPC -15.500°"));
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane X"), "10.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane Y"), "5.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane Z"), "12.000 mm");
+}
+
 TEST(StatusTabs, InchProgramsShowInches) {
     test::testApp();
     StatusTabs tabs;

@@ -101,6 +101,31 @@ TEST_F(PlaneTest, EveryFormDescribesTheSamePlane) {
     }
 }
 
+// The status shows the tilt as spatial angles and the tool in the tilted plane's coordinates
+// (the program's), here the point the program went to; after PLANE RESET none.
+TEST_F(PlaneTest, StatusShowsTheWorkingPlane) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "2 PLANE SPATIAL SPA+10 SPB+30 SPC+20 STAY\n"
+                  "3 L X+10 Y+5 Z+2 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const auto plane = k->programStatus().transformations.workingPlane;
+    ASSERT_TRUE(plane.has_value());
+    EXPECT_NEAR(plane->spatialDeg[0], 10.0, 1e-9);
+    EXPECT_NEAR(plane->spatialDeg[1], 30.0, 1e-9);
+    EXPECT_NEAR(plane->spatialDeg[2], 20.0, 1e-9);
+    EXPECT_NEAR(plane->positionMm[0], 10.0, 1e-9);
+    EXPECT_NEAR(plane->positionMm[1], 5.0, 1e-9);
+    EXPECT_NEAR(plane->positionMm[2], 2.0, 1e-9);
+    ASSERT_EQ(run("mill5",
+                  "1 PLANE SPATIAL SPA+0 SPB+90 SPC+0 STAY\n"
+                  "2 PLANE RESET STAY\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_FALSE(k->programStatus().transformations.workingPlane.has_value());
+}
+
 // SEQ- takes B-30 with C180; the table's turn then leaves the tilted axes turned by 180 about Z
 // (Ry(30) Rz(-180) Ry(30) = Rz(180)): (10, 5) is at (-10, -5).
 TEST_F(PlaneTest, SequenceMinusTakesTheOtherSolution) {
