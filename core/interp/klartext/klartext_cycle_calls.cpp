@@ -77,25 +77,26 @@ public:
 
 private:
     bool ok() const { return m.m_status != interp::RunStatus::Failed; }
-    double feedValue(const cycles::Feed& feed) {
-        canon::FeedMode mode = feed.kind == cycles::Feed::Kind::PerRevolution
-                                   ? canon::FeedMode::PerRevolution
-                                   : canon::FeedMode::PerMinute;
-        if (mode != m.m_feedMode) {
-            m.m_feedMode = mode;
-            m.emit(canon::SetFeedMode{mode});
-        }
-        if (feed.isRapid()) {
-            // The stream has no rapid arcs: they run at the machine's rapid speed.
-            const double perS =
-                m.m_settings.machine ? m.m_settings.machine->rapidVelocityMmPerS : 250.0;
-            return perS * 60.0;
-        }
-        return feed.value;
-    }
+    double feedValue(const cycles::Feed& feed) { return m.cycleFeed(feed); }
 
     KlartextInterpreter& m;
 };
+
+double KlartextInterpreter::cycleFeed(const cycles::Feed& feed) {
+    canon::FeedMode mode = feed.kind == cycles::Feed::Kind::PerRevolution
+                               ? canon::FeedMode::PerRevolution
+                               : canon::FeedMode::PerMinute;
+    if (mode != m_feedMode) {
+        m_feedMode = mode;
+        emit(canon::SetFeedMode{mode});
+    }
+    if (feed.isRapid()) {
+        // The stream has no rapid arcs: they run at the machine's rapid speed.
+        const double perS = m_settings.machine ? m_settings.machine->rapidVelocityMmPerS : 250.0;
+        return perS * 60.0;
+    }
+    return feed.value;
+}
 
 Vec3 KlartextInterpreter::toLocal(const Pose& pose) const {
     const PlaneAxes a = planeAxes(workingPlane());
@@ -190,6 +191,7 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
             return tool;
         };
     }
+    if (d.group == cycles::CycleGroup::CylinderSurface) return runCylinderCycle(values, ctx);
     const canon::FeedMode mode = m_feedMode;
     CycleOutput out(*this);
     cycles::CyclePath path(out, ctx.start);

@@ -180,6 +180,7 @@ private:
     void executeBlkForm(const BlkForm& blk);
     void executeMOnly(const CommonWords& words);
     void applyMFunctions(const MWords& m, bool atStart);
+    void reduceRotaryDisplay();  // M94
     bool hasM(const MWords& m, int number) const;
     void submitMove(const ContourElement& element, bool rapid, double feed,
                     const CommonWords& words);
@@ -304,6 +305,11 @@ private:
     void callCyclePosition(const CycleCall& call);
     void runPatternCycle(const cycles::CycleDescriptor& pattern, const cycles::CycleValues& values);
     bool runMachiningCycle(const cycles::CycleValues& values);
+    // The feed of a cycle's move (switching the feed mode when it changes).
+    double cycleFeed(const cycles::Feed& feed);
+    // The cylinder-surface cycles 27, 28, 29, 39 on the rotary table (klartext_cylinder.cpp).
+    class CylinderOutput;
+    bool runCylinderCycle(const cycles::CycleValues& values, cycles::CycleContext& ctx);
     cycles::CycleValues callValues() const;
     void moveProgrammed(const Pose& target, bool rapid, double feed);
     void afterPositioning(const MWords& m);
