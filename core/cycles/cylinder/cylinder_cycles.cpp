@@ -108,7 +108,7 @@ std::optional<CycleError> readSetup(int cycle, const CycleValues& v, const Cycle
 std::optional<CycleError> needsOpenLine(int cycle, const CycleContext& ctx) {
     if (!ctx.train.closed) return std::nullopt;
     return contourError(cycle, KERF_TR_NOOP("cycle {1}: the centre line must be an open "
-                                            "contour (it ends where it starts)"));
+                                            "contour, not end where it starts"));
 }
 
 // From above, over `p` at the set-up clearance.
