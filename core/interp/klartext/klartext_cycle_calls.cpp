@@ -23,9 +23,9 @@ cycles::DateTime localNow() {
 
 // Feeds the moves of an expanded cycle into the interpreter's path pipeline, where the
 // coordinate transformations apply to them as to programmed moves.
-class KlartextInterpreter::CycleOutput final : public cycles::CycleEmitter {
+class KlartextInterpreter::CycleOutput final : public CycleFunctions {
 public:
-    explicit CycleOutput(KlartextInterpreter& owner) : m(owner) {}
+    explicit CycleOutput(KlartextInterpreter& owner) : CycleFunctions(owner) {}
 
     void rapid(const Vec3& target) override {
         if (ok()) m.moveProgrammed(m.fromLocal(target), true, m.m_feed);
@@ -57,30 +57,31 @@ public:
         m.m_path.reset(work);
         m.m_programmed = end;
     }
-    void dwell(double seconds) override {
-        if (ok()) m.emit(canon::Dwell{seconds});
-    }
-    void spindle(canon::SpindleDirection direction, double rpm) override {
-        if (ok()) m.emit(canon::SpindleControl{direction, rpm});
-    }
-    void orientSpindle(double angleDeg) override {
-        if (ok()) m.emit(canon::SpindleOrient{angleDeg});
-    }
-    void miscFunction(int number) override {
-        if (!ok()) return;
-        MWords words;
-        words.list[0].number = number;
-        words.count = 1;
-        m.applyMFunctions(words, true);
-        m.applyMFunctions(words, false);
-    }
 
 private:
-    bool ok() const { return m.m_status != interp::RunStatus::Failed; }
     double feedValue(const cycles::Feed& feed) { return m.cycleFeed(feed); }
-
-    KlartextInterpreter& m;
 };
+
+void KlartextInterpreter::CycleFunctions::dwell(double seconds) {
+    if (ok()) m.emit(canon::Dwell{seconds});
+}
+
+void KlartextInterpreter::CycleFunctions::spindle(canon::SpindleDirection direction, double rpm) {
+    if (ok()) m.emit(canon::SpindleControl{direction, rpm});
+}
+
+void KlartextInterpreter::CycleFunctions::orientSpindle(double angleDeg) {
+    if (ok()) m.emit(canon::SpindleOrient{angleDeg});
+}
+
+void KlartextInterpreter::CycleFunctions::miscFunction(int number) {
+    if (!ok()) return;
+    MWords words;
+    words.list[0].number = number;
+    words.count = 1;
+    m.applyMFunctions(words, true);
+    m.applyMFunctions(words, false);
+}
 
 double KlartextInterpreter::cycleFeed(const cycles::Feed& feed) {
     canon::FeedMode mode = feed.kind == cycles::Feed::Kind::PerRevolution
@@ -191,10 +192,14 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
             return tool;
         };
     }
-    if (d.group == cycles::CycleGroup::CylinderSurface) return runCylinderCycle(values, ctx);
+    std::unique_ptr<cycles::CycleEmitter> cylinder;
+    if (d.group == cycles::CycleGroup::CylinderSurface) {
+        cylinder = cylinderOutput(values, ctx);
+        if (!cylinder) return false;
+    }
     const canon::FeedMode mode = m_feedMode;
     CycleOutput out(*this);
-    cycles::CyclePath path(out, ctx.start);
+    cycles::CyclePath path(cylinder ? *cylinder : out, ctx.start);
     auto error = d.expand(values, ctx, path);
     if (!error && path.limitReached()) error = cycles::tooManyMoves(d.number);
     m_cycleMovesInBlock += path.moves();

@@ -8,7 +8,6 @@
 #include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/cycles/cylinder/cylinder_surface.h"
-#include "core/cycles/drilling/hole_levels.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 
 namespace kerf::klartext {
@@ -20,20 +19,18 @@ constexpr int kMaxChordsPerArc = 100000;
 
 }  // namespace
 
-class KlartextInterpreter::CylinderOutput final : public cycles::CycleEmitter {
+class KlartextInterpreter::CylinderOutput final : public CycleFunctions {
 public:
     CylinderOutput(KlartextInterpreter& owner, const cycles::cylinder::CylinderPlacement& placement,
                    const cycles::cylinder::Chain* aligned, double toleranceMm, Axis table,
                    const Vec3& start)
-        : m(owner),
+        : CycleFunctions(owner),
           m_placement(placement),
           m_aligned(aligned),
           m_tolerance(toleranceMm),
           m_table(table),
           m_local(start),
           m_at(owner.m_frame.toWorkpiece(owner.m_programmed)) {}
-
-    const Pose& position() const { return m_at; }
 
     void rapid(const Vec3& target) override { go(target, true, 0.0); }
     void line(const Vec3& target, const cycles::Feed& feed) override {
@@ -63,22 +60,8 @@ public:
     void threadMove(const Vec3&, double, double) override {
         m.fail("cycle", KERF_TR_NOOP("a thread cannot be cut on the development of a cylinder"));
     }
-    void dwell(double seconds) override {
-        if (ok()) m.emit(canon::Dwell{seconds});
-    }
-    void spindle(canon::SpindleDirection direction, double rpm) override {
-        if (ok()) m.emit(canon::SpindleControl{direction, rpm});
-    }
-    void orientSpindle(double angleDeg) override {
-        if (ok()) m.emit(canon::SpindleOrient{angleDeg});
-    }
-    void miscFunction(int number) override {
-        if (ok()) m.emit(canon::MachineFunction{number});
-    }
 
 private:
-    bool ok() const { return m.m_status != interp::RunStatus::Failed; }
-
     void go(const Vec3& local, bool rapid, double feed) {
         if (!ok()) return;
         const cycles::cylinder::CylinderPose pose =
@@ -102,9 +85,9 @@ private:
         if (!m.rotaryWithinLimits(m.m_frame.toProgram(target))) return;
         m.emitStreamMove(m_at, target, rapid, rapid ? m.m_feed : feed);
         m_at = target;
+        m.m_programmed = m.m_frame.toProgram(m_at);
     }
 
-    KlartextInterpreter& m;
     cycles::cylinder::CylinderPlacement m_placement;
     const cycles::cylinder::Chain* m_aligned;
     double m_tolerance;
@@ -114,8 +97,8 @@ private:
     std::optional<double> m_turns;
 };
 
-bool KlartextInterpreter::runCylinderCycle(const cycles::CycleValues& values,
-                                           cycles::CycleContext& ctx) {
+std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
+    const cycles::CycleValues& values, cycles::CycleContext& ctx) {
     const cycles::CycleDescriptor& d = *m_cycle->descriptor;
     const std::string number = std::to_string(d.number);
     // Spec §7: a rotary table carries the cylinder, the tool perpendicular to its axis.
@@ -124,12 +107,12 @@ bool KlartextInterpreter::runCylinderCycle(const cycles::CycleValues& values,
              KERF_TR_NOOP("cycle {1} needs a rotary table described in the machine file "
                           "([kinematics], docs/machine-config.md)"),
              {number});
-        return false;
+        return nullptr;
     }
     if (m_tcpm) {
         fail("cycle", KERF_TR_NOOP("cycle {1} cannot run with M128/FUNCTION TCPM active"),
              {number});
-        return false;
+        return nullptr;
     }
     const machine::RotaryAngles angles = currentTableAngles();
     cycles::cylinder::CylinderPlacement placement;
@@ -140,7 +123,7 @@ bool KlartextInterpreter::runCylinderCycle(const cycles::CycleValues& values,
              KERF_TR_NOOP("cycle {1}: the tool axis must be perpendicular to the axis of rotary "
                           "table {2} (tilt the table first, e.g. with PLANE)"),
              {number, std::string(1, m_kinematics->innerTable())});
-        return false;
+        return nullptr;
     }
     placement.axis -= placement.axis.dot(placement.tool) * placement.tool;
     placement.axis.normalize();
@@ -153,7 +136,7 @@ bool KlartextInterpreter::runCylinderCycle(const cycles::CycleValues& values,
     placement.origin = pivot + placement.axis * placement.axis.dot(presetNow - pivot) -
                        m_settings.presetInMachine.xyz();
 
-    if (!captureTrain(d.number, ctx.train)) return false;
+    if (!captureTrain(d.number, ctx.train)) return nullptr;
     const double q21 = d.number == 28 ? values.number(21) : 0.0;
     const double tolerance = q21 > 0.0 ? std::min(q21, kChordToleranceMm) : kChordToleranceMm;
     if (placement.radiusMm > 0.0) {
@@ -168,26 +151,9 @@ bool KlartextInterpreter::runCylinderCycle(const cycles::CycleValues& values,
         Vec3(std::remainder(angle, 360.0) * std::numbers::pi / 180.0 * placement.radiusMm,
              fromAxis.dot(placement.axis), fromAxis.dot(placement.tool) - placement.radiusMm);
 
-    const canon::FeedMode mode = m_feedMode;
     const bool aligned = d.number != 27;
-    CylinderOutput out(*this, placement, aligned ? &ctx.train.segments : nullptr, tolerance, table,
-                       ctx.start);
-    cycles::CyclePath path(out, ctx.start);
-    auto error = d.expand(values, ctx, path);
-    if (!error && path.limitReached()) error = cycles::tooManyMoves(d.number);
-    m_cycleMovesInBlock += path.moves();
-    if (m_feedMode != mode && m_status != interp::RunStatus::Failed) {
-        m_feedMode = mode;
-        emit(canon::SetFeedMode{mode});
-    }
-    m_lastTangent.reset();
-    if (error) {
-        failCycle(*error);
-        return false;
-    }
-    if (m_status == interp::RunStatus::Failed) return false;
-    m_programmed = m_frame.toProgram(out.position());
-    return true;
+    return std::make_unique<CylinderOutput>(
+        *this, placement, aligned ? &ctx.train.segments : nullptr, tolerance, table, ctx.start);
 }
 
 }  // namespace kerf::klartext

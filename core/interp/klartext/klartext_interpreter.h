@@ -94,6 +94,20 @@ public:
 
 private:
     class Environment;
+    // What every cycle output does besides moving: dwell, spindle, M functions
+    // (klartext_cycle_calls.cpp); CycleOutput and CylinderOutput add the moves.
+    class CycleFunctions : public cycles::CycleEmitter {
+    public:
+        explicit CycleFunctions(KlartextInterpreter& owner) : m(owner) {}
+        void dwell(double seconds) override;
+        void spindle(canon::SpindleDirection direction, double rpm) override;
+        void orientSpindle(double angleDeg) override;
+        void miscFunction(int number) override;
+
+    protected:
+        bool ok() const { return m.m_status != interp::RunStatus::Failed; }
+        KlartextInterpreter& m;
+    };
     class CycleOutput;
     class ProbeAdapter;
     class ToolProbeAdapter;
@@ -307,9 +321,13 @@ private:
     bool runMachiningCycle(const cycles::CycleValues& values);
     // The feed of a cycle's move (switching the feed mode when it changes).
     double cycleFeed(const cycles::Feed& feed);
-    // The cylinder-surface cycles 27, 28, 29, 39 on the rotary table (klartext_cylinder.cpp).
+    // The cylinder-surface cycles 27, 28, 29, 39 on the rotary table (klartext_cylinder.cpp):
+    // checks the machine, reads the contour in mm into ctx.train, sets ctx.start on the
+    // development and returns where the cycle's moves go; nothing (and the run failed) when the
+    // cycle cannot run here.
     class CylinderOutput;
-    bool runCylinderCycle(const cycles::CycleValues& values, cycles::CycleContext& ctx);
+    std::unique_ptr<cycles::CycleEmitter> cylinderOutput(const cycles::CycleValues& values,
+                                                         cycles::CycleContext& ctx);
     cycles::CycleValues callValues() const;
     void moveProgrammed(const Pose& target, bool rapid, double feed);
     void afterPositioning(const MWords& m);
