@@ -7954,6 +7954,66 @@ wählen</translation>
         <translation>Tastsystemzyklus {1}: die TT-Kalibrierung kann nicht geschrieben werden: {2}</translation>
     </message>
     <message>
+        <source>Cylinder radius</source>
+        <translation>Zylinderradius</translation>
+    </message>
+    <message>
+        <source>Rotary-axis coordinates in the subprogram: 0 degrees, 1 mm/inch</source>
+        <translation>Rundachs-Koordinaten im Unterprogramm: 0 Grad, 1 mm/inch</translation>
+    </message>
+    <message>
+        <source>Ridge width</source>
+        <translation>Stegbreite</translation>
+    </message>
+    <message>
+        <source>Tolerance of the slot walls (0: no re-machining)</source>
+        <translation>Toleranz der Nutwände (0: keine Nachbearbeitung)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the cylinder radius Q16 must be greater than 0</source>
+        <translation>Zyklus {1}: der Zylinderradius Q16 muss größer als 0 sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: program the contour subprogram with radius compensation RL or RR</source>
+        <translation>Zyklus {1}: das Konturunterprogramm mit Radiuskorrektur RL oder RR programmieren</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the centre line must be an open contour, not end where it starts</source>
+        <translation>Zyklus {1}: die Mittellinie muss eine offene Kontur sein und darf nicht an ihrem Anfang enden</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE</source>
+        <translation>ZYLINDER-MANTEL</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE SLOT</source>
+        <translation>ZYLINDER-MANTEL NUTENFRAESEN</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE RIDGE</source>
+        <translation>ZYLINDER-MANTEL STEGFRAESEN</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE CONTOUR</source>
+        <translation>ZYLINDER-MANTEL KONTUR</translation>
+    </message>
+    <message>
+        <source>a thread cannot be cut on the development of a cylinder</source>
+        <translation>auf der Abwicklung eines Zylinders kann kein Gewinde geschnitten werden</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a rotary table described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>Zyklus {1} braucht einen in der Maschinendatei beschriebenen Rundtisch ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot run with M128/FUNCTION TCPM active</source>
+        <translation>Zyklus {1} kann nicht mit aktivem M128/FUNCTION TCPM laufen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
+        <translation>Zyklus {1}: die Werkzeugachse muss senkrecht zur Achse des Rundtischs {2} stehen (zuerst den Tisch schwenken, z. B. mit PLANE)</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; ist eine Ausgabe dieses Laufs und kann nicht gelesen werden</translation>
     </message>

@@ -7954,6 +7954,66 @@ solución</translation>
         <translation>ciclo de palpación {1}: no se puede escribir la calibración del TT: {2}</translation>
     </message>
     <message>
+        <source>Cylinder radius</source>
+        <translation>Radio del cilindro</translation>
+    </message>
+    <message>
+        <source>Rotary-axis coordinates in the subprogram: 0 degrees, 1 mm/inch</source>
+        <translation>Coordenadas del eje giratorio en el subprograma: 0 grados, 1 mm/pulgada</translation>
+    </message>
+    <message>
+        <source>Ridge width</source>
+        <translation>Anchura del alma</translation>
+    </message>
+    <message>
+        <source>Tolerance of the slot walls (0: no re-machining)</source>
+        <translation>Tolerancia de las paredes de la ranura (0: sin remecanizado)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the cylinder radius Q16 must be greater than 0</source>
+        <translation>ciclo {1}: el radio del cilindro Q16 debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: program the contour subprogram with radius compensation RL or RR</source>
+        <translation>ciclo {1}: programe el subprograma de contorno con corrección de radio RL o RR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the centre line must be an open contour, not end where it starts</source>
+        <translation>ciclo {1}: la línea central debe ser un contorno abierto, no terminar donde empieza</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE</source>
+        <translation>SUPERFICIE CILÍNDRICA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE SLOT</source>
+        <translation>SUPERFICIE CILÍNDRICA RANURA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE RIDGE</source>
+        <translation>SUPERFICIE CILÍNDRICA ALMA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE CONTOUR</source>
+        <translation>SUPERFICIE CILÍNDRICA CONTORNO</translation>
+    </message>
+    <message>
+        <source>a thread cannot be cut on the development of a cylinder</source>
+        <translation>no se puede cortar una rosca en el desarrollo de un cilindro</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a rotary table described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>el ciclo {1} necesita una mesa giratoria descrita en el fichero de máquina ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot run with M128/FUNCTION TCPM active</source>
+        <translation>el ciclo {1} no puede ejecutarse con M128/FUNCTION TCPM activo</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
+        <translation>ciclo {1}: el eje de la herramienta debe ser perpendicular al eje de la mesa giratoria {2} (incline antes la mesa, p. ej. con PLANE)</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; es una salida de esta ejecución y no se puede leer</translation>
     </message>

@@ -7957,6 +7957,66 @@ rozwiązanie</translation>
         <translation>cykl sondy {1}: nie można zapisać kalibracji TT: {2}</translation>
     </message>
     <message>
+        <source>Cylinder radius</source>
+        <translation>Promień cylindra</translation>
+    </message>
+    <message>
+        <source>Rotary-axis coordinates in the subprogram: 0 degrees, 1 mm/inch</source>
+        <translation>Współrzędne osi obrotowej w podprogramie: 0 stopnie, 1 mm/cal</translation>
+    </message>
+    <message>
+        <source>Ridge width</source>
+        <translation>Szerokość mostka</translation>
+    </message>
+    <message>
+        <source>Tolerance of the slot walls (0: no re-machining)</source>
+        <translation>Tolerancja ścianek rowka (0: bez obróbki dodatkowej)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the cylinder radius Q16 must be greater than 0</source>
+        <translation>cykl {1}: promień cylindra Q16 musi być większy od 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: program the contour subprogram with radius compensation RL or RR</source>
+        <translation>cykl {1}: zaprogramuj podprogram konturu z korekcją promienia RL lub RR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the centre line must be an open contour, not end where it starts</source>
+        <translation>cykl {1}: linia środkowa musi być konturem otwartym, nie może kończyć się w punkcie początkowym</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE</source>
+        <translation>POWIERZCHNIA CYLINDRA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE SLOT</source>
+        <translation>POWIERZCHNIA CYLINDRA ROWEK</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE RIDGE</source>
+        <translation>POWIERZCHNIA CYLINDRA MOSTEK</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE CONTOUR</source>
+        <translation>POWIERZCHNIA CYLINDRA KONTUR</translation>
+    </message>
+    <message>
+        <source>a thread cannot be cut on the development of a cylinder</source>
+        <translation>na rozwinięciu cylindra nie można naciąć gwintu</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a rotary table described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>cykl {1} wymaga stołu obrotowego opisanego w pliku maszyny ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot run with M128/FUNCTION TCPM active</source>
+        <translation>cykl {1} nie może działać przy aktywnym M128/FUNCTION TCPM</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
+        <translation>cykl {1}: oś narzędzia musi być prostopadła do osi stołu obrotowego {2} (najpierw nachyl stół, np. za pomocą PLANE)</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; jest wyjściem tego przebiegu i nie może być odczytany</translation>
     </message>

@@ -7954,6 +7954,66 @@ solução</translation>
         <translation>ciclo de apalpação {1}: não é possível escrever a calibração do TT: {2}</translation>
     </message>
     <message>
+        <source>Cylinder radius</source>
+        <translation>Raio do cilindro</translation>
+    </message>
+    <message>
+        <source>Rotary-axis coordinates in the subprogram: 0 degrees, 1 mm/inch</source>
+        <translation>Coordenadas do eixo rotativo no subprograma: 0 graus, 1 mm/polegada</translation>
+    </message>
+    <message>
+        <source>Ridge width</source>
+        <translation>Largura da nervura</translation>
+    </message>
+    <message>
+        <source>Tolerance of the slot walls (0: no re-machining)</source>
+        <translation>Tolerância das paredes da ranhura (0: sem pós-maquinagem)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the cylinder radius Q16 must be greater than 0</source>
+        <translation>ciclo {1}: o raio do cilindro Q16 tem de ser maior que 0</translation>
+    </message>
+    <message>
+        <source>cycle {1}: program the contour subprogram with radius compensation RL or RR</source>
+        <translation>ciclo {1}: programe o subprograma de contorno com correção de raio RL ou RR</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the centre line must be an open contour, not end where it starts</source>
+        <translation>ciclo {1}: a linha central tem de ser um contorno aberto, não pode terminar onde começa</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE</source>
+        <translation>SUPERFÍCIE CILÍNDRICA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE SLOT</source>
+        <translation>SUPERFÍCIE CILÍNDRICA RANHURA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE RIDGE</source>
+        <translation>SUPERFÍCIE CILÍNDRICA NERVURA</translation>
+    </message>
+    <message>
+        <source>CYLINDER SURFACE CONTOUR</source>
+        <translation>SUPERFÍCIE CILÍNDRICA CONTORNO</translation>
+    </message>
+    <message>
+        <source>a thread cannot be cut on the development of a cylinder</source>
+        <translation>não é possível cortar uma rosca no desenvolvimento de um cilindro</translation>
+    </message>
+    <message>
+        <source>cycle {1} needs a rotary table described in the machine file ([kinematics], docs/machine-config.md)</source>
+        <translation>o ciclo {1} precisa de uma mesa rotativa descrita no ficheiro da máquina ([kinematics], docs/machine-config.md)</translation>
+    </message>
+    <message>
+        <source>cycle {1} cannot run with M128/FUNCTION TCPM active</source>
+        <translation>o ciclo {1} não pode ser executado com M128/FUNCTION TCPM ativo</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
+        <translation>ciclo {1}: o eixo da ferramenta tem de ser perpendicular ao eixo da mesa rotativa {2} (incline primeiro a mesa, p. ex. com PLANE)</translation>
+    </message>
+    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; é uma saída desta execução e não pode ser lido</translation>
     </message>

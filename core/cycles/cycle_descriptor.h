@@ -21,7 +21,8 @@ enum class CycleGroup : uint8_t {
     Transformation,
     Special,
     PocketsStudsSlots,
-    Contours  // SL cycles 14, 20-24
+    Contours,        // SL cycles 14, 20-25, 270, 275, 276
+    CylinderSurface  // 27, 28, 29, 39: on the development of a cylinder (software option 1)
 };
 
 struct PatternPlan;

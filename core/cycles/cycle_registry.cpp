@@ -13,14 +13,14 @@ namespace kerf::cycles {
 
 namespace {
 
-const std::array<const CycleDescriptor*, 51> kCycles = {
+const std::array<const CycleDescriptor*, 55> kCycles = {
     &kCycle7,   &kCycle8,   &kCycle9,   &kCycle10,  &kCycle11,  &kCycle12,  &kCycle13,  &kCycle14,
     &kCycle18,  &kCycle19,  &kCycle20,  &kCycle21,  &kCycle22,  &kCycle23,  &kCycle24,  &kCycle26,
     &kCycle32,  &kCycle200, &kCycle201, &kCycle202, &kCycle203, &kCycle204, &kCycle205, &kCycle206,
     &kCycle207, &kCycle208, &kCycle209, &kCycle220, &kCycle221, &kCycle225, &kCycle232, &kCycle240,
     &kCycle241, &kCycle247, &kCycle251, &kCycle252, &kCycle253, &kCycle254, &kCycle256, &kCycle257,
     &kCycle258, &kCycle262, &kCycle263, &kCycle264, &kCycle265, &kCycle267, &kCycle25,  &kCycle270,
-    &kCycle275, &kCycle233, &kCycle276};
+    &kCycle275, &kCycle233, &kCycle276, &kCycle27,  &kCycle28,  &kCycle29,  &kCycle39};
 
 }  // namespace
 

@@ -77,6 +77,11 @@ Vec3 TableKinematics::toolDirection(const RotaryAngles& angles) const {
     return workpieceToMachine(angles).transpose() * Vec3::UnitZ();
 }
 
+Vec3 TableKinematics::innerTableAxis(const RotaryAngles& angles) const {
+    if (!m_two) return unitOf(m_primary);
+    return principalRotation(m_primary, -angles.primaryDeg) * unitOf(m_secondary);
+}
+
 Vec3 TableKinematics::axesOf(const Vec3& workpiece, const RotaryAngles& angles,
                              const Vec3& presetInMachine) const {
     // machine = M (preset + p - pivot) + pivot; the axes count from the preset.

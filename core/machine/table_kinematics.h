@@ -48,6 +48,10 @@ public:
     char primary() const { return m_primary; }
     char secondary() const { return m_secondary; }  // table-table only
     const Vec3& pivot() const { return m_pivot; }
+    // The table that carries the workpiece (the secondary of a table-table) and, with the
+    // tables at `angles`, the machine direction of its axis; the axis runs through the pivot.
+    char innerTable() const { return m_two ? m_secondary : m_primary; }
+    Vec3 innerTableAxis(const RotaryAngles& angles) const;
 
     // Takes vectors fixed to the workpiece into machine directions.
     Rotation workpieceToMachine(const RotaryAngles& angles) const;

@@ -38,6 +38,7 @@ CatalogueGroup catalogueGroup(const cycles::CycleDescriptor& cycle) {
             return CatalogueGroup::SpecialCycles;
         case CycleGroup::PocketsStudsSlots:
         case CycleGroup::Contours:  // SL cycles: no group of their own in the catalogue yet
+        case CycleGroup::CylinderSurface:
             return CatalogueGroup::PocketsStudsSlots;
     }
     return CatalogueGroup::SpecialCycles;

@@ -325,6 +325,8 @@ HelpDrawing helpDrawing(const cycles::CycleDescriptor& cycle) {
             return specialSymbols(cycle.number);
         case CycleGroup::PocketsStudsSlots:
             return pocketPlan();
+        case CycleGroup::CylinderSurface:
+            return contourSection();
         case CycleGroup::Contours:
             return cycle.number == 270 ? contourTrainApproach() : contourSection();
     }

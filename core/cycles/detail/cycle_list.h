@@ -16,5 +16,6 @@ extern const CycleDescriptor kCycle200, kCycle201, kCycle202, kCycle203, kCycle2
 extern const CycleDescriptor kCycle25, kCycle270, kCycle275,
     kCycle276;                           // contour train, trochoidal slot
 extern const CycleDescriptor kCycle233;  // face milling with side walls
+extern const CycleDescriptor kCycle27, kCycle28, kCycle29, kCycle39;  // cylinder surface
 
 }  // namespace kerf::cycles

@@ -49,11 +49,15 @@ Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
     for (size_t k = 0; k < p.values.size(); ++k)
         p.values[k] += m_preset.values[k];
     if (m_tabled) p.setXyz(m_table * p.xyz() + m_tableOffset);
+    for (size_t k = 0; k < p.values.size(); ++k)
+        p.values[k] += m_turns.values[k];
     return p;
 }
 
 Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
     Pose p = workpiece;
+    for (size_t k = 0; k < p.values.size(); ++k)
+        p.values[k] -= m_turns.values[k];
     if (m_tabled) p.setXyz(m_table.transpose() * (p.xyz() - m_tableOffset));
     for (size_t k = 0; k < p.values.size(); ++k)
         p.values[k] -= m_preset.values[k];
@@ -118,7 +122,7 @@ bool CoordinateFrame::identity() const {
     if (m_mirror != 0 || m_rotationDeg != 0.0 || m_scale != 1.0) return false;
     for (size_t k = 0; k < static_cast<size_t>(kAxisCount); ++k) {
         if (m_shift.values[k] != 0.0 || m_preset.values[k] != 0.0 || m_axisScale[k] != 1.0 ||
-            m_pointShift.values[k] != 0.0) {
+            m_pointShift.values[k] != 0.0 || m_turns.values[k] != 0.0) {
             return false;
         }
     }
@@ -149,6 +153,7 @@ void CoordinateFrame::setPreset(const Pose& offset) {
     *this = CoordinateFrame();
     m_preset = offset;
     m_pointShift = kept.m_pointShift;
+    m_turns = kept.m_turns;
     m_tilted = kept.m_tilted;
     m_tilt = kept.m_tilt;
     m_tiltOrigin = kept.m_tiltOrigin;

@@ -51,6 +51,10 @@ public:
     const Eigen::Matrix3d& tilt() const { return m_tilt; }
     // The rotary tables stand turned: linear axes = rotation * workpiece + offset.
     void setTable(const Eigen::Matrix3d& rotation, const Vec3& offset);
+    // M94: whole turns taken off a rotary axis's display (program angle = axis angle - turns),
+    // outermost of all, kept through every other transformation.
+    void addTurns(Axis axis, double degrees) { m_turns[axis] += degrees; }
+    const Pose& turns() const { return m_turns; }
 
     const Pose& shift() const { return m_shift; }
     const Pose& preset() const { return m_preset; }
@@ -70,6 +74,7 @@ private:
     Pose m_axisScaleCentre{};
     Pose m_preset{};
     Pose m_pointShift{};
+    Pose m_turns{};
     bool m_tilted = false;
     Eigen::Matrix3d m_tilt = Eigen::Matrix3d::Identity();
     Vec3 m_tiltOrigin = Vec3::Zero();

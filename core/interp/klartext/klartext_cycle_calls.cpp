@@ -23,9 +23,9 @@ cycles::DateTime localNow() {
 
 // Feeds the moves of an expanded cycle into the interpreter's path pipeline, where the
 // coordinate transformations apply to them as to programmed moves.
-class KlartextInterpreter::CycleOutput final : public cycles::CycleEmitter {
+class KlartextInterpreter::CycleOutput final : public CycleFunctions {
 public:
-    explicit CycleOutput(KlartextInterpreter& owner) : m(owner) {}
+    explicit CycleOutput(KlartextInterpreter& owner) : CycleFunctions(owner) {}
 
     void rapid(const Vec3& target) override {
         if (ok()) m.moveProgrammed(m.fromLocal(target), true, m.m_feed);
@@ -57,45 +57,47 @@ public:
         m.m_path.reset(work);
         m.m_programmed = end;
     }
-    void dwell(double seconds) override {
-        if (ok()) m.emit(canon::Dwell{seconds});
-    }
-    void spindle(canon::SpindleDirection direction, double rpm) override {
-        if (ok()) m.emit(canon::SpindleControl{direction, rpm});
-    }
-    void orientSpindle(double angleDeg) override {
-        if (ok()) m.emit(canon::SpindleOrient{angleDeg});
-    }
-    void miscFunction(int number) override {
-        if (!ok()) return;
-        MWords words;
-        words.list[0].number = number;
-        words.count = 1;
-        m.applyMFunctions(words, true);
-        m.applyMFunctions(words, false);
-    }
 
 private:
-    bool ok() const { return m.m_status != interp::RunStatus::Failed; }
-    double feedValue(const cycles::Feed& feed) {
-        canon::FeedMode mode = feed.kind == cycles::Feed::Kind::PerRevolution
-                                   ? canon::FeedMode::PerRevolution
-                                   : canon::FeedMode::PerMinute;
-        if (mode != m.m_feedMode) {
-            m.m_feedMode = mode;
-            m.emit(canon::SetFeedMode{mode});
-        }
-        if (feed.isRapid()) {
-            // The stream has no rapid arcs: they run at the machine's rapid speed.
-            const double perS =
-                m.m_settings.machine ? m.m_settings.machine->rapidVelocityMmPerS : 250.0;
-            return perS * 60.0;
-        }
-        return feed.value;
-    }
-
-    KlartextInterpreter& m;
+    double feedValue(const cycles::Feed& feed) { return m.cycleFeed(feed); }
 };
+
+void KlartextInterpreter::CycleFunctions::dwell(double seconds) {
+    if (ok()) m.emit(canon::Dwell{seconds});
+}
+
+void KlartextInterpreter::CycleFunctions::spindle(canon::SpindleDirection direction, double rpm) {
+    if (ok()) m.emit(canon::SpindleControl{direction, rpm});
+}
+
+void KlartextInterpreter::CycleFunctions::orientSpindle(double angleDeg) {
+    if (ok()) m.emit(canon::SpindleOrient{angleDeg});
+}
+
+void KlartextInterpreter::CycleFunctions::miscFunction(int number) {
+    if (!ok()) return;
+    MWords words;
+    words.list[0].number = number;
+    words.count = 1;
+    m.applyMFunctions(words, true);
+    m.applyMFunctions(words, false);
+}
+
+double KlartextInterpreter::cycleFeed(const cycles::Feed& feed) {
+    canon::FeedMode mode = feed.kind == cycles::Feed::Kind::PerRevolution
+                               ? canon::FeedMode::PerRevolution
+                               : canon::FeedMode::PerMinute;
+    if (mode != m_feedMode) {
+        m_feedMode = mode;
+        emit(canon::SetFeedMode{mode});
+    }
+    if (feed.isRapid()) {
+        // The stream has no rapid arcs: they run at the machine's rapid speed.
+        const double perS = m_settings.machine ? m_settings.machine->rapidVelocityMmPerS : 250.0;
+        return perS * 60.0;
+    }
+    return feed.value;
+}
 
 Vec3 KlartextInterpreter::toLocal(const Pose& pose) const {
     const PlaneAxes a = planeAxes(workingPlane());
@@ -190,9 +192,14 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
             return tool;
         };
     }
+    std::unique_ptr<cycles::CycleEmitter> cylinder;
+    if (d.group == cycles::CycleGroup::CylinderSurface) {
+        cylinder = cylinderOutput(values, ctx);
+        if (!cylinder) return false;
+    }
     const canon::FeedMode mode = m_feedMode;
     CycleOutput out(*this);
-    cycles::CyclePath path(out, ctx.start);
+    cycles::CyclePath path(cylinder ? *cylinder : out, ctx.start);
     auto error = d.expand(values, ctx, path);
     if (!error && path.limitReached()) error = cycles::tooManyMoves(d.number);
     m_cycleMovesInBlock += path.moves();

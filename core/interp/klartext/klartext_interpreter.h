@@ -101,6 +101,20 @@ public:
 
 private:
     class Environment;
+    // What every cycle output does besides moving: dwell, spindle, M functions
+    // (klartext_cycle_calls.cpp); CycleOutput and CylinderOutput add the moves.
+    class CycleFunctions : public cycles::CycleEmitter {
+    public:
+        explicit CycleFunctions(KlartextInterpreter& owner) : m(owner) {}
+        void dwell(double seconds) override;
+        void spindle(canon::SpindleDirection direction, double rpm) override;
+        void orientSpindle(double angleDeg) override;
+        void miscFunction(int number) override;
+
+    protected:
+        bool ok() const { return m.m_status != interp::RunStatus::Failed; }
+        KlartextInterpreter& m;
+    };
     class CycleOutput;
     class ProbeAdapter;
     class ToolProbeAdapter;
@@ -187,6 +201,7 @@ private:
     void executeBlkForm(const BlkForm& blk);
     void executeMOnly(const CommonWords& words);
     void applyMFunctions(const MWords& m, bool atStart);
+    void reduceRotaryDisplay();  // M94
     bool hasM(const MWords& m, int number) const;
     void submitMove(const ContourElement& element, bool rapid, double feed,
                     const CommonWords& words);
@@ -340,6 +355,15 @@ private:
     void callCyclePosition(const CycleCall& call);
     void runPatternCycle(const cycles::CycleDescriptor& pattern, const cycles::CycleValues& values);
     bool runMachiningCycle(const cycles::CycleValues& values);
+    // The feed of a cycle's move (switching the feed mode when it changes).
+    double cycleFeed(const cycles::Feed& feed);
+    // The cylinder-surface cycles 27, 28, 29, 39 on the rotary table (klartext_cylinder.cpp):
+    // checks the machine, reads the contour in mm into ctx.train, sets ctx.start on the
+    // development and returns where the cycle's moves go; nothing (and the run failed) when the
+    // cycle cannot run here.
+    class CylinderOutput;
+    std::unique_ptr<cycles::CycleEmitter> cylinderOutput(const cycles::CycleValues& values,
+                                                         cycles::CycleContext& ctx);
     cycles::CycleValues callValues() const;
     void moveProgrammed(const Pose& target, bool rapid, double feed);
     void afterPositioning(const MWords& m);

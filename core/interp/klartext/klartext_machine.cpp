@@ -117,11 +117,12 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 m_shortestRotary = n == 126;  // rotaryTarget(): the short way, from this block
                 break;
             case 94:
+                reduceRotaryDisplay();
                 break;
             case 128:
             case 129:
                 switchTcpm(n == 128);
-                break;  // endless axes always show their angle below 360 (rotaryTarget())
+                break;
             case 89:    // modal cycle call, from this block on
             case 99:    // cycle call in this block only
                 m_modalCycleCall = n == 89;
@@ -169,6 +170,20 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 emit(canon::MachineFunction{n});
                 break;
         }
+    }
+}
+
+void KlartextInterpreter::reduceRotaryDisplay() {
+    if (!checkPathError(activePath().flush()) || m_settings.machine == nullptr) return;
+    // The axes stay where they are; their angles count from a whole turn nearer to 0, so that
+    // the next absolute angle is reached the short way within the turn (TNC M94).
+    for (const machine::AxisConfig& config : m_settings.machine->axes) {
+        if (config.type != machine::AxisType::Rotary || !config.enabled) continue;
+        const Axis axis = *axisFromLetter(config.letter);
+        const double shown = m_programmed[axis];
+        const double reduced = std::fmod(shown, 360.0);
+        m_frame.addTurns(axis, shown - reduced);
+        m_programmed[axis] = reduced;
     }
 }
 

@@ -36,12 +36,13 @@ protected:
     void TearDown() override { fs::remove_all(dir); }
 
     // kerf run on mill5; the exit code and the report.
-    int run(const std::string& program, nlohmann::json& report) {
-        const std::string command =
-            std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
-            (dir / "TOOL.T").string() + "\" --motion \"" + (dir / program).string() +
-            "\" --report \"" + (dir / "report.json").string() + "\" 2> \"" +
-            (dir / "errors").string() + "\"";
+    int run(const std::string& program, nlohmann::json& report,
+            const std::string& machine = "mill5") {
+        const std::string command = std::string("\"") + KERF_BINARY + "\" run --machine " +
+                                    machine + " --tool-table \"" + (dir / "TOOL.T").string() +
+                                    "\" --motion \"" + (dir / program).string() + "\" --report \"" +
+                                    (dir / "report.json").string() + "\" 2> \"" +
+                                    (dir / "errors").string() + "\"";
         const int status = std::system(command.c_str());
         report = nlohmann::json::parse(readText(dir / "report.json"));
         return status;
@@ -70,6 +71,40 @@ TEST_F(RotaryMotion, RotaryJointsKeepTheirLimits) {
     EXPECT_NEAR(end["B"].get<double>(), 0.0, 1e-3);
     EXPECT_NEAR(end["C"].get<double>(), 0.0, 1e-3);
     EXPECT_NEAR(report["final_machine_position"]["Z"].get<double>(), -300.0, 1e-6);
+}
+
+// Cylinder surface (tests/golden/klartext/cycle_27_cylinder_slot_mill4): F300 is the feed on the
+// surface of radius 20, so the A table alone turns at 300 / 20 rad/min = 14.3239 deg/s.
+TEST_F(RotaryMotion, CylinderSurfaceFeedIsTheSurfaceSpeed) {
+    const fs::path golden = fs::path(KERF_SOURCE_DIR) / "tests/golden/klartext";
+    fs::copy_file(golden / "cycle_27_cylinder_slot_mill4/program.H", dir / "C27.H");
+    nlohmann::json report;
+    ASSERT_EQ(run("C27.H", report, "mill4"), 0) << readText(dir / "errors");
+    ASSERT_TRUE(report["ok"].get<bool>());
+    EXPECT_FALSE(report["motion"]["refused"].get<bool>());
+    const nlohmann::json& a = report["motion"]["axes"]["A"];
+    EXPECT_NEAR(a["max_velocity"].get<double>(), 300.0 / 20.0 / 60.0 * 180.0 / M_PI, 0.15);
+    EXPECT_LE(a["max_accel"].get<double>(), 1440.0 * 1.01);
+    EXPECT_NEAR(report["motion"]["final_position"]["A"].get<double>(), 90.0, 1e-3);
+}
+
+// The seed's cycle 28 example on mill5 (B at +90, the slot milled with C, X and Y) stays within
+// every joint's limits.
+TEST_F(RotaryMotion, CylinderSlotOnTheTiltedTableKeepsTheJointLimits) {
+    const fs::path golden = fs::path(KERF_SOURCE_DIR) / "tests/golden/klartext";
+    fs::copy_file(golden / "cycle_28_seed_c28_mill5/program.H", dir / "C28.H");
+    fs::copy_file(golden / "cycle_28_seed_c28_mill5/TOOL.T", dir / "TOOL.T",
+                  fs::copy_options::overwrite_existing);
+    nlohmann::json report;
+    ASSERT_EQ(run("C28.H", report), 0) << readText(dir / "errors");
+    ASSERT_TRUE(report["ok"].get<bool>());
+    EXPECT_FALSE(report["motion"]["refused"].get<bool>());
+    const nlohmann::json& axes = report["motion"]["axes"];
+    EXPECT_LE(axes["B"]["max_velocity"].get<double>(), 90.0 * 1.01);
+    EXPECT_LE(axes["C"]["max_velocity"].get<double>(), 180.0 * 1.01);
+    EXPECT_LE(axes["C"]["max_accel"].get<double>(), 1440.0 * 1.01);
+    EXPECT_LE(axes["X"]["max_velocity"].get<double>(), 500.0 * 1.01);
+    EXPECT_NEAR(report["motion"]["final_position"]["C"].get<double>(), 0.0, 1e-3);
 }
 
 TEST_F(RotaryMotion, RotaryBeyondItsSoftLimitIsRefused) {

@@ -46,6 +46,23 @@ TEST(TableKinematics, BuiltinMachinesDescribeTheirTables) {
     EXPECT_EQ(mill4.kinematics.primary, 'A');
 }
 
+// The table that carries the workpiece and its axis in the machine (the cylinder-surface cycles
+// need it perpendicular to the tool): mill4's A lies along X; mill5's C stands along Z at B 0
+// and is laid along Rot_Y(-b) Z = (-sin b, 0, cos b): -X at B+90, +X at B-90. Both run through
+// the pivot (0, 0, -400).
+TEST(TableKinematics, InnerTableAxisFollowsTheTilt) {
+    const TableKinematics mill4 = kinematicsOf("mill4");
+    EXPECT_EQ(mill4.innerTable(), 'A');
+    expectVec(mill4.innerTableAxis({30.0, 0.0}), Vec3::UnitX());
+    const TableKinematics mill5 = kinematicsOf("mill5");
+    EXPECT_EQ(mill5.innerTable(), 'C');
+    expectVec(mill5.innerTableAxis({0.0, 40.0}), Vec3::UnitZ());
+    expectVec(mill5.innerTableAxis({90.0, 40.0}), -Vec3::UnitX());
+    expectVec(mill5.innerTableAxis({-90.0, 0.0}), Vec3::UnitX());
+    expectVec(mill5.innerTableAxis({45.0, 0.0}), Vec3(-kHalfRoot2, 0.0, kHalfRoot2));
+    expectVec(mill5.pivot(), Vec3(0.0, 0.0, -400.0));
+}
+
 TEST(TableKinematics, PrincipalRotationsAreRightHanded) {
     expectVec(principalRotation('A', 90.0) * Vec3::UnitY(), Vec3::UnitZ());
     expectVec(principalRotation('B', 90.0) * Vec3::UnitZ(), Vec3::UnitX());
