@@ -8017,6 +8017,14 @@ wählen</translation>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; ist eine Ausgabe dieses Laufs und kann nicht gelesen werden</translation>
     </message>
+    <message>
+        <source>TYPE OF DIMENSION</source>
+        <translation>BEMASSUNGSART</translation>
+    </message>
+    <message>
+        <source>RIDGE WIDTH</source>
+        <translation>STEGBREITE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

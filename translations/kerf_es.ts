@@ -8017,6 +8017,14 @@ solución</translation>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; es una salida de esta ejecución y no se puede leer</translation>
     </message>
+    <message>
+        <source>TYPE OF DIMENSION</source>
+        <translation>TIPO DE ACOTACION</translation>
+    </message>
+    <message>
+        <source>RIDGE WIDTH</source>
+        <translation>ANCHURA ALMA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

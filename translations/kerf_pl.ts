@@ -8020,6 +8020,14 @@ rozwiązanie</translation>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; jest wyjściem tego przebiegu i nie może być odczytany</translation>
     </message>
+    <message>
+        <source>TYPE OF DIMENSION</source>
+        <translation>RODZAJ WYMIAROWANIA</translation>
+    </message>
+    <message>
+        <source>RIDGE WIDTH</source>
+        <translation>SZEROKOŚĆ MOSTKA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8017,6 +8017,14 @@ solução</translation>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; é uma saída desta execução e não pode ser lido</translation>
     </message>
+    <message>
+        <source>TYPE OF DIMENSION</source>
+        <translation>TIPO DE COTAGEM</translation>
+    </message>
+    <message>
+        <source>RIDGE WIDTH</source>
+        <translation>LARGURA NERVURA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -36,8 +36,12 @@ constexpr QComment kComments[] = {
     {13, QT_TRANSLATE_NOOP("kerf", "ROUGH-OUT TOOL")},
     {14, QT_TRANSLATE_NOOP("kerf", "ALLOWANCE FOR SIDE")},
     {15, QT_TRANSLATE_NOOP("kerf", "CLIMB OR UP-CUT")},
+    {16, QT_TRANSLATE_NOOP("kerf", "RADIUS")},
+    {17, QT_TRANSLATE_NOOP("kerf", "TYPE OF DIMENSION")},
     {18, QT_TRANSLATE_NOOP("kerf", "COARSE ROUGHING TOOL")},
     {19, QT_TRANSLATE_NOOP("kerf", "FEED RATE FOR RECIP.")},
+    {20, QT_TRANSLATE_NOOP("kerf", "SLOT WIDTH")},
+    {21, QT_TRANSLATE_NOOP("kerf", "TOLERANCE")},
     {200, QT_TRANSLATE_NOOP("kerf", "SET-UP CLEARANCE")},
     {201, QT_TRANSLATE_NOOP("kerf", "DEPTH")},
     {202, QT_TRANSLATE_NOOP("kerf", "PLUNGING DEPTH")},
@@ -161,6 +165,7 @@ constexpr QComment kComments[] = {
 // Where a cycle names a shared parameter differently (thread depth, counterboring feed...).
 constexpr CycleComment kCycleComments[] = {
     {25, 12, QT_TRANSLATE_NOOP("kerf", "FEED RATE FOR MILLING")},
+    {29, 20, QT_TRANSLATE_NOOP("kerf", "RIDGE WIDTH")},
     {204, 254, QT_TRANSLATE_NOOP("kerf", "F COUNTERBORING")},
     {206, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},
     {207, 201, QT_TRANSLATE_NOOP("kerf", "DEPTH OF THREAD")},

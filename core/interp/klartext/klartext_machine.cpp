@@ -123,8 +123,8 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
             case 129:
                 switchTcpm(n == 128);
                 break;
-            case 89:    // modal cycle call, from this block on
-            case 99:    // cycle call in this block only
+            case 89:  // modal cycle call, from this block on
+            case 99:  // cycle call in this block only
                 m_modalCycleCall = n == 89;
                 callCycleHere();
                 break;
