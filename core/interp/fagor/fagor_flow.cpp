@@ -8,18 +8,6 @@
 
 namespace kerf::fagor {
 
-namespace {
-
-bool problemOf(Problem& problem, const char* code, const char* text,
-               std::vector<std::string> args = {}) {
-    problem.code = code;
-    problem.messageTemplate = text;
-    problem.args = std::move(args);
-    return false;
-}
-
-}  // namespace
-
 BlockPosition FagorInterpreter::nextBlock() const {
     return BlockPosition{m_line.nextOffset, m_reader->line()};
 }

@@ -5,18 +5,6 @@
 
 namespace kerf::fagor {
 
-namespace {
-
-bool problemOf(Problem& problem, const char* code, const char* text,
-               std::vector<std::string> args = {}) {
-    problem.code = code;
-    problem.messageTemplate = text;
-    problem.args = std::move(args);
-    return false;
-}
-
-}  // namespace
-
 void FagorInterpreter::waitForOperator() {
     emit(canon::SyncPoint{canon::SyncReason::Operator});
     m_resumeBlock = true;

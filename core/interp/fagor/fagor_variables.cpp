@@ -10,14 +10,6 @@ namespace kerf::fagor {
 
 namespace {
 
-bool problemOf(Problem& problem, const char* code, const char* text,
-               std::vector<std::string> args = {}) {
-    problem.code = code;
-    problem.messageTemplate = text;
-    problem.args = std::move(args);
-    return false;
-}
-
 std::string nameOf(const VariableRef& ref) {
     std::string name(ref.info->name);
     const VarShape shape = ref.info->shape;

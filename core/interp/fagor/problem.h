@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kerf::fagor {
@@ -13,6 +14,16 @@ struct Problem {
     std::string messageTemplate;
     std::vector<std::string> args;
 };
+
+// Fills `problem` (code, message, arguments; the offset stays) and returns false, so a check
+// can `return problemOf(...)`.
+inline bool problemOf(Problem& problem, const char* code, const char* text,
+                      std::vector<std::string> args = {}) {
+    problem.code = code;
+    problem.messageTemplate = text;
+    problem.args = std::move(args);
+    return false;
+}
 
 // Where parameter values come from while a block is read. Without a source (program check) every
 // parameter reads as 0 and range checks that depend on values are left to execution.
