@@ -6886,18 +6886,6 @@ zyklen</translation>
         <translation>ein Kontur-Unterprogramm hat mehr als 16384 Sätze</translation>
     </message>
     <message>
-        <source>the contour subprogram LBL {1} has no contour</source>
-        <translation>das Kontur-Unterprogramm LBL {1} enthält keine Kontur</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} encloses no area</source>
-        <translation>die Kontur von LBL {1} umschließt keine Fläche</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} intersects itself</source>
-        <translation>die Kontur von LBL {1} schneidet sich selbst</translation>
-    </message>
-    <message>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>das Kontur-Unterprogramm LBL {1} braucht Radiuskorrektur RL oder RR (Tasche oder Insel)</translation>
     </message>
@@ -6944,10 +6932,6 @@ zyklen</translation>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>nach G00 braucht das Rohteilprofil G01, G02 oder G03</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
-        <translation>die Kontur von LBL {1} liegt mehr als 1.000.000 mm vom Nullpunkt entfernt</translation>
     </message>
     <message>
         <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
@@ -8024,6 +8008,10 @@ wählen</translation>
     <message>
         <source>RIDGE WIDTH</source>
         <translation>STEGBREITE</translation>
+    </message>
+    <message>
+        <source>the contour subprogram {1} has no contour</source>
+        <translation>das Kontur-Unterprogramm {1} enthält keine Kontur</translation>
     </message>
 </context>
 <context>

@@ -6886,18 +6886,6 @@ fijos</translation>
         <translation>un subprograma de contorno tiene más de 16384 frases</translation>
     </message>
     <message>
-        <source>the contour subprogram LBL {1} has no contour</source>
-        <translation>el subprograma de contorno LBL {1} no tiene contorno</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} encloses no area</source>
-        <translation>el contorno de LBL {1} no encierra ninguna superficie</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} intersects itself</source>
-        <translation>el contorno de LBL {1} se corta a sí mismo</translation>
-    </message>
-    <message>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>el subprograma de contorno LBL {1} necesita corrección de radio RL o RR (cajera o isla)</translation>
     </message>
@@ -6944,10 +6932,6 @@ fijos</translation>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>tras G00 el perfil del material en bruto necesita G01, G02 o G03</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
-        <translation>el contorno de LBL {1} está a más de 1.000.000 mm del origen</translation>
     </message>
     <message>
         <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
@@ -8024,6 +8008,10 @@ solución</translation>
     <message>
         <source>RIDGE WIDTH</source>
         <translation>ANCHURA ALMA</translation>
+    </message>
+    <message>
+        <source>the contour subprogram {1} has no contour</source>
+        <translation>el subprograma de contorno {1} no tiene contorno</translation>
     </message>
 </context>
 <context>

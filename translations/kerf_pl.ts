@@ -6889,18 +6889,6 @@ stałe</translation>
         <translation>podprogram konturu ma więcej niż 16384 bloki</translation>
     </message>
     <message>
-        <source>the contour subprogram LBL {1} has no contour</source>
-        <translation>podprogram konturu LBL {1} nie zawiera konturu</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} encloses no area</source>
-        <translation>kontur LBL {1} nie obejmuje żadnej powierzchni</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} intersects itself</source>
-        <translation>kontur LBL {1} przecina sam siebie</translation>
-    </message>
-    <message>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>podprogram konturu LBL {1} wymaga korekcji promienia RL lub RR (kieszeń lub wyspa)</translation>
     </message>
@@ -6947,10 +6935,6 @@ stałe</translation>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>po G00 profil półfabrykatu wymaga G01, G02 lub G03</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
-        <translation>kontur LBL {1} leży dalej niż 1 000 000 mm od punktu zerowego</translation>
     </message>
     <message>
         <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
@@ -8027,6 +8011,10 @@ rozwiązanie</translation>
     <message>
         <source>RIDGE WIDTH</source>
         <translation>SZEROKOŚĆ MOSTKA</translation>
+    </message>
+    <message>
+        <source>the contour subprogram {1} has no contour</source>
+        <translation>podprogram konturu {1} nie zawiera konturu</translation>
     </message>
 </context>
 <context>

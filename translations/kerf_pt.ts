@@ -6886,18 +6886,6 @@ fixos</translation>
         <translation>um subprograma de contorno tem mais de 16384 blocos</translation>
     </message>
     <message>
-        <source>the contour subprogram LBL {1} has no contour</source>
-        <translation>o subprograma de contorno LBL {1} não tem contorno</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} encloses no area</source>
-        <translation>o contorno de LBL {1} não delimita nenhuma área</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} intersects itself</source>
-        <translation>o contorno de LBL {1} interseta-se a si mesmo</translation>
-    </message>
-    <message>
         <source>the contour subprogram LBL {1} needs radius compensation RL or RR (pocket or island)</source>
         <translation>o subprograma de contorno LBL {1} precisa de correção de raio RL ou RR (caixa ou ilha)</translation>
     </message>
@@ -6944,10 +6932,6 @@ fixos</translation>
     <message>
         <source>after G00 the raw-stock profile needs G01, G02 or G03</source>
         <translation>após G00 o perfil do material bruto precisa de G01, G02 ou G03</translation>
-    </message>
-    <message>
-        <source>the contour of LBL {1} lies beyond 1,000,000 mm from the origin</source>
-        <translation>o contorno de LBL {1} fica a mais de 1.000.000 mm da origem</translation>
     </message>
     <message>
         <source>An ISO block is either absolute (G90) or incremental (G91): enter all coordinates with I or none</source>
@@ -8024,6 +8008,10 @@ solução</translation>
     <message>
         <source>RIDGE WIDTH</source>
         <translation>LARGURA NERVURA</translation>
+    </message>
+    <message>
+        <source>the contour subprogram {1} has no contour</source>
+        <translation>o subprograma de contorno {1} não tem contorno</translation>
     </message>
 </context>
 <context>

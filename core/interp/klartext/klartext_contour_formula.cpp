@@ -236,36 +236,12 @@ bool KlartextInterpreter::captureProgramContour(const std::string& name,
     rules.formula = true;
     CapturedChain chain;
     if (!captureChain(*program, LabelPosition{0, 1}, rules, chain)) return false;
-    const std::vector<std::string> args{name};
-    if (chain.segments.empty()) {
-        fail("contour", KERF_TR_NOOP("the contour program {1} has no contour"), args);
+    if (!checkContourReach(chain.segments, name,
+                           KERF_TR_NOOP("the contour program {1} has no contour"))) {
         return false;
-    }
-    for (const PlanarSegment& s : chain.segments) {
-        for (const Vec2& p : {s.start, s.end, s.center}) {
-            if (!p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxContourCoordinateMm) {
-                fail("contour",
-                     KERF_TR_NOOP("the contour of {1} lies beyond 1,000,000 mm from the origin"),
-                     args);
-                return false;
-            }
-        }
     }
     ClosedContour contour;
-    contour.segments = std::move(chain.segments);
-    const Vec2 start = contour.segments.front().start;
-    if ((contour.segments.back().end - start).norm() > 1e-6) {
-        contour.segments.push_back(PlanarSegment::line(contour.segments.back().end, start));
-    }
-    contour.segments.back().end = start;
-    if (std::fabs(contour.signedArea()) < 1e-9) {
-        fail("contour", KERF_TR_NOOP("the contour of {1} encloses no area"), args);
-        return false;
-    }
-    if (selfIntersects(contour)) {
-        fail("contour", KERF_TR_NOOP("the contour of {1} intersects itself"), args);
-        return false;
-    }
+    if (!closeContour(std::move(chain.segments), name, contour)) return false;
     out.contour = std::move(contour);
     return true;
 }

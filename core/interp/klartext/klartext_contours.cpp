@@ -14,6 +14,8 @@ namespace {
 
 constexpr size_t kMaxContourBlocks = 16384;  // spec: contour elements of one SL cycle
 constexpr size_t kMaxContourLabels = 12;
+const char* const kNoContourInSubprogram =
+    KERF_TR_NOOP("the contour subprogram {1} has no contour");
 
 // Keeps what a contour subprogram would have sent to the canonical stream.
 class MoveCapture final : public canon::Sink {
@@ -150,7 +152,10 @@ bool KlartextInterpreter::captureTrain(int cycle, cycles::ContourTrain& out) {
     rules.approach = cycle == 275;
     rules.toolAxis = cycle == 276;
     if (!captureChain(*m_levels.back().program, *position, rules, chain)) return false;
-    if (!checkContourReach(chain.segments, *target.number)) return false;
+    if (!checkContourReach(chain.segments, "LBL " + std::to_string(*target.number),
+                           kNoContourInSubprogram)) {
+        return false;
+    }
     out.segments = std::move(chain.segments);
     out.side = chain.side == CompWord::Left ? 1 : chain.side == CompWord::Right ? -1 : 0;
     out.approach = chain.approach;
@@ -323,22 +328,44 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
 }
 
 // Contour coordinates beyond any machine's reach would overflow the contour engine's grid.
-bool KlartextInterpreter::checkContourReach(const std::vector<PlanarSegment>& segments, int label) {
-    const std::vector<std::string> args{std::to_string(label)};
+bool KlartextInterpreter::checkContourReach(const std::vector<PlanarSegment>& segments,
+                                            const std::string& name, const char* noContour) {
+    const std::vector<std::string> args{name};
     if (segments.empty()) {
-        fail("contour", KERF_TR_NOOP("the contour subprogram LBL {1} has no contour"), args);
+        fail("contour", noContour, args);
         return false;
     }
     for (const PlanarSegment& s : segments) {
         for (const Vec2& p : {s.start, s.end, s.center}) {
             if (!p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxContourCoordinateMm) {
-                fail(
-                    "contour",
-                    KERF_TR_NOOP("the contour of LBL {1} lies beyond 1,000,000 mm from the origin"),
-                    args);
+                fail("contour",
+                     KERF_TR_NOOP("the contour of {1} lies beyond 1,000,000 mm from the origin"),
+                     args);
                 return false;
             }
         }
+    }
+    return true;
+}
+
+// The control closes a contour that ends elsewhere with a straight line (the islands of the
+// seed's chapter 7 example end one side short of their start).
+bool KlartextInterpreter::closeContour(std::vector<PlanarSegment> segments, const std::string& name,
+                                       ClosedContour& out) {
+    const std::vector<std::string> args{name};
+    out.segments = std::move(segments);
+    const Vec2 start = out.segments.front().start;
+    if ((out.segments.back().end - start).norm() > 1e-6) {
+        out.segments.push_back(PlanarSegment::line(out.segments.back().end, start));
+    }
+    out.segments.back().end = start;
+    if (std::fabs(out.signedArea()) < 1e-9) {
+        fail("contour", KERF_TR_NOOP("the contour of {1} encloses no area"), args);
+        return false;
+    }
+    if (selfIntersects(out)) {
+        fail("contour", KERF_TR_NOOP("the contour of {1} intersects itself"), args);
+        return false;
     }
     return true;
 }
@@ -347,26 +374,12 @@ bool KlartextInterpreter::captureContour(const LabelPosition& position, int labe
                                          cycles::SubContour& out) {
     CapturedChain chain;
     if (!captureChain(*m_levels.back().program, position, ChainRules{}, chain)) return false;
-    if (!checkContourReach(chain.segments, label)) return false;
-    ClosedContour contour;
-    contour.segments = std::move(chain.segments);
+    const std::string name = "LBL " + std::to_string(label);
+    if (!checkContourReach(chain.segments, name, kNoContourInSubprogram)) return false;
     const std::optional<CompWord> side = chain.side;
     const std::vector<std::string> args{std::to_string(label)};
-    // The control closes a contour that ends elsewhere with a straight line (the islands of the
-    // seed's chapter 7 example end one side short of their start).
-    const Vec2 start = contour.segments.front().start;
-    if ((contour.segments.back().end - start).norm() > 1e-6) {
-        contour.segments.push_back(PlanarSegment::line(contour.segments.back().end, start));
-    }
-    contour.segments.back().end = start;
-    if (std::fabs(contour.signedArea()) < 1e-9) {
-        fail("contour", KERF_TR_NOOP("the contour of LBL {1} encloses no area"), args);
-        return false;
-    }
-    if (selfIntersects(contour)) {
-        fail("contour", KERF_TR_NOOP("the contour of LBL {1} intersects itself"), args);
-        return false;
-    }
+    ClosedContour contour;
+    if (!closeContour(std::move(chain.segments), name, contour)) return false;
     if (side != CompWord::Left && side != CompWord::Right) {
         fail("contour",
              KERF_TR_NOOP("the contour subprogram LBL {1} needs radius compensation RL or RR "

@@ -17,6 +17,7 @@
 #include "core/cycles/probing/tool_measurement.h"
 #include "core/cycles/transform/coordinate_frame.h"
 #include "core/geometry/fk/fk_solver.h"
+#include "core/geometry/offset_contour.h"
 #include "core/interp/interpreter.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
@@ -297,7 +298,12 @@ private:
     };
     bool captureChain(const ProgramFile& program, const LabelPosition& position, ChainRules rules,
                       CapturedChain& out);
-    bool checkContourReach(const std::vector<PlanarSegment>& segments, int label);
+    // A contour named `name` ("LBL 5", a program) that exists (`noContour` otherwise) and lies
+    // within reach; closeContour() closes it and refuses one without area or crossing itself.
+    bool checkContourReach(const std::vector<PlanarSegment>& segments, const std::string& name,
+                           const char* noContour);
+    bool closeContour(std::vector<PlanarSegment> segments, const std::string& name,
+                      ClosedContour& out);
     // The contour formula (klartext_contour_formula.cpp): SEL CONTOUR and CONTOUR DEF select
     // the SL contour instead of cycle 14, whichever was programmed last.
     void executeSelectContour(const SelectContour& select);
