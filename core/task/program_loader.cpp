@@ -60,11 +60,10 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
     settings.blockSkip = request.blockSkip ? 1 : 0;
     settings.presetInMachine = request.presetInMachine;
     if (request.startPosition) {
-        for (size_t i = 0; i < settings.startInMachine.values.size(); ++i) {
-            settings.startInMachine.values[i] =
-                request.startPosition->values[i] + request.presetInMachine.values[i];
-        }
-        settings.startKnown = true;
+        Pose start = *request.startPosition;
+        for (size_t i = 0; i < start.values.size(); ++i)
+            start.values[i] += request.presetInMachine.values[i];
+        settings.startInMachine = start;
     }
     settings.userScreen = request.userScreen;
     auto interpreter = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);

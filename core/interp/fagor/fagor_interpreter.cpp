@@ -63,9 +63,9 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
         if (m_zeroOffsets) m_startOffset = sum(m_startOffset, m_zeroOffsets->plcOffset());
     }
     m_offset = m_startOffset;
-    if (m_settings.startKnown) {
+    if (m_settings.startInMachine) {
         for (size_t i = 0; i < m_position.values.size(); ++i)
-            m_position.values[i] = m_settings.startInMachine.values[i] - m_startOffset.values[i];
+            m_position.values[i] = m_settings.startInMachine->values[i] - m_startOffset.values[i];
     }
     m_output.setZones(&m_zones);
     m_output.setMachineOffset(m_startOffset);

@@ -28,8 +28,7 @@ struct FagorSettings {
     Pose presetInMachine{};
     // Where the tool stands when the program starts, machine coordinates (the panel knows it;
     // kerf run starts at the program's origin): the first move is drawn from there.
-    Pose startInMachine{};
-    bool startKnown = false;
+    std::optional<Pose> startInMachine;
     // The user channel (spec part 2 §6.8): with a screen the program runs as the user
     // customisation program of its mode, drawing on it and reading the operator's keys and input.
     UserScreen* userScreen = nullptr;
