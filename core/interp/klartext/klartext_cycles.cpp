@@ -300,14 +300,10 @@ void KlartextInterpreter::executePatternDef(const PatternDefinition& def) {
     m_pattern = std::move(points);
 }
 
-std::optional<std::filesystem::path> KlartextInterpreter::tablePath(const std::string& name,
-                                                                    const char* extension) {
-    const ProgramFile& caller = *m_levels.back().program;
-    auto path = m_root.resolve(name, caller.folder);
-    if (!path) {
-        fail("path", path.error().messageTemplate.c_str(), path.error().args);
-        return std::nullopt;
-    }
+Expected<std::filesystem::path> KlartextInterpreter::selectedTablePath(
+    const std::string& name, const std::filesystem::path& folder, const char* extension) const {
+    auto path = m_root.resolve(name, folder);
+    if (!path) return path.error();
     std::filesystem::path target = *path;
     std::error_code ignored;
     if (!std::filesystem::exists(target, ignored)) {
@@ -322,10 +318,41 @@ std::optional<std::filesystem::path> KlartextInterpreter::tablePath(const std::s
     }
     // The name actually opened is checked, after the extension was added.
     if (MaybeError refused = m_root.admit(target)) {
-        fail("path", refused->messageTemplate.c_str(), {name});
-        return std::nullopt;
+        refused->args = {name};
+        return *refused;
     }
     return target;
+}
+
+std::optional<std::filesystem::path> KlartextInterpreter::tablePath(const std::string& name,
+                                                                    const char* extension) {
+    auto path = selectedTablePath(name, m_levels.back().program->folder, extension);
+    if (!path) {
+        fail("path", path.error().messageTemplate.c_str(), path.error().args);
+        return std::nullopt;
+    }
+    return *path;
+}
+
+MaybeError KlartextInterpreter::checkSelectedTable(const TableReference& table,
+                                                   const std::filesystem::path& folder) const {
+    const bool points = table.kind == TableReference::Kind::Point;
+    auto path = selectedTablePath(table.name, folder, points ? ".pnt" : ".d");
+    if (!path) return path.error();
+    std::string reason;
+    if (auto bytes = m_root.read(*path); !bytes) {
+        reason = bytes.error().message();
+    } else if (points) {
+        if (auto parsed = tables::PointTable::parse(*bytes, path->string()); !parsed)
+            reason = parsed.error().message();
+    } else if (auto parsed = tables::DatumTable::parse(*bytes, path->string()); !parsed) {
+        reason = parsed.error().message();
+    }
+    if (reason.empty()) return std::nullopt;
+    return Diagnostic::make(Severity::Error, "io", "", 0, 0,
+                            points ? KERF_TR_NOOP("cannot read the point table {1}: {2}")
+                                   : KERF_TR_NOOP("cannot read the datum table {1}: {2}"),
+                            table.name, reason);
 }
 
 void KlartextInterpreter::executeSelectTable(const SelectTable& select) {

@@ -502,6 +502,14 @@ void KlartextInterpreter::checkCalledPrograms(const ProgramFile& program, Diagno
     while (!pending.empty()) {
         const ProgramFile* caller = pending.back();
         pending.pop_back();
+        for (const TableReference& table : caller->tables) {
+            if (MaybeError problem = checkSelectedTable(table, caller->folder)) {
+                problem->file = caller->source->path();
+                problem->line = table.line;
+                problem->column = table.column;
+                appendDiagnostic(out, std::move(*problem));
+            }
+        }
         for (const ProgramCall& call : caller->calls) {
             auto error = [&](const char* code, const char* text, std::vector<std::string> args) {
                 Diagnostic d = Diagnostic::make(Severity::Error, code, caller->source->path(),

@@ -181,8 +181,9 @@ private:
     Expected<std::filesystem::path> calledProgramPath(const std::string& name,
                                                       const std::filesystem::path& callerFolder,
                                                       bool isoCaller) const;
-    // Loads and checks every program `program` calls by name, and theirs, once each: a missing
-    // or faulty called program fails the check of the main program, before anything runs.
+    // Loads and checks every program `program` calls by name (CALL PGM, cycle 12, contours), and
+    // theirs, once each, and reads the tables they select: a missing or faulty program or table
+    // fails the check of the main program, before anything runs.
     void checkCalledPrograms(const ProgramFile& program, DiagnosticList& out);
 
     // Motion and machine functions (klartext_motion.cpp).
@@ -235,7 +236,15 @@ private:
                            std::vector<uint16_t>* predef);
     void failCycle(const cycles::CycleError& error);
     std::optional<std::string> cycleText(std::string_view raw) const;
+    // The table file `SEL TABLE`/`SEL PATTERN name` from `folder` opens (the extension may be
+    // left out), or why it cannot be opened.
+    Expected<std::filesystem::path> selectedTablePath(const std::string& name,
+                                                      const std::filesystem::path& folder,
+                                                      const char* extension) const;
     std::optional<std::filesystem::path> tablePath(const std::string& name, const char* extension);
+    // Why the table `table` selects cannot be read (nothing when it can), for the check.
+    MaybeError checkSelectedTable(const TableReference& table,
+                                  const std::filesystem::path& folder) const;
     // Old-style sub-blocks (klartext_transform.cpp).
     void datumShift(const CycleDefinition& def);
     void mirrorImage(const CycleDefinition& def);

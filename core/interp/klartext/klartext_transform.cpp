@@ -180,13 +180,7 @@ void KlartextInterpreter::programCall(const CycleDefinition& def) {
         m_modalCycleCall = false;
         return;
     }
-    std::string path = def.rest;
-    Cursor c(path);
-    c.acceptKeyword("PGM");
-    path = std::string(c.restUntilComment());
-    if (path.size() >= 2 && path.front() == '"' && path.back() == '"') {
-        path = path.substr(1, path.size() - 2);
-    }
+    const std::string path = cycle12Program(def.rest);
     if (path.empty()) {
         fail("cycle-syntax", KERF_TR_NOOP("cycle 12: program name expected"));
         return;

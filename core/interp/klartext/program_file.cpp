@@ -10,6 +10,7 @@
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/cursor.h"
 #include "core/interp/klartext/cycle_definition_check.h"
 #include "core/interp/klartext/statement_axes.h"
 
@@ -47,6 +48,16 @@ std::unique_ptr<BlockSyntax> makeSyntax(const ProgramFile& program,
                                         FormulaEnvironment* environment) {
     if (program.syntax != nullptr && *program.syntax) return (*program.syntax)(environment);
     return std::make_unique<BlockParser>(environment);
+}
+
+std::string cycle12Program(std::string_view rest) {
+    Cursor c(rest);
+    c.acceptKeyword("PGM");
+    std::string_view path = c.restUntilComment();
+    if (path.size() >= 2 && path.front() == '"' && path.back() == '"') {
+        path = path.substr(1, path.size() - 2);
+    }
+    return std::string(path);
 }
 
 bool programUsesInch(const ProgramFile& program) {
@@ -158,6 +169,12 @@ void checkProgram(ProgramFile& program) {
             program.calls.push_back({name, line.lineAt(at == std::string_view::npos ? 0 : at),
                                      line.columnAt(at == std::string_view::npos ? 0 : at)});
         };
+        auto addTable = [&](const std::string& name, TableReference::Kind kind) {
+            const size_t at = line.text.find(name);
+            program.tables.push_back({name, kind,
+                                      line.lineAt(at == std::string_view::npos ? 0 : at),
+                                      line.columnAt(at == std::string_view::npos ? 0 : at)});
+        };
         auto checkStatement = [&](const Statement& s) {
             if (auto missing = axisMissingFrom(s, program.machineAxes)) {
                 diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
@@ -218,6 +235,10 @@ void checkProgram(ProgramFile& program) {
                 }
             } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
                 addCall(callPgm->path);
+            } else if (const auto* table = std::get_if<SelectTable>(&s)) {
+                addTable(table->path, TableReference::Kind::Datum);
+            } else if (const auto* pattern = std::get_if<SelectPattern>(&s)) {
+                addTable(pattern->path, TableReference::Kind::Point);
             } else if (const auto* select = std::get_if<SelectContour>(&s)) {
                 addCall(select->path);
             } else if (const auto* declare = std::get_if<DeclareContour>(&s)) {
@@ -267,6 +288,10 @@ void checkProgram(ProgramFile& program) {
                          KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past "
                                       "this block"),
                          {std::to_string(cycle->number)});
+                }
+                if (cycle->number == 12 && cycle->subNumber == 1 && !cycle->probe) {
+                    const std::string called = cycle12Program(cycle->rest);
+                    if (!called.empty()) addCall(called);
                 }
                 checkCycleParameters(*cycle, line, file, out);
             }

@@ -29,6 +29,15 @@ struct ProgramCall {
     uint32_t column = 0;
 };
 
+// A table a block selects (SEL TABLE, SEL PATTERN), so the check can read it before the run.
+struct TableReference {
+    enum class Kind { Datum, Point };
+    std::string name;
+    Kind kind = Kind::Datum;
+    uint32_t line = 0;
+    uint32_t column = 0;
+};
+
 // A loaded conversational program with its label index, built by a full syntax check.
 struct ProgramFile {
     std::shared_ptr<const program::SourceText> source;
@@ -39,6 +48,7 @@ struct ProgramFile {
     bool inch = false;
     DiagnosticList diagnostics;  // from the check; errors mean the program cannot run
     std::vector<ProgramCall> calls;
+    std::vector<TableReference> tables;
     // The program's syntax when it is not conversational (a DIN/ISO program); not owned.
     const SyntaxMaker* syntax = nullptr;
     // The tool table the program runs with (nullptr: none): literal TOOL CALLs are checked
@@ -64,6 +74,10 @@ struct ProgramFile {
 // (errors: the program could not run to its end), missing BEGIN/END PGM and block numbers out of
 // order (warnings).
 void checkProgram(ProgramFile& program);
+
+// The program a `CYCL DEF 12.1 PGM name` block calls: its text after "12.1" without "PGM" and
+// quotes (empty when it names none).
+std::string cycle12Program(std::string_view rest);
 
 // Whether the program's BEGIN PGM block says INCH (its first block; MM otherwise).
 bool programUsesInch(const ProgramFile& program);

@@ -183,6 +183,79 @@ TEST_F(InterpreterTest, NothingIsWrittenWhenACalledProgramHasAnError) {
     EXPECT_FALSE(fs::exists(dir / "OUT.TXT"));
 }
 
+TEST_F(InterpreterTest, NothingIsWrittenWhenCycle12CallsAFaultyProgram) {
+    // Cycle 12 names its program in the CYCL DEF: the check reads it like a CALL PGM, so the
+    // F-PRINT before the cycle call must not write.
+    writeFileAtomically(dir / "MASK.A", "\"X\";\n");
+    writeFileAtomically(dir / "SUB.H", "0 BEGIN PGM SUB MM\n1 BOGUS\n2 END PGM SUB MM\n");
+    writeFileAtomically(dir / "W.H",
+                        "0 BEGIN PGM W MM\n1 FN 16: F-PRINT MASK.A / OUT.TXT\n"
+                        "2 CYCL DEF 12.0 PGM CALL\n3 CYCL DEF 12.1 PGM SUB.H\n"
+                        "4 CYCL CALL\n5 END PGM W MM\n");
+    auto k = make();
+    ASSERT_TRUE(k->load(dir / "W.H", KlartextInterpreter::CheckMode::Background));
+    while (k->run(out, 1) == interp::RunStatus::BudgetUsed) {
+    }
+    EXPECT_TRUE(k->checkFailed());
+    EXPECT_FALSE(fs::exists(dir / "OUT.TXT"));
+
+    // A cycle 12 program that does not exist fails the check at its name.
+    writeFileAtomically(dir / "M.H",
+                        "0 BEGIN PGM M MM\n1 CYCL DEF 12.0 PGM CALL\n"
+                        "2 CYCL DEF 12.1 PGM NOPE.H\n3 END PGM M MM\n");
+    auto missing = make();
+    EXPECT_FALSE(missing->load(dir / "M.H"));
+    ASSERT_TRUE(hasErrors(missing->diagnostics()));
+    const Diagnostic& d = missing->diagnostics().front();
+    EXPECT_EQ(d.line, 3u);
+    EXPECT_EQ(d.column, 21u);  // "2 CYCL DEF 12.1 PGM NOPE.H": the name starts at column 21
+
+    // Repaired, the same program runs the called program's blocks.
+    writeFileAtomically(dir / "SUB.H", "0 BEGIN PGM SUB MM\n1 L Z+7 R0 FMAX\n2 END PGM SUB MM\n");
+    auto fine = make();
+    ASSERT_EQ(runText(*fine,
+                      "0 BEGIN PGM P MM\n1 CYCL DEF 12.0 PGM CALL\n"
+                      "2 CYCL DEF 12.1 PGM SUB.H\n3 CYCL CALL\n4 END PGM P MM\n"),
+              interp::RunStatus::Finished);
+}
+
+TEST_F(InterpreterTest, ATableTheProgramSelectsMustBeReadableBeforeItRuns) {
+    // SEL PATTERN and SEL TABLE name their tables literally: a missing or unreadable one fails
+    // the check at the name, so a run cannot stop there after the program's writes.
+    writeFileAtomically(dir / "BAD.PNT", "not a point table\n");
+    writeFileAtomically(dir / "HOLES.PNT",
+                        "BEGIN HOLES.PNT MM\nNR  X    Y    Z\n0   +10  +10  +0\n[END]\n");
+    const std::string program = "0 BEGIN PGM S MM\n1 SEL PATTERN \"NAME\"\n2 END PGM S MM\n";
+    auto check = [&](const std::string& table) {
+        std::string text = program;
+        text.replace(text.find("NAME"), 4, table);
+        writeFileAtomically(dir / "S.H", text);
+        auto k = make();
+        const bool loaded = k->load(dir / "S.H");
+        return std::make_pair(loaded, k->diagnostics());
+    };
+    auto [missingLoads, missing] = check("NOPE");
+    EXPECT_FALSE(missingLoads);
+    ASSERT_TRUE(hasErrors(missing));
+    EXPECT_EQ(missing.front().line, 2u);
+    EXPECT_EQ(missing.front().column, 16u);  // `1 SEL PATTERN "NOPE"`: NOPE starts at 16
+    EXPECT_NE(missing.front().message().find("point table NOPE"), std::string::npos);
+    auto [badLoads, bad] = check("BAD");
+    EXPECT_FALSE(badLoads);
+    EXPECT_TRUE(hasErrors(bad));
+    auto [goodLoads, good] = check("HOLES");  // the extension may be left out
+    EXPECT_TRUE(goodLoads);
+    EXPECT_FALSE(hasErrors(good));
+
+    writeFileAtomically(dir / "T.H",
+                        "0 BEGIN PGM T MM\n1 SEL TABLE \"NODATUMS.D\"\n2 END PGM T MM\n");
+    auto datums = make();
+    EXPECT_FALSE(datums->load(dir / "T.H"));
+    ASSERT_TRUE(hasErrors(datums->diagnostics()));
+    EXPECT_NE(datums->diagnostics().front().message().find("datum table NODATUMS.D"),
+              std::string::npos);
+}
+
 TEST_F(InterpreterTest, AnAxisTheMachineLacksIsAnError) {
     // The built-in mill has X, Y and Z: an A word is refused at its column instead of being
     // dropped from the move.
