@@ -23,6 +23,8 @@ MachineSample sampleOf(const task::MachineStatus& status) {
     sample.nominal = {status.axes[0].nominal, status.axes[1].nominal, status.axes[2].nominal};
     // Held, stopped or jogged away the block stays, but the tool is off the path.
     sample.onPath = status.state == task::MachineState::Running;
+    sample.feedOverride = status.feedOverride;
+    sample.rapidOverride = status.rapidOverride;
     return sample;
 }
 

@@ -266,7 +266,9 @@ double TestRunController::progressPercent() const {
 }
 
 double TestRunController::remainingTimeS() const {
-    return std::max(0.0, machiningTimeS() - m_timeS);
+    if (!m_program) return 0.0;
+    return m_program->remainingTimeS(m_program->runPointAt(m_timeS), m_feedOverride,
+                                     m_rapidOverride);
 }
 
 std::optional<SourceLocation> TestRunController::currentBlock() const {

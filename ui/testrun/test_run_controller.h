@@ -37,6 +37,8 @@ struct MachineSample {
     Pose machine;  // the same point in machine coordinates
     // The program moves the axes along its path (not held, stopped or jogged away).
     bool onPath = false;
+    double feedOverride = 1.0;  // fractions: 1 = 100 %
+    double rapidOverride = 1.0;
 };
 
 // The test run (programming mode Test run): interprets the editor's program off the UI thread,
@@ -108,7 +110,8 @@ public:
     // graphics show its progress, not a playback speed.
     bool followsMachine() const { return m_machinePlayback; }
     void setFollowsMachine(bool on) { m_machinePlayback = on; }
-    // Of the machining time (the planner's): the part done, 0..100, and the time left.
+    // Of the machining time (the planner's): the part done, 0..100, and the time left, under
+    // the overrides of the machine followed (infinite when one that matters is 0 %).
     double progressPercent() const;
     double remainingTimeS() const;
     // Following the machine: the feed of the command it executes (0 for a rapid), per minute or
@@ -205,6 +208,8 @@ private:
     std::optional<Pose> m_actual;                 // last position the drives reported
     std::optional<Pose> m_toMachine;              // and from it to machine coordinates
     bool m_lastOnPath = false;
+    double m_feedOverride = 1.0;  // of the machine followed (the test run: 100 %)
+    double m_rapidOverride = 1.0;
     QElapsedTimer m_sampleClock;
     int m_followIntervalMs = kFollowIntervalMs;
 };

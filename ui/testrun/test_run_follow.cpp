@@ -19,6 +19,7 @@ void TestRunController::follow(const QString& text, const std::filesystem::path&
     m_actual.reset();
     m_toMachine.reset();
     m_lastOnPath = false;
+    m_feedOverride = m_rapidOverride = 1.0;
     m_sampleClock.invalidate();
     const bool prepared = m_state != State::Interpreting && m_program && text == m_preparedText &&
                           path == m_preparedPath && start == m_preparedStart &&
@@ -59,6 +60,8 @@ void TestRunController::applySample(const MachineSample& sample) {
     const bool wasOnPath = m_lastOnPath && m_follower->startPoint().has_value();
     if (sample.onPath) m_follower->observe(sample.block, sample.nominal);
     m_lastOnPath = sample.onPath;
+    m_feedOverride = sample.feedOverride;
+    m_rapidOverride = sample.rapidOverride;
     // Tool changes and the blank of the blocks reached go to the stock before the cut.
     m_timeS = std::max(m_timeS, m_program->timeAt(m_follower->point()));
     pushUpTo(m_timeS);

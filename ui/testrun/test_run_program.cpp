@@ -1,6 +1,7 @@
 #include "ui/testrun/test_run_program.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 #include "core/canon/path_statistics.h"
@@ -130,6 +131,47 @@ double TestRunProgram::timeAt(const RunPoint& point) const {
     return startS + point.fraction * (endTimeS[point.command] - startS);
 }
 
+void TestRunProgram::setOverrideTimes() {
+    rapidEndTimeS.assign(commands.size(), 0.0);
+    feedEndTimeS.assign(commands.size(), 0.0);
+    double rapidS = 0.0, feedS = 0.0, startS = 0.0;
+    for (size_t i = 0; i < commands.size() && i < endTimeS.size(); ++i) {
+        const double durationS = endTimeS[i] - startS;
+        startS = endTimeS[i];
+        const auto& body = commands[i].body;
+        if (std::holds_alternative<canon::RapidMove>(body)) {
+            rapidS += durationS;
+        } else if (std::holds_alternative<canon::LinearMove>(body) ||
+                   std::holds_alternative<canon::ArcMove>(body) ||
+                   std::holds_alternative<canon::ProbeMove>(body)) {
+            feedS += durationS;
+        }
+        rapidEndTimeS[i] = rapidS;
+        feedEndTimeS[i] = feedS;
+    }
+}
+
+double TestRunProgram::remainingTimeS(const RunPoint& point, double feedOverride,
+                                      double rapidOverride) const {
+    if (rapidEndTimeS.size() != endTimeS.size() || endTimeS.empty())
+        return std::max(0.0, machiningTimeS() - timeAt(point));
+    // A share of the time up to `point`, interpolated inside its command as timeAt() does.
+    auto partAt = [&](const std::vector<double>& endS) {
+        if (point.command >= endS.size()) return endS.back();
+        const double startS = point.command > 0 ? endS[point.command - 1] : 0.0;
+        return startS + point.fraction * (endS[point.command] - startS);
+    };
+    const double rapidLeftS = rapidEndTimeS.back() - partAt(rapidEndTimeS);
+    const double feedLeftS = feedEndTimeS.back() - partAt(feedEndTimeS);
+    const double otherLeftS =
+        std::max(0.0, machiningTimeS() - timeAt(point) - rapidLeftS - feedLeftS);
+    auto scaled = [](double seconds, double fraction) {
+        if (seconds <= 0.0) return 0.0;
+        return fraction > 0.0 ? seconds / fraction : std::numeric_limits<double>::infinity();
+    };
+    return otherLeftS + scaled(rapidLeftS, rapidOverride) + scaled(feedLeftS, feedOverride);
+}
+
 bool TestRunProgram::isMove(size_t command) const {
     if (command >= movesBefore.size() || !toolpath) return false;
     const uint32_t move = movesBefore[command];
@@ -254,6 +296,7 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     }
     out.endTimeS =
         out.cancelled ? std::vector<double>(out.commands.size(), 0.0) : recorder.finish();
+    out.setOverrideTimes();
     if (interpreter && interpreter->diagnostics().size() > checkDiagnostics) {
         // Run-time diagnostics follow the check's, which were taken at the load already.
         out.diagnostics.insert(

@@ -62,7 +62,11 @@ struct PathPlace {
 // between threads.
 struct TestRunProgram {
     std::vector<canon::Command> commands;
-    std::vector<double> endTimeS;       // per command: machining time when it is done
+    std::vector<double> endTimeS;  // per command: machining time when it is done
+    // Per command: the part of endTimeS spent in rapids and in feed moves (lines, arcs, probing),
+    // the two the overrides change (setOverrideTimes()).
+    std::vector<double> rapidEndTimeS;
+    std::vector<double> feedEndTimeS;
     std::vector<uint32_t> movesBefore;  // per command: toolpath moves before it
     Pose start{};                       // tool position before the first command
     std::shared_ptr<const graphics::ToolpathData> toolpath;
@@ -94,6 +98,12 @@ struct TestRunProgram {
     // Machining time at a run point (the whole time past the last command).
     double timeAt(const RunPoint& point) const;
     PathPlace placeAt(const RunPoint& point) const;
+    // Fills rapidEndTimeS and feedEndTimeS from the commands and endTimeS.
+    void setOverrideTimes();
+    // Machining time from a run point to the end with the feed and rapid overrides (fractions)
+    // applied to the feed moves and the rapids; dwells, threads and waits keep their time.
+    // Infinite when an override that matters is 0.
+    double remainingTimeS(const RunPoint& point, double feedOverride, double rapidOverride) const;
     // The command moves the tool (it has points of its own in the toolpath).
     bool isMove(size_t command) const;
     // The tool in the spindle at a playback time (null before the first tool change).

@@ -140,6 +140,7 @@ QToolButton* GraphicsPanel::speedButton(TestRunSpeed speed) const {
 }
 
 QString GraphicsPanel::formatDuration(double seconds) {
+    if (!std::isfinite(seconds)) return QStringLiteral("-:--:--");  // an override at 0 %
     const auto total = static_cast<long long>(std::ceil(std::max(0.0, seconds) - 1e-9));
     return QStringLiteral("%1:%2:%3")
         .arg(total / 3600)
