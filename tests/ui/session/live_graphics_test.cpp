@@ -160,6 +160,33 @@ TEST_F(LiveGraphics, ProgramRunDrawsWhereTheMachineIsAndCountsDownThePlannersTim
     EXPECT_NEAR(live->stock()->latest()->removedVolumeMm3, expected, 0.04 * expected);
 }
 
+// At 50 % feed override the slot takes twice as long: the time remaining says so while the
+// machine is in it (the retract is a rapid, whose override stays at 100 %).
+TEST_F(LiveGraphics, TheTimeRemainingFollowsTheFeedOverride) {
+    ASSERT_TRUE(window->openProgram(dir / "SLOT.H"));
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    TestRunController* live = window->liveRun();
+    window->session()->setFeedOverride(0.5);
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    bool sawSlot = false;
+    ASSERT_TRUE(processUntil(
+        [&] {
+            const auto block = live->currentBlock();
+            const double x = nominal(0);
+            if (live->state() == TestRunController::State::Following && block && block->line == 9 &&
+                x > 18.0 && x < 32.0) {
+                sawSlot = true;
+                // The rest of the slot at 7.5 mm/s instead of 15, then a rapid of 7 mm.
+                const double slotLeftS = (40.0 - live->executedPart().reached.tip.x()) / 7.5;
+                EXPECT_GT(live->remainingTimeS(), slotLeftS - 0.1);
+                EXPECT_LT(live->remainingTimeS(), slotLeftS + 0.8);
+            }
+            return window->session()->runState() == task::RunState::Finished;
+        },
+        40s));
+    EXPECT_TRUE(sawSlot);
+}
+
 // Two fast circles of R 3 with the 10 mm end mill (tool 2), looked at only every 150 ms: the
 // looks are a good part of the circle apart, and the stock must be cut along the circle, not
 // along the chords between them. Swept: a disk of R 3 + 5 = 8, 2 mm deep.
