@@ -8013,6 +8013,54 @@ wählen</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>das Kontur-Unterprogramm {1} enthält keine Kontur</translation>
     </message>
+    <message>
+        <source>Dwell time at the bottom</source>
+        <translation>Verweilzeit unten</translation>
+    </message>
+    <message>
+        <source>PECKING</source>
+        <translation>TIEFBOHREN</translation>
+    </message>
+    <message>
+        <source>TAPPING</source>
+        <translation>GEWINDEBOHREN</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip at the start to surface</source>
+        <translation>Sicherheitsabstand: Werkzeugspitze am Start bis Oberfläche</translation>
+    </message>
+    <message>
+        <source>Depth from the surface (the sign gives the direction)</source>
+        <translation>Tiefe ab Oberfläche (das Vorzeichen gibt die Richtung)</translation>
+    </message>
+    <message>
+        <source>Feed rate</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging (none: the milling feed)</source>
+        <translation>Vorschub Zustellen (keiner: der Fräsvorschub)</translation>
+    </message>
+    <message>
+        <source>Direction: DR+ counterclockwise, DR- clockwise</source>
+        <translation>Richtung: DR+ Gegenuhrzeigersinn, DR- Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>First side length (parallel to the first axis)</source>
+        <translation>1. Seitenlänge (parallel zur ersten Achse)</translation>
+    </message>
+    <message>
+        <source>Pocket radius</source>
+        <translation>Taschenradius</translation>
+    </message>
+    <message>
+        <source>cycle {1} has no sub-block {1}.{2}</source>
+        <translation>Zyklus {1} hat keinen Unterblock {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

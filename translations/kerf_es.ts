@@ -8013,6 +8013,54 @@ solución</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>el subprograma de contorno {1} no tiene contorno</translation>
     </message>
+    <message>
+        <source>Dwell time at the bottom</source>
+        <translation>Tiempo de espera en el fondo</translation>
+    </message>
+    <message>
+        <source>PECKING</source>
+        <translation>TALADRADO EN PROFUNDIDAD</translation>
+    </message>
+    <message>
+        <source>TAPPING</source>
+        <translation>ROSCADO CON MACHO</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip at the start to surface</source>
+        <translation>Distancia de seguridad: punta de la herramienta en el inicio a la superficie</translation>
+    </message>
+    <message>
+        <source>Depth from the surface (the sign gives the direction)</source>
+        <translation>Profundidad desde la superficie (el signo da la dirección)</translation>
+    </message>
+    <message>
+        <source>Feed rate</source>
+        <translation>Avance</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging (none: the milling feed)</source>
+        <translation>Avance de profundización (ninguno: el avance de fresado)</translation>
+    </message>
+    <message>
+        <source>Direction: DR+ counterclockwise, DR- clockwise</source>
+        <translation>Sentido: DR+ antihorario, DR- horario</translation>
+    </message>
+    <message>
+        <source>First side length (parallel to the first axis)</source>
+        <translation>Longitud del 1er lado (paralelo al primer eje)</translation>
+    </message>
+    <message>
+        <source>Pocket radius</source>
+        <translation>Radio de la cajera</translation>
+    </message>
+    <message>
+        <source>cycle {1} has no sub-block {1}.{2}</source>
+        <translation>el ciclo {1} no tiene subbloque {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

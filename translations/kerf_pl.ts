@@ -8016,6 +8016,54 @@ rozwiązanie</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>podprogram konturu {1} nie zawiera konturu</translation>
     </message>
+    <message>
+        <source>Dwell time at the bottom</source>
+        <translation>Czas przerwy na dnie</translation>
+    </message>
+    <message>
+        <source>PECKING</source>
+        <translation>WIERCENIE GŁĘBOKIE</translation>
+    </message>
+    <message>
+        <source>TAPPING</source>
+        <translation>GWINTOWANIE</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip at the start to surface</source>
+        <translation>Odstęp bezpieczeństwa: ostrze narzędzia w punkcie startu do powierzchni</translation>
+    </message>
+    <message>
+        <source>Depth from the surface (the sign gives the direction)</source>
+        <translation>Głębokość od powierzchni (znak określa kierunek)</translation>
+    </message>
+    <message>
+        <source>Feed rate</source>
+        <translation>Posuw</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging (none: the milling feed)</source>
+        <translation>Posuw wcięcia (brak: posuw frezowania)</translation>
+    </message>
+    <message>
+        <source>Direction: DR+ counterclockwise, DR- clockwise</source>
+        <translation>Kierunek: DR+ przeciwnie do ruchu wskazówek zegara, DR- zgodnie</translation>
+    </message>
+    <message>
+        <source>First side length (parallel to the first axis)</source>
+        <translation>Długość pierwszego boku (równoległa do pierwszej osi)</translation>
+    </message>
+    <message>
+        <source>Pocket radius</source>
+        <translation>Promień kieszeni</translation>
+    </message>
+    <message>
+        <source>cycle {1} has no sub-block {1}.{2}</source>
+        <translation>cykl {1} nie ma podbloku {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

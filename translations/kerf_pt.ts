@@ -8013,6 +8013,54 @@ solução</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>o subprograma de contorno {1} não tem contorno</translation>
     </message>
+    <message>
+        <source>Dwell time at the bottom</source>
+        <translation>Tempo de espera no fundo</translation>
+    </message>
+    <message>
+        <source>PECKING</source>
+        <translation>FURAR EM PROFUNDIDADE</translation>
+    </message>
+    <message>
+        <source>TAPPING</source>
+        <translation>ROSCAGEM</translation>
+    </message>
+    <message>
+        <source>Set-up clearance: tool tip at the start to surface</source>
+        <translation>Distância de segurança: ponta da ferramenta no início até à superfície</translation>
+    </message>
+    <message>
+        <source>Depth from the surface (the sign gives the direction)</source>
+        <translation>Profundidade a partir da superfície (o sinal dá a direção)</translation>
+    </message>
+    <message>
+        <source>Feed rate</source>
+        <translation>Avanço</translation>
+    </message>
+    <message>
+        <source>Feed rate for plunging (none: the milling feed)</source>
+        <translation>Avanço de penetração (nenhum: o avanço de fresagem)</translation>
+    </message>
+    <message>
+        <source>Direction: DR+ counterclockwise, DR- clockwise</source>
+        <translation>Sentido: DR+ anti-horário, DR- horário</translation>
+    </message>
+    <message>
+        <source>First side length (parallel to the first axis)</source>
+        <translation>Comprimento do 1.º lado (paralelo ao primeiro eixo)</translation>
+    </message>
+    <message>
+        <source>Pocket radius</source>
+        <translation>Raio da caixa</translation>
+    </message>
+    <message>
+        <source>cycle {1} has no sub-block {1}.{2}</source>
+        <translation>o ciclo {1} não tem sub-bloco {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

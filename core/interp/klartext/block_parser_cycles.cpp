@@ -110,7 +110,7 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
     if (b.subNumber >= 0) {
         // Sub-blocks of the cycles Kerf runs are words with values; the others (12.1 PGM with
         // a file name, obsolete and SL cycles) stay text.
-        static constexpr int kWordCycles[] = {7, 8, 9, 10, 11, 13, 18, 19, 26, 32};
+        static constexpr int kWordCycles[] = {1, 2, 4, 5, 7, 8, 9, 10, 11, 13, 17, 18, 19, 26, 32};
         const bool words = !probe && std::find(std::begin(kWordCycles), std::end(kWordCycles),
                                                b.number) != std::end(kWordCycles);
         if (b.subNumber > 0 && words) {
@@ -196,6 +196,18 @@ bool BlockParser::parseCycleWords(std::string_view text, size_t from, cycles::Cy
         } else if (!valueStarts(cur.rest())) {
             return failAt(cur.position(), "syntax", KERF_TR_NOOP("unexpected '{1}'"),
                           {std::string(1, first)});
+        }
+        // The direction of the old pocket cycles is a sign alone: DR+ / DR-.
+        const char sign = cur.peekRaw();
+        const std::string_view afterSign =
+            cur.rest().substr(std::min<size_t>(1, cur.rest().size()));
+        if (word.key == "DR" && (sign == '+' || sign == '-') &&
+            (afterSign.empty() || afterSign.front() == ' ' || afterSign.front() == ';')) {
+            cur.setPosition(cur.position() + 1);
+            word.value = sign == '+' ? 1.0 : -1.0;
+            out.push_back(std::move(word));
+            cur.skipBlanks();
+            continue;
         }
         cur.skipBlanks();
         if (cur.peekRaw() == '=') {

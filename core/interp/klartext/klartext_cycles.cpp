@@ -6,6 +6,7 @@
 #include "core/base/translate.h"
 #include "core/cycles/cycle_registry.h"
 #include "core/cycles/global_def.h"
+#include "core/cycles/legacy/legacy_cycles.h"
 #include "core/cycles/parameter_check.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/point_table.h"
@@ -237,8 +238,9 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
     }};
     auto it = std::find_if(kHandlers.begin(), kHandlers.end(),
                            [&](const Entry& e) { return e.number == def.number; });
-    if (it == kHandlers.end()) {
-        // Obsolete cycles (1 pecking, 5 circular pocket ...) and SL cycles: the header stops.
+    const cycles::LegacyCycle* legacy = cycles::findLegacyCycle(def.number);
+    if (it == kHandlers.end() && legacy == nullptr) {
+        // Obsolete cycles Kerf does not run (3 slot milling ...): the header stops.
         if (def.subNumber == 0) {
             fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
                  {std::to_string(def.number)});
@@ -253,9 +255,70 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
         return;
     }
     // A transformation changes coordinates, not where the tool is: keep its position.
+    if (legacy != nullptr) return legacyCycle(def, *legacy);
     const Pose at = m_frame.toWorkpiece(m_programmed);
     (this->*(it->handler))(def);
     m_programmed = m_frame.toProgram(at);
+}
+
+void KlartextInterpreter::legacyCycle(const CycleDefinition& def,
+                                      const cycles::LegacyCycle& legacy) {
+    const cycles::CycleDescriptor& d = *legacy.descriptor;
+    const std::string number = std::to_string(def.number);
+    if (def.subNumber == 0) {
+        StoredCycle stored;
+        stored.descriptor = &d;
+        for (size_t i = 0; i < d.parameters.size(); ++i) {
+            if (d.parameters[i].optional)
+                stored.values.set(static_cast<uint16_t>(i + 1), d.parameters[i].defaultValue);
+        }
+        m_cycle = std::move(stored);
+        m_modalCycleCall = false;
+        return;
+    }
+    if (def.subNumber > legacy.subBlocks) {
+        fail("cycle-syntax", KERF_TR_NOOP("cycle {1} has no sub-block {1}.{2}"),
+             {number, std::to_string(def.subNumber)});
+        return;
+    }
+    // The keywords before the values depend on the control's language (ABST, SET UP, DIST):
+    // F is the feed, DR the direction, the first other word with a value the value.
+    const cycles::CycleWord* value = nullptr;
+    const cycles::CycleWord* feed = nullptr;
+    const cycles::CycleWord* direction = nullptr;
+    for (const cycles::CycleWord& w : def.words) {
+        if (w.key == "F") {
+            feed = &w;
+        } else if (w.key == "DR") {
+            direction = &w;
+        } else if (value == nullptr && w.value) {
+            value = &w;
+        }
+    }
+    for (const cycles::LegacyWordSlot& slot : legacy.slots) {
+        if (slot.subBlock != def.subNumber) continue;
+        const cycles::ParameterDescriptor& p = d.parameters[slot.id - 1u];
+        const cycles::CycleWord* w = slot.kind == cycles::LegacyWordKind::Value  ? value
+                                     : slot.kind == cycles::LegacyWordKind::Feed ? feed
+                                                                                 : direction;
+        if (w == nullptr || !w->value) {
+            if (p.optional) continue;
+            fail("cycle-syntax", KERF_TR_NOOP("cycle {1}: {2} expected in {1}.{3}"),
+                 {number, p.word, std::to_string(def.subNumber)});
+            return;
+        }
+        if (auto e = cycles::checkParameter(d, p, *w->value)) {
+            failCycle(*e);
+            return;
+        }
+        if (!m_cycle || m_cycle->descriptor != &d) continue;
+        if (slot.kind == cycles::LegacyWordKind::Feed) {
+            m_cycle->values.setFeed(slot.id, cycles::Feed::perMinute(*w->value * lengthScale()));
+        } else {
+            const bool length = p.unit == cycles::Unit::Millimetre;
+            m_cycle->values.set(slot.id, *w->value * (length ? lengthScale() : 1.0));
+        }
+    }
 }
 
 void KlartextInterpreter::executeGlobalDef(const GlobalDefinition& def) {

@@ -38,6 +38,10 @@
 #include "core/workpiece/simulated_tool_probe.h"
 #include "core/workpiece/simulated_workpiece.h"
 
+namespace kerf::cycles {
+struct LegacyCycle;
+}
+
 namespace kerf::klartext {
 
 struct KlartextSettings {
@@ -257,6 +261,8 @@ private:
     void programCall(const CycleDefinition& def);
     void spindleOrientation(const CycleDefinition& def);
     void threadCutting(const CycleDefinition& def);
+    // Machining cycles of older TNCs (1, 2, 4, 5, 17): sub-block words to the stored cycle.
+    void legacyCycle(const CycleDefinition& def, const cycles::LegacyCycle& legacy);
     void tolerance(const CycleDefinition& def);
     // FK free contour programming (klartext_fk.cpp): blocks go to the solver, resolved elements
     // are emitted as lines and arcs with the words and location of their own block.

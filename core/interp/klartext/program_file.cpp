@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/cycles/cycle_registry.h"
+#include "core/cycles/legacy/legacy_cycles.h"
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
@@ -283,7 +284,8 @@ void checkProgram(ProgramFile& program) {
                                       "cannot run past this block"),
                          {std::to_string(cycle->number)});
                 } else if (!cycle->probe && cycle->subNumber <= 0 &&
-                           cycles::findCycle(cycle->number) == nullptr) {
+                           cycles::findCycle(cycle->number) == nullptr &&
+                           cycles::findLegacyCycle(cycle->number) == nullptr) {
                     diag(Severity::Error, "not-supported", line.firstLine, 1,
                          KERF_TR_NOOP("cycle {1} is not supported yet; the program cannot run past "
                                       "this block"),

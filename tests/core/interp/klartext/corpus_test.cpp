@@ -34,13 +34,6 @@ const std::map<std::string, std::string> kKnownBad = {
     {"Plan-Beispiel.h", "calls TNC:\\Plan.h, which is not in the corpus"},
 };
 
-// Programs that use a feature not implemented yet: their check fails with "not supported"; the
-// others run to their end or to a problem of their own (the cycles 7, 8, 9, 10, 26 and 32 they use
-// all run).
-const std::vector<std::string> kStopAtUnsupported = {
-    "668.klartext",  // cycle 5 (obsolete circular pocket)
-};
-
 bool endsWith(const std::string& name, const std::string& suffix) {
     return name.size() >= suffix.size() &&
            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -51,11 +44,6 @@ bool knownBad(const std::string& name) {
         if (endsWith(name, suffix)) return true;
     }
     return false;
-}
-
-bool usesUnsupported(const std::string& name) {
-    return std::any_of(kStopAtUnsupported.begin(), kStopAtUnsupported.end(),
-                       [&](const std::string& s) { return endsWith(name, s); });
 }
 
 TEST(Corpus, RealProgramsCheckAndRunWithoutCrashing) {
@@ -77,7 +65,7 @@ TEST(Corpus, RealProgramsCheckAndRunWithoutCrashing) {
         KlartextInterpreter interpreter(sources, settings);
         const bool loaded = interpreter.load(entry.path());
         const bool errors = hasErrors(interpreter.diagnostics());
-        EXPECT_EQ(errors, knownBad(name) || usesUnsupported(name))
+        EXPECT_EQ(errors, knownBad(name))
             << name << ": "
             << (interpreter.diagnostics().empty() ? std::string()
                                                   : interpreter.diagnostics().front().format());
@@ -99,10 +87,11 @@ TEST(Corpus, RealProgramsCheckAndRunWithoutCrashing) {
             unsupported =
                 unsupported || (d.severity == Severity::Error && d.code == "not-supported");
         }
-        EXPECT_EQ(unsupported, usesUnsupported(name)) << name;
+        // Every cycle they use runs, the obsolete 1 and 5 of 668 and BewegBlv too.
+        EXPECT_FALSE(unsupported) << name;
     }
     EXPECT_EQ(programs, 29);  // 16 .h, 3 .H and 10 .klartext files in INDEX.md
-    EXPECT_EQ(clean, programs - static_cast<int>(kKnownBad.size() + kStopAtUnsupported.size()));
+    EXPECT_EQ(clean, programs - static_cast<int>(kKnownBad.size()));
     fs::remove_all(state);
 }
 
