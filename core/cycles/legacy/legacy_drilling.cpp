@@ -2,6 +2,7 @@
 // own sequence (advanced stop distance by depth); the tapping cycles run as 206 and 207.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/base/translate.h"
 #include "core/cycles/drilling/hole_levels.h"
@@ -23,6 +24,16 @@ void setStartLevels(CycleValues& modern, double start, double setUp, double dept
     modern.set(200, clearance);
     modern.set(203, depth > 0.0 ? start + clearance : start - clearance);
     modern.set(204, 0.0);
+}
+
+std::optional<CycleError> expandAs(int legacyNumber, const CycleDescriptor& modern,
+                                   const CycleValues& values, const CycleContext& context,
+                                   CyclePath& path) {
+    std::optional<CycleError> error = modern.expand(values, context, path);
+    // The cycle's number comes first in the messages ("cycle {1} needs a tool ...").
+    if (error && !error->args.empty() && error->args[0] == std::to_string(modern.number))
+        error->args[0] = std::to_string(legacyNumber);
+    return error;
 }
 
 }  // namespace legacy
@@ -78,7 +89,7 @@ std::optional<CycleError> expandTapping(const CycleValues& v, const CycleContext
     modern.set(201, v.number(2));
     modern.setFeed(206, v.feed(4));
     modern.set(211, v.number(3));
-    return kCycle206.expand(modern, ctx, path);
+    return expandAs(2, kCycle206, modern, ctx, path);
 }
 
 constexpr ParameterDescriptor kRigidTappingParameters[] = {
@@ -96,7 +107,7 @@ std::optional<CycleError> expandRigidTapping(const CycleValues& v, const CycleCo
     legacy::setStartLevels(modern, ctx.start.z(), v.number(1), v.number(2));
     modern.set(201, v.number(2));
     modern.set(239, v.number(3));
-    return kCycle207.expand(modern, ctx, path);
+    return expandAs(17, kCycle207, modern, ctx, path);
 }
 
 }  // namespace

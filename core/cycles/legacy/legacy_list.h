@@ -47,5 +47,10 @@ CycleValues defaultsOf(const CycleDescriptor& modern);
 // depth's sign leaves): the modern cycle's Q200 and Q203, and Q204 = 0, so it ends there too.
 void setStartLevels(CycleValues& modern, double start, double setUp, double depth);
 
+// Runs the modern cycle; its errors name the legacy cycle the program wrote.
+std::optional<CycleError> expandAs(int legacyNumber, const CycleDescriptor& modern,
+                                   const CycleValues& values, const CycleContext& context,
+                                   CyclePath& path);
+
 }  // namespace legacy
 }  // namespace kerf::cycles

@@ -83,7 +83,7 @@ std::optional<CycleError> expandPocket(const CycleValues& v, const CycleContext&
     m.set(220, v.number(9));
     m.set(224, 0.0);
     m.set(367, 0.0);  // the pocket's centre is the start
-    return kCycle251.expand(m, ctx, path);
+    return expandAs(4, kCycle251, m, ctx, path);
 }
 
 constexpr ParameterDescriptor kCircularPocketParameters[] = {
@@ -105,7 +105,7 @@ std::optional<CycleError> expandCircularPocket(const CycleValues& v, const Cycle
     if (v.number(2) == 0.0) return std::nullopt;
     CycleValues m = roughing(kCycle252, v, 6, 7, ctx.start.z());
     m.set(223, 2.0 * v.number(5));
-    return kCycle252.expand(m, ctx, path);
+    return expandAs(5, kCycle252, m, ctx, path);
 }
 
 }  // namespace

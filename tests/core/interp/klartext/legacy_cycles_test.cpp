@@ -177,6 +177,14 @@ TEST_F(LegacyCycles, AMissingValueIsAnErrorAtItsSubBlock) {
     run("4 CYCL DEF 1.0 PECKING\n5 CYCL DEF 1.1 SET UP 2\n6 CYCL DEF 1.2 DEPTH\n", 0, &error);
     EXPECT_NE(error.find(":7:"), std::string::npos) << error;  // file line 7 is block 6
     EXPECT_NE(error.find("cycle 1: DEPTH expected in 1.2"), std::string::npos) << error;
+
+    // An error of the modern cycle names the cycle the program wrote.
+    error.clear();
+    run("4 TOOL DEF 2 L+0 R+0\n5 TOOL CALL 2 Z S3000\n6 CYCL DEF 5.0 CIRCULAR POCKET\n"
+        "7 CYCL DEF 5.1 SET UP 2\n8 CYCL DEF 5.2 DEPTH -6\n9 CYCL DEF 5.3 PECKG 2\n"
+        "10 CYCL DEF 5.4 RADIUS 15\n11 CYCL DEF 5.5 F400 DR+\n12 CYCL CALL\n",
+        0, &error);
+    EXPECT_NE(error.find("cycle 5 needs a tool"), std::string::npos) << error;
 }
 
 }  // namespace
