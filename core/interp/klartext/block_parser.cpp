@@ -52,8 +52,8 @@ struct BlockParser::Context {
     ParseProblem& problem;
     bool failed = false;
 
-    Context(std::string_view text, FormulaEnvironment* env, ParseProblem& p)
-        : cursor(text), formula(cursor, env), problem(p), evaluating(env != nullptr) {}
+    Context(std::string_view text, FormulaEnvironment* env, FormulaCache& formulas, ParseProblem& p)
+        : cursor(text), formula(cursor, env, &formulas), problem(p), evaluating(env != nullptr) {}
 
     // Values computed from Q parameters are only known when the block runs: range errors are
     // reported then, not when the program is checked.
@@ -324,7 +324,7 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
     out.statement = Empty{};
     out.blockNumber = -1;
     out.hidden = false;
-    Context c(line.text, m_env, m_problem);
+    Context c(line.text, m_env, m_formulas, m_problem);
     Cursor& cur = c.cursor;
     cur.skipBlanks();
     if (isDigit(cur.peekRaw())) {
