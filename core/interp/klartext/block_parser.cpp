@@ -52,8 +52,8 @@ struct BlockParser::Context {
     ParseProblem& problem;
     bool failed = false;
 
-    Context(std::string_view text, FormulaEnvironment* env, ParseProblem& p)
-        : cursor(text), formula(cursor, env), problem(p), evaluating(env != nullptr) {}
+    Context(std::string_view text, FormulaEnvironment* env, FormulaCache& formulas, ParseProblem& p)
+        : cursor(text), formula(cursor, env, &formulas), problem(p), evaluating(env != nullptr) {}
 
     // Values computed from Q parameters are only known when the block runs: range errors are
     // reported then, not when the program is checked.
@@ -324,7 +324,7 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
     out.statement = Empty{};
     out.blockNumber = -1;
     out.hidden = false;
-    Context c(line.text, m_env, m_problem);
+    Context c(line.text, m_env, m_formulas, m_problem);
     Cursor& cur = c.cursor;
     cur.skipBlanks();
     if (isDigit(cur.peekRaw())) {
@@ -397,319 +397,9 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         }
         return true;
     }
-    if (head == "CC") {
-        CircleCenter b;
-        if (!c.parseWords(kAxes, {&b.coords})) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "C") {
-        CircleBlock b;
-        Words w{&b.coords, &b.words, &b.direction};
-        if (!c.parseWords(kAxes | kComp | kFeed | kM | kDirection, w)) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "CR") {
-        CircleRadiusBlock b;
-        std::optional<double> radius;
-        Words w{&b.coords, &b.words, &b.direction, &radius};
-        if (!c.parseWords(kAxes | kComp | kFeed | kM | kDirection | kRadius, w)) return false;
-        if (!radius) return c.fail("syntax", KERF_TR_NOOP("CR needs a radius R"));
-        b.radius = *radius;
-        out.statement = b;
-        return true;
-    }
-    if (head == "CT") {
-        CircleTangentBlock b;
-        if (!c.parseWords(kAxes | kComp | kFeed | kM, {&b.coords, &b.words})) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "LP") {
-        LinePolarBlock b;
-        Words w{&b.coords, &b.words};
-        w.polar = &b.polar;
-        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "CP") {
-        CirclePolarBlock b;
-        Words w{&b.coords, &b.words, &b.direction};
-        w.polar = &b.polar;
-        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar | kDirection, w)) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "CTP") {
-        CircleTangentPolarBlock b;
-        Words w{&b.coords, &b.words};
-        w.polar = &b.polar;
-        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "RND" || head == "CHF") {
-        bool round = head == "RND";
-        if (round) cur.acceptPrefix("R");
-        double value = 0.0;
-        if (!c.value(value)) return false;
-        FeedWord feed;
-        if (upper(cur.peek()) == 'F' && !c.parseFeed(feed)) return false;
-        if (!c.expectEnd()) return false;
-        if (value <= 0.0 &&
-            !c.valueError(round ? KERF_TR_NOOP("the rounding radius must be positive")
-                                : KERF_TR_NOOP("the chamfer length must be positive"))) {
-            return false;
-        }
-        if (feed.kind == FeedWord::Kind::Max) {
-            return c.fail("syntax", KERF_TR_NOOP("FMAX is not allowed here"));
-        }
-        if (round) {
-            out.statement = RoundBlock{value, feed};
-        } else {
-            out.statement = ChamferBlock{value, feed};
-        }
-        return true;
-    }
-    if (head == "APPR" || head == "DEP") {
-        ApproachBlock b;
-        b.depart = head == "DEP";
-        std::string_view kind = cur.word();
-        std::string k = upperCopy(kind);
-        if (!k.empty() && k[0] == 'P') {
-            b.polar = true;
-            k.erase(0, 1);
-        }
-        if (k == "LT") {
-            b.kind = ApproachKind::LT;
-        } else if (k == "LN") {
-            b.kind = ApproachKind::LN;
-        } else if (k == "CT") {
-            b.kind = ApproachKind::CT;
-        } else if (k == "LCT") {
-            b.kind = ApproachKind::LCT;
-        } else {
-            cur.setPosition(static_cast<size_t>(kind.data() - text.data()));
-            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"),
-                          {std::string(head)});
-        }
-        Words w{&b.coords, &b.words};
-        w.polar = &b.polarWords;
-        w.length = &b.length;
-        w.angle = &b.angle;
-        w.radius = &b.radius;
-        uint32_t flags = kAxes | kComp | kFeed | kM | kPolar | kLength | kAngle | kRadius;
-        if (b.kind == ApproachKind::LT || b.kind == ApproachKind::LN) flags &= ~kRadius;
-        if (!c.parseWords(flags, w)) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "LBL") {
-        Label b;
-        if (!parseLabelTarget(c, b.target, true)) return false;
-        if (!c.expectEnd()) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "CALL") {
-        if (cur.acceptKeyword("LBL")) {
-            CallLabel b;
-            if (!parseLabelTarget(c, b.target, false)) return false;
-            if ((cur.acceptKeyword("REP") || cur.acceptPrefix("REP")) && !cur.atEnd()) {
-                double rep = 0.0;
-                if (!c.value(rep)) return false;
-                if (cur.acceptChar('/')) {  // "REP 2/2": the control shows repeats left/total
-                    double total = 0.0;
-                    if (!c.value(total)) return false;
-                    rep = total;
-                }
-                // Written so that NaN is out of range too.
-                const bool inRange = rep >= 0.0 && rep <= 65534.0;
-                if (!inRange && !c.valueError(KERF_TR_NOOP("REP must be between 0 and 65534"))) {
-                    return false;
-                }
-                b.repeat = inRange ? static_cast<int>(rep) : 0;
-            }
-            if (!c.expectEnd()) return false;
-            out.statement = b;
-            return true;
-        }
-        if (cur.acceptKeyword("PGM")) {
-            std::string_view path = cur.restUntilComment();
-            if (path.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
-            out.statement = CallPgm{std::string(path)};
-            return true;
-        }
-        if (cur.acceptKeyword("SELECTED")) return deferred("CALL SELECTED PGM");
-        return c.fail("syntax", KERF_TR_NOOP("LBL or PGM expected after CALL"));
-    }
-    if (head == "STOP") {
-        StopBlock b;
-        CommonWords words;
-        if (!c.parseWords(kM, {nullptr, &words})) return false;
-        b.m = words.m;
-        out.statement = b;
-        return true;
-    }
-    if (head == "M") {
-        cur.setPosition(headAt);
-        MFunctionBlock b;
-        if (!c.parseWords(kM | kFeed, {nullptr, &b.words})) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "TOOL") {
-        if (cur.acceptKeyword("CALL")) {
-            ToolCall b;
-            if (auto name = cur.quoted()) {
-                b.name = std::string(*name);
-            } else if (isDigit(cur.peek())) {
-                auto number = cur.unsignedNumber();  // "5.1": tool 5, index 1
-                if (!number || *number > 32767) {
-                    return c.fail("range", KERF_TR_NOOP("tool number out of range"));
-                }
-                b.number = static_cast<int>(*number);
-            } else if (upper(cur.peek()) == 'Q') {
-                size_t at = cur.position();
-                auto ref = c.formula.parameter(true);
-                if (!ref) {
-                    cur.setPosition(at);
-                } else if (ref->kind == QKind::QS) {
-                    b.name = m_env ? m_env->string(ref->index) : std::string();
-                } else {
-                    double v = m_env ? m_env->number(*ref) : 0.0;
-                    b.number = saturatingInt(std::round(v));
-                }
-            }
-            if (auto axis = parseToolAxis(cur)) b.axis = axis;
-            while (!cur.atEnd()) {
-                double v = 0.0;
-                if (cur.acceptPrefix("DR2")) {
-                    if (!c.value(v)) return false;
-                    b.dr2 = v;
-                } else if (cur.acceptPrefix("DL")) {
-                    if (!c.value(v)) return false;
-                    b.dl = v;
-                } else if (cur.acceptPrefix("DR")) {
-                    if (!c.value(v)) return false;
-                    b.dr = v;
-                } else if (cur.acceptPrefix("S")) {
-                    if (!c.value(v)) return false;
-                    if (v < 0.0 &&
-                        !c.valueError(KERF_TR_NOOP("the spindle speed must not be negative"))) {
-                        return false;
-                    }
-                    b.speed = v;
-                } else if (upper(cur.peek()) == 'F') {
-                    FeedWord feed;
-                    if (!c.parseFeed(feed)) return false;
-                    b.feed = feed.value;
-                } else {
-                    return c.unexpected();
-                }
-            }
-            out.statement = b;
-            return true;
-        }
-        if (cur.acceptKeyword("DEF")) {
-            ToolDef b;
-            if (auto name = cur.quoted()) {
-                b.name = std::string(*name);
-            } else if (isDigit(cur.peek())) {
-                auto number = cur.unsignedNumber();
-                b.number = saturatingInt(number.value_or(0.0));
-            }
-            while (!cur.atEnd()) {
-                double v = 0.0;
-                if (cur.acceptPrefix("L")) {
-                    if (!c.value(v)) return false;
-                    b.length = v;
-                } else if (cur.acceptPrefix("R")) {
-                    if (!c.value(v)) return false;
-                    b.radius = v;
-                } else {
-                    return c.unexpected();
-                }
-            }
-            out.statement = b;
-            return true;
-        }
-        return c.fail("syntax", KERF_TR_NOOP("CALL or DEF expected after TOOL"));
-    }
-    if (head == "BEGIN" || head == "END") {
-        if (!cur.acceptKeyword("PGM")) return c.fail("syntax", KERF_TR_NOOP("PGM expected"));
-        std::string_view name = cur.word();
-        if (name.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
-        bool inch = false;
-        if (cur.acceptKeyword("INCH")) {
-            inch = true;
-        } else if (!cur.acceptKeyword("MM")) {
-            return c.fail("syntax", KERF_TR_NOOP("MM or INCH expected"));
-        }
-        if (!c.expectEnd()) return false;
-        if (head == "BEGIN") {
-            out.statement = BeginPgm{std::string(name), inch};
-        } else {
-            out.statement = EndPgm{std::string(name), inch};
-        }
-        return true;
-    }
-    if (head == "BLK") {
-        if (!cur.acceptKeyword("FORM")) return c.fail("syntax", KERF_TR_NOOP("FORM expected"));
-        BlkForm b;
-        if (cur.acceptKeyword("CYLINDER")) {
-            b.kind = BlkForm::Kind::Cylinder;
-            auto axis = parseToolAxis(cur);
-            if (!axis) return c.fail("syntax", KERF_TR_NOOP("axis expected"));
-            b.toolAxis = *axis;
-            while (!cur.atEnd()) {
-                double v = 0.0;
-                if (cur.acceptPrefix("RI")) {
-                    if (!c.value(v)) return false;
-                    b.innerRadius = v;
-                } else if (cur.acceptPrefix("DIST")) {
-                    if (!c.value(v)) return false;
-                    b.distance = v;
-                } else if (cur.acceptPrefix("D")) {
-                    if (!c.value(v)) return false;
-                    b.radius = v / 2.0;
-                } else if (cur.acceptPrefix("R")) {
-                    if (!c.value(v)) return false;
-                    b.radius = v;
-                } else if (cur.acceptPrefix("L")) {
-                    if (!c.value(v)) return false;
-                    b.length = v;
-                } else {
-                    return c.unexpected();
-                }
-            }
-            out.statement = b;
-            return true;
-        }
-        if (cur.peekKeyword("ROTATION")) return deferred("BLK FORM ROTATION");
-        auto kind = cur.unsignedNumber();
-        if (!kind || (*kind != 0.1 && *kind != 0.2)) {
-            return c.fail("syntax", KERF_TR_NOOP("0.1, 0.2 or CYLINDER expected"));
-        }
-        if (*kind == 0.1) {
-            b.kind = BlkForm::Kind::MinPoint;
-            auto axis = parseToolAxis(cur);
-            if (!axis) return c.fail("syntax", KERF_TR_NOOP("tool axis expected"));
-            b.toolAxis = *axis;
-        } else {
-            b.kind = BlkForm::Kind::MaxPoint;
-        }
-        if (!c.parseWords(kAxes, {&b.point})) return false;
-        out.statement = b;
-        return true;
-    }
-    if (head == "QC" || ((head == "SEL" || head == "DECLARE") && cur.peekKeyword("CONTOUR")) ||
-        (head == "CONTOUR" && cur.peekKeyword("DEF"))) {
-        return parseContourFormula(head, line, head == "QC" ? headAt : cur.position(), out);
-    }
-    if (head == "Q" || head == "QL" || head == "QR" || head == "QS" || head == "DECLARE") {
+    // Q parameters and jumps are what loops consist of: before the long list of other heads.
+    if (head == "Q" || head == "QL" || head == "QR" || head == "QS" ||
+        (head == "DECLARE" && !cur.peekKeyword("CONTOUR"))) {
         if (head == "DECLARE") {
             if (!cur.acceptKeyword("STRING")) return deferred("DECLARE");
         } else {
@@ -1042,6 +732,318 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 return c.fail("syntax", KERF_TR_NOOP("FN {1} does not exist"),
                               {std::to_string(*fn)});
         }
+    }
+    if (head == "CC") {
+        CircleCenter b;
+        if (!c.parseWords(kAxes, {&b.coords})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "C") {
+        CircleBlock b;
+        Words w{&b.coords, &b.words, &b.direction};
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kDirection, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CR") {
+        CircleRadiusBlock b;
+        std::optional<double> radius;
+        Words w{&b.coords, &b.words, &b.direction, &radius};
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kDirection | kRadius, w)) return false;
+        if (!radius) return c.fail("syntax", KERF_TR_NOOP("CR needs a radius R"));
+        b.radius = *radius;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CT") {
+        CircleTangentBlock b;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM, {&b.coords, &b.words})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "LP") {
+        LinePolarBlock b;
+        Words w{&b.coords, &b.words};
+        w.polar = &b.polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CP") {
+        CirclePolarBlock b;
+        Words w{&b.coords, &b.words, &b.direction};
+        w.polar = &b.polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar | kDirection, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CTP") {
+        CircleTangentPolarBlock b;
+        Words w{&b.coords, &b.words};
+        w.polar = &b.polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "RND" || head == "CHF") {
+        bool round = head == "RND";
+        if (round) cur.acceptPrefix("R");
+        double value = 0.0;
+        if (!c.value(value)) return false;
+        FeedWord feed;
+        if (upper(cur.peek()) == 'F' && !c.parseFeed(feed)) return false;
+        if (!c.expectEnd()) return false;
+        if (value <= 0.0 &&
+            !c.valueError(round ? KERF_TR_NOOP("the rounding radius must be positive")
+                                : KERF_TR_NOOP("the chamfer length must be positive"))) {
+            return false;
+        }
+        if (feed.kind == FeedWord::Kind::Max) {
+            return c.fail("syntax", KERF_TR_NOOP("FMAX is not allowed here"));
+        }
+        if (round) {
+            out.statement = RoundBlock{value, feed};
+        } else {
+            out.statement = ChamferBlock{value, feed};
+        }
+        return true;
+    }
+    if (head == "APPR" || head == "DEP") {
+        ApproachBlock b;
+        b.depart = head == "DEP";
+        std::string_view kind = cur.word();
+        std::string k = upperCopy(kind);
+        if (!k.empty() && k[0] == 'P') {
+            b.polar = true;
+            k.erase(0, 1);
+        }
+        if (k == "LT") {
+            b.kind = ApproachKind::LT;
+        } else if (k == "LN") {
+            b.kind = ApproachKind::LN;
+        } else if (k == "CT") {
+            b.kind = ApproachKind::CT;
+        } else if (k == "LCT") {
+            b.kind = ApproachKind::LCT;
+        } else {
+            cur.setPosition(static_cast<size_t>(kind.data() - text.data()));
+            return c.fail("syntax", KERF_TR_NOOP("LT, LN, CT or LCT expected after {1}"),
+                          {std::string(head)});
+        }
+        Words w{&b.coords, &b.words};
+        w.polar = &b.polarWords;
+        w.length = &b.length;
+        w.angle = &b.angle;
+        w.radius = &b.radius;
+        uint32_t flags = kAxes | kComp | kFeed | kM | kPolar | kLength | kAngle | kRadius;
+        if (b.kind == ApproachKind::LT || b.kind == ApproachKind::LN) flags &= ~kRadius;
+        if (!c.parseWords(flags, w)) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "LBL") {
+        Label b;
+        if (!parseLabelTarget(c, b.target, true)) return false;
+        if (!c.expectEnd()) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "CALL") {
+        if (cur.acceptKeyword("LBL")) {
+            CallLabel b;
+            if (!parseLabelTarget(c, b.target, false)) return false;
+            if ((cur.acceptKeyword("REP") || cur.acceptPrefix("REP")) && !cur.atEnd()) {
+                double rep = 0.0;
+                if (!c.value(rep)) return false;
+                if (cur.acceptChar('/')) {  // "REP 2/2": the control shows repeats left/total
+                    double total = 0.0;
+                    if (!c.value(total)) return false;
+                    rep = total;
+                }
+                // Written so that NaN is out of range too.
+                const bool inRange = rep >= 0.0 && rep <= 65534.0;
+                if (!inRange && !c.valueError(KERF_TR_NOOP("REP must be between 0 and 65534"))) {
+                    return false;
+                }
+                b.repeat = inRange ? static_cast<int>(rep) : 0;
+            }
+            if (!c.expectEnd()) return false;
+            out.statement = b;
+            return true;
+        }
+        if (cur.acceptKeyword("PGM")) {
+            std::string_view path = cur.restUntilComment();
+            if (path.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
+            out.statement = CallPgm{std::string(path)};
+            return true;
+        }
+        if (cur.acceptKeyword("SELECTED")) return deferred("CALL SELECTED PGM");
+        return c.fail("syntax", KERF_TR_NOOP("LBL or PGM expected after CALL"));
+    }
+    if (head == "STOP") {
+        StopBlock b;
+        CommonWords words;
+        if (!c.parseWords(kM, {nullptr, &words})) return false;
+        b.m = words.m;
+        out.statement = b;
+        return true;
+    }
+    if (head == "M") {
+        cur.setPosition(headAt);
+        MFunctionBlock b;
+        if (!c.parseWords(kM | kFeed, {nullptr, &b.words})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "TOOL") {
+        if (cur.acceptKeyword("CALL")) {
+            ToolCall b;
+            if (auto name = cur.quoted()) {
+                b.name = std::string(*name);
+            } else if (isDigit(cur.peek())) {
+                auto number = cur.unsignedNumber();  // "5.1": tool 5, index 1
+                if (!number || *number > 32767) {
+                    return c.fail("range", KERF_TR_NOOP("tool number out of range"));
+                }
+                b.number = static_cast<int>(*number);
+            } else if (upper(cur.peek()) == 'Q') {
+                size_t at = cur.position();
+                auto ref = c.formula.parameter(true);
+                if (!ref) {
+                    cur.setPosition(at);
+                } else if (ref->kind == QKind::QS) {
+                    b.name = m_env ? m_env->string(ref->index) : std::string();
+                } else {
+                    double v = m_env ? m_env->number(*ref) : 0.0;
+                    b.number = saturatingInt(std::round(v));
+                }
+            }
+            if (auto axis = parseToolAxis(cur)) b.axis = axis;
+            while (!cur.atEnd()) {
+                double v = 0.0;
+                if (cur.acceptPrefix("DR2")) {
+                    if (!c.value(v)) return false;
+                    b.dr2 = v;
+                } else if (cur.acceptPrefix("DL")) {
+                    if (!c.value(v)) return false;
+                    b.dl = v;
+                } else if (cur.acceptPrefix("DR")) {
+                    if (!c.value(v)) return false;
+                    b.dr = v;
+                } else if (cur.acceptPrefix("S")) {
+                    if (!c.value(v)) return false;
+                    if (v < 0.0 &&
+                        !c.valueError(KERF_TR_NOOP("the spindle speed must not be negative"))) {
+                        return false;
+                    }
+                    b.speed = v;
+                } else if (upper(cur.peek()) == 'F') {
+                    FeedWord feed;
+                    if (!c.parseFeed(feed)) return false;
+                    b.feed = feed.value;
+                } else {
+                    return c.unexpected();
+                }
+            }
+            out.statement = b;
+            return true;
+        }
+        if (cur.acceptKeyword("DEF")) {
+            ToolDef b;
+            if (auto name = cur.quoted()) {
+                b.name = std::string(*name);
+            } else if (isDigit(cur.peek())) {
+                auto number = cur.unsignedNumber();
+                b.number = saturatingInt(number.value_or(0.0));
+            }
+            while (!cur.atEnd()) {
+                double v = 0.0;
+                if (cur.acceptPrefix("L")) {
+                    if (!c.value(v)) return false;
+                    b.length = v;
+                } else if (cur.acceptPrefix("R")) {
+                    if (!c.value(v)) return false;
+                    b.radius = v;
+                } else {
+                    return c.unexpected();
+                }
+            }
+            out.statement = b;
+            return true;
+        }
+        return c.fail("syntax", KERF_TR_NOOP("CALL or DEF expected after TOOL"));
+    }
+    if (head == "BEGIN" || head == "END") {
+        if (!cur.acceptKeyword("PGM")) return c.fail("syntax", KERF_TR_NOOP("PGM expected"));
+        std::string_view name = cur.word();
+        if (name.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
+        bool inch = false;
+        if (cur.acceptKeyword("INCH")) {
+            inch = true;
+        } else if (!cur.acceptKeyword("MM")) {
+            return c.fail("syntax", KERF_TR_NOOP("MM or INCH expected"));
+        }
+        if (!c.expectEnd()) return false;
+        if (head == "BEGIN") {
+            out.statement = BeginPgm{std::string(name), inch};
+        } else {
+            out.statement = EndPgm{std::string(name), inch};
+        }
+        return true;
+    }
+    if (head == "BLK") {
+        if (!cur.acceptKeyword("FORM")) return c.fail("syntax", KERF_TR_NOOP("FORM expected"));
+        BlkForm b;
+        if (cur.acceptKeyword("CYLINDER")) {
+            b.kind = BlkForm::Kind::Cylinder;
+            auto axis = parseToolAxis(cur);
+            if (!axis) return c.fail("syntax", KERF_TR_NOOP("axis expected"));
+            b.toolAxis = *axis;
+            while (!cur.atEnd()) {
+                double v = 0.0;
+                if (cur.acceptPrefix("RI")) {
+                    if (!c.value(v)) return false;
+                    b.innerRadius = v;
+                } else if (cur.acceptPrefix("DIST")) {
+                    if (!c.value(v)) return false;
+                    b.distance = v;
+                } else if (cur.acceptPrefix("D")) {
+                    if (!c.value(v)) return false;
+                    b.radius = v / 2.0;
+                } else if (cur.acceptPrefix("R")) {
+                    if (!c.value(v)) return false;
+                    b.radius = v;
+                } else if (cur.acceptPrefix("L")) {
+                    if (!c.value(v)) return false;
+                    b.length = v;
+                } else {
+                    return c.unexpected();
+                }
+            }
+            out.statement = b;
+            return true;
+        }
+        if (cur.peekKeyword("ROTATION")) return deferred("BLK FORM ROTATION");
+        auto kind = cur.unsignedNumber();
+        if (!kind || (*kind != 0.1 && *kind != 0.2)) {
+            return c.fail("syntax", KERF_TR_NOOP("0.1, 0.2 or CYLINDER expected"));
+        }
+        if (*kind == 0.1) {
+            b.kind = BlkForm::Kind::MinPoint;
+            auto axis = parseToolAxis(cur);
+            if (!axis) return c.fail("syntax", KERF_TR_NOOP("tool axis expected"));
+            b.toolAxis = *axis;
+        } else {
+            b.kind = BlkForm::Kind::MaxPoint;
+        }
+        if (!c.parseWords(kAxes, {&b.point})) return false;
+        out.statement = b;
+        return true;
+    }
+    if (head == "QC" || ((head == "SEL" || head == "DECLARE") && cur.peekKeyword("CONTOUR")) ||
+        (head == "CONTOUR" && cur.peekKeyword("DEF"))) {
+        return parseContourFormula(head, line, head == "QC" ? headAt : cur.position(), out);
     }
     if (head == "TCH") {
         if (!cur.acceptKeyword("PROBE"))

@@ -47,6 +47,7 @@ private:
                 std::vector<std::string> args = {});
 
     FormulaEnvironment* m_env;
+    FormulaCache m_formulas;  // Q formulas of loops and subprograms, compiled
     ParseProblem m_problem;
 };
 

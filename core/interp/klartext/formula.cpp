@@ -169,7 +169,7 @@ std::optional<double> FormulaParser::wordValue() {
     }
     if (c == '(') {
         m_cursor.setPosition(m_cursor.position() + 1);
-        auto value = expression();
+        auto value = additive();
         if (!value) return std::nullopt;
         if (!m_cursor.acceptChar(')')) return fail("syntax", KERF_TR_NOOP("')' expected"));
         return sign * *value;
@@ -186,7 +186,33 @@ std::optional<double> FormulaParser::wordValue() {
 }
 
 std::optional<double> FormulaParser::expression() {
-    return additive();
+    if (m_cache == nullptr || m_env == nullptr) return additive();
+    m_cursor.skipBlanks();
+    const std::string_view text = m_cursor.rest();
+    FormulaCache::Entry& entry = m_cache->entryFor(text);
+    if (entry.text.empty() || entry.text != text) return recordExpression(entry, text);
+    if (auto value = entry.formula.evaluate(*m_env)) {
+        m_cursor.setPosition(m_cursor.position() + entry.length);
+        return value;
+    }
+    return additive();  // the parser reports the error where it is
+}
+
+std::optional<double> FormulaParser::recordExpression(FormulaCache::Entry& entry,
+                                                      std::string_view text) {
+    const size_t start = m_cursor.position();
+    entry.formula.clear();
+    m_recording = &entry.formula;
+    m_recordable = true;
+    auto value = additive();
+    m_recording = nullptr;
+    if (value && m_recordable && entry.formula.complete()) {
+        entry.text.assign(text);
+        entry.length = m_cursor.position() - start;
+    } else {
+        entry.text.clear();
+    }
+    return value;
 }
 
 std::optional<double> FormulaParser::additive() {
@@ -199,6 +225,7 @@ std::optional<double> FormulaParser::additive() {
         m_cursor.setPosition(at + 1);
         auto right = multiplicative();
         if (!right) return std::nullopt;
+        record(c == '+' ? CompiledFormula::Operation::Add : CompiledFormula::Operation::Subtract);
         left = overflowCheck(c == '+' ? *left + *right : *left - *right, at, c);
         if (!left) return std::nullopt;
     }
@@ -214,6 +241,9 @@ std::optional<double> FormulaParser::multiplicative() {
         m_cursor.setPosition(at + 1);
         auto right = power();
         if (!right) return std::nullopt;
+        record(c == '*'   ? CompiledFormula::Operation::Multiply
+               : c == '/' ? CompiledFormula::Operation::Divide
+                          : CompiledFormula::Operation::Modulo);
         if (c == '*') {
             left = overflowCheck(*left * *right, at, c);
             if (!left) return std::nullopt;
@@ -239,6 +269,7 @@ std::optional<double> FormulaParser::power() {
         m_cursor.setPosition(m_cursor.position() + 1);
         auto right = unary();
         if (!right) return std::nullopt;
+        record(CompiledFormula::Operation::Power);
         auto value = domainCheck(std::pow(*left, *right), "^");
         if (!value) return std::nullopt;
         left = value;
@@ -258,7 +289,9 @@ std::optional<double> FormulaParser::unary() {
         m_cursor.setPosition(m_cursor.position() + 1);
         auto value = unary();
         if (!value) return std::nullopt;
-        return c == '-' ? -*value : *value;
+        if (c == '+') return *value;
+        record(CompiledFormula::Operation::Negate);
+        return -*value;
     }
     if (isLetter(c) && upper(c) != 'Q') {
         // One look at the word decides between a function, PI and a string function.
@@ -278,15 +311,18 @@ std::optional<double> FormulaParser::unary() {
                 m_cursor.setPosition(end);
                 auto argument = unary();
                 if (!argument) return std::nullopt;
+                if (m_recording) m_recording->pushFunction(f.apply);
                 return domainCheck(f.apply(*argument), f.name.data());
             }
             if (name == "PI") {
                 m_cursor.setPosition(end);
+                if (m_recording) m_recording->pushNumber(kPi);
                 return kPi;
             }
             for (std::string_view function : {"STRLEN", "STRCOMP", "INSTR", "TONUMB"}) {
                 if (name == function) {
                     m_cursor.setPosition(end);
+                    m_recordable = false;  // reads strings
                     return stringFunction(function);
                 }
             }
@@ -299,15 +335,21 @@ std::optional<double> FormulaParser::primary() {
     char c = m_cursor.peek();
     if (c == '(') {
         m_cursor.setPosition(m_cursor.position() + 1);
-        auto value = expression();
+        auto value = additive();
         if (!value) return std::nullopt;
         if (!m_cursor.acceptChar(')')) return fail("syntax", KERF_TR_NOOP("')' expected"));
         return value;
     }
     if (isDigit(c) || c == '.') {
-        if (auto number = m_cursor.unsignedNumber()) return number;
+        if (auto number = m_cursor.unsignedNumber()) {
+            if (m_recording) m_recording->pushNumber(*number);
+            return number;
+        }
     }
-    if (auto ref = parameter(false)) return read(*ref);
+    if (auto ref = parameter(false)) {
+        if (m_recording) m_recording->pushRead(*ref);
+        return read(*ref);
+    }
     if (m_problem) return std::nullopt;
     if (m_cursor.atEnd()) return fail("syntax", KERF_TR_NOOP("incomplete formula"));
     return fail("syntax", KERF_TR_NOOP("unexpected '{1}' in formula"),

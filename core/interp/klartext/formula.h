@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/interp/klartext/cursor.h"
+#include "core/interp/klartext/formula_cache.h"
 #include "core/interp/klartext/q_parameters.h"
 
 namespace kerf::klartext {
@@ -38,8 +39,9 @@ struct ParseProblem {
 // degrees. Without an environment the parser only checks syntax and every value reads as 0.
 class FormulaParser {
 public:
-    FormulaParser(Cursor& cursor, FormulaEnvironment* environment)
-        : m_cursor(cursor), m_env(environment) {}
+    // With a cache, expression() evaluates formulas it has parsed before from their compiled form.
+    FormulaParser(Cursor& cursor, FormulaEnvironment* environment, FormulaCache* cache = nullptr)
+        : m_cursor(cursor), m_env(environment), m_cache(cache) {}
 
     std::optional<double> expression();
     std::optional<std::string> stringExpression();
@@ -70,9 +72,17 @@ private:
     std::optional<double> domainCheck(double value, const char* what);
     // An arithmetic result that is not finite is an overflow, reported at its operator.
     std::optional<double> overflowCheck(double value, size_t operatorOffset, char op);
+    // Parses and evaluates the formula at the cursor, recording it into `entry`.
+    std::optional<double> recordExpression(FormulaCache::Entry& entry, std::string_view text);
+    void record(CompiledFormula::Operation operation) {
+        if (m_recording) m_recording->pushOperation(operation);
+    }
 
     Cursor& m_cursor;
     FormulaEnvironment* m_env;
+    FormulaCache* m_cache;
+    CompiledFormula* m_recording = nullptr;  // while expression() records
+    bool m_recordable = true;                // false once the formula uses what cannot be recorded
     std::optional<ParseProblem> m_problem;
     size_t m_problemOffset = 0;
     int m_depth = 0;

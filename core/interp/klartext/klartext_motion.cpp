@@ -63,7 +63,7 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
     const double scale = lengthScale();
     const bool machine = hasM(m_currentM, 91) || hasM(m_currentM, 92);
     // Machine coordinates bypass the coordinate transformations: set them in the preset frame.
-    Pose work = m_frame.toWorkpiece(m_programmed);
+    Pose work = machine ? m_frame.toWorkpiece(m_programmed) : Pose{};
     for (int i = 0; i < kAxisCount; ++i) {
         const AxisWord& word = coords.axes[static_cast<size_t>(i)];
         if (!word.present) continue;

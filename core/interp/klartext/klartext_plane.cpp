@@ -343,11 +343,12 @@ double KlartextInterpreter::rotaryTarget(Axis axis, double current, double progr
 
 bool KlartextInterpreter::rotaryWithinLimits(const Pose& programTarget) {
     if (m_settings.machine == nullptr) return true;
-    const Pose stream = m_frame.toWorkpiece(programTarget);
+    std::optional<Pose> stream;  // transformed once, and only for a machine with limited rotaries
     for (const machine::AxisConfig& axis : m_settings.machine->axes) {
         if (axis.type != machine::AxisType::Rotary || axis.endless || !axis.enabled) continue;
+        if (!stream) stream = m_frame.toWorkpiece(programTarget);
         const Axis a = *axisFromLetter(axis.letter);
-        const double position = stream[a] + m_settings.presetInMachine[a];
+        const double position = (*stream)[a] + m_settings.presetInMachine[a];
         if (position < axis.minLimit - 1e-9 || position > axis.maxLimit + 1e-9) {
             fail("limit",
                  KERF_TR_NOOP("the move would take axis {1} to {2} deg (machine coordinates), "

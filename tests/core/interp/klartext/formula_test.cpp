@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/interp/klartext/formula_cache.h"
+
 namespace kerf::klartext {
 namespace {
 
@@ -200,6 +202,71 @@ TEST(Formula, AStringHoldsAtMost255Characters) {
     EXPECT_EQ(failure("TOCHAR ( DAT+Q1 DECIMALS3 )", &env, true).code, "string-length");
     EXPECT_EQ(failure(std::string("\"") + std::string(256, 'x') + "\"", nullptr, true).code,
               "string-length");
+}
+
+// A formula evaluated again through the cache, with `values` as the parameters now.
+struct CachedRun {
+    std::optional<double> value;
+    size_t end = 0;  // where the cursor stops
+    std::optional<ParseProblem> problem;
+};
+CachedRun runCached(const std::string& text, FormulaCache& cache, FakeEnvironment& env) {
+    Cursor c(text);
+    FormulaParser p(c, &env, &cache);
+    CachedRun run{p.expression(), c.position(), p.problem()};
+    return run;
+}
+
+TEST(FormulaCache, ARepeatedFormulaGivesTheParsersBitsWithNewParameterValues) {
+    const std::string text =
+        "( 1 + Q14 ) / 2 * Q13 * Q12 - SIN ( Q13 * 8.185 ) ^ 2 % 0.7 + -PI ; x";
+    FakeEnvironment env;
+    FormulaCache cache;
+    for (int i = 1; i <= 5; ++i) {
+        env.values[12] = 0.2;
+        env.values[13] = i;
+        env.values[14] = i % 2 == 0 ? 1.0 : -1.0;
+        CachedRun cached = runCached(text, cache, env);
+        ASSERT_TRUE(cached.value) << i;
+        // Worked out by hand in the parser's order of operations.
+        const double sine = std::sin(i * 8.185 * (3.14159265358979323846 / 180.0));
+        const double expected = (1 + env.values[14]) / 2 * i * 0.2 -
+                                std::fmod(std::pow(sine, 2), 0.7) + -3.14159265358979323846;
+        EXPECT_EQ(*cached.value, expected) << i;     // the same bits, not just close
+        EXPECT_EQ(cached.end, text.find(';')) << i;  // stops at the comment
+    }
+}
+
+TEST(FormulaCache, AnErrorInACachedFormulaIsReportedWhereTheParserFindsIt) {
+    FakeEnvironment env;
+    FormulaCache cache;
+    env.values[1] = 4;
+    env.values[2] = 2;
+    ASSERT_TRUE(runCached("Q1 / ( Q2 - 2 ) + 1", cache, env).value == std::nullopt);
+    env.values[2] = 1;
+    EXPECT_EQ(runCached("Q1 / ( Q2 - 2 ) + 1", cache, env).value, -3.0);
+    env.values[2] = 2;  // recorded now: the division by zero comes from the evaluation
+    CachedRun run = runCached("Q1 / ( Q2 - 2 ) + 1", cache, env);
+    EXPECT_FALSE(run.value);
+    ASSERT_TRUE(run.problem);
+    EXPECT_EQ(run.problem->code, "math");
+    EXPECT_EQ(run.problem->offset, 3u);  // at the '/'
+    env.values[2] = std::numeric_limits<double>::infinity();
+    run = runCached("Q1 / ( Q2 - 2 ) + 1", cache, env);
+    ASSERT_TRUE(run.problem);
+    EXPECT_EQ(run.problem->code, "overflow");
+}
+
+TEST(FormulaCache, FormulasSharingAnEntryAreToldApartByTheirText) {
+    FakeEnvironment env;
+    FormulaCache cache;
+    // More formulas than entries: each is evaluated from its own text however they collide.
+    for (int round = 0; round < 2; ++round) {
+        for (int i = 0; i < 1000; ++i) {
+            const std::string text = std::to_string(i) + " * 2 + 1";
+            EXPECT_EQ(runCached(text, cache, env).value, i * 2.0 + 1.0) << text;
+        }
+    }
 }
 
 }  // namespace
