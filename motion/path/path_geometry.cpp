@@ -213,23 +213,11 @@ AxisBounds axisBounds(const PathGeometry& g) noexcept {
     for (size_t i = 0; i < g.rate.size(); ++i)
         b.tangent[i] = std::fabs(g.rate[i]);
     if (g.radius > 0.0) {
-        // Over the element's own sweep: the circle part of axis i is amp cos(phi - psi), so
-        // |u_i| peaks with |sin|, |n_i| with |cos| of (phi - psi) there (a short arc of a fitted
-        // curve is far from the full circle's peaks).
-        constexpr double kQuarter = 1.5707963267948966192;
-        const double from = g.phi0;
-        const double to = g.phi0 + g.k * g.length;
         for (size_t i = 0; i < 3; ++i) {
             double amp = std::hypot(g.e1[i], g.e2[i]) * g.radius;
-            if (amp <= 0.0) continue;
-            double psi = std::atan2(g.e2[i], g.e1[i]);
-            CosRange c = cosRange(from, to, psi);
-            CosRange sn = cosRange(from, to, psi + kQuarter);
-            double maxCos = std::max(std::fabs(c.lo), std::fabs(c.hi));
-            double maxSin = std::max(std::fabs(sn.lo), std::fabs(sn.hi));
-            b.tangent[i] += amp * g.k * maxSin;
-            b.curvature[i] = amp * g.k * g.k * maxCos;
-            b.curvatureRate[i] = amp * g.k * g.k * g.k * maxSin;
+            b.tangent[i] += amp * g.k;
+            b.curvature[i] = amp * g.k * g.k;
+            b.curvatureRate[i] = amp * g.k * g.k * g.k;
         }
     }
     return b;

@@ -68,8 +68,7 @@ struct CosRange {
 };
 CosRange cosRange(double from, double to, double psi) noexcept;
 
-// Largest |component| over the element, an arc's or helix's over its own sweep (bounds; exact
-// for lines):
+// Largest |component| over the element (bounds; exact for lines):
 struct AxisBounds {
     AxisVector tangent{};        // |dp_i/ds|
     AxisVector curvature{};      // |d2p_i/ds2|

@@ -98,22 +98,6 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
     // programmed feed (or, failing that, the share giving the highest velocity).
     double nominal =
         e.feedKind == FeedKind::Rapid || e.feedKind == FeedKind::PerMinute ? e.feed : 1e300;
-    // A share only needs to allow the velocity the motion can reach here. No velocity on the
-    // element can be higher than its curvature alone allows (no tangential part), nor than the
-    // bound of the element before plus the widest share's acceleration along it: after the
-    // crest of a curve, where the velocity is low, more of the limits are left for the
-    // tangential part than the feed would leave. Only from behind: the elements ahead are not
-    // all known yet, and a bound from them would make the share depend on where the window
-    // ended when the element was prepared.
-    const Limits widestShare = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
-    entry.reachable = elementVelocityCap(m_model, e.geometry, entry.bounds, Limits{0.0, 0.0},
-                                         entry.contourBudget);
-    if (previous) {
-        entry.reachable =
-            std::min(entry.reachable, std::sqrt(previous->reachable * previous->reachable +
-                                                2.0 * widestShare.accel * e.geometry.length));
-    }
-    const double target = std::min(nominal, entry.reachable);
     double bestCap = -1.0;
     // Limits of its own (a stage of a share ladder near a stop, share_ladder.h): as they are.
     const bool ownShare = e.limits.accel > 0.0 && e.feedKind != FeedKind::SpindleSynced;
@@ -131,18 +115,19 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
             bestCap = cap;
             entry.limits = limits;
         }
-        if (cap >= 0.95 * target) break;
+        if (cap >= 0.95 * nominal) break;
     }
     // Keep the limits of the element before when they let this one run at its feed too: where
     // they change the motion must pass with a = 0, and on a polyline the radius noise would
     // otherwise flip the share from one vertex to the next.
     if (previous && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
+        Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
         const Limits& kept = previous->limits;
         // Only from a neighbouring share down (a row after a tight U-turn keeps its own).
-        if (kept.accel <= widestShare.accel && kept.jerk <= widestShare.jerk &&
+        if (kept.accel <= widest.accel && kept.jerk <= widest.jerk &&
             kept.accel * kMaxShareStepDown >= entry.limits.accel &&
             summedPeaksVelocityCap(m_model, e.geometry, entry.bounds, kept, entry.contourBudget) >=
-                std::min(0.95 * target, bestCap)) {
+                std::min(0.95 * nominal, bestCap)) {
             entry.limits = kept;
         }
     }

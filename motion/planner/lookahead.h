@@ -55,10 +55,9 @@ private:
         bool capsFinal = false;    // a stop follows within the window
         AxisBounds bounds;
         Limits limits;
-        double cap = 0.0;          // final machine velocity limit
-        double localCap = 0.0;     // before curvature steps
-        double reachable = 1e300;  // no velocity on it can be higher, whatever the share
-        AxisVector nStart{};       // curvature vector at the ends
+        double cap = 0.0;       // final machine velocity limit
+        double localCap = 0.0;  // before curvature steps
+        AxisVector nStart{};    // curvature vector at the ends
         AxisVector nEnd{};
         double stepCap = 1e300;     // velocity limit of the curvature step at the start
         bool stepCapFinal = false;  // no point still to come is within the step's reach

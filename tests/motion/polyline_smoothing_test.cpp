@@ -120,21 +120,6 @@ TEST(PolylineSmoothing, FourDecimalCircleRunsNearTheTimeOptimalBound) {
     EXPECT_LE(run.checker->maxDeviation(), kToleranceMm * 1.01);
 }
 
-TEST(PolylineSmoothing, FourDecimalSineRunsNearTheTimeOptimalBound) {
-    // gen.py sine (3D finishing, 100 mm of X, z = sin(2 pi x / 10)) at F6000: the time-optimal
-    // bound along the exact curve is 1.3298 s (bounds.py: topp_acc(sine_xz(1, 10, 100), L,
-    // 100) = 1.3278 s, plus A / J = 2 ms). The fitted arcs near the crests (kappa 0.39 / mm) took
-    // shares of 10-30 % by their full circles' peaks, and the flanks kept them: 1.524 s
-    // (1.15x). With each arc's peaks over its own sweep and the share chosen for the velocity
-    // the motion can reach there: 1.481 s (1.11x).
-    TestRun run = runCommands(millConfig(), sinePolyline(0.02, 4, 100.0), Pose{});
-    SCOPED_TRACE(run.checker->limitSummary());
-    EXPECT_FALSE(run.report.refused);
-    EXPECT_LE(run.report.feedTimeS, 1.12 * 1.3298);
-    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
-    EXPECT_LE(run.checker->maxDeviation(), kToleranceMm * 1.01);
-}
-
 TEST(PolylineSmoothing, SmoothedPolylinesKeepTheLimitsAndTheTolerance) {
     struct Case {
         std::string name;
