@@ -1,6 +1,7 @@
 #include "motion/planner/velocity_limits.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "motion/profile/braking_envelope.h"
@@ -31,16 +32,22 @@ Limits tangentialLimits(const MachineModel& model, const AxisBounds& bounds, dou
 
 namespace {
 
-// Along a circle or helix, axis i moves as rate_i s + amp_i cos(phi0 + k s - psi_i): its
+constexpr double kQuarterTurn = 1.5707963267948966192;
+
+// Along a circle or helix, axis i moves as rate_i s + amp_i cos(theta), theta = phi - psi_i: its
 // tangent, curvature and curvature rate are the sine and cosine of one angle, scaled by
 // c1 = amp k, c2 = amp k^2, c3 = amp k^3. So a_i = rate_i a + c1 a sin + c2 v^2 cos and
 // j_i = rate_i j + (c1 j - c3 v^3) sin + 3 c2 v a cos (up to signs): the circle's share peaks at
-// sqrt(x^2 + y^2), not x + y, which is what a line's bounds would add up to.
+// sqrt(x^2 + y^2), not x + y, which is what a line's bounds would add up to; and only where the
+// element's sweep reaches that angle (a short arc of a fitted curve stays near one angle).
 struct AxisTerms {
     double linear = 0.0;  // |rate_i| (all of |u_i| on a line)
     double c1 = 0.0;
     double c2 = 0.0;
     double c3 = 0.0;
+    // The sweep folded into [0, pi/2] (|sin| and |cos| of theta), one interval per quarter turn.
+    std::array<std::array<double, 2>, 6> folded{};
+    size_t pieces = 0;
 };
 
 AxisTerms axisTerms(const PathGeometry& geometry, const AxisBounds& bounds, size_t i) {
@@ -54,33 +61,73 @@ AxisTerms axisTerms(const PathGeometry& geometry, const AxisBounds& bounds, size
     terms.c1 = amp * geometry.k;
     terms.c2 = terms.c1 * geometry.k;
     terms.c3 = terms.c2 * geometry.k;
+    const double psi = std::atan2(geometry.e2[i], geometry.e1[i]);
+    const double from = geometry.phi0 - psi;
+    const double sweep = std::min(geometry.k * geometry.length, 4.0 * kQuarterTurn);
+    // |sin| and |cos| repeat every quarter turn, mirrored in every other one.
+    const double to = from + sweep;
+    for (auto quarter = static_cast<long>(std::floor(from / kQuarterTurn));
+         terms.pieces < terms.folded.size(); ++quarter) {
+        const double start = static_cast<double>(quarter) * kQuarterTurn;
+        const double a = std::max(from, start) - start;
+        const double b = std::min(to, start + kQuarterTurn) - start;
+        if (b >= a) {
+            const bool mirrored = quarter % 2 != 0;
+            const double lo = std::clamp(mirrored ? kQuarterTurn - b : a, 0.0, kQuarterTurn);
+            const double hi = std::clamp(mirrored ? kQuarterTurn - a : b, 0.0, kQuarterTurn);
+            terms.folded[terms.pieces++] = {lo, hi};
+        }
+        if (start + kQuarterTurn >= to) break;
+    }
     return terms;
 }
 
-// Highest v with linear J_t + sqrt((c1 J_t + c3 v^3)^2 + (3 c2 A_t v)^2) <= J.
+// Highest v^2 with linear A_t + c1 A_t |sin| + c2 v^2 |cos| <= A over the sweep. On [0, pi/2]
+// (room - p sin) / (q cos) falls until sin = p / room and rises after: its least value on an
+// interval is at that angle clamped into it.
+double accelCapSquared(const AxisTerms& t, const Limits& limits, double accel) {
+    const double room = accel - t.linear * limits.accel;
+    const double p = t.c1 * limits.accel;
+    const double turning = room > p ? std::asin(p / room) : kQuarterTurn;
+    double least = kNone;
+    for (size_t k = 0; k < t.pieces; ++k) {
+        const double angle = std::clamp(turning, t.folded[k][0], t.folded[k][1]);
+        const double numerator = room - p * std::sin(angle);
+        if (numerator < 0.0 || room - p * std::sin(t.folded[k][1]) < 0.0) return 0.0;
+        const double denominator = t.c2 * std::cos(angle);
+        if (denominator > 0.0) least = std::min(least, numerator / denominator);
+    }
+    return least;
+}
+
+// Largest (c1 J_t + c3 v^3) |sin| + 3 c2 A_t v |cos| over the sweep: R cos(angle - peak) on
+// [0, pi/2], largest at the peak clamped into each interval.
+double sweepJerk(const AxisTerms& t, const Limits& limits, double v) {
+    const double a = t.c1 * limits.jerk + t.c3 * v * v * v;
+    const double b = 3.0 * t.c2 * limits.accel * v;
+    const double peak = std::atan2(a, b);
+    double largest = 0.0;
+    for (size_t k = 0; k < t.pieces; ++k) {
+        const double angle = std::clamp(peak, t.folded[k][0], t.folded[k][1]);
+        largest = std::max(largest, a * std::sin(angle) + b * std::cos(angle));
+    }
+    return largest;
+}
+
+// Highest v with linear J_t + (the sweep's jerk) <= J.
 double jerkCap(const AxisTerms& t, const Limits& limits, double jerk, double upperBound) {
     double room = jerk - t.linear * limits.jerk;
-    double base = t.c1 * limits.jerk;
-    if (room <= base) return 0.0;
-    double linear = 3.0 * t.c2 * limits.accel;
-    auto excess = [&](double v) {
-        double a = base + t.c3 * v * v * v;
-        double b = linear * v;
-        return a * a + b * b - room * room;
-    };
-    double v = upperBound;
-    if (t.c3 > 0.0) v = std::min(v, std::cbrt((room - base) / t.c3));
-    if (linear > 0.0) v = std::min(v, room / linear);
-    if (excess(v) <= 0.0) return v;
-    // excess rises and is convex for v >= 0: Newton from above converges monotonically.
-    for (int k = 0; k < 100; ++k) {
-        double a = base + t.c3 * v * v * v;
-        double slope = 6.0 * a * t.c3 * v * v + 2.0 * linear * linear * v;
-        double next = v - excess(v) / slope;
-        if (!(next < v)) break;
-        v = next;
+    auto fits = [&](double v) { return sweepJerk(t, limits, v) <= room; };
+    if (room <= 0.0 || !fits(0.0)) return 0.0;
+    if (fits(upperBound)) return upperBound;
+    // The left side rises with v: bisection.
+    double lo = 0.0;
+    double hi = upperBound;
+    for (int k = 0; k < 60 && hi - lo > 1e-9 * hi; ++k) {
+        double mid = 0.5 * (lo + hi);
+        (fits(mid) ? lo : hi) = mid;
     }
-    return std::max(0.0, v);
+    return lo;
 }
 
 }  // namespace
@@ -96,11 +143,8 @@ double elementVelocityCap(const MachineModel& model, const PathGeometry& geometr
         if (!axis.enabled) return 0.0;
         if (u > 0.0) cap = std::min(cap, axis.velocity / u);
         AxisTerms t = axisTerms(geometry, bounds, i);
-        // linear A_t + sqrt((c1 A_t)^2 + (c2 v^2)^2) <= A
-        double room = axis.accel - t.linear * limits.accel;
-        double base = t.c1 * limits.accel;
-        if (room < base) return 0.0;
-        if (t.c2 > 0.0) cap = std::min(cap, std::sqrt(std::sqrt(room * room - base * base) / t.c2));
+        if (t.linear * limits.accel > axis.accel) return 0.0;
+        if (t.c2 > 0.0) cap = std::min(cap, std::sqrt(accelCapSquared(t, limits, axis.accel)));
         cap = jerkCap(t, limits, axis.jerk, cap);
     }
     double kappa = geometry.curvature();

@@ -71,6 +71,25 @@ TEST(VelocityLimits, ArcInAnAxisPlaneMatchesHandComputation) {
     EXPECT_NEAR(cap, std::sqrt(0.25 * std::sqrt(2000.0 * 2000.0 - 600.0 * 600.0)), 1e-6);
 }
 
+TEST(VelocityLimits, AShortArcCountsOnlyItsOwnSweep) {
+    // R = 1 mm in XY from phi = -0.1 to +0.1 (around (1, 0), moving along +Y), A = 2000 mm/s^2,
+    // tangential 90 % (1800 mm/s^2), jerk out of the way. On X, a = 1800 sin(phi) + v^2 cos(phi)
+    // over |phi| <= 0.1 only: (2000 - 1800 sin 0.1) / cos 0.1 = 1829.4, v = 42.77 mm/s (the
+    // full circle's peak sqrt(2000^2 - 1800^2) = 871.8 would allow only 29.53 mm/s). On Y,
+    // 1800 cos(phi) + v^2 |sin(phi)| <= 2000 allows more: (2000 - 1800 cos 0.1) / sin 0.1.
+    MachineModel model = model3(2000.0, 1e12);
+    AxisVector from{};
+    from[0] = std::cos(-0.1);
+    from[1] = std::sin(-0.1);
+    AxisVector to{};
+    to[0] = std::cos(0.1);
+    to[1] = std::sin(0.1);
+    PathGeometry arc = makeHelix(from, to, {0.0, 0.0, 0.0}, Axis::X, Axis::Y, Axis::Z, 0.2);
+    Limits limits{1800.0, 1e9};
+    double cap = elementVelocityCap(model, arc, axisBounds(arc), limits, 1.0);
+    EXPECT_NEAR(cap, std::sqrt((2000.0 - 1800.0 * std::sin(0.1)) / std::cos(0.1)), 1e-6);
+}
+
 PathGeometry helix(double radius, double sweep, double rise) {
     AxisVector from{};
     AxisVector to{};
@@ -99,6 +118,33 @@ TEST(VelocityLimits, RandomArcsAndHelicesStayWithinTheAxisLimits) {
         SCOPED_TRACE("trial " + std::to_string(trial) + " cap " + std::to_string(cap));
         ASSERT_GT(cap, 0.0);
         EXPECT_LE(worstRatio(model, g, limits, cap), 1.0 + 1e-4);
+    }
+}
+
+TEST(VelocityLimits, TheLimitOfAShortArcIsTight) {
+    // Arcs of a fitted curve turn by a fraction of a radian: the limit takes the phases of their
+    // own sweep, so 1 % faster must break a limit there too (the full circle's peaks were up to
+    // 30 % below it on a curve's crest).
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    MachineModel model = model3(2000.0, 1e6);
+    for (int trial = 0; trial < 40; ++trial) {
+        double radius = 0.25 + 20.0 * unit(rng);
+        double start = 2.0 * kPi * unit(rng);
+        double sweep = 0.01 + 0.5 * unit(rng);
+        AxisVector from{};
+        AxisVector to{};
+        from[0] = radius * std::cos(start);
+        from[2] = radius * std::sin(start);
+        to[0] = radius * std::cos(start + sweep);
+        to[2] = radius * std::sin(start + sweep);
+        PathGeometry g = makeHelix(from, to, {0.0, 0.0, 0.0}, Axis::Z, Axis::X, Axis::Y, sweep);
+        double share = kTangentialShares[trial % 4];
+        Limits limits{2000.0 * share, 1e6 * share};
+        double cap = elementVelocityCap(model, g, axisBounds(g), limits, 1e9);
+        SCOPED_TRACE("trial " + std::to_string(trial) + " cap " + std::to_string(cap));
+        EXPECT_LE(worstRatio(model, g, limits, cap), 1.0 + 1e-4);
+        EXPECT_GT(worstRatio(model, g, limits, cap * 1.01), 1.0);
     }
 }
 
