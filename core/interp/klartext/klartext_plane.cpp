@@ -287,8 +287,10 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
             retracted.setXyz(at.xyz() +
                              *request.retract * m_kinematics->headTurn(oldAngles) * Vec3::UnitZ());
         }
-        if ((retracted.xyz() - at.xyz()).norm() > 1e-9 &&
-            retracted.values[tool] > at.values[tool] - 1e-9) {
+        // MB MAX never moves down; MB n always moves away along the tool.
+        const bool away = request.retractMax ? retracted.values[tool] > at.values[tool]
+                                             : (retracted.xyz() - at.xyz()).norm() > 1e-9;
+        if (away) {
             emitStreamMove(at, retracted, true, 0.0);
             at = retracted;
         }
