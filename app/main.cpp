@@ -21,7 +21,7 @@ namespace {
 void addProgramOptions(CLI::App& command, kerf::app::RunOptions& options) {
     command.add_option("program", options.program, "NC program")->required();
     command.add_option("--machine", options.machine,
-                       "mill, mill4, mill5, lathe or a machine TOML file");
+                       "mill, mill4, mill5, mill5h, mill5hh, lathe or a machine TOML file");
     command.add_option("--dialect", options.dialect,
                        "klartext, tnciso or fagor (default: from the file)");
     command.add_option("--tool-table", options.toolTable, "TNC tool table (.T)");
@@ -92,8 +92,9 @@ int main(int argc, char** argv) {
     hmi.machiningClock = kerf::motion::makeSimulatedClock;
     // The test run checks the work area with the check of Program run's planner.
     hmi.checkMoves = &kerf::motion::makeWorkAreaCheck;
-    app.add_option("--machine", hmi.machine,
-                   "machine for the HMI: mill, mill4, mill5, lathe or a TOML file");
+    app.add_option(
+        "--machine", hmi.machine,
+        "machine for the HMI: mill, mill4, mill5, mill5h, mill5hh, lathe or a TOML file");
     app.add_option("--screenshot", hmi.screenshot,
                    "save a picture of the HMI to this PNG and exit");
     std::string size;

@@ -7518,20 +7518,12 @@ zyklen</translation>
         <translation>PLANE mit Radiuskorrektur RL/RR: zuerst R0 programmieren</translation>
     </message>
     <message>
-        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
-        <translation>PLANE AXIAL: {1} ist kein Rundtisch dieser Maschine</translation>
-    </message>
-    <message>
         <source>cycle 19: unexpected &apos;{1}&apos;</source>
         <translation>Zyklus 19: unerwartetes &apos;{1}&apos;</translation>
     </message>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>der Satz würde die Achse {1} auf {2} Grad (Maschinenkoordinaten) fahren, über ihren Software-Endschalter {3} hinaus</translation>
-    </message>
-    <message>
-        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
-        <translation>TCPM braucht die in der Maschinendatei beschriebenen Rundtische ([kinematics], z. B. --machine mill5)</translation>
     </message>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
@@ -7544,18 +7536,6 @@ zyklen</translation>
     <message>
         <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
         <translation>TCPM: die Drehachsen drehen in diesem Satz zu weit, um die Werkzeugspitze auf der Geraden zu halten; den Satz teilen</translation>
-    </message>
-    <message>
-        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
-        <translation>Wie die Drehachsen das Werkstück tragen: keine, ein Rundtisch oder ein Tisch auf einem Schwenktisch</translation>
-    </message>
-    <message>
-        <source>Rotary axis nearest the machine base (it carries the other table)</source>
-        <translation>Drehachse nächst dem Maschinenbett (sie trägt den anderen Tisch)</translation>
-    </message>
-    <message>
-        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
-        <translation>table-table: Drehachse auf dem ersten Tisch, trägt das Werkstück</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -7580,10 +7560,6 @@ zyklen</translation>
     <message>
         <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
         <translation>{1} = &quot;{2}&quot; ist keine aktive Drehachse dieser Maschine</translation>
-    </message>
-    <message>
-        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
-        <translation>kinematics.primary einer Maschine mit zwei Tischen schwenkt den Tisch: A oder B, nicht C</translation>
     </message>
     <message>
         <source>kinematics.secondary must be another axis than kinematics.primary</source>
@@ -7994,10 +7970,6 @@ wählen</translation>
         <translation>Zyklus {1} kann nicht mit aktivem M128/FUNCTION TCPM laufen</translation>
     </message>
     <message>
-        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
-        <translation>Zyklus {1}: die Werkzeugachse muss senkrecht zur Achse des Rundtischs {2} stehen (zuerst den Tisch schwenken, z. B. mit PLANE)</translation>
-    </message>
-    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; ist eine Ausgabe dieses Laufs und kann nicht gelesen werden</translation>
     </message>
@@ -8056,6 +8028,50 @@ wählen</translation>
     <message>
         <source>cycle {1} has no sub-block {1}.{2}</source>
         <translation>Zyklus {1} hat keinen Unterblock {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table or the head first, e.g. with PLANE)</source>
+        <translation>Zyklus {1}: Die Werkzeugachse muss senkrecht zur Achse des Rundtischs {2} stehen (zuerst den Tisch oder den Kopf schwenken, z. B. mit PLANE)</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
+        <translation>Radiuskorrektur RL/RR in einer Bearbeitungsebene, die der Schwenkkopf aus den Ebenen der Maschine dreht, wird noch nicht unterstützt: die Werkzeugmittelpunktsbahn mit R0 programmieren</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
+        <translation>PLANE AXIAL: {1} ist keine Drehachse der Kinematik dieser Maschine</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary axes described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM benötigt die in der Maschinendatei beschriebenen Drehachsen ([kinematics], z. B. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>How the rotary axes are built: none, one rotary table, a table on a tilting table, a swivel head and a table, or a fork head</source>
+        <translation>Aufbau der Drehachsen: keine, ein Rundtisch, ein Tisch auf einem Schwenktisch, ein Schwenkkopf und ein Tisch oder ein Gabelkopf</translation>
+    </message>
+    <message>
+        <source>The tilting rotary axis (SEQ+/SEQ- choose its sign)</source>
+        <translation>Die schwenkende Drehachse (SEQ+/SEQ- wählen ihr Vorzeichen)</translation>
+    </message>
+    <message>
+        <source>The second rotary axis: the table on the tilting table, the table of a head-table machine, the head axis carrying the fork</source>
+        <translation>Die zweite Drehachse: der Tisch auf dem Schwenktisch, der Tisch einer Kopf-Tisch-Maschine, die Kopfachse, die die Gabel trägt</translation>
+    </message>
+    <message>
+        <source>Head: X of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Kopf: X des Drehpunkts des Kopfs ab der Spindelnase, Kopf auf 0; head_pivot = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Head: Y of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Kopf: Y des Drehpunkts des Kopfs ab der Spindelnase, Kopf auf 0; head_pivot = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Head: Z of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Kopf: Z des Drehpunkts des Kopfs ab der Spindelnase, Kopf auf 0; head_pivot = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>kinematics.primary is the tilting axis: A or B, not C</source>
+        <translation>kinematics.primary ist die Schwenkachse: A oder B, nicht C</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

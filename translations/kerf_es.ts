@@ -7518,20 +7518,12 @@ fijos</translation>
         <translation>PLANE con corrección de radio RL/RR: programe R0 antes</translation>
     </message>
     <message>
-        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
-        <translation>PLANE AXIAL: {1} no es una mesa giratoria de esta máquina</translation>
-    </message>
-    <message>
         <source>cycle 19: unexpected &apos;{1}&apos;</source>
         <translation>ciclo 19: &apos;{1}&apos; inesperado</translation>
     </message>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>el movimiento llevaría el eje {1} a {2} grados (coordenadas de máquina), más allá de su límite de software {3}</translation>
-    </message>
-    <message>
-        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
-        <translation>TCPM necesita las mesas giratorias descritas en el archivo de máquina ([kinematics], p. ej. --machine mill5)</translation>
     </message>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
@@ -7544,18 +7536,6 @@ fijos</translation>
     <message>
         <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
         <translation>TCPM: los ejes rotativos giran demasiado en esta frase para mantener la punta de la herramienta en la recta; divida la frase</translation>
-    </message>
-    <message>
-        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
-        <translation>Cómo llevan la pieza los ejes rotativos: ninguno, una mesa giratoria o una mesa sobre una mesa basculante</translation>
-    </message>
-    <message>
-        <source>Rotary axis nearest the machine base (it carries the other table)</source>
-        <translation>Eje rotativo más cercano a la base de la máquina (lleva la otra mesa)</translation>
-    </message>
-    <message>
-        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
-        <translation>table-table: eje rotativo sobre la primera mesa, que lleva la pieza</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -7580,10 +7560,6 @@ fijos</translation>
     <message>
         <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
         <translation>{1} = &quot;{2}&quot; no es un eje rotativo activo de esta máquina</translation>
-    </message>
-    <message>
-        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
-        <translation>kinematics.primary de una máquina de dos mesas bascula la mesa: A o B, no C</translation>
     </message>
     <message>
         <source>kinematics.secondary must be another axis than kinematics.primary</source>
@@ -7994,10 +7970,6 @@ solución</translation>
         <translation>el ciclo {1} no puede ejecutarse con M128/FUNCTION TCPM activo</translation>
     </message>
     <message>
-        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
-        <translation>ciclo {1}: el eje de la herramienta debe ser perpendicular al eje de la mesa giratoria {2} (incline antes la mesa, p. ej. con PLANE)</translation>
-    </message>
-    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; es una salida de esta ejecución y no se puede leer</translation>
     </message>
@@ -8056,6 +8028,50 @@ solución</translation>
     <message>
         <source>cycle {1} has no sub-block {1}.{2}</source>
         <translation>el ciclo {1} no tiene subbloque {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table or the head first, e.g. with PLANE)</source>
+        <translation>ciclo {1}: el eje de la herramienta debe ser perpendicular al eje de la mesa giratoria {2} (incline primero la mesa o el cabezal, p. ej. con PLANE)</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
+        <translation>la compensación de radio RL/RR en un plano de trabajo que el cabezal orientable gira fuera de los planos de la máquina aún no se admite: programe la trayectoria del centro de la herramienta con R0</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
+        <translation>PLANE AXIAL: {1} no es un eje giratorio de la cinemática de esta máquina</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary axes described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM necesita los ejes giratorios descritos en el archivo de máquina ([kinematics], p. ej. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>How the rotary axes are built: none, one rotary table, a table on a tilting table, a swivel head and a table, or a fork head</source>
+        <translation>Cómo están construidos los ejes giratorios: ninguno, una mesa giratoria, una mesa sobre una mesa basculante, un cabezal orientable y una mesa, o un cabezal de horquilla</translation>
+    </message>
+    <message>
+        <source>The tilting rotary axis (SEQ+/SEQ- choose its sign)</source>
+        <translation>El eje giratorio basculante (SEQ+/SEQ- eligen su signo)</translation>
+    </message>
+    <message>
+        <source>The second rotary axis: the table on the tilting table, the table of a head-table machine, the head axis carrying the fork</source>
+        <translation>El segundo eje giratorio: la mesa sobre la mesa basculante, la mesa de una máquina cabezal-mesa, el eje del cabezal que lleva la horquilla</translation>
+    </message>
+    <message>
+        <source>Head: X of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Cabezal: X del pivote del cabezal desde la nariz del husillo, cabezal en 0; escriba head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Head: Y of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Cabezal: Y del pivote del cabezal desde la nariz del husillo, cabezal en 0; escriba head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Head: Z of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Cabezal: Z del pivote del cabezal desde la nariz del husillo, cabezal en 0; escriba head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>kinematics.primary is the tilting axis: A or B, not C</source>
+        <translation>kinematics.primary es el eje basculante: A o B, no C</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

@@ -7521,20 +7521,12 @@ stałe</translation>
         <translation>PLANE z korekcją promienia RL/RR: najpierw zaprogramuj R0</translation>
     </message>
     <message>
-        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
-        <translation>PLANE AXIAL: {1} nie jest stołem obrotowym tej maszyny</translation>
-    </message>
-    <message>
         <source>cycle 19: unexpected &apos;{1}&apos;</source>
         <translation>cykl 19: nieoczekiwane &apos;{1}&apos;</translation>
     </message>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>ruch doprowadziłby oś {1} do {2} stopni (współrzędne maszynowe), poza jej programowy wyłącznik krańcowy {3}</translation>
-    </message>
-    <message>
-        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
-        <translation>TCPM wymaga stołów obrotowych opisanych w pliku maszyny ([kinematics], np. --machine mill5)</translation>
     </message>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
@@ -7547,18 +7539,6 @@ stałe</translation>
     <message>
         <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
         <translation>TCPM: osie obrotowe obracają się w tym bloku za daleko, by utrzymać wierzchołek narzędzia na prostej; podziel blok</translation>
-    </message>
-    <message>
-        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
-        <translation>Jak osie obrotowe niosą przedmiot: brak, jeden stół obrotowy lub stół na stole wychylnym</translation>
-    </message>
-    <message>
-        <source>Rotary axis nearest the machine base (it carries the other table)</source>
-        <translation>Oś obrotowa najbliżej podstawy maszyny (niesie drugi stół)</translation>
-    </message>
-    <message>
-        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
-        <translation>table-table: oś obrotowa na pierwszym stole, niesie przedmiot</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -7583,10 +7563,6 @@ stałe</translation>
     <message>
         <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
         <translation>{1} = &quot;{2}&quot; nie jest włączoną osią obrotową tej maszyny</translation>
-    </message>
-    <message>
-        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
-        <translation>kinematics.primary maszyny z dwoma stołami wychyla stół: A lub B, nie C</translation>
     </message>
     <message>
         <source>kinematics.secondary must be another axis than kinematics.primary</source>
@@ -7997,10 +7973,6 @@ rozwiązanie</translation>
         <translation>cykl {1} nie może działać przy aktywnym M128/FUNCTION TCPM</translation>
     </message>
     <message>
-        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
-        <translation>cykl {1}: oś narzędzia musi być prostopadła do osi stołu obrotowego {2} (najpierw nachyl stół, np. za pomocą PLANE)</translation>
-    </message>
-    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; jest wyjściem tego przebiegu i nie może być odczytany</translation>
     </message>
@@ -8059,6 +8031,50 @@ rozwiązanie</translation>
     <message>
         <source>cycle {1} has no sub-block {1}.{2}</source>
         <translation>cykl {1} nie ma podbloku {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table or the head first, e.g. with PLANE)</source>
+        <translation>cykl {1}: oś narzędzia musi być prostopadła do osi stołu obrotowego {2} (najpierw nachyl stół lub głowicę, np. za pomocą PLANE)</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
+        <translation>korekcja promienia RL/RR w płaszczyźnie obróbki, którą głowica uchylna obraca poza płaszczyzny maszyny, nie jest jeszcze obsługiwana: zaprogramuj tor środka narzędzia z R0</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
+        <translation>PLANE AXIAL: {1} nie jest osią obrotową kinematyki tej maszyny</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary axes described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM wymaga osi obrotowych opisanych w pliku maszyny ([kinematics], np. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>How the rotary axes are built: none, one rotary table, a table on a tilting table, a swivel head and a table, or a fork head</source>
+        <translation>Budowa osi obrotowych: brak, jeden stół obrotowy, stół na stole uchylnym, głowica uchylna i stół albo głowica widłowa</translation>
+    </message>
+    <message>
+        <source>The tilting rotary axis (SEQ+/SEQ- choose its sign)</source>
+        <translation>Uchylna oś obrotowa (SEQ+/SEQ- wybierają jej znak)</translation>
+    </message>
+    <message>
+        <source>The second rotary axis: the table on the tilting table, the table of a head-table machine, the head axis carrying the fork</source>
+        <translation>Druga oś obrotowa: stół na stole uchylnym, stół maszyny głowica-stół, oś głowicy niosąca widły</translation>
+    </message>
+    <message>
+        <source>Head: X of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Głowica: X punktu obrotu głowicy od czoła wrzeciona, głowica w 0; zapisz head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Head: Y of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Głowica: Y punktu obrotu głowicy od czoła wrzeciona, głowica w 0; zapisz head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Head: Z of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Głowica: Z punktu obrotu głowicy od czoła wrzeciona, głowica w 0; zapisz head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>kinematics.primary is the tilting axis: A or B, not C</source>
+        <translation>kinematics.primary to oś uchylna: A lub B, nie C</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

@@ -7518,20 +7518,12 @@ fixos</translation>
         <translation>PLANE com correção de raio RL/RR: programe R0 primeiro</translation>
     </message>
     <message>
-        <source>PLANE AXIAL: {1} is not a rotary table of this machine</source>
-        <translation>PLANE AXIAL: {1} não é uma mesa rotativa desta máquina</translation>
-    </message>
-    <message>
         <source>cycle 19: unexpected &apos;{1}&apos;</source>
         <translation>ciclo 19: &apos;{1}&apos; inesperado</translation>
     </message>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>o movimento levaria o eixo {1} a {2} graus (coordenadas da máquina), além do seu limite de software {3}</translation>
-    </message>
-    <message>
-        <source>TCPM needs the rotary tables described in the machine file ([kinematics], e.g. --machine mill5)</source>
-        <translation>TCPM precisa das mesas rotativas descritas no ficheiro da máquina ([kinematics], p. ex. --machine mill5)</translation>
     </message>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
@@ -7544,18 +7536,6 @@ fixos</translation>
     <message>
         <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
         <translation>TCPM: os eixos rotativos rodam demasiado neste bloco para manter a ponta da ferramenta na reta; divida o bloco</translation>
-    </message>
-    <message>
-        <source>How the rotary axes carry the workpiece: none, one rotary table, or a table on a tilting table</source>
-        <translation>Como os eixos rotativos levam a peça: nenhum, uma mesa rotativa ou uma mesa sobre uma mesa basculante</translation>
-    </message>
-    <message>
-        <source>Rotary axis nearest the machine base (it carries the other table)</source>
-        <translation>Eixo rotativo mais próximo da base da máquina (leva a outra mesa)</translation>
-    </message>
-    <message>
-        <source>table-table: rotary axis on the primary table, carrying the workpiece</source>
-        <translation>table-table: eixo rotativo sobre a primeira mesa, que leva a peça</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -7580,10 +7560,6 @@ fixos</translation>
     <message>
         <source>{1} = &quot;{2}&quot; is not an enabled rotary axis of this machine</source>
         <translation>{1} = &quot;{2}&quot; não é um eixo rotativo ativo desta máquina</translation>
-    </message>
-    <message>
-        <source>kinematics.primary of a table-table machine tilts the table: A or B, not C</source>
-        <translation>kinematics.primary de uma máquina de duas mesas inclina a mesa: A ou B, não C</translation>
     </message>
     <message>
         <source>kinematics.secondary must be another axis than kinematics.primary</source>
@@ -7994,10 +7970,6 @@ solução</translation>
         <translation>o ciclo {1} não pode ser executado com M128/FUNCTION TCPM ativo</translation>
     </message>
     <message>
-        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table first, e.g. with PLANE)</source>
-        <translation>ciclo {1}: o eixo da ferramenta tem de ser perpendicular ao eixo da mesa rotativa {2} (incline primeiro a mesa, p. ex. com PLANE)</translation>
-    </message>
-    <message>
         <source>&apos;{1}&apos; is an output of this run and cannot be read</source>
         <translation>&apos;{1}&apos; é uma saída desta execução e não pode ser lido</translation>
     </message>
@@ -8056,6 +8028,50 @@ solução</translation>
     <message>
         <source>cycle {1} has no sub-block {1}.{2}</source>
         <translation>o ciclo {1} não tem sub-bloco {1}.{2}</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool axis must be perpendicular to the axis of rotary table {2} (tilt the table or the head first, e.g. with PLANE)</source>
+        <translation>ciclo {1}: o eixo da ferramenta deve ser perpendicular ao eixo da mesa rotativa {2} (incline primeiro a mesa ou a cabeça, p. ex. com PLANE)</translation>
+    </message>
+    <message>
+        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
+        <translation>a compensação de raio RL/RR num plano de trabalho que a cabeça basculante roda para fora dos planos da máquina ainda não é suportada: programe a trajetória do centro da ferramenta com R0</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
+        <translation>PLANE AXIAL: {1} não é um eixo rotativo da cinemática desta máquina</translation>
+    </message>
+    <message>
+        <source>TCPM needs the rotary axes described in the machine file ([kinematics], e.g. --machine mill5)</source>
+        <translation>TCPM precisa dos eixos rotativos descritos no ficheiro da máquina ([kinematics], p. ex. --machine mill5)</translation>
+    </message>
+    <message>
+        <source>How the rotary axes are built: none, one rotary table, a table on a tilting table, a swivel head and a table, or a fork head</source>
+        <translation>Como os eixos rotativos são construídos: nenhum, uma mesa rotativa, uma mesa sobre uma mesa basculante, uma cabeça basculante e uma mesa, ou uma cabeça de garfo</translation>
+    </message>
+    <message>
+        <source>The tilting rotary axis (SEQ+/SEQ- choose its sign)</source>
+        <translation>O eixo rotativo basculante (SEQ+/SEQ- escolhem o seu sinal)</translation>
+    </message>
+    <message>
+        <source>The second rotary axis: the table on the tilting table, the table of a head-table machine, the head axis carrying the fork</source>
+        <translation>O segundo eixo rotativo: a mesa sobre a mesa basculante, a mesa de uma máquina cabeça-mesa, o eixo da cabeça que leva o garfo</translation>
+    </message>
+    <message>
+        <source>Head: X of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Cabeça: X do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Head: Y of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Cabeça: Y do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Head: Z of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
+        <translation>Cabeça: Z do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>kinematics.primary is the tilting axis: A or B, not C</source>
+        <translation>kinematics.primary é o eixo basculante: A ou B, não C</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

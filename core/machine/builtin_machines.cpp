@@ -5,7 +5,8 @@
 namespace kerf::machine {
 
 const std::vector<std::string_view>& builtinMachineNames() {
-    static const std::vector<std::string_view> names{"mill", "mill4", "mill5", "lathe"};
+    static const std::vector<std::string_view> names{"mill",   "mill4",   "mill5",
+                                                     "mill5h", "mill5hh", "lathe"};
     return names;
 }
 
@@ -13,6 +14,8 @@ std::string_view builtinMachineToml(std::string_view name) {
     if (name == "mill") return detail::millPresetToml();
     if (name == "mill4") return detail::mill4PresetToml();
     if (name == "mill5") return detail::mill5PresetToml();
+    if (name == "mill5h") return detail::mill5hPresetToml();
+    if (name == "mill5hh") return detail::mill5hhPresetToml();
     if (name == "lathe") return detail::lathePresetToml();
     return {};
 }

@@ -5,7 +5,8 @@
 
 namespace kerf::machine {
 
-// Names of the machines available without a file: "mill", "mill4", "mill5", "lathe".
+// Names of the machines available without a file: "mill", "mill4", "mill5", "mill5h", "mill5hh",
+// "lathe".
 const std::vector<std::string_view>& builtinMachineNames();
 
 // The TOML text of a built-in machine (the files in core/machine/presets/, embedded at build

@@ -113,18 +113,25 @@ struct ToolErrorConfig {
 };
 
 // How the rotary axes are built (core/machine/table_kinematics.h computes with it). A table
-// carries the workpiece: "table" is one rotary table (the primary axis), "table-table" a
-// secondary table mounted on the primary one (a trunnion B or A with a C table on it). The axes
-// meet at the pivot, in machine coordinates at all rotary axes 0.
-enum class KinematicsType : uint8_t { None, Table, TableTable };
+// carries the workpiece, a head the spindle. "table" is one rotary table (the primary axis);
+// "table-table" a secondary table mounted on the primary (tilting) one (a trunnion B or A with a C
+// table on it); "head-table" a swivel head (primary, tilting) and a rotary table (secondary);
+// "head-head" a head turning about the secondary axis that carries the tilting primary axis (a
+// fork head: C carrying A or B). The primary axis is always the tilting one, the master axis of
+// SEQ+/SEQ-. The tables' axes meet at the pivot (machine coordinates, all rotary axes at 0); the
+// head's axes meet at the head pivot, given from the spindle nose (gauge line) with the head at 0.
+enum class KinematicsType : uint8_t { None, Table, TableTable, HeadTable, HeadHead };
 
 struct KinematicsConfig {
     KinematicsType type = KinematicsType::None;
-    char primary = 'B';    // the rotary axis nearest the machine base
-    char secondary = 'C';  // table-table: the axis on the primary table, carrying the workpiece
+    char primary = 'B';    // the tilting axis
+    char secondary = 'C';  // the axis that turns the primary one or the workpiece about Z
     double pivotXMm = 0.0;
     double pivotYMm = 0.0;
     double pivotZMm = 0.0;
+    double headPivotXMm = 0.0;
+    double headPivotYMm = 0.0;
+    double headPivotZMm = 0.0;
 
     friend bool operator==(const KinematicsConfig&, const KinematicsConfig&) = default;
 };

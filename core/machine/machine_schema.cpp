@@ -97,17 +97,17 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
         bindField<&MachineConfig::kinematics, &KinematicsConfig::type>(
             kMachine, {.key = "kinematics.type",
                        .description = KERF_TR_NOOP(
-                           "How the rotary axes carry the workpiece: none, one rotary table, or "
-                           "a table on a tilting table")}),
+                           "How the rotary axes are built: none, one rotary table, a table on a "
+                           "tilting table, a swivel head and a table, or a fork head")}),
         bindField<&MachineConfig::kinematics, &KinematicsConfig::primary>(
-            kMachine, {.key = "kinematics.primary",
-                       .description = KERF_TR_NOOP(
-                           "Rotary axis nearest the machine base (it carries the other table)")}),
+            kMachine,
+            {.key = "kinematics.primary",
+             .description = KERF_TR_NOOP("The tilting rotary axis (SEQ+/SEQ- choose its sign)")}),
         bindField<&MachineConfig::kinematics, &KinematicsConfig::secondary>(
             kMachine, {.key = "kinematics.secondary",
                        .description = KERF_TR_NOOP(
-                           "table-table: rotary axis on the primary table, carrying the "
-                           "workpiece")}),
+                           "The second rotary axis: the table on the tilting table, the table "
+                           "of a head-table machine, the head axis carrying the fork")}),
         bindField<&MachineConfig::kinematics, &KinematicsConfig::pivotXMm>(
             kMachine, {.key = "kinematics.pivot.x",
                        .unit = "mm",
@@ -129,6 +129,30 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .maximum = 100000.0,
                        .description = KERF_TR_NOOP(
                            "Machine Z where the rotary axes meet; write pivot = [x, y, z]")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::headPivotXMm>(
+            kMachine, {.key = "kinematics.head_pivot.x",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Head: X of the head's pivot from the spindle nose, head at 0; write "
+                           "head_pivot = [x, y, z]")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::headPivotYMm>(
+            kMachine, {.key = "kinematics.head_pivot.y",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Head: Y of the head's pivot from the spindle nose, head at 0; write "
+                           "head_pivot = [x, y, z]")}),
+        bindField<&MachineConfig::kinematics, &KinematicsConfig::headPivotZMm>(
+            kMachine, {.key = "kinematics.head_pivot.z",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Head: Z of the head's pivot from the spindle nose, head at 0; write "
+                           "head_pivot = [x, y, z]")}),
         bindField<&MachineConfig::bar, &BarConfig::diameterMm>(
             kMachine, {.key = "bar.diameter",
                        .unit = "mm",

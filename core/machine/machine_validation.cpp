@@ -131,8 +131,8 @@ void checkAxes(const MachineConfig& config, Validator& v) {
     }
 }
 
-// The axes of the kinematics must be rotary axes of the machine; a tilting (primary) axis of a
-// table-table machine turns about X or Y, and the secondary axis is another one.
+// The axes of the kinematics must be rotary axes of the machine; the primary (tilting) axis of
+// a two-axis kinematics turns about X or Y, and the secondary axis is another one.
 void checkKinematics(const MachineConfig& config, Validator& v) {
     const KinematicsConfig& k = config.kinematics;
     if (k.type == KinematicsType::None) return;
@@ -147,12 +147,11 @@ void checkKinematics(const MachineConfig& config, Validator& v) {
         return true;
     };
     if (!checkRotary("kinematics.primary", k.primary)) return;
-    if (k.type != KinematicsType::TableTable) return;
+    if (k.type == KinematicsType::Table) return;
     if (!checkRotary("kinematics.secondary", k.secondary)) return;
     if (k.primary == 'C') {
         v.report({"kinematics.primary", "kinematics.type"},
-                 KERF_TR_NOOP("kinematics.primary of a table-table machine tilts the table: A or "
-                              "B, not C"));
+                 KERF_TR_NOOP("kinematics.primary is the tilting axis: A or B, not C"));
     } else if (k.secondary == k.primary) {
         v.report({"kinematics.secondary", "kinematics.type"},
                  KERF_TR_NOOP("kinematics.secondary must be another axis than kinematics.primary"));

@@ -51,10 +51,11 @@ std::optional<TableKinematics> TableKinematics::of(const MachineConfig& config) 
     const KinematicsConfig& k = config.kinematics;
     if (k.type == KinematicsType::None) return std::nullopt;
     TableKinematics t;
-    t.m_two = k.type == KinematicsType::TableTable;
+    t.m_kind = k.type;
     t.m_primary = k.primary;
     t.m_secondary = k.secondary;
     t.m_pivot = Vec3(k.pivotXMm, k.pivotYMm, k.pivotZMm);
+    t.m_headPivot = Vec3(k.headPivotXMm, k.headPivotYMm, k.headPivotZMm);
     auto limitsOf = [&config](char letter) {
         Limits limits;
         if (const AxisConfig* axis = config.axis(letter)) {
@@ -68,32 +69,66 @@ std::optional<TableKinematics> TableKinematics::of(const MachineConfig& config) 
 }
 
 Rotation TableKinematics::workpieceToMachine(const RotaryAngles& angles) const {
-    Rotation m = principalRotation(m_primary, -angles.primaryDeg);
-    if (m_two) m = m * principalRotation(m_secondary, -angles.secondaryDeg);
-    return m;
+    switch (m_kind) {
+        case KinematicsType::TableTable:
+            return principalRotation(m_primary, -angles.primaryDeg) *
+                   principalRotation(m_secondary, -angles.secondaryDeg);
+        case KinematicsType::HeadTable:
+            return principalRotation(m_secondary, -angles.secondaryDeg);
+        case KinematicsType::HeadHead:
+            return Rotation::Identity();
+        default:
+            return principalRotation(m_primary, -angles.primaryDeg);
+    }
 }
 
-Vec3 TableKinematics::toolDirection(const RotaryAngles& angles) const {
-    return workpieceToMachine(angles).transpose() * Vec3::UnitZ();
+Rotation TableKinematics::headTurn(const RotaryAngles& angles) const {
+    switch (m_kind) {
+        case KinematicsType::HeadTable:
+            return principalRotation(m_primary, angles.primaryDeg);
+        case KinematicsType::HeadHead:
+            return principalRotation(m_secondary, angles.secondaryDeg) *
+                   principalRotation(m_primary, angles.primaryDeg);
+        default:
+            return Rotation::Identity();
+    }
+}
+
+Rotation TableKinematics::toolFrame(const RotaryAngles& angles) const {
+    return workpieceToMachine(angles).transpose() * headTurn(angles);
 }
 
 Vec3 TableKinematics::innerTableAxis(const RotaryAngles& angles) const {
-    if (!m_two) return unitOf(m_primary);
-    return principalRotation(m_primary, -angles.primaryDeg) * unitOf(m_secondary);
+    if (m_kind == KinematicsType::TableTable)
+        return principalRotation(m_primary, -angles.primaryDeg) * unitOf(m_secondary);
+    return unitOf(innerTable());
 }
 
 Vec3 TableKinematics::axesOf(const Vec3& workpiece, const RotaryAngles& angles,
-                             const Vec3& presetInMachine) const {
-    // machine = M (preset + p - pivot) + pivot; the axes count from the preset.
+                             const Vec3& presetInMachine, double toolLengthMm) const {
+    // machine = M (preset + p - pivot) + pivot; the axes count from the preset. A turned head
+    // turns the tip about its pivot, which the axes make up for.
     const Rotation m = workpieceToMachine(angles);
-    return m * workpiece + (m - Rotation::Identity()) * (presetInMachine - m_pivot);
+    return m * workpiece + (m - Rotation::Identity()) * (presetInMachine - m_pivot) +
+           headOffset(angles, toolLengthMm);
+}
+
+Vec3 TableKinematics::headOffset(const RotaryAngles& angles, double toolLengthMm) const {
+    if (!hasHead()) return Vec3::Zero();
+    return (headTurn(angles) - Rotation::Identity()) * (m_headPivot + toolLengthMm * Vec3::UnitZ());
+}
+
+Vec3 TableKinematics::tipOf(const Vec3& axes, const RotaryAngles& angles,
+                            const Vec3& presetInMachine, double toolLengthMm) const {
+    const Vec3 offset = axesOf(Vec3::Zero(), angles, presetInMachine, toolLengthMm);
+    return workpieceToMachine(angles).transpose() * (axes - offset);
 }
 
 RotarySolutions TableKinematics::solve(const Vec3& direction, double freeSecondaryDeg) const {
     RotarySolutions out;
     const Vec3 t = direction.normalized();
     const Vec3 up = unitOf(m_primary);
-    if (!m_two) {
+    if (!twoAxes()) {
         // t = Rot(up, p) z: reachable when t keeps z's component along the axis.
         if (std::abs(up.dot(t) - up.dot(Vec3::UnitZ())) > 1e-9) return out;
         const double p = angleAbout(up, Vec3::UnitZ(), t).value_or(0.0);
@@ -126,7 +161,7 @@ RotarySolutions TableKinematics::solve(const Vec3& direction, double freeSeconda
 }
 
 double TableKinematics::alignedSecondaryDeg(const Vec3& frameX, double primaryDeg) const {
-    if (!m_two) return 0.0;
+    if (!twoAxes()) return 0.0;
     const Vec3 from = principalRotation(m_primary, primaryDeg) * Vec3::UnitX();
     return wrapped(angleAbout(unitOf(m_secondary), from, frameX).value_or(0.0));
 }
@@ -154,8 +189,8 @@ std::optional<RotaryAngles> TableKinematics::choose(const RotarySolutions& solut
         if (rule == SolutionChoice::PrimaryPositive && s.primaryDeg < -1e-9) continue;
         if (rule == SolutionChoice::PrimaryNegative && s.primaryDeg > 1e-9) continue;
         auto p = placed(s.primaryDeg, m_primaryLimits, current.primaryDeg);
-        auto q = m_two ? placed(s.secondaryDeg, m_secondaryLimits, current.secondaryDeg)
-                       : std::optional<double>(0.0);
+        auto q = twoAxes() ? placed(s.secondaryDeg, m_secondaryLimits, current.secondaryDeg)
+                           : std::optional<double>(0.0);
         if (!p || !q) continue;
         const double path = std::abs(*p - current.primaryDeg) + std::abs(*q - current.secondaryDeg);
         if (!best || path < bestPath - 1e-9) {

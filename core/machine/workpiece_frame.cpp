@@ -7,11 +7,11 @@ namespace kerf::machine {
 
 WorkpieceFrame::WorkpieceFrame(const TableKinematics& kinematics, const Pose& presetInMachine)
     : m_kinematics(kinematics),
-      m_presetMinusPivot(presetInMachine.xyz() - kinematics.pivot()),
+      m_preset(presetInMachine.xyz()),
       m_primary(*axisFromLetter(kinematics.primary())),
       m_secondary(*axisFromLetter(kinematics.secondary())) {
     m_primaryPreset = presetInMachine[m_primary];
-    if (m_kinematics.twoTables()) m_secondaryPreset = presetInMachine[m_secondary];
+    if (m_kinematics.twoAxes()) m_secondaryPreset = presetInMachine[m_secondary];
 }
 
 std::optional<WorkpieceFrame> WorkpieceFrame::of(const MachineConfig& config,
@@ -24,16 +24,15 @@ std::optional<WorkpieceFrame> WorkpieceFrame::of(const MachineConfig& config,
 RotaryAngles WorkpieceFrame::anglesOf(const Pose& stream) const {
     RotaryAngles angles;
     angles.primaryDeg = stream[m_primary] + m_primaryPreset;
-    if (m_kinematics.twoTables()) angles.secondaryDeg = stream[m_secondary] + m_secondaryPreset;
+    if (m_kinematics.twoAxes()) angles.secondaryDeg = stream[m_secondary] + m_secondaryPreset;
     return angles;
 }
 
 ToolOnPart WorkpieceFrame::toPart(const Pose& stream) const {
-    // The inverse of TableKinematics::axesOf: axes = M w + (M - I)(D - pivot).
-    const Rotation toPart = m_kinematics.workpieceToMachine(anglesOf(stream)).transpose();
+    const RotaryAngles angles = anglesOf(stream);
     ToolOnPart out;
-    out.tip = toPart * (stream.xyz() + m_presetMinusPivot) - m_presetMinusPivot;
-    out.axis = toPart.col(2);
+    out.tip = m_kinematics.tipOf(stream.xyz(), angles, m_preset, m_toolLengthMm);
+    out.axis = m_kinematics.toolDirection(angles);
     return out;
 }
 

@@ -14,10 +14,11 @@ struct ToolOnPart {
     Vec3 axis{0.0, 0.0, 1.0};
 };
 
-// The canonical stream of a machine with rotary tables holds the machine's linear axes (relative
-// to the preset) and the table angles (docs/klartext.md, "What the stream holds"). The graphics and
-// the stock simulation draw and cut on the workpiece, which the tables turn: this maps a stream
-// position back through the tables' rotation. Pure and O(1); any thread.
+// The canonical stream of a machine with rotary axes holds the machine's linear axes (relative
+// to the preset) and the axis angles (docs/klartext.md, "What the stream holds"). The graphics and
+// the stock simulation draw and cut on the workpiece, which the tables turn and on which a swivel
+// head turns the tool: this maps a stream position back through the kinematics. Pure and O(1);
+// any thread.
 class WorkpieceFrame {
 public:
     // `presetInMachine`: the workpiece origin in machine coordinates (linear axes) and the
@@ -26,6 +27,10 @@ public:
     // Nothing for a machine without rotary tables (the stream is then already on the workpiece).
     static std::optional<WorkpieceFrame> of(const MachineConfig& config,
                                             const Pose& presetInMachine);
+
+    // A swivel head turns the tip about its pivot by the tool's length: the tool in the spindle
+    // (L + DL, as the canonical tool change carries it).
+    void setToolLength(double lengthMm) { m_toolLengthMm = lengthMm; }
 
     RotaryAngles anglesOf(const Pose& stream) const;
     ToolOnPart toPart(const Pose& stream) const;
@@ -37,7 +42,8 @@ public:
 
 private:
     TableKinematics m_kinematics;
-    Vec3 m_presetMinusPivot;
+    Vec3 m_preset;
+    double m_toolLengthMm = 0.0;
     double m_primaryPreset = 0.0;
     double m_secondaryPreset = 0.0;
     Axis m_primary = Axis::B;

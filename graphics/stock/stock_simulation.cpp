@@ -198,12 +198,16 @@ void StockSimulation::consume(const canon::Command& command) {
         }
         m_position = arc->target;
     } else if (const auto* tool = std::get_if<canon::ToolChange>(&body)) {
+        if (m_options.workpieceFrame)
+            m_options.workpieceFrame->setToolLength(tool->geometry.lengthMm);
         m_cutters.push_back(m_options.millCutter(*tool));
         m_inserts.push_back(m_options.latheInsert(*tool));
         m_toolAxes.push_back(tool->toolAxis);
         m_tool = m_cutters.size() - 1;
         m_maxToolRadius = std::max(m_maxToolRadius, m_cutters.back().radiusMm);
     } else if (const auto* update = std::get_if<canon::ToolUpdate>(&body)) {
+        if (m_options.workpieceFrame)
+            m_options.workpieceFrame->setToolLength(update->geometry.lengthMm);
         canon::ToolChange changed;
         changed.geometry = update->geometry;
         changed.toolAxis = update->toolAxis;

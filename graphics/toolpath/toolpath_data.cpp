@@ -176,8 +176,12 @@ void ToolpathCollector::consume(const canon::Command& command) {
     } else if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) {
         addLine(command, probe->target, MoveKind::Probe);
     } else if (const auto* tool = std::get_if<canon::ToolChange>(&body)) {
+        if (m_options.workpieceFrame)
+            m_options.workpieceFrame->setToolLength(tool->geometry.lengthMm);
         m_data.tools.push_back({static_cast<uint32_t>(m_data.moveCount()), *tool});
     } else if (const auto* update = std::get_if<canon::ToolUpdate>(&body)) {
+        if (m_options.workpieceFrame)
+            m_options.workpieceFrame->setToolLength(update->geometry.lengthMm);
         canon::ToolChange changed =
             m_data.tools.empty() ? canon::ToolChange{} : m_data.tools.back().tool;
         changed.geometry = update->geometry;

@@ -102,12 +102,15 @@ bool CoordinateFrame::flipsOrientation(Plane plane) const {
     return (a != b) != turned;
 }
 
+bool CoordinateFrame::keepsPlane(Plane plane) const {
+    if (!m_tilted && !m_tabled) return true;
+    const Vec3 n = normalOf(plane);
+    return std::abs(std::abs((spatialTurn() * n).dot(n)) - 1.0) <= 1e-9;
+}
+
 bool CoordinateFrame::keepsArcs(Plane plane) const {
     if (m_rotationDeg != 0.0 && plane != m_rotationPlane) return false;
-    if (m_tilted || m_tabled) {
-        const Vec3 n = normalOf(plane);
-        if (std::abs(std::abs((spatialTurn() * n).dot(n)) - 1.0) > 1e-9) return false;
-    }
+    if (!keepsPlane(plane)) return false;
     const PlaneAxes axes = planeAxes(plane);
     return m_axisScale[static_cast<size_t>(axes.first)] ==
            m_axisScale[static_cast<size_t>(axes.second)];

@@ -24,6 +24,9 @@ public:
     bool flipsOrientation(Plane plane) const;
     // An arc in `plane` stays an arc: no rotation about another axis, equal scales in the plane.
     bool keepsArcs(Plane plane) const;
+    // The tilt and the tables (or a swivel head's frame) keep `plane` a plane of the machine's
+    // linear axes: its normal stays along itself. Radius compensation needs it.
+    bool keepsPlane(Plane plane) const;
     // Factor lengths in the working plane are scaled by (uniform scaling only).
     double planeScale(Plane plane) const;
     bool identity() const;

@@ -23,13 +23,14 @@ class KlartextInterpreter::CylinderOutput final : public CycleFunctions {
 public:
     CylinderOutput(KlartextInterpreter& owner, const cycles::cylinder::CylinderPlacement& placement,
                    const cycles::cylinder::Chain* aligned, double toleranceMm, Axis table,
-                   const Vec3& start)
+                   const Vec3& start, const Vec3& headOffset)
         : CycleFunctions(owner),
           m_placement(placement),
           m_aligned(aligned),
           m_tolerance(toleranceMm),
           m_table(table),
           m_local(start),
+          m_headOffset(headOffset),
           m_at(owner.m_frame.toWorkpiece(owner.m_programmed)) {}
 
     void rapid(const Vec3& target) override { go(target, true, 0.0); }
@@ -73,7 +74,7 @@ private:
             m_turns = 360.0 * std::round((current - pose.angleDeg) / 360.0);
         }
         Pose target = m_at;
-        target.setXyz(pose.linear);
+        target.setXyz(pose.linear + m_headOffset);
         target[m_table] = pose.angleDeg + *m_turns - preset;
         // F is the feed on the surface: the stream's feed runs along the linear axes (along the
         // rotary one when they stand still), so it is scaled by that length over the unrolled one.
@@ -93,7 +94,8 @@ private:
     double m_tolerance;
     Axis m_table;
     Vec3 m_local;
-    Pose m_at;  // stream coordinates
+    Vec3 m_headOffset;  // a turned swivel head: the linear axes beside the tip
+    Pose m_at;          // stream coordinates
     std::optional<double> m_turns;
 };
 
@@ -102,7 +104,7 @@ std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
     const cycles::CycleDescriptor& d = *m_cycle->descriptor;
     const std::string number = std::to_string(d.number);
     // Spec §7: a rotary table carries the cylinder, the tool perpendicular to its axis.
-    if (!m_kinematics) {
+    if (!m_kinematics || !m_kinematics->hasTable()) {
         fail("not-supported",
              KERF_TR_NOOP("cycle {1} needs a rotary table described in the machine file "
                           "([kinematics], docs/machine-config.md)"),
@@ -117,11 +119,11 @@ std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
     const machine::RotaryAngles angles = currentTableAngles();
     cycles::cylinder::CylinderPlacement placement;
     placement.axis = m_kinematics->innerTableAxis(angles);
-    placement.tool = Vec3::UnitZ();
+    placement.tool = m_kinematics->headTurn(angles) * Vec3::UnitZ();
     if (m_toolAxis != Axis::Z || std::fabs(placement.axis.dot(placement.tool)) > 1e-6) {
         fail("cycle",
              KERF_TR_NOOP("cycle {1}: the tool axis must be perpendicular to the axis of rotary "
-                          "table {2} (tilt the table first, e.g. with PLANE)"),
+                          "table {2} (tilt the table or the head first, e.g. with PLANE)"),
              {number, std::string(1, m_kinematics->innerTable())});
         return nullptr;
     }
@@ -131,7 +133,10 @@ std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
     // The cylinder stands centred on the table: its axis is the table's axis, and the
     // development's Y counts from where the preset lies along it.
     const Vec3 preset = m_settings.presetInMachine.xyz() + m_frame.preset().xyz();
-    const Vec3 presetNow = m_kinematics->axesOf(Vec3::Zero(), angles, preset) + preset;
+    const double length = m_tool.effectiveLength();
+    const Vec3 headOffset = m_kinematics->headOffset(angles, length);
+    const Vec3 presetNow =
+        m_kinematics->axesOf(Vec3::Zero(), angles, preset, length) - headOffset + preset;
     const Vec3& pivot = m_kinematics->pivot();
     placement.origin = pivot + placement.axis * placement.axis.dot(presetNow - pivot) -
                        m_settings.presetInMachine.xyz();
@@ -145,15 +150,16 @@ std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
     }
     const Axis table = *axisFromLetter(m_kinematics->innerTable());
     const Pose at = m_frame.toWorkpiece(m_programmed);
-    const Vec3 fromAxis = at.xyz() - placement.origin;
+    const Vec3 fromAxis = at.xyz() - headOffset - placement.origin;
     const double angle = at[table] + m_settings.presetInMachine[table];
     ctx.start =
         Vec3(std::remainder(angle, 360.0) * std::numbers::pi / 180.0 * placement.radiusMm,
              fromAxis.dot(placement.axis), fromAxis.dot(placement.tool) - placement.radiusMm);
 
     const bool aligned = d.number != 27;
-    return std::make_unique<CylinderOutput>(
-        *this, placement, aligned ? &ctx.train.segments : nullptr, tolerance, table, ctx.start);
+    return std::make_unique<CylinderOutput>(*this, placement,
+                                            aligned ? &ctx.train.segments : nullptr, tolerance,
+                                            table, ctx.start, headOffset);
 }
 
 }  // namespace kerf::klartext

@@ -436,6 +436,10 @@ private:
                                                     PlaneBlock::Sequence sequence,
                                                     bool tableRotation, std::string_view feature);
     void applyTilt(const TiltRequest& request);
+    // The frame's turn and offset of the linear axes for the plane's solved angles and the tool
+    // now in the spindle (a swivel head turns the tip by its length).
+    void setTableFrame();
+    Vec3 tiltPreset() const;
     // A line in stream coordinates (the machine's linear axes), past the transformations.
     void emitStreamMove(const Pose& from, const Pose& to, bool rapid, double feed);
     // Where a rotary axis word takes the axis (program coordinates): endless axes count from
@@ -557,6 +561,7 @@ private:
     TiltState m_tilt;
     Eigen::Matrix3d m_tableTurn = Eigen::Matrix3d::Identity();
     Vec3 m_tableOffset = Vec3::Zero();
+    machine::RotaryAngles m_tiltAngles;  // the active plane's solved angles
     bool m_shortestRotary = false;
     bool m_tcpm = false;  // M128 / FUNCTION TCPM
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.

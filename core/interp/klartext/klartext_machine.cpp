@@ -276,6 +276,12 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
         emit(canon::ToolUpdate{m_tool.geometry(), m_toolAxis});
     }
     m_path.setToolRadius(m_tool.effectiveRadius());
+    if (m_kinematics && m_kinematics->hasHead() && m_tilt.active) {
+        // A turned head holds the new tool's tip elsewhere: the tilted frame follows its length.
+        const Pose at = m_frame.toWorkpiece(m_programmed);
+        setTableFrame();
+        m_programmed = m_frame.toProgram(at);
+    }
     // Parameters the control sets on a tool call.
     m_q.set({QKind::Q, 108}, m_tool.effectiveRadius() / scale);
     m_q.set({QKind::Q, 114}, m_tool.effectiveLength() / scale);

@@ -94,6 +94,16 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
         fail("not-supported", KERF_TR_NOOP("circles with TCPM are not supported yet"));
         return;
     }
+    if ((m_comp == CompWord::Left || m_comp == CompWord::Right) &&
+        !m_frame.keepsPlane(element.plane)) {
+        // A swivel head turned out of the machine's planes: the axes move in a plane the path's
+        // compensation does not know.
+        fail("not-supported",
+             KERF_TR_NOOP("radius compensation RL/RR in a working plane that the swivel head "
+                          "turns out of the machine's planes is not supported yet: program the "
+                          "tool centre path with R0"));
+        return;
+    }
     auto transformed = toWorkpiece(element);
     if (!transformed) return;
     interp::PathMove move;

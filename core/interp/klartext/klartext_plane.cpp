@@ -98,7 +98,7 @@ machine::RotaryAngles KlartextInterpreter::currentTableAngles() const {
         return at[axis] + m_settings.presetInMachine[axis];
     };
     angles.primaryDeg = machineAngle(m_kinematics->primary());
-    if (m_kinematics->twoTables()) angles.secondaryDeg = machineAngle(m_kinematics->secondary());
+    if (m_kinematics->twoAxes()) angles.secondaryDeg = machineAngle(m_kinematics->secondary());
     return angles;
 }
 
@@ -138,7 +138,7 @@ std::optional<machine::RotaryAngles> KlartextInterpreter::solvePlane(
             const auto& s = solutions.list[static_cast<size_t>(i)];
             if (!found.empty()) found += ", ";
             found += std::string(1, m_kinematics->primary()) + formatFixed(s.primaryDeg, 3);
-            if (m_kinematics->twoTables()) {
+            if (m_kinematics->twoAxes()) {
                 found += " " + std::string(1, m_kinematics->secondary()) +
                          formatFixed(s.secondaryDeg, 3);
             }
@@ -175,17 +175,17 @@ void KlartextInterpreter::executePlane(const PlaneBlock& b) {
             const char letter = "ABC"[i];
             if (letter == m_kinematics->primary()) {
                 angles->primaryDeg = b.values[static_cast<size_t>(i)];
-            } else if (m_kinematics->twoTables() && letter == m_kinematics->secondary()) {
+            } else if (m_kinematics->twoAxes() && letter == m_kinematics->secondary()) {
                 angles->secondaryDeg = b.values[static_cast<size_t>(i)];
             } else {
                 fail("plane",
-                     KERF_TR_NOOP("PLANE AXIAL: {1} is not a rotary table of this "
-                                  "machine"),
+                     KERF_TR_NOOP("PLANE AXIAL: {1} is not a rotary axis of the kinematics of "
+                                  "this machine"),
                      {std::string(1, letter)});
                 return;
             }
         }
-        rotation = m_kinematics->workpieceToMachine(*angles).transpose();
+        rotation = m_kinematics->toolFrame(*angles);
     } else {
         angles = solvePlane(*rotation, b.sequence, b.tableRotation, "PLANE");
         if (!angles) return;
@@ -255,13 +255,12 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
             m_q.set(QRef{QKind::Q, static_cast<uint16_t>(120 + (letter - 'A'))}, deg);
         };
         result(m_kinematics->primary(), request.angles.primaryDeg);
-        if (m_kinematics->twoTables())
-            result(m_kinematics->secondary(), request.angles.secondaryDeg);
+        if (m_kinematics->twoAxes()) result(m_kinematics->secondary(), request.angles.secondaryDeg);
     }
     Pose at = m_frame.toWorkpiece(m_programmed);  // the stream: linear axes of the machine
-    const Eigen::Matrix3d oldTable = m_tableTurn;
-    const Vec3 oldOffset = m_tableOffset;
-    // The frame: tilt, then the tables' turn at the solved angles (the axes may still stand
+    // Where the axes stand now (they may differ from the old plane's angles after STAY).
+    const machine::RotaryAngles oldAngles = m_kinematics ? tableAnglesOf(at) : m_tiltAngles;
+    // The frame: tilt, then the axes' turn at the solved angles (the axes may still stand
     // elsewhere with STAY: the program positions them, as on the TNC).
     if (request.reset) {
         if (m_frame.tilted()) m_frame.clearTilt();
@@ -271,15 +270,8 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
         m_tilt.active = true;
         m_tilt.rotation = request.rotation;
     }
-    m_tableTurn = Eigen::Matrix3d::Identity();
-    m_tableOffset = Vec3::Zero();
-    if (m_kinematics && !request.reset) {
-        m_tableTurn = m_kinematics->workpieceToMachine(request.angles);
-        // The preset in machine coordinates: the run's, moved by cycle 247.
-        const Vec3 preset = m_settings.presetInMachine.xyz() + m_frame.preset().xyz();
-        m_tableOffset = m_kinematics->axesOf(Vec3::Zero(), request.angles, preset);
-    }
-    m_frame.setTable(m_tableTurn, m_tableOffset);
+    m_tiltAngles = request.reset ? machine::RotaryAngles{} : request.angles;
+    setTableFrame();
     if (request.positioning != PlaneBlock::Positioning::Stay && m_kinematics) {
         // MB: away from the part along the tool axis first.
         Pose retracted = at;
@@ -290,10 +282,15 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
                 retracted.values[tool] = axis->maxLimit - m_settings.presetInMachine.values[tool] -
                                          m_tool.effectiveLength();
             }
-        } else if (request.retract) {
-            retracted.values[tool] += *request.retract;
+        } else if (request.retract && *request.retract > 0.0) {
+            // Along the tool, which a swivel head may have turned away from Z.
+            retracted.setXyz(at.xyz() +
+                             *request.retract * m_kinematics->headTurn(oldAngles) * Vec3::UnitZ());
         }
-        if (retracted.values[tool] > at.values[tool]) {
+        // MB MAX never moves down; MB n always moves away along the tool.
+        const bool away = request.retractMax ? retracted.values[tool] > at.values[tool]
+                                             : (retracted.xyz() - at.xyz()).norm() > 1e-9;
+        if (away) {
             emitStreamMove(at, retracted, true, 0.0);
             at = retracted;
         }
@@ -303,18 +300,37 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
             target[axis] = deg - m_settings.presetInMachine[axis];
         };
         setAngle(m_kinematics->primary(), request.angles.primaryDeg);
-        if (m_kinematics->twoTables())
+        if (m_kinematics->twoAxes())
             setAngle(m_kinematics->secondary(), request.angles.secondaryDeg);
         if (request.positioning == PlaneBlock::Positioning::Move) {
             // The point DIST along the tool from the tip stays where it is on the workpiece.
-            const Vec3 kept = at.xyz() + request.distance * Vec3::UnitZ();
-            const Vec3 onPart = oldTable.transpose() * (kept - oldOffset);
-            target.setXyz(m_tableTurn * onPart + m_tableOffset - request.distance * Vec3::UnitZ());
+            const Vec3 preset = tiltPreset();
+            const double length = m_tool.effectiveLength();
+            const Vec3 kept = m_kinematics->tipOf(at.xyz(), oldAngles, preset, length) +
+                              request.distance * m_kinematics->toolDirection(oldAngles);
+            const Vec3 tip = kept - request.distance * m_kinematics->toolDirection(m_tiltAngles);
+            target.setXyz(m_kinematics->axesOf(tip, m_tiltAngles, preset, length));
         }
         emitStreamMove(at, target, request.rapid, request.feed);
         at = target;
     }
     m_programmed = m_frame.toProgram(at);
+}
+
+Vec3 KlartextInterpreter::tiltPreset() const {
+    // The preset in machine coordinates: the run's, moved by cycle 247.
+    return m_settings.presetInMachine.xyz() + m_frame.preset().xyz();
+}
+
+void KlartextInterpreter::setTableFrame() {
+    m_tableTurn = Eigen::Matrix3d::Identity();
+    m_tableOffset = Vec3::Zero();
+    if (m_kinematics && m_tilt.active) {
+        m_tableTurn = m_kinematics->workpieceToMachine(m_tiltAngles);
+        m_tableOffset = m_kinematics->axesOf(Vec3::Zero(), m_tiltAngles, tiltPreset(),
+                                             m_tool.effectiveLength());
+    }
+    m_frame.setTable(m_tableTurn, m_tableOffset);
 }
 
 void KlartextInterpreter::emitStreamMove(const Pose& from, const Pose& to, bool rapid,

@@ -9,11 +9,11 @@
 namespace kerf::klartext {
 
 std::string KlartextInterpreter::tableAxisLetters() const {
-    if (!m_kinematics) return {};
-    // The secondary table rides on the primary one: it is the nearer to the workpiece.
-    std::string letters;
-    if (m_kinematics->twoTables()) letters += m_kinematics->secondary();
-    letters += m_kinematics->primary();
+    if (!m_kinematics || !m_kinematics->hasTable()) return {};
+    // The secondary table rides on the primary one: it is the nearer to the workpiece. A swivel
+    // head's axis turns no table.
+    std::string letters(1, m_kinematics->innerTable());
+    if (m_kinematics->twoAxes() && !m_kinematics->hasHead()) letters += m_kinematics->primary();
     return letters;
 }
 

@@ -92,22 +92,20 @@ private:
     Vec3 toPart(const Vec3& local) const {
         const Vec3 stream = m_k.m_frame.toWorkpiece(m_k.fromLocal(local)).xyz();
         if (!m_k.m_kinematics) return stream;
-        const machine::RotaryAngles angles = m_k.currentTableAngles();
-        return m_k.m_kinematics->workpieceToMachine(angles).transpose() *
-               (stream - tableOffset(angles));
+        return m_k.m_kinematics->tipOf(stream, m_k.currentTableAngles(),
+                                       m_k.m_settings.presetInMachine.xyz(),
+                                       m_k.m_tool.effectiveLength());
     }
     Vec3 fromPart(const Vec3& part) const {
         Pose p = m_k.m_frame.toWorkpiece(m_k.m_programmed);
         if (m_k.m_kinematics) {
-            const machine::RotaryAngles angles = m_k.currentTableAngles();
-            p.setXyz(m_k.m_kinematics->workpieceToMachine(angles) * part + tableOffset(angles));
+            p.setXyz(m_k.m_kinematics->axesOf(part, m_k.currentTableAngles(),
+                                              m_k.m_settings.presetInMachine.xyz(),
+                                              m_k.m_tool.effectiveLength()));
         } else {
             p.setXyz(part);
         }
         return m_k.toLocal(m_k.m_frame.toProgram(p));
-    }
-    Vec3 tableOffset(const machine::RotaryAngles& angles) const {
-        return m_k.m_kinematics->axesOf(Vec3::Zero(), angles, m_k.m_settings.presetInMachine.xyz());
     }
 
     KlartextInterpreter& m_k;

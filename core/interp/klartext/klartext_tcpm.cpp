@@ -27,7 +27,7 @@ Pose lerp(const Pose& a, const Pose& b, double t) {
 void KlartextInterpreter::switchTcpm(bool on) {
     if (!checkPathError(activePath().flush())) return;
     if (on && !m_kinematics) {
-        fail("tcpm", KERF_TR_NOOP("TCPM needs the rotary tables described in the machine file "
+        fail("tcpm", KERF_TR_NOOP("TCPM needs the rotary axes described in the machine file "
                                   "([kinematics], e.g. --machine mill5)"));
         return;
     }
@@ -50,23 +50,23 @@ machine::RotaryAngles KlartextInterpreter::tableAnglesOf(const Pose& pose) const
         return pose[axis] + m_settings.presetInMachine[axis];
     };
     a.primaryDeg = angle(m_kinematics->primary());
-    if (m_kinematics->twoTables()) a.secondaryDeg = angle(m_kinematics->secondary());
+    if (m_kinematics->twoAxes()) a.secondaryDeg = angle(m_kinematics->secondary());
     return a;
 }
 
 Pose KlartextInterpreter::axesOfTip(const Pose& tip) const {
     Pose axes = tip;
     const Vec3 preset = m_settings.presetInMachine.xyz() + m_frame.preset().xyz();
-    axes.setXyz(m_kinematics->axesOf(tip.xyz(), tableAnglesOf(tip), preset));
+    axes.setXyz(
+        m_kinematics->axesOf(tip.xyz(), tableAnglesOf(tip), preset, m_tool.effectiveLength()));
     return axes;
 }
 
 Pose KlartextInterpreter::tipOf(const Pose& axes) const {
-    const machine::RotaryAngles a = tableAnglesOf(axes);
     const Vec3 preset = m_settings.presetInMachine.xyz() + m_frame.preset().xyz();
-    const Vec3 offset = m_kinematics->axesOf(Vec3::Zero(), a, preset);
     Pose tip = axes;
-    tip.setXyz(m_kinematics->workpieceToMachine(a).transpose() * (axes.xyz() - offset));
+    tip.setXyz(
+        m_kinematics->tipOf(axes.xyz(), tableAnglesOf(axes), preset, m_tool.effectiveLength()));
     return tip;
 }
 

@@ -8,6 +8,8 @@ namespace kerf::machine::detail {
 std::string_view millPresetToml();
 std::string_view mill4PresetToml();
 std::string_view mill5PresetToml();
+std::string_view mill5hPresetToml();
+std::string_view mill5hhPresetToml();
 std::string_view lathePresetToml();
 
 }  // namespace kerf::machine::detail

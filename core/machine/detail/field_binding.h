@@ -106,7 +106,8 @@ struct FieldCodec<ToolProbeShape> : EnumCodec<ToolProbeShape> {
 template <>
 struct FieldCodec<KinematicsType> : EnumCodec<KinematicsType> {
     static const std::vector<std::string_view>& names() {
-        static const std::vector<std::string_view> list{"none", "table", "table-table"};
+        static const std::vector<std::string_view> list{"none", "table", "table-table",
+                                                        "head-table", "head-head"};
         return list;
     }
 };

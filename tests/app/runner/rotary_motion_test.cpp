@@ -120,6 +120,30 @@ TEST_F(RotaryMotion, RotaryBeyondItsSoftLimitIsRefused) {
         << readText(dir / "errors");
 }
 
+// mill5h (B head, pivot 200 mm above the spindle nose), tool 1 of length 80: PLANE ... B+90 MOVE
+// keeps the tip, so the axes make up for the head by (200 + 80)(+1, 0, -1): from X+100 the X axis
+// goes to 380 (inside its +400), from X+150 to 430, which the soft limit refuses, naming the
+// PLANE block (block 3, line 4), although the programmed X never leaves the work area.
+TEST_F(RotaryMotion, HeadPivotBeyondTheXLimitIsRefused) {
+    auto program = [](int x) {
+        return "0 BEGIN PGM HEADLIM MM\n1 TOOL CALL 1 Z S1000\n2 L X+" + std::to_string(x) +
+               " Y+0 Z+50 R0 FMAX\n3 PLANE SPATIAL SPA+0 SPB+90 SPC+0 MOVE FMAX SEQ+\n"
+               "4 L Z+10 R0 F500\n5 PLANE RESET MOVE FMAX\n6 END PGM HEADLIM MM\n";
+    };
+    std::ofstream(dir / "INSIDE.H") << program(100);
+    nlohmann::json report;
+    ASSERT_EQ(run("INSIDE.H", report, "mill5h"), 0) << readText(dir / "errors");
+    EXPECT_NEAR(report["feed_bounds"]["max"]["X"].get<double>(), 380.0, 1e-6);
+    std::ofstream(dir / "HEADLIM.H") << program(150);
+    EXPECT_NE(run("HEADLIM.H", report, "mill5h"), 0);
+    EXPECT_FALSE(report["ok"].get<bool>());
+    const std::string errors = readText(dir / "errors");
+    EXPECT_NE(errors.find("HEADLIM.H:4:1: error: Block 3: the move would take axis X to 430.000 "
+                          "(machine coordinates), beyond its soft limit 400.000"),
+              std::string::npos)
+        << errors;
+}
+
 }  // namespace
 
 namespace {
@@ -185,6 +209,56 @@ TEST_F(RotaryMotion, TcpmKeepsTheTipOnTheProgrammedLine) {
     EXPECT_LE(worst, 0.01);
     EXPECT_NEAR(lastB, 0.0, 1e-6);
     EXPECT_NEAR(lastC, 90.0, 1e-6);
+}
+
+}  // namespace
+
+namespace {
+
+// TCPM on mill5h (B head, pivot 200 mm above the spindle nose; tool 1, L 80): the tip stays at
+// (0, 0, 50) while the head turns to B+90, goes to (10, 0, 50) while it turns back, and stays while
+// the C table turns 90. The part's tip of every servo cycle: take the head's offset
+// (Ry(B) - I)(0, 0, 280) = (280 sin B, 0, 280 (cos B - 1)) off the axes, then turn back by the
+// table, Rz(C). From the first cycle it reaches (0, 0, 50) on, it stays within the path tolerance.
+TEST_F(RotaryMotion, TcpmOnTheSwivelHeadKeepsTheTipOnTheProgrammedLine) {
+    std::ofstream(dir / "TCPMH.H") << "0 BEGIN PGM TCPMH MM\n1 TOOL CALL 1 Z S1000\n"
+                                      "2 L X+0 Y+0 Z+50 R0 FMAX\n"
+                                      "3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                                      "4 L B+90 F3000\n5 L X+10 B+0 F1000\n6 L C+90 F3000\n"
+                                      "7 FUNCTION RESET TCPM\n8 END PGM TCPMH MM\n";
+    const std::string samples = (dir / "samples.csv").string();
+    const std::string command =
+        std::string("\"") + KERF_BINARY + "\" run --machine mill5h --tool-table \"" +
+        (dir / "TOOL.T").string() + "\" --motion --samples \"" + samples + "\" \"" +
+        (dir / "TCPMH.H").string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir / "errors");
+    std::istringstream csv(readText(samples));
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line, "t_s,X,Y,Z,B,C,spindle_deg,path_velocity,move");
+    const double above[3] = {0, 0, 50}, end[3] = {10, 0, 50};
+    const double h = 200.0 + 80.0;
+    double worst = 0.0, maxB = 0.0;
+    bool reached = false;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        double v[6];
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3],
+                              &v[4], &v[5]),
+                  6);
+        const double b = v[4] * M_PI / 180.0, c = v[5] * M_PI / 180.0;
+        const double s[3] = {v[1] - h * std::sin(b), v[2], v[3] - h * (std::cos(b) - 1.0)};
+        const double tip[3] = {std::cos(c) * s[0] - std::sin(c) * s[1],
+                               std::sin(c) * s[0] + std::cos(c) * s[1], s[2]};
+        if (!reached && toSegment(tip, above, above) < 1e-6) reached = true;
+        if (reached) worst = std::max(worst, toSegment(tip, above, end));
+        maxB = std::max(maxB, v[4]);
+        ++rows;
+    }
+    EXPECT_TRUE(reached);
+    EXPECT_GT(rows, 1000);
+    EXPECT_NEAR(maxB, 90.0, 1e-6);
+    EXPECT_LE(worst, 0.01);
 }
 
 }  // namespace

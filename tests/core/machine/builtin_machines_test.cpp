@@ -31,8 +31,8 @@ void expectAxis(const MachineConfig& machine, char letter, double minLimit, doub
 }
 
 TEST(BuiltinMachines, NamesAreMillAndLathe) {
-    EXPECT_EQ(builtinMachineNames(),
-              (std::vector<std::string_view>{"mill", "mill4", "mill5", "lathe"}));
+    EXPECT_EQ(builtinMachineNames(), (std::vector<std::string_view>{"mill", "mill4", "mill5",
+                                                                    "mill5h", "mill5hh", "lathe"}));
     EXPECT_TRUE(builtinMachineToml("router").empty());
 }
 

@@ -389,7 +389,7 @@ TEST(MachineLoaderErrors, TomlSyntaxErrorUsesTomlPosition) {
 TEST(MachineLoaderErrors, BadBase) {
     EXPECT_EQ(problemsOf("base = \"router\"\n"),
               Lines{"mymill.toml:1:8: error: base = \"router\" is not a built-in machine (mill, "
-                    "mill4, mill5, lathe)"});
+                    "mill4, mill5, mill5h, mill5hh, lathe)"});
 }
 
 TEST(MachineLoaderErrors, NoAxesAtAll) {

@@ -90,14 +90,15 @@ TEST(TableKinematics, TablesTurnTheWorkpieceTheOtherWay) {
 TEST(TableKinematics, AxesOfAPointAboutThePivot) {
     const TableKinematics k = kinematicsOf("mill5");  // pivot at machine (0, 0, -400)
     // Preset at the pivot: the point only turns.
-    expectVec(k.axesOf(Vec3(10.0, 0.0, 0.0), {90.0, 0.0}, Vec3(0.0, 0.0, -400.0)),
+    expectVec(k.axesOf(Vec3(10.0, 0.0, 0.0), {90.0, 0.0}, Vec3(0.0, 0.0, -400.0), 0.0),
               Vec3(0.0, 0.0, 10.0));
     // Preset 50 mm above the pivot: B+90 carries it to 50 mm beside the pivot at pivot height,
     // (-50, 0, -50) from where it was; the point 10 mm along X is 10 mm above that.
-    expectVec(k.axesOf(Vec3(10.0, 0.0, 0.0), {90.0, 0.0}, Vec3(0.0, 0.0, -350.0)),
+    expectVec(k.axesOf(Vec3(10.0, 0.0, 0.0), {90.0, 0.0}, Vec3(0.0, 0.0, -350.0), 0.0),
               Vec3(-50.0, 0.0, -40.0));
     // At B 0 C 0 nothing moves.
-    expectVec(k.axesOf(Vec3(1.0, 2.0, 3.0), {0.0, 0.0}, Vec3(5.0, 6.0, 7.0)), Vec3(1.0, 2.0, 3.0));
+    expectVec(k.axesOf(Vec3(1.0, 2.0, 3.0), {0.0, 0.0}, Vec3(5.0, 6.0, 7.0), 0.0),
+              Vec3(1.0, 2.0, 3.0));
 }
 
 TEST(TableKinematics, InverseGivesBothSolutions) {
