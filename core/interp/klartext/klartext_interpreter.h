@@ -167,6 +167,9 @@ private:
     // Whether the program at `path` is read as DIN/ISO; makes its reader and parser current.
     bool isIsoProgram(const std::filesystem::path& path, Origin origin) const;
     void selectProgram(const ProgramFile& program);
+    // The parser for a program read on the side (contour programs): the conversational one, or
+    // a new one of the program's own syntax held in `own`.
+    BlockSyntax& parserFor(const ProgramFile& program, std::unique_ptr<BlockSyntax>& own);
     void startLevel(ProgramFile* program, size_t returnOffset, uint32_t returnLine);
     bool endOfProgram(bool explicitEnd);
     void finish(bool emitEnd, int mCode);
@@ -313,7 +316,7 @@ private:
     bool captureFormula(std::optional<cycles::ContourFormula>& out);
     bool runDefinitionProgram(cycles::ContourFormula& out);
     bool captureProgramContour(const std::string& name, const std::filesystem::path& folder,
-                               cycles::FormulaContour& out);
+                               bool isoCaller, cycles::FormulaContour& out);
     struct FormulaBuild;
     // Where moves go: the canonical stream, or a contour subprogram being read.
     interp::PathBuilder& activePath() { return m_capturePath ? *m_capturePath : m_path; }
@@ -558,6 +561,7 @@ private:
     ContourSource m_contourSource = ContourSource::Labels;
     std::string m_contourProgram;            // SEL CONTOUR: the definition program, as programmed
     std::filesystem::path m_contourFolder;   // and the folder of the program that selected it
+    bool m_contourIsoCaller = false;         // which is a DIN/ISO program (.I names first)
     ContourDefinition m_simpleContours;      // CONTOUR DEF
     FormulaBuild* m_formulaBuild = nullptr;  // a definition program being read
     // Transformations programmed in the contour subprograms of the cycle being called.
