@@ -184,6 +184,10 @@
         <source>Other solutions</source>
         <translation>Outras soluções</translation>
     </message>
+    <message>
+        <source>FK element with solution 1 assumed (no FSELECT)</source>
+        <translation>Elemento FK com a solução 1 assumida (sem FSELECT)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::GraphicsPanel</name>
@@ -7590,10 +7594,6 @@ fixos</translation>
         <translation>kinematics.secondary tem de ser outro eixo que kinematics.primary</translation>
     </message>
     <message>
-        <source>FK programming works in the XY plane only (tool axis Z)</source>
-        <translation>A programação FK só funciona no plano XY (eixo da ferramenta Z)</translation>
-    </message>
-    <message>
         <source>P{1} expected after G18</source>
         <translation>esperado P{1} após G18</translation>
     </message>
@@ -8012,6 +8012,10 @@ solução</translation>
     <message>
         <source>the contour subprogram {1} has no contour</source>
         <translation>o subprograma de contorno {1} não tem contorno</translation>
+    </message>
+    <message>
+        <source>FK: {1} is not an axis of the working plane</source>
+        <translation>FK: {1} não é um eixo do plano de maquinagem</translation>
     </message>
 </context>
 <context>

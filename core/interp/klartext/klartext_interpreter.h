@@ -261,10 +261,12 @@ private:
     };
     struct FkState {
         fk::FkSolver solver;
-        bool active = false;  // an FK sequence is open
+        bool active = false;      // an FK sequence is open
+        Plane plane = Plane::XY;  // the working plane it runs in
         std::map<size_t, FkBlockState> blocks;
         size_t nextTag = 0;
-        std::optional<Vec2> pole;  // FPOL stays until the next FPOL
+        std::optional<FkPole> pole;  // FPOL (in mm) stays until the next FPOL
+        bool tentative = false;      // tracing: solution 1 was taken for a missing FSELECT
     };
     void executeFk(const FkBlock& block);
     void executeFkSelect(const FkSelect& select);
@@ -273,6 +275,9 @@ private:
     // Other blocks end the sequence first.
     bool routeThroughFk(const Statement& statement);
     void finishFk();
+    // Tracing for the programming graphics: an FSELECT is missing; report it and go on with
+    // solution 1, so the elements after it can be drawn.
+    void chooseTentatively();
     void applyFkStep(const fk::FkStep& step);
     void emitFkElement(const fk::FkResolved& resolved);
     void traceAmbiguity();
