@@ -29,8 +29,7 @@ bool inWorkingPlane(const FkBlock& block, const PlaneAxes& axes, fk::FkElement& 
     const auto first = static_cast<size_t>(axisIndex(axes.first));
     const auto second = static_cast<size_t>(axisIndex(axes.second));
     const auto normal = static_cast<size_t>(axisIndex(axes.normal));
-    const char letters[] = {'X', 'Y', 'Z'};
-    stray = letters[normal];
+    stray = "XYZ"[normal];
     if (block.end[normal] || block.centre[normal] || block.pointAtDistance[normal]) return false;
     out.x = block.end[first];
     out.y = block.end[second];

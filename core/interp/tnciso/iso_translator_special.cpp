@@ -62,9 +62,11 @@ void IsoTranslator::translateSpecialFunction(Context& c, size_t at) {
     ConversationalBlock& b = c.newBlock();
     const std::string_view text = c.text;
     for (size_t s = 0; s < c.line.segments.size(); ++s) {
-        const size_t start = s == 0 ? at : c.line.segments[s].joinedOffset;
+        size_t start = s == 0 ? at : c.line.segments[s].joinedOffset;
         const size_t limit =
             s + 1 < c.line.segments.size() ? c.line.segments[s + 1].joinedOffset : text.size();
+        while (start < limit && (text[start] == ' ' || text[start] == '\t'))
+            ++start;
         if (start >= limit) continue;
         const size_t end = segmentEnd(text, start, limit);
         if (s > 0) b.newLine();
