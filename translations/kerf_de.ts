@@ -184,6 +184,10 @@
         <source>Other solutions</source>
         <translation>Andere Lösungen</translation>
     </message>
+    <message>
+        <source>FK element with solution 1 assumed (no FSELECT)</source>
+        <translation>FK-Element mit angenommener Lösung 1 (kein FSELECT)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::GraphicsPanel</name>
@@ -7566,10 +7570,6 @@ zyklen</translation>
         <translation>kinematics.secondary muss eine andere Achse als kinematics.primary sein</translation>
     </message>
     <message>
-        <source>FK programming works in the XY plane only (tool axis Z)</source>
-        <translation>FK-Programmierung arbeitet nur in der XY-Ebene (Werkzeugachse Z)</translation>
-    </message>
-    <message>
         <source>P{1} expected after G18</source>
         <translation>P{1} nach G18 erwartet</translation>
     </message>
@@ -8072,6 +8072,10 @@ wählen</translation>
     <message>
         <source>kinematics.primary is the tilting axis: A or B, not C</source>
         <translation>kinematics.primary ist die Schwenkachse: A oder B, nicht C</translation>
+    </message>
+    <message>
+        <source>FK: {1} is not an axis of the working plane</source>
+        <translation>FK: {1} ist keine Achse der Bearbeitungsebene</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

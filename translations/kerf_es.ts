@@ -184,6 +184,10 @@
         <source>Other solutions</source>
         <translation>Otras soluciones</translation>
     </message>
+    <message>
+        <source>FK element with solution 1 assumed (no FSELECT)</source>
+        <translation>Elemento FK con la solución 1 supuesta (sin FSELECT)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::GraphicsPanel</name>
@@ -7566,10 +7570,6 @@ fijos</translation>
         <translation>kinematics.secondary debe ser otro eje distinto de kinematics.primary</translation>
     </message>
     <message>
-        <source>FK programming works in the XY plane only (tool axis Z)</source>
-        <translation>La programación FK solo funciona en el plano XY (eje de herramienta Z)</translation>
-    </message>
-    <message>
         <source>P{1} expected after G18</source>
         <translation>se esperaba P{1} después de G18</translation>
     </message>
@@ -8072,6 +8072,10 @@ solución</translation>
     <message>
         <source>kinematics.primary is the tilting axis: A or B, not C</source>
         <translation>kinematics.primary es el eje basculante: A o B, no C</translation>
+    </message>
+    <message>
+        <source>FK: {1} is not an axis of the working plane</source>
+        <translation>FK: {1} no es un eje del plano de mecanizado</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

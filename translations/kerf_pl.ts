@@ -185,6 +185,10 @@
         <source>Other solutions</source>
         <translation>Inne rozwiązania</translation>
     </message>
+    <message>
+        <source>FK element with solution 1 assumed (no FSELECT)</source>
+        <translation>Element FK z przyjętym rozwiązaniem 1 (brak FSELECT)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::GraphicsPanel</name>
@@ -7569,10 +7573,6 @@ stałe</translation>
         <translation>kinematics.secondary musi być inną osią niż kinematics.primary</translation>
     </message>
     <message>
-        <source>FK programming works in the XY plane only (tool axis Z)</source>
-        <translation>Programowanie FK działa tylko w płaszczyźnie XY (oś narzędzia Z)</translation>
-    </message>
-    <message>
         <source>P{1} expected after G18</source>
         <translation>oczekiwano P{1} po G18</translation>
     </message>
@@ -8075,6 +8075,10 @@ rozwiązanie</translation>
     <message>
         <source>kinematics.primary is the tilting axis: A or B, not C</source>
         <translation>kinematics.primary to oś uchylna: A lub B, nie C</translation>
+    </message>
+    <message>
+        <source>FK: {1} is not an axis of the working plane</source>
+        <translation>FK: {1} nie jest osią płaszczyzny obróbki</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

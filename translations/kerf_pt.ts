@@ -184,6 +184,10 @@
         <source>Other solutions</source>
         <translation>Outras soluções</translation>
     </message>
+    <message>
+        <source>FK element with solution 1 assumed (no FSELECT)</source>
+        <translation>Elemento FK com a solução 1 assumida (sem FSELECT)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::GraphicsPanel</name>
@@ -7566,10 +7570,6 @@ fixos</translation>
         <translation>kinematics.secondary tem de ser outro eixo que kinematics.primary</translation>
     </message>
     <message>
-        <source>FK programming works in the XY plane only (tool axis Z)</source>
-        <translation>A programação FK só funciona no plano XY (eixo da ferramenta Z)</translation>
-    </message>
-    <message>
         <source>P{1} expected after G18</source>
         <translation>esperado P{1} após G18</translation>
     </message>
@@ -8072,6 +8072,10 @@ solução</translation>
     <message>
         <source>kinematics.primary is the tilting axis: A or B, not C</source>
         <translation>kinematics.primary é o eixo basculante: A ou B, não C</translation>
+    </message>
+    <message>
+        <source>FK: {1} is not an axis of the working plane</source>
+        <translation>FK: {1} não é um eixo do plano de maquinagem</translation>
     </message>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>

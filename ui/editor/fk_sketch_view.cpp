@@ -140,10 +140,14 @@ void FkSketchView::paintEvent(QPaintEvent*) {
         painter.drawPath(frame.path(move.segment));
     }
     int open = 0;
+    int tentative = 0;
     for (const auto& element : fk.elements) {
         if (element.sequenceStart) lastEnd = element.sequenceStart;
         if (element.segment) {
-            painter.setPen(pen(kDetermined, 2.5 * wide(element.at.line)));
+            // Elements that follow from solution 1 of a missing FSELECT are dashed.
+            tentative += element.tentative ? 1 : 0;
+            painter.setPen(pen(kDetermined, 2.5 * wide(element.at.line),
+                               element.tentative ? Qt::DashLine : Qt::SolidLine));
             painter.drawPath(frame.path(*element.segment));
             lastEnd = element.segment->end;
             continue;
@@ -175,6 +179,10 @@ void FkSketchView::paintEvent(QPaintEvent*) {
     };
     std::vector<Entry> legend{{kContour, 2.0, Qt::SolidLine, tr("Contour")},
                               {kDetermined, 2.5, Qt::SolidLine, tr("FK element determined")}};
+    if (tentative > 0) {
+        legend.push_back({kDetermined, 2.5, Qt::DashLine,
+                          tr("FK element with solution 1 assumed (no FSELECT)")});
+    }
     if (open > 0) legend.push_back({kOpen, 2.0, Qt::DashLine, tr("FK element not determined")});
     if (offering) {
         const auto count =

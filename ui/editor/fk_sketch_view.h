@@ -8,8 +8,9 @@
 namespace kerf::ui {
 
 // The programming graphics of FK free contour programming (docs/hmi.md): the program's contour in
-// the XY plane as the editor's last check left it. Determined FK elements are solid, elements not
-// yet determined dashed red (to their end point where X and Y are given), the other moves grey;
+// the XY plane as the editor's last check left it. Determined FK elements are solid (dashed when
+// they follow from solution 1 of a missing FSELECT), elements not yet determined dashed red (to
+// their end point where X and Y are given), the other moves grey;
 // an element with several solutions shows them all thin and the one offered thick, with its
 // number. The block under the cursor is drawn wider. A legend names the colours.
 class FkSketchView : public QWidget {

@@ -1,4 +1,5 @@
 // FK free contour blocks: FPOL X.. Y.., FSELECT n, and FL/FLT/FC/FCT with their data words.
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -11,47 +12,90 @@ namespace {
 
 using fk::FkValue;
 
+// Where a data word's value goes in the block.
+using Slot = std::optional<FkValue>& (*)(FkBlock&);
+template <size_t Axis>
+std::optional<FkValue>& endAt(FkBlock& b) {
+    return b.end[Axis];
+}
+template <size_t Axis>
+std::optional<FkValue>& centreAt(FkBlock& b) {
+    return b.centre[Axis];
+}
+template <size_t Axis>
+std::optional<FkValue>& distancePointAt(FkBlock& b) {
+    return b.pointAtDistance[Axis];
+}
+template <std::optional<FkValue> fk::FkElement::*Member>
+std::optional<FkValue>& elementDatum(FkBlock& b) {
+    return b.element.*Member;
+}
+
 // A data word with a value: the keyword, where the value goes, whether it is incremental.
 struct ValueWord {
     const char* keyword;
-    std::optional<FkValue> fk::FkElement::*target;
+    Slot slot;
     bool incremental;
 };
 
 // Longest keywords first where one is the prefix of another.
-constexpr std::array<ValueWord, 22> kValueWords{{
-    {"ICCPR", &fk::FkElement::ccpr, true}, {"ICCPA", &fk::FkElement::ccpa, true},
-    {"ICCX", &fk::FkElement::ccx, true},   {"ICCY", &fk::FkElement::ccy, true},
-    {"CCPR", &fk::FkElement::ccpr, false}, {"CCPA", &fk::FkElement::ccpa, false},
-    {"CCX", &fk::FkElement::ccx, false},   {"CCY", &fk::FkElement::ccy, false},
-    {"IPDX", &fk::FkElement::pdx, true},   {"IPDY", &fk::FkElement::pdy, true},
-    {"PDX", &fk::FkElement::pdx, false},   {"PDY", &fk::FkElement::pdy, false},
-    {"IPR", &fk::FkElement::pr, true},     {"IPA", &fk::FkElement::pa, true},
-    {"IAN", &fk::FkElement::an, true},     {"PR", &fk::FkElement::pr, false},
-    {"PA", &fk::FkElement::pa, false},     {"AN", &fk::FkElement::an, false},
-    {"IX", &fk::FkElement::x, true},       {"IY", &fk::FkElement::y, true},
-    {"X", &fk::FkElement::x, false},       {"Y", &fk::FkElement::y, false},
+constexpr std::array<ValueWord, 28> kValueWords{{
+    {"ICCPR", &elementDatum<&fk::FkElement::ccpr>, true},
+    {"ICCPA", &elementDatum<&fk::FkElement::ccpa>, true},
+    {"ICCX", &centreAt<0>, true},
+    {"ICCY", &centreAt<1>, true},
+    {"ICCZ", &centreAt<2>, true},
+    {"CCPR", &elementDatum<&fk::FkElement::ccpr>, false},
+    {"CCPA", &elementDatum<&fk::FkElement::ccpa>, false},
+    {"CCX", &centreAt<0>, false},
+    {"CCY", &centreAt<1>, false},
+    {"CCZ", &centreAt<2>, false},
+    {"IPDX", &distancePointAt<0>, true},
+    {"IPDY", &distancePointAt<1>, true},
+    {"IPDZ", &distancePointAt<2>, true},
+    {"PDX", &distancePointAt<0>, false},
+    {"PDY", &distancePointAt<1>, false},
+    {"PDZ", &distancePointAt<2>, false},
+    {"IPR", &elementDatum<&fk::FkElement::pr>, true},
+    {"IPA", &elementDatum<&fk::FkElement::pa>, true},
+    {"IAN", &elementDatum<&fk::FkElement::an>, true},
+    {"PR", &elementDatum<&fk::FkElement::pr>, false},
+    {"PA", &elementDatum<&fk::FkElement::pa>, false},
+    {"AN", &elementDatum<&fk::FkElement::an>, false},
+    {"IX", &endAt<0>, true},
+    {"IY", &endAt<1>, true},
+    {"IZ", &endAt<2>, true},
+    {"X", &endAt<0>, false},
+    {"Y", &endAt<1>, false},
+    {"Z", &endAt<2>, false},
 }};
 
 // Relative data: the keyword names the quantity, the number after it the block it refers to.
 struct ReferenceWord {
     const char* keyword;
-    std::optional<FkValue> fk::FkElement::*target;
+    Slot slot;
     const char* valueKeyword;  // the incremental value the reference belongs to
 };
-constexpr std::array<ReferenceWord, 11> kReferenceWords{{
-    {"RCCPR", &fk::FkElement::ccpr, "ICCPR"},
-    {"RCCPA", &fk::FkElement::ccpa, "ICCPA"},
-    {"RCCX", &fk::FkElement::ccx, "ICCX"},
-    {"RCCY", &fk::FkElement::ccy, "ICCY"},
-    {"RPDX", &fk::FkElement::pdx, "IPDX"},
-    {"RPDY", &fk::FkElement::pdy, "IPDY"},
-    {"RPR", &fk::FkElement::pr, "IPR"},
-    {"RPA", &fk::FkElement::pa, "IPA"},
-    {"RAN", &fk::FkElement::an, "IAN"},
-    {"RX", &fk::FkElement::x, "IX"},
-    {"RY", &fk::FkElement::y, "IY"},
+constexpr std::array<ReferenceWord, 14> kReferenceWords{{
+    {"RCCPR", &elementDatum<&fk::FkElement::ccpr>, "ICCPR"},
+    {"RCCPA", &elementDatum<&fk::FkElement::ccpa>, "ICCPA"},
+    {"RCCX", &centreAt<0>, "ICCX"},
+    {"RCCY", &centreAt<1>, "ICCY"},
+    {"RCCZ", &centreAt<2>, "ICCZ"},
+    {"RPDX", &distancePointAt<0>, "IPDX"},
+    {"RPDY", &distancePointAt<1>, "IPDY"},
+    {"RPDZ", &distancePointAt<2>, "IPDZ"},
+    {"RPR", &elementDatum<&fk::FkElement::pr>, "IPR"},
+    {"RPA", &elementDatum<&fk::FkElement::pa>, "IPA"},
+    {"RAN", &elementDatum<&fk::FkElement::an>, "IAN"},
+    {"RX", &endAt<0>, "IX"},
+    {"RY", &endAt<1>, "IY"},
+    {"RZ", &endAt<2>, "IZ"},
 }};
+
+int axisIndexOf(char upperLetter) {
+    return upperLetter == 'X' ? 0 : (upperLetter == 'Y' ? 1 : (upperLetter == 'Z' ? 2 : -1));
+}
 
 }  // namespace
 
@@ -71,24 +115,24 @@ bool BlockParser::parseFk(std::string_view head, const program::LogicalLine& lin
         return true;
     }
     if (head == "FPOL") {
-        std::optional<double> x, y;
+        FkPole pole;
+        size_t given = 0;
         while (!cur.atEnd()) {
-            double v = 0.0;
             const size_t wordAt = cur.position();
-            if (cur.acceptPrefix("X") && !x) {
-                if (!parseValue(cur, v)) return false;
-                x = v;
-            } else if (cur.acceptPrefix("Y") && !y) {
-                if (!parseValue(cur, v)) return false;
-                y = v;
-            } else {
+            const int axis = axisIndexOf(upper(cur.peek()));
+            if (axis < 0 || pole.coords[static_cast<size_t>(axis)]) {
                 return failAt(wordAt, "syntax", KERF_TR_NOOP("FPOL takes X and Y once each"));
             }
+            cur.setPosition(cur.position() + 1);
+            double v = 0.0;
+            if (!parseValue(cur, v)) return false;
+            pole.coords[static_cast<size_t>(axis)] = v;
+            ++given;
         }
-        if (!x || !y) {
+        if (given != 2) {
             return failAt(cur.position(), "syntax", KERF_TR_NOOP("FPOL needs X and Y"));
         }
-        out.statement = FkPole{*x, *y};
+        out.statement = pole;
         return true;
     }
     FkBlock b;
@@ -97,8 +141,7 @@ bool BlockParser::parseFk(std::string_view head, const program::LogicalLine& lin
                      : head == "FC"  ? fk::FkKind::Arc
                                      : fk::FkKind::TangentArc;
     b.element.blockNumber = out.blockNumber;
-    std::array<std::optional<double>, 6> auxiliary{};  // P1X P1Y P2X P2Y P3X P3Y
-    std::array<size_t, 6> auxiliaryAt{};
+    std::array<size_t, 3> auxiliaryAt{};  // where P1.., P2.., P3.. start
     std::array<std::optional<int64_t>, kReferenceWords.size()> references{};
     std::array<size_t, kReferenceWords.size()> referenceAt{};
     auto duplicate = [&](size_t wordAt) {
@@ -157,9 +200,10 @@ bool BlockParser::parseFk(std::string_view head, const program::LogicalLine& lin
         if (matched) continue;
         for (const ValueWord& word : kValueWords) {
             if (!cur.acceptPrefix(word.keyword)) continue;
-            if (b.element.*word.target) return duplicate(wordAt);
+            std::optional<FkValue>& slot = word.slot(b);
+            if (slot) return duplicate(wordAt);
             if (!parseValue(cur, v)) return false;
-            b.element.*word.target = FkValue{v, word.incremental, std::nullopt};
+            slot = FkValue{v, word.incremental, std::nullopt};
             matched = true;
             break;
         }
@@ -168,12 +212,12 @@ bool BlockParser::parseFk(std::string_view head, const program::LogicalLine& lin
         if (c == 'P' && cur.position() + 2 < line.text.size()) {
             const char number = line.text[cur.position() + 1];
             const char axis = upper(line.text[cur.position() + 2]);
-            if (number >= '1' && number <= '3' && (axis == 'X' || axis == 'Y')) {
+            if (number >= '1' && number <= '3' && axisIndexOf(axis) >= 0) {
                 cur.setPosition(cur.position() + 3);
-                const auto index = static_cast<size_t>((number - '1') * 2 + (axis == 'Y'));
-                auto& slot = auxiliary[index];
+                const auto point = static_cast<size_t>(number - '1');
+                auto& slot = b.pointsOn[point][static_cast<size_t>(axisIndexOf(axis))];
                 if (slot) return duplicate(wordAt);
-                auxiliaryAt[index] = wordAt;
+                if (auxiliaryAt[point] == 0) auxiliaryAt[point] = wordAt;
                 if (!parseValue(cur, v)) return false;
                 slot = v;
                 continue;
@@ -225,19 +269,19 @@ bool BlockParser::parseFk(std::string_view head, const program::LogicalLine& lin
         return failAt(wordAt, "syntax", KERF_TR_NOOP("unexpected '{1}' in an FK block"),
                       {std::string(cur.rest().substr(0, cur.rest().find(' ')))});
     }
+    // A point on the element has the two coordinates of the working plane.
     for (size_t i = 0; i < 3; ++i) {
-        const auto& px = auxiliary[i * 2];
-        const auto& py = auxiliary[i * 2 + 1];
-        if (px.has_value() != py.has_value()) {
-            return failAt(px ? auxiliaryAt[i * 2] : auxiliaryAt[i * 2 + 1], "syntax",
+        const auto given = std::count_if(b.pointsOn[i].begin(), b.pointsOn[i].end(),
+                                         [](const auto& v) { return v.has_value(); });
+        if (given != 0 && given != 2) {
+            return failAt(auxiliaryAt[i], "syntax",
                           KERF_TR_NOOP("P{1}X and P{1}Y are given together"),
                           {std::to_string(i + 1)});
         }
-        if (px) b.element.pointsOn[i] = Vec2(*px, *py);
     }
     for (size_t i = 0; i < kReferenceWords.size(); ++i) {
         if (!references[i]) continue;
-        std::optional<FkValue>& value = b.element.*kReferenceWords[i].target;
+        std::optional<FkValue>& value = kReferenceWords[i].slot(b);
         if (!value || !value->incremental) {
             return failAt(referenceAt[i], "syntax",
                           KERF_TR_NOOP("{1} needs an incremental value {2} in the same block"),

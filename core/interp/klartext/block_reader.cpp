@@ -42,6 +42,16 @@ bool isIndentedPatternLine(std::string_view line) {
            word == "PITCHCIRC";
 }
 
+// "N5 PATTERN DEF": a DIN/ISO block without its block number, whose head word then follows.
+std::string_view withoutIsoNumber(std::string_view text) {
+    size_t at = text.find_first_not_of(" \t");
+    if (at == std::string_view::npos || upper(text[at]) != 'N') return text;
+    ++at;
+    while (at < text.size() && isDigit(text[at]))
+        ++at;
+    return text.substr(at);
+}
+
 }  // namespace
 
 bool BlockParser::takesParameterLines(std::string_view text) const {
@@ -61,7 +71,7 @@ bool BlockReader::next(program::LogicalLine& line) {
         static const BlockParser kConversational(nullptr);
         const BlockSyntax& syntax = m_syntax != nullptr ? *m_syntax : kConversational;
         if (syntax.takesParameterLines(line.text)) {
-            const std::string_view head = BlockParser::headWord(line.text);
+            const std::string_view head = BlockParser::headWord(withoutIsoNumber(line.text));
             const bool pattern = !head.empty() && upper(head[0]) == 'P';  // PATTERN DEF
             while (isIndentedParameterLine(m_lines.peekLine()) ||
                    (pattern && isIndentedPatternLine(m_lines.peekLine()))) {

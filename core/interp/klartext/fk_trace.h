@@ -18,6 +18,9 @@ struct FkTrace {
         std::optional<PlanarSegment> segment;  // empty: not determined (yet)
         std::optional<Vec2> givenEnd;          // X and Y given absolutely: where it ends
         std::optional<Vec2> sequenceStart;     // the first of an FK sequence: where it starts
+        // Determined only by taking solution 1 of an element whose FSELECT is missing: the
+        // graphics go on with it, drawn as an assumption.
+        bool tentative = false;
     };
     struct Ambiguity {
         SourceLocation at;     // the element that has several solutions

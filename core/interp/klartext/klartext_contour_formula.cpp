@@ -40,6 +40,7 @@ Kind stepKind(ContourFormulaStep::Kind kind) {
 // captured contours (a declared contour is one step).
 struct KlartextInterpreter::FormulaBuild {
     std::filesystem::path folder;
+    bool isoCaller = false;  // the definition program is a DIN/ISO one
     cycles::ContourFormula formula;
     std::map<int, std::vector<cycles::FormulaStep>> descriptors;
     std::optional<std::vector<cycles::FormulaStep>> result;
@@ -51,12 +52,14 @@ void KlartextInterpreter::executeSelectContour(const SelectContour& select) {
     m_contourSource = ContourSource::Formula;
     m_contourProgram = select.path;
     m_contourFolder = m_levels.back().program->folder;
+    m_contourIsoCaller = m_levels.back().program->syntax != nullptr;
 }
 
 void KlartextInterpreter::executeContourDefinition(const ContourDefinition& definition) {
     m_contourSource = ContourSource::Simple;
     m_simpleContours = definition;
     m_contourFolder = m_levels.back().program->folder;
+    m_contourIsoCaller = m_levels.back().program->syntax != nullptr;
 }
 
 // Outside a definition program being read (the program itself run or checked) these blocks
@@ -69,7 +72,7 @@ void KlartextInterpreter::executeDeclareContour(const DeclareContour& declare) {
         return;
     }
     cycles::FormulaContour contour;
-    if (!captureProgramContour(declare.path, build->folder, contour)) return;
+    if (!captureProgramContour(declare.path, build->folder, build->isoCaller, contour)) return;
     contour.depth = std::fabs(declare.depth);
     if (declare.hasDepth) {
         build->anyDepth = true;
@@ -120,7 +123,9 @@ bool KlartextInterpreter::captureFormula(std::optional<cycles::ContourFormula>& 
     std::vector<cycles::FormulaStep> islands;
     for (const ContourDefinition::Item& item : m_simpleContours.items) {
         cycles::FormulaContour contour;
-        if (!captureProgramContour(item.path, m_contourFolder, contour)) return false;
+        if (!captureProgramContour(item.path, m_contourFolder, m_contourIsoCaller, contour)) {
+            return false;
+        }
         contour.depth = std::fabs(item.depth);
         contour.island = item.island;
         const cycles::FormulaStep operand{Kind::Contour, formula.contours.size()};
@@ -141,7 +146,7 @@ bool KlartextInterpreter::captureFormula(std::optional<cycles::ContourFormula>& 
 // Reads the definition program of SEL CONTOUR: Q parameter assignments, DECLARE CONTOUR and
 // formulas; the last formula is the contour.
 bool KlartextInterpreter::runDefinitionProgram(cycles::ContourFormula& out) {
-    auto path = calledProgramPath(m_contourProgram, m_contourFolder, false);
+    auto path = calledProgramPath(m_contourProgram, m_contourFolder, m_contourIsoCaller);
     if (!path) {
         fail("path", path.error().messageTemplate.c_str(), path.error().args);
         return false;
@@ -160,15 +165,18 @@ bool KlartextInterpreter::runDefinitionProgram(cycles::ContourFormula& out) {
     }
     FormulaBuild build;
     build.folder = program->folder;
+    build.isoCaller = program->syntax != nullptr;
     m_formulaBuild = &build;
     const SourceLocation callAt = m_at;
-    BlockReader reader(program->source->text());
+    std::unique_ptr<BlockSyntax> ownParser;
+    BlockSyntax& parser = parserFor(*program, ownParser);
+    BlockReader reader(program->source->text(), &parser);
     program::LogicalLine line;
     ParsedBlock parsed;
     while (m_status != interp::RunStatus::Failed && reader.next(line)) {
         m_at = SourceLocation{program->fileId, line.firstLine, 1, -1};
-        if (!m_parser.parse(line, parsed)) {
-            const ParseProblem& p = m_parser.problem();
+        if (!parser.parse(line, parsed)) {
+            const ParseProblem& p = parser.problem();
             m_at.line = line.lineAt(p.offset);
             m_at.column = line.columnAt(p.offset);
             fail(p.code.c_str(), p.messageTemplate.c_str(), p.args);
@@ -214,9 +222,9 @@ bool KlartextInterpreter::runDefinitionProgram(cycles::ContourFormula& out) {
 // A contour-description program as a closed contour (a contour that ends elsewhere is closed
 // with a straight line, as cycle 14's are).
 bool KlartextInterpreter::captureProgramContour(const std::string& name,
-                                                const std::filesystem::path& folder,
+                                                const std::filesystem::path& folder, bool isoCaller,
                                                 cycles::FormulaContour& out) {
-    auto path = calledProgramPath(name, folder, false);
+    auto path = calledProgramPath(name, folder, isoCaller);
     if (!path) {
         fail("path", path.error().messageTemplate.c_str(), path.error().args);
         return false;

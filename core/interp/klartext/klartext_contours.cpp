@@ -202,7 +202,11 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
 
     const Plane plane = workingPlane();
     const PlaneAxes axes = planeAxes(plane);
-    BlockReader reader(program.source->text());
+    // A DIN/ISO contour program is read with a parser of its own: its modal path function
+    // is not the running program's.
+    std::unique_ptr<BlockSyntax> ownParser;
+    BlockSyntax& parser = parserFor(program, ownParser);
+    BlockReader reader(program.source->text(), &parser);
     reader.seek(position.offset, position.line);
     program::LogicalLine line;
     ParsedBlock parsed;
@@ -211,65 +215,80 @@ bool KlartextInterpreter::captureChain(const ProgramFile& program, const LabelPo
     std::optional<CompWord> side;
     out.approach = false;
     size_t count = 0;
-    while (m_status != interp::RunStatus::Failed && reader.next(line)) {
+    bool stop = false;
+    while (!stop && m_status != interp::RunStatus::Failed && reader.next(line)) {
         m_at = SourceLocation{program.fileId, line.firstLine, 1, -1};
-        if (!m_parser.parse(line, parsed)) {
-            const ParseProblem& p = m_parser.problem();
+        if (!parser.parse(line, parsed)) {
+            const ParseProblem& p = parser.problem();
             m_at.line = line.lineAt(p.offset);
             m_at.column = line.columnAt(p.offset);
             fail(p.code.c_str(), p.messageTemplate.c_str(), p.args);
             break;
         }
         m_at.blockNumber = parsed.blockNumber;
-        const Statement& s = parsed.statement;
-        if (rules.formula && std::holds_alternative<BeginPgm>(s)) continue;
-        if (rules.formula && std::holds_alternative<EndPgm>(s)) break;
-        if (std::holds_alternative<Label>(s)) {
-            if (firstBlock) {
-                firstBlock = false;
-                continue;
-            }
-            break;  // LBL 0, or the next subprogram
-        }
-        firstBlock = false;
-        const bool approach = std::holds_alternative<ApproachBlock>(s);
-        if (!allowedInContour(s) && !(approach && rules.approach)) {
-            fail("contour", KERF_TR_NOOP("this block is not allowed in a contour subprogram"));
-            break;
-        }
-        if (const Coordinates* c = coordinatesOf(s);
-            c != nullptr && c->has(axes.normal) && !rules.toolAxis && !rules.formula) {
-            fail("contour", KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
-            break;
-        }
-        if (firstMove && approach) out.approach = true;
-        if (firstMove && movesInPlane(s) && !out.approach) {
-            const auto* l = std::get_if<LinearBlock>(&s);
-            const bool polarLine = rules.formula && std::holds_alternative<LinePolarBlock>(s);
-            if (!polarLine &&
-                (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second))) {
-                fail("contour", KERF_TR_NOOP("the first block of a contour subprogram must be a "
-                                             "straight line with both working-plane axes"));
+        // An ISO block may mean several conversational ones ("I+5 J+5 G02 X+10": CC, then C).
+        for (size_t k = 0; k <= parsed.more.size() && !stop; ++k) {
+            const Statement& s = k == 0 ? parsed.statement : parsed.more[k - 1];
+            if (rules.formula && std::holds_alternative<BeginPgm>(s)) continue;
+            if (rules.formula && std::holds_alternative<EndPgm>(s)) {
+                stop = true;
                 break;
             }
-            if (rules.toolAxis && l != nullptr && !l->coords.has(axes.normal)) {
-                fail("contour", KERF_TR_NOOP("the first block of a 3-D contour subprogram must "
-                                             "give the tool axis too"));
+            if (std::holds_alternative<Label>(s)) {
+                if (firstBlock) {
+                    firstBlock = false;
+                    continue;
+                }
+                stop = true;  // LBL 0, or the next subprogram
                 break;
             }
-        }
-        if (++count > kMaxContourBlocks) {
-            fail("contour", KERF_TR_NOOP("a contour subprogram has more than 16384 blocks"));
-            break;
-        }
-        execute(withoutMFunctions(s));
-        if (firstMove && (movesInPlane(s) || approach)) {
-            firstMove = false;
-            side = m_comp;
-            // A mirror image in the subprogram turns the contour: RL and RR swap with it.
-            if (m_frame.flipsOrientation(plane) &&
-                (side == CompWord::Left || side == CompWord::Right))
-                side = side == CompWord::Left ? CompWord::Right : CompWord::Left;
+            firstBlock = false;
+            const bool approach = std::holds_alternative<ApproachBlock>(s);
+            if (!allowedInContour(s) && !(approach && rules.approach)) {
+                fail("contour", KERF_TR_NOOP("this block is not allowed in a contour subprogram"));
+                stop = true;
+                break;
+            }
+            if (const Coordinates* c = coordinatesOf(s);
+                c != nullptr && c->has(axes.normal) && !rules.toolAxis && !rules.formula) {
+                fail("contour",
+                     KERF_TR_NOOP("a contour subprogram must not move in the tool axis"));
+                stop = true;
+                break;
+            }
+            if (firstMove && approach) out.approach = true;
+            if (firstMove && movesInPlane(s) && !out.approach) {
+                const auto* l = std::get_if<LinearBlock>(&s);
+                const bool polarLine = rules.formula && std::holds_alternative<LinePolarBlock>(s);
+                if (!polarLine &&
+                    (l == nullptr || !l->coords.has(axes.first) || !l->coords.has(axes.second))) {
+                    fail("contour",
+                         KERF_TR_NOOP("the first block of a contour subprogram must be a "
+                                      "straight line with both working-plane axes"));
+                    stop = true;
+                    break;
+                }
+                if (rules.toolAxis && l != nullptr && !l->coords.has(axes.normal)) {
+                    fail("contour", KERF_TR_NOOP("the first block of a 3-D contour subprogram must "
+                                                 "give the tool axis too"));
+                    stop = true;
+                    break;
+                }
+            }
+            if (++count > kMaxContourBlocks) {
+                fail("contour", KERF_TR_NOOP("a contour subprogram has more than 16384 blocks"));
+                stop = true;
+                break;
+            }
+            execute(withoutMFunctions(s));
+            if (firstMove && (movesInPlane(s) || approach)) {
+                firstMove = false;
+                side = m_comp;
+                // A mirror image in the subprogram turns the contour: RL and RR swap with it.
+                if (m_frame.flipsOrientation(plane) &&
+                    (side == CompWord::Left || side == CompWord::Right))
+                    side = side == CompWord::Left ? CompWord::Right : CompWord::Left;
+            }
         }
     }
     finishFk();

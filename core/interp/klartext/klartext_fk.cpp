@@ -22,6 +22,29 @@ fk::FkElement scaled(fk::FkElement e, double scale) {
     return e;
 }
 
+// The block's data in the working plane: the plane's first and second axis become the element's
+// X and Y (ZX plane: Z and X). False with the axis letter of a datum outside the plane.
+bool inWorkingPlane(const FkBlock& block, const PlaneAxes& axes, fk::FkElement& out, char& stray) {
+    out = block.element;
+    const auto first = static_cast<size_t>(axisIndex(axes.first));
+    const auto second = static_cast<size_t>(axisIndex(axes.second));
+    const auto normal = static_cast<size_t>(axisIndex(axes.normal));
+    stray = "XYZ"[normal];
+    if (block.end[normal] || block.centre[normal] || block.pointAtDistance[normal]) return false;
+    out.x = block.end[first];
+    out.y = block.end[second];
+    out.ccx = block.centre[first];
+    out.ccy = block.centre[second];
+    out.pdx = block.pointAtDistance[first];
+    out.pdy = block.pointAtDistance[second];
+    for (size_t i = 0; i < block.pointsOn.size(); ++i) {
+        const auto& p = block.pointsOn[i];
+        if (p[normal]) return false;
+        if (p[first] && p[second]) out.pointsOn[i] = Vec2(*p[first], *p[second]);
+    }
+    return true;
+}
+
 // An end point given absolutely in both coordinates: the graphics can show it before the
 // element is determined.
 std::optional<Vec2> givenEnd(const fk::FkElement& e) {
@@ -54,39 +77,81 @@ bool KlartextInterpreter::routeThroughFk(const Statement& statement) {
     return false;
 }
 
+void KlartextInterpreter::chooseTentatively() {
+    if (m_fkTrace == nullptr || !m_fk.solver.awaitingChoice() || m_fkTrace->ambiguities.empty()) {
+        return;
+    }
+    const SourceLocation here = m_at;
+    m_at = m_fkTrace->ambiguities.back().after;
+    appendDiagnostic(m_diagnostics,
+                     diagnosticAt(Severity::Error, "fk",
+                                  KERF_TR_NOOP("FK: this element has {1} solutions: choose one "
+                                               "with FSELECT in the next block"),
+                                  {std::to_string(m_fk.solver.alternatives().size())}));
+    m_at = here;
+    m_fk.tentative = true;
+    applyFkStep(m_fk.solver.select(1));
+}
+
 void KlartextInterpreter::finishFk() {
     if (!m_fk.active) return;
+    chooseTentatively();
     const SourceLocation here = m_at;
     applyFkStep(m_fk.solver.finish());
     if (m_status != interp::RunStatus::Failed) m_at = here;
     m_fk.active = false;
+    m_fk.tentative = false;
     m_fk.blocks.clear();
 }
 
 void KlartextInterpreter::executeFkPole(const FkPole& pole) {
-    m_fk.pole = Vec2(pole.x, pole.y) * lengthScale();
+    m_fk.pole = pole;
+    for (auto& c : m_fk.pole->coords) {
+        if (c) *c *= lengthScale();
+    }
 }
 
 void KlartextInterpreter::executeFk(const FkBlock& block) {
-    if (workingPlane() != Plane::XY) {
-        fail("fk", KERF_TR_NOOP("FK programming works in the XY plane only (tool axis Z)"));
+    // FK works in the active working plane (G17/G18/G19: tool axis Z, Y or X).
+    const Plane plane = workingPlane();
+    const PlaneAxes axes = planeAxes(plane);
+    fk::FkElement inPlane;
+    char stray = 'Z';
+    if (!inWorkingPlane(block, axes, inPlane, stray)) {
+        fail("fk", KERF_TR_NOOP("FK: {1} is not an axis of the working plane"),
+             {std::string(1, stray)});
         return;
+    }
+    std::optional<Vec2> pole;
+    if (m_fk.pole) {
+        const auto& c = m_fk.pole->coords;
+        const auto first = static_cast<size_t>(axisIndex(axes.first));
+        const auto second = static_cast<size_t>(axisIndex(axes.second));
+        if (!c[first] || !c[second]) {
+            fail("fk", KERF_TR_NOOP("FK: {1} is not an axis of the working plane"),
+                 {std::string(1, "XYZ"[axisIndex(axes.normal)])});
+            return;
+        }
+        pole = Vec2(*c[first], *c[second]);
     }
     std::optional<Vec2> sequenceStart;
     if (!m_fk.active) {
-        sequenceStart = Vec2(m_programmed[Axis::X], m_programmed[Axis::Y]);
+        sequenceStart = Vec2(m_programmed[axes.first], m_programmed[axes.second]);
         const std::optional<Vec2> tangent =
-            m_lastTangentPlane == Plane::XY ? m_lastTangent : std::nullopt;
+            m_lastTangentPlane == plane ? m_lastTangent : std::nullopt;
         m_fk.solver.begin(*sequenceStart, tangent);
         m_fk.active = true;
+        m_fk.plane = plane;
         m_fk.blocks.clear();
     }
+    chooseTentatively();
+    if (m_status == interp::RunStatus::Failed) return;
     const size_t tag = m_fk.nextTag++;
     m_fk.blocks[tag] = FkBlockState{m_at, block.words, {}};
-    const fk::FkElement element = scaled(block.element, lengthScale());
+    const fk::FkElement element = scaled(inPlane, lengthScale());
     if (m_fkTrace != nullptr)
         m_fkTrace->elements.push_back({m_at, std::nullopt, givenEnd(element), sequenceStart});
-    applyFkStep(m_fk.solver.add(element, tag, m_fk.pole));
+    applyFkStep(m_fk.solver.add(element, tag, pole));
 }
 
 void KlartextInterpreter::executeFkSelect(const FkSelect& select) {
@@ -140,6 +205,7 @@ void KlartextInterpreter::emitFkElement(const fk::FkResolved& resolved) {
         for (auto it = m_fkTrace->elements.rbegin(); it != m_fkTrace->elements.rend(); ++it) {
             if (it->at == block.at) {
                 it->segment = resolved.segment;
+                it->tentative = m_fk.tentative;
                 break;
             }
         }
@@ -159,11 +225,12 @@ void KlartextInterpreter::emitFkElement(const fk::FkResolved& resolved) {
     if (block.words.comp != CompWord::None) m_comp = block.words.comp;
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
+    const PlaneAxes axes = planeAxes(m_fk.plane);
     Pose target = m_programmed;
-    target[Axis::X] = s.end.x();
-    target[Axis::Y] = s.end.y();
-    submitMove(arc ? ContourElement::arc(Plane::XY, m_programmed, target, s.center, s.sweep)
-                   : ContourElement::line(Plane::XY, m_programmed, target),
+    target[axes.first] = s.end.x();
+    target[axes.second] = s.end.y();
+    submitMove(arc ? ContourElement::arc(m_fk.plane, m_programmed, target, s.center, s.sweep)
+                   : ContourElement::line(m_fk.plane, m_programmed, target),
                rapid, feed, block.words);
     applyMFunctions(block.words.m, false);
     // An FK arc computes its own centre: a CC before it is no longer valid (enter it again).

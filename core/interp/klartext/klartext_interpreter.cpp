@@ -158,6 +158,13 @@ bool KlartextInterpreter::isIsoProgram(const std::filesystem::path& path, Origin
     return extension == ".I" || extension == ".i";
 }
 
+BlockSyntax& KlartextInterpreter::parserFor(const ProgramFile& program,
+                                            std::unique_ptr<BlockSyntax>& own) {
+    if (program.syntax == nullptr) return m_parser;
+    own = (*program.syntax)(m_environment.get());
+    return *own;
+}
+
 void KlartextInterpreter::selectProgram(const ProgramFile& program) {
     if (program.syntax == nullptr) {
         m_activeParser = &m_parser;

@@ -171,6 +171,9 @@ private:
     // Whether the program at `path` is read as DIN/ISO; makes its reader and parser current.
     bool isIsoProgram(const std::filesystem::path& path, Origin origin) const;
     void selectProgram(const ProgramFile& program);
+    // The parser for a program read on the side (contour programs): the conversational one, or
+    // a new one of the program's own syntax held in `own`.
+    BlockSyntax& parserFor(const ProgramFile& program, std::unique_ptr<BlockSyntax>& own);
     void startLevel(ProgramFile* program, size_t returnOffset, uint32_t returnLine);
     bool endOfProgram(bool explicitEnd);
     void finish(bool emitEnd, int mCode);
@@ -273,10 +276,12 @@ private:
     };
     struct FkState {
         fk::FkSolver solver;
-        bool active = false;  // an FK sequence is open
+        bool active = false;      // an FK sequence is open
+        Plane plane = Plane::XY;  // the working plane it runs in
         std::map<size_t, FkBlockState> blocks;
         size_t nextTag = 0;
-        std::optional<Vec2> pole;  // FPOL stays until the next FPOL
+        std::optional<FkPole> pole;  // FPOL (in mm) stays until the next FPOL
+        bool tentative = false;      // tracing: solution 1 was taken for a missing FSELECT
     };
     void executeFk(const FkBlock& block);
     void executeFkSelect(const FkSelect& select);
@@ -285,6 +290,9 @@ private:
     // Other blocks end the sequence first.
     bool routeThroughFk(const Statement& statement);
     void finishFk();
+    // Tracing for the programming graphics: an FSELECT is missing; report it and go on with
+    // solution 1, so the elements after it can be drawn.
+    void chooseTentatively();
     void applyFkStep(const fk::FkStep& step);
     void emitFkElement(const fk::FkResolved& resolved);
     void traceAmbiguity();
@@ -328,7 +336,7 @@ private:
     bool captureFormula(std::optional<cycles::ContourFormula>& out);
     bool runDefinitionProgram(cycles::ContourFormula& out);
     bool captureProgramContour(const std::string& name, const std::filesystem::path& folder,
-                               cycles::FormulaContour& out);
+                               bool isoCaller, cycles::FormulaContour& out);
     struct FormulaBuild;
     // Where moves go: the canonical stream, or a contour subprogram being read.
     interp::PathBuilder& activePath() { return m_capturePath ? *m_capturePath : m_path; }
@@ -578,6 +586,7 @@ private:
     ContourSource m_contourSource = ContourSource::Labels;
     std::string m_contourProgram;            // SEL CONTOUR: the definition program, as programmed
     std::filesystem::path m_contourFolder;   // and the folder of the program that selected it
+    bool m_contourIsoCaller = false;         // which is a DIN/ISO program (.I names first)
     ContourDefinition m_simpleContours;      // CONTOUR DEF
     FormulaBuild* m_formulaBuild = nullptr;  // a definition program being read
     // Transformations programmed in the contour subprograms of the cycle being called.

@@ -120,7 +120,7 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
         m_lastTangent = element.endTangent();
         m_lastTangentPlane = element.plane;
         // FK relative data (RX 12 ...) may refer to this block.
-        if (element.plane == Plane::XY) {
+        if (element.plane == workingPlane()) {
             const bool arc = element.kind == ContourElement::Kind::Arc;
             m_fk.solver.remember(m_at.blockNumber, element.end2(), element.endTangent(),
                                  arc ? std::optional(element.center) : std::nullopt);

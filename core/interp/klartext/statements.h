@@ -232,12 +232,16 @@ struct TableAccess {  // FN 27 / FN 28
 };
 
 // FK free contour programming: FL, FLT, FC, FCT (solved by core/geometry/fk), FPOL, FSELECT.
+// Coordinates are kept by axis (X, Y, Z): the interpreter puts the working plane's two into the
+// element (first and second axis of the plane), so FK works in every plane.
 struct FkBlock {
-    fk::FkElement element;
+    fk::FkElement element;  // the data other than coordinates
+    std::array<std::optional<fk::FkValue>, 3> end, centre, pointAtDistance;  // X Y, CCX, PDX ...
+    std::array<std::array<std::optional<double>, 3>, 3> pointsOn{};          // P1X ... P3Z
     CommonWords words;
 };
 struct FkPole {
-    double x = 0.0, y = 0.0;
+    std::array<std::optional<double>, 3> coords;  // X, Y, Z: two of them
 };
 struct FkSelect {
     int choice = 1;

@@ -22,6 +22,9 @@ bool IsoBlockSyntax::takesParameterLines(std::string_view text) const {
             ++i;
         blanks();
     }
+    // GLOBAL DEF and PATTERN DEF take their parameter and pattern lines as in conversational
+    // programs.
+    if (isSpecialFunction(text, i)) return m_parser.takesParameterLines(text.substr(i));
     if (i + 3 >= text.size() || upper(text[i]) != 'G') return false;
     int g = 0;
     for (++i; i < text.size() && isDigit(text[i]) && g < 10000; ++i)

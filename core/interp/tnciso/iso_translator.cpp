@@ -129,6 +129,10 @@ bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out
     if (upper(text[i]) == 'D' && i + 1 < text.size() && isDigit(text[i + 1])) {
         return translateDFunction(c, i);
     }
+    if (isSpecialFunction(text, i)) {
+        translateSpecialFunction(c, i);
+        return true;
+    }
     // "Q1 = ...", "QS2 = ...": a formula, as in conversational programs.
     if (upper(text[i]) == 'Q') {
         size_t j = i + 1;

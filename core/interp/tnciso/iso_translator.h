@@ -58,6 +58,10 @@ private:
     size_t m_count = 0;
 };
 
+// A special function written with its conversational words at `at` ("SEL TABLE", "GLOBAL DEF",
+// "PATTERN DEF", "FUNCTION", "PLANE", "CONTOUR DEF", "DECLARE CONTOUR", "QC1 = ...").
+bool isSpecialFunction(std::string_view text, size_t at);  // iso_translator_special.cpp
+
 // Turns DIN/ISO blocks into conversational ones. The path function (G00, G01, G02 ...) and
 // absolute/incremental dimensions (G90/G91) are modal: the translator keeps them, so blocks must
 // be given in the order they run.
@@ -74,8 +78,9 @@ private:
     bool translateMotion(Context& c, int motion);
     bool translateCycle(Context& c, const IsoWord& g);  // iso_translator_cycles.cpp
     bool translateOldCycle(Context& c, const IsoWord& g,
-                           bool& handled);    // iso_translator_cycles.cpp
-    bool translateThreadCutting(Context& c);  // iso_translator_cycles.cpp
+                           bool& handled);                 // iso_translator_cycles.cpp
+    bool translateThreadCutting(Context& c);               // iso_translator_cycles.cpp
+    void translateSpecialFunction(Context& c, size_t at);  // iso_translator_special.cpp
     bool fail(size_t offset, const char* messageTemplate, std::vector<std::string> args = {});
 
     klartext::ParseProblem m_problem;

@@ -489,3 +489,107 @@ TEST(FkSolver, ArcFromAPointAtDistanceD) {
 
 }  // namespace
 }  // namespace kerf::fk
+
+namespace kerf::fk {
+namespace {
+
+// Two FCT in a row known only by their radius: the contour leaves (0,0) along +X, turns left on
+// r10 (centre c1 = (0,10)), right on r15, and goes on along y = 45 to (100,45). The second
+// centre lies 15 below that line (y = 30) and 10 + 15 = 25 from c1: x = +-sqrt(25^2 - 20^2) =
+// +-15. For c2 = (15,30) the arcs touch at c1 + 10 (15,20)/25 = (6,18): the first turns from -90
+// to atan2(8,6) = 53.130102 degrees (+143.130102), the second from atan2(-12,-9) = 233.130102
+// down to 90 degrees (-143.130102) and ends on the line at (15,45). For c2 = (-15,30) they touch
+// at (-6,18) and turn +-216.869898 degrees.
+TEST(FkSolver, TwoTangentArcsKnownOnlyByTheirRadius) {
+    auto feed = [](FkSolver& solver) {
+        solver.begin({0.0, 0.0}, Vec2{1.0, 0.0});
+        FkElement first = arc(FkRotation::Ccw);
+        first.kind = FkKind::TangentArc;
+        first.radius = 10.0;
+        EXPECT_TRUE(solver.add(first, 1, std::nullopt).resolved.empty());
+        FkElement second = arc(FkRotation::Cw);
+        second.kind = FkKind::TangentArc;
+        second.radius = 15.0;
+        EXPECT_TRUE(solver.add(second, 2, std::nullopt).resolved.empty());
+        FkElement out = line();
+        out.kind = FkKind::TangentLine;
+        out.an = abs(0.0);
+        out.x = abs(100.0);
+        out.y = abs(45.0);
+        return solver.add(out, 3, std::nullopt);
+    };
+    for (int choice = 1; choice <= 2; ++choice) {
+        FkSolver solver;
+        FkStep step = feed(solver);
+        ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+        ASSERT_EQ(step.choices, 2u);
+        ASSERT_EQ(solver.alternatives().size(), 2u);
+        const double side =
+            solver.alternatives()[static_cast<size_t>(choice - 1)].segment.end.x() > 0.0 ? 1.0
+                                                                                         : -1.0;
+        step = solver.select(choice);
+        ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+        ASSERT_EQ(step.resolved.size(), 3u);
+        const PlanarSegment& a = step.resolved[0].segment;
+        const PlanarSegment& b = step.resolved[1].segment;
+        expectPoint(a.center, 0.0, 10.0);
+        expectPoint(a.end, 6.0 * side, 18.0);
+        expectPoint(b.center, 15.0 * side, 30.0);
+        expectPoint(b.end, 15.0 * side, 45.0);
+        const double sweep = side > 0.0 ? 143.130102 : 216.869898;
+        EXPECT_NEAR(radToDeg(a.sweep), sweep, 1e-5);
+        EXPECT_NEAR(radToDeg(b.sweep), -sweep, 1e-5);
+        expectPoint(step.resolved[2].segment.start, 15.0 * side, 45.0);
+        expectPoint(step.resolved[2].segment.end, 100.0, 45.0);
+    }
+}
+
+}  // namespace
+}  // namespace kerf::fk
+
+namespace kerf::fk {
+namespace {
+
+// As above, but the contour goes on with an arc of its own: FCT DR+ about c3 = (15,50), r5, to
+// (20,50). The second centre lies 25 from c1 = (0,10) and 15 + 5 = 20 from c3: one is (15,30)
+// (the arcs touch at (6,18) and (15,45)); the other is its mirror image in the line c1 c3.
+TEST(FkSolver, TwoTangentArcsKnownOnlyByTheirRadiusBeforeAKnownArc) {
+    FkSolver solver;
+    solver.begin({0.0, 0.0}, Vec2{1.0, 0.0});
+    FkElement first = arc(FkRotation::Ccw);
+    first.kind = FkKind::TangentArc;
+    first.radius = 10.0;
+    EXPECT_TRUE(solver.add(first, 1, std::nullopt).resolved.empty());
+    FkElement second = arc(FkRotation::Cw);
+    second.kind = FkKind::TangentArc;
+    second.radius = 15.0;
+    EXPECT_TRUE(solver.add(second, 2, std::nullopt).resolved.empty());
+    FkElement third = arc(FkRotation::Ccw);
+    third.kind = FkKind::TangentArc;
+    third.ccx = abs(15.0);
+    third.ccy = abs(50.0);
+    third.radius = 5.0;
+    third.x = abs(20.0);
+    third.y = abs(50.0);
+    FkStep step = solver.add(third, 3, std::nullopt);
+    ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+    ASSERT_EQ(step.choices, 2u);
+    size_t chosen = 0;
+    for (size_t i = 0; i < solver.alternatives().size(); ++i) {
+        const Vec2 end = solver.alternatives()[i].segment.end;
+        if ((end - Vec2{6.0, 18.0}).norm() < kTol) chosen = i + 1;
+    }
+    ASSERT_NE(chosen, 0u);
+    step = solver.select(static_cast<int>(chosen));
+    ASSERT_FALSE(step.problem) << step.problem->messageTemplate;
+    ASSERT_EQ(step.resolved.size(), 3u);
+    expectPoint(step.resolved[1].segment.center, 15.0, 30.0);
+    expectPoint(step.resolved[1].segment.end, 15.0, 45.0);
+    expectPoint(step.resolved[2].segment.center, 15.0, 50.0);
+    // From (15,45), angle -90 about c3, counter-clockwise to 0 degrees.
+    EXPECT_NEAR(radToDeg(step.resolved[2].segment.sweep), 90.0, 1e-6);
+    expectPoint(step.resolved[2].segment.end, 20.0, 50.0);
+}
+
+}  // namespace
+}  // namespace kerf::fk

@@ -1,5 +1,6 @@
 #include "core/task/program_sketch.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -76,14 +77,28 @@ TEST(ProgramSketch, AnArcByRadiusAndEndOffersBothCentresAndWantsFselectAtItsBloc
     ASSERT_NE(error, nullptr);
     EXPECT_EQ(error->line, 4u);
     EXPECT_EQ(error->file, "FK.H");
-    // The element is drawn as not determined; the one after it never got its turn.
-    ASSERT_FALSE(sketch.fk.elements.empty());
-    EXPECT_EQ(sketch.fk.elements[0].at.line, 4u);
-    EXPECT_FALSE(sketch.fk.elements[0].segment.has_value());
-    ASSERT_TRUE(sketch.fk.elements[0].sequenceStart.has_value());
-    EXPECT_TRUE(near(*sketch.fk.elements[0].sequenceStart, {0.0, 0.0}));
-    ASSERT_TRUE(sketch.fk.elements[0].givenEnd.has_value());
-    EXPECT_TRUE(near(*sketch.fk.elements[0].givenEnd, {10.0, 10.0}));
+    EXPECT_EQ(std::count_if(sketch.diagnostics.begin(), sketch.diagnostics.end(),
+                            [](const Diagnostic& d) { return d.code == "fk"; }),
+              1);
+    // The graphics go on with solution 1, drawn as an assumption, and so does the element after
+    // it: the line from (10,10) to (30,10).
+    ASSERT_EQ(sketch.fk.elements.size(), 2u);
+    const auto& assumed = sketch.fk.elements[0];
+    EXPECT_EQ(assumed.at.line, 4u);
+    ASSERT_TRUE(assumed.segment.has_value());
+    EXPECT_TRUE(assumed.tentative);
+    EXPECT_TRUE(near(assumed.segment->center, choice.alternatives[0].center));
+    EXPECT_NEAR(assumed.segment->sweep, choice.alternatives[0].sweep, 1e-9);
+    ASSERT_TRUE(assumed.sequenceStart.has_value());
+    EXPECT_TRUE(near(*assumed.sequenceStart, {0.0, 0.0}));
+    ASSERT_TRUE(assumed.givenEnd.has_value());
+    EXPECT_TRUE(near(*assumed.givenEnd, {10.0, 10.0}));
+    const auto& after = sketch.fk.elements[1];
+    EXPECT_EQ(after.at.line, 5u);
+    ASSERT_TRUE(after.segment.has_value());
+    EXPECT_TRUE(after.tentative);
+    EXPECT_TRUE(near(after.segment->start, {10.0, 10.0}));
+    EXPECT_TRUE(near(after.segment->end, {30.0, 10.0}));
 }
 
 TEST(ProgramSketch, TheSolutionFselectChoosesIsTheElementAndTheContourGoesOn) {
@@ -101,6 +116,7 @@ TEST(ProgramSketch, TheSolutionFselectChoosesIsTheElementAndTheContourGoesOn) {
         const PlanarSegment& chosen = offered.fk.ambiguities[0].alternatives[size_t(n - 1)];
         EXPECT_TRUE(near(sketch.fk.elements[0].segment->center, chosen.center)) << n;
         EXPECT_DOUBLE_EQ(sketch.fk.elements[0].segment->sweep, chosen.sweep);
+        EXPECT_FALSE(sketch.fk.elements[0].tentative);  // chosen, not assumed
         // FL X+30 Y+10 from the arc's end (10,10).
         ASSERT_TRUE(sketch.fk.elements[1].segment.has_value());
         EXPECT_EQ(sketch.fk.elements[1].at.line, 6u);

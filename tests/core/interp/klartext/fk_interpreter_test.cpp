@@ -57,6 +57,11 @@ protected:
         const auto& a = std::get<canon::ArcMove>(c.body);
         return {a.target[Axis::X], a.target[Axis::Y]};
     }
+    const Pose& target(size_t i) const {
+        const canon::Command& c = out.moves.at(i);
+        if (const auto* l = std::get_if<canon::LinearMove>(&c.body)) return l->target;
+        return std::get<canon::ArcMove>(c.body).target;
+    }
     const canon::ArcMove& arc(size_t i) const {
         return std::get<canon::ArcMove>(out.moves.at(i).body);
     }
@@ -160,10 +165,53 @@ TEST_F(FkInterpreterTest, QParametersInFkData) {
     expectPoint(end(0), 12.0, 3.0);
 }
 
-TEST_F(FkInterpreterTest, OnlyInTheXyPlane) {
+// The XY example of TangentArcAfterAConventionalLine in the ZX plane (tool axis Y), whose first
+// axis is Z and second X: from Z10 X0 along +Z, DR+ r10 turns about Z10 X10 to Z20 X10, where the
+// line Z = 20 going +X touches it; the line ends at Z20 X30, the conventional block at Z0 X30.
+TEST_F(FkInterpreterTest, InTheZxPlane) {
+    ASSERT_EQ(run("0 BEGIN PGM FK MM\n1 TOOL CALL 0 Y\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
+                  "3 L Z+10 F100\n4 FCT DR+ R10\n5 FL Z+20 X+30 AN+90\n6 L Z+0\n"
+                  "7 END PGM FK MM\n"),
+              interp::RunStatus::Finished);
+    ASSERT_EQ(out.moves.size(), 4u);
+    const canon::ArcMove& a = arc(1);
+    EXPECT_EQ(a.plane, Plane::ZX);
+    EXPECT_NEAR(a.target[Axis::Z], 20.0, 1e-6);
+    EXPECT_NEAR(a.target[Axis::X], 10.0, 1e-6);
+    EXPECT_NEAR(a.target[Axis::Y], 0.0, 1e-9);
+    EXPECT_NEAR(a.center.z(), 10.0, 1e-6);
+    EXPECT_NEAR(a.center.x(), 10.0, 1e-6);
+    EXPECT_NEAR(a.sweepRad, kPi / 2.0, 1e-9);
+    EXPECT_NEAR(target(2)[Axis::Z], 20.0, 1e-6);
+    EXPECT_NEAR(target(2)[Axis::X], 30.0, 1e-6);
+    EXPECT_NEAR(target(3)[Axis::Z], 0.0, 1e-6);
+    EXPECT_NEAR(target(3)[Axis::X], 30.0, 1e-6);
+}
+
+// The YZ plane (tool axis X), first axis Y, second Z: the pole Y10 Z0, PR10 PA+90 (from +Y
+// towards +Z) is Y10 Z10; IY+5 relative to block 4 ends at Y15, at Z10.
+TEST_F(FkInterpreterTest, InTheYzPlaneWithPolarAndRelativeData) {
+    ASSERT_EQ(run("0 BEGIN PGM FK MM\n1 TOOL CALL 0 X\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
+                  "3 FPOL Y+10 Z+0\n4 FL PR+10 PA+90 F100\n5 FL IY+5 RY 4 Z+10\n"
+                  "6 END PGM FK MM\n"),
+              interp::RunStatus::Finished);
+    ASSERT_EQ(out.moves.size(), 2u);
+    EXPECT_NEAR(target(0)[Axis::Y], 10.0, 1e-6);
+    EXPECT_NEAR(target(0)[Axis::Z], 10.0, 1e-6);
+    EXPECT_NEAR(target(0)[Axis::X], 0.0, 1e-9);
+    EXPECT_NEAR(target(1)[Axis::Y], 15.0, 1e-6);
+    EXPECT_NEAR(target(1)[Axis::Z], 10.0, 1e-6);
+}
+
+// A coordinate of the tool axis is no FK datum: Y in the ZX plane, at the block.
+TEST_F(FkInterpreterTest, ToolAxisDataAreAnError) {
     EXPECT_EQ(run("0 BEGIN PGM FK MM\n1 TOOL CALL 0 Y\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
-                  "3 FL X+10 Z+0 F100\n4 END PGM FK MM\n"),
+                  "3 FL X+10 Y+0 F100\n4 END PGM FK MM\n"),
               interp::RunStatus::Failed);
+    ASSERT_FALSE(interpreter->diagnostics().empty());
+    EXPECT_EQ(interpreter->diagnostics().back().line, 4u);
+    EXPECT_EQ(interpreter->diagnostics().back().args.at(0), "Y");
+    EXPECT_TRUE(out.moves.empty());
 }
 
 }  // namespace

@@ -208,3 +208,27 @@ TEST(IsoTranslator, ErrorsPointAtTheWord) {
 
 }  // namespace
 }  // namespace kerf::tnciso
+
+namespace kerf::tnciso {
+namespace {
+
+// Special functions keep their conversational words inside the ISO block; the block end '*' and
+// comments go, a '*' inside a Q formula stays, continuation lines stay lines of the block.
+TEST(IsoTranslator, SpecialFunctionsAreWrittenWithTheirConversationalWords) {
+    EXPECT_EQ(translate("N30 SEL TABLE \"TNC:\\DATUMS.D\" *\n"
+                        "N40 GLOBAL DEF 125 POSITIONING ~\n"
+                        "  Q345=+1 ;SELECT POS. HEIGHT *\n"
+                        "N50 PATTERN DEF POS1 (X+10 Y+10 Z+0) *\n"
+                        "N60 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS * ;tcpm\n"
+                        "N70 CONTOUR DEF P1 = \"POCK\" I2 = \"ISLE\" DEPTH5 *\n"
+                        "N80 QC10 = (QC1 | QC2) \\ QC3 *\n"
+                        "N90 PLANE RESET STAY *\n"),
+              (std::vector<std::string>{
+                  "SEL TABLE \"TNC:\\DATUMS.D\"", "GLOBAL DEF 125 POSITIONING / Q345=+1",
+                  "PATTERN DEF POS1 (X+10 Y+10 Z+0)", "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS",
+                  "CONTOUR DEF P1 = \"POCK\" I2 = \"ISLE\" DEPTH5", "QC10 = (QC1 | QC2) \\ QC3",
+                  "PLANE RESET STAY"}));
+}
+
+}  // namespace
+}  // namespace kerf::tnciso
