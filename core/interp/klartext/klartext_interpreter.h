@@ -310,6 +310,7 @@ private:
     void executeDeclareContour(const DeclareContour& declare);
     void executeContourFormula(const ContourFormula& formula);
     void executeContourDefinition(const ContourDefinition& definition);
+    bool captureLabelContour(const LabelTarget& label, cycles::FormulaContour& out);
     bool captureFormula(std::optional<cycles::ContourFormula>& out);
     bool runDefinitionProgram(cycles::ContourFormula& out);
     bool captureProgramContour(const std::string& name, const std::filesystem::path& folder,
