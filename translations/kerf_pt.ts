@@ -5804,10 +5804,6 @@ ciclo</translation>
         <translation>Posição de aproximação (0 à direita da ilha, 1-4 esquinas)</translation>
     </message>
     <message>
-        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
-        <translation>ciclo {1}: a posição de aproximação Q437 = {2} ainda não é suportada (0: à direita da ilha)</translation>
-    </message>
-    <message>
         <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
         <translation>ciclo {1}: o bloco é menor do que a peça acabada</translation>
     </message>
@@ -6826,10 +6822,6 @@ fixos</translation>
         <translation>ciclo {1}: o avanço de pendular Q19 precisa do ângulo de penetração ANGLE da ferramenta</translation>
     </message>
     <message>
-        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
-        <translation>ciclo {1}: a penetração helicoidal (Q19 com um ANGLE da ferramenta inferior a 90) ainda não é suportada</translation>
-    </message>
-    <message>
         <source>ROUGH-OUT</source>
         <translation>DESBASTAR</translation>
     </message>
@@ -7372,10 +7364,6 @@ fixos</translation>
     <message>
         <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
         <translation>ciclo {1}: os limites Q347-Q349 não são possíveis com a estratégia em espiral Q389 = 4</translation>
-    </message>
-    <message>
-        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
-        <translation>ciclo {1}: paredes em ambas as extremidades da direção de fresagem ainda não são suportadas</translation>
     </message>
     <message>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
@@ -8012,6 +8000,14 @@ solução</translation>
     <message>
         <source>the contour subprogram {1} has no contour</source>
         <translation>o subprograma de contorno {1} não tem contorno</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>ciclo {1}: não há espaço para o afundamento helicoidal (pré-furar com o ciclo 21 ou usar uma ferramenta de corte pelo centro)</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>esperava-se um número de label de 1 a 65535 ou um nome</translation>
     </message>
 </context>
 <context>
