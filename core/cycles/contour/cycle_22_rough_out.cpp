@@ -99,6 +99,30 @@ std::optional<CycleError> roughingDepths(const CycleValues& v, const ContourArea
     return std::nullopt;
 }
 
+// A plunge of at most this many helix turns: an ANGLE near 0 on a small tool would make millions.
+constexpr double kMaxHelixTurns = 10000.0;
+
+// Every helix from Q6 above the depth before down to its depth stays within kMaxHelixTurns.
+template <typename Plan, typename Plans>
+std::optional<CycleError> checkHelixTurns(const std::vector<double>& depths,
+                                          const ContourArea& area, const ContourData& d,
+                                          double helixTan, Plan& plan, Plans& plans) {
+    if (helixTan <= 0.0) return std::nullopt;
+    double previous = 0.0;
+    for (double depth : depths) {
+        const size_t level = levelAt(area, depth + d.floorAllowance);
+        if (auto e = plan(level)) return e;
+        const double drop = depth - previous + d.setUpClearance;
+        for (const ClearingPass& pass : *plans[level]) {
+            if (pass.helixRadius <= 0.0) continue;
+            const double pitch = 2.0 * std::numbers::pi * pass.helixRadius * helixTan;
+            if (drop > kMaxHelixTurns * pitch) return tooManyMoves(22);
+        }
+        if (!plans[level]->empty()) previous = depth;
+    }
+    return std::nullopt;
+}
+
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
     ContourData d;
     if (auto e = readContourData(22, ctx, d)) return e;
@@ -152,6 +176,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     std::vector<double> depths;
     if (auto e = roughingDepths(v, area, d, depths)) return e;
     if (depths.empty()) return std::nullopt;
+    if (auto e = checkHelixTurns(depths, area, d, options.helixTan, plan, plans)) return e;
 
     bool started = false;
     double previous = 0.0;

@@ -403,6 +403,19 @@ TEST(SlCycles, PlungeOnAHelixAtTheToolsAngle) {
     const auto error = run(22, v, ctx, narrow);
     ASSERT_TRUE(error);
     EXPECT_EQ(error->code, "cycle-plunge");
+
+    // A tool R 0.01 at ANGLE 0.1 deg in a 1 x 1 pocket: 2 pi 0.01 tan 0.1 deg = 0.00011 mm per
+    // turn, so the 7 mm of the first plunge would take 63,800 turns: refused (at most 10,000),
+    // not expanded into millions of moves.
+    ctx.tool.radius = 0.01;
+    ctx.tool.plungeAngleDeg = 0.1;
+    ctx.contours.clear();
+    ctx.contours.push_back({rectangle(-0.5, -0.5, 0.5, 0.5), false, 1});
+    Recorder tiny;
+    const auto tooMany = run(22, v, ctx, tiny);
+    ASSERT_TRUE(tooMany);
+    EXPECT_EQ(tooMany->code, "cycle-limit");
+    EXPECT_TRUE(tiny.moves.empty());
 }
 
 }  // namespace
