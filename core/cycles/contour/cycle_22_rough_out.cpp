@@ -159,7 +159,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         std::vector<ClearingPass> passes;
         if (!region.empty()) {
             if (auto e = planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx),
-                                      passes))
+                                      passes, ctx.clearingCache))
                 return e;
             if (options.helixTan > 0.0 && !placeHelices(passes, room, radius)) {
                 return CycleError{"cycle-plunge",

@@ -55,8 +55,8 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             radius);
         if (region.empty()) continue;
         std::vector<ClearingPass> passes;
-        if (auto e =
-                planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
+        if (auto e = planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx),
+                                  passes, ctx.clearingCache))
             return e;
         const double bottom = area.levels[level].bottom;
         const double roughFloor = d.at(bottom - d.floorAllowance);

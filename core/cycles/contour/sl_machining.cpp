@@ -172,9 +172,51 @@ std::vector<bool> fullWidthRings(const Region& level, const Region& inner) {
 
 }  // namespace
 
+namespace {
+
+bool sameRegion(const Region& a, const Region& b) {
+    if (a.boundaries.size() != b.boundaries.size()) return false;
+    for (size_t i = 0; i < a.boundaries.size(); ++i) {
+        const std::vector<PlanarSegment>& x = a.boundaries[i].segments;
+        const std::vector<PlanarSegment>& y = b.boundaries[i].segments;
+        if (x.size() != y.size()) return false;
+        for (size_t k = 0; k < x.size(); ++k) {
+            if (x[k].kind != y[k].kind || x[k].start != y[k].start || x[k].end != y[k].end ||
+                x[k].center != y[k].center || x[k].sweep != y[k].sweep) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+const std::vector<ClearingPass>* ClearingCache::find(const Region& region, double step, bool climb,
+                                                     const Vec2& from) const {
+    for (const Entry& e : m_entries) {
+        if (e.step == step && e.climb == climb && e.from == from && sameRegion(e.region, region))
+            return &e.passes;
+    }
+    return nullptr;
+}
+
+void ClearingCache::add(const Region& region, double step, bool climb, const Vec2& from,
+                        const std::vector<ClearingPass>& passes) {
+    if (m_entries.size() >= kEntries) m_entries.erase(m_entries.begin());
+    m_entries.push_back(Entry{region, step, climb, from, passes});
+}
+
 std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
-                                       const Vec2& from, std::vector<ClearingPass>& out) {
+                                       const Vec2& from, std::vector<ClearingPass>& out,
+                                       ClearingCache* cache) {
     out.clear();
+    if (cache != nullptr) {
+        if (const std::vector<ClearingPass>* known = cache->find(region, step, climb, from)) {
+            out = *known;
+            return std::nullopt;
+        }
+    }
     // The levels of the offsets, outermost first; a point of level k has 0 ... k steps of room
     // around it inside the outermost region. Each level is the one before shrunk by one step
     // (shrinking by discs adds up): its arcs grow by one step instead of k, so their chords
@@ -220,6 +262,7 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
             out.push_back(std::move(p));
         }
     }
+    if (cache != nullptr) cache->add(region, step, climb, from, out);
     return std::nullopt;
 }
 

@@ -89,8 +89,31 @@ struct ClearingOptions {
 // Contour-parallel clearing of `region` from the inside out: the region and its offsets inwards
 // by `step`, innermost first, each pass starting where it is nearest to the end of the pass
 // before (the first nearest to `from`). Climb: the region's own direction; up-cut: reversed.
+// With a cache, a plan made before for exactly the same inputs is taken from it.
 std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
-                                       const Vec2& from, std::vector<ClearingPass>& out);
+                                       const Vec2& from, std::vector<ClearingPass>& out,
+                                       ClearingCache* cache = nullptr);
+
+// The last few clearing plans with their inputs (cycle 23 clears the region cycle 22 cleared).
+// A plan is reused only when region, step, direction and start are exactly equal.
+class ClearingCache {
+public:
+    const std::vector<ClearingPass>* find(const Region& region, double step, bool climb,
+                                          const Vec2& from) const;
+    void add(const Region& region, double step, bool climb, const Vec2& from,
+             const std::vector<ClearingPass>& passes);
+
+private:
+    struct Entry {
+        Region region;
+        double step = 0.0;
+        bool climb = true;
+        Vec2 from{0.0, 0.0};
+        std::vector<ClearingPass> passes;
+    };
+    static constexpr size_t kEntries = 4;
+    std::vector<Entry> m_entries;  // newest last
+};
 
 // Where clearings start: near the first contour's start point, the same for cycles 21, 22 and 23
 // wherever the tool stands, so that 21 drills where 22 plunges.

@@ -418,5 +418,34 @@ TEST(SlCycles, PlungeOnAHelixAtTheToolsAngle) {
     EXPECT_TRUE(tiny.moves.empty());
 }
 
+// The clearing cache hands back a plan only for exactly the same region, step, direction and
+// start; what it hands back is the plan made without it.
+TEST(SlCycles, ClearingCacheReusesOnlyAnIdenticalPlan) {
+    const Region region = regionOf(rectangle(-25, -15, 25, 15));
+    const Vec2 from(-30.0, -20.0);
+    std::vector<contour::ClearingPass> fresh, first, again;
+    ASSERT_FALSE(contour::planClearing(22, region, 5.0, true, from, fresh));
+    contour::ClearingCache cache;
+    EXPECT_EQ(cache.find(region, 5.0, true, from), nullptr);
+    ASSERT_FALSE(contour::planClearing(22, region, 5.0, true, from, first, &cache));
+    ASSERT_NE(cache.find(region, 5.0, true, from), nullptr);
+    EXPECT_EQ(cache.find(region, 4.999, true, from), nullptr);
+    EXPECT_EQ(cache.find(region, 5.0, false, from), nullptr);
+    EXPECT_EQ(cache.find(region, 5.0, true, Vec2(-30.0, -19.0)), nullptr);
+    EXPECT_EQ(cache.find(regionOf(rectangle(-25, -15, 25, 15.001)), 5.0, true, from), nullptr);
+    ASSERT_FALSE(contour::planClearing(23, region, 5.0, true, from, again, &cache));
+    ASSERT_EQ(fresh.size(), 3u);  // rings 50 x 30, 40 x 20, 30 x 10
+    for (const auto* plan : {&first, &again}) {
+        ASSERT_EQ(plan->size(), fresh.size());
+        for (size_t i = 0; i < fresh.size(); ++i) {
+            EXPECT_EQ((*plan)[i].path.segments.size(), fresh[i].path.segments.size());
+            EXPECT_EQ((*plan)[i].path.segments.front().start, fresh[i].path.segments.front().start);
+            EXPECT_EQ((*plan)[i].fullWidth, fresh[i].fullWidth);
+        }
+    }
+    EXPECT_TRUE(fresh.front().fullWidth);  // the innermost ring first
+    EXPECT_FALSE(fresh.back().fullWidth);
+}
+
 }  // namespace
 }  // namespace kerf::cycles
