@@ -5808,10 +5808,6 @@ editieren</translation>
         <translation>Anfahrposition (0 rechts vom Zapfen, 1-4 Ecken)</translation>
     </message>
     <message>
-        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
-        <translation>Zyklus {1}: Anfahrposition Q437 = {2} wird noch nicht unterstützt (0: rechts vom Zapfen)</translation>
-    </message>
-    <message>
         <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
         <translation>Zyklus {1}: das Rohteil ist kleiner als das Fertigteil</translation>
     </message>
@@ -6830,10 +6826,6 @@ zyklen</translation>
         <translation>Zyklus {1}: der Vorschub Pendeln Q19 braucht den Eintauchwinkel ANGLE des Werkzeugs</translation>
     </message>
     <message>
-        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
-        <translation>Zyklus {1}: helixförmiges Eintauchen (Q19 mit einem Werkzeug-ANGLE unter 90) wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>ROUGH-OUT</source>
         <translation>RAEUMEN</translation>
     </message>
@@ -7376,10 +7368,6 @@ zyklen</translation>
     <message>
         <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
         <translation>Zyklus {1}: Begrenzungen Q347-Q349 sind mit der Spiralstrategie Q389 = 4 nicht möglich</translation>
-    </message>
-    <message>
-        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
-        <translation>Zyklus {1}: Wände an beiden Enden der Fräsrichtung werden noch nicht unterstützt</translation>
     </message>
     <message>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
@@ -8080,6 +8068,12 @@ wählen</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
+        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>Zyklus {1}: kein Platz für das helixförmige Eintauchen (mit Zyklus 21 vorbohren oder ein über Mitte schneidendes Werkzeug verwenden)</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>Label-Nummer von 1 bis 65535 oder ein Name erwartet</translation>
     </message>
 </context>
 <context>

@@ -5808,10 +5808,6 @@ ciclo</translation>
         <translation>Posición de aproximación (0 a la derecha de la isla, 1-4 esquinas)</translation>
     </message>
     <message>
-        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
-        <translation>ciclo {1}: la posición de aproximación Q437 = {2} aún no está soportada (0: a la derecha de la isla)</translation>
-    </message>
-    <message>
         <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
         <translation>ciclo {1}: la pieza en bruto es más pequeña que la pieza acabada</translation>
     </message>
@@ -6830,10 +6826,6 @@ fijos</translation>
         <translation>ciclo {1}: el avance de pendulado Q19 necesita el ángulo de profundización ANGLE de la herramienta</translation>
     </message>
     <message>
-        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
-        <translation>ciclo {1}: la profundización helicoidal (Q19 con un ANGLE de herramienta inferior a 90) aún no está soportada</translation>
-    </message>
-    <message>
         <source>ROUGH-OUT</source>
         <translation>DESBASTE</translation>
     </message>
@@ -7376,10 +7368,6 @@ fijos</translation>
     <message>
         <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
         <translation>ciclo {1}: los límites Q347-Q349 no son posibles con la estrategia en espiral Q389 = 4</translation>
-    </message>
-    <message>
-        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
-        <translation>ciclo {1}: las paredes en ambos extremos de la dirección de fresado aún no están soportadas</translation>
     </message>
     <message>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
@@ -8080,6 +8068,12 @@ solución</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
+        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>ciclo {1}: no hay espacio para la profundización helicoidal (pretaladrar con el ciclo 21 o usar una herramienta con corte al centro)</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>se esperaba un número de label de 1 a 65535 o un nombre</translation>
     </message>
 </context>
 <context>

@@ -5811,10 +5811,6 @@ cykl</translation>
         <translation>Pozycja dosuwu (0 na prawo od czopu, 1-4 naroża)</translation>
     </message>
     <message>
-        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
-        <translation>cykl {1}: pozycja dosuwu Q437 = {2} nie jest jeszcze obsługiwana (0: na prawo od czopu)</translation>
-    </message>
-    <message>
         <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
         <translation>cykl {1}: półfabrykat jest mniejszy niż gotowa część</translation>
     </message>
@@ -6833,10 +6829,6 @@ stałe</translation>
         <translation>cykl {1}: posuw ruchu wahadłowego Q19 wymaga kąta wcięcia ANGLE narzędzia</translation>
     </message>
     <message>
-        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
-        <translation>cykl {1}: wcięcie po linii śrubowej (Q19 z ANGLE narzędzia poniżej 90) nie jest jeszcze obsługiwane</translation>
-    </message>
-    <message>
         <source>ROUGH-OUT</source>
         <translation>PRZECIAGANIE</translation>
     </message>
@@ -7379,10 +7371,6 @@ stałe</translation>
     <message>
         <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
         <translation>cykl {1}: ograniczenia Q347-Q349 nie są możliwe ze strategią spiralną Q389 = 4</translation>
-    </message>
-    <message>
-        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
-        <translation>cykl {1}: ścianki na obu końcach kierunku frezowania nie są jeszcze obsługiwane</translation>
     </message>
     <message>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
@@ -8083,6 +8071,12 @@ rozwiązanie</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
+        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>cykl {1}: brak miejsca na wcięcie po linii śrubowej (nawiercić cyklem 21 lub użyć narzędzia tnącego przez środek)</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>oczekiwano numeru etykiety od 1 do 65535 lub nazwy</translation>
     </message>
 </context>
 <context>

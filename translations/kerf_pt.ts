@@ -5808,10 +5808,6 @@ ciclo</translation>
         <translation>Posição de aproximação (0 à direita da ilha, 1-4 esquinas)</translation>
     </message>
     <message>
-        <source>cycle {1}: approach position Q437 = {2} is not supported yet (0: right of the stud)</source>
-        <translation>ciclo {1}: a posição de aproximação Q437 = {2} ainda não é suportada (0: à direita da ilha)</translation>
-    </message>
-    <message>
         <source>cycle {1}: the workpiece blank is smaller than the finished part</source>
         <translation>ciclo {1}: o bloco é menor do que a peça acabada</translation>
     </message>
@@ -6830,10 +6826,6 @@ fixos</translation>
         <translation>ciclo {1}: o avanço de pendular Q19 precisa do ângulo de penetração ANGLE da ferramenta</translation>
     </message>
     <message>
-        <source>cycle {1}: helical plunging (Q19 with a tool ANGLE below 90) is not supported yet</source>
-        <translation>ciclo {1}: a penetração helicoidal (Q19 com um ANGLE da ferramenta inferior a 90) ainda não é suportada</translation>
-    </message>
-    <message>
         <source>ROUGH-OUT</source>
         <translation>DESBASTAR</translation>
     </message>
@@ -7376,10 +7368,6 @@ fixos</translation>
     <message>
         <source>cycle {1}: limits Q347-Q349 are not possible with the spiral strategy Q389 = 4</source>
         <translation>ciclo {1}: os limites Q347-Q349 não são possíveis com a estratégia em espiral Q389 = 4</translation>
-    </message>
-    <message>
-        <source>cycle {1}: walls at both ends of the milling direction are not supported yet</source>
-        <translation>ciclo {1}: paredes em ambas as extremidades da direção de fresagem ainda não são suportadas</translation>
     </message>
     <message>
         <source>cycle {1}: the tool is too large for the face between its walls</source>
@@ -8080,6 +8068,12 @@ solução</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
+        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>ciclo {1}: não há espaço para o afundamento helicoidal (pré-furar com o ciclo 21 ou usar uma ferramenta de corte pelo centro)</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>esperava-se um número de label de 1 a 65535 ou um nome</translation>
     </message>
 </context>
 <context>

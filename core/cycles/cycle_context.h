@@ -11,6 +11,10 @@
 #include "core/geometry/axes.h"
 #include "core/geometry/offset_contour.h"
 
+namespace kerf::cycles::contour {
+class ClearingCache;
+}
+
 // What a cycle reads and how it emits its moves. Cycles work in a local frame of the working
 // plane: u = main axis, v = secondary axis, w = tool axis (positive away from the workpiece), in
 // program coordinates; the interpreter maps them to axes and applies the active coordinate
@@ -98,6 +102,9 @@ struct CycleContext {
     const CycleValues* contourData = nullptr;
     std::function<std::optional<ToolInfo>(int)> toolByNumber;
     double roughingRadius = 0.0;
+    // Clearing plans of earlier calls, kept by the caller across cycle calls (22 and 23 clear
+    // the same region): null plans afresh every time.
+    contour::ClearingCache* clearingCache = nullptr;
     // Cycles 25 and 275: the contour as a path; cycle 270's values (null without it).
     ContourTrain train;
     const CycleValues* trainData = nullptr;

@@ -52,26 +52,32 @@ Vec2 toVec(const IntPoint& p) {
     return {static_cast<double>(p.X) / kScale, static_cast<double>(p.Y) / kScale};
 }
 
-// The angle of the chords that stay within kFlatten of the arc `s` and of its offset by
+// The angle of the chords that stay within `tolerance` of the arc `s` and of its offset by
 // `distance` (which makes a counter-clockwise arc's radius grow by `distance`).
-double chordAngle(const PlanarSegment& s, double distance) {
+double chordAngle(const PlanarSegment& s, double distance, double tolerance = kFlatten) {
     const double r = s.radius();
     const double grown = r + (s.sweep > 0.0 ? distance : -distance);
-    const double sagitta = kFlatten * std::min(1.0, r / std::max(grown, 1e-12));
+    const double sagitta = tolerance * std::min(1.0, r / std::max(grown, 1e-12));
     return std::min(kPi / 8.0, 2.0 * std::acos(std::max(-1.0, 1.0 - sagitta / r)));
 }
 
-// Chords of at most kFlatten from their arc after an offset by `distance` (which makes a
+// Chords of at most `tolerance` from their arc after an offset by `distance` (which makes a
 // counter-clockwise arc's radius grow by `distance`: its chords move apart by the same ratio).
-void flattenInto(const ClosedContour& contour, double distance, Path& out) {
+void flattenInto(const ClosedContour& contour, double distance, Path& out,
+                 double tolerance = kFlatten) {
     for (const PlanarSegment& s : contour.segments) {
         out.push_back(toInt(s.start));
         if (s.kind != PlanarSegment::Kind::Arc) continue;
-        const double step = chordAngle(s, distance);
+        const double step = chordAngle(s, distance, tolerance);
         const int n = std::max(1, static_cast<int>(std::ceil(std::fabs(s.sweep) / step)));
-        const Vec2 radial = s.start - s.center;
+        // One rotation applied n times instead of n sines and cosines: after the few thousand
+        // steps of the largest arc the error is some 1e-13 of the radius.
+        const double c = std::cos(s.sweep / n);
+        const double sn = std::sin(s.sweep / n);
+        Vec2 radial = s.start - s.center;
         for (int k = 1; k < n; ++k) {
-            out.push_back(toInt(s.center + rotated(radial, s.sweep * k / n)));
+            radial = Vec2(c * radial.x() - sn * radial.y(), sn * radial.x() + c * radial.y());
+            out.push_back(toInt(s.center + radial));
         }
     }
 }
@@ -86,6 +92,24 @@ Paths flattened(const Region& region, double distance) {
     return out;
 }
 
+// An axis-aligned box (the pieces' extents, grown by the matching tolerance).
+struct Box {
+    Vec2 low{0.0, 0.0}, high{0.0, 0.0};
+
+    static Box around(const Vec2& centre, double radius) {
+        const Vec2 r(radius + kMatch, radius + kMatch);
+        return {centre - r, centre + r};
+    }
+    static Box of(const Vec2& a, const Vec2& b) {
+        const Vec2 m(kMatch, kMatch);
+        return {a.cwiseMin(b) - m, a.cwiseMax(b) + m};
+    }
+    void include(const Vec2& p) {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+};
+
 // A piece of the exact result: a line, or an arc of a circle over an angular range.
 struct Piece {
     bool arc = false;
@@ -94,8 +118,13 @@ struct Piece {
     double radius = 0.0;
     double startAngle = 0.0;
     double sweep = 0.0;
-    // Offset chords overshoot their arc's ends a little: so far beyond them a point still counts.
-    double angleSlack = 0.0;
+    // The angular range with its tolerance as a cone about the arc's middle direction: a point
+    // is within it when its direction is at most the half angle from `middle` (no atan2 in
+    // the hot loop). `wholeCircle` when the half angle reaches pi.
+    Vec2 middle{1.0, 0.0};
+    double cosHalfAngle = -1.0;
+    bool wholeCircle = true;
+    Box box;
 
     bool holds(const Vec2& p) const {
         if (!arc) {
@@ -108,13 +137,9 @@ struct Piece {
             return (p - foot).norm() <= kMatch;
         }
         const Vec2 v = p - centre;
-        if (std::fabs(v.norm() - radius) > kMatch) return false;
-        const double sign = sweep >= 0.0 ? 1.0 : -1.0;
-        double rel = sign * (std::atan2(v.y(), v.x()) - startAngle);
-        rel = std::fmod(rel, 2.0 * kPi);
-        if (rel < 0.0) rel += 2.0 * kPi;
-        const double tolerance = kMatch / std::max(radius, kMatch) + angleSlack;
-        return rel <= std::fabs(sweep) + tolerance || rel >= 2.0 * kPi - tolerance;
+        const double distance = v.norm();
+        if (std::fabs(distance - radius) > kMatch) return false;
+        return wholeCircle || v.dot(middle) >= cosHalfAngle * distance;
     }
     Vec2 project(const Vec2& p) const {
         if (!arc) {
@@ -131,6 +156,35 @@ struct Piece {
     }
 };
 
+// `angleSlack`: offset chords overshoot their arc's ends a little, so far beyond them a point
+// still counts.
+Piece linePiece(const Vec2& a, const Vec2& b) {
+    Piece p;
+    p.a = a;
+    p.b = b;
+    p.box = Box::of(a, b);
+    return p;
+}
+
+// The box of the arc `p` over its middle direction +- `halfAngle` (< pi): its ends and the
+// quadrant points in between.
+Box arcBox(const Piece& p, double halfAngle) {
+    const double middleAngle = std::atan2(p.middle.y(), p.middle.x());
+    auto at = [&](double angle) {
+        return Vec2(p.centre + p.radius * Vec2(std::cos(angle), std::sin(angle)));
+    };
+    Box box = Box::of(at(middleAngle - halfAngle), at(middleAngle + halfAngle));
+    for (int quadrant = -4; quadrant <= 4; ++quadrant) {
+        const double angle = quadrant * kPi / 2.0;
+        if (std::fabs(std::remainder(angle - middleAngle, 2.0 * kPi)) <= halfAngle) {
+            const Vec2 m(kMatch, kMatch);
+            box.include(at(angle) - m);
+            box.include(at(angle) + m);
+        }
+    }
+    return box;
+}
+
 void addArcPiece(std::vector<Piece>& out, const Vec2& centre, double radius, const Vec2& from,
                  double sweep, double angleSlack) {
     if (radius <= kMatch || std::fabs(sweep) < 1e-12) return;
@@ -140,7 +194,13 @@ void addArcPiece(std::vector<Piece>& out, const Vec2& centre, double radius, con
     p.radius = radius;
     p.startAngle = std::atan2(from.y(), from.x());
     p.sweep = sweep;
-    p.angleSlack = angleSlack;
+    const double halfAngle =
+        std::fabs(sweep) / 2.0 + kMatch / std::max(radius, kMatch) + angleSlack;
+    p.wholeCircle = halfAngle >= kPi;
+    const double middleAngle = p.startAngle + sweep / 2.0;
+    p.middle = Vec2(std::cos(middleAngle), std::sin(middleAngle));
+    p.cosHalfAngle = std::cos(halfAngle);
+    p.box = p.wholeCircle ? Box::around(centre, radius) : arcBox(p, halfAngle);
     out.push_back(p);
 }
 
@@ -155,10 +215,7 @@ void addPieces(const Region& region, double distance, std::vector<Piece>& out) {
             if (s.kind == PlanarSegment::Kind::Line) {
                 if ((s.end - s.start).norm() < kSame) continue;
                 const Vec2 shift = distance * rightOf(s.startTangent());
-                Piece p;
-                p.a = s.start + shift;
-                p.b = s.end + shift;
-                out.push_back(p);
+                out.push_back(linePiece(s.start + shift, s.end + shift));
             } else {
                 const double r = s.radius() + (s.sweep > 0.0 ? distance : -distance);
                 addArcPiece(out, s.center, r, s.start - s.center, s.sweep,
@@ -174,6 +231,62 @@ void addPieces(const Region& region, double distance, std::vector<Piece>& out) {
     }
 }
 
+// The pieces by where they lie: a uniform grid of about one cell per piece, each cell listing
+// (in increasing order) the pieces whose box meets it, so that a polygon point is tested against
+// the few pieces near it instead of all of them.
+class PieceGrid {
+public:
+    explicit PieceGrid(const std::vector<Piece>& pieces) {
+        if (pieces.empty()) return;
+        Box all = pieces.front().box;
+        for (const Piece& p : pieces) {
+            all.include(p.box.low);
+            all.include(p.box.high);
+        }
+        m_low = all.low;
+        const Vec2 size = (all.high - all.low).cwiseMax(Vec2(kMatch, kMatch));
+        const double side = std::ceil(std::sqrt(static_cast<double>(pieces.size())));
+        m_columns = static_cast<int>(side);
+        m_rows = static_cast<int>(side);
+        m_cell = Vec2(size.x() / m_columns, size.y() / m_rows);
+        m_cells.resize(static_cast<size_t>(m_columns) * static_cast<size_t>(m_rows));
+        for (size_t i = 0; i < pieces.size(); ++i) {
+            const auto [c0, r0] = cellOf(pieces[i].box.low);
+            const auto [c1, r1] = cellOf(pieces[i].box.high);
+            for (int r = r0; r <= r1; ++r) {
+                for (int c = c0; c <= c1; ++c)
+                    m_cells[index(c, r)].push_back(static_cast<uint32_t>(i));
+            }
+        }
+    }
+
+    const std::vector<uint32_t>& near(const Vec2& p) const {
+        if (m_cells.empty()) return m_none;
+        const auto [c, r] = cellOf(p);
+        return m_cells[index(c, r)];
+    }
+
+private:
+    std::pair<int, int> cellOf(const Vec2& p) const {
+        const auto clampTo = [](double v, int count) {
+            return static_cast<int>(std::clamp(std::floor(v), 0.0, count - 1.0));
+        };
+        return {clampTo((p.x() - m_low.x()) / m_cell.x(), m_columns),
+                clampTo((p.y() - m_low.y()) / m_cell.y(), m_rows)};
+    }
+    size_t index(int column, int row) const {
+        return static_cast<size_t>(row) * static_cast<size_t>(m_columns) +
+               static_cast<size_t>(column);
+    }
+
+    Vec2 m_low{0.0, 0.0};
+    Vec2 m_cell{1.0, 1.0};
+    int m_columns = 0;
+    int m_rows = 0;
+    std::vector<std::vector<uint32_t>> m_cells;
+    std::vector<uint32_t> m_none;
+};
+
 struct Run {
     size_t firstEdge = 0;
     size_t edges = 0;
@@ -182,8 +295,8 @@ struct Run {
 
 class Rebuilder {
 public:
-    Rebuilder(const std::vector<Vec2>& points, std::vector<Piece>& pieces)
-        : m_points(points), m_pieces(pieces) {}
+    Rebuilder(const std::vector<Vec2>& points, std::vector<Piece>& pieces, const PieceGrid& grid)
+        : m_points(points), m_pieces(pieces), m_grid(grid) {}
 
     std::optional<ClosedContour> rebuild() {
         std::vector<Run> runs;
@@ -250,15 +363,12 @@ private:
                 }
             }
             Run run{edge, 1, {}};
-            for (size_t p = 0; p < m_pieces.size(); ++p) {
+            for (uint32_t p : m_grid.near(point(edge))) {
                 if (edgeOn(p, edge)) run.pieces.push_back(p);
             }
             if (run.pieces.empty()) {
                 // Not on any exact piece (should not happen): keep the polygon edge itself.
-                Piece line;
-                line.a = point(edge);
-                line.b = point(edge + 1);
-                m_pieces.push_back(line);
+                m_pieces.push_back(linePiece(point(edge), point(edge + 1)));
                 run.pieces.push_back(m_pieces.size() - 1);
             }
             runs.push_back(std::move(run));
@@ -337,6 +447,7 @@ private:
 
     const std::vector<Vec2>& m_points;
     std::vector<Piece>& m_pieces;
+    const PieceGrid& m_grid;
 };
 
 double perimeter(const std::vector<Vec2>& points) {
@@ -358,6 +469,7 @@ ClosedContour polygonContour(const std::vector<Vec2>& points) {
 }
 
 Region rebuildAll(const Paths& solution, std::vector<Piece> pieces) {
+    const PieceGrid grid(pieces);
     Region out;
     for (const Path& path : solution) {
         if (path.size() < 3) continue;
@@ -370,7 +482,7 @@ Region rebuildAll(const Paths& solution, std::vector<Piece> pieces) {
         const double area = ClipperLib::Area(path) / (kScale * kScale);
         const double length = perimeter(points);
         if (2.0 * std::fabs(area) <= kMatch * length) continue;
-        Rebuilder rebuilder(points, pieces);
+        Rebuilder rebuilder(points, pieces, grid);
         std::optional<ClosedContour> contour = rebuilder.rebuild();
         // The exact pieces must enclose what the polygon encloses (within the flattening).
         const double slack = 2.0 * kMatch * length;
@@ -411,9 +523,12 @@ bool Region::contains(const Vec2& p) const {
     int winding = 0;
     const IntPoint q = toInt(p);
     for (const ClosedContour& c : boundaries) {
-        if (c.distanceTo(p) <= kMatch) return true;
+        const double distance = c.distanceTo(p);
+        if (distance <= kMatch) return true;
+        // Chords within half the point's distance of their arcs put it on the same side as the
+        // arcs do: far from the boundary a few chords decide.
         Path path;
-        flattenInto(c, 0.0, path);
+        flattenInto(c, 0.0, path, distance / 2.0);
         if (ClipperLib::PointInPolygon(q, path) != 0) winding += c.signedArea() > 0.0 ? 1 : -1;
     }
     return winding > 0;
@@ -427,6 +542,13 @@ Region regionOf(const ClosedContour& contour) {
 
 Region unite(const Region& a, const Region& b) {
     return boolean(ClipperLib::ctUnion, a, b);
+}
+
+Region uniteAll(const std::vector<Region>& regions) {
+    Region all;
+    for (const Region& r : regions)
+        all.boundaries.insert(all.boundaries.end(), r.boundaries.begin(), r.boundaries.end());
+    return unite(all, Region{});
 }
 
 Region subtract(const Region& a, const Region& b) {

@@ -28,6 +28,8 @@ struct Region {
 Region regionOf(const ClosedContour& contour);
 
 Region unite(const Region& a, const Region& b);
+// The union of all, in one boolean (overlapping regions need not be united one by one).
+Region uniteAll(const std::vector<Region>& regions);
 Region subtract(const Region& a, const Region& b);
 Region intersect(const Region& a, const Region& b);
 

@@ -57,7 +57,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (region.empty()) return pocket::toolTooLarge(21);
     std::vector<ClearingPass> passes;
     if (auto e = planClearing(21, region, d.overlap * rougher->radius, d.climb, planningStart(ctx),
-                              passes))
+                              passes, ctx.clearingCache))
         return e;
     // A hole goes down to the deepest level whose tool-centre region holds it (contour formula
     // with DEPTH), less the floor allowance.

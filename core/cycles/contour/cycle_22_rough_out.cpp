@@ -2,6 +2,7 @@
 // out at each plunging depth, islands milled around; with Q18 only what a coarser tool left.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
@@ -47,19 +48,18 @@ constexpr ParameterDescriptor kParameters[] = {
 };
 
 // Q19 with the tool's ANGLE (spec): 0 vertical at Q11; ANGLE 90 vertical at Q19; no ANGLE is an
-// error; a helix for other angles is not done yet.
-std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& ctx, Feed& out) {
+// error; a smaller ANGLE plunges on a helix at that angle at Q19 (`helixTan` = tan ANGLE).
+std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& ctx, Feed& out,
+                                     double& helixTan) {
     out = v.feed(11);
+    helixTan = 0.0;
     if (v.number(19) <= 0.0) return std::nullopt;
     const double angle = ctx.tool.plungeAngleDeg;
     if (angle <= 0.0) {
         return contourError(22, KERF_TR_NOOP("cycle {1}: the feed rate for reciprocation Q19 "
                                              "needs the plunge angle ANGLE of the tool"));
     }
-    if (std::fabs(angle - 90.0) > 1e-9) {
-        return contourError(22, KERF_TR_NOOP("cycle {1}: helical plunging (Q19 with a tool "
-                                             "ANGLE below 90) is not supported yet"));
-    }
+    if (angle < 90.0 - 1e-9) helixTan = std::tan(angle * std::numbers::pi / 180.0);
     out = v.feed(19);
     return std::nullopt;
 }
@@ -99,6 +99,30 @@ std::optional<CycleError> roughingDepths(const CycleValues& v, const ContourArea
     return std::nullopt;
 }
 
+// A plunge of at most this many helix turns: an ANGLE near 0 on a small tool would make millions.
+constexpr double kMaxHelixTurns = 10000.0;
+
+// Every helix from Q6 above the depth before down to its depth stays within kMaxHelixTurns.
+template <typename Plan, typename Plans>
+std::optional<CycleError> checkHelixTurns(const std::vector<double>& depths,
+                                          const ContourArea& area, const ContourData& d,
+                                          double helixTan, Plan& plan, Plans& plans) {
+    if (helixTan <= 0.0) return std::nullopt;
+    double previous = 0.0;
+    for (double depth : depths) {
+        const size_t level = levelAt(area, depth + d.floorAllowance);
+        if (auto e = plan(level)) return e;
+        const double drop = depth - previous + d.setUpClearance;
+        for (const ClearingPass& pass : *plans[level]) {
+            if (pass.helixRadius <= 0.0) continue;
+            const double pitch = 2.0 * std::numbers::pi * pass.helixRadius * helixTan;
+            if (drop > kMaxHelixTurns * pitch) return tooManyMoves(22);
+        }
+        if (!plans[level]->empty()) previous = depth;
+    }
+    return std::nullopt;
+}
+
 std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
     ContourData d;
     if (auto e = readContourData(22, ctx, d)) return e;
@@ -115,23 +139,35 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                           {"22"}};
     }
     Feed plunge;
-    if (auto e = plungeFeed(v, ctx, plunge)) return e;
+    ClearingOptions options;
+    if (auto e = plungeFeed(v, ctx, plunge, options.helixTan)) return e;
+    options.climb = d.climb;
+    // Q401: absent (an older block read without it) is 100 %.
+    if (v.number(401) > 0.0) options.fullWidthFactor = v.number(401) / 100.0;
     const Feed mill = v.feed(12);
     const Feed retract = v.feedOr(208, 12);
     // The clearing of each level, planned when a depth first needs it.
     std::vector<std::optional<std::vector<ClearingPass>>> plans(area.levels.size());
     auto plan = [&](size_t level) -> std::optional<CycleError> {
         if (plans[level]) return std::nullopt;
-        Region region = toolCentreRegion(area, radius + d.sideAllowance, level);
-        if (region.empty() && level == 0) return pocket::toolTooLarge(22);
+        const Region room = toolCentreRegion(area, radius + d.sideAllowance, level);
+        if (room.empty() && level == 0) return pocket::toolTooLarge(22);
+        Region region = room;
         if (v.number(18) > 0.0 && !region.empty()) {
             if (auto e = restRegion(v, ctx, area, level, d, region)) return e;
         }
         std::vector<ClearingPass> passes;
         if (!region.empty()) {
             if (auto e = planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx),
-                                      passes))
+                                      passes, ctx.clearingCache))
                 return e;
+            if (options.helixTan > 0.0 && !placeHelices(passes, room, radius)) {
+                return CycleError{"cycle-plunge",
+                                  KERF_TR_NOOP("cycle {1}: no room for the helical plunge "
+                                               "(pre-drill with cycle 21 or use a centre-cutting "
+                                               "tool)"),
+                                  {"22"}};
+            }
         }
         plans[level] = std::move(passes);
         return std::nullopt;
@@ -140,6 +176,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     std::vector<double> depths;
     if (auto e = roughingDepths(v, area, d, depths)) return e;
     if (depths.empty()) return std::nullopt;
+    if (auto e = checkHelixTurns(depths, area, d, options.helixTan, plan, plans)) return e;
 
     bool started = false;
     double previous = 0.0;
@@ -150,7 +187,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         if (!started && (path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
         started = true;
         runClearing(path, *plans[level], d, d.at(depth), d.at(previous) + d.up * d.setUpClearance,
-                    mill, plunge);
+                    mill, plunge, options);
         previous = depth;
     }
     if (started) path.moveW(d.clearanceHeight, retract);

@@ -18,9 +18,9 @@ constexpr ParameterDescriptor kParameters[] = {
 };
 
 // The tool-centre region over the floor of one level: where the level's area does not go deeper
-// (the tool may reach over the deeper part, which is already finished lower down).
-Region floorRegion(const ContourArea& area, size_t level, double inset, double radius) {
-    Region region = toolCentreRegion(area, inset, level);
+// (the tool may reach over the deeper part, which is already finished lower down). `region`:
+// the level's tool-centre region.
+Region floorRegion(const ContourArea& area, size_t level, Region region, double radius) {
     if (level + 1 < area.levels.size() && !region.empty()) {
         const Region floor = subtract(area.levels[level].area, area.levels[level + 1].area);
         region = floor.empty() ? Region{} : intersect(region, offsetRegion(floor, radius));
@@ -43,17 +43,20 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                           KERF_TR_NOOP("cycle {1} needs a tool with a radius greater than 0"),
                           {"23"}};
     }
-    if (toolCentreRegion(area, radius + d.sideAllowance).empty()) return pocket::toolTooLarge(23);
+    const Region top = toolCentreRegion(area, radius + d.sideAllowance);
+    if (top.empty()) return pocket::toolTooLarge(23);
 
     if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
     // Each floor, shallowest first: down at rapid to the set-up clearance above the roughed
     // floor, then at Q11 to the floor.
     for (size_t level = 0; level < area.levels.size(); ++level) {
-        const Region region = floorRegion(area, level, radius + d.sideAllowance, radius);
+        const Region region = floorRegion(
+            area, level, level == 0 ? top : toolCentreRegion(area, radius + d.sideAllowance, level),
+            radius);
         if (region.empty()) continue;
         std::vector<ClearingPass> passes;
-        if (auto e =
-                planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx), passes))
+        if (auto e = planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx),
+                                  passes, ctx.clearingCache))
             return e;
         const double bottom = area.levels[level].bottom;
         const double roughFloor = d.at(bottom - d.floorAllowance);

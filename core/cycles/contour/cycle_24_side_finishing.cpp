@@ -57,7 +57,8 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (radius <= 0.0 || allowance + radius >= d.sideAllowance + ctx.roughingRadius) {
         return pocket::toolTooLarge(24);
     }
-    if (toolCentreRegion(area, radius + allowance).empty()) return pocket::toolTooLarge(24);
+    const Region firstLevel = toolCentreRegion(area, radius + allowance);
+    if (firstLevel.empty()) return pocket::toolTooLarge(24);
     bool climb = v.integer(9) >= 0;
     if (ctx.mirroredMain != ctx.mirroredSecondary) climb = !climb;
     const Feed plunge = v.feed(11);
@@ -67,7 +68,8 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     // Each level's walls from the level above down to its bottom (one level without DEPTHs).
     double top = 0.0;
     for (size_t level = 0; level < area.levels.size(); ++level) {
-        const Region region = toolCentreRegion(area, radius + allowance, level);
+        const Region region =
+            level == 0 ? firstLevel : toolCentreRegion(area, radius + allowance, level);
         std::vector<double> depths;
         if (auto e = infeedDepths(24, top, area.levels[level].bottom, v.number(10), depths))
             return e;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/base/translate.h"
 #include "core/cycles/drilling/hole_levels.h"
@@ -77,11 +78,11 @@ std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx,
     }
     std::optional<Region> pockets;
     std::optional<Vec2> firstStart;
-    Region islands;
+    std::vector<Region> islandAreas;
     for (const SubContour& sub : ctx.contours) {
         const Region area = areaOf(sub);
         if (sub.island) {
-            islands = islands.empty() ? area : unite(islands, area);
+            islandAreas.push_back(area);
             continue;
         }
         if (!pockets) {
@@ -94,6 +95,7 @@ std::optional<CycleError> combineContours(int cycle, const CycleContext& ctx,
             area.contains(*firstStart) && sub.contour.distanceTo(*firstStart) > 1e-6;
         pockets = inside ? intersect(*pockets, area) : unite(*pockets, area);
     }
+    const Region islands = islandAreas.empty() ? Region{} : uniteAll(islandAreas);
     if (!pockets) {
         out.area = islands;
         out.islandsOnly = true;
@@ -138,14 +140,89 @@ std::optional<CycleError> infeedDepths(int cycle, double from, double to, double
     return std::nullopt;
 }
 
+namespace {
+
+// Which boundaries of a clearing level enclose nothing of the next level: an outer boundary
+// with no boundary of `inner` inside it, and the holes inside such an outer one. (Holes around
+// islands lie left of their outer boundary's area; a hole's outer one is the one enclosing it.)
+std::vector<bool> fullWidthRings(const Region& level, const Region& inner) {
+    const std::vector<ClosedContour>& rings = level.boundaries;
+    std::vector<bool> full(rings.size(), false);
+    std::vector<Region> outers(rings.size());
+    for (size_t i = 0; i < rings.size(); ++i) {
+        if (rings[i].signedArea() <= 0.0) continue;
+        outers[i] = Region{{rings[i]}};
+        full[i] = true;
+        for (const ClosedContour& c : inner.boundaries) {
+            if (outers[i].contains(c.segments.front().start)) {
+                full[i] = false;
+                break;
+            }
+        }
+    }
+    for (size_t i = 0; i < rings.size(); ++i) {
+        if (rings[i].signedArea() > 0.0) continue;
+        const Vec2 p = rings[i].segments.front().start;
+        for (size_t j = 0; j < rings.size(); ++j) {
+            if (!outers[j].empty() && outers[j].contains(p)) full[i] = full[i] || full[j];
+        }
+    }
+    return full;
+}
+
+}  // namespace
+
+namespace {
+
+bool sameRegion(const Region& a, const Region& b) {
+    if (a.boundaries.size() != b.boundaries.size()) return false;
+    for (size_t i = 0; i < a.boundaries.size(); ++i) {
+        const std::vector<PlanarSegment>& x = a.boundaries[i].segments;
+        const std::vector<PlanarSegment>& y = b.boundaries[i].segments;
+        if (x.size() != y.size()) return false;
+        for (size_t k = 0; k < x.size(); ++k) {
+            if (x[k].kind != y[k].kind || x[k].start != y[k].start || x[k].end != y[k].end ||
+                x[k].center != y[k].center || x[k].sweep != y[k].sweep) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+const std::vector<ClearingPass>* ClearingCache::find(const Region& region, double step, bool climb,
+                                                     const Vec2& from) const {
+    for (const Entry& e : m_entries) {
+        if (e.step == step && e.climb == climb && e.from == from && sameRegion(e.region, region))
+            return &e.passes;
+    }
+    return nullptr;
+}
+
+void ClearingCache::add(const Region& region, double step, bool climb, const Vec2& from,
+                        const std::vector<ClearingPass>& passes) {
+    if (m_entries.size() >= kEntries) m_entries.erase(m_entries.begin());
+    m_entries.push_back(Entry{region, step, climb, from, passes});
+}
+
 std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
-                                       const Vec2& from, std::vector<ClearingPass>& out) {
+                                       const Vec2& from, std::vector<ClearingPass>& out,
+                                       ClearingCache* cache) {
     out.clear();
+    if (cache != nullptr) {
+        if (const std::vector<ClearingPass>* known = cache->find(region, step, climb, from)) {
+            out = *known;
+            return std::nullopt;
+        }
+    }
     // The levels of the offsets, outermost first; a point of level k has 0 ... k steps of room
-    // around it inside the outermost region.
+    // around it inside the outermost region. Each level is the one before shrunk by one step
+    // (shrinking by discs adds up): its arcs grow by one step instead of k, so their chords
+    // for the engine stay few.
     std::vector<Region> levels;
-    for (Region level = region; !level.empty();
-         level = offsetRegion(region, -step * static_cast<double>(levels.size()))) {
+    for (Region level = region; !level.empty(); level = offsetRegion(levels.back(), -step)) {
         if (levels.size() >= kMaxRings) return tooManyMoves(cycle);
         levels.push_back(std::move(level));
     }
@@ -153,21 +230,27 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
     bool first = true;
     size_t atLevel = 0;
     for (size_t k = levels.size(); k-- > 0;) {
-        std::vector<ClosedContour> left = levels[k].boundaries;
+        const std::vector<ClosedContour>& rings = levels[k].boundaries;
+        const std::vector<bool> full =
+            fullWidthRings(levels[k], k + 1 < levels.size() ? levels[k + 1] : Region{});
+        std::vector<size_t> left(rings.size());
+        for (size_t i = 0; i < left.size(); ++i)
+            left[i] = i;
         while (!left.empty()) {
             size_t best = 0;
             double bestDistance = std::numeric_limits<double>::infinity();
             for (size_t i = 0; i < left.size(); ++i) {
-                const double d = left[i].distanceTo(at);
+                const double d = rings[left[i]].distanceTo(at);
                 if (d < bestDistance) {
                     bestDistance = d;
                     best = i;
                 }
             }
-            ClosedContour pass = startingNearest(climb ? left[best] : left[best].reversed(), at);
-            left.erase(left.begin() + static_cast<std::ptrdiff_t>(best));
+            const ClosedContour& ring = rings[left[best]];
             ClearingPass p;
-            p.path = std::move(pass);
+            p.path = startingNearest(climb ? ring : ring.reversed(), at);
+            p.fullWidth = full[left[best]];
+            left.erase(left.begin() + static_cast<std::ptrdiff_t>(best));
             const Vec2 start = p.path.segments.front().start;
             // A disc of radius (level x step) about a point of that level lies inside the
             // outermost region, so a straight move that short stays inside it.
@@ -179,6 +262,7 @@ std::optional<CycleError> planClearing(int cycle, const Region& region, double s
             out.push_back(std::move(p));
         }
     }
+    if (cache != nullptr) cache->add(region, step, climb, from, out);
     return std::nullopt;
 }
 
@@ -198,8 +282,72 @@ void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed)
     }
 }
 
+namespace {
+
+// Whether a disc of `radius` about `centre` lies inside `region`.
+bool discInside(const Region& region, const Vec2& centre, double radius) {
+    if (!region.contains(centre)) return false;
+    for (const ClosedContour& c : region.boundaries) {
+        if (c.distanceTo(centre) < radius - 1e-9) return false;
+    }
+    return true;
+}
+
+// Down to `toW` on a helix about `centre` from the current point (on its circle), then back to
+// that point along the chord (inside the helix's disc).
+void helixDown(CyclePath& path, const Vec2& centre, double toW, double tanAngle, bool ccw,
+               const Feed& feed) {
+    const Vec2 start = path.uv();
+    const double radius = (start - centre).norm();
+    const double pitch = 2.0 * std::numbers::pi * radius * tanAngle;
+    const double drop = std::fabs(path.w() - toW);
+    const double down = toW < path.w() ? -1.0 : 1.0;
+    const double dir = ccw ? 1.0 : -1.0;
+    double left = drop;
+    while (left > 1e-9) {
+        const double turn = std::min(1.0, left / pitch);
+        left -= turn * pitch;
+        const Vec2 from = path.uv() - centre;
+        const double sweep = dir * 2.0 * std::numbers::pi * turn;
+        const Vec2 end = centre + Vec2(std::cos(sweep) * from.x() - std::sin(sweep) * from.y(),
+                                       std::sin(sweep) * from.x() + std::cos(sweep) * from.y());
+        const double w = left > 1e-9 ? toW - down * left : toW;
+        path.arc({end.x(), end.y(), w}, centre, sweep, feed);
+    }
+    if ((path.uv() - start).norm() > 1e-9) path.moveUv(start, feed);
+}
+
+}  // namespace
+
+bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius) {
+    for (ClearingPass& pass : passes) {
+        if (pass.straightLink) continue;
+        const ClosedContour& ring = pass.path;
+        const Vec2 start = ring.segments.front().start;
+        const Vec2 t = ring.segments.front().startTangent();
+        const Vec2 normal(-t.y(), t.x());
+        bool placed = false;
+        for (double r = radius; r >= radius / 4.0 - 1e-12 && !placed; r /= 2.0) {
+            for (double side : {1.0, -1.0}) {
+                const Vec2 centre = start + side * r * normal;
+                if (discInside(region, centre, r)) {
+                    pass.helixCentre = centre;
+                    pass.helixRadius = r;
+                    placed = true;
+                    break;
+                }
+            }
+        }
+        if (!placed) return false;
+    }
+    return true;
+}
+
 void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const ContourData& data,
-                 double w, double reentryW, const Feed& mill, const Feed& plunge) {
+                 double w, double reentryW, const Feed& mill, const Feed& plunge,
+                 const ClearingOptions& options) {
+    Feed reduced = mill;
+    reduced.value *= options.fullWidthFactor;
     for (const ClearingPass& pass : passes) {
         const Vec2 start = pass.path.segments.front().start;
         if (pass.straightLink) {
@@ -209,9 +357,13 @@ void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const
             if ((path.w() - data.aboveSurface()) * data.up < 0.0) path.rapidW(data.aboveSurface());
             path.rapidUv(start);
             path.rapidW(reentryW);
-            path.moveW(w, plunge);
+            if (options.helixTan > 0.0 && pass.helixRadius > 0.0) {
+                helixDown(path, pass.helixCentre, w, options.helixTan, options.climb, plunge);
+            } else {
+                path.moveW(w, plunge);
+            }
         }
-        followPath(path, pass.path, mill);
+        followPath(path, pass.path, pass.fullWidth ? reduced : mill);
     }
 }
 

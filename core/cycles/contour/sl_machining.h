@@ -64,13 +64,56 @@ std::optional<CycleError> infeedDepths(int cycle, double from, double to, double
 struct ClearingPass {
     ClosedContour path;
     bool straightLink = false;
+    // Nothing of it is cleared before (the innermost ring of its area: no ring of the next
+    // level lies inside it): the tool cuts with its full circumference (cycle 22's Q401).
+    bool fullWidth = false;
+    // A helical plunge onto its start (cycle 22 with a tool ANGLE): radius 0 plunges straight.
+    Vec2 helixCentre{0.0, 0.0};
+    double helixRadius = 0.0;
+};
+
+// Places a helix of at most `radius` (and at least a quarter of it) for every pass reached by a
+// plunge: a circle through the pass's start whose disc stays inside `region` (the outermost
+// tool-centre region). False when some pass has no room for one.
+bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius);
+
+// How the clearing runs beyond its feeds: `fullWidthFactor` scales the milling feed on the passes
+// that cut with the full circumference (Q401); `helixTan` > 0 plunges on the passes' helices
+// descending tan(ANGLE) per unit of path.
+struct ClearingOptions {
+    double fullWidthFactor = 1.0;
+    double helixTan = 0.0;
+    bool climb = true;
 };
 
 // Contour-parallel clearing of `region` from the inside out: the region and its offsets inwards
 // by `step`, innermost first, each pass starting where it is nearest to the end of the pass
 // before (the first nearest to `from`). Climb: the region's own direction; up-cut: reversed.
+// With a cache, a plan made before for exactly the same inputs is taken from it.
 std::optional<CycleError> planClearing(int cycle, const Region& region, double step, bool climb,
-                                       const Vec2& from, std::vector<ClearingPass>& out);
+                                       const Vec2& from, std::vector<ClearingPass>& out,
+                                       ClearingCache* cache = nullptr);
+
+// The last few clearing plans with their inputs (cycle 23 clears the region cycle 22 cleared).
+// A plan is reused only when region, step, direction and start are exactly equal.
+class ClearingCache {
+public:
+    const std::vector<ClearingPass>* find(const Region& region, double step, bool climb,
+                                          const Vec2& from) const;
+    void add(const Region& region, double step, bool climb, const Vec2& from,
+             const std::vector<ClearingPass>& passes);
+
+private:
+    struct Entry {
+        Region region;
+        double step = 0.0;
+        bool climb = true;
+        Vec2 from{0.0, 0.0};
+        std::vector<ClearingPass> passes;
+    };
+    static constexpr size_t kEntries = 4;
+    std::vector<Entry> m_entries;  // newest last
+};
 
 // Where clearings start: near the first contour's start point, the same for cycles 21, 22 and 23
 // wherever the tool stands, so that 21 drills where 22 plunges.
@@ -79,7 +122,8 @@ Vec2 planningStart(const CycleContext& context);
 // Runs a clearing at the tool-axis coordinate `w`: the first pass from above (rapid to
 // set-up clearance over the start, to `reentryW`, plunge at `plunge`), the others by their link.
 void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const ContourData& data,
-                 double w, double reentryW, const Feed& mill, const Feed& plunge);
+                 double w, double reentryW, const Feed& mill, const Feed& plunge,
+                 const ClearingOptions& options = {});
 
 // Follows a closed path from its start at the current height.
 void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed);

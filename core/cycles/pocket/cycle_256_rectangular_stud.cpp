@@ -1,7 +1,7 @@
 // Cycle 256 RECTANGULAR STUD (spec §4): the stud Q218 x Q219 with corner radius (Q220 > 0) or
 // chamfer (Q220 < 0) from the blank Q424 x Q425, placed by Q367 and turned by Q224 about the
 // tool position at the call; machined by stud_machining from the start point beside the blank
-// on the +u side (Q437 = 0).
+// on the +u side (Q437 = 0) or beside one of its corners (Q437 1-4).
 #include <cmath>
 #include <numbers>
 
@@ -85,12 +85,6 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     MillingSetup setup;
     if (auto e = readSetup(256, v, ctx, setup)) return e;
     setup.plunge = Plunge::Vertical;  // beside the blank
-    if (v.integer(437) != 0) {
-        return CycleError{"not-supported",
-                          KERF_TR_NOOP("cycle {1}: approach position Q437 = {2} is not "
-                                       "supported yet (0: right of the stud)"),
-                          {"256", std::to_string(v.integer(437))}};
-    }
     const double length = v.number(218);
     const double width = v.number(219);
     const double blankLength = v.number(424);
@@ -107,6 +101,15 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (!withAllowance) return toolTooLarge(256);
     // The blank's corner is the farthest material: every pass set reaches it.
     shape.margin = withAllowance->distanceTo({blankLength / 2.0, blankWidth / 2.0});
+    // Q437 1-4: beside the lower-left, lower-right, upper-right or upper-left corner of the blank,
+    // the tool's edge 2 mm from both of its sides.
+    if (const int corner = v.integer(437); corner != 0) {
+        const double beside = setup.tool.radius + kBesideBlankMm;
+        const double su = corner == 1 || corner == 4 ? -1.0 : 1.0;
+        const double sv = corner <= 2 ? -1.0 : 1.0;
+        shape.startCorner =
+            Vec2(su * (blankLength / 2.0 + beside), sv * (blankWidth / 2.0 + beside));
+    }
     Placement place;
     place.angleRad = v.number(224) * std::numbers::pi / 180.0;
     place.origin = path.uv();

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/contour_region.h"
+
 namespace kerf::cycles::pocket {
 
 namespace {
 
 constexpr size_t kMaxPasses = 10000;
-// The start point lies this far beside the blank, plus the tool radius (spec: "2 mm").
-constexpr double kBesideBlankMm = 2.0;
 
 }  // namespace
 
@@ -37,11 +37,20 @@ std::optional<CycleError> machineStud(const MillingSetup& s, const StudShape& sh
     }
     auto wall = offsetClosed(shape.stud, radius);
     if (!wall) return toolTooLarge(s.cycle);
-    const ClosedContour finishRing = oriented(*wall);
-    const Vec2 outward = place.point({1, 0}) - place.point({0, 0});
+    ClosedContour finishRing = oriented(*wall);
+    Vec2 outward = place.point({1, 0}) - place.point({0, 0});
     const double arcRadius = kBesideBlankMm;
-    const Vec2 startPoint = place.point(shape.stud.segments.front().start) +
-                            (s.sideAllowance + margin + radius + kBesideBlankMm) * outward;
+    Vec2 startPoint = place.point(shape.stud.segments.front().start) +
+                      (s.sideAllowance + margin + radius + kBesideBlankMm) * outward;
+    if (shape.startCorner) {
+        // Every pass is an offset of the stud: their points nearest the corner lie on one ray
+        // from the stud (about the same corner centre), along which the tool steps inwards.
+        startPoint = place.point(*shape.startCorner);
+        for (ClosedContour& pass : passes)
+            pass = startingNearest(pass, startPoint);
+        finishRing = startingNearest(finishRing, startPoint);
+        outward = (startPoint - passes.front().segments.front().start).normalized();
+    }
 
     // One depth: down beside the blank, passes inwards, out on a quarter arc, back to the start.
     auto machineAt = [&](double level, const std::vector<ClosedContour>& rings, const Feed& feed) {

@@ -12,7 +12,13 @@ struct StudShape {
     ClosedContour stud;   // finished size, counter-clockwise, local frame, starting at +u
     double margin = 0.0;  // farthest distance from the stud (plus allowance) to the blank
     Placement placement;  // rotation and centre; the passes start on the local +u axis
+    // Cycle 256's Q437 1-4: the start point beside a corner of the blank (local frame); the
+    // passes then start where they come nearest to it, so the stepovers spiral in along one ray.
+    std::optional<Vec2> startCorner;
 };
+
+// The start point beside the blank: the tool's edge this far from the blank (spec: "2 mm").
+inline constexpr double kBesideBlankMm = 2.0;
 
 std::optional<CycleError> machineStud(const MillingSetup& setup, const StudShape& shape,
                                       CyclePath& path);

@@ -206,13 +206,12 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     const Span secondSpan = spanOf(v, 2, ctx.start.y(), v.number(219));
     f.a = f.alongMain ? mainSpan : secondSpan;
     f.b = f.alongMain ? secondSpan : mainSpan;
-    // The paths start beside the workpiece: on the other end when a wall closes the start.
-    if (f.a.wallAtStart) {
-        if (f.a.wallAtEnd) {
-            return faceError(
-                KERF_TR_NOOP("cycle {1}: walls at both ends of the milling direction "
-                             "are not supported yet"));
-        }
+    // The paths start beside the workpiece: on the other end when a wall closes the start. With
+    // walls at both ends of the paths the tool comes in across them, from the open side.
+    const bool enclosed = f.a.wallAtStart && f.a.wallAtEnd;
+    if (enclosed) {
+        if (f.b.wallAtStart) f.b = {f.b.end, f.b.start, -f.b.dir, false, true};
+    } else if (f.a.wallAtStart) {
         f.a = {f.a.end, f.a.start, -f.a.dir, false, true};
     }
     const double side = v.number(368);
@@ -220,11 +219,12 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     const double outside = radius + lateral;
     const bool overtravel = strategy == Strategy::Meander || strategy == Strategy::Lines;
     // Tool-centre extremes: R + Q368 from a wall, beyond the edge where there is none.
-    const double aStart = f.a.start - f.a.dir * outside;
+    const double aStart =
+        enclosed ? f.a.start + f.a.dir * (radius + side) : f.a.start - f.a.dir * outside;
     const double aFar = f.a.wallAtEnd ? f.a.end - f.a.dir * (radius + side)
                                       : f.a.end + f.a.dir * (lateral + (overtravel ? radius : 0.0));
     const double aNear =
-        strategy == Strategy::MeanderOnEdge ? f.a.start - f.a.dir * lateral : aStart;
+        strategy == Strategy::MeanderOnEdge && !enclosed ? f.a.start - f.a.dir * lateral : aStart;
     const double bFirst = f.b.start + (f.b.wallAtStart ? f.b.dir * (radius + side) : 0.0);
     const double bLast = f.b.end - (f.b.wallAtEnd ? f.b.dir * (radius + side) : 0.0);
     if ((bLast - bFirst) * f.b.dir < -1e-9 || (aFar - f.a.start) * f.a.dir < -1e-9) {
@@ -249,8 +249,8 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     const double clearance = v.number(200);
     const Feed prePosition = v.feed(253);
 
-    // Positioning logic to start point 1, beside the workpiece.
-    const Vec2 start1 = f.uv(aStart, bFirst);
+    // Positioning logic to start point 1, beside the workpiece (across the paths when enclosed).
+    const Vec2 start1 = f.uv(aStart, enclosed ? bFirst - f.b.dir * outside : bFirst);
     if (path.w() <= top + v.number(204)) path.rapidW(top + v.number(204));
     path.rapidUv(start1);
     path.rapidW(top + clearance);
@@ -262,6 +262,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             path.rapidUv(start1);
         }
         path.moveW(w, prePosition);
+        if (enclosed) path.moveUv(f.uv(aStart, bFirst), prePosition);
         if (strategy == Strategy::Spiral) {
             const double halfA = std::fabs(f.a.end - f.a.start) / 2.0;
             const double halfB = width / 2.0;
@@ -310,6 +311,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             double at;
         };
         std::vector<Wall> list;
+        if (f.a.wallAtStart) list.push_back({true, f.a.start + f.a.dir * radius});
         if (f.a.wallAtEnd) list.push_back({true, f.a.end - f.a.dir * radius});
         if (f.b.wallAtStart) list.push_back({false, f.b.start + f.b.dir * radius});
         if (f.b.wallAtEnd) list.push_back({false, f.b.end - f.b.dir * radius});

@@ -170,7 +170,30 @@ bool BlockParser::parseContourFormula(std::string_view head, const program::Logi
         out.statement = std::move(result);
         return true;
     }
-    // CONTOUR DEF P1 = "..." [DEPTHd] I2 = "..." [DEPTHd] ...
+    // A subcontour of CONTOUR DEF: a program "..." or a label of this program, LBL n or LBL "name".
+    auto subcontour = [&](ContourDefinition::Item& item) {
+        cur.skipBlanks();
+        if (!cur.acceptKeyword("LBL")) return programName(item.path);
+        cur.skipBlanks();
+        item.offset = cur.position();
+        LabelTarget target;
+        if (auto name = cur.quoted()) {
+            if (name->empty()) {
+                return failAt(item.offset, "syntax", KERF_TR_NOOP("label name must not be empty"));
+            }
+            target.name = std::string(*name);
+        } else {
+            auto number = cur.unsignedInteger();
+            if (!number || *number < 1 || *number > 65535) {
+                return failAt(item.offset, "syntax",
+                              KERF_TR_NOOP("a label number from 1 to 65535 or a name expected"));
+            }
+            target.number = static_cast<int>(*number);
+        }
+        item.label = std::move(target);
+        return true;
+    };
+    // CONTOUR DEF P1 = "..." [DEPTHd] I2 = LBL 2 [DEPTHd] ...
     cur.acceptKeyword("DEF");
     ContourDefinition definition;
     while (!cur.atEnd()) {
@@ -193,7 +216,7 @@ bool BlockParser::parseContourFormula(std::string_view head, const program::Logi
         if (!cur.acceptChar('='))
             return failAt(cur.position(), "syntax", KERF_TR_NOOP("'=' expected"));
         bool hasDepth = false;
-        if (!programName(item.path) || !depthWord(item.depth, hasDepth)) return false;
+        if (!subcontour(item) || !depthWord(item.depth, hasDepth)) return false;
         if (definition.items.size() >= kMaxSimpleItems) {
             return failAt(itemAt, "syntax",
                           KERF_TR_NOOP("CONTOUR DEF combines at most 9 subcontours"));

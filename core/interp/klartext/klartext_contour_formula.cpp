@@ -123,9 +123,11 @@ bool KlartextInterpreter::captureFormula(std::optional<cycles::ContourFormula>& 
     std::vector<cycles::FormulaStep> islands;
     for (const ContourDefinition::Item& item : m_simpleContours.items) {
         cycles::FormulaContour contour;
-        if (!captureProgramContour(item.path, m_contourFolder, m_contourIsoCaller, contour)) {
-            return false;
-        }
+        const bool captured =
+            item.label ? captureLabelContour(*item.label, contour)
+                       : captureProgramContour(item.path, m_contourFolder, m_contourIsoCaller,
+                                               contour);
+        if (!captured) return false;
         contour.depth = std::fabs(item.depth);
         contour.island = item.island;
         const cycles::FormulaStep operand{Kind::Contour, formula.contours.size()};
@@ -216,6 +218,28 @@ bool KlartextInterpreter::runDefinitionProgram(cycles::ContourFormula& out) {
     }
     out = std::move(build.formula);
     out.steps = std::move(*build.result);
+    return true;
+}
+
+// A label of the running program as a closed contour (CONTOUR DEF P1 = LBL 1): read like a
+// contour-description program, pocket or island by P or I rather than by RL/RR.
+bool KlartextInterpreter::captureLabelContour(const LabelTarget& label,
+                                              cycles::FormulaContour& out) {
+    const LabelPosition* position = resolveLabel(label);
+    if (position == nullptr) return false;
+    const std::string name =
+        "LBL " + (label.number ? std::to_string(*label.number) : "\"" + *label.name + "\"");
+    ChainRules rules;
+    rules.formula = true;
+    CapturedChain chain;
+    if (!captureChain(*m_levels.back().program, *position, rules, chain)) return false;
+    if (!checkContourReach(chain.segments, name,
+                           KERF_TR_NOOP("the contour subprogram {1} has no contour"))) {
+        return false;
+    }
+    ClosedContour contour;
+    if (!closeContour(std::move(chain.segments), name, contour)) return false;
+    out.contour = std::move(contour);
     return true;
 }
 

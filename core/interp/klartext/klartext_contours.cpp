@@ -6,6 +6,7 @@
 
 #include "core/base/translate.h"
 #include "core/geometry/contour_region.h"
+#include "core/interp/klartext/contour_labels.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 
 namespace kerf::klartext {
@@ -13,7 +14,6 @@ namespace kerf::klartext {
 namespace {
 
 constexpr size_t kMaxContourBlocks = 16384;  // spec: contour elements of one SL cycle
-constexpr size_t kMaxContourLabels = 12;
 const char* const kNoContourInSubprogram =
     KERF_TR_NOOP("the contour subprogram {1} has no contour");
 
@@ -89,35 +89,14 @@ bool movesInPlane(const Statement& s) {
 // The single-block form "CYCL DEF 14 CONTOUR LABEL 1/2/3" has the same text after the number.
 void KlartextInterpreter::contourLabels(const CycleDefinition& def) {
     if (def.subNumber != 1 && def.subNumber >= 0) return;
-    const std::string& text = def.subNumber == 1 ? def.rest : def.name;
-    size_t at = text.find_first_of("0123456789");
-    std::vector<int> labels;
-    while (at != std::string::npos && at < text.size()) {
-        size_t end = at;
-        long value = 0;
-        while (end < text.size() && isDigit(text[end]) && value <= 65535) {
-            value = value * 10 + (text[end] - '0');
-            ++end;
-        }
-        if (value < 1 || value > 65535) {
-            fail("cycle-syntax", KERF_TR_NOOP("cycle 14: a label number from 1 to 65535 expected"));
-            return;
-        }
-        labels.push_back(static_cast<int>(value));
-        while (end < text.size() && (text[end] == ' ' || text[end] == '\t'))
-            ++end;
-        if (end >= text.size() || text[end] == ';') break;
-        if (text[end] != '/') {
-            fail("cycle-syntax", KERF_TR_NOOP("cycle 14: label numbers are separated by '/'"));
-            return;
-        }
-        at = text.find_first_of("0123456789", end + 1);
-    }
-    if (labels.empty() || labels.size() > kMaxContourLabels) {
-        fail("cycle-syntax", KERF_TR_NOOP("cycle 14 lists 1 to 12 label numbers"));
+    const ContourLabelList list = parseContourLabels(def.subNumber == 1 ? def.rest : def.name);
+    if (list.error != nullptr) {
+        fail("cycle-syntax", list.error);
         return;
     }
-    m_contourLabels = std::move(labels);
+    m_contourLabels.clear();
+    for (const ContourLabel& label : list.labels)
+        m_contourLabels.push_back(label.number);
     m_contourSource = ContourSource::Labels;
 }
 

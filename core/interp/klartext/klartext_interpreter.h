@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/cycle_descriptor.h"
 #include "core/cycles/cycle_values.h"
 #include "core/cycles/pattern/pattern_plan.h"
@@ -333,6 +334,7 @@ private:
     void executeDeclareContour(const DeclareContour& declare);
     void executeContourFormula(const ContourFormula& formula);
     void executeContourDefinition(const ContourDefinition& definition);
+    bool captureLabelContour(const LabelTarget& label, cycles::FormulaContour& out);
     bool captureFormula(std::optional<cycles::ContourFormula>& out);
     bool runDefinitionProgram(cycles::ContourFormula& out);
     bool captureProgramContour(const std::string& name, const std::filesystem::path& folder,
@@ -580,6 +582,7 @@ private:
     std::vector<int> m_contourLabels;
     std::optional<cycles::CycleValues> m_contourData;
     std::optional<cycles::CycleValues> m_trainData;  // cycle 270
+    cycles::contour::ClearingCache m_clearingCache;  // SL cycles 21-23 plan a region once
     double m_roughingRadius = 0.0;
     interp::PathBuilder* m_capturePath = nullptr;
     enum class ContourSource : uint8_t { Labels, Formula, Simple };

@@ -11,6 +11,7 @@
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
+#include "core/interp/klartext/contour_labels.h"
 #include "core/interp/klartext/cursor.h"
 #include "core/interp/klartext/cycle_definition_check.h"
 #include "core/interp/klartext/statement_axes.h"
@@ -176,6 +177,24 @@ void checkProgram(ProgramFile& program) {
                                       line.lineAt(at == std::string_view::npos ? 0 : at),
                                       line.columnAt(at == std::string_view::npos ? 0 : at)});
         };
+        // Cycle 14's labels must exist in the program, as CALL LBL's do.
+        auto contourLabelTargets = [&](const CycleDefinition& cycle) {
+            const std::string& text = cycle.subNumber == 1 ? cycle.rest : cycle.name;
+            const size_t found = line.text.find(text);
+            const size_t base = found == std::string_view::npos ? 0 : found;
+            const ContourLabelList list = parseContourLabels(text);
+            if (list.error != nullptr) {
+                diag(Severity::Error, "cycle-syntax", line.lineAt(base + list.errorOffset),
+                     line.columnAt(base + list.errorOffset), list.error);
+                return;
+            }
+            for (const ContourLabel& label : list.labels) {
+                LabelTarget target;
+                target.number = label.number;
+                targets.push_back(
+                    {target, line.lineAt(base + label.offset), line.columnAt(base + label.offset)});
+            }
+        };
         auto checkStatement = [&](const Statement& s) {
             if (auto missing = axisMissingFrom(s, program.machineAxes)) {
                 diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
@@ -246,8 +265,14 @@ void checkProgram(ProgramFile& program) {
                 addCall(declare->path);
                 declaredContours.insert(declare->descriptor);
             } else if (const auto* definition = std::get_if<ContourDefinition>(&s)) {
-                for (const ContourDefinition::Item& item : definition->items)
-                    addCall(item.path);
+                for (const ContourDefinition::Item& item : definition->items) {
+                    if (!item.label) {
+                        addCall(item.path);
+                        continue;
+                    }
+                    targets.push_back(
+                        {*item.label, line.lineAt(item.offset), line.columnAt(item.offset)});
+                }
             } else if (const auto* formula = std::get_if<ContourFormula>(&s)) {
                 for (const ContourFormulaStep& step : formula->steps) {
                     if (step.kind == ContourFormulaStep::Kind::Descriptor &&
@@ -296,6 +321,10 @@ void checkProgram(ProgramFile& program) {
                     if (!called.empty()) addCall(called);
                 }
                 checkCycleParameters(*cycle, line, file, out);
+                if (!cycle->probe && cycle->number == 14 &&
+                    (cycle->subNumber == 1 || cycle->subNumber < 0)) {
+                    contourLabelTargets(*cycle);
+                }
             }
         };
         checkStatement(block.statement);

@@ -315,7 +315,7 @@ struct SelectPattern {  // SEL PATTERN "point table"
     std::string path;
 };
 // Contour formula (spec §8): SEL CONTOUR "definition program", DECLARE CONTOUR QC1 = "program"
-// DEPTH5, QC10 = (QC1 | QC2) \ QC3, and the simple CONTOUR DEF P1 = "..." I2 = "..." DEPTH5.
+// DEPTH5, QC10 = (QC1 | QC2) \ QC3, and the simple CONTOUR DEF P1 = "..." I2 = LBL 2 DEPTH5.
 struct SelectContour {
     std::string path;
 };
@@ -339,7 +339,9 @@ struct ContourDefinition {
     struct Item {
         bool island = false;
         int number = 0;
-        std::string path;
+        std::string path;                  // P1 = "program"
+        std::optional<LabelTarget> label;  // P1 = LBL 1 / LBL "name": a label of this program
+        size_t offset = 0;                 // of the label in the block text, for errors
         double depth = 0.0;
     };
     std::vector<Item> items;

@@ -265,6 +265,49 @@ TEST(PocketCycles, ChamferedStudPassesAreArcsAtTheCorners) {
     EXPECT_EQ(lastPassArcs, 8u);
 }
 
+TEST(PocketCycles, RectangularStudFromACornerSpiralsInAlongTheDiagonal) {
+    // 256 with Q437 = 1: a sharp 60 x 40 stud from an 80 x 60 blank, tool R4, roughing only.
+    // Start beside the blank's lower-left corner, the tool's edge 2 mm from both sides:
+    // (-(40 + 4 + 2), -(30 + 4 + 2)) = (-46, -36). Margin: the blank corner (40, 30) is
+    // sqrt(10^2 + 10^2) = 14.1421 from the stud, so 4 passes (step <= R 4) at 4 + 14.1421 x 3/4,
+    // 2/4, 1/4, 0 from it. Each starts where it comes nearest to the start point: on its arc
+    // about the stud's corner (-30, -20), on the 45 degree ray towards (-46, -36).
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {218, 60}, {424, 80},  {219, 40}, {425, 60}, {220, 0}, {368, 0},   {224, 0},
+        {367, 0},  {207, 500}, {351, 1},  {201, -5}, {202, 5}, {206, 150}, {200, 2},
+        {203, 0},  {204, 20},  {370, 1},  {437, 1},  {215, 1}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(256, v, toolR4(), out));
+    ASSERT_FALSE(out.moves.empty());
+    EXPECT_NEAR(out.moves[0].target.x(), -46.0, 1e-9);
+    EXPECT_NEAR(out.moves[0].target.y(), -36.0, 1e-9);
+    const double margin = std::sqrt(200.0);
+    const Vec2 corner(-30.0, -20.0);
+    const Vec2 diagonal = Vec2(-1.0, -1.0).normalized();
+    auto reached = [&](double d, Move::Kind kind) {
+        const Vec2 p = corner + d * diagonal;
+        for (const Move& m : out.moves) {
+            if (m.kind == kind && std::fabs(m.target.z() + 5.0) < 1e-9 &&
+                (m.target.head<2>() - p).norm() < 1e-9) {
+                return true;
+            }
+        }
+        return false;
+    };
+    EXPECT_TRUE(reached(4.0 + margin * 0.75, Move::Arc));  // the tangential approach
+    for (double d : {4.0 + margin * 0.5, 4.0 + margin * 0.25, 4.0})
+        EXPECT_TRUE(reached(d, Move::Line)) << d;  // the stepovers along the ray
+    // Q437 = 3: the upper-right corner.
+    v.set(437, 3);
+    Recorder upperRight;
+    ASSERT_FALSE(run(256, v, toolR4(), upperRight));
+    EXPECT_NEAR(upperRight.moves[0].target.x(), 46.0, 1e-9);
+    EXPECT_NEAR(upperRight.moves[0].target.y(), 36.0, 1e-9);
+}
+
 TEST(PocketCycles, PolygonStudStartsBesideTheBlankOnASideNormal) {
     // 258: hexagon, inscribed circle D40, first corner at 30 degrees, so a side normal points
     // along +X; blank D60. Start point: blank radius 30 + R 4 + 2 = 36 beside the centre on that

@@ -314,5 +314,138 @@ TEST(SlCycles, SuperimposedPocketsUnionIntersectionDifference) {
     EXPECT_NEAR(area.area.area(), kPi * 625.0 - lens, 1e-6);
 }
 
+// Q401 50 %: a 60 x 40 pocket, tool R5, no allowance, overlap 1: tool-centre rings |u| <= 25,
+// |v| <= 15 (level 0), 20 x 10 (level 1) and 15 x 5 (level 2, the innermost: at 20 x 0 nothing
+// is left). Only the innermost ring, which nothing was cleared inside, cuts with the full
+// circumference: its moves at 350 x 50 % = 175, the others (and the stepovers) at 350.
+TEST(SlCycles, FeedRateFactorSlowsTheFullWidthRingOnly) {
+    const CycleValues data = contourData(-5.0, 0.0, 0.0);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.contours.push_back({rectangle(-30, -20, 30, 20), false, 1});
+    ctx.contourData = &data;
+    CycleValues v = roughOut(5.0);
+    v.set(401, 50.0);
+    Recorder out;
+    ASSERT_FALSE(run(22, v, ctx, out));
+    auto onRing = [](const Vec3& p, double hu, double hv) {
+        const double u = std::fabs(p.x()), w = std::fabs(p.y());
+        return (std::fabs(u - hu) < 1e-9 && w <= hv + 1e-9) ||
+               (std::fabs(w - hv) < 1e-9 && u <= hu + 1e-9);
+    };
+    size_t slow = 0, fast = 0;
+    for (size_t i = 1; i < out.moves.size(); ++i) {
+        const Move& m = out.moves[i];
+        if (m.kind != Move::Line || std::fabs(m.target.z() + 5.0) > 1e-9) continue;
+        if (std::fabs(out.moves[i - 1].target.z() + 5.0) > 1e-9) continue;  // the plunge
+        if (onRing(m.target, 15.0, 5.0)) {
+            EXPECT_DOUBLE_EQ(m.feed.value, 175.0) << i;
+            ++slow;
+        } else {
+            EXPECT_TRUE(onRing(m.target, 20.0, 10.0) || onRing(m.target, 25.0, 15.0)) << i;
+            EXPECT_DOUBLE_EQ(m.feed.value, 350.0) << i;
+            ++fast;
+        }
+    }
+    EXPECT_GE(slow, 4u);  // the four sides of the innermost ring
+    EXPECT_GE(fast, 8u);  // the sides of the other two, and the stepovers
+}
+
+// Q19 with a tool ANGLE of 10 degrees: the plunge is a helix of the tool radius 5 (room: the
+// innermost ring 15 x 5 of the same 60 x 40 pocket starts 10 from every wall of the tool-centre
+// region) at Q19, climbing (Q9 +1) counter-clockwise. Per turn it descends
+// 2 pi 5 tan 10 deg = 5.53946; from the set-up clearance +2 to -5 (7 mm) that is one full turn
+// and 0.26365 of one, then a straight move back to the helix's start on the ring.
+TEST(SlCycles, PlungeOnAHelixAtTheToolsAngle) {
+    const CycleValues data = contourData(-10.0, 0.0, 0.0);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.tool.plungeAngleDeg = 10.0;
+    ctx.contours.push_back({rectangle(-30, -20, 30, 20), false, 1});
+    ctx.contourData = &data;
+    CycleValues v = roughOut(5.0);
+    v.set(19, 150.0);
+    Recorder out;
+    ASSERT_FALSE(run(22, v, ctx, out));
+    const double pitch = 2.0 * kPi * 5.0 * std::tan(10.0 * kPi / 180.0);
+    for (const double top : {2.0, -3.0}) {  // the re-entry heights: surface, -5 (+ 2)
+        size_t i = 0;
+        while (i < out.moves.size() && !(out.moves[i].kind == Move::Rapid &&
+                                         std::fabs(out.moves[i].target.z() - top) < 1e-9))
+            ++i;
+        ASSERT_LT(i + 3, out.moves.size()) << top;
+        const Vec3 start = out.moves[i].target;
+        const Move& turn = out.moves[i + 1];
+        const Move& rest = out.moves[i + 2];
+        const Move& back = out.moves[i + 3];
+        ASSERT_EQ(turn.kind, Move::Arc);
+        ASSERT_EQ(rest.kind, Move::Arc);
+        EXPECT_NEAR(turn.sweep, 2.0 * kPi, 1e-9);
+        EXPECT_NEAR(turn.target.z(), top - pitch, 1e-9);
+        EXPECT_NEAR(rest.sweep, 2.0 * kPi * (7.0 - pitch) / pitch, 1e-9);
+        EXPECT_NEAR(rest.target.z(), top - 7.0, 1e-9);
+        EXPECT_NEAR((turn.centre - Vec2(start.x(), start.y())).norm(), 5.0, 1e-9);
+        EXPECT_DOUBLE_EQ(turn.feed.value, 150.0);
+        EXPECT_EQ(back.kind, Move::Line);
+        EXPECT_NEAR((Vec2(back.target.x(), back.target.y()) - Vec2(start.x(), start.y())).norm(),
+                    0.0, 1e-9);
+        // The start lies on the innermost ring |u| <= 15, |v| <= 5.
+        EXPECT_TRUE(std::fabs(std::fabs(start.x()) - 15.0) < 1e-9 ||
+                    std::fabs(std::fabs(start.y()) - 5.0) < 1e-9);
+    }
+    // A pocket 12 x 60: the tool-centre strip |u| <= 1 has room for circles of radius 1 at most,
+    // less than the smallest helix tried (5 / 4 = 1.25): an error, not a gouge.
+    ctx.contours.clear();
+    ctx.contours.push_back({rectangle(-6, -30, 6, 30), false, 1});
+    Recorder narrow;
+    const auto error = run(22, v, ctx, narrow);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-plunge");
+
+    // A tool R 0.01 at ANGLE 0.1 deg in a 1 x 1 pocket: 2 pi 0.01 tan 0.1 deg = 0.00011 mm per
+    // turn, so the 7 mm of the first plunge would take 63,800 turns: refused (at most 10,000),
+    // not expanded into millions of moves.
+    ctx.tool.radius = 0.01;
+    ctx.tool.plungeAngleDeg = 0.1;
+    ctx.contours.clear();
+    ctx.contours.push_back({rectangle(-0.5, -0.5, 0.5, 0.5), false, 1});
+    Recorder tiny;
+    const auto tooMany = run(22, v, ctx, tiny);
+    ASSERT_TRUE(tooMany);
+    EXPECT_EQ(tooMany->code, "cycle-limit");
+    EXPECT_TRUE(tiny.moves.empty());
+}
+
+// The clearing cache hands back a plan only for exactly the same region, step, direction and
+// start; what it hands back is the plan made without it.
+TEST(SlCycles, ClearingCacheReusesOnlyAnIdenticalPlan) {
+    const Region region = regionOf(rectangle(-25, -15, 25, 15));
+    const Vec2 from(-30.0, -20.0);
+    std::vector<contour::ClearingPass> fresh, first, again;
+    ASSERT_FALSE(contour::planClearing(22, region, 5.0, true, from, fresh));
+    contour::ClearingCache cache;
+    EXPECT_EQ(cache.find(region, 5.0, true, from), nullptr);
+    ASSERT_FALSE(contour::planClearing(22, region, 5.0, true, from, first, &cache));
+    ASSERT_NE(cache.find(region, 5.0, true, from), nullptr);
+    EXPECT_EQ(cache.find(region, 4.999, true, from), nullptr);
+    EXPECT_EQ(cache.find(region, 5.0, false, from), nullptr);
+    EXPECT_EQ(cache.find(region, 5.0, true, Vec2(-30.0, -19.0)), nullptr);
+    EXPECT_EQ(cache.find(regionOf(rectangle(-25, -15, 25, 15.001)), 5.0, true, from), nullptr);
+    ASSERT_FALSE(contour::planClearing(23, region, 5.0, true, from, again, &cache));
+    ASSERT_EQ(fresh.size(), 3u);  // rings 50 x 30, 40 x 20, 30 x 10
+    for (const auto* plan : {&first, &again}) {
+        ASSERT_EQ(plan->size(), fresh.size());
+        for (size_t i = 0; i < fresh.size(); ++i) {
+            EXPECT_EQ((*plan)[i].path.segments.size(), fresh[i].path.segments.size());
+            EXPECT_EQ((*plan)[i].path.segments.front().start, fresh[i].path.segments.front().start);
+            EXPECT_EQ((*plan)[i].fullWidth, fresh[i].fullWidth);
+        }
+    }
+    EXPECT_TRUE(fresh.front().fullWidth);  // the innermost ring first
+    EXPECT_FALSE(fresh.back().fullWidth);
+}
+
 }  // namespace
 }  // namespace kerf::cycles

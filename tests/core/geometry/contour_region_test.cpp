@@ -201,5 +201,29 @@ TEST(ContourRegion, ContainsAndStartingNearest) {
     EXPECT_NEAR(c.signedArea(), kPi * 25.0, 1e-9);
 }
 
+// Three squares 10 x 10 united in one boolean: the first two overlap in 5 x 10 (one boundary of
+// 100 + 100 - 50 = 150), the third stands apart (100): 250 in two boundaries.
+TEST(ContourRegion, UniteAllJoinsOverlappingAndSeparateRegions) {
+    const Region all =
+        uniteAll({regionOf(rectangle(0, 0, 10, 10)), regionOf(rectangle(5, 0, 15, 10)),
+                  regionOf(rectangle(20, 0, 30, 10))});
+    EXPECT_EQ(all.boundaries.size(), 2u);
+    EXPECT_NEAR(all.area(), 250.0, 1e-9);
+}
+
+// Inside or outside near a large arc: a circle r 100 bulges 100 (1 - cos(pi / 16)) = 1.9 mm
+// beyond its coarsest chords, so points 3 µm inside and outside it (beyond the 2 µm that count
+// as on the boundary) are told apart only by chords finer than that.
+TEST(ContourRegion, ContainsTellsSidesApartJustBesideALargeArc) {
+    const Region disc = regionOf(circle({0.0, 0.0}, 100.0));
+    for (double angle : {0.1, 0.3, 1.0, 2.5}) {
+        const Vec2 direction(std::cos(angle), std::sin(angle));
+        EXPECT_TRUE(disc.contains((100.0 - 3e-3) * direction)) << angle;
+        EXPECT_FALSE(disc.contains((100.0 + 3e-3) * direction)) << angle;
+        EXPECT_TRUE(disc.contains((100.0 - 5.0) * direction)) << angle;
+        EXPECT_FALSE(disc.contains((100.0 + 5.0) * direction)) << angle;
+    }
+}
+
 }  // namespace
 }  // namespace kerf

@@ -6,6 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/cycle_registry.h"
 
 namespace kerf::cycles {
@@ -49,7 +50,7 @@ BENCHMARK(expandSpecExample251)->Unit(benchmark::kMicrosecond);
 
 // SL cycles 22 + 23 + 24 on one contour set with a D12 tool, Q3 0.5, Q4 0.5, depth 20 in
 // infeeds of 5; the expansion includes the booleans and offsets of the contour engine.
-void expandSl(benchmark::State& state, std::vector<SubContour> contours) {
+void expandSl(benchmark::State& state, std::vector<SubContour> contours, double radius = 6.0) {
     CycleValues data;
     const std::pair<uint16_t, double> dataValues[] = {
         {1, -20}, {2, 1}, {3, 0.5}, {4, 0.5}, {5, 0}, {6, 2}, {7, 100}, {8, 0}, {9, 1}};
@@ -64,13 +65,16 @@ void expandSl(benchmark::State& state, std::vector<SubContour> contours) {
         side.set(q, value);
     CycleContext ctx;
     ctx.start = {0.0, 0.0, 100.0};
-    ctx.tool.radius = 6.0;
+    ctx.tool.radius = radius;
     ctx.contours = std::move(contours);
     ctx.contourData = &data;
-    ctx.roughingRadius = 6.0;
+    ctx.roughingRadius = radius;
     size_t moves = 0;
     for (auto _ : state) {
         Counter out;
+        // As in the interpreter, one cache for the calls of a program run.
+        contour::ClearingCache cache;
+        ctx.clearingCache = &cache;
         for (auto [number, values] :
              {std::pair<int, const CycleValues*>{22, &rough}, {23, &floor}, {24, &side}}) {
             CyclePath path(out, ctx.start);
@@ -128,6 +132,25 @@ void expandSlPocket200Elements20Islands(benchmark::State& state) {
     expandSl(state, largePocket());
 }
 BENCHMARK(expandSlPocket200Elements20Islands)->Unit(benchmark::kMillisecond);
+
+// A 300 x 200 rectangle with 20 round islands of 16 mm on a 5 x 4 grid and a small tool (D6):
+// some 30 clearing rings.
+void expandSlPocket300x200SmallTool(benchmark::State& state) {
+    std::vector<SubContour> contours;
+    ClosedContour outer;
+    const Vec2 p[] = {{-150, -100}, {150, -100}, {150, 100}, {-150, 100}};
+    for (size_t i = 0; i < 4; ++i)
+        outer.segments.push_back(PlanarSegment::line(p[i], p[(i + 1) % 4]));
+    contours.push_back({outer, false, 1});
+    for (int i = 0; i < 5; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            const Vec2 centre(-100.0 + 50.0 * i, -60.0 + 40.0 * j);
+            contours.push_back({circleContour(8.0).placed(centre, 0.0), true, 2 + i * 4 + j});
+        }
+    }
+    expandSl(state, std::move(contours), 3.0);
+}
+BENCHMARK(expandSlPocket300x200SmallTool)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace kerf::cycles
