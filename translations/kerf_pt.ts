@@ -628,6 +628,21 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::OperatorInputDialog</name>
+    <message>
+        <source>Operator inputs</source>
+        <translation>Entradas do operador</translation>
+    </message>
+    <message>
+        <source>The program reads these inputs: enter their values</source>
+        <translation>O programa lê estas entradas: introduza os seus valores</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::OverrideControls</name>
     <message>
         <source>Feed</source>
@@ -5608,10 +5623,6 @@ ciclo</translation>
         <translation>um perfil não contém blocos de alto nível</translation>
     </message>
     <message>
-        <source>{1} in a profile is not supported yet</source>
-        <translation>{1} num perfil ainda não é suportado</translation>
-    </message>
-    <message>
         <source>{1} is not allowed in a profile</source>
         <translation>{1} não é permitido num perfil</translation>
     </message>
@@ -8012,6 +8023,22 @@ solução</translation>
     <message>
         <source>the contour subprogram {1} has no contour</source>
         <translation>o subprograma de contorno {1} não tem contorno</translation>
+    </message>
+    <message>
+        <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
+        <translation>G53 num perfil precisa de um ponto G00 ou G01 em X, Z</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it rises {3}° from the passes and the cutting angle CUTA allows {4}°</source>
+        <translation>a ferramenta T{1} não alcança o perfil na linha {2}: sobe {3}° em relação às passadas e o ângulo de corte CUTA permite {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it descends {3}° into the material and CUTA + NOSEA leave {4}°</source>
+        <translation>a ferramenta T{1} não alcança o perfil na linha {2}: desce {3}° para o material e CUTA + NOSEA deixam {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
+        <translation>a ferramenta T{1} não alcança o perfil na linha {2}: o raio do arco {3} é menor que o raio da ponta {4}</translation>
     </message>
 </context>
 <context>
