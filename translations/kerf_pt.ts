@@ -1324,7 +1324,7 @@ estado</translation>
     </message>
     <message>
         <source>Electronic handwheel</source>
-        <translation>Volante electrónico</translation>
+        <translation>Volante eletrónico</translation>
     </message>
     <message>
         <source>Positioning with manual data input</source>
