@@ -631,6 +631,21 @@ Maschine: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::OperatorInputDialog</name>
+    <message>
+        <source>Operator inputs</source>
+        <translation>Bedienereingaben</translation>
+    </message>
+    <message>
+        <source>The program reads these inputs: enter their values</source>
+        <translation>Das Programm liest diese Eingaben: Werte eingeben</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::OverrideControls</name>
     <message>
         <source>Feed</source>
@@ -5612,10 +5627,6 @@ editieren</translation>
         <translation>ein Profil enthält keine Sätze in Hochsprache</translation>
     </message>
     <message>
-        <source>{1} in a profile is not supported yet</source>
-        <translation>{1} in einem Profil wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>{1} is not allowed in a profile</source>
         <translation>{1} ist in einem Profil nicht erlaubt</translation>
     </message>
@@ -8074,6 +8085,20 @@ wählen</translation>
     <message>
         <source>a label number from 1 to 65535 or a name expected</source>
         <translation>Label-Nummer von 1 bis 65535 oder ein Name erwartet</translation>
+        <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
+        <translation>G53 in einer Kontur braucht einen G00- oder G01-Punkt in X, Z</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it rises {3}° from the passes and the cutting angle CUTA allows {4}°</source>
+        <translation>Werkzeug T{1} erreicht die Kontur in Zeile {2} nicht: sie steigt {3}° gegen die Schnitte an und der Schneidenwinkel CUTA erlaubt {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it descends {3}° into the material and CUTA + NOSEA leave {4}°</source>
+        <translation>Werkzeug T{1} erreicht die Kontur in Zeile {2} nicht: sie fällt {3}° ins Material ab und CUTA + NOSEA lassen {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
+        <translation>Werkzeug T{1} erreicht die Kontur in Zeile {2} nicht: der Bogenradius {3} ist kleiner als der Schneidenradius {4}</translation>
     </message>
 </context>
 <context>

@@ -631,6 +631,21 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::OperatorInputDialog</name>
+    <message>
+        <source>Operator inputs</source>
+        <translation>Entradas del operador</translation>
+    </message>
+    <message>
+        <source>The program reads these inputs: enter their values</source>
+        <translation>El programa lee estas entradas: introduzca sus valores</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::OverrideControls</name>
     <message>
         <source>Feed</source>
@@ -5612,10 +5627,6 @@ ciclo</translation>
         <translation>un perfil no contiene bloques de alto nivel</translation>
     </message>
     <message>
-        <source>{1} in a profile is not supported yet</source>
-        <translation>{1} en un perfil todavía no se admite</translation>
-    </message>
-    <message>
         <source>{1} is not allowed in a profile</source>
         <translation>{1} no está permitido en un perfil</translation>
     </message>
@@ -8074,6 +8085,20 @@ solución</translation>
     <message>
         <source>a label number from 1 to 65535 or a name expected</source>
         <translation>se esperaba un número de label de 1 a 65535 o un nombre</translation>
+        <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
+        <translation>G53 en un perfil necesita un punto G00 o G01 en X, Z</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it rises {3}° from the passes and the cutting angle CUTA allows {4}°</source>
+        <translation>la herramienta T{1} no alcanza el perfil en la línea {2}: sube {3}° respecto a las pasadas y el ángulo de corte CUTA permite {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it descends {3}° into the material and CUTA + NOSEA leave {4}°</source>
+        <translation>la herramienta T{1} no alcanza el perfil en la línea {2}: baja {3}° hacia el material y CUTA + NOSEA dejan {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
+        <translation>la herramienta T{1} no alcanza el perfil en la línea {2}: el radio del arco {3} es menor que el radio de punta {4}</translation>
     </message>
 </context>
 <context>

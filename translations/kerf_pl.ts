@@ -634,6 +634,21 @@ Maszyna: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::OperatorInputDialog</name>
+    <message>
+        <source>Operator inputs</source>
+        <translation>Dane operatora</translation>
+    </message>
+    <message>
+        <source>The program reads these inputs: enter their values</source>
+        <translation>Program odczytuje te dane: wpisz ich wartości</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::OverrideControls</name>
     <message>
         <source>Feed</source>
@@ -5615,10 +5630,6 @@ cykl</translation>
         <translation>profil nie zawiera bloków języka wysokiego poziomu</translation>
     </message>
     <message>
-        <source>{1} in a profile is not supported yet</source>
-        <translation>{1} w profilu nie jest jeszcze obsługiwane</translation>
-    </message>
-    <message>
         <source>{1} is not allowed in a profile</source>
         <translation>{1} jest niedozwolone w profilu</translation>
     </message>
@@ -8077,6 +8088,20 @@ rozwiązanie</translation>
     <message>
         <source>a label number from 1 to 65535 or a name expected</source>
         <translation>oczekiwano numeru etykiety od 1 do 65535 lub nazwy</translation>
+        <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
+        <translation>G53 w profilu wymaga punktu G00 lub G01 w X, Z</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it rises {3}° from the passes and the cutting angle CUTA allows {4}°</source>
+        <translation>narzędzie T{1} nie sięga profilu w wierszu {2}: wznosi się o {3}° względem przejść, a kąt skrawania CUTA pozwala na {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it descends {3}° into the material and CUTA + NOSEA leave {4}°</source>
+        <translation>narzędzie T{1} nie sięga profilu w wierszu {2}: opada o {3}° w materiał, a CUTA + NOSEA pozostawiają {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
+        <translation>narzędzie T{1} nie sięga profilu w wierszu {2}: promień łuku {3} jest mniejszy niż promień naroża {4}</translation>
     </message>
 </context>
 <context>

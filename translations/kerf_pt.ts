@@ -632,6 +632,21 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::OperatorInputDialog</name>
+    <message>
+        <source>Operator inputs</source>
+        <translation>Entradas do operador</translation>
+    </message>
+    <message>
+        <source>The program reads these inputs: enter their values</source>
+        <translation>O programa lê estas entradas: introduza os seus valores</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::OverrideControls</name>
     <message>
         <source>Feed</source>
@@ -1313,7 +1328,7 @@ estado</translation>
     </message>
     <message>
         <source>Electronic handwheel</source>
-        <translation>Volante electrónico</translation>
+        <translation>Volante eletrónico</translation>
     </message>
     <message>
         <source>Positioning with manual data input</source>
@@ -5612,10 +5627,6 @@ ciclo</translation>
         <translation>um perfil não contém blocos de alto nível</translation>
     </message>
     <message>
-        <source>{1} in a profile is not supported yet</source>
-        <translation>{1} num perfil ainda não é suportado</translation>
-    </message>
-    <message>
         <source>{1} is not allowed in a profile</source>
         <translation>{1} não é permitido num perfil</translation>
     </message>
@@ -8074,6 +8085,20 @@ solução</translation>
     <message>
         <source>a label number from 1 to 65535 or a name expected</source>
         <translation>esperava-se um número de label de 1 a 65535 ou um nome</translation>
+        <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
+        <translation>G53 num perfil precisa de um ponto G00 ou G01 em X, Z</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it rises {3}° from the passes and the cutting angle CUTA allows {4}°</source>
+        <translation>a ferramenta T{1} não alcança o perfil na linha {2}: sobe {3}° em relação às passadas e o ângulo de corte CUTA permite {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: it descends {3}° into the material and CUTA + NOSEA leave {4}°</source>
+        <translation>a ferramenta T{1} não alcança o perfil na linha {2}: desce {3}° para o material e CUTA + NOSEA deixam {4}°</translation>
+    </message>
+    <message>
+        <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
+        <translation>a ferramenta T{1} não alcança o perfil na linha {2}: o raio do arco {3} é menor que o raio da ponta {4}</translation>
     </message>
 </context>
 <context>

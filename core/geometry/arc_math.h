@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 #include "core/geometry/axes.h"
@@ -13,6 +14,14 @@ inline double degToRad(double deg) {
 }
 inline double radToDeg(double rad) {
     return rad * (180.0 / kPi);
+}
+
+// The direction of v in degrees (-180, 180] from the abscissa, and the unit vector at an angle.
+inline double angleDeg(const Vec2& v) {
+    return radToDeg(std::atan2(v.y(), v.x()));
+}
+inline Vec2 unitAtDeg(double deg) {
+    return {std::cos(degToRad(deg)), std::sin(degToRad(deg))};
 }
 
 inline double cross2(const Vec2& a, const Vec2& b) {

@@ -66,6 +66,10 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
         settings.startInMachine = start;
     }
     settings.userScreen = request.userScreen;
+    for (const auto& [n, value] : request.operatorInputs) {
+        if (n >= 0 && n < static_cast<int>(settings.inputValues.size()))
+            settings.inputValues[static_cast<size_t>(n)] = value;
+    }
     auto interpreter = std::make_unique<fagor::FagorInterpreter>(*loaded.sources, settings);
     loaded.streamOrigin = interpreter->streamOrigin();
     loaded.ready = load(*interpreter, request,

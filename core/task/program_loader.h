@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/base/diagnostic.h"
@@ -46,6 +47,8 @@ struct ProgramRequest {
     // FAGOR: run as the user customisation program of this screen (the user channel, spec part 2
     // §6.8); it must outlive the interpreter.
     fagor::UserScreen* userScreen = nullptr;
+    // FAGOR: the values of the IBn variables the operator gave for this run (n, value).
+    std::vector<std::pair<int, double>> operatorInputs;
 };
 
 struct LoadedProgram {

@@ -87,7 +87,8 @@ void MachineSession::report(const DiagnosticList& diagnostics) {
 }
 
 bool MachineSession::startProgram(const QString& program, const std::filesystem::path& path,
-                                  std::optional<uint32_t> startLine) {
+                                  std::optional<uint32_t> startLine,
+                                  const std::vector<std::pair<int, double>>& operatorInputs) {
     if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
     applyPresetTable();
     task::ProgramRequest request;
@@ -97,6 +98,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     m_programStart.values = m_motion->world().position.values;
     request.startPosition = m_programStart;
     request.presetInMachine = presetInMachine();
+    request.operatorInputs = operatorInputs;
     m_programName = task::programName(path);
     return start(task::loadProgram(m_machine, request), startLine);
 }

@@ -7,6 +7,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/base/diagnostic.h"
 #include "core/interp/program_status.h"
@@ -56,8 +58,10 @@ public:
     // Program run. False (and a message) when the program cannot start: errors in it, or the
     // machine is busy. startLine: start in mid-program at the first block on or after it, with
     // the tool, spindle and position the blocks before it leave.
+    // operatorInputs: FAGOR IBn values for the run (n, value).
     bool startProgram(const QString& text, const std::filesystem::path& path,
-                      std::optional<uint32_t> startLine = std::nullopt);
+                      std::optional<uint32_t> startLine = std::nullopt,
+                      const std::vector<std::pair<int, double>>& operatorInputs = {});
     bool executeMdi(const QString& block);
     // The MDI blocks started in this session, the latest first, each once (a rerun moves it up).
     const QStringList& mdiHistory() const { return m_mdiHistory; }

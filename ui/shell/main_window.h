@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/machine/machine_config.h"
 #include "core/task/machining_clock.h"
@@ -101,6 +103,8 @@ public:
     // Programming, USERMAN.PIM in manual modes, USERDPLY.PIM in execution; NC root) on the user
     // screen (main_window_userscreen.cpp). False when there is none or it fails its check.
     bool openUserScreen();
+    // Before a FAGOR program runs: the IBn values it reads (false: the operator cancelled).
+    bool askOperatorInputs(std::vector<std::pair<int, double>>& inputs);
     UserScreenRun* userScreenRun() const { return m_userScreenRun; }
     UserScreenView* userScreenView() const { return m_userScreenView; }
     // Switches the HMI to another language at run time ("en", "pt", "pl").

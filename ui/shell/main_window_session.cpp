@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QShortcut>
 
+#include "core/interp/fagor/operator_inputs.h"
 #include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/session/machine_session.h"
@@ -13,11 +14,13 @@
 #include "ui/shell/main_window.h"
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/shell/operator_input_dialog.h"
 #include "ui/shell/workspace.h"
 #include "ui/status/override_controls.h"
 #include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
 #include "ui/testrun/test_run_controller.h"
+#include "ui/userscreen/user_screen_run.h"
 
 namespace kerf::ui {
 
@@ -122,9 +125,27 @@ void MainWindow::startEditorProgram(std::optional<uint32_t> startLine) {
         return;
     }
     ProgramEditor* editor = m_program->editor();
-    if (m_session->startProgram(editor->toPlainText(), m_program->path(), startLine))
+    std::vector<std::pair<int, double>> inputs;
+    if (editor->dialect() == program::Dialect::Fagor && !askOperatorInputs(inputs)) return;
+    if (m_session->startProgram(editor->toPlainText(), m_program->path(), startLine, inputs))
         m_liveRun->follow(editor->toPlainText(), m_program->path(), editor->dialect(),
                           m_session->programStart());
+}
+
+bool MainWindow::askOperatorInputs(std::vector<std::pair<int, double>>& inputs) {
+    // The IBn a program reads are the operator's: asked before the run, filled with the values
+    // the user screen's last inputs left (docs/fagor.md, "Operator inputs").
+    const std::vector<int> read =
+        fagor::operatorInputsRead(m_program->editor()->toPlainText().toStdString());
+    if (read.empty()) return true;
+    std::vector<std::pair<int, double>> current;
+    const fagor::UserScreen* screen = m_userScreenRun ? m_userScreenRun->screen() : nullptr;
+    for (int n : read)
+        current.emplace_back(n, screen ? screen->input(n) : 0.0);
+    OperatorInputDialog dialog(current, this);
+    if (dialog.exec() != QDialog::Accepted) return false;
+    inputs = dialog.values();
+    return true;
 }
 
 }  // namespace kerf::ui

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct ProfileElement {
     Vec2 end{0.0, 0.0};
     std::optional<Vec2> centre;
     bool ccw = false;
+    uint32_t line = 0;  // the program line it comes from, for messages (0: none)
 };
 
 // The raw-stock profile of G66/G68/G69 (spec part 2 §1.6): the blank's outline, from `start`.

@@ -73,6 +73,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             if (!readProfile(w, section.start, section.elements, raw)) return false;
             section.raw = {raw.start, std::move(raw.elements)};
             m_at.line = m_line.firstLine;
+            checkToolReach(g, call, section.start, section.elements);
             section.maxStep = length(w['C'].value);
             if (w.has('D')) section.retract = length(w['D'].value);
             // The sign of L and M chooses the finishing pass's corners; M defaults to L.
@@ -91,6 +92,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             if (!readProfile(w, cycle.start, cycle.elements, raw)) return false;
             cycle.raw = {raw.start, std::move(raw.elements)};
             m_at.line = m_line.firstLine;
+            checkToolReach(g, call, cycle.start, cycle.elements);
             // A absent: the stock is measured along the tool's longer length (X on a tie).
             const ToolOffset& tool = m_tool.data;
             cycle.stockAlongZ =

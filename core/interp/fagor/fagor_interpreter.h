@@ -184,6 +184,8 @@ private:
     bool setScaling(const IsoBlock& iso);
     bool setZeroOffset(int g, const IsoBlock& iso);
     bool setPolarOrigin(const IsoBlock& iso);
+    // G93's origin: I/J, or `current` (in the plane frame) without them.
+    Vec2 polarOriginOf(const IsoBlock& iso, const Vec2& current) const;
     bool defineWorkZone(int g, const IsoBlock& iso);
     bool setThreadRetraction(const IsoBlock& iso);
     bool setLookAhead(const IsoBlock& iso);
@@ -201,6 +203,7 @@ private:
     double xValue(double programmed) const;  // units and diameter
     double axisValue(Axis axis, double programmed) const;
     Pose programmedPosition() const;  // in the program's frame: part zero, no mirror or scale
+    Pose fromStream(const Pose& stream) const;  // the inverse of toStream
     Pose toStream(const Pose& programmed) const;
     Vec2 toStreamVector(const Vec2& frameVector) const;
     bool transformFlipsSense() const;
@@ -217,6 +220,8 @@ private:
     bool feedFor(MoveKind kind, const ContourElement& element, const IsoBlock& iso, double& feed);
     bool threadData(const IsoBlock& iso, const ContourElement& element, ThreadData& out);
     bool machineCoordinateMove(const IsoBlock& iso);
+    // G53: the stream position of the block's machine coordinates (the others as in `from`).
+    Pose machineTarget(const IsoBlock& iso, const Pose& from) const;
     bool hardStopMove(const IsoBlock& iso);
 
     // Canned cycles G81-G89 (fagor_cycles.cpp).
@@ -229,6 +234,9 @@ private:
     };
     bool readProfile(const CycleWords& w, const Vec2& start,
                      std::vector<cycles::lathe::ProfileElement>& finished, RawProfile& raw);
+    // The tool/profile analysis (fagor_tool_reach.cpp): warns about valleys the tool cannot reach.
+    void checkToolReach(int g, const Vec2& call, const Vec2& start,
+                        const std::vector<cycles::lathe::ProfileElement>& profile);
     struct ProfileCorner {
         size_t element = 0;  // the corner at the end of this element
         bool round = true;   // G36, else G39

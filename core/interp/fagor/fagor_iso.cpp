@@ -368,11 +368,13 @@ bool FagorInterpreter::setScaling(const IsoBlock& iso) {
 }
 
 bool FagorInterpreter::setPolarOrigin(const IsoBlock& iso) {
+    m_polarOrigin = polarOriginOf(iso, m_modal.plane.point(programmedPosition()));
+    return true;
+}
+
+Vec2 FagorInterpreter::polarOriginOf(const IsoBlock& iso, const Vec2& current) const {
     const PlaneFrame& plane = m_modal.plane;
-    if (!iso.i1.present && !iso.j.present) {
-        m_polarOrigin = plane.point(programmedPosition());
-        return true;
-    }
+    if (!iso.i1.present && !iso.j.present) return current;
     // I names the plane axis that comes first in the order X Y Z U V W A B C, J the other (the
     // manual's example: G93 I90 J60 is X90 Z60 in the ZX plane).
     const bool abscissaFirst = axisIndex(plane.abscissa) < axisIndex(plane.ordinate) ||
@@ -382,8 +384,7 @@ bool FagorInterpreter::setPolarOrigin(const IsoBlock& iso) {
     Pose origin{};
     origin[first] = axisValue(first, iso.i1.value);
     origin[second] = axisValue(second, iso.j.value);
-    m_polarOrigin = plane.point(origin);
-    return true;
+    return plane.point(origin);
 }
 
 bool FagorInterpreter::setThreadRetraction(const IsoBlock& iso) {

@@ -36,13 +36,6 @@ const WordValue& centreWord(const IsoBlock& iso, char letter) {
     return letter == 'I' ? iso.i1 : letter == 'J' ? iso.j : iso.k;
 }
 
-double degrees(const Vec2& v) {
-    return radToDeg(std::atan2(v.y(), v.x()));
-}
-Vec2 direction(double deg) {
-    return {std::cos(degToRad(deg)), std::sin(degToRad(deg))};
-}
-
 }  // namespace
 
 double FagorInterpreter::length(double programmed) const {
@@ -73,10 +66,14 @@ Pose FagorInterpreter::toStream(const Pose& programmed) const {
 }
 
 Pose FagorInterpreter::programmedPosition() const {
-    Pose p = m_position;
+    return fromStream(m_position);
+}
+
+Pose FagorInterpreter::fromStream(const Pose& stream) const {
+    Pose p = stream;
     for (int i = 0; i < kAxisCount; ++i) {
         const auto axis = static_cast<Axis>(i);
-        double v = m_position[axis] - m_offset[axis] + m_startOffset[axis];
+        double v = stream[axis] - m_offset[axis] + m_startOffset[axis];
         if ((m_modal.mirror & axisBit(axis)) != 0) v = -v;
         if (!rotary(axis)) v /= m_modal.scale;
         p[axis] = v;
@@ -130,7 +127,7 @@ bool FagorInterpreter::targetOf(const IsoBlock& iso, Pose& target, bool& polar) 
         }
         const Vec2 rel = p0 - m_polarOrigin;
         const double r0 = rel.norm();
-        const double q0 = r0 > 1e-12 ? degrees(rel) : 0.0;
+        const double q0 = r0 > 1e-12 ? angleDeg(rel) : 0.0;
         const double r = iso.r.present ? length(iso.r.value) : (m_modal.incremental ? 0.0 : r0);
         const double q = iso.q.present ? iso.q.value : (m_modal.incremental ? 0.0 : q0);
         const double radius = m_modal.incremental ? r0 + r : r;
@@ -139,7 +136,7 @@ bool FagorInterpreter::targetOf(const IsoBlock& iso, Pose& target, bool& polar) 
             fail("geometry", KERF_TR_NOOP("the polar radius becomes negative"));
             return false;
         }
-        plane.setPoint(target, m_polarOrigin + radius * direction(angle));
+        plane.setPoint(target, m_polarOrigin + radius * unitAtDeg(angle));
         polar = true;
         return true;
     }
@@ -148,7 +145,7 @@ bool FagorInterpreter::targetOf(const IsoBlock& iso, Pose& target, bool& polar) 
         fail("geometry", KERF_TR_NOOP("an angle Q with both coordinates of the plane"));
         return false;
     }
-    const Vec2 d = direction(iso.q.value);
+    const Vec2 d = unitAtDeg(iso.q.value);
     Vec2 p1 = plane.point(target);
     if (a) {
         if (std::fabs(d.x()) < 1e-9) {
@@ -248,8 +245,8 @@ bool FagorInterpreter::arcElement(const IsoBlock& iso, int form, const Pose& sta
             if (!given) centre = m_polarOrigin;
             const double radius = (s - centre).norm();
             const double angle =
-                m_modal.incremental ? degrees(s - centre) + iso.q.value : iso.q.value;
-            e = centre + radius * direction(angle);
+                m_modal.incremental ? angleDeg(s - centre) + iso.q.value : iso.q.value;
+            e = centre + radius * unitAtDeg(angle);
             plane.setPoint(target, e);
         } else if (iso.r.present && !polar) {
             const double r = length(iso.r.value);
@@ -487,17 +484,7 @@ bool FagorInterpreter::machineCoordinateMove(const IsoBlock& iso) {
         fail("geometry", KERF_TR_NOOP("G53 works with G00 and G01 moves only"));
         return false;
     }
-    Pose target = m_position;
-    for (uint8_t i = 0; i < iso.axisCount; ++i) {
-        const Axis axis = iso.axisOrder[i];
-        double v = iso.axes[static_cast<size_t>(axisIndex(axis))].value;
-        if (!rotary(axis)) v *= m_settings.inches ? 25.4 : 1.0;
-        if (axis == Axis::X && m_modal.diameter) v /= 2.0;
-        double tip = 0.0;
-        if (axis == Axis::X) tip = m_tool.data.x + m_tool.data.wearX;
-        if (axis == Axis::Z) tip = m_tool.data.z + m_tool.data.wearZ;
-        target[axis] = v + tip - m_startOffset[axis];
-    }
+    const Pose target = machineTarget(iso, m_position);
     Move move;
     move.geometry = ContourElement::line(m_modal.plane.plane, m_position, target);
     move.kind = form == 0 ? MoveKind::Rapid : MoveKind::Feed;
@@ -508,6 +495,21 @@ bool FagorInterpreter::machineCoordinateMove(const IsoBlock& iso) {
     m_position = target;
     m_lastTangent.reset();
     return pathOk(m_compensation.suspend());
+}
+
+Pose FagorInterpreter::machineTarget(const IsoBlock& iso, const Pose& from) const {
+    Pose target = from;
+    for (uint8_t i = 0; i < iso.axisCount; ++i) {
+        const Axis axis = iso.axisOrder[i];
+        double v = iso.axes[static_cast<size_t>(axisIndex(axis))].value;
+        if (!rotary(axis)) v *= m_settings.inches ? 25.4 : 1.0;
+        if (axis == Axis::X && m_modal.diameter) v /= 2.0;
+        double tip = 0.0;
+        if (axis == Axis::X) tip = m_tool.data.x + m_tool.data.wearX;
+        if (axis == Axis::Z) tip = m_tool.data.z + m_tool.data.wearZ;
+        target[axis] = v + tip - m_startOffset[axis];
+    }
+    return target;
 }
 
 bool FagorInterpreter::hardStopMove(const IsoBlock& iso) {

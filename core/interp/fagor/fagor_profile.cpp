@@ -1,7 +1,8 @@
 // The profile of G66/G68/G69 (spec part 2 §1.6): the blocks from label S to label E of program Q
 // (or the program with the cycle) read as geometry from the cycle's X, Z: lines, arcs (I/K, R,
-// G06 absolute centre, G08 tangent, G09 through a point) and the corners G36 rounds and G39
-// chamfers.
+// G06 absolute centre, G08 tangent, G09 through a point), the corners G36 rounds and G39
+// chamfers, points relative to machine zero (G53), inch or mm (G70/G71), and polar coordinates
+// about the polar origin G93 presets.
 #include <algorithm>
 #include <cmath>
 
@@ -62,6 +63,13 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
     ParsedBlock block;
     program::LogicalLine line;
     bool incremental = m_modal.incremental;
+    // G70/G71 hold for the rest of the profile only: the program goes on in its own units.
+    struct UnitsRestorer {
+        bool& inch;
+        const bool saved;
+        ~UnitsRestorer() { inch = saved; }
+    } unitsRestorer{m_modal.inch, m_modal.inch};
+    Vec2 polarOrigin = m_polarOrigin;  // G93 in the profile moves it for the profile only
     int motion = 1;
     Vec2 at = start;
     // The finished profile, then from its G00 block on the raw-stock profile (§1.6).
@@ -89,7 +97,9 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         }
         if (block.kind != ParsedBlock::Kind::Iso) continue;
         const IsoBlock& iso = block.iso;
-        int arcForm = 0;  // G06, G08 or G09 in this block
+        int arcForm = 0;                    // G06, G08 or G09 in this block
+        std::optional<size_t> machineZero;  // G53's offset: the block is in machine coordinates
+        bool presetsPolarOrigin = false;
         std::optional<ProfileCorner> corner;
         std::vector<cycles::lathe::ProfileElement>& out = *target;
         for (uint8_t i = 0; i < iso.gCount; ++i) {
@@ -133,20 +143,28 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                     motion = 0;
                     break;
                 case 53:
+                    machineZero = iso.g[i].offset;
+                    break;
                 case 70:
                 case 71:
+                    m_modal.inch = g == 70;
+                    break;
                 case 93:
-                    return refuse(iso.g[i].offset,
-                                  KERF_TR_NOOP("{1} in a profile is not supported yet"),
-                                  {gName(g)});
+                    presetsPolarOrigin = true;
+                    break;
                 default:
                     return refuse(iso.g[i].offset, KERF_TR_NOOP("{1} is not allowed in a profile"),
                                   {gName(g)});
             }
         }
+        if (presetsPolarOrigin) {
+            // G93 is alone in its block: I, J the origin, or the profile's point without them.
+            polarOrigin = polarOriginOf(iso, at);
+            continue;
+        }
         // Lines and arcs of the plane only: the words besides are refused at their column.
         const std::pair<const WordValue*, char> others[] = {
-            {&iso.q, 'Q'}, {&iso.j, 'J'}, {&iso.l, 'L'}, {&iso.i2, 'I'}};
+            {&iso.j, 'J'}, {&iso.l, 'L'}, {&iso.i2, 'I'}};
         for (const auto& [word, letter] : others) {
             if (word->present) {
                 return refuse(word->offset, KERF_TR_NOOP("{1} is not allowed in a profile"),
@@ -165,7 +183,25 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                               {std::string(1, axisLetter(axis))});
             }
         }
-        if (!iso.has(plane.abscissa) && !iso.has(plane.ordinate)) {
+        const bool straight = motion == 0 || motion == 1;
+        const bool polarPoint = straight && (iso.r.present || iso.q.present);
+        // Q is the angle of a polar point, or the end angle of a G02/G03 arc (I/K, G06 or none).
+        const bool polarArc = !straight && iso.q.present && (arcForm == 0 || arcForm == 6);
+        if (iso.q.present && ((straight && arcForm != 0) || (!straight && !polarArc))) {
+            return refuse(iso.q.offset, KERF_TR_NOOP("{1} is not allowed in a profile"), {"Q"});
+        }
+        if (machineZero) {
+            // G53 names machine positions, so it needs Cartesian points of a line (as in a
+            // program); alone it would cancel the zero offset, which a profile may not.
+            const bool cartesianLine = straight && arcForm == 0 && !polarPoint &&
+                                       (iso.has(plane.abscissa) || iso.has(plane.ordinate));
+            if (!cartesianLine) {
+                return refuse(*machineZero,
+                              KERF_TR_NOOP("G53 in a profile needs a G00 or G01 point in X, Z"),
+                              {});
+            }
+        }
+        if (!iso.has(plane.abscissa) && !iso.has(plane.ordinate) && !polarPoint && !iso.q.present) {
             if (rawStarts) {
                 return refuse(0,
                               KERF_TR_NOOP("the G00 block starts the raw-stock profile: it "
@@ -180,8 +216,32 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
             const double v = axisValue(axis, iso.axes[static_cast<size_t>(axisIndex(axis))].value);
             value = incremental ? value + v : v;
         };
-        coordinate(plane.abscissa, end.x());
-        coordinate(plane.ordinate, end.y());
+        if (machineZero) {
+            Pose from = programmedPosition();
+            plane.setPoint(from, at);
+            end = plane.point(fromStream(machineTarget(iso, toStream(from))));
+        } else if (polarPoint) {
+            if (iso.has(plane.abscissa) || iso.has(plane.ordinate)) {
+                return refuse(iso.r.present ? iso.r.offset : iso.q.offset,
+                              KERF_TR_NOOP("polar coordinates (R, Q) and Cartesian coordinates "
+                                           "of the plane in one block"),
+                              {});
+            }
+            // About the polar origin: R and Q absolute (G90) or added to the point's (G91).
+            const Vec2 rel = at - polarOrigin;
+            const double r0 = rel.norm();
+            const double q0 = r0 > 1e-12 ? angleDeg(rel) : 0.0;
+            const double r = iso.r.present ? length(iso.r.value) : (incremental ? 0.0 : r0);
+            const double q = iso.q.present ? iso.q.value : (incremental ? 0.0 : q0);
+            const double radius = incremental ? r0 + r : r;
+            if (radius < 0.0) {
+                return refuse(iso.r.offset, KERF_TR_NOOP("the polar radius becomes negative"), {});
+            }
+            end = polarOrigin + radius * unitAtDeg(incremental ? q0 + q : q);
+        } else {
+            coordinate(plane.abscissa, end.x());
+            coordinate(plane.ordinate, end.y());
+        }
         if (rawStarts) {
             // The raw-stock profile starts here; G00 is modal, so its blocks name G01-G03.
             raw.start = end;
@@ -196,6 +256,7 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         }
         cycles::lathe::ProfileElement element;
         element.end = end;
+        element.line = line.firstLine;
         if (arcForm == 8 || arcForm == 9) {
             // G08 tangent to the previous element; G09 through the point I, K.
             std::optional<Vec2> centre;
@@ -240,7 +301,24 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
             element.ccw = sweep > 0.0;
         } else if (motion == 2 || motion == 3) {
             element.ccw = motion == 3;
-            if (arcForm == 6) {
+            if (polarArc) {
+                // To the angle Q about the centre I, K (G06: absolute), else the polar origin.
+                Vec2 centre = polarOrigin;
+                if (iso.i1.present || iso.k.present) {
+                    centre = arcForm == 6 ? Vec2(axisValue(plane.abscissa, iso.k.value),
+                                                 axisValue(plane.ordinate, iso.i1.value))
+                                          : at + Vec2(length(iso.k.value), length(iso.i1.value));
+                }
+                const double radius = (at - centre).norm();
+                if (radius < 1e-9) {
+                    return refuse(iso.q.offset, KERF_TR_NOOP("the arc has no radius"), {});
+                }
+                const double angle =
+                    incremental ? angleDeg(at - centre) + iso.q.value : iso.q.value;
+                element.end = centre + radius * unitAtDeg(angle);
+                element.centre = centre;
+                end = element.end;
+            } else if (arcForm == 6) {
                 // G06: the centre I, K in absolute coordinates (I as X: diameter or radius).
                 element.centre = Vec2(axisValue(plane.abscissa, iso.k.value),
                                       axisValue(plane.ordinate, iso.i1.value));
@@ -256,7 +334,7 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
                 // I and K relative to the start, always radius (K of the abscissa, I of X).
                 element.centre = at + Vec2(length(iso.k.value), length(iso.i1.value));
             }
-        } else if (iso.r.present || iso.i1.present || iso.k.present) {
+        } else if ((iso.r.present && !polarPoint) || iso.i1.present || iso.k.present) {
             const WordValue& word = iso.r.present ? iso.r : iso.i1.present ? iso.i1 : iso.k;
             return refuse(word.offset, KERF_TR_NOOP("{1} is not allowed in a profile"),
                           {iso.r.present    ? "R"
@@ -265,6 +343,9 @@ bool FagorInterpreter::readProfile(const CycleWords& w, const Vec2& start,
         }
         if (out.size() >= kMaxProfileElements) {
             return refuse(0, KERF_TR_NOOP("the profile has more than 10000 elements"), {});
+        }
+        if (element.centre && m_settings.polarOriginFollowsArcs && arcForm != 8 && arcForm != 9) {
+            polarOrigin = *element.centre;  // PORGMOVE
         }
         out.push_back(element);
         if (corner) {
@@ -312,6 +393,7 @@ bool FagorInterpreter::shapeProfileCorners(const Vec2& start,
         const ContourElement a = element(i);
         const ContourElement b = element(i + 1);
         cycles::lathe::ProfileElement inserted;
+        inserted.line = c->line;
         if (c->round) {
             const auto f = fillet(a, b, c->size);
             if (!f) {

@@ -1,6 +1,7 @@
 // Interpreter features a golden case cannot reach: files a program writes, interrupts, the M06
 // subroutine, machine parameters other than the defaults, tables saved at the end. Expected
 // values come from spec parts 1 and 2 and hand geometry.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -357,6 +358,135 @@ TEST_F(FagorRun, CheckLeavesAProgramTheRunWritesToTheRun) {
         << diagnostics();
     // P9's G0 X30 (diameter: 15 in radius) on its line 2, after the header OPEN wrote.
     EXPECT_EQ(out.lines, (std::vector<std::string>{"2:1 RAPID X15.0000 Z0.0000", "5:1 END M30"}));
+}
+
+}  // namespace
+}  // namespace kerf::fagor
+
+namespace kerf::fagor {
+namespace {
+
+// Profiles of G68 written with G70/G71, G53 and G93 (spec part 2 §1.6 allows them): each must
+// give the same moves as the same profile written in mm and part coordinates.
+constexpr const char* kProfileCall =
+    "N1 G90 G95 F0.3 S800 M3\n"
+    "N2 G00 X70 Z2\n"
+    "N3 G68 X0 Z0 C3 D0.5 L0.3 M0.1 H0.1 S10 E20\n"
+    "N4 G00 X70 Z2\n"
+    "N5 M30\n";
+// The golden cycle_g68_profile_lines_arc's profile: face to r10, r10 to Z-20, taper to r20 at
+// Z-30, r20 to Z-45, convex quarter round about (Z-55, r20) to r30 at Z-55.
+constexpr const char* kProfileInMm =
+    "N10 G01 X20 Z0\n"
+    "G01 Z-20\n"
+    "G01 X40 Z-30\n"
+    "G01 Z-45\n"
+    "N20 G03 X60 Z-55 I0 K-10\n";
+
+class FagorProfileFunctions : public FagorRun {
+protected:
+    std::vector<std::string> movesOf(const std::string& profile) {
+        out.lines.clear();
+        EXPECT_EQ(run(std::string(kProfileCall) + profile), interp::RunStatus::Finished)
+            << diagnostics();
+        return out.lines;
+    }
+    bool finishingPassHas(const std::string& move) const {
+        return std::any_of(out.lines.begin(), out.lines.end(), [&](const std::string& line) {
+            return line.find(move + " F0.100") != std::string::npos;
+        });
+    }
+};
+
+TEST_F(FagorProfileFunctions, InchBlocksInAProfileAreConvertedAndEndWithIt) {
+    // A taper to X40.64 Z-30.48 and a cylinder to Z-45.72: 1.6, 1.2 and 1.8 inches exactly.
+    const std::vector<std::string> inMm = movesOf(
+        "N10 G01 X20 Z0\n"
+        "G01 Z-20\n"
+        "G01 X40.64 Z-30.48\n"
+        "G01 Z-45.72\n"
+        "N20 G01 X60 Z-55\n");
+    ASSERT_TRUE(finishingPassHas("LINE X20.3200 Z-30.4800")) << testing::PrintToString(inMm);
+    // N4's G00 X70 after the cycle is in mm: G70 ended with the profile.
+    const std::vector<std::string> inInch = movesOf(
+        "N10 G01 X20 Z0\n"
+        "G01 Z-20\n"
+        "G70 G01 X1.6 Z-1.2\n"
+        "G01 Z-1.8\n"
+        "N20 G71 G01 X60 Z-55\n");
+    EXPECT_EQ(inInch, inMm);
+    EXPECT_EQ(inInch.end()[-3].substr(0, 28), "4:1 N4 RAPID X35.0000 Z2.000");
+}
+
+TEST_F(FagorProfileFunctions, MachineZeroPointsOfAProfileLeaveTheZeroOffset) {
+    // G54 is Z100 from machine zero: the machine's Z80 is the part's Z-20, Z55 the part's Z-45.
+    write("fagor_zero_offsets.tab", "G54 X0 Z100\nACTIVE G54\n");
+    const std::vector<std::string> inMm = movesOf(kProfileInMm);
+    const std::vector<std::string> inMachine = movesOf(
+        "N10 G01 X20 Z0\n"
+        "G53 G01 Z80\n"
+        "G01 X40 Z-30\n"
+        "G53 G01 X40 Z55\n"
+        "N20 G03 X60 Z-55 I0 K-10\n");
+    EXPECT_EQ(inMachine, inMm);
+    EXPECT_TRUE(finishingPassHas("LINE X10.0000 Z-20.0000"));
+}
+
+TEST_F(FagorProfileFunctions, PolarPointsAndArcsAboutTheProfilesPolarOrigin) {
+    const std::vector<std::string> inMm = movesOf(kProfileInMm);
+    // G93 I20 J-30: the origin at X20 (r10), Z-30; R10 Q90 is 10 up in X from it: X40 Z-30. Then
+    // G93 I40 J-55 (r20, Z-55): G03 Q90 turns from Z-45 (angle 0) to the angle 90: X60 Z-55.
+    const std::vector<std::string> inPolar = movesOf(
+        "N10 G01 X20 Z0\n"
+        "G01 Z-20\n"
+        "G93 I20 J-30\n"
+        "G01 R10 Q90\n"
+        "G01 Z-45\n"
+        "G93 I40 J-55\n"
+        "N20 G03 Q90\n");
+    EXPECT_EQ(inPolar, inMm);
+}
+
+TEST_F(FagorProfileFunctions, ZeroOffsetsAndG53ArcsInAProfileAreErrorsAtTheirColumn) {
+    const std::string file = (root / "program.pim").string();
+    EXPECT_EQ(run(std::string(kProfileCall) + "N10 G01 X20 Z0\nG54\nN20 G01 X60 Z-55\n"),
+              interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(), file + ":7:1: error: G54 is not allowed in a profile\n");
+    EXPECT_EQ(run(std::string(kProfileCall) + "N10 G01 X20 Z0\nG01 Z-45\n"
+                                              "N20 G53 G03 X60 Z-55 I0 K-10\n"),
+              interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(),
+              file + ":8:5: error: G53 in a profile needs a G00 or G01 point in X, Z\n");
+}
+
+TEST_F(FagorRun, ToolThatCannotReachAValleyIsReportedAtTheCycle) {
+    // The profile dips 5 mm over 5 mm (45°) at line 7. A 55° insert at CUTA 93° leaves
+    // 180 - 93 - 55 = 32° behind it: the check warns at G68 and the cycle starts with the
+    // message. A 35° insert leaves 52°: no message.
+    write("fagor_tool_offsets.tab", "D1 F3 R0.4\n");
+    const std::string program =
+        "N1 G90 G95 F0.3 S800 T1 D1 M3\n"
+        "N2 G00 X70 Z2\n"
+        "N3 G68 X0 Z0 C3 D0.5 L0.3 M0.1 H0.1 S10 E20\n"
+        "N4 M30\n"
+        "N10 G01 X20 Z0\n"
+        "G01 Z-10\n"
+        "G01 X10 Z-15\n"
+        "G01 Z-30\n"
+        "N20 G01 X60 Z-40\n";
+    const std::string message =
+        "tool T1 cannot reach the profile at line 7: it descends 45° into "
+        "the material and CUTA + NOSEA leave 32°";
+    write("fagor_tools.tab", "T1 D1 NOSEA55 CUTA93\n");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(diagnostics(), (root / "program.pim").string() + ":3:4: warning: " + message + "\n");
+    EXPECT_EQ(std::count(out.lines.begin(), out.lines.end(), "3:1 N3 MSG INFO \"" + message + "\""),
+              1)
+        << testing::PrintToString(out.lines);
+    out.lines.clear();
+    write("fagor_tools.tab", "T1 D1 NOSEA35 CUTA93\n");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(diagnostics(), "");
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "core/interp/fagor/fagor_interpreter.h"
+#include "core/interp/fagor/operator_inputs.h"
 #include "core/machine/machine_loader.h"
 
 namespace kerf::fagor {
@@ -307,6 +308,20 @@ TEST_F(UserChannel, AnOrdinaryProgramReadsIbButCannotDrawTheScreen) {
     EXPECT_EQ(diagnostics(), (root / "P000001.PIM").string() +
                                  ":1:2: error: ODW is a screen customisation instruction: it runs "
                                  "only in a user customisation program (the user screen)\n");
+}
+
+}  // namespace
+}  // namespace kerf::fagor
+
+namespace kerf::fagor {
+namespace {
+
+TEST(OperatorInputsRead, NamesEachIbAProgramReadsOnceInOrder) {
+    // IB25 is the last input; IB26, IBX, PIB1 and the IB in a comment or a text are no reads.
+    EXPECT_EQ(operatorInputsRead("(P1=IB12+ib3)\n(P2=IB3*IB25) ; IB4\n(MSG \"IB5\")\n"
+                                 "(P3=IB26)\n(P4=PIB1+IBX)\nG0 XP1\n"),
+              (std::vector<int>{3, 12, 25}));
+    EXPECT_TRUE(operatorInputsRead("G0 X10\nM30\n").empty());
 }
 
 }  // namespace
