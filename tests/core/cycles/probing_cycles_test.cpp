@@ -103,9 +103,9 @@ CycleRun run(int cycle, const CycleValues& v, const SimulatedWorkpiece& part) {
 }
 
 TEST(ProbingCycles, RegistryHoldsEachCycleOnceInNumberOrder) {
-    const int expected[] = {400, 401, 402, 403, 404, 405, 408, 409, 410, 411, 412, 413, 414,
-                            415, 416, 417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427,
-                            430, 431, 441, 444, 461, 462, 463, 480, 481, 482, 483, 484, 1416};
+    const int expected[] = {400, 401, 402, 403, 404, 405, 408, 409, 410, 411, 412, 413, 414, 415,
+                            416, 417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427, 430, 431,
+                            441, 444, 460, 461, 462, 463, 480, 481, 482, 483, 484, 1416};
     auto all = allProbingCycles();
     ASSERT_EQ(all.size(), std::size(expected));
     for (size_t i = 0; i < all.size(); ++i) {
