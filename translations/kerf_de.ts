@@ -8013,6 +8013,86 @@ wählen</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>das Kontur-Unterprogramm {1} enthält keine Kontur</translation>
     </message>
+    <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Exakter Radius der Kalibrierkugel</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Auch die Länge kalibrieren: 0 nein, 1 ja</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Bezugspunkt für die Länge: Höhe des Kugelmittelpunkts</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Anzahl Punkte für die 3D-Kalibrierung (0: keine)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>Zyklus {1}: die 3D-Kalibrierung (Q455 &gt; 0, Option 92) ist nicht verfügbar; Q455 = 0 setzen</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>TS AN KUGEL KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Ergebnisparameter</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Antastwinkel</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Maximaler Messweg</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Messvorschub</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Maximaler Rückzugsweg</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Bezugssystem: 0 aktiv, 1 Maschine</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Fehlermodus: 0 Fehler, wenn beim Start ausgelenkt, 1 Status -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: Antastachse X, Y oder Z erwartet</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: die Antastrichtung IX, IY, IZ ist null</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: Antastachse mit Richtung (X-, Y+ ...) erwartet</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kalibrierkugel (Zyklus 460): X ihres Mittelpunkts im programmierten Rahmen des Rohteils; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kalibrierkugel (Zyklus 460): Y ihres Mittelpunkts im programmierten Rahmen des Rohteils; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kalibrierkugel (Zyklus 460): Z ihres Mittelpunkts im programmierten Rahmen des Rohteils; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Kalibrierkugel (Zyklus 460): ihr exakter Radius; 0: keine</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

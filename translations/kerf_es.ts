@@ -8013,6 +8013,86 @@ solución</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>el subprograma de contorno {1} no tiene contorno</translation>
     </message>
+    <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Radio exacto de la esfera de calibración</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Calibrar también la longitud: 0 no, 1 sí</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Punto de referencia para la longitud: altura del centro de la esfera</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Número de puntos para la calibración 3D (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>ciclo {1}: la calibración 3D (Q455 &gt; 0, opción 92) no está disponible; ponga Q455 = 0</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>CALIBRAR TS EN ESFERA</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Parámetro de resultado</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Ángulo de palpación</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Recorrido de medición máximo</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Avance de medición</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Recorrido de retroceso máximo</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Sistema de referencia: 0 activo, 1 máquina</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Modo de error: 0 error si está desviado al inicio, 1 estado -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: se esperaba el eje de palpación X, Y o Z</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: la dirección de palpación IX, IY, IZ es nula</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: se esperaba el eje de palpación con su dirección (X-, Y+ ...)</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibración (ciclo 460): X de su centro en el sistema programado de la pieza en bruto; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibración (ciclo 460): Y de su centro en el sistema programado de la pieza en bruto; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibración (ciclo 460): Z de su centro en el sistema programado de la pieza en bruto; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Esfera de calibración (ciclo 460): su radio exacto; 0: ninguna</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8016,6 +8016,86 @@ rozwiązanie</translation>
         <source>the contour subprogram {1} has no contour</source>
         <translation>podprogram konturu {1} nie zawiera konturu</translation>
     </message>
+    <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Dokładny promień kuli kalibracyjnej</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Kalibrować także długość: 0 nie, 1 tak</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Punkt odniesienia długości: wysokość środka kuli</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Liczba punktów kalibracji 3D (0: brak)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>cykl {1}: kalibracja 3D (Q455 &gt; 0, opcja 92) nie jest dostępna; ustaw Q455 = 0</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>KALIBROWANIE TS NA KULI</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Parametr wyniku</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Kąt próbkowania</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Maksymalna droga pomiaru</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Posuw pomiarowy</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Maksymalna droga wycofania</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Układ odniesienia: 0 aktywny, 1 maszyny</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Tryb błędu: 0 błąd przy wychyleniu na starcie, 1 status -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: oczekiwano osi próbkowania X, Y lub Z</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: kierunek próbkowania IX, IY, IZ jest zerowy</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: oczekiwano osi próbkowania z kierunkiem (X-, Y+ ...)</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kula kalibracyjna (cykl 460): X jej środka w zaprogramowanym układzie półfabrykatu; zapis centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kula kalibracyjna (cykl 460): Y jej środka w zaprogramowanym układzie półfabrykatu; zapis centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kula kalibracyjna (cykl 460): Z jej środka w zaprogramowanym układzie półfabrykatu; zapis centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Kula kalibracyjna (cykl 460): jej dokładny promień; 0: brak</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
