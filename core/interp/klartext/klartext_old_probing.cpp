@@ -5,7 +5,6 @@
 //   3.4 ERRORMODE1 (optional)
 //   4.0 MEASURING IN 3-D   4.1 Q1   4.2 IX-0.5 IY-1 IZ-1   4.3 ABST+45 F100 MB50 REFERENCE SYSTEM:0
 // The texts are the control's language: only the numbers, axis letters, Q, F and MB count.
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
 
