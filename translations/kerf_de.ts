@@ -8077,14 +8077,10 @@ wählen</translation>
         <translation>FK: {1} ist keine Achse der Bearbeitungsebene</translation>
     </message>
     <message>
-        <source>cycle {1}: {2} expected in {1}.{3}</source>
-        <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
         <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
         <translation>Zyklus {1}: kein Platz für das helixförmige Eintauchen (mit Zyklus 21 vorbohren oder ein über Mitte schneidendes Werkzeug verwenden)</translation>
     </message>
     <message>
-        <source>a label number from 1 to 65535 or a name expected</source>
-        <translation>Label-Nummer von 1 bis 65535 oder ein Name erwartet</translation>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 in einer Kontur braucht einen G00- oder G01-Punkt in X, Z</translation>
     </message>
@@ -8097,8 +8093,96 @@ wählen</translation>
         <translation>Werkzeug T{1} erreicht die Kontur in Zeile {2} nicht: sie fällt {3}° ins Material ab und CUTA + NOSEA lassen {4}°</translation>
     </message>
     <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Exakter Radius der Kalibrierkugel</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Auch die Länge kalibrieren: 0 nein, 1 ja</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Bezugspunkt für die Länge: Höhe des Kugelmittelpunkts</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Anzahl Punkte für die 3D-Kalibrierung (0: keine)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>Zyklus {1}: die 3D-Kalibrierung (Q455 &gt; 0, Option 92) ist nicht verfügbar; Q455 = 0 setzen</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>TS AN KUGEL KALIBRIEREN</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Ergebnisparameter</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Antastwinkel</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Maximaler Messweg</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Messvorschub</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Maximaler Rückzugsweg</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Bezugssystem: 0 aktiv, 1 Maschine</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Fehlermodus: 0 Fehler, wenn beim Start ausgelenkt, 1 Status -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: Antastachse X, Y oder Z erwartet</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: die Antastrichtung IX, IY, IZ ist null</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: Antastachse mit Richtung (X-, Y+ ...) erwartet</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kalibrierkugel (Zyklus 460): X ihres Mittelpunkts im programmierten Rahmen des Rohteils; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kalibrierkugel (Zyklus 460): Y ihres Mittelpunkts im programmierten Rahmen des Rohteils; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kalibrierkugel (Zyklus 460): Z ihres Mittelpunkts im programmierten Rahmen des Rohteils; centre = [x, y, z] schreiben</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Kalibrierkugel (Zyklus 460): ihr exakter Radius; 0: keine</translation>
+    </message>
+    <message>
         <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
         <translation>Werkzeug T{1} erreicht die Kontur in Zeile {2} nicht: der Bogenradius {3} ist kleiner als der Schneidenradius {4}</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>Label-Nummer von 1 bis 65535 oder ein Name erwartet</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
     </message>
 </context>
 <context>

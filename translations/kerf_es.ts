@@ -8077,14 +8077,10 @@ solución</translation>
         <translation>FK: {1} no es un eje del plano de mecanizado</translation>
     </message>
     <message>
-        <source>cycle {1}: {2} expected in {1}.{3}</source>
-        <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
         <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
         <translation>ciclo {1}: no hay espacio para la profundización helicoidal (pretaladrar con el ciclo 21 o usar una herramienta con corte al centro)</translation>
     </message>
     <message>
-        <source>a label number from 1 to 65535 or a name expected</source>
-        <translation>se esperaba un número de label de 1 a 65535 o un nombre</translation>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 en un perfil necesita un punto G00 o G01 en X, Z</translation>
     </message>
@@ -8097,8 +8093,96 @@ solución</translation>
         <translation>la herramienta T{1} no alcanza el perfil en la línea {2}: baja {3}° hacia el material y CUTA + NOSEA dejan {4}°</translation>
     </message>
     <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Radio exacto de la esfera de calibración</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Calibrar también la longitud: 0 no, 1 sí</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Punto de referencia para la longitud: altura del centro de la esfera</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Número de puntos para la calibración 3D (0: ninguna)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>ciclo {1}: la calibración 3D (Q455 &gt; 0, opción 92) no está disponible; ponga Q455 = 0</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>CALIBRAR TS EN ESFERA</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Parámetro de resultado</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Ángulo de palpación</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Recorrido de medición máximo</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Avance de medición</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Recorrido de retroceso máximo</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Sistema de referencia: 0 activo, 1 máquina</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Modo de error: 0 error si está desviado al inicio, 1 estado -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: se esperaba el eje de palpación X, Y o Z</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: la dirección de palpación IX, IY, IZ es nula</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: se esperaba el eje de palpación con su dirección (X-, Y+ ...)</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibración (ciclo 460): X de su centro en el sistema programado de la pieza en bruto; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibración (ciclo 460): Y de su centro en el sistema programado de la pieza en bruto; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibración (ciclo 460): Z de su centro en el sistema programado de la pieza en bruto; escriba centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Esfera de calibración (ciclo 460): su radio exacto; 0: ninguna</translation>
+    </message>
+    <message>
         <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
         <translation>la herramienta T{1} no alcanza el perfil en la línea {2}: el radio del arco {3} es menor que el radio de punta {4}</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>se esperaba un número de label de 1 a 65535 o un nombre</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
     </message>
 </context>
 <context>

@@ -8080,14 +8080,10 @@ rozwiązanie</translation>
         <translation>FK: {1} nie jest osią płaszczyzny obróbki</translation>
     </message>
     <message>
-        <source>cycle {1}: {2} expected in {1}.{3}</source>
-        <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
         <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
         <translation>cykl {1}: brak miejsca na wcięcie po linii śrubowej (nawiercić cyklem 21 lub użyć narzędzia tnącego przez środek)</translation>
     </message>
     <message>
-        <source>a label number from 1 to 65535 or a name expected</source>
-        <translation>oczekiwano numeru etykiety od 1 do 65535 lub nazwy</translation>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 w profilu wymaga punktu G00 lub G01 w X, Z</translation>
     </message>
@@ -8100,8 +8096,96 @@ rozwiązanie</translation>
         <translation>narzędzie T{1} nie sięga profilu w wierszu {2}: opada o {3}° w materiał, a CUTA + NOSEA pozostawiają {4}°</translation>
     </message>
     <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Dokładny promień kuli kalibracyjnej</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Kalibrować także długość: 0 nie, 1 tak</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Punkt odniesienia długości: wysokość środka kuli</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Liczba punktów kalibracji 3D (0: brak)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>cykl {1}: kalibracja 3D (Q455 &gt; 0, opcja 92) nie jest dostępna; ustaw Q455 = 0</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>KALIBROWANIE TS NA KULI</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Parametr wyniku</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Kąt próbkowania</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Maksymalna droga pomiaru</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Posuw pomiarowy</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Maksymalna droga wycofania</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Układ odniesienia: 0 aktywny, 1 maszyny</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Tryb błędu: 0 błąd przy wychyleniu na starcie, 1 status -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: oczekiwano osi próbkowania X, Y lub Z</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: kierunek próbkowania IX, IY, IZ jest zerowy</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: oczekiwano osi próbkowania z kierunkiem (X-, Y+ ...)</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kula kalibracyjna (cykl 460): X jej środka w zaprogramowanym układzie półfabrykatu; zapis centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kula kalibracyjna (cykl 460): Y jej środka w zaprogramowanym układzie półfabrykatu; zapis centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Kula kalibracyjna (cykl 460): Z jej środka w zaprogramowanym układzie półfabrykatu; zapis centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Kula kalibracyjna (cykl 460): jej dokładny promień; 0: brak</translation>
+    </message>
+    <message>
         <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
         <translation>narzędzie T{1} nie sięga profilu w wierszu {2}: promień łuku {3} jest mniejszy niż promień naroża {4}</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>oczekiwano numeru etykiety od 1 do 65535 lub nazwy</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
     </message>
 </context>
 <context>

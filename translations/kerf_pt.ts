@@ -8077,14 +8077,10 @@ solução</translation>
         <translation>FK: {1} não é um eixo do plano de maquinagem</translation>
     </message>
     <message>
-        <source>cycle {1}: {2} expected in {1}.{3}</source>
-        <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
         <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
         <translation>ciclo {1}: não há espaço para o afundamento helicoidal (pré-furar com o ciclo 21 ou usar uma ferramenta de corte pelo centro)</translation>
     </message>
     <message>
-        <source>a label number from 1 to 65535 or a name expected</source>
-        <translation>esperava-se um número de label de 1 a 65535 ou um nome</translation>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 num perfil precisa de um ponto G00 ou G01 em X, Z</translation>
     </message>
@@ -8097,8 +8093,96 @@ solução</translation>
         <translation>a ferramenta T{1} não alcança o perfil na linha {2}: desce {3}° para o material e CUTA + NOSEA deixam {4}°</translation>
     </message>
     <message>
+        <source>Exact radius of the calibration sphere</source>
+        <translation>Raio exato da esfera de calibração</translation>
+    </message>
+    <message>
+        <source>Calibrate the length too: 0 no, 1 yes</source>
+        <translation>Calibrar também o comprimento: 0 não, 1 sim</translation>
+    </message>
+    <message>
+        <source>Datum for the length: height of the sphere&apos;s centre</source>
+        <translation>Ponto de referência do comprimento: altura do centro da esfera</translation>
+    </message>
+    <message>
+        <source>Number of points for the 3D calibration (0: none)</source>
+        <translation>Número de pontos para a calibração 3D (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the 3D calibration (Q455 &gt; 0, option 92) is not available; set Q455 = 0</source>
+        <translation>ciclo {1}: a calibração 3D (Q455 &gt; 0, opção 92) não está disponível; defina Q455 = 0</translation>
+    </message>
+    <message>
+        <source>CALIBRATE TS ON SPHERE</source>
+        <translation>CALIBRAR TS NA ESFERA</translation>
+    </message>
+    <message>
+        <source>Result parameter</source>
+        <translation>Parâmetro de resultado</translation>
+    </message>
+    <message>
+        <source>Probing angle</source>
+        <translation>Ângulo de apalpação</translation>
+    </message>
+    <message>
+        <source>Maximum measuring path</source>
+        <translation>Percurso de medição máximo</translation>
+    </message>
+    <message>
+        <source>Measuring feed</source>
+        <translation>Avanço de medição</translation>
+    </message>
+    <message>
+        <source>Maximum retraction path</source>
+        <translation>Percurso de retrocesso máximo</translation>
+    </message>
+    <message>
+        <source>Reference system: 0 active, 1 machine</source>
+        <translation>Sistema de referência: 0 ativo, 1 máquina</translation>
+    </message>
+    <message>
+        <source>Error mode: 0 error if deflected at the start, 1 status -1</source>
+        <translation>Modo de erro: 0 erro se defletido no início, 1 estado -1</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing axis X, Y or Z expected</source>
+        <translation>{1}.{2}: esperado o eixo de apalpação X, Y ou Z</translation>
+    </message>
+    <message>
+        <source>{1}.{2}: the probing direction IX, IY, IZ is zero</source>
+        <translation>{1}.{2}: a direção de apalpação IX, IY, IZ é nula</translation>
+    </message>
+    <message>
+        <source>G55: the probing axis with its direction (X-, Y+ ...) expected</source>
+        <translation>G55: esperado o eixo de apalpação com a sua direção (X-, Y+ ...)</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): X of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibração (ciclo 460): X do seu centro no referencial programado do bloco; escreva centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Y of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibração (ciclo 460): Y do seu centro no referencial programado do bloco; escreva centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): Z of its centre in the blank&apos;s programmed frame; write centre = [x, y, z]</source>
+        <translation>Esfera de calibração (ciclo 460): Z do seu centro no referencial programado do bloco; escreva centre = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Calibration sphere (cycle 460): its exact radius; 0: none</source>
+        <translation>Esfera de calibração (ciclo 460): o seu raio exato; 0: nenhuma</translation>
+    </message>
+    <message>
         <source>tool T{1} cannot reach the profile at line {2}: the arc&apos;s radius {3} is smaller than the nose radius {4}</source>
         <translation>a ferramenta T{1} não alcança o perfil na linha {2}: o raio do arco {3} é menor que o raio da ponta {4}</translation>
+    </message>
+    <message>
+        <source>a label number from 1 to 65535 or a name expected</source>
+        <translation>esperava-se um número de label de 1 a 65535 ou um nome</translation>
+    </message>
+    <message>
+        <source>cycle {1}: {2} expected in {1}.{3}</source>
+        <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
     </message>
 </context>
 <context>

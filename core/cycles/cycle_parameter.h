@@ -41,6 +41,7 @@ struct ParameterDescriptor {
     bool predef = false;            // PREDEF (GLOBAL DEF value) allowed
     bool optional = false;          // added by a later software: may be missing, default used
     bool integer = false;           // whole numbers only
+    bool toolName = false;          // a tool name in quotes (or a QS parameter) also allowed
 };
 
 }  // namespace kerf::cycles

@@ -78,6 +78,20 @@ struct SetupErrorConfig {
     friend bool operator==(const SetupErrorConfig&, const SetupErrorConfig&) = default;
 };
 
+// A calibration sphere for cycle 460, clamped with the blank: its centre in the blank's
+// programmed frame (workpiece coordinates of the start preset), so the setup error moves it
+// too. In the file: [simulation.calibration_sphere] with centre = [x, y, z] and radius; radius
+// 0: none.
+struct CalibrationSphereConfig {
+    double centreXMm = 0.0;
+    double centreYMm = 0.0;
+    double centreZMm = 0.0;
+    double radiusMm = 0.0;
+
+    friend bool operator==(const CalibrationSphereConfig&,
+                           const CalibrationSphereConfig&) = default;
+};
+
 // The tool touch probe (TT) of the simulated machine: a round stylus (disc) or a square one
 // (cube, sides along X and Y) whose measuring surface (the top face) is centred on `centre`, in
 // machine coordinates; its sides reach down without end. Kerf has no other TT description, so
@@ -156,11 +170,12 @@ struct MachineConfig {
     int parameterCode = 123;
     DrivesConfig drives;
     KinematicsConfig kinematics;
-    BarConfig bar;                            // lathe only
-    ProbeWorkpieceConfig probeWorkpiece;      // simulation only
-    SetupErrorConfig setupError;              // simulation only
-    ToolProbeConfig toolProbe;                // simulation only
-    std::vector<ToolErrorConfig> toolErrors;  // simulation only; each tool at most once
+    BarConfig bar;                              // lathe only
+    ProbeWorkpieceConfig probeWorkpiece;        // simulation only
+    SetupErrorConfig setupError;                // simulation only
+    CalibrationSphereConfig calibrationSphere;  // simulation only
+    ToolProbeConfig toolProbe;                  // simulation only
+    std::vector<ToolErrorConfig> toolErrors;    // simulation only; each tool at most once
 
     // The axis with this letter (enabled or not), or nullptr.
     const AxisConfig* axis(char letter) const;

@@ -271,6 +271,37 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "Simulation: how far the real blank is turned about the tool axis, "
                            "through its programmed origin")}),
+        bindField<&MachineConfig::calibrationSphere, &CalibrationSphereConfig::centreXMm>(
+            kMachine, {.key = "simulation.calibration_sphere.centre.x",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Calibration sphere (cycle 460): X of its centre in the blank's "
+                           "programmed frame; write centre = [x, y, z]")}),
+        bindField<&MachineConfig::calibrationSphere, &CalibrationSphereConfig::centreYMm>(
+            kMachine, {.key = "simulation.calibration_sphere.centre.y",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Calibration sphere (cycle 460): Y of its centre in the blank's "
+                           "programmed frame; write centre = [x, y, z]")}),
+        bindField<&MachineConfig::calibrationSphere, &CalibrationSphereConfig::centreZMm>(
+            kMachine, {.key = "simulation.calibration_sphere.centre.z",
+                       .unit = "mm",
+                       .minimum = -100000.0,
+                       .maximum = 100000.0,
+                       .description = KERF_TR_NOOP(
+                           "Calibration sphere (cycle 460): Z of its centre in the blank's "
+                           "programmed frame; write centre = [x, y, z]")}),
+        bindField<&MachineConfig::calibrationSphere, &CalibrationSphereConfig::radiusMm>(
+            kMachine, {.key = "simulation.calibration_sphere.radius",
+                       .unit = "mm",
+                       .minimum = 0.0,
+                       .maximum = 100.0,
+                       .description = KERF_TR_NOOP(
+                           "Calibration sphere (cycle 460): its exact radius; 0: none")}),
         bindField<&MachineConfig::toolProbe, &ToolProbeConfig::enabled>(
             kMachine, {.key = "simulation.tool_probe.enabled",
                        .description = KERF_TR_NOOP(

@@ -16,6 +16,8 @@ const std::vector<detail::ColumnSpec>& presetColumns() {
         std::vector<detail::ColumnSpec> specs = {detail::otherColumn("NR", 8),
                                                  detail::textColumn("DOC", 17)};
         detail::appendAxisColumns(specs, "XYZABC");
+        // The basic rotation of the preset (404 and 400-402, 414 with Q305 > 0 write it).
+        specs.push_back(detail::numberColumn("SPC", detail::kAxisColumnWidth, true, "+0"));
         return specs;
     }();
     return columns;

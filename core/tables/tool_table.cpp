@@ -146,36 +146,38 @@ const ToolData* ToolTable::byName(std::string_view name) const {
     return firstMatch;
 }
 
-std::optional<double> ToolTable::numberCell(int tool, std::string_view column) const {
-    auto cell = cellOf(tool, column);
+std::optional<double> ToolTable::numberCell(int tool, std::string_view column, int index) const {
+    auto cell = cellOf(tool, index, column);
     if (!cell) return std::nullopt;
     return m_table.number(cell->first, cell->second);
 }
 
-Expected<std::pair<size_t, size_t>> ToolTable::cellOf(int tool, std::string_view column) const {
-    const ToolData* data = byNumber(tool);
+Expected<std::pair<size_t, size_t>> ToolTable::cellOf(int tool, int index,
+                                                      std::string_view column) const {
+    const ToolData* data = byNumber(tool, index);
     if (!data) {
+        const std::string name =
+            index == 0 ? std::to_string(tool) : std::to_string(tool) + "." + std::to_string(index);
         return Diagnostic::make(Severity::Error, "table", m_table.fileName(), 0, 0,
-                                KERF_TR_NOOP("tool {1} is not in the tool table"),
-                                std::to_string(tool));
+                                KERF_TR_NOOP("tool {1} is not in the tool table"), name);
     }
-    auto index = m_table.findColumn(column);
-    if (!index) {
+    auto found = m_table.findColumn(column);
+    if (!found) {
         return m_table.headerError(KERF_TR_NOOP("the table has no column {1}"),
                                    {std::string(column)});
     }
-    return std::make_pair(data->row, *index);
+    return std::make_pair(data->row, *found);
 }
 
-MaybeError ToolTable::setNumber(int tool, std::string_view column, double value) {
-    auto cell = cellOf(tool, column);
+MaybeError ToolTable::setNumber(int tool, std::string_view column, double value, int index) {
+    auto cell = cellOf(tool, index, column);
     if (!cell) return cell.error();
     return detail::editTyped(
         *this, [&](TncTable& table) { return table.setNumber(cell->first, cell->second, value); });
 }
 
-MaybeError ToolTable::setText(int tool, std::string_view column, std::string_view text) {
-    auto cell = cellOf(tool, column);
+MaybeError ToolTable::setText(int tool, std::string_view column, std::string_view text, int index) {
+    auto cell = cellOf(tool, index, column);
     if (!cell) return cell.error();
     return detail::editTyped(
         *this, [&](TncTable& table) { return table.setCell(cell->first, cell->second, text); });

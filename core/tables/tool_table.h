@@ -61,12 +61,13 @@ public:
     // if all are locked, the first one (so the caller can report "tool locked").
     const ToolData* byName(std::string_view name) const;
     // Any numeric column of a tool, e.g. for cycles reading columns ToolData lacks. Nothing if
-    // the tool or column is missing or the cell is empty or not a number.
-    std::optional<double> numberCell(int tool, std::string_view column) const;
+    // the tool or column is missing or the cell is empty or not a number. `index`: the row of
+    // an indexed tool (T 5.2).
+    std::optional<double> numberCell(int tool, std::string_view column, int index = 0) const;
 
     // Edits; each leaves the table unchanged and returns the reason if it fails.
-    MaybeError setNumber(int tool, std::string_view column, double value);
-    MaybeError setText(int tool, std::string_view column, std::string_view text);
+    MaybeError setNumber(int tool, std::string_view column, double value, int index = 0);
+    MaybeError setText(int tool, std::string_view column, std::string_view text, int index = 0);
     // Adds a row in ascending order with default cells.
     MaybeError addTool(int number);
     MaybeError removeTool(int number);
@@ -74,7 +75,7 @@ public:
 private:
     explicit ToolTable(TncTable table) : m_table(std::move(table)) {}
     // Row and column of a tool's cell, or why there is none.
-    Expected<std::pair<size_t, size_t>> cellOf(int tool, std::string_view column) const;
+    Expected<std::pair<size_t, size_t>> cellOf(int tool, int index, std::string_view column) const;
 
     TncTable m_table;
     std::vector<ToolData> m_tools;

@@ -27,6 +27,9 @@ double cylinderDistance(const Cylinder& c, const Vec3& p) {
 
 double solidDistance(const Solid& solid, const Vec3& p) {
     if (const auto* box = std::get_if<Box>(&solid.shape)) return boxDistance(*box, p);
+    if (const auto* sphere = std::get_if<Sphere>(&solid.shape)) {
+        return (p - sphere->centre).norm() - sphere->radius;
+    }
     return cylinderDistance(std::get<Cylinder>(solid.shape), p);
 }
 

@@ -8,7 +8,8 @@
 
 namespace kerf::workpiece {
 
-// Shapes in the blank's programmed position, workpiece coordinates with the tool axis along z.
+// Shapes in the blank's programmed position, workpiece coordinates with the tool axis along z
+// (a sphere: cycle 460's calibration sphere).
 struct Box {
     Vec3 min{0.0, 0.0, 0.0};
     Vec3 max{0.0, 0.0, 0.0};
@@ -21,9 +22,14 @@ struct Cylinder {
     double zMax = 0.0;
 };
 
+struct Sphere {
+    Vec3 centre{0.0, 0.0, 0.0};
+    double radius = 0.0;
+};
+
 // Material (the blank, a stud) or a cavity cut out of it (a hole, a pocket).
 struct Solid {
-    std::variant<Box, Cylinder> shape;
+    std::variant<Box, Cylinder, Sphere> shape;
     bool material = true;
 };
 

@@ -1,6 +1,7 @@
-// Calibration of the workpiece probe (spec 6): 461 its length on a ring's top face, 462 its
-// ball radius inside a ring, 463 on a stud. The simulated probe runs true and cannot be turned
-// for a reversal measurement, so the centre offsets CAL_OF1/CAL_OF2 are not determined.
+// Calibration of the workpiece probe (spec 6): 460 its ball radius (and length) on a sphere, 461
+// its length on a ring's top face, 462 its ball radius inside a ring, 463 on a stud. The
+// simulated probe runs true and cannot be turned for a reversal measurement, so the centre
+// offsets CAL_OF1/CAL_OF2 are not determined.
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -120,8 +121,97 @@ std::optional<CycleError> run463(const CycleValues& v, const ProbeData& probe,
     return std::nullopt;
 }
 
+constexpr ParameterDescriptor k460Parameters[] = {
+    {.q = 407,
+     .description = KERF_TR_NOOP("Exact radius of the calibration sphere"),
+     .unit = Unit::Millimetre,
+     .min = 0.0001,
+     .max = 99.9999},
+    kSetUpClearance,
+    kMoveToClearance,
+    kPointCount,
+    kReferenceAngle,
+    choice(433, KERF_TR_NOOP("Calibrate the length too: 0 no, 1 yes"), 0, 1, 0),
+    length(434, KERF_TR_NOOP("Datum for the length: height of the sphere's centre")),
+    choice(455, KERF_TR_NOOP("Number of points for the 3D calibration (0: none)"), 0, 30, 0)};
+
+// Q423 touches round the sphere at ball-centre height `height`, each from outside at r_b +
+// SET_UP + Q320 from the nominal radius about `centre`, between them back at the start height
+// (the path round the sphere is not known before the first ring): the ball centres' circle.
+std::optional<CycleError> sphereRing(const CycleValues& v, const ProbeData& probe,
+                                     ProbingMachine& machine, ProbeSequence& sequence,
+                                     const Vec2& centre, double height, double startHeight,
+                                     FittedCircle& circle) {
+    const int count = v.integer(423) < 3 ? 4 : v.integer(423);
+    const double standOff = v.number(407) + probe.ballRadius + probe.setUp + v.number(320);
+    std::vector<Vec2> balls;
+    for (int k = 0; k < count; ++k) {
+        const Vec2 d = unit(v.number(380) + 360.0 * k / count);
+        const Vec2 from = centre + standOff * d;
+        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
+        machine.moveTo(Vec3(from.x(), from.y(), height));
+        Vec3 ball;
+        if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
+        balls.emplace_back(ball.x(), ball.y());
+        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
+    }
+    return fitted(460, balls, circle);
+}
+
+// 460 (spec 6, impl. note): from above the sphere, roughly over its centre, a touch along -T
+// finds the top; a ring of touches where the equator would be with the table's r_b gives the
+// centre in the plane (the circle of a ring is centred over the sphere's centre at any height);
+// a touch down over that centre gives the north pole. The ring's radius rho_1 at d below the
+// pole's ball centre then gives the ball-centre sphere's radius s = (rho_1^2 + d^2) / (2 d), so
+// the equator lies s below the pole, and a fine ring there gives r_b = rho - Q407. Q433 = 1:
+// the ball's south pole rested on the sphere's north pole, Q434 + Q407: L = gauge point - that.
+std::optional<CycleError> run460(const CycleValues& v, const ProbeData& probe,
+                                 ProbingMachine& machine, ProbingResults& results) {
+    if (v.integer(455) > 0) {
+        return probingError(460, "not-supported",
+                            KERF_TR_NOOP("cycle {1}: the 3D calibration (Q455 > 0, option 92) is "
+                                         "not available; set Q455 = 0"));
+    }
+    ProbeSequence sequence(460, v, probe, machine);
+    const Vec3 start = machine.ballCentre();
+    const Vec3 down(0.0, 0.0, -1.0);
+    Vec3 top;
+    if (auto e = sequence.touchFrom(down, top)) return e;
+    const double rough = top.z() - v.number(407) - probe.ballRadius;
+    FittedCircle ring;
+    if (auto e = sphereRing(v, probe, machine, sequence, Vec2(start.x(), start.y()), rough,
+                            start.z(), ring)) {
+        return e;
+    }
+    const Vec2 centre = ring.centre;
+    machine.moveTo(Vec3(centre.x(), centre.y(), start.z()));
+    Vec3 pole;
+    if (auto e = sequence.touchFrom(down, pole)) return e;
+    const double d = pole.z() - rough;
+    if (d <= 1e-6) {
+        return probingError(460, "PRB-020",
+                            KERF_TR_NOOP("cycle {1}: the touch points give no circle"));
+    }
+    const double ballSphere = (ring.radius * ring.radius + d * d) / (2.0 * d);
+    FittedCircle equator;
+    if (auto e = sphereRing(v, probe, machine, sequence, centre, pole.z() - ballSphere, start.z(),
+                            equator)) {
+        return e;
+    }
+    machine.moveTo(Vec3(equator.centre.x(), equator.centre.y(), start.z()));
+    std::optional<double> length;
+    if (v.integer(433) == 1) {
+        const double gauge = pole.z() - probe.ballRadius + probe.length;
+        length = gauge - (v.number(434) + v.number(407));
+    }
+    results.calibration = ProbeCalibration{length, equator.radius - v.number(407)};
+    return std::nullopt;
+}
+
 }  // namespace
 
+const ProbingCycleDescriptor kProbe460{
+    460, KERF_TR_NOOP("CALIBRATE TS ON SPHERE"), k460Parameters, run460, {}};
 const ProbingCycleDescriptor kProbe461{
     461, KERF_TR_NOOP("CALIBRATE TS LENGTH"), k461Parameters, run461, {}};
 const ProbingCycleDescriptor kProbe462{

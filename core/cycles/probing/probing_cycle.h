@@ -40,6 +40,14 @@ public:
     // the ball centre when the stylus triggered, nothing when it did not within `maxPath`. The
     // probe then returns to where the touch started.
     virtual std::optional<Vec3> touch(const Vec3& direction, double maxPath) = 0;
+    // A touch like `touch` that stays where it ended, at the trigger or after `maxPath`
+    // (cycles 3 and 4 retract by their own distance). This default goes back and forth.
+    virtual std::optional<Vec3> touchAndStay(const Vec3& direction, double maxPath) {
+        const Vec3 start = ballCentre();
+        auto hit = touch(direction, maxPath);
+        moveTo(hit ? *hit : Vec3(start + maxPath * direction));
+        return hit;
+    }
     // True when the stylus is deflected before a touch starts (PRB-002).
     virtual bool deflected() const { return false; }
 };

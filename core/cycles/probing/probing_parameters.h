@@ -108,6 +108,7 @@ inline constexpr ParameterDescriptor kMonitoredTool{
     .q = 330,
     .description = KERF_TR_NOOP("Tool for monitoring: 0 none"),
     .min = 0.0,
-    .max = 32767.9};
+    .max = 32767.9,
+    .toolName = true};
 
 }  // namespace kerf::cycles::probing::parameters

@@ -36,6 +36,7 @@ extern const ProbingCycleDescriptor kProbe430;
 extern const ProbingCycleDescriptor kProbe431;
 extern const ProbingCycleDescriptor kProbe441;
 extern const ProbingCycleDescriptor kProbe444;
+extern const ProbingCycleDescriptor kProbe460;
 extern const ProbingCycleDescriptor kProbe461;
 extern const ProbingCycleDescriptor kProbe462;
 extern const ProbingCycleDescriptor kProbe463;

@@ -111,8 +111,13 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
         // Sub-blocks of the cycles Kerf runs are words with values; the others (12.1 PGM with
         // a file name, obsolete and SL cycles) stay text.
         static constexpr int kWordCycles[] = {1, 2, 4, 5, 7, 8, 9, 10, 11, 13, 17, 18, 19, 26, 32};
-        const bool words = !probe && std::find(std::begin(kWordCycles), std::end(kWordCycles),
-                                               b.number) != std::end(kWordCycles);
+        // Touch-probe sub-blocks with positions or a vector: 0.1, 1.2 and 4.2.
+        const bool probeWords =
+            probe && ((b.number == 0 && b.subNumber == 1) || (b.number == 1 && b.subNumber == 2) ||
+                      (b.number == 4 && b.subNumber == 2));
+        const bool words =
+            probeWords || (!probe && std::find(std::begin(kWordCycles), std::end(kWordCycles),
+                                               b.number) != std::end(kWordCycles));
         if (b.subNumber > 0 && words) {
             if (!parseCycleWords(text.substr(0, std::max(headerEnd, cur.position())), restAt,
                                  b.words)) {

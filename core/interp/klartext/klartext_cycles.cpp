@@ -95,6 +95,13 @@ bool KlartextInterpreter::resolveParameters(
             values.set(d.q, d.defaultValue * (scalesWithUnit(d.unit) ? scale : 1.0));
             continue;
         }
+        if (d.toolName && !it->value) {
+            // Q330="MILL_D10": a tool name instead of a number.
+            if (auto text = cycleText(it->raw)) {
+                values.setText(d.q, std::move(*text));
+                continue;
+            }
+        }
         if (it->isString || d.unit == cycles::Unit::Text) {
             auto text = cycleText(it->raw);
             if (!text) {

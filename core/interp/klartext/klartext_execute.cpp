@@ -105,6 +105,9 @@ void KlartextInterpreter::execute(const Statement& statement) {
         return;
     }
     if (routeThroughFk(statement) || m_status == interp::RunStatus::Failed) return;
+    // Cycle 3 is complete after 3.3; an optional 3.4 ERRORMODE may still follow.
+    if (m_oldProbe.pending && !continuesOldProbe(statement)) runOldProbe();
+    if (m_status == interp::RunStatus::Failed) return;
     std::visit(Visitor{*this}, statement);
 }
 

@@ -15,6 +15,7 @@
 #include "core/cycles/cycle_values.h"
 #include "core/cycles/pattern/pattern_plan.h"
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/cycles/probing/single_touch.h"
 #include "core/cycles/probing/tool_measurement.h"
 #include "core/cycles/transform/coordinate_frame.h"
 #include "core/geometry/fk/fk_solver.h"
@@ -359,6 +360,18 @@ private:
     bool applyRotaryCompensation(int cycle, const cycles::probing::ProbingResults& results);
     bool writePresetRotation(int cycle, int row, double degrees);
     bool writeDatumRow(int cycle, int row, const std::vector<std::pair<char, double>>& axes);
+    // The old single-touch cycles 0, 1, 3, 4 (klartext_old_probing.cpp): sub-blocks collected
+    // in m_oldProbe, run with the last one (cycle 3 with 3.4 or before the next other block).
+    void executeOldProbeBlock(const CycleDefinition& def);
+    bool continuesOldProbe(const Statement& statement) const;
+    void runOldProbe();
+    // One touch of those cycles on the simulated part (klartext_probing.cpp); `feed`: their own
+    // probing feed (3, 4). Gives the probe's data with the result.
+    std::optional<cycles::probing::SingleTouchResult> probeOnce(
+        int cycle, const cycles::probing::SingleTouch& touch, std::optional<double> feed,
+        cycles::probing::ProbeData& probe);
+    // The probe as it really is ([[simulation.tool_error]]).
+    workpiece::RealTool realProbe() const;
     // The TT cycles 30-33 / 480-483 (klartext_tool_measurement.cpp).
     void executeOldToolProbeBlock(const CycleDefinition& def);
     void executeToolMeasurement(const cycles::probing::ProbingCycleDescriptor& cycle,
@@ -372,8 +385,10 @@ private:
         std::optional<double> length, radius, deltaLength, deltaRadius;
         bool lock = false;  // TL = L
     };
-    bool writeToolTable(int cycle, int tool, const ToolTableEdit& edit);
-    bool applyToolMonitoring(int cycle, double monitored,
+    // `index`: the row of an indexed tool (T 5.2); the tool in the spindle has index 0.
+    bool writeToolTable(int cycle, int tool, int index, const ToolTableEdit& edit);
+    // Q330: a tool number (5.2: tool 5, index 2) or a name in quotes.
+    bool applyToolMonitoring(int cycle, const cycles::CycleValues& values,
                              const cycles::probing::ToolCorrection& correction);
     // The tool data TOOL CALL reads: the table as the TT cycles left it.
     const tables::ToolTable* toolTable() const {
@@ -561,6 +576,21 @@ private:
         uint16_t statusParameter = 0;  // 0: none
     };
     OldToolProbe m_oldToolProbe;
+    // An old single-touch cycle (TCH PROBE 0.0 ... 4.3) collecting its sub-blocks.
+    struct OldProbe {
+        int number = -1;
+        int lastSub = -1;
+        std::optional<uint16_t> result;  // 0 and 3, 4: the (first) result parameter
+        int axis = 2;                    // 0, 1, 3: the probing axis (0 X, 1 Y, 2 Z)
+        double sign = -1.0;              // 0: its direction
+        double angleDeg = 0.0;           // 1, 3
+        Vec3 vector{0.0, 0.0, 0.0};      // 4: IX IY IZ
+        cycles::probing::SingleTouch touch;
+        double feed = 0.0;           // 3, 4: mm/min
+        bool machineSystem = false;  // 3, 4: REFERENCE SYSTEM 1
+        bool pending = false;        // 3: complete after 3.3, waits for an optional 3.4
+    };
+    OldProbe m_oldProbe;
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)

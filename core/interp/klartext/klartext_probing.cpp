@@ -58,6 +58,18 @@ public:
     }
 
     std::optional<Vec3> touch(const Vec3& direction, double maxPath) override {
+        return probe(direction, maxPath, true);
+    }
+    std::optional<Vec3> touchAndStay(const Vec3& direction, double maxPath) override {
+        return probe(direction, maxPath, false);
+    }
+
+    bool deflected() const override {
+        return m_part.touches(toPart(ballCentre() + m_realOffset), m_realRadius);
+    }
+
+private:
+    std::optional<Vec3> probe(const Vec3& direction, double maxPath, bool backToStart) {
         const Vec3 start = ballCentre();
         if (m_probe.track && direction.head<2>().norm() > 1e-9) {
             // Angle tracking: the stylus faces the probing direction in the plane.
@@ -75,16 +87,10 @@ public:
         status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(ballToTip(end)));
         m_k.m_lastProbe = status;
         m_k.moveProgrammed(m_k.fromLocal(ballToTip(end)), false, m_probe.probingFeed);
-        m_k.moveProgrammed(m_k.fromLocal(ballToTip(start)), true, 0.0);
+        if (backToStart) m_k.moveProgrammed(m_k.fromLocal(ballToTip(start)), true, 0.0);
         if (!hit) return std::nullopt;
         return end;
     }
-
-    bool deflected() const override {
-        return m_part.touches(toPart(ballCentre() + m_realOffset), m_realRadius);
-    }
-
-private:
     Vec3 tipToBall(const Vec3& tip) const { return tip + Vec3(0.0, 0.0, m_probe.ballRadius); }
     Vec3 ballToTip(const Vec3& ball) const { return ball - Vec3(0.0, 0.0, m_probe.ballRadius); }
     // Local program coordinates <-> the workpiece frame of the start preset, where the part is
@@ -180,12 +186,23 @@ workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
     workpiece::SimulatedWorkpiece part(placement);
     for (const workpiece::Solid& solid : m_blank)
         part.add(solid);
+    if (const machine::MachineConfig* machine = m_settings.machine) {
+        const machine::CalibrationSphereConfig& sphere = machine->calibrationSphere;
+        if (sphere.radiusMm > 0.0) {
+            const Vec3 centre(sphere.centreXMm, sphere.centreYMm, sphere.centreZMm);
+            part.add({workpiece::Sphere{centre, sphere.radiusMm}, true});
+        }
+    }
     return part;
 }
 
 void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     if (def.subNumber >= 0 && cycles::probing::findOldToolProbeCycle(def.number) != nullptr) {
         executeOldToolProbeBlock(def);
+        return;
+    }
+    if (def.subNumber >= 0 && cycles::probing::isSingleTouchCycle(def.number)) {
+        executeOldProbeBlock(def);
         return;
     }
     const auto* cycle = cycles::probing::findProbingCycle(def.number);
@@ -245,11 +262,7 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     for (uint16_t q : cycle->results)
         m_q.set(QRef{QKind::Q, q}, 0.0);
     const workpiece::SimulatedWorkpiece part = simulatedPart();
-    workpiece::RealTool real{m_tool.effectiveLength(), m_tool.effectiveRadius()};
-    if (const tables::ToolTable* tools = toolTable()) {
-        if (const tables::ToolData* row = tools->byNumber(m_tool.number)) real = realTool(*row);
-    }
-    ProbeAdapter machine(*this, *probe, part, real);
+    ProbeAdapter machine(*this, *probe, part, realProbe());
     cycles::probing::ProbingResults results;
     if (auto error = cycle->run(values, *probe, machine, results)) {
         failCycle(*error);
@@ -258,8 +271,9 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     for (const auto& [q, value] : results.parameters)
         m_q.set(QRef{QKind::Q, q}, isLengthResult(q) ? value / lengthScale() : value);
     if (results.protocol && !writeProtocol(def.number, cycle->name, *results.protocol)) return;
-    if (results.toolCorrection && values.number(330) != 0.0 &&
-        !applyToolMonitoring(def.number, values.number(330), *results.toolCorrection)) {
+    const bool monitored = values.number(330) != 0.0 || !values.text(330).empty();
+    if (results.toolCorrection && monitored &&
+        !applyToolMonitoring(def.number, values, *results.toolCorrection)) {
         return;
     }
     if (results.datum && !applyDatum(def.number, results)) return;
@@ -280,7 +294,7 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         const tables::ToolData& row = *toolTable()->byNumber(m_tool.number);
         if (edit.length && row.deltaLength != 0.0) edit.deltaLength = 0.0;
         if (edit.radius && row.deltaRadius != 0.0) edit.deltaRadius = 0.0;
-        if (!writeToolTable(def.number, m_tool.number, edit)) return;
+        if (!writeToolTable(def.number, m_tool.number, 0, edit)) return;
     }
     if (results.toleranceStop) {
         failCycle(*results.toleranceStop);
@@ -290,6 +304,44 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     // 441 Q400 = 0: a log asked for on screen does not interrupt the program.
     const bool interrupt = !m_fastProbing || m_fastProbing->interrupt;
     if (results.protocolStop && interrupt) emit(canon::ProgramStop{canon::StopKind::Program, -1});
+}
+
+workpiece::RealTool KlartextInterpreter::realProbe() const {
+    if (const tables::ToolTable* tools = toolTable()) {
+        if (const tables::ToolData* row = tools->byNumber(m_tool.number)) return realTool(*row);
+    }
+    return {m_tool.effectiveLength(), m_tool.effectiveRadius()};
+}
+
+std::optional<cycles::probing::SingleTouchResult> KlartextInterpreter::probeOnce(
+    int cycle, const cycles::probing::SingleTouch& touch, std::optional<double> feed,
+    cycles::probing::ProbeData& probe) {
+    const std::string owner = "touch probe cycle " + std::to_string(cycle);
+    if (m_frame.mirror() != 0 || m_frame.scale() != 1.0) {
+        fail("PRB-005",
+             KERF_TR_NOOP("{1}: probing is not possible while a coordinate "
+                          "transformation is active (cycles 7, 8, 10, 11, 26)"),
+             {owner});
+        return std::nullopt;
+    }
+    if (m_toolAxis != Axis::Z) {
+        fail("not-supported", KERF_TR_NOOP("{1}: probing runs with tool axis Z only so far"),
+             {owner});
+        return std::nullopt;
+    }
+    auto active = activeProbe(cycle);
+    if (!active) return std::nullopt;
+    probe = *active;
+    if (feed) probe.probingFeed = *feed;
+    if (!checkPathError(m_path.flush())) return std::nullopt;
+    const workpiece::SimulatedWorkpiece part = simulatedPart();
+    ProbeAdapter machine(*this, probe, part, realProbe());
+    cycles::probing::SingleTouchResult result;
+    if (auto error = cycles::probing::runSingleTouch(cycle, touch, probe, machine, result)) {
+        failCycle(*error);
+        return std::nullopt;
+    }
+    return result;
 }
 
 bool KlartextInterpreter::writeProtocol(int cycle, const char* name,

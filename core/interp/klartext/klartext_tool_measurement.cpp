@@ -321,7 +321,7 @@ void KlartextInterpreter::executeToolMeasurement(
     if (request.radius) m_q.set(QRef{QKind::Q, 116}, result.radiusDeviation / lengthScale());
     if (status != 0) m_q.set(QRef{QKind::Q, status}, result.status);
     if (request.mode != 2) {
-        writeToolTable(cycle.number, m_tool.number,
+        writeToolTable(cycle.number, m_tool.number, 0,
                        {result.newLength, result.newRadius, result.newDeltaLength,
                         result.newDeltaRadius, result.lock});
     }
@@ -330,12 +330,13 @@ void KlartextInterpreter::executeToolMeasurement(
 // Measured values into TOOL.T (atomically, after the program check); a change of the tool in
 // the spindle takes effect at once (spec 7.1: "take effect automatically at the end of the
 // probing cycle").
-bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdit& edit) {
+bool KlartextInterpreter::writeToolTable(int cycle, int tool, int index,
+                                         const ToolTableEdit& edit) {
     if (!waitForCheck()) return false;
     tables::ToolTable table = *toolTable();
     auto set = [&](const char* column, const std::optional<double>& value) -> bool {
         if (!value) return true;
-        if (auto error = table.setNumber(tool, column, *value)) {
+        if (auto error = table.setNumber(tool, column, *value, index)) {
             failCycle({error->code, error->messageTemplate, error->args});
             return false;
         }
@@ -346,7 +347,7 @@ bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdi
         return false;
     }
     if (edit.lock) {
-        if (auto error = table.setText(tool, "TL", "L")) {
+        if (auto error = table.setText(tool, "TL", "L", index)) {
             failCycle({error->code, error->messageTemplate, error->args});
             return false;
         }
@@ -359,7 +360,7 @@ bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdi
         return false;
     }
     m_toolTable = std::move(table);
-    if (tool != m_tool.number) return true;
+    if (tool != m_tool.number || index != 0) return true;
     const tables::ToolData* row = m_toolTable->byNumber(tool);
     m_tool.length = row->length;
     m_tool.radius = row->radius;
@@ -374,15 +375,24 @@ bool KlartextInterpreter::writeToolTable(int cycle, int tool, const ToolTableEdi
 
 // Q330 (spec 1.14): the monitored tool's DR (DL for 427 in the tool axis) gets the deviation
 // added, even within tolerance; beyond its RBREAK the tool is locked and the program stops.
-bool KlartextInterpreter::applyToolMonitoring(int cycle, double monitored,
+bool KlartextInterpreter::applyToolMonitoring(int cycle, const cycles::CycleValues& values,
                                               const cycles::probing::ToolCorrection& correction) {
-    const int tool = static_cast<int>(monitored);
-    const tables::ToolData* row = toolTable() != nullptr ? toolTable()->byNumber(tool) : nullptr;
+    const std::string& name = values.text(330);
+    const double number = values.number(330);
+    const int whole = static_cast<int>(number);
+    const int index = static_cast<int>(std::lround((number - whole) * 10.0));
+    const tables::ToolTable* table = toolTable();
+    const tables::ToolData* row = table == nullptr ? nullptr
+                                  : name.empty()   ? table->byNumber(whole, index)
+                                                   : table->byName(name);
+    const std::string shown = !name.empty() ? name
+                              : index == 0  ? std::to_string(whole)
+                                            : std::to_string(whole) + "." + std::to_string(index);
     if (row == nullptr) {
         fail("PRB-012",
              KERF_TR_NOOP("touch probe cycle {1}: the tool to monitor (Q330 = {2}) is not in "
                           "the tool table"),
-             {std::to_string(cycle), std::to_string(tool)});
+             {std::to_string(cycle), shown});
         return false;
     }
     ToolTableEdit edit;
@@ -390,16 +400,17 @@ bool KlartextInterpreter::applyToolMonitoring(int cycle, double monitored,
         (correction.length ? edit.deltaLength : edit.deltaRadius) =
             (correction.length ? row->deltaLength : row->deltaRadius) + correction.delta;
     }
-    const double breakage = toolTable()->numberCell(tool, "RBREAK").value_or(0.0);
+    const double breakage = table->numberCell(row->number, "RBREAK", row->index).value_or(0.0);
     edit.lock = breakage > 0.0 && std::abs(correction.delta) > breakage;
-    if ((edit.deltaLength || edit.deltaRadius || edit.lock) && !writeToolTable(cycle, tool, edit)) {
+    if ((edit.deltaLength || edit.deltaRadius || edit.lock) &&
+        !writeToolTable(cycle, row->number, row->index, edit)) {
         return false;
     }
     if (edit.lock) {
         fail("PRB-007",
              KERF_TR_NOOP("touch probe cycle {1}: tool {2} is broken (deviation {3} mm beyond "
                           "RBREAK); it is locked"),
-             {std::to_string(cycle), std::to_string(tool), std::to_string(correction.delta)});
+             {std::to_string(cycle), shown, std::to_string(correction.delta)});
         return false;
     }
     return true;

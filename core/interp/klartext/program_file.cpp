@@ -9,6 +9,7 @@
 #include "core/cycles/cycle_registry.h"
 #include "core/cycles/legacy/legacy_cycles.h"
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/cycles/probing/single_touch.h"
 #include "core/interp/klartext/block_parser.h"
 #include "core/interp/klartext/block_reader.h"
 #include "core/interp/klartext/contour_labels.h"
@@ -301,7 +302,8 @@ void checkProgram(ProgramFile& program) {
             } else if (const auto* cycle = std::get_if<CycleDefinition>(&s)) {
                 const bool known =
                     cycle->subNumber >= 0
-                        ? cycles::probing::findOldToolProbeCycle(cycle->number) != nullptr
+                        ? cycles::probing::findOldToolProbeCycle(cycle->number) != nullptr ||
+                              cycles::probing::isSingleTouchCycle(cycle->number)
                         : cycles::probing::findProbingCycle(cycle->number) != nullptr;
                 if (cycle->probe && !known) {
                     diag(Severity::Error, "not-supported", line.firstLine, 1,

@@ -78,9 +78,10 @@ private:
     bool translateMotion(Context& c, int motion);
     bool translateCycle(Context& c, const IsoWord& g);  // iso_translator_cycles.cpp
     bool translateOldCycle(Context& c, const IsoWord& g,
-                           bool& handled);                 // iso_translator_cycles.cpp
-    bool translateThreadCutting(Context& c);               // iso_translator_cycles.cpp
-    void translateSpecialFunction(Context& c, size_t at);  // iso_translator_special.cpp
+                           bool& handled);                       // iso_translator_cycles.cpp
+    bool translateThreadCutting(Context& c);                     // iso_translator_cycles.cpp
+    bool translateReferencePlane(Context& c, const IsoWord& g);  // iso_translator_cycles.cpp
+    void translateSpecialFunction(Context& c, size_t at);        // iso_translator_special.cpp
     bool fail(size_t offset, const char* messageTemplate, std::vector<std::string> args = {});
 
     klartext::ParseProblem m_problem;

@@ -1,5 +1,6 @@
 // Cycles in DIN/ISO: parameter cycles (G200 ... Q200=2 ...) and the old cycles that ISO writes as
 // one G block (G54 X+10 is CYCL DEF 7.0 and 7.1 X+10).
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -100,6 +101,10 @@ bool IsoTranslator::translateOldCycle(Context& c, const IsoWord& g, bool& handle
                                                        {72, 11, "SCALING"},
                                                        {73, 10, "ROTATION"},
                                                        {80, 19, "WORKING PLANE"}}};
+    if (g.number == 55) {
+        handled = true;
+        return translateReferencePlane(c, g);
+    }
     const OldCycle* old = nullptr;
     for (const OldCycle& o : kOld) {
         if (o.g == g.number) old = &o;
@@ -182,6 +187,52 @@ bool IsoTranslator::translateOldCycle(Context& c, const IsoWord& g, bool& handle
         default:
             return true;
     }
+}
+
+// G55 P01 5 X- X+5 Y+0 Z-5: touch-probe cycle 0 REF. PLANE (spec 4: ISO G55), the result in
+// Q5, probing along X-, from the pre-position X+5 Y+0 Z-5. The spec names G55 but not its
+// words: these mirror the conversational sub-blocks 0.0 and 0.1.
+bool IsoTranslator::translateReferencePlane(Context& c, const IsoWord& g) {
+    const IsoWord* p = c.take("P");
+    const bool digits =
+        p != nullptr && !p->value.empty() &&
+        std::all_of(p->value.begin(), p->value.end(), [](char ch) { return isDigit(ch); });
+    if (p == nullptr || p->number != 1 || !digits) {
+        return fail(p != nullptr ? p->offset : c.end(g), KERF_TR_NOOP("P0{1} expected"), {"1"});
+    }
+    const IsoWord* direction = nullptr;
+    for (size_t w = 0; w < c.words.words.size(); ++w) {
+        const IsoWord& word = c.words.words[w];
+        if (c.used[w] || (word.value != "+" && word.value != "-")) continue;
+        if (direction != nullptr ||
+            std::string_view("XYZ").find(upper(word.key[0])) == std::string_view::npos) {
+            return fail(word.offset, KERF_TR_NOOP("'{1}' is not allowed in this block"),
+                        {std::string(word.key) + std::string(word.value)});
+        }
+        c.used[w] = true;
+        direction = &word;
+    }
+    if (direction == nullptr) {
+        return fail(c.end(*p),
+                    KERF_TR_NOOP("G55: the probing axis with its direction (X-, Y+ ...) expected"));
+    }
+    ConversationalBlock& head = c.newBlock();
+    head.add("TCH PROBE 0.0 REF. PLANE Q", g.offset, 3, true);
+    head.add(p->value, p->valueOffset, p->value.size());
+    head.add(std::string(1, upper(direction->key[0])) + std::string(direction->value),
+             direction->offset, 2);
+    ConversationalBlock& b = c.newBlock();
+    b.add("TCH PROBE 0.1", g.offset, 3);
+    for (size_t w = 0; w < c.words.words.size(); ++w) {
+        const IsoWord& word = c.words.words[w];
+        if (c.used[w] || word.key.size() != 1 ||
+            std::string_view("XYZ").find(upper(word.key[0])) == std::string_view::npos) {
+            continue;
+        }
+        c.used[w] = true;
+        c.addWord(b, word, std::string(1, upper(word.key[0])), false);
+    }
+    return true;
 }
 
 // G18 P01 depth P02 pitch: cycle 18 THREAD CUTTING (its ISO code is the plane's, G18).

@@ -178,8 +178,19 @@ bool scanWords(std::string_view text, size_t from, IsoWords& out, klartext::Pars
         const size_t end = labelNumber ? digitsEnd(text, valueAt) : valueEnd(text, keyEnd);
         if (end == std::string_view::npos && valueAt < text.size() &&
             (text[valueAt] == '+' || text[valueAt] == '-')) {
-            return fail(problem, valueAt, KERF_TR_NOOP("value expected after '{1}'"),
-                        {std::string(word.key)});
+            // G55 (probing cycle 0) names its probing axis and direction as "X-".
+            const size_t after = valueAt + 1;
+            const bool signAlone = after >= text.size() || text[after] == ' ' ||
+                                   text[after] == '\t' || text[after] == '*';
+            if (!signAlone || out.findG(55) == nullptr || word.key.size() != 1) {
+                return fail(problem, valueAt, KERF_TR_NOOP("value expected after '{1}'"),
+                            {std::string(word.key)});
+            }
+            word.valueOffset = valueAt;
+            word.value = text.substr(valueAt, 1);
+            out.words.push_back(word);
+            i = after;
+            continue;
         }
         if (end == std::string_view::npos) {
             // Words that stand without a value: mirror axes (G28 X Y), G79 PAT.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/cycles/probing/single_touch.h"
 #include "core/workpiece/simulated_workpiece.h"
 
 namespace kerf::cycles::probing {
@@ -103,9 +104,9 @@ CycleRun run(int cycle, const CycleValues& v, const SimulatedWorkpiece& part) {
 }
 
 TEST(ProbingCycles, RegistryHoldsEachCycleOnceInNumberOrder) {
-    const int expected[] = {400, 401, 402, 403, 404, 405, 408, 409, 410, 411, 412, 413, 414,
-                            415, 416, 417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427,
-                            430, 431, 441, 444, 461, 462, 463, 480, 481, 482, 483, 484, 1416};
+    const int expected[] = {400, 401, 402, 403, 404, 405, 408, 409, 410, 411, 412, 413, 414, 415,
+                            416, 417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427, 430, 431,
+                            441, 444, 460, 461, 462, 463, 480, 481, 482, 483, 484, 1416};
     auto all = allProbingCycles();
     ASSERT_EQ(all.size(), std::size(expected));
     for (size_t i = 0; i < all.size(); ++i) {
@@ -676,6 +677,52 @@ TEST(ProbingCycles, ErrorsOfTheManual) {
     c.set(262, 50), c.set(247, 4);
     EXPECT_EQ(run(413, c, part).error->code, "PRB-018");
     EXPECT_EQ(findProbingCycle(999), nullptr);
+}
+
+TEST(ProbingCycles, PolarDirectionTurnsFromTheAxisTowardsTheNextOfItsPlane) {
+    // Cycles 1 and 3 (spec 4): X turns towards Y, Y towards Z, Z towards X.
+    const double c = std::cos(std::numbers::pi / 6.0);
+    EXPECT_TRUE(polarDirection(0, 30.0).isApprox(Vec3(c, 0.5, 0.0), 1e-12));
+    EXPECT_TRUE(polarDirection(1, 30.0).isApprox(Vec3(0.0, c, 0.5), 1e-12));
+    EXPECT_TRUE(polarDirection(2, 30.0).isApprox(Vec3(0.5, 0.0, c), 1e-12));
+    EXPECT_TRUE(polarDirection(0, -90.0).isApprox(Vec3(0.0, -1.0, 0.0), 1e-12));
+}
+
+TEST(ProbingCycles, SingleTouchRetractsByMbButNeverBeyondItsStart) {
+    // A face at x = 10 (box from x 10): the ball of radius 2 from x 0 along +X stops at 8.
+    SimulatedWorkpiece part;
+    part.add({Box{Vec3(10, -50, -50), Vec3(60, 50, 50)}, true});
+    PartMachine machine(part, 2.0);
+    machine.moveTo(Vec3(0, 0, 0));
+    SingleTouch touch;
+    touch.direction = Vec3(1, 0, 0);
+    touch.maxPath = 20.0;
+    touch.retract = 3.0;
+    touch.missIsError = false;
+    SingleTouchResult r;
+    ASSERT_FALSE(runSingleTouch(3, touch, probe(), machine, r));
+    EXPECT_TRUE(r.valid);
+    EXPECT_NEAR(r.ball.x(), 8.0, 1e-9);
+    EXPECT_NEAR(machine.ballCentre().x(), 5.0, 1e-9);
+    // MB 50 from 8 mm away: back to the start only.
+    machine.moveTo(Vec3(0, 0, 0));
+    touch.retract = 50.0;
+    ASSERT_FALSE(runSingleTouch(3, touch, probe(), machine, r));
+    EXPECT_NEAR(machine.ballCentre().x(), 0.0, 1e-9);
+    // Nothing within 5 mm: invalid, no error, 3 back from where the path ended.
+    touch.maxPath = 5.0;
+    touch.retract = 3.0;
+    ASSERT_FALSE(runSingleTouch(3, touch, probe(), machine, r));
+    EXPECT_FALSE(r.valid);
+    EXPECT_NEAR(machine.ballCentre().x(), 2.0, 1e-9);
+    // Cycles 0 and 1: a miss within the probe table's DIST (20) is PRB-001.
+    machine.moveTo(Vec3(-30, 0, 0));
+    touch.maxPath.reset();
+    touch.retract.reset();
+    touch.missIsError = true;
+    auto error = runSingleTouch(0, touch, probe(), machine, r);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "PRB-001");
 }
 
 }  // namespace

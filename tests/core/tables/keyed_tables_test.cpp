@@ -46,6 +46,9 @@ TEST(PresetTable, DefaultTableAndEdits) {
         header += pad(axis, 14);
         zero += pad("+0", 14);
     }
+    // The basic rotation column the probing cycles write (Q305 > 0).
+    header += pad("SPC", 14);
+    zero += pad("+0", 14);
     EXPECT_EQ(text, "BEGIN PRESET.PR MM\n" + header + "\n" + zero + "\n[END]\n");
 
     auto presets = PresetTable::parse(text);
@@ -57,7 +60,7 @@ TEST(PresetTable, DefaultTableAndEdits) {
     EXPECT_EQ(presets->byNumber(3)->axis('X'), 125.5);
     EXPECT_FALSE(presets->byNumber(3)->axis('C'));
     std::string three = pad("3", 8) + pad("", 17) + pad("+125.5", 14);
-    for (const char* value : {"+0", "+0", "+0", "+0", ""})
+    for (const char* value : {"+0", "+0", "+0", "+0", "", "+0"})
         three += pad(value, 14);
     EXPECT_EQ(presets->serialize(),
               "BEGIN PRESET.PR MM\n" + header + "\n" + zero + "\n" + three + "\n[END]\n");

@@ -327,6 +327,30 @@ TEST_F(ProbingTest, Cycle404SetsAndClearsTheBasicRotation) {
     EXPECT_EQ(presets->table().number(row3->row, *spc), 5.0);
 }
 
+TEST_F(ProbingTest, FreshNcRootStoresTheBasicRotationInTheDefaultPresetTable) {
+    // No PRESET.PR yet: the table Kerf creates has the SPC column, so 400 with Q305 = 2 stores
+    // the part's real 0.7 degrees there (the front face from X10 to X60, Q272 = 1), without
+    // turning the working plane.
+    ASSERT_FALSE(fs::exists(dir / "PRESET.PR"));
+    ASSERT_EQ(run("1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                  "3 TOOL CALL 1 Z\n4 L X-10 Y-10 Z+50 R0 FMAX\n"
+                  "5 TCH PROBE 400 BASIC ROTATION\n  Q263=+10\n  Q264=+0\n  Q265=+60\n"
+                  "  Q266=+0\n  Q272=2\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n"
+                  "  Q301=1\n  Q307=0\n  Q305=2\n"
+                  "6 L X+10 Y+0 Z+50 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 10.0, 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], 0.0, 1e-9);
+    auto presets = tables::PresetTable::load(dir / "PRESET.PR");
+    ASSERT_TRUE(presets.ok());
+    const tables::PresetData* row2 = presets->byNumber(2);
+    ASSERT_NE(row2, nullptr);
+    auto spc = presets->table().findColumn("SPC");
+    ASSERT_TRUE(spc);
+    EXPECT_NEAR(presets->table().number(row2->row, *spc).value_or(0.0), 0.7, 1e-4);
+}
+
 TEST_F(ProbingTest, DatumCycleWritesTheDatumTableWithQ303Zero) {
     // 413 with Q303 = 0, Q305 = 2: row 2 of the datum table selected with SEL TABLE gets the
     // shift that gives the real stud centre (1.5, -0.8) and its top (-0.2) the nominal 0.
@@ -472,6 +496,154 @@ TEST_F(ProbingTest, Cycle463CalibratesTheBallRadiusOnAStud) {
     auto written = tables::ToolTable::load(dir / "TOOL.T");
     ASSERT_TRUE(written.ok());
     EXPECT_NEAR(written->byNumber(1)->radius, 1.98, 1e-4);
+}
+
+// The old single-touch cycles on the plate 100 x 60 x 40 placed with the fixture's setup error:
+// its left face is the line through (1.5, -0.8) turned by 0.7 degrees, outward normal
+// n = (-cos a, -sin a). A ball of radius 2 at height y = 30 moving along +X touches it where
+// n . (c - (1.5, -0.8)) = 2.
+const char* kPlate =
+    "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n3 TOOL CALL 1 Z\n";
+
+double leftFaceTouchX(double y) {
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    return 1.5 - (2.0 + (y + 0.8) * std::sin(a)) / std::cos(a);
+}
+
+TEST_F(ProbingTest, Cycle0ProbesOneAxisIntoItsResultParameter) {
+    ASSERT_EQ(run(std::string(kPlate) + "4 L X-5 Y+30 Z+20 R0 FMAX\n"
+                                        "5 TCH PROBE 0.0 REF. PLANE Q5 X+\n"
+                                        "6 TCH PROBE 0.1 X-5 Y+30 Z-5\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double x = leftFaceTouchX(30.0);
+    EXPECT_NEAR(q(5), x + 2.0, 1e-9);  // the surface: the ball centre + r_b along +X
+    // The trigger position without stylus length and radius: the gauge point (L 0).
+    EXPECT_NEAR(q(115), x, 1e-9);
+    EXPECT_NEAR(q(116), 30.0, 1e-9);
+    EXPECT_NEAR(q(117), -7.0, 1e-9);
+    EXPECT_EQ(q(118), 0.0);
+    // Back at the start of the touch: the pre-position, the tool tip r_b below the ball centre.
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], -5.0, 1e-9);
+    EXPECT_NEAR(end[Axis::Z], -7.0, 1e-9);
+    // The Portuguese keywords and a missing probing axis.
+    ASSERT_EQ(run(std::string(kPlate) + "4 TCH PROBE 0.0 PLANO DE REFERENCIA Q7 X+\n"
+                                        "5 TCH PROBE 0.1 X-5 Y+30 Z-5\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(7), x + 2.0, 1e-9);
+    ASSERT_EQ(run(std::string(kPlate) + "4 TCH PROBE 0.0 REF. PLANE Q5\n"
+                                        "5 TCH PROBE 0.1 X-5 Y+30 Z-5\n"),
+              interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("probing axis"), std::string::npos) << firstError();
+}
+
+TEST_F(ProbingTest, Cycle1ProbesAlongAPolarAngle) {
+    // From s = (-5, 30) along d = (cos 30, sin 30): n . (s + t d - p0) = 2.
+    ASSERT_EQ(run(std::string(kPlate) + "4 TCH PROBE 1.0 POLAR DATUM PLANE\n"
+                                        "5 TCH PROBE 1.1 X ANGLE: +30\n"
+                                        "6 TCH PROBE 1.2 X-5 Y+30 Z-5\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double b = 30.0 * std::numbers::pi / 180.0;
+    const double t = (6.5 * std::cos(a) - 30.8 * std::sin(a) - 2.0) / std::cos(b - a);
+    EXPECT_NEAR(q(115), -5.0 + t * std::cos(b), 1e-9);
+    EXPECT_NEAR(q(116), 30.0 + t * std::sin(b), 1e-9);
+    EXPECT_NEAR(q(117), -7.0, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle3MeasuresFromWhereTheProbeStands) {
+    const std::string measure =
+        "5 TCH PROBE 3.0 MEASURING\n6 TCH PROBE 3.1 Q1\n"
+        "7 TCH PROBE 3.2 X ANGLE: +0\n";
+    // The ball at (-5, 30, -5) probes along +X at F100 within 10, then retracts MB 1.
+    ASSERT_EQ(run(std::string(kPlate) + "4 L X-5 Y+30 Z-7 R0 FMAX\n" + measure +
+                  "8 TCH PROBE 3.3 DIST +10 F100 MB1 REFERENCE SYSTEM: 0\n9 Q10 = Q4\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double x = leftFaceTouchX(30.0);
+    EXPECT_NEAR(q(1), x, 1e-9);
+    EXPECT_NEAR(q(2), 30.0, 1e-9);
+    EXPECT_NEAR(q(3), -5.0, 1e-9);
+    EXPECT_EQ(q(10), 0.0);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], x - 1.0, 1e-9);
+    bool probingFeed = false;
+    for (const canon::Command& c : out.commands) {
+        if (const auto* move = std::get_if<canon::LinearMove>(&c.body)) {
+            probingFeed = probingFeed || move->feed == 100.0;
+        }
+    }
+    EXPECT_TRUE(probingFeed);
+    // Nothing within 3 mm: no error, Q4 = -1, the probe 1 back from where the path ended.
+    ASSERT_EQ(run(std::string(kPlate) + "4 L X-5 Y+30 Z-7 R0 FMAX\n" + measure +
+                  "8 TCH PROBE 3.3 DIST +3 F100 MB1 REFERENCE SYSTEM: 0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_EQ(q(4), -1.0);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], -3.0, 1e-9);
+    // Deflected at the start (the ball inside the plate): ERRORMODE 1 gives Q4 = -1, without
+    // 3.4 (ERRORMODE 0) it is PRB-002.
+    const std::string inside = std::string(kPlate) + "4 L X+50 Y+30 Z-7 R0 FMAX\n" + measure +
+                               "8 TCH PROBE 3.3 DIST +10 F100 MB1 REFERENCE SYSTEM: 0\n";
+    ASSERT_EQ(run(inside + "9 TCH PROBE 3.4 ERRORMODE1\n"), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_EQ(q(4), -1.0);
+    ASSERT_EQ(run(inside + "9 Q10 = 1\n"), interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("PRB-002"), std::string::npos) << firstError();
+    EXPECT_EQ(q(10), 0.0);  // the cycle stopped the program before block 9
+}
+
+TEST_F(ProbingTest, Cycle4ProbesAlongAVector) {
+    // From the ball at (50, 30, 12) along (1, 0, -1)/sqrt 2 onto the real top at -0.2: the ball
+    // centre stops at z 1.8, x 60.2; MB 2 takes it back 2 along the vector.
+    const std::string program = std::string(kPlate) +
+                                "4 L X+50 Y+30 Z+10 R0 FMAX\n"
+                                "5 TCH PROBE 4.0 MEASURING IN 3-D\n6 TCH PROBE 4.1 Q1\n"
+                                "7 TCH PROBE 4.2 IX+1 IY+0 IZ-1\n"
+                                "8 TCH PROBE 4.3 ABST+45 F100 MB2 REFERENCE SYSTEM:";
+    ASSERT_EQ(run(program + "0\n"), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(q(1), 60.2, 1e-9);
+    EXPECT_NEAR(q(2), 30.0, 1e-9);
+    EXPECT_NEAR(q(3), 1.8, 1e-9);
+    EXPECT_EQ(q(4), 0.0);
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], 60.2 - std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(end[Axis::Z], 1.8 + std::sqrt(2.0) - 2.0, 1e-9);
+    // REFERENCE SYSTEM 1: machine coordinates (the start preset lies at machine Z -400).
+    ASSERT_EQ(run(program + "1\n"), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(q(1), 60.2, 1e-9);
+    EXPECT_NEAR(q(3), -398.2, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle460CalibratesRadiusAndLengthOnASphere) {
+    // The sphere (radius 12.5, centre programmed at (0, 0, -20)) lies shifted by the setup error
+    // (0.5, -0.3, 0); the probe (table L 0, R 2) is really 0.1 longer with a ball of 1.98.
+    // The ball-centre sphere has radius 14.48: R = 14.48 - 12.5. Its south pole rests on the
+    // north pole at -7.5 when the gauge point stands 0.1 above it: L = 0.1 with Q434 = -20.
+    useMachine(std::string(kProbeError) +
+               "[simulation.calibration_sphere]\ncentre = [0.0, 0.0, -20.0]\nradius = 12.5\n");
+    const std::string program =
+        "1 TOOL CALL 1 Z\n2 L X+0 Y+0 Z+10 R0 FMAX\n"
+        "3 TCH PROBE 460 CALIBRATE TS ON SPHERE\n  Q407=12.5\n  Q320=0\n"
+        "  Q301=1\n  Q423=4\n  Q380=+0\n  Q433=1\n  Q434=-20\n  Q455=";
+    ASSERT_EQ(run(program + "0\n"), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-6);
+    EXPECT_NEAR(q(114), 0.1, 1e-6);
+    auto written = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(written.ok());
+    EXPECT_NEAR(written->byNumber(1)->radius, 1.98, 1e-4);
+    EXPECT_NEAR(written->byNumber(1)->length, 0.1, 1e-4);
+    // It ends at the start height over the real centre.
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], 0.5, 1e-6);
+    EXPECT_NEAR(end[Axis::Y], -0.3, 1e-6);
+    EXPECT_NEAR(end[Axis::Z], 10.0, 1e-6);
+    // The 3D calibration (option 92) is not available.
+    fs::remove(dir / "TOOL.T");
+    ASSERT_EQ(run(program + "15\n"), interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("Q455"), std::string::npos) << firstError();
 }
 
 }  // namespace

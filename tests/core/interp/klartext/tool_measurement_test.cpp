@@ -375,6 +375,39 @@ TEST_F(ToolMeasurementTest, ToolMonitoringQ330CorrectsTheMachiningTool) {
     EXPECT_NE(firstError().find("Q330 = 7"), std::string::npos) << firstError();
 }
 
+TEST_F(ToolMeasurementTest, ToolMonitoringQ330NamesAnIndexedToolOrAToolByName) {
+    // Tool 3 and its index 3.2 (named FINISH) are different rows: Q330 = 3.2 corrects the
+    // index's DL by the 0.15 the top lies below the limits' middle, tool 3 keeps its data;
+    // Q330 = "FINISH" finds the same row by its name and corrects its DR on the left face.
+    useMachine("");
+    auto row = [](std::vector<std::string> cells) {
+        std::string line;
+        for (const std::string& cell : cells)
+            line += cell + std::string(10 - cell.size(), ' ');
+        return line + "\n";
+    };
+    tools = *tables::ToolTable::parse(
+        "BEGIN TOOL.T MM\n" + row({"T", "NAME", "L", "R", "DL", "DR", "TL", "RBREAK"}) +
+        row({"1", "TS", "+50", "+2", "+0", "+0", "", "+0"}) +
+        row({"3", "ROUGH", "+100", "+5", "+0", "+0", "", "+0.2"}) +
+        row({"3.2", "FINISH", "+100", "+5", "+0", "+0", "", "+0.2"}) + "[END]\n");
+    std::string program = coordinate427(3, -1, 0.2, 0.1);
+    program.replace(program.find("Q330=3"), 6, "Q330=3.2");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(written().byNumber(3, 2)->deltaLength, 0.15, 1e-9);
+    EXPECT_EQ(written().byNumber(3)->deltaLength, 0.0);
+    fs::remove(dir / "TOOL.T");
+    program = coordinate427(1, 1, 0.1, -0.3);
+    program.replace(program.find("Q330=3"), 6, "Q330=\"FINISH\"");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(written().byNumber(3, 2)->deltaRadius, 0.1, 1e-9);
+    EXPECT_EQ(written().byNumber(3)->deltaRadius, 0.0);
+    // A name that is not in the table is reported with it.
+    program.replace(program.find("FINISH"), 6, "NOSUCH");
+    ASSERT_EQ(run(program), interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("Q330 = NOSUCH"), std::string::npos) << firstError();
+}
+
 TEST_F(ToolMeasurementTest, Errors) {
     // No TT on the machine.
     machine = *machine::parseMachine("base = \"mill\"\n", "test.toml");

@@ -172,6 +172,20 @@ TEST(IsoTranslator, OldCyclesAreOneBlock) {
                                         "CYCL DEF 12.0 PGM CALL | CYCL DEF 12.1 PGM SUB.H"}));
 }
 
+// G55 is touch-probe cycle 0 (spec 4): P01 the result parameter, a sign-only axis word the
+// probing direction, the other axis words the pre-position.
+TEST(IsoTranslator, G55IsTouchProbeCycleZero) {
+    EXPECT_EQ(
+        translate("G55 P01 5 X- X+5 Y+0 Z-5 *\n"),
+        (std::vector<std::string>{"TCH PROBE 0.0 REF. PLANE Q5 X- | TCH PROBE 0.1 X+5 Y+0 Z-5"}));
+    EXPECT_EQ(translate("G55 P01 5 X+5 *\n"),
+              (std::vector<std::string>{
+                  "error at 10: G55: the probing axis with its direction (X-, Y+ ...) expected"}));
+    // A sign alone stays an error elsewhere.
+    EXPECT_EQ(translate("G01 X- *\n"),
+              (std::vector<std::string>{"error at 6: value expected after '{1}'"}));
+}
+
 // The seed gives cycle 18 the ISO code G18, the plane ZX's: its parameters make it the cycle.
 TEST(IsoTranslator, G18WithItsParametersIsThreadCutting) {
     EXPECT_EQ(translate("G18 P01 -20 P02 +1.5 *\n"
