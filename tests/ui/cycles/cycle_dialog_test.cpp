@@ -13,10 +13,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/base/atomic_file.h"
 #include "core/cycles/cycle_registry.h"
 #include "core/machine/machine_loader.h"
 #include "qt_test_app.h"
 #include "run_program.h"
+#include "test_paths.h"
 #include "ui/cycles/cycle_block.h"
 #include "ui/cycles/cycle_help_picture.h"
 #include "ui/cycles/parameter_comments.h"
@@ -293,12 +295,28 @@ TEST(CycleDialog, EveryCycleWrittenWithItsDefaultsOrSampleValuesChecksClean) {
             << cycle->number << ": " << dialog.message().toStdString();
         program << dialog.blocks();
     }
+    // What the cycles name must exist: cycle 14's contour labels 1 and 2, cycle 12's SUB.H.
+    program << "L Z+100 R0 FMAX M30";
+    for (const char* label : {"1", "2"}) {
+        program << QStringLiteral("LBL %1").arg(label) << "L X+0 Y+0 RL"
+                << "L X+10"
+                << "L Y+10"
+                << "L X+0"
+                << "L Y+0"
+                << "LBL 0";
+    }
     program << "END PGM ALL MM";
     QString text;
     for (int i = 0; i < program.size(); ++i)
         text += QString::number(i) + ' ' + program[i] + '\n';
-    for (const Diagnostic& d : check(text))
+    const std::filesystem::path root = kerf::test::uniqueTempDir("cycle_dialog_all");
+    writeFileAtomically(root / "SUB.H", "0 BEGIN PGM SUB MM\n1 END PGM SUB MM\n");
+    const auto machine = machine::loadMachine("mill");
+    ASSERT_TRUE(machine.ok());
+    for (const Diagnostic& d : checkProgramText(text.toStdString(), (root / "ALL.H").string(),
+                                                program::Dialect::Klartext, *machine, root))
         ADD_FAILURE() << d.format() << "\n" << text.toStdString();
+    std::filesystem::remove_all(root);
     // Spot checks of the old-style syntax (spec 9 and 10).
     EXPECT_TRUE(text.contains("CYCL DEF 7.1 X+10\n")) << text.toStdString();
     EXPECT_TRUE(text.contains("CYCL DEF 7.2 IY-5\n"));
