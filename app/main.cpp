@@ -73,9 +73,11 @@ int main(int argc, char** argv) {
     run->add_option("--work-offset", runOptions.workOffset,
                     "machine coordinates of the workpiece origin on the axes named, e.g. "
                     "Z-300 (default: the machine file's presets)");
-    run->add_option("--operator-input", runOptions.operatorInput,
-                    "with --user-screen: the operator's answers in order, e.g. F1,2.5,-3 (a key "
-                    "F1-F7, $FC00 or one character for WKEY, a number for IB)")
+    run->add_option(
+           "--operator-input", runOptions.operatorInput,
+           "the operator's inputs: IBn=value for the IB variables any FAGOR program "
+           "reads (e.g. IB3=40,IB1=6.25); with --user-screen also its answers in order, "
+           "e.g. F1,2.5,-3 (a key F1-F7, $FC00 or one character for WKEY, a number for IB)")
         ->allow_extra_args(false);
     run->add_option("--inject-fault", runOptions.injectFaults,
                     "NODE:KIND@SECONDS, e.g. 2:heartbeat@1.5 (repeatable; see docs/drives.md)");

@@ -1,5 +1,8 @@
 #include "app/runner/headless_operator.h"
 
+#include <charconv>
+#include <cmath>
+
 #include "core/base/translate.h"
 
 namespace kerf::app {
@@ -12,6 +15,23 @@ std::optional<fagor::UserMode> userModeFromName(const std::string& name) {
     return std::nullopt;
 }
 
+std::optional<std::pair<int, double>> inputAssignment(const std::string& item) {
+    if (item.size() < 4 || (item[0] != 'I' && item[0] != 'i') || (item[1] != 'B' && item[1] != 'b'))
+        return std::nullopt;
+    const size_t equals = item.find('=');
+    if (equals == std::string::npos) return std::nullopt;
+    int n = -1;
+    const auto [end, error] = std::from_chars(item.data() + 2, item.data() + equals, n);
+    if (error != std::errc() || end != item.data() + equals || n < 0 || n > 25) return std::nullopt;
+    double value = 0.0;
+    const char* last = item.data() + item.size();
+    const char* from = item.data() + equals + 1;
+    if (from < last && *from == '+') ++from;
+    const auto [valueEnd, valueError] = std::from_chars(from, last, value);
+    if (valueError != std::errc() || valueEnd != last || !std::isfinite(value)) return std::nullopt;
+    return std::make_pair(n, value);
+}
+
 HeadlessOperator::HeadlessOperator(const RunOptions& options)
     : m_program(options.program.string()) {
     if (!options.userScreen) return;
@@ -22,7 +42,8 @@ HeadlessOperator::HeadlessOperator(const RunOptions& options)
         size_t start = 0;
         for (;;) {
             const size_t comma = option.find(',', start);
-            m_inputs.push_back(option.substr(start, comma - start));
+            std::string item = option.substr(start, comma - start);
+            if (!inputAssignment(item)) m_inputs.push_back(std::move(item));
             if (comma == std::string::npos) break;
             start = comma + 1;
         }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +44,10 @@ private:
     std::vector<std::string> m_inputs;
     size_t m_next = 0;
 };
+
+// An --operator-input item "IBn=value" (n 0-25): the value of IBn for the whole run, read by any
+// FAGOR program; nullopt for the user screen's answers (a key or a number).
+std::optional<std::pair<int, double>> inputAssignment(const std::string& item);
 
 // The mode named on the command line; nullopt if none.
 std::optional<fagor::UserMode> userModeFromName(const std::string& name);

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "app/runner/headless_operator.h"
 #include "app/runner/workpiece_origin.h"
 #include "core/machine/machine_loader.h"
 
@@ -74,6 +75,26 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     request.presetInMachine = origin;
     request.backgroundCheck = backgroundCheck;
     request.userScreen = userScreen;
+    // "IBn=value" items of --operator-input: the operator's inputs any FAGOR program may read.
+    for (const std::string& option : options.operatorInput) {
+        size_t start = 0;
+        for (;;) {
+            const size_t comma = option.find(',', start);
+            const std::string item = option.substr(start, comma - start);
+            if (auto assignment = inputAssignment(item)) {
+                request.operatorInputs.push_back(*assignment);
+            } else if (!userScreen) {
+                session->diagnostics.push_back(setupError(
+                    "",
+                    KERF_TR_NOOP("--operator-input '{1}': IBn=value expected (n 0-25); keys "
+                                 "and bare numbers need --user-screen"),
+                    item));
+                return session;
+            }
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+    }
     const fs::path stateDir = options.stateDir ? *options.stateDir : defaultStateDir();
     if (!stateDir.empty()) {
         std::error_code ignored;

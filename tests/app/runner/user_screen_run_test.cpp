@@ -96,6 +96,23 @@ TEST_F(UserScreenRun, ACustomisationProgramOutsideTheUserChannelFailsItsCheck) {
         << errors;
 }
 
+// IBn=value inputs reach an ordinary program (no user screen): X IB3 = 40, then X IB3 - IB1 =
+// 27.5 (diameters); anything else without --user-screen is refused before the run.
+TEST_F(UserScreenRun, InputAssignmentsReachAnOrdinaryProgram) {
+    std::ofstream(dir / "P000021.PIM") << "(P100=IB3)\n(P101=IB3 - IB1)\nG90 G00 XP100 Z0\n"
+                                          "G00 XP101\nM30\n";
+    ASSERT_EQ(run("P000021.PIM",
+                  "--operator-input IB3=40,IB1=12.5 --trace \"" + (dir / "t.txt").string() + "\""),
+              0)
+        << errors;
+    const std::string trace = read(dir / "t.txt");
+    EXPECT_NE(trace.find("RAPID X20.0000 Z0.0000"), std::string::npos) << trace;
+    EXPECT_NE(trace.find("RAPID X13.7500 Z0.0000"), std::string::npos) << trace;
+    EXPECT_EQ(run("P000021.PIM", "--operator-input 2.5"), 1);
+    EXPECT_NE(errors.find("--operator-input '2.5': IBn=value expected"), std::string::npos)
+        << errors;
+}
+
 TEST_F(UserScreenRun, OnlyFagorProgramsRunOnTheUserScreen) {
     { std::ofstream(dir / "A.H") << "BEGIN PGM A MM\nEND PGM A MM\n"; }
     const std::string command = std::string("\"") + KERF_BINARY + "\" run --user-screen edit \"" +
