@@ -6,6 +6,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "ui/common/block_name.h"
 #include "ui/status/override_controls.h"
@@ -187,9 +188,12 @@ void PositionDisplay::refresh() {
         const double value =
             shownValue(m_status.axes[i], m_settings.positionKind, r.diameter, inch, r.rotary);
         const int decimals = inch && !r.rotary ? 4 : 3;
+        // The sign of the value as shown: -0.0002 is +0.000, never -0.000.
+        const double scale = std::pow(10.0, decimals);
+        const double shown = std::round(value * scale) / scale;
         r.value->setText(QStringLiteral("%1%2")
-                             .arg(value < 0.0 ? QStringLiteral("-") : QStringLiteral("+"))
-                             .arg(std::abs(value), 0, 'f', decimals));
+                             .arg(shown < 0.0 ? QStringLiteral("-") : QStringLiteral("+"))
+                             .arg(std::abs(shown), 0, 'f', decimals));
         r.name->setStyleSheet(m_status.axes[i].homed ? QString()
                                                      : QStringLiteral("color: #b00000;"));
         r.notReferenced->setVisible(!m_status.axes[i].homed);

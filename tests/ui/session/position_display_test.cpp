@@ -73,6 +73,21 @@ TEST(PositionDisplay, ShowsTheLatheXAsDiameterAndFollowsTheSettings) {
     EXPECT_EQ(display.toolText(), "T 7");
 }
 
+TEST(PositionDisplay, AValueThatRoundsToZeroHasNoMinusSign) {
+    test::testApp();
+    auto mill = machine::loadMachine("mill");
+    ASSERT_TRUE(mill.ok());
+    PositionDisplay display(*mill);
+    task::MachineStatus status;
+    status.axes[0] = axisAt(-0.0004, -0.0004, 0.0, 0.0);  // rounds to 0.000
+    status.axes[1] = axisAt(-0.0006, -0.0006, 0.0, 0.0);  // rounds to -0.001
+    status.axes[2] = axisAt(-1e-12, -1e-12, 0.0, 0.0);
+    display.setStatus(status);
+    EXPECT_EQ(display.axisText(Axis::X), "+0.000");
+    EXPECT_EQ(display.axisText(Axis::Y), "-0.001");
+    EXPECT_EQ(display.axisText(Axis::Z), "+0.000");
+}
+
 TEST(PositionDisplay, MarksEachAxisNotReferencedUntilItIsHomed) {
     test::testApp();
     auto mill = machine::loadMachine("mill");
