@@ -12,52 +12,70 @@ namespace {
 constexpr uint32_t kMainProgram = 0;  // SourceRegistry: id 0 is the main program
 constexpr uint64_t kBlocksPerSlice = 2000;
 
-Vec2 planar(const Pose& pose) {
-    return {pose[Axis::X], pose[Axis::Y]};
-}
+// A move of the main program as it ran, projected once the FK elements' plane is known.
+struct RunMove {
+    SourceLocation at;
+    Pose from;
+    Pose to;
+    bool rapid = false;
+    std::optional<canon::ArcMove> arc;
+};
 
-// Collects the main program's moves in the XY plane; it follows the tool through every move.
+// Collects the main program's moves; it follows the tool through every move.
 class MoveCollector final : public canon::Sink {
 public:
-    MoveCollector(Pose start, std::vector<SketchMove>& out) : m_at(start), m_out(out) {}
+    explicit MoveCollector(Pose start) : m_at(start) {}
 
     void consume(const canon::Command& command) override {
         std::visit([&](const auto& body) { take(command.location, body); }, command.body);
     }
     const Pose& position() const { return m_at; }
 
+    // The moves in `plane`'s (first, second) coordinates, as the FK elements are; an arc in
+    // another plane is drawn as its chord.
+    std::vector<SketchMove> projected(Plane plane) const {
+        const PlaneAxes axes = planeAxes(plane);
+        auto planar = [&](const Pose& pose) { return Vec2(pose[axes.first], pose[axes.second]); };
+        auto planarPoint = [&](const Vec3& p) {
+            return Vec2(p[static_cast<int>(axes.first)], p[static_cast<int>(axes.second)]);
+        };
+        std::vector<SketchMove> out;
+        for (const RunMove& m : m_moves) {
+            const bool inPlane = m.arc && m.arc->plane == plane;
+            const PlanarSegment segment =
+                inPlane ? PlanarSegment::arc(planar(m.from), planarPoint(m.arc->center),
+                                             m.arc->sweepRad)
+                        : PlanarSegment::line(planar(m.from), planar(m.to));
+            if ((segment.start - segment.end).norm() < 1e-9 && !inPlane) continue;
+            out.push_back({m.at, segment, m.rapid});
+        }
+        return out;
+    }
+
 private:
     void take(const SourceLocation& at, const canon::RapidMove& move) {
-        add(at, PlanarSegment::line(planar(m_at), planar(move.target)), true);
-        m_at = move.target;
+        add(at, move.target, true, std::nullopt);
     }
     void take(const SourceLocation& at, const canon::LinearMove& move) {
-        add(at, PlanarSegment::line(planar(m_at), planar(move.target)), false);
-        m_at = move.target;
+        add(at, move.target, false, std::nullopt);
     }
     void take(const SourceLocation& at, const canon::ArcMove& move) {
-        const PlanarSegment segment =
-            move.plane == Plane::XY
-                ? PlanarSegment::arc(planar(m_at), {move.center.x(), move.center.y()},
-                                     move.sweepRad)
-                : PlanarSegment::line(planar(m_at), planar(move.target));
-        add(at, segment, false);
-        m_at = move.target;
+        add(at, move.target, false, move);
     }
     void take(const SourceLocation& at, const canon::ProbeMove& move) {
-        add(at, PlanarSegment::line(planar(m_at), planar(move.target)), false);
-        m_at = move.target;
+        add(at, move.target, false, std::nullopt);
     }
     template <typename Other>
     void take(const SourceLocation&, const Other&) {}
 
-    void add(const SourceLocation& at, const PlanarSegment& segment, bool rapid) {
-        if (at.fileId != kMainProgram || (segment.start - segment.end).norm() < 1e-9) return;
-        m_out.push_back({at, segment, rapid});
+    void add(const SourceLocation& at, const Pose& to, bool rapid,
+             std::optional<canon::ArcMove> arc) {
+        if (at.fileId == kMainProgram) m_moves.push_back({at, m_at, to, rapid, std::move(arc)});
+        m_at = to;
     }
 
     Pose m_at;
-    std::vector<SketchMove>& m_out;
+    std::vector<RunMove> m_moves;
 };
 
 }  // namespace
@@ -93,7 +111,7 @@ ProgramSketch sketchProgram(const machine::MachineConfig& machine, const Program
         return sketch;
     const size_t checked = interpreter->diagnostics().size();
     interpreter->traceFk(&sketch.fk);
-    MoveCollector moves(interpreter->nominalPosition(), sketch.moves);
+    MoveCollector moves(interpreter->nominalPosition());
     while (interpreter->blocksExecuted() < maxBlocks) {
         if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
             sketch.cancelled = true;
@@ -109,6 +127,7 @@ ProgramSketch sketchProgram(const machine::MachineConfig& machine, const Program
         if (status != interp::RunStatus::BudgetUsed) break;
     }
     interpreter->traceFk(nullptr);
+    sketch.moves = moves.projected(sketch.fk.plane);
     // Only the FK solver's findings: the rest of a run's errors belong to the test run.
     const DiagnosticList& all = interpreter->diagnostics();
     for (size_t i = checked; i < all.size(); ++i)

@@ -16,7 +16,8 @@
 // (docs/hmi.md, "FK programming graphics"). Qt-free; any thread.
 namespace kerf::task {
 
-// A move of the main program, projected on the XY plane (the contour around the FK elements).
+// A move of the main program in the FK elements' working plane (its first and second axes: X Y,
+// Z X or Y Z), the contour around them.
 struct SketchMove {
     SourceLocation at;
     PlanarSegment segment;

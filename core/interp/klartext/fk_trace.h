@@ -6,6 +6,7 @@
 
 #include "core/base/source_location.h"
 #include "core/geometry/offset_contour.h"
+#include "core/geometry/plane.h"
 
 // What the FK solver made of a program's FK blocks while it ran, for the programming graphics
 // (docs/hmi.md, "FK programming graphics"): every FK element with its geometry once it is
@@ -31,6 +32,8 @@ struct FkTrace {
     };
     std::vector<Element> elements;
     std::vector<Ambiguity> ambiguities;
+    // The working plane of the elements: their coordinates are its first and second axes.
+    Plane plane = Plane::XY;
 };
 
 }  // namespace kerf::klartext

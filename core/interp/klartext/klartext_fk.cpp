@@ -149,8 +149,10 @@ void KlartextInterpreter::executeFk(const FkBlock& block) {
     const size_t tag = m_fk.nextTag++;
     m_fk.blocks[tag] = FkBlockState{m_at, block.words, {}};
     const fk::FkElement element = scaled(inPlane, lengthScale());
-    if (m_fkTrace != nullptr)
+    if (m_fkTrace != nullptr) {
+        m_fkTrace->plane = m_fk.plane;
         m_fkTrace->elements.push_back({m_at, std::nullopt, givenEnd(element), sequenceStart});
+    }
     applyFkStep(m_fk.solver.add(element, tag, pole));
 }
 

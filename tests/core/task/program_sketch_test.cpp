@@ -149,6 +149,36 @@ TEST(ProgramSketch, AnElementStillOpenAtTheEndIsAnErrorAndDrawnAsOpen) {
     EXPECT_FALSE(sketch.fk.elements[0].givenEnd.has_value());
 }
 
+// Tool axis Y: FK works in the ZX plane (first axis Z, second X) and the moves around it are
+// drawn in the same coordinates. Block 3 goes from Z0 X0 to Z10; the FCT R10 DR+ turns to
+// Z20 X10 about Z10 X10 (tangent to the line, ending tangent to the FL AN+90 up X); block 6
+// goes from Z20 X30 back to Z0. Projected on XY both lines would have no length at all.
+TEST(ProgramSketch, FkInTheZxPlaneIsDrawnWithItsContourInZAndX) {
+    const ProgramSketch sketch = sketchOf(
+        "0 BEGIN PGM FK MM\n1 TOOL CALL 0 Y\n2 L X+0 Y+0 Z+0 R0 FMAX\n"
+        "3 L Z+10 F100\n4 FCT DR+ R10\n5 FL Z+20 X+30 AN+90\n6 L Z+0\n"
+        "7 END PGM FK MM\n");
+    ASSERT_EQ(fkError(sketch), nullptr);
+    EXPECT_EQ(sketch.fk.plane, Plane::ZX);
+    ASSERT_FALSE(sketch.fk.elements.empty());
+    ASSERT_TRUE(sketch.fk.elements[0].segment.has_value());
+    EXPECT_TRUE(near(sketch.fk.elements[0].segment->start, {10.0, 0.0}));
+    EXPECT_TRUE(near(sketch.fk.elements[0].segment->end, {20.0, 10.0}));
+    auto moveOf = [&](int64_t block) -> const SketchMove* {
+        for (const SketchMove& m : sketch.moves)
+            if (m.at.blockNumber == block) return &m;
+        return nullptr;
+    };
+    const SketchMove* three = moveOf(3);
+    const SketchMove* six = moveOf(6);
+    ASSERT_NE(three, nullptr);
+    ASSERT_NE(six, nullptr);
+    EXPECT_TRUE(near(three->segment.start, {0.0, 0.0}));
+    EXPECT_TRUE(near(three->segment.end, {10.0, 0.0}));
+    EXPECT_TRUE(near(six->segment.start, {20.0, 30.0}));
+    EXPECT_TRUE(near(six->segment.end, {0.0, 30.0}));
+}
+
 TEST(ProgramSketch, OnlyProgramsThatMayUseFkAreRun) {
     EXPECT_TRUE(mayUseFk("0 BEGIN PGM A MM\n3 FLT AN+0\n"));
     EXPECT_TRUE(mayUseFk("  12 FPOL X+0 Y+0\n"));
