@@ -123,10 +123,9 @@ bool KlartextInterpreter::captureFormula(std::optional<cycles::ContourFormula>& 
     std::vector<cycles::FormulaStep> islands;
     for (const ContourDefinition::Item& item : m_simpleContours.items) {
         cycles::FormulaContour contour;
-        const bool captured =
-            item.label ? captureLabelContour(*item.label, contour)
-                       : captureProgramContour(item.path, m_contourFolder, m_contourIsoCaller,
-                                               contour);
+        const bool captured = item.label ? captureLabelContour(*item.label, contour)
+                                         : captureProgramContour(item.path, m_contourFolder,
+                                                                 m_contourIsoCaller, contour);
         if (!captured) return false;
         contour.depth = std::fabs(item.depth);
         contour.island = item.island;
@@ -145,26 +144,36 @@ bool KlartextInterpreter::captureFormula(std::optional<cycles::ContourFormula>& 
     return true;
 }
 
-// Reads the definition program of SEL CONTOUR: Q parameter assignments, DECLARE CONTOUR and
-// formulas; the last formula is the contour.
-bool KlartextInterpreter::runDefinitionProgram(cycles::ContourFormula& out) {
-    auto path = calledProgramPath(m_contourProgram, m_contourFolder, m_contourIsoCaller);
+// A contour program (SEL CONTOUR's definition program or a contour description), loaded and
+// checked; nullptr after a failure that names it.
+const ProgramFile* KlartextInterpreter::loadContourProgram(const std::string& name,
+                                                           const std::filesystem::path& folder,
+                                                           bool isoCaller) {
+    auto path = calledProgramPath(name, folder, isoCaller);
     if (!path) {
         fail("path", path.error().messageTemplate.c_str(), path.error().args);
-        return false;
+        return nullptr;
     }
     std::string error;
     const ProgramFile* program = loadProgram(*path, &error, Origin::Called);
     if (program == nullptr) {
-        fail("io", KERF_TR_NOOP("cannot read the contour program {1}: {2}"),
-             {m_contourProgram, error});
-        return false;
+        fail("io", KERF_TR_NOOP("cannot read the contour program {1}: {2}"), {name, error});
+        return nullptr;
     }
     if (hasErrors(program->diagnostics)) {
         appendDiagnostics(m_diagnostics, program->diagnostics);
-        fail("call", KERF_TR_NOOP("the contour program {1} has errors"), {m_contourProgram});
-        return false;
+        fail("call", KERF_TR_NOOP("the contour program {1} has errors"), {name});
+        return nullptr;
     }
+    return program;
+}
+
+// Reads the definition program of SEL CONTOUR: Q parameter assignments, DECLARE CONTOUR and
+// formulas; the last formula is the contour.
+bool KlartextInterpreter::runDefinitionProgram(cycles::ContourFormula& out) {
+    const ProgramFile* program =
+        loadContourProgram(m_contourProgram, m_contourFolder, m_contourIsoCaller);
+    if (program == nullptr) return false;
     FormulaBuild build;
     build.folder = program->folder;
     build.isoCaller = program->syntax != nullptr;
@@ -248,22 +257,8 @@ bool KlartextInterpreter::captureLabelContour(const LabelTarget& label,
 bool KlartextInterpreter::captureProgramContour(const std::string& name,
                                                 const std::filesystem::path& folder, bool isoCaller,
                                                 cycles::FormulaContour& out) {
-    auto path = calledProgramPath(name, folder, isoCaller);
-    if (!path) {
-        fail("path", path.error().messageTemplate.c_str(), path.error().args);
-        return false;
-    }
-    std::string error;
-    const ProgramFile* program = loadProgram(*path, &error, Origin::Called);
-    if (program == nullptr) {
-        fail("io", KERF_TR_NOOP("cannot read the contour program {1}: {2}"), {name, error});
-        return false;
-    }
-    if (hasErrors(program->diagnostics)) {
-        appendDiagnostics(m_diagnostics, program->diagnostics);
-        fail("call", KERF_TR_NOOP("the contour program {1} has errors"), {name});
-        return false;
-    }
+    const ProgramFile* program = loadContourProgram(name, folder, isoCaller);
+    if (program == nullptr) return false;
     ChainRules rules;
     rules.formula = true;
     CapturedChain chain;

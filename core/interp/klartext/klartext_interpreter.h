@@ -338,6 +338,8 @@ private:
     bool captureLabelContour(const LabelTarget& label, cycles::FormulaContour& out);
     bool captureFormula(std::optional<cycles::ContourFormula>& out);
     bool runDefinitionProgram(cycles::ContourFormula& out);
+    const ProgramFile* loadContourProgram(const std::string& name,
+                                          const std::filesystem::path& folder, bool isoCaller);
     bool captureProgramContour(const std::string& name, const std::filesystem::path& folder,
                                bool isoCaller, cycles::FormulaContour& out);
     struct FormulaBuild;
@@ -352,6 +354,8 @@ private:
     workpiece::SimulatedWorkpiece simulatedPart() const;
     bool writeProtocol(int cycle, const char* name, const std::vector<std::string>& lines);
     bool applyDatum(int cycle, const cycles::probing::ProbingResults& results);
+    // PRESET.PR of the NC root, or the default table when there is none; nullopt after a failure.
+    std::optional<tables::PresetTable> presetTableToEdit(const std::filesystem::path& file);
     bool writePreset(int cycle, int row, const Pose& offset);
     bool applyBasicRotation(int cycle, const cycles::probing::ProbingResults& results);
     // klartext_probe_writes.cpp: 403/405's table turn, SPC of a preset row, the datum table.

@@ -60,13 +60,8 @@ bool KlartextInterpreter::applyRotaryCompensation(int cycle,
 bool KlartextInterpreter::writePresetRotation(int cycle, int row, double degrees) {
     if (!waitForCheck()) return false;
     const std::filesystem::path file = m_root.path() / "PRESET.PR";
-    auto bytes = m_root.read(file);
-    auto table = bytes ? tables::PresetTable::parse(*bytes, file.string())
-                       : tables::PresetTable::parse(tables::PresetTable::createDefault());
-    if (!table) {
-        failCycle({table.error().code, table.error().messageTemplate, table.error().args});
-        return false;
-    }
+    std::optional<tables::PresetTable> table = presetTableToEdit(file);
+    if (!table) return false;
     auto column = table->table().findColumn("SPC");
     if (!column) {
         fail("PRB-004",

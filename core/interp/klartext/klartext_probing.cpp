@@ -406,16 +406,23 @@ bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingRe
     return true;
 }
 
-bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
-    if (!waitForCheck()) return false;
-    const std::filesystem::path file = m_root.path() / "PRESET.PR";
+std::optional<tables::PresetTable> KlartextInterpreter::presetTableToEdit(
+    const std::filesystem::path& file) {
     auto bytes = m_root.read(file);
     auto table = bytes ? tables::PresetTable::parse(*bytes, file.string())
                        : tables::PresetTable::parse(tables::PresetTable::createDefault());
     if (!table) {
         failCycle({table.error().code, table.error().messageTemplate, table.error().args});
-        return false;
+        return std::nullopt;
     }
+    return std::move(*table);
+}
+
+bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
+    if (!waitForCheck()) return false;
+    const std::filesystem::path file = m_root.path() / "PRESET.PR";
+    std::optional<tables::PresetTable> table = presetTableToEdit(file);
+    if (!table) return false;
     if (table->byNumber(row) == nullptr) (void)table->addPreset(row);
     std::vector<Axis> axes{Axis::X, Axis::Y, Axis::Z};
     for (char letter : tableAxisLetters())
