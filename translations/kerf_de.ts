@@ -8184,6 +8184,30 @@ wählen</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
     </message>
+    <message>
+        <source>FUNCTION MODE MILL: the machine file sets the kinematics; &apos;{1}&apos; cannot be selected</source>
+        <translation>FUNCTION MODE MILL: die Kinematik legt die Maschinendatei fest; &apos;{1}&apos; kann nicht gewählt werden</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE TURN: this machine has no turning mode</source>
+        <translation>FUNCTION MODE TURN: diese Maschine hat keinen Drehbetrieb</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE: MILL or TURN expected</source>
+        <translation>FUNCTION MODE: MILL oder TURN erwartet</translation>
+    </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: eine ganze Anzahl Sätze von 0 bis 99</translation>
+    </message>
+    <message>
+        <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
+        <translation>CALL SELECTED PGM: mit SEL PGM wurde kein Programm gewählt</translation>
+    </message>
+    <message>
+        <source>M94 {1}: the machine has no rotary axis {1}</source>
+        <translation>M94 {1}: die Maschine hat keine Drehachse {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8184,6 +8184,30 @@ solución</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
     </message>
+    <message>
+        <source>FUNCTION MODE MILL: the machine file sets the kinematics; &apos;{1}&apos; cannot be selected</source>
+        <translation>FUNCTION MODE MILL: la cinemática la fija el fichero de máquina; no se puede seleccionar &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE TURN: this machine has no turning mode</source>
+        <translation>FUNCTION MODE TURN: esta máquina no tiene modo de torneado</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE: MILL or TURN expected</source>
+        <translation>FUNCTION MODE: se esperaba MILL o TURN</translation>
+    </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: un número entero de bloques de 0 a 99</translation>
+    </message>
+    <message>
+        <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
+        <translation>CALL SELECTED PGM: no se ha seleccionado ningún programa con SEL PGM</translation>
+    </message>
+    <message>
+        <source>M94 {1}: the machine has no rotary axis {1}</source>
+        <translation>M94 {1}: la máquina no tiene eje rotativo {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

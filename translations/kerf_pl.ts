@@ -8187,6 +8187,30 @@ rozwiązanie</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
     </message>
+    <message>
+        <source>FUNCTION MODE MILL: the machine file sets the kinematics; &apos;{1}&apos; cannot be selected</source>
+        <translation>FUNCTION MODE MILL: kinematykę ustala plik maszyny; nie można wybrać &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE TURN: this machine has no turning mode</source>
+        <translation>FUNCTION MODE TURN: ta maszyna nie ma trybu toczenia</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE: MILL or TURN expected</source>
+        <translation>FUNCTION MODE: oczekiwano MILL lub TURN</translation>
+    </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: całkowita liczba bloków od 0 do 99</translation>
+    </message>
+    <message>
+        <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
+        <translation>CALL SELECTED PGM: nie wybrano programu poleceniem SEL PGM</translation>
+    </message>
+    <message>
+        <source>M94 {1}: the machine has no rotary axis {1}</source>
+        <translation>M94 {1}: maszyna nie ma osi obrotowej {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8184,6 +8184,30 @@ solução</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
     </message>
+    <message>
+        <source>FUNCTION MODE MILL: the machine file sets the kinematics; &apos;{1}&apos; cannot be selected</source>
+        <translation>FUNCTION MODE MILL: a cinemática é fixada pelo ficheiro da máquina; &apos;{1}&apos; não pode ser selecionada</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE TURN: this machine has no turning mode</source>
+        <translation>FUNCTION MODE TURN: esta máquina não tem modo de torneamento</translation>
+    </message>
+    <message>
+        <source>FUNCTION MODE: MILL or TURN expected</source>
+        <translation>FUNCTION MODE: esperado MILL ou TURN</translation>
+    </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: um número inteiro de blocos de 0 a 99</translation>
+    </message>
+    <message>
+        <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
+        <translation>CALL SELECTED PGM: nenhum programa foi selecionado com SEL PGM</translation>
+    </message>
+    <message>
+        <source>M94 {1}: the machine has no rotary axis {1}</source>
+        <translation>M94 {1}: a máquina não tem eixo rotativo {1}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

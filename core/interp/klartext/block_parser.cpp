@@ -152,7 +152,49 @@ struct BlockParser::Context {
                 word.parameter = v;
             }
         }
+        if (word.number == 120 && cursor.acceptPrefix("LA")) return lookAhead(word);
+        if (word.number == 94) return reducedAxes(word);
+        if (word.number == 118) return handwheelLimits();
         return true;
+    }
+
+    // M120 LA n: how many blocks the radius compensation looks ahead (0 to 99).
+    bool lookAhead(MWord& word) {
+        double v = 0.0;
+        if (!value(v)) return false;
+        if (v < 0.0 || v > 99.0 || v != std::floor(v)) {
+            return valueError(KERF_TR_NOOP("M120 LA: a whole number of blocks from 0 to 99"));
+        }
+        word.parameter = v;
+        return true;
+    }
+
+    // M94 C: the rotary axes whose display is reduced, letters without values.
+    bool reducedAxes(MWord& word) {
+        for (;;) {
+            cursor.skipBlanks();
+            const std::string_view rest = cursor.text().substr(cursor.position());
+            if (rest.size() < 1) return true;
+            const auto axis = axisFromLetter(upper(rest[0]));
+            const char after = rest.size() > 1 ? rest[1] : ' ';
+            if (!axis || !(after == ' ' || after == '\t' || after == ';')) return true;
+            word.axes |= axisBit(*axis);
+            cursor.setPosition(cursor.position() + 1);
+        }
+    }
+
+    // M118 X.. Y..: how far the handwheel may move each axis during the run. The simulated
+    // machine has no handwheel, so the values are only read.
+    bool handwheelLimits() {
+        for (;;) {
+            cursor.skipBlanks();
+            const std::string_view rest = cursor.text().substr(cursor.position());
+            if (rest.size() < 2 || !axisFromLetter(upper(rest[0])) || !startsValue(rest[1]))
+                return true;
+            cursor.setPosition(cursor.position() + 1);
+            double v = 0.0;
+            if (!value(v)) return false;
+        }
     }
 
     bool parseAxis(Coordinates& coords, bool incremental) {
@@ -878,7 +920,12 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             out.statement = CallPgm{std::string(path)};
             return true;
         }
-        if (cur.acceptKeyword("SELECTED")) return deferred("CALL SELECTED PGM");
+        if (cur.acceptKeyword("SELECTED")) {
+            if (!cur.acceptKeyword("PGM")) return c.fail("syntax", KERF_TR_NOOP("PGM expected"));
+            if (!c.expectEnd()) return false;
+            out.statement = CallSelectedProgram{};
+            return true;
+        }
         return c.fail("syntax", KERF_TR_NOOP("LBL or PGM expected after CALL"));
     }
     if (head == "STOP") {
@@ -1074,6 +1121,27 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     if (head == "PATTERN" && cur.acceptKeyword("DEF")) {
         return parsePatternDef(line, cur.position(), out);
     }
+    if (head == "SEL" && cur.acceptKeyword("PGM")) {
+        // The name is quoted, a string parameter (known when the block runs) or written plain.
+        SelectProgram b;
+        const size_t at = cur.position();
+        if (auto quoted = cur.quoted()) {
+            b.path = std::string(*quoted);
+        } else if (auto ref = c.formula.parameter(true); ref && ref->kind == QKind::QS) {
+            b.path = m_env ? m_env->string(ref->index) : std::string();
+            b.fromParameter = true;
+            if (!c.expectEnd()) return false;
+            out.statement = std::move(b);
+            return true;
+        } else {
+            cur.setPosition(at);
+            b.path = std::string(cur.restUntilComment());
+        }
+        if (b.path.empty()) return c.fail("syntax", KERF_TR_NOOP("program name expected"));
+        if (!c.expectEnd()) return false;
+        out.statement = std::move(b);
+        return true;
+    }
     if (head == "SEL" && (cur.peekKeyword("TABLE") || cur.peekKeyword("PATTERN"))) {
         const bool table = cur.acceptKeyword("TABLE");
         if (!table) cur.acceptKeyword("PATTERN");
@@ -1097,6 +1165,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         return parseFk(head, line, cur.position(), out);
     }
     if (head == "PLANE") return parsePlane(line, cur.position(), out);
+    if (head == "FUNCTION" && cur.acceptKeyword("MODE")) return parseFunctionMode(cur, out);
     if (head == "FUNCTION") {
         bool handled = false;
         const bool ok = parseTcpm(line, cur.position(), out, handled);

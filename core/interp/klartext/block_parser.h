@@ -35,6 +35,8 @@ private:
     bool parsePlane(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     // FUNCTION TCPM / FUNCTION RESET TCPM; false with nothing reported for other FUNCTIONs.
     bool parseTcpm(const program::LogicalLine& line, size_t at, ParsedBlock& out, bool& handled);
+    // FUNCTION MODE MILL (after MODE): the only mode of a milling machine, so nothing changes.
+    bool parseFunctionMode(Cursor& cur, ParsedBlock& out);
     bool parseValue(Cursor& cursor, double& out);
     // FK free contour blocks (block_parser_fk.cpp); `head` is FPOL, FL, FLT, FC, FCT or FSELECT.
     bool parseFk(std::string_view head, const program::LogicalLine& line, size_t at,

@@ -185,4 +185,29 @@ bool BlockParser::parseTcpm(const program::LogicalLine& line, size_t at, ParsedB
     return true;
 }
 
+bool BlockParser::parseFunctionMode(Cursor& cur, ParsedBlock& out) {
+    cur.skipBlanks();
+    const size_t modeAt = cur.position();
+    if (cur.acceptKeyword("MILL")) {
+        // A kinematics name after MILL would switch the machine's kinematics, which Kerf's
+        // machine file fixes.
+        cur.skipBlanks();
+        const size_t nameAt = cur.position();
+        if (!cur.atEnd()) {
+            cur.setPosition(nameAt);
+            return failAt(nameAt, "not-supported",
+                          KERF_TR_NOOP("FUNCTION MODE MILL: the machine file sets the kinematics; "
+                                       "'{1}' cannot be selected"),
+                          {std::string(cur.restUntilComment())});
+        }
+        out.statement = Empty{};
+        return true;
+    }
+    if (cur.acceptKeyword("TURN")) {
+        return failAt(modeAt, "not-supported",
+                      KERF_TR_NOOP("FUNCTION MODE TURN: this machine has no turning mode"));
+    }
+    return failAt(modeAt, "syntax", KERF_TR_NOOP("FUNCTION MODE: MILL or TURN expected"));
+}
+
 }  // namespace kerf::klartext

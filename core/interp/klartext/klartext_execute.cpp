@@ -85,6 +85,8 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const PatternDefinition& b) { self.executePatternDef(b); }
         void operator()(const SelectTable& b) { self.executeSelectTable(b); }
         void operator()(const SelectPattern& b) { self.executeSelectPattern(b); }
+        void operator()(const SelectProgram& b) { self.m_selectedProgram = b.path; }
+        void operator()(const CallSelectedProgram&) { self.callSelectedProgram(); }
         void operator()(const SelectContour& b) { self.executeSelectContour(b); }
         void operator()(const DeclareContour& b) { self.executeDeclareContour(b); }
         void operator()(const ContourFormula& b) { self.executeContourFormula(b); }

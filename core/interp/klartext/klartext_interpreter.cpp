@@ -542,6 +542,14 @@ void KlartextInterpreter::checkCalledPrograms(const ProgramFile& program, Diagno
     }
 }
 
+void KlartextInterpreter::callSelectedProgram() {
+    if (m_selectedProgram.empty()) {
+        fail("call", KERF_TR_NOOP("CALL SELECTED PGM: no program was selected with SEL PGM"));
+        return;
+    }
+    callProgram(CallPgm{m_selectedProgram});
+}
+
 void KlartextInterpreter::callProgram(const CallPgm& call) {
     const ProgramFile& caller = *m_levels.back().program;
     auto path = calledProgramPath(call.path, caller.folder, caller.syntax != nullptr);

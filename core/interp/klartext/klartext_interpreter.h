@@ -212,7 +212,8 @@ private:
     void executeBlkForm(const BlkForm& blk);
     void executeMOnly(const CommonWords& words);
     void applyMFunctions(const MWords& m, bool atStart);
-    void reduceRotaryDisplay();  // M94
+    // M94: every rotary axis, or only those in `only` (M94 C).
+    void reduceRotaryDisplay(AxisMask only);
     bool hasM(const MWords& m, int number) const;
     void submitMove(const ContourElement& element, bool rapid, double feed,
                     const CommonWords& words);
@@ -239,6 +240,7 @@ private:
     void executePatternDef(const PatternDefinition& def);
     void executeSelectTable(const SelectTable& select);
     void executeSelectPattern(const SelectPattern& select);
+    void callSelectedProgram();  // CALL SELECTED PGM: the program of the last SEL PGM
     bool resolveParameters(const std::string& owner,
                            std::span<const cycles::ParameterDescriptor> descriptors,
                            const std::vector<CycleParameter>& written, cycles::CycleValues& values,
@@ -569,6 +571,7 @@ private:
     std::optional<std::vector<cycles::PatternPoint>> m_pattern;  // PATTERN DEF or point table
     std::optional<tables::DatumTable> m_datumTable;
     std::optional<std::filesystem::path> m_datumTablePath;  // SEL TABLE: probing writes it back
+    std::string m_selectedProgram;                          // SEL PGM, for CALL SELECTED PGM
     std::optional<tables::PresetTable> m_presetFile;
     std::optional<double> m_orientAngle;           // cycle 13
     std::optional<tables::ToolTable> m_toolTable;  // TOOL.T once a TT cycle has written it

@@ -117,7 +117,7 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 m_shortestRotary = n == 126;  // rotaryTarget(): the short way, from this block
                 break;
             case 94:
-                reduceRotaryDisplay();
+                reduceRotaryDisplay(word.axes);
                 break;
             case 128:
             case 129:
@@ -173,13 +173,24 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
     }
 }
 
-void KlartextInterpreter::reduceRotaryDisplay() {
+void KlartextInterpreter::reduceRotaryDisplay(AxisMask only) {
     if (!checkPathError(activePath().flush()) || m_settings.machine == nullptr) return;
+    for (int i = 0; i < kAxisCount; ++i) {
+        const Axis axis = static_cast<Axis>(i);
+        if ((only & axisBit(axis)) == 0) continue;
+        const machine::AxisConfig* config = m_settings.machine->axis(axisLetter(axis));
+        if (config == nullptr || config->type != machine::AxisType::Rotary || !config->enabled) {
+            fail("machine", KERF_TR_NOOP("M94 {1}: the machine has no rotary axis {1}"),
+                 {std::string(1, axisLetter(axis))});
+            return;
+        }
+    }
     // The axes stay where they are; their angles count from a whole turn nearer to 0, so that
     // the next absolute angle is reached the short way within the turn (TNC M94).
     for (const machine::AxisConfig& config : m_settings.machine->axes) {
         if (config.type != machine::AxisType::Rotary || !config.enabled) continue;
         const Axis axis = *axisFromLetter(config.letter);
+        if (only != 0 && (only & axisBit(axis)) == 0) continue;
         const double shown = m_programmed[axis];
         const double reduced = std::fmod(shown, 360.0);
         m_frame.addTurns(axis, shown - reduced);

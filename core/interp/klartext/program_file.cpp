@@ -256,6 +256,9 @@ void checkProgram(ProgramFile& program) {
                 }
             } else if (const auto* callPgm = std::get_if<CallPgm>(&s)) {
                 addCall(callPgm->path);
+            } else if (const auto* selected = std::get_if<SelectProgram>(&s)) {
+                // A name from a string parameter is only known when the block runs.
+                if (!selected->fromParameter) addCall(selected->path);
             } else if (const auto* table = std::get_if<SelectTable>(&s)) {
                 addTable(table->path, TableReference::Kind::Datum);
             } else if (const auto* pattern = std::get_if<SelectPattern>(&s)) {

@@ -46,8 +46,9 @@ struct FeedWord {
 
 struct MWord {
     int number = 0;
-    std::optional<double> parameter;  // M140 MB value
+    std::optional<double> parameter;  // M140 MB value, M120 LA block count
     bool maxParameter = false;        // M140 MB MAX
+    AxisMask axes = 0;                // M94 C: the rotary axes it reduces (0: all)
 };
 
 struct MWords {
@@ -174,6 +175,11 @@ struct CallLabel {
 struct CallPgm {
     std::string path;
 };
+struct SelectProgram {  // SEL PGM "name" / SEL PGM QSn, called later by CALL SELECTED PGM
+    std::string path;
+    bool fromParameter = false;  // QSn: the name is known only when the block runs
+};
+struct CallSelectedProgram {};
 struct StopBlock {
     MWords m;
 };
@@ -357,11 +363,12 @@ using Statement =
     std::variant<Empty, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, LinearBlock, CircleCenter,
                  CircleBlock, CircleRadiusBlock, CircleTangentBlock, RoundBlock, ChamferBlock,
                  LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock, ApproachBlock, Label,
-                 CallLabel, CallPgm, StopBlock, MFunctionBlock, QAssign, QStringAssign,
-                 ConditionalJump, ErrorBlock, PrintBlock, SysRead, CircleData, TableOpen,
-                 TableAccess, CycleDefinition, GlobalDefinition, PatternDefinition, SelectTable,
-                 SelectPattern, SelectContour, DeclareContour, ContourFormula, ContourDefinition,
-                 CycleCall, FkBlock, FkPole, FkSelect, PlaneBlock, TcpmBlock, Deferred>;
+                 CallLabel, CallPgm, SelectProgram, CallSelectedProgram, StopBlock, MFunctionBlock,
+                 QAssign, QStringAssign, ConditionalJump, ErrorBlock, PrintBlock, SysRead,
+                 CircleData, TableOpen, TableAccess, CycleDefinition, GlobalDefinition,
+                 PatternDefinition, SelectTable, SelectPattern, SelectContour, DeclareContour,
+                 ContourFormula, ContourDefinition, CycleCall, FkBlock, FkPole, FkSelect,
+                 PlaneBlock, TcpmBlock, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

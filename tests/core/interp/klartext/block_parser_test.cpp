@@ -182,6 +182,47 @@ TEST(BlockParser, ErrorsPointAtTheWord) {
     EXPECT_EQ(problem("LBL 0x").first, 5u);
 }
 
+// CAM post-processors for newer TNCs open every program with FUNCTION MODE MILL; a milling
+// machine is always in that mode, so the block changes nothing. Turning mode is refused at MODE's
+// operand.
+TEST(BlockParser, FunctionModeMillIsAcceptedAndTurnIsRefused) {
+    EXPECT_TRUE(std::holds_alternative<Empty>(parse("6 FUNCTION MODE MILL ;mode").statement));
+    EXPECT_EQ(problem("6 FUNCTION MODE TURN"),
+              std::make_pair(size_t{16}, std::string("FUNCTION MODE TURN: this machine has no "
+                                                     "turning mode")));
+    EXPECT_EQ(problem("6 FUNCTION MODE DRILL").second, "FUNCTION MODE: MILL or TURN expected");
+    EXPECT_EQ(problem("FUNCTION MODE MILL \"AC_TABLE\"").first, 19u);
+}
+
+// M functions with operands, as CAM output writes them: M120 LA (look-ahead blocks), M118 with
+// the handwheel's travel per axis, M94 with the axes it reduces.
+TEST(BlockParser, MFunctionsTakeTheirOperands) {
+    const auto la = first<LinearBlock>("L X+1 RL F100 M120 LA5").words.m;
+    ASSERT_EQ(la.count, 1);
+    EXPECT_EQ(la.list[0].number, 120);
+    EXPECT_EQ(la.list[0].parameter, 5.0);
+
+    const auto handwheel = first<LinearBlock>("L X+0 Y+38.5 RL F125 M118 X1 Y1");
+    EXPECT_DOUBLE_EQ(handwheel.coords[Axis::Y].value, 38.5);  // the block's own axes stay
+    EXPECT_EQ(handwheel.words.m.list[0].number, 118);
+    EXPECT_TRUE(std::holds_alternative<MFunctionBlock>(parse("M118 X+1 Y+1").statement));
+
+    const auto reduce = first<MFunctionBlock>("L M94 C").words.m.list[0];
+    EXPECT_EQ(reduce.axes, axisBit(Axis::C));
+    // M94 followed by a coordinate moves that axis after reducing all of them.
+    const auto move = first<LinearBlock>("L C+180 FMAX M94");
+    EXPECT_EQ(move.words.m.list[0].axes, 0);
+    EXPECT_DOUBLE_EQ(move.coords[Axis::C].value, 180);
+}
+
+TEST(BlockParser, SelPgmAndCallSelectedPgm) {
+    EXPECT_EQ(first<SelectProgram>("SEL PGM \"TNC:\\PARTS\\P1.H\"").path, "TNC:\\PARTS\\P1.H");
+    EXPECT_EQ(first<SelectProgram>("SEL PGM SUB.H ;next").path, "SUB.H");
+    EXPECT_TRUE(first<SelectProgram>("SEL PGM QS3").fromParameter);
+    EXPECT_TRUE(std::holds_alternative<CallSelectedProgram>(parse("CALL SELECTED PGM").statement));
+    EXPECT_EQ(problem("CALL SELECTED X").second, "PGM expected");
+}
+
 TEST(BlockParser, HeadWordSkipsNumbersAndSkipMarks) {
     EXPECT_EQ(BlockParser::headWord("12 /1 CYCL DEF 200"), "CYCL");
     EXPECT_EQ(BlockParser::headWord("Q1 = 2"), "Q");

@@ -167,6 +167,47 @@ TEST_F(InterpreterTest, TheCheckFollowsProgramCalls) {
     EXPECT_FALSE(hasErrors(fine->diagnostics()));
 }
 
+TEST_F(InterpreterTest, CallSelectedPgmCallsTheProgramOfTheLastSelPgm) {
+    // SUB moves 5 mm along X incrementally; it is selected by name, then by a string parameter.
+    writeFileAtomically(dir / "SUB.H", "0 BEGIN PGM SUB MM\n1 L IX+5 F100\n2 END PGM SUB MM\n");
+    auto k = make();
+    EXPECT_EQ(runText(*k,
+                      "0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 SEL PGM \"SUB.H\"\n"
+                      "3 L Y+1 FMAX\n4 CALL SELECTED PGM\n5 QS1 = \"SUB\"\n6 SEL PGM QS1\n"
+                      "7 CALL SELECTED PGM\n8 END PGM A MM\n"),
+              interp::RunStatus::Finished);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 10);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::Y], 1);
+
+    auto none = make();
+    EXPECT_EQ(runText(*none, "0 BEGIN PGM A MM\n1 CALL SELECTED PGM\n2 END PGM A MM\n"),
+              interp::RunStatus::Failed);
+    ASSERT_FALSE(none->diagnostics().empty());
+    EXPECT_EQ(none->diagnostics().back().messageTemplate,
+              "CALL SELECTED PGM: no program was selected with SEL PGM");
+
+    // A selected program named in the text is checked before the run, like CALL PGM.
+    writeFileAtomically(dir / "S.H", "0 BEGIN PGM S MM\n1 SEL PGM GONE.H\n2 END PGM S MM\n");
+    auto missing = make();
+    EXPECT_FALSE(missing->load(dir / "S.H"));
+    ASSERT_TRUE(hasErrors(missing->diagnostics()));
+    EXPECT_EQ(missing->diagnostics().back().line, 2u);
+}
+
+TEST_F(InterpreterTest, M120LookAheadIsAWholeNumberOfBlocksUpTo99) {
+    auto k = make();
+    EXPECT_EQ(runText(*k, "0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+0 R0 F100 M120 LA99\n2 END PGM A MM\n"),
+              interp::RunStatus::Finished);
+    auto bad = make();
+    EXPECT_EQ(runText(*bad,
+                      "0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+0 R0 F100 M120 LA100\n"
+                      "2 END PGM A MM\n"),
+              interp::RunStatus::Failed);
+    ASSERT_FALSE(bad->diagnostics().empty());
+    EXPECT_EQ(bad->diagnostics().back().messageTemplate,
+              "M120 LA: a whole number of blocks from 0 to 99");
+}
+
 TEST_F(InterpreterTest, NothingIsWrittenWhenACalledProgramHasAnError) {
     // The background check covers the called programs too: the F-PRINT before the call to a
     // faulty program must not write.

@@ -213,6 +213,19 @@ TEST_F(PlaneTest, EndlessAxisTurnsTheShortWayWithM126) {
     EXPECT_NEAR(k->nominalPosition()[Axis::C], 0.0, 1e-9);  // -10, 20, back to 0
 }
 
+// M94 with an axis letter reduces the axes it names (docs/klartext.md); an axis the machine lacks
+// is an error at the block, as on the TNC.
+TEST_F(PlaneTest, M94NamesOnlyRotaryAxesOfTheMachine) {
+    ASSERT_EQ(run("mill5", "1 M126\n2 L C+350 FMAX\n3 L IC+30 FMAX\n4 L C+0 FMAX M94 C\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(k->nominalPosition()[Axis::C], 0.0, 1e-9);  // as M94 without a letter
+    EXPECT_EQ(run("mill5", "1 L M94 A\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(firstError(), "M94 A: the machine has no rotary axis A");
+    EXPECT_EQ(run("mill5", "1 L M94 X\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(firstError(), "M94 X: the machine has no rotary axis X");
+}
+
 // TCPM: the tip stays at (0, 0, 50) on the part while B turns to 90: the table's Ry(-90) carries
 // it to the axes (-50, 0, 0); then C+90 with the tip at (10, 0, 50): Rz(-90) gives (0, -10, 50).
 TEST_F(PlaneTest, TcpmComputesTheAxesFromTheTip) {
