@@ -6,6 +6,7 @@
 
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
+#include "core/cycles/contour/train_rest.h"
 #include "core/cycles/detail/cycle_list.h"
 #include "core/cycles/pocket/milling_setup.h"
 
@@ -69,15 +70,10 @@ std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& c
 std::optional<CycleError> restRegion(const CycleValues& v, const CycleContext& ctx,
                                      const ContourArea& area, size_t level, const ContourData& d,
                                      Region& region) {
-    const int number = static_cast<int>(v.number(18));
-    std::optional<ToolInfo> coarse = ctx.toolByNumber ? ctx.toolByNumber(number) : std::nullopt;
-    if (!coarse) {
-        return CycleError{"cycle-tool",
-                          KERF_TR_NOOP("cycle {1}: tool {2} ({3}) is not in the tool table"),
-                          {"22", std::to_string(number), "Q18"}};
-    }
-    const Region coarseCentre = toolCentreRegion(area, coarse->radius + d.sideAllowance, level);
-    const Region cleared = offsetRegion(coarseCentre, coarse->radius);
+    ToolInfo coarse;
+    if (auto e = coarseTool(22, v, ctx, coarse)) return e;
+    const Region coarseCentre = toolCentreRegion(area, coarse.radius + d.sideAllowance, level);
+    const Region cleared = offsetRegion(coarseCentre, coarse.radius);
     const Region rest = subtract(offsetRegion(area.levels[level].area, -d.sideAllowance), cleared);
     region = rest.empty() ? Region{} : intersect(region, offsetRegion(rest, ctx.tool.radius));
     return std::nullopt;
