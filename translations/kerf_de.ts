@@ -7289,10 +7289,6 @@ zyklen</translation>
         <translation>Zyklus {1}: mit Zyklus 270 muss das Kontur-Unterprogramm ohne RL/RR programmiert sein (Q391 gibt die Seite vor)</translation>
     </message>
     <message>
-        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
-        <translation>Zyklus {1}: Restbearbeitung (Q18) wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>CONTOUR TRAIN</source>
         <translation>KONTUR-ZUG</translation>
     </message>
@@ -8077,10 +8073,6 @@ wählen</translation>
         <translation>FK: {1} ist keine Achse der Bearbeitungsebene</translation>
     </message>
     <message>
-        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
-        <translation>Zyklus {1}: kein Platz für das helixförmige Eintauchen (mit Zyklus 21 vorbohren oder ein über Mitte schneidendes Werkzeug verwenden)</translation>
-    </message>
-    <message>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 in einer Kontur braucht einen G00- oder G01-Punkt in X, Z</translation>
     </message>
@@ -8203,6 +8195,22 @@ wählen</translation>
     <message>
         <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
         <translation>CALL SELECTED PGM: mit SEL PGM wurde kein Programm gewählt</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge, and the reciprocating plunge needs the tool&apos;s LCUTS (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>Zyklus {1}: kein Platz für das helixförmige Eintauchen, und das pendelnde Eintauchen braucht die LCUTS des Werkzeugs (mit Zyklus 21 vorbohren oder ein über Mitte schneidendes Werkzeug verwenden)</translation>
+    </message>
+    <message>
+        <source>Axis of the first side length: 0 main axis, 1 secondary axis</source>
+        <translation>Achse der 1. Seitenlänge: 0 Hauptachse, 1 Nebenachse</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter must be at least half the slot width</source>
+        <translation>Zyklus {1}: der Werkzeugdurchmesser muss mindestens die halbe Nutbreite sein</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot is shorter than it is wide</source>
+        <translation>Zyklus {1}: die Nut ist kürzer als breit</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

@@ -7289,10 +7289,6 @@ fijos</translation>
         <translation>ciclo {1}: con el ciclo 270 el subprograma de contorno debe programarse sin RL/RR (Q391 da el lado)</translation>
     </message>
     <message>
-        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
-        <translation>ciclo {1}: el mecanizado de material residual (Q18) aún no está soportado</translation>
-    </message>
-    <message>
         <source>CONTOUR TRAIN</source>
         <translation>TRAZADO CONTORNO</translation>
     </message>
@@ -8077,10 +8073,6 @@ solución</translation>
         <translation>FK: {1} no es un eje del plano de mecanizado</translation>
     </message>
     <message>
-        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
-        <translation>ciclo {1}: no hay espacio para la profundización helicoidal (pretaladrar con el ciclo 21 o usar una herramienta con corte al centro)</translation>
-    </message>
-    <message>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 en un perfil necesita un punto G00 o G01 en X, Z</translation>
     </message>
@@ -8203,6 +8195,22 @@ solución</translation>
     <message>
         <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
         <translation>CALL SELECTED PGM: no se ha seleccionado ningún programa con SEL PGM</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge, and the reciprocating plunge needs the tool&apos;s LCUTS (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>ciclo {1}: no hay espacio para la profundización helicoidal, y la profundización pendular necesita la LCUTS de la herramienta (pretaladrar con el ciclo 21 o usar una herramienta de corte central)</translation>
+    </message>
+    <message>
+        <source>Axis of the first side length: 0 main axis, 1 secondary axis</source>
+        <translation>Eje de la primera longitud lateral: 0 eje principal, 1 eje secundario</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter must be at least half the slot width</source>
+        <translation>ciclo {1}: el diámetro de la herramienta debe ser al menos la mitad de la anchura de la ranura</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot is shorter than it is wide</source>
+        <translation>ciclo {1}: la ranura es más corta que ancha</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

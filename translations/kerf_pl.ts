@@ -7292,10 +7292,6 @@ stałe</translation>
         <translation>cykl {1}: z cyklem 270 podprogram konturu musi być zaprogramowany bez RL/RR (Q391 określa stronę)</translation>
     </message>
     <message>
-        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
-        <translation>cykl {1}: obróbka materiału resztkowego (Q18) nie jest jeszcze obsługiwana</translation>
-    </message>
-    <message>
         <source>CONTOUR TRAIN</source>
         <translation>LINIA KONTURU</translation>
     </message>
@@ -8080,10 +8076,6 @@ rozwiązanie</translation>
         <translation>FK: {1} nie jest osią płaszczyzny obróbki</translation>
     </message>
     <message>
-        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
-        <translation>cykl {1}: brak miejsca na wcięcie po linii śrubowej (nawiercić cyklem 21 lub użyć narzędzia tnącego przez środek)</translation>
-    </message>
-    <message>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 w profilu wymaga punktu G00 lub G01 w X, Z</translation>
     </message>
@@ -8206,6 +8198,22 @@ rozwiązanie</translation>
     <message>
         <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
         <translation>CALL SELECTED PGM: nie wybrano programu poleceniem SEL PGM</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge, and the reciprocating plunge needs the tool&apos;s LCUTS (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>cykl {1}: brak miejsca na wcinanie po linii śrubowej, a wcinanie ruchem wahadłowym wymaga LCUTS narzędzia (nawiercić wstępnie cyklem 21 lub użyć narzędzia tnącego przez środek)</translation>
+    </message>
+    <message>
+        <source>Axis of the first side length: 0 main axis, 1 secondary axis</source>
+        <translation>Oś pierwszej długości boku: 0 oś główna, 1 oś pomocnicza</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter must be at least half the slot width</source>
+        <translation>cykl {1}: średnica narzędzia musi wynosić co najmniej połowę szerokości rowka</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot is shorter than it is wide</source>
+        <translation>cykl {1}: rowek jest krótszy niż szeroki</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

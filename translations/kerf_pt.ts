@@ -7289,10 +7289,6 @@ fixos</translation>
         <translation>ciclo {1}: com o ciclo 270 o subprograma de contorno deve ser programado sem RL/RR (Q391 define o lado)</translation>
     </message>
     <message>
-        <source>cycle {1}: rest machining (Q18) is not supported yet</source>
-        <translation>ciclo {1}: a maquinagem de material residual (Q18) ainda não é suportada</translation>
-    </message>
-    <message>
         <source>CONTOUR TRAIN</source>
         <translation>TRAÇADO DE CONTORNO</translation>
     </message>
@@ -8077,10 +8073,6 @@ solução</translation>
         <translation>FK: {1} não é um eixo do plano de maquinagem</translation>
     </message>
     <message>
-        <source>cycle {1}: no room for the helical plunge (pre-drill with cycle 21 or use a centre-cutting tool)</source>
-        <translation>ciclo {1}: não há espaço para o afundamento helicoidal (pré-furar com o ciclo 21 ou usar uma ferramenta de corte pelo centro)</translation>
-    </message>
-    <message>
         <source>G53 in a profile needs a G00 or G01 point in X, Z</source>
         <translation>G53 num perfil precisa de um ponto G00 ou G01 em X, Z</translation>
     </message>
@@ -8203,6 +8195,22 @@ solução</translation>
     <message>
         <source>CALL SELECTED PGM: no program was selected with SEL PGM</source>
         <translation>CALL SELECTED PGM: nenhum programa foi selecionado com SEL PGM</translation>
+    </message>
+    <message>
+        <source>cycle {1}: no room for the helical plunge, and the reciprocating plunge needs the tool&apos;s LCUTS (pre-drill with cycle 21 or use a centre-cutting tool)</source>
+        <translation>ciclo {1}: não há espaço para a penetração helicoidal, e a penetração pendular precisa do LCUTS da ferramenta (pré-furar com o ciclo 21 ou usar uma ferramenta de corte ao centro)</translation>
+    </message>
+    <message>
+        <source>Axis of the first side length: 0 main axis, 1 secondary axis</source>
+        <translation>Eixo do primeiro comprimento lateral: 0 eixo principal, 1 eixo secundário</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the tool diameter must be at least half the slot width</source>
+        <translation>ciclo {1}: o diâmetro da ferramenta deve ser pelo menos metade da largura da ranhura</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the slot is shorter than it is wide</source>
+        <translation>ciclo {1}: a ranhura é mais curta do que larga</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

@@ -6,6 +6,7 @@
 
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
+#include "core/cycles/contour/train_rest.h"
 #include "core/cycles/detail/cycle_list.h"
 #include "core/cycles/pocket/milling_setup.h"
 
@@ -69,15 +70,10 @@ std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& c
 std::optional<CycleError> restRegion(const CycleValues& v, const CycleContext& ctx,
                                      const ContourArea& area, size_t level, const ContourData& d,
                                      Region& region) {
-    const int number = static_cast<int>(v.number(18));
-    std::optional<ToolInfo> coarse = ctx.toolByNumber ? ctx.toolByNumber(number) : std::nullopt;
-    if (!coarse) {
-        return CycleError{"cycle-tool",
-                          KERF_TR_NOOP("cycle {1}: tool {2} ({3}) is not in the tool table"),
-                          {"22", std::to_string(number), "Q18"}};
-    }
-    const Region coarseCentre = toolCentreRegion(area, coarse->radius + d.sideAllowance, level);
-    const Region cleared = offsetRegion(coarseCentre, coarse->radius);
+    ToolInfo coarse;
+    if (auto e = coarseTool(22, v, ctx, coarse)) return e;
+    const Region coarseCentre = toolCentreRegion(area, coarse.radius + d.sideAllowance, level);
+    const Region cleared = offsetRegion(coarseCentre, coarse.radius);
     const Region rest = subtract(offsetRegion(area.levels[level].area, -d.sideAllowance), cleared);
     region = rest.empty() ? Region{} : intersect(region, offsetRegion(rest, ctx.tool.radius));
     return std::nullopt;
@@ -99,6 +95,30 @@ std::optional<CycleError> roughingDepths(const CycleValues& v, const ContourArea
     return std::nullopt;
 }
 
+// Q404 = 1: the tool lifts between the separate rest areas (each outer boundary of the rest
+// region with its holes): the first pass in each area is reached from above.
+void liftBetweenAreas(std::vector<ClearingPass>& passes, const Region& region) {
+    auto areaOf = [&](const Vec2& p) {
+        size_t best = region.boundaries.size();
+        double bestArea = 0.0;
+        for (size_t i = 0; i < region.boundaries.size(); ++i) {
+            const double a = region.boundaries[i].signedArea();
+            if (a <= 0.0 || (best < region.boundaries.size() && a >= bestArea)) continue;
+            if (Region{{region.boundaries[i]}}.contains(p)) {
+                best = i;
+                bestArea = a;
+            }
+        }
+        return best;
+    };
+    size_t previous = region.boundaries.size();
+    for (ClearingPass& pass : passes) {
+        const size_t area = areaOf(pass.path.segments.front().start);
+        if (area != previous) pass.straightLink = false;
+        previous = area;
+    }
+}
+
 // A plunge of at most this many helix turns: an ANGLE near 0 on a small tool would make millions.
 constexpr double kMaxHelixTurns = 10000.0;
 
@@ -114,6 +134,8 @@ std::optional<CycleError> checkHelixTurns(const std::vector<double>& depths,
         if (auto e = plan(level)) return e;
         const double drop = depth - previous + d.setUpClearance;
         for (const ClearingPass& pass : *plans[level]) {
+            if (reciprocatingStrokes(pass, drop, helixTan) > kMaxHelixTurns)
+                return tooManyMoves(22);
             if (pass.helixRadius <= 0.0) continue;
             const double pitch = 2.0 * std::numbers::pi * pass.helixRadius * helixTan;
             if (drop > kMaxHelixTurns * pitch) return tooManyMoves(22);
@@ -161,9 +183,15 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             if (auto e = planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx),
                                       passes, ctx.clearingCache))
                 return e;
-            if (options.helixTan > 0.0 && !placeHelices(passes, room, radius)) {
+            if (v.number(18) > 0.0 && v.number(404) > 0.5) liftBetweenAreas(passes, region);
+            // Where no helix fits (a slot), reciprocating over LCUTS / tan(ANGLE) (spec).
+            const double strokes = options.helixTan > 0.0 && ctx.tool.cuttingLength > 0.0
+                                       ? ctx.tool.cuttingLength / options.helixTan
+                                       : 0.0;
+            if (options.helixTan > 0.0 && !placeHelices(passes, room, radius, strokes)) {
                 return CycleError{"cycle-plunge",
-                                  KERF_TR_NOOP("cycle {1}: no room for the helical plunge "
+                                  KERF_TR_NOOP("cycle {1}: no room for the helical plunge, and "
+                                               "the reciprocating plunge needs the tool's LCUTS "
                                                "(pre-drill with cycle 21 or use a centre-cutting "
                                                "tool)"),
                                   {"22"}};

@@ -7,6 +7,7 @@
 #include "core/cycles/contour/contour_train.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
+#include "core/cycles/contour/train_rest.h"
 #include "core/cycles/detail/cycle_list.h"
 #include "core/cycles/drilling/hole_levels.h"
 #include "core/cycles/pocket/milling_setup.h"
@@ -60,10 +61,6 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                                               "contour subprogram"));
     }
     if (auto e = checkDepthSign(276, 1, v.number(1), ctx)) return e;
-    if (v.number(18) != 0.0) {
-        return contourError(276, KERF_TR_NOOP("cycle {1}: rest machining (Q18) is not supported "
-                                              "yet"));
-    }
     const double up = v.number(1) > 0.0 ? -1.0 : 1.0;
     const double clearance = v.number(7);
     if ((path.w() - clearance) * up < -1e-9) {
@@ -76,6 +73,16 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (side != 0 && distance < 0.0) return pocket::toolTooLarge(276);
     const Chain centre = trainCentrePath(train, side, distance);
     if (centre.empty()) return pocket::toolTooLarge(276);
+    // Q18: only where the coarse tool left material (found in the plane), each piece from above.
+    std::vector<Chain> pieces{centre};
+    if (v.number(18) > 0.0) {
+        ToolInfo coarse;
+        if (auto e = coarseTool(276, v, ctx, coarse)) return e;
+        const Chain coarsePath = trainCentrePath(train, side, coarse.radius + v.number(3));
+        pieces = restPieces(centre, ctx.tool.radius, coarsePath, coarse.radius,
+                            {v.number(446), v.number(447), v.number(448)});
+        if (pieces.empty()) return std::nullopt;
+    }
     // Each pass lies `shift` above the programmed heights, the last on them.
     std::vector<double> shifts{0.0};
     const double depth = std::fabs(v.number(1));
@@ -91,28 +98,31 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     if (ctx.mirroredMain != ctx.mirroredSecondary) climb = !climb;
     const bool climbForward = side >= 0;
     const bool alternate = v.integer(15) == 0;
-    const Chain forward = centre;
-    const Chain backward = reversedChain(centre);
+    const bool fromAbove = !alternate || pieces.size() > 1 || v.number(18) > 0.0;
     const TrainApproach approach = readTrainApproach(ctx.trainData);
     const Feed plunge = v.feed(11);
     const Feed mill = v.feed(12);
+    bool first = true;
     for (size_t k = 0; k < shifts.size(); ++k) {
         const bool reverse = alternate && k % 2 == 1;
         const bool ahead = (climbForward == climb) != reverse;
-        const Chain& chain = ahead ? forward : backward;
         const int freeSide = side == 0 ? 1 : ahead ? side : -side;
-        const double startW = heightNear(train, chain.front().start, !ahead) + shifts[k];
-        if (k == 0 || !alternate) {
-            path.rapidW(clearance);
-            path.rapidUv(approachStart(approach, chain, freeSide));
-            path.moveW(startW, plunge);  // no set-up clearance in 276: from Q7 at Q11
-            approachPath(path, approach, chain, freeSide, mill);
-        } else {
-            path.moveW(startW, plunge);  // alternating: the infeed where the pass ended
-        }
-        followChain3d(path, chain, train, shifts[k], mill);
-        if (!alternate || k + 1 == shifts.size()) {
-            departPath(path, approach, chain, freeSide, mill);
+        for (size_t i = 0; i < pieces.size(); ++i) {
+            const Chain chain = ahead ? pieces[i] : reversedChain(pieces[pieces.size() - 1 - i]);
+            const double startW = heightNear(train, chain.front().start, !ahead) + shifts[k];
+            if (first || fromAbove) {
+                path.rapidW(clearance);
+                path.rapidUv(approachStart(approach, chain, freeSide));
+                path.moveW(startW, plunge);  // no set-up clearance in 276: from Q7 at Q11
+                approachPath(path, approach, chain, freeSide, mill);
+            } else {
+                path.moveW(startW, plunge);  // alternating: the infeed where the pass ended
+            }
+            first = false;
+            followChain3d(path, chain, train, shifts[k], mill);
+            if (fromAbove || k + 1 == shifts.size()) {
+                departPath(path, approach, chain, freeSide, mill);
+            }
         }
     }
     path.rapidW(clearance);

@@ -1,5 +1,6 @@
 #include "core/cycles/contour/sl_machining.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -317,9 +318,74 @@ void helixDown(CyclePath& path, const Vec2& centre, double toW, double tanAngle,
     if ((path.uv() - start).norm() > 1e-9) path.moveUv(start, feed);
 }
 
+// The first `length` of a closed path from its start (the last piece cut there).
+std::vector<PlanarSegment> pathStart(const ClosedContour& contour, double length) {
+    std::vector<PlanarSegment> piece;
+    double left = length;
+    for (const PlanarSegment& s : contour.segments) {
+        if (left <= 1e-9) break;
+        const double l = s.length();
+        if (l <= left + 1e-9) {
+            piece.push_back(s);
+            left -= l;
+            continue;
+        }
+        const double f = left / l;
+        piece.push_back(s.kind == PlanarSegment::Kind::Arc
+                            ? PlanarSegment::arc(s.start, s.center, s.sweep * f)
+                            : PlanarSegment::line(s.start, s.start + f * (s.end - s.start)));
+        left = 0.0;
+    }
+    return piece;
+}
+
+// Follows `piece` forwards or backwards while the tool axis goes linearly to `toW`.
+void stroke(CyclePath& path, const std::vector<PlanarSegment>& piece, bool forward, double toW,
+            const Feed& feed) {
+    double total = 0.0;
+    for (const PlanarSegment& s : piece)
+        total += s.length();
+    const double fromW = path.w();
+    double done = 0.0;
+    for (size_t i = 0; i < piece.size(); ++i) {
+        const PlanarSegment s = forward ? piece[i] : piece[piece.size() - 1 - i].reversed();
+        done += s.length();
+        const double w = fromW + (toW - fromW) * (total > 0.0 ? done / total : 1.0);
+        if (s.kind == PlanarSegment::Kind::Arc) {
+            path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
+        } else {
+            path.move({s.end.x(), s.end.y(), w}, feed);
+        }
+    }
+}
+
+// Down to `toW` to and fro along the path's first `length`, each stroke descending at most
+// tan(ANGLE) per unit of path, all strokes alike; then back to the start at the depth.
+void reciprocateDown(CyclePath& path, const ClosedContour& contour, double length, double toW,
+                     double tanAngle, const Feed& feed) {
+    const std::vector<PlanarSegment> piece = pathStart(contour, length);
+    const double drop = std::fabs(path.w() - toW);
+    const auto strokes =
+        static_cast<size_t>(std::max(1.0, std::ceil(drop / (length * tanAngle) - 1e-9)));
+    const double fromW = path.w();
+    bool forward = true;
+    for (size_t i = 1; i <= strokes; ++i) {
+        stroke(path, piece, forward,
+               fromW + (toW - fromW) * static_cast<double>(i) / static_cast<double>(strokes), feed);
+        forward = !forward;
+    }
+    if (!forward) stroke(path, piece, false, toW, feed);
+}
+
 }  // namespace
 
-bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius) {
+double reciprocatingStrokes(const ClearingPass& pass, double drop, double tanAngle) {
+    if (pass.strokeLength <= 0.0 || tanAngle <= 0.0) return 0.0;
+    return std::ceil(drop / (pass.strokeLength * tanAngle));
+}
+
+bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius,
+                  double strokeLength) {
     for (ClearingPass& pass : passes) {
         if (pass.straightLink) continue;
         const ClosedContour& ring = pass.path;
@@ -338,7 +404,12 @@ bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, doubl
                 }
             }
         }
-        if (!placed) return false;
+        if (placed) continue;
+        if (strokeLength <= 0.0) return false;
+        double perimeter = 0.0;
+        for (const PlanarSegment& seg : ring.segments)
+            perimeter += seg.length();
+        pass.strokeLength = std::min(strokeLength, perimeter / 2.0);
     }
     return true;
 }
@@ -359,6 +430,8 @@ void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const
             path.rapidW(reentryW);
             if (options.helixTan > 0.0 && pass.helixRadius > 0.0) {
                 helixDown(path, pass.helixCentre, w, options.helixTan, options.climb, plunge);
+            } else if (options.helixTan > 0.0 && pass.strokeLength > 0.0) {
+                reciprocateDown(path, pass.path, pass.strokeLength, w, options.helixTan, plunge);
             } else {
                 path.moveW(w, plunge);
             }

@@ -70,12 +70,21 @@ struct ClearingPass {
     // A helical plunge onto its start (cycle 22 with a tool ANGLE): radius 0 plunges straight.
     Vec2 helixCentre{0.0, 0.0};
     double helixRadius = 0.0;
+    // Where no helix fits: a reciprocating plunge to and fro along the pass's first
+    // `strokeLength` of path (0: none).
+    double strokeLength = 0.0;
 };
 
 // Places a helix of at most `radius` (and at least a quarter of it) for every pass reached by a
 // plunge: a circle through the pass's start whose disc stays inside `region` (the outermost
-// tool-centre region). False when some pass has no room for one.
-bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius);
+// tool-centre region). Where none fits and `strokeLength` > 0, the pass plunges reciprocating
+// along its own path over strokeLength (at most half the path) instead. False when some pass
+// has neither.
+bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius,
+                  double strokeLength = 0.0);
+
+// How many strokes the reciprocating plunge of `pass` makes over `drop` (0: it has none).
+double reciprocatingStrokes(const ClearingPass& pass, double drop, double tanAngle);
 
 // How the clearing runs beyond its feeds: `fullWidthFactor` scales the milling feed on the passes
 // that cut with the full circumference (Q401); `helixTan` > 0 plunges on the passes' helices

@@ -20,6 +20,10 @@ constexpr LegacyWordSlot kTappingSlots[] = {
 // 17.1 SET UP, 17.2 DEPTH, 17.3 PITCH
 constexpr LegacyWordSlot kRigidTappingSlots[] = {
     {1, K::Value, 1}, {2, K::Value, 2}, {3, K::Value, 3}};
+// 3.1 SET UP, 3.2 DEPTH, 3.3 PECKG F, 3.4 X (or Y: the slot's axis), 3.5 Y, 3.6 F
+constexpr LegacyWordSlot kSlotSlots[] = {{1, K::Value, 1}, {2, K::Value, 2}, {3, K::Value, 3},
+                                         {3, K::Feed, 4},  {4, K::Value, 5}, {4, K::Axis, 6},
+                                         {5, K::Value, 7}, {6, K::Feed, 8}};
 // 4.1 SET UP, 4.2 DEPTH, 4.3 PECKG F, 4.4 X, 4.5 Y, 4.6 F DR RADIUS
 constexpr LegacyWordSlot kPocketSlots[] = {
     {1, K::Value, 1}, {2, K::Value, 2}, {3, K::Value, 3},     {3, K::Feed, 4}, {4, K::Value, 5},
@@ -29,9 +33,10 @@ constexpr LegacyWordSlot kCircularPocketSlots[] = {
     {1, K::Value, 1}, {2, K::Value, 2}, {3, K::Value, 3},    {3, K::Feed, 4},
     {4, K::Value, 5}, {5, K::Feed, 6},  {5, K::Direction, 7}};
 
-const std::array<LegacyCycle, 5> kLegacyCycles = {{
+const std::array<LegacyCycle, 6> kLegacyCycles = {{
     {&kCycle1, kPeckingSlots, 5},
     {&kCycle2, kTappingSlots, 4},
+    {&kCycle3, kSlotSlots, 6},
     {&kCycle4, kPocketSlots, 6},
     {&kCycle5, kCircularPocketSlots, 5},
     {&kCycle17, kRigidTappingSlots, 3},

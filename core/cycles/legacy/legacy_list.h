@@ -8,7 +8,7 @@
 // them), and what their expansions share.
 namespace kerf::cycles {
 
-extern const CycleDescriptor kCycle1, kCycle2, kCycle4, kCycle5, kCycle17;
+extern const CycleDescriptor kCycle1, kCycle2, kCycle3, kCycle4, kCycle5, kCycle17;
 // The modern cycles they run as.
 extern const CycleDescriptor kCycle206, kCycle207, kCycle251, kCycle252;
 

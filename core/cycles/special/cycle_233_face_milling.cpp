@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "core/cycles/common_parameters.h"
+#include "core/cycles/cycle_path.h"
 #include "core/cycles/detail/cycle_list.h"
 #include "core/cycles/drilling/hole_levels.h"
 #include "core/cycles/pocket/pocket_parameters.h"
+#include "core/geometry/arc_math.h"
 
 namespace kerf::cycles {
 
@@ -138,6 +141,26 @@ Span spanOf(const CycleValues& v, int axis, double from, double length) {
     return s;
 }
 
+// Q220: where a wall across the paths meets a wall along them, the corner between them is
+// rounded with `radius`; a tool centre kept `distance` from the walls then stays on the arc of
+// radius - distance about the corner's centre (nothing changes while radius <= distance). The
+// paths' end `a` (at the wall across them, `end` or start) for the path at `b`.
+double cornerTrimmed(const Face& f, double a, double b, bool end, double radius, double distance) {
+    if (radius <= distance) return a;
+    const double wallA = end ? f.a.end : f.a.start;
+    const double towardA = end ? f.a.dir : -f.a.dir;
+    for (const bool bEnd : {false, true}) {
+        if (!(bEnd ? f.b.wallAtEnd : f.b.wallAtStart)) continue;
+        const double towardB = bEnd ? f.b.dir : -f.b.dir;
+        const double cb = (bEnd ? f.b.end : f.b.start) - towardB * radius;
+        const double beyond = (b - cb) * towardB;
+        if (beyond <= 0.0) continue;
+        const double r = radius - distance;
+        a = wallA - towardA * radius + towardA * std::sqrt(std::max(0.0, r * r - beyond * beyond));
+    }
+    return a;
+}
+
 // Depth levels: equal roughing infeeds to the floor allowance, then the floor.
 std::optional<CycleError> depthLevels(const CycleValues& v, const CycleContext& ctx,
                                       std::vector<double>& levels, bool& floorPass) {
@@ -215,6 +238,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         f.a = {f.a.end, f.a.start, -f.a.dir, false, true};
     }
     const double side = v.number(368);
+    const double corner = v.number(220);
     const double lateral = v.number(357);
     const double outside = radius + lateral;
     const bool overtravel = strategy == Strategy::Meander || strategy == Strategy::Lines;
@@ -262,7 +286,6 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             path.rapidUv(start1);
         }
         path.moveW(w, prePosition);
-        if (enclosed) path.moveUv(f.uv(aStart, bFirst), prePosition);
         if (strategy == Strategy::Spiral) {
             const double halfA = std::fabs(f.a.end - f.a.start) / 2.0;
             const double halfB = width / 2.0;
@@ -271,24 +294,32 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             continue;
         }
         const double step = n > 0 ? (bLast - bFirst) / n : 0.0;
+        const bool meander = strategy == Strategy::Meander || strategy == Strategy::MeanderOnEdge;
+        // The ends of the path at `b`: at a wall, short of a rounded corner (Q220).
+        auto farEnd = [&](double b) {
+            return f.a.wallAtEnd ? cornerTrimmed(f, aFar, b, true, corner, radius + side) : aFar;
+        };
+        auto nearEnd = [&](double a, double b) {
+            return enclosed ? cornerTrimmed(f, a, b, false, corner, radius + side) : a;
+        };
         for (int k = 0; k <= n; ++k) {
             const double b = bFirst + step * k;
+            const bool back = meander && k % 2 == 1;
             if (k > 0) {
                 if (strategy == Strategy::Lines || strategy == Strategy::LinesToEdge) {
                     path.rapidW(w + clearance);
-                    path.rapidUv(f.uv(aStart, b));
+                    path.rapidUv(f.uv(nearEnd(aStart, b), b));
                     path.moveW(w, prePosition);
                 } else {
-                    const Vec2 here = path.uv();
-                    const double a = f.alongMain ? here.x() : here.y();
+                    // The stepover from the end of the last path to the start of this one.
+                    const double a = back ? farEnd(b) : nearEnd(aNear, b);
                     path.moveUv(f.uv(a, b),
                                 strategy == Strategy::MeanderOnEdge ? v.feed(207) : prePosition);
                 }
+            } else if (enclosed) {
+                path.moveUv(f.uv(nearEnd(aStart, b), b), prePosition);
             }
-            const bool meander =
-                strategy == Strategy::Meander || strategy == Strategy::MeanderOnEdge;
-            const bool back = meander && k % 2 == 1;
-            path.moveUv(f.uv(back ? aNear : aFar, b), mill);
+            path.moveUv(f.uv(back ? nearEnd(aNear, b) : farEnd(b), b), mill);
         }
     }
 
@@ -307,27 +338,61 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             to = s.wallAtEnd ? s.end - s.dir * radius : s.end + s.dir * outside;
         };
         struct Wall {
-            bool across;  // a wall at an end of the paths (it runs along b)
-            double at;
+            bool across;    // a wall at an end of the paths (it runs along b)
+            double at;      // its own coordinate
+            double toward;  // from the face towards it
         };
         std::vector<Wall> list;
-        if (f.a.wallAtStart) list.push_back({true, f.a.start + f.a.dir * radius});
-        if (f.a.wallAtEnd) list.push_back({true, f.a.end - f.a.dir * radius});
-        if (f.b.wallAtStart) list.push_back({false, f.b.start + f.b.dir * radius});
-        if (f.b.wallAtEnd) list.push_back({false, f.b.end - f.b.dir * radius});
+        if (f.a.wallAtStart) list.push_back({true, f.a.start, -f.a.dir});
+        if (f.a.wallAtEnd) list.push_back({true, f.a.end, f.a.dir});
+        if (f.b.wallAtStart) list.push_back({false, f.b.start, -f.b.dir});
+        if (f.b.wallAtEnd) list.push_back({false, f.b.end, f.b.dir});
         for (const Wall& wall : list) {
+            const Span& along = wall.across ? f.b : f.a;
             double from = 0.0;
             double to = 0.0;
-            ends(wall.across ? f.b : f.a, from, to);
-            auto point = [&](double t) {
-                return wall.across ? f.uv(wall.at, t) : f.uv(t, wall.at);
+            ends(along, from, to);
+            // (the wall's axis, along it) to the plane.
+            auto point = [&](double x, double t) { return wall.across ? f.uv(x, t) : f.uv(t, x); };
+            const double line = wall.at - wall.toward * radius;  // the tool centre's line
+            // The pass: the wall's line, at a rounded corner (Q220 > R) on round it onto the
+            // other wall's line (a quarter arc of Q220 - R about the corner's centre).
+            std::vector<PlanarSegment> pass;
+            const double centre = wall.at - wall.toward * corner;
+            auto cornerArc = [&](double crossWall, double crossToward, bool into) {
+                const double c = crossWall - crossToward * corner;
+                const Vec2 onWall = point(line, c);
+                const Vec2 onCross = point(centre, crossWall - crossToward * radius);
+                const Vec2 m = point(centre, c);
+                const Vec2 p0 = into ? onWall : onCross;
+                const Vec2 p1 = into ? onCross : onWall;
+                const double turn = cross2(p0 - m, p1 - m) > 0.0 ? 1.0 : -1.0;
+                pass.push_back(PlanarSegment::arc(p0, m, turn * std::numbers::pi / 2.0));
+                return c;
             };
+            const bool rounded = corner > radius;
+            double a = from;
+            if (rounded && along.wallAtStart) a = cornerArc(along.start, -along.dir, false);
+            double b = to;
+            if (rounded && along.wallAtEnd) b = along.end - along.dir * corner;
+            if ((b - a) * along.dir > 1e-9)
+                pass.push_back(PlanarSegment::line(point(line, a), point(line, b)));
+            if (rounded && along.wallAtEnd) cornerArc(along.end, along.dir, true);
+            if (pass.empty()) continue;
             path.rapidW(top + clearance);
-            path.rapidUv(point(from));
+            path.rapidUv(pass.front().start);
             bool forward = true;
             for (double w : finishLevels) {
                 path.moveW(w, prePosition);
-                path.moveUv(point(forward ? to : from), v.feed(385));
+                for (size_t i = 0; i < pass.size(); ++i) {
+                    const PlanarSegment s =
+                        forward ? pass[i] : pass[pass.size() - 1 - i].reversed();
+                    if (s.kind == PlanarSegment::Kind::Arc) {
+                        path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, v.feed(385));
+                    } else {
+                        path.moveUv(s.end, v.feed(385));
+                    }
+                }
                 forward = !forward;
             }
         }

@@ -110,7 +110,8 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
     if (b.subNumber >= 0) {
         // Sub-blocks of the cycles Kerf runs are words with values; the others (12.1 PGM with
         // a file name, obsolete and SL cycles) stay text.
-        static constexpr int kWordCycles[] = {1, 2, 4, 5, 7, 8, 9, 10, 11, 13, 17, 18, 19, 26, 32};
+        static constexpr int kWordCycles[] = {1,  2,  3,  4,  5,  7,  8,  9,
+                                              10, 11, 13, 17, 18, 19, 26, 32};
         // Touch-probe sub-blocks with positions or a vector: 0.1, 1.2 and 4.2.
         const bool probeWords =
             probe && ((b.number == 0 && b.subNumber == 1) || (b.number == 1 && b.subNumber == 2) ||

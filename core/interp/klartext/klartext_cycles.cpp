@@ -8,6 +8,7 @@
 #include "core/cycles/global_def.h"
 #include "core/cycles/legacy/legacy_cycles.h"
 #include "core/cycles/parameter_check.h"
+#include "core/geometry/plane.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/point_table.h"
 
@@ -247,7 +248,7 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
                            [&](const Entry& e) { return e.number == def.number; });
     const cycles::LegacyCycle* legacy = cycles::findLegacyCycle(def.number);
     if (it == kHandlers.end() && legacy == nullptr) {
-        // Obsolete cycles Kerf does not run (3 slot milling ...): the header stops.
+        // Obsolete cycles Kerf does not run (210-215, 230, 231): the header stops.
         if (def.subNumber == 0) {
             fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
                  {std::to_string(def.number)});
@@ -305,6 +306,14 @@ void KlartextInterpreter::legacyCycle(const CycleDefinition& def,
     for (const cycles::LegacyWordSlot& slot : legacy.slots) {
         if (slot.subBlock != def.subNumber) continue;
         const cycles::ParameterDescriptor& p = d.parameters[slot.id - 1u];
+        if (slot.kind == cycles::LegacyWordKind::Axis) {
+            const char secondary = axisLetter(planeAxes(workingPlane()).second);
+            const bool onSecondary =
+                value != nullptr && value->key.size() == 1 && value->key.front() == secondary;
+            if (m_cycle && m_cycle->descriptor == &d)
+                m_cycle->values.set(slot.id, onSecondary ? 1.0 : 0.0);
+            continue;
+        }
         const cycles::CycleWord* w = slot.kind == cycles::LegacyWordKind::Value  ? value
                                      : slot.kind == cycles::LegacyWordKind::Feed ? feed
                                                                                  : direction;

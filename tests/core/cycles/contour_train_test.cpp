@@ -221,7 +221,7 @@ TEST(ContourTrain, Errors) {
     CycleContext none = ctx;
     none.train = ContourTrain{};
     EXPECT_TRUE(run(25, train(0.0, 1), none, out));
-    // Rest machining is not done yet.
+    // A coarse tool (Q18) that the tool table does not have.
     CycleValues rest = train(0.0, 1);
     rest.set(18, 2.0);
     EXPECT_TRUE(run(25, rest, ctx, out));
@@ -239,6 +239,62 @@ TEST(ContourTrain, Errors) {
     auto e = run(25, train(0.0, 1), withData, out);
     ASSERT_TRUE(e);
     EXPECT_NE(e->messageTemplate.find("without RL/RR"), std::string::npos);
+}
+
+// Rest machining (Q18): the path X0 -> X40 -> Y30 with RL has an inside corner at X40 Y0. The
+// coarse R5 ran at 5 beside it (Y5 to X35, X35 up); the fine R2 runs at 2 (Y2 to X38, X38 up).
+// Along the straight parts the fine tool stays 3 = 5 - 2 inside the coarse sweep; near the
+// corner its distance from the coarse corner (35, 5) is sqrt((x - 35)^2 + 9), above 3 + Q446
+// (0.01) for x > 35 + sqrt(3.01^2 - 9) = 35.245153, and likewise for y < 5 - 0.245153. With
+// Q448 = 2 the piece runs from X33.245153 Y2 to X38 Y2 to X38 Y6.754847, entered from above.
+TEST(ContourTrain, RestMachiningFollowsOnlyWhereTheCoarseToolLeftMaterial) {
+    CycleContext ctx = trainContext({PlanarSegment::line({0.0, 0.0}, {40.0, 0.0}),
+                                     PlanarSegment::line({40.0, 0.0}, {40.0, 30.0})});
+    ctx.train.side = 1;
+    ctx.tool.radius = 2.0;
+    ctx.toolByNumber = [](int number) {
+        ToolInfo coarse;
+        coarse.radius = 5.0;
+        return number == 7 ? std::optional<ToolInfo>(coarse) : std::nullopt;
+    };
+    CycleValues v = train(0.0, 1);
+    v.set(18, 7.0);
+    const double edge = std::sqrt(3.01 * 3.01 - 9.0);
+    // 276 the same on a contour programmed at Z-4 (Q1 = 0: one pass on its heights).
+    CycleContext ctx3d = ctx;
+    ctx3d.train.heights = {{-4.0, -4.0}, {-4.0, -4.0}};
+    CycleValues v3d = v;
+    v3d.set(1, 0.0);
+    for (const int cycle : {25, 276}) {
+        Recorder out;
+        ASSERT_FALSE(run(cycle, cycle == 25 ? v : v3d, cycle == 25 ? ctx : ctx3d, out)) << cycle;
+        const std::vector<Vec2> points = pathAt(out, -4.0);
+        ASSERT_EQ(points.size(), 3u) << cycle;
+        EXPECT_NEAR((points[0] - Vec2(35.0 + edge - 2.0, 2.0)).norm(), 0.0, 1e-6) << cycle;
+        EXPECT_NEAR((points[1] - Vec2(38.0, 2.0)).norm(), 0.0, 1e-9) << cycle;
+        EXPECT_NEAR((points[2] - Vec2(38.0, 5.0 - edge + 2.0)).norm(), 0.0, 1e-6) << cycle;
+    }
+    // A U (Y30 -> Y0 at X0, to X40, up to Y30): rest at both inner corners, pieces from Y6.755
+    // to X6.755 and from X33.245 to Y6.755, 26.49 apart along the floor: with Q447 = 10 two
+    // pieces, each entered from above (down to the surface Z0 over its start); Q447 = 30 joins
+    // them into one, run along the path at the depth.
+    CycleContext u = ctx;
+    u.train.segments = {PlanarSegment::line({0.0, 30.0}, {0.0, 0.0}),
+                        PlanarSegment::line({0.0, 0.0}, {40.0, 0.0}),
+                        PlanarSegment::line({40.0, 0.0}, {40.0, 30.0})};
+    for (const auto& [connection, entries] : {std::pair{10.0, 2u}, std::pair{30.0, 1u}}) {
+        v.set(447, connection);
+        Recorder out;
+        ASSERT_FALSE(run(25, v, u, out));
+        size_t downs = 0;
+        for (const Move& m : out.moves)
+            downs += std::fabs(m.target.z()) < 1e-9 ? 1u : 0u;
+        EXPECT_EQ(downs, entries) << connection;
+        const std::vector<Vec2> points = pathAt(out, -4.0);
+        ASSERT_FALSE(points.empty());
+        EXPECT_NEAR((points.front() - Vec2(2.0, 5.0 - edge + 2.0)).norm(), 0.0, 1e-6);
+        EXPECT_NEAR((points.back() - Vec2(38.0, 5.0 - edge + 2.0)).norm(), 0.0, 1e-6);
+    }
 }
 
 // Cycle 276 follows the heights of a 3-D path: the line X0..20 from Z-1 to Z-3 with R0 is

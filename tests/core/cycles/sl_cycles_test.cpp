@@ -2,6 +2,7 @@
 // the clearing rings and the errors. Values derived by hand in the comments.
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -416,6 +417,118 @@ TEST(SlCycles, PlungeOnAHelixAtTheToolsAngle) {
     ASSERT_TRUE(tooMany);
     EXPECT_EQ(tooMany->code, "cycle-limit");
     EXPECT_TRUE(tiny.moves.empty());
+}
+
+// Where no helix fits (spec: "e.g. a slot"), the tool reciprocates over LCUTS / tan(ANGLE) along
+// its path. The 12 x 60 pocket with R5: the tool-centre ring |u| <= 1, |v| <= 25 (perimeter
+// 104) has no room for a helix of 1.25. LCUTS 2, ANGLE 10: strokes of 2 / tan 10 = 11.343,
+// each descending at most 2. First plunge Z2 -> Z-5 (7): 4 strokes of 1.75, the last ending
+// at the start; the second Z-3 -> Z-10 the same. All on the ring, never steeper than ANGLE.
+TEST(SlCycles, PlungeReciprocatingWhereNoHelixFits) {
+    const CycleValues data = contourData(-10.0, 0.0, 0.0);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.tool.plungeAngleDeg = 10.0;
+    ctx.tool.cuttingLength = 2.0;
+    ctx.contours.push_back({rectangle(-6, -30, 6, 30), false, 1});
+    ctx.contourData = &data;
+    CycleValues v = roughOut(5.0);
+    v.set(19, 150.0);
+    Recorder out;
+    ASSERT_FALSE(run(22, v, ctx, out));
+    const double tanA = std::tan(10.0 * kPi / 180.0);
+    const double strokeLength = 2.0 / tanA;
+    for (const auto& [top, bottom] : {std::pair{2.0, -5.0}, std::pair{-3.0, -10.0}}) {
+        size_t i = 0;
+        while (i < out.moves.size() && !(out.moves[i].kind == Move::Rapid &&
+                                         std::fabs(out.moves[i].target.z() - top) < 1e-9))
+            ++i;
+        ASSERT_LT(i, out.moves.size()) << top;
+        const Vec3 start = out.moves[i].target;
+        Vec3 at = start;
+        double travelled = 0.0;
+        std::vector<double> strokeEnds;  // the heights where the tool is back at a stroke end
+        for (++i; i < out.moves.size() && at.z() > bottom + 1e-9; ++i) {
+            const Move& m = out.moves[i];
+            ASSERT_EQ(m.kind, Move::Line) << "the ring's strokes here are lines";
+            EXPECT_DOUBLE_EQ(m.feed.value, 150.0);
+            const double planar = std::hypot(m.target.x() - at.x(), m.target.y() - at.y());
+            ASSERT_GT(planar, 1e-9) << "no vertical plunge";
+            EXPECT_LE((at.z() - m.target.z()) / planar, tanA + 1e-9);
+            EXPECT_TRUE(std::fabs(std::fabs(m.target.x()) - 1.0) < 1e-9 ||
+                        std::fabs(std::fabs(m.target.y()) - 25.0) < 1e-9);
+            travelled += planar;
+            at = m.target;
+            if (std::fabs(std::fmod(travelled + 1e-6, strokeLength)) < 1e-5)
+                strokeEnds.push_back(at.z());
+        }
+        EXPECT_NEAR(at.z(), bottom, 1e-9);
+        EXPECT_NEAR(travelled, 4.0 * strokeLength, 1e-6);
+        ASSERT_EQ(strokeEnds.size(), 4u);
+        for (size_t k = 0; k < 4; ++k)
+            EXPECT_NEAR(strokeEnds[k], top - 1.75 * static_cast<double>(k + 1), 1e-9);
+        EXPECT_NEAR((Vec2(at.x(), at.y()) - Vec2(start.x(), start.y())).norm(), 0.0, 1e-9);
+    }
+    // Without LCUTS there is no reciprocating plunge either: the error stays.
+    ctx.tool.cuttingLength = 0.0;
+    Recorder none;
+    const auto error = run(22, v, ctx, none);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "cycle-plunge");
+}
+
+// Q404 = 1: between separate rest areas the tool lifts to Q6 above the surface. A 20 x 12
+// pocket after a coarse R5 (its centre reaches |u| <= 5, |v| <= 1): rest material in the four
+// corners, on the walls beyond |v| = 1 and |u| = 5, so the corners of one end are 2 apart
+// along the wall. For the fine R2 (room |u| <= 8, |v| <= 4) the rest grown by 2 keeps them
+// apart ((-8, 0) is sqrt 5 > 2 from the rest's nearest point (-10, 1)): four areas, each
+// plunged into from Q6 above the surface, one in each corner, the tool never below the
+// surface between them.
+TEST(SlCycles, FineRoughingStrategyLiftsBetweenRestAreas) {
+    const CycleValues data = contourData(-4.0, 0.0, 0.0);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 2.0;
+    ctx.contours.push_back({rectangle(-10, -6, 10, 6), false, 1});
+    ctx.contourData = &data;
+    ctx.toolByNumber = [](int) {
+        ToolInfo coarse;
+        coarse.radius = 5.0;
+        return std::optional<ToolInfo>(coarse);
+    };
+    CycleValues v = roughOut(0.0);
+    v.set(18, 7.0);
+    v.set(404, 1.0);
+    Recorder out;
+    ASSERT_FALSE(run(22, v, ctx, out));
+    // Plunges: a feed move straight down to the depth right after a rapid to Z2.
+    std::set<std::pair<bool, bool>> corners;
+    size_t plunges = 0;
+    for (size_t i = 1; i < out.moves.size(); ++i) {
+        const Move& before = out.moves[i - 1];
+        const Move& m = out.moves[i];
+        if (before.kind != Move::Rapid || std::fabs(before.target.z() - 2.0) > 1e-9 ||
+            m.kind == Move::Rapid) {
+            continue;
+        }
+        ASSERT_EQ(m.kind, Move::Line);
+        EXPECT_NEAR(m.target.z(), -4.0, 1e-9);
+        EXPECT_NEAR(
+            (Vec2(m.target.x(), m.target.y()) - Vec2(before.target.x(), before.target.y())).norm(),
+            0.0, 1e-9);
+        ++plunges;
+        corners.insert({m.target.x() > 0.0, m.target.y() > 0.0});
+    }
+    EXPECT_EQ(plunges, 4u);
+    EXPECT_EQ(corners.size(), 4u) << "one area in each corner";
+    // Every cut stays in the fine tool's room and beside the coarse reach: |u| >= 5 - 1e-6.
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Rapid || m.target.z() > 0.0) continue;
+        EXPECT_LE(std::fabs(m.target.x()), 8.0 + 1e-6);
+        EXPECT_LE(std::fabs(m.target.y()), 4.0 + 1e-6);
+        EXPECT_GE(std::fabs(m.target.x()), 5.0 - 1e-6);
+    }
 }
 
 // The clearing cache hands back a plan only for exactly the same region, step, direction and

@@ -1,4 +1,4 @@
-// The machining cycles of older TNCs (1, 2, 4, 5, 17) that shop programs still contain: each
+// The machining cycles of older TNCs (1, 2, 3, 4, 5, 17) that shop programs still contain: each
 // must do what the modern cycle it became does from the same start (docs/cycles.md), and the
 // pockets' extent and depths are checked by hand.
 #include <algorithm>
@@ -170,6 +170,44 @@ TEST_F(LegacyCycles, TappingCyclesRunAsTheirModernForms) {
             5);
     ASSERT_FALSE(rigid.empty());
     EXPECT_EQ(trace(rigid), trace(rigid207));
+}
+
+// Cycle 3 from X50 Y40 Z+2 with R3: a slot 30 long (+X), 10 wide, 4 deep in one infeed.
+// Allowance a = 5 - 3 = 2, tool-centre far end E = 30 - 6 = 24. By hand: rapid to X52; down
+// to Z-4 at F50; to X72 (E - a) at F200; half circle CCW about X73 onto X74; X74 Y42, X50 Y42,
+// X50 Y38, X74 Y38, X74 Y40; half circle back to X72; up to Z2; one infeed (odd): back to X50.
+TEST_F(LegacyCycles, SlotMillingRoughsAlongTheMiddleThenFinishesRoundTheWall) {
+    const auto slot =
+        run("4 CYCL DEF 3.0 SLOT MILLING\n5 CYCL DEF 3.1 SET UP 2\n6 CYCL DEF 3.2 DEPTH -4\n"
+            "7 CYCL DEF 3.3 PECKG 5 F50\n8 CYCL DEF 3.4 X+30\n9 CYCL DEF 3.5 Y+10\n"
+            "10 CYCL DEF 3.6 F200\n11 CYCL CALL\n",
+            11);
+    EXPECT_EQ(
+        trace(slot),
+        "RAPID X52.0000 Y40.0000 Z2.0000\n"
+        "LINE X52.0000 Y40.0000 Z-4.0000 F50.000\n"
+        "LINE X72.0000 Y40.0000 Z-4.0000 F200.000\n"
+        "ARC X74.0000 Y40.0000 Z-4.0000 CENTER X73.0000 Y40.0000 PLANE XY SWEEP 180.0000 F200.000\n"
+        "LINE X74.0000 Y42.0000 Z-4.0000 F200.000\n"
+        "LINE X50.0000 Y42.0000 Z-4.0000 F200.000\n"
+        "LINE X50.0000 Y38.0000 Z-4.0000 F200.000\n"
+        "LINE X74.0000 Y38.0000 Z-4.0000 F200.000\n"
+        "LINE X74.0000 Y40.0000 Z-4.0000 F200.000\n"
+        "ARC X72.0000 Y40.0000 Z-4.0000 CENTER X73.0000 Y40.0000 PLANE XY SWEEP 180.0000 F200.000\n"
+        "RAPID X72.0000 Y40.0000 Z2.0000\n"
+        "RAPID X50.0000 Y40.0000 Z2.0000\n");
+    std::string error;
+    run("4 CYCL DEF 3.0 SLOT MILLING\n5 CYCL DEF 3.1 SET UP 2\n6 CYCL DEF 3.2 DEPTH -4\n"
+        "7 CYCL DEF 3.3 PECKG 5\n8 CYCL DEF 3.4 X+30\n9 CYCL DEF 3.5 Y+5\n"
+        "10 CYCL DEF 3.6 F200\n11 CYCL CALL\n",
+        11, &error);
+    EXPECT_NE(error.find("cycle 3: the tool is too large"), std::string::npos) << error;
+    error.clear();
+    run("4 CYCL DEF 3.0 SLOT MILLING\n5 CYCL DEF 3.1 SET UP 2\n6 CYCL DEF 3.2 DEPTH -4\n"
+        "7 CYCL DEF 3.3 PECKG 5\n8 CYCL DEF 3.4 X+30\n9 CYCL DEF 3.5 Y+13\n"
+        "10 CYCL DEF 3.6 F200\n11 CYCL CALL\n",
+        11, &error);
+    EXPECT_NE(error.find("at least half the slot width"), std::string::npos) << error;
 }
 
 TEST_F(LegacyCycles, AMissingValueIsAnErrorAtItsSubBlock) {
