@@ -152,6 +152,18 @@ struct BlockParser::Context {
                 word.parameter = v;
             }
         }
+        if (word.number == 120 && cursor.acceptPrefix("LA")) return lookAhead(word);
+        return true;
+    }
+
+    // M120 LA n: how many blocks the radius compensation looks ahead (0 to 99).
+    bool lookAhead(MWord& word) {
+        double v = 0.0;
+        if (!value(v)) return false;
+        if (v < 0.0 || v > 99.0 || v != std::floor(v)) {
+            return valueError(KERF_TR_NOOP("M120 LA: a whole number of blocks from 0 to 99"));
+        }
+        word.parameter = v;
         return true;
     }
 

@@ -46,7 +46,7 @@ struct FeedWord {
 
 struct MWord {
     int number = 0;
-    std::optional<double> parameter;  // M140 MB value
+    std::optional<double> parameter;  // M140 MB value, M120 LA block count
     bool maxParameter = false;        // M140 MB MAX
 };
 
