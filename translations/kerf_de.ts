@@ -8184,6 +8184,10 @@ wählen</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
     </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: eine ganze Anzahl Sätze von 0 bis 99</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8184,6 +8184,10 @@ solución</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
     </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: un número entero de bloques de 0 a 99</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

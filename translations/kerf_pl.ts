@@ -8187,6 +8187,10 @@ rozwiązanie</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
     </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: całkowita liczba bloków od 0 do 99</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

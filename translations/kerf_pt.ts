@@ -8184,6 +8184,10 @@ solução</translation>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
     </message>
+    <message>
+        <source>M120 LA: a whole number of blocks from 0 to 99</source>
+        <translation>M120 LA: um número inteiro de blocos de 0 a 99</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
