@@ -367,7 +367,7 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
 
 void KlartextInterpreter::finish(bool emitEnd, int mCode) {
     if (!waitForCheck()) return;
-    if (!checkPathError(m_path.flush())) return;
+    if (!checkPathError(m_path.flush()) || !checkPathError(m_path.setLookAhead(0))) return;
     if (emitEnd && !m_endEmitted) {
         if (m_spindle != canon::SpindleDirection::Stopped) {
             emit(canon::SpindleControl{canon::SpindleDirection::Stopped, m_spindleSpeed});
@@ -551,6 +551,8 @@ void KlartextInterpreter::callSelectedProgram() {
 }
 
 void KlartextInterpreter::callProgram(const CallPgm& call) {
+    // Another program ends the look-ahead of M120.
+    if (!checkPathError(m_path.setLookAhead(0))) return;
     const ProgramFile& caller = *m_levels.back().program;
     auto path = calledProgramPath(call.path, caller.folder, caller.syntax != nullptr);
     if (!path) {

@@ -69,8 +69,9 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
     for (uint8_t i = 0; i < m.count && m_status != interp::RunStatus::Failed; ++i) {
         const MWord& word = m.list[i];
         const int n = word.number;
-        // TNC: M3 M4 M8 M13 M14 act at the start of the block, the others at its end.
-        const bool startFunction = n == 3 || n == 4 || n == 8 || n == 13 || n == 14;
+        // TNC: M3 M4 M8 M13 M14 and M120 LA act at the start of the block, the others at its end.
+        const bool startFunction = n == 3 || n == 4 || n == 8 || n == 13 || n == 14 ||
+                                   (n == 120 && word.parameter.has_value());
         if (startFunction != atStart) continue;
         switch (n) {
             case 3:
@@ -136,6 +137,16 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 } else {
                     emit(canon::MachineFunction{n});
                 }
+                break;
+            case 120:
+                // Radius compensation calculated LA blocks ahead; M120 alone or LA0 ends it.
+                if (!checkPathError(activePath().setLookAhead(
+                        word.parameter ? static_cast<int>(*word.parameter) : 0))) {
+                    return;
+                }
+                // M120 alone is passed on as before: some machines orient the spindle with it
+                // (cycle 13).
+                if (!word.parameter) emit(canon::MachineFunction{n});
                 break;
             case 140: {
                 // Retract along the tool axis: MB by a distance, MB MAX to the soft limit.
@@ -225,7 +236,8 @@ void KlartextInterpreter::executeToolDef(const ToolDef& def) {
 }
 
 void KlartextInterpreter::executeToolCall(const ToolCall& call) {
-    if (!checkPathError(m_path.flush())) return;
+    // A tool call ends the look-ahead of M120.
+    if (!checkPathError(m_path.flush()) || !checkPathError(m_path.setLookAhead(0))) return;
     const double scale = lengthScale();
     bool changed = false;
     if (call.number || call.name) {

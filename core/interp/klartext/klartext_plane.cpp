@@ -248,7 +248,10 @@ void KlartextInterpreter::workingPlane(const CycleDefinition& def) {
 }
 
 void KlartextInterpreter::applyTilt(const TiltRequest& request) {
-    if (!checkPathError(activePath().flush())) return;
+    // Tilting the working plane ends the look-ahead of M120.
+    if (!checkPathError(activePath().flush()) || !checkPathError(activePath().setLookAhead(0))) {
+        return;
+    }
     // Q120-Q122: the axis angles of the solution, for "L A+Q120 B+Q121 C+Q122".
     if (m_kinematics) {
         auto result = [this](char letter, double deg) {

@@ -10,7 +10,6 @@ namespace kerf::interp {
 namespace {
 
 constexpr double kEps = 1e-9;
-constexpr double kTangentTurn = 1e-7;  // radians below which a junction counts as tangent
 
 PathError error(const SourceLocation& at, const char* code, const char* message) {
     return PathError{at, code, message, {}};
@@ -32,6 +31,16 @@ void PathBuilder::reset(const Pose& toolPosition) {
     m_compAfter.clear();
     m_approach.reset();
     m_side = CompSide::None;
+    m_lookAhead = 0;
+    m_ahead.clear();
+    m_leftOutAtEnd = {};
+}
+
+std::optional<PathError> PathBuilder::setLookAhead(int blocks) {
+    if (blocks == m_lookAhead) return std::nullopt;
+    auto e = aheadDrain();
+    m_lookAhead = blocks;
+    return e;
 }
 
 double PathBuilder::signedOffset(CompSide side) const {
@@ -216,6 +225,7 @@ std::optional<PathError> PathBuilder::addDeparture(const ApproachSpec& spec) {
                      KERF_TR_NOOP("a rounding or chamfer must be followed by a contour element"));
     }
     if (auto e = forwardHeld()) return e;
+    if (auto e = aheadDrain()) return e;
     if (!m_comp || m_side == CompSide::None) {
         return error(spec.location, "contour",
                      KERF_TR_NOOP("a departure needs a compensated contour element before it"));
@@ -242,6 +252,7 @@ std::optional<PathError> PathBuilder::addDeparture(const ApproachSpec& spec) {
         }
     }
     m_side = CompSide::None;
+    m_lookAhead = 0;  // M120 ends with the compensation
     return std::nullopt;
 }
 
@@ -256,7 +267,11 @@ void PathBuilder::compCommand(canon::Command command) {
 }
 
 void PathBuilder::compFlushQueue() {
-    for (Queued& q : m_compAfter) {
+    emitQueued(m_compAfter);
+}
+
+void PathBuilder::emitQueued(std::vector<Queued>& queue) {
+    for (Queued& q : queue) {
         if (q.command) {
             m_sink.consume(*q.command);
         } else if (q.axialMove) {
@@ -266,10 +281,11 @@ void PathBuilder::compFlushQueue() {
             emitLine(target, q.axialMove->rapid, q.axialMove->feed, q.axialMove->location);
         }
     }
-    m_compAfter.clear();
+    queue.clear();
 }
 
 std::optional<PathError> PathBuilder::compFinishHeld() {
+    if (auto e = aheadDrain()) return e;
     if (!m_comp) return std::nullopt;
     Compensated held = *m_comp;
     m_comp.reset();
@@ -294,6 +310,7 @@ std::optional<PathError> PathBuilder::compMove(const PathMove& move) {
         }
         const bool wasCompensated = m_comp.has_value();
         if (auto e = compFinishHeld()) return e;
+        if (m_side != CompSide::None) m_lookAhead = 0;  // M120 ends with R0
         m_side = CompSide::None;
         if (move.geometry.kind == ContourElement::Kind::Arc) {
             if (wasCompensated &&
@@ -336,75 +353,132 @@ std::optional<PathError> PathBuilder::compMove(const PathMove& move) {
         m_side = move.side;
         return std::nullopt;
     }
+    if (m_lookAhead > 0) return aheadAdd(move);
     return compCorner(move);
 }
 
 std::optional<PathError> PathBuilder::compCorner(const PathMove& move) {
+    const Compensated& held = *m_comp;
+    JunctionOutcome out = joinAdjacent(held.tool, held.move.geometry, move.geometry,
+                                       signedOffset(move.side), held.activation);
+    if (!out.junction) {
+        return error(out.failure.swallowedLater ? move.location : held.move.location,
+                     "radius-too-large", out.failure.messageTemplate);
+    }
+    commitJunction(*out.junction, move, m_compAfter);
+    return std::nullopt;
+}
+
+void PathBuilder::commitJunction(const OffsetJunction& junction, const PathMove& next,
+                                 std::vector<Queued>& between) {
     Compensated& held = *m_comp;
-    const double offset = signedOffset(move.side);
-    auto next = offsetElement(move.geometry, offset);
-    if (!next) {
-        return error(move.location, "radius-too-large",
-                     KERF_TR_NOOP("tool radius too large for this arc"));
+    emitElement(junction.before, held.move);
+    emitQueued(between);
+    if (const auto& t = junction.transition) {
+        emitArc(t->plane, withPlanePoint(next.geometry, m_tool, t->end2()), t->center, t->sweep,
+                next.feed, next.location);
     }
-    const ContourElement& a = held.move.geometry;
-    const ContourElement& b = move.geometry;
-    std::optional<ContourElement> transition;
-    if (held.activation) {
-        Vec2 end = b.start2() + offset * leftNormal(b.startTangent());
-        held.tool = ContourElement::line(a.plane, held.tool.start, withPlanePoint(a, a.end, end));
-        if (!held.tool.movesInPlane()) held.tool.kind = ContourElement::Kind::Line;
-    } else {
-        const double turn = turnAngle(a, b);
-        const bool tangent = std::fabs(turn) < kTangentTurn;
-        const bool reversal = std::fabs(std::fabs(turn) - kPi) < kTangentTurn;
-        if (std::fabs(offset) < kEps || tangent) {
-            // Offsets of tangent elements meet at the same point.
-        } else if (reversal || offset * turn < 0.0) {
-            // Outside corner: arc around the programmed corner point.
-            double sweep = reversal ? (offset > 0.0 ? -kPi : kPi) : turn;
-            transition = ContourElement::arc(a.plane, held.tool.end, next->start, a.end2(), sweep);
-        } else {
-            // Inside corner: both offsets end at their intersection nearest to the corner.
-            std::vector<Vec2> points = intersectCarriers(held.tool, *next);
-            const Vec2 corner = a.end2();
-            const Vec2* best = nullptr;
-            for (const Vec2& p : points) {
-                if (!best || (p - corner).squaredNorm() < (*best - corner).squaredNorm()) best = &p;
-            }
-            if (!best) {
-                return error(move.location, "radius-too-large",
-                             KERF_TR_NOOP("tool radius too large"));
-            }
-            const double tHeld = held.tool.paramOf(*best);
-            const double tNext = next->paramOf(*best);
-            if (tHeld <= kEps) {
-                return error(
-                    held.move.location, "radius-too-large",
-                    KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
-            }
-            if (tNext >= 1.0 - kEps) {
-                return error(
-                    move.location, "radius-too-large",
-                    KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
-            }
-            held.tool = held.tool.sub(0.0, std::min(tHeld, 1.0));
-            *next = next->sub(std::max(tNext, 0.0), 1.0);
-            // Land exactly on the intersection despite rounding in sub().
-            held.tool.setInPlane(held.tool.end, *best);
-            next->setInPlane(next->start, *best);
-        }
-    }
-    emitElement(held.tool, held.move);
-    compFlushQueue();
-    if (transition) {
-        emitArc(transition->plane, withPlanePoint(b, m_tool, transition->end2()),
-                transition->center, transition->sweep, move.feed, move.location);
-    }
-    held.move = move;
-    held.tool = *next;
-    held.tool.start = withPlanePoint(b, held.tool.start, held.tool.inPlane(m_tool));
+    held.move = next;
+    held.tool = junction.after;
+    held.tool.start = withPlanePoint(next.geometry, held.tool.start, held.tool.inPlane(m_tool));
     held.activation = false;
+}
+
+// ---- look-ahead (M120) ------------------------------------------------------------------------
+
+std::optional<PathError> PathBuilder::aheadAdd(const PathMove& move) {
+    m_ahead.push_back(Ahead{move, std::move(m_compAfter), m_leftOutAtEnd});
+    m_compAfter.clear();
+    m_leftOutAtEnd = {};
+    // Every element after the held one counts against LA, the left-out ones too.
+    int seen = 0;
+    for (const Ahead& a : m_ahead)
+        seen += 1 + a.leftOut.count;
+    if (seen > m_lookAhead) return aheadCommit();
+    return std::nullopt;
+}
+
+// Runs the corner rules over the held elements; the element to leave out first, if any.
+std::optional<size_t> PathBuilder::aheadFindUndercut() const {
+    ContourElement tool = m_comp->tool;
+    ContourElement programmed = m_comp->move.geometry;
+    bool activation = m_comp->activation;
+    for (size_t i = 0; i < m_ahead.size(); ++i) {
+        const PathMove& move = m_ahead[i].move;
+        const double offset = signedOffset(move.side);
+        if (activation || m_ahead[i].leftOut.count == 0) {
+            JunctionOutcome out = joinAdjacent(tool, programmed, move.geometry, offset, activation);
+            if (!out.junction) {
+                // The first held element has begun already: the one after it goes instead.
+                return out.failure.swallowedLater || i == 0 ? i : i - 1;
+            }
+            tool = out.junction->after;
+        } else {
+            auto bridge = bridgeOffsets(tool, programmed, move.geometry, offset);
+            if (!bridge) return i;
+            tool = bridge->after;
+        }
+        programmed = move.geometry;
+        activation = false;
+    }
+    return std::nullopt;
+}
+
+// Leaves out one held element; what was queued around it keeps its place.
+std::optional<PathError> PathBuilder::aheadLeaveOut(size_t index) {
+    Ahead& gone = m_ahead[index];
+    const bool last = index + 1 == m_ahead.size();
+    LeftOut& run = last ? m_leftOutAtEnd : m_ahead[index + 1].leftOut;
+    std::vector<Queued>& following = last ? m_compAfter : m_ahead[index + 1].before;
+    LeftOut joined{gone.leftOut.count + 1 + run.count,
+                   gone.leftOut.count > 0 ? gone.leftOut.first : gone.move.location};
+    std::vector<Queued> queue = std::move(gone.before);
+    queue.insert(queue.end(), std::make_move_iterator(following.begin()),
+                 std::make_move_iterator(following.end()));
+    following = std::move(queue);
+    run = joined;
+    m_ahead.erase(m_ahead.begin() + static_cast<std::ptrdiff_t>(index));
+    if (joined.count > m_lookAhead) {
+        // More elements in a row would have to be left out than the look-ahead sees.
+        return error(joined.first, "radius-too-large",
+                     KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
+    }
+    return std::nullopt;
+}
+
+// Leaves out what cuts into the contour, then resolves the junction after the held element.
+std::optional<PathError> PathBuilder::aheadCommit() {
+    while (auto index = aheadFindUndercut()) {
+        if (auto e = aheadLeaveOut(*index)) return e;
+    }
+    if (m_ahead.empty()) return std::nullopt;  // the element after the left-out ones is to come
+    Ahead next = std::move(m_ahead.front());
+    m_ahead.erase(m_ahead.begin());
+    const Compensated& held = *m_comp;
+    const double offset = signedOffset(next.move.side);
+    std::optional<OffsetJunction> junction;
+    if (held.activation || next.leftOut.count == 0) {
+        junction =
+            joinAdjacent(held.tool, held.move.geometry, next.move.geometry, offset, held.activation)
+                .junction;
+    } else {
+        junction = bridgeOffsets(held.tool, held.move.geometry, next.move.geometry, offset);
+    }
+    commitJunction(*junction, next.move, next.before);
+    return std::nullopt;
+}
+
+std::optional<PathError> PathBuilder::aheadDrain() {
+    while (!m_ahead.empty()) {
+        if (auto e = aheadCommit()) return e;
+    }
+    if (m_leftOutAtEnd.count > 0) {
+        // Left-out elements at the end of the contour: no element after them to join.
+        const SourceLocation at = m_leftOutAtEnd.first;
+        m_leftOutAtEnd = {};
+        return error(at, "radius-too-large",
+                     KERF_TR_NOOP("tool radius too large: the offset swallows this element"));
+    }
     return std::nullopt;
 }
 

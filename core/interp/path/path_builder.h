@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/canon/commands.h"
+#include "core/interp/path/offset_junction.h"
 #include "core/interp/path/path_move.h"
 
 namespace kerf::interp {
@@ -17,6 +18,9 @@ namespace kerf::interp {
 //   - inside corners end at the intersection of the offset elements, and an element that the
 //     offset swallows is the "tool radius too large" error;
 //   - moves along the tool axis only keep the compensation and wait for the next contour element.
+// With look-ahead (TNC M120 LA n) the second stage holds up to n more elements: an element whose
+// offset would cut into the contour (the "tool radius too large" cases) is left out, and the
+// offsets before and after it are joined, up to n such elements in a row.
 // Non-motion commands keep their place in the stream.
 class PathBuilder {
 public:
@@ -26,6 +30,10 @@ public:
     void reset(const Pose& toolPosition);
     // Effective tool radius used by compensation (R + DR); set it with nothing pending.
     void setToolRadius(double radius) { m_radius = radius; }
+    // M120 LA n: how many compensated elements are calculated in advance (0: none). Resolves the
+    // elements held for the previous count. Compensation switched off ends the look-ahead.
+    std::optional<PathError> setLookAhead(int blocks);
+    int lookAhead() const { return m_lookAhead; }
 
     std::optional<PathError> addMove(const PathMove& move);
     std::optional<PathError> addRounding(double radius, std::optional<double> feed,
@@ -60,6 +68,17 @@ private:
         std::optional<canon::Command> command;
         std::optional<PathMove> axialMove;
     };
+    // Contour elements left out in a row by the look-ahead.
+    struct LeftOut {
+        int count = 0;
+        SourceLocation first;
+    };
+    // A compensated element held for look-ahead, with what came between it and the one before.
+    struct Ahead {
+        PathMove move;
+        std::vector<Queued> before;
+        LeftOut leftOut;  // the elements left out just before it
+    };
 
     // Stage 1 (corners) hands its output to stage 2 through these.
     std::optional<PathError> forwardHeld();
@@ -69,6 +88,14 @@ private:
     std::optional<PathError> compFinishHeld();
     std::optional<PathError> compCorner(const PathMove& move);
     void compFlushQueue();
+    void emitQueued(std::vector<Queued>& queue);
+    void commitJunction(const OffsetJunction& junction, const PathMove& next,
+                        std::vector<Queued>& between);
+    std::optional<PathError> aheadAdd(const PathMove& move);
+    std::optional<size_t> aheadFindUndercut() const;
+    std::optional<PathError> aheadLeaveOut(size_t index);
+    std::optional<PathError> aheadCommit();
+    std::optional<PathError> aheadDrain();
 
     double signedOffset(CompSide side) const;
     void emitElement(const ContourElement& element, const PathMove& move);
@@ -88,6 +115,10 @@ private:
     std::vector<Queued> m_compAfter;
     std::optional<ApproachSpec> m_approach;
     CompSide m_side = CompSide::None;
+    // Look-ahead (M120): the elements after m_comp.
+    int m_lookAhead = 0;
+    std::vector<Ahead> m_ahead;
+    LeftOut m_leftOutAtEnd;  // left out after the last element of m_ahead
 };
 
 }  // namespace kerf::interp
