@@ -8443,10 +8443,10 @@ CC</translation>
 %1</translation>
     </message>
     <message>
-        <source>Touch
-%1/%2</source>
-        <translation>Antasten
-%1/%2</translation>
+        <source>Touch %1
+%2/%3</source>
+        <translation>Tastpunkt %1
+%2/%3</translation>
     </message>
 </context>
 </TS>

@@ -37,6 +37,21 @@ size_t directionIndex(const Vec3& direction) {
     return 0;
 }
 
+// The function's short name, as on its key (the touch key names the function it serves).
+const char* functionName(ManualProbingFunction function) {
+    switch (function) {
+        case ManualProbingFunction::Rotation:
+            return "ROT";
+        case ManualProbingFunction::Position:
+            return "POS";
+        case ManualProbingFunction::Corner:
+            return "P";
+        case ManualProbingFunction::Circle:
+            return "CC";
+    }
+    return "";
+}
+
 // A value dialog with the probed value filled in; nothing when the operator cancels.
 std::optional<double> askValue(QWidget* parent, const QString& name, const QString& title,
                                const QString& label, double value) {
@@ -131,7 +146,8 @@ SoftkeyRow probingRow(const MachineRowContext& c) {
              if (refresh) refresh();
          }},
         {QStringLiteral("probeTouch"),
-         MachineRows::tr("Touch\n%1/%2")
+         MachineRows::tr("Touch %1\n%2/%3")
+             .arg(QLatin1String(functionName(session->manualProbingFunction())))
              .arg(session->manualTouchesDone())
              .arg(cycles::probing::manualTouchCount(session->manualProbingFunction())),
          [session, parent, refresh] {

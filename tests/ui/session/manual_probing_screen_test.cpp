@@ -158,7 +158,7 @@ protected:
 };
 
 TEST_F(ManualProbingScreen, ProbingPosSetsTheDatumOnTheTurnedLeftFace) {
-    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch\n0/1"));
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch POS\n0/1"));
     press("probePosition");
     chooseDirection(QStringLiteral("X+"));
     moveTo(-10, 20, -5);  // the ball centre at (-10, 20, -3)
@@ -176,16 +176,16 @@ TEST_F(ManualProbingScreen, ProbingPosSetsTheDatumOnTheTurnedLeftFace) {
     const double presetX = machineFilePreset(machine)[Axis::X] + measured;
     EXPECT_NEAR(session->presetInMachine()[Axis::X], presetX, 1e-9);
     EXPECT_NEAR(*row0().axis('X'), presetX, 1e-4);
-    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch\n1/1"));
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch POS\n1/1"));
 }
 
 TEST_F(ManualProbingScreen, ProbingRotWritesTheEdgesMisalignmentAsBasicRotation) {
     press("probeRotation");
-    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch\n0/2"));
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch ROT\n0/2"));
     chooseDirection(QStringLiteral("Y+"));
     moveTo(20, -10, -5);
     touch();
-    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch\n1/2"));
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch ROT\n1/2"));
     moveTo(80, -10, -5);
     DialogAnswers answers({0.7});
     touch();
