@@ -269,6 +269,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>Der NOT-HALT-Kreis ist noch offen</translation>
     </message>
+    <message>
+        <source>Probing: the stylus is deflected already</source>
+        <translation>Antasten: der Taststift ist bereits ausgelenkt</translation>
+    </message>
+    <message>
+        <source>Probing: no touch within %1 mm</source>
+        <translation>Antasten: keine Berührung innerhalb von %1 mm</translation>
+    </message>
+    <message>
+        <source>The basic rotation could not be saved in PRESET.PR: %1</source>
+        <translation>Die Grunddrehung konnte nicht in PRESET.PR gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
+        <translation>Antasten: noch kein Werkstück bekannt: zuerst sein Programm (BLK FORM) ausführen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8213,6 +8229,22 @@ wählen</translation>
         <translation>Zyklus {1}: die Nut ist kürzer als breit</translation>
     </message>
     <message>
+        <source>manual probing: call the touch probe with TOOL CALL first (MDI)</source>
+        <translation>manuelles Antasten: zuerst das Tastsystem mit TOOL CALL aufrufen (MDI)</translation>
+    </message>
+    <message>
+        <source>manual probing: tool {1} is not in TOOL.T</source>
+        <translation>manuelles Antasten: Werkzeug {1} steht nicht in TOOL.T</translation>
+    </message>
+    <message>
+        <source>manual probing: probe {1} is not in tchprobe.tp</source>
+        <translation>manuelles Antasten: Tastsystem {1} steht nicht in tchprobe.tp</translation>
+    </message>
+    <message>
+        <source>{1} has no SPC column for the basic rotation</source>
+        <translation>{1} hat keine Spalte SPC für die Grunddrehung</translation>
+    </message>
+    <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: die Maschine hat keine Drehachse {1}</translation>
     </message>
@@ -8387,6 +8419,66 @@ setzen</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S in 1/min (%1 bis %2)</translation>
+    </message>
+    <message>
+        <source>Probing: the touches give no result</source>
+        <translation>Antasten: die Antastpunkte ergeben kein Ergebnis</translation>
+    </message>
+    <message>
+        <source>Probing ROT</source>
+        <translation>Antasten ROT</translation>
+    </message>
+    <message>
+        <source>Basic rotation in degrees (OK writes it to the preset table)</source>
+        <translation>Grunddrehung in Grad (OK schreibt sie in die Preset-Tabelle)</translation>
+    </message>
+    <message>
+        <source>Probing CC: diameter %1 mm</source>
+        <translation>Antasten CC: Durchmesser %1 mm</translation>
+    </message>
+    <message>
+        <source>Probing</source>
+        <translation>Antasten</translation>
+    </message>
+    <message>
+        <source>Probed %1 = %2: the datum value there</source>
+        <translation>Angetastet %1 = %2: Wert des Bezugspunkts dort</translation>
+    </message>
+    <message>
+        <source>Probing
+ROT</source>
+        <translation>Antasten
+ROT</translation>
+    </message>
+    <message>
+        <source>Probing
+POS</source>
+        <translation>Antasten
+POS</translation>
+    </message>
+    <message>
+        <source>Probing
+P</source>
+        <translation>Antasten
+P</translation>
+    </message>
+    <message>
+        <source>Probing
+CC</source>
+        <translation>Antasten
+CC</translation>
+    </message>
+    <message>
+        <source>Direction
+%1</source>
+        <translation>Richtung
+%1</translation>
+    </message>
+    <message>
+        <source>Touch %1
+%2/%3</source>
+        <translation>Tastpunkt %1
+%2/%3</translation>
     </message>
 </context>
 </TS>

@@ -269,6 +269,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>El circuito de emergencia sigue abierto</translation>
     </message>
+    <message>
+        <source>Probing: the stylus is deflected already</source>
+        <translation>Palpación: el palpador ya está desviado</translation>
+    </message>
+    <message>
+        <source>Probing: no touch within %1 mm</source>
+        <translation>Palpación: ningún contacto en %1 mm</translation>
+    </message>
+    <message>
+        <source>The basic rotation could not be saved in PRESET.PR: %1</source>
+        <translation>No se pudo guardar el giro básico en PRESET.PR: %1</translation>
+    </message>
+    <message>
+        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
+        <translation>Palpación: aún no se conoce ninguna pieza: ejecute primero su programa (BLK FORM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8213,6 +8229,22 @@ solución</translation>
         <translation>ciclo {1}: la ranura es más corta que ancha</translation>
     </message>
     <message>
+        <source>manual probing: call the touch probe with TOOL CALL first (MDI)</source>
+        <translation>palpación manual: llame primero al palpador con TOOL CALL (MDI)</translation>
+    </message>
+    <message>
+        <source>manual probing: tool {1} is not in TOOL.T</source>
+        <translation>palpación manual: la herramienta {1} no está en TOOL.T</translation>
+    </message>
+    <message>
+        <source>manual probing: probe {1} is not in tchprobe.tp</source>
+        <translation>palpación manual: el palpador {1} no está en tchprobe.tp</translation>
+    </message>
+    <message>
+        <source>{1} has no SPC column for the basic rotation</source>
+        <translation>{1} no tiene columna SPC para el giro básico</translation>
+    </message>
+    <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: la máquina no tiene eje rotativo {1}</translation>
     </message>
@@ -8388,6 +8420,66 @@ punto ref.</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S en rpm (%1 a %2)</translation>
+    </message>
+    <message>
+        <source>Probing: the touches give no result</source>
+        <translation>Palpación: los puntos palpados no dan resultado</translation>
+    </message>
+    <message>
+        <source>Probing ROT</source>
+        <translation>Palpación ROT</translation>
+    </message>
+    <message>
+        <source>Basic rotation in degrees (OK writes it to the preset table)</source>
+        <translation>Giro básico en grados (OK lo escribe en la tabla de presets)</translation>
+    </message>
+    <message>
+        <source>Probing CC: diameter %1 mm</source>
+        <translation>Palpación CC: diámetro %1 mm</translation>
+    </message>
+    <message>
+        <source>Probing</source>
+        <translation>Palpación</translation>
+    </message>
+    <message>
+        <source>Probed %1 = %2: the datum value there</source>
+        <translation>Palpado %1 = %2: valor del punto de referencia allí</translation>
+    </message>
+    <message>
+        <source>Probing
+ROT</source>
+        <translation>Palpación
+ROT</translation>
+    </message>
+    <message>
+        <source>Probing
+POS</source>
+        <translation>Palpación
+POS</translation>
+    </message>
+    <message>
+        <source>Probing
+P</source>
+        <translation>Palpación
+P</translation>
+    </message>
+    <message>
+        <source>Probing
+CC</source>
+        <translation>Palpación
+CC</translation>
+    </message>
+    <message>
+        <source>Direction
+%1</source>
+        <translation>Dirección
+%1</translation>
+    </message>
+    <message>
+        <source>Touch %1
+%2/%3</source>
+        <translation>Palpar %1
+%2/%3</translation>
     </message>
 </context>
 </TS>

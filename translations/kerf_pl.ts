@@ -270,6 +270,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>Obwód wyłącznika awaryjnego jest nadal otwarty</translation>
     </message>
+    <message>
+        <source>Probing: the stylus is deflected already</source>
+        <translation>Pomiar: trzpień jest już wychylony</translation>
+    </message>
+    <message>
+        <source>Probing: no touch within %1 mm</source>
+        <translation>Pomiar: brak styku w zakresie %1 mm</translation>
+    </message>
+    <message>
+        <source>The basic rotation could not be saved in PRESET.PR: %1</source>
+        <translation>Nie można zapisać obrotu podstawowego w PRESET.PR: %1</translation>
+    </message>
+    <message>
+        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
+        <translation>Pomiar: przedmiot nie jest jeszcze znany: najpierw wykonaj jego program (BLK FORM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8216,6 +8232,22 @@ rozwiązanie</translation>
         <translation>cykl {1}: rowek jest krótszy niż szeroki</translation>
     </message>
     <message>
+        <source>manual probing: call the touch probe with TOOL CALL first (MDI)</source>
+        <translation>pomiar ręczny: najpierw wywołaj sondę przez TOOL CALL (MDI)</translation>
+    </message>
+    <message>
+        <source>manual probing: tool {1} is not in TOOL.T</source>
+        <translation>pomiar ręczny: narzędzia {1} nie ma w TOOL.T</translation>
+    </message>
+    <message>
+        <source>manual probing: probe {1} is not in tchprobe.tp</source>
+        <translation>pomiar ręczny: sondy {1} nie ma w tchprobe.tp</translation>
+    </message>
+    <message>
+        <source>{1} has no SPC column for the basic rotation</source>
+        <translation>{1} nie ma kolumny SPC dla obrotu podstawowego</translation>
+    </message>
+    <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: maszyna nie ma osi obrotowej {1}</translation>
     </message>
@@ -8391,6 +8423,66 @@ odniesienia</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S w obr/min (%1 do %2)</translation>
+    </message>
+    <message>
+        <source>Probing: the touches give no result</source>
+        <translation>Pomiar: punkty pomiarowe nie dają wyniku</translation>
+    </message>
+    <message>
+        <source>Probing ROT</source>
+        <translation>Pomiar ROT</translation>
+    </message>
+    <message>
+        <source>Basic rotation in degrees (OK writes it to the preset table)</source>
+        <translation>Obrót podstawowy w stopniach (OK zapisuje go w tabeli punktów bazowych)</translation>
+    </message>
+    <message>
+        <source>Probing CC: diameter %1 mm</source>
+        <translation>Pomiar CC: średnica %1 mm</translation>
+    </message>
+    <message>
+        <source>Probing</source>
+        <translation>Pomiar</translation>
+    </message>
+    <message>
+        <source>Probed %1 = %2: the datum value there</source>
+        <translation>Zmierzono %1 = %2: wartość punktu bazowego w tym miejscu</translation>
+    </message>
+    <message>
+        <source>Probing
+ROT</source>
+        <translation>Pomiar
+ROT</translation>
+    </message>
+    <message>
+        <source>Probing
+POS</source>
+        <translation>Pomiar
+POS</translation>
+    </message>
+    <message>
+        <source>Probing
+P</source>
+        <translation>Pomiar
+P</translation>
+    </message>
+    <message>
+        <source>Probing
+CC</source>
+        <translation>Pomiar
+CC</translation>
+    </message>
+    <message>
+        <source>Direction
+%1</source>
+        <translation>Kierunek
+%1</translation>
+    </message>
+    <message>
+        <source>Touch %1
+%2/%3</source>
+        <translation>Dotknij %1
+%2/%3</translation>
     </message>
 </context>
 </TS>

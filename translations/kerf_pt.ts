@@ -269,6 +269,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>O circuito de emergência ainda está aberto</translation>
     </message>
+    <message>
+        <source>Probing: the stylus is deflected already</source>
+        <translation>Apalpação: a haste já está desviada</translation>
+    </message>
+    <message>
+        <source>Probing: no touch within %1 mm</source>
+        <translation>Apalpação: nenhum contacto em %1 mm</translation>
+    </message>
+    <message>
+        <source>The basic rotation could not be saved in PRESET.PR: %1</source>
+        <translation>Não foi possível guardar a rotação básica em PRESET.PR: %1</translation>
+    </message>
+    <message>
+        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
+        <translation>Apalpação: ainda não se conhece nenhuma peça: execute primeiro o seu programa (BLK FORM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8213,6 +8229,22 @@ solução</translation>
         <translation>ciclo {1}: a ranhura é mais curta do que larga</translation>
     </message>
     <message>
+        <source>manual probing: call the touch probe with TOOL CALL first (MDI)</source>
+        <translation>apalpação manual: chame primeiro o apalpador com TOOL CALL (MDI)</translation>
+    </message>
+    <message>
+        <source>manual probing: tool {1} is not in TOOL.T</source>
+        <translation>apalpação manual: a ferramenta {1} não está em TOOL.T</translation>
+    </message>
+    <message>
+        <source>manual probing: probe {1} is not in tchprobe.tp</source>
+        <translation>apalpação manual: o apalpador {1} não está em tchprobe.tp</translation>
+    </message>
+    <message>
+        <source>{1} has no SPC column for the basic rotation</source>
+        <translation>{1} não tem coluna SPC para a rotação básica</translation>
+    </message>
+    <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: a máquina não tem eixo rotativo {1}</translation>
     </message>
@@ -8388,6 +8420,66 @@ ponto ref.</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S em rpm (%1 a %2)</translation>
+    </message>
+    <message>
+        <source>Probing: the touches give no result</source>
+        <translation>Apalpação: os pontos apalpados não dão resultado</translation>
+    </message>
+    <message>
+        <source>Probing ROT</source>
+        <translation>Apalpação ROT</translation>
+    </message>
+    <message>
+        <source>Basic rotation in degrees (OK writes it to the preset table)</source>
+        <translation>Rotação básica em graus (OK escreve-a na tabela de presets)</translation>
+    </message>
+    <message>
+        <source>Probing CC: diameter %1 mm</source>
+        <translation>Apalpação CC: diâmetro %1 mm</translation>
+    </message>
+    <message>
+        <source>Probing</source>
+        <translation>Apalpação</translation>
+    </message>
+    <message>
+        <source>Probed %1 = %2: the datum value there</source>
+        <translation>Apalpado %1 = %2: valor do ponto de referência aí</translation>
+    </message>
+    <message>
+        <source>Probing
+ROT</source>
+        <translation>Apalpação
+ROT</translation>
+    </message>
+    <message>
+        <source>Probing
+POS</source>
+        <translation>Apalpação
+POS</translation>
+    </message>
+    <message>
+        <source>Probing
+P</source>
+        <translation>Apalpação
+P</translation>
+    </message>
+    <message>
+        <source>Probing
+CC</source>
+        <translation>Apalpação
+CC</translation>
+    </message>
+    <message>
+        <source>Direction
+%1</source>
+        <translation>Direção
+%1</translation>
+    </message>
+    <message>
+        <source>Touch %1
+%2/%3</source>
+        <translation>Apalpar %1
+%2/%3</translation>
     </message>
 </context>
 </TS>

@@ -3,6 +3,7 @@
 #include <string>
 #include <system_error>
 
+#include "core/base/translate.h"
 #include "core/tables/preset_table.h"
 
 namespace kerf::task {
@@ -22,16 +23,28 @@ std::array<std::optional<double>, kAxisCount> PresetStore::read() const {
     return values;
 }
 
-MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
+namespace {
+
+// The table with a row 0 (created with the standard columns if missing), or why it cannot be read.
+Expected<tables::PresetTable> tableWithRowZero(const program::NcRoot& root,
+                                               const std::filesystem::path& file) {
     std::error_code error;
-    const bool exists = std::filesystem::exists(std::filesystem::symlink_status(m_file, error));
-    const auto bytes = exists ? m_root.read(m_file) : tables::PresetTable::createDefault();
+    const bool exists = std::filesystem::exists(std::filesystem::symlink_status(file, error));
+    const auto bytes = exists ? root.read(file) : tables::PresetTable::createDefault();
     if (!bytes) return bytes.error();
-    auto table = tables::PresetTable::parse(*bytes, m_file.filename().string());
+    auto table = tables::PresetTable::parse(*bytes, file.filename().string());
     if (!table) return table.error();
     if (table->byNumber(0) == nullptr) {
-        if (MaybeError failed = table->addPreset(0)) return failed;
+        if (MaybeError failed = table->addPreset(0)) return *failed;
     }
+    return table;
+}
+
+}  // namespace
+
+MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
+    auto table = tableWithRowZero(m_root, m_file);
+    if (!table) return table.error();
     for (int i = 0; i < kAxisCount; ++i) {
         const auto axis = static_cast<Axis>(i);
         const char letter = axisLetter(axis);
@@ -40,6 +53,23 @@ MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
         if (MaybeError failed = table->setAxis(0, letter, origin[axis])) return failed;
     }
     return m_root.replace(m_file, table->serialize());
+}
+
+MaybeError PresetStore::writeBasicRotation(double degrees) const {
+    auto table = tableWithRowZero(m_root, m_file);
+    if (!table) return table.error();
+    const auto column = table->table().findColumn("SPC");
+    if (!column) {
+        return Diagnostic::make(Severity::Error, "PRB-004", m_file.string(), 0, 0,
+                                KERF_TR_NOOP("{1} has no SPC column for the basic rotation"),
+                                m_file.filename().string());
+    }
+    tables::TncTable edited = table->table();
+    if (MaybeError failed = edited.setNumber(table->byNumber(0)->row, *column, degrees))
+        return failed;
+    auto rewritten = tables::PresetTable::fromTable(std::move(edited));
+    if (!rewritten) return rewritten.error();
+    return m_root.replace(m_file, rewritten->serialize());
 }
 
 }  // namespace kerf::task

@@ -25,6 +25,9 @@ public:
     // Writes the origin of the given axes into row 0 atomically (axes the table has no column
     // for are left out), creating the table with the standard columns if it is missing.
     MaybeError write(const Pose& origin, AxisMask axes) const;
+    // Writes the basic rotation into row 0's SPC column (where the probing cycles keep it), in
+    // degrees; a table without that column is an error.
+    MaybeError writeBasicRotation(double degrees) const;
 
     const std::filesystem::path& file() const { return m_file; }
 

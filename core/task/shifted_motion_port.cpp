@@ -24,6 +24,8 @@ ShiftedMotionPort::ShiftedMotionPort(std::unique_ptr<MotionPort> machine)
     : m_machine(std::move(machine)) {}
 
 bool ShiftedMotionPort::submit(const canon::Command& command) {
+    if (const auto* stock = std::get_if<canon::StockDefinition>(&command.body))
+        m_lastBlank = PassedBlank{*stock, m_shift};
     if (m_shift == Pose{}) return m_machine->submit(command);
     canon::Command shifted = command;
     // Every position in the stream: move targets, the arc centre and the blank.

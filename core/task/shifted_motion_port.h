@@ -18,6 +18,14 @@ public:
     const Pose& shift() const { return m_shift; }
     void setShift(const Pose& shift) { m_shift = shift; }
 
+    // The blank (BLK FORM) the last program defined, as programmed, and the shift it was
+    // passed on with: where the part clamped for it lies (manual probing touches it).
+    struct PassedBlank {
+        canon::StockDefinition stock;
+        Pose shift;
+    };
+    const std::optional<PassedBlank>& lastBlank() const { return m_lastBlank; }
+
     bool submit(const canon::Command& command) override;
     bool hasRoom() const override { return m_machine->hasRoom(); }
     void flush() override { m_machine->flush(); }
@@ -58,6 +66,7 @@ public:
 private:
     std::unique_ptr<MotionPort> m_machine;
     Pose m_shift{};
+    std::optional<PassedBlank> m_lastBlank;
 };
 
 }  // namespace kerf::task

@@ -235,14 +235,19 @@ bool MachineSession::coolant(bool on) {
 }
 
 bool MachineSession::setPresetByEntry(Axis axis, double shownValue) {
-    if (refuseWhenBusy()) return false;
     double value = shownValue;
     for (const machine::AxisConfig& config : m_machine.axes) {
         if (axisFromLetter(config.letter) == axis && config.diameterMode) value /= 2.0;
     }
+    return movePreset(axis, m_motion->status().axes[static_cast<size_t>(axisIndex(axis))].actual,
+                      value);
+}
+
+bool MachineSession::movePreset(Axis axis, double current, double value) {
+    if (refuseWhenBusy()) return false;
     // The origin moves by what the axis shows now minus what it should show.
     Pose shift = m_motion->shift();
-    shift[axis] += m_motion->status().axes[static_cast<size_t>(axisIndex(axis))].actual - value;
+    shift[axis] += current - value;
     m_motion->setShift(shift);
     m_status = m_motion->status();
     emit statusChanged(m_status);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/base/diagnostic.h"
+#include "core/cycles/probing/manual_probing.h"
 #include "core/interp/program_status.h"
 #include "core/machine/machine_config.h"
 #include "core/task/machine_status.h"
@@ -115,6 +116,28 @@ public:
     // workpiece origin; programs started afterwards use it. On a mill it is written to row 0 of
     // the NC root's PRESET.PR. False (and a message) while the machine moves.
     bool setPresetByEntry(Axis axis, double shownValue);
+    // Manual probing (mill, Manual operation): choose a function (which clears its touches), then
+    // touch from where the probe stands along an axis direction. The touch is decided on the
+    // simulated part ([simulation.blank] placed with [simulation.setup]) and the probe moves to
+    // the trigger at the probe table's F and back. False (and a message) on a miss within DIST,
+    // a deflected stylus, no probe in the spindle, or while the machine moves.
+    void startManualProbing(cycles::probing::ManualProbingFunction function);
+    cycles::probing::ManualProbingFunction manualProbingFunction() const { return m_probing; }
+    int manualTouchesDone() const { return static_cast<int>(m_touches.size()); }
+    bool probeTouch(const Vec3& direction);
+    // The direction the panel's touch key probes in (the operator's choice, kept while the
+    // softkey rows are rebuilt).
+    void setProbeDirection(const Vec3& direction) { m_probeDirection = direction; }
+    const Vec3& probeDirection() const { return m_probeDirection; }
+    // Once the function has its touches: what they give (workpiece coordinates of the origin
+    // the touches were made from).
+    std::optional<cycles::probing::ManualProbingResult> manualProbingResult() const;
+    // The origin moves so that the probed coordinate `measured` of `axis` reads `value`, written
+    // to row 0 of PRESET.PR as setPresetByEntry does.
+    bool setPresetFromProbing(Axis axis, double measured, double value);
+    // The probed misalignment becomes the basic rotation of row 0 of PRESET.PR (its SPC column).
+    bool setBasicRotation(double degrees);
+
     // The workpiece origin in machine coordinates: the machine file's preset, then (mill) the
     // axes row 0 of PRESET.PR sets, then the entries of a lathe.
     Pose presetInMachine() const;
@@ -165,6 +188,9 @@ private:
     // program, so edits in the table editor count from the next program on).
     void applyPresetTable();
     void report(const DiagnosticList& diagnostics);
+    // The origin moves so that `axis`, now at `current`, shows `value` (workpiece coordinates).
+    bool movePreset(Axis axis, double current, double value);
+    bool runGeneratedProgram(const std::string& text);
 
     machine::MachineConfig m_machine;
     std::unique_ptr<task::ShiftedMotionPort> m_motion;
@@ -188,6 +214,11 @@ private:
     Axis m_handwheelAxis = Axis::X;
     int m_handwheelFactor = 1;
     bool m_singleBlock = false;
+    cycles::probing::ManualProbingFunction m_probing =
+        cycles::probing::ManualProbingFunction::Position;
+    std::vector<cycles::probing::ManualTouch> m_touches;  // workpiece coordinates
+    double m_probeBallRadius = 0.0;                       // of the probe that made them
+    Vec3 m_probeDirection{1.0, 0.0, 0.0};
 };
 
 }  // namespace kerf::ui

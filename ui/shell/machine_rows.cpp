@@ -7,6 +7,7 @@
 #include "ui/session/machine_session.h"
 #include "ui/shell/manual_rows.h"
 #include "ui/shell/mdi_dialog.h"
+#include "ui/shell/probing_rows.h"
 
 namespace kerf::ui {
 
@@ -119,7 +120,10 @@ std::vector<SoftkeyRow> machineModeRows(task::MachineMode mode, const MachineRow
     if (context.session == nullptr) return {};
     switch (mode) {
         case task::MachineMode::Manual:
-            return {jogRow(context), manualFunctionsRow(context)};
+            // The lathe probes with its G75/G76 in programs.
+            if (context.session->machine().kind == machine::MachineKind::Lathe)
+                return {jogRow(context), manualFunctionsRow(context)};
+            return {jogRow(context), manualFunctionsRow(context), probingRow(context)};
         case task::MachineMode::Handwheel:
             return {handwheelRow(context), jogRow(context), manualFunctionsRow(context)};
         case task::MachineMode::Mdi:

@@ -26,8 +26,9 @@ struct MachineRowContext {
 };
 
 // The softkey rows of a machine mode: Manual (jog, increment, home, spindle, coolant, set
-// preset), Electronic handwheel (the handwheel first, then Manual's rows), MDI (execute a block)
-// and program run (NC start, NC stop, resume, stop, start at block, single block).
+// preset; on a mill manual probing), Electronic handwheel (the handwheel first, then Manual's
+// rows), MDI (execute a block) and program run (NC start, NC stop, resume, stop, start at block,
+// single block).
 std::vector<SoftkeyRow> machineModeRows(task::MachineMode mode, const MachineRowContext& context);
 
 // The jog increments the increment key steps through; 0 = continuous jog.

@@ -4,6 +4,7 @@
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/workpiece/blank_solids.h"
 
 namespace kerf::klartext {
 
@@ -333,20 +334,7 @@ void KlartextInterpreter::executeBlkForm(const BlkForm& blk) {
         cylinder.lengthMm = blk.length * scale;
         cylinder.distanceMm = blk.distance * scale;
         emit(canon::StockDefinition{cylinder});
-        m_blank.clear();
-        if (cylinder.axis == Axis::Z) {
-            const double bottom = cylinder.distanceMm - cylinder.lengthMm;
-            m_blank.push_back(workpiece::Solid{
-                workpiece::Cylinder{Vec2(0.0, 0.0), cylinder.radiusMm, bottom, cylinder.distanceMm},
-                true});
-            if (cylinder.innerRadiusMm > 0.0) {
-                // The bore runs through: the cavity reaches past both faces.
-                m_blank.push_back(
-                    workpiece::Solid{workpiece::Cylinder{Vec2(0.0, 0.0), cylinder.innerRadiusMm,
-                                                         bottom - 1.0, cylinder.distanceMm + 1.0},
-                                     false});
-            }
-        }
+        m_blank = workpiece::blankSolids(canon::StockDefinition{cylinder});
         return;
     }
     if (blk.kind == BlkForm::Kind::MinPoint) {
@@ -373,7 +361,7 @@ void KlartextInterpreter::executeBlkForm(const BlkForm& blk) {
         return;
     }
     emit(canon::StockDefinition{box});
-    m_blank = {workpiece::Solid{workpiece::Box{box.min, box.max}, true}};
+    m_blank = workpiece::blankSolids(canon::StockDefinition{box});
 }
 
 }  // namespace kerf::klartext

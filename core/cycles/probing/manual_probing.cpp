@@ -1,0 +1,97 @@
+#include "core/cycles/probing/manual_probing.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/cycles/probing/probe_geometry.h"
+
+namespace kerf::cycles::probing {
+
+namespace {
+
+Vec3 surfacePoint(const ManualTouch& touch, double ballRadius) {
+    return touch.ball + ballRadius * touch.direction;
+}
+
+// The misalignment of the edge through a and b that was probed along `direction`: its angle to
+// the axis square to the probing direction, folded to (-90, 90] (which point came first does
+// not count).
+std::optional<double> edgeRotation(const Vec2& a, const Vec2& b, const Vec3& direction) {
+    if ((b - a).norm() < 1e-9) return std::nullopt;
+    const double probing = std::atan2(direction.y(), direction.x()) * 180.0 / std::numbers::pi;
+    double angle = normalizedDeg(lineAngleDeg(a, b) - probing - 90.0);
+    if (angle > 90.0) angle -= 180.0;
+    if (angle <= -90.0) angle += 180.0;
+    return angle;
+}
+
+}  // namespace
+
+int manualTouchCount(ManualProbingFunction function) {
+    switch (function) {
+        case ManualProbingFunction::Rotation:
+            return 2;
+        case ManualProbingFunction::Position:
+            return 1;
+        case ManualProbingFunction::Corner:
+        case ManualProbingFunction::Circle:
+            return 4;
+    }
+    return 1;
+}
+
+std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction function,
+                                                         std::span<const ManualTouch> touches,
+                                                         double ballRadius) {
+    if (static_cast<int>(touches.size()) != manualTouchCount(function)) return std::nullopt;
+    std::vector<Vec3> surface;
+    for (const ManualTouch& touch : touches)
+        surface.push_back(surfacePoint(touch, ballRadius));
+    ManualProbingResult result;
+    switch (function) {
+        case ManualProbingFunction::Position: {
+            // The axis the touch went along.
+            int axis = 0;
+            for (int i = 1; i < 3; ++i)
+                if (std::fabs(touches[0].direction[i]) > std::fabs(touches[0].direction[axis]))
+                    axis = i;
+            result.point[static_cast<size_t>(axis)] = surface[0][axis];
+            return result;
+        }
+        case ManualProbingFunction::Rotation:
+            result.basicRotationDeg =
+                edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0].direction);
+            if (!result.basicRotationDeg) return std::nullopt;
+            return result;
+        case ManualProbingFunction::Corner: {
+            const auto corner = intersect(surface[0].head<2>(), surface[1].head<2>(),
+                                          surface[2].head<2>(), surface[3].head<2>());
+            result.basicRotationDeg =
+                edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0].direction);
+            if (!corner || !result.basicRotationDeg) return std::nullopt;
+            result.point[0] = corner->x();
+            result.point[1] = corner->y();
+            return result;
+        }
+        case ManualProbingFunction::Circle: {
+            // The ball centres lie on a circle about the real centre whatever the directions.
+            std::vector<Vec2> balls;
+            for (const ManualTouch& touch : touches)
+                balls.push_back(touch.ball.head<2>());
+            const auto circle = fitCircle(balls);
+            if (!circle) return std::nullopt;
+            // Touches away from the centre found a hole's wall, towards it a stud's.
+            const Vec2 outward = balls[0] - circle->centre;
+            const bool hole = outward.dot(touches[0].direction.head<2>()) > 0.0;
+            result.point[0] = circle->centre.x();
+            result.point[1] = circle->centre.y();
+            result.diameter =
+                2.0 * (hole ? circle->radius + ballRadius : circle->radius - ballRadius);
+            return result;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace kerf::cycles::probing

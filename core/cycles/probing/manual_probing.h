@@ -1,0 +1,45 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+
+#include "core/geometry/axes.h"
+
+// Manual probing (the TNC's probing functions of Manual operation): the operator positions the
+// probe near the workpiece, chooses a direction and touches; the control evaluates the touches
+// with the probing cycles' geometry (probe_geometry.h). Workpiece coordinates, tool axis Z.
+namespace kerf::cycles::probing {
+
+enum class ManualProbingFunction : uint8_t {
+    Rotation,  // PROBING ROT: two touches along one edge give its misalignment
+    Position,  // PROBING POS: one touch gives the surface coordinate in its axis
+    Corner,    // PROBING P: two touches on each of two edges give their intersection
+    Circle,    // PROBING CC: four touches on a hole or a stud give its centre and diameter
+};
+
+// How many touches the function needs.
+int manualTouchCount(ManualProbingFunction function);
+
+// One touch: the ball centre when the stylus triggered, and the unit probing direction.
+struct ManualTouch {
+    Vec3 ball{0.0, 0.0, 0.0};
+    Vec3 direction{1.0, 0.0, 0.0};
+};
+
+struct ManualProbingResult {
+    // The surface point (Position: its axis only; Corner: the intersection; Circle: the centre).
+    std::array<std::optional<double>, 3> point;
+    // Rotation, Corner (from the first edge): the edge's angle to the axis at right angles to
+    // the probing direction, (-90, 90] degrees.
+    std::optional<double> basicRotationDeg;
+    std::optional<double> diameter;  // Circle
+};
+
+// The result of the function's touches (exactly manualTouchCount of them), or nothing when the
+// touches give none (two points on one spot, parallel edges, points on one line).
+std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction function,
+                                                         std::span<const ManualTouch> touches,
+                                                         double ballRadius);
+
+}  // namespace kerf::cycles::probing

@@ -1,0 +1,91 @@
+// Manual operation's probing functions evaluated from touches whose ball centres are placed by
+// hand on known features.
+#include "core/cycles/probing/manual_probing.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace kerf::cycles::probing {
+namespace {
+
+constexpr double kBall = 2.0;
+
+TEST(ManualProbing, CircleCentreAndDiameterOfAHoleFromAnyFourDirections) {
+    // A hole of diameter 30 about (12, -7): the ball centres lie on radius 15 - r_b = 13, each
+    // touch going outward (not along the axes: the fit does not care).
+    const Vec2 centre(12.0, -7.0);
+    std::vector<ManualTouch> touches;
+    for (double deg : {10.0, 100.0, 200.0, 300.0}) {
+        const double a = deg * std::numbers::pi / 180.0;
+        const Vec3 out(std::cos(a), std::sin(a), 0.0);
+        touches.push_back({Vec3(centre.x(), centre.y(), -5.0) + 13.0 * out, out});
+    }
+    const auto result = evaluateManualProbing(ManualProbingFunction::Circle, touches, kBall);
+    ASSERT_TRUE(result);
+    EXPECT_NEAR(*result->point[0], 12.0, 1e-9);
+    EXPECT_NEAR(*result->point[1], -7.0, 1e-9);
+    EXPECT_FALSE(result->point[2]);
+    EXPECT_NEAR(*result->diameter, 30.0, 1e-9);
+}
+
+TEST(ManualProbing, CircleOfAStudIsProbedInwards) {
+    // A stud of diameter 40 about the origin: ball centres on 20 + r_b = 22, touches inward.
+    std::vector<ManualTouch> touches;
+    for (double deg : {0.0, 90.0, 180.0, 270.0}) {
+        const double a = deg * std::numbers::pi / 180.0;
+        const Vec3 out(std::cos(a), std::sin(a), 0.0);
+        touches.push_back({22.0 * out, -out});
+    }
+    const auto result = evaluateManualProbing(ManualProbingFunction::Circle, touches, kBall);
+    ASSERT_TRUE(result);
+    EXPECT_NEAR(*result->diameter, 40.0, 1e-9);
+}
+
+TEST(ManualProbing, RotationIsTheEdgesAngleWhicheverPointCameFirst) {
+    // An edge along X turned by +3 degrees, probed along +Y: the misalignment is +3 with the
+    // points in either order; an edge along Y probed along -X turned by -2 degrees gives -2.
+    const double t = 3.0 * std::numbers::pi / 180.0;
+    const Vec3 y(0.0, 1.0, 0.0);
+    const ManualTouch a{Vec3(10.0, 10.0 * std::tan(t) - kBall, 0.0), y};
+    const ManualTouch b{Vec3(70.0, 70.0 * std::tan(t) - kBall, 0.0), y};
+    for (const auto& pair : {std::vector<ManualTouch>{a, b}, std::vector<ManualTouch>{b, a}}) {
+        const auto r = evaluateManualProbing(ManualProbingFunction::Rotation, pair, kBall);
+        ASSERT_TRUE(r);
+        EXPECT_NEAR(*r->basicRotationDeg, 3.0, 1e-9);
+    }
+    const double u = -2.0 * std::numbers::pi / 180.0;
+    const Vec3 minusX(-1.0, 0.0, 0.0);
+    // The edge x = -y tan(u) (turned -2 degrees from +Y), the ball r_b on its +X side.
+    const ManualTouch c{Vec3(-5.0 * std::tan(u) + kBall, 5.0, 0.0), minusX};
+    const ManualTouch d{Vec3(-40.0 * std::tan(u) + kBall, 40.0, 0.0), minusX};
+    const std::vector<ManualTouch> side{c, d};
+    const auto r = evaluateManualProbing(ManualProbingFunction::Rotation, side, kBall);
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(*r->basicRotationDeg, -2.0, 1e-9);
+}
+
+TEST(ManualProbing, PositionGivesTheSurfaceInTheProbingAxisOnly) {
+    const std::vector<ManualTouch> down{{Vec3(3.0, 4.0, 2.5), Vec3(0.0, 0.0, -1.0)}};
+    const auto r = evaluateManualProbing(ManualProbingFunction::Position, down, kBall);
+    ASSERT_TRUE(r);
+    EXPECT_FALSE(r->point[0]);
+    EXPECT_FALSE(r->point[1]);
+    EXPECT_NEAR(*r->point[2], 0.5, 1e-12);  // the ball's south pole
+}
+
+TEST(ManualProbing, ParallelEdgesOrMissingTouchesGiveNoResult) {
+    const Vec3 y(0.0, 1.0, 0.0);
+    const std::vector<ManualTouch> parallel{{Vec3(0.0, 0.0, 0.0), y},
+                                            {Vec3(10.0, 0.0, 0.0), y},
+                                            {Vec3(0.0, 5.0, 0.0), y},
+                                            {Vec3(10.0, 5.0, 0.0), y}};
+    EXPECT_FALSE(evaluateManualProbing(ManualProbingFunction::Corner, parallel, kBall));
+    const std::vector<ManualTouch> one{{Vec3(0.0, 0.0, 0.0), y}};
+    EXPECT_FALSE(evaluateManualProbing(ManualProbingFunction::Rotation, one, kBall));
+}
+
+}  // namespace
+}  // namespace kerf::cycles::probing

@@ -1,0 +1,258 @@
+// Manual probing from the panel: the probing softkeys of Manual operation touch the blank the
+// last program defined (box 0..100 x 0..60 x -40..0), placed with the setup error of
+// examples/probing/machine.toml (shift (1.5, -0.8, -0.2), rotation 0.7 degrees about the
+// program's origin), and write what the operator confirms to PRESET.PR.
+#include <QApplication>
+#include <QInputDialog>
+#include <QPushButton>
+#include <QTimer>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "core/machine/machine_loader.h"
+#include "core/tables/preset_table.h"
+#include "core/task/preset_store.h"
+#include "qt_test_app.h"
+#include "simulated_machine.h"
+#include "test_paths.h"
+#include "ui/session/program_origin.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/mode_controller.h"
+#include "ui/shell/softkey_bar.h"
+
+namespace kerf::ui {
+namespace {
+
+using namespace std::chrono_literals;
+namespace fs = std::filesystem;
+
+const double kAngle = 0.7 * std::numbers::pi / 180.0;
+constexpr double kBall = 2.0;  // TOOL.T: probe 1 has R 2
+
+bool processUntil(const std::function<bool()>& done, std::chrono::milliseconds limit = 20s) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < deadline) {
+        QCoreApplication::processEvents();
+        if (done()) return true;
+        std::this_thread::sleep_for(2ms);
+    }
+    return false;
+}
+
+// Answers the probing dialogs as they come, in order: records what each showed and enters
+// the operator's value.
+class DialogAnswers {
+public:
+    explicit DialogAnswers(std::vector<double> answers) : m_answers(std::move(answers)) {
+        m_timer.setInterval(5);
+        QObject::connect(&m_timer, &QTimer::timeout, [this] { answer(); });
+        m_timer.start();
+    }
+    std::vector<QString> names;
+    std::vector<QString> labels;
+    std::vector<double> shown;
+    size_t answered() const { return names.size(); }
+
+private:
+    void answer() {
+        auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr || names.size() >= m_answers.size()) return;
+        names.push_back(dialog->objectName());
+        labels.push_back(dialog->labelText());
+        shown.push_back(dialog->doubleValue());
+        dialog->setDoubleValue(m_answers[names.size() - 1]);
+        dialog->accept();
+    }
+    std::vector<double> m_answers;
+    QTimer m_timer;
+};
+
+class ManualProbingScreen : public testing::Test {
+protected:
+    ManualProbingScreen() {
+        test::testApp();
+        dir = kerf::test::uniqueTempDir("hmi_manual_probing");
+        const fs::path examples = fs::path(KERF_SOURCE_DIR) / "examples/probing";
+        fs::copy_file(examples / "TOOL.T", dir / "TOOL.T");
+        fs::copy_file(examples / "tchprobe.tp", dir / "tchprobe.tp");
+        HmiContext context;
+        context.machine = *machine::loadMachine((examples / "machine.toml").string());
+        context.ncRoot = dir;
+        context.recoveryFolder = dir / "recovery";
+        context.motion = [config = context.machine] {
+            return test::connectSimulatedMachine(config);
+        };
+        machine = context.machine;
+        window = std::make_unique<MainWindow>(std::move(context));
+        window->resize(1280, 800);
+        window->show();
+        EXPECT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+        session = window->session();
+        // The part's program clamps the blank and calls the probe.
+        EXPECT_TRUE(session->startProgram(QStringLiteral("0 BEGIN PGM SETUP MM\n"
+                                                         "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n"
+                                                         "2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                                                         "3 TOOL CALL 1 Z\n"
+                                                         "4 L Z+50 R0 FMAX\n"
+                                                         "5 END PGM SETUP MM\n"),
+                                          dir / "SETUP.H"));
+        EXPECT_TRUE(processUntil([&] { return !session->busy(); }));
+    }
+
+    // The tool tip there, from the origin of the machine file's preset, by MDI.
+    void moveTo(double x, double y, double z) {
+        ASSERT_TRUE(
+            session->executeMdi(QStringLiteral("L X%1 Y%2 Z%3 R0 FMAX").arg(x).arg(y).arg(z)));
+        ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    }
+    void press(const char* id) {
+        ASSERT_TRUE(window->softkeys()->pressId(QString::fromLatin1(id))) << id;
+    }
+    // Direction key pressed until it shows `name`.
+    void chooseDirection(const QString& name) {
+        for (int i = 0; i < 5; ++i) {
+            if (keyText("probeDirection") == QStringLiteral("Direction\n") + name) return;
+            press("probeDirection");
+        }
+        FAIL() << name.toStdString();
+    }
+    void touch() {
+        press("probeTouch");
+        ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    }
+    QString keyText(const QString& id) {
+        SoftkeyBar& bar = *window->softkeys();
+        for (int row = 0; row < bar.rowCount(); ++row) {
+            bar.showRow(row);
+            for (int i = 0; i < SoftkeyBar::kKeys; ++i)
+                if (bar.keyId(i) == id) return bar.keyButton(i)->text();
+        }
+        return {};
+    }
+    const tables::PresetData& row0() {
+        auto table = tables::PresetTable::load(dir / "PRESET.PR");
+        EXPECT_TRUE(table.ok());
+        presets = std::make_unique<tables::PresetTable>(std::move(*table));
+        return *presets->byNumber(0);
+    }
+
+    // Row 0's SPC column, where the basic rotation is kept.
+    double spc0() {
+        row0();
+        const auto column = presets->table().findColumn("SPC");
+        EXPECT_TRUE(column.has_value());
+        if (!column) return 0.0;
+        return std::stod(std::string(presets->table().cell(presets->byNumber(0)->row, *column)));
+    }
+
+    fs::path dir;
+    machine::MachineConfig machine;
+    std::unique_ptr<MainWindow> window;
+    MachineSession* session = nullptr;
+    std::unique_ptr<tables::PresetTable> presets;
+};
+
+TEST_F(ManualProbingScreen, ProbingPosSetsTheDatumOnTheTurnedLeftFace) {
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch POS\n0/1"));
+    press("probePosition");
+    chooseDirection(QStringLiteral("X+"));
+    moveTo(-10, 20, -5);  // the ball centre at (-10, 20, -3)
+    DialogAnswers answers({0.0});
+    touch();
+    ASSERT_TRUE(processUntil([&] { return answers.answered() == 1; }, 5s));
+    EXPECT_EQ(answers.names[0], QStringLiteral("probeDatumPrompt"));
+    // The left face x' = 0 of the turned part: cos a (x - 1.5) + sin a (y + 0.8) = 0. The ball
+    // centre stops r_b from it, x' = -2, at y = 20; the surface point lies r_b further along +X.
+    const double ball = 1.5 + (-kBall - 20.8 * std::sin(kAngle)) / std::cos(kAngle);
+    const double measured = ball + kBall;
+    EXPECT_TRUE(answers.labels[0].contains(QString::number(measured, 'f', 4)))
+        << answers.labels[0].toStdString();
+    // The probed face reads 0 now: the origin lies `measured` further along X.
+    const double presetX = machineFilePreset(machine)[Axis::X] + measured;
+    EXPECT_NEAR(session->presetInMachine()[Axis::X], presetX, 1e-9);
+    EXPECT_NEAR(*row0().axis('X'), presetX, 1e-4);
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch POS\n1/1"));
+}
+
+TEST_F(ManualProbingScreen, ProbingRotWritesTheEdgesMisalignmentAsBasicRotation) {
+    press("probeRotation");
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch ROT\n0/2"));
+    chooseDirection(QStringLiteral("Y+"));
+    moveTo(20, -10, -5);
+    touch();
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch ROT\n1/2"));
+    moveTo(80, -10, -5);
+    DialogAnswers answers({0.7});
+    touch();
+    ASSERT_TRUE(processUntil([&] { return answers.answered() == 1; }, 5s));
+    EXPECT_EQ(answers.names[0], QStringLiteral("probeRotationPrompt"));
+    // Both touches of the front edge stop r_b / cos a before it along Y: the line through the
+    // surface points is parallel to the edge, turned by the setup's 0.7 degrees. The dialog
+    // shows it with four decimals.
+    EXPECT_NEAR(answers.shown[0], 0.7, 1e-4);
+    processUntil([] { return false; }, 50ms);
+    EXPECT_NEAR(spc0(), 0.7, 1e-9);
+}
+
+TEST_F(ManualProbingScreen, ProbingPFindsTheCornerOfTheTwoTurnedEdges) {
+    press("probeCorner");
+    chooseDirection(QStringLiteral("Y+"));
+    moveTo(20, -10, -5);
+    touch();
+    moveTo(80, -10, -5);
+    touch();
+    chooseDirection(QStringLiteral("X+"));
+    moveTo(-10, 15, -5);
+    touch();
+    moveTo(-10, 45, -5);
+    DialogAnswers answers({0.0, 0.0});
+    touch();
+    ASSERT_TRUE(processUntil([&] { return answers.answered() == 2; }, 5s));
+    // The real corner is the setup's shift (1.5, -0.8). Probed along the axes, each surface
+    // point lies d = r_b (1 - cos a) outside its turned face, so the corner found lies d along
+    // both outward normals (sin a, -cos a) and (-cos a, -sin a).
+    const double d = kBall * (1.0 - std::cos(kAngle));
+    const double x = 1.5 + d * (std::sin(kAngle) - std::cos(kAngle));
+    const double y = -0.8 - d * (std::cos(kAngle) + std::sin(kAngle));
+    const Pose file = machineFilePreset(machine);
+    EXPECT_NEAR(session->presetInMachine()[Axis::X], file[Axis::X] + x, 1e-9);
+    EXPECT_NEAR(session->presetInMachine()[Axis::Y], file[Axis::Y] + y, 1e-9);
+    EXPECT_TRUE(
+        answers.labels[0].startsWith(QStringLiteral("Probed X = ") + QString::number(x, 'f', 4)))
+        << answers.labels[0].toStdString();
+}
+
+TEST_F(ManualProbingScreen, WithoutAProgramsBlankNothingIsTouched) {
+    // A session whose machine never saw a BLK FORM: the touch is refused, nothing moves.
+    window.reset();
+    HmiContext context;
+    context.machine = machine;
+    context.ncRoot = dir;
+    context.recoveryFolder = dir / "recovery";
+    context.motion = [config = machine] { return test::connectSimulatedMachine(config); };
+    window = std::make_unique<MainWindow>(std::move(context));
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    session = window->session();
+    ASSERT_TRUE(session->executeMdi(QStringLiteral("TOOL CALL 1 Z")));
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    EXPECT_FALSE(session->probeTouch(Vec3(1.0, 0.0, 0.0)));
+    EXPECT_EQ(session->manualTouchesDone(), 0);
+    EXPECT_FALSE(session->busy());
+}
+
+TEST_F(ManualProbingScreen, AMissStopsWithAMessageAndCountsNoTouch) {
+    press("probePosition");
+    chooseDirection(QStringLiteral("X-"));
+    moveTo(-10, 20, -5);  // nothing on the -X side within DIST 20
+    EXPECT_FALSE(session->probeTouch(session->probeDirection()));
+    EXPECT_EQ(session->manualTouchesDone(), 0);
+    EXPECT_FALSE(session->busy());
+}
+
+}  // namespace
+}  // namespace kerf::ui

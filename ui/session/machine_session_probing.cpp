@@ -1,0 +1,105 @@
+// Manual probing in Manual operation: the touches on the simulated part, the moves to the
+// trigger and back, and the results written to PRESET.PR.
+#include <cstdio>
+#include <string>
+
+#include "core/task/manual_probe.h"
+#include "core/task/program_loader.h"
+#include "core/task/shifted_motion_port.h"
+#include "ui/common/diagnostic_text.h"
+#include "ui/session/machine_session.h"
+
+namespace kerf::ui {
+
+namespace {
+
+std::string klartextPoint(const Vec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "X%+.4f Y%+.4f Z%+.4f", p.x(), p.y(), p.z());
+    return text;
+}
+
+}  // namespace
+
+void MachineSession::startManualProbing(cycles::probing::ManualProbingFunction function) {
+    m_probing = function;
+    m_touches.clear();
+}
+
+bool MachineSession::probeTouch(const Vec3& direction) {
+    if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
+    const auto probe = task::manualProbe(m_ncRoot, m_status.toolNumber);
+    if (!probe) {
+        report({probe.error()});
+        return false;
+    }
+    if (static_cast<int>(m_touches.size()) >= cycles::probing::manualTouchCount(m_probing))
+        m_touches.clear();  // a new measurement of the same function
+    // The part lies where the last program's blank was clamped, in that program's frame; the
+    // axes show the tip from the operator's origin now.
+    const auto& blank = m_motion->lastBlank();
+    if (!blank) {
+        emit message(Severity::Error,
+                     tr("Probing: no workpiece is known yet: run its program (BLK FORM) first"), 0);
+        return false;
+    }
+    const Vec3 partOffset = m_motion->shift().xyz() - blank->shift.xyz();
+    const Vec3 up(0.0, 0.0, probe->ballRadius);
+    // Where the probe was sent: the drives may still be settling into it.
+    const task::MachineStatus now = m_motion->status();
+    const Vec3 tip(now.axes[0].nominal, now.axes[1].nominal, now.axes[2].nominal);
+    const Vec3 ball = tip + partOffset + up;
+    const workpiece::SimulatedWorkpiece part = task::manualProbingPart(m_machine, blank->stock);
+    if (part.touches(ball, probe->ballRadius)) {
+        emit message(Severity::Error, tr("Probing: the stylus is deflected already"), 0);
+        return false;
+    }
+    const auto hit = part.touch(ball, direction, probe->maxPath, probe->ballRadius);
+    if (!hit) {
+        emit message(Severity::Error, tr("Probing: no touch within %1 mm").arg(probe->maxPath), 0);
+        return false;
+    }
+    const Vec3 trigger = *hit - partOffset - up;  // the tip, workpiece coordinates
+    char feed[32];
+    std::snprintf(feed, sizeof feed, " F%.0f", probe->probingFeed);
+    const std::string text = "0 BEGIN PGM PROBE MM\n1 L " + klartextPoint(trigger) + feed +
+                             "\n2 L " + klartextPoint(tip) + " FMAX\n3 END PGM PROBE MM\n";
+    if (!runGeneratedProgram(text)) return false;
+    m_probeBallRadius = probe->ballRadius;
+    m_touches.push_back({*hit - partOffset, direction});
+    return true;
+}
+
+bool MachineSession::runGeneratedProgram(const std::string& text) {
+    applyPresetTable();
+    task::ProgramRequest request;
+    request.text = text;
+    request.ncRoot = m_ncRoot;
+    request.startPosition = Pose{};
+    request.startPosition->values = m_motion->world().position.values;
+    request.presetInMachine = presetInMachine();
+    m_programName.clear();
+    return start(task::loadProgram(m_machine, request), std::nullopt);
+}
+
+std::optional<cycles::probing::ManualProbingResult> MachineSession::manualProbingResult() const {
+    return cycles::probing::evaluateManualProbing(m_probing, m_touches, m_probeBallRadius);
+}
+
+bool MachineSession::setPresetFromProbing(Axis axis, double measured, double value) {
+    return movePreset(axis, measured, value);
+}
+
+bool MachineSession::setBasicRotation(double degrees) {
+    if (refuseWhenBusy()) return false;
+    if (const MaybeError failed = m_presets.writeBasicRotation(degrees)) {
+        emit message(Severity::Error,
+                     tr("The basic rotation could not be saved in PRESET.PR: %1")
+                         .arg(translatedMessage(*failed)),
+                     0);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace kerf::ui
