@@ -14,6 +14,9 @@ constexpr double kTinyLength = 1e-6;
 constexpr size_t kNoEntry = static_cast<size_t>(-1);
 // An element keeps the tangential limits of the one before down to this factor below its own.
 constexpr double kMaxShareStepDown = 2.5;
+// Elements up to this long keep the share of the element before whatever their length needs
+// (vertex noise, blends, halved fitted spans).
+constexpr double kKeepShareMaxLengthMm = 0.6;
 // Points of a curvature-step window kept beyond the reach (rounding of the distances).
 constexpr double kReachMarginMm = 1e-6;
 
@@ -119,8 +122,15 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
     }
     // Keep the limits of the element before when they let this one run at its feed too: where
     // they change the motion must pass with a = 0, and on a polyline the radius noise would
-    // otherwise flip the share from one vertex to the next.
-    if (previous && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
+    // otherwise flip the share from one vertex to the next. A long element that would reach its
+    // feed at the kept share only beyond its own end takes its own share instead: one point with
+    // a = 0 costs less than accelerating all along it at the lower share (a fitted raster row
+    // after a U-turn kept 60 % for 20 mm).
+    const double runVelocity = std::min(nominal, bestCap);
+    const bool keepingIsCheap =
+        previous && (e.geometry.length <= kKeepShareMaxLengthMm ||
+                     runVelocity * runVelocity <= 2.0 * previous->limits.accel * e.geometry.length);
+    if (keepingIsCheap && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
         Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
         const Limits& kept = previous->limits;
         // Only from a neighbouring share down (a row after a tight U-turn keeps its own).

@@ -133,6 +133,49 @@ TEST(BindingPoints, EqualStepLimitsDoNotBind) {
     }
 }
 
+// A line along X from the origin, a quarter of R20 turning left (tangent), then a tangent line
+// of `exitLength` along Y: returns the tangential acceleration planned for that exit line.
+double exitLineAccel(double exitLength) {
+    std::vector<canon::Command> commands;
+    canon::Command line;
+    line.location.line = 1;
+    line.body = canon::LinearMove{at(10.0, 0.0), 6000.0};
+    commands.push_back(line);
+    canon::ArcMove arc;
+    arc.target = at(30.0, 20.0);
+    arc.center = Vec3(10.0, 20.0, 0.0);
+    arc.plane = Plane::XY;
+    arc.sweepRad = std::acos(-1.0) / 2.0;
+    arc.feed = 6000.0;
+    canon::Command turn;
+    turn.location.line = 2;
+    turn.body = arc;
+    commands.push_back(turn);
+    canon::Command exit;
+    exit.location.line = 3;
+    exit.body = canon::LinearMove{at(30.0, 20.0 + exitLength), 6000.0};
+    commands.push_back(exit);
+    std::vector<MotionItem> items = planned(commands, false);
+    for (auto it = items.rbegin(); it != items.rend(); ++it) {
+        if (it->kind == MotionItem::Kind::Element) return it->element.limits.accel;
+    }
+    return -1.0;
+}
+
+TEST(BindingPoints, ALongElementTakesItsOwnShareWhereTheKeptOneWouldStillBeAccelerating) {
+    // Mill: A 2000 mm/s^2 per axis, F6000 = 100 mm/s. R20 (k = 0.05) runs at its feed only at
+    // 60 %: 1200 + 0.05 * 100^2 = 1700 <= 2000, where 90 % would need 2300. The line after it
+    // runs at the feed with either share; its own is 90 % (1800 mm/s^2). At 60 % it would need
+    // 100^2 / (2 * 1200) = 4.17 mm to reach the feed from rest: a shorter line takes its own
+    // share (a = 0 once where the share changes), a longer one, or one of at most 0.6 mm
+    // (vertex noise, blends), keeps the arc's.
+    EXPECT_DOUBLE_EQ(exitLineAccel(0.5), 1200.0);
+    EXPECT_DOUBLE_EQ(exitLineAccel(2.0), 1800.0);
+    EXPECT_DOUBLE_EQ(exitLineAccel(4.0), 1800.0);
+    EXPECT_DOUBLE_EQ(exitLineAccel(4.5), 1200.0);
+    EXPECT_DOUBLE_EQ(exitLineAccel(10.0), 1200.0);
+}
+
 TEST(BindingPoints, PolylineCircleReachesTheFeedAsFastAsTheLimitsAllow) {
     // From rest to 100 mm/s along R50 (centripetal 200 mm/s^2). With a = 0 at every element end
     // the start ramped as v ~ s^(1/3) and did not reach the feed within these 20 mm. With the
