@@ -19,9 +19,19 @@ constexpr double kMaxShareStepDown = 2.5;
 constexpr double kKeepShareMaxLengthMm = 0.6;
 // A share above the summed choice is taken where its own-sweep limit reaches this part of the feed.
 constexpr double kRaisedShareFeedFraction = 0.98;
+// The crossing-time choice of a share needs a crossing at least this many jerk ramps (A/J) long.
+constexpr double kCrossingInJerkRamps = 2.5;
 // Points of a curvature-step window kept beyond the reach (rounding of the distances).
 constexpr double kReachMarginMm = 1e-6;
 
+// Time to cross `length` entering at vIn, accelerating at `accel` up to `cap` (no jerk ramps).
+double crossingTime(double vIn, double cap, double accel, double length) {
+    const double v0 = std::min(vIn, cap);
+    const double rampLength = (cap * cap - v0 * v0) / (2.0 * accel);
+    if (rampLength >= length)
+        return 2.0 * length / (v0 + std::sqrt(v0 * v0 + 2.0 * accel * length));
+    return (cap - v0) / accel + (length - rampLength) / cap;
+}
 
 bool sameLimits(const Limits& a, const Limits& b) {
     return a.accel == b.accel && a.jerk == b.jerk;
@@ -139,6 +149,35 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
                 entry.limits = limits;
                 break;
             }
+        }
+    }
+    // Below its feed (near the crest of a curve) the summed choice gives the highest velocity,
+    // but the element is entered no faster than the cap of the one before: where that is lower,
+    // a higher share may cross it sooner. The share with the shortest crossing (accelerate from
+    // the entry velocity up to the share's own cap, then cruise) is taken, only where the
+    // crossing lasts at least 2.5 jerk ramps (the estimate has none, and a change of share costs
+    // a point with a = 0).
+    if (!ownShare && e.limits.accel <= 0.0 && previous) {
+        const double chosenCap = elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits,
+                                                    entry.contourBudget);
+        const double entryVelocity = std::min(previous->localCap, nominal);
+        const double length = e.geometry.length;
+        if (chosenCap < 0.95 * nominal && entryVelocity < chosenCap &&
+            length >= kCrossingInJerkRamps * chosenCap * entry.limits.accel / entry.limits.jerk) {
+            double fastest = crossingTime(entryVelocity, chosenCap, entry.limits.accel, length);
+            Limits chosen = entry.limits;
+            for (double share : kTangentialShares) {
+                Limits limits = tangentialLimits(m_model, entry.bounds, share);
+                if (limits.accel <= entry.limits.accel) break;
+                const double cap = elementVelocityCap(m_model, e.geometry, entry.bounds, limits,
+                                                      entry.contourBudget);
+                const double time = crossingTime(entryVelocity, cap, limits.accel, length);
+                if (time < fastest) {
+                    fastest = time;
+                    chosen = limits;
+                }
+            }
+            entry.limits = chosen;
         }
     }
     // Keep the limits of the element before when they let this one run at its feed too: where
