@@ -14,8 +14,24 @@ constexpr double kTinyLength = 1e-6;
 constexpr size_t kNoEntry = static_cast<size_t>(-1);
 // An element keeps the tangential limits of the one before down to this factor below its own.
 constexpr double kMaxShareStepDown = 2.5;
+// Elements up to this long keep the share of the element before whatever their length needs
+// (vertex noise, blends, halved fitted spans).
+constexpr double kKeepShareMaxLengthMm = 0.6;
+// A share above the summed choice is taken where its own-sweep limit reaches this part of the feed.
+constexpr double kRaisedShareFeedFraction = 0.98;
+// The crossing-time choice of a share needs a crossing at least this many jerk ramps (A/J) long.
+constexpr double kCrossingInJerkRamps = 2.5;
 // Points of a curvature-step window kept beyond the reach (rounding of the distances).
 constexpr double kReachMarginMm = 1e-6;
+
+// Time to cross `length` entering at vIn, accelerating at `accel` up to `cap` (no jerk ramps).
+double crossingTime(double vIn, double cap, double accel, double length) {
+    const double v0 = std::min(vIn, cap);
+    const double rampLength = (cap * cap - v0 * v0) / (2.0 * accel);
+    if (rampLength >= length)
+        return 2.0 * length / (v0 + std::sqrt(v0 * v0 + 2.0 * accel * length));
+    return (cap - v0) / accel + (length - rampLength) / cap;
+}
 
 bool sameLimits(const Limits& a, const Limits& b) {
     return a.accel == b.accel && a.jerk == b.jerk;
@@ -117,10 +133,64 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
         }
         if (cap >= 0.95 * nominal) break;
     }
+    // The summed peaks are those of a whole turn, but an arc of a fitted curve reaches only some
+    // of its phases. Where the element runs at its feed with the chosen share, a higher share is
+    // taken when its limit over the element's own sweep still lets it run within 2 % of the feed
+    // (the flanks of a sine polyline: 90 % instead of 30 %). An element held below its feed
+    // keeps the summed choice, which trades acceleration for velocity (a true arc R5: 10 %).
+    if (!ownShare && e.limits.accel <= 0.0 &&
+        elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits, entry.contourBudget) >=
+            nominal) {
+        for (double share : kTangentialShares) {
+            Limits limits = tangentialLimits(m_model, entry.bounds, share);
+            if (limits.accel <= entry.limits.accel) break;
+            if (elementVelocityCap(m_model, e.geometry, entry.bounds, limits,
+                                   entry.contourBudget) >= kRaisedShareFeedFraction * nominal) {
+                entry.limits = limits;
+                break;
+            }
+        }
+    }
+    // Below its feed (near the crest of a curve) the summed choice gives the highest velocity,
+    // but the element is entered no faster than the cap of the one before: where that is lower,
+    // a higher share may cross it sooner. The share with the shortest crossing (accelerate from
+    // the entry velocity up to the share's own cap, then cruise) is taken, only where the
+    // crossing lasts at least 2.5 jerk ramps (the estimate has none, and a change of share costs
+    // a point with a = 0).
+    if (!ownShare && e.limits.accel <= 0.0 && previous) {
+        const double chosenCap = elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits,
+                                                    entry.contourBudget);
+        const double entryVelocity = std::min(previous->localCap, nominal);
+        const double length = e.geometry.length;
+        if (chosenCap < 0.95 * nominal && entryVelocity < chosenCap &&
+            length >= kCrossingInJerkRamps * chosenCap * entry.limits.accel / entry.limits.jerk) {
+            double fastest = crossingTime(entryVelocity, chosenCap, entry.limits.accel, length);
+            Limits chosen = entry.limits;
+            for (double share : kTangentialShares) {
+                Limits limits = tangentialLimits(m_model, entry.bounds, share);
+                if (limits.accel <= entry.limits.accel) break;
+                const double cap = elementVelocityCap(m_model, e.geometry, entry.bounds, limits,
+                                                      entry.contourBudget);
+                const double time = crossingTime(entryVelocity, cap, limits.accel, length);
+                if (time < fastest) {
+                    fastest = time;
+                    chosen = limits;
+                }
+            }
+            entry.limits = chosen;
+        }
+    }
     // Keep the limits of the element before when they let this one run at its feed too: where
     // they change the motion must pass with a = 0, and on a polyline the radius noise would
-    // otherwise flip the share from one vertex to the next.
-    if (previous && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
+    // otherwise flip the share from one vertex to the next. A long element that would reach its
+    // feed at the kept share only beyond its own end takes its own share instead: one point with
+    // a = 0 costs less than accelerating all along it at the lower share (a fitted raster row
+    // after a U-turn kept 60 % for 20 mm).
+    const double runVelocity = std::min(nominal, bestCap);
+    const bool keepingIsCheap =
+        previous && (e.geometry.length <= kKeepShareMaxLengthMm ||
+                     runVelocity * runVelocity <= 2.0 * previous->limits.accel * e.geometry.length);
+    if (keepingIsCheap && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
         Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
         const Limits& kept = previous->limits;
         // Only from a neighbouring share down (a row after a tight U-turn keeps its own).
