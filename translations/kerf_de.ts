@@ -6949,10 +6949,6 @@ zyklen</translation>
         <translation>ISO-Programme kennen kein FAUTO: Vorschub eingeben</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>In ISO-Programmen wird dieser Zyklus als eigene G-Funktion geschrieben; der Dialog schreibt nur Parameterzyklen</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Dieser Zyklus hat keine ISO-Form</translation>
     </message>
@@ -8183,6 +8179,10 @@ wählen</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>Zyklus {1}: {2} erwartet in {1}.{3}</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>In ISO-Programmen nimmt Zyklus %1 nur %2 auf: die übrigen Felder leer lassen</translation>
     </message>
 </context>
 <context>

@@ -6949,10 +6949,6 @@ fijos</translation>
         <translation>Los programas ISO no tienen FAUTO: introduzca el avance</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>En programas ISO este ciclo se escribe como su propia función G; el diálogo solo escribe ciclos con parámetros</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Este ciclo no tiene forma ISO</translation>
     </message>
@@ -8183,6 +8179,10 @@ solución</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: se esperaba {2} en {1}.{3}</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>En programas ISO el ciclo %1 solo admite %2: deje vacíos los demás campos</translation>
     </message>
 </context>
 <context>

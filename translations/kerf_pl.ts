@@ -6952,10 +6952,6 @@ stałe</translation>
         <translation>Programy ISO nie mają FAUTO: wpisz posuw</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>W programach ISO ten cykl zapisuje się jako własną funkcję G; dialog zapisuje tylko cykle z parametrami</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Ten cykl nie ma postaci ISO</translation>
     </message>
@@ -8186,6 +8182,10 @@ rozwiązanie</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>cykl {1}: oczekiwano {2} w {1}.{3}</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>W programach ISO cykl %1 przyjmuje tylko %2: pozostałe pola zostaw puste</translation>
     </message>
 </context>
 <context>

@@ -6949,10 +6949,6 @@ fixos</translation>
         <translation>Os programas ISO não têm FAUTO: introduza o avanço</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>Em programas ISO este ciclo escreve-se como a sua própria função G; o diálogo só escreve ciclos com parâmetros</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Este ciclo não tem forma ISO</translation>
     </message>
@@ -8183,6 +8179,10 @@ solução</translation>
     <message>
         <source>cycle {1}: {2} expected in {1}.{3}</source>
         <translation>ciclo {1}: esperado {2} em {1}.{3}</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>Em programas ISO o ciclo %1 aceita apenas %2: deixe os outros campos vazios</translation>
     </message>
 </context>
 <context>
