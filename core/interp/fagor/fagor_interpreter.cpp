@@ -109,6 +109,13 @@ void FagorInterpreter::resetModal() {
 
 // ---- loading ---------------------------------------------------------------------------------
 
+MaybeError FagorInterpreter::replaceFile(const std::filesystem::path& file,
+                                         std::string_view content) const {
+    // A dry run (kerf check) admits the write as a run would and leaves the file.
+    if (!m_settings.writeFiles) return m_root.admitWrite(file);
+    return m_root.replace(file, content);
+}
+
 bool FagorInterpreter::waitForCheck() {
     if (!m_checkThread.joinable()) return !m_checkFailed;
     m_checking->executionOffset.store(SIZE_MAX);
@@ -450,7 +457,7 @@ void FagorInterpreter::finish(int mCode) {
     closeOpenProgram();
     auto save = [&](auto& table, const std::filesystem::path& path) {
         if (table && table->modified() && !path.empty()) {
-            if (auto error = m_root.replace(path, table->serialize())) {
+            if (auto error = replaceFile(path, table->serialize())) {
                 appendDiagnostic(m_diagnostics, *error);
             }
         }

@@ -131,6 +131,8 @@ private:
 
     // Loading and the run loop (fagor_interpreter.cpp).
     bool waitForCheck();
+    // Replaces a file of the NC root; a dry run (settings.writeFiles false) only admits it.
+    MaybeError replaceFile(const std::filesystem::path& file, std::string_view content) const;
     FagorProgram* loadProgram(const std::filesystem::path& path, std::string* error,
                               bool keepLabels);
     void enterProgram(FagorProgram* program, const BlockPosition& at);
