@@ -110,10 +110,12 @@ void FagorInterpreter::resetModal() {
 // ---- loading ---------------------------------------------------------------------------------
 
 MaybeError FagorInterpreter::replaceFile(const std::filesystem::path& file,
-                                         std::string_view content) const {
+                                         std::string_view content) {
+    if (m_settings.writeFiles) return m_root.replace(file, content);
     // A dry run (kerf check) admits the write as a run would and leaves the file.
-    if (!m_settings.writeFiles) return m_root.admitWrite(file);
-    return m_root.replace(file, content);
+    if (MaybeError refused = m_root.admitWrite(file)) return refused;
+    m_unwritten[file] = std::string(content);
+    return std::nullopt;
 }
 
 bool FagorInterpreter::waitForCheck() {
@@ -146,7 +148,11 @@ FagorProgram* FagorInterpreter::loadProgram(const std::filesystem::path& path, s
             return p.get();
         }
     }
-    auto source = m_root.loadProgram(path);
+    const auto unwritten = m_unwritten.find(path);
+    auto source = unwritten != m_unwritten.end()
+                      ? Expected<std::shared_ptr<const program::SourceText>>(
+                            program::SourceText::fromString(unwritten->second, path.string()))
+                      : m_root.loadProgram(path);
     if (!source) {
         if (error) *error = source.error().message();
         return nullptr;

@@ -52,11 +52,12 @@ protected:
     };
     // `kerf check|run program` in the test folder (its NC root, with TOOL.T); the remanent QR
     // parameters are kept in <dir>/xdg/kerf.
-    Result kerf(const std::string& command, const fs::path& program) {
+    Result kerf(const std::string& command, const fs::path& program,
+                const std::string& machine = "mill") {
         const fs::path out = dir / "stderr.txt";
         const std::string line = "XDG_DATA_HOME=\"" + (dir / "xdg").string() + "\" \"" +
-                                 KERF_BINARY + "\" " + command + " \"" + program.string() +
-                                 "\" > /dev/null 2> \"" + out.string() + "\"";
+                                 KERF_BINARY + "\" " + command + " --machine " + machine + " \"" +
+                                 program.string() + "\" > /dev/null 2> \"" + out.string() + "\"";
         const int status = std::system(line.c_str());
         Result r;
         r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -213,6 +214,35 @@ TEST_F(CheckDryRun, TheCheckWritesNoFile) {
                                          "3 Q2 = 10 / (QR1 - 5)\n"
                                          "4 END PGM QR MM\n");
     expectCheckFailsAsTheRun(q, q.string() + ":4:11: error: division by zero");
+}
+
+TEST_F(CheckDryRun, AFagorDivisionByZeroFailsAtItsOperator) {
+    const fs::path p = write("P000001.PIM", "%P000001,MX,\nN10 (P1=0)\nN20 (P2=5/P1)\nN30 M30\n");
+    const Result run = kerf("run", p, "lathe");
+    const Result check = kerf("check", p, "lathe");
+    EXPECT_EQ(check.exitCode, 1);
+    EXPECT_EQ(check.errors, run.errors);
+    // Line 3, column 10: the '/' of "N20 (P2=5/P1)".
+    EXPECT_EQ(check.errors, p.string() + ":3:10: error: division by zero\n");
+}
+
+// EX-12.12's pattern: the program writes P9 with OPEN/WRITE and runs it with EXEC. The check
+// runs P9 from memory and leaves the NC root as it was; the run writes P000009.PIM.
+TEST_F(CheckDryRun, AFagorProgramThatWritesAndRunsAProgramChecksWithoutWritingIt) {
+    const fs::path p = write("P000002.PIM",
+                             "%P000002,MX,\nN10 (OPEN P9)\nN20 (WRITE G0 X30)\nN30 (WRITE M30)\n"
+                             "N40 (EXEC P9)\nN50 M30\n");
+    const Result check = kerf("check", p, "lathe");
+    EXPECT_EQ(check.exitCode, 0) << check.errors;
+    EXPECT_FALSE(fs::exists(dir / "P000009.PIM"));
+    // What P9 holds is run: with a division by zero written into it, the check fails.
+    const fs::path q = write("P000003.PIM",
+                             "%P000003,MX,\nN10 (OPEN P8)\nN20 (WRITE (P1=0))\n"
+                             "N30 (WRITE (P2=1/P1))\nN40 (EXEC P8)\nN50 M30\n");
+    EXPECT_EQ(kerf("check", q, "lathe").exitCode, 1);
+    EXPECT_FALSE(fs::exists(dir / "P000008.PIM"));
+    EXPECT_EQ(kerf("run", p, "lathe").exitCode, 0);
+    EXPECT_TRUE(fs::exists(dir / "P000009.PIM"));
 }
 
 }  // namespace
