@@ -6965,10 +6965,6 @@ zyklen</translation>
         <translation>ISO-Programme kennen kein FAUTO: Vorschub eingeben</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>In ISO-Programmen wird dieser Zyklus als eigene G-Funktion geschrieben; der Dialog schreibt nur Parameterzyklen</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Dieser Zyklus hat keine ISO-Form</translation>
     </message>
@@ -8243,6 +8239,10 @@ wählen</translation>
     <message>
         <source>{1} has no SPC column for the basic rotation</source>
         <translation>{1} hat keine Spalte SPC für die Grunddrehung</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>In ISO-Programmen nimmt Zyklus %1 nur %2 auf: die übrigen Felder leer lassen</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

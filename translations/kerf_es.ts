@@ -6965,10 +6965,6 @@ fijos</translation>
         <translation>Los programas ISO no tienen FAUTO: introduzca el avance</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>En programas ISO este ciclo se escribe como su propia función G; el diálogo solo escribe ciclos con parámetros</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Este ciclo no tiene forma ISO</translation>
     </message>
@@ -8243,6 +8239,10 @@ solución</translation>
     <message>
         <source>{1} has no SPC column for the basic rotation</source>
         <translation>{1} no tiene columna SPC para el giro básico</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>En programas ISO el ciclo %1 solo admite %2: deje vacíos los demás campos</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

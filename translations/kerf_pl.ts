@@ -6968,10 +6968,6 @@ stałe</translation>
         <translation>Programy ISO nie mają FAUTO: wpisz posuw</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>W programach ISO ten cykl zapisuje się jako własną funkcję G; dialog zapisuje tylko cykle z parametrami</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Ten cykl nie ma postaci ISO</translation>
     </message>
@@ -8246,6 +8242,10 @@ rozwiązanie</translation>
     <message>
         <source>{1} has no SPC column for the basic rotation</source>
         <translation>{1} nie ma kolumny SPC dla obrotu podstawowego</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>W programach ISO cykl %1 przyjmuje tylko %2: pozostałe pola zostaw puste</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

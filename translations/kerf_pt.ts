@@ -6965,10 +6965,6 @@ fixos</translation>
         <translation>Os programas ISO não têm FAUTO: introduza o avanço</translation>
     </message>
     <message>
-        <source>In ISO programs this cycle is written as its own G function; the dialog writes parameter cycles only</source>
-        <translation>Em programas ISO este ciclo escreve-se como a sua própria função G; o diálogo só escreve ciclos com parâmetros</translation>
-    </message>
-    <message>
         <source>This cycle has no ISO form</source>
         <translation>Este ciclo não tem forma ISO</translation>
     </message>
@@ -8243,6 +8239,10 @@ solução</translation>
     <message>
         <source>{1} has no SPC column for the basic rotation</source>
         <translation>{1} não tem coluna SPC para a rotação básica</translation>
+    </message>
+    <message>
+        <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
+        <translation>Em programas ISO o ciclo %1 aceita apenas %2: deixe os outros campos vazios</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

@@ -42,7 +42,7 @@ std::vector<fs::path> Session::inputs() const {
 }
 
 std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck,
-                                     fagor::UserScreen* userScreen) {
+                                     fagor::UserScreen* userScreen, bool writeFiles) {
     auto session = std::make_unique<Session>();
     DiagnosticList machineProblems;
     auto machine = machine::loadMachine(options.machine, &machineProblems);
@@ -74,6 +74,7 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
     request.blockSkip = options.blockSkip;
     request.presetInMachine = origin;
     request.backgroundCheck = backgroundCheck;
+    request.writeFiles = writeFiles;
     request.userScreen = userScreen;
     // "IBn=value" items of --operator-input: the operator's inputs any FAGOR program may read.
     for (const std::string& option : options.operatorInput) {

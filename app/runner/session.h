@@ -33,8 +33,10 @@ struct Session {
 
 // With `backgroundCheck` the program's check runs alongside execution (see
 // KlartextInterpreter::CheckMode); the caller must then honour Interpreter::checkFailed().
-// With `userScreen` a FAGOR program runs as that screen's customisation program.
+// With `userScreen` a FAGOR program runs as that screen's customisation program. Without
+// `writeFiles` (kerf check's dry run) the files the program writes are admitted, not written.
 std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundCheck = false,
-                                     fagor::UserScreen* userScreen = nullptr);
+                                     fagor::UserScreen* userScreen = nullptr,
+                                     bool writeFiles = true);
 
 }  // namespace kerf::app

@@ -66,6 +66,7 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
         settings.startInMachine = start;
     }
     settings.userScreen = request.userScreen;
+    settings.writeFiles = request.writeFiles;
     for (const auto& [n, value] : request.operatorInputs) {
         if (n >= 0 && n < static_cast<int>(settings.inputValues.size()))
             settings.inputValues[static_cast<size_t>(n)] = value;

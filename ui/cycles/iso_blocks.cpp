@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+#include "ui/cycles/iso_old_cycles.h"
+
 namespace kerf::ui {
 
 namespace {
@@ -98,32 +100,43 @@ IsoResult motionBlock(const QString& g, const Words& w) {
 
 IsoResult isoCycleBlock(const QStringList& klartextBlocks) {
     static const QRegularExpression header(QStringLiteral(R"(^CYCL DEF (\d+) (.*?)(\s*~)?$)"));
-    if (klartextBlocks.size() != 1)
-        return failure(QCoreApplication::translate(
-            "kerf",
-            "In ISO programs this cycle is written as its own G function; the "
-            "dialog writes parameter cycles only"));
+    static const QRegularExpression oldHeader(QStringLiteral(R"(^CYCL DEF (\d+)\.0\b)"));
+    static const QRegularExpression subBlock(QStringLiteral(R"(^CYCL DEF \d+\.\d+\s*)"));
+    if (klartextBlocks.isEmpty())
+        return failure(QCoreApplication::translate("kerf", "This cycle has no ISO form"));
+    if (const auto old = oldHeader.match(klartextBlocks.first()); old.hasMatch()) {
+        QStringList words;
+        for (int i = 1; i < klartextBlocks.size(); ++i)
+            words << QString(klartextBlocks[i]).remove(subBlock);
+        return isoOldCycleBlock(old.captured(1).toInt(), words.join(QLatin1Char(' ')));
+    }
     QStringList lines = klartextBlocks.first().split(QLatin1Char('\n'));
     const auto m = header.match(lines.first());
-    if (!m.hasMatch())
+    if (klartextBlocks.size() != 1 || !m.hasMatch())
         return failure(QCoreApplication::translate("kerf", "This cycle has no ISO form"));
-    lines[0] = QStringLiteral("G%1 %2").arg(m.captured(1), m.captured(2)).trimmed();
+    // The SL and cylinder-surface cycles 20-39 are G120-G139 (the cycle manual's index).
+    const int number = m.captured(1).toInt();
+    lines[0] =
+        QStringLiteral("G%1 %2").arg(number < 100 ? number + 100 : number).arg(m.captured(2));
+    lines[0] = lines[0].trimmed();
     static const QRegularExpression continuation(QStringLiteral(R"(\s*~\s*$)"));
     for (QString& line : lines)
         line.remove(continuation);
     return {lines.join(QLatin1Char('\n')), QString()};
 }
 
-QString klartextCycleBlock(const QString& isoBlock) {
+QStringList klartextCycleBlocks(const QString& isoBlock) {
     static const QRegularExpression header(QStringLiteral(R"(^\s*G(\d{3,4})\b(.*)$)"),
                                            QRegularExpression::CaseInsensitiveOption);
     QStringList lines = isoBlock.split(QLatin1Char('\n'));
     const auto m = header.match(lines.first());
-    if (!m.hasMatch()) return {};
-    lines[0] = QStringLiteral("CYCL DEF %1%2").arg(m.captured(1), m.captured(2));
+    if (!m.hasMatch()) return klartextOldCycleBlocks(isoBlock);
+    const int g = m.captured(1).toInt();
+    lines[0] =
+        QStringLiteral("CYCL DEF %1%2").arg(g >= 120 && g <= 139 ? g - 100 : g).arg(m.captured(2));
     static const QRegularExpression end(QStringLiteral(R"(\s*\*\s*$)"));
     lines.last().remove(end);
-    return lines.join(QLatin1Char('\n'));
+    return {lines.join(QLatin1Char('\n'))};
 }
 
 IsoResult isoPathBlock(PathFunction function, const QStringList& values) {

@@ -17,12 +17,13 @@ struct IsoResult {
     QString error;  // empty: `block` is valid
 };
 
-// From the Klartext cycle definition writeCycleBlocks returns (new-style cycles only; the old
-// cycles' one-block ISO forms are not written by the dialogs).
+// From the Klartext cycle definition writeCycleBlocks returns: a parameter cycle as "G200 ..."
+// (the SL and cylinder-surface cycles 20-39 as G120-G139), an old cycle as its one G block
+// (iso_old_cycles.h).
 IsoResult isoCycleBlock(const QStringList& klartextBlocks);
-// Back: an ISO cycle block (number and '*' removed) as the Klartext block readCycleBlocks reads;
-// empty when it is not a parameter cycle.
-QString klartextCycleBlock(const QString& isoBlock);
+// Back: an ISO cycle block (number and '*' removed) as the Klartext block(s) readCycleBlocks
+// reads; empty when it is not a cycle definition.
+QStringList klartextCycleBlocks(const QString& isoBlock);
 // The path function or TOOL CALL from the dialog's values (checked by checkPathFunction).
 IsoResult isoPathBlock(PathFunction function, const QStringList& values);
 

@@ -124,7 +124,7 @@ std::optional<LineRange> cycleDefinitionAt(const QTextDocument& document, int li
     LineRange range = blockAt(document, line, dialect);
     const auto headerOf = [&](int first) {
         const QString text = withoutNumber(document.findBlockByNumber(first), dialect);
-        return dialect == program::Dialect::TncIso ? klartextCycleBlock(text) : text;
+        return dialect == program::Dialect::TncIso ? klartextCycleBlocks(text).value(0) : text;
     };
     int subBlock = -1;
     const auto number = cycleDefNumber(headerOf(range.first), &subBlock);
@@ -161,17 +161,24 @@ QStringList blockTexts(const QTextDocument& document, LineRange range, program::
         else
             blocks.last() += QLatin1Char('\n') + block.text();
     }
-    if (dialect == program::Dialect::TncIso) {
-        for (QString& block : blocks)
-            block = klartextCycleBlock(block);
+    if (dialect != program::Dialect::TncIso) return blocks;
+    QStringList klartext;
+    for (const QString& block : blocks) {
+        const QStringList cycle = klartextCycleBlocks(block);
+        klartext << (cycle.isEmpty() ? QStringList{QString()} : cycle);
     }
-    return blocks;
+    return klartext;
 }
 
 bool programIsInch(const QTextDocument& document) {
     static const QRegularExpression begin(QStringLiteral(R"(BEGIN\s+PGM\s+\S+\s+INCH\b)"),
                                           QRegularExpression::CaseInsensitiveOption);
+    // TNC ISO: "%NAME G70 *" opens an inch program.
+    static const QRegularExpression isoHeader(QStringLiteral(R"(^\s*%\S+\s+G7([01])\b)"),
+                                              QRegularExpression::CaseInsensitiveOption);
     for (QTextBlock b = document.begin(); b.isValid() && b.blockNumber() < 50; b = b.next()) {
+        if (const auto iso = isoHeader.match(b.text()); iso.hasMatch())
+            return iso.captured(1) == QLatin1String("0");
         if (b.text().contains(QLatin1String("BEGIN"), Qt::CaseInsensitive))
             return begin.match(b.text()).hasMatch();
     }

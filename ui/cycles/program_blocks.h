@@ -29,7 +29,7 @@ std::optional<LineRange> cycleDefinitionAt(const QTextDocument& document, int li
 QStringList blockTexts(const QTextDocument& document, LineRange range,
                        program::Dialect dialect = program::Dialect::Klartext);
 
-// "BEGIN PGM ... INCH": lengths in the dialogs are then in inch.
+// "BEGIN PGM ... INCH" or ISO "%NAME G70": lengths in the dialogs are then in inch.
 bool programIsInch(const QTextDocument& document);
 
 // Inserts `blocks` (texts without numbers) after the block under the cursor — before END PGM

@@ -26,6 +26,27 @@ std::string programStem(const std::string& fileName) {
     return std::filesystem::path(fileName).stem().string();
 }
 
+bool isIsoName(const std::string& fileName) {
+    const std::string extension = std::filesystem::path(fileName).extension().string();
+    return extension == ".I" || extension == ".i";
+}
+
+// The blank's corners in the ISO blocks G30 (with the tool axis' plane) and G31.
+std::string isoProgramText(const machine::MachineConfig& machine, const NewProgramSpec& spec,
+                           const std::string& name) {
+    const std::string unit = spec.inch ? " G70 *\n" : " G71 *\n";
+    const std::string plane =
+        machine.toolAxis == 'X' ? "G19" : (machine.toolAxis == 'Y' ? "G18" : "G17");
+    const auto& lo = spec.blankMin;
+    const auto& hi = spec.blankMax;
+    return "%" + name + unit +  //
+           "N10 G30 " + plane + " X" + signedValue(lo[0]) + " Y" + signedValue(lo[1]) + " Z" +
+           signedValue(lo[2]) + " *\n" +  //
+           "N20 G31 G90 X" + signedValue(hi[0]) + " Y" + signedValue(hi[1]) + " Z" +
+           signedValue(hi[2]) + " *\n" +  //
+           "N99999999 %" + name + unit;
+}
+
 }  // namespace
 
 std::string newProgramFileName(const machine::MachineConfig& machine, const std::string& name) {
@@ -38,6 +59,7 @@ std::string newProgramText(const machine::MachineConfig& machine, const NewProgr
     if (isLathe(machine)) {
         return "%" + name + ",MX,\n" + (spec.inch ? "N10 G70\n" : "N10 G71\n") + "N20 M30\n";
     }
+    if (isIsoName(spec.name)) return isoProgramText(machine, spec, name);
     const std::string unit = spec.inch ? "INCH" : "MM";
     const std::string axis(1, machine.toolAxis);
     const auto& lo = spec.blankMin;

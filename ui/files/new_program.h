@@ -26,6 +26,11 @@ std::string newProgramFileName(const machine::MachineConfig& machine, const std:
 //   1 BLK FORM 0.1 Z X+0 Y+0 Z-40
 //   2 BLK FORM 0.2 X+100 Y+100 Z+0
 //   3 END PGM NAME MM
+// A mill program named `.I` is TNC ISO (docs/tnciso.md), the same blank in its ISO form:
+//   %NAME G71 *
+//   N10 G30 G17 X+0 Y+0 Z-40 *
+//   N20 G31 G90 X+100 Y+100 Z+0 *
+//   N99999999 %NAME G71 *
 // Lathe (FAGOR): the `%NAME,MX,` header, the unit (G71 mm, G70 inch) and M30.
 std::string newProgramText(const machine::MachineConfig& machine, const NewProgramSpec& spec);
 

@@ -116,6 +116,9 @@ FagorProgram* FagorInterpreter::programFileByNumber(int number, bool keepLabels,
             return p.get();
         }
     }
+    for (const auto& [path, text] : m_unwritten) {
+        if (programNumberOf(path) == number) return loadProgram(path, nullptr, keepLabels);
+    }
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(m_root.path(), error)) {
         std::error_code ignored;
@@ -193,14 +196,19 @@ const SubroutineEntry* FagorInterpreter::findSubroutine(int number, FagorProgram
         // Subroutines of other programs in the control's memory: the program files of the NC root.
         m_scannedRoot = true;
         commitOpenProgram();
-        std::error_code error;
-        for (const auto& entry : std::filesystem::directory_iterator(m_root.path(), error)) {
-            std::error_code ignored;
-            if (!entry.is_regular_file(ignored) || programNumberOf(entry.path()) < 0) continue;
-            FagorProgram* p = loadProgram(entry.path(), nullptr, false);
+        const auto scan = [this](const std::filesystem::path& path) {
+            if (programNumberOf(path) < 0) return;
+            FagorProgram* p = loadProgram(path, nullptr, false);
             if (p != nullptr && hasErrors(p->diagnostics)) {
                 appendDiagnostics(m_diagnostics, p->diagnostics);
             }
+        };
+        for (const auto& [path, text] : m_unwritten)
+            scan(path);  // a dry run's programs (kerf check)
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(m_root.path(), error)) {
+            std::error_code ignored;
+            if (entry.is_regular_file(ignored)) scan(entry.path());
         }
         found = search();
     }

@@ -109,6 +109,15 @@ void FagorInterpreter::resetModal() {
 
 // ---- loading ---------------------------------------------------------------------------------
 
+MaybeError FagorInterpreter::replaceFile(const std::filesystem::path& file,
+                                         std::string_view content) {
+    if (m_settings.writeFiles) return m_root.replace(file, content);
+    // A dry run (kerf check) admits the write as a run would and leaves the file.
+    if (MaybeError refused = m_root.admitWrite(file)) return refused;
+    m_unwritten[file] = std::string(content);
+    return std::nullopt;
+}
+
 bool FagorInterpreter::waitForCheck() {
     if (!m_checkThread.joinable()) return !m_checkFailed;
     m_checking->executionOffset.store(SIZE_MAX);
@@ -139,7 +148,11 @@ FagorProgram* FagorInterpreter::loadProgram(const std::filesystem::path& path, s
             return p.get();
         }
     }
-    auto source = m_root.loadProgram(path);
+    const auto unwritten = m_unwritten.find(path);
+    auto source = unwritten != m_unwritten.end()
+                      ? Expected<std::shared_ptr<const program::SourceText>>(
+                            program::SourceText::fromString(unwritten->second, path.string()))
+                      : m_root.loadProgram(path);
     if (!source) {
         if (error) *error = source.error().message();
         return nullptr;
@@ -450,7 +463,7 @@ void FagorInterpreter::finish(int mCode) {
     closeOpenProgram();
     auto save = [&](auto& table, const std::filesystem::path& path) {
         if (table && table->modified() && !path.empty()) {
-            if (auto error = m_root.replace(path, table->serialize())) {
+            if (auto error = replaceFile(path, table->serialize())) {
                 appendDiagnostic(m_diagnostics, *error);
             }
         }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -131,6 +132,9 @@ private:
 
     // Loading and the run loop (fagor_interpreter.cpp).
     bool waitForCheck();
+    // Replaces a file of the NC root; a dry run (settings.writeFiles false) admits it and keeps
+    // the content in m_unwritten, where the run reads it back.
+    MaybeError replaceFile(const std::filesystem::path& file, std::string_view content);
     FagorProgram* loadProgram(const std::filesystem::path& path, std::string* error,
                               bool keepLabels);
     void enterProgram(FagorProgram* program, const BlockPosition& at);
@@ -378,6 +382,8 @@ private:
     LocalAssignments m_modalLocals;
     int m_modalProgram = -1;  // MEXEC
     OpenProgram m_open;
+    // A dry run's writes (kerf check): read back by EXEC/CALL instead of the file left as it was.
+    std::map<std::filesystem::path, std::string> m_unwritten;
     std::array<double, 4> m_analogOut{};
     double m_programFeedOverride = 0.0;
     double m_programSpindleOverride = 0.0;

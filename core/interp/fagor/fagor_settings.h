@@ -22,7 +22,9 @@ struct FagorSettings {
     std::filesystem::path toolOffsetFile;           // empty: no table (every offset is zero)
     std::filesystem::path zeroOffsetFile;           // empty: no table
     std::filesystem::path toolFile;                 // empty: tool n uses offset n
-    uint8_t blockSkip = 0;                          // PLC marks BLKSKIP1-3 (bit 0: '/' and '/1')
+    bool writeFiles =
+        true;  // false (a dry run): OPEN/WRITE and the tables are admitted, not written
+    uint8_t blockSkip = 0;  // PLC marks BLKSKIP1-3 (bit 0: '/' and '/1')
     // The machine's workpiece origin (machine file presets, kerf run --work-offset), machine
     // coordinates: the zero offset in effect when the table selects none (like G92).
     Pose presetInMachine{};

@@ -142,7 +142,7 @@ void FagorInterpreter::commitOpenProgram() {
         m_open = OpenProgram{};
         return;
     }
-    if (MaybeError error = m_root.replace(m_open.path, m_open.content)) {
+    if (MaybeError error = replaceFile(m_open.path, m_open.content)) {
         appendDiagnostic(m_diagnostics, *error);
     }
 }

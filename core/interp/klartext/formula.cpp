@@ -89,8 +89,9 @@ std::optional<double> FormulaParser::fail(std::string code, std::string messageT
     return std::nullopt;
 }
 
-std::optional<double> FormulaParser::domainCheck(double value, const char* what) {
+std::optional<double> FormulaParser::domainCheck(double value, const char* what, size_t at) {
     if (std::isfinite(value) || checkOnly()) return checkOnly() ? 0.0 : value;
+    m_cursor.setPosition(at);
     return fail("math", KERF_TR_NOOP("{1} is not defined for this value"), {what});
 }
 
@@ -266,11 +267,12 @@ std::optional<double> FormulaParser::power() {
     auto left = unary();
     if (!left) return std::nullopt;
     while (m_cursor.peek() == '^') {
-        m_cursor.setPosition(m_cursor.position() + 1);
+        const size_t operatorAt = m_cursor.position();
+        m_cursor.setPosition(operatorAt + 1);
         auto right = unary();
         if (!right) return std::nullopt;
         record(CompiledFormula::Operation::Power);
-        auto value = domainCheck(std::pow(*left, *right), "^");
+        auto value = domainCheck(std::pow(*left, *right), "^", operatorAt);
         if (!value) return std::nullopt;
         left = value;
     }
@@ -312,7 +314,7 @@ std::optional<double> FormulaParser::unary() {
                 auto argument = unary();
                 if (!argument) return std::nullopt;
                 if (m_recording) m_recording->pushFunction(f.apply);
-                return domainCheck(f.apply(*argument), f.name.data());
+                return domainCheck(f.apply(*argument), f.name.data(), at);
             }
             if (name == "PI") {
                 m_cursor.setPosition(end);

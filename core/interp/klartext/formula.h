@@ -69,7 +69,8 @@ private:
     std::optional<double> read(QRef ref);
     std::optional<double> fail(std::string code, std::string messageTemplate,
                                std::vector<std::string> args = {});
-    std::optional<double> domainCheck(double value, const char* what);
+    // An error at `at` (the function's name or the operator) when `value` is not a number.
+    std::optional<double> domainCheck(double value, const char* what, size_t at);
     // An arithmetic result that is not finite is an overflow, reported at its operator.
     std::optional<double> overflowCheck(double value, size_t operatorOffset, char op);
     // Parses and evaluates the formula at the cursor, recording it into `entry`.

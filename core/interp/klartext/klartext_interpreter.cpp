@@ -380,7 +380,8 @@ void KlartextInterpreter::finish(bool emitEnd, int mCode) {
         emit(canon::ProgramStop{canon::StopKind::End, mCode});
         m_endEmitted = true;
     }
-    if (m_q.remanentChanged() && !m_settings.remanentFile.empty()) {
+    // A dry run (kerf check, the editor's check) reads the QR parameters and keeps them.
+    if (m_settings.writeFiles && m_q.remanentChanged() && !m_settings.remanentFile.empty()) {
         if (auto error = m_q.saveRemanent(m_settings.remanentFile))
             appendDiagnostic(m_diagnostics, *error);
     }

@@ -82,7 +82,7 @@ bool KlartextInterpreter::writePresetRotation(int cycle, int row, double degrees
             {rewritten.error().code, rewritten.error().messageTemplate, rewritten.error().args});
         return false;
     }
-    if (auto error = m_root.replace(file, rewritten->serialize())) {
+    if (auto error = replaceFile(file, rewritten->serialize())) {
         fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the preset table: {2}"),
              {std::to_string(cycle), error->format()});
         return false;
@@ -114,7 +114,7 @@ bool KlartextInterpreter::writeDatumRow(int cycle, int row,
             return false;
         }
     }
-    if (auto error = m_root.replace(*m_datumTablePath, table.serialize())) {
+    if (auto error = replaceFile(*m_datumTablePath, table.serialize())) {
         fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the datum table: {2}"),
              {std::to_string(cycle), error->format()});
         return false;

@@ -337,6 +337,78 @@ TEST(ProgrammingSoftkeys, OverAnIsoProgramTheDialogsWriteIsoBlocks) {
     EXPECT_EQ(lines.last(), "N99999999 %K G71 *");
 }
 
+// The old cycles and the SL cycles through the same keys over an ISO program: cycle 10 becomes
+// its G73 block, cycle 20 the G120 block (the cycle manual's index); the program runs with them.
+TEST(ProgrammingSoftkeys, OverAnIsoProgramOldAndSlCyclesWriteTheirGFunctions) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(program::Dialect::TncIso);
+    editor.setPlainText(
+        "%R G71 *\nN10 G30 G17 X+0 Y+0 Z-20 *\nN20 G31 G90 X+100 Y+100 Z+0 *\n"
+        "N30 T1 G17 S2000 *\nN40 G00 G40 G90 X+0 Y+0 Z+50 *\nN99999999 %R G71 *");
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(4)));
+    std::vector<SoftkeyRow> shown;
+    SoftkeyPaging paging{[&shown](std::vector<SoftkeyRow> rows) { shown = std::move(rows); },
+                         [] {}};
+    const auto findKey = [](const std::vector<SoftkeyRow>& rows, const QString& id) {
+        for (const SoftkeyRow& row : rows) {
+            for (const Softkey& key : row) {
+                if (key.id == id) return key.action;
+            }
+        }
+        return std::function<void()>();
+    };
+    const std::vector<SoftkeyRow> entry = programmingEntryRows(&editor, nullptr, paging);
+    // The group that holds `cycle`, opened from CYCL DEF.
+    const auto openGroupOf = [&](int cycle) {
+        for (int group = 0; group < 6; ++group) {
+            findKey(entry, "cyclDef")();
+            const auto key = findKey(shown, QStringLiteral("cycleGroup%1").arg(group));
+            if (!key) break;
+            key();
+            if (findKey(shown, QStringLiteral("cycle%1").arg(cycle))) return true;
+        }
+        return false;
+    };
+    ASSERT_TRUE(openGroupOf(10));
+    answerNextDialog<CycleDialog>([](CycleDialog& dialog) {
+        dialog.input(0)->setText("I90");
+        dialog.accept();
+    });
+    findKey(shown, "cycle10")();
+    ASSERT_TRUE(openGroupOf(20));
+    answerNextDialog<CycleDialog>([](CycleDialog& dialog) {
+        dialog.input(0)->setText("-6");  // Q1 milling depth
+        dialog.accept();
+    });
+    findKey(shown, "cycle20")();
+    const QStringList lines = editor.toPlainText().split('\n');
+    EXPECT_EQ(lines.value(5), "N50 G73 G91 H+90 *") << editor.toPlainText().toStdString();
+    EXPECT_EQ(lines.value(6), "N60 G120 CONTOUR DATA");
+    EXPECT_EQ(lines.value(7), "  Q1=-6        ;MILLING DEPTH");
+    EXPECT_EQ(lines.last(), "N99999999 %R G71 *");
+
+    // The rotation is in force when the program runs: X+10 after a 90 degree turn is Y+10.
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(5)));
+    answerNextDialog<PathFunctionDialog>([](PathFunctionDialog& dialog) {
+        type(dialog, 0, "10");
+        type(dialog, 2, "-1");
+        type(dialog, 4, "100");
+        dialog.accept();
+    });
+    findKey(entry, "pathL")();
+    EXPECT_EQ(editor.toPlainText().split('\n').value(6), "N60 G01 G90 X+10 Z-1 F100 *");
+    EXPECT_EQ(editor.toPlainText().split('\n').value(7), "N70 G120 CONTOUR DATA");
+    const test::ProgramRun run = test::runIsoProgram(editor.toPlainText().toStdString());
+    EXPECT_TRUE(run.finished);
+    EXPECT_TRUE(run.diagnostics.empty())
+        << (run.diagnostics.empty() ? "" : run.diagnostics.front().format());
+    ASSERT_EQ(run.feedZ.size(), 1u);
+    EXPECT_NEAR(run.feedZ.front(), -1.0, 1e-9);
+    EXPECT_NEAR(run.feedXY.front()[0], 0.0, 1e-9);
+    EXPECT_NEAR(run.feedXY.front()[1], 10.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace kerf::ui
 

@@ -12,10 +12,13 @@ namespace {
 class FeedRecorder : public canon::Sink {
 public:
     void consume(const canon::Command& command) override {
-        if (const auto* line = std::get_if<canon::LinearMove>(&command.body))
+        if (const auto* line = std::get_if<canon::LinearMove>(&command.body)) {
             feedZ.push_back(line->target[Axis::Z]);
+            feedXY.push_back({line->target[Axis::X], line->target[Axis::Y]});
+        }
     }
     std::vector<double> feedZ;
+    std::vector<std::array<double, 2>> feedXY;
 };
 
 ProgramRun runProgram(const std::string& text, bool iso) {
@@ -46,6 +49,7 @@ ProgramRun runProgram(const std::string& text, bool iso) {
         if (d.severity == Severity::Error) run.diagnostics.push_back(d);
     }
     run.feedZ = recorder.feedZ;
+    run.feedXY = recorder.feedXY;
     return run;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -8,12 +9,13 @@
 namespace kerf::ui::test {
 
 // What running a Klartext program on the simulated mill gave: the diagnostics (empty when it
-// ran to its end) and the tool-axis coordinate of every feed move. Kept apart from the Qt
+// ran to its end) and the tool-axis coordinate and X, Y of every feed move. Kept apart from the Qt
 // test files: Qt's `emit` macro collides with the interpreter's emit().
 struct ProgramRun {
     DiagnosticList diagnostics;
     bool finished = false;
     std::vector<double> feedZ;
+    std::vector<std::array<double, 2>> feedXY;
 };
 
 ProgramRun runKlartextProgram(const std::string& text);

@@ -86,6 +86,30 @@ TEST(NewProgram, TheMillWritesBeginPgmTheBlankAndEndPgmAndOpensIt) {
     EXPECT_EQ(window.messages()->messageCount(), messages + 1);
 }
 
+// A name ending in .I makes a TNC ISO program (docs/tnciso.md): the same blank as G30/G31, the
+// header and the end block; the editor treats it as ISO and it checks clean.
+TEST(NewProgram, AnIsoNameWritesTheIsoHeaderBlankAndEndBlock) {
+    test::testApp();
+    const fs::path dir = kerf::test::uniqueTempDir("hmi_new_program_iso");
+    MainWindow window(contextIn(dir));
+    NewProgramSpec spec;
+    spec.name = "PLATE.I";
+    spec.blankMin = {-10.0, 0.0, -25.5};
+    spec.blankMax = {120.0, 80.0, 0.0};
+    window.setPrompts(answeringNewProgram(spec));
+    ASSERT_TRUE(window.newProgram());
+    EXPECT_EQ(fileText(dir / "PLATE.I"),
+              "%PLATE G71 *\n"
+              "N10 G30 G17 X-10 Y+0 Z-25.5 *\n"
+              "N20 G31 G90 X+120 Y+80 Z+0 *\n"
+              "N99999999 %PLATE G71 *\n");
+    EXPECT_EQ(window.program()->editor()->dialect(), program::Dialect::TncIso);
+    window.program()->checkNow();
+    QSignalSpy checked(window.program(), &ProgramPanel::diagnosticsChanged);
+    ASSERT_TRUE(checked.wait(10000));
+    EXPECT_FALSE(hasErrors(window.program()->diagnostics()));
+}
+
 TEST(NewProgram, InchAndALatheProgramWithItsPercentHeader) {
     test::testApp();
     const fs::path dir = kerf::test::uniqueTempDir("hmi_new_program_lathe");
