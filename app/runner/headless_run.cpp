@@ -14,6 +14,7 @@
 #include "app/runner/picture_output.h"
 #include "app/runner/run_report.h"
 #include "app/runner/session.h"
+#include "app/runner/stock_output.h"
 #include "core/base/atomic_file.h"
 #include "core/canon/tee_sink.h"
 #include "core/canon/trace_printer.h"
@@ -103,7 +104,8 @@ int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     return hasErrors(all) ? 1 : 0;
 }
 
-int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
+int runProgramCommand(const RunOptions& options, std::ostream& diagnostics,
+                      PictureOutputFactory makePicture) {
     // The check runs alongside execution unless the trace goes to a stream we cannot take back.
     const bool traceToStdout = options.traceFile && *options.traceFile == "-";
     HeadlessOperator screenOperator(options);  // a FAGOR user screen (--user-screen)
@@ -123,8 +125,18 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     canon::TeeSink sinks;
     sinks.add(statistics);
     sinks.add(displayMode);
-    PictureOutput picture(options, *session);
-    if (picture.active()) sinks.add(picture.sink());
+    StockOutput stock(options, *session);
+    if (stock.active()) sinks.add(stock.sink());
+    std::unique_ptr<PictureOutput> picture;
+    DiagnosticList runProblems;
+    if (options.png && makePicture != nullptr) {
+        picture = makePicture(options, *session);
+        sinks.add(picture->sink());
+    } else if (options.png) {
+        runProblems.push_back(Diagnostic::make(
+            Severity::Error, "picture", options.png->string(), 0, 0,
+            KERF_TR_NOOP("no picture: this program cannot draw (kerf-gui draws pictures)")));
+    }
     DriveOutput drives(options, *session);
     if (drives.active()) sinks.add(drives.sink());
     MotionOutput motion(options, *session);
@@ -140,7 +152,6 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
 
     std::FILE* traceStream = nullptr;
     std::unique_ptr<canon::TracePrinter> trace;
-    DiagnosticList runProblems;
     if (options.traceFile) {
         if (*options.traceFile == "-") {
             traceStream = stdout;
@@ -166,7 +177,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
     if (session->ready()) {
         interp::Interpreter& interpreter = *session->program.interpreter;
         statistics.setStart(interpreter.nominalPosition());
-        picture.setStart(interpreter.nominalPosition());
+        stock.setStart(interpreter.nominalPosition());
+        if (picture) picture->setStart(interpreter.nominalPosition());
         drives.setStart(interpreter.nominalPosition(), runProblems);
         motion.setStart(interpreter.nominalPosition());
         if (clock) clock->setStart(interpreter.nominalPosition());
@@ -221,7 +233,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         }
     }
     const canon::PathStatistics& results = rejected ? nothingRan : statistics;
-    picture.finish(session->ready() && !rejected, runProblems);
+    stock.finish(runProblems);
+    if (picture) picture->finish(session->ready() && !rejected, stock, runProblems);
     drives.finish(session->ready() && !rejected, runProblems);
     motion.finish(session->ready() && !rejected, runProblems);
     double machiningTimeS = 0.0;
@@ -248,7 +261,8 @@ int runProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
 
     if (options.reportFile) {
         nlohmann::json report = buildRunReport(summary, results, session->machine);
-        picture.addToReport(report);
+        stock.addToReport(report);
+        if (picture) picture->addToReport(report);
         drives.addToReport(report, summary.xInDiameter);
         motion.addToReport(report, summary.xInDiameter);
         if (screenOperator.active()) screenOperator.addToReport(report);

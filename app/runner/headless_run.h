@@ -2,6 +2,7 @@
 
 #include <iosfwd>
 
+#include "app/runner/picture_output.h"
 #include "app/runner/run_options.h"
 
 namespace kerf::app {
@@ -12,6 +13,8 @@ int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics);
 
 // `kerf run`: interprets the whole program without a window, writes the trace and the JSON
 // report as requested and prints diagnostics. Returns the exit code (0 ok, 1 errors).
-int runProgramCommand(const RunOptions& options, std::ostream& diagnostics);
+// `makePicture` draws --png (app/runner/png_picture.h); without it --png is an error.
+int runProgramCommand(const RunOptions& options, std::ostream& diagnostics,
+                      PictureOutputFactory makePicture = nullptr);
 
 }  // namespace kerf::app

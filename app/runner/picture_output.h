@@ -14,33 +14,28 @@
 namespace kerf::app {
 
 struct Session;
+class StockOutput;
 
 // Parses --size WIDTHxHEIGHT (each 16..8192); nothing if malformed.
 std::optional<std::pair<int, int>> parsePictureSize(const std::string& text);
 
-// `kerf run --png/--stock`: collects the toolpath and simulates the stock from the same canonical
-// stream the run consumes, then renders the picture (starting Xvfb when there is no display) and
-// adds the stock figures to the report.
+// `kerf run --png`: collects the toolpath from the canonical stream the run consumes and renders
+// the picture (with the stock of --stock). Drawing needs VTK, which `kerf` itself does not load
+// (it hands such runs to kerf-gui, app/main.cpp): the implementation is made by
+// makePngPicture (app/runner/png_picture.h, library runner_picture).
 class PictureOutput {
 public:
-    PictureOutput(const RunOptions& options, const Session& session);
-    ~PictureOutput();
-    PictureOutput(const PictureOutput&) = delete;
-    PictureOutput& operator=(const PictureOutput&) = delete;
-
-    bool active() const { return m_sink != nullptr; }
-    canon::Sink& sink() { return *m_sink; }
-    void setStart(const Pose& start);
-    // After the run: finishes the stock and writes the picture when the program ran; problems
-    // are appended.
-    void finish(bool programRan, DiagnosticList& problems);
-    // Adds "stock" (with --stock) and "picture" (with --png) to the report.
-    void addToReport(nlohmann::json& report) const;
-
-private:
-    struct State;
-    std::unique_ptr<State> m_state;
-    canon::Sink* m_sink = nullptr;
+    virtual ~PictureOutput() = default;
+    virtual canon::Sink& sink() = 0;
+    virtual void setStart(const Pose& start) = 0;
+    // After the run (and after the stock's finish()): writes the picture when the program ran;
+    // problems are appended.
+    virtual void finish(bool programRan, const StockOutput& stock, DiagnosticList& problems) = 0;
+    // Adds "picture" to the report.
+    virtual void addToReport(nlohmann::json& report) const = 0;
 };
+
+using PictureOutputFactory = std::unique_ptr<PictureOutput> (*)(const RunOptions& options,
+                                                                const Session& session);
 
 }  // namespace kerf::app

@@ -10,47 +10,57 @@ namespace kerf {
 
 namespace {
 
-constexpr int64_t kPowersOfTen[] = {1,      10,      100,      1000,      10000,
-                                    100000, 1000000, 10000000, 100000000, 1000000000};
+constexpr uint64_t kPowersOfTen[] = {1,      10,      100,      1000,      10000,
+                                     100000, 1000000, 10000000, 100000000, 1000000000};
+constexpr double kScales[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
 
-constexpr size_t kLongestFixed = 1 + 309 + 1 + 9;
+// Two digits per step: the pair of n is at 2n.
+constexpr char kPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+int digitCount(uint64_t value) {
+    int count = 1;
+    while (value >= 10) {
+        value /= 10;
+        ++count;
+    }
+    return count;
+}
 
 }  // namespace
 
-void appendFixed(std::string& out, double value, int decimals) {
+char* writeFixed(char* out, double value, int decimals) {
     if (decimals < 0) decimals = 0;
     if (decimals > 9) decimals = 9;
-    const int64_t scale = kPowersOfTen[decimals];
-    const double magnitude = std::fabs(value) * static_cast<double>(scale);
+    const uint64_t scale = kPowersOfTen[decimals];
+    const double magnitude = std::fabs(value) * kScales[decimals];
     if (!(magnitude < 9.0e15)) {  // also NaN and infinity
-        // The largest double has 309 integral digits: sign, digits, point and 9 decimals fit.
-        char buffer[kLongestFixed];
-        auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed,
-                                    decimals);
-        out.append(buffer, result.ptr);
-        return;
+        return std::to_chars(out, out + kMaxFixedChars, value, std::chars_format::fixed, decimals)
+            .ptr;
     }
-    // Digits are written backwards into a small buffer: fraction, point, integral part, sign.
     // Round half away from zero without a libm call: below 2^53 the truncation and the
-    // remainder are exact.
-    auto units = static_cast<uint64_t>(magnitude);
-    if (magnitude - static_cast<double>(units) >= 0.5) ++units;
+    // remainder are exact (signed conversions: one instruction each, unsigned ones branch).
+    const auto truncated = static_cast<int64_t>(magnitude);
+    auto units = static_cast<uint64_t>(truncated);
+    if (magnitude - static_cast<double>(truncated) >= 0.5) ++units;
     const bool negative = units != 0 && value < 0;
-    uint64_t integral = units / static_cast<uint64_t>(scale);
-    uint64_t fraction = units % static_cast<uint64_t>(scale);
-    char buffer[32];
-    char* end = buffer + sizeof buffer;
+    uint64_t integral = units / scale;
+    uint64_t fraction = units % scale;
+    // The length is known first, so the digits are written backwards in place.
+    char* const end =
+        out + (negative ? 1 : 0) + digitCount(integral) + (decimals > 0 ? 1 + decimals : 0);
     char* p = end;
-    for (int i = 0; i < decimals; ++i) {
-        *--p = static_cast<char>('0' + fraction % 10);
-        fraction /= 10;
+    int left = decimals;
+    for (; left >= 2; left -= 2) {
+        const auto pair = static_cast<size_t>(fraction % 100) * 2;
+        fraction /= 100;
+        *--p = kPairs[pair + 1];
+        *--p = kPairs[pair];
     }
+    if (left == 1) *--p = static_cast<char>('0' + fraction);
     if (decimals > 0) *--p = '.';
-    // The integral part is usually small: two digits per step.
-    static constexpr char kPairs[] =
-        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-        "8081828384858687888990919293949596979899";
     while (integral >= 100) {
         const auto pair = static_cast<size_t>(integral % 100) * 2;
         integral /= 100;
@@ -65,7 +75,12 @@ void appendFixed(std::string& out, double value, int decimals) {
         *--p = static_cast<char>('0' + integral);
     }
     if (negative) *--p = '-';
-    out.append(p, static_cast<size_t>(end - p));
+    return end;
+}
+
+void appendFixed(std::string& out, double value, int decimals) {
+    char buffer[kMaxFixedChars];
+    out.append(buffer, writeFixed(buffer, value, decimals));
 }
 
 std::string formatFixed(double value, int decimals) {

@@ -1,8 +1,16 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace kerf {
+
+// The most characters writeFixed writes: sign, the 309 integral digits of the largest double,
+// point and 9 decimals.
+inline constexpr size_t kMaxFixedChars = 1 + 309 + 1 + 9;
+
+// appendFixed's text written at `out`, which has room for kMaxFixedChars; returns its end.
+char* writeFixed(char* out, double value, int decimals);
 
 // Appends value with exactly `decimals` fraction digits (0..9), rounded half away from zero, never
 // "-0.000". Used by traces and reports, whose text must be stable across runs and platforms.

@@ -1,6 +1,8 @@
 #include "core/canon/trace_format.h"
 
 #include <charconv>
+#include <cstring>
+#include <string_view>
 
 #include "core/base/fixed_format.h"
 #include "core/geometry/arc_math.h"
@@ -12,29 +14,72 @@ namespace {
 constexpr int kLengthDecimals = 4;
 constexpr int kFeedDecimals = 3;
 
-void appendInt(std::string& out, int64_t value) {
-    char buffer[24];
-    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, result.ptr);
-}
+// A line gathered on the stack and handed to the string in one append (one per line unless a
+// quoted text is long): std::string's per-character checks cost more than the formatting.
+class LineWriter {
+public:
+    explicit LineWriter(std::string& out) : m_out(out) {}
+    ~LineWriter() { spill(); }
+    LineWriter(const LineWriter&) = delete;
+    LineWriter& operator=(const LineWriter&) = delete;
 
-void appendPose(std::string& out, const Pose& pose, AxisMask axes) {
+    LineWriter& operator+=(char c) {
+        room(1);
+        *m_end++ = c;
+        return *this;
+    }
+    LineWriter& operator+=(std::string_view text) {
+        if (text.size() > kSize / 2) {
+            spill();
+            m_out.append(text);
+            return *this;
+        }
+        room(text.size());
+        std::memcpy(m_end, text.data(), text.size());
+        m_end += text.size();
+        return *this;
+    }
+    void fixed(double value, int decimals) {
+        room(kMaxFixedChars);
+        m_end = writeFixed(m_end, value, decimals);
+    }
+    void integer(int64_t value) {
+        room(kMaxIntegerChars);
+        m_end = std::to_chars(m_end, m_end + kMaxIntegerChars, value).ptr;
+    }
+
+private:
+    static constexpr size_t kSize = 1024;
+    static constexpr size_t kMaxIntegerChars = 20;
+    void room(size_t chars) {
+        if (static_cast<size_t>(m_buffer + kSize - m_end) < chars) spill();
+    }
+    void spill() {
+        m_out.append(m_buffer, m_end);
+        m_end = m_buffer;
+    }
+    std::string& m_out;
+    char m_buffer[kSize];
+    char* m_end = m_buffer;
+};
+
+void appendPose(LineWriter& out, const Pose& pose, AxisMask axes) {
     for (int i = 0; i < kAxisCount; ++i) {
         auto axis = static_cast<Axis>(i);
         if ((axes & axisBit(axis)) == 0) continue;
         out += ' ';
         out += axisLetter(axis);
-        appendFixed(out, pose[axis], kLengthDecimals);
+        out.fixed(pose[axis], kLengthDecimals);
     }
 }
 
-void appendWord(std::string& out, const char* word, double value, int decimals) {
+void appendWord(LineWriter& out, std::string_view word, double value, int decimals) {
     out += ' ';
     out += word;
-    appendFixed(out, value, decimals);
+    out.fixed(value, decimals);
 }
 
-void appendQuoted(std::string& out, const std::string& text) {
+void appendQuoted(LineWriter& out, const std::string& text) {
     out += '"';
     for (char c : text) {
         if (c == '"' || c == '\\') {
@@ -89,7 +134,7 @@ const char* syncName(SyncReason reason) {
     return "POSITION";
 }
 
-void appendGeometry(std::string& out, const ToolGeometry& g, Axis toolAxis) {
+void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
     appendWord(out, "L=", g.lengthMm, kLengthDecimals);
     appendWord(out, "R=", g.radiusMm, kLengthDecimals);
     appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);
@@ -97,16 +142,16 @@ void appendGeometry(std::string& out, const ToolGeometry& g, Axis toolAxis) {
     out += axisLetter(toolAxis);
     if (g.locationCode >= 0) {
         out += " D";
-        appendInt(out, g.offsetNumber);
+        out.integer(g.offsetNumber);
         appendWord(out, "TIPX=", g.tipXMm, kLengthDecimals);
         appendWord(out, "TIPZ=", g.tipZMm, kLengthDecimals);
         out += " LOC ";
-        appendInt(out, g.locationCode);
+        out.integer(g.locationCode);
     }
 }
 
 struct BodyPrinter {
-    std::string& out;
+    LineWriter& out;
     AxisMask axes;
 
     void operator()(const RapidMove& m) {
@@ -124,10 +169,10 @@ struct BodyPrinter {
         PlaneAxes plane = planeAxes(m.plane);
         out += " CENTER ";
         out += axisLetter(plane.first);
-        appendFixed(out, m.center[axisIndex(plane.first)], kLengthDecimals);
+        out.fixed(m.center[axisIndex(plane.first)], kLengthDecimals);
         out += ' ';
         out += axisLetter(plane.second);
-        appendFixed(out, m.center[axisIndex(plane.second)], kLengthDecimals);
+        out.fixed(m.center[axisIndex(plane.second)], kLengthDecimals);
         out += " PLANE ";
         out += planeName(m.plane);
         appendWord(out, "SWEEP ", radToDeg(m.sweepRad), kLengthDecimals);
@@ -191,7 +236,7 @@ struct BodyPrinter {
     }
     void operator()(const ToolChange& m) {
         out += "TOOL T";
-        appendInt(out, m.number);
+        out.integer(m.number);
         if (!m.name.empty()) {
             out += ' ';
             appendQuoted(out, m.name);
@@ -235,12 +280,12 @@ struct BodyPrinter {
         }
         if (m.mCode >= 0) {
             out += " M";
-            appendInt(out, m.mCode);
+            out.integer(m.mCode);
         }
     }
     void operator()(const MachineFunction& m) {
         out += "MFUNC M";
-        appendInt(out, m.number);
+        out.integer(m.number);
     }
     void operator()(const StockDefinition& m) {
         if (const auto* box = std::get_if<StockBox>(&m.shape)) {
@@ -268,19 +313,20 @@ struct BodyPrinter {
 
 }  // namespace
 
-void appendCommand(std::string& out, const Command& command, const TraceFormat& format) {
+void appendCommand(std::string& text, const Command& command, const TraceFormat& format) {
+    LineWriter out(text);
     const SourceLocation& at = command.location;
     if (at.fileId != 0 && format.fileName) {
         out += format.fileName(at.fileId);
         out += ':';
     }
-    appendInt(out, at.line);
+    out.integer(at.line);
     out += ':';
-    appendInt(out, at.column);
+    out.integer(at.column);
     out += ' ';
     if (at.blockNumber >= 0) {
         out += 'N';
-        appendInt(out, at.blockNumber);
+        out.integer(at.blockNumber);
         out += ' ';
     }
     std::visit(BodyPrinter{out, format.axes}, command.body);

@@ -10,7 +10,7 @@ trap 'rm -rf "$work"' EXIT
 cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work" >"$work/cpack.log"
 deb=$(ls "$work"/kerf_*.deb)
 contents=$(dpkg-deb -c "$deb")
-for path in ./usr/bin/kerf ./usr/bin/kerf-drive-sim ./usr/share/applications/kerf.desktop \
+for path in ./usr/bin/kerf ./usr/libexec/kerf/kerf-gui ./usr/bin/kerf-drive-sim ./usr/share/applications/kerf.desktop \
   ./usr/share/icons/hicolor/scalable/apps/kerf.svg ./usr/share/doc/kerf/LICENSE; do
   grep -q " $path\$" <<<"$contents" || { echo "missing from the package: $path"; exit 1; }
 done
@@ -22,4 +22,4 @@ grep -q '^Exec=kerf$' "$work/root/usr/share/applications/kerf.desktop"
 "$work/root/usr/bin/kerf" --screenshot "$work/shot.png" --size 1280x800
 [[ -s "$work/shot.png" ]] || { echo "the unpacked kerf wrote no screenshot"; exit 1; }
 "$work/root/usr/bin/kerf" check --help >/dev/null
-echo "package $(basename "$deb") installs kerf, kerf-drive-sim, desktop entry, icon, licence; the HMI starts"
+echo "package $(basename "$deb") installs kerf, kerf-gui, kerf-drive-sim, desktop entry, icon, licence; the HMI starts"

@@ -7,21 +7,6 @@
 
 namespace kerf::klartext {
 
-void Cursor::skipBlanks() {
-    while (m_pos < m_text.size() && (m_text[m_pos] == ' ' || m_text[m_pos] == '\t'))
-        ++m_pos;
-}
-
-bool Cursor::atEnd() {
-    skipBlanks();
-    return m_pos >= m_text.size() || m_text[m_pos] == ';';
-}
-
-char Cursor::peek() {
-    skipBlanks();
-    return m_pos < m_text.size() ? m_text[m_pos] : '\0';
-}
-
 bool Cursor::acceptChar(char c) {
     if (peek() != c) return false;
     ++m_pos;

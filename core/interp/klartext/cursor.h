@@ -18,10 +18,20 @@ public:
     std::string_view text() const { return m_text; }
     std::string_view rest() const { return m_text.substr(m_pos); }
 
-    void skipBlanks();
+    // These three are inline: the parser calls them several times per word.
+    void skipBlanks() {
+        while (m_pos < m_text.size() && (m_text[m_pos] == ' ' || m_text[m_pos] == '\t'))
+            ++m_pos;
+    }
     // True at the end of the text or at a ';' comment (after blanks).
-    bool atEnd();
-    char peek();  // after blanks; '\0' at the end
+    bool atEnd() {
+        skipBlanks();
+        return m_pos >= m_text.size() || m_text[m_pos] == ';';
+    }
+    char peek() {  // after blanks; '\0' at the end
+        skipBlanks();
+        return m_pos < m_text.size() ? m_text[m_pos] : '\0';
+    }
     char peekRaw() const { return m_pos < m_text.size() ? m_text[m_pos] : '\0'; }
     bool acceptChar(char c);
     // Matches `keyword` followed by a non-letter (digits may follow directly: "LBL1", "FN0").
