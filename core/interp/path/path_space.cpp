@@ -1,6 +1,7 @@
 #include "core/interp/path/path_space.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace kerf::interp {
 
@@ -29,6 +30,17 @@ double worstDeviation(const PathSpace& space, const ContourElement& element, int
     return worst;
 }
 
+// How far the planner counts a straight move of the axes (motion/path: XYZ length, or the
+// other axes' when X, Y, Z stand still), so that the feed given for it means what it should.
+double plannedLength(const Pose& a, const Pose& b) {
+    const double linear = (b.xyz() - a.xyz()).norm();
+    if (linear >= 1e-9) return linear;
+    double others = 0.0;
+    for (size_t i = 3; i < a.values.size(); ++i)
+        others += (b.values[i] - a.values[i]) * (b.values[i] - a.values[i]);
+    return std::sqrt(others);
+}
+
 }  // namespace
 
 bool machinePieces(const PathSpace& space, const ContourElement& element, double feed,
@@ -43,9 +55,13 @@ bool machinePieces(const PathSpace& space, const ContourElement& element, double
     for (int i = 0; i < pieces; ++i) {
         const Pose to = element.poseAt(double(i + 1) / pieces);
         const Pose end = space.toMachine(to);
+        // The piece takes as long as the element's piece at F: a piece where only the tables
+        // turn (the tip follows the element on the part while X, Y, Z stand) gets its degrees'
+        // feed.
         const double pathPiece = (to.xyz() - from.xyz()).norm();
-        const double axesPiece = (end.xyz() - start.xyz()).norm();
-        out.push_back({end, pathPiece > 1e-9 ? feed * axesPiece / pathPiece : feed});
+        const double scaled =
+            pathPiece > 1e-9 ? feed * plannedLength(start, end) / pathPiece : feed;
+        out.push_back({end, scaled > 0.0 ? scaled : feed});
         start = end;
         from = to;
     }

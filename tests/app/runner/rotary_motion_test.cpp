@@ -300,23 +300,26 @@ std::vector<std::array<double, 3>> tipsOnThePart(const fs::path& dir, const std:
     return tips;
 }
 
-// TCPM with a circle: from (20, 0, 50) a quarter circle about the origin to (0, 20, 50) while the
-// C table turns 90. Every servo cycle's tip on the part lies on the rapid from the start (0, 0,
-// -60) or on the circle of radius 20 at Z 50 within the path tolerance (0.01 mm).
+// TCPM with a circle: from (20, 0, 50) a quarter circle about (10, 0) to (10, 10, 50) while the
+// C table turns 90. Every servo cycle's tip on the part lies on the rapids (up to (0, 0, 50), then
+// to (20, 0, 50)) or on the circle of radius 10 about (10, 0) at Z 50 within the path tolerance
+// (0.01 mm).
 TEST_F(RotaryMotion, TcpmArcKeepsTheTipOnTheProgrammedCircle) {
     double lastC = 0.0;
     const auto tips = tipsOnThePart(dir, "TCPMC.H",
                                     "0 BEGIN PGM TCPMC MM\n1 TOOL CALL 4 Z S1000\n"
-                                    "2 L X+20 Y+0 Z+50 R0 FMAX\n3 M128\n4 CC X+0 Y+0\n"
-                                    "5 C X+0 Y+20 C+90 DR+ F1000\n6 M129\n7 END PGM TCPMC MM\n",
+                                    "2 L X+0 Y+0 Z+50 R0 FMAX\n3 L X+20 FMAX\n4 M128\n"
+                                    "5 CC X+10 Y+0\n6 C X+10 Y+10 C+90 DR+ F1000\n7 M129\n"
+                                    "8 END PGM TCPMC MM\n",
                                     lastC);
-    const double origin[3] = {0, 0, -60}, start[3] = {20, 0, 50};
+    // The 60 mm tool's tip starts below the untooled start point, as in the test above.
+    const double origin[3] = {0, 0, -60}, above[3] = {0, 0, 50}, start[3] = {20, 0, 50};
     double worst = 0.0;
     int onArc = 0;
     for (const auto& t : tips) {
-        double d = toSegment(t.data(), origin, start);
-        if (t[0] >= -1e-6 && t[1] >= -1e-6) {
-            const double arc = std::hypot(std::hypot(t[0], t[1]) - 20.0, t[2] - 50.0);
+        double d = std::min(toSegment(t.data(), origin, above), toSegment(t.data(), above, start));
+        if (t[0] >= 10.0 - 1e-6 && t[1] >= -1e-6) {
+            const double arc = std::hypot(std::hypot(t[0] - 10.0, t[1]) - 10.0, t[2] - 50.0);
             if (arc < d) {
                 d = arc;
                 if (t[1] > 1.0) ++onArc;
