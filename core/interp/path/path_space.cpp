@@ -41,6 +41,15 @@ double plannedLength(const Pose& a, const Pose& b) {
     return std::sqrt(others);
 }
 
+// The element's length in space: an arc's in its plane with the helix's rise.
+double elementLength(const ContourElement& element) {
+    const double chord = (element.end.xyz() - element.start.xyz()).norm();
+    if (element.kind == ContourElement::Kind::Line) return chord;
+    const Vec2 planar = element.end2() - element.start2();
+    const double rise = std::sqrt(std::max(0.0, chord * chord - planar.squaredNorm()));
+    return std::hypot(element.planarLength(), rise);
+}
+
 }  // namespace
 
 bool machinePieces(const PathSpace& space, const ContourElement& element, double feed,
@@ -51,19 +60,17 @@ bool machinePieces(const PathSpace& space, const ContourElement& element, double
         pieces *= 2;
     }
     Pose start = space.toMachine(element.start);
-    Pose from = element.start;
     for (int i = 0; i < pieces; ++i) {
         const Pose to = element.poseAt(double(i + 1) / pieces);
         const Pose end = space.toMachine(to);
         // The piece takes as long as the element's piece at F: a piece where only the tables
         // turn (the tip follows the element on the part while X, Y, Z stand) gets its degrees'
         // feed.
-        const double pathPiece = (to.xyz() - from.xyz()).norm();
+        const double pathPiece = elementLength(element) / pieces;
         const double scaled =
             pathPiece > 1e-9 ? feed * plannedLength(start, end) / pathPiece : feed;
         out.push_back({end, scaled > 0.0 ? scaled : feed});
         start = end;
-        from = to;
     }
     return true;
 }

@@ -43,6 +43,7 @@ protected:
             settings.presetInMachine[*axisFromLetter(axis.letter)] = axis.presetPosition;
         k = std::make_unique<KlartextInterpreter>(sources, settings);
         sink.moves.clear();
+        sink.feeds.clear();
         sink.arcs = 0;
         const fs::path path = dir / "P.H";
         writeFileAtomically(path, "0 BEGIN PGM P MM\n" + blocks + "99 END PGM P MM\n");
@@ -76,13 +77,16 @@ protected:
     // Keeps the moves (block number, target) the run emitted.
     struct Recorder : canon::Sink {
         void consume(const canon::Command& c) override {
-            if (const auto* m = std::get_if<canon::LinearMove>(&c.body))
+            if (const auto* m = std::get_if<canon::LinearMove>(&c.body)) {
                 moves.push_back({c.location.blockNumber, m->target});
+                feeds.push_back(m->feed);
+            }
             if (const auto* m = std::get_if<canon::RapidMove>(&c.body))
                 moves.push_back({c.location.blockNumber, m->target});
             if (std::holds_alternative<canon::ArcMove>(c.body)) ++arcs;
         }
         std::vector<std::pair<int64_t, Pose>> moves;
+        std::vector<double> feeds;  // of the linear moves, in order
         int arcs = 0;
     } sink;
     std::vector<Pose> movesOf(int64_t block) const {
@@ -311,6 +315,26 @@ TEST_F(PlaneTest, RadiusCompensationInTheSwivelHeadsObliquePlane) {
     EXPECT_NEAR(along[0][Axis::X], -10.0 * c + 100.0, 1e-9);
     EXPECT_NEAR(along[0][Axis::Y], -5.0, 1e-9);
     EXPECT_NEAR(along[0][Axis::Z], 10.0 * s + 200.0 * (c - 1.0), 1e-9);
+}
+
+// TCPM with a quarter circle of radius 20 about the C table's axis while C turns 90: the table
+// carries the tip along the circle, so X, Y, Z stand at (20, 0, 50) (Rz(-90) (0, 20) = (20, 0))
+// and the one move turns C alone. It takes as long as the arc's 10 pi mm at F 1000: its feed is
+// 90 deg / (10 pi / 1000) min = 2864.789 deg/min (it was 0, a move that never ended).
+TEST_F(PlaneTest, TcpmCircleAboutTheTableAxisTurnsTheTableAtTheTipsFeed) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+20 Y+0 Z+50 R0 FMAX\n2 M128\n3 CC X+0 Y+0\n"
+                  "4 C X+0 Y+20 C+90 DR+ F1000\n5 M129\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const std::vector<Pose> arc = movesOf(4);
+    ASSERT_EQ(arc.size(), 1u);
+    EXPECT_NEAR(arc[0][Axis::X], 20.0, 1e-9);
+    EXPECT_NEAR(arc[0][Axis::Y], 0.0, 1e-9);
+    EXPECT_NEAR(arc[0][Axis::Z], 50.0, 1e-9);
+    EXPECT_NEAR(arc[0][Axis::C], 90.0, 1e-9);
+    ASSERT_EQ(sink.feeds.size(), 1u);
+    EXPECT_NEAR(sink.feeds[0], 90.0 * 1000.0 / (10.0 * M_PI), 1e-6);
 }
 
 // SEQ- takes B-30 with C180; the table's turn then leaves the tilted axes turned by 180 about Z
