@@ -1093,6 +1093,10 @@ Maschine: %3</translation>
         <source>Working plane %1</source>
         <translation>Bearbeitungsebene %1</translation>
     </message>
+    <message>
+        <source>Rotary axes</source>
+        <translation>Drehachsen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>
@@ -7501,10 +7505,6 @@ zyklen</translation>
         <translation>FUNCTION TCPM: nur F TCP, AXIS POS, PATHCTRL AXIS und REFPNT TIP-TIP werden unterstützt, nicht &apos;{1}&apos;</translation>
     </message>
     <message>
-        <source>circles with TCPM are not supported yet</source>
-        <translation>Kreise mit TCPM werden noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: die Punkte oder Vektoren bestimmen keine Ebene</translation>
     </message>
@@ -7539,14 +7539,6 @@ zyklen</translation>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
         <translation>TCPM in einer geschwenkten Bearbeitungsebene wird noch nicht unterstützt: zuerst PLANE RESET</translation>
-    </message>
-    <message>
-        <source>radius compensation RL/RR with TCPM is not supported yet</source>
-        <translation>Radiuskorrektur RL/RR mit TCPM wird noch nicht unterstützt</translation>
-    </message>
-    <message>
-        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
-        <translation>TCPM: die Drehachsen drehen in diesem Satz zu weit, um die Werkzeugspitze auf der Geraden zu halten; den Satz teilen</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8041,10 +8033,6 @@ wählen</translation>
         <translation>Zyklus {1}: Die Werkzeugachse muss senkrecht zur Achse des Rundtischs {2} stehen (zuerst den Tisch oder den Kopf schwenken, z. B. mit PLANE)</translation>
     </message>
     <message>
-        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
-        <translation>Radiuskorrektur RL/RR in einer Bearbeitungsebene, die der Schwenkkopf aus den Ebenen der Maschine dreht, wird noch nicht unterstützt: die Werkzeugmittelpunktsbahn mit R0 programmieren</translation>
-    </message>
-    <message>
         <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
         <translation>PLANE AXIAL: {1} ist keine Drehachse der Kinematik dieser Maschine</translation>
     </message>
@@ -8243,6 +8231,10 @@ wählen</translation>
     <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>In ISO-Programmen nimmt Zyklus %1 nur %2 auf: die übrigen Felder leer lassen</translation>
+    </message>
+    <message>
+        <source>the rotary axes turn too far in this block to keep the tool tip on the path; split the block</source>
+        <translation>die Drehachsen drehen sich in diesem Satz zu weit, um die Werkzeugspitze auf der Bahn zu halten; den Satz aufteilen</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

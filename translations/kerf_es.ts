@@ -1093,6 +1093,10 @@ Máquina: %3</translation>
         <source>Working plane %1</source>
         <translation>Plano de trabajo %1</translation>
     </message>
+    <message>
+        <source>Rotary axes</source>
+        <translation>Ejes giratorios</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>
@@ -7501,10 +7505,6 @@ fijos</translation>
         <translation>FUNCTION TCPM: solo se admiten F TCP, AXIS POS, PATHCTRL AXIS y REFPNT TIP-TIP, no &apos;{1}&apos;</translation>
     </message>
     <message>
-        <source>circles with TCPM are not supported yet</source>
-        <translation>los círculos con TCPM aún no se admiten</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: los puntos o vectores no definen un plano</translation>
     </message>
@@ -7539,14 +7539,6 @@ fijos</translation>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
         <translation>TCPM en un plano de trabajo inclinado aún no se admite: primero PLANE RESET</translation>
-    </message>
-    <message>
-        <source>radius compensation RL/RR with TCPM is not supported yet</source>
-        <translation>la corrección de radio RL/RR con TCPM aún no se admite</translation>
-    </message>
-    <message>
-        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
-        <translation>TCPM: los ejes rotativos giran demasiado en esta frase para mantener la punta de la herramienta en la recta; divida la frase</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8041,10 +8033,6 @@ solución</translation>
         <translation>ciclo {1}: el eje de la herramienta debe ser perpendicular al eje de la mesa giratoria {2} (incline primero la mesa o el cabezal, p. ej. con PLANE)</translation>
     </message>
     <message>
-        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
-        <translation>la compensación de radio RL/RR en un plano de trabajo que el cabezal orientable gira fuera de los planos de la máquina aún no se admite: programe la trayectoria del centro de la herramienta con R0</translation>
-    </message>
-    <message>
         <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
         <translation>PLANE AXIAL: {1} no es un eje giratorio de la cinemática de esta máquina</translation>
     </message>
@@ -8243,6 +8231,10 @@ solución</translation>
     <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>En programas ISO el ciclo %1 solo admite %2: deje vacíos los demás campos</translation>
+    </message>
+    <message>
+        <source>the rotary axes turn too far in this block to keep the tool tip on the path; split the block</source>
+        <translation>los ejes giratorios giran demasiado en esta frase para mantener la punta de la herramienta en la trayectoria; divida la frase</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

@@ -1096,6 +1096,10 @@ Maszyna: %3</translation>
         <source>Working plane %1</source>
         <translation>Płaszczyzna obróbki %1</translation>
     </message>
+    <message>
+        <source>Rotary axes</source>
+        <translation>Osie obrotowe</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>
@@ -7504,10 +7508,6 @@ stałe</translation>
         <translation>FUNCTION TCPM: obsługiwane są tylko F TCP, AXIS POS, PATHCTRL AXIS i REFPNT TIP-TIP, nie &apos;{1}&apos;</translation>
     </message>
     <message>
-        <source>circles with TCPM are not supported yet</source>
-        <translation>okręgi z TCPM nie są jeszcze obsługiwane</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: punkty lub wektory nie określają płaszczyzny</translation>
     </message>
@@ -7542,14 +7542,6 @@ stałe</translation>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
         <translation>TCPM w nachylonej płaszczyźnie obróbki nie jest jeszcze obsługiwane: najpierw PLANE RESET</translation>
-    </message>
-    <message>
-        <source>radius compensation RL/RR with TCPM is not supported yet</source>
-        <translation>korekcja promienia RL/RR z TCPM nie jest jeszcze obsługiwana</translation>
-    </message>
-    <message>
-        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
-        <translation>TCPM: osie obrotowe obracają się w tym bloku za daleko, by utrzymać wierzchołek narzędzia na prostej; podziel blok</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8044,10 +8036,6 @@ rozwiązanie</translation>
         <translation>cykl {1}: oś narzędzia musi być prostopadła do osi stołu obrotowego {2} (najpierw nachyl stół lub głowicę, np. za pomocą PLANE)</translation>
     </message>
     <message>
-        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
-        <translation>korekcja promienia RL/RR w płaszczyźnie obróbki, którą głowica uchylna obraca poza płaszczyzny maszyny, nie jest jeszcze obsługiwana: zaprogramuj tor środka narzędzia z R0</translation>
-    </message>
-    <message>
         <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
         <translation>PLANE AXIAL: {1} nie jest osią obrotową kinematyki tej maszyny</translation>
     </message>
@@ -8246,6 +8234,10 @@ rozwiązanie</translation>
     <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>W programach ISO cykl %1 przyjmuje tylko %2: pozostałe pola zostaw puste</translation>
+    </message>
+    <message>
+        <source>the rotary axes turn too far in this block to keep the tool tip on the path; split the block</source>
+        <translation>osie obrotowe obracają się w tym bloku zbyt daleko, aby utrzymać wierzchołek narzędzia na torze; podziel blok</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

@@ -1094,6 +1094,10 @@ Máquina: %3</translation>
         <source>Working plane %1</source>
         <translation>Plano de trabalho %1</translation>
     </message>
+    <message>
+        <source>Rotary axes</source>
+        <translation>Eixos rotativos</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>
@@ -7501,10 +7505,6 @@ fixos</translation>
         <translation>FUNCTION TCPM: só F TCP, AXIS POS, PATHCTRL AXIS e REFPNT TIP-TIP são suportados, não &apos;{1}&apos;</translation>
     </message>
     <message>
-        <source>circles with TCPM are not supported yet</source>
-        <translation>círculos com TCPM ainda não são suportados</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: os pontos ou vetores não definem um plano</translation>
     </message>
@@ -7539,14 +7539,6 @@ fixos</translation>
     <message>
         <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
         <translation>TCPM num plano de maquinagem inclinado ainda não é suportado: primeiro PLANE RESET</translation>
-    </message>
-    <message>
-        <source>radius compensation RL/RR with TCPM is not supported yet</source>
-        <translation>correção de raio RL/RR com TCPM ainda não é suportada</translation>
-    </message>
-    <message>
-        <source>TCPM: the rotary axes turn too far in this block to keep the tool tip on the line; split the block</source>
-        <translation>TCPM: os eixos rotativos rodam demasiado neste bloco para manter a ponta da ferramenta na reta; divida o bloco</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8041,10 +8033,6 @@ solução</translation>
         <translation>ciclo {1}: o eixo da ferramenta deve ser perpendicular ao eixo da mesa rotativa {2} (incline primeiro a mesa ou a cabeça, p. ex. com PLANE)</translation>
     </message>
     <message>
-        <source>radius compensation RL/RR in a working plane that the swivel head turns out of the machine&apos;s planes is not supported yet: program the tool centre path with R0</source>
-        <translation>a compensação de raio RL/RR num plano de trabalho que a cabeça basculante roda para fora dos planos da máquina ainda não é suportada: programe a trajetória do centro da ferramenta com R0</translation>
-    </message>
-    <message>
         <source>PLANE AXIAL: {1} is not a rotary axis of the kinematics of this machine</source>
         <translation>PLANE AXIAL: {1} não é um eixo rotativo da cinemática desta máquina</translation>
     </message>
@@ -8243,6 +8231,10 @@ solução</translation>
     <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>Em programas ISO o ciclo %1 aceita apenas %2: deixe os outros campos vazios</translation>
+    </message>
+    <message>
+        <source>the rotary axes turn too far in this block to keep the tool tip on the path; split the block</source>
+        <translation>os eixos rotativos giram demais neste bloco para manter a ponta da ferramenta na trajetória; divida o bloco</translation>
     </message>
     <message>
         <source>M94 {1}: the machine has no rotary axis {1}</source>

@@ -50,6 +50,16 @@ struct ProgramStatus {
         struct WorkingPlane {
             std::array<double, 3> spatialDeg{};  // SPA, SPB, SPC
             std::array<double, 3> positionMm{};  // X, Y, Z
+            // The rotary axes' angles the plane was solved with (machine coordinates, degrees):
+            // the axes in `rotaryAxes`, A B C in that order.
+            AxisMask rotaryAxes = 0;
+            std::array<double, 3> rotaryDeg{};
+            // How the position display turns the machine's linear axes (the stream, relative to
+            // the preset) into the program's coordinates in the tilted plane (the TNC's input
+            // system, which its NOML and ACTL displays show): program = M * axes + origin, M row
+            // by row. Differences (lag, distance to go) turn by M alone.
+            std::array<double, 9> axesToProgram{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
+            std::array<double, 3> programAtAxesZeroMm{};
             friend bool operator==(const WorkingPlane&, const WorkingPlane&) = default;
         };
         std::optional<WorkingPlane> workingPlane;

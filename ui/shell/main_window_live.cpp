@@ -54,6 +54,8 @@ void MainWindow::connectLiveRun() {
     });
     connect(m_liveRun, &TestRunController::programStatusChanged, this,
             [this](const interp::ProgramStatus& status) {
+                // The positions follow the block the machine executes, in its tilted plane.
+                m_positions->setWorkingPlane(status.transformations.workingPlane);
                 if (!testRunOnScreen()) m_status->setProgramStatus(status);
             });
     // The machine screen shows the machine's run, the programming screen the test run.

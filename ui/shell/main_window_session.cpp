@@ -55,8 +55,9 @@ void MainWindow::connectSession() {
             [this](const interp::ProgramStatus& status) {
                 // A program's status comes from the block the machine executes (connectLiveRun);
                 // the interpreter's own is read ahead. An MDI block is the one executed.
-                if (m_session->runningProgramName().empty() && !testRunOnScreen())
-                    m_status->setProgramStatus(status);
+                if (!m_session->runningProgramName().empty()) return;
+                m_positions->setWorkingPlane(status.transformations.workingPlane);
+                if (!testRunOnScreen()) m_status->setProgramStatus(status);
             });
     connectLiveRun();
     OverrideControls* overrides = m_positions->overrides();

@@ -119,6 +119,27 @@ double PositionDisplay::shownValue(const task::AxisStatus& axis, PositionKind ki
     return value;
 }
 
+std::array<double, kAxisCount> PositionDisplay::kindValues(
+    const task::MachineStatus& status, PositionKind kind,
+    const std::optional<WorkingPlane>& plane) {
+    std::array<double, kAxisCount> values{};
+    for (size_t i = 0; i < values.size(); ++i)
+        values[i] = pick(status.axes[i], kind);
+    const bool reference =
+        kind == PositionKind::ReferenceActual || kind == PositionKind::ReferenceNominal;
+    if (!plane || reference) return values;
+    // Positions map with the origin; lag and distance to go are differences: they only turn.
+    const bool position = kind == PositionKind::Actual || kind == PositionKind::Nominal;
+    const std::array<double, 3> axes{values[0], values[1], values[2]};
+    for (size_t row = 0; row < 3; ++row) {
+        double v = position ? plane->programAtAxesZeroMm[row] : 0.0;
+        for (size_t column = 0; column < 3; ++column)
+            v += plane->axesToProgram[3 * row + column] * axes[column];
+        values[row] = v;
+    }
+    return values;
+}
+
 QString PositionDisplay::kindText(PositionKind kind) {
     switch (kind) {
         case PositionKind::Actual:
@@ -144,6 +165,12 @@ void PositionDisplay::setDisplaySettings(const DisplaySettings& settings) {
 
 void PositionDisplay::setStatus(const task::MachineStatus& status) {
     m_status = status;
+    refresh();
+}
+
+void PositionDisplay::setWorkingPlane(const std::optional<WorkingPlane>& plane) {
+    if (plane == m_workingPlane) return;
+    m_workingPlane = plane;
     refresh();
 }
 
@@ -176,17 +203,24 @@ QString PositionDisplay::toolText() const {
     return m_tool->text();
 }
 
+QString PositionDisplay::kindLabel() const {
+    return m_kind->text();
+}
+
 QString PositionDisplay::coolantText() const {
     return m_coolant->text();
 }
 
 void PositionDisplay::refresh() {
     const bool inch = m_settings.inch;
+    const std::array<double, kAxisCount> values =
+        kindValues(m_status, m_settings.positionKind, m_workingPlane);
     for (size_t i = 0; i < m_axes.size(); ++i) {
         const AxisRow& r = m_axes[i];
         if (!r.present) continue;
-        const double value =
-            shownValue(m_status.axes[i], m_settings.positionKind, r.diameter, inch, r.rotary);
+        double value = values[i];
+        if (r.diameter) value *= 2.0;
+        if (inch && !r.rotary) value /= kMmPerInch;
         const int decimals = inch && !r.rotary ? 4 : 3;
         // The sign of the value as shown: -0.0002 is +0.000, never -0.000.
         const double scale = std::pow(10.0, decimals);
@@ -199,8 +233,13 @@ void PositionDisplay::refresh() {
         r.notReferenced->setVisible(!m_status.axes[i].homed);
         r.notReferenced->setToolTip(tr("Not referenced: Home all in Manual operation"));
     }
+    // "3D ROT": the TNC's name of the tilted working plane, an NC word (not translated).
+    const bool tilted = m_workingPlane &&
+                        m_settings.positionKind != PositionKind::ReferenceActual &&
+                        m_settings.positionKind != PositionKind::ReferenceNominal;
     m_kind->setText(kindText(m_settings.positionKind) +
-                    (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")));
+                    (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")) +
+                    (tilted ? QStringLiteral("  3D ROT") : QString()));
     QString state = coreText(task::machineStateName(m_status.state));
     if (!m_runState.isEmpty()) state = tr("Program: %1   Machine: %2").arg(m_runState, state);
     if (m_status.block.line > 0) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 
+#include "core/interp/program_status.h"
 #include "core/machine/machine_config.h"
 #include "core/program/dialect.h"
 #include "core/task/machine_status.h"
@@ -27,7 +28,10 @@ struct ProgrammedFeed {
 // The position display of the machine modes: the machine's axes with the kind of position chosen
 // in MOD (ACTL, NOML, REF ACTL, REF NOML, LAG, DIST), in mm or inch, lathe X as a diameter where
 // the machine says so; the run state, active tool, S and F (programmed and actual), the coolant as
-// the machine executes it, and the override controls.
+// the machine executes it, and the override controls. While a working plane is tilted (cycle 19,
+// PLANE) X, Y and Z of every kind but REF are in the program's coordinates of the tilted plane,
+// as a TNC shows them ("3D ROT" beside the kind); REF keeps the machine's axes, rotary axes are
+// always their angles in degrees.
 class PositionDisplay : public QWidget {
     Q_OBJECT
 
@@ -37,6 +41,9 @@ public:
     void setDisplaySettings(const DisplaySettings& settings);
     const DisplaySettings& displaySettings() const { return m_settings; }
     void setStatus(const task::MachineStatus& status);
+    using WorkingPlane = interp::ProgramStatus::Transformations::WorkingPlane;
+    // The tilted plane of the program the machine runs (its status), or none.
+    void setWorkingPlane(const std::optional<WorkingPlane>& plane);
     // While a program runs: its feed at the block the machine executes (inside a cycle the
     // cycle's move), shown instead of the machine's; the actual feed is then shown in the same
     // unit. None: the machine's feed in mm/min.
@@ -51,11 +58,18 @@ public:
     // The axis shows the not-referenced symbol (it has not been homed since power-on).
     bool notReferencedShown(Axis axis) const;
     QString toolText() const;
+    // The kind shown above the axes ("NOML.  mm  3D ROT").
+    QString kindLabel() const;
     QString coolantText() const;
 
     // The value of one axis as the settings show it: the kind of position, lathe diameter, unit.
     static double shownValue(const task::AxisStatus& axis, PositionKind kind, bool diameter,
                              bool inch, bool rotary);
+    // Every axis's value of the kind in mm and degrees; X, Y and Z in the tilted plane's
+    // coordinates when a plane is given and the kind is not REF.
+    static std::array<double, kAxisCount> kindValues(const task::MachineStatus& status,
+                                                     PositionKind kind,
+                                                     const std::optional<WorkingPlane>& plane);
     static QString kindText(PositionKind kind);
 
 protected:
@@ -77,6 +91,7 @@ private:
     DisplaySettings m_settings;
     program::Dialect m_dialect;  // how the machine's programs number their blocks
     task::MachineStatus m_status;
+    std::optional<WorkingPlane> m_workingPlane;
     std::optional<ProgrammedFeed> m_programmedFeed;
     QString m_runState;
     std::array<AxisRow, kAxisCount> m_axes{};

@@ -285,6 +285,16 @@ void StatusTabs::fillTransformations() {
             rows.push_back({tr("Working plane %1").arg(axisName(i)),
                             lengthText(plane->positionMm[static_cast<size_t>(i)], inch)});
         }
+        // The rotary axes' angles that turn the tool perpendicular to the plane.
+        QStringList rotary;
+        for (int i = 0; i < 3; ++i) {
+            const auto axis = static_cast<Axis>(axisIndex(Axis::A) + i);
+            if ((plane->rotaryAxes & axisBit(axis)) == 0) continue;
+            rotary << QString(QChar(axisLetter(axis))) + ' ' +
+                          angleText(plane->rotaryDeg[static_cast<size_t>(i)]);
+        }
+        if (!rotary.isEmpty())
+            rows.push_back({tr("Rotary axes"), rotary.join(QStringLiteral("  "))});
     }
     fill(m_transformations, rows);
 }

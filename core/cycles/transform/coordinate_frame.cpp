@@ -30,6 +30,14 @@ bool isLinearAxis(Axis axis) {
 }
 
 Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
+    return tiltedPlaneToWorkpiece(toTiltedPlane(program));
+}
+
+Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
+    return fromTiltedPlane(workpieceToTiltedPlane(workpiece));
+}
+
+Pose CoordinateFrame::toTiltedPlane(const Pose& program) const {
     Pose p = program;
     for (size_t k = 0; k < p.values.size(); ++k)
         p.values[k] += m_pointShift.values[k];
@@ -45,6 +53,11 @@ Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
         if ((m_mirror & axisBit(axisAt(i))) != 0) p.values[k] = -p.values[k];
         p.values[k] += m_shift.values[k];
     }
+    return p;
+}
+
+Pose CoordinateFrame::tiltedPlaneToWorkpiece(const Pose& tilted) const {
+    Pose p = tilted;
     if (m_tilted) p.setXyz(m_tiltOrigin + m_tilt * p.xyz());
     for (size_t k = 0; k < p.values.size(); ++k)
         p.values[k] += m_preset.values[k];
@@ -54,7 +67,7 @@ Pose CoordinateFrame::toWorkpiece(const Pose& program) const {
     return p;
 }
 
-Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
+Pose CoordinateFrame::workpieceToTiltedPlane(const Pose& workpiece) const {
     Pose p = workpiece;
     for (size_t k = 0; k < p.values.size(); ++k)
         p.values[k] -= m_turns.values[k];
@@ -62,6 +75,11 @@ Pose CoordinateFrame::toProgram(const Pose& workpiece) const {
     for (size_t k = 0; k < p.values.size(); ++k)
         p.values[k] -= m_preset.values[k];
     if (m_tilted) p.setXyz(m_tilt.transpose() * (p.xyz() - m_tiltOrigin));
+    return p;
+}
+
+Pose CoordinateFrame::fromTiltedPlane(const Pose& tilted) const {
+    Pose p = tilted;
     for (int i = 0; i < kAxisCount; ++i) {
         const auto k = static_cast<size_t>(i);
         p.values[k] -= m_shift.values[k];
@@ -93,13 +111,17 @@ Vec3 normalOf(Plane plane) {
 }  // namespace
 
 bool CoordinateFrame::flipsOrientation(Plane plane) const {
-    const PlaneAxes axes = planeAxes(plane);
-    const bool a = (m_mirror & axisBit(axes.first)) != 0;
-    const bool b = (m_mirror & axisBit(axes.second)) != 0;
     // A spatial turn that lays the plane upside down reverses its arcs too.
     const Vec3 n = normalOf(plane);
     const bool turned = (m_tilted || m_tabled) && (spatialTurn() * n).dot(n) < 0.0;
-    return (a != b) != turned;
+    return flipsOrientationInTiltedPlane(plane) != turned;
+}
+
+bool CoordinateFrame::flipsOrientationInTiltedPlane(Plane plane) const {
+    const PlaneAxes axes = planeAxes(plane);
+    const bool a = (m_mirror & axisBit(axes.first)) != 0;
+    const bool b = (m_mirror & axisBit(axes.second)) != 0;
+    return a != b;
 }
 
 bool CoordinateFrame::keepsPlane(Plane plane) const {
@@ -109,8 +131,11 @@ bool CoordinateFrame::keepsPlane(Plane plane) const {
 }
 
 bool CoordinateFrame::keepsArcs(Plane plane) const {
+    return keepsPlane(plane) && keepsArcsInTiltedPlane(plane);
+}
+
+bool CoordinateFrame::keepsArcsInTiltedPlane(Plane plane) const {
     if (m_rotationDeg != 0.0 && plane != m_rotationPlane) return false;
-    if (!keepsPlane(plane)) return false;
     const PlaneAxes axes = planeAxes(plane);
     return m_axisScale[static_cast<size_t>(axes.first)] ==
            m_axisScale[static_cast<size_t>(axes.second)];

@@ -19,11 +19,21 @@ class CoordinateFrame {
 public:
     Pose toWorkpiece(const Pose& program) const;
     Pose toProgram(const Pose& workpiece) const;
+    // The same in two halves, met in the tilted plane's coordinates (after the datum shift,
+    // before the tilt): toWorkpiece = tiltedPlaneToWorkpiece(toTiltedPlane(program)). The outer
+    // half (tilt, preset, tables, turns) is affine in X, Y, Z.
+    Pose toTiltedPlane(const Pose& program) const;
+    Pose fromTiltedPlane(const Pose& tilted) const;
+    Pose tiltedPlaneToWorkpiece(const Pose& tilted) const;
+    Pose workpieceToTiltedPlane(const Pose& workpiece) const;
     // True when an odd number of the plane's axes is mirrored: arcs turn the other way and
     // radius compensation changes side.
     bool flipsOrientation(Plane plane) const;
     // An arc in `plane` stays an arc: no rotation about another axis, equal scales in the plane.
     bool keepsArcs(Plane plane) const;
+    // The same for the inner half only (toTiltedPlane).
+    bool flipsOrientationInTiltedPlane(Plane plane) const;
+    bool keepsArcsInTiltedPlane(Plane plane) const;
     // The tilt and the tables (or a swivel head's frame) keep `plane` a plane of the machine's
     // linear axes: its normal stays along itself. Radius compensation needs it.
     bool keepsPlane(Plane plane) const;

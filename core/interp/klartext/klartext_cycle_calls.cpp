@@ -54,7 +54,7 @@ public:
         move.leadMmPerRev = lead;
         move.startAngleDeg = startAngleDeg;
         m.emit(move);
-        m.m_path.reset(work);
+        m.m_path.resetToMachine(work);
         m.m_programmed = end;
     }
 

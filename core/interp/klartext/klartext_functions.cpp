@@ -10,6 +10,7 @@
 #include "core/interp/klartext/fn14_errors.h"
 #include "core/interp/klartext/fprint_formatter.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/klartext/spatial_angles.h"
 
 namespace kerf::klartext {
 
@@ -140,7 +141,16 @@ std::optional<double> KlartextInterpreter::sysReadValue(const SysRead& read, boo
         case 210:  // active transformations
             switch (read.nr) {
                 case 1:  // basic rotation (manual operation): none in this release
-                case 5:  // 3D ROT: needs tilting kinematics
+                    return 0.0;
+                case 5:  // 3D ROT: the tilted plane's spatial angles A, B, C (IDX 1-3)
+                    if (read.idx >= 1 && read.idx <= 3) {
+                        if (!m_tilt.active) return 0.0;
+                        return spatialAnglesOf(m_tilt.rotation)[static_cast<size_t>(read.idx - 1)];
+                    }
+                    break;
+                case 6:  // tilted working plane in the program run: -1 active, 0 not
+                    return m_tilt.active ? -1.0 : 0.0;
+                case 7:  // tilted working plane of manual operation: Kerf has none
                     return 0.0;
                 case 2:
                     return m_frame.rotationDeg();
@@ -163,6 +173,9 @@ std::optional<double> KlartextInterpreter::sysReadValue(const SysRead& read, boo
                     m_settings.machine->axis(axisLetter(static_cast<Axis>(axisIndexValue)));
                 if (axis) return (read.nr == 2 ? axis->minLimit : axis->maxLimit) / scale;
             }
+            break;
+        case 280:  // M128 / FUNCTION TCPM: -1 active, 0 not
+            if (read.nr == 1) return m_tcpm ? -1.0 : 0.0;
             break;
         case 240:  // nominal position in the machine (REF) system
         case 270:  // current position in the active coordinate system

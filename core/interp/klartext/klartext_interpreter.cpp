@@ -241,6 +241,7 @@ bool KlartextInterpreter::checkPathError(const std::optional<interp::PathError>&
 
 bool KlartextInterpreter::outputValuesOk() {
     auto error = m_out.takeError();
+    if (!error) error = m_path.takeSpaceError();
     if (!error) return true;
     if (m_status == interp::RunStatus::Failed) return false;  // the first error stays the one
     return checkPathError(error);
@@ -312,9 +313,9 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
     PendingSync pending = *m_pendingSync;
     m_pendingSync.reset();
     // The operator may have moved the machine at a stop: continue from where it really is.
-    if ((world.position.xyz() - m_path.toolPosition().xyz()).norm() > 1e-6) {
-        m_programmed = m_frame.toProgram(world.position);
-        m_path.reset(world.position);
+    if ((world.position.xyz() - m_path.machinePosition().xyz()).norm() > 1e-6) {
+        m_path.resetToMachine(world.position);
+        m_programmed = programOfPath(m_path.toolPosition());
     }
     SysRead read;
     read.id = pending.id;
@@ -329,8 +330,9 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
             // REF: machine coordinates of the tool tip.
             value = world.position.values[i] + m_settings.presetInMachine.values[i];
         } else {
-            // The active coordinate system: through the inverse of the transformations.
-            value = m_frame.toProgram(world.position).values[i];
+            // The active coordinate system: through the inverse of the transformations; with
+            // TCPM the program counts the tool tip on the part, not the axes.
+            value = m_frame.toProgram(m_tcpm ? tipOf(world.position) : world.position).values[i];
         }
     }
     m_q.set(pending.target, value / lengthScale());

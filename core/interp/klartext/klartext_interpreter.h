@@ -347,9 +347,23 @@ private:
     struct FormulaBuild;
     // Where moves go: the canonical stream, or a contour subprogram being read.
     interp::PathBuilder& activePath() { return m_capturePath ? *m_capturePath : m_path; }
+    const interp::PathBuilder& activePath() const {
+        return m_capturePath ? *m_capturePath : m_path;
+    }
     std::optional<double> lastValue(const CycleDefinition& def, const char* what);
-    // Coordinate transformations of path functions and cycles alike.
-    std::optional<ContourElement> toWorkpiece(const ContourElement& element);
+    // Coordinate transformations of path functions and cycles alike: the element in the
+    // coordinates the path works in (the stream's, TCPM's tip on the part, or the tilted plane a
+    // swivel head turns out of the machine's planes).
+    std::optional<ContourElement> toPathSpace(const ContourElement& element);
+    // A program point in those coordinates, and back.
+    Pose pathOfProgram(const Pose& program) const;
+    // Arcs in `plane` turn the other way in the path's coordinates (radius compensation changes
+    // side).
+    bool pathFlipsOrientation(Plane plane) const;
+    Pose programOfPath(const Pose& path) const;
+    // After TCPM or the tilted plane's frame changed: the path works in the space they need
+    // (klartext_tcpm.cpp). Flushes the path.
+    void updatePathSpace();
     // Touch-probe cycles (klartext_probing.cpp).
     void executeProbeCycle(const CycleDefinition& def);
     std::optional<cycles::probing::ProbeData> activeProbe(int cycle);
@@ -484,7 +498,25 @@ private:
     machine::RotaryAngles tableAnglesOf(const Pose& pose) const;
     Pose axesOfTip(const Pose& tip) const;  // workpiece tip -> stream (linear axes)
     Pose tipOf(const Pose& axes) const;     // and back
-    void moveWithTcpm(const Pose& programTarget, bool rapid, double feed);
+    // The spaces the path may work in (core/interp/path/path_space.h).
+    class TcpmSpace final : public interp::PathSpace {
+    public:
+        explicit TcpmSpace(const KlartextInterpreter& owner) : m(owner) {}
+        Pose toMachine(const Pose& tip) const override { return m.axesOfTip(tip); }
+        Pose toPath(const Pose& axes) const override { return m.tipOf(axes); }
+
+    private:
+        const KlartextInterpreter& m;
+    };
+    // The outer half of the frame as it was when the space was chosen (tilt, preset, tables).
+    class TiltedPlaneSpace final : public interp::PathSpace {
+    public:
+        Pose toMachine(const Pose& tilted) const override {
+            return frame.tiltedPlaneToWorkpiece(tilted);
+        }
+        Pose toPath(const Pose& axes) const override { return frame.workpieceToTiltedPlane(axes); }
+        cycles::CoordinateFrame frame;
+    };
 
     // Q parameter functions and FN blocks (klartext_functions.cpp).
     void executeSysRead(const SysRead& read);
@@ -611,6 +643,8 @@ private:
     machine::RotaryAngles m_tiltAngles;  // the active plane's solved angles
     bool m_shortestRotary = false;
     bool m_tcpm = false;  // M128 / FUNCTION TCPM
+    TcpmSpace m_tcpmSpace{*this};
+    TiltedPlaneSpace m_tiltedPlaneSpace;
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.
     size_t m_cycleMovesInBlock = 0;
     std::vector<ProgramAtPoints> m_pointRuns;  // cycle 12 at pattern points, innermost last

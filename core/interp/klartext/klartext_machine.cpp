@@ -153,8 +153,7 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 // Retract along the tool axis: MB by a distance, MB MAX to the soft limit.
                 if (!checkPathError(m_path.flush())) return;
                 // The retraction is along the machine's tool axis, whatever transformation is on.
-                Pose target = m_frame.toWorkpiece(m_programmed);
-                const Pose from = target;
+                Pose target = m_path.machinePosition();
                 double& axisValue = target[m_toolAxis];
                 if (word.maxParameter || !word.parameter) {
                     const machine::AxisConfig* axis =
@@ -169,13 +168,8 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 } else {
                     axisValue += *word.parameter * lengthScale();
                 }
-                interp::PathMove move;
-                move.geometry = ContourElement::line(workingPlane(), from, target);
-                move.rapid = true;
-                move.feed = m_feed;
-                move.location = m_at;
-                if (!checkPathError(m_path.addMove(move))) return;
-                m_programmed = m_frame.toProgram(target);
+                m_path.addMachineLine(target, true, m_feed, m_at);
+                m_programmed = programOfPath(m_path.toolPosition());
                 break;
             }
             default:
@@ -208,6 +202,7 @@ void KlartextInterpreter::reduceRotaryDisplay(AxisMask only) {
         m_frame.addTurns(axis, shown - reduced);
         m_programmed[axis] = reduced;
     }
+    updatePathSpace();
 }
 
 void KlartextInterpreter::executeMOnly(const CommonWords& words) {
@@ -305,6 +300,7 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
         const Pose at = m_frame.toWorkpiece(m_programmed);
         setTableFrame();
         m_programmed = m_frame.toProgram(at);
+        updatePathSpace();
     }
     // Parameters the control sets on a tool call.
     m_q.set({QKind::Q, 108}, m_tool.effectiveRadius() / scale);

@@ -90,21 +90,7 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
-    if (m_tcpm && element.kind != ContourElement::Kind::Line) {
-        fail("not-supported", KERF_TR_NOOP("circles with TCPM are not supported yet"));
-        return;
-    }
-    if ((m_comp == CompWord::Left || m_comp == CompWord::Right) &&
-        !m_frame.keepsPlane(element.plane)) {
-        // A swivel head turned out of the machine's planes: the axes move in a plane the path's
-        // compensation does not know.
-        fail("not-supported",
-             KERF_TR_NOOP("radius compensation RL/RR in a working plane that the swivel head "
-                          "turns out of the machine's planes is not supported yet: program the "
-                          "tool centre path with R0"));
-        return;
-    }
-    auto transformed = toWorkpiece(element);
+    auto transformed = toPathSpace(element);
     if (!transformed) return;
     interp::PathMove move;
     move.geometry = *transformed;
@@ -112,7 +98,7 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
     move.feed = feed;
     move.side = sideOf(m_comp);
     // A mirror image puts the tool on the other side of the mirrored contour.
-    if (m_frame.flipsOrientation(element.plane)) move.side = flipped(move.side);
+    if (pathFlipsOrientation(element.plane)) move.side = flipped(move.side);
     move.location = m_at;
     if (!checkPathError(activePath().addMove(move))) return;
     m_programmed = element.end;
@@ -138,12 +124,6 @@ void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     if (m_status == interp::RunStatus::Failed) return;
     Pose target = targetOf(block.coords);
     if (!rotaryWithinLimits(target)) return;
-    if (m_tcpm) {
-        moveWithTcpm(target, rapid, feed);
-        applyMFunctions(block.words.m, false);
-        afterPositioning(block.words.m);
-        return;
-    }
     submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
                block.words);
     applyMFunctions(block.words.m, false);
@@ -423,8 +403,8 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
         }
         m_comp = block.words.comp;
         spec.side = sideOf(m_comp);
-        if (m_frame.flipsOrientation(workingPlane())) spec.side = flipped(spec.side);
-        spec.contourPoint = m_frame.toWorkpiece(target);
+        if (pathFlipsOrientation(workingPlane())) spec.side = flipped(spec.side);
+        spec.contourPoint = pathOfProgram(target);
         spec.moveToolAxis = block.coords.has(m_toolAxis);
         if (!checkPathError(activePath().addApproach(spec))) return;
         m_programmed = target;
@@ -434,10 +414,10 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
             fail("geometry", KERF_TR_NOOP("DEP LCT needs the end point"));
             return;
         }
-        spec.endPoint = m_frame.toWorkpiece(target);
+        spec.endPoint = pathOfProgram(target);
         if (!checkPathError(activePath().addDeparture(spec))) return;
         m_comp = CompWord::Off;
-        m_programmed = m_frame.toProgram(activePath().toolPosition());
+        m_programmed = programOfPath(activePath().toolPosition());
         m_lastTangent.reset();
     }
     applyMFunctions(block.words.m, false);

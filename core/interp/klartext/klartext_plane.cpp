@@ -9,6 +9,7 @@
 #include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/klartext/spatial_angles.h"
 
 namespace kerf::klartext {
 
@@ -18,11 +19,6 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kDegenerate = 1e-9;
 
 using machine::principalRotation;
-
-// SPA, SPB, SPC: turns about the machine-based X, then Y, then Z.
-Eigen::Matrix3d spatial(double a, double b, double c) {
-    return principalRotation('C', c) * principalRotation('B', b) * principalRotation('A', a);
-}
 
 // The rotation whose columns are the tilted X, Y and Z axes: X along `x`, Z along `z`.
 std::optional<Eigen::Matrix3d> frameOf(const Vec3& x, const Vec3& z) {
@@ -54,7 +50,7 @@ std::optional<Eigen::Matrix3d> KlartextInterpreter::planeRotation(const PlaneBlo
     const auto& v = b.values;
     switch (b.kind) {
         case PlaneBlock::Kind::Spatial:
-            return spatial(v[0], v[1], v[2]);
+            return spatialRotation(v[0], v[1], v[2]);
         case PlaneBlock::Kind::Projected: {
             // PROPR and PROMIN: the angles of the plane's traces in the ZX and the YZ plane.
             const double p = v[0] / kDegPerRad, m = v[1] / kDegPerRad;
@@ -233,7 +229,7 @@ void KlartextInterpreter::workingPlane(const CycleDefinition& def) {
     // (keeping the point DIST above the tool tip); without F the program positions them.
     TiltRequest request;
     request.reset = angles.isZero();
-    request.rotation = spatial(angles.x(), angles.y(), angles.z());
+    request.rotation = spatialRotation(angles.x(), angles.y(), angles.z());
     if (!request.reset) {
         auto solution = solvePlane(request.rotation, PlaneBlock::Sequence::Shortest, false,
                                    "cycle 19 (working plane)");
@@ -318,6 +314,7 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
         at = target;
     }
     m_programmed = m_frame.toProgram(at);
+    updatePathSpace();
 }
 
 Vec3 KlartextInterpreter::tiltPreset() const {
@@ -338,6 +335,12 @@ void KlartextInterpreter::setTableFrame() {
 
 void KlartextInterpreter::emitStreamMove(const Pose& from, const Pose& to, bool rapid,
                                          double feed) {
+    if (activePath().space() != nullptr) {
+        // The path works in another space: the axes move past it, straight.
+        if (!checkPathError(activePath().flush())) return;
+        activePath().addMachineLine(to, rapid, rapid ? m_feed : feed, m_at);
+        return;
+    }
     interp::PathMove move;
     move.geometry = ContourElement::line(workingPlane(), from, to);
     move.rapid = rapid;

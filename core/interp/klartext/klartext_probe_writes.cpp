@@ -24,6 +24,7 @@ void KlartextInterpreter::activatePreset(const Pose& offset) {
     m_frame.setPreset(offset);
     if (rotation != 0.0) m_frame.setRotation(rotation, false, workingPlane());
     m_programmed = m_frame.toProgram(at);
+    updatePathSpace();
 }
 
 bool KlartextInterpreter::applyRotaryCompensation(int cycle,

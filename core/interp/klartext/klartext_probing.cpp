@@ -402,6 +402,7 @@ bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingRe
         // The basic rotation belongs to the preset: it stays.
         if (rotation != 0.0) m_frame.setRotation(rotation, false, workingPlane());
         m_programmed = m_frame.toProgram(at);
+        updatePathSpace();
     }
     return true;
 }

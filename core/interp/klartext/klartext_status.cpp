@@ -5,6 +5,7 @@
 
 #include "core/cycles/cycle_registry.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/klartext/spatial_angles.h"
 
 namespace kerf::klartext {
 namespace {
@@ -44,17 +45,6 @@ void addParameters(const QParameters& q, interp::ProgramStatus& status) {
             status.parameters.push_back(std::move(p));
         }
     }
-}
-
-// SPA, SPB, SPC of a tilt R = Rz(SPC) Ry(SPB) Rx(SPA) (PLANE SPATIAL's order); SPA 0 where SPB
-// is +-90 and only SPC - SPA or SPC + SPA is defined.
-std::array<double, 3> spatialAnglesOf(const Eigen::Matrix3d& r) {
-    constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-    const double b = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
-    if (std::abs(r(2, 0)) > 1.0 - 1e-12)
-        return {0.0, b * kDegPerRad, std::atan2(-r(0, 1), r(1, 1)) * kDegPerRad};
-    return {std::atan2(r(2, 1), r(2, 2)) * kDegPerRad, b * kDegPerRad,
-            std::atan2(r(1, 0), r(0, 0)) * kDegPerRad};
 }
 
 }  // namespace
@@ -109,6 +99,27 @@ interp::ProgramStatus KlartextInterpreter::programStatus() const {
         interp::ProgramStatus::Transformations::WorkingPlane plane;
         plane.spatialDeg = spatialAnglesOf(m_tilt.rotation);
         plane.positionMm = {m_programmed[Axis::X], m_programmed[Axis::Y], m_programmed[Axis::Z]};
+        if (m_kinematics) {
+            auto solved = [&](char letter, double deg) {
+                const Axis axis = *axisFromLetter(letter);
+                plane.rotaryAxes |= axisBit(axis);
+                plane.rotaryDeg[static_cast<size_t>(axisIndex(axis) - axisIndex(Axis::A))] = deg;
+            };
+            solved(m_kinematics->primary(), m_tiltAngles.primaryDeg);
+            if (m_kinematics->twoAxes())
+                solved(m_kinematics->secondary(), m_tiltAngles.secondaryDeg);
+        }
+        // The frame is affine in the linear axes: its origin and the images of the unit axes.
+        Pose zero{};
+        const Vec3 origin = m_frame.toProgram(zero).xyz();
+        for (int column = 0; column < 3; ++column) {
+            Pose unit{};
+            unit.values[static_cast<size_t>(column)] = 1.0;
+            const Vec3 image = m_frame.toProgram(unit).xyz() - origin;
+            for (int row = 0; row < 3; ++row)
+                plane.axesToProgram[static_cast<size_t>(3 * row + column)] = image[row];
+        }
+        plane.programAtAxesZeroMm = {origin.x(), origin.y(), origin.z()};
         t.workingPlane = plane;
     }
     addParameters(m_q, status);

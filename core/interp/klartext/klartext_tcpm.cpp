@@ -1,28 +1,15 @@
 // Tool centre point management (M128/M129, FUNCTION TCPM): programmed positions are tool-tip
 // positions on the part while the rotary tables turn. The canonical stream holds the machine's
-// linear axes, so a move whose tables turn is split into straight pieces of the axes, as many as
-// keep the tip within half the path tolerance of the programmed line (the planner blends the
-// pieces within the other half).
-#include <cmath>
+// linear axes, so while TCPM is on the path (roundings, radius compensation, lines and arcs)
+// works on the part and leaves as straight pieces of the axes, as many as keep the tip within
+// half the path tolerance (the planner blends the pieces within the other half). The same
+// mechanism lets a swivel head's oblique working plane run arcs and radius compensation.
+#include <algorithm>
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 
 namespace kerf::klartext {
-
-namespace {
-
-// More pieces than this per block: the move turns too far for the tolerance (an error).
-constexpr int kMaxTcpmPieces = 1 << 16;
-
-Pose lerp(const Pose& a, const Pose& b, double t) {
-    Pose p;
-    for (size_t i = 0; i < p.values.size(); ++i)
-        p.values[i] = a.values[i] + t * (b.values[i] - a.values[i]);
-    return p;
-}
-
-}  // namespace
 
 void KlartextInterpreter::switchTcpm(bool on) {
     if (!checkPathError(activePath().flush())) return;
@@ -37,10 +24,46 @@ void KlartextInterpreter::switchTcpm(bool on) {
                           "first"));
         return;
     }
-    // The stream stays where the axes are; the program now counts in tip positions on the part.
-    const Pose at = activePath().toolPosition();
     m_tcpm = on;
-    m_programmed = m_frame.toProgram(on ? tipOf(at) : at);
+    // The axes stay where they are; the program now counts in tip positions on the part.
+    updatePathSpace();
+    m_programmed = programOfPath(m_path.toolPosition());
+}
+
+void KlartextInterpreter::updatePathSpace() {
+    const interp::PathSpace* space = nullptr;
+    if (m_tcpm) {
+        space = &m_tcpmSpace;
+    } else if (m_frame.tilted() && !m_frame.keepsPlane(workingPlane())) {
+        // A swivel head turned out of the machine's planes: arcs and radius compensation are
+        // worked out in the tilted plane.
+        space = &m_tiltedPlaneSpace;
+    }
+    if (space == nullptr && m_path.space() == nullptr) return;  // the axes' own, as before
+    if (!checkPathError(m_path.flush())) return;
+    // Where the axes are, through the space that brought them there.
+    const Pose at = m_path.machinePosition();
+    if (space == &m_tiltedPlaneSpace) m_tiltedPlaneSpace.frame = m_frame;
+    const double tolerance =
+        0.5 * std::max(m_settings.machine ? m_settings.machine->pathToleranceMm : 0.0, 0.001);
+    m_path.setSpace(space, tolerance);
+    m_path.resetToMachine(at);
+}
+
+Pose KlartextInterpreter::pathOfProgram(const Pose& program) const {
+    if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.toTiltedPlane(program);
+    return m_frame.toWorkpiece(program);
+}
+
+bool KlartextInterpreter::pathFlipsOrientation(Plane plane) const {
+    if (activePath().space() == &m_tiltedPlaneSpace)
+        return m_frame.flipsOrientationInTiltedPlane(plane);
+    return m_frame.flipsOrientation(plane);
+}
+
+Pose KlartextInterpreter::programOfPath(const Pose& path) const {
+    if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.fromTiltedPlane(path);
+    return m_frame.toProgram(path);
 }
 
 machine::RotaryAngles KlartextInterpreter::tableAnglesOf(const Pose& pose) const {
@@ -68,47 +91,6 @@ Pose KlartextInterpreter::tipOf(const Pose& axes) const {
     tip.setXyz(
         m_kinematics->tipOf(axes.xyz(), tableAnglesOf(axes), preset, m_tool.effectiveLength()));
     return tip;
-}
-
-void KlartextInterpreter::moveWithTcpm(const Pose& programTarget, bool rapid, double feed) {
-    if (m_comp == CompWord::Left || m_comp == CompWord::Right) {
-        fail("tcpm", KERF_TR_NOOP("radius compensation RL/RR with TCPM is not supported yet"));
-        return;
-    }
-    const Pose from = m_frame.toWorkpiece(m_programmed);
-    const Pose to = m_frame.toWorkpiece(programTarget);
-    const double tolerance = 0.5 * std::max(m_settings.machine->pathToleranceMm, 0.001);
-    // Doubles the pieces until the tip between the axes' piece ends stays on the line.
-    int pieces = 1;
-    for (;;) {
-        double worst = 0.0;
-        Pose start = axesOfTip(from);
-        for (int i = 0; i < pieces && worst <= tolerance; ++i) {
-            const Pose end = axesOfTip(lerp(from, to, double(i + 1) / pieces));
-            const Vec3 tip = tipOf(lerp(start, end, 0.5)).xyz();
-            const Vec3 onLine = lerp(from, to, (i + 0.5) / pieces).xyz();
-            worst = std::max(worst, (tip - onLine).norm());
-            start = end;
-        }
-        if (worst <= tolerance) break;
-        if (pieces >= kMaxTcpmPieces) {
-            fail("tcpm", KERF_TR_NOOP("TCPM: the rotary axes turn too far in this block to keep "
-                                      "the tool tip on the line; split the block"));
-            return;
-        }
-        pieces *= 2;
-    }
-    // F is the feed of the tip: each piece of the axes gets the feed that keeps it.
-    const double tipPiece = (to.xyz() - from.xyz()).norm() / pieces;
-    Pose start = axesOfTip(from);
-    for (int i = 0; i < pieces; ++i) {
-        const Pose end = axesOfTip(lerp(from, to, double(i + 1) / pieces));
-        const double axesPiece = (end.xyz() - start.xyz()).norm();
-        const double pieceFeed = tipPiece > 1e-9 ? feed * axesPiece / tipPiece : feed;
-        emitStreamMove(start, end, rapid, pieceFeed);
-        start = end;
-    }
-    m_programmed = programTarget;
 }
 
 }  // namespace kerf::klartext

@@ -28,13 +28,17 @@ cycles::CycleWords inMm(cycles::CycleWords words, double scale, bool factors) {
 
 }  // namespace
 
-std::optional<ContourElement> KlartextInterpreter::toWorkpiece(const ContourElement& e) {
-    if (m_frame.identity()) return e;
-    if (e.kind == ContourElement::Kind::Line) {
-        return ContourElement::line(e.plane, m_frame.toWorkpiece(e.start),
-                                    m_frame.toWorkpiece(e.end));
-    }
-    if (!m_frame.keepsArcs(e.plane)) {
+std::optional<ContourElement> KlartextInterpreter::toPathSpace(const ContourElement& e) {
+    // In a swivel head's oblique plane the path works in the tilted plane's coordinates: only the
+    // inner half of the frame applies.
+    const bool tiltedPlane = activePath().space() == &m_tiltedPlaneSpace;
+    if (!tiltedPlane && m_frame.identity()) return e;
+    auto map = [&](const Pose& p) {
+        return tiltedPlane ? m_frame.toTiltedPlane(p) : m_frame.toWorkpiece(p);
+    };
+    if (e.kind == ContourElement::Kind::Line)
+        return ContourElement::line(e.plane, map(e.start), map(e.end));
+    if (!(tiltedPlane ? m_frame.keepsArcsInTiltedPlane(e.plane) : m_frame.keepsArcs(e.plane))) {
         fail("transformation",
              KERF_TR_NOOP("an arc in the {1} plane cannot be rotated out of its plane or scaled "
                           "with different factors"),
@@ -43,10 +47,9 @@ std::optional<ContourElement> KlartextInterpreter::toWorkpiece(const ContourElem
     }
     Pose centre = e.start;
     e.setInPlane(centre, e.center);
-    const Pose c = m_frame.toWorkpiece(centre);
-    const double sweep = m_frame.flipsOrientation(e.plane) ? -e.sweep : e.sweep;
-    return ContourElement::arc(e.plane, m_frame.toWorkpiece(e.start), m_frame.toWorkpiece(e.end),
-                               e.inPlane(c), sweep);
+    const Pose c = map(centre);
+    const double sweep = pathFlipsOrientation(e.plane) ? -e.sweep : e.sweep;
+    return ContourElement::arc(e.plane, map(e.start), map(e.end), e.inPlane(c), sweep);
 }
 
 void KlartextInterpreter::datumShift(const CycleDefinition& def) {
@@ -149,6 +152,7 @@ void KlartextInterpreter::presetting(const cycles::CycleValues& values) {
         }
     }
     m_frame.setPreset(offset);
+    updatePathSpace();  // the preset moves the tilted plane on the axes
 }
 
 std::optional<double> KlartextInterpreter::lastValue(const CycleDefinition& def, const char* what) {

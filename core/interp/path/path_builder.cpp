@@ -43,14 +43,63 @@ std::optional<PathError> PathBuilder::setLookAhead(int blocks) {
     return e;
 }
 
+void PathBuilder::addMachineLine(const Pose& target, bool rapid, double feed,
+                                 const SourceLocation& location) {
+    canon::Command command;
+    command.location = location;
+    if (rapid) {
+        command.body = canon::RapidMove{target};
+    } else {
+        command.body = canon::LinearMove{target, feed};
+    }
+    m_sink.consume(command);
+    m_tool = m_space ? m_space->toPath(target) : target;
+}
+
+void PathBuilder::setSpace(const PathSpace* space, double toleranceMm) {
+    m_space = space;
+    m_spaceToleranceMm = toleranceMm;
+}
+
+std::optional<PathError> PathBuilder::takeSpaceError() {
+    auto e = std::move(m_spaceError);
+    m_spaceError.reset();
+    return e;
+}
+
 double PathBuilder::signedOffset(CompSide side) const {
     return static_cast<double>(static_cast<int>(side)) * m_radius;
 }
 
 // ---- output ---------------------------------------------------------------------------------
 
+void PathBuilder::emitInSpace(const ContourElement& element, bool rapid, double feed,
+                              const SourceLocation& location) {
+    m_tool = element.end;
+    if (m_spaceError) return;  // the run stops at the first element that could not be split
+    m_pieces.clear();
+    if (!machinePieces(*m_space, element, feed, m_spaceToleranceMm, m_pieces)) {
+        m_spaceError = error(location, "tolerance",
+                             KERF_TR_NOOP("the rotary axes turn too far in this block to keep "
+                                          "the tool tip on the path; split the block"));
+        return;
+    }
+    for (const MachinePiece& piece : m_pieces) {
+        canon::Command command;
+        command.location = location;
+        if (rapid) {
+            command.body = canon::RapidMove{piece.target};
+        } else {
+            command.body = canon::LinearMove{piece.target, piece.feed};
+        }
+        m_sink.consume(command);
+    }
+}
+
 void PathBuilder::emitLine(const Pose& target, bool rapid, double feed,
                            const SourceLocation& location) {
+    if (m_space)
+        return emitInSpace(ContourElement::line(Plane::XY, m_tool, target), rapid, feed, location);
     canon::Command command;
     command.location = location;
     if (rapid) {
@@ -64,6 +113,10 @@ void PathBuilder::emitLine(const Pose& target, bool rapid, double feed,
 
 void PathBuilder::emitArc(Plane plane, const Pose& target, const Vec2& center, double sweep,
                           double feed, const SourceLocation& location) {
+    if (m_space) {
+        return emitInSpace(ContourElement::arc(plane, m_tool, target, center, sweep), false, feed,
+                           location);
+    }
     PlaneAxes axes = planeAxes(plane);
     canon::ArcMove arc;
     arc.target = target;

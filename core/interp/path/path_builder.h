@@ -6,6 +6,7 @@
 #include "core/canon/commands.h"
 #include "core/interp/path/offset_junction.h"
 #include "core/interp/path/path_move.h"
+#include "core/interp/path/path_space.h"
 
 namespace kerf::interp {
 
@@ -26,14 +27,29 @@ class PathBuilder {
 public:
     explicit PathBuilder(canon::Sink& sink) : m_sink(sink) {}
 
-    // Where the tool is at the start (no look-ahead pending).
+    // Where the tool is at the start (no look-ahead pending), in the space's coordinates; and
+    // the same given on the machine's axes.
     void reset(const Pose& toolPosition);
+    void resetToMachine(const Pose& machine) {
+        reset(m_space ? m_space->toPath(machine) : machine);
+    }
+    // A straight move of the machine's axes, past the space (retractions, positioning of the
+    // rotary axes), with nothing pending.
+    void addMachineLine(const Pose& target, bool rapid, double feed,
+                        const SourceLocation& location);
     // Effective tool radius used by compensation (R + DR); set it with nothing pending.
     void setToolRadius(double radius) { m_radius = radius; }
     // M120 LA n: how many compensated elements are calculated in advance (0: none). Resolves the
     // elements held for the previous count. Compensation switched off ends the look-ahead.
     std::optional<PathError> setLookAhead(int blocks);
     int lookAhead() const { return m_lookAhead; }
+    // Work in `space` (nullptr: the machine's axes), set with nothing pending: moves, approaches
+    // and reset() are then in its coordinates and every line and arc leaves as straight pieces
+    // of the axes within `toleranceMm` (path_space.h). The space must outlive its use.
+    void setSpace(const PathSpace* space, double toleranceMm);
+    const PathSpace* space() const { return m_space; }
+    // An element the space could not split within the tolerance, once.
+    std::optional<PathError> takeSpaceError();
 
     std::optional<PathError> addMove(const PathMove& move);
     std::optional<PathError> addRounding(double radius, std::optional<double> feed,
@@ -47,8 +63,10 @@ public:
     // Resolves everything pending (program end, synchronisation, tool change).
     std::optional<PathError> flush();
 
-    // The tool-centre position after every move emitted so far.
+    // The tool-centre position after every move emitted so far (in the space's coordinates).
     const Pose& toolPosition() const { return m_tool; }
+    // The same on the machine's axes.
+    Pose machinePosition() const { return m_space ? m_space->toMachine(m_tool) : m_tool; }
     CompSide activeSide() const { return m_side; }
     bool pending() const { return m_held.has_value() || m_comp.has_value(); }
 
@@ -102,9 +120,16 @@ private:
     void emitLine(const Pose& target, bool rapid, double feed, const SourceLocation& location);
     void emitArc(Plane plane, const Pose& target, const Vec2& center, double sweep, double feed,
                  const SourceLocation& location);
+    // Through the space: `element` starts at the tool.
+    void emitInSpace(const ContourElement& element, bool rapid, double feed,
+                     const SourceLocation& location);
 
     canon::Sink& m_sink;
     double m_radius = 0.0;
+    const PathSpace* m_space = nullptr;
+    double m_spaceToleranceMm = 0.0;
+    std::optional<PathError> m_spaceError;
+    std::vector<MachinePiece> m_pieces;  // reused
     Pose m_tool{};
     // Stage 1.
     std::optional<PathMove> m_held;

@@ -3,6 +3,7 @@
 // computed by hand (tests/golden/klartext/plane_spatial_stay_q121_mill5), and a rotary axis beyond
 // its soft limit stops the program with the block named.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -259,6 +261,98 @@ TEST_F(RotaryMotion, TcpmOnTheSwivelHeadKeepsTheTipOnTheProgrammedLine) {
     EXPECT_GT(rows, 1000);
     EXPECT_NEAR(maxB, 90.0, 1e-6);
     EXPECT_LE(worst, 0.01);
+}
+
+}  // namespace
+
+namespace {
+
+// The motion samples of `program` on mill5 (tool 4: L 60, R 4), each turned back onto the part
+// (origin at the pivot: tip = Rz(C) Ry(B) axes), and the last C.
+std::vector<std::array<double, 3>> tipsOnThePart(const fs::path& dir, const std::string& name,
+                                                 const std::string& program, double& lastC) {
+    std::ofstream(dir / name) << program;
+    const std::string samples = (dir / "samples.csv").string();
+    const std::string command =
+        std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
+        (dir / "TOOL.T").string() + "\" --motion --samples \"" + samples + "\" \"" +
+        (dir / name).string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+    std::vector<std::array<double, 3>> tips;
+    if (std::system(command.c_str()) != 0) {
+        ADD_FAILURE() << readText(dir / "errors");
+        return tips;
+    }
+    std::istringstream csv(readText(samples));
+    std::string line;
+    std::getline(csv, line);
+    while (std::getline(csv, line)) {
+        double v[6];
+        if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4],
+                        &v[5]) != 6)
+            continue;
+        const double b = v[4] * M_PI / 180.0, c = v[5] * M_PI / 180.0;
+        const double x1 = std::cos(b) * v[1] + std::sin(b) * v[3];
+        const double z1 = -std::sin(b) * v[1] + std::cos(b) * v[3];
+        tips.push_back(
+            {std::cos(c) * x1 - std::sin(c) * v[2], std::sin(c) * x1 + std::cos(c) * v[2], z1});
+        lastC = v[5];
+    }
+    return tips;
+}
+
+// TCPM with a circle: from (20, 0, 50) a quarter circle about (10, 0) to (10, 10, 50) while the
+// C table turns 90. Every servo cycle's tip on the part lies on the rapids (up to (0, 0, 50), then
+// to (20, 0, 50)) or on the circle of radius 10 about (10, 0) at Z 50 within the path tolerance
+// (0.01 mm).
+TEST_F(RotaryMotion, TcpmArcKeepsTheTipOnTheProgrammedCircle) {
+    double lastC = 0.0;
+    const auto tips = tipsOnThePart(dir, "TCPMC.H",
+                                    "0 BEGIN PGM TCPMC MM\n1 TOOL CALL 4 Z S1000\n"
+                                    "2 L X+0 Y+0 Z+50 R0 FMAX\n3 L X+20 FMAX\n4 M128\n"
+                                    "5 CC X+10 Y+0\n6 C X+10 Y+10 C+90 DR+ F1000\n7 M129\n"
+                                    "8 END PGM TCPMC MM\n",
+                                    lastC);
+    // The 60 mm tool's tip starts below the untooled start point, as in the test above.
+    const double origin[3] = {0, 0, -60}, above[3] = {0, 0, 50}, start[3] = {20, 0, 50};
+    double worst = 0.0;
+    int onArc = 0;
+    for (const auto& t : tips) {
+        double d = std::min(toSegment(t.data(), origin, above), toSegment(t.data(), above, start));
+        if (t[0] >= 10.0 - 1e-6 && t[1] >= -1e-6) {
+            const double arc = std::hypot(std::hypot(t[0] - 10.0, t[1]) - 10.0, t[2] - 50.0);
+            if (arc < d) {
+                d = arc;
+                if (t[1] > 1.0) ++onArc;
+            }
+        }
+        worst = std::max(worst, d);
+    }
+    EXPECT_GT(onArc, 100);
+    EXPECT_LE(worst, 0.01);
+    EXPECT_NEAR(lastC, 90.0, 1e-6);
+}
+
+// TCPM with radius compensation: RL along +X at Y 0 (tool R 4) puts the tool's centre at Y +4 on
+// the part while the C table turns 90; every servo cycle whose tip lies between X -19 and 19 on
+// the part (only the compensated line gets there) is on that line within the path tolerance.
+TEST_F(RotaryMotion, TcpmRadiusCompensationOffsetsTheToolOnThePart) {
+    double lastC = 0.0;
+    const auto tips = tipsOnThePart(dir, "TCPMR.H",
+                                    "0 BEGIN PGM TCPMR MM\n1 TOOL CALL 4 Z S1000\n"
+                                    "2 L X-30 Y-10 Z+50 R0 FMAX\n3 M128\n"
+                                    "4 L X-20 Y+0 RL F1000\n5 L X+20 C+90\n"
+                                    "6 L X+30 Y+10 R0\n7 M129\n8 END PGM TCPMR MM\n",
+                                    lastC);
+    double worst = 0.0;
+    int along = 0;
+    for (const auto& t : tips) {
+        if (t[0] < -19.0 || t[0] > 19.0 || t[2] < 49.0) continue;
+        worst = std::max(worst, std::hypot(t[1] - 4.0, t[2] - 50.0));
+        ++along;
+    }
+    EXPECT_GT(along, 100);
+    EXPECT_LE(worst, 0.01);
+    EXPECT_NEAR(lastC, 90.0, 1e-6);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -127,6 +128,63 @@ TEST(PositionDisplay, NamesTheExecutingBlockByItsNumber) {
     status.block.blockNumber = -1;
     lathe.setStatus(status);
     EXPECT_TRUE(state(lathe).endsWith(QStringLiteral("Line 7"))) << state(lathe).toStdString();
+}
+
+// A plane tilted by SPB+30 on the B swivel head of mill5h (head pivot 200 mm above the nose):
+// the machine's axes a hold R p + h with R = Ry(30) and the head's offset h = 200 (R z - z), so
+// the tilted plane's coordinates are p = R^T a - 200 (sin30, 0, 1 - cos30). NOML and ACTL show
+// p, LAG and DIST the differences turned by R^T, REF the machine's axes; B stays in degrees.
+TEST(PositionDisplay, ShowsTheTiltedPlanesCoordinatesExceptInRef) {
+    test::testApp();
+    auto mill5h = machine::loadMachine("mill5h");
+    ASSERT_TRUE(mill5h.ok());
+    PositionDisplay display(*mill5h);
+    const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+    PositionDisplay::WorkingPlane plane;
+    plane.axesToProgram = {c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c};
+    plane.programAtAxesZeroMm = {-200.0 * s, 0.0, -200.0 * (1.0 - c)};
+    // The tip at p = (10, 5, 2): a = R p + h = (10c + 2s + 200s, 5, -10s + 2c + 200(c - 1)).
+    const double ax = 10.0 * c + 2.0 * s + 200.0 * s;
+    const double az = -10.0 * s + 2.0 * c + 200.0 * (c - 1.0);
+    // Actual 0.01 behind along the plane's X: a - R (0.01, 0, 0) = a - (0.01c, 0, -0.01s).
+    // The move ends 4 mm further along the plane's Y.
+    task::MachineStatus status;
+    status.axes[0] = axisAt(ax, ax - 0.01 * c, -1000.0, 0.0);
+    status.axes[1] = axisAt(5.0, 5.0, -200.0, 4.0);
+    status.axes[2] = axisAt(az, az + 0.01 * s, -400.0, 0.0);
+    status.axes[4] = axisAt(30.0, 30.0, 0.0, 0.0);
+    display.setStatus(status);
+    DisplaySettings settings;
+    settings.positionKind = PositionKind::Nominal;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "+109.660");  // untilted: the axes themselves
+    display.setWorkingPlane(plane);
+    EXPECT_EQ(display.axisText(Axis::X), "+10.000");
+    EXPECT_EQ(display.axisText(Axis::Y), "+5.000");
+    EXPECT_EQ(display.axisText(Axis::Z), "+2.000");
+    EXPECT_EQ(display.axisText(Axis::B), "+30.000");
+    EXPECT_TRUE(display.kindLabel().endsWith(QStringLiteral("3D ROT")));
+    settings.positionKind = PositionKind::Actual;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "+9.990");
+    EXPECT_EQ(display.axisText(Axis::Z), "+2.000");
+    settings.positionKind = PositionKind::Lag;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "+0.010");
+    EXPECT_EQ(display.axisText(Axis::Z), "+0.000");
+    settings.positionKind = PositionKind::DistanceToGo;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::Y), "+4.000");
+    settings.positionKind = PositionKind::ReferenceNominal;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "-890.340");  // 109.660 - 1000
+    EXPECT_EQ(display.axisText(Axis::Z), "-430.063");  // -30.062868 - 400
+    EXPECT_FALSE(display.kindLabel().contains(QStringLiteral("3D ROT")));
+    display.setWorkingPlane(std::nullopt);
+    settings.positionKind = PositionKind::Nominal;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "+109.660");
+    EXPECT_FALSE(display.kindLabel().contains(QStringLiteral("3D ROT")));
 }
 
 TEST(OverrideControls, KeysStepTheOverrideAndTheyAreTouchSized) {

@@ -114,6 +114,12 @@ TEST(StatusTabs, TiltedWorkingPlaneShowsItsAnglesAndPosition) {
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane X"), "10.000 mm");
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane Y"), "5.000 mm");
     EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Working plane Z"), "12.000 mm");
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Rotary axes"), "");  // no kinematics given
+    // The solved angles of a B/C machine, in degrees.
+    s.transformations.workingPlane->rotaryAxes = axisBit(Axis::B) | axisBit(Axis::C);
+    s.transformations.workingPlane->rotaryDeg = {0.0, -90.0, 195.5};
+    tabs.setProgramStatus(s);
+    EXPECT_EQ(tabs.valueOf(Tab::Transformations, "Rotary axes"), QString("B -90.000°  C 195.500°"));
 }
 
 TEST(StatusTabs, InchProgramsShowInches) {

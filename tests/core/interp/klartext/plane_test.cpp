@@ -1,9 +1,13 @@
 // The tilted working plane and the rotary axes on the built-in machines mill5 (B/C table-table)
 // and mill4 (A table), every value derived by hand (docs/klartext.md, "Tilted working plane").
 // mill5's pivot is the workpiece origin, so the stream holds (table turn) x (tilt) x program.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -26,7 +30,10 @@ protected:
     void TearDown() override { fs::remove_all(dir); }
 
     // Runs the blocks (numbered from 1) on the machine; the interpreter stays for inspection.
-    interp::RunStatus run(const std::string& machineName, const std::string& blocks) {
+    // A read of the machine's position (FN 18 ID240/270) is answered with `world`, or without it
+    // with the position the stream reached.
+    interp::RunStatus run(const std::string& machineName, const std::string& blocks,
+                          std::optional<Pose> world = std::nullopt) {
         machine = *machine::loadMachine(machineName);
         KlartextSettings settings;
         settings.machine = &machine;
@@ -35,12 +42,21 @@ protected:
         for (const machine::AxisConfig& axis : machine.axes)
             settings.presetInMachine[*axisFromLetter(axis.letter)] = axis.presetPosition;
         k = std::make_unique<KlartextInterpreter>(sources, settings);
+        sink.moves.clear();
+        sink.feeds.clear();
+        sink.arcs = 0;
         const fs::path path = dir / "P.H";
         writeFileAtomically(path, "0 BEGIN PGM P MM\n" + blocks + "99 END PGM P MM\n");
         if (!k->load(path)) return interp::RunStatus::Failed;
         interp::RunStatus status;
         do {
             status = k->run(sink, 1000);
+            if (status == interp::RunStatus::NeedsSync) {
+                interp::WorldSnapshot snapshot;
+                snapshot.position = world.value_or(k->nominalPosition());
+                k->resume(snapshot);
+                status = interp::RunStatus::BudgetUsed;
+            }
         } while (status == interp::RunStatus::BudgetUsed);
         return status;
     }
@@ -58,9 +74,27 @@ protected:
         return "";
     }
 
-    struct Null : canon::Sink {
-        void consume(const canon::Command&) override {}
+    // Keeps the moves (block number, target) the run emitted.
+    struct Recorder : canon::Sink {
+        void consume(const canon::Command& c) override {
+            if (const auto* m = std::get_if<canon::LinearMove>(&c.body)) {
+                moves.push_back({c.location.blockNumber, m->target});
+                feeds.push_back(m->feed);
+            }
+            if (const auto* m = std::get_if<canon::RapidMove>(&c.body))
+                moves.push_back({c.location.blockNumber, m->target});
+            if (std::holds_alternative<canon::ArcMove>(c.body)) ++arcs;
+        }
+        std::vector<std::pair<int64_t, Pose>> moves;
+        std::vector<double> feeds;  // of the linear moves, in order
+        int arcs = 0;
     } sink;
+    std::vector<Pose> movesOf(int64_t block) const {
+        std::vector<Pose> out;
+        for (const auto& [at, target] : sink.moves)
+            if (at == block) out.push_back(target);
+        return out;
+    }
     fs::path dir;
     machine::MachineConfig machine;
     program::SourceRegistry sources;
@@ -124,6 +158,183 @@ TEST_F(PlaneTest, StatusShowsTheWorkingPlane) {
               interp::RunStatus::Finished)
         << firstError();
     EXPECT_FALSE(k->programStatus().transformations.workingPlane.has_value());
+}
+
+// What the position display needs on a swivel head (mill5h, head pivot 200 mm above the nose,
+// no tool): SPB+30 solves B+30 C0, the table stays, so the axes of a tilted-plane point p are
+// a = R (p + s) + h with R = Ry(30), the shift s = (5, 0, 0) programmed after the tilt and the
+// head's offset h = 200 (R z - z). Back: p = R^T a - R^T h - s, and R^T h = 200 (z - R^T z) =
+// 200 (sin30, 0, 1 - cos30).
+TEST_F(PlaneTest, StatusMapsTheAxesIntoTheTiltedPlane) {
+    ASSERT_EQ(run("mill5h",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n"
+                  "3 CYCL DEF 7.0 DATUM SHIFT\n4 CYCL DEF 7.1 X+5\n"
+                  "5 L X+10 Y+5 Z+2 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const auto plane = k->programStatus().transformations.workingPlane;
+    ASSERT_TRUE(plane.has_value());
+    const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+    const double rt[9] = {c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c};  // R^T, row by row
+    for (size_t i = 0; i < 9; ++i)
+        EXPECT_NEAR(plane->axesToProgram[i], rt[i], 1e-9) << i;
+    EXPECT_NEAR(plane->programAtAxesZeroMm[0], -200.0 * s - 5.0, 1e-9);
+    EXPECT_NEAR(plane->programAtAxesZeroMm[1], 0.0, 1e-9);
+    EXPECT_NEAR(plane->programAtAxesZeroMm[2], -200.0 * (1.0 - c), 1e-9);
+    EXPECT_EQ(plane->rotaryAxes, axisBit(Axis::B) | axisBit(Axis::C));
+    EXPECT_NEAR(plane->rotaryDeg[1], 30.0, 1e-9);
+    EXPECT_NEAR(plane->rotaryDeg[2], 0.0, 1e-9);
+    // The stream position maps back onto the programmed point.
+    const Pose at = k->nominalPosition();
+    for (size_t row = 0; row < 3; ++row) {
+        double v = plane->programAtAxesZeroMm[row];
+        for (size_t column = 0; column < 3; ++column)
+            v += plane->axesToProgram[3 * row + column] * at.values[column];
+        EXPECT_NEAR(v, (std::array<double, 3>{10.0, 5.0, 2.0})[row], 1e-9) << row;
+    }
+}
+
+// FN 18 of the tilt, with the TNC 320's IDs (docs/klartext.md, "FN 18 of the tilt"): ID210 NR5
+// the spatial angles, NR6 the tilt of the program run (-1 active), NR7 manual operation's (none),
+// ID240 the rotary axes' machine angles, ID270 the tilted plane's coordinates, ID280 NR1 TCPM.
+// mill5 with SPB+30 TURN: B+30 C0, the origin at the pivot, so the axes equal the program's
+// coordinates of the tilted plane.
+TEST_F(PlaneTest, SysreadReadsTheTilt) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "2 FN 18: SYSREAD Q10 = ID210 NR6\n"
+                  "3 PLANE SPATIAL SPA+10 SPB+30 SPC+20 STAY\n"
+                  "4 FN 18: SYSREAD Q1 = ID210 NR5 IDX1\n"
+                  "5 FN 18: SYSREAD Q2 = ID210 NR5 IDX2\n"
+                  "6 FN 18: SYSREAD Q3 = ID210 NR5 IDX3\n"
+                  "7 FN 18: SYSREAD Q4 = ID210 NR6\n"
+                  "8 FN 18: SYSREAD Q5 = ID210 NR7\n"
+                  "9 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+ TABLE ROT\n"
+                  "10 L X+10 Y+5 Z+2 FMAX\n"
+                  "11 FN 18: SYSREAD Q6 = ID240 NR1 IDX5\n"
+                  "12 FN 18: SYSREAD Q7 = ID270 NR1 IDX1\n"
+                  "13 FN 18: SYSREAD Q8 = ID270 NR1 IDX3\n"
+                  "14 PLANE RESET STAY\n"
+                  "15 FN 18: SYSREAD Q9 = ID210 NR6\n"
+                  "16 FN 18: SYSREAD Q11 = ID210 NR5 IDX2\n"
+                  "17 FN 18: SYSREAD Q12 = ID280 NR1\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(10), 0.0, 1e-12);
+    EXPECT_NEAR(q(1), 10.0, 1e-9);
+    EXPECT_NEAR(q(2), 30.0, 1e-9);
+    EXPECT_NEAR(q(3), 20.0, 1e-9);
+    EXPECT_NEAR(q(4), -1.0, 1e-12);
+    EXPECT_NEAR(q(5), 0.0, 1e-12);
+    EXPECT_NEAR(q(6), 30.0, 1e-9);
+    EXPECT_NEAR(q(7), 10.0, 1e-9);
+    EXPECT_NEAR(q(8), 2.0, 1e-9);
+    EXPECT_NEAR(q(9), 0.0, 1e-12);
+    EXPECT_NEAR(q(11), 0.0, 1e-12);
+    EXPECT_NEAR(q(12), 0.0, 1e-12);
+    // TCPM: C+90 turns the part by Rz(-90), so the tip at (10, 0, 50) on the part has the axes
+    // at (0, -10, 50); ID270 reads the tip, the program's coordinate, not the axes.
+    Pose axes{};
+    axes[Axis::Y] = -10.0;
+    axes[Axis::Z] = 50.0;
+    axes[Axis::C] = 90.0;
+    ASSERT_EQ(run("mill5",
+                  "1 L X+10 Y+0 Z+50 R0 FMAX\n2 M128\n3 L C+90 F1000\n"
+                  "4 FN 18: SYSREAD Q1 = ID280 NR1\n"
+                  "5 FN 18: SYSREAD Q2 = ID270 NR1 IDX1\n"
+                  "6 FN 18: SYSREAD Q3 = ID270 NR1 IDX2\n"
+                  "7 FN 18: SYSREAD Q4 = ID240 NR1 IDX6\n"
+                  "8 M129\n9 FN 18: SYSREAD Q5 = ID280 NR1\n",
+                  axes),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(1), -1.0, 1e-12);
+    EXPECT_NEAR(q(2), 10.0, 1e-9);
+    EXPECT_NEAR(q(3), 0.0, 1e-9);
+    EXPECT_NEAR(q(4), 90.0, 1e-9);
+    EXPECT_NEAR(q(5), 0.0, 1e-12);
+}
+
+// An arc in the plane the B swivel head of mill5h turns by SPB+30 (B+30 C0, no tool): the axes
+// of a tilted-plane point p are a = R p + h, R = Ry(30), h = 200 (R z - z). The quarter circle of
+// radius 10 about the origin leaves as straight pieces of the axes whose ends lie on the circle,
+// R^T (a - h) = (10 cos t, 10 sin t, 0); half the path tolerance (0.005 mm) allows a chord of at
+// most 2 acos(1 - 0.005 / 10) = 0.0632 rad, so a quarter takes 32 (the next power of two above
+// 24.8) pieces, the last at R (0, 10, 0) + h = (100, 10, 200 (cos30 - 1)).
+TEST_F(PlaneTest, ArcInTheSwivelHeadsObliquePlane) {
+    ASSERT_EQ(run("mill5h",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n"
+                  "3 L X+10 Y+0 Z+0 FMAX\n"
+                  "4 CC X+0 Y+0\n"
+                  "5 C X+0 Y+10 DR+ F500\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+    const Vec3 h(200.0 * s, 0.0, 200.0 * (c - 1.0));
+    Eigen::Matrix3d r;
+    r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
+    const std::vector<Pose> arc = movesOf(5);
+    ASSERT_EQ(arc.size(), 32u);
+    EXPECT_EQ(sink.arcs, 0);
+    for (const Pose& a : arc) {
+        const Vec3 p = r.transpose() * (a.xyz() - h);
+        EXPECT_NEAR(p.z(), 0.0, 1e-9);
+        EXPECT_NEAR(std::hypot(p.x(), p.y()), 10.0, 1e-9);
+    }
+    EXPECT_NEAR(arc.back()[Axis::X], 100.0, 1e-9);
+    EXPECT_NEAR(arc.back()[Axis::Y], 10.0, 1e-9);
+    EXPECT_NEAR(arc.back()[Axis::Z], 200.0 * (c - 1.0), 1e-9);
+    expectAt(100.0, 10.0, 200.0 * (c - 1.0));
+}
+
+// Radius compensation in the same plane, tool R5 (L0): from (20, -10) RL to (10, 0), then along
+// -X to (-10, 0): the tool runs 5 to the left, at Y -5. The activation ends perpendicular to the
+// next element, at (10, -5); the compensated line ends perpendicular to itself before R0, at
+// (-10, -5). On the axes: R (10, -5, 0) + h = (10c + 100, -5, -10s + 200(c - 1)) and
+// R (-10, -5, 0) + h = (-10c + 100, -5, 10s + 200(c - 1)), one straight move each.
+TEST_F(PlaneTest, RadiusCompensationInTheSwivelHeadsObliquePlane) {
+    ASSERT_EQ(run("mill5h",
+                  "1 TOOL DEF 1 L+0 R+5\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "4 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n"
+                  "5 L X+20 Y-10 Z+0 R0 FMAX\n"
+                  "6 L X+10 Y+0 RL F500\n"
+                  "7 L X-10 Y+0\n"
+                  "8 L X-20 Y-10 R0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+    const std::vector<Pose> activation = movesOf(6), along = movesOf(7);
+    ASSERT_FALSE(activation.empty());
+    ASSERT_EQ(along.size(), 1u);
+    EXPECT_NEAR(activation.back()[Axis::X], 10.0 * c + 100.0, 1e-9);
+    EXPECT_NEAR(activation.back()[Axis::Y], -5.0, 1e-9);
+    EXPECT_NEAR(activation.back()[Axis::Z], -10.0 * s + 200.0 * (c - 1.0), 1e-9);
+    EXPECT_NEAR(along[0][Axis::X], -10.0 * c + 100.0, 1e-9);
+    EXPECT_NEAR(along[0][Axis::Y], -5.0, 1e-9);
+    EXPECT_NEAR(along[0][Axis::Z], 10.0 * s + 200.0 * (c - 1.0), 1e-9);
+}
+
+// TCPM with a quarter circle of radius 20 about the C table's axis while C turns 90: the table
+// carries the tip along the circle, so X, Y, Z stand at (20, 0, 50) (Rz(-90) (0, 20) = (20, 0))
+// and the one move turns C alone. It takes as long as the arc's 10 pi mm at F 1000: its feed is
+// 90 deg / (10 pi / 1000) min = 2864.789 deg/min (it was 0, a move that never ended).
+TEST_F(PlaneTest, TcpmCircleAboutTheTableAxisTurnsTheTableAtTheTipsFeed) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+20 Y+0 Z+50 R0 FMAX\n2 M128\n3 CC X+0 Y+0\n"
+                  "4 C X+0 Y+20 C+90 DR+ F1000\n5 M129\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const std::vector<Pose> arc = movesOf(4);
+    ASSERT_EQ(arc.size(), 1u);
+    EXPECT_NEAR(arc[0][Axis::X], 20.0, 1e-9);
+    EXPECT_NEAR(arc[0][Axis::Y], 0.0, 1e-9);
+    EXPECT_NEAR(arc[0][Axis::Z], 50.0, 1e-9);
+    EXPECT_NEAR(arc[0][Axis::C], 90.0, 1e-9);
+    ASSERT_EQ(sink.feeds.size(), 1u);
+    EXPECT_NEAR(sink.feeds[0], 90.0 * 1000.0 / (10.0 * M_PI), 1e-6);
 }
 
 // SEQ- takes B-30 with C180; the table's turn then leaves the tilted axes turned by 180 about Z

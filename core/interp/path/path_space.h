@@ -1,0 +1,39 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/geometry/contour_element.h"
+
+namespace kerf::interp {
+
+// The coordinates the path builder works in when they are not the machine's axes: the tool tip
+// on the part while TCPM turns the tables (the axes then follow the tip non-linearly), or the
+// tilted plane a swivel head turns out of the machine's planes (an affine turn). Lines and arcs
+// stay exact there, so roundings and radius compensation work as in any plane; on the way out
+// each element becomes straight pieces of the machine's axes.
+class PathSpace {
+public:
+    virtual ~PathSpace() = default;
+    virtual Pose toMachine(const Pose& path) const = 0;
+    virtual Pose toPath(const Pose& machine) const = 0;
+};
+
+// One straight piece of the machine's axes and the feed that keeps the programmed feed along the
+// element (F scaled by the axes' length over the element's length of the piece).
+struct MachinePiece {
+    Pose target;
+    double feed = 0.0;
+};
+
+// More pieces than this for one element: it turns too far for the tolerance.
+inline constexpr int kMaxMachinePieces = 1 << 16;
+
+// Splits `element` (path coordinates) into the fewest pieces, a power of two, whose straight
+// moves of the axes stay within `toleranceMm` of the element at the middle of each piece (seen
+// back in path coordinates). False (and `out` unchanged) when more than kMaxMachinePieces would
+// be needed. Pure; any thread.
+bool machinePieces(const PathSpace& space, const ContourElement& element, double feed,
+                   double toleranceMm, std::vector<MachinePiece>& out);
+
+}  // namespace kerf::interp
