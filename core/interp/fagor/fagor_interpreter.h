@@ -234,9 +234,10 @@ private:
     };
     bool readProfile(const CycleWords& w, const Vec2& start,
                      std::vector<cycles::lathe::ProfileElement>& finished, RawProfile& raw);
-    // The tool/profile analysis (fagor_tool_reach.cpp): warns about valleys the tool cannot reach.
+    // The tool/profile analysis (fagor_tool_reach.cpp): warns about valleys the tool cannot reach
+    // and replaces `profile` by the closest one it reaches.
     void checkToolReach(int g, const Vec2& call, const Vec2& start,
-                        const std::vector<cycles::lathe::ProfileElement>& profile);
+                        std::vector<cycles::lathe::ProfileElement>& profile);
     struct ProfileCorner {
         size_t element = 0;  // the corner at the end of this element
         bool round = true;   // G36, else G39
