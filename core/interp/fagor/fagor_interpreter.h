@@ -227,6 +227,9 @@ private:
     // Canned cycles G81-G89 (fagor_cycles.cpp).
     bool executeCycle(const IsoBlock& iso);
     bool runCycleSteps(const std::vector<cycles::lathe::LatheStep>& steps, const IsoBlock& iso);
+    // The raw-stock profile of G66/G68/G69 as the blank for the graphics (canon StockRevolved).
+    void emitRawStockBlank(const cycles::lathe::RawStock& raw, const Vec2& call, const Vec2& start,
+                           bool stepsAlongX);
     // G68/G69: the profile from label S to label E (fagor_profile.cpp).
     struct RawProfile {
         Vec2 start{0.0, 0.0};
