@@ -269,6 +269,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>Der NOT-HALT-Kreis ist noch offen</translation>
     </message>
+    <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>Die Werkzeugkorrektur muss D1 bis D255 sein</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Werkzeugkalibrierung: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>Die Werkzeugkalibrierung gilt nur für X und Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Werkzeugkorrektur D%1: %2 = %3 mm</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8355,6 +8371,28 @@ setzen</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S in 1/min (%1 bis %2)</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Werkzeugkalibrierung</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Werkzeugkorrektur D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Angetastete Achse</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Position von %1 an der Berührstelle des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Werkzeug
+kalibrieren</translation>
     </message>
 </context>
 </TS>

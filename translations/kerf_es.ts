@@ -269,6 +269,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>El circuito de emergencia sigue abierto</translation>
     </message>
+    <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>El corrector de herramienta debe ser D1 a D255</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Calibración de herramientas: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>La calibración de herramientas solo actúa en X y Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Corrector D%1: %2 = %3 mm</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8356,6 +8372,28 @@ punto ref.</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S en rpm (%1 a %2)</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Calibración de herramientas</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Corrector de herramienta D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Eje tocado</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Posición de %1 donde toca la herramienta</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Calibración
+herramienta</translation>
     </message>
 </context>
 </TS>

@@ -270,6 +270,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>Obwód wyłącznika awaryjnego jest nadal otwarty</translation>
     </message>
+    <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>Korekcja narzędzia musi być od D1 do D255</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Kalibracja narzędzia: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>Kalibracja narzędzia działa tylko dla X i Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Korekcja narzędzia D%1: %2 = %3 mm</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8359,6 +8375,28 @@ odniesienia</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S w obr/min (%1 do %2)</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Kalibracja narzędzia</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Korekcja narzędzia D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Dotknięta oś</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Pozycja %1 w miejscu styku narzędzia</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Kalibracja
+narzędzia</translation>
     </message>
 </context>
 </TS>

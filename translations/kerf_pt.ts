@@ -269,6 +269,22 @@
         <source>The emergency stop chain is still open</source>
         <translation>O circuito de emergência ainda está aberto</translation>
     </message>
+    <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>O corretor da ferramenta deve ser D1 a D255</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Calibração de ferramentas: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>A calibração de ferramentas atua só em X e Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Corretor D%1: %2 = %3 mm</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8356,6 +8372,28 @@ ponto ref.</translation>
     <message>
         <source>S in rpm (%1 to %2)</source>
         <translation>S em rpm (%1 a %2)</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Calibração de ferramentas</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Corretor da ferramenta D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Eixo tocado</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Posição de %1 onde a ferramenta toca</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Calibração
+ferramenta</translation>
     </message>
 </context>
 </TS>
