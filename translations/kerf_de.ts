@@ -282,6 +282,22 @@
         <translation>Die Grunddrehung konnte nicht in PRESET.PR gespeichert werden: %1</translation>
     </message>
     <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>Die Werkzeugkorrektur muss D1 bis D255 sein</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Werkzeugkalibrierung: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>Die Werkzeugkalibrierung gilt nur für X und Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Werkzeugkorrektur D%1: %2 = %3 mm</translation>
+    </message>
+    <message>
         <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
         <translation>Antasten: noch kein Werkstück bekannt: zuerst sein Programm (BLK FORM) ausführen</translation>
     </message>
@@ -8465,6 +8481,28 @@ CC</translation>
 %1</source>
         <translation>Richtung
 %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Werkzeugkalibrierung</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Werkzeugkorrektur D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Angetastete Achse</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Position von %1 an der Berührstelle des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Werkzeug
+kalibrieren</translation>
     </message>
     <message>
         <source>Touch %1

@@ -282,6 +282,22 @@
         <translation>No se pudo guardar el giro básico en PRESET.PR: %1</translation>
     </message>
     <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>El corrector de herramienta debe ser D1 a D255</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Calibración de herramientas: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>La calibración de herramientas solo actúa en X y Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Corrector D%1: %2 = %3 mm</translation>
+    </message>
+    <message>
         <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
         <translation>Palpación: aún no se conoce ninguna pieza: ejecute primero su programa (BLK FORM)</translation>
     </message>
@@ -8466,6 +8482,28 @@ CC</translation>
 %1</source>
         <translation>Dirección
 %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Calibración de herramientas</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Corrector de herramienta D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Eje tocado</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Posición de %1 donde toca la herramienta</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Calibración
+herramienta</translation>
     </message>
     <message>
         <source>Touch %1

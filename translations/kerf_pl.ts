@@ -283,6 +283,22 @@
         <translation>Nie można zapisać obrotu podstawowego w PRESET.PR: %1</translation>
     </message>
     <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>Korekcja narzędzia musi być od D1 do D255</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Kalibracja narzędzia: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>Kalibracja narzędzia działa tylko dla X i Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Korekcja narzędzia D%1: %2 = %3 mm</translation>
+    </message>
+    <message>
         <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
         <translation>Pomiar: przedmiot nie jest jeszcze znany: najpierw wykonaj jego program (BLK FORM)</translation>
     </message>
@@ -8469,6 +8485,28 @@ CC</translation>
 %1</source>
         <translation>Kierunek
 %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Kalibracja narzędzia</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Korekcja narzędzia D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Dotknięta oś</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Pozycja %1 w miejscu styku narzędzia</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Kalibracja
+narzędzia</translation>
     </message>
     <message>
         <source>Touch %1

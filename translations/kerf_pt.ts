@@ -282,6 +282,22 @@
         <translation>Não foi possível guardar a rotação básica em PRESET.PR: %1</translation>
     </message>
     <message>
+        <source>The tool offset must be D1 to D255</source>
+        <translation>O corretor da ferramenta deve ser D1 a D255</translation>
+    </message>
+    <message>
+        <source>Tool calibration: %1</source>
+        <translation>Calibração de ferramentas: %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration works on X and Z only</source>
+        <translation>A calibração de ferramentas atua só em X e Z</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: %2 = %3 mm</source>
+        <translation>Corretor D%1: %2 = %3 mm</translation>
+    </message>
+    <message>
         <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
         <translation>Apalpação: ainda não se conhece nenhuma peça: execute primeiro o seu programa (BLK FORM)</translation>
     </message>
@@ -8466,6 +8482,28 @@ CC</translation>
 %1</source>
         <translation>Direção
 %1</translation>
+    </message>
+    <message>
+        <source>Tool calibration</source>
+        <translation>Calibração de ferramentas</translation>
+    </message>
+    <message>
+        <source>Tool offset D</source>
+        <translation>Corretor da ferramenta D</translation>
+    </message>
+    <message>
+        <source>Axis touched</source>
+        <translation>Eixo tocado</translation>
+    </message>
+    <message>
+        <source>Position of %1 where the tool touches</source>
+        <translation>Posição de %1 onde a ferramenta toca</translation>
+    </message>
+    <message>
+        <source>Tool
+calibration</source>
+        <translation>Calibração
+ferramenta</translation>
     </message>
     <message>
         <source>Touch %1

@@ -2,6 +2,7 @@
 
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "core/base/source_location.h"
 #include "core/geometry/axes.h"
@@ -147,8 +148,16 @@ struct StockCylinder {
     double lengthMm = 0.0;
     double distanceMm = 0.0;  // length beyond the datum on the positive side (TNC DIST)
 };
+// A lathe blank turned about Z from an outline (the FAGOR raw-stock profile of G66/G68/G69):
+// its points in (X radius, Z), first to last, and the side its material lies on (a unit vector
+// along X or Z). The graphics closes the outline towards that side: to the axis, the bar's
+// outside or the bar's end.
+struct StockRevolved {
+    std::vector<Vec3> outline;
+    Vec3 materialSide{0.0, 0.0, 0.0};
+};
 struct StockDefinition {
-    std::variant<StockBox, StockCylinder> shape;
+    std::variant<StockBox, StockCylinder, StockRevolved> shape;
 };
 
 // How the X axis is shown (lathe G151/G152): positions stay radii in the stream.

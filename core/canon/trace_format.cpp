@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstring>
 #include <string_view>
+#include <cmath>
 
 #include "core/base/fixed_format.h"
 #include "core/geometry/arc_math.h"
@@ -295,6 +296,16 @@ struct BodyPrinter {
             hi.setXyz(box->max);
             appendPose(out, lo, kXyzMask);
             appendPose(out, hi, kXyzMask);
+        } else if (const auto* revolved = std::get_if<StockRevolved>(&m.shape)) {
+            // The side as the axis letter with its sign, then the outline's points.
+            const Vec3& side = revolved->materialSide;
+            out += "STOCK REVOLVED SIDE ";
+            out += side.x() + side.z() < 0.0 ? '-' : '+';
+            out += std::fabs(side.x()) > std::fabs(side.z()) ? 'X' : 'Z';
+            for (const Vec3& p : revolved->outline) {
+                appendWord(out, "X", p.x(), kLengthDecimals);
+                appendWord(out, "Z", p.z(), kLengthDecimals);
+            }
         } else {
             const auto& cylinder = std::get<StockCylinder>(m.shape);
             out += "STOCK CYLINDER ";

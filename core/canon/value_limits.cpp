@@ -69,6 +69,10 @@ public:
             static constexpr const char* kMin[3] = {"blank X", "blank Y", "blank Z"};
             check(kMin, box->min);
             check(kMin, box->max);
+        } else if (const auto* revolved = std::get_if<StockRevolved>(&c.shape)) {
+            static constexpr const char* kPoint[3] = {"blank X", "blank Y", "blank Z"};
+            for (const Vec3& p : revolved->outline)
+                check(kPoint, p);
         } else {
             const auto& cylinder = std::get<StockCylinder>(c.shape);
             check("blank radius", cylinder.radiusMm);

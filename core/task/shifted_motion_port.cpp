@@ -44,6 +44,9 @@ bool ShiftedMotionPort::submit(const canon::Command& command) {
                 if (auto* box = std::get_if<canon::StockBox>(&body.shape)) {
                     box->min += m_shift.xyz();
                     box->max += m_shift.xyz();
+                } else if (auto* revolved = std::get_if<canon::StockRevolved>(&body.shape)) {
+                    for (Vec3& p : revolved->outline)
+                        p += m_shift.xyz();
                 }
             }
         },

@@ -81,6 +81,67 @@ LatheStock::LatheStock(const LatheBar& bar, double cellMm, size_t maxCells) : m_
     m_initialVolume = volumeMm3();
 }
 
+LatheStock LatheStock::revolved(const std::vector<std::pair<double, double>>& outline,
+                                std::pair<double, double> side, const LatheBar* bar, double cellMm,
+                                size_t maxCells) {
+    std::vector<std::pair<double, double>> polygon;
+    for (const auto& [r, z] : outline) {
+        if (std::isfinite(r) && std::isfinite(z)) polygon.emplace_back(std::fabs(r), z);
+    }
+    if (polygon.empty()) return LatheStock(LatheBar{0.0, 0.0, 0.0, 0.0}, cellMm, maxCells);
+    double rMax = bar != nullptr ? bar->radiusMm : 0.0;
+    double zMin = bar != nullptr ? bar->zMin : HUGE_VAL;
+    double zMax = bar != nullptr ? bar->zMax : -HUGE_VAL;
+    for (const auto& [r, z] : polygon) {
+        rMax = std::max(rMax, r);
+        zMin = std::min(zMin, z);
+        zMax = std::max(zMax, z);
+    }
+    // Close the outline from its last point back to its first along the material side.
+    const auto first = polygon.front();
+    const auto last = polygon.back();
+    const auto [sr, sz] = side;
+    if (std::fabs(sr) >= std::fabs(sz)) {
+        const double r = sr < 0.0 ? (bar != nullptr ? bar->innerRadiusMm : 0.0) : rMax;
+        polygon.emplace_back(r, last.second);
+        polygon.emplace_back(r, first.second);
+    } else {
+        const double z = sz < 0.0 ? zMin : zMax;
+        polygon.emplace_back(last.first, z);
+        polygon.emplace_back(first.first, z);
+    }
+    double rLow = HUGE_VAL;
+    for (const auto& [r, z] : polygon)
+        rLow = std::min(rLow, r);
+    LatheStock stock(LatheBar{rMax, rLow, zMin, zMax}, cellMm, maxCells);
+    stock.keepInside(polygon);
+    return stock;
+}
+
+void LatheStock::keepInside(const std::vector<std::pair<double, double>>& polygon) {
+    const size_t n = polygon.size();
+    std::vector<double> crossings;
+    for (int iz = 0; iz < m_nz; ++iz) {
+        // The polygon's crossings of this row (even-odd rule), then the cells between pairs.
+        const double z = m_z0 + (iz + 0.5) * m_cell;
+        crossings.clear();
+        for (size_t i = 0; i < n; ++i) {
+            const auto [r0, z0] = polygon[i];
+            const auto [r1, z1] = polygon[(i + 1) % n];
+            if ((z0 <= z) == (z1 <= z)) continue;
+            crossings.push_back(r0 + (z - z0) * (r1 - r0) / (z1 - z0));
+        }
+        std::sort(crossings.begin(), crossings.end());
+        for (int ir = 0; ir < m_nr; ++ir) {
+            const double r = (ir + 0.5) * m_cell;
+            const auto passed = std::upper_bound(crossings.begin(), crossings.end(), r);
+            const bool inside = (passed - crossings.begin()) % 2 == 1;
+            if (!inside) m_cells[index(ir, iz)] = 0;
+        }
+    }
+    m_initialVolume = volumeMm3();
+}
+
 double LatheStock::volumeMm3() const {
     double sum = 0.0;
     for (int iz = 0; iz < m_nz; ++iz) {

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "graphics/stock/cutter.h"
@@ -24,6 +25,14 @@ class LatheStock {
 public:
     LatheStock(const LatheBar& bar, double cellMm, size_t maxCells);
 
+    // A blank turned from an outline in (radius, Z) (the FAGOR raw-stock profile), closed towards
+    // `side` (a unit (radius, Z) vector): to the bore of `bar` (the axis without one), to the
+    // outside of `bar` and the outline, or to the end of `bar` and the outline along Z. The grid
+    // covers the closed outline; a cell is material when its centre lies inside it.
+    static LatheStock revolved(const std::vector<std::pair<double, double>>& outline,
+                               std::pair<double, double> side, const LatheBar* bar, double cellMm,
+                               size_t maxCells);
+
     // Removes what the insert sweeps moving its programmed point from a to b, given as
     // (X radius, Z). The part turns, so a tool beyond the axis (X < 0) cuts at |X| too. The
     // holder side is solid: outside the swept insert for external tools, inside it for boring
@@ -45,6 +54,8 @@ public:
     Mesh mesh(double sweepDeg = 180.0, int angularSteps = 48, int maxSide = 400) const;
 
 private:
+    // Clears the cells whose centres lie outside the closed polygon of (radius, Z) points.
+    void keepInside(const std::vector<std::pair<double, double>>& polygon);
     size_t index(int ir, int iz) const {
         return static_cast<size_t>(iz) * static_cast<size_t>(m_nr) + static_cast<size_t>(ir);
     }

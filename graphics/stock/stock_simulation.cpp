@@ -91,6 +91,30 @@ void StockSimulation::createBar(const LatheBar& bar, const std::string& source) 
     }
 }
 
+void StockSimulation::createRevolved(const canon::StockRevolved& blank) {
+    if (m_options.machine != StockMachine::Lathe) {
+        note("stock: a turned blank (raw-stock profile) is simulated on a lathe only");
+        return;
+    }
+    // The raw part replaces the bar as long as nothing has been cut from it: later profiles
+    // describe material that earlier cuts already shaped.
+    if (m_version != 0) {
+        note("stock: a raw-stock profile after the first cut is not drawn as the blank");
+        return;
+    }
+    std::vector<std::pair<double, double>> outline;
+    for (const Vec3& p : blank.outline)
+        outline.emplace_back(p.x(), p.z());
+    const LatheBar* bar = m_lathe ? &m_lathe->bar() : (m_options.bar ? &*m_options.bar : nullptr);
+    m_lathe = std::make_unique<LatheStock>(
+        LatheStock::revolved(outline, {blank.materialSide.x(), blank.materialSide.z()}, bar,
+                             m_options.resolutionMm, m_options.maxCells));
+    m_source = "program";
+    for (const Deferred& move : m_deferred)
+        cutWithTool(move.from, move.to, move.axis, move.rapid, move.tool);
+    m_deferred.clear();
+}
+
 void StockSimulation::switchToVoxels() {
     m_removedBeforeVoxels = m_mill->removedVolumeMm3();
     m_initialVolumeMm3 = m_mill->initialVolumeMm3();
@@ -222,7 +246,11 @@ void StockSimulation::consume(const canon::Command& command) {
         m_tool = m_cutters.size() - 1;
         m_maxToolRadius = std::max(m_maxToolRadius, cutter.radiusMm);
     } else if (const auto* stock = std::get_if<canon::StockDefinition>(&body)) {
-        if (!hasStock()) createStock(*stock, "program");
+        if (const auto* revolved = std::get_if<canon::StockRevolved>(&stock->shape)) {
+            createRevolved(*revolved);
+        } else if (!hasStock()) {
+            createStock(*stock, "program");
+        }
     }
 }
 

@@ -89,6 +89,7 @@ private:
     };
     void createStock(const canon::StockDefinition& definition, const std::string& source);
     void createBar(const LatheBar& bar, const std::string& source);
+    void createRevolved(const canon::StockRevolved& blank);
     void cutSegment(const Vec3& from, const Vec3& to, const Vec3& axis, bool rapid);
     void cutWithTool(const Vec3& from, const Vec3& to, const Vec3& axis, bool rapid, size_t tool);
     // A straight move of the stream: on the workpiece, in steps while the tables turn.

@@ -293,6 +293,64 @@ TEST(LatheStock, TheHolderSideOfTheInsertIsSolid) {
     EXPECT_TRUE(bored.material(static_cast<int>(10.2 / 0.05), static_cast<int>(30.0 / 0.05)));
 }
 
+TEST(LatheStock, RevolvedOutlineClosedTowardsTheAxis) {
+    // A cone from r10 at Z0 to r20 at Z-31, closed to the axis: pi h (R^2 + R r + r^2) / 3.
+    // (A slope whose radii fall between the cell centres: on a 1:3 slope every third row's edge
+    // runs through a cell centre, and those ties fall outside.)
+    const LatheStock cone =
+        LatheStock::revolved({{10.0, 0.0}, {20.0, -31.0}}, {-1.0, 0.0}, nullptr, 0.1, 10'000'000);
+    const double frustum = kPi * 31.0 * (100.0 + 200.0 + 400.0) / 3.0;
+    EXPECT_NEAR(cone.initialVolumeMm3(), frustum, 0.001 * frustum);
+    EXPECT_NEAR(cone.bar().radiusMm, 20.0, 1e-9);
+    EXPECT_NEAR(cone.bar().zMin, -31.0, 1e-9);
+    EXPECT_NEAR(cone.bar().zMax, 0.0, 1e-9);
+}
+
+TEST(LatheStock, RevolvedOutlineClosedAwayFromTheAxisAndAlongZ) {
+    // A bore outline r10 from Z0 to Z-20 inside a r25 bar: closed outwards to the bar's r25.
+    LatheBar bar;
+    bar.radiusMm = 25.0;
+    bar.zMin = -60.0;
+    bar.zMax = 0.0;
+    const LatheStock tube =
+        LatheStock::revolved({{10.0, 0.0}, {10.0, -20.0}}, {1.0, 0.0}, &bar, 0.1, 10'000'000);
+    EXPECT_NEAR(tube.initialVolumeMm3(), kPi * (625.0 - 100.0) * 20.0, 1e-6 * 33000.0);
+    // A face outline at Z2 from r0 to r30, the material towards -Z: closed at the bar's end Z-60.
+    const LatheStock slug =
+        LatheStock::revolved({{0.0, 2.0}, {30.0, 2.0}}, {0.0, -1.0}, &bar, 0.1, 10'000'000);
+    EXPECT_NEAR(slug.initialVolumeMm3(), kPi * 900.0 * 62.0, 1e-6 * 175000.0);
+}
+
+TEST(StockSimulation, ARawProfileReplacesTheBarOnlyBeforeTheFirstCut) {
+    StockOptions options;
+    options.machine = StockMachine::Lathe;
+    LatheBar bar;
+    bar.radiusMm = 30;
+    bar.zMin = -100;
+    bar.zMax = 0;
+    options.bar = bar;
+    canon::StockRevolved casting;  // r15 from Z2 to Z-40, to the axis
+    casting.outline = {Vec3(15, 0, 2), Vec3(15, 0, -40)};
+    casting.materialSide = Vec3(-1, 0, 0);
+    {
+        StockSimulation simulation(options);
+        simulation.consume(canon::Command{{}, canon::StockDefinition{casting}});
+        simulation.finish();
+        EXPECT_EQ(simulation.stockSource(), "program");
+        EXPECT_NEAR(simulation.initialVolumeMm3(), kPi * 225.0 * 42.0, 1e-6 * 30000.0);
+    }
+    StockSimulation simulation(options);
+    simulation.setStart(CanonBuilder::pose(40, 0, 5));
+    CanonBuilder b;
+    b.tool(1, 0.4).rapid(28, 0, 5).line(28, 0, -10);
+    b.feed(simulation);
+    simulation.consume(canon::Command{{}, canon::StockDefinition{casting}});
+    simulation.finish();
+    EXPECT_EQ(simulation.stockSource(), "bar");
+    EXPECT_NEAR(simulation.initialVolumeMm3(), kPi * 900.0 * 100.0, 1.0);
+    ASSERT_EQ(simulation.notes().size(), 1u);
+}
+
 TEST(StockSimulation, LatheInsertTakesTheTipCodeOfTheToolChange) {
     // The same boring pass through the canonical stream: the offset's tip code 8 makes it a
     // boring tool (the default insert is external, code 3, and would clear r >= 10 instead).

@@ -3,6 +3,8 @@
 #include <QTimer>
 #include <algorithm>
 
+#include "core/interp/fagor/tables/tool_touch_off.h"
+#include "core/program/nc_root.h"
 #include "core/task/program_loader.h"
 #include "core/task/shifted_motion_port.h"
 #include "ui/common/diagnostic_text.h"
@@ -268,6 +270,58 @@ bool MachineSession::movePreset(Axis axis, double current, double value) {
     return true;
 }
 
+bool MachineSession::touchOffTool(int offset, Axis axis, double knownValue) {
+    if (refuseWhenBusy()) return false;
+    if (offset < 1 || offset > fagor::ToolOffsetTable::kMaxOffset) {
+        emit message(Severity::Error, tr("The tool offset must be D1 to D255"), 0);
+        return false;
+    }
+    fagor::TouchOff touch;
+    touch.offset = offset;
+    touch.axis = axis;
+    touch.knownMm = knownValue;
+    for (const machine::AxisConfig& config : m_machine.axes) {
+        if (axisFromLetter(config.letter) == axis && config.diameterMode) touch.knownMm /= 2.0;
+    }
+    touch.shownMm = m_motion->status().axes[static_cast<size_t>(axisIndex(axis))].actual;
+    if (m_activeLatheOffset) {
+        touch.activeMm = axis == Axis::X ? m_activeLatheOffset->xMm + m_activeLatheOffset->wearXMm
+                                         : m_activeLatheOffset->zMm + m_activeLatheOffset->wearZMm;
+    }
+    const std::filesystem::path path = m_ncRoot / "fagor_tool_offsets.tab";
+    const program::NcRoot root(m_ncRoot);
+    fagor::ToolOffsetTable table = fagor::ToolOffsetTable::createDefault();
+    if (std::filesystem::exists(path)) {
+        Expected<std::string> bytes = root.read(path);
+        Expected<fagor::ToolOffsetTable> parsed =
+            bytes ? fagor::ToolOffsetTable::parse(*bytes, path.filename().string())
+                  : Expected<fagor::ToolOffsetTable>(bytes.error());
+        if (!parsed) {
+            emit message(Severity::Error,
+                         tr("Tool calibration: %1").arg(translatedMessage(parsed.error())), 0);
+            return false;
+        }
+        table = std::move(*parsed);
+    }
+    if (!fagor::touchOff(table, touch)) {
+        emit message(Severity::Error, tr("Tool calibration works on X and Z only"), 0);
+        return false;
+    }
+    if (const MaybeError failed = root.replace(path, table.serialize())) {
+        emit message(Severity::Error, tr("Tool calibration: %1").arg(translatedMessage(*failed)),
+                     0);
+        return false;
+    }
+    const fagor::ToolOffset written = table.get(offset);
+    emit message(Severity::Note,
+                 tr("Tool offset D%1: %2 = %3 mm")
+                     .arg(offset)
+                     .arg(QLatin1Char(axisLetter(axis)))
+                     .arg(axis == Axis::X ? written.x : written.z, 0, 'f', 4),
+                 0);
+    return true;
+}
+
 void MachineSession::applyPresetTable() {
     const Pose origin = programOrigin(m_machine, m_presets, m_motion->shift());
     const Pose own = machineFilePreset(m_machine);
@@ -339,13 +393,18 @@ void MachineSession::service() {
     if (const interp::Interpreter* interpreter = m_run->interpreter();
         interpreter && busy() && ++m_servicesSinceProgramStatus >= kProgramStatusEvery) {
         m_servicesSinceProgramStatus = 0;
-        emit programStatusChanged(interpreter->programStatus());
+        const interp::ProgramStatus status = interpreter->programStatus();
+        m_activeLatheOffset = status.tool.lathe;
+        emit programStatusChanged(status);
     }
     if (state == m_lastState) return;
     m_lastState = state;
     if (const interp::Interpreter* interpreter = m_run->interpreter();
-        interpreter && (state == task::RunState::Finished || state == task::RunState::Failed))
-        emit programStatusChanged(interpreter->programStatus());
+        interpreter && (state == task::RunState::Finished || state == task::RunState::Failed)) {
+        const interp::ProgramStatus status = interpreter->programStatus();
+        m_activeLatheOffset = status.tool.lathe;
+        emit programStatusChanged(status);
+    }
     if (state == task::RunState::Failed) report(m_run->diagnostics());
     if (state == task::RunState::Finished) emit message(Severity::Note, tr("Program finished"), 0);
     if (state == task::RunState::Aborted) emit message(Severity::Warning, tr("Program stopped"), 0);

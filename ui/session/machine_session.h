@@ -138,6 +138,17 @@ public:
     // The probed misalignment becomes the basic rotation of row 0 of PRESET.PR (its SPC column).
     bool setBasicRotation(double degrees);
 
+    // Tool calibration (lathe, FAGOR): the tool touches the part where the axis really stands at
+    // `knownValue` (X as the display shows it: a diameter in diameter mode). The length of
+    // offset D on that axis in the NC root's fagor_tool_offsets.tab becomes the one that puts the
+    // tip there, with the offset the last program left active as the one the tip is shown with
+    // (fagor::touchOff); the file is replaced atomically. False (and a message) while the
+    // machine moves, for D outside 1-255 or when the table cannot be read or written.
+    bool touchOffTool(int offset, Axis axis, double knownValue);
+    // The FAGOR offset D the last program left active (none before the first program).
+    const std::optional<interp::ProgramStatus::Tool::LatheOffset>& activeLatheOffset() const {
+        return m_activeLatheOffset;
+    }
     // The workpiece origin in machine coordinates: the machine file's preset, then (mill) the
     // axes row 0 of PRESET.PR sets, then the entries of a lathe.
     Pose presetInMachine() const;
@@ -219,6 +230,7 @@ private:
     std::vector<cycles::probing::ManualTouch> m_touches;  // workpiece coordinates
     double m_probeBallRadius = 0.0;                       // of the probe that made them
     Vec3 m_probeDirection{1.0, 0.0, 0.0};
+    std::optional<interp::ProgramStatus::Tool::LatheOffset> m_activeLatheOffset;
 };
 
 }  // namespace kerf::ui

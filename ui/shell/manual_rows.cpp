@@ -54,6 +54,43 @@ void askPreset(MachineSession* session, QWidget* parent) {
     }
 }
 
+// Tool calibration (lathe): the offset D, the axis touched and where the tip really is (X as
+// the display shows it), in touch-sized dialogs; the session writes the offset table.
+void askToolCalibration(MachineSession* session, QWidget* parent) {
+    QInputDialog offsetDialog(parent);
+    offsetDialog.setObjectName(QStringLiteral("touchOffOffsetPrompt"));
+    offsetDialog.setWindowTitle(MachineRows::tr("Tool calibration"));
+    offsetDialog.setLabelText(MachineRows::tr("Tool offset D"));
+    offsetDialog.setInputMode(QInputDialog::IntInput);
+    offsetDialog.setIntRange(1, 255);
+    const auto& active = session->activeLatheOffset();
+    offsetDialog.setIntValue(active && active->number > 0 ? active->number : 1);
+    makeTouchSized(offsetDialog);
+    if (offsetDialog.exec() != QDialog::Accepted) return;
+    QInputDialog axisDialog(parent);
+    axisDialog.setObjectName(QStringLiteral("touchOffAxisPrompt"));
+    axisDialog.setWindowTitle(MachineRows::tr("Tool calibration"));
+    axisDialog.setLabelText(MachineRows::tr("Axis touched"));
+    axisDialog.setComboBoxItems({QStringLiteral("X"), QStringLiteral("Z")});
+    axisDialog.setComboBoxEditable(false);
+    makeTouchSized(axisDialog);
+    if (axisDialog.exec() != QDialog::Accepted || axisDialog.textValue().isEmpty()) return;
+    const QString axis = axisDialog.textValue();
+    QInputDialog valueDialog(parent);
+    valueDialog.setObjectName(QStringLiteral("touchOffValuePrompt"));
+    valueDialog.setWindowTitle(MachineRows::tr("Tool calibration"));
+    valueDialog.setLabelText(MachineRows::tr("Position of %1 where the tool touches").arg(axis));
+    valueDialog.setInputMode(QInputDialog::DoubleInput);
+    valueDialog.setDoubleRange(-100000.0, 100000.0);
+    valueDialog.setDoubleDecimals(4);
+    valueDialog.setDoubleValue(0.0);
+    makeTouchSized(valueDialog);
+    if (valueDialog.exec() != QDialog::Accepted) return;
+    if (const auto a = axisFromLetter(axis.at(0).toLatin1())) {
+        session->touchOffTool(offsetDialog.intValue(), *a, valueDialog.doubleValue());
+    }
+}
+
 // Asks for the manual spindle speed, offered only within the machine's spindle range.
 void askSpindleSpeed(MachineSession* session, QWidget* parent) {
     const machine::SpindleConfig& spindle = session->machine().spindle;
@@ -106,7 +143,7 @@ SoftkeyRow manualFunctionsRow(const MachineRowContext& c) {
     MachineSession* session = c.session;
     QWidget* parent = c.dialogParent;
     auto refresh = c.refresh;
-    return {
+    SoftkeyRow row{
         {QStringLiteral("spindleSpeed"),
          QStringLiteral("S\n%1").arg(QString::number(session->manualSpindleRpm(), 'f', 0)),
          [session, parent, refresh] {
@@ -124,6 +161,12 @@ SoftkeyRow manualFunctionsRow(const MachineRowContext& c) {
         {QStringLiteral("setPreset"), MachineRows::tr("Set\npreset"),
          [session, parent] { askPreset(session, parent); }},
     };
+    // The 8035's manual mode calibrates the tools of a lathe (spec part 1 §11).
+    if (session->machine().kind == machine::MachineKind::Lathe) {
+        row.push_back({QStringLiteral("toolCalibration"), MachineRows::tr("Tool\ncalibration"),
+                       [session, parent] { askToolCalibration(session, parent); }});
+    }
+    return row;
 }
 
 }  // namespace kerf::ui

@@ -8,7 +8,8 @@ namespace kerf::ui {
 // either way.
 SoftkeyRow handwheelRow(const MachineRowContext& context);
 
-// Spindle, coolant and set a preset by entry (Manual operation and Electronic handwheel).
+// Spindle, coolant, set a preset by entry and, on a lathe, tool calibration (Manual operation
+// and Electronic handwheel).
 SoftkeyRow manualFunctionsRow(const MachineRowContext& context);
 
 }  // namespace kerf::ui

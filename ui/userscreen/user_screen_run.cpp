@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 
 #include "core/canon/commands.h"
+#include "core/program/nc_root.h"
 
 namespace kerf::ui {
 
@@ -31,6 +32,8 @@ UserScreenRun::~UserScreenRun() = default;
 bool UserScreenRun::start(const std::filesystem::path& program, const std::filesystem::path& ncRoot,
                           fagor::UserMode mode) {
     stop();
+    m_ncRoot = ncRoot;
+    m_images.clear();
     m_screen = std::make_unique<fagor::UserScreen>(mode);
     task::ProgramRequest request;
     request.path = program;
@@ -44,6 +47,29 @@ bool UserScreenRun::start(const std::filesystem::path& program, const std::files
     m_timer.start();
     emit changed();
     return true;
+}
+
+const QImage* UserScreenRun::image(const std::string& fileName) const {
+    auto [it, added] = m_images.try_emplace(fileName);
+    if (added && !m_ncRoot.empty()) {
+        // Through the NC root's file access: inside the root, regular files only.
+        const program::NcRoot root(m_ncRoot);
+        const Expected<std::string> bytes = root.read(m_ncRoot / fileName);
+        QImage picture;
+        if (bytes && picture.loadFromData(reinterpret_cast<const uchar*>(bytes->data()),
+                                          static_cast<int>(bytes->size()), "PNG")) {
+            it->second = std::move(picture);
+        }
+    }
+    return it->second ? &*it->second : nullptr;
+}
+
+const QImage* UserScreenRun::pageImage(int page) const {
+    return image("PAGE" + std::to_string(page) + ".PNG");
+}
+
+const QImage* UserScreenRun::symbolImage(int symbol) const {
+    return image("SYMBOL" + std::to_string(symbol) + ".PNG");
 }
 
 void UserScreenRun::stop() {

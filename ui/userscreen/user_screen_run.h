@@ -1,10 +1,14 @@
 #pragma once
 
+#include <QImage>
 #include <QObject>
 #include <QString>
 #include <QTimer>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "core/base/diagnostic.h"
 #include "core/interp/fagor/user_screen.h"
@@ -36,6 +40,13 @@ public:
     fagor::UserScreen* screen() { return m_screen.get(); }
     const DiagnosticList& diagnostics() const { return m_diagnostics; }
 
+    // The drawings of the user pages and symbols. The control's customisation mode draws them
+    // from the keyboard (operation manual, not in the spec); Kerf reads them as PNG images from
+    // the NC root: PAGE<n>.PNG (n 0-255, 640 x 336 pixels) and SYMBOL<n>.PNG, drawn at their
+    // pixel size. Null when the file is missing or no PNG image.
+    const QImage* pageImage(int page) const;
+    const QImage* symbolImage(int symbol) const;
+
     // The operator's key for WKEY; false when none is waited for.
     bool pressKey(int code);
     // The operator's number for IB; empty when accepted, else why not (translated).
@@ -57,6 +68,9 @@ private:
     QTimer m_timer;
     uint64_t m_revision = 0;
     bool m_waitingForOperator = false;
+    std::filesystem::path m_ncRoot;
+    const QImage* image(const std::string& fileName) const;
+    mutable std::map<std::string, std::optional<QImage>> m_images;  // by file name
 };
 
 }  // namespace kerf::ui

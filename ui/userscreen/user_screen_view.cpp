@@ -40,9 +40,20 @@ protected:
         font.setFamily("monospace");
         font.setPixelSize(static_cast<int>(line * 0.6));
         painter.setFont(font);
+        // The page's drawing fills the 640 x 336 pixel area; symbols keep their pixel size.
+        const double sx = width() / double(kPixelColumns);
+        const double sy = height() / double(kPixelRows);
+        if (const QImage* page = screen->page() < 0 ? nullptr : m_run.pageImage(screen->page())) {
+            painter.drawImage(QRectF(0, 0, page->width() * sx, page->height() * sy), *page);
+        }
         for (const fagor::ScreenSymbol& s : screen->symbols()) {
-            const QPointF at(s.column * width() / double(kPixelColumns),
-                             s.row * height() / double(kPixelRows));
+            const QPointF at(s.column * sx, s.row * sy);
+            if (const QImage* symbol = m_run.symbolImage(s.number)) {
+                painter.drawImage(QRectF(at, QSizeF(symbol->width() * sx, symbol->height() * sy)),
+                                  *symbol);
+                continue;
+            }
+            // No drawing: a marked box with the symbol's number.
             const QRectF box(at, QSizeF(line, line));
             painter.setPen(QColor(0xff, 0xd0, 0x40));
             painter.drawRect(box);

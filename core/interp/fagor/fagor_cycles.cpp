@@ -7,6 +7,7 @@
 #include "core/cycles/lathe/axial_drilling.h"
 #include "core/cycles/lathe/grooving.h"
 #include "core/cycles/lathe/pattern_repeat.h"
+#include "core/cycles/lathe/raw_outline.h"
 #include "core/cycles/lathe/section_turning.h"
 #include "core/cycles/lathe/threading.h"
 #include "core/interp/fagor/fagor_interpreter.h"
@@ -83,6 +84,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             section.finishingFeed = w.value('H', 0.0);
             section.radiusTolerance = m_settings.circleToleranceMm;
             ok = cycles::lathe::expandTurningSection(section, call, path, error);
+            if (ok) emitRawStockBlank(section.raw, call, section.start, !section.facing);
             break;
         }
         case 66: {
@@ -105,6 +107,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             cycle.finishingFeed = w.value('H', 0.0);
             cycle.radiusTolerance = m_settings.circleToleranceMm;
             ok = cycles::lathe::expandPatternRepeat(cycle, call, path, error);
+            if (ok) emitRawStockBlank(cycle.raw, call, cycle.start, !cycle.stockAlongZ);
             break;
         }
         case 83: {
@@ -203,6 +206,29 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
     m_lastTangent.reset();
     m_thread.previousWasThread = false;
     return true;
+}
+
+void FagorInterpreter::emitRawStockBlank(const cycles::lathe::RawStock& raw, const Vec2& call,
+                                         const Vec2& start, bool stepsAlongX) {
+    const PlaneFrame& plane = m_modal.plane;
+    // Turned about Z: only in the lathe's own plane (abscissa Z, ordinate X).
+    if (raw.elements.empty() || plane.abscissa != Axis::Z || plane.ordinate != Axis::X) return;
+    constexpr double kChordErrorMm = 0.002;
+    canon::StockRevolved blank;
+    const Pose at = programmedPosition();
+    auto stream = [&](const Vec2& p) {
+        Pose pose = at;
+        plane.setPoint(pose, p);
+        return toStream(pose).xyz();
+    };
+    for (const Vec2& p : cycles::lathe::rawOutlinePoints(raw, kChordErrorMm))
+        blank.outline.push_back(stream(p));
+    // The material lies beyond the profile, away from the call point, along the passes' steps.
+    const int axis = stepsAlongX ? 1 : 0;
+    Vec2 away(0.0, 0.0);
+    away[axis] = call[axis] > start[axis] ? -1.0 : 1.0;
+    blank.materialSide = (stream(start + away) - stream(start)).normalized();
+    emit(canon::StockDefinition{std::move(blank)});
 }
 
 bool FagorInterpreter::runCycleSteps(const std::vector<LatheStep>& steps, const IsoBlock& iso) {

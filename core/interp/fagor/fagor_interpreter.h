@@ -231,6 +231,9 @@ private:
     // Canned cycles G81-G89 (fagor_cycles.cpp).
     bool executeCycle(const IsoBlock& iso);
     bool runCycleSteps(const std::vector<cycles::lathe::LatheStep>& steps, const IsoBlock& iso);
+    // The raw-stock profile of G66/G68/G69 as the blank for the graphics (canon StockRevolved).
+    void emitRawStockBlank(const cycles::lathe::RawStock& raw, const Vec2& call, const Vec2& start,
+                           bool stepsAlongX);
     // G68/G69: the profile from label S to label E (fagor_profile.cpp).
     struct RawProfile {
         Vec2 start{0.0, 0.0};
@@ -238,9 +241,10 @@ private:
     };
     bool readProfile(const CycleWords& w, const Vec2& start,
                      std::vector<cycles::lathe::ProfileElement>& finished, RawProfile& raw);
-    // The tool/profile analysis (fagor_tool_reach.cpp): warns about valleys the tool cannot reach.
+    // The tool/profile analysis (fagor_tool_reach.cpp): warns about valleys the tool cannot reach
+    // and replaces `profile` by the closest one it reaches.
     void checkToolReach(int g, const Vec2& call, const Vec2& start,
-                        const std::vector<cycles::lathe::ProfileElement>& profile);
+                        std::vector<cycles::lathe::ProfileElement>& profile);
     struct ProfileCorner {
         size_t element = 0;  // the corner at the end of this element
         bool round = true;   // G36, else G39

@@ -1,12 +1,14 @@
 // The tool/profile analysis of G66/G68/G69 (spec part 2 §1.6): before machining, the profile is
 // checked against the active tool's insert (NOSEA and CUTA of the tool table, the nose radius R
 // of the tool offset). A valley the insert cannot reach gets a message at the start of the cycle
-// and a warning at the cycle's G in the check.
+// and a warning at the cycle's G in the check, and the cycle machines the closest profile the
+// insert reaches instead.
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "core/base/translate.h"
+#include "core/cycles/lathe/reachable_profile.h"
 #include "core/cycles/lathe/tool_reach.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
@@ -23,7 +25,7 @@ std::string degreesText(double value) {
 }  // namespace
 
 void FagorInterpreter::checkToolReach(int g, const Vec2& call, const Vec2& start,
-                                      const std::vector<cycles::lathe::ProfileElement>& profile) {
+                                      std::vector<cycles::lathe::ProfileElement>& profile) {
     if (!m_toolTable || m_tool.tool <= 0 || profile.empty()) return;
     const ToolEntry tool = m_toolTable->get(m_tool.tool);
     const cycles::lathe::InsertGeometry insert{tool.cuttingAngle, tool.noseAngle,
@@ -57,6 +59,7 @@ void FagorInterpreter::checkToolReach(int g, const Vec2& call, const Vec2& start
         degreesText(unreachable->needed), degreesText(unreachable->allowed)};
     warn("tool-geometry", message, args);
     emit(canon::Message{canon::MessageKind::Info, substituteArgs(message, args)});
+    profile = cycles::lathe::reachableProfile(start, profile, feed, outward, insert);
 }
 
 }  // namespace kerf::fagor

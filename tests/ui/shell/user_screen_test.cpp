@@ -1,6 +1,7 @@
 // The FAGOR user screen of the lathe panel: the User softkey runs USEREDIT.PIM (the seed's
 // EX-12.19), its softkeys and input line answer WKEY and IB, WBUF writes into the program in the
 // editor, SYSTEM returns to the standard screen.
+#include <QImage>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTest>
@@ -89,6 +90,42 @@ TEST(UserScreenPanel, Ex12_19WritesTheCycleCallIntoTheEditedProgram) {
     ASSERT_TRUE(window.softkeys()->pressId("userF7"));  // SALIR: SYSTEM
     EXPECT_NE(window.workspace()->currentPage(), window.userScreenView());
     EXPECT_TRUE(window.userScreenRun()->screen()->left());
+}
+
+TEST(UserScreenPanel, UserPagesAndSymbolsAreDrawnFromTheirPictures) {
+    // PAGE3.PNG fills the 640 x 336 screen in red; SYMBOL7.PNG, 40 x 20 pixels of green, stands
+    // at pixel column 320, row 168: its middle (340, 178) is green, 10 pixels left of it red.
+    // Symbol 8 has no picture: its marked box (yellow outline) at column 100, row 40.
+    test::testApp();
+    const fs::path dir = kerf::test::uniqueTempDir("hmi_user_screen_pictures");
+    QImage page(640, 336, QImage::Format_RGB32);
+    page.fill(Qt::red);
+    ASSERT_TRUE(page.save(QString::fromStdString((dir / "PAGE3.PNG").string()), "PNG"));
+    QImage symbol(40, 20, QImage::Format_RGB32);
+    symbol.fill(Qt::green);
+    ASSERT_TRUE(symbol.save(QString::fromStdString((dir / "SYMBOL7.PNG").string()), "PNG"));
+    {
+        std::ofstream(dir / "USEREDIT.PIM")
+            << "(PAGE 3)\n(SYMBOL 7, 320, 168)\n(SYMBOL 8, 100, 40)\n(WKEY)\n";
+    }
+    MainWindow window(latheIn(dir));
+    window.show();
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    ASSERT_TRUE(window.softkeys()->pressId("userScreen"));
+    ASSERT_TRUE(waitForOperator(window));
+    auto* area = window.userScreenView()->findChild<QWidget*>(QStringLiteral("userScreenArea"));
+    ASSERT_NE(area, nullptr);
+    const QImage shown = area->grab().toImage();
+    const double sx = shown.width() / 640.0;
+    const double sy = shown.height() / 336.0;
+    auto at = [&](double column, double row) {
+        return shown.pixelColor(static_cast<int>(column * sx), static_cast<int>(row * sy));
+    };
+    EXPECT_EQ(at(340, 178), QColor(Qt::green));
+    EXPECT_EQ(at(310, 178), QColor(Qt::red));
+    EXPECT_EQ(at(500, 300), QColor(Qt::red));
+    EXPECT_EQ(at(100, 40).red(), 0xff);  // the box's corner: yellow (ff, d0, 40)
+    EXPECT_EQ(at(100, 40).green(), 0xd0);
 }
 
 TEST(UserScreenPanel, WithoutTheModesProgramTheOperatorIsTold) {

@@ -2,6 +2,8 @@
 // subroutine, machine parameters other than the defaults, tables saved at the end. Expected
 // values come from spec parts 1 and 2 and hand geometry.
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -487,6 +489,41 @@ TEST_F(FagorRun, ToolThatCannotReachAValleyIsReportedAtTheCycle) {
     write("fagor_tools.tab", "T1 D1 NOSEA35 CUTA93\n");
     ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
     EXPECT_EQ(diagnostics(), "");
+}
+
+TEST_F(FagorRun, ACycleMachinesTheClosestProfileTheToolReaches) {
+    // The valley of the test above: r10 to Z-10, down 45° to r5 at Z-15, r5 to Z-30. The 55°
+    // insert descends at most 32°: the finishing pass (H) leaves r10 at Z-10 along the 32° line
+    // and meets the floor r5 at Z-(10 + 5 / tan 32°); it never goes to the corner at Z-15. The
+    // 35° insert follows the programmed profile.
+    write("fagor_tool_offsets.tab", "D1 F3 R0.4\n");
+    const std::string program =
+        "N1 G90 G95 F0.3 S800 T1 D1 M3\n"
+        "N2 G00 X70 Z2\n"
+        "N3 G68 X0 Z0 C3 D0.5 H0.1 S10 E20\n"
+        "N4 M30\n"
+        "N10 G01 X20 Z0\n"
+        "G01 Z-10\n"
+        "G01 X10 Z-15\n"
+        "G01 Z-30\n"
+        "N20 G01 X60 Z-40\n";
+    char bridgeEnd[64];
+    std::snprintf(bridgeEnd, sizeof bridgeEnd, "LINE X5.0000 Z%.4f F0.100",
+                  -(10.0 + 5.0 / std::tan(32.0 * 3.14159265358979323846 / 180.0)));
+    auto count = [&](const std::string& text) {
+        return std::count_if(out.lines.begin(), out.lines.end(), [&](const std::string& line) {
+            return line.find(text) != std::string::npos;
+        });
+    };
+    write("fagor_tools.tab", "T1 D1 NOSEA55 CUTA93\n");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(count(bridgeEnd), 1) << bridgeEnd << testing::PrintToString(out.lines);
+    EXPECT_EQ(count("X5.0000 Z-15.0000"), 0);
+    out.lines.clear();
+    write("fagor_tools.tab", "T1 D1 NOSEA35 CUTA93\n");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(count(bridgeEnd), 0);
+    EXPECT_EQ(count("LINE X5.0000 Z-15.0000 F0.100"), 1) << testing::PrintToString(out.lines);
 }
 
 }  // namespace

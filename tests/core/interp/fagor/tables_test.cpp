@@ -1,12 +1,36 @@
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "core/interp/fagor/tables/table_text.h"
 #include "core/interp/fagor/tables/tool_offset_table.h"
 #include "core/interp/fagor/tables/tool_table.h"
+#include "core/interp/fagor/tables/tool_touch_off.h"
 #include "core/interp/fagor/tables/zero_offset_table.h"
 
 namespace kerf::fagor {
 namespace {
+
+TEST(FagorToolTouchOff, TheLengthPutsTheTipAtTheKnownPosition) {
+    auto table = ToolOffsetTable::parse("D1 X10 Z-30 I0.2 K-0.1 F3\n", "t.tab");
+    ASSERT_TRUE(table.ok());
+    // D1 active (X 10 + I 0.2) shows the tip at r24 on a part turned to D50 (r25): the holder
+    // stands at 24 - 10.2 = 13.8, so X = 25 - 13.8 - 0.2 = 11, one more than before.
+    ASSERT_TRUE(touchOff(*table, {1, Axis::X, 24.0, 25.0, 10.2}));
+    EXPECT_DOUBLE_EQ(table->get(1).x, 11.0);
+    EXPECT_DOUBLE_EQ(table->get(1).wearX, 0.2);
+    // D2 calibrated on the face Z0 while no offset is active (D0): the tip shows Z-42.5, the
+    // holder stands there, so Z = 0 - (-42.5) - 0 = 42.5; X of D2 stays 0.
+    ASSERT_TRUE(touchOff(*table, {2, Axis::Z, -42.5, 0.0, 0.0}));
+    EXPECT_DOUBLE_EQ(table->get(2).z, 42.5);
+    EXPECT_DOUBLE_EQ(table->get(2).x, 0.0);
+    EXPECT_EQ(table->serialize(), "D1 X11 Z-30 I0.2 K-0.1 F3\nD2 Z42.5\n");
+    EXPECT_FALSE(touchOff(*table, {0, Axis::X, 1.0, 2.0, 0.0}));
+    EXPECT_FALSE(touchOff(*table, {256, Axis::X, 1.0, 2.0, 0.0}));
+    EXPECT_FALSE(touchOff(*table, {1, Axis::Y, 1.0, 2.0, 0.0}));
+    EXPECT_FALSE(touchOff(*table, {1, Axis::X, 1.0, std::nan(""), 0.0}));
+    EXPECT_DOUBLE_EQ(table->get(1).x, 11.0);
+}
 
 TEST(FagorTableText, UnmodifiedTableGivesBackTheSameBytes) {
     const std::string bytes =
