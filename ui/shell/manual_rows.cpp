@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QInputDialog>
 #include <QStringList>
+#include <optional>
 
 #include "ui/session/machine_session.h"
 #include "ui/shell/touch_dialog.h"
@@ -24,42 +25,59 @@ std::vector<char> machineAxes(const MachineSession& session) {
     return letters;
 }
 
+// One axis letter out of `axes`, in a touch-sized dialog; empty when cancelled.
+QString askAxis(QWidget* parent, const char* objectName, const QString& title, const QString& label,
+                const QStringList& axes) {
+    QInputDialog dialog(parent);
+    dialog.setObjectName(QLatin1String(objectName));
+    dialog.setWindowTitle(title);
+    dialog.setLabelText(label);
+    dialog.setComboBoxItems(axes);
+    dialog.setComboBoxEditable(false);
+    makeTouchSized(dialog);
+    if (dialog.exec() != QDialog::Accepted) return {};
+    return dialog.textValue();
+}
+
+// A position in mm (0 offered), in a touch-sized dialog; nothing when cancelled.
+std::optional<double> askPosition(QWidget* parent, const char* objectName, const QString& title,
+                                  const QString& label) {
+    QInputDialog dialog(parent);
+    dialog.setObjectName(QLatin1String(objectName));
+    dialog.setWindowTitle(title);
+    dialog.setLabelText(label);
+    dialog.setInputMode(QInputDialog::DoubleInput);
+    dialog.setDoubleRange(-100000.0, 100000.0);
+    dialog.setDoubleDecimals(4);
+    dialog.setDoubleValue(0.0);
+    makeTouchSized(dialog);
+    if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+    return dialog.doubleValue();
+}
+
 // Asks for the axis and the value its position should show now, in touch-sized dialogs.
 void askPreset(MachineSession* session, QWidget* parent) {
     QStringList axes;
     for (char letter : machineAxes(*session))
         axes << QString(QChar(letter));
     if (axes.isEmpty()) return;
-    QInputDialog axisDialog(parent);
-    axisDialog.setObjectName(QStringLiteral("presetAxisPrompt"));
-    axisDialog.setWindowTitle(MachineRows::tr("Set preset"));
-    axisDialog.setLabelText(MachineRows::tr("Axis"));
-    axisDialog.setComboBoxItems(axes);
-    axisDialog.setComboBoxEditable(false);
-    makeTouchSized(axisDialog);
-    if (axisDialog.exec() != QDialog::Accepted || axisDialog.textValue().isEmpty()) return;
-    const QString axis = axisDialog.textValue();
-    QInputDialog valueDialog(parent);
-    valueDialog.setObjectName(QStringLiteral("presetValuePrompt"));
-    valueDialog.setWindowTitle(MachineRows::tr("Set preset"));
-    valueDialog.setLabelText(MachineRows::tr("Position of %1 at the current point").arg(axis));
-    valueDialog.setInputMode(QInputDialog::DoubleInput);
-    valueDialog.setDoubleRange(-100000.0, 100000.0);
-    valueDialog.setDoubleDecimals(4);
-    valueDialog.setDoubleValue(0.0);
-    makeTouchSized(valueDialog);
-    if (valueDialog.exec() != QDialog::Accepted) return;
-    if (const auto a = axisFromLetter(axis.at(0).toLatin1())) {
-        session->setPresetByEntry(*a, valueDialog.doubleValue());
-    }
+    const QString title = MachineRows::tr("Set preset");
+    const QString axis = askAxis(parent, "presetAxisPrompt", title, MachineRows::tr("Axis"), axes);
+    if (axis.isEmpty()) return;
+    const auto value =
+        askPosition(parent, "presetValuePrompt", title,
+                    MachineRows::tr("Position of %1 at the current point").arg(axis));
+    const auto a = axisFromLetter(axis.at(0).toLatin1());
+    if (value && a) session->setPresetByEntry(*a, *value);
 }
 
 // Tool calibration (lathe): the offset D, the axis touched and where the tip really is (X as
 // the display shows it), in touch-sized dialogs; the session writes the offset table.
 void askToolCalibration(MachineSession* session, QWidget* parent) {
+    const QString title = MachineRows::tr("Tool calibration");
     QInputDialog offsetDialog(parent);
     offsetDialog.setObjectName(QStringLiteral("touchOffOffsetPrompt"));
-    offsetDialog.setWindowTitle(MachineRows::tr("Tool calibration"));
+    offsetDialog.setWindowTitle(title);
     offsetDialog.setLabelText(MachineRows::tr("Tool offset D"));
     offsetDialog.setInputMode(QInputDialog::IntInput);
     offsetDialog.setIntRange(1, 255);
@@ -67,28 +85,15 @@ void askToolCalibration(MachineSession* session, QWidget* parent) {
     offsetDialog.setIntValue(active && active->number > 0 ? active->number : 1);
     makeTouchSized(offsetDialog);
     if (offsetDialog.exec() != QDialog::Accepted) return;
-    QInputDialog axisDialog(parent);
-    axisDialog.setObjectName(QStringLiteral("touchOffAxisPrompt"));
-    axisDialog.setWindowTitle(MachineRows::tr("Tool calibration"));
-    axisDialog.setLabelText(MachineRows::tr("Axis touched"));
-    axisDialog.setComboBoxItems({QStringLiteral("X"), QStringLiteral("Z")});
-    axisDialog.setComboBoxEditable(false);
-    makeTouchSized(axisDialog);
-    if (axisDialog.exec() != QDialog::Accepted || axisDialog.textValue().isEmpty()) return;
-    const QString axis = axisDialog.textValue();
-    QInputDialog valueDialog(parent);
-    valueDialog.setObjectName(QStringLiteral("touchOffValuePrompt"));
-    valueDialog.setWindowTitle(MachineRows::tr("Tool calibration"));
-    valueDialog.setLabelText(MachineRows::tr("Position of %1 where the tool touches").arg(axis));
-    valueDialog.setInputMode(QInputDialog::DoubleInput);
-    valueDialog.setDoubleRange(-100000.0, 100000.0);
-    valueDialog.setDoubleDecimals(4);
-    valueDialog.setDoubleValue(0.0);
-    makeTouchSized(valueDialog);
-    if (valueDialog.exec() != QDialog::Accepted) return;
-    if (const auto a = axisFromLetter(axis.at(0).toLatin1())) {
-        session->touchOffTool(offsetDialog.intValue(), *a, valueDialog.doubleValue());
-    }
+    const QString axis =
+        askAxis(parent, "touchOffAxisPrompt", title, MachineRows::tr("Axis touched"),
+                {QStringLiteral("X"), QStringLiteral("Z")});
+    if (axis.isEmpty()) return;
+    const auto value =
+        askPosition(parent, "touchOffValuePrompt", title,
+                    MachineRows::tr("Position of %1 where the tool touches").arg(axis));
+    const auto a = axisFromLetter(axis.at(0).toLatin1());
+    if (value && a) session->touchOffTool(offsetDialog.intValue(), *a, *value);
 }
 
 // Asks for the manual spindle speed, offered only within the machine's spindle range.
