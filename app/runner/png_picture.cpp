@@ -8,6 +8,7 @@
 #include "graphics/headless/virtual_display.h"
 #include "graphics/scene/machine_scene.h"
 #include "graphics/scene/scene.h"
+#include "graphics/stock/machine_stock_options.h"
 #include "graphics/stock/stock_simulation.h"
 #include "graphics/toolpath/toolpath_data.h"
 #include "graphics/toolpath/toolpath_lod.h"
@@ -23,7 +24,8 @@ Diagnostic pictureError(const std::string& file, std::string message) {
 class PngPicture final : public PictureOutput {
 public:
     PngPicture(const RunOptions& options, const Session& session)
-        : m_file(options.png->string()), m_millCutter(millCutterFor(session)) {
+        : m_file(options.png->string()),
+          m_millCutter(graphics::millCutterWithPointAngles(session.program.tools.get())) {
         const graphics::SceneOptions machineScene = graphics::sceneOptionsFor(session.machine);
         m_lathe = machineScene.lathe;
         m_limits = machineScene.limits;

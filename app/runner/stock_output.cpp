@@ -1,12 +1,12 @@
 #include "app/runner/stock_output.h"
 
 #include <cmath>
-#include <map>
 #include <string>
 #include <utility>
 
 #include "app/runner/session.h"
 #include "core/machine/workpiece_frame.h"
+#include "graphics/stock/machine_stock_options.h"
 #include "graphics/stock/stock_simulation.h"
 
 namespace kerf::app {
@@ -20,42 +20,13 @@ double rounded(double value) {
 
 }  // namespace
 
-std::function<graphics::MillCutter(const canon::ToolChange&)> millCutterFor(
-    const Session& session) {
-    // Point angles by tool number, copied: the cutter outlives the session's tables.
-    std::map<int, double> pointAngles;
-    if (session.program.tools) {
-        for (const tables::ToolData& row : session.program.tools->tools()) {
-            if (row.index == 0) pointAngles[row.number] = row.pointAngle;
-        }
-    }
-    return [pointAngles](const canon::ToolChange& tool) {
-        const auto it = pointAngles.find(tool.number);
-        const double pointAngle = it != pointAngles.end() ? it->second : 0.0;
-        return graphics::MillCutter::fromGeometry(tool.geometry.radiusMm, tool.geometry.radius2Mm,
-                                                  pointAngle);
-    };
-}
-
 StockOutput::StockOutput(const RunOptions& options, const Session& session)
     : m_program(options.program) {
     if (!options.stock) return;
-    const bool lathe = session.machine.kind == machine::MachineKind::Lathe;
-    graphics::StockOptions stockOptions;
     // A machine with rotary tables: the stock on the part the tables turn.
-    stockOptions.workpieceFrame = machine::WorkpieceFrame::of(session.machine, session.workOffset);
-    stockOptions.machine = lathe ? graphics::StockMachine::Lathe : graphics::StockMachine::Mill;
-    stockOptions.deriveStockFromPath = true;
-    const machine::BarConfig& bar = session.machine.bar;
-    if (lathe && bar.diameterMm > 0.0) {
-        graphics::LatheBar blank;
-        blank.radiusMm = bar.diameterMm / 2.0;
-        blank.innerRadiusMm = bar.boreDiameterMm / 2.0;
-        blank.zMax = bar.faceZMm;
-        blank.zMin = bar.faceZMm - bar.lengthMm;
-        stockOptions.bar = blank;
-    }
-    stockOptions.millCutter = millCutterFor(session);
+    graphics::StockOptions stockOptions =
+        graphics::stockOptionsFor(session.machine, session.program.tools.get(),
+                                  machine::WorkpieceFrame::of(session.machine, session.workOffset));
     m_stock = std::make_unique<graphics::StockSimulation>(std::move(stockOptions));
 }
 

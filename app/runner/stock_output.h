@@ -1,6 +1,5 @@
 #pragma once
 
-#include <functional>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -8,7 +7,6 @@
 #include "app/runner/run_options.h"
 #include "core/base/diagnostic.h"
 #include "core/canon/commands.h"
-#include "graphics/stock/cutter.h"
 
 namespace kerf::graphics {
 class StockSimulation;
@@ -17,10 +15,6 @@ class StockSimulation;
 namespace kerf::app {
 
 struct Session;
-
-// The mill cutter of a tool change: R and R2 of the canonical tool, the point angle (T-ANGLE)
-// from the session's tool table (the canonical tool change does not carry it).
-std::function<graphics::MillCutter(const canon::ToolChange&)> millCutterFor(const Session& session);
 
 // `kerf run --stock`: simulates material removal from the canonical stream the run consumes and
 // adds the stock figures to the report. VTK-free: the picture (--png) only draws its mesh.

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 
 #include "core/canon/path_statistics.h"
 #include "core/tables/tool_table.h"
 #include "core/task/program_loader.h"
+#include "graphics/stock/machine_stock_options.h"
 
 namespace kerf::ui {
 
@@ -65,39 +65,6 @@ private:
 
 Diagnostic testRunError(const std::string& file, const char* text, std::string arg = {}) {
     return Diagnostic::make(Severity::Error, "test-run", file, 0, 0, text, std::move(arg));
-}
-
-// The stock the runner's --stock would simulate: T-ANGLE from the tool table for drills, the
-// machine's bar on a lathe, a blank derived from the path when the program has none.
-graphics::StockOptions stockOptionsFor(const machine::MachineConfig& machine,
-                                       const tables::ToolTable* tools,
-                                       const std::optional<machine::WorkpieceFrame>& frame) {
-    graphics::StockOptions options;
-    options.workpieceFrame = frame;
-    const bool lathe = machine.kind == machine::MachineKind::Lathe;
-    options.machine = lathe ? graphics::StockMachine::Lathe : graphics::StockMachine::Mill;
-    options.deriveStockFromPath = true;
-    const machine::BarConfig& bar = machine.bar;
-    if (lathe && bar.diameterMm > 0.0) {
-        graphics::LatheBar blank;
-        blank.radiusMm = bar.diameterMm / 2.0;
-        blank.innerRadiusMm = bar.boreDiameterMm / 2.0;
-        blank.zMax = bar.faceZMm;
-        blank.zMin = bar.faceZMm - bar.lengthMm;
-        options.bar = blank;
-    }
-    std::map<int, double> pointAngles;
-    if (tools != nullptr) {
-        for (const tables::ToolData& row : tools->tools()) {
-            if (row.index == 0) pointAngles[row.number] = row.pointAngle;
-        }
-    }
-    options.millCutter = [pointAngles](const canon::ToolChange& tool) {
-        const auto it = pointAngles.find(tool.number);
-        return graphics::MillCutter::fromGeometry(tool.geometry.radiusMm, tool.geometry.radius2Mm,
-                                                  it != pointAngles.end() ? it->second : 0.0);
-    };
-    return options;
 }
 
 }  // namespace
@@ -245,7 +212,7 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     // A machine with rotary tables: the path and the stock on the part the tables turn.
     const std::optional<machine::WorkpieceFrame> frame = machine::WorkpieceFrame::of(
         input.machine, program.streamOrigin.value_or(input.presetInMachine));
-    out.stockOptions = stockOptionsFor(input.machine, program.tools.get(), frame);
+    out.stockOptions = graphics::stockOptionsFor(input.machine, program.tools.get(), frame);
     out.diagnostics = program.diagnostics();
     const size_t checkDiagnostics =
         program.interpreter ? program.interpreter->diagnostics().size() : 0;

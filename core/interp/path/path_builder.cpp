@@ -45,14 +45,7 @@ std::optional<PathError> PathBuilder::setLookAhead(int blocks) {
 
 void PathBuilder::addMachineLine(const Pose& target, bool rapid, double feed,
                                  const SourceLocation& location) {
-    canon::Command command;
-    command.location = location;
-    if (rapid) {
-        command.body = canon::RapidMove{target};
-    } else {
-        command.body = canon::LinearMove{target, feed};
-    }
-    m_sink.consume(command);
+    emitStraight(target, rapid, feed, location);
     m_tool = m_space ? m_space->toPath(target) : target;
 }
 
@@ -84,22 +77,12 @@ void PathBuilder::emitInSpace(const ContourElement& element, bool rapid, double 
                                           "the tool tip on the path; split the block"));
         return;
     }
-    for (const MachinePiece& piece : m_pieces) {
-        canon::Command command;
-        command.location = location;
-        if (rapid) {
-            command.body = canon::RapidMove{piece.target};
-        } else {
-            command.body = canon::LinearMove{piece.target, piece.feed};
-        }
-        m_sink.consume(command);
-    }
+    for (const MachinePiece& piece : m_pieces)
+        emitStraight(piece.target, rapid, piece.feed, location);
 }
 
-void PathBuilder::emitLine(const Pose& target, bool rapid, double feed,
-                           const SourceLocation& location) {
-    if (m_space)
-        return emitInSpace(ContourElement::line(Plane::XY, m_tool, target), rapid, feed, location);
+void PathBuilder::emitStraight(const Pose& target, bool rapid, double feed,
+                               const SourceLocation& location) {
     canon::Command command;
     command.location = location;
     if (rapid) {
@@ -108,6 +91,13 @@ void PathBuilder::emitLine(const Pose& target, bool rapid, double feed,
         command.body = canon::LinearMove{target, feed};
     }
     m_sink.consume(command);
+}
+
+void PathBuilder::emitLine(const Pose& target, bool rapid, double feed,
+                           const SourceLocation& location) {
+    if (m_space)
+        return emitInSpace(ContourElement::line(Plane::XY, m_tool, target), rapid, feed, location);
+    emitStraight(target, rapid, feed, location);
     m_tool = target;
 }
 

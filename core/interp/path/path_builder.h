@@ -117,6 +117,8 @@ private:
 
     double signedOffset(CompSide side) const;
     void emitElement(const ContourElement& element, const PathMove& move);
+    // One straight move of the machine's axes on the stream; the tool position is the caller's.
+    void emitStraight(const Pose& target, bool rapid, double feed, const SourceLocation& location);
     void emitLine(const Pose& target, bool rapid, double feed, const SourceLocation& location);
     void emitArc(Plane plane, const Pose& target, const Vec2& center, double sweep, double feed,
                  const SourceLocation& location);

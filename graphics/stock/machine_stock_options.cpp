@@ -1,0 +1,44 @@
+#include "graphics/stock/machine_stock_options.h"
+
+#include <map>
+
+#include "core/tables/tool_table.h"
+
+namespace kerf::graphics {
+
+std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
+    const tables::ToolTable* tools) {
+    std::map<int, double> pointAngles;
+    if (tools != nullptr) {
+        for (const tables::ToolData& row : tools->tools()) {
+            if (row.index == 0) pointAngles[row.number] = row.pointAngle;
+        }
+    }
+    return [pointAngles](const canon::ToolChange& tool) {
+        const auto it = pointAngles.find(tool.number);
+        return MillCutter::fromGeometry(tool.geometry.radiusMm, tool.geometry.radius2Mm,
+                                        it != pointAngles.end() ? it->second : 0.0);
+    };
+}
+
+StockOptions stockOptionsFor(const machine::MachineConfig& machine, const tables::ToolTable* tools,
+                             std::optional<machine::WorkpieceFrame> workpieceFrame) {
+    StockOptions options;
+    options.workpieceFrame = std::move(workpieceFrame);
+    const bool lathe = machine.kind == machine::MachineKind::Lathe;
+    options.machine = lathe ? StockMachine::Lathe : StockMachine::Mill;
+    options.deriveStockFromPath = true;
+    const machine::BarConfig& bar = machine.bar;
+    if (lathe && bar.diameterMm > 0.0) {
+        LatheBar blank;
+        blank.radiusMm = bar.diameterMm / 2.0;
+        blank.innerRadiusMm = bar.boreDiameterMm / 2.0;
+        blank.zMax = bar.faceZMm;
+        blank.zMin = bar.faceZMm - bar.lengthMm;
+        options.bar = blank;
+    }
+    options.millCutter = millCutterWithPointAngles(tools);
+    return options;
+}
+
+}  // namespace kerf::graphics

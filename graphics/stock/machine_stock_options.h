@@ -1,0 +1,30 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "core/canon/commands.h"
+#include "core/machine/machine_config.h"
+#include "core/machine/workpiece_frame.h"
+#include "graphics/stock/cutter.h"
+#include "graphics/stock/stock_simulation.h"
+
+namespace kerf::tables {
+class ToolTable;
+}
+
+namespace kerf::graphics {
+
+// The mill cutter of a tool change: R and R2 of the canonical tool, the point angle (T-ANGLE)
+// from `tools` (the canonical tool change does not carry it). The angles are copied: the cutter
+// may outlive the table. No table: flat or ball cutters only.
+std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
+    const tables::ToolTable* tools);
+
+// The stock simulation of a program on `machine`, the same for `kerf run --stock` and the test
+// run: the machine's bar on a lathe, a blank derived from the path when the program has none,
+// T-ANGLE from the tool table for drills, the turned workpiece of a machine with rotary tables.
+StockOptions stockOptionsFor(const machine::MachineConfig& machine, const tables::ToolTable* tools,
+                             std::optional<machine::WorkpieceFrame> workpieceFrame);
+
+}  // namespace kerf::graphics
