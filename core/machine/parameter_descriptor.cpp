@@ -73,10 +73,13 @@ std::string formatNumber(double value) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
     if (value == 0.0) return "0";  // also for -0.0
-    // Fixed notation without a precision gives the shortest text that reads back exactly.
+    // Without a precision the text is the shortest that reads back exactly; fixed notation
+    // unless that would be a long row of digits (1e300 in a diagnostic).
+    const double magnitude = std::fabs(value);
+    const auto format = magnitude >= 1e15 || magnitude < 1e-6 ? std::chars_format::scientific
+                                                              : std::chars_format::fixed;
     std::array<char, 400> buffer{};
-    auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                std::chars_format::fixed);
+    auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, format);
     return std::string(buffer.data(), result.ptr);
 }
 

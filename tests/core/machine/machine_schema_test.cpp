@@ -163,13 +163,16 @@ TEST(MachineSchema, ValidationOfProgrammaticConfigs) {
                          "ui: error: axis letter Q is not one of X, Y, Z, A, B, C, U, V, W"}));
 }
 
-TEST(MachineSchema, FormatsNumbersShortAndWithoutExponent) {
+TEST(MachineSchema, FormatsNumbersShortAndWithAnExponentOnlyWhenHugeOrTiny) {
     EXPECT_EQ(formatNumber(-5.0), "-5");
     EXPECT_EQ(formatNumber(0.01), "0.01");
     EXPECT_EQ(formatNumber(100000.0), "100000");
     EXPECT_EQ(formatNumber(10000000.0), "10000000");
     EXPECT_EQ(formatNumber(0.1 + 0.2), "0.30000000000000004");
     EXPECT_EQ(formatNumber(-0.0), "0");
+    // Huge and tiny values in exponent form, which TOML reads back.
+    EXPECT_EQ(formatNumber(1e300), "1e+300");
+    EXPECT_EQ(formatNumber(-2.5e-9), "-2.5e-09");
     EXPECT_EQ(formatParameterValue(std::string("a \"b\"\\\n")), "\"a \\\"b\\\"\\\\\\n\"");
 }
 
