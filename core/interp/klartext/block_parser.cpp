@@ -762,9 +762,18 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
                 out.statement = b;
                 return true;
             }
+            case 20:
+                // WAIT FOR SYNC: the read-ahead stops here until the machine has reached
+                // this block. Waiting for PLC conditions needs a PLC Kerf does not have.
+                if (cur.acceptKeyword("WAIT") && cur.acceptKeyword("FOR") &&
+                    cur.acceptKeyword("SYNC")) {
+                    if (!c.expectEnd()) return false;
+                    out.statement = WaitForSync{};
+                    return true;
+                }
+                return deferred("FN 20");
             case 17:
             case 19:
-            case 20:
             case 29:
             case 31:
             case 37:

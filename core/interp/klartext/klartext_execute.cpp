@@ -77,6 +77,7 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const ErrorBlock& b) { self.executeError(b); }
         void operator()(const PrintBlock& b) { self.executePrint(b); }
         void operator()(const SysRead& b) { self.executeSysRead(b); }
+        void operator()(const WaitForSync&) { self.waitForSync(); }
         void operator()(const CircleData& b) { self.executeCircleData(b); }
         void operator()(const TableOpen& b) { self.executeTableOpen(b); }
         void operator()(const TableAccess& b) { self.executeTableAccess(b); }

@@ -209,6 +209,13 @@ void KlartextInterpreter::executeSysRead(const SysRead& read) {
     m_status = interp::RunStatus::NeedsSync;
 }
 
+void KlartextInterpreter::waitForSync() {
+    if (!checkPathError(m_path.flush())) return;
+    emit(canon::SyncPoint{canon::SyncReason::ReadPosition});
+    m_pendingSync = PendingSync{};
+    m_status = interp::RunStatus::NeedsSync;
+}
+
 void KlartextInterpreter::executeCircleData(const CircleData& data) {
     auto point = [&](int i) {
         QRef x = data.source, y = data.source;

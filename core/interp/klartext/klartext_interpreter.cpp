@@ -317,6 +317,10 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
         m_path.resetToMachine(world.position);
         m_programmed = programOfPath(m_path.toolPosition());
     }
+    if (pending.id == 0) {
+        m_status = interp::RunStatus::BudgetUsed;
+        return;
+    }
     SysRead read;
     read.id = pending.id;
     read.nr = pending.nr;

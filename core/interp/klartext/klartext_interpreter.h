@@ -159,6 +159,8 @@ private:
         Plane plane = Plane::XY;
         bool set = false;
     };
+    // What the interpreter reads once the machine has caught up: FN 18 positions (id 240 or
+    // 270), or nothing (id 0, FN 20: WAIT FOR SYNC).
     struct PendingSync {
         QRef target;
         int id = 0, nr = 0, idx = 0;
@@ -520,6 +522,7 @@ private:
 
     // Q parameter functions and FN blocks (klartext_functions.cpp).
     void executeSysRead(const SysRead& read);
+    void waitForSync();
     std::optional<double> sysReadValue(const SysRead& read, bool& needsSync);
     void executeCircleData(const CircleData& data);
     void executePrint(const PrintBlock& print);

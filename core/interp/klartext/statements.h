@@ -280,6 +280,9 @@ struct TcpmBlock {
     bool on = false;
 };
 
+// FN 20: WAIT FOR SYNC: the interpreter waits for the machine before it reads on.
+struct WaitForSync {};
+
 // Blocks that parse and are kept but that this release does not execute yet (fixed cycles,
 // patterns, probing, FK, PLANE ...). `feature` names them in the diagnostic.
 struct Deferred {
@@ -368,7 +371,7 @@ using Statement =
                  CircleData, TableOpen, TableAccess, CycleDefinition, GlobalDefinition,
                  PatternDefinition, SelectTable, SelectPattern, SelectContour, DeclareContour,
                  ContourFormula, ContourDefinition, CycleCall, FkBlock, FkPole, FkSelect,
-                 PlaneBlock, TcpmBlock, Deferred>;
+                 PlaneBlock, TcpmBlock, WaitForSync, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

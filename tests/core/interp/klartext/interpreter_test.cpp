@@ -96,6 +96,29 @@ TEST_F(InterpreterTest, FPrintWritesInsideTheNcRoot) {
               interp::RunStatus::Failed);
 }
 
+TEST_F(InterpreterTest, WaitForSyncWaitsForTheMachineAndContinuesFromWhereItIs) {
+    // FN 20 stops the read-ahead: the interpreter asks for the machine (a sync) after the
+    // move before it, and an incremental move after it starts from where the machine is.
+    const std::string text =
+        "0 BEGIN PGM A MM\n1 L X+10 Y+0 Z+0 R0 FMAX\n2 FN 20: WAIT FOR SYNC\n"
+        "3 L IX+5 FMAX\n4 END PGM A MM\n";
+    writeFileAtomically(dir / "P.H", text);
+    auto k = make();
+    ASSERT_TRUE(k->load(dir / "P.H"));
+    EXPECT_EQ(k->run(out, 1000), interp::RunStatus::NeedsSync);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 10);  // block 3 not read yet
+    interp::WorldSnapshot world;
+    world.position = k->nominalPosition();
+    world.position[Axis::X] = 12;  // the operator moved the axis at a stop
+    k->resume(world);
+    EXPECT_EQ(k->run(out, 1000), interp::RunStatus::Finished);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 17);
+
+    auto other = make();
+    EXPECT_EQ(runText(*other, "0 BEGIN PGM A MM\n1 FN 20: WAIT FOR I1\n2 END PGM A MM\n"),
+              interp::RunStatus::Failed);
+}
+
 TEST_F(InterpreterTest, ContinuesFromWhereTheOperatorMovedTheMachine) {
     // After a stop the machine was jogged to X50: FN 18 reads it and L IX moves from there.
     Pose jogged;
