@@ -74,27 +74,30 @@ PlanarSegment piece(const PlanarSegment& s, double t0, double t1) {
 // about the corner, concave ones by a line (it lies within the distance of the corner).
 std::vector<PlanarSegment> rawOffset(const std::vector<PlanarSegment>& chain, double distance) {
     std::vector<PlanarSegment> raw;
-    std::optional<PlanarSegment> previous;  // moved
+    std::optional<Vec2> previousEnd;  // of the previous element moved
     const PlanarSegment* original = nullptr;
     for (const PlanarSegment& s : chain) {
         const std::optional<PlanarSegment> moved = offsetSegment(s, distance);
-        if (!moved) continue;
-        if (previous && (previous->end - moved->start).norm() >= kSame) {
+        // An arc of the offset's radius shrinks to its centre: the corners before and after it
+        // join there (a chain offset out and back rounds a cusp about that point).
+        const Vec2 start = moved ? moved->start : s.center;
+        const Vec2 end = moved ? moved->end : s.center;
+        if (previousEnd && (*previousEnd - start).norm() >= kSame) {
             // Convexity is the chain's, not the offsets' (an arc turned inside out runs back).
             const double turn = cross2(original->endTangent(), s.startTangent());
             const bool convex = distance > 0.0 ? turn < 0.0 : turn > 0.0;
-            const Vec2 u = previous->end - s.start;
-            const Vec2 v = moved->start - s.start;
+            const Vec2 u = *previousEnd - s.start;
+            const Vec2 v = start - s.start;
             const double angle = std::fabs(std::atan2(cross2(u, v), u.dot(v)));
             if (convex && std::fabs(u.norm() - std::fabs(distance)) < 1e-6) {
-                raw.push_back({PlanarSegment::Kind::Arc, previous->end, moved->start, s.start,
+                raw.push_back({PlanarSegment::Kind::Arc, *previousEnd, start, s.start,
                                distance > 0.0 ? -angle : angle});
             } else {
-                raw.push_back(PlanarSegment::line(previous->end, moved->start));
+                raw.push_back(PlanarSegment::line(*previousEnd, start));
             }
         }
-        raw.push_back(*moved);
-        previous = moved;
+        if (moved) raw.push_back(*moved);
+        previousEnd = end;
         original = &s;
     }
     return raw;

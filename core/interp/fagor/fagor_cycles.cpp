@@ -51,6 +51,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
                 element.centre = centre;
                 element.ccw = cycles::lathe::shortArcIsCcw(section.start, element.end, centre);
                 section.radiusTolerance = m_settings.circleToleranceMm;
+                if (!arcFitsTheNose(call, section.start, element)) return false;
             }
             section.elements.push_back(element);
             section.maxStep = length(w['C'].value);
