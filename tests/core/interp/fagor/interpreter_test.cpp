@@ -587,5 +587,29 @@ TEST_F(FagorRun, G84RefusesAHollowArcTighterThanTheNose) {
     EXPECT_EQ(run(convex), interp::RunStatus::Finished) << diagnostics();
 }
 
+TEST_F(FagorRun, CycleFeedsKeepThePerRevolutionModeWhenTheCallHasNoFeed) {
+    // G95 without any F: the roughing passes run at the maximum feed (per minute, as F0), but
+    // the finishing pass H0.1 is 0.1 mm/rev: the stream switches to per revolution before it
+    // (it stayed per minute: 0.1 mm/min). G68 leaves the feed H active: N4 runs at 0.1 mm/rev.
+    const std::string program =
+        "N1 G90 G95 S800 M3\n"
+        "N2 G00 X70 Z2\n"
+        "N3 G68 X40 Z0 C5 H0.1 S10 E20\n"
+        "N4 G01 X80\n"
+        "N5 M30\n"
+        "N10 G01 X40 Z-10\n"
+        "N20 G01 X60\n";
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    const auto at = [&](const std::string& line) {
+        return std::find(out.lines.begin(), out.lines.end(), line) - out.lines.begin();
+    };
+    const auto perRevolution = at("3:1 N3 FEEDMODE PER-REV");
+    const auto finishing = at("3:1 N3 LINE X20.0000 Z0.0000 F0.100");
+    ASSERT_LT(finishing, static_cast<long>(out.lines.size())) << testing::PrintToString(out.lines);
+    EXPECT_EQ(perRevolution + 1, finishing) << testing::PrintToString(out.lines);
+    EXPECT_EQ(at("4:1 N4 LINE X40.0000 Z2.0000 F0.100") + 1, at("5:1 N5 SPINDLE STOP S800.000"))
+        << testing::PrintToString(out.lines);
+}
+
 }  // namespace
 }  // namespace kerf::fagor
