@@ -368,14 +368,20 @@ std::optional<std::vector<PlanarSegment>> offsetOpenChainByBox(
         return false;
     });
     if (!kept) return kept;
-    // The cuts leave lines in several pieces: one line each.
+    // The cuts leave lines and arcs in several pieces: one line or arc each.
+    auto continues = [](const PlanarSegment& a, const PlanarSegment& b) {
+        if (a.kind != b.kind) return false;
+        if (a.kind == PlanarSegment::Kind::Arc) {
+            return (a.center - b.center).norm() < 1e-9 && (a.sweep > 0.0) == (b.sweep > 0.0);
+        }
+        return std::fabs(cross2(a.startTangent(), b.startTangent())) < 1e-12 &&
+               a.startTangent().dot(b.startTangent()) > 0.0;
+    };
     std::vector<PlanarSegment> out;
     for (const PlanarSegment& s : *kept) {
-        if (!out.empty() && s.kind == PlanarSegment::Kind::Line &&
-            out.back().kind == PlanarSegment::Kind::Line &&
-            std::fabs(cross2(out.back().startTangent(), s.startTangent())) < 1e-12 &&
-            out.back().startTangent().dot(s.startTangent()) > 0.0) {
+        if (!out.empty() && continues(out.back(), s)) {
             out.back().end = s.end;
+            out.back().sweep += s.sweep;
         } else {
             out.push_back(s);
         }
