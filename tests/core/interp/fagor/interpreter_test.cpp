@@ -611,5 +611,23 @@ TEST_F(FagorRun, CycleFeedsKeepThePerRevolutionModeWhenTheCallHasNoFeed) {
         << testing::PrintToString(out.lines);
 }
 
+TEST_F(FagorRun, CycleFeedsAreInInchesUnderG70) {
+    // G70: F0.01 in/rev is 0.254 mm/rev, the finishing feed H0.004 of G81 0.1016 mm/rev (it
+    // was sent as 0.004 mm/rev).
+    const std::string program =
+        "N1 G70 G90 G95 F0.01 S800 M3\n"
+        "N2 G00 X2.8 Z0.1\n"
+        "N3 G81 X2.4 Z0 Q2.4 R-0.4 C0.2 H0.004\n"
+        "N4 M30\n";
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    const auto count = [&](const std::string& line) {
+        return std::count(out.lines.begin(), out.lines.end(), line);
+    };
+    EXPECT_EQ(count("3:1 N3 LINE X30.4800 Z-10.1600 F0.254"), 1)
+        << testing::PrintToString(out.lines);
+    EXPECT_EQ(count("3:1 N3 LINE X30.4800 Z-10.1600 F0.102"), 1)
+        << testing::PrintToString(out.lines);
+}
+
 }  // namespace
 }  // namespace kerf::fagor
