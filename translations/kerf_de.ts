@@ -8256,6 +8256,10 @@ wählen</translation>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: die Maschine hat keine Drehachse {1}</translation>
     </message>
+    <message>
+        <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
+        <translation>der Bogenradius {1} ist kleiner als der Schneidenradius {2} des Werkzeugs: die Schneide kann ihm nicht folgen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

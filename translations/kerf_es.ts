@@ -8256,6 +8256,10 @@ solución</translation>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: la máquina no tiene eje rotativo {1}</translation>
     </message>
+    <message>
+        <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
+        <translation>el radio del arco {1} es menor que el radio de punta {2} de la herramienta: la punta no puede seguirlo</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8259,6 +8259,10 @@ rozwiązanie</translation>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: maszyna nie ma osi obrotowej {1}</translation>
     </message>
+    <message>
+        <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
+        <translation>promień łuku {1} jest mniejszy niż promień naroża narzędzia {2}: naroże nie może za nim podążać</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

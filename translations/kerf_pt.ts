@@ -8256,6 +8256,10 @@ solução</translation>
         <source>M94 {1}: the machine has no rotary axis {1}</source>
         <translation>M94 {1}: a máquina não tem eixo rotativo {1}</translation>
     </message>
+    <message>
+        <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
+        <translation>o raio do arco {1} é menor que o raio da ponta {2} da ferramenta: a ponta não o pode seguir</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -52,15 +52,6 @@ bool buildChain(const Vec2& start, const std::vector<ProfileElement>& elements,
     return true;
 }
 
-std::vector<PlanarSegment> moved(std::vector<PlanarSegment> chain, const Vec2& by) {
-    for (PlanarSegment& s : chain) {
-        s.start += by;
-        s.end += by;
-        s.center += by;
-    }
-    return chain;
-}
-
 // The raw-stock profile as a dense polyline, to tell whether a pass meets its material: a point
 // is inside when the outline lies beyond it (towards the call point) along the measuring axis.
 class RawOutline {
@@ -170,11 +161,22 @@ bool expandPatternRepeat(const PatternRepeat& cycle, const Vec2& call, LathePath
             if (!offset) return false;
             pass = *offset;
         } else {
-            // Different allowances in X and Z: the profile is moved by them, then by the rest
-            // of the stock along the measuring axis.
-            Vec2 by(outward.x() * *cycle.allowanceZ, outward.y() * cycle.allowanceX);
-            by[measure] += outward[measure] * (d - allowance);
-            pass = moved(profile, by);
+            // Different allowances in X and Z: every element moves by the allowance of each
+            // direction it faces, and the elements facing the call point along the measuring
+            // axis by the rest of the stock too (the profile swept by that box): so a wall that
+            // faces away (a groove's far side, an undercut) keeps its allowance instead of being
+            // crossed by a copy moved bodily.
+            Box2 box;
+            box.min = Vec2(-*cycle.allowanceZ, -cycle.allowanceX);
+            box.max = Vec2(*cycle.allowanceZ, cycle.allowanceX);
+            if (outward[measure] > 0.0) {
+                box.max[measure] += d - allowance;
+            } else {
+                box.min[measure] -= d - allowance;
+            }
+            const auto offset = offsetOpenChainByBox(profile, box, left);
+            if (!offset) return false;
+            pass = *offset;
         }
         pass = chainUpTo(pass, main, limit, direction);
         return true;

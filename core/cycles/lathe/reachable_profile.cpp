@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/geometry/arc_math.h"
+#include "core/geometry/open_chain_offset.h"
 
 namespace kerf::cycles::lathe {
 
@@ -166,12 +167,104 @@ bool advancesAlongU(const Chain& chain) {
     return true;
 }
 
+std::vector<PlanarSegment> segmentsOf(const Vec2& start,
+                                      const std::vector<ProfileElement>& elements) {
+    std::vector<PlanarSegment> out;
+    Vec2 from = start;
+    for (const ProfileElement& e : elements) {
+        if ((e.end - from).norm() > kTolerance) {
+            out.push_back(e.centre ? PlanarSegment{PlanarSegment::Kind::Arc, from, e.end, *e.centre,
+                                                   arcSweep(from, e.end, *e.centre, e.ccw)}
+                                   : PlanarSegment::line(from, e.end));
+        }
+        from = e.end;
+    }
+    return out;
+}
+
+// The profile elements of segments; each takes the program line of the nearest element of
+// `source` (the elements they come from).
+std::vector<ProfileElement> elementsOf(const std::vector<PlanarSegment>& segments,
+                                       const std::vector<PlanarSegment>& source,
+                                       const std::vector<uint32_t>& sourceLines) {
+    std::vector<ProfileElement> out;
+    for (const PlanarSegment& s : segments) {
+        ProfileElement e;
+        e.end = s.end;
+        if (s.kind == PlanarSegment::Kind::Arc) {
+            e.centre = s.center;
+            e.ccw = s.sweep > 0.0;
+        }
+        const Vec2 middle =
+            s.kind == PlanarSegment::Kind::Line
+                ? Vec2(0.5 * (s.start + s.end))
+                : onCircle(s.center, s.radius(), angleOf(s.center, s.start) + s.sweep / 2.0);
+        double nearest = HUGE_VAL;
+        for (size_t k = 0; k < source.size(); ++k) {
+            const double d = source[k].distanceTo(middle);
+            if (d < nearest) nearest = d, e.line = sourceLines[k];
+        }
+        out.push_back(e);
+    }
+    return out;
+}
+
+// A concave arc tighter than the nose (its centre on the side the material is not, `airSide`
+// +1 left of the travel, -1 right): the nose rolled along the profile cannot enter it. The
+// profile the nose reaches there is the profile offset out by the nose radius and back: the
+// neighbours up to where the nose touches them, joined by an arc of the nose's radius. Worked
+// out over the arc and its neighbours, wider while the nose's arc reaches beyond them.
+std::vector<ProfileElement> roundTightArcs(const Vec2& start, std::vector<ProfileElement> profile,
+                                           double airSide, double noseRadius) {
+    if (noseRadius <= 0.0) return profile;
+    for (size_t i = 0; i < profile.size(); ++i) {
+        const Vec2 from = i == 0 ? start : profile[i - 1].end;
+        const ProfileElement& e = profile[i];
+        if (!e.centre || (e.ccw ? 1.0 : -1.0) != airSide ||
+            (from - *e.centre).norm() >= noseRadius - 1e-9) {
+            continue;
+        }
+        for (size_t widen = 1; widen <= profile.size(); ++widen) {
+            const size_t first = i >= widen ? i - widen : 0;
+            const size_t last = std::min(i + widen, profile.size() - 1);
+            const Vec2 windowStart = first == 0 ? start : profile[first - 1].end;
+            const std::vector<ProfileElement> window(profile.begin() + static_cast<long>(first),
+                                                     profile.begin() + static_cast<long>(last) + 1);
+            const std::vector<PlanarSegment> chain = segmentsOf(windowStart, window);
+            const auto out = offsetOpenChain(chain, airSide * noseRadius);
+            const auto back = out ? offsetOpenChain(*out, -airSide * noseRadius) : std::nullopt;
+            const bool fits = back && !back->empty() &&
+                              (back->front().start - chain.front().start).norm() < 1e-6 &&
+                              (back->back().end - chain.back().end).norm() < 1e-6;
+            if (!fits && (first > 0 || last + 1 < profile.size())) continue;
+            if (!fits) return profile;  // the whole profile is narrower than the nose
+            std::vector<uint32_t> lines;
+            Vec2 at = windowStart;
+            for (const ProfileElement& w : window) {
+                if ((w.end - at).norm() > kTolerance) lines.push_back(w.line);
+                at = w.end;
+            }
+            std::vector<ProfileElement> rounded = elementsOf(*back, chain, lines);
+            rounded.back().end = window.back().end;  // exactly where the rest starts
+            profile.erase(profile.begin() + static_cast<long>(first),
+                          profile.begin() + static_cast<long>(last) + 1);
+            profile.insert(profile.begin() + static_cast<long>(first), rounded.begin(),
+                           rounded.end());
+            i = first;  // look again from the window: what follows has moved
+            break;
+        }
+    }
+    return profile;
+}
+
 }  // namespace
 
 std::vector<ProfileElement> reachableProfile(const Vec2& start,
-                                             const std::vector<ProfileElement>& profile,
+                                             const std::vector<ProfileElement>& rawProfile,
                                              const Vec2& feed, const Vec2& outward,
                                              const InsertGeometry& insert) {
+    const std::vector<ProfileElement> profile = roundTightArcs(
+        start, rawProfile, cross2(feed, outward) > 0.0 ? 1.0 : -1.0, insert.noseRadius);
     if (insert.cuttingAngleDeg <= 0.0 || insert.noseAngleDeg <= 0.0) return profile;
     // The frame (u, v): a reflection when (feed, outward) turns clockwise, so arcs turn too.
     const bool reflected = cross2(feed, outward) < 0.0;

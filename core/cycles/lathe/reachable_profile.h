@@ -13,8 +13,10 @@ namespace kerf::cycles::lathe {
 // at that angle until it meets the profile again; with CUTA below 90° a wall rising steeper than
 // CUTA is bridged the same way from the far side. Bridges start and end exactly on the
 // profile's lines and arcs (an arc may be shortened, never replaced); the rest is unchanged.
-// Concave arcs tighter than the nose are left as they are. Returns the profile unchanged when
-// the geometry is unknown (CUTA or NOSEA 0) or the profile turns back against `feed`.
+// Before that, a concave arc tighter than the nose radius R is replaced by what the nose
+// reaches: its neighbours up to where the nose rests on them, joined by an arc of radius R
+// (this needs R only). The angle rules are skipped when CUTA or NOSEA is 0 or the profile
+// turns back against `feed`.
 std::vector<ProfileElement> reachableProfile(const Vec2& start,
                                              const std::vector<ProfileElement>& profile,
                                              const Vec2& feed, const Vec2& outward,

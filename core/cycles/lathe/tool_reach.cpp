@@ -28,7 +28,9 @@ Vec2 tangentAt(const Vec2& from, const ProfileElement& element, double s) {
 std::optional<UnreachableElement> firstUnreachableElement(
     const Vec2& start, const std::vector<ProfileElement>& profile, const Vec2& feed,
     const Vec2& outward, const InsertGeometry& insert) {
-    if (insert.cuttingAngleDeg <= 0.0 || insert.noseAngleDeg <= 0.0) return std::nullopt;
+    // Without NOSEA and CUTA only the nose radius is known: only arcs are checked.
+    const bool anglesKnown = insert.cuttingAngleDeg > 0.0 && insert.noseAngleDeg > 0.0;
+    if (!anglesKnown && insert.noseRadius <= 0.0) return std::nullopt;
     const double wallLimit = insert.cuttingAngleDeg;
     const double descentLimit = 180.0 - insert.cuttingAngleDeg - insert.noseAngleDeg;
     // The profile's outward normal is this side of its tangent.
@@ -38,7 +40,7 @@ std::optional<UnreachableElement> firstUnreachableElement(
         const ProfileElement& element = profile[i];
         if ((element.end - from).norm() < 1e-9 && !element.centre) continue;
         const int samples = element.centre ? kArcSamples : 1;
-        for (int k = 0; k <= samples; ++k) {
+        for (int k = 0; anglesKnown && k <= samples; ++k) {
             const Vec2 t = tangentAt(from, element, static_cast<double>(k) / samples);
             const double slope = radToDeg(std::atan2(t.dot(outward), t.dot(feed)));
             if (slope > wallLimit + kAngleToleranceDeg) {

@@ -32,7 +32,7 @@ struct UnreachableElement {
 // the material on the side opposite `outward` (unit, perpendicular to `feed`): a wall rising
 // towards `outward` steeper than CUTA, a descent into the material steeper than
 // 180° - CUTA - NOSEA, or a concave arc of a smaller radius than the nose. Empty when every
-// element is reachable or the geometry is unknown (CUTA or NOSEA 0).
+// element is reachable; without CUTA or NOSEA only the arcs are checked.
 std::optional<UnreachableElement> firstUnreachableElement(
     const Vec2& start, const std::vector<ProfileElement>& profile, const Vec2& feed,
     const Vec2& outward, const InsertGeometry& insert);

@@ -30,6 +30,11 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
     auto len = [&](char letter, double fallback) {
         return w.has(letter) ? length(w[letter].value) : fallback;
     };
+    // The cycle's feeds (F, H) as the block's F: in mm, except G32's 1/min.
+    auto feedOf = [&](char letter) {
+        const double f = w.value(letter, 0.0);
+        return m_modal.feed == FeedKind::InverseTime ? f : length(f);
+    };
     const Vec2 call = plane.point(programmedPosition());
     LathePath path(call);
     LatheError error;
@@ -51,14 +56,15 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
                 element.centre = centre;
                 element.ccw = cycles::lathe::shortArcIsCcw(section.start, element.end, centre);
                 section.radiusTolerance = m_settings.circleToleranceMm;
+                if (!arcFitsTheNose(call, section.start, element)) return false;
             }
             section.elements.push_back(element);
             section.maxStep = length(w['C'].value);
             if (w.has('D')) section.retract = length(w['D'].value);
             section.allowanceX = len('L', 0.0);
             section.allowanceZ = len('M', 0.0);
-            section.finalRoughingFeed = w.value('F', 0.0);
-            section.finishingFeed = w.value('H', 0.0);
+            section.finalRoughingFeed = feedOf('F');
+            section.finishingFeed = feedOf('H');
             ok = cycles::lathe::expandTurningSection(section, call, path, error);
             break;
         }
@@ -80,8 +86,8 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             // The sign of L and M chooses the finishing pass's corners; M defaults to L.
             section.allowanceX = std::fabs(len('L', 0.0));
             section.allowanceZ = w.has('M') ? std::fabs(len('M', 0.0)) : section.allowanceX;
-            section.finalRoughingFeed = w.value('F', 0.0);
-            section.finishingFeed = w.value('H', 0.0);
+            section.finalRoughingFeed = feedOf('F');
+            section.finishingFeed = feedOf('H');
             section.radiusTolerance = m_settings.circleToleranceMm;
             ok = cycles::lathe::expandTurningSection(section, call, path, error);
             if (ok) emitRawStockBlank(section.raw, call, section.start, !section.facing);
@@ -104,7 +110,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             // The sign of L and M chooses the finishing pass's corners; M defaults to L.
             cycle.allowanceX = std::fabs(len('L', 0.0));
             if (w.has('M')) cycle.allowanceZ = std::fabs(length(w['M'].value));
-            cycle.finishingFeed = w.value('H', 0.0);
+            cycle.finishingFeed = feedOf('H');
             cycle.radiusTolerance = m_settings.circleToleranceMm;
             ok = cycles::lathe::expandPatternRepeat(cycle, call, path, error);
             if (ok) emitRawStockBlank(cycle.raw, call, cycle.start, !cycle.stockAlongZ);
@@ -126,7 +132,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             if (r != std::floor(r)) hole.tappingType = -1;
             // Rigid tapping: the thread's lead is the feed per revolution.
             const double rpm = m_spindle.rpm;
-            const double feed = length(m_feed);
+            const double feed = m_feed;  // mm already
             hole.tappingLeadMm = m_modal.feed == FeedKind::PerRevolution ? feed
                                  : rpm > 0.0                             ? feed / rpm
                                                                          : 0.0;
@@ -197,10 +203,12 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
         // Afterwards G00 and G40 (§1.4) and the last feed used: H, else F.
         m_modal.motion = 0;
         m_modal.side = interp::CompSide::None;
-        if (w.value('H', 0.0) > 0.0) {
-            m_feed = w['H'].value;
-        } else if (w.value('F', 0.0) > 0.0) {
-            m_feed = w['F'].value;
+        for (const char letter : {'H', 'F'}) {
+            if (w.value(letter, 0.0) > 0.0) {
+                m_feed = feedOf(letter);
+                m_feedSet = true;
+                break;
+            }
         }
     }
     m_lastTangent.reset();

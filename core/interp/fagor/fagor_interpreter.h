@@ -231,6 +231,10 @@ private:
     // Canned cycles G81-G89 (fagor_cycles.cpp).
     bool executeCycle(const IsoBlock& iso);
     bool runCycleSteps(const std::vector<cycles::lathe::LatheStep>& steps, const IsoBlock& iso);
+    // G84/G85: false with an error when the arc is hollow and tighter than the nose
+    // (fagor_tool_reach.cpp).
+    bool arcFitsTheNose(const Vec2& call, const Vec2& start,
+                        const cycles::lathe::ProfileElement& arc);
     // The raw-stock profile of G66/G68/G69 as the blank for the graphics (canon StockRevolved).
     void emitRawStockBlank(const cycles::lathe::RawStock& raw, const Vec2& call, const Vec2& start,
                            bool stepsAlongX);

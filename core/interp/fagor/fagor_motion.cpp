@@ -432,10 +432,16 @@ bool FagorInterpreter::submit(const ContourElement& programmed, MoveKind kind, c
         } else if (!threadData(iso, element, move.thread)) {
             return false;
         }
+    } else if (own != nullptr && kind == MoveKind::Feed && own->feed > 0.0) {
+        // A cycle's own feed (F, H) is in the active mode's unit, also when the feed at the
+        // call was the maximum (no F or F0, per minute).
+        ensureStreamFeedMode(m_modal.feed == FeedKind::PerRevolution
+                                 ? canon::FeedMode::PerRevolution
+                                 : canon::FeedMode::PerMinute);
+        move.feed = own->feed;
     } else if (!feedFor(kind, element, iso, move.feed)) {
         return false;
     }
-    if (own != nullptr && kind == MoveKind::Feed && own->feed > 0.0) move.feed = own->feed;
     if (!pathOk(m_shaper.add(move))) return false;
     if (kind == MoveKind::Feed) {
         for (size_t i = 0; i < m_lastDelta.values.size(); ++i) {

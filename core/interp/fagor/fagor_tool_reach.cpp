@@ -2,7 +2,7 @@
 // checked against the active tool's insert (NOSEA and CUTA of the tool table, the nose radius R
 // of the tool offset). A valley the insert cannot reach gets a message at the start of the cycle
 // and a warning at the cycle's G in the check, and the cycle machines the closest profile the
-// insert reaches instead.
+// insert reaches instead. G84/G85 refuse a hollow arc tighter than the nose.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,6 +10,7 @@
 #include "core/base/translate.h"
 #include "core/cycles/lathe/reachable_profile.h"
 #include "core/cycles/lathe/tool_reach.h"
+#include "core/geometry/arc_math.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
 namespace kerf::fagor {
@@ -26,8 +27,9 @@ std::string degreesText(double value) {
 
 void FagorInterpreter::checkToolReach(int g, const Vec2& call, const Vec2& start,
                                       std::vector<cycles::lathe::ProfileElement>& profile) {
-    if (!m_toolTable || m_tool.tool <= 0 || profile.empty()) return;
-    const ToolEntry tool = m_toolTable->get(m_tool.tool);
+    if (m_tool.tool <= 0 || profile.empty()) return;
+    // Without a tool table only the nose radius of the offset is known.
+    const ToolEntry tool = m_toolTable ? m_toolTable->get(m_tool.tool) : ToolEntry{};
     const cycles::lathe::InsertGeometry insert{tool.cuttingAngle, tool.noseAngle,
                                                m_tool.data.radius};
     // G68 feeds along Z, G69 along X, G66 along the profile's longer extent; the material lies
@@ -60,6 +62,28 @@ void FagorInterpreter::checkToolReach(int g, const Vec2& call, const Vec2& start
     warn("tool-geometry", message, args);
     emit(canon::Message{canon::MessageKind::Info, substituteArgs(message, args)});
     profile = cycles::lathe::reachableProfile(start, profile, feed, outward, insert);
+}
+
+bool FagorInterpreter::arcFitsTheNose(const Vec2& call, const Vec2& start,
+                                      const cycles::lathe::ProfileElement& arc) {
+    // The section is this one arc: with a nose rounder than a hollow arc there is no
+    // neighbouring element to leave the rest against, so G84/G85 refuse it (G66/G68/G69 machine
+    // the profile the nose reaches instead). Hollow: the arc bulges away from the call point.
+    const double radius = (start - *arc.centre).norm();
+    const double nose = m_tool.data.radius;
+    if (nose <= radius + 1e-9) return true;
+    const Vec2 chord = arc.end - start;
+    const double sweep = arcSweep(start, arc.end, *arc.centre, arc.ccw);
+    const Vec2 from = start - *arc.centre;
+    const Vec2 middle =
+        *arc.centre + Vec2(std::cos(sweep / 2.0) * from.x() - std::sin(sweep / 2.0) * from.y(),
+                           std::sin(sweep / 2.0) * from.x() + std::cos(sweep / 2.0) * from.y());
+    if (cross2(chord, middle - start) * cross2(chord, call - start) >= 0.0) return true;
+    fail("tool-geometry",
+         KERF_TR_NOOP("the arc's radius {1} is smaller than the tool nose radius {2}: the nose "
+                      "cannot follow it"),
+         {degreesText(radius), degreesText(nose)});
+    return false;
 }
 
 }  // namespace kerf::fagor

@@ -111,8 +111,149 @@ TEST(PatternRepeat, AllowanceInZMovesThePassesInsteadOfOffsettingThem) {
     expectStep(s[0], Kind::Rapid, 0.2, 14.0);
     expectStep(s[1], Kind::Feed, -19.8, 14.0);
     expectStep(s[2], Kind::Feed, -19.8, 24.0);
-    expectStep(s[3], Kind::Feed, -39.8, 24.0);
+    // The profile's end is no wall: the pass runs on to it (Z-40), as without M.
+    expectStep(s[3], Kind::Feed, -40.0, 24.0);
     expectStep(s[12], Kind::Rapid, 0.2, 10.5);
+}
+
+// Whether a point of the finished profile lies strictly inside the box [p - max, p - min]: the
+// pass point p is then closer to the part than the allowances (|M| in Z, |L| in X) allow.
+bool withinAllowances(const PatternRepeat& cycle, const Vec2& p, double m, double l) {
+    Vec2 from = cycle.start;
+    for (const ProfileElement& e : cycle.elements) {
+        for (int j = 0; j <= 400; ++j) {
+            const Vec2 q = from + (e.end - from) * (j / 400.0);
+            if (std::fabs(p.x() - q.x()) < m - 1e-6 && std::fabs(p.y() - q.y()) < l - 1e-6)
+                return true;
+        }
+        from = e.end;
+    }
+    return false;
+}
+
+void expectPass(const std::vector<LatheStep>& s, size_t first,
+                const std::vector<std::pair<double, double>>& points) {
+    ASSERT_GE(s.size(), first + points.size());
+    expectStep(s[first], Kind::Rapid, points[0].first, points[0].second);
+    for (size_t k = 1; k < points.size(); ++k)
+        expectStep(s[first + k], Kind::Feed, points[k].first, points[k].second);
+}
+
+TEST(PatternRepeat, AllowanceInZKeepsBothWallsOfAGroove) {
+    // r10 from the face to Z-10, a groove down to r7 between Z-10 and Z-15, r10 on to Z-30;
+    // I2 C1 L0.5 M0.5 from Z5 r20: passes 1 and 0.5 out. The groove's near wall (Z-10) faces
+    // away from the call point: its copy lies M beyond it at Z-10.5 (a copy moved bodily by +M
+    // ran at Z-9.5, 0.5 into the collar); the far wall (Z-15) faces the call point: Z-14.5.
+    // Diameters and the floor: L plus the rest of the stock, 10 + 0.5 + (d - 0.5), 7 + ...
+    PatternRepeat cycle;
+    cycle.start = Vec2(0.0, 10.0);
+    cycle.elements = {lineTo(-10.0, 10.0), lineTo(-10.0, 7.0), lineTo(-15.0, 7.0),
+                      lineTo(-15.0, 10.0), lineTo(-30.0, 10.0)};
+    cycle.stock = 2.0;
+    cycle.step = 1.0;
+    cycle.allowanceX = 0.5;
+    cycle.allowanceZ = 0.5;
+    const Vec2 call(5.0, 20.0);
+    LathePath path(call);
+    LatheError error;
+    ASSERT_TRUE(expandPatternRepeat(cycle, call, path, error)) << error.messageTemplate;
+    const std::vector<LatheStep>& s = path.steps();
+    ASSERT_EQ(s.size(), 2u * 8u);
+    expectPass(
+        s, 0,
+        {{0.5, 11.0}, {-10.5, 11.0}, {-10.5, 8.0}, {-14.5, 8.0}, {-14.5, 11.0}, {-30.0, 11.0}});
+    expectStep(s[6], Kind::Rapid, -30.0, 20.0);
+    expectStep(s[7], Kind::Rapid, 5.0, 20.0);
+    expectPass(
+        s, 8,
+        {{0.5, 10.5}, {-10.5, 10.5}, {-10.5, 7.5}, {-14.5, 7.5}, {-14.5, 10.5}, {-30.0, 10.5}});
+}
+
+TEST(PatternRepeat, AllowanceInZFollowsAnUndercutWithoutCrossingIt) {
+    // A dovetail: r10 to Z-10, down the collar's face to r6, then back towards the face under
+    // the collar to (Z-6, r4), r4 to Z-20, a shoulder up to r10, r10 to Z-30. L0.5 M0.5, I2 C1.
+    // Pass 0.5 (the box +-0.5 both ways): the collar's underside moved by (-0.5, -0.5) until it
+    // meets the floor's copy r4.5 at Z-8.5 (x = 5.5 - (z + 10.5) / 2 = 4.5); the shoulder faces
+    // the call point: Z-19.5. Pass 1 (the box reaches 0.5 + (1 - 0.5) up): the floor's copy r5
+    // meets the underside's copy at Z-9.5 (x = 5.5 - (z + 10.5) / 2 = 5).
+    PatternRepeat cycle;
+    cycle.start = Vec2(0.0, 10.0);
+    cycle.elements = {lineTo(-10.0, 10.0), lineTo(-10.0, 6.0),  lineTo(-6.0, 4.0),
+                      lineTo(-20.0, 4.0),  lineTo(-20.0, 10.0), lineTo(-30.0, 10.0)};
+    cycle.stock = 2.0;
+    cycle.step = 1.0;
+    cycle.allowanceX = 0.5;
+    cycle.allowanceZ = 0.5;
+    const Vec2 call(5.0, 20.0);
+    LathePath path(call);
+    LatheError error;
+    ASSERT_TRUE(expandPatternRepeat(cycle, call, path, error)) << error.messageTemplate;
+    const std::vector<LatheStep>& s = path.steps();
+    ASSERT_EQ(s.size(), 9u + 9u);
+    expectPass(s, 0,
+               {{0.5, 11.0},
+                {-10.5, 11.0},
+                {-10.5, 5.5},
+                {-9.5, 5.0},
+                {-19.5, 5.0},
+                {-19.5, 11.0},
+                {-30.0, 11.0}});
+    expectPass(s, 9,
+               {{0.5, 10.5},
+                {-10.5, 10.5},
+                {-10.5, 5.5},
+                {-8.5, 4.5},
+                {-19.5, 4.5},
+                {-19.5, 10.5},
+                {-30.0, 10.5}});
+    for (size_t k = 1; k < s.size(); ++k) {
+        if (s[k].kind != Kind::Feed) continue;
+        for (int j = 0; j <= 20; ++j) {
+            const Vec2 p = s[k - 1].to + (s[k].to - s[k - 1].to) * (j / 20.0);
+            EXPECT_FALSE(withinAllowances(cycle, p, 0.5, 0.5)) << "step " << k;
+        }
+    }
+}
+
+TEST(PatternRepeat, AllowanceInZNeverComesCloserThanTheAllowancesOverRandomProfiles) {
+    // Grooves, valleys and shoulders along -Z with L0.4 M0.7: no point of any pass lies closer
+    // to the profile than 0.7 along Z and 0.4 along X at once.
+    std::mt19937 random(1717);
+    std::uniform_real_distribution<double> length(0.5, 8.0);
+    std::uniform_real_distribution<double> rise(-6.0, 6.0);
+    for (int trial = 0; trial < 100; ++trial) {
+        PatternRepeat cycle;
+        cycle.start = Vec2(0.0, 10.0);
+        Vec2 at = cycle.start;
+        for (int i = 0; i < 4; ++i) {
+            // A step along Z, then a wall straight up or down: grooves of every width.
+            at = Vec2(at.x() - length(random), at.y());
+            cycle.elements.push_back(lineTo(at.x(), at.y()));
+            at = Vec2(at.x(), std::max(2.0, at.y() + rise(random)));
+            cycle.elements.push_back(lineTo(at.x(), at.y()));
+        }
+        at = Vec2(at.x() - length(random), at.y());
+        cycle.elements.push_back(lineTo(at.x(), at.y()));
+        cycle.stock = 4.0;
+        cycle.step = 1.5;
+        cycle.allowanceX = 0.4;
+        cycle.allowanceZ = 0.7;
+        const Vec2 call(10.0, 60.0);
+        LathePath path(call);
+        LatheError error;
+        ASSERT_TRUE(expandPatternRepeat(cycle, call, path, error))
+            << "trial " << trial << ": " << error.messageTemplate;
+        Vec2 from = call;
+        for (const LatheStep& step : path.steps()) {
+            if (step.kind == Kind::Feed) {
+                for (int j = 0; j <= 8; ++j) {
+                    const Vec2 p = from + (step.to - from) * (j / 8.0);
+                    ASSERT_FALSE(withinAllowances(cycle, p, 0.7, 0.4)) << "trial " << trial;
+                }
+            }
+            from = step.to;
+        }
+    }
 }
 
 TEST(PatternRepeat, PassesStopAtTheProfilesEndAlongZ) {

@@ -104,5 +104,59 @@ TEST(ReachableProfile, ALeadingEdgeBelowNinetyDegreesBridgesRisingWalls) {
     expectPoint(reached[4].end, -30, 20);
 }
 
+ProfileElement arcTo(double z, double x, double cz, double cx, bool ccw, uint32_t line = 0) {
+    ProfileElement e;
+    e.end = Vec2(z, x);
+    e.centre = Vec2(cz, cx);
+    e.ccw = ccw;
+    e.line = line;
+    return e;
+}
+
+TEST(ReachableProfile, ACoveTighterThanTheNoseIsLeftWhereTheNoseStops) {
+    // A half-round cove of radius 1 (centre Z-11 r20) in r20, nose R1.5: the nose rests on the
+    // cove's edges (Z-10, r20) and (Z-12, r20) with its centre sqrt(1.5^2 - 1^2) above r20 and
+    // dips to r20 + sqrt(1.25) - 1.5; the profile there is that arc of the nose, clockwise, in
+    // place of the cove (line 7). No angle data: only the nose counts.
+    const std::vector<ProfileElement> profile{lineTo(-10, 20), arcTo(-12, 20, -11, 20, false, 7),
+                                              lineTo(-30, 20)};
+    for (const InsertGeometry& insert :
+         {InsertGeometry{0.0, 0.0, 1.5}, InsertGeometry{93.0, 35.0, 1.5}}) {
+        const auto reached = reachableProfile(Vec2(0, 20), profile, kFeed, kOutward, insert);
+        ASSERT_EQ(reached.size(), 3u);
+        expectPoint(reached[0].end, -10, 20);
+        ASSERT_TRUE(reached[1].centre);
+        expectPoint(*reached[1].centre, -11, 20 + std::sqrt(1.25));
+        EXPECT_FALSE(reached[1].ccw);
+        expectPoint(reached[1].end, -12, 20);
+        EXPECT_EQ(reached[1].line, 7u);
+        expectPoint(reached[2].end, -30, 20);
+    }
+    // A nose of R1 fits the cove: nothing changes.
+    const auto fits = reachableProfile(Vec2(0, 20), profile, kFeed, kOutward, {0.0, 0.0, 1.0});
+    ASSERT_EQ(fits.size(), 3u);
+    expectPoint(*fits[1].centre, -11, 20);
+}
+
+TEST(ReachableProfile, ATightFilletAtAShoulderBecomesTheNosesRadius) {
+    // r10 to Z-20, a concave fillet R1 (centre Z-21 r11... no: centre (Z-19, r11)) up to the
+    // shoulder face Z-20 at r11... Written as: r10 to Z-19, fillet R1 about (Z-19, r11) to
+    // (Z-20, r11), the face up to r20, r20 to Z-30. Nose R2: the nose touches the diameter and
+    // the face with its centre at (Z-18, r12); the fillet becomes R2 about it, from (Z-18, r10)
+    // to (Z-20, r12), tangent to both.
+    const std::vector<ProfileElement> profile{lineTo(-19, 10), arcTo(-20, 11, -19, 11, false, 7),
+                                              lineTo(-20, 20), lineTo(-30, 20)};
+    const auto reached = reachableProfile(Vec2(0, 10), profile, kFeed, kOutward, {0.0, 0.0, 2.0});
+    ASSERT_EQ(reached.size(), 4u);
+    expectPoint(reached[0].end, -18, 10);
+    ASSERT_TRUE(reached[1].centre);
+    expectPoint(*reached[1].centre, -18, 12);
+    EXPECT_FALSE(reached[1].ccw);
+    expectPoint(reached[1].end, -20, 12);
+    EXPECT_EQ(reached[1].line, 7u);
+    expectPoint(reached[2].end, -20, 20);
+    expectPoint(reached[3].end, -30, 20);
+}
+
 }  // namespace
 }  // namespace kerf::cycles::lathe

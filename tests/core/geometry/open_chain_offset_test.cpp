@@ -131,5 +131,44 @@ TEST(OpenChainOffset, ChainUpToCutsAtTheFirstOutwardCrossing) {
     EXPECT_TRUE(chainUpTo(lines({{0, 0}, {10, 0}}), 0, -1.0, 1.0).empty());
 }
 
+TEST(OpenChainOffset, ABoxMovesEachElementByTheCornerItFaces) {
+    // A shoulder down along -u: v10 to u-10, down to v5, on to u-20; the material below, the
+    // offset on the right of the travel. Box u -1..1, v -0.5..2: the top moves up 2 and is
+    // stretched by the box's width (u1 to u-11), the wall faces -u and moves by -1 from v12
+    // down, the floor moves up 2 (v7) and meets the wall's copy at u-11: the loop the box leaves
+    // in the concave corner is cut away.
+    Box2 box;
+    box.min = Vec2(-1.0, -0.5);
+    box.max = Vec2(1.0, 2.0);
+    const auto offset =
+        offsetOpenChainByBox(lines({{0, 10}, {-10, 10}, {-10, 5}, {-20, 5}}), box, -1.0);
+    ASSERT_TRUE(offset);
+    ASSERT_EQ(offset->size(), 3u);
+    expectConnected(*offset);
+    expectPoint((*offset)[0].start, 1, 12);
+    expectPoint((*offset)[0].end, -11, 12);
+    expectPoint((*offset)[1].end, -11, 7);
+    expectPoint((*offset)[2].end, -21, 7);
+}
+
+TEST(OpenChainOffset, ABoxMovesAnArcByTheCornerItsNormalPointsTo) {
+    // A convex quarter circle R5 about (0, 0) from (5, 0) to (0, 5), offset outwards (right of
+    // its counter-clockwise travel) by the box +-1: its normal points up and right all along,
+    // so it moves by (1, 1) as a whole: one arc R5 about (1, 1) from (6, 1) to (1, 6).
+    Box2 box;
+    box.min = Vec2(-1.0, -1.0);
+    box.max = Vec2(1.0, 1.0);
+    const std::vector<PlanarSegment> quarter{
+        PlanarSegment{Kind::Arc, Vec2(5.0, 0.0), Vec2(0.0, 5.0), Vec2(0.0, 0.0), kPi / 2.0}};
+    const auto offset = offsetOpenChainByBox(quarter, box, -1.0);
+    ASSERT_TRUE(offset);
+    ASSERT_EQ(offset->size(), 1u);
+    EXPECT_EQ((*offset)[0].kind, Kind::Arc);
+    expectPoint((*offset)[0].start, 6, 1);
+    expectPoint((*offset)[0].center, 1, 1);
+    expectPoint((*offset)[0].end, 1, 6);
+    EXPECT_NEAR((*offset)[0].sweep, kPi / 2.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace kerf

@@ -526,5 +526,108 @@ TEST_F(FagorRun, ACycleMachinesTheClosestProfileTheToolReaches) {
     EXPECT_EQ(count("LINE X5.0000 Z-15.0000 F0.100"), 1) << testing::PrintToString(out.lines);
 }
 
+TEST_F(FagorRun, ACoveTighterThanTheNoseIsMachinedAsFarAsTheNoseReaches) {
+    // A half-round cove R1 about (Z-11, r20) in r20, nose R1.5 and no tool table: the check warns
+    // at G68 (line 7 named), and the finishing pass runs over the arc of the nose resting on the
+    // cove's edges (centre sqrt(1.5^2 - 1) = 1.1180 above r20, bottom at r19.6180), never at the
+    // cove's bottom r19.
+    write("fagor_tool_offsets.tab", "D1 F3 R1.5\n");
+    const std::string program =
+        "N1 G90 G95 F0.3 S800 T1 D1 M3\n"
+        "N2 G00 X70 Z2\n"
+        "N3 G68 X0 Z0 C3 D0.5 H0.1 S10 E20\n"
+        "N4 M30\n"
+        "N10 G01 X40 Z0\n"
+        "G01 Z-10\n"
+        "G02 X40 Z-12 R1\n"
+        "G01 Z-30\n"
+        "N20 G01 X60 Z-30\n";
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(diagnostics(), (root / "program.pim").string() +
+                                 ":3:4: warning: tool T1 cannot reach the profile at line 7: the "
+                                 "arc's radius 1 is smaller than the nose radius 1.5\n");
+    auto count = [&](const std::string& text) {
+        return std::count_if(out.lines.begin(), out.lines.end(), [&](const std::string& line) {
+            return line.find(text) != std::string::npos;
+        });
+    };
+    EXPECT_EQ(count("ARC X19.6180 Z-11.0000 CENTER Z-11.0000 X21.1180 PLANE ZX SWEEP -41.8103 "
+                    "F0.100"),
+              1)
+        << testing::PrintToString(out.lines);
+    EXPECT_EQ(count("X19.0000"), 0);
+    // A nose of R1 fits: the cove is followed.
+    out.lines.clear();
+    write("fagor_tool_offsets.tab", "D1 F3 R1\n");
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    EXPECT_EQ(diagnostics(), "");
+    EXPECT_EQ(count("ARC X19.0000 Z-11.0000 CENTER Z-11.0000 X20.0000"), 1)
+        << testing::PrintToString(out.lines);
+}
+
+TEST_F(FagorRun, G84RefusesAHollowArcTighterThanTheNose) {
+    // G84 from (Z0, r10) to (Z-1, r11) about (Z0, r11): a hollow quarter of R1 (it bulges away
+    // from the call point). With the nose R1.5 it is refused at the cycle; R0.8 runs; the
+    // convex quarter about (Z-1, r10) runs with R1.5.
+    write("fagor_tool_offsets.tab", "D1 F3 R1.5\n");
+    const std::string hollow =
+        "N1 G90 G95 F0.3 S800 T1 D1 M3\n"
+        "N2 G00 X60 Z5\n"
+        "N3 G84 X20 Z0 Q22 R-1 C1 I1 K0\n"
+        "N4 M30\n";
+    EXPECT_EQ(run(hollow), interp::RunStatus::Failed);
+    EXPECT_EQ(diagnostics(), (root / "program.pim").string() +
+                                 ":3:4: error: the arc's radius 1 is smaller than the tool nose "
+                                 "radius 1.5: the nose cannot follow it\n");
+    write("fagor_tool_offsets.tab", "D1 F3 R0.8\n");
+    EXPECT_EQ(run(hollow), interp::RunStatus::Finished) << diagnostics();
+    write("fagor_tool_offsets.tab", "D1 F3 R1.5\n");
+    std::string convex = hollow;
+    convex.replace(convex.find("I1 K0"), 5, "I0 K-1");
+    EXPECT_EQ(run(convex), interp::RunStatus::Finished) << diagnostics();
+}
+
+TEST_F(FagorRun, CycleFeedsKeepThePerRevolutionModeWhenTheCallHasNoFeed) {
+    // G95 without any F: the roughing passes run at the maximum feed (per minute, as F0), but
+    // the finishing pass H0.1 is 0.1 mm/rev: the stream switches to per revolution before it
+    // (it stayed per minute: 0.1 mm/min). G68 leaves the feed H active: N4 runs at 0.1 mm/rev.
+    const std::string program =
+        "N1 G90 G95 S800 M3\n"
+        "N2 G00 X70 Z2\n"
+        "N3 G68 X40 Z0 C5 H0.1 S10 E20\n"
+        "N4 G01 X80\n"
+        "N5 M30\n"
+        "N10 G01 X40 Z-10\n"
+        "N20 G01 X60\n";
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    const auto at = [&](const std::string& line) {
+        return std::find(out.lines.begin(), out.lines.end(), line) - out.lines.begin();
+    };
+    const auto perRevolution = at("3:1 N3 FEEDMODE PER-REV");
+    const auto finishing = at("3:1 N3 LINE X20.0000 Z0.0000 F0.100");
+    ASSERT_LT(finishing, static_cast<long>(out.lines.size())) << testing::PrintToString(out.lines);
+    EXPECT_EQ(perRevolution + 1, finishing) << testing::PrintToString(out.lines);
+    EXPECT_EQ(at("4:1 N4 LINE X40.0000 Z2.0000 F0.100") + 1, at("5:1 N5 SPINDLE STOP S800.000"))
+        << testing::PrintToString(out.lines);
+}
+
+TEST_F(FagorRun, CycleFeedsAreInInchesUnderG70) {
+    // G70: F0.01 in/rev is 0.254 mm/rev, the finishing feed H0.004 of G81 0.1016 mm/rev (it
+    // was sent as 0.004 mm/rev).
+    const std::string program =
+        "N1 G70 G90 G95 F0.01 S800 M3\n"
+        "N2 G00 X2.8 Z0.1\n"
+        "N3 G81 X2.4 Z0 Q2.4 R-0.4 C0.2 H0.004\n"
+        "N4 M30\n";
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    const auto count = [&](const std::string& line) {
+        return std::count(out.lines.begin(), out.lines.end(), line);
+    };
+    EXPECT_EQ(count("3:1 N3 LINE X30.4800 Z-10.1600 F0.254"), 1)
+        << testing::PrintToString(out.lines);
+    EXPECT_EQ(count("3:1 N3 LINE X30.4800 Z-10.1600 F0.102"), 1)
+        << testing::PrintToString(out.lines);
+}
+
 }  // namespace
 }  // namespace kerf::fagor
