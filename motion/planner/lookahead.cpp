@@ -201,6 +201,22 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
             entry.limits = kept;
         }
     }
+    // Where the highest share leaves the element's velocity limit as it is (a line, a gently
+    // curved span of a fitted raster row), the acceleration goes up to the top share and the
+    // jerk stays (velocity_limits.h): the rows of a 0.05 mm raster climbed at 90 % where the
+    // bound climbs at 100 %. A short element (vertex noise, a blend) after one at the highest
+    // share keeps it, as above: each change of share is a point with a = 0.
+    const Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
+    const bool mayLeaveWidest = e.geometry.length > kKeepShareMaxLengthMm || !previous ||
+                                !sameLimits(previous->limits, widest);
+    if (!ownShare && e.limits.accel <= 0.0 && mayLeaveWidest && sameLimits(entry.limits, widest)) {
+        const Limits top = topTangentialLimits(m_model, entry.bounds);
+        const double widestCap =
+            elementVelocityCap(m_model, e.geometry, entry.bounds, widest, entry.contourBudget);
+        if (elementVelocityCap(m_model, e.geometry, entry.bounds, top, entry.contourBudget) >=
+            std::min(nominal, widestCap))
+            entry.limits = top;
+    }
     // The share chosen by the summed peaks (velocity_limits.h); the limit itself phase-aware.
     entry.localCap =
         elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits, entry.contourBudget);

@@ -30,6 +30,11 @@ Limits tangentialLimits(const MachineModel& model, const AxisBounds& bounds, dou
     return {accel * share, jerk * share};
 }
 
+Limits topTangentialLimits(const MachineModel& model, const AxisBounds& bounds) {
+    const Limits whole = tangentialLimits(model, bounds, 1.0);
+    return {whole.accel * kTopAccelShare, whole.jerk * kTangentialShares[0]};
+}
+
 namespace {
 
 constexpr double kQuarterTurn = 1.5707963267948966192;

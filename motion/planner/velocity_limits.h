@@ -21,6 +21,15 @@ inline constexpr double kTangentialShares[] = {0.9, 0.6, 0.3, 0.1, 0.02};
 
 Limits tangentialLimits(const MachineModel& model, const AxisBounds& bounds, double share);
 
+// Above the shares, for an element whose velocity limit the top share does not lower (a line, a
+// gently curved span): 98 % of the acceleration with the jerk of the highest share, whose
+// remaining 10 % the curvature steps at the element's ends need (raising both to 95 % made the
+// FIGURES rows at J = 50000 4 % slower; 100 % of the acceleration left some spans of a fitted row
+// below it and added points with a = 0 between them).
+inline constexpr double kTopAccelShare = 0.98;
+
+Limits topTangentialLimits(const MachineModel& model, const AxisBounds& bounds);
+
 // Highest velocity on the element for velocity, acceleration, continuous jerk and filter
 // contour error (`contourBudget` mm), given tangential limits.
 double elementVelocityCap(const MachineModel& model, const PathGeometry& geometry,
