@@ -4,6 +4,8 @@
 #include <numbers>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/cycles/probing/probe_geometry.h"
 
 namespace kerf::cycles::probing {
