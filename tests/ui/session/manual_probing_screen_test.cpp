@@ -283,6 +283,9 @@ TEST_F(ManualProbingScreen, ToolLengthTouchOffWritesLIntoTheToolTable) {
     // The probe (tool 1, L 50) stands with its tip shown at Z +0.3 where it rests on the top
     // (Z 0): the operator enters 0 and TOOL.T's L becomes 50.3.
     moveTo(50, 30, 0.3);
+    // Touch off once the drives have settled the last micrometres.
+    ASSERT_TRUE(
+        processUntil([&] { return std::fabs(session->status().axes[2].actual - 0.3) < 1e-7; }));
     DialogAnswers answers({0.0});
     press("toolLengthTouchOff");
     ASSERT_TRUE(processUntil([&] { return answers.answered() == 1; }, 5s));
