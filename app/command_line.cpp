@@ -55,6 +55,10 @@ void addRunOptions(CLI::App& run, RunOptions& options) {
     run.add_option("--work-offset", options.workOffset,
                    "machine coordinates of the workpiece origin on the axes named, e.g. "
                    "Z-300 (default: the machine file's presets)");
+    run.add_option("--preset", options.preset,
+                   "the active preset: row N of PRESET.PR in the NC root, its axes and basic "
+                   "rotation (SPC); --work-offset still replaces the axes it names")
+        ->check(CLI::NonNegativeNumber);
     run.add_option("--operator-input", options.operatorInput,
                    "the operator's inputs: IBn=value for the IB variables any FAGOR program "
                    "reads (e.g. IB3=40,IB1=6.25); with --user-screen also its answers in order, "

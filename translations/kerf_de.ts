@@ -298,8 +298,8 @@
         <translation>Werkzeugkorrektur D%1: %2 = %3 mm</translation>
     </message>
     <message>
-        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
-        <translation>Antasten: noch kein Werkstück bekannt: zuerst sein Programm (BLK FORM) ausführen</translation>
+        <source>Tool %1: L = %2 mm</source>
+        <translation>Werkzeug %1: L = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -1112,6 +1112,34 @@ Maschine: %3</translation>
     <message>
         <source>Rotary axes</source>
         <translation>Drehachsen</translation>
+    </message>
+    <message>
+        <source>Manual probing</source>
+        <translation>Manuelles Antasten</translation>
+    </message>
+    <message>
+        <source>Basic rotation</source>
+        <translation>Grunddrehung</translation>
+    </message>
+    <message>
+        <source>Probed %1</source>
+        <translation>Angetastet %1</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Durchmesser</translation>
+    </message>
+    <message>
+        <source>Plane A</source>
+        <translation>Ebene A</translation>
+    </message>
+    <message>
+        <source>Plane B</source>
+        <translation>Ebene B</translation>
+    </message>
+    <message>
+        <source>Tool length T%1</source>
+        <translation>Werkzeuglänge T%1</translation>
     </message>
 </context>
 <context>
@@ -8257,6 +8285,38 @@ wählen</translation>
         <translation>M94 {1}: die Maschine hat keine Drehachse {1}</translation>
     </message>
     <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest X, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Simuliertes Rohteil eines Programms ohne BLK FORM: sein kleinstes X, Werkstückkoordinaten des Presets der Maschinendatei; schreiben Sie min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Y, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Simuliertes Rohteil eines Programms ohne BLK FORM: sein kleinstes Y, Werkstückkoordinaten des Presets der Maschinendatei; schreiben Sie min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Z, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Simuliertes Rohteil eines Programms ohne BLK FORM: sein kleinstes Z, Werkstückkoordinaten des Presets der Maschinendatei; schreiben Sie min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest X, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Simuliertes Rohteil eines Programms ohne BLK FORM: sein größtes X, Werkstückkoordinaten des Presets der Maschinendatei; schreiben Sie max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Y, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Simuliertes Rohteil eines Programms ohne BLK FORM: sein größtes Y, Werkstückkoordinaten des Presets der Maschinendatei; schreiben Sie max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Z, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Simuliertes Rohteil eines Programms ohne BLK FORM: sein größtes Z, Werkstückkoordinaten des Presets der Maschinendatei; schreiben Sie max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: no tool in the spindle</source>
+        <translation>Werkzeuglänge ankratzen: kein Werkzeug in der Spindel</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: tool {1} is not in TOOL.T</source>
+        <translation>Werkzeuglänge ankratzen: Werkzeug {1} steht nicht in TOOL.T</translation>
+    </message>
+    <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>der Bogenradius {1} ist kleiner als der Schneidenradius {2} des Werkzeugs: die Schneide kann ihm nicht folgen</translation>
     </message>
@@ -8513,6 +8573,30 @@ kalibrieren</translation>
 %2/%3</source>
         <translation>Tastpunkt %1
 %2/%3</translation>
+    </message>
+    <message>
+        <source>Tool length
+touch-off</source>
+        <translation>Werkzeuglänge
+ankratzen</translation>
+    </message>
+    <message>
+        <source>Tool length touch-off</source>
+        <translation>Werkzeuglänge ankratzen</translation>
+    </message>
+    <message>
+        <source>Z of the surface the tool touches</source>
+        <translation>Z der Fläche, die das Werkzeug berührt</translation>
+    </message>
+    <message>
+        <source>Probing PL: A %1 degrees, B %2 degrees</source>
+        <translation>Antasten PL: A %1 Grad, B %2 Grad</translation>
+    </message>
+    <message>
+        <source>Probing
+PL</source>
+        <translation>Antasten
+PL</translation>
     </message>
 </context>
 </TS>

@@ -298,8 +298,8 @@
         <translation>Corrector D%1: %2 = %3 mm</translation>
     </message>
     <message>
-        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
-        <translation>Palpación: aún no se conoce ninguna pieza: ejecute primero su programa (BLK FORM)</translation>
+        <source>Tool %1: L = %2 mm</source>
+        <translation>Herramienta %1: L = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -1112,6 +1112,34 @@ Máquina: %3</translation>
     <message>
         <source>Rotary axes</source>
         <translation>Ejes giratorios</translation>
+    </message>
+    <message>
+        <source>Manual probing</source>
+        <translation>Palpación manual</translation>
+    </message>
+    <message>
+        <source>Basic rotation</source>
+        <translation>Giro básico</translation>
+    </message>
+    <message>
+        <source>Probed %1</source>
+        <translation>Palpado %1</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Diámetro</translation>
+    </message>
+    <message>
+        <source>Plane A</source>
+        <translation>Plano A</translation>
+    </message>
+    <message>
+        <source>Plane B</source>
+        <translation>Plano B</translation>
+    </message>
+    <message>
+        <source>Tool length T%1</source>
+        <translation>Longitud de herramienta T%1</translation>
     </message>
 </context>
 <context>
@@ -8257,6 +8285,38 @@ solución</translation>
         <translation>M94 {1}: la máquina no tiene eje rotativo {1}</translation>
     </message>
     <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest X, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Pieza en bruto simulada de un programa sin BLK FORM: su X mínimo, coordenadas de pieza del preset del archivo de máquina; escriba min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Y, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Pieza en bruto simulada de un programa sin BLK FORM: su Y mínimo, coordenadas de pieza del preset del archivo de máquina; escriba min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Z, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Pieza en bruto simulada de un programa sin BLK FORM: su Z mínimo, coordenadas de pieza del preset del archivo de máquina; escriba min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest X, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Pieza en bruto simulada de un programa sin BLK FORM: su X máximo, coordenadas de pieza del preset del archivo de máquina; escriba max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Y, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Pieza en bruto simulada de un programa sin BLK FORM: su Y máximo, coordenadas de pieza del preset del archivo de máquina; escriba max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Z, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Pieza en bruto simulada de un programa sin BLK FORM: su Z máximo, coordenadas de pieza del preset del archivo de máquina; escriba max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: no tool in the spindle</source>
+        <translation>Medición de longitud por contacto: no hay herramienta en el cabezal</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: tool {1} is not in TOOL.T</source>
+        <translation>Medición de longitud por contacto: la herramienta {1} no está en TOOL.T</translation>
+    </message>
+    <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>el radio del arco {1} es menor que el radio de punta {2} de la herramienta: la punta no puede seguirlo</translation>
     </message>
@@ -8514,6 +8574,30 @@ herramienta</translation>
 %2/%3</source>
         <translation>Palpar %1
 %2/%3</translation>
+    </message>
+    <message>
+        <source>Tool length
+touch-off</source>
+        <translation>Longitud
+por contacto</translation>
+    </message>
+    <message>
+        <source>Tool length touch-off</source>
+        <translation>Medición de longitud por contacto</translation>
+    </message>
+    <message>
+        <source>Z of the surface the tool touches</source>
+        <translation>Z de la superficie que toca la herramienta</translation>
+    </message>
+    <message>
+        <source>Probing PL: A %1 degrees, B %2 degrees</source>
+        <translation>Palpación PL: A %1 grados, B %2 grados</translation>
+    </message>
+    <message>
+        <source>Probing
+PL</source>
+        <translation>Palpación
+PL</translation>
     </message>
 </context>
 </TS>

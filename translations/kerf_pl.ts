@@ -299,8 +299,8 @@
         <translation>Korekcja narzędzia D%1: %2 = %3 mm</translation>
     </message>
     <message>
-        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
-        <translation>Pomiar: przedmiot nie jest jeszcze znany: najpierw wykonaj jego program (BLK FORM)</translation>
+        <source>Tool %1: L = %2 mm</source>
+        <translation>Narzędzie %1: L = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -1115,6 +1115,34 @@ Maszyna: %3</translation>
     <message>
         <source>Rotary axes</source>
         <translation>Osie obrotowe</translation>
+    </message>
+    <message>
+        <source>Manual probing</source>
+        <translation>Pomiar ręczny sondą</translation>
+    </message>
+    <message>
+        <source>Basic rotation</source>
+        <translation>Obrót podstawowy</translation>
+    </message>
+    <message>
+        <source>Probed %1</source>
+        <translation>Zmierzono %1</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Średnica</translation>
+    </message>
+    <message>
+        <source>Plane A</source>
+        <translation>Płaszczyzna A</translation>
+    </message>
+    <message>
+        <source>Plane B</source>
+        <translation>Płaszczyzna B</translation>
+    </message>
+    <message>
+        <source>Tool length T%1</source>
+        <translation>Długość narzędzia T%1</translation>
     </message>
 </context>
 <context>
@@ -8260,6 +8288,38 @@ rozwiązanie</translation>
         <translation>M94 {1}: maszyna nie ma osi obrotowej {1}</translation>
     </message>
     <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest X, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Symulowany półfabrykat programu bez BLK FORM: jego najmniejsze X, współrzędne przedmiotu presetu pliku maszyny; zapisz min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Y, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Symulowany półfabrykat programu bez BLK FORM: jego najmniejsze Y, współrzędne przedmiotu presetu pliku maszyny; zapisz min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Z, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Symulowany półfabrykat programu bez BLK FORM: jego najmniejsze Z, współrzędne przedmiotu presetu pliku maszyny; zapisz min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest X, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Symulowany półfabrykat programu bez BLK FORM: jego największe X, współrzędne przedmiotu presetu pliku maszyny; zapisz max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Y, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Symulowany półfabrykat programu bez BLK FORM: jego największe Y, współrzędne przedmiotu presetu pliku maszyny; zapisz max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Z, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Symulowany półfabrykat programu bez BLK FORM: jego największe Z, współrzędne przedmiotu presetu pliku maszyny; zapisz max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: no tool in the spindle</source>
+        <translation>Pomiar długości przez dotknięcie: brak narzędzia we wrzecionie</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: tool {1} is not in TOOL.T</source>
+        <translation>Pomiar długości przez dotknięcie: narzędzia {1} nie ma w TOOL.T</translation>
+    </message>
+    <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>promień łuku {1} jest mniejszy niż promień naroża narzędzia {2}: naroże nie może za nim podążać</translation>
     </message>
@@ -8517,6 +8577,30 @@ narzędzia</translation>
 %2/%3</source>
         <translation>Dotknij %1
 %2/%3</translation>
+    </message>
+    <message>
+        <source>Tool length
+touch-off</source>
+        <translation>Długość
+przez dotyk</translation>
+    </message>
+    <message>
+        <source>Tool length touch-off</source>
+        <translation>Pomiar długości przez dotknięcie</translation>
+    </message>
+    <message>
+        <source>Z of the surface the tool touches</source>
+        <translation>Z powierzchni, której dotyka narzędzie</translation>
+    </message>
+    <message>
+        <source>Probing PL: A %1 degrees, B %2 degrees</source>
+        <translation>Pomiar PL: A %1 stopni, B %2 stopni</translation>
+    </message>
+    <message>
+        <source>Probing
+PL</source>
+        <translation>Pomiar
+PL</translation>
     </message>
 </context>
 </TS>

@@ -298,8 +298,8 @@
         <translation>Corretor D%1: %2 = %3 mm</translation>
     </message>
     <message>
-        <source>Probing: no workpiece is known yet: run its program (BLK FORM) first</source>
-        <translation>Apalpação: ainda não se conhece nenhuma peça: execute primeiro o seu programa (BLK FORM)</translation>
+        <source>Tool %1: L = %2 mm</source>
+        <translation>Ferramenta %1: L = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -1113,6 +1113,34 @@ Máquina: %3</translation>
     <message>
         <source>Rotary axes</source>
         <translation>Eixos rotativos</translation>
+    </message>
+    <message>
+        <source>Manual probing</source>
+        <translation>Apalpação manual</translation>
+    </message>
+    <message>
+        <source>Basic rotation</source>
+        <translation>Rotação básica</translation>
+    </message>
+    <message>
+        <source>Probed %1</source>
+        <translation>Apalpado %1</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Diâmetro</translation>
+    </message>
+    <message>
+        <source>Plane A</source>
+        <translation>Plano A</translation>
+    </message>
+    <message>
+        <source>Plane B</source>
+        <translation>Plano B</translation>
+    </message>
+    <message>
+        <source>Tool length T%1</source>
+        <translation>Comprimento da ferramenta T%1</translation>
     </message>
 </context>
 <context>
@@ -8257,6 +8285,38 @@ solução</translation>
         <translation>M94 {1}: a máquina não tem eixo rotativo {1}</translation>
     </message>
     <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest X, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Bloco bruto simulado de um programa sem BLK FORM: o seu X mínimo, coordenadas da peça do preset do ficheiro da máquina; escreva min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Y, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Bloco bruto simulado de um programa sem BLK FORM: o seu Y mínimo, coordenadas da peça do preset do ficheiro da máquina; escreva min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its lowest Z, workpiece coordinates of the machine file&apos;s preset; write min = [x, y, z]</source>
+        <translation>Bloco bruto simulado de um programa sem BLK FORM: o seu Z mínimo, coordenadas da peça do preset do ficheiro da máquina; escreva min = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest X, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Bloco bruto simulado de um programa sem BLK FORM: o seu X máximo, coordenadas da peça do preset do ficheiro da máquina; escreva max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Y, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Bloco bruto simulado de um programa sem BLK FORM: o seu Y máximo, coordenadas da peça do preset do ficheiro da máquina; escreva max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Simulated blank of a program without BLK FORM: its highest Z, workpiece coordinates of the machine file&apos;s preset; write max = [x, y, z]</source>
+        <translation>Bloco bruto simulado de um programa sem BLK FORM: o seu Z máximo, coordenadas da peça do preset do ficheiro da máquina; escreva max = [x, y, z]</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: no tool in the spindle</source>
+        <translation>Medição do comprimento por toque: nenhuma ferramenta no fuso</translation>
+    </message>
+    <message>
+        <source>tool length touch-off: tool {1} is not in TOOL.T</source>
+        <translation>Medição do comprimento por toque: a ferramenta {1} não está em TOOL.T</translation>
+    </message>
+    <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>o raio do arco {1} é menor que o raio da ponta {2} da ferramenta: a ponta não o pode seguir</translation>
     </message>
@@ -8514,6 +8574,30 @@ ferramenta</translation>
 %2/%3</source>
         <translation>Apalpar %1
 %2/%3</translation>
+    </message>
+    <message>
+        <source>Tool length
+touch-off</source>
+        <translation>Comprimento
+por toque</translation>
+    </message>
+    <message>
+        <source>Tool length touch-off</source>
+        <translation>Medição do comprimento por toque</translation>
+    </message>
+    <message>
+        <source>Z of the surface the tool touches</source>
+        <translation>Z da superfície que a ferramenta toca</translation>
+    </message>
+    <message>
+        <source>Probing PL: A %1 degrees, B %2 degrees</source>
+        <translation>Apalpação PL: A %1 graus, B %2 graus</translation>
+    </message>
+    <message>
+        <source>Probing
+PL</source>
+        <translation>Apalpação
+PL</translation>
     </message>
 </context>
 </TS>

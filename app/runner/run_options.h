@@ -42,6 +42,8 @@ struct RunOptions {
     std::optional<std::filesystem::path> samples;  // CSV of every servo cycle's setpoints
     std::optional<double> emergencyStopAtS;        // simulated E-stop button, s after the start
     std::optional<std::string> workOffset;  // "X0,Y0,Z-300": workpiece origin, machine coords
+    // The active preset: row n of PRESET.PR in the NC root (its axes and basic rotation SPC).
+    std::optional<int> preset;
 };
 
 }  // namespace kerf::app

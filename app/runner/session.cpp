@@ -5,6 +5,8 @@
 #include "app/runner/headless_operator.h"
 #include "app/runner/workpiece_origin.h"
 #include "core/machine/machine_loader.h"
+#include "core/program/nc_root.h"
+#include "core/tables/preset_table.h"
 
 namespace kerf::app {
 
@@ -14,6 +16,25 @@ namespace {
 
 Diagnostic setupError(const std::string& file, const char* text, std::string arg = {}) {
     return Diagnostic::make(Severity::Error, "setup", file, 0, 0, text, std::move(arg));
+}
+
+// --preset n: PRESET.PR of the NC root, which must have row n.
+std::optional<tables::PresetTable> presetTable(const fs::path& ncRoot, int row,
+                                               DiagnosticList& diagnostics) {
+    const fs::path file = ncRoot / "PRESET.PR";
+    auto bytes = program::NcRoot(ncRoot).read(file);
+    auto table = bytes ? tables::PresetTable::parse(*bytes, file.string()) : bytes.error();
+    if (!table) {
+        diagnostics.push_back(table.error());
+        return std::nullopt;
+    }
+    if (table->byNumber(row) == nullptr) {
+        diagnostics.push_back(setupError(
+            file.string(), KERF_TR_NOOP("--preset {1}: the preset table has no such row"),
+            std::to_string(row)));
+        return std::nullopt;
+    }
+    return std::move(*table);
 }
 
 fs::path defaultStateDir() {
@@ -52,8 +73,6 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         return session;
     }
     session->machine = *machine;
-    const Pose origin = workpieceOrigin(session->machine, options.workOffset);
-    session->workOffset = origin;
     task::ProgramRequest request;
     if (options.dialect) {
         request.dialect = program::dialectFromName(*options.dialect);
@@ -72,6 +91,15 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         if (*output && **output != "-") request.runOutputs.push_back(fs::absolute(**output));
     }
     request.blockSkip = options.blockSkip;
+    std::optional<tables::PresetTable> presets;
+    if (options.preset) {
+        presets = presetTable(request.ncRoot, *options.preset, session->diagnostics);
+        if (!presets) return session;
+        request.basicRotationDeg = presets->basicRotationDeg(*options.preset);
+    }
+    const Pose origin = workpieceOrigin(session->machine, options.workOffset,
+                                        presets ? presets->byNumber(*options.preset) : nullptr);
+    session->workOffset = origin;
     request.presetInMachine = origin;
     request.backgroundCheck = backgroundCheck;
     request.writeFiles = writeFiles;

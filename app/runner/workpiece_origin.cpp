@@ -5,10 +5,15 @@
 namespace kerf::app {
 
 Pose workpieceOrigin(const machine::MachineConfig& machine,
-                     const std::optional<std::string>& workOffsetOption) {
+                     const std::optional<std::string>& workOffsetOption,
+                     const tables::PresetData* presetRow) {
     Pose origin;
     for (const machine::AxisConfig& axis : machine.axes) {
-        if (auto a = axisFromLetter(axis.letter)) origin[*a] = axis.presetPosition;
+        const auto a = axisFromLetter(axis.letter);
+        if (!a) continue;
+        origin[*a] = axis.presetPosition;
+        if (presetRow == nullptr) continue;
+        if (const auto value = presetRow->axis(axis.letter)) origin[*a] = *value;
     }
     if (!workOffsetOption) return origin;
     const std::optional<Pose> given = parseWorkOffset(*workOffsetOption);

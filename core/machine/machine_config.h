@@ -78,6 +78,22 @@ struct SetupErrorConfig {
     friend bool operator==(const SetupErrorConfig&, const SetupErrorConfig&) = default;
 };
 
+// The blank the simulation clamps when a milling program defines none (a setup program that only
+// probes): a box in workpiece coordinates of the machine file's preset (axes.<L>.preset), so it
+// stays where it is when probing moves the preset. In the file: [simulation.blank] with
+// min = [x, y, z] and max = [x, y, z]; the default is 100 x 60 x 40 with its top at Z 0 and its
+// corner at the origin.
+struct SimulationBlankConfig {
+    double minXMm = 0.0;
+    double minYMm = 0.0;
+    double minZMm = -40.0;
+    double maxXMm = 100.0;
+    double maxYMm = 60.0;
+    double maxZMm = 0.0;
+
+    friend bool operator==(const SimulationBlankConfig&, const SimulationBlankConfig&) = default;
+};
+
 // A calibration sphere for cycle 460, clamped with the blank: its centre in the blank's
 // programmed frame (workpiece coordinates of the start preset), so the setup error moves it
 // too. In the file: [simulation.calibration_sphere] with centre = [x, y, z] and radius; radius
@@ -173,6 +189,7 @@ struct MachineConfig {
     BarConfig bar;                              // lathe only
     ProbeWorkpieceConfig probeWorkpiece;        // simulation only
     SetupErrorConfig setupError;                // simulation only
+    SimulationBlankConfig simulationBlank;      // simulation only
     CalibrationSphereConfig calibrationSphere;  // simulation only
     ToolProbeConfig toolProbe;                  // simulation only
     std::vector<ToolErrorConfig> toolErrors;    // simulation only; each tool at most once

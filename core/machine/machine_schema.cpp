@@ -271,6 +271,60 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "Simulation: how far the real blank is turned about the tool axis, "
                            "through its programmed origin")}),
+        bindField<&MachineConfig::simulationBlank, &SimulationBlankConfig::minXMm>(
+            kMachine,
+            {.key = "simulation.blank.min.x",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated blank of a program without BLK FORM: its lowest X, "
+                 "workpiece coordinates of the machine file's preset; write min = [x, y, z]")}),
+        bindField<&MachineConfig::simulationBlank, &SimulationBlankConfig::minYMm>(
+            kMachine,
+            {.key = "simulation.blank.min.y",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated blank of a program without BLK FORM: its lowest Y, "
+                 "workpiece coordinates of the machine file's preset; write min = [x, y, z]")}),
+        bindField<&MachineConfig::simulationBlank, &SimulationBlankConfig::minZMm>(
+            kMachine,
+            {.key = "simulation.blank.min.z",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated blank of a program without BLK FORM: its lowest Z, "
+                 "workpiece coordinates of the machine file's preset; write min = [x, y, z]")}),
+        bindField<&MachineConfig::simulationBlank, &SimulationBlankConfig::maxXMm>(
+            kMachine,
+            {.key = "simulation.blank.max.x",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated blank of a program without BLK FORM: its highest X, "
+                 "workpiece coordinates of the machine file's preset; write max = [x, y, z]")}),
+        bindField<&MachineConfig::simulationBlank, &SimulationBlankConfig::maxYMm>(
+            kMachine,
+            {.key = "simulation.blank.max.y",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated blank of a program without BLK FORM: its highest Y, "
+                 "workpiece coordinates of the machine file's preset; write max = [x, y, z]")}),
+        bindField<&MachineConfig::simulationBlank, &SimulationBlankConfig::maxZMm>(
+            kMachine,
+            {.key = "simulation.blank.max.z",
+             .unit = "mm",
+             .minimum = -100000.0,
+             .maximum = 100000.0,
+             .description = KERF_TR_NOOP(
+                 "Simulated blank of a program without BLK FORM: its highest Z, "
+                 "workpiece coordinates of the machine file's preset; write max = [x, y, z]")}),
         bindField<&MachineConfig::calibrationSphere, &CalibrationSphereConfig::centreXMm>(
             kMachine, {.key = "simulation.calibration_sphere.centre.x",
                        .unit = "mm",

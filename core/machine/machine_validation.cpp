@@ -185,6 +185,17 @@ void checkMachine(const MachineConfig& config, Validator& v) {
         v.report({low, high}, KERF_TR_NOOP("{1} = {2} must be less than {3} = {4}"), low,
                  formatNumber(bounds[i][0]), high, formatNumber(bounds[i][1]));
     }
+    const SimulationBlankConfig& blank = config.simulationBlank;
+    const double blankBounds[3][2] = {
+        {blank.minXMm, blank.maxXMm}, {blank.minYMm, blank.maxYMm}, {blank.minZMm, blank.maxZMm}};
+    for (size_t i = 0; i < 3; ++i) {
+        if (blankBounds[i][0] < blankBounds[i][1]) continue;
+        const std::string axis(1, "xyz"[i]);
+        const std::string low = "simulation.blank.min." + axis;
+        const std::string high = "simulation.blank.max." + axis;
+        v.report({low, high}, KERF_TR_NOOP("{1} = {2} must be less than {3} = {4}"), low,
+                 formatNumber(blankBounds[i][0]), high, formatNumber(blankBounds[i][1]));
+    }
     checkKinematics(config, v);
     if (config.bar.diameterMm > 0.0 && config.bar.boreDiameterMm >= config.bar.diameterMm) {
         v.report({"bar.bore_diameter", "bar.diameter"},

@@ -71,6 +71,13 @@ const PresetData* PresetTable::byNumber(int number) const {
     return nullptr;
 }
 
+double PresetTable::basicRotationDeg(int number) const {
+    const PresetData* preset = byNumber(number);
+    const auto column = m_table.findColumn("SPC");
+    if (preset == nullptr || !column) return 0.0;
+    return m_table.number(preset->row, *column).value_or(0.0);
+}
+
 MaybeError PresetTable::setAxis(int number, char axis, std::optional<double> value) {
     auto row = detail::rowOfKey(m_keys, m_table, number, kMissing);
     if (!row) return row.error();

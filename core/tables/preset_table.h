@@ -41,6 +41,9 @@ public:
     const TncTable& table() const { return m_table; }
     const std::vector<PresetData>& presets() const { return m_presets; }
     const PresetData* byNumber(int number) const;
+    // The basic rotation of preset `number` (its SPC column, degrees); 0 when the row, the
+    // column or the value is missing.
+    double basicRotationDeg(int number) const;
 
     // No value empties the cell. Each edit leaves the table unchanged if it fails.
     MaybeError setAxis(int number, char axis, std::optional<double> value);

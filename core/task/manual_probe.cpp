@@ -8,6 +8,7 @@
 #include "core/tables/probe_table.h"
 #include "core/tables/tool_table.h"
 #include "core/workpiece/blank_solids.h"
+#include "core/workpiece/simulated_part.h"
 
 namespace kerf::task {
 
@@ -57,17 +58,7 @@ Expected<ManualProbe> manualProbe(const std::filesystem::path& ncRoot, int toolN
 
 workpiece::SimulatedWorkpiece manualProbingPart(const machine::MachineConfig& machine,
                                                 const canon::StockDefinition& blank) {
-    const machine::SetupErrorConfig& e = machine.setupError;
-    workpiece::SimulatedWorkpiece part(
-        workpiece::Placement{Vec3(e.shiftXMm, e.shiftYMm, e.shiftZMm), e.rotationDeg});
-    for (const workpiece::Solid& solid : workpiece::blankSolids(blank))
-        part.add(solid);
-    const machine::CalibrationSphereConfig& sphere = machine.calibrationSphere;
-    if (sphere.radiusMm > 0.0) {
-        const Vec3 centre(sphere.centreXMm, sphere.centreYMm, sphere.centreZMm);
-        part.add({workpiece::Sphere{centre, sphere.radiusMm}, true});
-    }
-    return part;
+    return workpiece::simulatedPart(&machine, workpiece::blankSolids(blank), Vec3::Zero());
 }
 
 }  // namespace kerf::task

@@ -23,6 +23,15 @@ std::array<std::optional<double>, kAxisCount> PresetStore::read() const {
     return values;
 }
 
+double PresetStore::basicRotationDeg() const {
+    std::error_code error;
+    if (!std::filesystem::exists(m_file, error)) return 0.0;
+    const auto bytes = m_root.read(m_file);
+    if (!bytes) return 0.0;
+    const auto table = tables::PresetTable::parse(*bytes, m_file.string());
+    return table ? table->basicRotationDeg(0) : 0.0;
+}
+
 namespace {
 
 // The table with a row 0 (created with the standard columns if missing), or why it cannot be read.

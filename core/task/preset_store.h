@@ -22,6 +22,8 @@ public:
     // The values row 0 sets; an axis without a value (or no table, or a table that cannot be
     // read) has none.
     std::array<std::optional<double>, kAxisCount> read() const;
+    // Row 0's basic rotation (SPC, degrees) that programs start with; 0 without one.
+    double basicRotationDeg() const;
     // Writes the origin of the given axes into row 0 atomically (axes the table has no column
     // for are left out), creating the table with the standard columns if it is missing.
     MaybeError write(const Pose& origin, AxisMask axes) const;

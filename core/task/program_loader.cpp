@@ -93,6 +93,7 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.blockSkip = request.blockSkip;
     settings.startPosition = request.startPosition.value_or(Pose{});
     settings.presetInMachine = request.presetInMachine;
+    settings.basicRotationDeg = request.basicRotationDeg;
     settings.remanentFile = request.remanentFile;
     settings.writeFiles = request.writeFiles;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);

@@ -41,6 +41,7 @@ struct ProgramRequest {
     // coordinates start from (kerf run).
     std::optional<Pose> startPosition;
     Pose presetInMachine{};  // the workpiece origin, machine coordinates (M91, FAGOR G53/G74)
+    double basicRotationDeg = 0.0;  // the active preset's basic rotation (TNC programs)
     // Check alongside execution (KlartextInterpreter::CheckMode::Background); the caller must
     // then honour Interpreter::checkFailed().
     bool backgroundCheck = false;

@@ -38,7 +38,7 @@ double solidDistance(const Solid& solid, const Vec3& p) {
 double SimulatedWorkpiece::distance(const Vec3& real) const {
     // Back into the programmed position: undo the shift, then the rotation.
     const double a = -m_placement.rotationDeg * std::numbers::pi / 180.0;
-    const Vec3 d = real - m_placement.shift;
+    const Vec3 d = real - m_placement.origin - m_placement.shift;
     const Vec3 p(d.x() * std::cos(a) - d.y() * std::sin(a),
                  d.x() * std::sin(a) + d.y() * std::cos(a), d.z());
     double material = std::numeric_limits<double>::infinity();

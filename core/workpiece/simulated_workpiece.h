@@ -34,10 +34,12 @@ struct Solid {
 };
 
 // How the real part lies compared with its programmed position: rotated by `rotationDeg` about
-// the tool axis through the programmed origin, then shifted by `shift`.
+// the tool axis through the programmed origin, then shifted by `shift`. `origin` is where the
+// solids' programmed origin lies in the coordinates of the touches (0 when they are the same).
 struct Placement {
     Vec3 shift{0.0, 0.0, 0.0};
     double rotationDeg = 0.0;
+    Vec3 origin{0.0, 0.0, 0.0};
 };
 
 // The part a simulated touch probe touches: solids combined as (union of material) minus (union

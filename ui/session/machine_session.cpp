@@ -100,6 +100,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     m_programStart.values = m_motion->world().position.values;
     request.startPosition = m_programStart;
     request.presetInMachine = presetInMachine();
+    request.basicRotationDeg = basicRotationDeg();
     request.operatorInputs = operatorInputs;
     m_programName = task::programName(path);
     return start(task::loadProgram(m_machine, request), startLine);
@@ -114,6 +115,7 @@ bool MachineSession::executeMdi(const QString& block) {
     request.startPosition = Pose{};
     request.startPosition->values = m_motion->world().position.values;
     request.presetInMachine = presetInMachine();
+    request.basicRotationDeg = basicRotationDeg();
     m_programName.clear();
     if (!start(task::loadProgram(m_machine, request), std::nullopt)) return false;
     constexpr qsizetype kMaxMdiHistory = 50;
@@ -336,6 +338,11 @@ Pose MachineSession::presetInMachine() const {
     for (size_t i = 0; i < preset.values.size(); ++i)
         preset.values[i] += m_motion->shift().values[i];
     return preset;
+}
+
+double MachineSession::basicRotationDeg() const {
+    if (m_machine.kind == machine::MachineKind::Lathe) return 0.0;
+    return m_presets.basicRotationDeg();
 }
 
 Pose MachineSession::nextProgramOrigin() {

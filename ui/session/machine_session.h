@@ -118,7 +118,8 @@ public:
     bool setPresetByEntry(Axis axis, double shownValue);
     // Manual probing (mill, Manual operation): choose a function (which clears its touches), then
     // touch from where the probe stands along an axis direction. The touch is decided on the
-    // simulated part ([simulation.blank] placed with [simulation.setup]) and the probe moves to
+    // simulated part (the last BLK FORM, else [simulation.blank], placed with
+    // [simulation.setup]) and the probe moves to
     // the trigger at the probe table's F and back. False (and a message) on a miss within DIST,
     // a deflected stylus, no probe in the spindle, or while the machine moves.
     void startManualProbing(cycles::probing::ManualProbingFunction function);
@@ -145,6 +146,11 @@ public:
     // (fagor::touchOff); the file is replaced atomically. False (and a message) while the
     // machine moves, for D outside 1-255 or when the table cannot be read or written.
     bool touchOffTool(int offset, Axis axis, double knownValue);
+    // Tool length touch-off (mill): the tool in the spindle touches a surface whose Z is
+    // `knownZ`; its L in the NC root's TOOL.T becomes the one that makes the display show that
+    // (task::touchOffToolLength; DL kept), from the next TOOL CALL on. False (and a message)
+    // while the machine moves, without a tool or when TOOL.T cannot be read or written.
+    bool touchOffToolLength(double knownZ);
     // The FAGOR offset D the last program left active (none before the first program).
     const std::optional<interp::ProgramStatus::Tool::LatheOffset>& activeLatheOffset() const {
         return m_activeLatheOffset;
@@ -152,6 +158,8 @@ public:
     // The workpiece origin in machine coordinates: the machine file's preset, then (mill) the
     // axes row 0 of PRESET.PR sets, then the entries of a lathe.
     Pose presetInMachine() const;
+    // The basic rotation programs and MDI start with: row 0's SPC on the mill.
+    double basicRotationDeg() const;
     // The origin the next program will start from (the table's row 0 read again while nothing
     // runs): what the test run checks the work area with.
     Pose nextProgramOrigin();
@@ -188,6 +196,9 @@ signals:
     // it runs, and once when it ends (an MDI block ends before the next picture).
     void programStatusChanged(const kerf::interp::ProgramStatus& status);
     void message(kerf::Severity severity, const QString& text, int line);
+    // Manual probing chose a function or made a touch (manualProbingResult once complete).
+    void manualProbingChanged();
+    void toolLengthTouchedOff(int tool, double lengthMm);
 
 private:
     bool start(task::LoadedProgram loaded, std::optional<uint32_t> startLine);

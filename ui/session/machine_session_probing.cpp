@@ -6,6 +6,8 @@
 #include "core/task/manual_probe.h"
 #include "core/task/program_loader.h"
 #include "core/task/shifted_motion_port.h"
+#include "core/task/tool_length_touch_off.h"
+#include "core/workpiece/simulated_part.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/session/machine_session.h"
 
@@ -24,6 +26,7 @@ std::string klartextPoint(const Vec3& p) {
 void MachineSession::startManualProbing(cycles::probing::ManualProbingFunction function) {
     m_probing = function;
     m_touches.clear();
+    emit manualProbingChanged();
 }
 
 bool MachineSession::probeTouch(const Vec3& direction) {
@@ -36,20 +39,17 @@ bool MachineSession::probeTouch(const Vec3& direction) {
     if (static_cast<int>(m_touches.size()) >= cycles::probing::manualTouchCount(m_probing))
         m_touches.clear();  // a new measurement of the same function
     // The part lies where the last program's blank was clamped, in that program's frame; the
-    // axes show the tip from the operator's origin now.
-    const auto& blank = m_motion->lastBlank();
-    if (!blank) {
-        emit message(Severity::Error,
-                     tr("Probing: no workpiece is known yet: run its program (BLK FORM) first"), 0);
-        return false;
-    }
-    const Vec3 partOffset = m_motion->shift().xyz() - blank->shift.xyz();
+    // axes show the tip from the operator's origin now. Before any BLK FORM: the machine's
+    // simulated blank at the machine file's preset (no shift).
+    const task::ShiftedMotionPort::PassedBlank blank = m_motion->lastBlank().value_or(
+        task::ShiftedMotionPort::PassedBlank{workpiece::simulationBlank(m_machine), Pose{}});
+    const Vec3 partOffset = m_motion->shift().xyz() - blank.shift.xyz();
     const Vec3 up(0.0, 0.0, probe->ballRadius);
     // Where the probe was sent: the drives may still be settling into it.
     const task::MachineStatus now = m_motion->status();
     const Vec3 tip(now.axes[0].nominal, now.axes[1].nominal, now.axes[2].nominal);
     const Vec3 ball = tip + partOffset + up;
-    const workpiece::SimulatedWorkpiece part = task::manualProbingPart(m_machine, blank->stock);
+    const workpiece::SimulatedWorkpiece part = task::manualProbingPart(m_machine, blank.stock);
     if (part.touches(ball, probe->ballRadius)) {
         emit message(Severity::Error, tr("Probing: the stylus is deflected already"), 0);
         return false;
@@ -67,6 +67,24 @@ bool MachineSession::probeTouch(const Vec3& direction) {
     if (!runGeneratedProgram(text)) return false;
     m_probeBallRadius = probe->ballRadius;
     m_touches.push_back({*hit - partOffset, direction});
+    emit manualProbingChanged();
+    return true;
+}
+
+bool MachineSession::touchOffToolLength(double knownZ) {
+    if (refuseWhenBusy()) return false;
+    task::ToolLengthTouch touch;
+    touch.tool = m_status.toolNumber > 0 ? m_status.toolNumber : -1;  // 0: none
+    touch.shownMm = m_motion->status().axes[static_cast<size_t>(axisIndex(Axis::Z))].actual;
+    touch.knownMm = knownZ;
+    const auto length = task::touchOffToolLength(m_ncRoot, touch);
+    if (!length) {
+        emit message(Severity::Error, translatedMessage(length.error()), 0);
+        return false;
+    }
+    emit message(Severity::Note, tr("Tool %1: L = %2 mm").arg(touch.tool).arg(*length, 0, 'f', 4),
+                 0);
+    emit toolLengthTouchedOff(touch.tool, *length);
     return true;
 }
 

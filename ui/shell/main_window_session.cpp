@@ -59,6 +59,13 @@ void MainWindow::connectSession() {
                 m_positions->setWorkingPlane(status.transformations.workingPlane);
                 if (!testRunOnScreen()) m_status->setProgramStatus(status);
             });
+    connect(m_session, &MachineSession::manualProbingChanged, m_status, [this] {
+        m_status->setManualProbing(m_session->manualProbingFunction(),
+                                   m_session->manualTouchesDone(),
+                                   m_session->manualProbingResult());
+    });
+    connect(m_session, &MachineSession::toolLengthTouchedOff, m_status,
+            &StatusTabs::setToolTouchOff);
     connectLiveRun();
     OverrideControls* overrides = m_positions->overrides();
     connect(overrides, &OverrideControls::feedOverrideChanged, m_session,

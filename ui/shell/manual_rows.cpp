@@ -170,6 +170,15 @@ SoftkeyRow manualFunctionsRow(const MachineRowContext& c) {
     if (session->machine().kind == machine::MachineKind::Lathe) {
         row.push_back({QStringLiteral("toolCalibration"), MachineRows::tr("Tool\ncalibration"),
                        [session, parent] { askToolCalibration(session, parent); }});
+    } else {
+        // The tool in the spindle touches a surface of known Z: its L in TOOL.T.
+        row.push_back({QStringLiteral("toolLengthTouchOff"),
+                       MachineRows::tr("Tool length\ntouch-off"), [session, parent] {
+                           const auto z = askPosition(
+                               parent, "toolLengthPrompt", MachineRows::tr("Tool length touch-off"),
+                               MachineRows::tr("Z of the surface the tool touches"));
+                           if (z) session->touchOffToolLength(*z);
+                       }});
     }
     return row;
 }

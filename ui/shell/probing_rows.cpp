@@ -48,6 +48,8 @@ const char* functionName(ManualProbingFunction function) {
             return "P";
         case ManualProbingFunction::Circle:
             return "CC";
+        case ManualProbingFunction::Plane:
+            return "PL";
     }
     return "";
 }
@@ -74,6 +76,15 @@ void confirmResult(MachineSession* session, QWidget* parent) {
     if (!result) {
         emit session->message(Severity::Error,
                               MachineRows::tr("Probing: the touches give no result"), 0);
+        return;
+    }
+    if (session->manualProbingFunction() == ManualProbingFunction::Plane) {
+        // Shown in the PROBE status tab; the preset table has no 3D basic rotation yet.
+        emit session->message(Severity::Note,
+                              MachineRows::tr("Probing PL: A %1 degrees, B %2 degrees")
+                                  .arg(*result->planeADeg, 0, 'f', 4)
+                                  .arg(*result->planeBDeg, 0, 'f', 4),
+                              0);
         return;
     }
     if (session->manualProbingFunction() == ManualProbingFunction::Rotation) {
@@ -139,6 +150,8 @@ SoftkeyRow probingRow(const MachineRowContext& c) {
          select(ManualProbingFunction::Corner)},
         {QStringLiteral("probeCircle"), MachineRows::tr("Probing\nCC"),
          select(ManualProbingFunction::Circle)},
+        {QStringLiteral("probePlane"), MachineRows::tr("Probing\nPL"),
+         select(ManualProbingFunction::Plane)},
         {QStringLiteral("probeDirection"),
          MachineRows::tr("Direction\n%1").arg(QLatin1String(kDirections[direction].name)),
          [session, refresh, direction] {

@@ -346,17 +346,62 @@ void StatusTabs::applyFilter() {
 }
 
 void StatusTabs::fillProbe() {
+    std::vector<Row> rows;
     if (!m_status.probe) {
-        fill(m_probe, {{tr("Probe"), tr("no result")}});
-        return;
+        rows.push_back({tr("Probe"), tr("no result")});
+    } else {
+        const auto& p = *m_status.probe;
+        rows.push_back({tr("Probe"), p.triggered ? tr("touched") : tr("not touched")});
+        for (int i = 0; i < 3; ++i) {
+            rows.push_back({axisName(i),
+                            lengthText(p.position.values[static_cast<size_t>(i)], m_status.inch)});
+        }
     }
-    const auto& p = *m_status.probe;
-    std::vector<Row> rows{{tr("Probe"), p.triggered ? tr("touched") : tr("not touched")}};
-    for (int i = 0; i < 3; ++i) {
-        rows.push_back(
-            {axisName(i), lengthText(p.position.values[static_cast<size_t>(i)], m_status.inch)});
-    }
+    addManualRows(rows);
     fill(m_probe, rows);
+}
+
+void StatusTabs::setManualProbing(
+    cycles::probing::ManualProbingFunction function, int touches,
+    const std::optional<cycles::probing::ManualProbingResult>& result) {
+    m_manualProbing = ManualProbing{function, touches, result};
+    fillProbe();
+}
+
+void StatusTabs::setToolTouchOff(int tool, double lengthMm) {
+    m_toolTouchOff = std::make_pair(tool, lengthMm);
+    fillProbe();
+}
+
+void StatusTabs::addManualRows(std::vector<Row>& rows) const {
+    using cycles::probing::ManualProbingFunction;
+    if (m_manualProbing) {
+        const ManualProbing& m = *m_manualProbing;
+        static constexpr const char* kNames[] = {"ROT", "POS", "P", "CC", "PL"};
+        rows.push_back(
+            {tr("Manual probing"), QStringLiteral("%1  %2/%3")
+                                       .arg(QLatin1String(kNames[static_cast<size_t>(m.function)]))
+                                       .arg(m.touches)
+                                       .arg(cycles::probing::manualTouchCount(m.function))});
+        if (m.result) {
+            const auto& r = *m.result;
+            if (r.basicRotationDeg)
+                rows.push_back({tr("Basic rotation"), angleText(*r.basicRotationDeg)});
+            for (int i = 0; i < 3; ++i) {
+                if (const auto v = r.point[static_cast<size_t>(i)])
+                    rows.push_back(
+                        {tr("Probed %1").arg(axisName(i)), lengthText(*v, m_status.inch)});
+            }
+            if (r.diameter)
+                rows.push_back({tr("Diameter"), lengthText(*r.diameter, m_status.inch)});
+            if (r.planeADeg) rows.push_back({tr("Plane A"), angleText(*r.planeADeg)});
+            if (r.planeBDeg) rows.push_back({tr("Plane B"), angleText(*r.planeBDeg)});
+        }
+    }
+    if (m_toolTouchOff) {
+        rows.push_back({tr("Tool length T%1").arg(m_toolTouchOff->first),
+                        lengthText(m_toolTouchOff->second, m_status.inch)});
+    }
 }
 
 }  // namespace kerf::ui

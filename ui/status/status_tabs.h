@@ -1,7 +1,9 @@
 #pragma once
 
 #include <QTabWidget>
+#include <optional>
 
+#include "core/cycles/probing/manual_probing.h"
 #include "core/interp/program_status.h"
 
 class QLineEdit;
@@ -36,6 +38,13 @@ public:
     // "F 800 mm/min", "F 0.200 mm/rev" (inch: in/min, in/rev).
     static QString feedText(const interp::ProgramStatus::Motion& motion, bool inch);
 
+    // What Manual operation measured last, shown in PROBE below the program's last touch: the
+    // probing function with its touches so far and, once complete, its result; a tool length
+    // touched off.
+    void setManualProbing(cycles::probing::ManualProbingFunction function, int touches,
+                          const std::optional<cycles::probing::ManualProbingResult>& result);
+    void setToolTouchOff(int tool, double lengthMm);
+
 public slots:
     void setProgramStatus(const kerf::interp::ProgramStatus& status);
 
@@ -52,7 +61,16 @@ private:
     void applyFilter();
     void retranslate();
 
+    void addManualRows(std::vector<std::pair<QString, QString>>& rows) const;
+
     interp::ProgramStatus m_status;
+    struct ManualProbing {
+        cycles::probing::ManualProbingFunction function;
+        int touches = 0;
+        std::optional<cycles::probing::ManualProbingResult> result;
+    };
+    std::optional<ManualProbing> m_manualProbing;
+    std::optional<std::pair<int, double>> m_toolTouchOff;  // tool, new L in mm
     QTableWidget* m_program = nullptr;
     QTableWidget* m_tool = nullptr;
     QTableWidget* m_transformations = nullptr;

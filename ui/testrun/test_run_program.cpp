@@ -5,6 +5,7 @@
 
 #include "core/canon/path_statistics.h"
 #include "core/tables/tool_table.h"
+#include "core/task/preset_store.h"
 #include "core/task/program_loader.h"
 #include "graphics/stock/machine_stock_options.h"
 
@@ -207,6 +208,10 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     request.ncRoot = input.ncRoot;
     request.dialect = input.dialect;
     request.presetInMachine = input.presetInMachine;
+    if (input.machine.kind == machine::MachineKind::Mill && !input.ncRoot.empty()) {
+        // As Program run starts: with the basic rotation of row 0 of PRESET.PR.
+        request.basicRotationDeg = task::PresetStore(input.ncRoot).basicRotationDeg();
+    }
     request.startPosition = input.startPosition;
     task::LoadedProgram program = task::loadProgram(input.machine, request);
     // A machine with rotary tables: the path and the stock on the part the tables turn.

@@ -4,6 +4,8 @@
 #include <numbers>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/cycles/probing/probe_geometry.h"
 
 namespace kerf::cycles::probing {
@@ -37,6 +39,8 @@ int manualTouchCount(ManualProbingFunction function) {
         case ManualProbingFunction::Corner:
         case ManualProbingFunction::Circle:
             return 4;
+        case ManualProbingFunction::Plane:
+            return 3;
     }
     return 1;
 }
@@ -88,6 +92,18 @@ std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction f
             result.point[1] = circle->centre.y();
             result.diameter =
                 2.0 * (hole ? circle->radius + ballRadius : circle->radius - ballRadius);
+            return result;
+        }
+        case ManualProbingFunction::Plane: {
+            // The ball centres lie on the face moved along its normal: the same slopes.
+            const Vec3 normal =
+                (touches[1].ball - touches[0].ball).cross(touches[2].ball - touches[0].ball);
+            if (normal.norm() < 1e-9 || std::fabs(normal.z()) < 1e-9) return std::nullopt;
+            const double a = -normal.x() / normal.z();
+            const double b = -normal.y() / normal.z();
+            constexpr double kDeg = 180.0 / std::numbers::pi;
+            result.planeADeg = std::atan2(b, std::sqrt(1.0 + a * a)) * kDeg;
+            result.planeBDeg = -std::atan(a) * kDeg;
             return result;
         }
     }

@@ -16,6 +16,7 @@ enum class ManualProbingFunction : uint8_t {
     Position,  // PROBING POS: one touch gives the surface coordinate in its axis
     Corner,    // PROBING P: two touches on each of two edges give their intersection
     Circle,    // PROBING CC: four touches on a hole or a stud give its centre and diameter
+    Plane,     // PROBING PL: three touches on a face give its spatial angles A and B
 };
 
 // How many touches the function needs.
@@ -34,6 +35,11 @@ struct ManualProbingResult {
     // the probing direction, (-90, 90] degrees.
     std::optional<double> basicRotationDeg;
     std::optional<double> diameter;  // Circle
+    // Plane: the spatial angles (R = Ry(B) Rx(A), C = 0) that turn the tool axis onto the face's
+    // normal, degrees; the plane z = z0 + a x + b y gives A = atan2(b, sqrt(1 + a^2)),
+    // B = -atan(a).
+    std::optional<double> planeADeg;
+    std::optional<double> planeBDeg;
 };
 
 // The result of the function's touches (exactly manualTouchCount of them), or nothing when the

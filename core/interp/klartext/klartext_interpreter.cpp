@@ -43,6 +43,12 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
         m_kinematics = machine::TableKinematics::of(*m_settings.machine);
     }
     m_programmed = m_settings.startPosition;
+    if (m_settings.basicRotationDeg != 0.0) {
+        // The preset's basic rotation turns the working plane from the first block on.
+        m_basicRotationDeg = m_settings.basicRotationDeg;
+        m_frame.setRotation(m_basicRotationDeg, false, workingPlane());
+        m_programmed = m_frame.toProgram(m_settings.startPosition);
+    }
     m_path.reset(m_programmed);
     if (!m_settings.remanentFile.empty()) {
         if (auto error = m_q.loadRemanent(m_settings.remanentFile)) {

@@ -58,6 +58,9 @@ struct KlartextSettings {
     std::filesystem::path remanentFile;             // QR parameters; empty: not kept between runs
     bool writeFiles = true;  // false: files the program writes are admitted, not written
     Pose presetInMachine{};  // the active preset (workpiece datum), machine coords
+    // The active preset's basic rotation (its SPC column: a probed misalignment), degrees about
+    // the tool axis: the program starts in the working plane turned by it.
+    double basicRotationDeg = 0.0;
     Pose startPosition{};    // tool tip at the start, workpiece coordinates
     bool blockSkip = false;  // skip blocks marked with '/'
     // Cycle 247 reads presets from this table (PRESET.PR in the NC root when not given).
@@ -590,8 +593,9 @@ private:
     int m_preparedTool = -1;
     std::map<int, tables::ToolData> m_programTools;  // TOOL DEF n L.. R.. in old programs
     std::optional<Vec3> m_blankMin;
-    // What the simulated touch probe touches: the blank (a tube's bore as a cavity).
-    std::vector<workpiece::Solid> m_blank;
+    // What the simulated touch probe touches: the blank (a tube's bore as a cavity); none before
+    // a BLK FORM (the machine's [simulation.blank] then).
+    std::optional<std::vector<workpiece::Solid>> m_blank;
     MWords m_currentM;  // M functions of the block being executed (M91/M92 change coordinates)
     std::optional<tables::FreeTable> m_openTable;
     bool m_warnedNoToolTable = false;
@@ -635,7 +639,7 @@ private:
     OldProbe m_oldProbe;
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
-    double m_basicRotationDeg = 0.0;                          // set by cycle 400 (kept in m_frame)
+    double m_basicRotationDeg = 0.0;  // the preset's, or set by 400-404 (kept in m_frame)
     std::optional<cycles::probing::FastProbing> m_fastProbing;  // cycle 441, until the end
     cycles::CoordinateFrame m_frame;
     // Rotary tables of the machine, the tilted plane, the tables' turn in m_frame, and M126.

@@ -11,6 +11,8 @@
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/probe_table.h"
+#include "core/workpiece/blank_solids.h"
+#include "core/workpiece/simulated_part.h"
 
 namespace kerf::klartext {
 
@@ -177,23 +179,14 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
 }
 
 workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
-    workpiece::Placement placement;
-    if (const machine::MachineConfig* machine = m_settings.machine) {
-        const machine::SetupErrorConfig& e = machine->setupError;
-        placement.shift = Vec3(e.shiftXMm, e.shiftYMm, e.shiftZMm);
-        placement.rotationDeg = e.rotationDeg;
-    }
-    workpiece::SimulatedWorkpiece part(placement);
-    for (const workpiece::Solid& solid : m_blank)
-        part.add(solid);
-    if (const machine::MachineConfig* machine = m_settings.machine) {
-        const machine::CalibrationSphereConfig& sphere = machine->calibrationSphere;
-        if (sphere.radiusMm > 0.0) {
-            const Vec3 centre(sphere.centreXMm, sphere.centreYMm, sphere.centreZMm);
-            part.add({workpiece::Sphere{centre, sphere.radiusMm}, true});
-        }
-    }
-    return part;
+    if (m_blank) return workpiece::simulatedPart(m_settings.machine, *m_blank, Vec3::Zero());
+    // A program that only probes (a setup program): the machine's simulated blank, clamped at
+    // the machine file's preset, so it stays put when probing moves the preset.
+    static const machine::MachineConfig kDefaults;
+    const machine::MachineConfig& machine = m_settings.machine ? *m_settings.machine : kDefaults;
+    return workpiece::simulatedPart(
+        m_settings.machine, workpiece::blankSolids(workpiece::simulationBlank(machine)),
+        workpiece::machineFilePresetIn(machine, m_settings.presetInMachine));
 }
 
 void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
@@ -444,18 +437,22 @@ bool KlartextInterpreter::writePreset(int cycle, int row, const Pose& offset) {
     return true;
 }
 
-// Cycle 400 with Q305 = 0: the basic rotation becomes active, kept as the rotation of the
-// working plane about the datum until the preset model has a basic-rotation column.
+// The basic rotation of 400-404 and 414: with Q305 = 0 it becomes active (a rotation of the
+// working plane about the datum) and is the active preset's, row 0's SPC; Q305 > 0 stores it.
 bool KlartextInterpreter::applyBasicRotation(int cycle,
                                              const cycles::probing::ProbingResults& results) {
     // Q305 > 0: stored in the row's SPC column, not activated.
     if (results.tableRow > 0) {
         return writePresetRotation(cycle, results.tableRow, *results.basicRotationDeg);
     }
+    // Q305 = 0: measured in the active (possibly turned) system, it adds to the active basic
+    // rotation, which is the active preset's: row 0's SPC, like the datum.
+    const double total = m_basicRotationDeg + *results.basicRotationDeg;
+    if (!writePresetRotation(cycle, 0, total)) return false;
     const Pose at = m_frame.toWorkpiece(m_programmed);
     m_frame.setRotation(m_frame.rotationDeg() + *results.basicRotationDeg, false, workingPlane());
     m_programmed = m_frame.toProgram(at);
-    m_basicRotationDeg = *results.basicRotationDeg;
+    m_basicRotationDeg = total;
     return true;
 }
 

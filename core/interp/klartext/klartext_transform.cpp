@@ -98,8 +98,13 @@ void KlartextInterpreter::mirrorImage(const CycleDefinition& def) {
 
 void KlartextInterpreter::rotation(const CycleDefinition& def) {
     if (def.subNumber == 0) return;
-    if (auto e = cycles::applyRotation(m_frame, def.words, workingPlane())) {
-        failCycle(*e);
+    // The basic rotation belongs to the preset: ROT turns on top of it.
+    const Plane plane = workingPlane();
+    m_frame.setRotation(m_frame.rotationDeg() - m_basicRotationDeg, false, plane);
+    auto error = cycles::applyRotation(m_frame, def.words, plane);
+    m_frame.setRotation(m_frame.rotationDeg() + m_basicRotationDeg, false, plane);
+    if (error) {
+        failCycle(*error);
         return;
     }
     // Cycle 10 cancels radius compensation (spec §9).
@@ -121,6 +126,7 @@ void KlartextInterpreter::axisScaling(const CycleDefinition& def) {
 void KlartextInterpreter::presetting(const cycles::CycleValues& values) {
     const int number = values.integer(339);
     Pose offset{};
+    double basicRotation = m_settings.basicRotationDeg;
     if (number != 0) {
         const tables::PresetTable* table = m_settings.presets;
         if (table == nullptr && !m_presetFile) {
@@ -150,8 +156,12 @@ void KlartextInterpreter::presetting(const cycles::CycleValues& values) {
                 offset[axis] = *v - m_settings.presetInMachine[axis];
             }
         }
+        basicRotation = table->basicRotationDeg(number);
     }
     m_frame.setPreset(offset);
+    // The preset brings its basic rotation (SPC) along.
+    m_basicRotationDeg = basicRotation;
+    if (basicRotation != 0.0) m_frame.setRotation(basicRotation, false, workingPlane());
     updatePathSpace();  // the preset moves the tilted plane on the axes
 }
 

@@ -1,8 +1,10 @@
 // `kerf run` on examples/probing: the machine file misplaces the blank by 1.5 / -0.8 / -0.2 mm and
 // 0.7 degrees; the probing cycles find it (docs/probing.md).
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -106,6 +108,32 @@ TEST_F(ProbingExamples, Rotation403TurnsTheCTableOfMill5) {
 
 TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
     EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
+}
+
+TEST_F(ProbingExamples, SetupWithoutBlankThenTheNextProgramRunsInItsBasicRotation) {
+    // SETUPNB probes the machine's default simulated blank (no BLK FORM) and leaves preset row 0
+    // at the real corner with the basic rotation 0.7 (SPC). ROTNEXT, run from that preset
+    // (--preset 0), ends at X+100 Y+0 Z+10: 100 mm along the turned front edge from the real
+    // corner (1.5, -0.8), 10 above the real top (-400.2), in machine coordinates.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    for (const char* options : {"", "--motion"}) {
+        EXPECT_TRUE(run("SETUPNB", options)["ok"].get<bool>()) << options;
+        const nlohmann::json report = run("ROTNEXT", std::string("--preset 0 ") + options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        const nlohmann::json& end = report["final_machine_position"];
+        EXPECT_NEAR(end["X"].get<double>(), 1.5 + 100.0 * std::cos(a), 1e-4) << options;
+        EXPECT_NEAR(end["Y"].get<double>(), -0.8 + 100.0 * std::sin(a), 1e-4) << options;
+        EXPECT_NEAR(end["Z"].get<double>(), -400.2 + 10.0, 1e-4) << options;
+    }
+}
+
+TEST_F(ProbingExamples, PresetRowThatDoesNotExistIsRefused) {
+    const std::string command = std::string("\"") + KERF_BINARY + "\" run --machine \"" +
+                                (dir / "machine.toml").string() + "\" --preset 7 \"" +
+                                (dir / "ROTNEXT.H").string() + "\" 2> \"" +
+                                (dir / "errors").string() + "\"";
+    EXPECT_NE(std::system(command.c_str()), 0);
+    EXPECT_NE(read(dir / "errors").find("PRESET.PR"), std::string::npos) << read(dir / "errors");
 }
 
 }  // namespace

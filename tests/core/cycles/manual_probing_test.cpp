@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 namespace kerf::cycles::probing {
@@ -85,6 +86,30 @@ TEST(ManualProbing, ParallelEdgesOrMissingTouchesGiveNoResult) {
     EXPECT_FALSE(evaluateManualProbing(ManualProbingFunction::Corner, parallel, kBall));
     const std::vector<ManualTouch> one{{Vec3(0.0, 0.0, 0.0), y}};
     EXPECT_FALSE(evaluateManualProbing(ManualProbingFunction::Rotation, one, kBall));
+}
+
+TEST(ManualProbing, PlaneGivesTheSpatialAnglesThatTurnTheToolAxisOntoItsNormal) {
+    // A face turned by R = Ry(-3 deg) Rx(5 deg): its normal is R e_z. Three points on it (any
+    // two directions square to the normal), the ball centres r_b along the normal from them.
+    const double a = 5.0 * std::numbers::pi / 180.0;
+    const double b = -3.0 * std::numbers::pi / 180.0;
+    const Eigen::Matrix3d rotation =
+        (Eigen::AngleAxisd(b, Vec3::UnitY()) * Eigen::AngleAxisd(a, Vec3::UnitX()))
+            .toRotationMatrix();
+    const Vec3 normal = rotation * Vec3::UnitZ();
+    const Vec3 u = rotation * Vec3::UnitX();
+    const Vec3 v = rotation * Vec3::UnitY();
+    const Vec3 origin(10.0, 20.0, -3.0);
+    std::vector<ManualTouch> touches;
+    for (const Vec3& p : {Vec3(origin), Vec3(origin + 40.0 * u), Vec3(origin + 25.0 * v - 5.0 * u)})
+        touches.push_back({p + kBall * normal, Vec3(0.0, 0.0, -1.0)});
+    const auto result = evaluateManualProbing(ManualProbingFunction::Plane, touches, kBall);
+    ASSERT_TRUE(result);
+    EXPECT_NEAR(*result->planeADeg, 5.0, 1e-9);
+    EXPECT_NEAR(*result->planeBDeg, -3.0, 1e-9);
+    // Three points on one line give no plane.
+    touches[2].ball = touches[0].ball + 2.0 * (touches[1].ball - touches[0].ball);
+    EXPECT_FALSE(evaluateManualProbing(ManualProbingFunction::Plane, touches, kBall));
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 // Manual operation beyond jogging (set a preset by entry, the handwheel, coolant), the shifted
 // workpiece origin under it, and the machine file's origin and probe box on the HMI's machine.
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <thread>
 #include <vector>
 
@@ -165,6 +167,26 @@ TEST_F(ManualFunctionsTest, ThePresetTablesRowZeroPlacesTheNextProgram) {
     EXPECT_NEAR(axis(Axis::X).machineNominal, 105.0, 1e-6);
     EXPECT_NEAR(axis(Axis::Y).machineNominal, -15.0, 1e-6);
     EXPECT_NEAR(axis(Axis::Z).machineNominal, -130.0, 1e-6);
+}
+
+TEST_F(ManualFunctionsTest, ThePresetTablesBasicRotationTurnsTheNextMdiBlock) {
+    // Row 0 carries a basic rotation of 30 degrees (SPC, as Probing ROT or cycle 400 with
+    // Q305 = 0 leave it): X+10 Y+0 is 10 mm along the turned X axis, machine X 10 cos 30 = 8.660,
+    // Y 10 sin 30 = 5.
+    const std::filesystem::path root = kerf::test::uniqueTempDir("hmi_preset_rotation");
+    std::ofstream(root / "PRESET.PR") << "BEGIN PRESET.PR MM\n"
+                                         "NR   DOC  X        Y        Z        SPC\n"
+                                         "0    -    +0       +0       -400     +30\n"
+                                         "[END]\n";
+    connect(*machine::loadMachine("mill"), root);
+    settle();
+    ASSERT_TRUE(session->executeMdi("L X+10 Y+0 Z+20 FMAX"));
+    ASSERT_TRUE(runToEnd());
+    ASSERT_EQ(session->runState(), RunState::Finished);
+    settle();
+    EXPECT_NEAR(axis(Axis::X).machineNominal, 10.0 * std::cos(std::numbers::pi / 6.0), 1e-6);
+    EXPECT_NEAR(axis(Axis::Y).machineNominal, 5.0, 1e-6);
+    EXPECT_NEAR(axis(Axis::Z).machineNominal, -380.0, 1e-6);
 }
 
 TEST_F(ManualFunctionsTest, ALatheXPresetIsEnteredAsADiameter) {

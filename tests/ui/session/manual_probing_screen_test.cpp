@@ -16,6 +16,7 @@
 
 #include "core/machine/machine_loader.h"
 #include "core/tables/preset_table.h"
+#include "core/tables/tool_table.h"
 #include "core/task/preset_store.h"
 #include "qt_test_app.h"
 #include "simulated_machine.h"
@@ -24,6 +25,7 @@
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
+#include "ui/status/status_tabs.h"
 
 namespace kerf::ui {
 namespace {
@@ -227,8 +229,10 @@ TEST_F(ManualProbingScreen, ProbingPFindsTheCornerOfTheTwoTurnedEdges) {
         << answers.labels[0].toStdString();
 }
 
-TEST_F(ManualProbingScreen, WithoutAProgramsBlankNothingIsTouched) {
-    // A session whose machine never saw a BLK FORM: the touch is refused, nothing moves.
+TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouched) {
+    // A session whose machine never saw a BLK FORM touches [simulation.blank]: the default box
+    // 0..100 x 0..60 x -40..0 at the machine file's preset, placed with the same setup error,
+    // so the left face is found where the fixture's program put it.
     window.reset();
     HmiContext context;
     context.machine = machine;
@@ -240,9 +244,59 @@ TEST_F(ManualProbingScreen, WithoutAProgramsBlankNothingIsTouched) {
     session = window->session();
     ASSERT_TRUE(session->executeMdi(QStringLiteral("TOOL CALL 1 Z")));
     ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
-    EXPECT_FALSE(session->probeTouch(Vec3(1.0, 0.0, 0.0)));
-    EXPECT_EQ(session->manualTouchesDone(), 0);
-    EXPECT_FALSE(session->busy());
+    moveTo(-10, 20, -5);
+    session->startManualProbing(cycles::probing::ManualProbingFunction::Position);
+    ASSERT_TRUE(session->probeTouch(Vec3(1.0, 0.0, 0.0)));
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    const double ball = 1.5 + (-kBall - 20.8 * std::sin(kAngle)) / std::cos(kAngle);
+    const auto result = session->manualProbingResult();
+    ASSERT_TRUE(result && result->point[0]);
+    EXPECT_NEAR(*result->point[0], ball + kBall, 1e-9);
+    // The PROBE status tab shows the function and what it found.
+    const StatusTabs& tabs = *window->findChild<StatusTabs*>();
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Probe, QStringLiteral("Manual probing")),
+              QStringLiteral("POS  1/1"));
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Probe, QStringLiteral("Probed X")),
+              StatusTabs::lengthText(ball + kBall, false));
+}
+
+TEST_F(ManualProbingScreen, ProbingPlOnTheTopGivesItsAnglesInTheProbeTab) {
+    // The top is level (the setup turns the part about Z only): A = B = 0.
+    press("probePlane");
+    EXPECT_EQ(keyText("probeTouch"), QStringLiteral("Touch PL\n0/3"));
+    chooseDirection(QStringLiteral("Z-"));
+    for (const auto& [x, y] : {std::pair{20.0, 10.0}, {80.0, 15.0}, {50.0, 50.0}}) {
+        moveTo(x, y, 5);
+        touch();
+    }
+    EXPECT_EQ(session->manualTouchesDone(), 3);
+    const StatusTabs& tabs = *window->findChild<StatusTabs*>();
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Probe, QStringLiteral("Manual probing")),
+              QStringLiteral("PL  3/3"));
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Probe, QStringLiteral("Plane A")),
+              QStringLiteral("0.000\u00b0"));
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Probe, QStringLiteral("Plane B")),
+              QStringLiteral("0.000\u00b0"));
+}
+
+TEST_F(ManualProbingScreen, ToolLengthTouchOffWritesLIntoTheToolTable) {
+    // The probe (tool 1, L 50) stands with its tip shown at Z +0.3 where it rests on the top
+    // (Z 0): the operator enters 0 and TOOL.T's L becomes 50.3.
+    moveTo(50, 30, 0.3);
+    // Touch off once the drives have settled the last micrometres.
+    ASSERT_TRUE(
+        processUntil([&] { return std::fabs(session->status().axes[2].actual - 0.3) < 1e-7; }));
+    DialogAnswers answers({0.0});
+    press("toolLengthTouchOff");
+    ASSERT_TRUE(processUntil([&] { return answers.answered() == 1; }, 5s));
+    EXPECT_EQ(answers.names[0], QStringLiteral("toolLengthPrompt"));
+    processUntil([] { return false; }, 50ms);
+    const auto tools = tables::ToolTable::load(dir / "TOOL.T");
+    ASSERT_TRUE(tools);
+    EXPECT_NEAR(tools->byNumber(1)->length, 50.3, 1e-6);
+    const StatusTabs& tabs = *window->findChild<StatusTabs*>();
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Probe, QStringLiteral("Tool length T1")),
+              StatusTabs::lengthText(tools->byNumber(1)->length, false));
 }
 
 TEST_F(ManualProbingScreen, AMissStopsWithAMessageAndCountsNoTouch) {

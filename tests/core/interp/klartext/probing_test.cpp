@@ -48,7 +48,8 @@ protected:
         settings.machine = &machine;
         settings.tools = &tools;
         settings.ncRoot = dir;
-        settings.presetInMachine[Axis::Z] = -400.0;  // the start preset, machine coordinates
+        settings.presetInMachine = presetInMachine;
+        settings.basicRotationDeg = basicRotationDeg;
         interpreter = std::make_unique<KlartextInterpreter>(sources, settings);
         writeFileAtomically(dir / "P.H", "0 BEGIN PGM P MM\n" + body + "99 END PGM P MM\n");
         if (!interpreter->load(dir / "P.H")) return interp::RunStatus::Failed;
@@ -65,6 +66,9 @@ protected:
     }
 
     fs::path dir;
+    // The start preset, machine coordinates: the built-in mill's (axes.Z.preset = -400).
+    Pose presetInMachine{{0.0, 0.0, -400.0}};
+    double basicRotationDeg = 0.0;  // the preset's SPC
     machine::MachineConfig machine;
     tables::ToolTable tools = *tables::ToolTable::parse("BEGIN TOOL.T MM\nT\n[END]\n");
     program::SourceRegistry sources;
@@ -187,9 +191,9 @@ TEST_F(ProbingTest, ErrorsOfTheManual) {
                   "  Q320=0\n  Q260=+20\n  Q305=0\n  Q333=+0\n  Q303=+1\n"),
               interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("PRB-012"), std::string::npos) << firstError();
-    // A touch that finds nothing: no blank at all.
+    // A touch that finds nothing: beside the (default simulated) blank.
     EXPECT_EQ(run("1 TOOL CALL 1 Z\n2 L Z+50 R0 FMAX\n"
-                  "3 TCH PROBE 417 DATUM IN TS AXIS\n  Q263=+0\n  Q264=+0\n  Q294=+0\n"
+                  "3 TCH PROBE 417 DATUM IN TS AXIS\n  Q263=-50\n  Q264=+0\n  Q294=+0\n"
                   "  Q320=0\n  Q260=+20\n  Q305=0\n  Q333=+0\n  Q303=+1\n"),
               interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("PRB-001"), std::string::npos) << firstError();
@@ -622,8 +626,10 @@ TEST_F(ProbingTest, Cycle460CalibratesRadiusAndLengthOnASphere) {
     // (0.5, -0.3, 0); the probe (table L 0, R 2) is really 0.1 longer with a ball of 1.98.
     // The ball-centre sphere has radius 14.48: R = 14.48 - 12.5. Its south pole rests on the
     // north pole at -7.5 when the gauge point stands 0.1 above it: L = 0.1 with Q434 = -20.
+    // The program has no BLK FORM: the simulated blank lies elsewhere on the table.
     useMachine(std::string(kProbeError) +
-               "[simulation.calibration_sphere]\ncentre = [0.0, 0.0, -20.0]\nradius = 12.5\n");
+               "[simulation.calibration_sphere]\ncentre = [0.0, 0.0, -20.0]\nradius = 12.5\n"
+               "[simulation.blank]\nmin = [100.0, 100.0, -40.0]\nmax = [200.0, 160.0, 0.0]\n");
     const std::string program =
         "1 TOOL CALL 1 Z\n2 L X+0 Y+0 Z+10 R0 FMAX\n"
         "3 TCH PROBE 460 CALIBRATE TS ON SPHERE\n  Q407=12.5\n  Q320=0\n"
@@ -644,6 +650,136 @@ TEST_F(ProbingTest, Cycle460CalibratesRadiusAndLengthOnASphere) {
     fs::remove(dir / "TOOL.T");
     ASSERT_EQ(run(program + "15\n"), interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("Q455"), std::string::npos) << firstError();
+}
+
+}  // namespace
+}  // namespace kerf::klartext
+
+namespace kerf::klartext {
+namespace {
+
+// A set-up program that only probes (no BLK FORM) touches the machine's simulated blank: the
+// built-in default, 100 x 60 x 40 with its top at Z 0 and its corner at the origin.
+TEST_F(ProbingTest, WithoutBlkFormTheDefaultSimulatedBlankIsProbed) {
+    ASSERT_EQ(run("1 TOOL CALL 1 Z\n2 L X-5 Y+30 Z+20 R0 FMAX\n"
+                  "3 TCH PROBE 0.0 REF. PLANE Q5 X+\n4 TCH PROBE 0.1 X-5 Y+30 Z-5\n"
+                  "5 TCH PROBE 0.0 REF. PLANE Q6 Z-\n6 TCH PROBE 0.1 X+50 Y+30 Z+10\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(5), leftFaceTouchX(30.0) + 2.0, 1e-9);
+    EXPECT_NEAR(q(6), -0.2, 1e-9);  // the top, 0.2 lower than programmed
+}
+
+// [simulation.blank] places the blank in the frame of the machine file's preset, turned about
+// that preset: a program whose preset lies elsewhere (X +10, Z -5 in the machine) finds it
+// there.
+TEST_F(ProbingTest, TheSimulatedBlankStaysAtTheMachineFilesPreset) {
+    useMachine(
+        "base = \"mill\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n"
+        "[simulation.blank]\nmin = [-50.0, -50.0, -20.0]\nmax = [50.0, 50.0, 0.0]\n");
+    presetInMachine = Pose{{10.0, 0.0, -405.0}};
+    ASSERT_EQ(run("1 TOOL CALL 1 Z\n2 L X-70 Y+0 Z+20 R0 FMAX\n"
+                  "3 TCH PROBE 0.0 REF. PLANE Q5 X+\n4 TCH PROBE 0.1 X-70 Y+0 Z-5\n"
+                  "5 TCH PROBE 0.0 REF. PLANE Q6 Z-\n6 TCH PROBE 0.1 X+0 Y+0 Z+15\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    // The left face x = -50 turned by a about the file's preset, then shifted: where it crosses
+    // y = 0 (the program's y = 0 is the file preset's), the ball touches r_b / cos a before it.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double t = (0.8 + 50.0 * std::sin(a)) / std::cos(a);
+    const double faceX = -50.0 * std::cos(a) - t * std::sin(a) + 1.5;
+    EXPECT_NEAR(q(5), faceX - 2.0 / std::cos(a) + 2.0 - 10.0, 1e-9);
+    EXPECT_NEAR(q(6), -0.2 + 5.0, 1e-9);  // the real top, 5 above this program's zero
+    // A blank whose sides are not ordered is refused with its keys.
+    DiagnosticList problems;
+    EXPECT_FALSE(
+        machine::parseMachine("base = \"mill\"\n[simulation.blank]\nmin = [0.0, 0.0, 0.0]\n"
+                              "max = [10.0, 10.0, -5.0]\n",
+                              "bad.toml", &problems));
+    ASSERT_FALSE(problems.empty());
+    EXPECT_NE(problems.front().format().find("simulation.blank.min.z"), std::string::npos)
+        << problems.front().format();
+}
+
+// Cycle 400 with Q305 = 0 makes the basic rotation the active preset's: row 0's SPC, next to the
+// datum 419/417 write there. The next program starts from that preset with its basic rotation
+// (as the panel and kerf run --preset 0 start it): the part lies square, so a touch along the
+// turned Y onto the front face finds it at Y 0 at both ends, where the unturned axes would see
+// it 80 tan 0.7deg apart.
+TEST_F(ProbingTest, TheNextProgramRunsInThePresetsBasicRotation) {
+    const char* setup =
+        "1 TOOL CALL 1 Z\n2 L X-20 Y-20 Z+50 R0 FMAX\n"
+        "3 TCH PROBE 400 BASIC ROTATION\n  Q263=+10\n  Q264=+0\n  Q265=+80\n  Q266=+0\n"
+        "  Q272=2\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n  Q301=1\n  Q307=0\n  Q305=0\n"
+        "4 TCH PROBE 419 DATUM IN ONE AXIS\n  Q263=+0\n  Q264=+30\n  Q261=-5\n  Q320=0\n"
+        "  Q260=+20\n  Q272=1\n  Q267=+1\n  Q305=0\n  Q333=+0\n  Q303=+1\n"
+        "5 TCH PROBE 419 DATUM IN ONE AXIS\n  Q263=+50\n  Q264=+0\n  Q261=-5\n  Q320=0\n"
+        "  Q260=+20\n  Q272=2\n  Q267=+1\n  Q305=0\n  Q333=+0\n  Q303=+1\n"
+        "6 TCH PROBE 417 DATUM IN TS AXIS\n  Q263=+50\n  Q264=+30\n  Q294=+0\n  Q320=0\n"
+        "  Q260=+20\n  Q305=0\n  Q333=+0\n  Q303=+1\n";
+    ASSERT_EQ(run(setup), interp::RunStatus::Finished) << firstError();
+    auto presets = tables::PresetTable::load(dir / "PRESET.PR");
+    ASSERT_TRUE(presets.ok());
+    const tables::PresetData* row0 = presets->byNumber(0);
+    ASSERT_NE(row0, nullptr);
+    EXPECT_NEAR(presets->basicRotationDeg(0), 0.7, 1e-9);
+    // The real corner and top in machine coordinates.
+    EXPECT_NEAR(*row0->axis('X'), 1.5, 1e-4);
+    EXPECT_NEAR(*row0->axis('Y'), -0.8, 1e-4);
+    EXPECT_NEAR(*row0->axis('Z'), -400.2, 1e-4);
+
+    presetInMachine = Pose{{*row0->axis('X'), *row0->axis('Y'), *row0->axis('Z')}};
+    basicRotationDeg = presets->basicRotationDeg(0);
+    ASSERT_EQ(run("1 TOOL CALL 1 Z\n2 L X+10 Y-10 Z+20 R0 FMAX\n"
+                  "3 TCH PROBE 0.0 REF. PLANE Q5 Y+\n4 TCH PROBE 0.1 X+10 Y-10 Z-5\n"
+                  "5 TCH PROBE 0.0 REF. PLANE Q6 Y+\n6 TCH PROBE 0.1 X+80 Y-10 Z-5\n"
+                  "7 L X+100 Y+0 Z+10 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(5), 0.0, 1e-4);
+    EXPECT_NEAR(q(6), 0.0, 1e-4);
+    // X100 Y0 is the far end of the front edge: the real corner plus 100 along the turned edge,
+    // in the stream's (unturned) frame of this preset.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const Pose end = interpreter->nominalPosition();
+    EXPECT_NEAR(end[Axis::X], 100.0 * std::cos(a), 1e-9);
+    EXPECT_NEAR(end[Axis::Y], 100.0 * std::sin(a), 1e-9);
+    EXPECT_NEAR(end[Axis::Z], 10.0, 1e-9);
+}
+
+// Cycle 10 turns on top of the preset's basic rotation; ROT 0 leaves the basic rotation.
+TEST_F(ProbingTest, Cycle10RotatesOnTopOfTheBasicRotation) {
+    basicRotationDeg = 30.0;
+    const double a = 30.0 * std::numbers::pi / 180.0;
+    const double b = 40.0 * std::numbers::pi / 180.0;
+    ASSERT_EQ(run("1 L X+10 Y+0 Z+10 R0 FMAX\n"), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 10.0 * std::cos(a), 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], 10.0 * std::sin(a), 1e-9);
+    ASSERT_EQ(run("1 CYCL DEF 10.0 ROTATION\n2 CYCL DEF 10.1 ROT+10\n3 L X+10 Y+0 Z+10 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 10.0 * std::cos(b), 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], 10.0 * std::sin(b), 1e-9);
+    ASSERT_EQ(run("1 CYCL DEF 10.0 ROTATION\n2 CYCL DEF 10.1 ROT+10\n"
+                  "3 CYCL DEF 10.0 ROTATION\n4 CYCL DEF 10.1 ROT+0\n5 L X+10 Y+0 Z+10 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 10.0 * std::cos(a), 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], 10.0 * std::sin(a), 1e-9);
+}
+
+// Cycle 247 activates a preset row with its basic rotation.
+TEST_F(ProbingTest, Cycle247BringsThePresetsBasicRotation) {
+    writeFileAtomically(dir / "PRESET.PR",
+                        "BEGIN PRESET.PR MM\nNR   DOC  X         Y         Z         SPC\n"
+                        "0         +0        +0        -400      +0\n"
+                        "3         +20       +0        -400      -90\n[END]\n");
+    ASSERT_EQ(run("1 CYCL DEF 247 DATUM SETTING\n  Q339=3\n2 L X+10 Y+0 Z+10 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    // Row 3: origin at machine X 20, turned by -90 degrees: X10 lies 10 towards -Y.
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 20.0, 1e-9);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], -10.0, 1e-9);
 }
 
 }  // namespace
