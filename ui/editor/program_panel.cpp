@@ -74,6 +74,7 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
                 }
                 m_editor->setDiagnostics(m_diagnostics);
                 emit diagnosticsChanged(m_diagnostics);
+                if (std::exchange(m_runCheck, 0) == request) reportProgramCheck();
             });
     m_autosaveTimer = new QTimer(this);
     m_autosaveTimer->setSingleShot(true);
@@ -124,6 +125,7 @@ ProgramPanel::~ProgramPanel() = default;
 void ProgramPanel::forgetDiagnostics() {
     m_checkTimer->stop();
     m_awaitedCheck = 0;
+    m_runCheck = 0;
     showSketch(nullptr);
     if (m_diagnostics.empty()) return;
     m_diagnostics.clear();
@@ -249,13 +251,36 @@ void ProgramPanel::autosave() {
 
 void ProgramPanel::checkNow() {
     m_checkTimer->stop();
+    m_runCheck = 0;
     if (!m_path.empty())
         m_awaitedCheck = m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect());
+}
+
+void ProgramPanel::checkProgram() {
+    m_checkTimer->stop();
+    if (m_path.empty() || loading()) return;
+    m_awaitedCheck = m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect(),
+                                      ProgramChecker::Depth::Run);
+    m_runCheck = m_awaitedCheck;
+    emit message(Severity::Note, tr("Checking the program: it runs without moving the machine"));
+}
+
+void ProgramPanel::reportProgramCheck() {
+    int errors = 0;
+    for (const Diagnostic& d : m_diagnostics)
+        errors += d.severity == Severity::Error ? 1 : 0;
+    if (errors == 0) {
+        emit message(Severity::Note, tr("Program check: no errors, the program runs to its end"));
+    } else {
+        emit message(Severity::Error,
+                     tr("Program check: %n error(s); the program cannot run", nullptr, errors));
+    }
 }
 
 void ProgramPanel::onEdited() {
     if (m_loading) return;
     m_sketchStale = true;
+    m_runCheck = 0;  // its result is about the text before this edit: no summary for it
     m_autosaveTimer->start();
     m_checkTimer->start();
 }
