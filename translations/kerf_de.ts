@@ -804,12 +804,9 @@ Maschine: %3</translation>
         <source>Program check: no errors, the program runs to its end</source>
         <translation>Programmprüfung: keine Fehler, das Programm läuft bis zum Ende</translation>
     </message>
-    <message numerus="yes">
-        <source>Program check: %n error(s); the program cannot run</source>
-        <translation>
-            <numerusform>Programmprüfung: %n Fehler; das Programm kann nicht laufen</numerusform>
-            <numerusform>Programmprüfung: %n Fehler; das Programm kann nicht laufen</numerusform>
-        </translation>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Programmprüfung: das Programm kann nicht laufen (Fehler: %1)</translation>
     </message>
 </context>
 <context>

@@ -804,12 +804,9 @@ Máquina: %3</translation>
         <source>Program check: no errors, the program runs to its end</source>
         <translation>Comprobación del programa: sin errores, el programa se ejecuta hasta el final</translation>
     </message>
-    <message numerus="yes">
-        <source>Program check: %n error(s); the program cannot run</source>
-        <translation>
-            <numerusform>Comprobación del programa: %n error; el programa no puede ejecutarse</numerusform>
-            <numerusform>Comprobación del programa: %n errores; el programa no puede ejecutarse</numerusform>
-        </translation>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Comprobación del programa: el programa no puede ejecutarse (errores: %1)</translation>
     </message>
 </context>
 <context>

@@ -807,13 +807,9 @@ Maszyna: %3</translation>
         <source>Program check: no errors, the program runs to its end</source>
         <translation>Sprawdzenie programu: brak błędów, program wykonuje się do końca</translation>
     </message>
-    <message numerus="yes">
-        <source>Program check: %n error(s); the program cannot run</source>
-        <translation>
-            <numerusform>Sprawdzenie programu: %n błąd; programu nie można wykonać</numerusform>
-            <numerusform>Sprawdzenie programu: %n błędy; programu nie można wykonać</numerusform>
-            <numerusform>Sprawdzenie programu: %n błędów; programu nie można wykonać</numerusform>
-        </translation>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Sprawdzenie programu: programu nie można wykonać (błędy: %1)</translation>
     </message>
 </context>
 <context>

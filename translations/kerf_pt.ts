@@ -805,12 +805,9 @@ Máquina: %3</translation>
         <source>Program check: no errors, the program runs to its end</source>
         <translation>Verificação do programa: sem erros, o programa é executado até ao fim</translation>
     </message>
-    <message numerus="yes">
-        <source>Program check: %n error(s); the program cannot run</source>
-        <translation>
-            <numerusform>Verificação do programa: %n erro; o programa não pode ser executado</numerusform>
-            <numerusform>Verificação do programa: %n erros; o programa não pode ser executado</numerusform>
-        </translation>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Verificação do programa: o programa não pode ser executado (erros: %1)</translation>
     </message>
 </context>
 <context>

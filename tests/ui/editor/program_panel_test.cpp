@@ -1,5 +1,6 @@
 #include "ui/editor/program_panel.h"
 
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTextBlock>
@@ -135,15 +136,21 @@ TEST(ProgramPanel, CheckProgramRunsTheProgramAsKerfCheckDoes) {
     messages.clear();
     panel.checkProgram();
     EXPECT_TRUE(panel.checkingProgram());
+    auto* title = panel.findChild<QLabel*>("programTitle");
+    ASSERT_NE(title, nullptr);
+    EXPECT_TRUE(title->text().contains("Checking the program")) << title->text().toStdString();
     ASSERT_TRUE(changed.wait(10000));
     EXPECT_FALSE(panel.checkingProgram());
+    EXPECT_EQ(title->text(), "D.H");
     ASSERT_TRUE(hasErrors(panel.diagnostics()));
     const Diagnostic& error = panel.diagnostics().back();
     EXPECT_EQ(error.line, 3u);  // "2 Q2 = 5 / Q1", the '/' at column 10
     EXPECT_EQ(error.column, 10u);
     EXPECT_EQ(error.messageTemplate, "division by zero");
-    ASSERT_EQ(messages.size(), 2);  // "Checking ...", then the summary
-    EXPECT_EQ(messages.at(1).at(0).value<Severity>(), Severity::Error);
+    // The summary is a note: the message line shows the error itself, the most serious.
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Note);
+    EXPECT_EQ(messages.at(0).at(1).toString(), "Program check: the program cannot run (errors: 1)");
 
     // With the divisor fixed the check passes and says so.
     QTextCursor cursor(panel.editor()->document()->findBlockByNumber(1));
@@ -153,8 +160,9 @@ TEST(ProgramPanel, CheckProgramRunsTheProgramAsKerfCheckDoes) {
     panel.checkProgram();
     ASSERT_TRUE(changed.wait(10000));
     EXPECT_FALSE(hasErrors(panel.diagnostics()));
-    ASSERT_EQ(messages.size(), 2);
-    EXPECT_EQ(messages.at(1).at(0).value<Severity>(), Severity::Note);
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_EQ(messages.at(0).at(1).toString(),
+              "Program check: no errors, the program runs to its end");
 }
 
 // An edit during the run of the check cancels it: the endless loop would keep the worker busy
