@@ -92,38 +92,6 @@ QString name(const SpecialField& field) {
     return field.word.isEmpty() ? specialFieldDescription(field) : field.word;
 }
 
-std::optional<QString> checkField(const SpecialField& field, const QString& text) {
-    const QString value = text.trimmed().toUpper();
-    if (value.isEmpty()) {
-        if (!field.required) return std::nullopt;
-        return QCoreApplication::translate("kerf", "%1: enter a value").arg(name(field));
-    }
-    bool ok = true;
-    switch (field.kind) {
-        case SpecialFieldKind::Number:
-            ok = matches(kNumber, value) || matches(kReference, value);
-            break;
-        case SpecialFieldKind::Choice:
-            ok = field.choices.contains(value);
-            break;
-        case SpecialFieldKind::Length:
-            ok = positive(value);
-            break;
-        case SpecialFieldKind::Retract:
-            ok = value == QLatin1String("MAX") || positive(value);
-            break;
-        case SpecialFieldKind::Feed:
-            ok = value == QLatin1String("FMAX") || positive(value);
-            break;
-        case SpecialFieldKind::ProgramName:
-            ok = matches(kProgramName, value);
-            break;
-    }
-    if (ok) return std::nullopt;
-    return QCoreApplication::translate("kerf", "%1: \"%2\" is not allowed here")
-        .arg(name(field), text.trimmed());
-}
-
 QString fieldWords(const SpecialField& field, const QString& raw) {
     const QString value = raw.trimmed().toUpper();
     switch (field.kind) {
@@ -281,6 +249,38 @@ std::vector<SpecialField> specialFields(SpecialFunction function) {
     return fields;
 }
 
+std::optional<QString> checkSpecialField(const SpecialField& field, const QString& text) {
+    const QString value = text.trimmed().toUpper();
+    if (value.isEmpty()) {
+        if (!field.required) return std::nullopt;
+        return QCoreApplication::translate("kerf", "%1: enter a value").arg(name(field));
+    }
+    bool ok = true;
+    switch (field.kind) {
+        case SpecialFieldKind::Number:
+            ok = matches(kNumber, value) || matches(kReference, value);
+            break;
+        case SpecialFieldKind::Choice:
+            ok = field.choices.contains(value);
+            break;
+        case SpecialFieldKind::Length:
+            ok = positive(value);
+            break;
+        case SpecialFieldKind::Retract:
+            ok = value == QLatin1String("MAX") || positive(value);
+            break;
+        case SpecialFieldKind::Feed:
+            ok = value == QLatin1String("FMAX") || positive(value);
+            break;
+        case SpecialFieldKind::ProgramName:
+            ok = matches(kProgramName, value);
+            break;
+    }
+    if (ok) return std::nullopt;
+    return QCoreApplication::translate("kerf", "%1: \"%2\" is not allowed here")
+        .arg(name(field), text.trimmed());
+}
+
 QString specialFieldDescription(const SpecialField& field) {
     return QCoreApplication::translate("kerf", field.description);
 }
@@ -288,7 +288,8 @@ QString specialFieldDescription(const SpecialField& field) {
 std::optional<QString> checkSpecialFunction(SpecialFunction function, const QStringList& values) {
     const std::vector<SpecialField> fields = specialFields(function);
     for (size_t i = 0; i < fields.size(); ++i) {
-        if (auto error = checkField(fields[i], values.value(static_cast<int>(i)))) return error;
+        if (auto error = checkSpecialField(fields[i], values.value(static_cast<int>(i))))
+            return error;
     }
     auto value = [&](const QString& word) {
         for (size_t i = 0; i < fields.size(); ++i)

@@ -14,6 +14,7 @@
 // CALL PGM, which ISO writes "%NAME".
 namespace kerf::ui {
 
+// The PLANE forms come first (isPlane relies on it).
 enum class SpecialFunction {
     PlaneSpatial,
     PlaneProjected,
@@ -55,6 +56,8 @@ QString specialFunctionTitle(SpecialFunction function);
 std::vector<SpecialField> specialFields(SpecialFunction function);
 QString specialFieldDescription(const SpecialField& field);
 
+// Checks one entry; the message is in the UI language.
+std::optional<QString> checkSpecialField(const SpecialField& field, const QString& text);
 // Checks all entries (the message in the UI language), including the rules across fields
 // (PLANE AXIAL needs an angle; STAY moves nothing, so it takes no MB, DIST or F).
 std::optional<QString> checkSpecialFunction(SpecialFunction function, const QStringList& values);

@@ -99,6 +99,11 @@ bool SpecialFunctionDialog::eventFilter(QObject* watched, QEvent* event) {
     if (key != Qt::Key_Return && key != Qt::Key_Enter) return QDialog::eventFilter(watched, event);
     for (size_t i = 0; i < m_inputs.size(); ++i) {
         if (m_inputs[i] != watched) continue;
+        if (const auto error = checkSpecialField(m_fields[i], text(static_cast<int>(i)))) {
+            m_message->setText(*error);
+            return true;
+        }
+        m_message->clear();
         if (i + 1 < m_inputs.size())
             m_inputs[i + 1]->setFocus();
         else

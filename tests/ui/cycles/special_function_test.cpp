@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QLineEdit>
+#include <QTest>
 #include <QTextBlock>
 #include <QTimer>
 
@@ -87,6 +88,16 @@ TEST(SpecialFunction, RefusedEntriesKeepTheDialogOpenWithTheReason) {
     EXPECT_TRUE(written(SF::PlaneSpatial, {"0", "", "0", "TURN"}).startsWith("!SPB: enter"));
     EXPECT_TRUE(written(SF::CallProgram, {"MY PART"}).startsWith("!"));  // a blank
     EXPECT_TRUE(written(SF::PlaneEuler, {"0", "30", "0", "MOVE", "-5"}).startsWith("!MB"));
+
+    // Enter checks the field before it moves on.
+    SpecialFunctionDialog dialog(SF::PlaneSpatial);
+    auto* spa = qobject_cast<QLineEdit*>(dialog.input(0));
+    spa->setText("4x");
+    QTest::keyClick(spa, Qt::Key_Return);
+    EXPECT_EQ(dialog.message(), "SPA: \"4x\" is not allowed here");
+    spa->setText("+4");
+    QTest::keyClick(spa, Qt::Key_Return);
+    EXPECT_TRUE(dialog.message().isEmpty());
 }
 
 // Every function, written by the SPEC FCT keys into a program of each dialect, passes the check
