@@ -796,6 +796,18 @@ Maschine: %3</translation>
         <source>No program</source>
         <translation>Kein Programm</translation>
     </message>
+    <message>
+        <source>Checking the program: it runs without moving the machine</source>
+        <translation>Programm wird geprüft: es läuft, ohne dass sich die Maschine bewegt</translation>
+    </message>
+    <message>
+        <source>Program check: no errors, the program runs to its end</source>
+        <translation>Programmprüfung: keine Fehler, das Programm läuft bis zum Ende</translation>
+    </message>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Programmprüfung: das Programm kann nicht laufen (Fehler: %1)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>
@@ -869,6 +881,21 @@ Maschine: %3</translation>
     <message>
         <source>Unlock</source>
         <translation>Freigeben</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SpecialFunctionDialog</name>
+    <message>
+        <source>Special function</source>
+        <translation>Sonderfunktion</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -8315,6 +8342,142 @@ wählen</translation>
     <message>
         <source>tool length touch-off: tool {1} is not in TOOL.T</source>
         <translation>Werkzeuglänge ankratzen: Werkzeug {1} steht nicht in TOOL.T</translation>
+    </message>
+    <message>
+        <source>Positioning: TURN, MOVE (DIST) or STAY</source>
+        <translation>Positionieren: TURN, MOVE (DIST) oder STAY</translation>
+    </message>
+    <message>
+        <source>Retract along the tool axis first: MAX or mm</source>
+        <translation>Zuerst in Werkzeugachse freifahren: MAX oder mm</translation>
+    </message>
+    <message>
+        <source>MOVE: distance of the tool tip from the centre of rotation</source>
+        <translation>MOVE: Abstand der Werkzeugspitze vom Drehpunkt</translation>
+    </message>
+    <message>
+        <source>Feed rate of the positioning, or FMAX</source>
+        <translation>Vorschub der Positionierung oder FMAX</translation>
+    </message>
+    <message>
+        <source>Solution: SEQ+ or SEQ- (empty: the machine&apos;s)</source>
+        <translation>Lösung: SEQ+ oder SEQ- (leer: die der Maschine)</translation>
+    </message>
+    <message>
+        <source>Transformation: COORD ROT or TABLE ROT</source>
+        <translation>Transformation: COORD ROT oder TABLE ROT</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not allowed here</source>
+        <translation>%1: „%2“ ist hier nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>Spatial angle A [°]</source>
+        <translation>Raumwinkel A [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle B [°]</source>
+        <translation>Raumwinkel B [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle C [°]</source>
+        <translation>Raumwinkel C [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the principal plane [°]</source>
+        <translation>Projektionswinkel in der Hauptebene [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the minor plane [°]</source>
+        <translation>Projektionswinkel in der Nebenebene [°]</translation>
+    </message>
+    <message>
+        <source>Rotation in the tilted plane [°]</source>
+        <translation>Drehung in der geschwenkten Ebene [°]</translation>
+    </message>
+    <message>
+        <source>Precession angle [°]</source>
+        <translation>Präzessionswinkel [°]</translation>
+    </message>
+    <message>
+        <source>Nutation angle [°]</source>
+        <translation>Nutationswinkel [°]</translation>
+    </message>
+    <message>
+        <source>Rotation angle [°]</source>
+        <translation>Drehwinkel [°]</translation>
+    </message>
+    <message>
+        <source>Base vector (X direction)</source>
+        <translation>Basisvektor (X-Richtung)</translation>
+    </message>
+    <message>
+        <source>Normal vector</source>
+        <translation>Normalenvektor</translation>
+    </message>
+    <message>
+        <source>First point (origin of X)</source>
+        <translation>Erster Punkt (Ursprung von X)</translation>
+    </message>
+    <message>
+        <source>Second point (on the X axis)</source>
+        <translation>Zweiter Punkt (auf der X-Achse)</translation>
+    </message>
+    <message>
+        <source>Third point (in the plane)</source>
+        <translation>Dritter Punkt (in der Ebene)</translation>
+    </message>
+    <message>
+        <source>Axis of the incremental spatial angle</source>
+        <translation>Achse des inkrementalen Raumwinkels</translation>
+    </message>
+    <message>
+        <source>Incremental angle [°]</source>
+        <translation>Inkrementaler Winkel [°]</translation>
+    </message>
+    <message>
+        <source>Axis angle [°] (empty: not moved)</source>
+        <translation>Achswinkel [°] (leer: nicht verfahren)</translation>
+    </message>
+    <message>
+        <source>Feed rate at the tool tip</source>
+        <translation>Vorschub an der Werkzeugspitze</translation>
+    </message>
+    <message>
+        <source>Rotary axes: machine positions</source>
+        <translation>Drehachsen: Maschinenpositionen</translation>
+    </message>
+    <message>
+        <source>Path: the axes interpolate linearly</source>
+        <translation>Bahn: die Achsen interpolieren linear</translation>
+    </message>
+    <message>
+        <source>Reference point: the tool tip</source>
+        <translation>Bezugspunkt: die Werkzeugspitze</translation>
+    </message>
+    <message>
+        <source>Feed rate of the compensating moves</source>
+        <translation>Vorschub der Ausgleichsbewegungen</translation>
+    </message>
+    <message>
+        <source>Program name, e.g. PART or TNC:\DIR\PART.H</source>
+        <translation>Programmname, z. B. PART oder TNC:\DIR\PART.H</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: enter the angle of A, B or C</source>
+        <translation>PLANE AXIAL: den Winkel von A, B oder C eingeben</translation>
+    </message>
+    <message>
+        <source>STAY moves nothing: leave MB, DIST and F empty</source>
+        <translation>STAY verfährt nichts: MB, DIST und F leer lassen</translation>
+    </message>
+    <message>
+        <source>DIST belongs to MOVE</source>
+        <translation>DIST gehört zu MOVE</translation>
+    </message>
+    <message>
+        <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
+        <translation>nach {1} Sätzen angehalten: Endlosschleife? (--max-blocks)</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

@@ -796,6 +796,18 @@ Máquina: %3</translation>
         <source>No program</source>
         <translation>Ningún programa</translation>
     </message>
+    <message>
+        <source>Checking the program: it runs without moving the machine</source>
+        <translation>Comprobando el programa: se ejecuta sin mover la máquina</translation>
+    </message>
+    <message>
+        <source>Program check: no errors, the program runs to its end</source>
+        <translation>Comprobación del programa: sin errores, el programa se ejecuta hasta el final</translation>
+    </message>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Comprobación del programa: el programa no puede ejecutarse (errores: %1)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>
@@ -869,6 +881,21 @@ Máquina: %3</translation>
     <message>
         <source>Unlock</source>
         <translation>Desbloquear</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SpecialFunctionDialog</name>
+    <message>
+        <source>Special function</source>
+        <translation>Función especial</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -8315,6 +8342,142 @@ solución</translation>
     <message>
         <source>tool length touch-off: tool {1} is not in TOOL.T</source>
         <translation>Medición de longitud por contacto: la herramienta {1} no está en TOOL.T</translation>
+    </message>
+    <message>
+        <source>Positioning: TURN, MOVE (DIST) or STAY</source>
+        <translation>Posicionamiento: TURN, MOVE (DIST) o STAY</translation>
+    </message>
+    <message>
+        <source>Retract along the tool axis first: MAX or mm</source>
+        <translation>Retirar primero en el eje de la herramienta: MAX o mm</translation>
+    </message>
+    <message>
+        <source>MOVE: distance of the tool tip from the centre of rotation</source>
+        <translation>MOVE: distancia de la punta de la herramienta al centro de giro</translation>
+    </message>
+    <message>
+        <source>Feed rate of the positioning, or FMAX</source>
+        <translation>Avance del posicionamiento o FMAX</translation>
+    </message>
+    <message>
+        <source>Solution: SEQ+ or SEQ- (empty: the machine&apos;s)</source>
+        <translation>Solución: SEQ+ o SEQ- (vacío: la de la máquina)</translation>
+    </message>
+    <message>
+        <source>Transformation: COORD ROT or TABLE ROT</source>
+        <translation>Transformación: COORD ROT o TABLE ROT</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not allowed here</source>
+        <translation>%1: «%2» no está permitido aquí</translation>
+    </message>
+    <message>
+        <source>Spatial angle A [°]</source>
+        <translation>Ángulo espacial A [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle B [°]</source>
+        <translation>Ángulo espacial B [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle C [°]</source>
+        <translation>Ángulo espacial C [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the principal plane [°]</source>
+        <translation>Ángulo de proyección en el plano principal [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the minor plane [°]</source>
+        <translation>Ángulo de proyección en el plano secundario [°]</translation>
+    </message>
+    <message>
+        <source>Rotation in the tilted plane [°]</source>
+        <translation>Giro en el plano inclinado [°]</translation>
+    </message>
+    <message>
+        <source>Precession angle [°]</source>
+        <translation>Ángulo de precesión [°]</translation>
+    </message>
+    <message>
+        <source>Nutation angle [°]</source>
+        <translation>Ángulo de nutación [°]</translation>
+    </message>
+    <message>
+        <source>Rotation angle [°]</source>
+        <translation>Ángulo de giro [°]</translation>
+    </message>
+    <message>
+        <source>Base vector (X direction)</source>
+        <translation>Vector base (dirección X)</translation>
+    </message>
+    <message>
+        <source>Normal vector</source>
+        <translation>Vector normal</translation>
+    </message>
+    <message>
+        <source>First point (origin of X)</source>
+        <translation>Primer punto (origen de X)</translation>
+    </message>
+    <message>
+        <source>Second point (on the X axis)</source>
+        <translation>Segundo punto (en el eje X)</translation>
+    </message>
+    <message>
+        <source>Third point (in the plane)</source>
+        <translation>Tercer punto (en el plano)</translation>
+    </message>
+    <message>
+        <source>Axis of the incremental spatial angle</source>
+        <translation>Eje del ángulo espacial incremental</translation>
+    </message>
+    <message>
+        <source>Incremental angle [°]</source>
+        <translation>Ángulo incremental [°]</translation>
+    </message>
+    <message>
+        <source>Axis angle [°] (empty: not moved)</source>
+        <translation>Ángulo del eje [°] (vacío: no se mueve)</translation>
+    </message>
+    <message>
+        <source>Feed rate at the tool tip</source>
+        <translation>Avance en la punta de la herramienta</translation>
+    </message>
+    <message>
+        <source>Rotary axes: machine positions</source>
+        <translation>Ejes giratorios: posiciones de máquina</translation>
+    </message>
+    <message>
+        <source>Path: the axes interpolate linearly</source>
+        <translation>Trayectoria: los ejes interpolan linealmente</translation>
+    </message>
+    <message>
+        <source>Reference point: the tool tip</source>
+        <translation>Punto de referencia: la punta de la herramienta</translation>
+    </message>
+    <message>
+        <source>Feed rate of the compensating moves</source>
+        <translation>Avance de los movimientos de compensación</translation>
+    </message>
+    <message>
+        <source>Program name, e.g. PART or TNC:\DIR\PART.H</source>
+        <translation>Nombre del programa, p. ej. PART o TNC:\DIR\PART.H</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: enter the angle of A, B or C</source>
+        <translation>PLANE AXIAL: introducir el ángulo de A, B o C</translation>
+    </message>
+    <message>
+        <source>STAY moves nothing: leave MB, DIST and F empty</source>
+        <translation>STAY no mueve nada: dejar MB, DIST y F vacíos</translation>
+    </message>
+    <message>
+        <source>DIST belongs to MOVE</source>
+        <translation>DIST pertenece a MOVE</translation>
+    </message>
+    <message>
+        <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
+        <translation>detenido tras {1} bloques: ¿bucle infinito? (--max-blocks)</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

@@ -799,6 +799,18 @@ Maszyna: %3</translation>
         <source>Loading %1 ...</source>
         <translation>Wczytywanie %1 ...</translation>
     </message>
+    <message>
+        <source>Checking the program: it runs without moving the machine</source>
+        <translation>Sprawdzanie programu: program jest wykonywany bez ruchu maszyny</translation>
+    </message>
+    <message>
+        <source>Program check: no errors, the program runs to its end</source>
+        <translation>Sprawdzenie programu: brak błędów, program wykonuje się do końca</translation>
+    </message>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Sprawdzenie programu: programu nie można wykonać (błędy: %1)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>
@@ -872,6 +884,21 @@ Maszyna: %3</translation>
     <message>
         <source>Unlock</source>
         <translation>Odblokuj</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SpecialFunctionDialog</name>
+    <message>
+        <source>Special function</source>
+        <translation>Funkcja specjalna</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
     </message>
 </context>
 <context>
@@ -8318,6 +8345,142 @@ rozwiązanie</translation>
     <message>
         <source>tool length touch-off: tool {1} is not in TOOL.T</source>
         <translation>Pomiar długości przez dotknięcie: narzędzia {1} nie ma w TOOL.T</translation>
+    </message>
+    <message>
+        <source>Positioning: TURN, MOVE (DIST) or STAY</source>
+        <translation>Pozycjonowanie: TURN, MOVE (DIST) lub STAY</translation>
+    </message>
+    <message>
+        <source>Retract along the tool axis first: MAX or mm</source>
+        <translation>Najpierw odjazd wzdłuż osi narzędzia: MAX lub mm</translation>
+    </message>
+    <message>
+        <source>MOVE: distance of the tool tip from the centre of rotation</source>
+        <translation>MOVE: odległość wierzchołka narzędzia od środka obrotu</translation>
+    </message>
+    <message>
+        <source>Feed rate of the positioning, or FMAX</source>
+        <translation>Posuw pozycjonowania lub FMAX</translation>
+    </message>
+    <message>
+        <source>Solution: SEQ+ or SEQ- (empty: the machine&apos;s)</source>
+        <translation>Rozwiązanie: SEQ+ lub SEQ- (puste: maszyny)</translation>
+    </message>
+    <message>
+        <source>Transformation: COORD ROT or TABLE ROT</source>
+        <translation>Transformacja: COORD ROT lub TABLE ROT</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not allowed here</source>
+        <translation>%1: „%2” jest tu niedozwolone</translation>
+    </message>
+    <message>
+        <source>Spatial angle A [°]</source>
+        <translation>Kąt przestrzenny A [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle B [°]</source>
+        <translation>Kąt przestrzenny B [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle C [°]</source>
+        <translation>Kąt przestrzenny C [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the principal plane [°]</source>
+        <translation>Kąt rzutowania w płaszczyźnie głównej [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the minor plane [°]</source>
+        <translation>Kąt rzutowania w płaszczyźnie pomocniczej [°]</translation>
+    </message>
+    <message>
+        <source>Rotation in the tilted plane [°]</source>
+        <translation>Obrót w nachylonej płaszczyźnie [°]</translation>
+    </message>
+    <message>
+        <source>Precession angle [°]</source>
+        <translation>Kąt precesji [°]</translation>
+    </message>
+    <message>
+        <source>Nutation angle [°]</source>
+        <translation>Kąt nutacji [°]</translation>
+    </message>
+    <message>
+        <source>Rotation angle [°]</source>
+        <translation>Kąt obrotu [°]</translation>
+    </message>
+    <message>
+        <source>Base vector (X direction)</source>
+        <translation>Wektor bazowy (kierunek X)</translation>
+    </message>
+    <message>
+        <source>Normal vector</source>
+        <translation>Wektor normalny</translation>
+    </message>
+    <message>
+        <source>First point (origin of X)</source>
+        <translation>Pierwszy punkt (początek X)</translation>
+    </message>
+    <message>
+        <source>Second point (on the X axis)</source>
+        <translation>Drugi punkt (na osi X)</translation>
+    </message>
+    <message>
+        <source>Third point (in the plane)</source>
+        <translation>Trzeci punkt (w płaszczyźnie)</translation>
+    </message>
+    <message>
+        <source>Axis of the incremental spatial angle</source>
+        <translation>Oś przyrostowego kąta przestrzennego</translation>
+    </message>
+    <message>
+        <source>Incremental angle [°]</source>
+        <translation>Kąt przyrostowy [°]</translation>
+    </message>
+    <message>
+        <source>Axis angle [°] (empty: not moved)</source>
+        <translation>Kąt osi [°] (puste: bez ruchu)</translation>
+    </message>
+    <message>
+        <source>Feed rate at the tool tip</source>
+        <translation>Posuw na wierzchołku narzędzia</translation>
+    </message>
+    <message>
+        <source>Rotary axes: machine positions</source>
+        <translation>Osie obrotowe: pozycje maszyny</translation>
+    </message>
+    <message>
+        <source>Path: the axes interpolate linearly</source>
+        <translation>Tor: osie interpolują liniowo</translation>
+    </message>
+    <message>
+        <source>Reference point: the tool tip</source>
+        <translation>Punkt odniesienia: wierzchołek narzędzia</translation>
+    </message>
+    <message>
+        <source>Feed rate of the compensating moves</source>
+        <translation>Posuw ruchów kompensacyjnych</translation>
+    </message>
+    <message>
+        <source>Program name, e.g. PART or TNC:\DIR\PART.H</source>
+        <translation>Nazwa programu, np. PART lub TNC:\DIR\PART.H</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: enter the angle of A, B or C</source>
+        <translation>PLANE AXIAL: wprowadzić kąt A, B lub C</translation>
+    </message>
+    <message>
+        <source>STAY moves nothing: leave MB, DIST and F empty</source>
+        <translation>STAY niczego nie przesuwa: pozostawić MB, DIST i F puste</translation>
+    </message>
+    <message>
+        <source>DIST belongs to MOVE</source>
+        <translation>DIST należy do MOVE</translation>
+    </message>
+    <message>
+        <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
+        <translation>zatrzymano po {1} blokach: nieskończona pętla? (--max-blocks)</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

@@ -797,6 +797,18 @@ Máquina: %3</translation>
         <source>Loading %1 ...</source>
         <translation>A carregar %1 ...</translation>
     </message>
+    <message>
+        <source>Checking the program: it runs without moving the machine</source>
+        <translation>A verificar o programa: é executado sem mover a máquina</translation>
+    </message>
+    <message>
+        <source>Program check: no errors, the program runs to its end</source>
+        <translation>Verificação do programa: sem erros, o programa é executado até ao fim</translation>
+    </message>
+    <message>
+        <source>Program check: the program cannot run (errors: %1)</source>
+        <translation>Verificação do programa: o programa não pode ser executado (erros: %1)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>
@@ -870,6 +882,21 @@ Máquina: %3</translation>
     <message>
         <source>Unlock</source>
         <translation>Desbloquear</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::SpecialFunctionDialog</name>
+    <message>
+        <source>Special function</source>
+        <translation>Função especial</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -8315,6 +8342,142 @@ solução</translation>
     <message>
         <source>tool length touch-off: tool {1} is not in TOOL.T</source>
         <translation>Medição do comprimento por toque: a ferramenta {1} não está em TOOL.T</translation>
+    </message>
+    <message>
+        <source>Positioning: TURN, MOVE (DIST) or STAY</source>
+        <translation>Posicionamento: TURN, MOVE (DIST) ou STAY</translation>
+    </message>
+    <message>
+        <source>Retract along the tool axis first: MAX or mm</source>
+        <translation>Retirar primeiro no eixo da ferramenta: MAX ou mm</translation>
+    </message>
+    <message>
+        <source>MOVE: distance of the tool tip from the centre of rotation</source>
+        <translation>MOVE: distância da ponta da ferramenta ao centro de rotação</translation>
+    </message>
+    <message>
+        <source>Feed rate of the positioning, or FMAX</source>
+        <translation>Avanço do posicionamento ou FMAX</translation>
+    </message>
+    <message>
+        <source>Solution: SEQ+ or SEQ- (empty: the machine&apos;s)</source>
+        <translation>Solução: SEQ+ ou SEQ- (vazio: a da máquina)</translation>
+    </message>
+    <message>
+        <source>Transformation: COORD ROT or TABLE ROT</source>
+        <translation>Transformação: COORD ROT ou TABLE ROT</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not allowed here</source>
+        <translation>%1: «%2» não é permitido aqui</translation>
+    </message>
+    <message>
+        <source>Spatial angle A [°]</source>
+        <translation>Ângulo espacial A [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle B [°]</source>
+        <translation>Ângulo espacial B [°]</translation>
+    </message>
+    <message>
+        <source>Spatial angle C [°]</source>
+        <translation>Ângulo espacial C [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the principal plane [°]</source>
+        <translation>Ângulo de projeção no plano principal [°]</translation>
+    </message>
+    <message>
+        <source>Projected angle in the minor plane [°]</source>
+        <translation>Ângulo de projeção no plano secundário [°]</translation>
+    </message>
+    <message>
+        <source>Rotation in the tilted plane [°]</source>
+        <translation>Rotação no plano inclinado [°]</translation>
+    </message>
+    <message>
+        <source>Precession angle [°]</source>
+        <translation>Ângulo de precessão [°]</translation>
+    </message>
+    <message>
+        <source>Nutation angle [°]</source>
+        <translation>Ângulo de nutação [°]</translation>
+    </message>
+    <message>
+        <source>Rotation angle [°]</source>
+        <translation>Ângulo de rotação [°]</translation>
+    </message>
+    <message>
+        <source>Base vector (X direction)</source>
+        <translation>Vetor base (direção X)</translation>
+    </message>
+    <message>
+        <source>Normal vector</source>
+        <translation>Vetor normal</translation>
+    </message>
+    <message>
+        <source>First point (origin of X)</source>
+        <translation>Primeiro ponto (origem de X)</translation>
+    </message>
+    <message>
+        <source>Second point (on the X axis)</source>
+        <translation>Segundo ponto (no eixo X)</translation>
+    </message>
+    <message>
+        <source>Third point (in the plane)</source>
+        <translation>Terceiro ponto (no plano)</translation>
+    </message>
+    <message>
+        <source>Axis of the incremental spatial angle</source>
+        <translation>Eixo do ângulo espacial incremental</translation>
+    </message>
+    <message>
+        <source>Incremental angle [°]</source>
+        <translation>Ângulo incremental [°]</translation>
+    </message>
+    <message>
+        <source>Axis angle [°] (empty: not moved)</source>
+        <translation>Ângulo do eixo [°] (vazio: não se move)</translation>
+    </message>
+    <message>
+        <source>Feed rate at the tool tip</source>
+        <translation>Avanço na ponta da ferramenta</translation>
+    </message>
+    <message>
+        <source>Rotary axes: machine positions</source>
+        <translation>Eixos rotativos: posições da máquina</translation>
+    </message>
+    <message>
+        <source>Path: the axes interpolate linearly</source>
+        <translation>Trajetória: os eixos interpolam linearmente</translation>
+    </message>
+    <message>
+        <source>Reference point: the tool tip</source>
+        <translation>Ponto de referência: a ponta da ferramenta</translation>
+    </message>
+    <message>
+        <source>Feed rate of the compensating moves</source>
+        <translation>Avanço dos movimentos de compensação</translation>
+    </message>
+    <message>
+        <source>Program name, e.g. PART or TNC:\DIR\PART.H</source>
+        <translation>Nome do programa, p. ex. PART ou TNC:\DIR\PART.H</translation>
+    </message>
+    <message>
+        <source>PLANE AXIAL: enter the angle of A, B or C</source>
+        <translation>PLANE AXIAL: introduzir o ângulo de A, B ou C</translation>
+    </message>
+    <message>
+        <source>STAY moves nothing: leave MB, DIST and F empty</source>
+        <translation>STAY não move nada: deixar MB, DIST e F vazios</translation>
+    </message>
+    <message>
+        <source>DIST belongs to MOVE</source>
+        <translation>DIST pertence a MOVE</translation>
+    </message>
+    <message>
+        <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
+        <translation>parado após {1} blocos: ciclo infinito? (--max-blocks)</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

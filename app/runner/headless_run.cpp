@@ -18,6 +18,7 @@
 #include "core/base/atomic_file.h"
 #include "core/canon/tee_sink.h"
 #include "core/canon/trace_printer.h"
+#include "core/task/dry_run.h"
 #include "motion/sim/simulated_clock.h"
 
 namespace kerf::app {
@@ -45,46 +46,7 @@ bool diameterByDefault(const machine::MachineConfig& machine) {
 }
 
 Diagnostic blockLimitError(const RunOptions& options) {
-    return Diagnostic::make(Severity::Error, "block-limit", options.program.string(), 0, 0,
-                            KERF_TR_NOOP("stopped after {1} blocks: endless loop? (--max-blocks)"),
-                            std::to_string(options.maxBlocks));
-}
-
-// The checked program run to its end as `kerf run` runs it without motion (the machine stands
-// where the program put it; a probe touches at the end of its move), writing no file: what stops
-// the run on the same data and tables — a division by zero, a tool the table lacks, a cycle the
-// tool's radius makes impossible, a cycle parameter out of range after Q substitution — is then
-// the check's error, with the run's message at its block. The interpreter keeps those
-// diagnostics; the block limit and a user screen's notes are returned.
-DiagnosticList runDry(Session& session, const RunOptions& options,
-                      HeadlessOperator& screenOperator) {
-    DiagnosticList problems;
-    interp::Interpreter& interpreter = *session.program.interpreter;
-    canon::PathStatistics position;
-    position.setStart(interpreter.nominalPosition());
-    for (;;) {
-        const uint64_t left = options.maxBlocks - interpreter.blocksExecuted();
-        const interp::RunStatus status =
-            interpreter.run(position, std::min<uint64_t>(kBlocksPerSlice, left));
-        if (status == interp::RunStatus::NeedsSync) {
-            if (screenOperator.waiting() && !screenOperator.answer(problems)) break;
-            interp::WorldSnapshot world;
-            world.position = position.position();
-            world.probeTriggered = true;
-            world.probePosition = world.position;
-            interpreter.resume(world);
-            continue;
-        }
-        if (status != interp::RunStatus::BudgetUsed) break;
-        if (interpreter.blocksExecuted() < options.maxBlocks) continue;
-        if (screenOperator.active()) {
-            screenOperator.noteBlockLimit(problems, options.maxBlocks);
-        } else {
-            problems.push_back(blockLimitError(options));
-        }
-        break;
-    }
-    return problems;
+    return task::blockLimitError(options.program.string(), options.maxBlocks);
 }
 
 }  // namespace
@@ -96,8 +58,21 @@ int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         diagnostics << refused->format() << '\n';
         return 1;
     }
+    // The run of the check is task::runDry, the one the HMI's "Check program" makes.
     DiagnosticList runProblems;
-    if (session->ready()) runProblems = runDry(*session, options, screenOperator);
+    if (session->ready()) {
+        task::DryRunOptions dry;
+        dry.maxBlocks = options.maxBlocks;
+        dry.atSync = [&] {
+            return !screenOperator.waiting() || screenOperator.answer(runProblems);
+        };
+        if (task::runDry(*session->program.interpreter, dry) == task::DryRunEnd::BlockLimit) {
+            if (screenOperator.active())
+                screenOperator.noteBlockLimit(runProblems, options.maxBlocks);
+            else
+                runProblems.push_back(blockLimitError(options));
+        }
+    }
     DiagnosticList all = session->allDiagnostics();
     appendDiagnostics(all, runProblems);
     printDiagnostics(all, diagnostics);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/task/dry_run.h"
+
 namespace kerf::app {
 
 // What `kerf check` and `kerf run` were asked to do.
@@ -19,7 +21,7 @@ struct RunOptions {
     std::optional<std::filesystem::path> traceFile;  // "-" writes to standard output
     std::optional<std::filesystem::path> stateDir;   // where QR parameters are kept
     // Guard against endless loops: about two seconds of a tight loop (docs/headless.md).
-    uint64_t maxBlocks = 10'000'000;
+    uint64_t maxBlocks = task::kDefaultMaxBlocks;
     bool blockSkip = false;
     // FAGOR user channel (app/runner/headless_operator.h, docs/headless.md): the program runs as
     // the customisation program of this mode (execution, edit, manual, diagnosis), answered by

@@ -11,6 +11,7 @@
 #include "ui/cycles/iso_blocks.h"
 #include "ui/cycles/path_function_dialog.h"
 #include "ui/cycles/program_blocks.h"
+#include "ui/cycles/special_function_dialog.h"
 
 namespace kerf::ui {
 
@@ -91,6 +92,18 @@ bool ProgramEntry::pathFunction(PathFunction function) {
     PathFunctionDialog dialog(function, m_parent);
     if (dialog.exec() != QDialog::Accepted) return false;
     return writePath(function, dialog.values());
+}
+
+bool ProgramEntry::specialFunction(SpecialFunction function) {
+    if (m_editor.isReadOnly()) return false;
+    QStringList values;
+    if (!specialFields(function).empty()) {
+        SpecialFunctionDialog dialog(function, m_parent);
+        if (dialog.exec() != QDialog::Accepted) return false;
+        values = dialog.values();
+    }
+    insertBlocks(m_editor, {writeSpecialFunction(function, values, m_dialect)}, m_dialect);
+    return true;
 }
 
 }  // namespace kerf::ui

@@ -2,6 +2,7 @@
 
 #include "core/program/dialect.h"
 #include "ui/cycles/path_function.h"
+#include "ui/cycles/special_function.h"
 
 class QPlainTextEdit;
 class QString;
@@ -30,6 +31,9 @@ public:
     bool editCycleAtCursor();
     bool cycleCall();
     bool pathFunction(PathFunction function);
+    // SPEC FCT: the function's dialog (none for a function without words), its block in the
+    // program's dialect at the cursor.
+    bool specialFunction(SpecialFunction function);
 
 private:
     // Writes the Klartext `blocks` (or their ISO form) at the cursor, or into `replace`.

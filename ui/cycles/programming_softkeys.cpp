@@ -6,6 +6,7 @@
 #include "ui/cycles/cycle_catalogue.h"
 #include "ui/cycles/fagor_softkeys.h"
 #include "ui/cycles/program_entry.h"
+#include "ui/cycles/special_function.h"
 #include "ui/editor/program_editor.h"
 
 namespace kerf::ui {
@@ -72,6 +73,74 @@ std::vector<SoftkeyRow> cycleRows(int section, ProgramEditor* editor, QWidget* p
     return rows;
 }
 
+Softkey specialKey(const char* id, const QString& text, SpecialFunction function,
+                   ProgramEditor* editor, QWidget* parent, SoftkeyPaging paging) {
+    return {QString::fromLatin1(id), text,
+            entryAction(editor, parent, [function, paging](ProgramEntry& e) {
+                if (e.specialFunction(function)) paging.back();
+            })};
+}
+
+std::vector<SoftkeyRow> specialFunctionRows(ProgramEditor* editor, QWidget* parent,
+                                            SoftkeyPaging paging);
+
+// PLANE's eight forms as on the TNC 320; Back on the next row.
+std::vector<SoftkeyRow> planeRows(ProgramEditor* editor, QWidget* parent, SoftkeyPaging paging) {
+    struct Form {
+        const char* id;
+        const char* text;
+        SpecialFunction function;
+    };
+    static constexpr Form kForms[] = {
+        {"planeSpatial", "SPATIAL", SpecialFunction::PlaneSpatial},
+        {"planeProjected", "PROJECTED", SpecialFunction::PlaneProjected},
+        {"planeEuler", "EULER", SpecialFunction::PlaneEuler},
+        {"planeVector", "VECTOR", SpecialFunction::PlaneVector},
+        {"planePoints", "POINTS", SpecialFunction::PlanePoints},
+        {"planeRelative", "REL. SPA.", SpecialFunction::PlaneRelative},
+        {"planeAxial", "AXIAL", SpecialFunction::PlaneAxial},
+        {"planeReset", "RESET", SpecialFunction::PlaneReset},
+    };
+    SoftkeyRow forms;
+    for (const Form& form : kForms)
+        forms.push_back(specialKey(form.id, QString::fromLatin1(form.text), form.function, editor,
+                                   parent, paging));
+    const Softkey back{
+        "back", QCoreApplication::translate("kerf", "Back"),
+        [editor, parent, paging] { paging.show(specialFunctionRows(editor, parent, paging)); }};
+    return {forms, {back}};
+}
+
+// SPEC FCT: the tilted plane and TCPM, then the program calls.
+std::vector<SoftkeyRow> specialFunctionRows(ProgramEditor* editor, QWidget* parent,
+                                            SoftkeyPaging paging) {
+    const Softkey back{"back", QCoreApplication::translate("kerf", "Back"), paging.back};
+    return {
+        {
+            {"plane", QStringLiteral("PLANE"),
+             [editor, parent, paging] { paging.show(planeRows(editor, parent, paging)); }},
+            specialKey("tcpm", QStringLiteral("FUNCTION\nTCPM"), SpecialFunction::Tcpm, editor,
+                       parent, paging),
+            specialKey("resetTcpm", QStringLiteral("RESET\nTCPM"), SpecialFunction::ResetTcpm,
+                       editor, parent, paging),
+            specialKey("m128", QStringLiteral("M128"), SpecialFunction::M128, editor, parent,
+                       paging),
+            specialKey("m129", QStringLiteral("M129"), SpecialFunction::M129, editor, parent,
+                       paging),
+            back,
+        },
+        {
+            specialKey("selPgm", QStringLiteral("SEL\nPGM"), SpecialFunction::SelectProgram, editor,
+                       parent, paging),
+            specialKey("callSelectedPgm", QStringLiteral("CALL\nSELECTED"),
+                       SpecialFunction::CallSelectedProgram, editor, parent, paging),
+            specialKey("callPgm", QStringLiteral("CALL\nPGM"), SpecialFunction::CallProgram, editor,
+                       parent, paging),
+            back,
+        },
+    };
+}
+
 }  // namespace
 
 std::vector<SoftkeyRow> programmingEntryRows(ProgramEditor* editor, QWidget* parent,
@@ -105,6 +174,10 @@ std::vector<SoftkeyRow> programmingEntryRows(ProgramEditor* editor, QWidget* par
                          })},
             {"cycleOverview", QCoreApplication::translate("kerf", "Cycle\noverview"),
              entryAction(editor, parent, [](ProgramEntry& e) { e.chooseCycle(); })},
+            {"specFct", QStringLiteral("SPEC\nFCT"),
+             [editor, parent, paging] {
+                 paging.show(specialFunctionRows(editor, parent, paging));
+             }},
         },
     };
 }

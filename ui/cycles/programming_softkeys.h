@@ -19,10 +19,10 @@ struct SoftkeyPaging {
 };
 
 // The programming keys of the TNC: CYCL DEF (its groups, then the group's cycles), CYCL CALL,
-// TOOL CALL, the path functions L CC C CR CT RND CHF, the cycle overview and editing the
-// cycle under the cursor. The dialogs open over `dialogParent` and write into `editor`;
-// they write Klartext, so TNC ISO programs get a message instead; a FAGOR program gets the
-// FAGOR canned cycles (fagor_softkeys.h).
+// TOOL CALL, the path functions L CC C CR CT RND CHF, the cycle overview, editing the cycle under
+// the cursor and SPEC FCT (PLANE, FUNCTION TCPM, M128/M129, SEL PGM, CALL SELECTED PGM, CALL
+// PGM). The dialogs open over `dialogParent` and write into `editor` in the program's dialect
+// (Klartext or TNC ISO); a FAGOR program gets the FAGOR canned cycles (fagor_softkeys.h).
 std::vector<SoftkeyRow> programmingEntryRows(ProgramEditor* editor, QWidget* dialogParent,
                                              SoftkeyPaging paging);
 

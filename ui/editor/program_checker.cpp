@@ -2,6 +2,8 @@
 
 #include <QMetaObject>
 
+#include "core/task/dry_run.h"
+
 namespace kerf::ui {
 
 ProgramChecker::ProgramChecker(machine::MachineConfig machine, std::filesystem::path ncRoot,
@@ -21,13 +23,13 @@ ProgramChecker::~ProgramChecker() {
 }
 
 uint64_t ProgramChecker::check(const QString& text, const std::filesystem::path& path,
-                               program::Dialect dialect) {
+                               program::Dialect dialect, Depth depth) {
     uint64_t request = 0;
     {
         std::lock_guard lock(m_mutex);
         request = ++m_generation;
         // A shallow copy: the UTF-8 conversion of a large program is done by the worker.
-        m_pending = Request{text, path, dialect, request};
+        m_pending = Request{text, path, dialect, depth, request};
         m_cancel.store(true);
     }
     m_wake.notify_one();
@@ -46,7 +48,7 @@ void ProgramChecker::work() {
             m_cancel.store(false);
         }
         auto sketch =
-            std::make_shared<task::ProgramSketch>(sketchText(request.text.toStdString(), request));
+            std::make_shared<task::ProgramSketch>(checkText(request.text.toStdString(), request));
         std::lock_guard lock(m_mutex);
         if (request.generation != m_generation || m_quit) continue;  // the text changed meanwhile
         // Queued to the UI thread; dropped by Qt if this object is gone by then.
@@ -61,13 +63,21 @@ void ProgramChecker::work() {
     }
 }
 
-task::ProgramSketch ProgramChecker::sketchText(std::string text, const Request& request) const {
+task::ProgramSketch ProgramChecker::checkText(std::string text, const Request& request) const {
     task::ProgramRequest load;
     load.text = std::move(text);
     load.path = request.path;
     load.dialect = request.dialect;
     load.ncRoot = m_ncRoot;
-    return task::sketchProgram(m_machine, load, &m_cancel);
+    task::ProgramSketch sketch = task::sketchProgram(m_machine, load, &m_cancel);
+    if (request.depth == Depth::Static || sketch.cancelled || hasErrors(sketch.diagnostics))
+        return sketch;
+    task::DryRunOptions dry;
+    dry.cancel = &m_cancel;
+    task::RunCheck run = task::checkByRunning(m_machine, std::move(load), dry);
+    sketch.cancelled = run.cancelled;
+    sketch.diagnostics = std::move(run.diagnostics);
+    return sketch;
 }
 
 }  // namespace kerf::ui

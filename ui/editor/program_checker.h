@@ -20,11 +20,13 @@ namespace kerf::ui {
 // Checks the program being edited in a worker thread and reports its diagnostics back on the
 // UI thread. A new request replaces one not started yet; results of an outdated text are
 // dropped. Each result names its request: a receiver that swapped its document meanwhile knows
-// the result is not about what it shows. Klartext and FAGOR programs are checked as `kerf check`
-// does; TNC ISO, which Kerf does not interpret yet, gets a single note saying so. A Klartext
-// program with FK blocks is also run dry (task::sketchProgram): the FK solver's errors join the
-// diagnostics and sketched() brings its contour for the programming graphics. A new request
-// cancels a dry run under way.
+// the result is not about what it shows. Two depths: the static check (task::loadProgram, what
+// the editor runs after each pause in typing), and the check that also runs the program dry as
+// `kerf check` does (task::checkByRunning: a missing called program, a tool the table lacks, a
+// division by zero once the Q parameters have their values ...). A Klartext program with FK
+// blocks is also run for the FK solver (task::sketchProgram): its errors join the diagnostics
+// and sketched() brings its contour for the programming graphics. A new request cancels a run
+// under way.
 class ProgramChecker : public QObject {
     Q_OBJECT
 
@@ -33,9 +35,11 @@ public:
                    QObject* parent = nullptr);
     ~ProgramChecker() override;
 
+    enum class Depth { Static, Run };
+
     // Returns the request's number (1, 2, ...), which checked() echoes.
-    uint64_t check(const QString& text, const std::filesystem::path& path,
-                   program::Dialect dialect);
+    uint64_t check(const QString& text, const std::filesystem::path& path, program::Dialect dialect,
+                   Depth depth = Depth::Static);
 
 signals:
     void checked(quint64 request, const kerf::DiagnosticList& diagnostics);
@@ -47,10 +51,11 @@ private:
         QString text;
         std::filesystem::path path;
         program::Dialect dialect = program::Dialect::Klartext;
+        Depth depth = Depth::Static;
         uint64_t generation = 0;
     };
     void work();
-    task::ProgramSketch sketchText(std::string text, const Request& request) const;
+    task::ProgramSketch checkText(std::string text, const Request& request) const;
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;

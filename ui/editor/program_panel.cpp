@@ -74,6 +74,7 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
                 }
                 m_editor->setDiagnostics(m_diagnostics);
                 emit diagnosticsChanged(m_diagnostics);
+                if (std::exchange(m_runCheck, 0) == request) reportProgramCheck();
             });
     m_autosaveTimer = new QTimer(this);
     m_autosaveTimer->setSingleShot(true);
@@ -124,6 +125,7 @@ ProgramPanel::~ProgramPanel() = default;
 void ProgramPanel::forgetDiagnostics() {
     m_checkTimer->stop();
     m_awaitedCheck = 0;
+    if (std::exchange(m_runCheck, 0) != 0) refreshTitle();
     showSketch(nullptr);
     if (m_diagnostics.empty()) return;
     m_diagnostics.clear();
@@ -249,13 +251,37 @@ void ProgramPanel::autosave() {
 
 void ProgramPanel::checkNow() {
     m_checkTimer->stop();
+    if (std::exchange(m_runCheck, 0) != 0) refreshTitle();
     if (!m_path.empty())
         m_awaitedCheck = m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect());
+}
+
+void ProgramPanel::checkProgram() {
+    m_checkTimer->stop();
+    if (m_path.empty() || loading()) return;
+    m_awaitedCheck = m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect(),
+                                      ProgramChecker::Depth::Run);
+    m_runCheck = m_awaitedCheck;
+    refreshTitle();
+}
+
+void ProgramPanel::reportProgramCheck() {
+    refreshTitle();
+    int errors = 0;
+    for (const Diagnostic& d : m_diagnostics)
+        errors += d.severity == Severity::Error ? 1 : 0;
+    // A note: the errors themselves are in the list, and the message line shows the first.
+    emit message(Severity::Note,
+                 errors == 0
+                     ? tr("Program check: no errors, the program runs to its end")
+                     : tr("Program check: the program cannot run (errors: %1)").arg(errors));
 }
 
 void ProgramPanel::onEdited() {
     if (m_loading) return;
     m_sketchStale = true;
+    if (std::exchange(m_runCheck, 0) != 0)  // its result is about the text before this edit
+        refreshTitle();
     m_autosaveTimer->start();
     m_checkTimer->start();
 }
@@ -325,7 +351,11 @@ void ProgramPanel::changeEvent(QEvent* event) {
 
 void ProgramPanel::refreshTitle() {
     const QString name = m_path.empty() ? tr("No program") : fileText(m_path.filename());
-    m_title->setText(modified() ? name + QStringLiteral(" *") : name);
+    QString title = modified() ? name + QStringLiteral(" *") : name;
+    if (checkingProgram())
+        title +=
+            QStringLiteral("   ") + tr("Checking the program: it runs without moving the machine");
+    m_title->setText(title);
 }
 
 }  // namespace kerf::ui

@@ -27,7 +27,9 @@ class ProgramEditor;
 // The program panel of the workspace: the open program's name, the editor and its find bar.
 // It checks the text a moment after each edit, autosaves unsaved edits to the recovery store
 // and saves atomically in the file's own encoding and line ends. A program with FK blocks gets
-// the FK programming graphics beside the editor (FkSketchView), from the same check.
+// the FK programming graphics beside the editor (FkSketchView), from the same check. The
+// explicit "Check program" runs the program dry as `kerf check` does (too slow to repeat after
+// every pause in typing on a large program, so the check while typing stays static).
 class ProgramPanel : public QWidget {
     Q_OBJECT
 
@@ -67,7 +69,12 @@ public:
     // Writes the autosave copy now (the timer does this after each pause in typing).
     void autosave();
 
+    // The static check of the text now (the editor makes it after each pause in typing).
     void checkNow();
+    // "Check program": the check `kerf check` makes, which also runs the program dry, in the
+    // background; its diagnostics replace the list and a message sums the result up.
+    void checkProgram();
+    bool checkingProgram() const { return m_runCheck != 0; }
     const DiagnosticList& diagnostics() const { return m_diagnostics; }
 
     // An FK element with several solutions, offered for FSELECT: the one at the cursor (its
@@ -110,6 +117,7 @@ private:
     // block the UI thread).
     void finishOpen(const std::filesystem::path& path, const QString& text);
     void refreshTitle();
+    void reportProgramCheck();
     void showSketch(std::shared_ptr<const task::ProgramSketch> sketch);
     // Finds the offer for the cursor (after a new check: `newSketch`); fkOfferChanged() only
     // when an offer appears or goes, so that the softkeys do not jump after every edit.
@@ -124,6 +132,7 @@ private:
     std::optional<QString> m_recovered;
     DiagnosticList m_diagnostics;
     uint64_t m_awaitedCheck = 0;  // the check whose result belongs to the text shown; 0: none
+    uint64_t m_runCheck = 0;      // the awaited check is checkProgram()'s; 0: none under way
     QLabel* m_title = nullptr;
     ProgramEditor* m_editor = nullptr;
     FindBar* m_findBar = nullptr;

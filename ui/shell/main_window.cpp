@@ -285,7 +285,7 @@ void MainWindow::refreshSoftkeys() {
                      editor->goToLine(*line);
              }},
             {"renumber", tr("Renumber\nblocks"), [editor] { editor->renumber(); }},
-            {"check", tr("Check\nprogram"), [this] { m_program->checkNow(); }},
+            {"check", tr("Check\nprogram"), [this] { m_program->checkProgram(); }},
             {"restore", tr("Restore\nautosave"), [this] { m_program->restoreRecovery(); }},
         });
         // CYCL DEF, CYCL CALL, TOOL CALL and the path functions (ui/cycles).

@@ -137,7 +137,7 @@ std::vector<SoftkeyRow> MainWindow::testRunRows() {
          [graphics] {
              if (graphics->viewport() != nullptr) graphics->viewport()->zoomBy(0.8);
          }},
-        {"testCheck", tr("Check\nprogram"), [this] { m_program->checkNow(); }},
+        {"testCheck", tr("Check\nprogram"), [this] { m_program->checkProgram(); }},
     }};
 }
 

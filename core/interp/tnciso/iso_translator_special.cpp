@@ -1,6 +1,7 @@
-// Special functions in DIN/ISO: the TNC writes SEL TABLE, GLOBAL DEF, PATTERN DEF, FUNCTION ...,
-// PLANE, CONTOUR DEF and the contour formula (SEL CONTOUR, DECLARE CONTOUR, QC) with their
-// conversational words inside an ISO block ("N50 SEL TABLE "DATUMS" *"); they have no G code.
+// Special functions in DIN/ISO: the TNC writes SEL TABLE, SEL PGM, CALL SELECTED PGM, GLOBAL
+// DEF, PATTERN DEF, FUNCTION ..., PLANE, CONTOUR DEF and the contour formula (SEL CONTOUR,
+// DECLARE CONTOUR, QC) with their conversational words inside an ISO block
+// ("N50 SEL TABLE "DATUMS" *"); they have no G code.
 #include <array>
 #include <string_view>
 
@@ -52,6 +53,13 @@ bool isSpecialFunction(std::string_view text, size_t at) {
         "SEL", "GLOBAL", "PATTERN", "FUNCTION", "PLANE", "DECLARE", "CONTOUR"};
     for (std::string_view head : kHeads) {
         if (startsWithWord(text, at, head)) return true;
+    }
+    // "CALL SELECTED PGM" calls what SEL PGM selected ("CALL" alone is no ISO word).
+    if (startsWithWord(text, at, "CALL")) {
+        size_t next = at + 4;
+        while (next < text.size() && (text[next] == ' ' || text[next] == '\t'))
+            ++next;
+        if (startsWithWord(text, next, "SELECTED")) return true;
     }
     // "QC10 = QC1 | QC2": a contour formula.
     return at + 2 < text.size() && upper(text[at]) == 'Q' && upper(text[at + 1]) == 'C' &&

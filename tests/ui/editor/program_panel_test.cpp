@@ -1,5 +1,6 @@
 #include "ui/editor/program_panel.h"
 
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTextBlock>
@@ -116,6 +117,80 @@ TEST(ProgramPanel, CheckReportsTheLineOfAnError) {
     panel.checkNow();
     ASSERT_TRUE(spy.wait(10000));
     EXPECT_FALSE(hasErrors(panel.diagnostics()));
+}
+
+// "Check program" tells what `kerf check` tells: the program runs dry (task::checkByRunning),
+// so a division by zero that only the run meets is an error at its operator, in the list the
+// editor jumps from, with a message that sums the check up.
+TEST(ProgramPanel, CheckProgramRunsTheProgramAsKerfCheckDoes) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_run_check");
+    writeFile(dir / "D.H",
+              "0 BEGIN PGM D MM\n1 Q1 = 0\n2 Q2 = 5 / Q1\n3 L Z+50 R0 FMAX\n4 END PGM D MM\n");
+    ProgramPanel panel(settingsIn(dir));
+    QSignalSpy changed(&panel, &ProgramPanel::diagnosticsChanged);
+    QSignalSpy messages(&panel, &ProgramPanel::message);
+    ASSERT_TRUE(panel.open(dir / "D.H"));
+    ASSERT_TRUE(changed.wait(10000));
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));  // the static check cannot see it
+    messages.clear();
+    panel.checkProgram();
+    EXPECT_TRUE(panel.checkingProgram());
+    auto* title = panel.findChild<QLabel*>("programTitle");
+    ASSERT_NE(title, nullptr);
+    EXPECT_TRUE(title->text().contains("Checking the program")) << title->text().toStdString();
+    ASSERT_TRUE(changed.wait(10000));
+    EXPECT_FALSE(panel.checkingProgram());
+    EXPECT_EQ(title->text(), "D.H");
+    ASSERT_TRUE(hasErrors(panel.diagnostics()));
+    const Diagnostic& error = panel.diagnostics().back();
+    EXPECT_EQ(error.line, 3u);  // "2 Q2 = 5 / Q1", the '/' at column 10
+    EXPECT_EQ(error.column, 10u);
+    EXPECT_EQ(error.messageTemplate, "division by zero");
+    // The summary is a note: the message line shows the error itself, the most serious.
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Note);
+    EXPECT_EQ(messages.at(0).at(1).toString(), "Program check: the program cannot run (errors: 1)");
+
+    // With the divisor fixed the check passes and says so.
+    QTextCursor cursor(panel.editor()->document()->findBlockByNumber(1));
+    cursor.movePosition(QTextCursor::EndOfBlock);
+    cursor.insertText("+2");
+    messages.clear();
+    panel.checkProgram();
+    ASSERT_TRUE(changed.wait(10000));
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_EQ(messages.at(0).at(1).toString(),
+              "Program check: no errors, the program runs to its end");
+}
+
+// An edit during the run of the check cancels it: the endless loop would keep the worker busy
+// for its ten million blocks, yet the static check of the edited text comes back, and no
+// summary speaks for the text that is gone.
+TEST(ProgramPanel, AnEditCancelsTheCheckProgramRun) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_run_check_cancel");
+    writeFile(dir / "L.H",
+              "0 BEGIN PGM L MM\n1 LBL 1\n2 FN 9: IF +0 EQU +0 GOTO LBL 1\n3 END PGM L MM\n");
+    auto settings = settingsIn(dir);
+    settings.checkDelayMs = 0;
+    ProgramPanel panel(settings);
+    QSignalSpy changed(&panel, &ProgramPanel::diagnosticsChanged);
+    QSignalSpy messages(&panel, &ProgramPanel::message);
+    ASSERT_TRUE(panel.open(dir / "L.H"));
+    ASSERT_TRUE(changed.wait(10000));
+    panel.checkProgram();
+    QTest::qWait(50);  // the worker is in the loop
+    changed.clear();
+    QTextCursor cursor(panel.editor()->document()->findBlockByNumber(2));
+    cursor.movePosition(QTextCursor::EndOfBlock);
+    cursor.insertText(" ; edited");
+    EXPECT_FALSE(panel.checkingProgram());
+    ASSERT_TRUE(changed.wait(10000));
+    EXPECT_FALSE(hasErrors(panel.diagnostics()));
+    for (const QList<QVariant>& message : messages)
+        EXPECT_FALSE(message.at(1).toString().contains(QStringLiteral("Program check")));
 }
 
 TEST(ProgramPanel, LargeFilesLoadInTheBackground) {

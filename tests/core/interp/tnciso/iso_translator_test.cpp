@@ -244,5 +244,15 @@ TEST(IsoTranslator, SpecialFunctionsAreWrittenWithTheirConversationalWords) {
                   "PLANE RESET STAY"}));
 }
 
+// SEL PGM and CALL SELECTED PGM, the pair the HMI's SPEC FCT writes, are conversational words
+// too; "CALL" without SELECTED stays an error (the ISO call is "%NAME").
+TEST(IsoTranslator, SelectedProgramCallsKeepTheirConversationalWords) {
+    EXPECT_EQ(translate("N10 SEL PGM \"SUB\" *\n"
+                        "N20 CALL SELECTED PGM *\n"
+                        "N30 %SUB *\n"),
+              (std::vector<std::string>{"SEL PGM \"SUB\"", "CALL SELECTED PGM", "CALL PGM SUB"}));
+    EXPECT_EQ(translate("N40 CALL LBL 1 *\n").front().substr(0, 9), "error at ");
+}
+
 }  // namespace
 }  // namespace kerf::tnciso

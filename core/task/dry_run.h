@@ -1,0 +1,51 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "core/base/diagnostic.h"
+#include "core/interp/interpreter.h"
+#include "core/machine/machine_config.h"
+#include "core/task/program_loader.h"
+
+// The check that runs the program: after the static check, the program runs to its end as
+// `kerf run` runs it without motion (the machine stands where the program put it; a probe touches
+// at the end of its move), writing no file. What stops the run on the same data and tables — a
+// division by zero, a tool the table lacks, a cycle the tool cannot machine, a called program
+// that is missing — is then the check's error at its block. `kerf check` and the HMI's "Check
+// program" run this same code (docs/headless.md, "What the check runs"). Qt-free; any thread,
+// one interpreter per call.
+namespace kerf::task {
+
+// About two seconds of a tight loop; `kerf check --max-blocks` changes it.
+inline constexpr uint64_t kDefaultMaxBlocks = 10'000'000;
+
+enum class DryRunEnd { Finished, BlockLimit, Stopped, Cancelled };
+
+struct DryRunOptions {
+    uint64_t maxBlocks = kDefaultMaxBlocks;
+    const std::atomic<bool>* cancel = nullptr;  // polled between slices of blocks
+    // Called at each sync point before the machine's answer; false ends the run (a FAGOR user
+    // screen's operator who has no more input). Unset: every sync point is answered.
+    std::function<bool()> atSync;
+};
+
+// Runs the loaded, checked interpreter to its end (Finished also when it failed: its
+// diagnostics() say why).
+DryRunEnd runDry(interp::Interpreter& interpreter, const DryRunOptions& options);
+
+// "stopped after N blocks: endless loop?" about `file`.
+Diagnostic blockLimitError(const std::string& file, uint64_t maxBlocks);
+
+struct RunCheck {
+    DiagnosticList diagnostics;  // the static check's, then the run's
+    bool cancelled = false;
+};
+
+// Loads the program without writing any file and, when it loaded without errors, runs it dry.
+RunCheck checkByRunning(const machine::MachineConfig& machine, ProgramRequest request,
+                        const DryRunOptions& options = {});
+
+}  // namespace kerf::task
