@@ -118,6 +118,9 @@ struct CycleError {
 };
 
 // Receives the moves of an expanded cycle (local coordinates, see above).
+// How far the straight pieces of an arc the stream cannot hold may stray from it (mm).
+inline constexpr double kSpatialArcTolerance = 0.5e-3;
+
 class CycleEmitter {
 public:
     virtual ~CycleEmitter() = default;
@@ -125,6 +128,12 @@ public:
     virtual void line(const Vec3& target, const Feed& feed) = 0;
     // Arc or helix about `center` (u, v) in the working plane; sweep signed, positive = DR+.
     virtual void arc(const Vec3& target, const Vec2& center, double sweepRad, const Feed& feed) = 0;
+    // An arc of less than half a turn from `from` to `target` about `centre` (all u, v, w) in the
+    // plane of the three points, which may hold the tool axis (cycle 23's approach). This one
+    // writes straight pieces within kSpatialArcTolerance of it; an emitter that can write the
+    // plane's arc does so instead.
+    virtual void spatialArc(const Vec3& from, const Vec3& target, const Vec3& centre,
+                            const Feed& feed);
     // Spindle-synchronised move (rigid tapping, thread cutting): `leadMm` per revolution, its
     // sign the hand of the thread (+ right-hand).
     virtual void threadMove(const Vec3& target, double leadMm, double startAngleDeg) = 0;

@@ -1,5 +1,7 @@
 #include "core/cycles/cycle_path.h"
 
+#include "core/geometry/spatial_arc.h"
+
 namespace kerf::cycles {
 
 namespace {
@@ -32,6 +34,18 @@ void CyclePath::arc(const Vec3& target, const Vec2& center, double sweepRad, con
     if (sweepRad == 0.0 || !count()) return;
     m_out.arc(target, center, sweepRad, feed);
     m_at = target;
+}
+
+void CyclePath::spatialArc(const Vec3& target, const Vec3& centre, const Feed& feed) {
+    if ((target - m_at).norm() <= kSamePosition || !count()) return;
+    m_out.spatialArc(m_at, target, centre, feed);
+    m_at = target;
+}
+
+void CycleEmitter::spatialArc(const Vec3& from, const Vec3& target, const Vec3& centre,
+                              const Feed& feed) {
+    for (const Vec3& p : arcChordPoints(from, target, centre, kSpatialArcTolerance))
+        line(p, feed);
 }
 
 void CyclePath::threadMove(const Vec3& target, double leadMm, double startAngleDeg) {

@@ -28,6 +28,9 @@ public:
     void moveUv(const Vec2& p, const Feed& feed) { move({p.x(), p.y(), m_at.z()}, feed); }
     // Arc about `center` ending at `target` (its w makes a helix).
     void arc(const Vec3& target, const Vec2& center, double sweepRad, const Feed& feed);
+    // An arc of less than half a turn about `centre` in the plane through it, the tool and
+    // `target` (a vertical arc when that plane holds the tool axis).
+    void spatialArc(const Vec3& target, const Vec3& centre, const Feed& feed);
     void threadMove(const Vec3& target, double leadMm, double startAngleDeg);
     void dwell(double seconds);
     void spindle(canon::SpindleDirection direction, double rpm);

@@ -575,6 +575,28 @@ Region offsetRegion(const Region& region, double distance) {
     return rebuildAll(solution, std::move(pieces));
 }
 
+bool containsLine(const Region& region, const Vec2& a, const Vec2& b) {
+    const Vec2 d = b - a;
+    const double length2 = d.squaredNorm();
+    if (length2 <= 0.0) return region.contains(a);
+    // Cut where the line meets a boundary; each piece between cuts lies wholly inside or outside.
+    const PlanarSegment line = PlanarSegment::line(a, b);
+    std::vector<double> cuts{0.0, 1.0};
+    for (const ClosedContour& c : region.boundaries) {
+        for (const PlanarSegment& s : c.segments) {
+            for (const Vec2& p : carrierIntersections(line, s)) {
+                const double t = (p - a).dot(d) / length2;
+                if (t > 0.0 && t < 1.0 && s.distanceTo(p) <= 1e-9) cuts.push_back(t);
+            }
+        }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+        if (!region.contains(a + 0.5 * (cuts[i] + cuts[i + 1]) * d)) return false;
+    }
+    return region.contains(a) && region.contains(b);
+}
+
 bool selfIntersects(const ClosedContour& contour) {
     Path path;
     flattenInto(contour, 0.0, path);

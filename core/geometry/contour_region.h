@@ -40,6 +40,10 @@ Region offsetRegion(const Region& region, double distance);
 // The same closed path, starting at its point nearest to `p` (a segment there is split).
 ClosedContour startingNearest(const ClosedContour& contour, const Vec2& p);
 
+// True when the straight line from `a` to `b` lies inside (boundary points count, as for
+// `contains`).
+bool containsLine(const Region& region, const Vec2& a, const Vec2& b);
+
 // True when the chain crosses or touches itself.
 bool selfIntersects(const ClosedContour& contour);
 

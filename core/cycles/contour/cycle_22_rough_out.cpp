@@ -183,7 +183,9 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             if (auto e = planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx),
                                       passes, ctx.clearingCache))
                 return e;
+            // Q404 between the rest areas: 1 lifts, 0 runs along the contour at the depth.
             if (v.number(18) > 0.0 && v.number(404) > 0.5) liftBetweenAreas(passes, region);
+            if (v.number(18) > 0.0 && v.number(404) <= 0.5) linkAlongContour(passes, room);
             // Where no helix fits (a slot), reciprocating over LCUTS / tan(ANGLE) (spec).
             const double strokes = options.helixTan > 0.0 && ctx.tool.cuttingLength > 0.0
                                        ? ctx.tool.cuttingLength / options.helixTan

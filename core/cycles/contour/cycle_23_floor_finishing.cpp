@@ -48,16 +48,18 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
 
     if ((path.w() - d.clearanceHeight) * d.up < 0.0) path.rapidW(d.clearanceHeight);
     // Each floor, shallowest first: down at rapid to the set-up clearance above the roughed
-    // floor, then at Q11 to the floor.
+    // floor, then at Q11 to the floor (on the approach arc where it fits).
     for (size_t level = 0; level < area.levels.size(); ++level) {
-        const Region region = floorRegion(
-            area, level, level == 0 ? top : toolCentreRegion(area, radius + d.sideAllowance, level),
-            radius);
+        const Region room =
+            level == 0 ? top : toolCentreRegion(area, radius + d.sideAllowance, level);
+        const Region region = floorRegion(area, level, room, radius);
         if (region.empty()) continue;
         std::vector<ClearingPass> passes;
         if (auto e = planClearing(23, region, d.overlap * radius, d.climb, planningStart(ctx),
                                   passes, ctx.clearingCache))
             return e;
+        // Onto the floor on a vertical quarter arc of the tool radius where it has room (spec).
+        placeApproachArcs(passes, room, radius);
         const double bottom = area.levels[level].bottom;
         const double roughFloor = d.at(bottom - d.floorAllowance);
         runClearing(path, passes, d, d.at(bottom), roughFloor + d.up * d.setUpClearance, v.feed(12),

@@ -272,13 +272,69 @@ Vec2 planningStart(const CycleContext& ctx) {
     return ctx.contours.front().contour.segments.front().start;
 }
 
-void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed) {
+namespace {
+
+void followSegments(CyclePath& path, const std::vector<PlanarSegment>& segments, const Feed& feed) {
     const double w = path.w();
-    for (const PlanarSegment& s : contour.segments) {
+    for (const PlanarSegment& s : segments) {
         if (s.kind == PlanarSegment::Kind::Line) {
             path.moveUv(s.end, feed);
         } else {
             path.arc({s.end.x(), s.end.y(), w}, s.center, s.sweep, feed);
+        }
+    }
+}
+
+// The segment from its start to `p` on it.
+PlanarSegment segmentUpTo(const PlanarSegment& s, const Vec2& p) {
+    if (s.kind == PlanarSegment::Kind::Line) return PlanarSegment::line(s.start, p);
+    const Vec2 a = s.start - s.center;
+    const Vec2 b = p - s.center;
+    double turn = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    if (turn * s.sweep < 0.0)
+        turn += s.sweep > 0.0 ? 2.0 * std::numbers::pi : -2.0 * std::numbers::pi;
+    return PlanarSegment::arc(s.start, s.center, turn);
+}
+
+// Along a closed path from its start to `p` on it, and that way's length.
+std::vector<PlanarSegment> pathTo(const ClosedContour& ring, const Vec2& p, double& length) {
+    std::vector<PlanarSegment> out;
+    length = 0.0;
+    for (const PlanarSegment& s : ring.segments) {
+        if (s.distanceTo(p) <= 1e-6) {
+            const PlanarSegment last = segmentUpTo(s, p);
+            if (last.length() > 1e-9) out.push_back(last);
+            length += last.length();
+            return out;
+        }
+        out.push_back(s);
+        length += s.length();
+    }
+    return out;
+}
+
+}  // namespace
+
+void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed) {
+    followSegments(path, contour.segments, feed);
+}
+
+void linkAlongContour(std::vector<ClearingPass>& passes, const Region& region) {
+    for (size_t i = 1; i < passes.size(); ++i) {
+        ClearingPass& pass = passes[i];
+        if (pass.straightLink) continue;
+        const Vec2 from = passes[i - 1].path.segments.front().start;
+        const Vec2 to = pass.path.segments.front().start;
+        for (const ClosedContour& boundary : region.boundaries) {
+            if (boundary.distanceTo(from) > 1e-6 || boundary.distanceTo(to) > 1e-6) continue;
+            const ClosedContour ring = startingNearest(boundary, from);
+            double forward = 0.0;
+            double backward = 0.0;
+            std::vector<PlanarSegment> ahead = pathTo(ring, to, forward);
+            std::vector<PlanarSegment> behind = pathTo(ring.reversed(), to, backward);
+            pass.contourLink = forward <= backward ? std::move(ahead) : std::move(behind);
+            pass.straightLink = true;
+            break;
         }
     }
 }
@@ -377,6 +433,20 @@ void reciprocateDown(CyclePath& path, const ClosedContour& contour, double lengt
     if (!forward) stroke(path, piece, false, toW, feed);
 }
 
+// Over the point `approachRadius` back along the pass's start tangent, down to the arc's top (at
+// rapid as far as the re-entry height), then the quarter arc about the point that high above the
+// start, ending on the start tangent to the floor and to the pass.
+void approachOnArc(CyclePath& path, const ClearingPass& pass, const ContourData& data, double w,
+                   double reentryW, const Feed& feed) {
+    const Vec2 start = pass.path.segments.front().start;
+    const Vec2 tangent = pass.path.segments.front().startTangent();
+    const double top = w + data.up * pass.approachRadius;
+    path.rapidUv(start - pass.approachRadius * tangent);
+    path.rapidW((reentryW - top) * data.up > 0.0 ? reentryW : top);
+    path.moveW(top, feed);
+    path.spatialArc({start.x(), start.y(), w}, {start.x(), start.y(), top}, feed);
+}
+
 }  // namespace
 
 double reciprocatingStrokes(const ClearingPass& pass, double drop, double tanAngle) {
@@ -414,6 +484,20 @@ bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, doubl
     return true;
 }
 
+void placeApproachArcs(std::vector<ClearingPass>& passes, const Region& region, double radius) {
+    for (ClearingPass& pass : passes) {
+        if (pass.straightLink) continue;
+        const Vec2 start = pass.path.segments.front().start;
+        const Vec2 back = -pass.path.segments.front().startTangent();
+        for (double r = radius; r >= radius / 4.0 - 1e-12; r /= 2.0) {
+            if (containsLine(region, start + r * back, start)) {
+                pass.approachRadius = r;
+                break;
+            }
+        }
+    }
+}
+
 void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const ContourData& data,
                  double w, double reentryW, const Feed& mill, const Feed& plunge,
                  const ClearingOptions& options) {
@@ -422,18 +506,24 @@ void runClearing(CyclePath& path, const std::vector<ClearingPass>& passes, const
     for (const ClearingPass& pass : passes) {
         const Vec2 start = pass.path.segments.front().start;
         if (pass.straightLink) {
+            followSegments(path, pass.contourLink, mill);
             path.moveUv(start, mill);
         } else {
             // Over islands and uncut material: up to the set-up clearance above the surface.
             if ((path.w() - data.aboveSurface()) * data.up < 0.0) path.rapidW(data.aboveSurface());
-            path.rapidUv(start);
-            path.rapidW(reentryW);
-            if (options.helixTan > 0.0 && pass.helixRadius > 0.0) {
-                helixDown(path, pass.helixCentre, w, options.helixTan, options.climb, plunge);
-            } else if (options.helixTan > 0.0 && pass.strokeLength > 0.0) {
-                reciprocateDown(path, pass.path, pass.strokeLength, w, options.helixTan, plunge);
+            if (pass.approachRadius > 0.0) {
+                approachOnArc(path, pass, data, w, reentryW, plunge);
             } else {
-                path.moveW(w, plunge);
+                path.rapidUv(start);
+                path.rapidW(reentryW);
+                if (options.helixTan > 0.0 && pass.helixRadius > 0.0) {
+                    helixDown(path, pass.helixCentre, w, options.helixTan, options.climb, plunge);
+                } else if (options.helixTan > 0.0 && pass.strokeLength > 0.0) {
+                    reciprocateDown(path, pass.path, pass.strokeLength, w, options.helixTan,
+                                    plunge);
+                } else {
+                    path.moveW(w, plunge);
+                }
             }
         }
         followPath(path, pass.path, pass.fullWidth ? reduced : mill);

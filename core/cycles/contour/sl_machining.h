@@ -73,6 +73,12 @@ struct ClearingPass {
     // Where no helix fits: a reciprocating plunge to and fro along the pass's first
     // `strokeLength` of path (0: none).
     double strokeLength = 0.0;
+    // Reached at the depth along a boundary of the tool-centre region from the end of the pass
+    // before (cycle 22 Q404 = 0 between rest areas) instead of straight.
+    std::vector<PlanarSegment> contourLink;
+    // Cycle 23: the radius of the vertical quarter arc that brings the tool down onto the start,
+    // tangent to the floor and to the pass (0: straight down).
+    double approachRadius = 0.0;
 };
 
 // Places a helix of at most `radius` (and at least a quarter of it) for every pass reached by a
@@ -82,6 +88,16 @@ struct ClearingPass {
 // has neither.
 bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius,
                   double strokeLength = 0.0);
+
+// Cycle 22 Q404 = 0: a pass that would be reached from above is reached at the depth along the
+// boundary of `region` (the tool-centre region, the contour for the tool) when it and the pass
+// before start on that same boundary: the shorter way round from one start to the other.
+void linkAlongContour(std::vector<ClearingPass>& passes, const Region& region);
+
+// Cycle 23's vertical tangential approach (spec: "if there is room"): for every pass reached from
+// above, a quarter arc of `radius`, else R/2 or R/4, whose path in the plane (the line of that
+// length back along the pass's start tangent) lies inside `region`; none fits: straight down.
+void placeApproachArcs(std::vector<ClearingPass>& passes, const Region& region, double radius);
 
 // How many strokes the reciprocating plunge of `pass` makes over `drop` (0: it has none).
 double reciprocatingStrokes(const ClearingPass& pass, double drop, double tanAngle);

@@ -51,6 +51,21 @@ Chain chainBetween(const Chain& chain, double from, double to) {
     return out;
 }
 
+// The part of a closed `chain` (length `total`) between the path lengths `from` and `to`, which
+// may reach across its start (from < 0 or to > total).
+Chain chainAround(const Chain& chain, double total, double from, double to) {
+    if (from < 0.0) {
+        from += total;
+        to += total;
+    }
+    Chain out = chainBetween(chain, from, std::min(to, total));
+    if (to > total) {
+        const Chain beyond = chainBetween(chain, 0.0, to - total);
+        out.insert(out.end(), beyond.begin(), beyond.end());
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<Chain> restPieces(const Chain& fine, double fineRadius, const Chain& coarse,
@@ -102,20 +117,33 @@ std::vector<Chain> restPieces(const Chain& fine, double fineRadius, const Chain&
         at += l;
     }
     if (inside) spans.emplace_back(begin, total);
-    // Lengthened by Q448 within the path, joined across gaps of at most Q447.
+    // Lengthened by Q448 (an open path not beyond its ends), joined across gaps of at most Q447;
+    // on a closed path also across its start, where the last piece runs on into the first.
+    const bool closed = (fine.front().start - fine.back().end).norm() <= 1e-9;
     std::vector<std::pair<double, double>> joined;
     for (auto [from, to] : spans) {
-        from = std::max(0.0, from - rest.extension);
-        to = std::min(total, to + rest.extension);
+        from -= rest.extension;
+        to += rest.extension;
+        if (!closed) {
+            from = std::max(0.0, from);
+            to = std::min(total, to);
+        }
         if (!joined.empty() && from - joined.back().second <= rest.connection) {
             joined.back().second = std::max(joined.back().second, to);
         } else {
             joined.emplace_back(from, to);
         }
     }
+    if (closed && joined.size() > 1 &&
+        joined.front().first + total - joined.back().second <= rest.connection) {
+        joined.back().second = std::max(joined.back().second, joined.front().second + total);
+        joined.erase(joined.begin());
+    }
     std::vector<Chain> pieces;
     for (const auto& [from, to] : joined) {
-        Chain piece = chainBetween(fine, from, to);
+        // A closed path with rest all round is run whole from its start.
+        if (closed && to - from >= total - 1e-9) return {fine};
+        Chain piece = closed ? chainAround(fine, total, from, to) : chainBetween(fine, from, to);
         if (!piece.empty()) pieces.push_back(std::move(piece));
     }
     return pieces;

@@ -18,9 +18,10 @@ struct TrainRest {
 // The pieces of `fine` (the fine tool's centre path, radius `fineRadius`) where its tool sticks
 // out of what the coarse tool (centre path `coarse`, radius `coarseRadius`) swept by more than
 // Q446: a point P of `fine` is such when its distance from `coarse` exceeds coarseRadius -
-// fineRadius + Q446. Each piece is lengthened by Q448 (within the path), pieces whose gap along
-// the path is at most Q447 are one. An empty `coarse` (the coarse tool did not fit) leaves the
-// whole path.
+// fineRadius + Q446. Each piece is lengthened by Q448 (within an open path), pieces whose gap
+// along the path is at most Q447 are one. On a closed path (its end on its start) a piece may run
+// across the start: the rest around it is one piece, ordered last. An empty `coarse` (the coarse
+// tool did not fit) leaves the whole path.
 std::vector<Chain> restPieces(const Chain& fine, double fineRadius, const Chain& coarse,
                               double coarseRadius, const TrainRest& rest);
 

@@ -6,6 +6,7 @@
 
 #include "core/base/translate.h"
 #include "core/cycles/drilling/hole_levels.h"
+#include "core/geometry/spatial_arc.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 
 namespace kerf::klartext {
@@ -41,6 +42,32 @@ public:
                                          center, sweepRad),
                      false, f, CommonWords{});
     }
+    // An arc in one of the planes XY, YZ, ZX that the transformations keep is written as such;
+    // any other as straight pieces within the tolerance after scaling.
+    void spatialArc(const Vec3& from, const Vec3& target, const Vec3& centre,
+                    const cycles::Feed& feed) override {
+        if (!ok()) return;
+        const double f = feedValue(feed);
+        const std::optional<Plane> plane = planeOfLocalArc(from, target, centre);
+        if (plane && m.pathKeepsArcs(*plane)) {
+            const Pose end = m.fromLocal(target);
+            const PlaneAxes axes = planeAxes(*plane);
+            const Pose c = m.fromLocal(centre);
+            const Vec2 centre2(c[axes.first], c[axes.second]);
+            const Vec2 a = Vec2(m.m_programmed[axes.first], m.m_programmed[axes.second]) - centre2;
+            const Vec2 b = Vec2(end[axes.first], end[axes.second]) - centre2;
+            const double sweep = std::atan2(cross2(a, b), a.dot(b));
+            m.submitMove(ContourElement::arc(*plane, m.m_programmed, end, centre2, sweep), false, f,
+                         CommonWords{});
+            return;
+        }
+        double scale = m.m_frame.scale();
+        for (double s : m.m_frame.axisScale())
+            scale = std::max(scale, m.m_frame.scale() * s);
+        const double tolerance = cycles::kSpatialArcTolerance / std::max(1.0, std::fabs(scale));
+        for (const Vec3& p : arcChordPoints(from, target, centre, tolerance))
+            m.moveProgrammed(m.fromLocal(p), false, f);
+    }
     void threadMove(const Vec3& target, double leadMm, double startAngleDeg) override {
         if (!ok() || !m.checkPathError(m.m_path.flush())) return;
         const Pose end = m.fromLocal(target);
@@ -60,6 +87,17 @@ public:
 
 private:
     double feedValue(const cycles::Feed& feed) { return m.cycleFeed(feed); }
+    // The plane of the machine's axes an arc given in (u, v, w) lies in: the one whose normal
+    // coordinate its start, end and centre share.
+    std::optional<Plane> planeOfLocalArc(const Vec3& from, const Vec3& to, const Vec3& c) const {
+        const PlaneAxes a = planeAxes(m.workingPlane());
+        const Axis local[] = {a.first, a.second, a.normal};
+        for (int k = 0; k < 3; ++k) {
+            if (std::fabs(from[k] - c[k]) > 1e-9 || std::fabs(to[k] - c[k]) > 1e-9) continue;
+            return planeFromAxes(local[(k + 1) % 3], local[(k + 2) % 3]);
+        }
+        return std::nullopt;
+    }
 };
 
 void KlartextInterpreter::CycleFunctions::dwell(double seconds) {

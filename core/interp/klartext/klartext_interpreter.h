@@ -365,6 +365,8 @@ private:
     // Arcs in `plane` turn the other way in the path's coordinates (radius compensation changes
     // side).
     bool pathFlipsOrientation(Plane plane) const;
+    // Arcs in `plane` stay arcs of that plane in the path's coordinates.
+    bool pathKeepsArcs(Plane plane) const;
     Pose programOfPath(const Pose& path) const;
     // After TCPM or the tilted plane's frame changed: the path works in the space they need
     // (klartext_tcpm.cpp). Flushes the path.

@@ -61,6 +61,11 @@ bool KlartextInterpreter::pathFlipsOrientation(Plane plane) const {
     return m_frame.flipsOrientation(plane);
 }
 
+bool KlartextInterpreter::pathKeepsArcs(Plane plane) const {
+    if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.keepsArcsInTiltedPlane(plane);
+    return m_frame.keepsArcs(plane);
+}
+
 Pose KlartextInterpreter::programOfPath(const Pose& path) const {
     if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.fromTiltedPlane(path);
     return m_frame.toProgram(path);

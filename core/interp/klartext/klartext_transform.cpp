@@ -38,7 +38,7 @@ std::optional<ContourElement> KlartextInterpreter::toPathSpace(const ContourElem
     };
     if (e.kind == ContourElement::Kind::Line)
         return ContourElement::line(e.plane, map(e.start), map(e.end));
-    if (!(tiltedPlane ? m_frame.keepsArcsInTiltedPlane(e.plane) : m_frame.keepsArcs(e.plane))) {
+    if (!pathKeepsArcs(e.plane)) {
         fail("transformation",
              KERF_TR_NOOP("an arc in the {1} plane cannot be rotated out of its plane or scaled "
                           "with different factors"),

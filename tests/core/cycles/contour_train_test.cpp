@@ -297,6 +297,47 @@ TEST(ContourTrain, RestMachiningFollowsOnlyWhereTheCoarseToolLeftMaterial) {
     }
 }
 
+// A closed square X0..20 Y0..20, counter-clockwise from its corner X0 Y0, with RL (the tool
+// inside): the coarse R5 ran on the square 5..15, the fine R2 runs on 2..18 from its corner
+// (2, 2) nearest the contour's start. Rest at each corner as above, from 5 - 0.245153 before
+// the corner to as far after it (Q447 = Q448 = 0). The rest round the start corner is one piece
+// from (2, 4.754847) through (2, 2) to (4.754847, 2), run last, not two entered separately: four
+// pieces, four entries from above.
+TEST(ContourTrain, RestAcrossTheStartOfAClosedContourIsOnePiece) {
+    const Vec2 p[] = {{0.0, 0.0}, {20.0, 0.0}, {20.0, 20.0}, {0.0, 20.0}};
+    std::vector<PlanarSegment> square;
+    for (size_t i = 0; i < 4; ++i)
+        square.push_back(PlanarSegment::line(p[i], p[(i + 1) % 4]));
+    CycleContext ctx = trainContext(square);
+    ctx.train.side = 1;
+    ctx.tool.radius = 2.0;
+    ctx.toolByNumber = [](int) {
+        ToolInfo coarse;
+        coarse.radius = 5.0;
+        return std::optional<ToolInfo>(coarse);
+    };
+    CycleValues v = train(0.0, 1);
+    v.set(18, 7.0);
+    v.set(447, 0.0);
+    v.set(448, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(25, v, ctx, out));
+    size_t downs = 0;
+    for (const Move& m : out.moves)
+        downs += std::fabs(m.target.z()) < 1e-9 ? 1u : 0u;
+    EXPECT_EQ(downs, 4u);
+    const double near = 5.0 - std::sqrt(3.01 * 3.01 - 9.0);
+    const std::vector<Vec2> points = pathAt(out, -4.0);
+    ASSERT_EQ(points.size(), 12u);  // per piece: its start and the ends of its two lines
+    EXPECT_NEAR((points[9] - Vec2(2.0, near)).norm(), 0.0, 1e-6);
+    EXPECT_NEAR((points[10] - Vec2(2.0, 2.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((points[11] - Vec2(near, 2.0)).norm(), 0.0, 1e-6);
+    // The other corners in the order of the path: (18, 2), (18, 18), (2, 18).
+    EXPECT_NEAR((points[1] - Vec2(18.0, 2.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((points[4] - Vec2(18.0, 18.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((points[7] - Vec2(2.0, 18.0)).norm(), 0.0, 1e-9);
+}
+
 // Cycle 276 follows the heights of a 3-D path: the line X0..20 from Z-1 to Z-3 with R0 is
 // followed on itself, the end at Z-3; the tool must come from at or above Q7; one label only.
 TEST(ContourTrain3d, FollowsTheHeightsAndRefusesATooLowStart) {

@@ -15,11 +15,13 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 struct Move {
-    enum Kind { Rapid, Line, Arc } kind;
+    enum Kind { Rapid, Line, Arc, SpatialArc } kind;
     Vec3 target;
     Vec2 centre;
     double sweep;
     Feed feed;
+    Vec3 from = Vec3::Zero();     // spatial arcs
+    Vec3 centre3 = Vec3::Zero();  // spatial arcs
 };
 
 struct Recorder final : CycleEmitter {
@@ -32,6 +34,9 @@ struct Recorder final : CycleEmitter {
     }
     void arc(const Vec3& t, const Vec2& c, double s, const Feed& f) override {
         moves.push_back({Move::Arc, t, c, s, f});
+    }
+    void spatialArc(const Vec3& from, const Vec3& t, const Vec3& c, const Feed& f) override {
+        moves.push_back({Move::SpatialArc, t, Vec2::Zero(), 0.0, f, from, c});
     }
     void threadMove(const Vec3&, double, double) override {}
     void dwell(double) override {}
@@ -531,6 +536,56 @@ TEST(SlCycles, FineRoughingStrategyLiftsBetweenRestAreas) {
     }
 }
 
+// Q404 = 0: between the rest areas the tool stays at the depth and runs along the contour (the
+// fine tool's tool-centre path |u| <= 8, |v| <= 4). Same pocket as above: one ring per corner
+// area (shrunk by the step 2 nothing is left), each starting where it is nearest the end of the
+// one before: (-8, -4) (nearest the contour's start (-10, -6)), then (-8, 1) (the area at
+// (-8, 4), 5 away), then (5, 4) (the area at (8, 4), on its wall), then (8, -1). The links run up
+// the wall u = -8 from v = -4 to 1; from (-8, 1) up to (-8, 4) and along v = 4 to (5, 4); from
+// (5, 4) to (8, 4) and down to (8, -1). One plunge only.
+TEST(SlCycles, FineRoughingAlongTheContourBetweenRestAreas) {
+    const CycleValues data = contourData(-4.0, 0.0, 0.0);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 2.0;
+    ctx.contours.push_back({rectangle(-10, -6, 10, 6), false, 1});
+    ctx.contourData = &data;
+    ctx.toolByNumber = [](int) {
+        ToolInfo coarse;
+        coarse.radius = 5.0;
+        return std::optional<ToolInfo>(coarse);
+    };
+    CycleValues v = roughOut(0.0);
+    v.set(18, 7.0);
+    v.set(404, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(22, v, ctx, out));
+    size_t plunges = 0;
+    std::vector<Vec2> wallPoints;  // moves at the depth ending on the walls' corners
+    bool down = false;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Rapid) {
+            EXPECT_FALSE(down) << "no rapid at the depth";
+            continue;
+        }
+        const bool atDepth = std::fabs(m.target.z() + 4.0) < 1e-9;
+        if (atDepth && !down) ++plunges;
+        down = atDepth;
+        if (!atDepth) continue;
+        EXPECT_LE(std::fabs(m.target.x()), 8.0 + 1e-6);
+        EXPECT_LE(std::fabs(m.target.y()), 4.0 + 1e-6);
+        if (m.kind == Move::Line) wallPoints.emplace_back(m.target.x(), m.target.y());
+    }
+    EXPECT_EQ(plunges, 1u);
+    // The link ends and the room's corners it turns round, in this order.
+    const Vec2 expected[] = {{-8, 1}, {-8, 4}, {5, 4}, {8, 4}, {8, -1}};
+    size_t found = 0;
+    for (const Vec2& p : wallPoints) {
+        if (found < std::size(expected) && (p - expected[found]).norm() < 1e-6) ++found;
+    }
+    EXPECT_EQ(found, std::size(expected));
+}
+
 // The clearing cache hands back a plan only for exactly the same region, step, direction and
 // start; what it hands back is the plan made without it.
 TEST(SlCycles, ClearingCacheReusesOnlyAnIdenticalPlan) {
@@ -558,6 +613,98 @@ TEST(SlCycles, ClearingCacheReusesOnlyAnIdenticalPlan) {
     }
     EXPECT_TRUE(fresh.front().fullWidth);  // the innermost ring first
     EXPECT_FALSE(fresh.back().fullWidth);
+}
+
+CycleValues floorFinishing() {
+    CycleValues v;
+    v.set(11, 100.0);
+    v.set(12, 350.0);
+    v.set(208, 0.0);
+    return v;
+}
+
+// Cycle 23 onto the floor on a vertical quarter arc tangent to the floor and the first pass.
+// A 60 x 40 pocket, R5, allowances 0.5, depth 10: tool-centre rings |u| <= 24.5, 19.5, 14.5 by
+// |v| <= 14.5, 9.5, 4.5; the innermost first, from its corner nearest the contour's start
+// (-30, -20), i.e. (-14.5, -4.5), along +u (counter-clockwise). The arc of radius R = 5 starts
+// 5 back along -u and 5 above the floor, at (-19.5, -4.5, -5) (inside the outer ring), about
+// (-14.5, -4.5, -5): reached at rapid (it lies above Q6 over the roughed floor, -9.5 + 2), it
+// ends on (-14.5, -4.5, -10) going straight down at its start and along +u at its end, at Q11.
+TEST(SlCycles, FloorFinishingApproachesOnAVerticalTangentialArc) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.5);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.contours.push_back({rectangle(-30, -20, 30, 20), false, 1});
+    ctx.contourData = &data;
+    Recorder out;
+    ASSERT_FALSE(run(23, floorFinishing(), ctx, out));
+    size_t arcs = 0;
+    for (size_t i = 1; i + 1 < out.moves.size(); ++i) {
+        const Move& m = out.moves[i];
+        if (m.kind != Move::SpatialArc) continue;
+        ++arcs;
+        const Move& before = out.moves[i - 1];
+        EXPECT_EQ(before.kind, Move::Rapid);
+        EXPECT_NEAR((before.target - Vec3(-19.5, -4.5, -5.0)).norm(), 0.0, 1e-9);
+        EXPECT_NEAR((m.from - Vec3(-19.5, -4.5, -5.0)).norm(), 0.0, 1e-9);
+        EXPECT_NEAR((m.centre3 - Vec3(-14.5, -4.5, -5.0)).norm(), 0.0, 1e-9);
+        EXPECT_NEAR((m.target - Vec3(-14.5, -4.5, -10.0)).norm(), 0.0, 1e-9);
+        EXPECT_DOUBLE_EQ(m.feed.value, 100.0);
+        // A quarter arc: its tangent at the end is -(from - centre) / r, at the start
+        // (target - centre) / r.
+        const Vec3 endTangent = -(m.from - m.centre3) / 5.0;
+        const Vec3 startTangent = (m.target - m.centre3) / 5.0;
+        EXPECT_NEAR((startTangent - Vec3(0.0, 0.0, -1.0)).norm(), 0.0, 1e-12);
+        EXPECT_NEAR((endTangent - Vec3(1.0, 0.0, 0.0)).norm(), 0.0, 1e-12);
+        const Move& next = out.moves[i + 1];
+        EXPECT_EQ(next.kind, Move::Line);
+        EXPECT_NEAR((next.target - Vec3(14.5, -4.5, -10.0)).norm(), 0.0, 1e-9);
+    }
+    EXPECT_EQ(arcs, 1u) << "the other rings follow at the floor";
+}
+
+// Where the arc of R has no room it is halved (R/2, R/4), else the tool goes straight down. A
+// 26 x 16 pocket, R5, no allowance, Q2 = 0.5: rings |u| <= 8, 5.5 by |v| <= 3, 0.5; the inner
+// one starts at (-5.5, -0.5) along +u with 2.5 behind it to the outer ring: an arc of R/2 = 2.5
+// from (-8, -0.5, -7.5). A 16 x 12 pocket has one ring |u| <= 3, |v| <= 1, starting at its
+// corner (-3, -1): nothing behind it, so down at Q11 from Q6 over the floor (-10 + 2).
+TEST(SlCycles, FloorFinishingArcHalvedOrStraightDownWithoutRoom) {
+    CycleValues data = contourData(-10.0, 0.0, 0.0);
+    data.set(2, 0.5);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    ctx.contours.push_back({rectangle(-13, -8, 13, 8), false, 1});
+    ctx.contourData = &data;
+    Recorder halved;
+    ASSERT_FALSE(run(23, floorFinishing(), ctx, halved));
+    size_t arcs = 0;
+    for (const Move& m : halved.moves) {
+        if (m.kind != Move::SpatialArc) continue;
+        ++arcs;
+        EXPECT_NEAR((m.from - Vec3(-8.0, -0.5, -7.5)).norm(), 0.0, 1e-9);
+        EXPECT_NEAR((m.centre3 - Vec3(-5.5, -0.5, -7.5)).norm(), 0.0, 1e-9);
+        EXPECT_NEAR((m.target - Vec3(-5.5, -0.5, -10.0)).norm(), 0.0, 1e-9);
+    }
+    EXPECT_EQ(arcs, 1u);
+
+    const CycleValues narrowData = contourData(-10.0, 0.0, 0.0);
+    ctx.contours = {{rectangle(-8, -6, 8, 6), false, 1}};
+    ctx.contourData = &narrowData;
+    Recorder straight;
+    ASSERT_FALSE(run(23, floorFinishing(), ctx, straight));
+    std::vector<Vec3> plunge;
+    for (size_t i = 1; i < straight.moves.size(); ++i) {
+        EXPECT_NE(straight.moves[i].kind, Move::SpatialArc);
+        if (straight.moves[i].kind == Move::Line && straight.moves[i - 1].kind == Move::Rapid) {
+            plunge = {straight.moves[i - 1].target, straight.moves[i].target};
+            EXPECT_DOUBLE_EQ(straight.moves[i].feed.value, 100.0);
+        }
+    }
+    ASSERT_EQ(plunge.size(), 2u);
+    EXPECT_NEAR((plunge[0] - Vec3(-3.0, -1.0, -8.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((plunge[1] - Vec3(-3.0, -1.0, -10.0)).norm(), 0.0, 1e-9);
 }
 
 }  // namespace

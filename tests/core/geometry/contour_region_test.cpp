@@ -225,5 +225,21 @@ TEST(ContourRegion, ContainsTellsSidesApartJustBesideALargeArc) {
     }
 }
 
+// A 10 x 10 square with a hole of radius 2 about (5, 5): a line along v = 1 lies inside; along
+// v = 3.5 it passes 1.5 from the hole's centre (inside the hole), along v = 2.9 2.1 from it
+// (beside it); one leaving the square at u = 0 and one along the square's own side u = 0 (on
+// the boundary, which counts as inside); a line whose ends lie inside but which crosses the
+// hole from (2.5, 5) to (7.5, 5).
+TEST(ContourRegion, ContainsLineFindsCrossingsOfWallsAndHoles) {
+    const Region plate = subtract(regionOf(rectangle(0, 0, 10, 10)), regionOf(circle({5, 5}, 2)));
+    EXPECT_TRUE(containsLine(plate, {1.0, 1.0}, {9.0, 1.0}));
+    EXPECT_FALSE(containsLine(plate, {1.0, 3.5}, {9.0, 3.5}));
+    EXPECT_TRUE(containsLine(plate, {1.0, 2.9}, {9.0, 2.9}));
+    EXPECT_FALSE(containsLine(plate, {-1.0, 1.0}, {5.0, 1.0}));
+    EXPECT_TRUE(containsLine(plate, {0.0, 1.0}, {0.0, 9.0}));
+    EXPECT_FALSE(containsLine(plate, {2.5, 5.0}, {7.5, 5.0}));
+    EXPECT_TRUE(containsLine(plate, {2.5, 5.0}, {2.5, 6.0}));
+}
+
 }  // namespace
 }  // namespace kerf

@@ -457,3 +457,81 @@ TEST_F(InterpreterTest, MFunctionsOfAContourSubprogramHaveNoEffect) {
 
 }  // namespace
 }  // namespace kerf::klartext
+
+namespace kerf::klartext {
+namespace {
+
+// Cycle 23's approach arc in the stream. The 60 x 40 pocket about the origin, R5, allowances 0.5,
+// depth 10: the first floor pass starts at Y-4.5 along +X (sl_cycles_test), so the
+// quarter arc from Z-5 to Z-10 about Z-5 lies in the ZX plane: in ZX
+// coordinates (Z, X) from (0, -5) to (-5, 0) about the centre, turning clockwise (-pi / 2).
+// Rotated by 30 degrees (cycle 10) the arc's plane is no plane of two axes: straight pieces
+// within 0.5 µm, r (1 - cos(s / 2)) <= 0.5e-3 with r = 5, ceil((pi / 2) / 0.0282843) = 56, every
+// point at 5 from the rotated centre in the rotated vertical plane.
+std::string floorFinishingProgram(const std::string& rotation) {
+    return "0 BEGIN PGM P MM\n"
+           "1 TOOL DEF 1 L+0 R+5\n"
+           "2 TOOL CALL 1 Z S3000\n"
+           "3 L Z+100 R0 FMAX\n" +
+           rotation +
+           "4 CYCL DEF 14.0 CONTOUR\n"
+           "5 CYCL DEF 14.1 CONTOUR LABEL 1\n"
+           "6 CYCL DEF 20 CONTOUR DATA\n"
+           "  Q1=-10 ;DEPTH\n  Q2=1\n  Q3=+0.5\n  Q4=+0.5\n  Q5=+0\n  Q6=2\n"
+           "  Q7=+50\n  Q8=0\n  Q9=+1\n"
+           "7 CYCL DEF 23 FLOOR FINISHING\n"
+           "  Q11=100\n  Q12=350\n  Q208=0\n"
+           "8 CYCL CALL M3\n"
+           "9 L Z+100 R0 FMAX M2\n"
+           "10 LBL 1\n"
+           "11 L X-30 Y-20 RL\n"
+           "12 L X+30\n"
+           "13 L Y+20\n"
+           "14 L X-30\n"
+           "15 L Y-20\n"
+           "16 LBL 0\n"
+           "17 END PGM P MM\n";
+}
+
+TEST_F(InterpreterTest, FloorFinishingApproachArcIsAZxArcOrPiecesWhenRotated) {
+    {
+        auto k = make();
+        ASSERT_EQ(runText(*k, floorFinishingProgram("")), interp::RunStatus::Finished);
+        std::vector<canon::ArcMove> vertical;
+        for (const canon::ArcMove& a : out.all<canon::ArcMove>()) {
+            if (a.plane != Plane::XY) vertical.push_back(a);
+        }
+        ASSERT_EQ(vertical.size(), 1u);
+        const canon::ArcMove& a = vertical.front();
+        EXPECT_EQ(a.plane, Plane::ZX);
+        EXPECT_NEAR(a.target[Axis::X], -14.5, 1e-9);
+        EXPECT_NEAR(a.target[Axis::Y], -4.5, 1e-9);
+        EXPECT_NEAR(a.target[Axis::Z], -10.0, 1e-9);
+        EXPECT_NEAR((a.center - Vec3(-14.5, -4.5, -5.0)).norm(), 0.0, 1e-9);
+        EXPECT_NEAR(a.sweepRad, -kPi / 2.0, 1e-12);
+        EXPECT_DOUBLE_EQ(a.feed, 100.0);
+    }
+    out.commands.clear();
+    auto k = make();
+    ASSERT_EQ(runText(*k, floorFinishingProgram("3 CYCL DEF 10.0 ROTATION\n"
+                                                "3 CYCL DEF 10.1 ROT+30\n")),
+              interp::RunStatus::Finished);
+    for (const canon::ArcMove& a : out.all<canon::ArcMove>())
+        EXPECT_EQ(a.plane, Plane::XY);
+    const double c = std::cos(kPi / 6.0);
+    const double s = std::sin(kPi / 6.0);
+    const Vec3 centre(-14.5 * c + 4.5 * s, -14.5 * s - 4.5 * c, -5.0);
+    const Vec3 normal(-s, c, 0.0);  // across the rotated X direction
+    size_t pieces = 0;
+    for (const canon::LinearMove& m : out.all<canon::LinearMove>()) {
+        const Vec3 p = m.target.xyz();
+        if (std::fabs((p - centre).norm() - 5.0) > 1e-9 || p.z() > -5.0 + 1e-9) continue;
+        EXPECT_NEAR((p - centre).dot(normal), 0.0, 1e-9);
+        ++pieces;
+        if (p.z() < -10.0 + 1e-9) break;  // the floor (the first ring returns there later)
+    }
+    EXPECT_EQ(pieces, 56u);
+}
+
+}  // namespace
+}  // namespace kerf::klartext
