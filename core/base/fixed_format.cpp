@@ -21,11 +21,14 @@ constexpr char kPairs[] =
     "8081828384858687888990919293949596979899";
 
 int digitCount(uint64_t value) {
-    int count = 1;
-    while (value >= 10) {
-        value /= 10;
+    // Coordinates and feeds have one to five integral digits: compare before dividing.
+    if (value < 10) return 1;
+    if (value < 100) return 2;
+    if (value < 1000) return 3;
+    if (value < 10000) return 4;
+    int count = 5;
+    for (value /= 100000; value != 0; value /= 10)
         ++count;
-    }
     return count;
 }
 

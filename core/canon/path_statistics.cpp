@@ -29,6 +29,11 @@ void PathStatistics::addFeedPoint(const Pose& pose) {
     }
 }
 
+void PathStatistics::addFeedMove(const Pose& target) {
+    if (!m_positionCounted) addFeedPoint(m_position);
+    addFeedPoint(target);
+}
+
 void PathStatistics::consume(const Command& command) {
     const CommandBody& body = command.body;
     if (const auto* rapid = std::get_if<RapidMove>(&body)) {
@@ -36,19 +41,19 @@ void PathStatistics::consume(const Command& command) {
         ++m_rapidCount;
         m_rapidLength += length;
         m_position = rapid->target;
+        m_positionCounted = false;
     } else if (const auto* line = std::get_if<LinearMove>(&body)) {
         double length = (line->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;
         m_feedLength += length;
-        addFeedPoint(m_position);
-        addFeedPoint(line->target);
+        addFeedMove(line->target);
         m_position = line->target;
+        m_positionCounted = true;
     } else if (const auto* arc = std::get_if<ArcMove>(&body)) {
         double length = arcLengthMm(m_position, *arc);
         ++m_feedCount;
         m_feedLength += length;
-        addFeedPoint(m_position);
-        addFeedPoint(arc->target);
+        addFeedMove(arc->target);
         PlaneAxes axes = planeAxes(arc->plane);
         Box2 box;
         Vec2 center(arc->center[axisIndex(axes.first)], arc->center[axisIndex(axes.second)]);
@@ -62,20 +67,21 @@ void PathStatistics::consume(const Command& command) {
         corner[axes.second] = box.max.y();
         addFeedPoint(corner);
         m_position = arc->target;
+        m_positionCounted = true;
     } else if (const auto* synced = std::get_if<SpindleSyncedMove>(&body)) {
         double length = (synced->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;
         m_feedLength += length;
-        addFeedPoint(m_position);
-        addFeedPoint(synced->target);
+        addFeedMove(synced->target);
         m_position = synced->target;
+        m_positionCounted = true;
     } else if (const auto* probe = std::get_if<ProbeMove>(&body)) {
         double length = (probe->target.xyz() - m_position.xyz()).norm();
         ++m_feedCount;
         m_feedLength += length;
-        addFeedPoint(m_position);
-        addFeedPoint(probe->target);
+        addFeedMove(probe->target);
         m_position = probe->target;
+        m_positionCounted = true;
     } else if (std::holds_alternative<ToolChange>(body)) {
         ++m_toolChanges;
     }

@@ -18,7 +18,10 @@ public:
     };
 
     // Position before the first command (the tool's position when the program starts).
-    void setStart(const Pose& start) { m_position = start; }
+    void setStart(const Pose& start) {
+        m_position = start;
+        m_positionCounted = false;
+    }
     void consume(const Command& command) override;
 
     int rapidCount() const { return m_rapidCount; }
@@ -31,7 +34,11 @@ public:
 
 private:
     void addFeedPoint(const Pose& pose);
+    // A feed move from m_position to `target`; the start is skipped when the last feed move
+    // ended there (it is in the bounds already).
+    void addFeedMove(const Pose& target);
     Pose m_position{};
+    bool m_positionCounted = false;
     int m_rapidCount = 0;
     int m_feedCount = 0;
     double m_rapidLength = 0.0;

@@ -18,38 +18,4 @@ AxisMask axisMaskOf(std::string_view letters) {
     return mask;
 }
 
-std::optional<Axis> axisFromLetter(char letter) {
-    switch (letter) {
-        case 'X':
-        case 'x':
-            return Axis::X;
-        case 'Y':
-        case 'y':
-            return Axis::Y;
-        case 'Z':
-        case 'z':
-            return Axis::Z;
-        case 'A':
-        case 'a':
-            return Axis::A;
-        case 'B':
-        case 'b':
-            return Axis::B;
-        case 'C':
-        case 'c':
-            return Axis::C;
-        case 'U':
-        case 'u':
-            return Axis::U;
-        case 'V':
-        case 'v':
-            return Axis::V;
-        case 'W':
-        case 'w':
-            return Axis::W;
-        default:
-            return std::nullopt;
-    }
-}
-
 }  // namespace kerf

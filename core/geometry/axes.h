@@ -17,7 +17,15 @@ enum class Axis : uint8_t { X, Y, Z, A, B, C, U, V, W };
 inline constexpr int kAxisCount = 9;
 
 char axisLetter(Axis axis);
-std::optional<Axis> axisFromLetter(char letter);
+// Either case; inline (a table look-up) because every axis word of every block asks.
+inline std::optional<Axis> axisFromLetter(char letter) {
+    // "XYZABCUVW" by letter from 'A': the axis's index + 1, 0 for a letter that names none.
+    constexpr std::array<uint8_t, 26> kByLetter{4, 5, 6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+                                                0, 0, 0, 0, 0, 0, 0, 7, 8, 9, 1, 2, 3};
+    const auto index = static_cast<unsigned>((letter | 0x20) - 'a');
+    if (index >= kByLetter.size() || kByLetter[index] == 0) return std::nullopt;
+    return static_cast<Axis>(kByLetter[index] - 1);
+}
 inline constexpr int axisIndex(Axis axis) {
     return static_cast<int>(axis);
 }

@@ -40,17 +40,6 @@ ContourElement ContourElement::arc(Plane plane, const Pose& start, const Pose& e
     return e;
 }
 
-Vec2 ContourElement::inPlane(const Pose& pose) const {
-    PlaneAxes axes = planeAxes(plane);
-    return {pose[axes.first], pose[axes.second]};
-}
-
-void ContourElement::setInPlane(Pose& pose, const Vec2& p) const {
-    PlaneAxes axes = planeAxes(plane);
-    pose[axes.first] = p.x();
-    pose[axes.second] = p.y();
-}
-
 double ContourElement::planarLength() const {
     if (kind == Kind::Line) return (end2() - start2()).norm();
     return radius() * std::fabs(sweep);

@@ -27,8 +27,15 @@ struct ContourElement {
 
     Vec2 start2() const { return inPlane(start); }
     Vec2 end2() const { return inPlane(end); }
-    Vec2 inPlane(const Pose& pose) const;
-    void setInPlane(Pose& pose, const Vec2& p) const;
+    Vec2 inPlane(const Pose& pose) const {
+        const PlaneAxes axes = planeAxes(plane);
+        return {pose[axes.first], pose[axes.second]};
+    }
+    void setInPlane(Pose& pose, const Vec2& p) const {
+        const PlaneAxes axes = planeAxes(plane);
+        pose[axes.first] = p.x();
+        pose[axes.second] = p.y();
+    }
 
     double radius() const { return (start2() - center).norm(); }
     double planarLength() const;

@@ -2,18 +2,6 @@
 
 namespace kerf {
 
-PlaneAxes planeAxes(Plane plane) {
-    switch (plane) {
-        case Plane::XY:
-            return {Axis::X, Axis::Y, Axis::Z};
-        case Plane::YZ:
-            return {Axis::Y, Axis::Z, Axis::X};
-        case Plane::ZX:
-            return {Axis::Z, Axis::X, Axis::Y};
-    }
-    return {Axis::X, Axis::Y, Axis::Z};
-}
-
 Plane planeForToolAxis(Axis toolAxis) {
     switch (toolAxis) {
         case Axis::X:

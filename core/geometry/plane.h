@@ -14,7 +14,18 @@ struct PlaneAxes {
     Axis normal;
 };
 
-PlaneAxes planeAxes(Plane plane);
+// Inline: called several times for every block.
+inline PlaneAxes planeAxes(Plane plane) {
+    switch (plane) {
+        case Plane::YZ:
+            return {Axis::Y, Axis::Z, Axis::X};
+        case Plane::ZX:
+            return {Axis::Z, Axis::X, Axis::Y};
+        case Plane::XY:
+            break;
+    }
+    return {Axis::X, Axis::Y, Axis::Z};
+}
 // The working plane perpendicular to a tool axis (Z -> XY, X -> YZ, Y -> ZX).
 Plane planeForToolAxis(Axis toolAxis);
 // The plane spanned by two axes given in any order, if they span one of the three.

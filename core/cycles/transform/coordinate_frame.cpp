@@ -145,7 +145,7 @@ double CoordinateFrame::planeScale(Plane plane) const {
     return m_scale * m_axisScale[static_cast<size_t>(planeAxes(plane).first)];
 }
 
-bool CoordinateFrame::identity() const {
+bool CoordinateFrame::computeIdentity() const {
     if (m_tilted || m_tabled) return false;
     if (m_mirror != 0 || m_rotationDeg != 0.0 || m_scale != 1.0) return false;
     for (size_t k = 0; k < static_cast<size_t>(kAxisCount); ++k) {
@@ -159,15 +159,18 @@ bool CoordinateFrame::identity() const {
 
 void CoordinateFrame::setShift(Axis axis, double value, bool incremental) {
     m_shift[axis] = incremental ? m_shift[axis] + value : value;
+    m_identity = computeIdentity();
 }
 
 void CoordinateFrame::setRotation(double degrees, bool incremental, Plane plane) {
     m_rotationDeg = incremental ? m_rotationDeg + degrees : degrees;
     m_rotationPlane = plane;
+    m_identity = computeIdentity();
 }
 
 void CoordinateFrame::setAxisScale(Axis axis, double factor) {
     m_axisScale[static_cast<size_t>(axisIndex(axis))] = factor;
+    m_identity = computeIdentity();
 }
 
 void CoordinateFrame::setAxisScaleCentre(Axis axis, double centre) {
@@ -188,6 +191,7 @@ void CoordinateFrame::setPreset(const Pose& offset) {
     m_tabled = kept.m_tabled;
     m_table = kept.m_table;
     m_tableOffset = kept.m_tableOffset;
+    m_identity = computeIdentity();
 }
 
 void CoordinateFrame::setTilt(const Eigen::Matrix3d& rotation) {
@@ -195,6 +199,7 @@ void CoordinateFrame::setTilt(const Eigen::Matrix3d& rotation) {
     m_shift.setXyz(Vec3::Zero());
     m_tilt = rotation;
     m_tilted = true;
+    m_identity = false;
 }
 
 void CoordinateFrame::clearTilt() {
@@ -202,12 +207,14 @@ void CoordinateFrame::clearTilt() {
     m_tiltOrigin = Vec3::Zero();
     m_tilt = Eigen::Matrix3d::Identity();
     m_tilted = false;
+    m_identity = computeIdentity();
 }
 
 void CoordinateFrame::setTable(const Eigen::Matrix3d& rotation, const Vec3& offset) {
     m_table = rotation;
     m_tableOffset = offset;
     m_tabled = !rotation.isIdentity(1e-12) || !offset.isZero(1e-12);
+    m_identity = computeIdentity();
 }
 
 }  // namespace kerf::cycles

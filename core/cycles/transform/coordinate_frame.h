@@ -39,19 +39,29 @@ public:
     bool keepsPlane(Plane plane) const;
     // Factor lengths in the working plane are scaled by (uniform scaling only).
     double planeScale(Plane plane) const;
-    bool identity() const;
+    // Kept by every setter: toPathSpace asks for every block.
+    bool identity() const { return m_identity; }
 
     void setShift(Axis axis, double value, bool incremental);
-    void setMirror(AxisMask axes) { m_mirror = axes; }
+    void setMirror(AxisMask axes) {
+        m_mirror = axes;
+        m_identity = computeIdentity();
+    }
     void setRotation(double degrees, bool incremental, Plane plane);
-    void setScale(double factor) { m_scale = factor; }
+    void setScale(double factor) {
+        m_scale = factor;
+        m_identity = computeIdentity();
+    }
     void setAxisScale(Axis axis, double factor);
     void setAxisScaleCentre(Axis axis, double centre);
     // Cycle 247: a new preset, given as its offset from the start preset; clears 7, 8, 10, 11, 26.
     void setPreset(const Pose& offset);
     // Cycle 12 at a pattern point: the point is an additional datum shift of the called program,
     // applied before every other transformation (in the coordinates of the calling program).
-    void setPointShift(const Pose& shift) { m_pointShift = shift; }
+    void setPointShift(const Pose& shift) {
+        m_pointShift = shift;
+        m_identity = computeIdentity();
+    }
     const Pose& pointShift() const { return m_pointShift; }
 
     // The tilted working plane: `rotation` takes tilted axes to untilted ones, about the datum
@@ -66,7 +76,10 @@ public:
     void setTable(const Eigen::Matrix3d& rotation, const Vec3& offset);
     // M94: whole turns taken off a rotary axis's display (program angle = axis angle - turns),
     // outermost of all, kept through every other transformation.
-    void addTurns(Axis axis, double degrees) { m_turns[axis] += degrees; }
+    void addTurns(Axis axis, double degrees) {
+        m_turns[axis] += degrees;
+        m_identity = computeIdentity();
+    }
     const Pose& turns() const { return m_turns; }
 
     const Pose& shift() const { return m_shift; }
@@ -94,6 +107,8 @@ private:
     bool m_tabled = false;
     Eigen::Matrix3d m_table = Eigen::Matrix3d::Identity();
     Vec3 m_tableOffset = Vec3::Zero();
+    bool m_identity = true;
+    bool computeIdentity() const;
     // Tilt and table together: how the frame turns the linear axes.
     Eigen::Matrix3d spatialTurn() const { return m_table * m_tilt; }
 };

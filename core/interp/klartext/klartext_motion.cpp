@@ -103,12 +103,13 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
     if (!checkPathError(activePath().addMove(move))) return;
     m_programmed = element.end;
     if (element.movesInPlane()) {
-        m_lastTangent = element.endTangent();
+        const Vec2 tangent = element.endTangent();
+        m_lastTangent = tangent;
         m_lastTangentPlane = element.plane;
         // FK relative data (RX 12 ...) may refer to this block.
         if (element.plane == workingPlane()) {
             const bool arc = element.kind == ContourElement::Kind::Arc;
-            m_fk.solver.remember(m_at.blockNumber, element.end2(), element.endTangent(),
+            m_fk.solver.remember(m_at.blockNumber, element.end2(), tangent,
                                  arc ? std::optional(element.center) : std::nullopt);
         }
     }

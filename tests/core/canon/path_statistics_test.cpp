@@ -36,5 +36,28 @@ TEST(PathStatistics, CountsLengthsAndBounds) {
     EXPECT_EQ(stats.toolChanges(), 1);
 }
 
+// The start of every feed move is in the bounds: the start of the run, a point reached by a rapid
+// move, and the end of the previous feed move (counted once, as that move's end).
+TEST(PathStatistics, FeedBoundsHoldEveryFeedMoveStart) {
+    PathStatistics stats;
+    stats.setStart(xyz(-7, 0, 0));
+    stats.consume({{}, LinearMove{xyz(0, 0, 0), 600}});
+    EXPECT_DOUBLE_EQ(stats.feedBounds().min[0], -7);
+    stats.consume({{}, RapidMove{xyz(100, 0, 20)}});
+    stats.consume({{}, LinearMove{xyz(50, 0, 20), 600}});
+    stats.consume({{}, LinearMove{xyz(50, -3, 20), 600}});
+    // An arc right after a rapid move: its start (the rapid's end) counts.
+    stats.consume({{}, RapidMove{xyz(0, 90, 0)}});
+    ArcMove arc{xyz(0, 80, 0), Vec3(0, 85, 0), Plane::XY, -3.14159265358979323846, 600};
+    stats.consume({{}, arc});
+    const auto& bounds = stats.feedBounds();
+    EXPECT_DOUBLE_EQ(bounds.min[0], -7);
+    EXPECT_DOUBLE_EQ(bounds.max[0], 100);  // the rapid's end, where a feed move starts
+    EXPECT_DOUBLE_EQ(bounds.min[1], -3);
+    EXPECT_DOUBLE_EQ(bounds.max[1], 90);
+    EXPECT_DOUBLE_EQ(bounds.max[2], 20);
+    EXPECT_EQ(stats.feedCount(), 4);
+}
+
 }  // namespace
 }  // namespace kerf::canon

@@ -130,5 +130,59 @@ TEST(CoordinateFrame, PointShiftOfCycle12ActsFirstAndOutlivesAPreset) {
     EXPECT_DOUBLE_EQ(f.toWorkpiece(xyz(1.0, 0.0, 0.0))[Axis::X], 11.0);
 }
 
+// identity() is kept by the setters (the interpreter asks for every block): each one that makes
+// a transformation active clears it, and undoing the transformation sets it again.
+TEST(CoordinateFrame, IdentityFollowsEverySetter) {
+    CoordinateFrame f;
+    EXPECT_TRUE(f.identity());
+    f.setShift(Axis::Y, 5.0, false);
+    EXPECT_FALSE(f.identity());
+    f.setShift(Axis::Y, -5.0, true);
+    EXPECT_TRUE(f.identity());
+    f.setMirror(axisBit(Axis::X));
+    EXPECT_FALSE(f.identity());
+    f.setMirror(0);
+    EXPECT_TRUE(f.identity());
+    f.setRotation(30.0, false, Plane::XY);
+    EXPECT_FALSE(f.identity());
+    f.setRotation(-30.0, true, Plane::XY);
+    EXPECT_TRUE(f.identity());
+    f.setScale(0.5);
+    EXPECT_FALSE(f.identity());
+    f.setScale(1.0);
+    EXPECT_TRUE(f.identity());
+    f.setAxisScale(Axis::Z, 2.0);
+    EXPECT_FALSE(f.identity());
+    f.setAxisScale(Axis::Z, 1.0);
+    EXPECT_TRUE(f.identity());
+    f.setPointShift(xyz(0.0, 0.0, 1.0));
+    EXPECT_FALSE(f.identity());
+    f.setPointShift(Pose{});
+    EXPECT_TRUE(f.identity());
+    f.addTurns(Axis::C, 360.0);
+    EXPECT_FALSE(f.identity());
+    f.addTurns(Axis::C, -360.0);
+    EXPECT_TRUE(f.identity());
+    f.setTilt(Eigen::Matrix3d::Identity());
+    EXPECT_FALSE(f.identity());
+    f.clearTilt();
+    EXPECT_TRUE(f.identity());
+    f.setTable(Eigen::Matrix3d::Identity(), Vec3(0.0, 0.0, 3.0));
+    EXPECT_FALSE(f.identity());
+    f.setTable(Eigen::Matrix3d::Identity(), Vec3::Zero());
+    EXPECT_TRUE(f.identity());
+    f.setShift(Axis::X, 1.0, false);
+    Pose offset;
+    offset[Axis::X] = 2.0;
+    f.setPreset(offset);  // clears the shift, but is itself a transformation
+    EXPECT_FALSE(f.identity());
+    f.setPreset(Pose{});
+    EXPECT_TRUE(f.identity());
+    // A copy keeps the answer of the frame it copies.
+    f.setScale(3.0);
+    const CoordinateFrame copy = f;
+    EXPECT_FALSE(copy.identity());
+}
+
 }  // namespace
 }  // namespace kerf::cycles
