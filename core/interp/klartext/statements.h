@@ -275,9 +275,15 @@ struct PlaneBlock {
 };
 
 // FUNCTION TCPM ... / FUNCTION RESET TCPM (block_parser_plane.cpp): programmed positions are
-// tool-tip positions on the part while the rotary axes move (as M128 / M129).
+// tool-tip positions on the part while the rotary axes move (as M128 / M129). The options:
+// F CONT (F is the axes' contouring feed, not the tip's), AXIS SPAT (A, B, C in the blocks are
+// spatial angles of the tool in the working plane, not axis positions), PATHCTRL VECTOR (the
+// tool's direction turns in the plane of its start and end directions).
 struct TcpmBlock {
     bool on = false;
+    bool feedContour = false;
+    bool spatialAngles = false;
+    bool vectorPath = false;
 };
 
 // Blocks that parse and are kept but that this release does not execute yet (fixed cycles,

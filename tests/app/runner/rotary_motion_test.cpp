@@ -356,3 +356,41 @@ TEST_F(RotaryMotion, TcpmRadiusCompensationOffsetsTheToolOnThePart) {
 }
 
 }  // namespace
+
+namespace {
+
+// TCPM in a tilted plane on mill5 (tool 4, L 60): PLANE SPATIAL SPB+90 TURN turns B to 90; the
+// program's (0, 0, 50) in the plane is Ry(90) (0, 0, 50) = (50, 0, 0) on the part, where the tip
+// stays while B turns to 60; X+20 in the plane takes it along the part's -Z to (50, 0, -20) while
+// B turns back to 90. From the first servo cycle whose tip (Rz(C) Ry(B) axes) reaches (50, 0, 0),
+// every one lies on that line within the path tolerance (0.01 mm).
+TEST_F(RotaryMotion, TcpmInTheTiltedPlaneKeepsTheTipOnTheProgrammedLine) {
+    double lastC = 0.0;
+    const auto tips = tipsOnThePart(dir, "TCPMT.H",
+                                    "0 BEGIN PGM TCPMT MM\n1 TOOL CALL 4 Z S1000\n"
+                                    "2 L X+0 Y+0 Z+100 R0 FMAX\n"
+                                    "3 PLANE SPATIAL SPA+0 SPB+90 SPC+0 TURN FMAX SEQ+\n"
+                                    "4 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                                    "5 L X+0 Y+0 Z+50 FMAX\n6 L B+60 F3000\n"
+                                    "7 L X+20 B+90 F1000\n8 FUNCTION RESET TCPM\n"
+                                    "9 END PGM TCPMT MM\n",
+                                    lastC);
+    const double start[3] = {50, 0, 0}, end[3] = {50, 0, -20};
+    bool reached = false;
+    double worst = 0.0, lowest = 0.0;
+    int rows = 0;
+    for (const auto& t : tips) {
+        if (!reached && toSegment(t.data(), start, start) < 1e-6) reached = true;
+        if (!reached) continue;
+        worst = std::max(worst, toSegment(t.data(), start, end));
+        lowest = std::min(lowest, t[2]);
+        ++rows;
+    }
+    EXPECT_TRUE(reached);
+    EXPECT_GT(rows, 1000);
+    EXPECT_LE(worst, 0.01);
+    EXPECT_NEAR(lowest, -20.0, 1e-6);
+    EXPECT_NEAR(lastC, 0.0, 1e-9);
+}
+
+}  // namespace
