@@ -37,6 +37,7 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const ToolCall& b) { self.executeToolCall(b); }
         void operator()(const ToolDef& b) { self.executeToolDef(b); }
         void operator()(const LinearBlock& b) { self.executeLinear(b); }
+        void operator()(const LineNormalBlock& b) { self.executeLineNormal(b); }
         void operator()(const CircleCenter& b) { self.executeCircleCenter(b); }
         void operator()(const CircleBlock& b) {
             self.executeCircle(b.coords, b.direction, b.words, std::nullopt);

@@ -198,6 +198,7 @@ private:
 
     // Motion and machine functions (klartext_motion.cpp).
     void executeLinear(const LinearBlock& block);
+    void executeLineNormal(const LineNormalBlock& block);  // klartext_line_normal.cpp
     void executeCircle(const Coordinates& coords, Direction direction, const CommonWords& words,
                        std::optional<double> radius);
     void executeTangentCircle(const Coordinates& coords, const PolarWords* polar,
@@ -508,6 +509,9 @@ private:
     // Both solutions of the rotary axes for the tool along `direction` (workpiece), the one
     // nearer to `near` (stream pose: its rotary axes), as stream angles a turn nearer to it.
     std::optional<machine::RotaryAngles> anglesNear(const Vec3& direction, const Pose& near) const;
+    // Sets the rotary axes of `target` (program coordinates) to turn the tool along `direction`
+    // (workpiece coordinates), the solution nearer to where the axes stand; false when none.
+    bool turnToolTo(const Vec3& direction, Pose& target) const;
     // The spaces the path may work in (core/interp/path/path_space.h). TCPM works in the
     // tilted plane's coordinates (the frame up to the datum shift): the rest of the frame, taken
     // when the space was chosen and without the tables' turn, brings the tip onto the part, and

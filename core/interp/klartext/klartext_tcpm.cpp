@@ -144,9 +144,7 @@ std::optional<Pose> KlartextInterpreter::moveTarget(const Coordinates& coords) {
     const Vec3 inPlane = spatialRotation(m_spatialDeg[0], m_spatialDeg[1], m_spatialDeg[2]).col(2);
     const Vec3 direction =
         (m_frame.tilted() ? m_frame.tilt() : Eigen::Matrix3d::Identity()) * inPlane;
-    const Pose stream = m_frame.toWorkpiece(target);
-    const auto angles = anglesNear(direction, stream);
-    if (!angles) {
+    if (!turnToolTo(direction, target)) {
         fail("tcpm",
              KERF_TR_NOOP("AXIS SPAT: the rotary axes of this machine cannot turn the tool to the "
                           "spatial angles A {1} B {2} C {3}"),
@@ -154,6 +152,13 @@ std::optional<Pose> KlartextInterpreter::moveTarget(const Coordinates& coords) {
               formatFixed(m_spatialDeg[2], 3)});
         return std::nullopt;
     }
+    return target;
+}
+
+bool KlartextInterpreter::turnToolTo(const Vec3& direction, Pose& target) const {
+    const Pose stream = m_frame.toWorkpiece(target);
+    const auto angles = anglesNear(direction, stream);
+    if (!angles) return false;
     // The program's angle: the machine's less the preset and the frame's offsets (shifts, turns).
     auto set = [&](char letter, double machineDeg) {
         const Axis axis = *axisFromLetter(letter);
@@ -161,7 +166,7 @@ std::optional<Pose> KlartextInterpreter::moveTarget(const Coordinates& coords) {
     };
     set(m_kinematics->primary(), angles->primaryDeg);
     if (m_kinematics->twoAxes()) set(m_kinematics->secondary(), angles->secondaryDeg);
-    return target;
+    return true;
 }
 
 Vec3 KlartextInterpreter::TcpmSpace::directionAt(const Pose& tilted) const {

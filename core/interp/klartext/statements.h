@@ -102,6 +102,14 @@ struct LinearBlock {  // L
     Coordinates coords;
     CommonWords words;
 };
+// LN (klartext_line_normal.cpp): a straight line with 3D tool compensation. NX NY NZ: the
+// surface normal at the programmed point; TX TY TZ (optional, with TCPM): the tool's direction.
+struct LineNormalBlock {
+    Coordinates coords;
+    CommonWords words;
+    Vec3 normal{0.0, 0.0, 1.0};
+    std::optional<Vec3> tool;
+};
 struct CircleCenter {  // CC
     Coordinates coords;
 };
@@ -366,15 +374,15 @@ struct CycleCall {
 };
 
 using Statement =
-    std::variant<Empty, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, LinearBlock, CircleCenter,
-                 CircleBlock, CircleRadiusBlock, CircleTangentBlock, RoundBlock, ChamferBlock,
-                 LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock, ApproachBlock, Label,
-                 CallLabel, CallPgm, SelectProgram, CallSelectedProgram, StopBlock, MFunctionBlock,
-                 QAssign, QStringAssign, ConditionalJump, ErrorBlock, PrintBlock, SysRead,
-                 CircleData, TableOpen, TableAccess, CycleDefinition, GlobalDefinition,
-                 PatternDefinition, SelectTable, SelectPattern, SelectContour, DeclareContour,
-                 ContourFormula, ContourDefinition, CycleCall, FkBlock, FkPole, FkSelect,
-                 PlaneBlock, TcpmBlock, Deferred>;
+    std::variant<Empty, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, LinearBlock, LineNormalBlock,
+                 CircleCenter, CircleBlock, CircleRadiusBlock, CircleTangentBlock, RoundBlock,
+                 ChamferBlock, LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock,
+                 ApproachBlock, Label, CallLabel, CallPgm, SelectProgram, CallSelectedProgram,
+                 StopBlock, MFunctionBlock, QAssign, QStringAssign, ConditionalJump, ErrorBlock,
+                 PrintBlock, SysRead, CircleData, TableOpen, TableAccess, CycleDefinition,
+                 GlobalDefinition, PatternDefinition, SelectTable, SelectPattern, SelectContour,
+                 DeclareContour, ContourFormula, ContourDefinition, CycleCall, FkBlock, FkPole,
+                 FkSelect, PlaneBlock, TcpmBlock, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

@@ -592,3 +592,49 @@ TEST_F(PlaneTest, TcpmPathctrlVectorTurnsTheToolInOnePlane) {
 
 }  // namespace
 }  // namespace kerf::klartext
+
+namespace kerf::klartext {
+namespace {
+
+// LN: the tool's radius oversize DR +0.2 (of the TOOL CALL) moves the surface point along the
+// normal (3, 0, 4) / 5: (10, 0, 0) becomes (10.12, 0, 0.16); without an oversize the point stays.
+// RL/RR are refused (the normal compensates), as a vector without length.
+TEST_F(PlaneTest, LnMovesThePointAlongTheNormalByTheRadiusOversize) {
+    ASSERT_EQ(run("mill",
+                  "1 TOOL CALL 1 Z S1000 DR+0.2\n2 L X+0 Y+0 Z+10 R0 FMAX\n"
+                  "3 LN X+10 Y+0 Z+0 NX+3 NY+0 NZ+4 F100\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    expectAt(10.12, 0.0, 0.16);
+    ASSERT_EQ(run("mill", "1 TOOL CALL 1 Z S1000\n2 LN X+10 Y+5 Z+1 NX+0.6 NY+0 NZ+0.8 F100\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    expectAt(10.0, 5.0, 1.0);
+    EXPECT_EQ(run("mill", "1 L X+0 Y+0 RL F100\n2 LN X+10 Y+0 Z+0 NX+0 NY+0 NZ+1\n"),
+              interp::RunStatus::Failed);
+    EXPECT_EQ(run("mill", "1 LN X+10 Y+0 Z+0 NX+0 NY+0 NZ+0 F100\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(run("mill", "1 LN X+10 Y+0 Z+0 NX+0 NY+0 F100\n"), interp::RunStatus::Failed);
+}
+
+// LN with the tool direction TX TY TZ = (sin 30, 0, cos 30) under M128 on mill5: B+30 C0 (the
+// nearer of B+30 C0 and B-30 C180) while the tip stays at (0, 0, 50): the axes go to
+// Ry(-30) (0, 0, 50) = (-25, 0, 25 sqrt 3). Without TCPM the tool direction is refused.
+TEST_F(PlaneTest, LnWithToolDirectionTurnsTheTablesUnderTcpm) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+50 R0 FMAX\n2 M128\n"
+                  "3 LN X+0 Y+0 Z+50 NX+0 NY+0 NZ+1 TX+0.5 TY+0 TZ+0.8660254038 F1000\n"
+                  "4 M129\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const std::vector<Pose> turn = movesOf(3);
+    ASSERT_FALSE(turn.empty());
+    EXPECT_NEAR(turn.back()[Axis::B], 30.0, 1e-6);
+    EXPECT_NEAR(turn.back()[Axis::C], 0.0, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::X], -25.0, 1e-6);
+    EXPECT_NEAR(turn.back()[Axis::Z], 25.0 * std::sqrt(3.0), 1e-6);
+    EXPECT_EQ(run("mill5", "1 LN X+0 Y+0 Z+50 NX+0 NY+0 NZ+1 TX+0.5 TY+0 TZ+0.866 F1000\n"),
+              interp::RunStatus::Failed);
+}
+
+}  // namespace
+}  // namespace kerf::klartext
