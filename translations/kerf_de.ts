@@ -7572,10 +7572,6 @@ zyklen</translation>
         <translation>PLANE: MOVE, TURN oder STAY erwartet</translation>
     </message>
     <message>
-        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
-        <translation>FUNCTION TCPM: nur F TCP, AXIS POS, PATHCTRL AXIS und REFPNT TIP-TIP werden unterstützt, nicht &apos;{1}&apos;</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: die Punkte oder Vektoren bestimmen keine Ebene</translation>
     </message>
@@ -7606,10 +7602,6 @@ zyklen</translation>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>der Satz würde die Achse {1} auf {2} Grad (Maschinenkoordinaten) fahren, über ihren Software-Endschalter {3} hinaus</translation>
-    </message>
-    <message>
-        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
-        <translation>TCPM in einer geschwenkten Bearbeitungsebene wird noch nicht unterstützt: zuerst PLANE RESET</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8478,6 +8470,38 @@ wählen</translation>
     <message>
         <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
         <translation>nach {1} Sätzen angehalten: Endlosschleife? (--max-blocks)</translation>
+    </message>
+    <message>
+        <source>LN needs all of NX NY NZ, and TX TY TZ all or none</source>
+        <translation>LN braucht NX NY NZ vollständig und TX TY TZ ganz oder gar nicht</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: nur F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR und REFPNT TIP-TIP werden unterstützt, nicht &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>LN compensates along the surface normal: switch the radius compensation off (R0) first</source>
+        <translation>LN korrigiert entlang der Flächennormalen: zuerst die Radiuskorrektur ausschalten (R0)</translation>
+    </message>
+    <message>
+        <source>LN: a vector NX NY NZ or TX TY TZ has no length</source>
+        <translation>LN: ein Vektor NX NY NZ oder TX TY TZ hat keine Länge</translation>
+    </message>
+    <message>
+        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
+        <translation>LN: die Werkzeugrichtung TX TY TZ braucht M128 oder FUNCTION TCPM</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
+        <translation>LN: die Drehachsen dieser Maschine können das Werkzeug nicht entlang TX TY TZ drehen</translation>
+    </message>
+    <message>
+        <source>with TCPM on the program positions the rotary axes: tilt with STAY, or switch TCPM off first</source>
+        <translation>mit aktivem TCPM positioniert das Programm die Drehachsen: mit STAY schwenken oder zuerst TCPM ausschalten</translation>
+    </message>
+    <message>
+        <source>AXIS SPAT: the rotary axes of this machine cannot turn the tool to the spatial angles A {1} B {2} C {3}</source>
+        <translation>AXIS SPAT: die Drehachsen dieser Maschine können das Werkzeug nicht auf die Raumwinkel A {1} B {2} C {3} drehen</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

@@ -7572,10 +7572,6 @@ fijos</translation>
         <translation>PLANE: se esperaba MOVE, TURN o STAY</translation>
     </message>
     <message>
-        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
-        <translation>FUNCTION TCPM: solo se admiten F TCP, AXIS POS, PATHCTRL AXIS y REFPNT TIP-TIP, no &apos;{1}&apos;</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: los puntos o vectores no definen un plano</translation>
     </message>
@@ -7606,10 +7602,6 @@ fijos</translation>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>el movimiento llevaría el eje {1} a {2} grados (coordenadas de máquina), más allá de su límite de software {3}</translation>
-    </message>
-    <message>
-        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
-        <translation>TCPM en un plano de trabajo inclinado aún no se admite: primero PLANE RESET</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8478,6 +8470,38 @@ solución</translation>
     <message>
         <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
         <translation>detenido tras {1} bloques: ¿bucle infinito? (--max-blocks)</translation>
+    </message>
+    <message>
+        <source>LN needs all of NX NY NZ, and TX TY TZ all or none</source>
+        <translation>LN necesita NX NY NZ completos, y TX TY TZ todos o ninguno</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: solo se admiten F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR y REFPNT TIP-TIP, no &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>LN compensates along the surface normal: switch the radius compensation off (R0) first</source>
+        <translation>LN compensa a lo largo de la normal de la superficie: desactive primero la compensación de radio (R0)</translation>
+    </message>
+    <message>
+        <source>LN: a vector NX NY NZ or TX TY TZ has no length</source>
+        <translation>LN: un vector NX NY NZ o TX TY TZ no tiene longitud</translation>
+    </message>
+    <message>
+        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
+        <translation>LN: la dirección de la herramienta TX TY TZ necesita M128 o FUNCTION TCPM</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
+        <translation>LN: los ejes giratorios de esta máquina no pueden girar la herramienta según TX TY TZ</translation>
+    </message>
+    <message>
+        <source>with TCPM on the program positions the rotary axes: tilt with STAY, or switch TCPM off first</source>
+        <translation>con TCPM activo el programa posiciona los ejes giratorios: incline con STAY o desactive antes TCPM</translation>
+    </message>
+    <message>
+        <source>AXIS SPAT: the rotary axes of this machine cannot turn the tool to the spatial angles A {1} B {2} C {3}</source>
+        <translation>AXIS SPAT: los ejes giratorios de esta máquina no pueden girar la herramienta a los ángulos espaciales A {1} B {2} C {3}</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

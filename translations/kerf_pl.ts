@@ -7575,10 +7575,6 @@ stałe</translation>
         <translation>PLANE: oczekiwano MOVE, TURN lub STAY</translation>
     </message>
     <message>
-        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
-        <translation>FUNCTION TCPM: obsługiwane są tylko F TCP, AXIS POS, PATHCTRL AXIS i REFPNT TIP-TIP, nie &apos;{1}&apos;</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: punkty lub wektory nie określają płaszczyzny</translation>
     </message>
@@ -7609,10 +7605,6 @@ stałe</translation>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>ruch doprowadziłby oś {1} do {2} stopni (współrzędne maszynowe), poza jej programowy wyłącznik krańcowy {3}</translation>
-    </message>
-    <message>
-        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
-        <translation>TCPM w nachylonej płaszczyźnie obróbki nie jest jeszcze obsługiwane: najpierw PLANE RESET</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8481,6 +8473,38 @@ rozwiązanie</translation>
     <message>
         <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
         <translation>zatrzymano po {1} blokach: nieskończona pętla? (--max-blocks)</translation>
+    </message>
+    <message>
+        <source>LN needs all of NX NY NZ, and TX TY TZ all or none</source>
+        <translation>LN wymaga wszystkich NX NY NZ, a TX TY TZ wszystkich albo żadnego</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: obsługiwane są tylko F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR i REFPNT TIP-TIP, nie &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>LN compensates along the surface normal: switch the radius compensation off (R0) first</source>
+        <translation>LN koryguje wzdłuż normalnej do powierzchni: najpierw wyłącz korekcję promienia (R0)</translation>
+    </message>
+    <message>
+        <source>LN: a vector NX NY NZ or TX TY TZ has no length</source>
+        <translation>LN: wektor NX NY NZ lub TX TY TZ ma zerową długość</translation>
+    </message>
+    <message>
+        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
+        <translation>LN: kierunek narzędzia TX TY TZ wymaga M128 lub FUNCTION TCPM</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
+        <translation>LN: osie obrotowe tej maszyny nie mogą obrócić narzędzia wzdłuż TX TY TZ</translation>
+    </message>
+    <message>
+        <source>with TCPM on the program positions the rotary axes: tilt with STAY, or switch TCPM off first</source>
+        <translation>przy aktywnym TCPM program pozycjonuje osie obrotowe: nachylaj z STAY albo najpierw wyłącz TCPM</translation>
+    </message>
+    <message>
+        <source>AXIS SPAT: the rotary axes of this machine cannot turn the tool to the spatial angles A {1} B {2} C {3}</source>
+        <translation>AXIS SPAT: osie obrotowe tej maszyny nie mogą obrócić narzędzia do kątów przestrzennych A {1} B {2} C {3}</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

@@ -7572,10 +7572,6 @@ fixos</translation>
         <translation>PLANE: esperado MOVE, TURN ou STAY</translation>
     </message>
     <message>
-        <source>FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
-        <translation>FUNCTION TCPM: só F TCP, AXIS POS, PATHCTRL AXIS e REFPNT TIP-TIP são suportados, não &apos;{1}&apos;</translation>
-    </message>
-    <message>
         <source>PLANE: the points or vectors do not define a plane</source>
         <translation>PLANE: os pontos ou vetores não definem um plano</translation>
     </message>
@@ -7606,10 +7602,6 @@ fixos</translation>
     <message>
         <source>the move would take axis {1} to {2} deg (machine coordinates), beyond its soft limit {3}</source>
         <translation>o movimento levaria o eixo {1} a {2} graus (coordenadas da máquina), além do seu limite de software {3}</translation>
-    </message>
-    <message>
-        <source>TCPM in a tilted working plane is not supported yet: PLANE RESET first</source>
-        <translation>TCPM num plano de maquinagem inclinado ainda não é suportado: primeiro PLANE RESET</translation>
     </message>
     <message>
         <source>Machine X where the rotary axes meet; write pivot = [x, y, z]</source>
@@ -8478,6 +8470,38 @@ solução</translation>
     <message>
         <source>stopped after {1} blocks: endless loop? (--max-blocks)</source>
         <translation>parado após {1} blocos: ciclo infinito? (--max-blocks)</translation>
+    </message>
+    <message>
+        <source>LN needs all of NX NY NZ, and TX TY TZ all or none</source>
+        <translation>LN precisa de NX NY NZ completos, e TX TY TZ todos ou nenhum</translation>
+    </message>
+    <message>
+        <source>FUNCTION TCPM: only F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR and REFPNT TIP-TIP are supported, not &apos;{1}&apos;</source>
+        <translation>FUNCTION TCPM: só são suportados F TCP|CONT, AXIS POS|SPAT, PATHCTRL AXIS|VECTOR e REFPNT TIP-TIP, não &apos;{1}&apos;</translation>
+    </message>
+    <message>
+        <source>LN compensates along the surface normal: switch the radius compensation off (R0) first</source>
+        <translation>LN corrige ao longo da normal à superfície: desligue primeiro a correção do raio (R0)</translation>
+    </message>
+    <message>
+        <source>LN: a vector NX NY NZ or TX TY TZ has no length</source>
+        <translation>LN: um vetor NX NY NZ ou TX TY TZ não tem comprimento</translation>
+    </message>
+    <message>
+        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
+        <translation>LN: a direção da ferramenta TX TY TZ precisa de M128 ou FUNCTION TCPM</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
+        <translation>LN: os eixos rotativos desta máquina não conseguem rodar a ferramenta segundo TX TY TZ</translation>
+    </message>
+    <message>
+        <source>with TCPM on the program positions the rotary axes: tilt with STAY, or switch TCPM off first</source>
+        <translation>com TCPM ativo o programa posiciona os eixos rotativos: incline com STAY ou desligue primeiro o TCPM</translation>
+    </message>
+    <message>
+        <source>AXIS SPAT: the rotary axes of this machine cannot turn the tool to the spatial angles A {1} B {2} C {3}</source>
+        <translation>AXIS SPAT: os eixos rotativos desta máquina não conseguem rodar a ferramenta para os ângulos espaciais A {1} B {2} C {3}</translation>
     </message>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>

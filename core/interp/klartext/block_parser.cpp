@@ -21,6 +21,7 @@ enum WordFlag : uint32_t {
     kPolar = 1u << 6,
     kLength = 1u << 7,
     kAngle = 1u << 8,
+    kVectors = 1u << 9,  // LN: NX NY NZ TX TY TZ
 };
 
 struct Words {
@@ -31,6 +32,7 @@ struct Words {
     PolarWords* polar = nullptr;
     std::optional<double>* length = nullptr;
     std::optional<double>* angle = nullptr;
+    std::array<std::optional<double>, 6>* vectors = nullptr;  // NX NY NZ TX TY TZ
 };
 
 bool startsValue(char c) {
@@ -260,6 +262,15 @@ struct BlockParser::Context {
                 }
                 cursor.setPosition(at);
             }
+            if ((allowed & kVectors) != 0 && (c == 'N' || c == 'T') &&
+                (next == 'X' || next == 'Y' || next == 'Z')) {
+                const size_t index = (c == 'T' ? 3u : 0u) + static_cast<size_t>(next - 'X');
+                cursor.setPosition(cursor.position() + 2);
+                double v = 0.0;
+                if (!value(v)) return false;
+                (*w.vectors)[index] = v;
+                continue;
+            }
             if ((allowed & kLength) != 0 && cursor.acceptPrefix("LEN")) {
                 double v = 0.0;
                 if (!value(v)) return false;
@@ -437,6 +448,27 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
             CommonWords words = b.words;
             out.statement = MFunctionBlock{words};
         }
+        return true;
+    }
+    if (head == "LN") {
+        LineNormalBlock b;
+        std::array<std::optional<double>, 6> vectors;
+        Words w{&b.coords, &b.words};
+        w.vectors = &vectors;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kVectors, w)) return false;
+        auto vector = [&](size_t first) -> std::optional<Vec3> {
+            if (!vectors[first] || !vectors[first + 1] || !vectors[first + 2]) return std::nullopt;
+            return Vec3(*vectors[first], *vectors[first + 1], *vectors[first + 2]);
+        };
+        const auto normal = vector(0);
+        b.tool = vector(3);
+        const bool someTool = vectors[3] || vectors[4] || vectors[5];
+        if (!normal || (someTool && !b.tool)) {
+            return c.fail("syntax",
+                          KERF_TR_NOOP("LN needs all of NX NY NZ, and TX TY TZ all or none"));
+        }
+        b.normal = *normal;
+        out.statement = b;
         return true;
     }
     // Q parameters and jumps are what loops consist of: before the long list of other heads.
@@ -1181,10 +1213,10 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         if (handled) return ok;
     }
     static const char* const kDeferredHeads[] = {
-        "PATTERN",   "SEL",     "GLOBAL",  "FUNCTION", "TRANS",      "CONTOUR",
-        "SPEC",      "LN",      "PRESET",  "POLARKIN", "FACING",     "TABDATA",
-        "OPEN",      "LIFTOFF", "WAIT",    "ERROR",    "MONITORING", "PARAXCOMP",
-        "PARAXMODE", "RESET",   "SYSREAD", "CFGWRITE", "CFGREAD"};
+        "PATTERN", "SEL",     "GLOBAL",   "FUNCTION",   "TRANS",     "CONTOUR",
+        "SPEC",    "PRESET",  "POLARKIN", "FACING",     "TABDATA",   "OPEN",
+        "LIFTOFF", "WAIT",    "ERROR",    "MONITORING", "PARAXCOMP", "PARAXMODE",
+        "RESET",   "SYSREAD", "CFGWRITE", "CFGREAD"};
     for (const char* candidate : kDeferredHeads) {
         if (head == candidate) {
             std::string feature(head);

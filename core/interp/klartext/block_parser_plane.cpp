@@ -159,29 +159,41 @@ bool BlockParser::parseTcpm(const program::LogicalLine& line, size_t at, ParsedB
         out.statement = TcpmBlock{false};
         return true;
     }
-    // The options Kerf implements: the feed along the tool tip, rotary axes as axis positions,
-    // interpolation of the axes.
-    static const char* const kOptions[][2] = {
-        {"F", "TCP"}, {"AXIS", "POS"}, {"PATHCTRL", "AXIS"}, {"REFPNT", "TIP-TIP"}};
+    // Each option with the values Kerf implements: F TCP|CONT, AXIS POS|SPAT, PATHCTRL
+    // AXIS|VECTOR and the reference points of the TNC's default (tip to tip).
+    TcpmBlock b;
+    b.on = true;
+    struct Option {
+        const char* keyword;
+        const char* values[2];
+        bool* second;  // set when the second value is written
+    };
+    bool unused = false;
+    const Option options[] = {{"F", {"TCP", "CONT"}, &b.feedContour},
+                              {"AXIS", {"POS", "SPAT"}, &b.spatialAngles},
+                              {"PATHCTRL", {"AXIS", "VECTOR"}, &b.vectorPath},
+                              {"REFPNT", {"TIP-TIP", nullptr}, &unused}};
     while (!cur.atEnd()) {
         const size_t wordAt = cur.position();
         bool known = false;
-        for (const auto& option : kOptions) {
-            if (cur.acceptKeyword(option[0])) {
-                cur.skipBlanks();
-                known = upperCopyOf(cur.word()) == option[1];
-                break;
-            }
+        for (const Option& option : options) {
+            if (!cur.acceptKeyword(option.keyword)) continue;
+            cur.skipBlanks();
+            const std::string value = upperCopyOf(cur.word());
+            known = value == option.values[0] ||
+                    (option.values[1] != nullptr && value == option.values[1]);
+            if (known) *option.second = value != option.values[0];
+            break;
         }
         if (!known) {
             cur.setPosition(wordAt);
             return failAt(wordAt, "not-supported",
-                          KERF_TR_NOOP("FUNCTION TCPM: only F TCP, AXIS POS, PATHCTRL AXIS and "
-                                       "REFPNT TIP-TIP are supported, not '{1}'"),
+                          KERF_TR_NOOP("FUNCTION TCPM: only F TCP|CONT, AXIS POS|SPAT, PATHCTRL "
+                                       "AXIS|VECTOR and REFPNT TIP-TIP are supported, not '{1}'"),
                           {std::string(cur.restUntilComment())});
         }
     }
-    out.statement = TcpmBlock{true};
+    out.statement = b;
     return true;
 }
 

@@ -37,6 +37,7 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const ToolCall& b) { self.executeToolCall(b); }
         void operator()(const ToolDef& b) { self.executeToolDef(b); }
         void operator()(const LinearBlock& b) { self.executeLinear(b); }
+        void operator()(const LineNormalBlock& b) { self.executeLineNormal(b); }
         void operator()(const CircleCenter& b) { self.executeCircleCenter(b); }
         void operator()(const CircleBlock& b) {
             self.executeCircle(b.coords, b.direction, b.words, std::nullopt);
@@ -97,12 +98,14 @@ void KlartextInterpreter::execute(const Statement& statement) {
         void operator()(const FkPole& b) { self.executeFkPole(b); }
         void operator()(const FkSelect& b) { self.executeFkSelect(b); }
         void operator()(const PlaneBlock& b) { self.executePlane(b); }
-        void operator()(const TcpmBlock& b) { self.switchTcpm(b.on); }
+        void operator()(const TcpmBlock& b) { self.switchTcpm(b); }
         void operator()(const Deferred& b) {
             self.fail("not-supported", KERF_TR_NOOP("{1} is not supported yet"), {b.feature});
         }
     };
-    if (auto missing = axisMissingFrom(statement, m_machineAxes)) {
+    // With AXIS SPAT, A, B and C are the tool's spatial angles (klartext_tcpm.cpp).
+    const AxisMask spatial = m_tcpmSpatial ? axisMaskOf("ABC") : 0;
+    if (auto missing = axisMissingFrom(statement, m_machineAxes | spatial)) {
         fail("axis", KERF_TR_NOOP("this machine has no axis {1}"),
              {std::string(1, axisLetter(*missing))});
         return;

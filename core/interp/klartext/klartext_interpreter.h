@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -202,6 +203,7 @@ private:
 
     // Motion and machine functions (klartext_motion.cpp).
     void executeLinear(const LinearBlock& block);
+    void executeLineNormal(const LineNormalBlock& block);  // klartext_line_normal.cpp
     void executeCircle(const Coordinates& coords, Direction direction, const CommonWords& words,
                        std::optional<double> radius);
     void executeTangentCircle(const Coordinates& coords, const PolarWords* polar,
@@ -357,9 +359,12 @@ private:
     }
     std::optional<double> lastValue(const CycleDefinition& def, const char* what);
     // Coordinate transformations of path functions and cycles alike: the element in the
-    // coordinates the path works in (the stream's, TCPM's tip on the part, or the tilted plane a
-    // swivel head turns out of the machine's planes).
+    // coordinates the path works in (the stream's, or the tilted plane's for TCPM and for a
+    // swivel head turned out of the machine's planes).
     std::optional<ContourElement> toPathSpace(const ContourElement& element);
+    bool pathInTiltedPlane() const {
+        return activePath().space() == &m_tiltedPlaneSpace || activePath().space() == &m_tcpmSpace;
+    }
     // A program point in those coordinates, and back.
     Pose pathOfProgram(const Pose& program) const;
     // Arcs in `plane` turn the other way in the path's coordinates (radius compensation changes
@@ -501,18 +506,42 @@ private:
     bool rotaryWithinLimits(const Pose& programTarget);
 
     // TCPM (klartext_tcpm.cpp): tool-tip positions on the part while the tables turn.
-    void switchTcpm(bool on);
+    void switchTcpm(const TcpmBlock& mode);
     machine::RotaryAngles tableAnglesOf(const Pose& pose) const;
     Pose axesOfTip(const Pose& tip) const;  // workpiece tip -> stream (linear axes)
     Pose tipOf(const Pose& axes) const;     // and back
-    // The spaces the path may work in (core/interp/path/path_space.h).
+    // The target of a motion block: targetOf(), and with AXIS SPAT the rotary axes that turn the
+    // tool to the spatial angles A, B, C written. Nothing (and the run failed) when they cannot.
+    std::optional<Pose> moveTarget(const Coordinates& coords);
+    // Both solutions of the rotary axes for the tool along `direction` (workpiece), the one
+    // nearer to `near` (stream pose: its rotary axes), as stream angles a turn nearer to it.
+    std::optional<machine::RotaryAngles> anglesNear(const Vec3& direction, const Pose& near) const;
+    // Sets the rotary axes of `target` (program coordinates) to turn the tool along `direction`
+    // (workpiece coordinates), the solution nearer to where the axes stand; false when none.
+    bool turnToolTo(const Vec3& direction, Pose& target) const;
+    // The spaces the path may work in (core/interp/path/path_space.h). TCPM works in the
+    // tilted plane's coordinates (the frame up to the datum shift): the rest of the frame, taken
+    // when the space was chosen and without the tables' turn, brings the tip onto the part, and
+    // the kinematics at the pose's rotary angles bring the axes to it.
     class TcpmSpace final : public interp::PathSpace {
     public:
         explicit TcpmSpace(const KlartextInterpreter& owner) : m(owner) {}
-        Pose toMachine(const Pose& tip) const override { return m.axesOfTip(tip); }
-        Pose toPath(const Pose& axes) const override { return m.tipOf(axes); }
+        Pose toMachine(const Pose& tilted) const override {
+            return m.axesOfTip(frame.tiltedPlaneToWorkpiece(tilted));
+        }
+        Pose toPath(const Pose& axes) const override {
+            return frame.workpieceToTiltedPlane(m.tipOf(axes));
+        }
+        Pose along(const ContourElement& element, double t) const override;
+        double deviation(const Pose& passed, const Pose& meant) const override;
+        bool feedAlongElement() const override { return !feedContour; }
+        cycles::CoordinateFrame frame;
+        bool feedContour = false;  // F CONT
+        bool vectorPath = false;   // PATHCTRL VECTOR
+        double reachMm = 1.0;      // VECTOR: the tool's point this far up is kept on its plane
 
     private:
+        Vec3 directionAt(const Pose& tilted) const;  // the tool's, in workpiece coordinates
         const KlartextInterpreter& m;
     };
     // The outer half of the frame as it was when the space was chosen (tilt, preset, tables).
@@ -651,7 +680,9 @@ private:
     Vec3 m_tableOffset = Vec3::Zero();
     machine::RotaryAngles m_tiltAngles;  // the active plane's solved angles
     bool m_shortestRotary = false;
-    bool m_tcpm = false;  // M128 / FUNCTION TCPM
+    bool m_tcpm = false;                          // M128 / FUNCTION TCPM
+    bool m_tcpmSpatial = false;                   // AXIS SPAT
+    std::array<double, 3> m_spatialDeg{0, 0, 0};  // its tool angles A, B, C (modal)
     TcpmSpace m_tcpmSpace{*this};
     TiltedPlaneSpace m_tiltedPlaneSpace;
     // Moves the cycles of the current block emitted: a pattern of many points stays bounded.

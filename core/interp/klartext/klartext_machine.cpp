@@ -123,7 +123,7 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 break;
             case 128:
             case 129:
-                switchTcpm(n == 128);
+                switchTcpm(TcpmBlock{n == 128});
                 break;
             case 89:  // modal cycle call, from this block on
             case 99:  // cycle call in this block only

@@ -123,7 +123,9 @@ void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     if (block.words.comp != CompWord::None) m_comp = block.words.comp;
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
-    Pose target = targetOf(block.coords);
+    auto moved = moveTarget(block.coords);
+    if (!moved) return;
+    Pose target = *moved;
     if (!rotaryWithinLimits(target)) return;
     submitMove(ContourElement::line(workingPlane(), m_programmed, target), rapid, feed,
                block.words);
@@ -180,7 +182,9 @@ void KlartextInterpreter::executeCircle(const Coordinates& coords, Direction dir
     const bool ccw = direction == Direction::Ccw;
     applyMFunctions(words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
-    Pose target = targetOf(coords);
+    auto moved = moveTarget(coords);
+    if (!moved) return;
+    Pose target = *moved;
     Plane plane;
     Vec2 center;
     if (radius) {
@@ -230,7 +234,9 @@ void KlartextInterpreter::executeTangentCircle(const Coordinates& coords, const 
     }
     applyMFunctions(words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
-    Pose target = targetOf(coords);
+    auto moved = moveTarget(coords);
+    if (!moved) return;
+    Pose target = *moved;
     if (polar) {
         if (!m_pole.set) {
             fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
@@ -261,7 +267,9 @@ void KlartextInterpreter::executeLinePolar(const LinePolarBlock& block) {
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
     const Plane plane = m_pole.plane;
-    Pose target = targetOf(block.coords);
+    auto moved = moveTarget(block.coords);
+    if (!moved) return;
+    Pose target = *moved;
     applyPolar(block.polar, target);
     submitMove(ContourElement::line(plane, m_programmed, target), rapid, feed, block.words);
     applyMFunctions(block.words.m, false);
@@ -305,7 +313,9 @@ void KlartextInterpreter::executeCirclePolar(const CirclePolarBlock& block) {
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
     const Plane plane = m_pole.plane;
-    Pose target = targetOf(block.coords);
+    auto moved = moveTarget(block.coords);
+    if (!moved) return;
+    Pose target = *moved;
     Vec2 from = inPlane(plane, m_programmed) - m_pole.point;
     const double r = from.norm();
     const double current = std::atan2(from.y(), from.x());
@@ -387,7 +397,9 @@ void KlartextInterpreter::executeApproach(const ApproachBlock& block) {
     spec.feed = feed;
     spec.rapidToHelper = rapid;
     spec.location = m_at;
-    Pose target = targetOf(block.coords);
+    auto moved = moveTarget(block.coords);
+    if (!moved) return;
+    Pose target = *moved;
     if (block.polar) {
         if (!m_pole.set) {
             fail("geometry", KERF_TR_NOOP("pole CC is not defined"));

@@ -256,7 +256,13 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
         result(m_kinematics->primary(), request.angles.primaryDeg);
         if (m_kinematics->twoAxes()) result(m_kinematics->secondary(), request.angles.secondaryDeg);
     }
-    Pose at = m_frame.toWorkpiece(m_programmed);  // the stream: linear axes of the machine
+    if (m_tcpm && request.positioning != PlaneBlock::Positioning::Stay) {
+        fail("plane", KERF_TR_NOOP("with TCPM on the program positions the rotary axes: tilt with "
+                                   "STAY, or switch TCPM off first"));
+        return;
+    }
+    // The stream: linear axes of the machine.
+    Pose at = m_tcpm ? m_path.machinePosition() : m_frame.toWorkpiece(m_programmed);
     // Where the axes stand now (they may differ from the old plane's angles after STAY).
     const machine::RotaryAngles oldAngles = m_kinematics ? tableAnglesOf(at) : m_tiltAngles;
     // The frame: tilt, then the axes' turn at the solved angles (the axes may still stand
@@ -313,6 +319,12 @@ void KlartextInterpreter::applyTilt(const TiltRequest& request) {
         emitStreamMove(at, target, request.rapid, request.feed);
         at = target;
     }
+    if (m_tcpm) {
+        // The tip stays where it is on the part; the program counts it in the new plane.
+        updatePathSpace();
+        m_programmed = programOfPath(m_path.toolPosition());
+        return;
+    }
     m_programmed = m_frame.toProgram(at);
     updatePathSpace();
 }
@@ -325,7 +337,8 @@ Vec3 KlartextInterpreter::tiltPreset() const {
 void KlartextInterpreter::setTableFrame() {
     m_tableTurn = Eigen::Matrix3d::Identity();
     m_tableOffset = Vec3::Zero();
-    if (m_kinematics && m_tilt.active) {
+    // With TCPM the kinematics turn the tip at the tables' real angles (klartext_tcpm.cpp).
+    if (m_kinematics && m_tilt.active && !m_tcpm) {
         m_tableTurn = m_kinematics->workpieceToMachine(m_tiltAngles);
         m_tableOffset = m_kinematics->axesOf(Vec3::Zero(), m_tiltAngles, tiltPreset(),
                                              m_tool.effectiveLength());

@@ -5,27 +5,32 @@
 // half the path tolerance (the planner blends the pieces within the other half). The same
 // mechanism lets a swivel head's oblique working plane run arcs and radius compensation.
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
+#include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/interp/klartext/spatial_angles.h"
 
 namespace kerf::klartext {
 
-void KlartextInterpreter::switchTcpm(bool on) {
+void KlartextInterpreter::switchTcpm(const TcpmBlock& mode) {
     if (!checkPathError(activePath().flush())) return;
-    if (on && !m_kinematics) {
+    if (mode.on && !m_kinematics) {
         fail("tcpm", KERF_TR_NOOP("TCPM needs the rotary axes described in the machine file "
                                   "([kinematics], e.g. --machine mill5)"));
         return;
     }
-    if (on && m_tilt.active) {
-        fail("not-supported",
-             KERF_TR_NOOP("TCPM in a tilted working plane is not supported yet: PLANE RESET "
-                          "first"));
-        return;
-    }
-    m_tcpm = on;
-    // The axes stay where they are; the program now counts in tip positions on the part.
+    m_tcpm = mode.on;
+    m_tcpmSpatial = mode.on && mode.spatialAngles;
+    m_spatialDeg = {0.0, 0.0, 0.0};
+    m_tcpmSpace.feedContour = mode.feedContour;
+    m_tcpmSpace.vectorPath = mode.vectorPath;
+    // The axes stay where they are; the program now counts in tip positions on the part. In a
+    // tilted plane those are the plane's coordinates, whatever angle the tables turn to: the
+    // frame loses the tables' turn, which the space's kinematics take over (and back).
+    setTableFrame();
     updatePathSpace();
     m_programmed = programOfPath(m_path.toolPosition());
 }
@@ -44,6 +49,12 @@ void KlartextInterpreter::updatePathSpace() {
     // Where the axes are, through the space that brought them there.
     const Pose at = m_path.machinePosition();
     if (space == &m_tiltedPlaneSpace) m_tiltedPlaneSpace.frame = m_frame;
+    if (space == &m_tcpmSpace) {
+        m_tcpmSpace.frame = m_frame;
+        const double reach =
+            m_tool.cuttingLength > 0.0 ? m_tool.cuttingLength : m_tool.effectiveLength();
+        m_tcpmSpace.reachMm = std::max(reach, 1.0);
+    }
     const double tolerance =
         0.5 * std::max(m_settings.machine ? m_settings.machine->pathToleranceMm : 0.0, 0.001);
     m_path.setSpace(space, tolerance);
@@ -51,13 +62,12 @@ void KlartextInterpreter::updatePathSpace() {
 }
 
 Pose KlartextInterpreter::pathOfProgram(const Pose& program) const {
-    if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.toTiltedPlane(program);
+    if (pathInTiltedPlane()) return m_frame.toTiltedPlane(program);
     return m_frame.toWorkpiece(program);
 }
 
 bool KlartextInterpreter::pathFlipsOrientation(Plane plane) const {
-    if (activePath().space() == &m_tiltedPlaneSpace)
-        return m_frame.flipsOrientationInTiltedPlane(plane);
+    if (pathInTiltedPlane()) return m_frame.flipsOrientationInTiltedPlane(plane);
     return m_frame.flipsOrientation(plane);
 }
 
@@ -67,7 +77,7 @@ bool KlartextInterpreter::pathKeepsArcs(Plane plane) const {
 }
 
 Pose KlartextInterpreter::programOfPath(const Pose& path) const {
-    if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.fromTiltedPlane(path);
+    if (pathInTiltedPlane()) return m_frame.fromTiltedPlane(path);
     return m_frame.toProgram(path);
 }
 
@@ -96,6 +106,105 @@ Pose KlartextInterpreter::tipOf(const Pose& axes) const {
     tip.setXyz(
         m_kinematics->tipOf(axes.xyz(), tableAnglesOf(axes), preset, m_tool.effectiveLength()));
     return tip;
+}
+
+std::optional<machine::RotaryAngles> KlartextInterpreter::anglesNear(const Vec3& direction,
+                                                                     const Pose& near) const {
+    const machine::RotaryAngles at = tableAnglesOf(near);
+    const machine::RotarySolutions solutions = m_kinematics->solve(direction, at.secondaryDeg);
+    std::optional<machine::RotaryAngles> best;
+    double bestTurn = 0.0;
+    for (int i = 0; i < solutions.count; ++i) {
+        const machine::RotaryAngles& s = solutions.list[static_cast<size_t>(i)];
+        // Each angle a whole turn nearer to where the axis stands.
+        const machine::RotaryAngles placed{
+            at.primaryDeg + std::remainder(s.primaryDeg - at.primaryDeg, 360.0),
+            at.secondaryDeg + std::remainder(s.secondaryDeg - at.secondaryDeg, 360.0)};
+        const double turn = std::abs(placed.primaryDeg - at.primaryDeg) +
+                            std::abs(placed.secondaryDeg - at.secondaryDeg);
+        if (!best || turn < bestTurn - 1e-9) {
+            best = placed;
+            bestTurn = turn;
+        }
+    }
+    return best;
+}
+
+std::optional<Pose> KlartextInterpreter::moveTarget(const Coordinates& coords) {
+    Pose target = targetOf(coords);
+    if (!m_tcpmSpatial) return target;
+    // AXIS SPAT: A, B, C are the tool's spatial angles in the working plane (turns about its X,
+    // then Y, then Z, as PLANE SPATIAL); an angle not written keeps its value.
+    bool written = false;
+    for (int i = 0; i < 3; ++i) {
+        const Axis axis = static_cast<Axis>(axisIndex(Axis::A) + i);
+        const AxisWord& word = coords[axis];
+        if (!word.present) continue;
+        auto& angle = m_spatialDeg[static_cast<size_t>(i)];
+        angle = word.incremental ? angle + word.value : word.value;
+        target[axis] = m_programmed[axis];
+        written = true;
+    }
+    if (!written) return target;
+    const Vec3 inPlane = spatialRotation(m_spatialDeg[0], m_spatialDeg[1], m_spatialDeg[2]).col(2);
+    const Vec3 direction =
+        (m_frame.tilted() ? m_frame.tilt() : Eigen::Matrix3d::Identity()) * inPlane;
+    if (!turnToolTo(direction, target)) {
+        fail("tcpm",
+             KERF_TR_NOOP("AXIS SPAT: the rotary axes of this machine cannot turn the tool to the "
+                          "spatial angles A {1} B {2} C {3}"),
+             {formatFixed(m_spatialDeg[0], 3), formatFixed(m_spatialDeg[1], 3),
+              formatFixed(m_spatialDeg[2], 3)});
+        return std::nullopt;
+    }
+    return target;
+}
+
+bool KlartextInterpreter::turnToolTo(const Vec3& direction, Pose& target) const {
+    const Pose stream = m_frame.toWorkpiece(target);
+    const auto angles = anglesNear(direction, stream);
+    if (!angles) return false;
+    // The program's angle: the machine's less the preset and the frame's offsets (shifts, turns).
+    auto set = [&](char letter, double machineDeg) {
+        const Axis axis = *axisFromLetter(letter);
+        target[axis] += machineDeg - m_settings.presetInMachine[axis] - stream[axis];
+    };
+    set(m_kinematics->primary(), angles->primaryDeg);
+    if (m_kinematics->twoAxes()) set(m_kinematics->secondary(), angles->secondaryDeg);
+    return true;
+}
+
+Vec3 KlartextInterpreter::TcpmSpace::directionAt(const Pose& tilted) const {
+    return m.m_kinematics->toolDirection(m.tableAnglesOf(frame.tiltedPlaneToWorkpiece(tilted)));
+}
+
+Pose KlartextInterpreter::TcpmSpace::along(const ContourElement& element, double t) const {
+    Pose p = element.poseAt(t);
+    if (!vectorPath) return p;
+    // PATHCTRL VECTOR: the tool's direction turns at a steady rate in the plane of its start and
+    // end directions (so its side sweeps a plane along a line); the axes follow it.
+    const Vec3 from = directionAt(element.start), to = directionAt(element.end);
+    const double angle = std::acos(std::clamp(from.dot(to), -1.0, 1.0));
+    if (angle < 1e-9 || angle > std::numbers::pi - 1e-6) return p;  // no plane to turn in
+    const Vec3 direction =
+        (std::sin((1.0 - t) * angle) * from + std::sin(t * angle) * to) / std::sin(angle);
+    const Pose stream = frame.tiltedPlaneToWorkpiece(p);
+    const auto angles = m.anglesNear(direction, stream);
+    if (!angles) return p;
+    auto set = [&](char letter, double machineDeg) {
+        const Axis axis = *axisFromLetter(letter);
+        p[axis] += machineDeg - m.m_settings.presetInMachine[axis] - stream[axis];
+    };
+    set(m.m_kinematics->primary(), angles->primaryDeg);
+    if (m.m_kinematics->twoAxes()) set(m.m_kinematics->secondary(), angles->secondaryDeg);
+    return p;
+}
+
+double KlartextInterpreter::TcpmSpace::deviation(const Pose& passed, const Pose& meant) const {
+    const double tip = (passed.xyz() - meant.xyz()).norm();
+    if (!vectorPath) return tip;
+    // The tool's point `reachMm` up its axis, where its side cuts.
+    return tip + reachMm * (directionAt(passed) - directionAt(meant)).norm();
 }
 
 }  // namespace kerf::klartext

@@ -29,9 +29,9 @@ cycles::CycleWords inMm(cycles::CycleWords words, double scale, bool factors) {
 }  // namespace
 
 std::optional<ContourElement> KlartextInterpreter::toPathSpace(const ContourElement& e) {
-    // In a swivel head's oblique plane the path works in the tilted plane's coordinates: only the
-    // inner half of the frame applies.
-    const bool tiltedPlane = activePath().space() == &m_tiltedPlaneSpace;
+    // With TCPM and in a swivel head's oblique plane the path works in the tilted plane's
+    // coordinates: only the inner half of the frame applies.
+    const bool tiltedPlane = pathInTiltedPlane();
     if (!tiltedPlane && m_frame.identity()) return e;
     auto map = [&](const Pose& p) {
         return tiltedPlane ? m_frame.toTiltedPlane(p) : m_frame.toWorkpiece(p);

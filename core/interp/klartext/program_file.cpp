@@ -118,6 +118,8 @@ void checkProgram(ProgramFile& program) {
     bool followFeed = program.mainProgram;
     bool feedKnown = false;
     bool toolCallFeedKnown = false;  // FAUTO takes the feed of a TOOL CALL
+    // After FUNCTION TCPM ... AXIS SPAT, A, B and C are the tool's spatial angles, not axes.
+    AxisMask spatialAngles = 0;
     auto feedMove = [&](const FeedWord& feed) {
         if (!followFeed) return;
         if (feed.kind == FeedWord::Kind::Max) return;  // FMAX needs none and sets none
@@ -197,7 +199,9 @@ void checkProgram(ProgramFile& program) {
             }
         };
         auto checkStatement = [&](const Statement& s) {
-            if (auto missing = axisMissingFrom(s, program.machineAxes)) {
+            if (const auto* tcpm = std::get_if<TcpmBlock>(&s))
+                spatialAngles = tcpm->on && tcpm->spatialAngles ? axisMaskOf("ABC") : 0;
+            if (auto missing = axisMissingFrom(s, program.machineAxes | spatialAngles)) {
                 diag(Severity::Error, "axis", line.firstLine, columnOfAxisWord(line.text, *missing),
                      KERF_TR_NOOP("this machine has no axis {1}"),
                      {std::string(1, axisLetter(*missing))});

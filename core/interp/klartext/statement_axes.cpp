@@ -10,8 +10,9 @@ const Coordinates* coordinatesOf(const Statement& statement) {
     return std::visit(
         [](const auto& block) -> const Coordinates* {
             using T = std::decay_t<decltype(block)>;
-            if constexpr (std::is_same_v<T, LinearBlock> || std::is_same_v<T, CircleCenter> ||
-                          std::is_same_v<T, CircleBlock> || std::is_same_v<T, CircleRadiusBlock> ||
+            if constexpr (std::is_same_v<T, LinearBlock> || std::is_same_v<T, LineNormalBlock> ||
+                          std::is_same_v<T, CircleCenter> || std::is_same_v<T, CircleBlock> ||
+                          std::is_same_v<T, CircleRadiusBlock> ||
                           std::is_same_v<T, CircleTangentBlock> ||
                           std::is_same_v<T, LinePolarBlock> ||
                           std::is_same_v<T, CirclePolarBlock> ||

@@ -102,6 +102,14 @@ struct LinearBlock {  // L
     Coordinates coords;
     CommonWords words;
 };
+// LN (klartext_line_normal.cpp): a straight line with 3D tool compensation. NX NY NZ: the
+// surface normal at the programmed point; TX TY TZ (optional, with TCPM): the tool's direction.
+struct LineNormalBlock {
+    Coordinates coords;
+    CommonWords words;
+    Vec3 normal{0.0, 0.0, 1.0};
+    std::optional<Vec3> tool;
+};
 struct CircleCenter {  // CC
     Coordinates coords;
 };
@@ -275,9 +283,15 @@ struct PlaneBlock {
 };
 
 // FUNCTION TCPM ... / FUNCTION RESET TCPM (block_parser_plane.cpp): programmed positions are
-// tool-tip positions on the part while the rotary axes move (as M128 / M129).
+// tool-tip positions on the part while the rotary axes move (as M128 / M129). The options:
+// F CONT (F is the axes' contouring feed, not the tip's), AXIS SPAT (A, B, C in the blocks are
+// spatial angles of the tool in the working plane, not axis positions), PATHCTRL VECTOR (the
+// tool's direction turns in the plane of its start and end directions).
 struct TcpmBlock {
     bool on = false;
+    bool feedContour = false;
+    bool spatialAngles = false;
+    bool vectorPath = false;
 };
 
 // FN 20: WAIT FOR SYNC: the interpreter waits for the machine before it reads on.
@@ -363,15 +377,15 @@ struct CycleCall {
 };
 
 using Statement =
-    std::variant<Empty, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, LinearBlock, CircleCenter,
-                 CircleBlock, CircleRadiusBlock, CircleTangentBlock, RoundBlock, ChamferBlock,
-                 LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock, ApproachBlock, Label,
-                 CallLabel, CallPgm, SelectProgram, CallSelectedProgram, StopBlock, MFunctionBlock,
-                 QAssign, QStringAssign, ConditionalJump, ErrorBlock, PrintBlock, SysRead,
-                 CircleData, TableOpen, TableAccess, CycleDefinition, GlobalDefinition,
-                 PatternDefinition, SelectTable, SelectPattern, SelectContour, DeclareContour,
-                 ContourFormula, ContourDefinition, CycleCall, FkBlock, FkPole, FkSelect,
-                 PlaneBlock, TcpmBlock, WaitForSync, Deferred>;
+    std::variant<Empty, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, LinearBlock, LineNormalBlock,
+                 CircleCenter, CircleBlock, CircleRadiusBlock, CircleTangentBlock, RoundBlock,
+                 ChamferBlock, LinePolarBlock, CirclePolarBlock, CircleTangentPolarBlock,
+                 ApproachBlock, Label, CallLabel, CallPgm, SelectProgram, CallSelectedProgram,
+                 StopBlock, MFunctionBlock, QAssign, QStringAssign, ConditionalJump, ErrorBlock,
+                 PrintBlock, SysRead, CircleData, TableOpen, TableAccess, CycleDefinition,
+                 GlobalDefinition, PatternDefinition, SelectTable, SelectPattern, SelectContour,
+                 DeclareContour, ContourFormula, ContourDefinition, CycleCall, FkBlock, FkPole,
+                 FkSelect, PlaneBlock, TcpmBlock, WaitForSync, Deferred>;
 
 struct ParsedBlock {
     Statement statement;

@@ -21,10 +21,10 @@ double worstDeviation(const PathSpace& space, const ContourElement& element, int
     double worst = 0.0;
     Pose start = space.toMachine(element.start);
     for (int i = 0; i < pieces && worst <= toleranceMm; ++i) {
-        const Pose end = space.toMachine(element.poseAt(double(i + 1) / pieces));
-        const Vec3 passed = space.toPath(midway(start, end)).xyz();
-        const Vec3 meant = element.poseAt((i + 0.5) / pieces).xyz();
-        worst = std::max(worst, (passed - meant).norm());
+        const Pose end = space.toMachine(space.along(element, double(i + 1) / pieces));
+        const Pose passed = space.toPath(midway(start, end));
+        const Pose meant = space.along(element, (i + 0.5) / pieces);
+        worst = std::max(worst, space.deviation(passed, meant));
         start = end;
     }
     return worst;
@@ -61,14 +61,14 @@ bool machinePieces(const PathSpace& space, const ContourElement& element, double
     }
     Pose start = space.toMachine(element.start);
     for (int i = 0; i < pieces; ++i) {
-        const Pose to = element.poseAt(double(i + 1) / pieces);
-        const Pose end = space.toMachine(to);
-        // The piece takes as long as the element's piece at F: a piece where only the tables
-        // turn (the tip follows the element on the part while X, Y, Z stand) gets its degrees'
-        // feed.
+        const Pose end = space.toMachine(space.along(element, double(i + 1) / pieces));
+        // F TCP: the piece takes as long as the element's piece at F: a piece where only the
+        // tables turn (the tip follows the element on the part while X, Y, Z stand) gets its
+        // degrees' feed. F CONT: F is the axes' own feed.
         const double pathPiece = elementLength(element) / pieces;
-        const double scaled =
-            pathPiece > 1e-9 ? feed * plannedLength(start, end) / pathPiece : feed;
+        const double scaled = pathPiece > 1e-9 && space.feedAlongElement()
+                                  ? feed * plannedLength(start, end) / pathPiece
+                                  : feed;
         out.push_back({end, scaled > 0.0 ? scaled : feed});
         start = end;
     }

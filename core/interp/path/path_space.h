@@ -17,6 +17,17 @@ public:
     virtual ~PathSpace() = default;
     virtual Pose toMachine(const Pose& path) const = 0;
     virtual Pose toPath(const Pose& machine) const = 0;
+    // Where the element is at `t` (0 start, 1 end): its own interpolation of every axis, unless
+    // the space steers the tool's orientation itself (TCPM PATHCTRL VECTOR).
+    virtual Pose along(const ContourElement& element, double t) const { return element.poseAt(t); }
+    // How far a pose the axes pass (path coordinates) is from the one meant: the tip's distance;
+    // a space that steers the orientation adds how far the tool's axis is off.
+    virtual double deviation(const Pose& passed, const Pose& meant) const {
+        return (passed.xyz() - meant.xyz()).norm();
+    }
+    // True: F is the feed along the element (TCPM F TCP); false: the feed of the axes as the
+    // planner counts them (F CONT).
+    virtual bool feedAlongElement() const { return true; }
 };
 
 // One straight piece of the machine's axes and the feed that keeps the programmed feed along the

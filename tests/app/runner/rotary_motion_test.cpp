@@ -356,3 +356,111 @@ TEST_F(RotaryMotion, TcpmRadiusCompensationOffsetsTheToolOnThePart) {
 }
 
 }  // namespace
+
+namespace {
+
+// TCPM in a tilted plane on mill5 (tool 4, L 60): PLANE SPATIAL SPB+90 TURN turns B to 90; the
+// program's (0, 0, 50) in the plane is Ry(90) (0, 0, 50) = (50, 0, 0) on the part, where the tip
+// stays while B turns to 60; X+20 in the plane takes it along the part's -Z to (50, 0, -20) while
+// B turns back to 90. From the first servo cycle whose tip (Rz(C) Ry(B) axes) reaches (50, 0, 0),
+// every one lies on that line within the path tolerance (0.01 mm).
+TEST_F(RotaryMotion, TcpmInTheTiltedPlaneKeepsTheTipOnTheProgrammedLine) {
+    double lastC = 0.0;
+    const auto tips = tipsOnThePart(dir, "TCPMT.H",
+                                    "0 BEGIN PGM TCPMT MM\n1 TOOL CALL 4 Z S1000\n"
+                                    "2 L X+0 Y+0 Z+100 R0 FMAX\n"
+                                    "3 PLANE SPATIAL SPA+0 SPB+90 SPC+0 TURN FMAX SEQ+\n"
+                                    "4 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                                    "5 L X+0 Y+0 Z+50 FMAX\n6 L B+60 F3000\n"
+                                    "7 L X+20 B+90 F1000\n8 FUNCTION RESET TCPM\n"
+                                    "9 END PGM TCPMT MM\n",
+                                    lastC);
+    const double start[3] = {50, 0, 0}, end[3] = {50, 0, -20};
+    bool reached = false;
+    double worst = 0.0, lowest = 0.0;
+    int rows = 0;
+    for (const auto& t : tips) {
+        if (!reached && toSegment(t.data(), start, start) < 1e-6) reached = true;
+        if (!reached) continue;
+        worst = std::max(worst, toSegment(t.data(), start, end));
+        lowest = std::min(lowest, t[2]);
+        ++rows;
+    }
+    EXPECT_TRUE(reached);
+    EXPECT_GT(rows, 1000);
+    EXPECT_LE(worst, 0.01);
+    EXPECT_NEAR(lowest, -20.0, 1e-6);
+    EXPECT_NEAR(lastC, 0.0, 1e-9);
+}
+
+}  // namespace
+
+namespace {
+
+// A program as a CAM post-processor writes it for a TNC (3+2 in PLANE SPATIAL SPB+30 TURN, then
+// M128/FUNCTION TCPM in that plane with B and C moving, AXIS SPAT with PATHCTRL VECTOR and F CONT,
+// LN with tool vectors) runs with --motion on mill5. From block 14 on (B beyond 34.9 deg, so not
+// the 3+2 pass of the same rectangle) until block 17 has lifted the tool, the tip, turned back into
+// the plane (Ry(-30) Rz(C) Ry(B) axes), lies on the rectangle's sides at Z -1 or on the plunge
+// within the path tolerance: TCPM keeps the plane's coordinates whatever angles the tables take.
+TEST_F(RotaryMotion, CamStyleFiveAxisProgramInTheTiltedPlaneKeepsTheTip) {
+    std::ofstream(dir / "CAM5X.H")
+        << "0 BEGIN PGM CAM5X MM\n1 TOOL CALL 4 Z S8000\n2 PLANE RESET STAY\n"
+           "3 L B+0 C+0 R0 FMAX M126\n4 L X+0 Y+0 Z+100 R0 FMAX M3\n"
+           "5 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+ TABLE ROT\n"
+           "6 L X-20 Y-10 Z+20 R0 FMAX\n7 L Z-1 F300\n8 L X+20 F800\n9 L Y+10\n"
+           "10 L Z+20 FMAX\n11 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+           "12 L X-20 Y-10 Z+5 B+Q121 C+Q122 FMAX\n13 L Z-1 F300\n"
+           "14 L X+0 Y-10 Z-1 B+35 C+5 F800\n15 L X+20 Y-10 Z-1 B+40 C+10\n"
+           "16 L X+20 Y+10 Z-1 B+35 C+0\n17 L Z+30 FMAX\n18 FUNCTION RESET TCPM\n"
+           "19 FUNCTION TCPM F CONT AXIS SPAT PATHCTRL VECTOR\n"
+           "20 L X+0 Y+0 Z+10 A+0 B+0 C+0 FMAX\n21 L Z+0 F500\n22 L X+10 B+10\n"
+           "23 L Z+30 FMAX\n24 FUNCTION RESET TCPM\n25 M128\n"
+           "26 LN X+0 Y+0 Z+5 NX+0 NY+0 NZ+1 TX+0 TY+0 TZ+1 F500\n"
+           "27 LN X+5 Y+0 Z+5 NX+0 NY+0 NZ+1 TX+0.1736482 TY+0 TZ+0.9848078\n"
+           "28 L Z+30 FMAX\n29 M129\n30 PLANE RESET TURN MB MAX FMAX\n31 END PGM CAM5X MM\n";
+    nlohmann::json report;
+    ASSERT_EQ(run("CAM5X.H", report), 0) << readText(dir / "errors");
+    EXPECT_TRUE(report["ok"].get<bool>());
+    const std::string samples = (dir / "samples.csv").string();
+    const std::string command =
+        std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
+        (dir / "TOOL.T").string() + "\" --motion --samples \"" + samples + "\" \"" +
+        (dir / "CAM5X.H").string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir / "errors");
+    const double corners[4][3] = {{-20, -10, -1}, {0, -10, -1}, {20, -10, -1}, {20, 10, -1}};
+    const double plunge[3] = {-20, -10, 5}, lift[3] = {20, 10, 30};
+    const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+    std::istringstream csv(readText(samples));
+    std::string line;
+    std::getline(csv, line);
+    double worst = 0.0, highestB = 0.0;
+    int rows = 0;
+    bool lifted = false;  // the end of block 17: the AXIS SPAT and LN blocks turn B again
+    while (!lifted && std::getline(csv, line)) {
+        double v[6];
+        if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4],
+                        &v[5]) != 6)
+            continue;
+        if (v[4] < 34.9 && rows == 0) continue;
+        const double b = v[4] * M_PI / 180.0, c = v[5] * M_PI / 180.0;
+        const double x1 = std::cos(b) * v[1] + std::sin(b) * v[3];
+        const double z1 = -std::sin(b) * v[1] + std::cos(b) * v[3];
+        const double t[3] = {std::cos(c) * x1 - std::sin(c) * v[2],
+                             std::sin(c) * x1 + std::cos(c) * v[2], z1};
+        const double p[3] = {c30 * t[0] - s30 * t[2], t[1], s30 * t[0] + c30 * t[2]};
+        double d = std::min(toSegment(p, plunge, corners[0]), toSegment(p, corners[3], lift));
+        for (int i = 0; i < 3; ++i)
+            d = std::min(d, toSegment(p, corners[i], corners[i + 1]));
+        worst = std::max(worst, d);
+        highestB = std::max(highestB, v[4]);
+        lifted = p[2] > 30.0 - 1e-6;
+        ++rows;
+    }
+    EXPECT_TRUE(lifted);
+    EXPECT_GT(rows, 100);
+    EXPECT_NEAR(highestB, 40.0, 1e-6);
+    EXPECT_LE(worst, 0.01);
+}
+
+}  // namespace

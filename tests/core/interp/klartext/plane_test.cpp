@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "core/base/atomic_file.h"
@@ -451,7 +452,187 @@ TEST_F(PlaneTest, TcpmComputesTheAxesFromTheTip) {
         << firstError();
     expectAt(0.0, -10.0, 50.0);
     EXPECT_EQ(run("mill", "1 M128\n"), interp::RunStatus::Failed);
-    EXPECT_EQ(run("mill5", "1 FUNCTION TCPM F CONT AXIS POS PATHCTRL AXIS\n"),
+    EXPECT_EQ(run("mill5", "1 FUNCTION TCPM F TCP AXIS POS REFPNT CENTER-CENTER\n"),
+              interp::RunStatus::Failed);
+}
+
+// The tip of a stream pose on mill5's part (origin at the pivot): Rz(C) Ry(B) axes.
+Vec3 tipOnMill5(const Pose& axes) {
+    using machine::principalRotation;
+    return principalRotation('C', axes[Axis::C]) * principalRotation('B', axes[Axis::B]) *
+           axes.xyz();
+}
+
+// TCPM in a tilted plane (PLANE SPATIAL SPB+90 TURN: B+90 C0): the program's X, Y, Z are tip
+// positions in the plane, Ry(90) p = (z, y, -x) on the part. (0, 0, 50) is the part's (50, 0, 0),
+// at the axes Ry(-90) (50, 0, 0) = (0, 0, 50) while B stands at 90. B+60 keeps the tip there: the
+// axes go to Ry(-60) (50, 0, 0) = (25, 0, 25 sqrt 3). X+20 in the plane is the part's (50, 0, -20):
+// Ry(-60) (50, 0, -20) = (25 + 10 sqrt 3, 0, 25 sqrt 3 - 10). Every piece of both blocks keeps
+// the tip on the part's line within half the path tolerance.
+TEST_F(PlaneTest, TcpmInTheTiltedPlaneKeepsTheTipInThePlanesCoordinates) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "2 PLANE SPATIAL SPA+0 SPB+90 SPC+0 TURN FMAX SEQ+\n"
+                  "3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                  "4 L X+0 Y+0 Z+50 FMAX\n"
+                  "5 L B+60 F1000\n"
+                  "6 L X+20\n"
+                  "7 FUNCTION RESET TCPM\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const std::vector<Pose> at = movesOf(4), turn = movesOf(5), line = movesOf(6);
+    ASSERT_EQ(at.size(), 1u);
+    EXPECT_NEAR(at[0][Axis::X], 0.0, 1e-9);
+    EXPECT_NEAR(at[0][Axis::Z], 50.0, 1e-9);
+    EXPECT_NEAR(at[0][Axis::B], 90.0, 1e-9);
+    ASSERT_FALSE(turn.empty());
+    for (const Pose& p : turn)
+        EXPECT_LE((tipOnMill5(p) - Vec3(50, 0, 0)).norm(), 0.005);
+    EXPECT_NEAR(turn.back()[Axis::X], 25.0, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::Z], 25.0 * std::sqrt(3.0), 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::B], 60.0, 1e-9);
+    ASSERT_FALSE(line.empty());
+    for (const Pose& p : line) {
+        const Vec3 tip = tipOnMill5(p);
+        EXPECT_NEAR(tip.x(), 50.0, 1e-9);
+        EXPECT_NEAR(tip.y(), 0.0, 1e-9);
+    }
+    EXPECT_NEAR(line.back()[Axis::X], 25.0 + 10.0 * std::sqrt(3.0), 1e-9);
+    EXPECT_NEAR(line.back()[Axis::Z], 25.0 * std::sqrt(3.0) - 10.0, 1e-9);
+    // Off again, the plane counts from the solved B+90 (as without TCPM); the axes stay.
+    expectAt(25.0 + 10.0 * std::sqrt(3.0), 0.0, 25.0 * std::sqrt(3.0) - 10.0);
+    // The tables are the program's with TCPM on: PLANE may only STAY.
+    EXPECT_EQ(run("mill5", "1 M128\n2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n"),
+              interp::RunStatus::Failed);
+    EXPECT_EQ(run("mill5", "1 M128\n2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n3 M129\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+}
+
+// AXIS SPAT in the plane tilted by SPB+30 (B+30 C0): B+15 is the tool's spatial angle in the
+// plane, so on the part it stands at Ry(30) Ry(15) Z: the axes turn to B+45 C0 (the nearer of
+// B+45 C0 and B-45 C180). The tip stays at the plane's (0, 0, 50), Ry(30) (0, 0, 50) =
+// (25, 0, 25 sqrt 3) on the part: the axes end at Ry(-45) of it = (50 sin -15, 0, 50 cos 15).
+TEST_F(PlaneTest, TcpmAxisSpatTurnsTheToolToSpatialAnglesInThePlane) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n"
+                  "2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+\n"
+                  "3 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS\n"
+                  "4 L X+0 Y+0 Z+50 FMAX\n"
+                  "5 L A+0 B+15 C+0 F1000\n"
+                  "6 FUNCTION RESET TCPM\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const std::vector<Pose> turn = movesOf(5);
+    ASSERT_FALSE(turn.empty());
+    const double r = M_PI / 180.0;
+    EXPECT_NEAR(turn.back()[Axis::B], 45.0, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::C], 0.0, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::X], 50.0 * std::sin(-15.0 * r), 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::Z], 50.0 * std::cos(15.0 * r), 1e-9);
+    for (const Pose& p : turn)
+        EXPECT_LE((tipOnMill5(p) - Vec3(25.0, 0.0, 25.0 * std::sqrt(3.0))).norm(), 0.005);
+    // A direction the tables cannot reach: the B table's 110 deg leave 20 deg below the part.
+    EXPECT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+100 R0 FMAX\n2 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS\n"
+                  "3 L B+120 F1000\n"),
+              interp::RunStatus::Failed);
+}
+
+// F CONT: the circle of TcpmCircleAboutTheTableAxisTurnsTheTableAtTheTipsFeed, where only C
+// turns, now moves at the axes' own feed: 1000 deg/min instead of the tip's 2864.789.
+TEST_F(PlaneTest, TcpmFeedContIsTheAxesFeed) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+20 Y+0 Z+50 R0 FMAX\n2 FUNCTION TCPM F CONT AXIS POS PATHCTRL AXIS\n"
+                  "3 CC X+0 Y+0\n4 C X+0 Y+20 C+90 DR+ F1000\n5 FUNCTION RESET TCPM\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    ASSERT_EQ(movesOf(4).size(), 1u);
+    ASSERT_EQ(sink.feeds.size(), 1u);
+    EXPECT_NEAR(sink.feeds[0], 1000.0, 1e-9);
+}
+
+// PATHCTRL VECTOR: from B+30 C0 (tool (1/2, 0, sqrt 3 / 2)) to B+30 C+90 (tool (0, 1/2, sqrt 3 /
+// 2)) the tool turns on the great circle between them, not on B's cone: half way it points along
+// their sum (1/2, 1/2, sqrt 3) / sqrt 3.5, i.e. C+45 and B = acos sqrt(6/7) = 22.21 deg. Every
+// piece's tool direction lies in the plane of the two (normal: their cross product) within the
+// tolerance at the tool's reach, and the tip stays at Ry(30) (0, 0, 50) = (25, 0, 25 sqrt 3).
+// With PATHCTRL AXIS, B stays at 30.
+TEST_F(PlaneTest, TcpmPathctrlVectorTurnsTheToolInOnePlane) {
+    const std::string blocks =
+        "1 L X+0 Y+0 Z+50 R0 FMAX\n2 L B+30 C+0 FMAX\n"
+        "3 FUNCTION TCPM F TCP AXIS POS PATHCTRL VECTOR\n"
+        "4 L C+90 F1000\n5 FUNCTION RESET TCPM\n";
+    ASSERT_EQ(run("mill5", blocks), interp::RunStatus::Finished) << firstError();
+    const std::vector<Pose> turn = movesOf(4);
+    ASSERT_GE(turn.size(), 2u);
+    const double r = M_PI / 180.0;
+    const Vec3 from(0.5, 0.0, std::sqrt(3.0) / 2.0), to(0.0, 0.5, std::sqrt(3.0) / 2.0);
+    const Vec3 normal = from.cross(to).normalized();
+    double lowestB = 90.0;
+    for (const Pose& p : turn) {
+        const double b = p[Axis::B] * r, c = p[Axis::C] * r;
+        const Vec3 tool(std::cos(c) * std::sin(b), std::sin(c) * std::sin(b), std::cos(b));
+        EXPECT_LE(std::abs(tool.dot(normal)), 1e-9);
+        EXPECT_LE((tipOnMill5(p) - Vec3(25.0, 0.0, 25.0 * std::sqrt(3.0))).norm(), 0.005);
+        lowestB = std::min(lowestB, p[Axis::B]);
+        if (std::abs(p[Axis::C] - 45.0) < 1e-9) {
+            EXPECT_NEAR(p[Axis::B], std::acos(std::sqrt(6.0 / 7.0)) / r, 1e-9);
+        }
+    }
+    EXPECT_NEAR(lowestB, std::acos(std::sqrt(6.0 / 7.0)) / r, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::B], 30.0, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::C], 90.0, 1e-9);
+    std::string axisPath = blocks;
+    axisPath.replace(axisPath.find("VECTOR"), 6, "AXIS");
+    ASSERT_EQ(run("mill5", axisPath), interp::RunStatus::Finished) << firstError();
+    for (const Pose& p : movesOf(4))
+        EXPECT_NEAR(p[Axis::B], 30.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace kerf::klartext
+
+namespace kerf::klartext {
+namespace {
+
+// LN: the tool's radius oversize DR +0.2 (of the TOOL CALL) moves the surface point along the
+// normal (3, 0, 4) / 5: (10, 0, 0) becomes (10.12, 0, 0.16); without an oversize the point stays.
+// RL/RR are refused (the normal compensates), as a vector without length.
+TEST_F(PlaneTest, LnMovesThePointAlongTheNormalByTheRadiusOversize) {
+    ASSERT_EQ(run("mill",
+                  "1 TOOL CALL 1 Z S1000 DR+0.2\n2 L X+0 Y+0 Z+10 R0 FMAX\n"
+                  "3 LN X+10 Y+0 Z+0 NX+3 NY+0 NZ+4 F100\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    expectAt(10.12, 0.0, 0.16);
+    ASSERT_EQ(run("mill", "1 TOOL CALL 1 Z S1000\n2 LN X+10 Y+5 Z+1 NX+0.6 NY+0 NZ+0.8 F100\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    expectAt(10.0, 5.0, 1.0);
+    EXPECT_EQ(run("mill", "1 L X+0 Y+0 RL F100\n2 LN X+10 Y+0 Z+0 NX+0 NY+0 NZ+1\n"),
+              interp::RunStatus::Failed);
+    EXPECT_EQ(run("mill", "1 LN X+10 Y+0 Z+0 NX+0 NY+0 NZ+0 F100\n"), interp::RunStatus::Failed);
+    EXPECT_EQ(run("mill", "1 LN X+10 Y+0 Z+0 NX+0 NY+0 F100\n"), interp::RunStatus::Failed);
+}
+
+// LN with the tool direction TX TY TZ = (sin 30, 0, cos 30) under M128 on mill5: B+30 C0 (the
+// nearer of B+30 C0 and B-30 C180) while the tip stays at (0, 0, 50): the axes go to
+// Ry(-30) (0, 0, 50) = (-25, 0, 25 sqrt 3). Without TCPM the tool direction is refused.
+TEST_F(PlaneTest, LnWithToolDirectionTurnsTheTablesUnderTcpm) {
+    ASSERT_EQ(run("mill5",
+                  "1 L X+0 Y+0 Z+50 R0 FMAX\n2 M128\n"
+                  "3 LN X+0 Y+0 Z+50 NX+0 NY+0 NZ+1 TX+0.5 TY+0 TZ+0.8660254038 F1000\n"
+                  "4 M129\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const std::vector<Pose> turn = movesOf(3);
+    ASSERT_FALSE(turn.empty());
+    EXPECT_NEAR(turn.back()[Axis::B], 30.0, 1e-6);
+    EXPECT_NEAR(turn.back()[Axis::C], 0.0, 1e-9);
+    EXPECT_NEAR(turn.back()[Axis::X], -25.0, 1e-6);
+    EXPECT_NEAR(turn.back()[Axis::Z], 25.0 * std::sqrt(3.0), 1e-6);
+    EXPECT_EQ(run("mill5", "1 LN X+0 Y+0 Z+50 NX+0 NY+0 NZ+1 TX+0.5 TY+0 TZ+0.866 F1000\n"),
               interp::RunStatus::Failed);
 }
 
