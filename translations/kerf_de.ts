@@ -698,14 +698,6 @@ Maschine: %3</translation>
         <source>Path function</source>
         <translation>Bahnfunktion</translation>
     </message>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::PositionDisplay</name>
@@ -888,14 +880,6 @@ Maschine: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Sonderfunktion</translation>
-    </message>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1352,17 @@ verschiebungen</translation>
     <message>
         <source>Fit</source>
         <translation>Einpassen</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::WordFieldsDialog</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>

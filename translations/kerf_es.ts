@@ -698,14 +698,6 @@ Máquina: %3</translation>
         <source>Path function</source>
         <translation>Función de trayectoria</translation>
     </message>
-    <message>
-        <source>OK</source>
-        <translation>Aceptar</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Cancelar</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::PositionDisplay</name>
@@ -888,14 +880,6 @@ Máquina: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Función especial</translation>
-    </message>
-    <message>
-        <source>OK</source>
-        <translation>Aceptar</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1352,17 @@ de origen</translation>
     <message>
         <source>Fit</source>
         <translation>Ajustar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::WordFieldsDialog</name>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>

@@ -701,14 +701,6 @@ Maszyna: %3</translation>
         <source>Path function</source>
         <translation>Funkcja toru</translation>
     </message>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Anuluj</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::PositionDisplay</name>
@@ -891,14 +883,6 @@ Maszyna: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Funkcja specjalna</translation>
-    </message>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Anuluj</translation>
     </message>
 </context>
 <context>
@@ -1371,6 +1355,17 @@ punktu zerowego</translation>
     <message>
         <source>Fit</source>
         <translation>Dopasuj</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::WordFieldsDialog</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
     </message>
 </context>
 <context>

@@ -699,14 +699,6 @@ Máquina: %3</translation>
         <source>Path function</source>
         <translation>Função de trajetória</translation>
     </message>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Cancelar</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::PositionDisplay</name>
@@ -889,14 +881,6 @@ Máquina: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Função especial</translation>
-    </message>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1352,17 @@ offsets</source>
     <message>
         <source>Fit</source>
         <translation>Ajustar</translation>
+    </message>
+</context>
+<context>
+    <name>kerf::ui::WordFieldsDialog</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>

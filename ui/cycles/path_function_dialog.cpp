@@ -1,138 +1,43 @@
 #include "ui/cycles/path_function_dialog.h"
 
-#include <QComboBox>
-#include <QEvent>
-#include <QGridLayout>
-#include <QKeyEvent>
-#include <QLabel>
-#include <QLineEdit>
-#include <QPushButton>
-#include <QVBoxLayout>
-
-#include "ui/cycles/dialog_parts.h"
-
 namespace kerf::ui {
 
 namespace {
 
-constexpr int kTouchHeight = kDialogTouchHeight;
-
-bool isChoice(const PathField& field) {
-    return !field.choices.isEmpty();
+std::vector<WordRow> rowsOf(const std::vector<PathField>& fields) {
+    std::vector<WordRow> rows;
+    for (const PathField& field : fields)
+        rows.push_back({field.word, field.choices});
+    return rows;
 }
 
 }  // namespace
 
 PathFunctionDialog::PathFunctionDialog(PathFunction function, QWidget* parent)
-    : QDialog(parent), m_function(function), m_fields(pathFields(function)) {
-    setObjectName("pathFunctionDialog");
-    auto* layout = new QVBoxLayout(this);
-    auto* title = new QLabel(pathFunctionKeyword(function), this);
-    title->setStyleSheet(QStringLiteral("font-weight: bold; font-size: 16px;"));
-    layout->addWidget(title);
-    auto* grid = new QGridLayout;
-    grid->setColumnStretch(2, 1);
-    for (size_t i = 0; i < m_fields.size(); ++i) {
-        const int row = static_cast<int>(i);
-        auto* label = new QLabel(m_fields[i].word, this);
-        label->setStyleSheet(QStringLiteral("font-weight: bold;"));
-        QWidget* input = nullptr;
-        if (isChoice(m_fields[i])) {
-            auto* combo = new QComboBox(this);
-            combo->addItems(m_fields[i].choices);
-            input = combo;
-        } else {
-            input = new QLineEdit(this);
-        }
-        input->setMinimumHeight(kTouchHeight);
-        input->setMinimumWidth(140);
-        input->installEventFilter(this);
-        auto* description = new QLabel(this);
-        description->setWordWrap(true);
-        grid->addWidget(label, row, 0);
-        grid->addWidget(input, row, 1);
-        grid->addWidget(description, row, 2);
-        m_inputs.push_back(input);
-        m_descriptions.push_back(description);
-    }
-    layout->addLayout(grid);
-    m_message = addRefusalLine(*this, *layout, "pathMessage");
-    addOkCancel(*this, *layout, m_ok, m_cancel);
-    retranslate();
-    if (!m_inputs.empty()) m_inputs.front()->setFocus();
-}
-
-QString PathFunctionDialog::text(int field) const {
-    QWidget* input = m_inputs.at(static_cast<size_t>(field));
-    if (auto* combo = qobject_cast<QComboBox*>(input)) return combo->currentText();
-    return static_cast<QLineEdit*>(input)->text().trimmed();
-}
-
-void PathFunctionDialog::setValues(const QStringList& values) {
-    for (size_t i = 0; i < m_inputs.size(); ++i) {
-        const QString value = values.value(static_cast<int>(i));
-        if (auto* combo = qobject_cast<QComboBox*>(m_inputs[i]))
-            combo->setCurrentIndex(std::max(0, combo->findText(value.toUpper())));
-        else
-            static_cast<QLineEdit*>(m_inputs[i])->setText(value);
-    }
-}
-
-QStringList PathFunctionDialog::values() const {
-    QStringList list;
-    for (int i = 0; i < fieldCount(); ++i)
-        list << text(i);
-    return list;
+    : WordFieldsDialog(parent, "pathFunctionDialog"),
+      m_function(function),
+      m_fields(pathFields(function)) {
+    build(pathFunctionKeyword(function), rowsOf(m_fields), "pathMessage", 140);
 }
 
 QString PathFunctionDialog::block() const {
     return writePathFunction(m_function, values());
 }
 
-QString PathFunctionDialog::message() const {
-    return m_message->text();
+std::optional<QString> PathFunctionDialog::checkRow(int field, const QString& text) const {
+    return checkPathField(m_fields.at(static_cast<size_t>(field)), text);
 }
 
-void PathFunctionDialog::accept() {
-    if (const auto error = checkPathFunction(m_function, values())) {
-        m_message->setText(*error);
-        return;
-    }
-    m_message->clear();
-    QDialog::accept();
+std::optional<QString> PathFunctionDialog::checkBlock(const QStringList& values) const {
+    return checkPathFunction(m_function, values);
 }
 
-void PathFunctionDialog::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange) retranslate();
-    QDialog::changeEvent(event);
+QString PathFunctionDialog::rowDescription(int field) const {
+    return pathFieldDescription(m_fields.at(static_cast<size_t>(field)));
 }
 
-bool PathFunctionDialog::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() != QEvent::KeyPress) return QDialog::eventFilter(watched, event);
-    const int key = static_cast<QKeyEvent*>(event)->key();
-    if (key != Qt::Key_Return && key != Qt::Key_Enter) return QDialog::eventFilter(watched, event);
-    for (size_t i = 0; i < m_inputs.size(); ++i) {
-        if (m_inputs[i] != watched) continue;
-        if (const auto error = checkPathField(m_fields[i], text(static_cast<int>(i)))) {
-            m_message->setText(*error);
-            return true;
-        }
-        m_message->clear();
-        if (i + 1 < m_inputs.size())
-            m_inputs[i + 1]->setFocus();
-        else
-            accept();
-        return true;
-    }
-    return QDialog::eventFilter(watched, event);
-}
-
-void PathFunctionDialog::retranslate() {
-    setWindowTitle(tr("Path function"));
-    for (size_t i = 0; i < m_fields.size(); ++i)
-        m_descriptions[i]->setText(pathFieldDescription(m_fields[i]));
-    m_ok->setText(tr("OK"));
-    m_cancel->setText(tr("Cancel"));
+QString PathFunctionDialog::dialogTitle() const {
+    return tr("Path function");
 }
 
 }  // namespace kerf::ui

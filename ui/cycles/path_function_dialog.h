@@ -1,50 +1,33 @@
 #pragma once
 
-#include <QDialog>
-#include <QStringList>
 #include <vector>
 
 #include "ui/cycles/path_function.h"
-
-class QLabel;
-class QPushButton;
+#include "ui/cycles/word_fields_dialog.h"
 
 namespace kerf::ui {
 
 // The dialog of a path function or TOOL CALL: one row per word (coordinates, radius
 // compensation, feed, M functions ...). Enter moves to the next row and finishes on the last,
 // Esc cancels; refused input keeps the dialog open with a message.
-class PathFunctionDialog : public QDialog {
+class PathFunctionDialog : public WordFieldsDialog {
     Q_OBJECT
 
 public:
     explicit PathFunctionDialog(PathFunction function, QWidget* parent = nullptr);
 
-    void setValues(const QStringList& values);
-    QStringList values() const;
     // The block without its number, e.g. "L X+10 Y+5 RL F200 M3".
     QString block() const;
-    int fieldCount() const { return static_cast<int>(m_inputs.size()); }
-    QWidget* input(int field) const { return m_inputs.at(static_cast<size_t>(field)); }
-    QString message() const;
-
-    void accept() override;
 
 protected:
-    void changeEvent(QEvent* event) override;
-    bool eventFilter(QObject* watched, QEvent* event) override;
+    std::optional<QString> checkRow(int field, const QString& text) const override;
+    std::optional<QString> checkBlock(const QStringList& values) const override;
+    QString rowDescription(int field) const override;
+    QString dialogTitle() const override;
 
 private:
-    void retranslate();
-    QString text(int field) const;
-
     PathFunction m_function;
     std::vector<PathField> m_fields;
-    std::vector<QWidget*> m_inputs;
-    std::vector<QLabel*> m_descriptions;
-    QLabel* m_message = nullptr;
-    QPushButton* m_ok = nullptr;
-    QPushButton* m_cancel = nullptr;
 };
 
 }  // namespace kerf::ui

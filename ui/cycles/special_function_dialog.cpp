@@ -1,124 +1,41 @@
 #include "ui/cycles/special_function_dialog.h"
 
-#include <QComboBox>
-#include <QEvent>
-#include <QGridLayout>
-#include <QKeyEvent>
-#include <QLabel>
-#include <QLineEdit>
-#include <QPushButton>
-#include <QVBoxLayout>
-
-#include "ui/cycles/dialog_parts.h"
-
 namespace kerf::ui {
 
+namespace {
+
+std::vector<WordRow> rowsOf(const std::vector<SpecialField>& fields) {
+    std::vector<WordRow> rows;
+    for (const SpecialField& field : fields) {
+        const bool choice = field.kind == SpecialFieldKind::Choice;
+        rows.push_back({field.word, choice ? field.choices : QStringList()});
+    }
+    return rows;
+}
+
+}  // namespace
+
 SpecialFunctionDialog::SpecialFunctionDialog(SpecialFunction function, QWidget* parent)
-    : QDialog(parent), m_function(function), m_fields(specialFields(function)) {
-    setObjectName("specialFunctionDialog");
-    auto* layout = new QVBoxLayout(this);
-    auto* title = new QLabel(specialFunctionTitle(function), this);
-    title->setStyleSheet(QStringLiteral("font-weight: bold; font-size: 16px;"));
-    layout->addWidget(title);
-    auto* grid = new QGridLayout;
-    grid->setColumnStretch(2, 1);
-    for (size_t i = 0; i < m_fields.size(); ++i) {
-        const int row = static_cast<int>(i);
-        auto* label = new QLabel(m_fields[i].word, this);
-        label->setStyleSheet(QStringLiteral("font-weight: bold;"));
-        QWidget* input = nullptr;
-        if (m_fields[i].kind == SpecialFieldKind::Choice) {
-            auto* combo = new QComboBox(this);
-            combo->addItems(m_fields[i].choices);
-            input = combo;
-        } else {
-            input = new QLineEdit(this);
-        }
-        input->setMinimumHeight(kDialogTouchHeight);
-        input->setMinimumWidth(160);
-        input->installEventFilter(this);
-        auto* description = new QLabel(this);
-        description->setWordWrap(true);
-        grid->addWidget(label, row, 0);
-        grid->addWidget(input, row, 1);
-        grid->addWidget(description, row, 2);
-        m_inputs.push_back(input);
-        m_descriptions.push_back(description);
-    }
-    layout->addLayout(grid);
-    m_message = addRefusalLine(*this, *layout, "specialMessage");
-    addOkCancel(*this, *layout, m_ok, m_cancel);
-    retranslate();
-    if (!m_inputs.empty()) m_inputs.front()->setFocus();
+    : WordFieldsDialog(parent, "specialFunctionDialog"),
+      m_function(function),
+      m_fields(specialFields(function)) {
+    build(specialFunctionTitle(function), rowsOf(m_fields), "specialMessage", 160);
 }
 
-QString SpecialFunctionDialog::text(int field) const {
-    QWidget* input = m_inputs.at(static_cast<size_t>(field));
-    if (auto* combo = qobject_cast<QComboBox*>(input)) return combo->currentText();
-    return static_cast<QLineEdit*>(input)->text().trimmed();
+std::optional<QString> SpecialFunctionDialog::checkRow(int field, const QString& text) const {
+    return checkSpecialField(m_fields.at(static_cast<size_t>(field)), text);
 }
 
-void SpecialFunctionDialog::setValues(const QStringList& values) {
-    for (size_t i = 0; i < m_inputs.size(); ++i) {
-        const QString value = values.value(static_cast<int>(i));
-        if (auto* combo = qobject_cast<QComboBox*>(m_inputs[i]))
-            combo->setCurrentIndex(std::max(0, combo->findText(value.toUpper())));
-        else
-            static_cast<QLineEdit*>(m_inputs[i])->setText(value);
-    }
+std::optional<QString> SpecialFunctionDialog::checkBlock(const QStringList& values) const {
+    return checkSpecialFunction(m_function, values);
 }
 
-QStringList SpecialFunctionDialog::values() const {
-    QStringList list;
-    for (int i = 0; i < fieldCount(); ++i)
-        list << text(i);
-    return list;
+QString SpecialFunctionDialog::rowDescription(int field) const {
+    return specialFieldDescription(m_fields.at(static_cast<size_t>(field)));
 }
 
-QString SpecialFunctionDialog::message() const {
-    return m_message->text();
-}
-
-void SpecialFunctionDialog::accept() {
-    if (const auto error = checkSpecialFunction(m_function, values())) {
-        m_message->setText(*error);
-        return;
-    }
-    m_message->clear();
-    QDialog::accept();
-}
-
-void SpecialFunctionDialog::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange) retranslate();
-    QDialog::changeEvent(event);
-}
-
-bool SpecialFunctionDialog::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() != QEvent::KeyPress) return QDialog::eventFilter(watched, event);
-    const int key = static_cast<QKeyEvent*>(event)->key();
-    if (key != Qt::Key_Return && key != Qt::Key_Enter) return QDialog::eventFilter(watched, event);
-    for (size_t i = 0; i < m_inputs.size(); ++i) {
-        if (m_inputs[i] != watched) continue;
-        if (const auto error = checkSpecialField(m_fields[i], text(static_cast<int>(i)))) {
-            m_message->setText(*error);
-            return true;
-        }
-        m_message->clear();
-        if (i + 1 < m_inputs.size())
-            m_inputs[i + 1]->setFocus();
-        else
-            accept();
-        return true;
-    }
-    return QDialog::eventFilter(watched, event);
-}
-
-void SpecialFunctionDialog::retranslate() {
-    setWindowTitle(tr("Special function"));
-    for (size_t i = 0; i < m_fields.size(); ++i)
-        m_descriptions[i]->setText(specialFieldDescription(m_fields[i]));
-    m_ok->setText(tr("OK"));
-    m_cancel->setText(tr("Cancel"));
+QString SpecialFunctionDialog::dialogTitle() const {
+    return tr("Special function");
 }
 
 }  // namespace kerf::ui
