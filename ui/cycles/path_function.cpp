@@ -1,22 +1,13 @@
 #include "ui/cycles/path_function.h"
 
 #include <QCoreApplication>
-#include <QRegularExpression>
 
 #include "ui/cycles/cycle_block.h"
+#include "ui/cycles/word_pattern.h"
 
 namespace kerf::ui {
 
 namespace {
-
-bool matches(const QString& pattern, const QString& text) {
-    const QRegularExpression re(QLatin1Char('^') + pattern + QLatin1Char('$'),
-                                QRegularExpression::CaseInsensitiveOption);
-    return re.match(text).hasMatch();
-}
-
-const QString kNumber = QStringLiteral(R"([+-]?(\d+([.,]\d*)?|[.,]\d+))");
-const QString kReference = QStringLiteral(R"([+-]?Q[LR]?\d+)");
 
 std::optional<double> number(QString text) {
     text.replace(QLatin1Char(','), QLatin1Char('.'));
@@ -28,7 +19,7 @@ std::optional<double> number(QString text) {
 // A number with its sign ("+10"), a reference with a sign ("+Q3").
 QString signedText(const QString& text) {
     const QString upper = text.trimmed().toUpper();
-    if (matches(kReference, upper))
+    if (matchesWhole(kParameterPattern, upper))
         return upper.startsWith(QLatin1Char('-')) || upper.startsWith(QLatin1Char('+'))
                    ? upper
                    : QLatin1Char('+') + upper;
@@ -37,7 +28,7 @@ QString signedText(const QString& text) {
 
 QString plainText(const QString& text) {
     const QString upper = text.trimmed().toUpper();
-    if (matches(kReference, upper)) return upper;
+    if (matchesWhole(kParameterPattern, upper)) return upper;
     return formatNumber(number(upper).value_or(0.0), false);
 }
 
@@ -154,44 +145,47 @@ std::optional<QString> checkPathField(const PathField& field, const QString& tex
     switch (field.kind) {
         case PathFieldKind::Coordinate: {
             const QString rest = value.startsWith(QLatin1Char('I')) ? value.mid(1) : value;
-            if (matches(kNumber, rest) || matches(kReference, rest)) return std::nullopt;
+            if (matchesWhole(kNumberPattern, rest) || matchesWhole(kParameterPattern, rest))
+                return std::nullopt;
             return QCoreApplication::translate("kerf", "%1: \"%2\" is not a coordinate")
                 .arg(name, text.trimmed());
         }
         case PathFieldKind::Radius:
-            if (matches(kReference, value)) return std::nullopt;
-            if (!matches(kNumber, value) || *number(value) == 0.0)
+            if (matchesWhole(kParameterPattern, value)) return std::nullopt;
+            if (!matchesWhole(kNumberPattern, value) || *number(value) == 0.0)
                 return QCoreApplication::translate("kerf", "%1: enter a radius other than 0")
                     .arg(name);
             return std::nullopt;
         case PathFieldKind::Length:
         case PathFieldKind::Speed:
-            if (matches(kReference, value)) return std::nullopt;
-            if (!matches(kNumber, value) || *number(value) < 0.0 ||
+            if (matchesWhole(kParameterPattern, value)) return std::nullopt;
+            if (!matchesWhole(kNumberPattern, value) || *number(value) < 0.0 ||
                 (field.kind == PathFieldKind::Length && *number(value) == 0.0))
                 return QCoreApplication::translate("kerf", "%1: enter a positive number").arg(name);
             return std::nullopt;
         case PathFieldKind::Feed:
             if (value == QLatin1String("FMAX") || value == QLatin1String("FAUTO") ||
-                matches(kReference, value))
+                matchesWhole(kParameterPattern, value))
                 return std::nullopt;
-            if (!matches(kNumber, value) || *number(value) < 0.0)
+            if (!matchesWhole(kNumberPattern, value) || *number(value) < 0.0)
                 return QCoreApplication::translate("kerf", "%1: enter a feed rate, FMAX or FAUTO")
                     .arg(name);
             return std::nullopt;
         case PathFieldKind::Misc:
-            if (matches(QStringLiteral(R"(M?\d{1,3}(\s+M?\d{1,3})*)"), value)) return std::nullopt;
+            if (matchesWhole(QStringLiteral(R"(M?\d{1,3}(\s+M?\d{1,3})*)"), value))
+                return std::nullopt;
             return QCoreApplication::translate("kerf", "%1: enter M function numbers, e.g. 3 8")
                 .arg(name);
         case PathFieldKind::Tool:
-            if (matches(QStringLiteral(R"(\d{1,5}(\.\d)?)"), value) ||
-                matches(QStringLiteral(R"([A-Z_][A-Z0-9_.\-]{0,31})"), value) ||
-                matches(kReference, value))
+            if (matchesWhole(QStringLiteral(R"(\d{1,5}(\.\d)?)"), value) ||
+                matchesWhole(QStringLiteral(R"([A-Z_][A-Z0-9_.\-]{0,31})"), value) ||
+                matchesWhole(kParameterPattern, value))
                 return std::nullopt;
             return QCoreApplication::translate("kerf", "%1: enter a tool number or a name")
                 .arg(name);
         case PathFieldKind::Oversize:
-            if (matches(kNumber, value) || matches(kReference, value)) return std::nullopt;
+            if (matchesWhole(kNumberPattern, value) || matchesWhole(kParameterPattern, value))
+                return std::nullopt;
             return QCoreApplication::translate("kerf", "%1: \"%2\" is not a number")
                 .arg(name, text.trimmed());
         case PathFieldKind::Direction:

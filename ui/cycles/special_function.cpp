@@ -1,22 +1,14 @@
 #include "ui/cycles/special_function.h"
 
 #include <QCoreApplication>
-#include <QRegularExpression>
 
 #include "ui/cycles/cycle_block.h"
+#include "ui/cycles/word_pattern.h"
 
 namespace kerf::ui {
 
 namespace {
 
-bool matches(const QString& pattern, const QString& text) {
-    const QRegularExpression re(QLatin1Char('^') + pattern + QLatin1Char('$'),
-                                QRegularExpression::CaseInsensitiveOption);
-    return re.match(text).hasMatch();
-}
-
-const QString kNumber = QStringLiteral(R"([+-]?(\d+([.,]\d*)?|[.,]\d+))");
-const QString kReference = QStringLiteral(R"([+-]?Q[LR]?\d+)");
 // Letters, digits and the path characters of the NC root (TNC:\DIR\PART.H); no blank, no quote.
 const QString kProgramName = QStringLiteral(R"([A-Z0-9_.\-:\\/]{1,200})");
 
@@ -26,12 +18,13 @@ double number(QString text) {
 }
 
 bool positive(const QString& value) {
-    return matches(kReference, value) || (matches(kNumber, value) && number(value) > 0.0);
+    return matchesWhole(kParameterPattern, value) ||
+           (matchesWhole(kNumberPattern, value) && number(value) > 0.0);
 }
 
 // "+10" for a number, "+Q3" for a parameter.
 QString signedText(const QString& value) {
-    if (matches(kReference, value))
+    if (matchesWhole(kParameterPattern, value))
         return value.front() == QLatin1Char('+') || value.front() == QLatin1Char('-')
                    ? value
                    : QLatin1Char('+') + value;
@@ -39,7 +32,7 @@ QString signedText(const QString& value) {
 }
 
 QString plainText(const QString& value) {
-    return matches(kReference, value) ? value : formatNumber(number(value), false);
+    return matchesWhole(kParameterPattern, value) ? value : formatNumber(number(value), false);
 }
 
 SpecialField numberField(const char* word, const char* description, bool required = true) {
@@ -258,7 +251,7 @@ std::optional<QString> checkSpecialField(const SpecialField& field, const QStrin
     bool ok = true;
     switch (field.kind) {
         case SpecialFieldKind::Number:
-            ok = matches(kNumber, value) || matches(kReference, value);
+            ok = matchesWhole(kNumberPattern, value) || matchesWhole(kParameterPattern, value);
             break;
         case SpecialFieldKind::Choice:
             ok = field.choices.contains(value);
@@ -273,7 +266,7 @@ std::optional<QString> checkSpecialField(const SpecialField& field, const QStrin
             ok = value == QLatin1String("FMAX") || positive(value);
             break;
         case SpecialFieldKind::ProgramName:
-            ok = matches(kProgramName, value);
+            ok = matchesWhole(kProgramName, value);
             break;
     }
     if (ok) return std::nullopt;
