@@ -77,8 +77,9 @@ void MainWindow::createGraphics(QWidget* parent) {
     });
     connect(m_modes, &ModeController::modesChanged, this, [this] {
         if (!testRunOnScreen()) return;
-        // Test run shows the program beside its graphics.
-        if (m_workspace->layoutKind() == WorkspaceLayout::Program)
+        // Test run shows the program beside its graphics, also when a machine mode's positions
+        // were on the screen before (whichever handler of this signal runs first).
+        if (m_workspace->layoutKind() != WorkspaceLayout::ProgramGraphics)
             m_workspace->setLayoutKind(WorkspaceLayout::ProgramGraphics);
         if (m_testRun->state() == TestRunController::State::Empty) prepareTestRun();
     });

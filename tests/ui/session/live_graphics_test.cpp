@@ -215,5 +215,19 @@ TEST_F(LiveGraphics, TheStockIsCutAlongThePathTheMachineFollowsBetweenTwoLooks) 
     EXPECT_NEAR(live->stock()->latest()->removedVolumeMm3, expected, 0.015 * expected);
 }
 
+// The panel starts in Manual operation with the positions and the status on the screen; Test run
+// must still bring the graphics beside the program (it showed the program alone).
+TEST_F(LiveGraphics, TestRunFromAMachineModeShowsTheGraphicsBesideTheProgram) {
+    ASSERT_TRUE(window->openProgram(dir / "SLOT.H"));
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::PositionsStatus);
+    window->modes().requestProgrammingMode(task::ProgrammingMode::TestRun);
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramGraphics);
+    EXPECT_TRUE(window->graphics()->isVisible());
+    // Programming keeps the graphics the operator chose to see (docs/hmi.md).
+    window->modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramGraphics);
+}
+
 }  // namespace
 }  // namespace kerf::ui
