@@ -183,6 +183,8 @@ bool MainWindow::setLanguage(const QString& code) {
 void MainWindow::cycleLayout() {
     const int next = (static_cast<int>(m_workspace->layoutKind()) + 1) % 4;
     m_workspace->setLayoutKind(static_cast<WorkspaceLayout>(next));
+    if (m_session != nullptr && m_modes->screen() == ScreenMode::Machine)
+        m_machineModeLayouts[m_modes->machineMode()] = m_workspace->layoutKind();
 }
 
 void MainWindow::changeEvent(QEvent* event) {

@@ -4,6 +4,7 @@
 #include <QString>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -11,9 +12,11 @@
 #include "core/machine/machine_config.h"
 #include "core/task/machining_clock.h"
 #include "core/task/move_check.h"
+#include "core/task/operating_mode.h"
 #include "ui/files/new_program.h"
 #include "ui/session/machine_session.h"
 #include "ui/shell/softkey_bar.h"
+#include "ui/shell/workspace.h"
 
 class QLabel;
 
@@ -181,6 +184,9 @@ private:
     UserScreenRun* m_userScreenRun = nullptr;
     UserScreenView* m_userScreenView = nullptr;
     Page m_page = Page::Panels;
+    // The layout the operator chose with the screen-layout key in each machine mode, brought back
+    // when the mode is chosen again (as the TNC keeps one per mode).
+    std::map<task::MachineMode, WorkspaceLayout> m_machineModeLayouts;
 };
 
 }  // namespace kerf::ui

@@ -102,8 +102,12 @@ void MainWindow::connectSession() {
                 // Program run, single block stops after every block; full sequence runs through.
                 if (mode == task::MachineMode::SingleBlock) m_session->setSingleBlock(true);
                 if (mode == task::MachineMode::FullSequence) m_session->setSingleBlock(false);
-                if (shown != mode && m_workspace->layoutKind() != WorkspaceLayout::ProgramGraphics)
-                    m_workspace->setLayoutKind(machineModeLayout(mode));
+                if (shown != mode) {
+                    const auto chosen = m_machineModeLayouts.find(mode);
+                    m_workspace->setLayoutKind(chosen != m_machineModeLayouts.end()
+                                                   ? chosen->second
+                                                   : machineModeLayout(mode));
+                }
                 shown = mode;
                 refreshSoftkeys();
             });

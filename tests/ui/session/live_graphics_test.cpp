@@ -227,6 +227,25 @@ TEST_F(LiveGraphics, TestRunFromAMachineModeShowsTheGraphicsBesideTheProgram) {
     // Programming keeps the graphics the operator chose to see (docs/hmi.md).
     window->modes().requestProgrammingMode(task::ProgrammingMode::Programming);
     EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramGraphics);
+    // Back at the machine, jogging needs the positions again (the graphics stayed).
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::PositionsStatus);
+}
+
+// Each machine mode brings back the layout the operator chose in it with the layout key.
+TEST_F(LiveGraphics, EachMachineModeKeepsTheLayoutChosenInIt) {
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramStatus);
+    // Screen layout: program + status -> positions + status -> program -> program + graphics.
+    for (int press = 0; press < 3; ++press)
+        ASSERT_TRUE(window->softkeys()->pressId(QStringLiteral("layout")));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramGraphics);
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::PositionsStatus);
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramGraphics);
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::SingleBlock));
+    EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::ProgramStatus);
 }
 
 }  // namespace
