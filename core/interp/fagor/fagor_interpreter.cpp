@@ -453,6 +453,8 @@ void FagorInterpreter::finish(int mCode) {
                 m_spindle.direction = canon::SpindleDirection::Stopped;
                 emitSpindle();
             }
+            // The built-in machine's PLC switches the coolant off with the spindle (docs/fagor.md).
+            if (m_mActive[8]) emit(canon::CoolantControl{false, false});
             // The reset applies to what runs next; the stream of this run ends here.
             resetModal();
         }

@@ -251,13 +251,13 @@ bool FagorInterpreter::mFunction(int number, const MWord& word, bool& calledSubr
             m_spindle.gear = number - 40;
             emit(canon::MachineFunction{number});
             return true;
-        case 8:
+        case 8:  // coolant on (flood), as the machine's status and the drives see it
             clear({9});
-            emit(canon::MachineFunction{number});
+            emit(canon::CoolantControl{true, false});
             return true;
         case 9:
             clear({8});
-            emit(canon::MachineFunction{number});
+            emit(canon::CoolantControl{false, false});
             return true;
         default:
             emit(canon::MachineFunction{number});
