@@ -380,7 +380,16 @@ void Planner::releaseRun(bool final) {
     for (const SmoothPiece& piece : m_pieces) {
         const Move& last = m_run[piece.lastSegment - m_runFirst];
         if (!piece.fitted) {
-            pushMove(last);
+            Move line = last;
+            if (piece.startsOffVertex) {
+                // The fitted piece before ended beside the vertex (PolylineSmoother::knotAt).
+                line.geometry =
+                    makeLine(piece.lineStart, positionAt(last.geometry, last.geometry.length));
+                line.fitDeviation = distanceTo(
+                    last.geometry, {piece.lineStart[0], piece.lineStart[1], piece.lineStart[2]},
+                    0.0, last.geometry.length);
+            }
+            pushMove(line);
             continue;
         }
         // Each arc is named after the programmed moves it replaces (the last one holding its

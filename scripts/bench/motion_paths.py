@@ -196,7 +196,7 @@ def run_matrix(a, work):
                 bad = r.failures()
                 failures += bad
                 mark = "**" if r.ratio > TARGET_RATIO or bad else ""
-                cells.append("%s%.2f%s%s" % (mark, r.ratio, "!" if bad else "", mark))
+                cells.append("%s%.3f%s%s" % (mark, r.ratio, "!" if bad else "", mark))
             print("| %s, %d | %s |" % (label, dec, " | ".join(cells)))
             sys.stdout.flush()
     slow = [r for r in runs if r.ratio > TARGET_RATIO]
