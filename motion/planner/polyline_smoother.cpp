@@ -169,12 +169,13 @@ void PolylineSmoother::take(double deviation, bool final, std::vector<SmoothPiec
         SmoothPiece piece;
         piece.firstSegment = m_knot + 1;
         piece.tangentToPrevious = m_tangentKnown;
+        double allowed = deviation;
         while (true) {
             const V3 tb = tangentAt(b);
             const V3 pb = knotAt(b);
             int count = makeBiarc(vertex(m_knot).position, p0, m_knotTangent, pb, tb, piece.arcs);
-            if (count == 2) piece.deviation = deviationOf(piece.arcs, m_knot, b, deviation);
-            if (count == 2 && piece.deviation <= deviation) {
+            if (count == 2) piece.deviation = deviationOf(piece.arcs, m_knot, b, allowed);
+            if (count == 2 && piece.deviation <= allowed) {
                 piece.fitted = true;
                 piece.lastSegment = b;
                 piece.jointSegment =
@@ -183,6 +184,12 @@ void PolylineSmoother::take(double deviation, bool final, std::vector<SmoothPiec
                 m_knotPoint = pb;
                 m_tangentKnown = true;
                 break;
+            }
+            if (b == m_knot + 1 && allowed == deviation) {
+                // One segment of a tight curve (the crest of a sine as 0.5 mm lines: sagitta
+                // 0.012 mm) may take more: the filter's share is what the fit leaves.
+                allowed = deviation * kLooseFitFactor;
+                continue;
             }
             if (b == m_knot + 1) {
                 piece.fitted = false;

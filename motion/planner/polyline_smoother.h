@@ -36,6 +36,9 @@ public:
     // tangent (the chords reach 2h beyond the knot).
     static constexpr double kSpanMm = 2.0;
     static constexpr double kChordMm = 0.5;
+    // A single segment that does not fit within the allowed deviation may deviate this much
+    // more (the planner gives the servo filter what the fit leaves of the tolerance).
+    static constexpr double kLooseFitFactor = 1.3;
 
     // A new run starting at `first` (vertex 0).
     void start(const AxisVector& first);
