@@ -23,6 +23,19 @@ constexpr double kMaxSmoothSegmentMm = 1.0;
 constexpr double kMaxSmoothTurn = 10.0 * kPi / 180.0;
 // Shorter runs are not worth a fit: their corners are blended as usual.
 constexpr size_t kMinRunSegments = 4;
+// Turns up to this much per segment still continue a run when the segments are long enough for
+// the turn to be a curve of at least kMinSmoothRadiusMm (the crest of a sine as 0.5 mm lines
+// turns 11.2 deg, a radius of 2.5 mm), not a kink of short segments.
+constexpr double kMaxSmoothCurveTurn = 15.0 * kPi / 180.0;
+constexpr double kMinSmoothRadiusMm = 2.0;
+
+// Deviation a corner blend may take next to a fitted curve that deviates `fitted`: half the
+// tolerance less the fit (the servo filter keeps the other half), but at least a quarter of
+// what the fit leaves, so that a curve fitted beyond half the tolerance (a single segment,
+// PolylineSmoother::kLooseFitFactor) still blends instead of stopping.
+double blendDeviation(double tolerance, double fitted) {
+    return std::max(tolerance / 2.0 - fitted, (tolerance - fitted) / 4.0);
+}
 // Beyond this distance from the last stop no share ladder can reach (shareLadder's stages).
 constexpr double kFarFromStop = 100.0;
 // Shorter curves (the blends of a polyline's corners) keep one share: stages on them would only
@@ -360,8 +373,11 @@ bool Planner::smoothable(const Move& move) const {
 
 bool Planner::continuesRun(const Move& move) const {
     const Move& last = m_run.back();
-    return last.feed == move.feed && last.tolerance == move.tolerance &&
-           cornerAngle(last.geometry, move.geometry) <= kMaxSmoothTurn;
+    if (last.feed != move.feed || last.tolerance != move.tolerance) return false;
+    const double turn = cornerAngle(last.geometry, move.geometry);
+    const double mean = (last.geometry.length + move.geometry.length) / 2.0;
+    return turn <= kMaxSmoothTurn ||
+           (turn <= kMaxSmoothCurveTurn && mean >= turn * kMinSmoothRadiusMm);
 }
 
 void Planner::releaseRun(bool final) {
@@ -380,7 +396,16 @@ void Planner::releaseRun(bool final) {
     for (const SmoothPiece& piece : m_pieces) {
         const Move& last = m_run[piece.lastSegment - m_runFirst];
         if (!piece.fitted) {
-            pushMove(last);
+            Move line = last;
+            if (piece.startsOffVertex) {
+                // The fitted piece before ended beside the vertex (PolylineSmoother::knotAt).
+                line.geometry =
+                    makeLine(piece.lineStart, positionAt(last.geometry, last.geometry.length));
+                line.fitDeviation = distanceTo(
+                    last.geometry, {piece.lineStart[0], piece.lineStart[1], piece.lineStart[2]},
+                    0.0, last.geometry.length);
+            }
+            pushMove(line);
             continue;
         }
         // Each arc is named after the programmed moves it replaces (the last one holding its
@@ -501,7 +526,7 @@ void Planner::cornerTo(Move& move) {
     // Half the tolerance for the blend, the other half for the servo filter's contour error.
     // A fitted curve has used part of the tolerance already.
     double fitted = std::max(before.fitDeviation, move.fitDeviation);
-    double deviation = move.tolerance / 2.0 - fitted;
+    double deviation = blendDeviation(move.tolerance, fitted);
     double maxBefore = std::min(before.blendReachEnd(), before.geometry.length - before.trimStart);
     CornerBlend blend =
         blendCorner(before.geometry, move.geometry, deviation, maxBefore, move.blendReachStart());

@@ -119,6 +119,21 @@ Vec3Array PolylineSmoother::tangentAt(size_t index) const {
     return combined(2.0, u1, -1.0, u2);
 }
 
+Vec3Array PolylineSmoother::knotAt(size_t index) const {
+    const V3 p = xyz(vertex(index).position);
+    const double s = vertex(index).s;
+    const double h = std::min({kChordMm, s - m_points.front().s, m_points.back().s - s});
+    if (index == m_base || index >= segments() || h <= 0.0) return p;
+    // Each chord's direction is the tangent at its midpoint, and those are h apart: the
+    // curvature vector is (after - before) / h, the sagitta of a segment l long is kappa l^2 / 8.
+    const V3 before = unit(sub(p, pointAtLength(s - h)));
+    const V3 after = unit(sub(pointAtLength(s + h), p));
+    const double l = std::max(s - vertex(index - 1).s, vertex(index + 1).s - s);
+    const double f = l * l / 16.0 / h;
+    return {p[0] + f * (after[0] - before[0]), p[1] + f * (after[1] - before[1]),
+            p[2] + f * (after[2] - before[2])};
+}
+
 double PolylineSmoother::deviationOf(const std::array<PathGeometry, 2>& arcs, size_t a, size_t b,
                                      double allowed) const {
     auto distance = [&](const V3& p) {
@@ -150,26 +165,38 @@ void PolylineSmoother::take(double deviation, bool final, std::vector<SmoothPiec
                              : std::max(m_knot + 1, vertexBefore(sKnot + (sEnd - sKnot) / spans));
         }
         if (!m_tangentKnown) m_knotTangent = tangentAt(m_knot);
-        const V3 p0 = xyz(vertex(m_knot).position);
+        const V3 p0 = m_tangentKnown ? m_knotPoint : xyz(vertex(m_knot).position);
         SmoothPiece piece;
         piece.firstSegment = m_knot + 1;
         piece.tangentToPrevious = m_tangentKnown;
+        double allowed = deviation;
         while (true) {
             const V3 tb = tangentAt(b);
-            int count = makeBiarc(vertex(m_knot).position, p0, m_knotTangent,
-                                  xyz(vertex(b).position), tb, piece.arcs);
-            if (count == 2) piece.deviation = deviationOf(piece.arcs, m_knot, b, deviation);
-            if (count == 2 && piece.deviation <= deviation) {
+            const V3 pb = knotAt(b);
+            int count = makeBiarc(vertex(m_knot).position, p0, m_knotTangent, pb, tb, piece.arcs);
+            if (count == 2) piece.deviation = deviationOf(piece.arcs, m_knot, b, allowed);
+            if (count == 2 && piece.deviation <= allowed) {
                 piece.fitted = true;
                 piece.lastSegment = b;
                 piece.jointSegment =
                     std::clamp(vertexBefore(sKnot + piece.arcs[0].length) + 1, m_knot + 1, b);
                 m_knotTangent = tb;
+                m_knotPoint = pb;
                 m_tangentKnown = true;
                 break;
             }
+            if (b == m_knot + 1 && allowed == deviation) {
+                // One segment of a tight curve (the crest of a sine as 0.5 mm lines: sagitta
+                // 0.012 mm) may take more: the filter's share is what the fit leaves.
+                allowed = deviation * kLooseFitFactor;
+                continue;
+            }
             if (b == m_knot + 1) {
                 piece.fitted = false;
+                piece.startsOffVertex = m_tangentKnown;
+                piece.lineStart = vertex(m_knot).position;
+                for (size_t k = 0; k < 3; ++k)
+                    piece.lineStart[k] = p0[k];
                 piece.lastSegment = piece.jointSegment = b;
                 piece.tangentToPrevious = false;
                 m_tangentKnown = false;

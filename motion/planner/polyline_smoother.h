@@ -18,8 +18,11 @@
 namespace kerf::motion {
 
 struct SmoothPiece {
-    bool fitted = false;  // false: segment `lastSegment` as programmed
+    bool fitted = false;  // false: segment `lastSegment` as a line
     std::array<PathGeometry, 2> arcs{};
+    // Of a line after a fitted piece that ended off the vertex: where the line starts.
+    bool startsOffVertex = false;
+    AxisVector lineStart{};
     size_t firstSegment = 0;  // segments covered (segment k runs from vertex k - 1 to vertex k)
     size_t lastSegment = 0;
     size_t jointSegment = 0;         // segment whose span holds the joint of the two arcs
@@ -33,6 +36,9 @@ public:
     // tangent (the chords reach 2h beyond the knot).
     static constexpr double kSpanMm = 2.0;
     static constexpr double kChordMm = 0.5;
+    // A single segment that does not fit within the allowed deviation may deviate this much
+    // more (the planner gives the servo filter what the fit leaves of the tolerance).
+    static constexpr double kLooseFitFactor = 1.3;
 
     // A new run starting at `first` (vertex 0).
     void start(const AxisVector& first);
@@ -56,6 +62,11 @@ private:
     Vec3Array pointAtLength(double s) const;
     // Unit tangent of the curve at a vertex, from chords of the polyline kept around it.
     Vec3Array tangentAt(size_t index) const;
+    // Where a knot at an inner vertex goes: moved towards the curve's centre by half the sagitta
+    // of the segments there, so that the curve passes between the vertices and the segments'
+    // midpoints instead of through the vertices (a 0.5 mm polyline of R5 has a sagitta of
+    // 0.0063 mm, more than half the 0.01 mm tolerance; half of it fits).
+    Vec3Array knotAt(size_t index) const;
     // Largest distance of the vertices and segment midpoints of [a, b] from the biarc (stops
     // counting once it exceeds `allowed`).
     double deviationOf(const std::array<PathGeometry, 2>& arcs, size_t a, size_t b,
@@ -65,6 +76,7 @@ private:
     size_t m_base = 0;  // vertex number of m_points.front()
     size_t m_knot = 0;  // vertex where the next piece starts
     Vec3Array m_knotTangent{};
+    Vec3Array m_knotPoint{};      // where the next piece starts when m_tangentKnown
     bool m_tangentKnown = false;  // m_knotTangent is the end tangent of the last fitted piece
     double m_span = kSpanMm;      // longest span tried next
 };

@@ -55,6 +55,29 @@ std::vector<canon::Command> sinePolyline(double seg, int decimals, double length
     return commands;
 }
 
+// A curve of radius r1 for `length1` mm followed tangentially by one of radius r2 (same way)
+// for `length2` mm, as lines of `seg` mm of arc with vertices on the curve.
+std::vector<canon::Command> polylineOfTwoRadii(double r1, double length1, double r2, double length2,
+                                               double seg) {
+    std::vector<canon::Command> commands;
+    double x = 0.0;
+    double y = 0.0;
+    double heading = 0.0;
+    int count1 = static_cast<int>(std::lround(length1 / seg));
+    int count = count1 + static_cast<int>(std::lround(length2 / seg));
+    for (int i = 1; i <= count; ++i) {
+        double r = i <= count1 ? r1 : r2;
+        double turn = seg / r;
+        double chord = 2.0 * r * std::sin(turn / 2.0);
+        x += chord * std::cos(heading + turn / 2.0);
+        y += chord * std::sin(heading + turn / 2.0);
+        heading += turn;
+        commands.push_back(
+            command(canon::LinearMove{pose(x, y, 0.0), 6000.0}, static_cast<uint32_t>(i)));
+    }
+    return commands;
+}
+
 std::vector<PathElement> plannedElements(const std::vector<canon::Command>& commands,
                                          const Pose& start = Pose{}) {
     MachineModel model = makeMachineModel(millConfig(), {});
@@ -120,6 +143,45 @@ TEST(PolylineSmoothing, FourDecimalCircleRunsNearTheTimeOptimalBound) {
     EXPECT_LE(run.checker->maxDeviation(), kToleranceMm * 1.01);
 }
 
+TEST(PolylineSmoothing, AHalfMillimetrePolylineOfR5IsFollowedAsTheCircle) {
+    // R5 as 0.5 mm lines: each segment's sagitta is l^2 / 8R = 0.00625 mm, more than the 0.005 mm
+    // (half the tolerance) a fitted curve may deviate, so a curve through the vertices cannot
+    // follow it (it stayed lines with blended corners: 1.20x of the bound). A curve between the
+    // vertices and the segments' midpoints deviates half of it: the circle's curvature, and
+    // 100 mm from rest to rest within 1.10x of the bound along the exact circle (1.0491 s:
+    // bounds.py topp_acc(circle(5), 100, 100) = 1.0471 s, plus A / J = 2 ms).
+    const std::vector<canon::Command> commands = polylineCircle(5.0, 0.5, 4, 100.0);
+    size_t checked = 0;
+    for (const PathElement& e : plannedElements(commands)) {
+        if (e.sStart < 2.0 || e.sEnd() > 98.0) continue;
+        EXPECT_NEAR(e.geometry.curvature(), 1.0 / 5.0, 0.02 / 5.0) << "at s " << e.sStart;
+        ++checked;
+    }
+    EXPECT_GE(checked, 10u);
+    TestRun run = runCommands(millConfig(), commands, Pose{});
+    SCOPED_TRACE(run.checker->limitSummary());
+    EXPECT_FALSE(run.report.refused);
+    EXPECT_LE(run.report.feedTimeS, 1.10 * 1.0491);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+    EXPECT_LE(run.checker->maxDeviation(), kToleranceMm * 1.01);
+}
+
+TEST(PolylineSmoothing, ASineAsHalfMillimetreLinesIsFollowedAcrossItsCrests) {
+    // The sine of gen.py as 0.5 mm lines: at each crest (curvature 0.39 /mm) the vertices turn
+    // 10.3-11.2 deg, beyond the 10 deg that end a run, and one segment's sagitta is 0.012 mm:
+    // each crest was a blended corner between two runs (2.506 s, 1.88x of the bound). A turn
+    // that long segments make into a curve of R >= 2 mm continues the run, and a single segment
+    // may be fitted within 1.3 times half the tolerance (the filter keeps the rest). 100 mm of x
+    // within 1.15x of the bound along the exact sine (1.330 s: bounds.py topp_acc of
+    // sine_xz(1, 10, 100) at 100 mm/s, plus A / J = 2 ms), within the limits and the tolerance.
+    TestRun run = runCommands(millConfig(), sinePolyline(0.5, 4, 100.0), Pose{});
+    SCOPED_TRACE(run.checker->limitSummary());
+    EXPECT_FALSE(run.report.refused);
+    EXPECT_LE(run.report.feedTimeS, 1.15 * 1.330);
+    EXPECT_LE(run.checker->worstLimitRatio(), 1.01);
+    EXPECT_LE(run.checker->maxDeviation(), kToleranceMm * 1.01);
+}
+
 TEST(PolylineSmoothing, SmoothedPolylinesKeepTheLimitsAndTheTolerance) {
     struct Case {
         std::string name;
@@ -135,6 +197,12 @@ TEST(PolylineSmoothing, SmoothedPolylinesKeepTheLimitsAndTheTolerance) {
     }
     cases.push_back({"sine 0.02", sinePolyline(0.02, 4, 15.0), Pose{}});
     cases.push_back({"sine 0.2", sinePolyline(0.2, 4, 15.0), Pose{}});
+    cases.push_back({"sine 0.5", sinePolyline(0.5, 4, 15.0), Pose{}});
+    cases.push_back({"R5 0.5", polylineCircle(5.0, 0.5, 4, 15.0), Pose{}});
+    // 0.5 mm lines of R3 (sagitta 0.0104 mm) do not fit even between the vertices and the
+    // midpoints: they stay lines, the first one starting where the fitted R5 before ended,
+    // beside its vertex.
+    cases.push_back({"R5 then R3, 0.5", polylineOfTwoRadii(5.0, 10.0, 3.0, 5.0, 0.5), Pose{}});
     for (const Case& c : cases) {
         TestRun run = runCommands(millConfig(), c.commands, c.start);
         SCOPED_TRACE(c.name + ": " + run.checker->limitSummary());

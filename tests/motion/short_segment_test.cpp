@@ -1,4 +1,6 @@
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -89,8 +91,7 @@ TEST(ShortSegments, FmaxPlungeIntoAFineRasterRespectsEveryLimit) {
     }
 }
 
-TEST(ShortSegments, FeedHoldAndResumeInsideARunOfShortSegments) {
-    auto commands = polylineCircle(5.0, 0.005, 6, 20.0, 6000.0);
+void expectHoldAndResumeWithinLimits(const std::vector<canon::Command>& commands) {
     int cycles = 0;
     int holdCycle = -1;
     int resumeCycle = -1;
@@ -117,6 +118,21 @@ TEST(ShortSegments, FeedHoldAndResumeInsideARunOfShortSegments) {
     expectWithinLimits(run, 0.01);
     EXPECT_NEAR(run.report.finalPosition[0],
                 std::get<canon::LinearMove>(commands.back().body).target[Axis::X], 1e-6);
+}
+
+TEST(ShortSegments, FeedHoldAndResumeInsideARunOfShortSegments) {
+    // Hold and resume inside a run (the samples of braking, standing and starting again are
+    // checked against every limit), on fine runs and on 0.5 mm lines fitted between their
+    // vertices (PolylineSmoother::knotAt).
+    struct Case {
+        double seg;
+        int decimals;
+    };
+    for (Case c : {Case{0.005, 6}, Case{0.005, 4}, Case{0.02, 4}, Case{0.5, 4}}) {
+        SCOPED_TRACE("seg " + std::to_string(c.seg) + ", " + std::to_string(c.decimals) +
+                     " decimals");
+        expectHoldAndResumeWithinLimits(polylineCircle(5.0, c.seg, c.decimals, 20.0, 6000.0));
+    }
 }
 
 }  // namespace
