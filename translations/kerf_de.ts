@@ -769,6 +769,14 @@ Maschine: %3</translation>
         <source>mm/rev</source>
         <translation>mm/U</translation>
     </message>
+    <message>
+        <source>S %1 ft/min (actual %2 rpm)</source>
+        <translation>S %1 ft/min (Ist %2 1/min)</translation>
+    </message>
+    <message>
+        <source>S %1 m/min (actual %2 rpm)</source>
+        <translation>S %1 m/min (Ist %2 1/min)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

@@ -769,6 +769,14 @@ Máquina: %3</translation>
         <source>mm/rev</source>
         <translation>mm/rev</translation>
     </message>
+    <message>
+        <source>S %1 ft/min (actual %2 rpm)</source>
+        <translation>S %1 pies/min (real %2 rpm)</translation>
+    </message>
+    <message>
+        <source>S %1 m/min (actual %2 rpm)</source>
+        <translation>S %1 m/min (real %2 rpm)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

@@ -772,6 +772,14 @@ Maszyna: %3</translation>
         <source>mm/rev</source>
         <translation>mm/obr</translation>
     </message>
+    <message>
+        <source>S %1 ft/min (actual %2 rpm)</source>
+        <translation>S %1 ft/min (rzeczywista %2 obr/min)</translation>
+    </message>
+    <message>
+        <source>S %1 m/min (actual %2 rpm)</source>
+        <translation>S %1 m/min (rzeczywista %2 obr/min)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::ProgramPanel</name>

@@ -44,6 +44,7 @@ struct MachineStatus {
     double programmedFeedMmPerMin = 0.0;
     double actualFeedMmPerMin = 0.0;  // along the path
     double programmedSpindleRpm = 0.0;
+    double programmedSurfaceSpeedMPerMin = 0.0;  // constant surface speed (G96), 0 without
     double actualSpindleRpm = 0.0;
     double feedOverride = 1.0;  // fractions: 1 = 100 %
     double rapidOverride = 1.0;

@@ -120,8 +120,9 @@ bool RealtimeMotionPort::submit(const canon::Command& command) {
     if (const auto* update = std::get_if<canon::ToolUpdate>(&command.body))
         s.toolLength = update->geometry.lengthMm;
     if (const auto* spindle = std::get_if<canon::SpindleControl>(&command.body)) {
-        s.spindleRpm =
-            spindle->direction == canon::SpindleDirection::Stopped ? 0.0 : spindle->speedRpm;
+        const bool turning = spindle->direction != canon::SpindleDirection::Stopped;
+        s.spindleRpm = turning ? spindle->speedRpm : 0.0;
+        s.surfaceSpeed = turning ? spindle->surfaceSpeedMPerMin : 0.0;
     }
     // Commands without an effect on the display need no memory.
     if (s.target || s.tool || s.toolLength || s.spindleRpm) m_submitted.push_back(s);
@@ -151,7 +152,7 @@ void RealtimeMotionPort::handle(const MotionEvent& event) {
         case MotionEventKind::Aborted:
             m_submitted.clear();
             m_replan = true;
-            m_programmedRpm = 0.0;  // the abort stopped the spindle
+            stopProgrammedSpindle();  // the abort stopped the spindle
             break;
         case MotionEventKind::Fault:
             m_fault = "drive fault " + std::to_string(static_cast<long>(event.value)) +
@@ -171,10 +172,18 @@ void RealtimeMotionPort::handle(const MotionEvent& event) {
     }
 }
 
+void RealtimeMotionPort::stopProgrammedSpindle() {
+    m_programmedRpm = 0.0;
+    m_programmedSurfaceSpeed = 0.0;
+}
+
 void RealtimeMotionPort::retire(const Submitted& done) {
     if (done.tool) m_tool = *done.tool;
     if (done.toolLength) m_toolLength = *done.toolLength;
-    if (done.spindleRpm) m_programmedRpm = *done.spindleRpm;
+    if (done.spindleRpm) {
+        m_programmedRpm = *done.spindleRpm;
+        m_programmedSurfaceSpeed = done.surfaceSpeed;
+    }
     m_executing = done;
 }
 
@@ -278,13 +287,13 @@ void RealtimeMotionPort::quickStop() {
     // Without a program the stop turns the spindle off at once (no Aborted event follows).
     const MotionMode mode = m_machine->status().mode;
     if (mode == MotionMode::Idle || mode == MotionMode::Jog || mode == MotionMode::Homing)
-        m_programmedRpm = 0.0;
+        stopProgrammedSpindle();
 }
 
 void RealtimeMotionPort::emergencyStop() {
     m_machine->command({OperatorCommandKind::EmergencyStop});
     m_replan = true;
-    m_programmedRpm = 0.0;
+    stopProgrammedSpindle();
     m_fault = "emergency stop";
 }
 
@@ -292,7 +301,7 @@ bool RealtimeMotionPort::setEmergencyStopButton(bool pressed) {
     if (!m_machine->setEmergencyStopButton(pressed)) return false;
     if (pressed) {
         m_replan = true;
-        m_programmedRpm = 0.0;
+        stopProgrammedSpindle();
         m_fault = "emergency stop button pressed";
     }
     return true;
@@ -390,6 +399,7 @@ task::MachineStatus RealtimeMotionPort::status() const {
     s.spindleOverride = now.spindleOverride;
     s.actualSpindleRpm = now.spindleRpm;
     s.programmedSpindleRpm = m_programmedRpm;
+    s.programmedSurfaceSpeedMPerMin = m_programmedSurfaceSpeed;
     s.coolant = now.coolant != 0;
     s.actualFeedMmPerMin = std::fabs(now.pathVelocity) * 60.0;
     const bool moving = s.state == task::MachineState::Running ||

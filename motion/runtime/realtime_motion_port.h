@@ -61,6 +61,7 @@ private:
         std::optional<int> tool;
         std::optional<double> toolLength;
         std::optional<double> spindleRpm;
+        double surfaceSpeed = 0.0;  // m/min under constant surface speed (G96), else 0
     };
 
     int jointOf(Axis axis) const;
@@ -68,6 +69,7 @@ private:
     bool programInterrupted() const;  // held or stopped, or jogged away from there
     void handle(const MotionEvent& event);
     void prepareForCommands();
+    void stopProgrammedSpindle();
     void retire(const Submitted& done);
     void followExecution(const MotionStatus& now);
 
@@ -84,6 +86,7 @@ private:
     int m_tool = 0;
     double m_toolLength = 0.0;
     double m_programmedRpm = 0.0;
+    double m_programmedSurfaceSpeed = 0.0;  // m/min, 0: constant speed
     // The feed mode and spindle speed as submitted (ahead of execution), for the feed shown.
     bool m_feedPerRevolution = false;
     double m_submittedRpm = 0.0;

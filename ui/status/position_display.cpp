@@ -211,6 +211,10 @@ QString PositionDisplay::coolantText() const {
     return m_coolant->text();
 }
 
+QString PositionDisplay::spindleText() const {
+    return m_spindle->text();
+}
+
 void PositionDisplay::refresh() {
     const bool inch = m_settings.inch;
     const std::array<double, kAxisCount> values =
@@ -268,9 +272,19 @@ void PositionDisplay::refresh() {
                             .arg(m_status.actualFeedMmPerMin * feedScale, 0, 'f', decimals)
                             .arg(inch ? tr("inch/min") : tr("mm/min")));
     }
-    m_spindle->setText(tr("S %1 (actual %2) rpm")
-                           .arg(m_status.programmedSpindleRpm, 0, 'f', 0)
-                           .arg(m_status.actualSpindleRpm, 0, 'f', 0));
+    if (m_status.programmedSurfaceSpeedMPerMin > 0.0) {
+        // Constant surface speed (G96): S as programmed, the speed it gives now in rpm.
+        constexpr double kFeetPerMetre = 1000.0 / (kMmPerInch * 12.0);
+        m_spindle->setText(
+            (inch ? tr("S %1 ft/min (actual %2 rpm)") : tr("S %1 m/min (actual %2 rpm)"))
+                .arg(m_status.programmedSurfaceSpeedMPerMin * (inch ? kFeetPerMetre : 1.0), 0, 'f',
+                     0)
+                .arg(m_status.actualSpindleRpm, 0, 'f', 0));
+    } else {
+        m_spindle->setText(tr("S %1 (actual %2) rpm")
+                               .arg(m_status.programmedSpindleRpm, 0, 'f', 0)
+                               .arg(m_status.actualSpindleRpm, 0, 'f', 0));
+    }
     m_coolant->setText(m_status.coolant ? tr("Coolant on") : tr("Coolant off"));
 }
 

@@ -61,6 +61,7 @@ public:
     // The kind shown above the axes ("NOML.  mm  3D ROT").
     QString kindLabel() const;
     QString coolantText() const;
+    QString spindleText() const;
 
     // The value of one axis as the settings show it: the kind of position, lathe diameter, unit.
     static double shownValue(const task::AxisStatus& axis, PositionKind kind, bool diameter,

@@ -75,5 +75,35 @@ TEST(SessionStatus, CoolantShowsWhatTheMachineExecutes) {
     EXPECT_EQ(display.coolantText(), QStringLiteral("Coolant off"));
 }
 
+TEST(SessionStatus, LatheShowsCoolantAndTheConstantSurfaceSpeed) {
+    // FAGOR: M8 is the coolant, G96 S200 a cutting speed of 200 m/min. At the M0 stop the tool
+    // stands at X40 (diameter): the spindle turns 200000 / (pi 40) = 1592 rpm, shown as actual;
+    // the programmed S is the cutting speed, not an rpm computed at the block's start.
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    PositionDisplay display(*lathe);
+    QObject::connect(&session, &MachineSession::statusChanged, &display,
+                     &PositionDisplay::setStatus);
+    ASSERT_TRUE(
+        session.startProgram("G90 G95 G71\nG92 S3000\nM41\nG00 X40 Z5\n"
+                             "G96 S200 M3 M8\nG01 Z0 F0.2\nM0\nG01 Z-1\nM30\n",
+                             "CSS.PIM"));
+    auto stateIs = [&session](task::RunState wanted) {
+        return [&session, wanted] { return session.runState() == wanted; };
+    };
+    ASSERT_TRUE(test::serviceUntil(session, stateIs(task::RunState::Stopped), 10s));
+    test::serviceUntil(
+        session, [] { return false; }, 50ms);
+    EXPECT_EQ(display.coolantText(), QStringLiteral("Coolant on"));
+    EXPECT_EQ(display.spindleText(), QStringLiteral("S 200 m/min (actual 1592 rpm)"));
+    session.cycleStart();
+    ASSERT_TRUE(test::serviceUntil(session, stateIs(task::RunState::Finished), 10s));
+    test::serviceUntil(
+        session, [] { return false; }, 50ms);
+    EXPECT_EQ(display.coolantText(), QStringLiteral("Coolant off"));
+}
+
 }  // namespace
 }  // namespace kerf::ui
