@@ -8510,6 +8510,54 @@ wählen</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>der Bogenradius {1} ist kleiner als der Schneidenradius {2} des Werkzeugs: die Schneide kann ihm nicht folgen</translation>
     </message>
+    <message>
+        <source>Pattern repeat cycle</source>
+        <translation>Zyklus Konturfolge</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along X</source>
+        <translation>Schruppzyklus entlang X</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along Z</source>
+        <translation>Schruppzyklus entlang Z</translation>
+    </message>
+    <message>
+        <source>Turning cycle, straight sections</source>
+        <translation>Längsdrehzyklus, gerade Abschnitte</translation>
+    </message>
+    <message>
+        <source>Facing cycle, straight sections</source>
+        <translation>Plandrehzyklus, gerade Abschnitte</translation>
+    </message>
+    <message>
+        <source>Axial drilling / tapping cycle</source>
+        <translation>Zyklus axiales Bohren / Gewindebohren</translation>
+    </message>
+    <message>
+        <source>Turning cycle, curved sections</source>
+        <translation>Längsdrehzyklus, Bogenabschnitte</translation>
+    </message>
+    <message>
+        <source>Facing cycle, curved sections</source>
+        <translation>Plandrehzyklus, Bogenabschnitte</translation>
+    </message>
+    <message>
+        <source>Longitudinal threading cycle</source>
+        <translation>Zyklus Längsgewinde</translation>
+    </message>
+    <message>
+        <source>Face threading cycle</source>
+        <translation>Zyklus Plangewinde</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along X</source>
+        <translation>Einstechzyklus entlang X</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along Z</source>
+        <translation>Einstechzyklus entlang Z</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

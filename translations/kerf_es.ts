@@ -8510,6 +8510,54 @@ solución</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>el radio del arco {1} es menor que el radio de punta {2} de la herramienta: la punta no puede seguirlo</translation>
     </message>
+    <message>
+        <source>Pattern repeat cycle</source>
+        <translation>Ciclo fijo de seguimiento de perfil</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along X</source>
+        <translation>Ciclo fijo de desbastado en el eje X</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along Z</source>
+        <translation>Ciclo fijo de desbastado en el eje Z</translation>
+    </message>
+    <message>
+        <source>Turning cycle, straight sections</source>
+        <translation>Ciclo fijo de torneado de tramos rectos</translation>
+    </message>
+    <message>
+        <source>Facing cycle, straight sections</source>
+        <translation>Ciclo fijo de refrentado de tramos rectos</translation>
+    </message>
+    <message>
+        <source>Axial drilling / tapping cycle</source>
+        <translation>Ciclo fijo de taladrado axial / roscado con macho</translation>
+    </message>
+    <message>
+        <source>Turning cycle, curved sections</source>
+        <translation>Ciclo fijo de torneado de tramos curvos</translation>
+    </message>
+    <message>
+        <source>Facing cycle, curved sections</source>
+        <translation>Ciclo fijo de refrentado de tramos curvos</translation>
+    </message>
+    <message>
+        <source>Longitudinal threading cycle</source>
+        <translation>Ciclo fijo de roscado longitudinal</translation>
+    </message>
+    <message>
+        <source>Face threading cycle</source>
+        <translation>Ciclo fijo de roscado frontal</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along X</source>
+        <translation>Ciclo fijo de ranurado en el eje X</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along Z</source>
+        <translation>Ciclo fijo de ranurado en el eje Z</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

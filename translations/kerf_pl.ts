@@ -8513,6 +8513,54 @@ rozwiązanie</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>promień łuku {1} jest mniejszy niż promień naroża narzędzia {2}: naroże nie może za nim podążać</translation>
     </message>
+    <message>
+        <source>Pattern repeat cycle</source>
+        <translation>Cykl powtarzania profilu</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along X</source>
+        <translation>Cykl zgrubny wzdłuż osi X</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along Z</source>
+        <translation>Cykl zgrubny wzdłuż osi Z</translation>
+    </message>
+    <message>
+        <source>Turning cycle, straight sections</source>
+        <translation>Cykl toczenia odcinków prostych</translation>
+    </message>
+    <message>
+        <source>Facing cycle, straight sections</source>
+        <translation>Cykl planowania odcinków prostych</translation>
+    </message>
+    <message>
+        <source>Axial drilling / tapping cycle</source>
+        <translation>Cykl wiercenia osiowego / gwintowania gwintownikiem</translation>
+    </message>
+    <message>
+        <source>Turning cycle, curved sections</source>
+        <translation>Cykl toczenia odcinków łukowych</translation>
+    </message>
+    <message>
+        <source>Facing cycle, curved sections</source>
+        <translation>Cykl planowania odcinków łukowych</translation>
+    </message>
+    <message>
+        <source>Longitudinal threading cycle</source>
+        <translation>Cykl gwintowania wzdłużnego</translation>
+    </message>
+    <message>
+        <source>Face threading cycle</source>
+        <translation>Cykl gwintowania czołowego</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along X</source>
+        <translation>Cykl rowkowania wzdłuż osi X</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along Z</source>
+        <translation>Cykl rowkowania wzdłuż osi Z</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

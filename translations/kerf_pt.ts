@@ -8510,6 +8510,54 @@ solução</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>o raio do arco {1} é menor que o raio da ponta {2} da ferramenta: a ponta não o pode seguir</translation>
     </message>
+    <message>
+        <source>Pattern repeat cycle</source>
+        <translation>Ciclo fixo de seguimento de perfil</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along X</source>
+        <translation>Ciclo fixo de desbaste no eixo X</translation>
+    </message>
+    <message>
+        <source>Stock removal cycle along Z</source>
+        <translation>Ciclo fixo de desbaste no eixo Z</translation>
+    </message>
+    <message>
+        <source>Turning cycle, straight sections</source>
+        <translation>Ciclo fixo de torneamento de trechos retos</translation>
+    </message>
+    <message>
+        <source>Facing cycle, straight sections</source>
+        <translation>Ciclo fixo de faceamento de trechos retos</translation>
+    </message>
+    <message>
+        <source>Axial drilling / tapping cycle</source>
+        <translation>Ciclo fixo de perfuração axial / rosqueamento com macho</translation>
+    </message>
+    <message>
+        <source>Turning cycle, curved sections</source>
+        <translation>Ciclo fixo de torneamento de trechos curvos</translation>
+    </message>
+    <message>
+        <source>Facing cycle, curved sections</source>
+        <translation>Ciclo fixo de faceamento de trechos curvos</translation>
+    </message>
+    <message>
+        <source>Longitudinal threading cycle</source>
+        <translation>Ciclo fixo de rosqueamento longitudinal</translation>
+    </message>
+    <message>
+        <source>Face threading cycle</source>
+        <translation>Ciclo fixo de rosqueamento frontal</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along X</source>
+        <translation>Ciclo fixo de ranhura no eixo X</translation>
+    </message>
+    <message>
+        <source>Grooving cycle along Z</source>
+        <translation>Ciclo fixo de ranhura no eixo Z</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

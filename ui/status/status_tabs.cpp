@@ -167,7 +167,9 @@ void StatusTabs::fillProgram() {
     const QString none = tr("none");
     QString cycle = none;
     if (s.cycle) {
-        cycle = QString::number(s.cycle->number);
+        // FAGOR's cycles are G functions (G68), the TNC's numbers (CYCL DEF 200).
+        cycle = (s.parameterLetter == 'P' ? QStringLiteral("G") : QString()) +
+                QString::number(s.cycle->number);
         if (!s.cycle->name.empty()) {
             cycle += ' ' + QCoreApplication::translate("kerf", s.cycle->name.c_str());
         }

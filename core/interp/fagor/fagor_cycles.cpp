@@ -21,6 +21,7 @@ using cycles::lathe::LatheStep;
 bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
     const CycleWords& w = iso.cycle;
     const int g = w.g;
+    m_lastCycle = g;
     const PlaneFrame& plane = m_modal.plane;
     m_at.column = program::columnOf(m_line.text, w.offset);
     // X-type values follow the diameter mode, Z-type values and radius values are lengths.

@@ -361,6 +361,7 @@ private:
     };
     std::optional<PendingProbe> m_pendingProbe;
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // for the status display
+    int m_lastCycle = -1;  // the canned cycle executed last (G66-G89), for the status display
     int m_pendingInterrupt = 0;
 
     // Modal and machine state.

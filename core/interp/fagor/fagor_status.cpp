@@ -1,4 +1,5 @@
 // The state the HMI status tabs show, copied out of the FAGOR interpreter.
+#include "core/base/translate.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
 namespace kerf::fagor {
@@ -25,6 +26,38 @@ bool isOneShot(int m) {
     return m == 0 || m == 1 || m == 2 || m == 6 || m == 30;
 }
 
+// The canned cycles' names as the manual's headings give them (spec part 2 §2).
+const char* cycleName(int g) {
+    switch (g) {
+        case 66:
+            return KERF_TR_NOOP("Pattern repeat cycle");
+        case 68:
+            return KERF_TR_NOOP("Stock removal cycle along X");
+        case 69:
+            return KERF_TR_NOOP("Stock removal cycle along Z");
+        case 81:
+            return KERF_TR_NOOP("Turning cycle, straight sections");
+        case 82:
+            return KERF_TR_NOOP("Facing cycle, straight sections");
+        case 83:
+            return KERF_TR_NOOP("Axial drilling / tapping cycle");
+        case 84:
+            return KERF_TR_NOOP("Turning cycle, curved sections");
+        case 85:
+            return KERF_TR_NOOP("Facing cycle, curved sections");
+        case 86:
+            return KERF_TR_NOOP("Longitudinal threading cycle");
+        case 87:
+            return KERF_TR_NOOP("Face threading cycle");
+        case 88:
+            return KERF_TR_NOOP("Grooving cycle along X");
+        case 89:
+            return KERF_TR_NOOP("Grooving cycle along Z");
+        default:
+            return "";
+    }
+}
+
 }  // namespace
 
 interp::ProgramStatus FagorInterpreter::programStatus() const {
@@ -42,6 +75,8 @@ interp::ProgramStatus FagorInterpreter::programStatus() const {
             status.activeM.push_back(static_cast<int>(m));
         }
     }
+    if (m_lastCycle >= 0)
+        status.cycle = interp::ProgramStatus::Cycle{m_lastCycle, cycleName(m_lastCycle)};
     status.line = m_at.line;
     status.blockNumber = m_at.blockNumber;
     status.inch = m_modal.inch;

@@ -208,5 +208,19 @@ TEST_F(FagorStatus, InchProgramSaysInch) {
     EXPECT_EQ(s.tool.number, -1);  // no T yet
 }
 
+TEST_F(FagorStatus, TheCannedCycleExecutedLastIsShown) {
+    // G81 turns a cylinder of diameter 40 from Z0 to Z-30 out of the D70 bar in passes of C3;
+    // the block after it still shows the cycle, as the TNC's PGM tab shows the last one defined.
+    const char* program =
+        "G90 G95 F0.3 S1000 M3\nG00 X70 Z2\n"
+        "G81 X40 Z0 Q40 R-30 C3 D1\n"
+        "G00 X80\nM30\n";
+    EXPECT_FALSE(runThroughLine(program, 2).cycle.has_value());
+    const Status s = runThroughLine(program, 4);
+    ASSERT_TRUE(s.cycle.has_value());
+    EXPECT_EQ(s.cycle->number, 81);
+    EXPECT_EQ(s.cycle->name, "Turning cycle, straight sections");
+}
+
 }  // namespace
 }  // namespace kerf::fagor
