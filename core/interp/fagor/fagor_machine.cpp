@@ -84,8 +84,22 @@ bool FagorInterpreter::setSpindleSpeed(const IsoBlock& iso) {
         }
         m_modal.constantSurfaceSpeed = false;
     }
-    if (m_spindle.direction != canon::SpindleDirection::Stopped) emitSpindle();
+    // A new speed reaches a turning spindle now, unless the block's M3, M4, M5 or M19 acts
+    // before its motion and sends the spindle's state itself (two SPINDLE lines otherwise).
+    if (m_spindle.direction != canon::SpindleDirection::Stopped && !spindleMBeforeMotion(iso)) {
+        emitSpindle();
+    }
     return true;
+}
+
+bool FagorInterpreter::spindleMBeforeMotion(const IsoBlock& iso) const {
+    for (uint8_t i = 0; i < iso.mCount; ++i) {
+        const int number = static_cast<int>(iso.m[i].number.value);
+        if (number != 3 && number != 4 && number != 5 && number != 19) continue;
+        const MFunctionEntry* entry = findMFunction(m_settings.mFunctions, number);
+        if (entry == nullptr || entry->beforeMotion) return true;
+    }
+    return false;
 }
 
 void FagorInterpreter::emitToolData(bool change) {
