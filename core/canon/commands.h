@@ -79,6 +79,9 @@ struct ToolGeometry {
     double tipZMm = 0.0;
     int offsetNumber = 0;
     int locationCode = -1;
+    // The cutting edge's width of a grooving or parting tool, or a drill's diameter (Fagor NOSEW
+    // of the tool table); 0: none given.
+    double cuttingWidthMm = 0.0;
     friend bool operator==(const ToolGeometry&, const ToolGeometry&) = default;
 };
 

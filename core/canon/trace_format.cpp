@@ -1,9 +1,9 @@
 #include "core/canon/trace_format.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <string_view>
-#include <cmath>
 
 #include "core/base/fixed_format.h"
 #include "core/geometry/arc_math.h"
@@ -148,6 +148,7 @@ void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
         appendWord(out, "TIPZ=", g.tipZMm, kLengthDecimals);
         out += " LOC ";
         out.integer(g.locationCode);
+        if (g.cuttingWidthMm > 0.0) appendWord(out, "W=", g.cuttingWidthMm, kLengthDecimals);
     }
 }
 

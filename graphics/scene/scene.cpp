@@ -359,14 +359,14 @@ void Scene::setToolpath(std::shared_ptr<const ToolpathData> data,
             ToolGlyph glyph;
             glyph.axis = last.toolAxis;
             if (d.options.lathe) {
-                LatheInsert insert;
-                // The tool table gives the nose and the tip code; drawn as the common 80 degree
-                // rhombic insert so that it shows which way it cuts.
-                insert.noseRadiusMm = std::max(0.4, last.geometry.radiusMm);
-                insert.includedAngleDeg = 80.0;
-                insert.edgeLengthMm = 8.0;
-                if (last.geometry.locationCode >= 0)
-                    insert.locationCode = last.geometry.locationCode;
+                LatheInsert insert = LatheInsert::fromGeometry(last.geometry);
+                if (insert.kind == LatheToolKind::Turning) {
+                    // The tool table gives the nose and the tip code; drawn as the common 80
+                    // degree rhombic insert so that it shows which way it cuts.
+                    insert.noseRadiusMm = std::max(0.4, last.geometry.radiusMm);
+                    insert.includedAngleDeg = 80.0;
+                    insert.edgeLengthMm = 8.0;
+                }
                 glyph.shape = insert;
             } else {
                 glyph.shape =

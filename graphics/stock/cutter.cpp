@@ -128,7 +128,51 @@ std::pair<double, double> LatheInsert::noseCentreOffset() const {
     return {-r * ux, -r * uz};
 }
 
-std::vector<std::pair<double, double>> LatheInsert::outline(int arcPoints) const {
+LatheInsert LatheInsert::fromGeometry(const canon::ToolGeometry& geometry) {
+    LatheInsert insert;
+    insert.noseRadiusMm = std::max(0.0, geometry.radiusMm);
+    if (geometry.locationCode >= 0) insert.locationCode = geometry.locationCode;
+    if (geometry.locationCode >= 0 && geometry.cuttingWidthMm > 0.0 &&
+        std::isfinite(geometry.cuttingWidthMm)) {
+        const bool centre = geometry.locationCode == 0 || geometry.locationCode == 9;
+        insert.kind = centre ? LatheToolKind::Drill : LatheToolKind::Grooving;
+        insert.widthMm = geometry.cuttingWidthMm;
+    }
+    return insert;
+}
+
+bool LatheInsert::groovesAlongZ() const {
+    return kind == LatheToolKind::Grooving && tipDirection(locationCode).first == 0.0;
+}
+
+std::vector<std::pair<double, double>> LatheInsert::outline(int arcPoints, double bodyMm) const {
+    if (kind != LatheToolKind::Turning) {
+        // Rectangles, counter-clockwise in (X, Z): a drill on its axis, its body along +Z (it
+        // enters the part's face from the turret side); a blade across its width, its body
+        // behind the edge, the programmed point at the corner or middle the code names.
+        const double w = std::isfinite(widthMm) ? std::max(0.0, widthMm) : 0.0;
+        const double body = bodyMm > 0.0 ? bodyMm : 4.0 * w;
+        const auto [ux, uz] = tipDirection(locationCode);
+        double x0 = -0.5 * w;
+        double x1 = 0.5 * w;
+        double z0 = 0.0;
+        double z1 = body;
+        if (kind == LatheToolKind::Grooving && ux != 0.0) {
+            // Plunges along X: the edge faces u_X, the width runs away from the tip's Z side.
+            x0 = ux < 0.0 ? 0.0 : -body;
+            x1 = ux < 0.0 ? body : 0.0;
+            z0 = uz < 0.0 ? 0.0 : (uz > 0.0 ? -w : -0.5 * w);
+            z1 = z0 + w;
+        } else if (kind == LatheToolKind::Grooving) {
+            // Plunges along Z (face grooving): the width runs outwards from the programmed point,
+            // as G89 places the tool against the groove's inner wall.
+            x0 = 0.0;
+            x1 = w;
+            z0 = uz < 0.0 ? 0.0 : -body;
+            z1 = uz < 0.0 ? body : 0.0;
+        }
+        return {{x0, z0}, {x1, z0}, {x1, z1}, {x0, z1}};
+    }
     const double r = std::isfinite(noseRadiusMm) ? std::max(0.0, noseRadiusMm) : 0.0;
     const auto [cx, cz] = noseCentreOffset();
     std::vector<std::pair<double, double>> points;

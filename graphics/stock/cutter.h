@@ -33,25 +33,39 @@ struct MillCutter {
     bool cuts() const { return radiusMm > 0.0; }
 };
 
+// What a lathe tool is, for the material it removes (docs/graphics.md, "Lathe tools").
+enum class LatheToolKind : uint8_t { Turning, Grooving, Drill };
+
 // A lathe insert in the XZ plane (X a radius): a nose circle and, optionally, the two cutting
 // edges of a rhombic body behind it. The programmed point is the theoretical tip P, which the
 // location code places relative to the nose centre C (codes 1-8 around the nose, 0 and 9 the
 // centre itself). The code table is the provisional variant "A" of shared/spec/fagor-8035t-part1.md
 // §11.3 (X up, Z right, F3 the standard external turning tool), kept here until the Fagor tool
 // offsets are wired in.
+// A grooving tool is a blade of the cutting width and a drill a cylinder of that diameter.
 struct LatheInsert {
+    LatheToolKind kind = LatheToolKind::Turning;
     double noseRadiusMm = 0.4;
     int locationCode = 3;
     double includedAngleDeg = 0.0;  // rhombic body angle; 0: the nose circle alone
     double edgeLengthMm = 0.0;      // body edge length; 0: the nose circle alone
+    double widthMm = 0.0;           // grooving: the cutting edge's width; drill: the diameter
+
+    // The tool of a canonical lathe offset: a cutting width (NOSEW) makes a centre code (F0, F9:
+    // the programmed point on the tool's axis) a drill of that diameter and a corner or face
+    // code a grooving tool of that width; anything else is a turning insert of nose R.
+    static LatheInsert fromGeometry(const canon::ToolGeometry& geometry);
 
     // Unit tip-offset vector u = (uX, uZ) of a code: P = C + R * u.
     static std::pair<double, double> tipDirection(int locationCode);
     // Nose centre relative to the programmed point, (dX, dZ).
     std::pair<double, double> noseCentreOffset() const;
-    // Outline of the insert relative to the programmed point as (X, Z) pairs, counter-clockwise,
-    // the nose arc with `arcPoints` points.
-    std::vector<std::pair<double, double>> outline(int arcPoints = 16) const;
+    // A grooving tool that plunges along Z (face codes 2 and 6) rather than along X.
+    bool groovesAlongZ() const;
+    // Outline of the tool relative to the programmed point as (X, Z) pairs, the nose arc with
+    // `arcPoints` points. A drill's or grooving blade's body reaches `bodyMm` back from its
+    // cutting edge (0: four times its width).
+    std::vector<std::pair<double, double>> outline(int arcPoints = 16, double bodyMm = 0.0) const;
 };
 
 }  // namespace kerf::graphics

@@ -158,15 +158,26 @@ bool LatheStock::cut(double ax, double az, double bx, double bz, const LatheInse
     }
     // A sharp insert (R 0) gets a nose of just over half a cell: its degenerate outline would miss
     // every cell centre when the path runs along cell borders. The cut may then reach one cell
-    // (the resolution) beyond the path.
+    // (the resolution) beyond the path. A blade or drill narrower than a cell gets a cell's width
+    // for the same reason.
     LatheInsert shape = insert;
+    const bool turning = insert.kind == LatheToolKind::Turning;
     const double given =
         std::isfinite(insert.noseRadiusMm) ? std::max(0.0, insert.noseRadiusMm) : 0.0;
-    shape.noseRadiusMm = std::max(given, 0.5 * m_cell * 1.0001);
+    shape.noseRadiusMm = turning ? std::max(given, 0.5 * m_cell * 1.0001) : 0.0;
+    const double width = std::isfinite(insert.widthMm) ? std::max(0.0, insert.widthMm) : 0.0;
+    shape.widthMm = std::max(width, m_cell * 1.0001);
     const double nose = shape.noseRadiusMm;
     const auto [ox, oz] = shape.noseCentreOffset();
-    const auto outline = shape.outline(24);
-    const bool body = shape.includedAngleDeg > 0.0 && shape.edgeLengthMm > 0.0;
+    // The body of a drill or face-grooving blade runs past the bar's far end: its sides are what
+    // cut. A blade plunging along X needs no body: the holder rule below clears behind it.
+    const bool radialBlade =
+        !turning && !shape.groovesAlongZ() && insert.kind == LatheToolKind::Grooving;
+    const double gridLength = (m_nz + m_nr) * m_cell;
+    const double bodyMm =
+        radialBlade ? m_cell : gridLength + std::max(std::fabs(az - m_z0), std::fabs(bz - m_z0));
+    const auto outline = shape.outline(24, bodyMm);
+    const bool body = !turning || (shape.includedAngleDeg > 0.0 && shape.edgeLengthMm > 0.0);
     // Reach of the shape around the programmed point.
     double reach = nose + std::hypot(ox, oz);
     double orientation = 1.0;
@@ -205,6 +216,8 @@ bool LatheStock::cut(double ax, double az, double bx, double bz, const LatheInse
     // clears everything radially outside the swept insert, a boring tool (tip away from the
     // axis) everything inside it. Each ring of cells is cleared from the first one the insert
     // sweeps, outwards or inwards.
+    // A drill and a face-grooving blade carry their body in their outline: no holder rule.
+    const bool holder = turning || radialBlade;
     const bool boring = LatheInsert::tipDirection(insert.locationCode).first > 0.0;
     auto sweeps = [&](int ir, double z) {
         const double r = (ir + 0.5) * m_cell;
@@ -223,6 +236,15 @@ bool LatheStock::cut(double ax, double az, double bx, double bz, const LatheInse
             }
         }
         if (first < 0) continue;
+        if (!holder) {
+            for (int ir = first; ir <= ir1; ++ir) {
+                if (!sweeps(ir, z)) continue;
+                uint8_t& cell = m_cells[index(ir, iz)];
+                removed = removed || cell != 0;
+                cell = 0;
+            }
+            continue;
+        }
         const int from = boring ? 0 : first;
         const int to = boring ? first : m_nr - 1;
         for (int ir = from; ir <= to; ++ir) {

@@ -21,10 +21,7 @@ StockSimulation::StockSimulation(StockOptions options) : m_options(std::move(opt
     }
     if (!m_options.latheInsert) {
         m_options.latheInsert = [](const canon::ToolChange& tool) {
-            LatheInsert insert;
-            insert.noseRadiusMm = std::max(0.0, tool.geometry.radiusMm);
-            if (tool.geometry.locationCode >= 0) insert.locationCode = tool.geometry.locationCode;
-            return insert;
+            return LatheInsert::fromGeometry(tool.geometry);
         };
     }
     if (!(m_options.resolutionMm > 0.0) || !std::isfinite(m_options.resolutionMm)) {

@@ -208,9 +208,7 @@ void GraphicsPanel::onProgress() {
         graphics::ToolGlyph glyph;
         glyph.axis = tool->toolAxis;
         if (m_lathe) {
-            graphics::LatheInsert insert;  // tip location code 3: external turning
-            insert.noseRadiusMm = tool->geometry.radiusMm;
-            glyph.shape = insert;
+            glyph.shape = graphics::LatheInsert::fromGeometry(tool->geometry);
         } else if (program->stockOptions.millCutter) {
             glyph.shape = program->stockOptions.millCutter(*tool);
         }

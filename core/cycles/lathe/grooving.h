@@ -13,6 +13,9 @@ struct Groove {
     double safety = 0.0;   // D, radius
     double dwellSeconds = 0.0;
     double toolWidth = 0.0;  // NOSEW
+    // Location code F of the active offset: which edge of the blade the programmed point is
+    // (docs/fagor.md, G88/G89); -1, 0 and 9 say nothing: the width runs from it towards the end.
+    int locationCode = -1;
 };
 
 bool expandGroove(const Groove& groove, const Vec2& call, LathePath& path, LatheError& error);

@@ -182,6 +182,7 @@ bool FagorInterpreter::executeCycle(const IsoBlock& iso) {
             groove.dwellSeconds = w.value('K', 0.0) / 100.0;
             groove.toolWidth =
                 m_toolTable && m_tool.tool > 0 ? m_toolTable->get(m_tool.tool).noseWidth : 0.0;
+            groove.locationCode = m_tool.data.location;
             ok = cycles::lathe::expandGroove(groove, call, path, error);
             break;
         }

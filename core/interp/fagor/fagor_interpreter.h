@@ -267,6 +267,8 @@ private:
     // F, S, T, D, M (fagor_machine.cpp).
     bool setFeed(const IsoBlock& iso);
     bool setSpindleSpeed(const IsoBlock& iso);
+    // The block has a spindle M function (M3, M4, M5, M19) that acts before its motion.
+    bool spindleMBeforeMotion(const IsoBlock& iso) const;
     bool selectTool(const IsoBlock& iso);
     bool mFunctions(const IsoBlock& iso, bool beforeMotion, bool& calledSubroutine);
     bool mFunction(int number, const MWord& word, bool& calledSubroutine);

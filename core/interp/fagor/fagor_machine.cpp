@@ -84,8 +84,22 @@ bool FagorInterpreter::setSpindleSpeed(const IsoBlock& iso) {
         }
         m_modal.constantSurfaceSpeed = false;
     }
-    if (m_spindle.direction != canon::SpindleDirection::Stopped) emitSpindle();
+    // A new speed reaches a turning spindle now, unless the block's M3, M4, M5 or M19 acts
+    // before its motion and sends the spindle's state itself (two SPINDLE lines otherwise).
+    if (m_spindle.direction != canon::SpindleDirection::Stopped && !spindleMBeforeMotion(iso)) {
+        emitSpindle();
+    }
     return true;
+}
+
+bool FagorInterpreter::spindleMBeforeMotion(const IsoBlock& iso) const {
+    for (uint8_t i = 0; i < iso.mCount; ++i) {
+        const int number = static_cast<int>(iso.m[i].number.value);
+        if (number != 3 && number != 4 && number != 5 && number != 19) continue;
+        const MFunctionEntry* entry = findMFunction(m_settings.mFunctions, number);
+        if (entry == nullptr || entry->beforeMotion) return true;
+    }
+    return false;
 }
 
 void FagorInterpreter::emitToolData(bool change) {
@@ -95,6 +109,7 @@ void FagorInterpreter::emitToolData(bool change) {
     g.tipZMm = m_tool.data.z + m_tool.data.wearZ;
     g.offsetNumber = m_tool.offset;
     g.locationCode = m_tool.data.location;
+    if (m_toolTable) g.cuttingWidthMm = m_toolTable->get(m_tool.tool).noseWidth;
     if (change) {
         emit(canon::ToolChange{m_tool.tool, {}, g, Axis::Z});
     } else {

@@ -2,9 +2,11 @@
 // checked against independent geometry (the finished section, the helix of the thread).
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "core/cycles/lathe/grooving.h"
 #include "core/cycles/lathe/section_turning.h"
 #include "core/cycles/lathe/threading.h"
 
@@ -16,6 +18,48 @@ double insidePart(const Vec2& p, const Vec2& a, const Vec2& b) {
     if (p.x() > a.x() || p.x() < b.x()) return -1.0;  // outside the section's Z range
     const double t = (p.x() - a.x()) / (b.x() - a.x());
     return a.y() + t * (b.y() - a.y()) - p.y();
+}
+
+// The step coordinates of a groove's plunges (Z for G88, X for G89) with a blade 3 wide, C as
+// given, for the location code of the active offset.
+std::vector<double> plunges(bool alongZ, Vec2 start, Vec2 end, double maxStep, int code) {
+    Groove g;
+    g.alongZ = alongZ;
+    g.start = start;
+    g.end = end;
+    g.maxStep = maxStep;
+    g.safety = 1.0;
+    g.toolWidth = 3.0;
+    g.locationCode = code;
+    const Vec2 call = alongZ ? Vec2(start.x() + 5.0, start.y()) : Vec2(start.x(), start.y() + 5.0);
+    LathePath path(call);
+    LatheError error;
+    EXPECT_TRUE(expandGroove(g, call, path, error)) << error.messageTemplate;
+    std::vector<double> at;
+    for (const LatheStep& step : path.steps()) {
+        if (step.kind == LatheStep::Kind::Feed) at.push_back(alongZ ? step.to.y() : step.to.x());
+    }
+    return at;
+}
+
+TEST(LatheCycles, GroovePlungesPutTheBladeFlushWithBothWallsByItsLocationCode) {
+    // G88 from Z-10 to R-16 (6 wide, blade 3, C3: two plunges). F5 is the blade's +Z corner: it
+    // covers z-3..z, so Z-10 and Z-13; F3 its -Z corner (z..z+3): Z-13 and Z-16; F4 its middle:
+    // Z-11.5 and Z-14.5; F0 names no edge: the width runs towards R, as F5 here.
+    using V = std::vector<double>;
+    const Vec2 s(-10.0, 25.0);
+    const Vec2 e(-16.0, 21.0);
+    EXPECT_EQ(plunges(false, s, e, 3.0, 5), (V{-10.0, -13.0}));
+    EXPECT_EQ(plunges(false, s, e, 3.0, 3), (V{-13.0, -16.0}));
+    EXPECT_EQ(plunges(false, s, e, 3.0, 4), (V{-11.5, -14.5}));
+    EXPECT_EQ(plunges(false, s, e, 3.0, 0), (V{-10.0, -13.0}));
+    // The same groove programmed from Z-16 to R-10: F3 at Z-16 and Z-13, F5 at Z-13 and Z-10.
+    EXPECT_EQ(plunges(false, Vec2(-16.0, 25.0), Vec2(-10.0, 21.0), 3.0, 3), (V{-16.0, -13.0}));
+    EXPECT_EQ(plunges(false, Vec2(-16.0, 25.0), Vec2(-10.0, 21.0), 3.0, 5), (V{-13.0, -10.0}));
+    // G89 from r10 to r16 (C2: three plunges 1.5 apart). F2, a face blade, is its inner edge:
+    // r10, 11.5, 13; F7 (tip towards +X) its outer edge: r13, 14.5, 16.
+    EXPECT_EQ(plunges(true, Vec2(0.0, 10.0), Vec2(-3.0, 16.0), 2.0, 2), (V{10.0, 11.5, 13.0}));
+    EXPECT_EQ(plunges(true, Vec2(0.0, 10.0), Vec2(-3.0, 16.0), 2.0, 7), (V{13.0, 14.5, 16.0}));
 }
 
 TEST(LatheCycles, TurningNeverCutsIntoTheSectionAndStepsAtMostC) {

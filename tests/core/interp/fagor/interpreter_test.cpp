@@ -611,6 +611,30 @@ TEST_F(FagorRun, CycleFeedsKeepThePerRevolutionModeWhenTheCallHasNoFeed) {
         << testing::PrintToString(out.lines);
 }
 
+TEST_F(FagorRun, ANewSpeedWhileTheSpindleTurnsIsOneSpindleLine) {
+    // The spindle turns at S800. N2: S and M3 in one block, M3 sends the new speed (the S used to
+    // send it first: two lines). N3: S alone sends it. N4: S with M4 reverses at the new speed.
+    // N5: the machine's M table runs M5 after the block's motion, so the S900 reaches the
+    // spindle first (for that motion) and M5 then stops it: two commands, not a duplicate.
+    const std::string program =
+        "N1 G90 S800 M3\n"
+        "N2 S1200 M3\n"
+        "N3 S1500\n"
+        "N4 S1000 M4\n"
+        "N5 S900 M5\n"
+        "N6 M30\n";
+    ASSERT_EQ(run(program), interp::RunStatus::Finished) << diagnostics();
+    std::vector<std::string> spindle;
+    for (const std::string& line : out.lines) {
+        if (line.find(" SPINDLE ") != std::string::npos) spindle.push_back(line);
+    }
+    const std::vector<std::string> expected = {
+        "1:1 N1 SPINDLE CW S800.000",  "2:1 N2 SPINDLE CW S1200.000",
+        "3:1 N3 SPINDLE CW S1500.000", "4:1 N4 SPINDLE CCW S1000.000",
+        "5:1 N5 SPINDLE CCW S900.000", "5:1 N5 SPINDLE STOP S900.000"};
+    EXPECT_EQ(spindle, expected);
+}
+
 TEST_F(FagorRun, CycleFeedsAreInInchesUnderG70) {
     // G70: F0.01 in/rev is 0.254 mm/rev, the finishing feed H0.004 of G81 0.1016 mm/rev (it
     // was sent as 0.004 mm/rev).
