@@ -142,7 +142,7 @@ struct SimulatedMachine::Impl {
 
     bool halted() const {
         const MotionMode mode = servo.status().mode;
-        return mode == MotionMode::EmergencyStop || mode == MotionMode::Fault;
+        return timeLimitHit || mode == MotionMode::EmergencyStop || mode == MotionMode::Fault;
     }
 
     void pump() {
@@ -172,18 +172,37 @@ struct SimulatedMachine::Impl {
     void runToIdle() {
         planner.flush();
         pump();
-        double limit = servo.status().timeS + options.maxSimulatedS;
+        const double limit = startTimeS + options.maxSimulatedS;
         int settle = 0;
-        while (servo.status().timeS < limit) {
+        for (;;) {
             if (idle()) {
                 // Let the smoothing filter bring the setpoints to the end point and the drives
                 // follow them there.
-                if (++settle > model.filterTaps + 1 && inPosition()) break;
+                if (++settle > model.filterTaps + 1 && inPosition()) return;
             } else {
                 settle = 0;
             }
+            if (servo.status().timeS >= limit) break;
             cycle();
         }
+        endAtTimeLimit();
+    }
+
+    // The motion did not end within the simulated-time limit: the run stops here and says so
+    // (the report would otherwise show a program that ended in the middle of its path).
+    void endAtTimeLimit() {
+        if (timeLimitHit) return;
+        timeLimitHit = true;
+        Diagnostic d;
+        d.code = "motion.time-limit";
+        d.messageTemplate = KERF_TR_NOOP(
+            "The simulation reached its limit of {1} s of simulated time before the program's "
+            "motion ended: the run stops here.");
+        d.args = {formatFixed(options.maxSimulatedS, 0)};
+        d.line = servo.status().source.line;
+        d.column = 1;
+        d.severity = Severity::Error;
+        diagnostics.push_back(d);
     }
 
     SimulationOptions options;
@@ -199,6 +218,7 @@ struct SimulatedMachine::Impl {
     DiagnosticList diagnostics;
     double startTimeS = 0.0;           // the drives enabled: the program may start
     double emergencyStopTimeS = -1.0;  // simulated time of the button press; negative: never
+    bool timeLimitHit = false;         // maxSimulatedS ran out before the motion ended
 };
 
 SimulatedMachine::SimulatedMachine(const machine::MachineConfig& config, SimulationOptions options)

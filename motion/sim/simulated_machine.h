@@ -30,6 +30,7 @@ struct SimulationOptions {
     std::string samplesCsvPath;  // write every servo sample here (empty: no file)
     bool autoCycleStart = true;  // press cycle start at M0/M1/single-block stops
     bool measure = true;         // measure the samples for report() (a clock needs no peaks)
+    // Simulated time from the program's start after which the run stops with an error.
     double maxSimulatedS = 24.0 * 3600.0;
     // Presses the simulated emergency-stop button this long (s) after the drives enabled (the
     // program's start); negative: never.
@@ -82,7 +83,8 @@ public:
     double timeS() const;
     // Programmed moves the planner accepted so far (PathElement::moveIndex counts them).
     uint32_t acceptedMoves() const;
-    // An emergency stop or a drive fault ended the program: later commands are dropped.
+    // An emergency stop, a drive fault or the simulated-time limit ended the program: later
+    // commands are dropped.
     bool halted() const;
 
 private:

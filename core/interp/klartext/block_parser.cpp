@@ -443,7 +443,16 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
     if (head == "L") {
         // Parsed in place: this is the block CAM programs consist of.
         LinearBlock& b = out.statement.emplace<LinearBlock>();
-        if (!c.parseWords(kAxes | kComp | kFeed | kM, {&b.coords, &b.words})) return false;
+        PolarWords polar;
+        Words w{&b.coords, &b.words};
+        w.polar = &polar;
+        if (!c.parseWords(kAxes | kComp | kFeed | kM | kPolar, w)) return false;
+        if (polar.radius || polar.angle) {
+            // The manual's own examples write "L PR+25 PA+0" for LP (spec §8.1, manual error).
+            LinePolarBlock lp{polar, b.coords, b.words};
+            out.statement = lp;
+            return true;
+        }
         if (b.coords.present == 0 && b.words.comp == CompWord::None) {
             CommonWords words = b.words;
             out.statement = MFunctionBlock{words};

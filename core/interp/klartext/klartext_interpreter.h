@@ -565,6 +565,8 @@ private:
     void executeError(const ErrorBlock& block);
 
     void fail(const char* code, const char* messageTemplate, std::vector<std::string> args = {});
+    // LP/CP: fails when a working-plane axis stands beside PR/PA.
+    bool polarWithoutPlaneAxes(const Coordinates& coords);
     void warn(const char* code, const char* messageTemplate, std::vector<std::string> args = {});
     Diagnostic diagnosticAt(Severity severity, const char* code, const char* messageTemplate,
                             std::vector<std::string> args) const;

@@ -58,6 +58,21 @@ void KlartextInterpreter::applyPolar(const PolarWords& polar, Pose& target) cons
     setInPlane(m_pole.plane, target, m_pole.point + r * Vec2(std::cos(a), std::sin(a)));
 }
 
+bool KlartextInterpreter::polarWithoutPlaneAxes(const Coordinates& coords) {
+    // PR/PA give both working-plane coordinates: a plane axis beside them would be dropped.
+    const PlaneAxes axes = planeAxes(m_pole.plane);
+    for (Axis axis : {axes.first, axes.second}) {
+        if (coords.has(axis)) {
+            fail("syntax",
+                 KERF_TR_NOOP("{1} is not allowed beside the polar coordinates PR/PA (only the "
+                              "tool axis may be programmed)"),
+                 {std::string(1, axisLetter(axis))});
+            return false;
+        }
+    }
+    return true;
+}
+
 Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
     Pose target = m_programmed;
     const double scale = lengthScale();
@@ -264,6 +279,7 @@ void KlartextInterpreter::executeLinePolar(const LinePolarBlock& block) {
         fail("geometry", KERF_TR_NOOP("pole CC is not defined"));
         return;
     }
+    if (!polarWithoutPlaneAxes(block.coords)) return;
     applyMFunctions(block.words.m, true);
     if (m_status == interp::RunStatus::Failed) return;
     const Plane plane = m_pole.plane;
@@ -294,6 +310,7 @@ void KlartextInterpreter::executeCirclePolar(const CirclePolarBlock& block) {
         fail("geometry", KERF_TR_NOOP("CP needs a polar angle PA or IPA"));
         return;
     }
+    if (!polarWithoutPlaneAxes(block.coords)) return;
     Direction direction = block.direction;
     if (block.polar.angleIncremental && direction == Direction::None) {
         direction = *block.polar.angle >= 0.0 ? Direction::Ccw : Direction::Cw;
