@@ -771,6 +771,29 @@ Maschine: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Datei wählen</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>NC-Verzeichnis: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Wählen Sie ein Programm (.H oder .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Loading %1 ...</source>
@@ -880,6 +903,10 @@ Maschine: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Sonderfunktion</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Datei wählen</translation>
     </message>
 </context>
 <context>
@@ -8501,6 +8528,10 @@ wählen</translation>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>der Bogenradius {1} ist kleiner als der Schneidenradius {2} des Werkzeugs: die Schneide kann ihm nicht folgen</translation>
+    </message>
+    <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>die Programmprüfung hat nach {1} Sätzen angehalten: Endlosschleife?</translation>
     </message>
 </context>
 <context>

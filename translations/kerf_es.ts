@@ -771,6 +771,29 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Seleccionar fichero</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Directorio NC: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Elija un programa (.H o .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Loading %1 ...</source>
@@ -880,6 +903,10 @@ Máquina: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Función especial</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Seleccionar fichero</translation>
     </message>
 </context>
 <context>
@@ -8501,6 +8528,10 @@ solución</translation>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>el radio del arco {1} es menor que el radio de punta {2} de la herramienta: la punta no puede seguirlo</translation>
+    </message>
+    <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>la comprobación del programa se detuvo tras {1} bloques: ¿bucle infinito?</translation>
     </message>
 </context>
 <context>

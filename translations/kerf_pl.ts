@@ -774,6 +774,29 @@ Maszyna: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Wybierz plik</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Katalog NC: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Wybierz program (.H lub .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Saved %1</source>
@@ -883,6 +906,10 @@ Maszyna: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Funkcja specjalna</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Wybierz plik</translation>
     </message>
 </context>
 <context>
@@ -8504,6 +8531,10 @@ rozwiązanie</translation>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>promień łuku {1} jest mniejszy niż promień naroża narzędzia {2}: naroże nie może za nim podążać</translation>
+    </message>
+    <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>sprawdzenie programu zatrzymało się po {1} blokach: nieskończona pętla?</translation>
     </message>
 </context>
 <context>

@@ -772,6 +772,29 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Selecionar ficheiro</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Raiz NC: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Escolha um programa (.H ou .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Saved %1</source>
@@ -881,6 +904,10 @@ Máquina: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Função especial</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Selecionar ficheiro</translation>
     </message>
 </context>
 <context>
@@ -8501,6 +8528,10 @@ solução</translation>
     <message>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>o raio do arco {1} é menor que o raio da ponta {2} da ferramenta: a ponta não o pode seguir</translation>
+    </message>
+    <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>a verificação do programa parou após {1} blocos: ciclo infinito?</translation>
     </message>
 </context>
 <context>

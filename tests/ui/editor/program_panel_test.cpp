@@ -165,6 +165,26 @@ TEST(ProgramPanel, CheckProgramRunsTheProgramAsKerfCheckDoes) {
               "Program check: no errors, the program runs to its end");
 }
 
+// An endless loop ends the check at the block limit; the message says so without naming
+// `kerf check`'s --max-blocks, which the panel does not have (it did before).
+TEST(ProgramPanel, TheCheckOfAnEndlessLoopNamesNoCommandLineOption) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_run_check_limit");
+    writeFile(dir / "L.H",
+              "0 BEGIN PGM L MM\n1 LBL 1\n2 FN 9: IF +0 EQU +0 GOTO LBL 1\n3 END PGM L MM\n");
+    ProgramPanel panel(settingsIn(dir));
+    QSignalSpy changed(&panel, &ProgramPanel::diagnosticsChanged);
+    ASSERT_TRUE(panel.open(dir / "L.H"));
+    ASSERT_TRUE(changed.wait(10000));
+    panel.checkProgram();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !panel.checkingProgram(); }, 120000));
+    ASSERT_FALSE(panel.diagnostics().empty());
+    const Diagnostic& limit = panel.diagnostics().back();
+    EXPECT_EQ(limit.code, "block-limit");
+    EXPECT_EQ(translatedMessage(limit).toStdString(),
+              "the program check stopped after 10000000 blocks: endless loop?");
+}
+
 // An edit during the run of the check cancels it: the endless loop would keep the worker busy
 // for its ten million blocks, yet the static check of the edited text comes back, and no
 // summary speaks for the text that is gone.
