@@ -1179,6 +1179,14 @@ Maschine: %3</translation>
         <source>Tool length T%1</source>
         <translation>Werkzeuglänge T%1</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>folgt, sobald das Programm vorbereitet ist</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

@@ -1179,6 +1179,14 @@ Máquina: %3</translation>
         <source>Tool length T%1</source>
         <translation>Longitud de herramienta T%1</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>se muestra cuando el programa esté preparado</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

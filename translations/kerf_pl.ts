@@ -1182,6 +1182,14 @@ Maszyna: %3</translation>
         <source>Tool length T%1</source>
         <translation>Długość narzędzia T%1</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Stan</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>pojawi się po przygotowaniu programu</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>

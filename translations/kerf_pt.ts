@@ -1180,6 +1180,14 @@ Máquina: %3</translation>
         <source>Tool length T%1</source>
         <translation>Comprimento da ferramenta T%1</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>segue quando o programa estiver preparado</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::TableChooser</name>
