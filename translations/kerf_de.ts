@@ -823,6 +823,10 @@ Maschine: %3</translation>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Programmprüfung: das Programm kann nicht laufen (Fehler: %1)</translation>
     </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 wurde nicht geöffnet: %2 konnte nicht gespeichert werden</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>

@@ -823,6 +823,10 @@ Máquina: %3</translation>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Comprobación del programa: el programa no puede ejecutarse (errores: %1)</translation>
     </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 no se abrió: no se pudo guardar %2</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>

@@ -826,6 +826,10 @@ Maszyna: %3</translation>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Sprawdzenie programu: programu nie można wykonać (błędy: %1)</translation>
     </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 nie został otwarty: nie można zapisać %2</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>

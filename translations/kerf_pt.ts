@@ -824,6 +824,10 @@ Máquina: %3</translation>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Verificação do programa: o programa não pode ser executado (erros: %1)</translation>
     </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 não foi aberto: não foi possível guardar %2</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::SettingsModel</name>
