@@ -779,6 +779,29 @@ Maschine: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Datei wählen</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>NC-Verzeichnis: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Wählen Sie ein Programm (.H oder .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Loading %1 ...</source>
@@ -807,6 +830,10 @@ Maschine: %3</translation>
     <message>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Programmprüfung: das Programm kann nicht laufen (Fehler: %1)</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 wurde nicht geöffnet: %2 konnte nicht gespeichert werden</translation>
     </message>
 </context>
 <context>
@@ -888,6 +915,10 @@ Maschine: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Sonderfunktion</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Datei wählen</translation>
     </message>
 </context>
 <context>
@@ -1159,6 +1190,14 @@ Maschine: %3</translation>
     <message>
         <source>Tool length T%1</source>
         <translation>Werkzeuglänge T%1</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>folgt, sobald das Programm vorbereitet ist</translation>
     </message>
 </context>
 <context>
@@ -8555,8 +8594,16 @@ wählen</translation>
         <translation>Einstechzyklus entlang X</translation>
     </message>
     <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>die Programmprüfung hat nach {1} Sätzen angehalten: Endlosschleife?</translation>
+    </message>
+    <message>
         <source>Grooving cycle along Z</source>
         <translation>Einstechzyklus entlang Z</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
+        <translation>{1} ist neben den Polarkoordinaten PR/PA nicht erlaubt (nur die Werkzeugachse darf programmiert werden)</translation>
     </message>
 </context>
 <context>

@@ -779,6 +779,29 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Seleccionar fichero</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Directorio NC: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Elija un programa (.H o .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Loading %1 ...</source>
@@ -807,6 +830,10 @@ Máquina: %3</translation>
     <message>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Comprobación del programa: el programa no puede ejecutarse (errores: %1)</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 no se abrió: no se pudo guardar %2</translation>
     </message>
 </context>
 <context>
@@ -888,6 +915,10 @@ Máquina: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Función especial</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Seleccionar fichero</translation>
     </message>
 </context>
 <context>
@@ -1159,6 +1190,14 @@ Máquina: %3</translation>
     <message>
         <source>Tool length T%1</source>
         <translation>Longitud de herramienta T%1</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>se muestra cuando el programa esté preparado</translation>
     </message>
 </context>
 <context>
@@ -8555,8 +8594,16 @@ solución</translation>
         <translation>Ciclo fijo de ranurado en el eje X</translation>
     </message>
     <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>la comprobación del programa se detuvo tras {1} bloques: ¿bucle infinito?</translation>
+    </message>
+    <message>
         <source>Grooving cycle along Z</source>
         <translation>Ciclo fijo de ranurado en el eje Z</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
+        <translation>{1} no está permitido junto a las coordenadas polares PR/PA (solo se puede programar el eje de la herramienta)</translation>
     </message>
 </context>
 <context>

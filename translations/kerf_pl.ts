@@ -782,6 +782,29 @@ Maszyna: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Wybierz plik</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Katalog NC: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Wybierz program (.H lub .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Saved %1</source>
@@ -810,6 +833,10 @@ Maszyna: %3</translation>
     <message>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Sprawdzenie programu: programu nie można wykonać (błędy: %1)</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 nie został otwarty: nie można zapisać %2</translation>
     </message>
 </context>
 <context>
@@ -891,6 +918,10 @@ Maszyna: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Funkcja specjalna</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Wybierz plik</translation>
     </message>
 </context>
 <context>
@@ -1162,6 +1193,14 @@ Maszyna: %3</translation>
     <message>
         <source>Tool length T%1</source>
         <translation>Długość narzędzia T%1</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Stan</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>pojawi się po przygotowaniu programu</translation>
     </message>
 </context>
 <context>
@@ -8558,8 +8597,16 @@ rozwiązanie</translation>
         <translation>Cykl rowkowania wzdłuż osi X</translation>
     </message>
     <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>sprawdzenie programu zatrzymało się po {1} blokach: nieskończona pętla?</translation>
+    </message>
+    <message>
         <source>Grooving cycle along Z</source>
         <translation>Cykl rowkowania wzdłuż osi Z</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
+        <translation>{1} nie jest dozwolone obok współrzędnych biegunowych PR/PA (można programować tylko oś narzędzia)</translation>
     </message>
 </context>
 <context>

@@ -780,6 +780,29 @@ Máquina: %3</translation>
     </message>
 </context>
 <context>
+    <name>kerf::ui::ProgramFileDialog</name>
+    <message>
+        <source>Select file</source>
+        <translation>Selecionar ficheiro</translation>
+    </message>
+    <message>
+        <source>NC root: %1</source>
+        <translation>Raiz NC: %1</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Choose a program (.H or .I)</source>
+        <translation>Escolha um programa (.H ou .I)</translation>
+    </message>
+</context>
+<context>
     <name>kerf::ui::ProgramPanel</name>
     <message>
         <source>Saved %1</source>
@@ -808,6 +831,10 @@ Máquina: %3</translation>
     <message>
         <source>Program check: the program cannot run (errors: %1)</source>
         <translation>Verificação do programa: o programa não pode ser executado (erros: %1)</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: %2 could not be saved</source>
+        <translation>%1 não foi aberto: não foi possível guardar %2</translation>
     </message>
 </context>
 <context>
@@ -889,6 +916,10 @@ Máquina: %3</translation>
     <message>
         <source>Special function</source>
         <translation>Função especial</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <translation>Selecionar ficheiro</translation>
     </message>
 </context>
 <context>
@@ -1160,6 +1191,14 @@ Máquina: %3</translation>
     <message>
         <source>Tool length T%1</source>
         <translation>Comprimento da ferramenta T%1</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>follows when the program is prepared</source>
+        <translation>segue quando o programa estiver preparado</translation>
     </message>
 </context>
 <context>
@@ -8555,8 +8594,16 @@ solução</translation>
         <translation>Ciclo fixo de ranhura no eixo X</translation>
     </message>
     <message>
+        <source>the program check stopped after {1} blocks: endless loop?</source>
+        <translation>a verificação do programa parou após {1} blocos: ciclo infinito?</translation>
+    </message>
+    <message>
         <source>Grooving cycle along Z</source>
         <translation>Ciclo fixo de ranhura no eixo Z</translation>
+    </message>
+    <message>
+        <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
+        <translation>{1} não é permitido junto às coordenadas polares PR/PA (só o eixo da ferramenta pode ser programado)</translation>
     </message>
 </context>
 <context>

@@ -46,7 +46,8 @@ bool diameterByDefault(const machine::MachineConfig& machine) {
 }
 
 Diagnostic blockLimitError(const RunOptions& options) {
-    return task::blockLimitError(options.program.string(), options.maxBlocks);
+    return task::blockLimitError(options.program.string(), options.maxBlocks,
+                                 task::BlockLimitSource::CommandLine);
 }
 
 }  // namespace

@@ -40,9 +40,12 @@ DryRunEnd runDry(interp::Interpreter& interpreter, const DryRunOptions& options)
     }
 }
 
-Diagnostic blockLimitError(const std::string& file, uint64_t maxBlocks) {
-    return Diagnostic::make(Severity::Error, "block-limit", file, 0, 0,
-                            KERF_TR_NOOP("stopped after {1} blocks: endless loop? (--max-blocks)"),
+Diagnostic blockLimitError(const std::string& file, uint64_t maxBlocks, BlockLimitSource source) {
+    const char* text =
+        source == BlockLimitSource::CommandLine
+            ? KERF_TR_NOOP("stopped after {1} blocks: endless loop? (--max-blocks)")
+            : KERF_TR_NOOP("the program check stopped after {1} blocks: endless loop?");
+    return Diagnostic::make(Severity::Error, "block-limit", file, 0, 0, text,
                             std::to_string(maxBlocks));
 }
 

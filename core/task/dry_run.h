@@ -19,7 +19,7 @@
 // one interpreter per call.
 namespace kerf::task {
 
-// About two seconds of a tight loop; `kerf check --max-blocks` changes it.
+// About two seconds of a tight loop; `kerf check --max-blocks` changes it (the HMI keeps it).
 inline constexpr uint64_t kDefaultMaxBlocks = 10'000'000;
 
 enum class DryRunEnd { Finished, BlockLimit, Stopped, Cancelled };
@@ -36,8 +36,15 @@ struct DryRunOptions {
 // diagnostics() say why).
 DryRunEnd runDry(interp::Interpreter& interpreter, const DryRunOptions& options);
 
-// "stopped after N blocks: endless loop?" about `file`.
-Diagnostic blockLimitError(const std::string& file, uint64_t maxBlocks);
+// Who meets the block limit decides what the message says about raising it: `kerf check` and
+// `kerf run` name their option; the HMI's Check program has no such setting, so its message only
+// says how many blocks ran.
+enum class BlockLimitSource { Hmi, CommandLine };
+
+// "the program check stopped after N blocks: endless loop?" about `file` (the command line's:
+// "stopped after N blocks: endless loop? (--max-blocks)").
+Diagnostic blockLimitError(const std::string& file, uint64_t maxBlocks,
+                           BlockLimitSource source = BlockLimitSource::Hmi);
 
 struct RunCheck {
     DiagnosticList diagnostics;  // the static check's, then the run's

@@ -15,8 +15,9 @@
 
 namespace kerf::ui {
 
-ProgramEntry::ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent, program::Dialect dialect)
-    : m_editor(editor), m_parent(dialogParent), m_dialect(dialect) {}
+ProgramEntry::ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent, program::Dialect dialect,
+                           ProgramPlace place)
+    : m_editor(editor), m_parent(dialogParent), m_dialect(dialect), m_place(std::move(place)) {}
 
 bool ProgramEntry::explain(const QString& why) {
     QMessageBox::information(m_parent, QCoreApplication::translate("kerf", "Programming"), why);
@@ -98,7 +99,7 @@ bool ProgramEntry::specialFunction(SpecialFunction function) {
     if (m_editor.isReadOnly()) return false;
     QStringList values;
     if (!specialFields(function).empty()) {
-        SpecialFunctionDialog dialog(function, m_parent);
+        SpecialFunctionDialog dialog(function, m_place, m_parent);
         if (dialog.exec() != QDialog::Accepted) return false;
         values = dialog.values();
     }

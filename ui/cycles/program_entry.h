@@ -2,6 +2,7 @@
 
 #include "core/program/dialect.h"
 #include "ui/cycles/path_function.h"
+#include "ui/cycles/program_reference.h"
 #include "ui/cycles/special_function.h"
 
 class QPlainTextEdit;
@@ -18,8 +19,10 @@ struct LineRange;
 // explained in a message and not written.
 class ProgramEntry {
 public:
+    // `place`: where the program lies, for the file list of SEL PGM and CALL PGM (none when
+    // empty).
     ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent,
-                 program::Dialect dialect = program::Dialect::Klartext);
+                 program::Dialect dialect = program::Dialect::Klartext, ProgramPlace place = {});
 
     // The cycle overview (as the TNC's GOTO), then the chosen cycle's dialog.
     bool chooseCycle();
@@ -45,6 +48,7 @@ private:
     QPlainTextEdit& m_editor;
     QWidget* m_parent;
     program::Dialect m_dialect;
+    ProgramPlace m_place;
 };
 
 }  // namespace kerf::ui

@@ -15,9 +15,10 @@ namespace {
 
 // Runs `action` on a ProgramEntry writing the program's dialect (Klartext or TNC ISO).
 std::function<void()> entryAction(ProgramEditor* editor, QWidget* parent,
-                                  std::function<void(ProgramEntry&)> action) {
-    return [editor, parent, action] {
-        ProgramEntry entry(*editor, parent, editor->dialect());
+                                  std::function<void(ProgramEntry&)> action,
+                                  std::function<ProgramPlace()> place = {}) {
+    return [editor, parent, action, place] {
+        ProgramEntry entry(*editor, parent, editor->dialect(), place ? place() : ProgramPlace{});
         action(entry);
         editor->setFocus();
     };
@@ -76,9 +77,12 @@ std::vector<SoftkeyRow> cycleRows(int section, ProgramEditor* editor, QWidget* p
 Softkey specialKey(const char* id, const QString& text, SpecialFunction function,
                    ProgramEditor* editor, QWidget* parent, SoftkeyPaging paging) {
     return {QString::fromLatin1(id), text,
-            entryAction(editor, parent, [function, paging](ProgramEntry& e) {
-                if (e.specialFunction(function)) paging.back();
-            })};
+            entryAction(
+                editor, parent,
+                [function, paging](ProgramEntry& e) {
+                    if (e.specialFunction(function)) paging.back();
+                },
+                paging.place)};
 }
 
 std::vector<SoftkeyRow> specialFunctionRows(ProgramEditor* editor, QWidget* parent,

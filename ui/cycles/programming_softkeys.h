@@ -3,6 +3,7 @@
 #include <functional>
 #include <vector>
 
+#include "ui/cycles/program_reference.h"
 #include "ui/shell/softkey_bar.h"
 
 class QWidget;
@@ -12,10 +13,12 @@ namespace kerf::ui {
 class ProgramEditor;
 
 // What the programming rows need from the window: showing other rows on the softkey bar (the
-// cycle groups and their cycles) and going back to the normal rows.
+// cycle groups and their cycles), going back to the normal rows and, for the file list of SEL PGM
+// and CALL PGM, where the program being edited lies (unset: no file list).
 struct SoftkeyPaging {
     std::function<void(std::vector<SoftkeyRow>)> show;
     std::function<void()> back;
+    std::function<ProgramPlace()> place = {};
 };
 
 // The programming keys of the TNC: CYCL DEF (its groups, then the group's cycles), CYCL CALL,

@@ -25,7 +25,8 @@ void WordFieldsDialog::build(const QString& title, const std::vector<WordRow>& r
     heading->setStyleSheet(QStringLiteral("font-weight: bold; font-size: 16px;"));
     layout->addWidget(heading);
     auto* grid = new QGridLayout;
-    grid->setColumnStretch(2, 1);
+    m_grid = grid;
+    grid->setColumnStretch(3, 1);
     for (size_t i = 0; i < rows.size(); ++i) {
         const int row = static_cast<int>(i);
         auto* label = new QLabel(rows[i].word, this);
@@ -45,7 +46,7 @@ void WordFieldsDialog::build(const QString& title, const std::vector<WordRow>& r
         description->setWordWrap(true);
         grid->addWidget(label, row, 0);
         grid->addWidget(input, row, 1);
-        grid->addWidget(description, row, 2);
+        grid->addWidget(description, row, 3);
         m_inputs.push_back(input);
         m_descriptions.push_back(description);
     }
@@ -77,6 +78,15 @@ QStringList WordFieldsDialog::values() const {
     for (int i = 0; i < fieldCount(); ++i)
         list << text(i);
     return list;
+}
+
+void WordFieldsDialog::addToRow(int field, QWidget* widget) {
+    widget->setMinimumHeight(kDialogTouchHeight);
+    m_grid->addWidget(widget, field, 2);
+}
+
+void WordFieldsDialog::setMessage(const QString& text) {
+    m_message->setText(text);
 }
 
 QString WordFieldsDialog::message() const {

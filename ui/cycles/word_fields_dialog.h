@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+class QGridLayout;
 class QLabel;
 class QPushButton;
 class QVBoxLayout;
@@ -40,6 +41,10 @@ protected:
     void build(const QString& title, const std::vector<WordRow>& rows,
                const char* messageObjectName, int inputWidth);
     void retranslate();
+    // Puts `widget` (a button that fills the row, such as "Select file") after the row's input.
+    void addToRow(int field, QWidget* widget);
+    // Shows `text` in the refusal line (empty: clears it).
+    void setMessage(const QString& text);
 
     // Why one row's text or the whole block is refused, if it is.
     virtual std::optional<QString> checkRow(int field, const QString& text) const = 0;
@@ -53,6 +58,7 @@ protected:
 private:
     QString text(int field) const;
 
+    QGridLayout* m_grid = nullptr;
     std::vector<QWidget*> m_inputs;
     std::vector<QLabel*> m_descriptions;
     QLabel* m_message = nullptr;

@@ -134,7 +134,12 @@ void ProgramPanel::forgetDiagnostics() {
 }
 
 bool ProgramPanel::open(const std::filesystem::path& path) {
-    if (loading() || m_editor->renumbering() || m_writer->busy()) return false;
+    if (m_saveAfterRenumber || m_writer->busy()) {
+        // "Save" before another program, for a long one: that one follows the save.
+        m_openAfterSave = path;
+        return true;
+    }
+    if (loading() || m_editor->renumbering()) return false;
     m_saveAfterRenumber = false;
     std::error_code sizeError;
     const uintmax_t size = std::filesystem::file_size(path, sizeError);
@@ -205,9 +210,15 @@ bool ProgramPanel::write() {
 }
 
 bool ProgramPanel::finishWrite(const MaybeError& error) {
+    const std::optional<std::filesystem::path> next = std::exchange(m_openAfterSave, std::nullopt);
     if (error) {
         emit message(Severity::Error,
                      translatedMessage(*error) + QStringLiteral(" (") + fileText(m_path) + ')');
+        if (next) {
+            emit message(Severity::Warning,
+                         tr("%1 was not opened: %2 could not be saved")
+                             .arg(fileText(next->filename()), fileText(m_path.filename())));
+        }
         return false;
     }
     m_editor->document()->setModified(false);
@@ -215,6 +226,7 @@ bool ProgramPanel::finishWrite(const MaybeError& error) {
     m_recovery.discard(m_path);
     m_recovered.reset();
     emit message(Severity::Note, tr("Saved %1").arg(fileText(m_path.filename())));
+    if (next) open(*next);
     return true;
 }
 

@@ -49,7 +49,8 @@ public:
     ~ProgramPanel() override;
 
     // False (and message()) if the file cannot be read; false too while the current program is
-    // still being loaded, renumbered or written.
+    // still being loaded or renumbered. While it is being saved, the file opens once the save
+    // has succeeded (true: under way).
     bool open(const std::filesystem::path& path);
     bool loading() const;
     // Writes the file (atomically). A long program whose numbers are stale is renumbered first,
@@ -148,6 +149,9 @@ private:
     QTimer* m_checkTimer = nullptr;
     bool m_loading = false;
     bool m_saveAfterRenumber = false;
+    // A program asked for while the one shown was being saved (renumbered, then written by the
+    // worker): opened once the edits are on disk, not when the save fails (they would be lost).
+    std::optional<std::filesystem::path> m_openAfterSave;
     bool m_readOnlyBeforeWrite = false;
 };
 

@@ -293,7 +293,12 @@ void MainWindow::refreshSoftkeys() {
         // CYCL DEF, CYCL CALL, TOOL CALL and the path functions (ui/cycles).
         const SoftkeyPaging paging{
             [this](std::vector<SoftkeyRow> r) { m_softkeys->setRows(std::move(r)); },
-            [this] { refreshSoftkeys(); }};
+            [this] { refreshSoftkeys(); },
+            [this] {
+                return ProgramPlace{m_context.ncRoot, m_program->path().empty()
+                                                          ? std::filesystem::path()
+                                                          : m_program->path().parent_path()};
+            }};
         rows.push_back(commonRow());
         for (SoftkeyRow& row : programmingEntryRows(editor, this, paging))
             rows.push_back(std::move(row));

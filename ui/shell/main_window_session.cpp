@@ -139,9 +139,14 @@ void MainWindow::startEditorProgram(std::optional<uint32_t> startLine) {
     ProgramEditor* editor = m_program->editor();
     std::vector<std::pair<int, double>> inputs;
     if (editor->dialect() == program::Dialect::Fagor && !askOperatorInputs(inputs)) return;
-    if (m_session->startProgram(editor->toPlainText(), m_program->path(), startLine, inputs))
-        m_liveRun->follow(editor->toPlainText(), m_program->path(), editor->dialect(),
-                          m_session->programStart());
+    if (!m_session->startProgram(editor->toPlainText(), m_program->path(), startLine, inputs))
+        return;
+    m_liveRun->follow(editor->toPlainText(), m_program->path(), editor->dialect(),
+                      m_session->programStart());
+    // The tabs follow the machine's block once the program is prepared (seconds for a long
+    // one); until then they must not show the program run before.
+    if (m_liveRun->state() == TestRunController::State::Interpreting && !testRunOnScreen())
+        m_status->setPreparing(QString::fromStdString(m_program->path().filename().string()));
 }
 
 bool MainWindow::askOperatorInputs(std::vector<std::pair<int, double>>& inputs) {

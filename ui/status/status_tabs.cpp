@@ -133,9 +133,28 @@ QString StatusTabs::lengthText(double mm, bool inch) {
 }
 
 void StatusTabs::setProgramStatus(const interp::ProgramStatus& status) {
-    if (status == m_status) return;  // called every service cycle while a program runs
+    // Called every service cycle while a program runs.
+    if (status == m_status && !m_preparing) return;
     m_status = status;
+    m_preparing.reset();
     refresh();
+}
+
+void StatusTabs::setPreparing(const QString& program) {
+    m_preparing = program;
+    refresh();
+}
+
+void StatusTabs::fillPreparing() {
+    const Row pending{tr("Status"), tr("follows when the program is prepared")};
+    fill(m_program, {{tr("Program"), *m_preparing}, pending});
+    fill(m_tool, {pending});
+    fill(m_transformations, {pending});
+    m_parameters->setRowCount(0);
+    // What the manual functions measured is the machine's, not the program's: it stays.
+    std::vector<Row> probe{pending};
+    addManualRows(probe);
+    fill(m_probe, probe);
 }
 
 void StatusTabs::changeEvent(QEvent* event) {
@@ -155,6 +174,7 @@ void StatusTabs::refresh() {
     const QString letter(QChar(m_status.parameterLetter));
     setTabText(static_cast<int>(Tab::Parameters), tr("%1PARA").arg(letter));
     m_filter->setPlaceholderText(tr("Filter, e.g. %1").arg(letter + QStringLiteral("1")));
+    if (m_preparing) return fillPreparing();
     fillProgram();
     fillTool();
     fillTransformations();

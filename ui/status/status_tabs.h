@@ -45,6 +45,12 @@ public:
                           const std::optional<cycles::probing::ManualProbingResult>& result);
     void setToolTouchOff(int tool, double lengthMm);
 
+    // NC start of `program` while its status is still being prepared (Program run's graphics
+    // read the program first): the tabs name it and say that its status follows, rather than
+    // go on showing the program before. The next setProgramStatus() ends this.
+    void setPreparing(const QString& program);
+    bool preparing() const { return m_preparing.has_value(); }
+
 public slots:
     void setProgramStatus(const kerf::interp::ProgramStatus& status);
 
@@ -58,12 +64,14 @@ private:
     void fillTransformations();
     void fillParameters();
     void fillProbe();
+    void fillPreparing();
     void applyFilter();
     void retranslate();
 
     void addManualRows(std::vector<std::pair<QString, QString>>& rows) const;
 
     interp::ProgramStatus m_status;
+    std::optional<QString> m_preparing;  // the program whose status is being prepared
     struct ManualProbing {
         cycles::probing::ManualProbingFunction function;
         int touches = 0;

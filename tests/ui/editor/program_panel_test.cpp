@@ -165,6 +165,26 @@ TEST(ProgramPanel, CheckProgramRunsTheProgramAsKerfCheckDoes) {
               "Program check: no errors, the program runs to its end");
 }
 
+// An endless loop ends the check at the block limit; the message says so without naming
+// `kerf check`'s --max-blocks, which the panel does not have (it did before).
+TEST(ProgramPanel, TheCheckOfAnEndlessLoopNamesNoCommandLineOption) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_run_check_limit");
+    writeFile(dir / "L.H",
+              "0 BEGIN PGM L MM\n1 LBL 1\n2 FN 9: IF +0 EQU +0 GOTO LBL 1\n3 END PGM L MM\n");
+    ProgramPanel panel(settingsIn(dir));
+    QSignalSpy changed(&panel, &ProgramPanel::diagnosticsChanged);
+    ASSERT_TRUE(panel.open(dir / "L.H"));
+    ASSERT_TRUE(changed.wait(10000));
+    panel.checkProgram();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !panel.checkingProgram(); }, 120000));
+    ASSERT_FALSE(panel.diagnostics().empty());
+    const Diagnostic& limit = panel.diagnostics().back();
+    EXPECT_EQ(limit.code, "block-limit");
+    EXPECT_EQ(translatedMessage(limit).toStdString(),
+              "the program check stopped after 10000000 blocks: endless loop?");
+}
+
 // An edit during the run of the check cancels it: the endless loop would keep the worker busy
 // for its ten million blocks, yet the static check of the edited text comes back, and no
 // summary speaks for the text that is gone.
@@ -230,6 +250,50 @@ TEST(ProgramPanel, LargeFilesLoadInTheBackground) {
     panel.editor()->undo();
     EXPECT_EQ(panel.editor()->document()->findBlockByNumber(2).text(),
               QStringLiteral("2 END PGM F MM"));
+}
+
+// "Save" before opening another program: a long program is written by a worker, and the other
+// program opens once the edits are on disk (the open was dropped without a word before, the
+// operator left on the file manager); when the save fails, it does not open and says why.
+TEST(ProgramPanel, AProgramAskedForDuringASaveOpensWhenTheEditsAreOnDisk) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_open_after_save");
+    writeFile(dir / "A.H", "0 BEGIN PGM A MM\n1 END PGM A MM\n");
+    writeFile(dir / "B.H", "0 BEGIN PGM B MM\n1 END PGM B MM\n");
+    writeFile(dir / "C.H", "0 BEGIN PGM C MM\n1 END PGM C MM\n");
+    auto settings = settingsIn(dir);
+    settings.backgroundLoadBytes = 0;  // every file counts as large: written by the worker
+    ProgramPanel panel(settings);
+    QSignalSpy opened(&panel, &ProgramPanel::fileChanged);
+    ASSERT_TRUE(panel.open(dir / "A.H"));
+    ASSERT_TRUE(opened.wait(10000));
+    panel.editor()->goToLine(1);
+    panel.editor()->moveCursor(QTextCursor::EndOfBlock);
+    panel.editor()->insertPlainText(" ; edited");
+    ASSERT_TRUE(panel.save());
+    ASSERT_TRUE(panel.open(dir / "B.H"));  // under way: after the save
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.path() == dir / "B.H" && !panel.loading(); }, 10000));
+    EXPECT_EQ(readFile(dir / "A.H"), "0 BEGIN PGM A MM ; edited\n1 END PGM A MM\n");
+    EXPECT_EQ(panel.editor()->toPlainText(), QStringLiteral("0 BEGIN PGM B MM\n1 END PGM B MM\n"));
+
+    // B.H is replaced by a link on disk: Kerf does not write through links, the save fails and
+    // C.H stays unopened, B's edits on the screen.
+    panel.editor()->goToLine(1);
+    panel.editor()->moveCursor(QTextCursor::EndOfBlock);
+    panel.editor()->insertPlainText(" ; kept");
+    std::filesystem::remove(dir / "B.H");
+    std::filesystem::create_symlink(dir / "A.H", dir / "B.H");
+    QSignalSpy messages(&panel, &ProgramPanel::message);
+    ASSERT_TRUE(panel.save());
+    ASSERT_TRUE(panel.open(dir / "C.H"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return messages.size() >= 2; }, 10000));
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Error);
+    EXPECT_EQ(messages.at(1).at(1).toString(), "C.H was not opened: B.H could not be saved");
+    QTest::qWait(50);
+    EXPECT_EQ(panel.path(), dir / "B.H");
+    EXPECT_TRUE(panel.modified());
+    EXPECT_TRUE(panel.editor()->toPlainText().contains(" ; kept"));
 }
 
 // A program of `blocks` straight moves, without errors.

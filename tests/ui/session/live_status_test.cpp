@@ -166,5 +166,56 @@ TEST_F(LiveStatus, TheToolTabShowsTheToolOfAnMdiToolCall) {
     EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Tool, "R"), "3.000 mm");
 }
 
+// NC start of another program: its status comes from Program run's preparation, which takes
+// seconds for a long program (40 s for 60 000 blocks on a busy machine). Until it is ready the
+// tabs showed the program run before (its name, cycle 200, its tool) while the new one ran.
+TEST_F(LiveStatus, AtNcStartTheTabsLeaveTheProgramRunBefore) {
+    open("mill", "DRILL.H",
+         "0 BEGIN PGM DRILL MM\n"
+         "1 L Z+100 R0 FMAX\n"
+         "2 TOOL CALL 1 Z S2000\n"
+         "3 CYCL DEF 200 DRILLING\n"
+         "  Q200=2 ;SET-UP CLEARANCE\n"
+         "  Q201=-3 ;DEPTH\n"
+         "  Q206=300 ;FEED RATE FOR PLNGNG\n"
+         "  Q202=3 ;PLUNGING DEPTH\n"
+         "  Q210=0 ;DWELL TIME AT TOP\n"
+         "  Q203=+0 ;SURFACE COORDINATE\n"
+         "  Q204=10 ;2ND SET-UP CLEARANCE\n"
+         "  Q211=0 ;DWELL TIME AT DEPTH\n"
+         "  Q395=0 ;DEPTH REFERENCE\n"
+         "4 L X+10 Y+10 R0 FMAX M3\n"
+         "5 CYCL CALL\n"
+         "6 L Z+100 R0 FMAX M5\n"
+         "7 END PGM DRILL MM\n");
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    ASSERT_TRUE(processUntil([&] {
+        return finished() && tabs().valueOf(StatusTabs::Tab::Program, "Cycle") == "200 DRILLING";
+    }));
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Program"), "DRILL.H");
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Tool, "Tool"), "1");
+
+    std::ofstream(dir / "MOVE.H") << "0 BEGIN PGM MOVE MM\n1 L X+20 R0 F3000\n"
+                                     "2 END PGM MOVE MM\n";
+    ASSERT_TRUE(window->openProgram(dir / "MOVE.H"));
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    // The preparation has not come back (no event has been processed since NC start).
+    ASSERT_EQ(window->liveRun()->state(), TestRunController::State::Interpreting);
+    EXPECT_TRUE(tabs().preparing());
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Program"), "MOVE.H");
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Status"),
+              "follows when the program is prepared");
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Cycle"), "");  // no row: not known yet
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Tool, "Tool"), "");
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Tool, "Status"),
+              "follows when the program is prepared");
+
+    // Prepared, the tabs show the new program at the machine's block.
+    ASSERT_TRUE(processUntil([&] { return finished() && !tabs().preparing(); }));
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Program"), "MOVE.H");
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Cycle"), "none");
+    EXPECT_FALSE(tabs().valueOf(StatusTabs::Tab::Program, "Block").isEmpty());
+}
+
 }  // namespace
 }  // namespace kerf::ui
