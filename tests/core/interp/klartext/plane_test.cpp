@@ -590,6 +590,33 @@ TEST_F(PlaneTest, TcpmPathctrlVectorTurnsTheToolInOnePlane) {
         EXPECT_NEAR(p[Axis::B], 30.0, 1e-9);
 }
 
+// PATHCTRL VECTOR turns the tool on the great circle between its directions, which can lean it
+// further than either end: from B+108 C0, tool (sin108, 0, cos108), to B+108 C+90, tool
+// (0, sin108, cos108), the middle direction (sin108/2, sin108/2, cos108) / 0.740099 leans
+// acos(cos108 / 0.740099) = acos(-0.417535) = 114.679 deg from Z, so B passes 110 although both
+// ends stand at 108: the block is refused at its line before anything of it leaves. From B+100
+// the middle leans acos(-0.173648 / 0.717689) = 104.003 deg: the block runs, and B reaches that
+// lean in its middle (C+45).
+TEST_F(PlaneTest, PathctrlVectorKeepsTheRotaryLimitsAlongTheBlock) {
+    auto blocks = [](int b) {
+        return "1 L X+0 Y+0 Z+50 R0 FMAX\n2 FUNCTION TCPM F TCP AXIS POS PATHCTRL VECTOR\n"
+               "3 L B+" +
+               std::to_string(b) + " C+0 F3000\n4 L C+90 F3000\n5 FUNCTION RESET TCPM\n";
+    };
+    ASSERT_EQ(run("mill5", blocks(100)), interp::RunStatus::Finished) << firstError();
+    double highestB = 0.0;
+    for (const Pose& p : movesOf(4))
+        highestB = std::max(highestB, p[Axis::B]);
+    EXPECT_NEAR(highestB, 104.003, 1e-3);
+    EXPECT_EQ(run("mill5", blocks(108)), interp::RunStatus::Failed);
+    const Diagnostic& d = k->diagnostics().front();
+    EXPECT_EQ(d.line, 5u);  // block 4
+    EXPECT_NE(d.message().find("the move would take axis B to 11"), std::string::npos)
+        << d.message();
+    EXPECT_NE(d.message().find("beyond its soft limit 110.000"), std::string::npos) << d.message();
+    EXPECT_TRUE(movesOf(4).empty());
+}
+
 }  // namespace
 }  // namespace kerf::klartext
 
