@@ -8502,6 +8502,10 @@ wählen</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>der Bogenradius {1} ist kleiner als der Schneidenradius {2} des Werkzeugs: die Schneide kann ihm nicht folgen</translation>
     </message>
+    <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>Gewindebohren und Gewindeschneiden folgen der Spindel entlang der Werkzeugachse: zuerst TCPM ausschalten (M129 oder FUNCTION RESET TCPM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8502,6 +8502,10 @@ solución</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>el radio del arco {1} es menor que el radio de punta {2} de la herramienta: la punta no puede seguirlo</translation>
     </message>
+    <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>el roscado con macho y el roscado siguen al cabezal a lo largo del eje de la herramienta: desactive primero TCPM (M129 o FUNCTION RESET TCPM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

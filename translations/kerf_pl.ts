@@ -8505,6 +8505,10 @@ rozwiązanie</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>promień łuku {1} jest mniejszy niż promień naroża narzędzia {2}: naroże nie może za nim podążać</translation>
     </message>
+    <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>gwintowanie gwintownikiem i nacinanie gwintu podążają za wrzecionem wzdłuż osi narzędzia: najpierw wyłącz TCPM (M129 lub FUNCTION RESET TCPM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8502,6 +8502,10 @@ solução</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>o raio do arco {1} é menor que o raio da ponta {2} da ferramenta: a ponta não o pode seguir</translation>
     </message>
+    <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>a roscagem com macho e o corte de rosca seguem a árvore ao longo do eixo da ferramenta: desligue primeiro o TCPM (M129 ou FUNCTION RESET TCPM)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
