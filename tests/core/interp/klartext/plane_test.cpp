@@ -654,8 +654,8 @@ TEST_F(PlaneTest, ThreadMillingRunsUnderTcpmInTheTiltedPlane) {
 // (0, sin108, cos108), the middle direction (sin108/2, sin108/2, cos108) / 0.740099 leans
 // acos(cos108 / 0.740099) = acos(-0.417535) = 114.679 deg from Z, so B passes 110 although both
 // ends stand at 108: the block is refused at its line before anything of it leaves. From B+100
-// the middle leans acos(-0.173648 / 0.717689) = 104.003 deg: the block runs, and B reaches that
-// lean in its middle (C+45).
+// the middle leans acos(cos100 / sqrt(sin100^2 / 2 + cos100^2)) = 104.002 deg: the block runs,
+// and B reaches that lean in its middle (C+45), a piece end.
 TEST_F(PlaneTest, PathctrlVectorKeepsTheRotaryLimitsAlongTheBlock) {
     auto blocks = [](int b) {
         return "1 L X+0 Y+0 Z+50 R0 FMAX\n2 FUNCTION TCPM F TCP AXIS POS PATHCTRL VECTOR\n"
@@ -666,7 +666,9 @@ TEST_F(PlaneTest, PathctrlVectorKeepsTheRotaryLimitsAlongTheBlock) {
     double highestB = 0.0;
     for (const Pose& p : movesOf(4))
         highestB = std::max(highestB, p[Axis::B]);
-    EXPECT_NEAR(highestB, 104.003, 1e-3);
+    const double c100 = std::cos(100.0 * M_PI / 180.0), s100 = std::sin(100.0 * M_PI / 180.0);
+    EXPECT_NEAR(highestB,
+                std::acos(c100 / std::sqrt(s100 * s100 / 2.0 + c100 * c100)) * 180.0 / M_PI, 1e-9);
     EXPECT_EQ(run("mill5", blocks(108)), interp::RunStatus::Failed);
     const Diagnostic& d = k->diagnostics().front();
     EXPECT_EQ(d.line, 5u);  // block 4
