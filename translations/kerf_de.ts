@@ -8602,6 +8602,10 @@ wählen</translation>
         <translation>Einstechzyklus entlang Z</translation>
     </message>
     <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>Gewindebohren und Gewindeschneiden folgen der Spindel entlang der Werkzeugachse: zuerst TCPM ausschalten (M129 oder FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} ist neben den Polarkoordinaten PR/PA nicht erlaubt (nur die Werkzeugachse darf programmiert werden)</translation>
     </message>

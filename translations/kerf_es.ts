@@ -8602,6 +8602,10 @@ solución</translation>
         <translation>Ciclo fijo de ranurado en el eje Z</translation>
     </message>
     <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>el roscado con macho y el roscado siguen al cabezal a lo largo del eje de la herramienta: desactive primero TCPM (M129 o FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} no está permitido junto a las coordenadas polares PR/PA (solo se puede programar el eje de la herramienta)</translation>
     </message>

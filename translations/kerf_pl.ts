@@ -8605,6 +8605,10 @@ rozwiązanie</translation>
         <translation>Cykl rowkowania wzdłuż osi Z</translation>
     </message>
     <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>gwintowanie gwintownikiem i nacinanie gwintu podążają za wrzecionem wzdłuż osi narzędzia: najpierw wyłącz TCPM (M129 lub FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} nie jest dozwolone obok współrzędnych biegunowych PR/PA (można programować tylko oś narzędzia)</translation>
     </message>

@@ -8602,6 +8602,10 @@ solução</translation>
         <translation>Ciclo fixo de ranhura no eixo Z</translation>
     </message>
     <message>
+        <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
+        <translation>a roscagem com macho e o corte de rosca seguem a árvore ao longo do eixo da ferramenta: desligue primeiro o TCPM (M129 ou FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} não é permitido junto às coordenadas polares PR/PA (só o eixo da ferramenta pode ser programado)</translation>
     </message>

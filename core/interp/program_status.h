@@ -60,6 +60,15 @@ struct ProgramStatus {
             // by row. Differences (lag, distance to go) turn by M alone.
             std::array<double, 9> axesToProgram{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
             std::array<double, 3> programAtAxesZeroMm{};
+            // TCPM (M128, FUNCTION TCPM) turns the tables away from the solved angles: the map
+            // above then takes the tool tip on the part, which the kinematics give from the
+            // linear axes at the rotary axes' own angles (core/task/working_plane_position.h),
+            // with the preset in machine coordinates (linear axes; rotary axes in degrees) and
+            // the tool length in the spindle.
+            bool tipFollowsTables = false;
+            std::array<double, 3> presetInMachineMm{};
+            std::array<double, 3> rotaryPresetDeg{};  // A, B, C
+            double toolLengthMm = 0.0;
             friend bool operator==(const WorkingPlane&, const WorkingPlane&) = default;
         };
         std::optional<WorkingPlane> workingPlane;

@@ -8,6 +8,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/task/working_plane_position.h"
 #include "ui/common/block_name.h"
 #include "ui/status/override_controls.h"
 
@@ -40,12 +41,20 @@ QString coreText(const char* text) {
     return QCoreApplication::translate("kerf", text);
 }
 
+std::array<double, kAxisCount> kindValuesOf(const task::MachineStatus& status, PositionKind kind) {
+    std::array<double, kAxisCount> values{};
+    for (size_t i = 0; i < values.size(); ++i)
+        values[i] = pick(status.axes[i], kind);
+    return values;
+}
+
 }  // namespace
 
 PositionDisplay::PositionDisplay(const machine::MachineConfig& machine, QWidget* parent)
     : QWidget(parent),
       m_dialect(machine.kind == machine::MachineKind::Lathe ? program::Dialect::Fagor
-                                                            : program::Dialect::Klartext) {
+                                                            : program::Dialect::Klartext),
+      m_kinematics(machine::TableKinematics::of(machine)) {
     setObjectName("positionsPanel");  // the workspace panel's name in the shell
     auto* layout = new QVBoxLayout(this);
     auto* header = new QHBoxLayout();
@@ -120,23 +129,25 @@ double PositionDisplay::shownValue(const task::AxisStatus& axis, PositionKind ki
 }
 
 std::array<double, kAxisCount> PositionDisplay::kindValues(
-    const task::MachineStatus& status, PositionKind kind,
-    const std::optional<WorkingPlane>& plane) {
-    std::array<double, kAxisCount> values{};
-    for (size_t i = 0; i < values.size(); ++i)
-        values[i] = pick(status.axes[i], kind);
+    const task::MachineStatus& status, PositionKind kind, const std::optional<WorkingPlane>& plane,
+    const std::optional<machine::TableKinematics>& kinematics) {
+    std::array<double, kAxisCount> values = kindValuesOf(status, kind);
     const bool reference =
         kind == PositionKind::ReferenceActual || kind == PositionKind::ReferenceNominal;
     if (!plane || reference) return values;
-    // Positions map with the origin; lag and distance to go are differences: they only turn.
+    // Positions map with the origin (and, under TCPM, the tables' turn where they stand); lag and
+    // distance to go are differences: they only turn, at the nominal pose.
     const bool position = kind == PositionKind::Actual || kind == PositionKind::Nominal;
-    const std::array<double, 3> axes{values[0], values[1], values[2]};
-    for (size_t row = 0; row < 3; ++row) {
-        double v = position ? plane->programAtAxesZeroMm[row] : 0.0;
-        for (size_t column = 0; column < 3; ++column)
-            v += plane->axesToProgram[3 * row + column] * axes[column];
-        values[row] = v;
+    Vec3 shown;
+    if (position) {
+        shown = task::positionInWorkingPlane(*plane, kinematics, values);
+    } else {
+        shown = task::differenceInWorkingPlane(*plane, kinematics,
+                                               Vec3{values[0], values[1], values[2]},
+                                               kindValuesOf(status, PositionKind::Nominal));
     }
+    for (size_t row = 0; row < 3; ++row)
+        values[row] = shown[static_cast<Eigen::Index>(row)];
     return values;
 }
 
@@ -218,7 +229,7 @@ QString PositionDisplay::spindleText() const {
 void PositionDisplay::refresh() {
     const bool inch = m_settings.inch;
     const std::array<double, kAxisCount> values =
-        kindValues(m_status, m_settings.positionKind, m_workingPlane);
+        kindValues(m_status, m_settings.positionKind, m_workingPlane, m_kinematics);
     for (size_t i = 0; i < m_axes.size(); ++i) {
         const AxisRow& r = m_axes[i];
         if (!r.present) continue;

@@ -7,6 +7,7 @@
 
 #include "core/interp/program_status.h"
 #include "core/machine/machine_config.h"
+#include "core/machine/table_kinematics.h"
 #include "core/program/dialect.h"
 #include "core/task/machine_status.h"
 #include "ui/common/display_settings.h"
@@ -30,8 +31,8 @@ struct ProgrammedFeed {
 // the machine says so; the run state, active tool, S and F (programmed and actual), the coolant as
 // the machine executes it, and the override controls. While a working plane is tilted (cycle 19,
 // PLANE) X, Y and Z of every kind but REF are in the program's coordinates of the tilted plane,
-// as a TNC shows them ("3D ROT" beside the kind); REF keeps the machine's axes, rotary axes are
-// always their angles in degrees.
+// as a TNC shows them ("3D ROT" beside the kind), also while TCPM turns the tables away from the
+// plane's angles; REF keeps the machine's axes, rotary axes are always their angles in degrees.
 class PositionDisplay : public QWidget {
     Q_OBJECT
 
@@ -67,10 +68,12 @@ public:
     static double shownValue(const task::AxisStatus& axis, PositionKind kind, bool diameter,
                              bool inch, bool rotary);
     // Every axis's value of the kind in mm and degrees; X, Y and Z in the tilted plane's
-    // coordinates when a plane is given and the kind is not REF.
-    static std::array<double, kAxisCount> kindValues(const task::MachineStatus& status,
-                                                     PositionKind kind,
-                                                     const std::optional<WorkingPlane>& plane);
+    // coordinates when a plane is given and the kind is not REF (under TCPM the tool tip through
+    // the machine's `kinematics` at the rotary axes' angles).
+    static std::array<double, kAxisCount> kindValues(
+        const task::MachineStatus& status, PositionKind kind,
+        const std::optional<WorkingPlane>& plane,
+        const std::optional<machine::TableKinematics>& kinematics);
     static QString kindText(PositionKind kind);
 
 protected:
@@ -91,6 +94,7 @@ private:
 
     DisplaySettings m_settings;
     program::Dialect m_dialect;  // how the machine's programs number their blocks
+    std::optional<machine::TableKinematics> m_kinematics;
     task::MachineStatus m_status;
     std::optional<WorkingPlane> m_workingPlane;
     std::optional<ProgrammedFeed> m_programmedFeed;

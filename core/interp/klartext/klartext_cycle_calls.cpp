@@ -70,6 +70,14 @@ public:
     }
     void threadMove(const Vec3& target, double leadMm, double startAngleDeg) override {
         if (!ok() || !m.checkPathError(m.m_path.flush())) return;
+        // The spindle-synchronised move is one straight move of the axes along the tool; TCPM
+        // counts tip positions on the part, which the tables may have turned away from it.
+        if (m.m_tcpm) {
+            m.fail("tcpm", KERF_TR_NOOP("tapping and thread cutting follow the spindle along "
+                                        "the tool axis: switch TCPM off first (M129 or "
+                                        "FUNCTION RESET TCPM)"));
+            return;
+        }
         const Pose end = m.fromLocal(target);
         const Plane plane = m.workingPlane();
         // A mirror image reverses the hand of the thread; scaling scales its pitch.

@@ -507,6 +507,9 @@ private:
     double rotaryTarget(Axis axis, double current, double programmed, bool incremental) const;
     // False (and the run failed) when a rotary axis would leave its soft limits.
     bool rotaryWithinLimits(const Pose& programTarget);
+    // The same for a stream pose (the machine's axes less the preset): the error, or none.
+    std::optional<interp::PathError> rotaryLimitError(const Pose& stream,
+                                                      const SourceLocation& location) const;
 
     // TCPM (klartext_tcpm.cpp): tool-tip positions on the part while the tables turn.
     void switchTcpm(const TcpmBlock& mode);
@@ -538,6 +541,12 @@ private:
         Pose along(const ContourElement& element, double t) const override;
         double deviation(const Pose& passed, const Pose& meant) const override;
         bool feedAlongElement() const override { return !feedContour; }
+        // The rotary axes turn through the element (PATHCTRL VECTOR, AXIS SPAT): each piece
+        // keeps their soft limits, not just the block's end.
+        std::optional<interp::PathError> refusePiece(
+            const Pose& axes, const SourceLocation& location) const override {
+            return m.rotaryLimitError(axes, location);
+        }
         cycles::CoordinateFrame frame;
         bool feedContour = false;  // F CONT
         bool vectorPath = false;   // PATHCTRL VECTOR

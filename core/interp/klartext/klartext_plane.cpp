@@ -378,22 +378,27 @@ double KlartextInterpreter::rotaryTarget(Axis axis, double current, double progr
 
 bool KlartextInterpreter::rotaryWithinLimits(const Pose& programTarget) {
     if (m_settings.machine == nullptr) return true;
-    std::optional<Pose> stream;  // transformed once, and only for a machine with limited rotaries
+    return checkPathError(rotaryLimitError(m_frame.toWorkpiece(programTarget), m_at));
+}
+
+std::optional<interp::PathError> KlartextInterpreter::rotaryLimitError(
+    const Pose& stream, const SourceLocation& location) const {
+    if (m_settings.machine == nullptr) return std::nullopt;
     for (const machine::AxisConfig& axis : m_settings.machine->axes) {
         if (axis.type != machine::AxisType::Rotary || axis.endless || !axis.enabled) continue;
-        if (!stream) stream = m_frame.toWorkpiece(programTarget);
         const Axis a = *axisFromLetter(axis.letter);
-        const double position = (*stream)[a] + m_settings.presetInMachine[a];
+        const double position = stream[a] + m_settings.presetInMachine[a];
         if (position < axis.minLimit - 1e-9 || position > axis.maxLimit + 1e-9) {
-            fail("limit",
-                 KERF_TR_NOOP("the move would take axis {1} to {2} deg (machine coordinates), "
-                              "beyond its soft limit {3}"),
-                 {std::string(1, axis.letter), formatFixed(position, 3),
-                  formatFixed(position < axis.minLimit ? axis.minLimit : axis.maxLimit, 3)});
-            return false;
+            return interp::PathError{
+                location,
+                "limit",
+                KERF_TR_NOOP("the move would take axis {1} to {2} deg (machine coordinates), "
+                             "beyond its soft limit {3}"),
+                {std::string(1, axis.letter), formatFixed(position, 3),
+                 formatFixed(position < axis.minLimit ? axis.minLimit : axis.maxLimit, 3)}};
         }
     }
-    return true;
+    return std::nullopt;
 }
 
 }  // namespace kerf::klartext

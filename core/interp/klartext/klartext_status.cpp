@@ -120,6 +120,15 @@ interp::ProgramStatus KlartextInterpreter::programStatus() const {
                 plane.axesToProgram[static_cast<size_t>(3 * row + column)] = image[row];
         }
         plane.programAtAxesZeroMm = {origin.x(), origin.y(), origin.z()};
+        if (m_tcpm && m_kinematics) {
+            plane.tipFollowsTables = true;
+            const Vec3 preset = tiltPreset();
+            plane.presetInMachineMm = {preset.x(), preset.y(), preset.z()};
+            for (size_t i = 0; i < 3; ++i)
+                plane.rotaryPresetDeg[i] =
+                    m_settings.presetInMachine.values[static_cast<size_t>(axisIndex(Axis::A)) + i];
+            plane.toolLengthMm = m_tool.effectiveLength();
+        }
         t.workingPlane = plane;
     }
     addParameters(m_q, status);

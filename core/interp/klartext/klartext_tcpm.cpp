@@ -72,7 +72,9 @@ bool KlartextInterpreter::pathFlipsOrientation(Plane plane) const {
 }
 
 bool KlartextInterpreter::pathKeepsArcs(Plane plane) const {
-    if (activePath().space() == &m_tiltedPlaneSpace) return m_frame.keepsArcsInTiltedPlane(plane);
+    // TCPM works in the tilted plane's coordinates too: the tilt itself does not turn an arc of
+    // the plane out of it (a thread mill's helix after PLANE SPATIAL SPB+30 and M128).
+    if (pathInTiltedPlane()) return m_frame.keepsArcsInTiltedPlane(plane);
     return m_frame.keepsArcs(plane);
 }
 

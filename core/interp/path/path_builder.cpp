@@ -77,6 +77,10 @@ void PathBuilder::emitInSpace(const ContourElement& element, bool rapid, double 
                                           "the tool tip on the path; split the block"));
         return;
     }
+    for (const MachinePiece& piece : m_pieces) {
+        m_spaceError = m_space->refusePiece(piece.target, location);
+        if (m_spaceError) return;
+    }
     for (const MachinePiece& piece : m_pieces)
         emitStraight(piece.target, rapid, piece.feed, location);
 }

@@ -7,24 +7,43 @@ namespace kerf::interp {
 
 namespace {
 
-Pose midway(const Pose& a, const Pose& b) {
+Pose between(const Pose& a, const Pose& b, double s) {
     Pose p;
     for (size_t i = 0; i < p.values.size(); ++i)
-        p.values[i] = 0.5 * (a.values[i] + b.values[i]);
+        p.values[i] = a.values[i] + s * (b.values[i] - a.values[i]);
     return p;
 }
 
-// The largest distance between the element's middle of a piece and where the straight move of
-// the axes between the piece's ends passes it.
+// A rotary axis turning this far within a piece is sampled again: a point turned about an axis
+// lies off the chord of every arc shorter than a full turn, so with a sample at least every
+// quarter turn whole turns cannot bring the tip back onto the straight move at the samples only
+// (C+720 in one piece passes a test at its middle with X and Y standing still, while the tip on
+// the part runs twice round and the axes, turning with it, would swing through their limits).
+constexpr double kRotaryDegPerSample = 90.0;
+
+int samplesOf(const Pose& start, const Pose& end) {
+    double turn = 0.0;
+    for (const Axis axis : {Axis::A, Axis::B, Axis::C})
+        turn = std::max(turn, std::abs(end[axis] - start[axis]));
+    return std::max(1, static_cast<int>(std::ceil(turn / kRotaryDegPerSample)));
+}
+
+// The largest distance between the element and where the straight move of the axes between a
+// piece's ends passes it, at the middle of each piece (and, where the rotary axes turn far, at
+// the middles of its quarter turns).
 double worstDeviation(const PathSpace& space, const ContourElement& element, int pieces,
                       double toleranceMm) {
     double worst = 0.0;
     Pose start = space.toMachine(element.start);
     for (int i = 0; i < pieces && worst <= toleranceMm; ++i) {
         const Pose end = space.toMachine(space.along(element, double(i + 1) / pieces));
-        const Pose passed = space.toPath(midway(start, end));
-        const Pose meant = space.along(element, (i + 0.5) / pieces);
-        worst = std::max(worst, space.deviation(passed, meant));
+        const int samples = samplesOf(start, end);
+        for (int j = 0; j < samples && worst <= toleranceMm; ++j) {
+            const double s = (j + 0.5) / samples;
+            const Pose passed = space.toPath(between(start, end, s));
+            const Pose meant = space.along(element, (i + s) / pieces);
+            worst = std::max(worst, space.deviation(passed, meant));
+        }
         start = end;
     }
     return worst;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/geometry/contour_element.h"
+#include "core/interp/path/path_move.h"
 
 namespace kerf::interp {
 
@@ -28,6 +29,13 @@ public:
     // True: F is the feed along the element (TCPM F TCP); false: the feed of the axes as the
     // planner counts them (F CONT).
     virtual bool feedAlongElement() const { return true; }
+    // Why the axes may not stand at `machine`, a piece end inside an element (a rotary axis
+    // beyond its soft limit while TCPM turns it through the element); none by default. The
+    // element then leaves nothing.
+    virtual std::optional<PathError> refusePiece(const Pose& /*machine*/,
+                                                 const SourceLocation& /*location*/) const {
+        return std::nullopt;
+    }
 };
 
 // One straight piece of the machine's axes and the feed that keeps the programmed feed along the
@@ -41,9 +49,11 @@ struct MachinePiece {
 inline constexpr int kMaxMachinePieces = 1 << 16;
 
 // Splits `element` (path coordinates) into the fewest pieces, a power of two, whose straight
-// moves of the axes stay within `toleranceMm` of the element at the middle of each piece (seen
-// back in path coordinates). False (and `out` unchanged) when more than kMaxMachinePieces would
-// be needed. Pure; any thread.
+// moves of the axes stay within `toleranceMm` of the element at the middle of each piece and,
+// where a rotary axis turns more than a quarter turn in a piece, at least every quarter turn (seen
+// back in path coordinates). The pieces so follow the axes along the whole element, which is what
+// the soft-limit check of the planner sees. False (and `out` unchanged) when more than
+// kMaxMachinePieces would be needed. Pure; any thread.
 bool machinePieces(const PathSpace& space, const ContourElement& element, double feed,
                    double toleranceMm, std::vector<MachinePiece>& out);
 

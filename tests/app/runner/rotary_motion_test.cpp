@@ -122,6 +122,37 @@ TEST_F(RotaryMotion, RotaryBeyondItsSoftLimitIsRefused) {
         << readText(dir / "errors");
 }
 
+// TCPM on mill5 (the workpiece origin at the pivot, tool 4): the tip stays at (r, 0, 50) on the
+// part while the C table turns two full turns (C+720), so the axes, (r cos C, -r sin C, 50), run
+// twice round a circle of radius r. Both ends stand at (r, 0, 50). With r = 250 the circle stays
+// inside X +-400 and Y +-300 and Y reaches -250 (at C = 90); with r = 350 Y reaches -350 at
+// C = 90, beyond its limit -300, and the program is refused at block 4 before anything moves.
+// (The pieces used to be tested at their middles only, where a 720 degree turn brings the tip
+// back onto the unmoved axes: one piece, X and Y standing while the tip circled the part.)
+TEST_F(RotaryMotion, TcpmTableTurnBeyondAnAxisLimitInMidBlockIsRefused) {
+    auto program = [](int r) {
+        return "0 BEGIN PGM TURN MM\n1 TOOL CALL 4 Z S1000\n2 L X+" + std::to_string(r) +
+               " Y+0 Z+50 R0 FMAX\n3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+               "4 L C+720 F3000\n5 FUNCTION RESET TCPM\n6 END PGM TURN MM\n";
+    };
+    std::ofstream(dir / "INSIDE.H") << program(250);
+    nlohmann::json report;
+    ASSERT_EQ(run("INSIDE.H", report), 0) << readText(dir / "errors");
+    EXPECT_NEAR(report["feed_bounds"]["min"]["Y"].get<double>(), -250.0, 0.005);
+    EXPECT_NEAR(report["feed_bounds"]["max"]["Y"].get<double>(), 250.0, 0.005);
+    EXPECT_NEAR(report["feed_bounds"]["min"]["X"].get<double>(), -250.0, 0.005);
+    EXPECT_NEAR(report["final_position"]["C"].get<double>(), 720.0, 1e-6);
+    std::ofstream(dir / "TURN.H") << program(350);
+    EXPECT_NE(run("TURN.H", report), 0);
+    EXPECT_FALSE(report["ok"].get<bool>());
+    EXPECT_TRUE(report["motion"]["refused"].get<bool>());
+    const std::string errors = readText(dir / "errors");
+    EXPECT_NE(errors.find("TURN.H:5:1: error: Block 4: the move would take axis Y to -30"),
+              std::string::npos)
+        << errors;
+    EXPECT_NE(errors.find("beyond its soft limit -300.000"), std::string::npos) << errors;
+}
+
 // mill5h (B head, pivot 200 mm above the spindle nose), tool 1 of length 80: PLANE ... B+90 MOVE
 // keeps the tip, so the axes make up for the head by (200 + 80)(+1, 0, -1): from X+100 the X axis
 // goes to 380 (inside its +400), from X+150 to 430, which the soft limit refuses, naming the

@@ -187,6 +187,37 @@ TEST(PositionDisplay, ShowsTheTiltedPlanesCoordinatesExceptInRef) {
     EXPECT_FALSE(display.kindLabel().contains(QStringLiteral("3D ROT")));
 }
 
+// Under TCPM in a plane tilted by SPB+30 on mill5 (B/C tables, the preset at the pivot) the tables
+// stand at B+60 C+90 while the tip is at the plane's (10, 5, 2): the axes hold
+// Ry(-60) Rz(-90) Ry(30) (10, 5, 2) = (5.330127, -9.660254, 2.696152)
+// (tests/core/task/working_plane_position_test.cpp). NOML shows the tip in the plane.
+TEST(PositionDisplay, ShowsTheTipInTheTiltedPlaneWhileTcpmTurnsTheTables) {
+    test::testApp();
+    auto mill5 = machine::loadMachine("mill5");
+    ASSERT_TRUE(mill5.ok());
+    PositionDisplay display(*mill5);
+    const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+    PositionDisplay::WorkingPlane plane;
+    plane.axesToProgram = {c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c};
+    plane.tipFollowsTables = true;
+    plane.presetInMachineMm = {0.0, 0.0, -400.0};
+    task::MachineStatus status;
+    status.axes[0] = axisAt(5.330127, 5.330127, 0.0, 0.0);
+    status.axes[1] = axisAt(-9.660254, -9.660254, 0.0, 0.0);
+    status.axes[2] = axisAt(2.696152, 2.696152, 0.0, 0.0);
+    status.axes[4] = axisAt(60.0, 60.0, 0.0, 0.0);
+    status.axes[5] = axisAt(90.0, 90.0, 0.0, 0.0);
+    display.setStatus(status);
+    DisplaySettings settings;
+    settings.positionKind = PositionKind::Nominal;
+    display.setDisplaySettings(settings);
+    display.setWorkingPlane(plane);
+    EXPECT_EQ(display.axisText(Axis::X), "+10.000");
+    EXPECT_EQ(display.axisText(Axis::Y), "+5.000");
+    EXPECT_EQ(display.axisText(Axis::Z), "+2.000");
+    EXPECT_EQ(display.axisText(Axis::B), "+60.000");
+}
+
 TEST(OverrideControls, KeysStepTheOverrideAndTheyAreTouchSized) {
     test::testApp();
     OverrideControls controls;

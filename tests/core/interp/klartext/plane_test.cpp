@@ -590,6 +590,94 @@ TEST_F(PlaneTest, TcpmPathctrlVectorTurnsTheToolInOnePlane) {
         EXPECT_NEAR(p[Axis::B], 30.0, 1e-9);
 }
 
+// Thread milling under TCPM in a tilted plane: PLANE SPATIAL SPB+30 TURN solves B+30 C0, M128
+// keeps the tip at the plane's (10, 20, 50) while the tables turn on to B+40 C+20, and cycle 262
+// (nominal diameter 10, tool of radius 0 without a tool table) mills its helix about the hole's
+// axis (10, 20) in the plane: every piece end's tip on the part, Rz(C) Ry(B) axes, turned back
+// into the plane by Ry(-30), lies within 5 of that axis (half the path tolerance, 0.005, for the
+// pieces) and reaches 5 there. 263, 264, 265 and 267 run there too. Tapping (cycle 207: one
+// spindle-synchronised straight move of the axes) is refused while TCPM is on, with the reason.
+TEST_F(PlaneTest, ThreadMillingRunsUnderTcpmInTheTiltedPlane) {
+    const std::string before =
+        "1 TOOL CALL 5 Z S1000\n2 L X+10 Y+20 Z+50 R0 FMAX M3\n"
+        "3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n4 M128\n5 L B+40 C+20 F1000\n";
+    const std::string thread262 =
+        "6 CYCL DEF 262 THREAD MILLING\n"
+        "  Q335=10\n  Q239=+1.5\n  Q201=-6\n  Q355=0\n  Q253=750\n  Q351=+1\n"
+        "  Q200=2\n  Q203=+0\n  Q204=20\n  Q207=500\n  Q512=0\n"
+        "7 CYCL CALL\n";
+    ASSERT_EQ(run("mill5", before + thread262), interp::RunStatus::Finished) << firstError();
+    const std::vector<Pose> helix = movesOf(7);
+    ASSERT_GT(helix.size(), 10u);
+    const Eigen::Matrix3d back = machine::principalRotation('B', -30.0);
+    double widest = 0.0;
+    for (const Pose& p : helix) {
+        const Vec3 inPlane = back * tipOnMill5(p);
+        const double radius = std::hypot(inPlane.x() - 10.0, inPlane.y() - 20.0);
+        EXPECT_LE(radius, 5.0 + 0.005);
+        widest = std::max(widest, radius);
+    }
+    EXPECT_NEAR(widest, 5.0, 0.005);
+    const std::vector<std::string> others{
+        "6 CYCL DEF 263 THREAD MLLNG/CNTSNKG\n"
+        "  Q335=10\n  Q239=+1.5\n  Q201=-6\n  Q356=-8\n  Q253=750\n  Q351=+1\n"
+        "  Q200=2\n  Q357=0.2\n  Q358=+0\n  Q359=+0\n  Q203=+0\n  Q204=20\n"
+        "  Q254=150\n  Q207=500\n  Q512=0\n"
+        "7 CYCL CALL\n",
+        "6 CYCL DEF 264 THREAD DRILLNG/MLLNG\n"
+        "  Q335=10\n  Q239=+1.5\n  Q201=-6\n  Q356=-8\n  Q253=750\n  Q351=+1\n"
+        "  Q202=5\n  Q258=0.2\n  Q257=0\n  Q256=0.2\n  Q358=-1\n  Q359=1\n"
+        "  Q200=2\n  Q203=+0\n  Q204=20\n  Q206=150\n  Q207=500\n  Q512=100\n"
+        "7 CYCL CALL\n",
+        "6 CYCL DEF 265 HEL. THREAD DRLG/MLG\n"
+        "  Q335=10\n  Q239=+1.5\n  Q201=-3\n  Q253=750\n  Q358=-1\n  Q359=1\n"
+        "  Q360=1\n  Q200=2\n  Q203=+0\n  Q204=20\n  Q254=150\n  Q207=500\n"
+        "7 CYCL CALL\n",
+        "6 CYCL DEF 267 OUTSIDE THREAD MLLNG\n"
+        "  Q335=10\n  Q239=+1.5\n  Q201=-3\n  Q355=1\n  Q253=750\n  Q351=+1\n"
+        "  Q200=2\n  Q358=+0\n  Q359=+0\n  Q203=+0\n  Q204=20\n  Q254=150\n"
+        "  Q207=500\n  Q512=0\n"
+        "7 CYCL CALL\n"};
+    for (const std::string& cycle : others) {
+        EXPECT_EQ(run("mill5", before + cycle), interp::RunStatus::Finished)
+            << cycle << firstError();
+        EXPECT_FALSE(movesOf(7).empty()) << cycle;
+    }
+    EXPECT_EQ(run("mill5", before + "6 CYCL DEF 207 RIGID TAPPING\n  Q200=2\n  Q201=-6\n  "
+                                    "Q239=+1\n  Q203=+0\n  Q204=20\n7 CYCL CALL\n"),
+              interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("switch TCPM off first"), std::string::npos) << firstError();
+}
+
+// PATHCTRL VECTOR turns the tool on the great circle between its directions, which can lean it
+// further than either end: from B+108 C0, tool (sin108, 0, cos108), to B+108 C+90, tool
+// (0, sin108, cos108), the middle direction (sin108/2, sin108/2, cos108) / 0.740099 leans
+// acos(cos108 / 0.740099) = acos(-0.417535) = 114.679 deg from Z, so B passes 110 although both
+// ends stand at 108: the block is refused at its line before anything of it leaves. From B+100
+// the middle leans acos(cos100 / sqrt(sin100^2 / 2 + cos100^2)) = 104.002 deg: the block runs,
+// and B reaches that lean in its middle (C+45), a piece end.
+TEST_F(PlaneTest, PathctrlVectorKeepsTheRotaryLimitsAlongTheBlock) {
+    auto blocks = [](int b) {
+        return "1 L X+0 Y+0 Z+50 R0 FMAX\n2 FUNCTION TCPM F TCP AXIS POS PATHCTRL VECTOR\n"
+               "3 L B+" +
+               std::to_string(b) + " C+0 F3000\n4 L C+90 F3000\n5 FUNCTION RESET TCPM\n";
+    };
+    ASSERT_EQ(run("mill5", blocks(100)), interp::RunStatus::Finished) << firstError();
+    double highestB = 0.0;
+    for (const Pose& p : movesOf(4))
+        highestB = std::max(highestB, p[Axis::B]);
+    const double c100 = std::cos(100.0 * M_PI / 180.0), s100 = std::sin(100.0 * M_PI / 180.0);
+    EXPECT_NEAR(highestB,
+                std::acos(c100 / std::sqrt(s100 * s100 / 2.0 + c100 * c100)) * 180.0 / M_PI, 1e-9);
+    EXPECT_EQ(run("mill5", blocks(108)), interp::RunStatus::Failed);
+    const Diagnostic& d = k->diagnostics().front();
+    EXPECT_EQ(d.line, 5u);  // block 4
+    EXPECT_NE(d.message().find("the move would take axis B to 11"), std::string::npos)
+        << d.message();
+    EXPECT_NE(d.message().find("beyond its soft limit 110.000"), std::string::npos) << d.message();
+    EXPECT_TRUE(movesOf(4).empty());
+}
+
 }  // namespace
 }  // namespace kerf::klartext
 
