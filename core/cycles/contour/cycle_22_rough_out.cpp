@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/contour/train_rest.h"
@@ -207,7 +208,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                     mill, plunge, options);
         previous = depth;
     }
-    if (started) path.moveW(d.clearanceHeight, retract);
+    if (started) finishSlCycle(path, ctx, d.clearanceHeight, d.up, retract);
     return std::nullopt;
 }
 

@@ -681,6 +681,51 @@ TEST(SlCycles, ClearingCacheReusesOnlyAnIdenticalPlan) {
     EXPECT_FALSE(fresh.back().fullWidth);
 }
 
+// posAfterContPocket (spec §1.6): ToolAxClearanceHeight ends at Q7 = 50 straight above the
+// last cut (Q208 = 0: at Q12); PosBeforeMachining goes on from there back to where the tool was
+// before the cycle: from (7, -3, 100) (above Q7) up to 100 first, then over (7, -3); from
+// (7, -3, 30) (below Q7) over (7, -3) at 50, then down to 30, at rapid.
+TEST(SlCycles, EndPositionFollowsPosAfterContPocket) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.5);
+    CycleContext ctx = pocketWithIsland(data);
+    ctx.start = {7.0, -3.0, 100.0};
+    Recorder axisOnly;
+    ASSERT_FALSE(run(22, roughOut(5.0), ctx, axisOnly));
+    ASSERT_GE(axisOnly.moves.size(), 2u);
+    const Move& lastCut = axisOnly.moves[axisOnly.moves.size() - 2];
+    const Move& up = axisOnly.moves.back();
+    EXPECT_EQ(up.kind, Move::Line);
+    EXPECT_DOUBLE_EQ(up.feed.value, 350.0);
+    EXPECT_NEAR((up.target - Vec3(lastCut.target.x(), lastCut.target.y(), 50.0)).norm(), 0.0, 1e-9);
+
+    ctx.slReturnToStart = true;
+    Recorder back;
+    ASSERT_FALSE(run(22, roughOut(5.0), ctx, back));
+    ASSERT_EQ(back.moves.size(), axisOnly.moves.size() + 2);
+    const Move& higher = back.moves[back.moves.size() - 2];
+    EXPECT_EQ(higher.kind, Move::Rapid);
+    EXPECT_NEAR((higher.target - Vec3(up.target.x(), up.target.y(), 100.0)).norm(), 0.0, 1e-9);
+    EXPECT_EQ(back.moves.back().kind, Move::Rapid);
+    EXPECT_NEAR((back.moves.back().target - Vec3(7.0, -3.0, 100.0)).norm(), 0.0, 1e-9);
+
+    ctx.start = {7.0, -3.0, 30.0};
+    ctx.roughingRadius = 5.0;
+    CycleValues side;
+    const std::pair<uint16_t, double> sideValues[] = {
+        {9, 1.0}, {10, 5.0}, {11, 100.0}, {12, 400.0}, {14, 0.0}};
+    for (auto [q, value] : sideValues)
+        side.set(q, value);
+    Recorder below;
+    ASSERT_FALSE(run(24, side, ctx, below));
+    ASSERT_GE(below.moves.size(), 3u);
+    const Move* tail = &below.moves[below.moves.size() - 3];
+    EXPECT_NEAR(tail[0].target.z(), 50.0, 1e-9);
+    EXPECT_EQ(tail[1].kind, Move::Rapid);
+    EXPECT_NEAR((tail[1].target - Vec3(7.0, -3.0, 50.0)).norm(), 0.0, 1e-9);
+    EXPECT_EQ(tail[2].kind, Move::Rapid);
+    EXPECT_NEAR((tail[2].target - Vec3(7.0, -3.0, 30.0)).norm(), 0.0, 1e-9);
+}
+
 CycleValues floorFinishing() {
     CycleValues v;
     v.set(11, 100.0);
