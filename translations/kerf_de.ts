@@ -8502,10 +8502,6 @@ wählen</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>der Bogenradius {1} ist kleiner als der Schneidenradius {2} des Werkzeugs: die Schneide kann ihm nicht folgen</translation>
     </message>
-    <message>
-        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
-        <translation>SL-Zyklen (21-25, 275, 276) enden wieder an der Position vor dem Zyklus (posAfterContPocket = PosBeforeMachining der TNC); false: auf der sicheren Höhe Q7, nur in der Werkzeugachse (ToolAxClearanceHeight)</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8502,10 +8502,6 @@ solución</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>el radio del arco {1} es menor que el radio de punta {2} de la herramienta: la punta no puede seguirlo</translation>
     </message>
-    <message>
-        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
-        <translation>Los ciclos SL (21-25, 275, 276) terminan de nuevo en la posición anterior al ciclo (posAfterContPocket = PosBeforeMachining del TNC); false: en la altura de seguridad Q7, solo en el eje de la herramienta (ToolAxClearanceHeight)</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

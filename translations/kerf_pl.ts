@@ -8505,10 +8505,6 @@ rozwiązanie</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>promień łuku {1} jest mniejszy niż promień naroża narzędzia {2}: naroże nie może za nim podążać</translation>
     </message>
-    <message>
-        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
-        <translation>Cykle SL (21-25, 275, 276) kończą się z powrotem w pozycji sprzed cyklu (posAfterContPocket = PosBeforeMachining sterowania TNC); false: na bezpiecznej wysokości Q7, tylko w osi narzędzia (ToolAxClearanceHeight)</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

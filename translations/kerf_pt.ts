@@ -8502,10 +8502,6 @@ solução</translation>
         <source>the arc&apos;s radius {1} is smaller than the tool nose radius {2}: the nose cannot follow it</source>
         <translation>o raio do arco {1} é menor que o raio da ponta {2} da ferramenta: a ponta não o pode seguir</translation>
     </message>
-    <message>
-        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
-        <translation>Os ciclos SL (21-25, 275, 276) terminam de novo na posição anterior ao ciclo (posAfterContPocket = PosBeforeMachining do TNC); false: na altura segura Q7, apenas no eixo da ferramenta (ToolAxClearanceHeight)</translation>
-    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
