@@ -105,6 +105,9 @@ struct CycleContext {
     // Clearing plans of earlier calls, kept by the caller across cycle calls (22 and 23 clear
     // the same region): null plans afresh every time.
     contour::ClearingCache* clearingCache = nullptr;
+    // Machine parameter posAfterContPocket: the SL cycles (21-25, 275, 276) end back at `start`
+    // (PosBeforeMachining) instead of at the clearance height in the tool axis only.
+    bool slReturnToStart = false;
     // Cycles 25 and 275: the contour as a path; cycle 270's values (null without it).
     ContourTrain train;
     const CycleValues* trainData = nullptr;

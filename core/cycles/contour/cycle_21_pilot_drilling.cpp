@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/detail/cycle_list.h"
@@ -93,7 +94,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         path.rapidW(d.aboveSurface());
     }
     if (!started) return std::nullopt;
-    path.rapidW(d.clearanceHeight);
+    finishSlCycle(path, ctx, d.clearanceHeight, d.up, Feed::rapid());
     return std::nullopt;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/contour/train_rest.h"
@@ -67,16 +68,12 @@ std::optional<CycleError> plungeFeed(const CycleValues& v, const CycleContext& c
 
 // With a coarse roughing tool: only where it could not reach (the rest material, which does not
 // know the coarse tool's DR), widened by the tool radius so the tool reaches all of it.
-std::optional<CycleError> restRegion(const CycleValues& v, const CycleContext& ctx,
-                                     const ContourArea& area, size_t level, const ContourData& d,
-                                     Region& region) {
-    ToolInfo coarse;
-    if (auto e = coarseTool(22, v, ctx, coarse)) return e;
+Region restRegion(const ToolInfo& coarse, const CycleContext& ctx, const ContourArea& area,
+                  size_t level, const ContourData& d, const Region& region) {
     const Region coarseCentre = toolCentreRegion(area, coarse.radius + d.sideAllowance, level);
     const Region cleared = offsetRegion(coarseCentre, coarse.radius);
     const Region rest = subtract(offsetRegion(area.levels[level].area, -d.sideAllowance), cleared);
-    region = rest.empty() ? Region{} : intersect(region, offsetRegion(rest, ctx.tool.radius));
-    return std::nullopt;
+    return rest.empty() ? Region{} : intersect(region, offsetRegion(rest, ctx.tool.radius));
 }
 
 // The roughing depths: Q10 steps to the deepest floor less Q4, and each shallower level's floor
@@ -98,24 +95,9 @@ std::optional<CycleError> roughingDepths(const CycleValues& v, const ContourArea
 // Q404 = 1: the tool lifts between the separate rest areas (each outer boundary of the rest
 // region with its holes): the first pass in each area is reached from above.
 void liftBetweenAreas(std::vector<ClearingPass>& passes, const Region& region) {
-    auto areaOf = [&](const Vec2& p) {
-        size_t best = region.boundaries.size();
-        double bestArea = 0.0;
-        for (size_t i = 0; i < region.boundaries.size(); ++i) {
-            const double a = region.boundaries[i].signedArea();
-            if (a <= 0.0 || (best < region.boundaries.size() && a >= bestArea)) continue;
-            if (Region{{region.boundaries[i]}}.contains(p)) {
-                best = i;
-                bestArea = a;
-            }
-        }
-        return best;
-    };
-    size_t previous = region.boundaries.size();
-    for (ClearingPass& pass : passes) {
-        const size_t area = areaOf(pass.path.segments.front().start);
-        if (area != previous) pass.straightLink = false;
-        previous = area;
+    const std::vector<size_t> areas = areasOfPasses(passes, region);
+    for (size_t i = 1; i < passes.size(); ++i) {
+        if (areas[i] != areas[i - 1]) passes[i].straightLink = false;
     }
 }
 
@@ -169,23 +151,29 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
     const Feed mill = v.feed(12);
     const Feed retract = v.feedOr(208, 12);
     // The clearing of each level, planned when a depth first needs it.
+    ToolInfo coarse;
+    if (v.number(18) > 0.0) {
+        if (auto e = coarseTool(22, v, ctx, coarse)) return e;
+    }
+    // Q404 decides only for a fine tool of at least half the coarse one's radius (spec); a
+    // smaller one always lifts between the rest areas [interp].
+    const bool alongContour = v.number(404) <= 0.5 && radius >= coarse.radius / 2.0 - 1e-9;
     std::vector<std::optional<std::vector<ClearingPass>>> plans(area.levels.size());
     auto plan = [&](size_t level) -> std::optional<CycleError> {
         if (plans[level]) return std::nullopt;
         const Region room = toolCentreRegion(area, radius + d.sideAllowance, level);
         if (room.empty() && level == 0) return pocket::toolTooLarge(22);
         Region region = room;
-        if (v.number(18) > 0.0 && !region.empty()) {
-            if (auto e = restRegion(v, ctx, area, level, d, region)) return e;
-        }
+        if (v.number(18) > 0.0 && !region.empty())
+            region = restRegion(coarse, ctx, area, level, d, region);
         std::vector<ClearingPass> passes;
         if (!region.empty()) {
             if (auto e = planClearing(22, region, d.overlap * radius, d.climb, planningStart(ctx),
                                       passes, ctx.clearingCache))
                 return e;
             // Q404 between the rest areas: 1 lifts, 0 runs along the contour at the depth.
-            if (v.number(18) > 0.0 && v.number(404) > 0.5) liftBetweenAreas(passes, region);
-            if (v.number(18) > 0.0 && v.number(404) <= 0.5) linkAlongContour(passes, room);
+            if (v.number(18) > 0.0 && !alongContour) liftBetweenAreas(passes, region);
+            if (v.number(18) > 0.0 && alongContour) linkAlongContour(passes, room, region);
             // Where no helix fits (a slot), reciprocating over LCUTS / tan(ANGLE) (spec).
             const double strokes = options.helixTan > 0.0 && ctx.tool.cuttingLength > 0.0
                                        ? ctx.tool.cuttingLength / options.helixTan
@@ -220,7 +208,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
                     mill, plunge, options);
         previous = depth;
     }
-    if (started) path.moveW(d.clearanceHeight, retract);
+    if (started) finishSlCycle(path, ctx, d.clearanceHeight, d.up, retract);
     return std::nullopt;
 }
 

@@ -1,5 +1,6 @@
 // Cycle 23 FLOOR FINISHING (spec §6): the roughing's clearing once more at the floor, removing
 // the floor allowance Q4; the side allowance stays.
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/detail/cycle_list.h"
@@ -65,7 +66,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         runClearing(path, passes, d, d.at(bottom), roughFloor + d.up * d.setUpClearance, v.feed(12),
                     v.feed(11));
     }
-    path.moveW(d.clearanceHeight, v.feedOr(208, 12));
+    finishSlCycle(path, ctx, d.clearanceHeight, d.up, v.feedOr(208, 12));
     return std::nullopt;
 }
 

@@ -2,6 +2,7 @@
 // the plunging depths, approached and left on quarter arcs from the free side.
 #include <algorithm>
 
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/detail/cycle_list.h"
@@ -95,7 +96,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         }
         top = area.levels[level].bottom;
     }
-    path.rapidW(d.clearanceHeight);
+    finishSlCycle(path, ctx, d.clearanceHeight, d.up, Feed::rapid());
     return std::nullopt;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/cycles/contour/contour_train.h"
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/contour/train_rest.h"
@@ -119,7 +120,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
         }
         previous = depths[k];
     }
-    path.rapidW(clearance);
+    finishSlCycle(path, ctx, clearance, up, Feed::rapid());
     return std::nullopt;
 }
 

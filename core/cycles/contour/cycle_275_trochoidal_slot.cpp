@@ -7,6 +7,7 @@
 
 #include "core/cycles/common_parameters.h"
 #include "core/cycles/contour/contour_train.h"
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/trochoid.h"
 #include "core/cycles/detail/cycle_list.h"
@@ -212,7 +213,7 @@ std::optional<CycleError> expand(const CycleValues& given, const CycleContext& c
             }
         }
     }
-    path.rapidW(l.top);  // posAfterContPocket: the tool axis only
+    finishSlCycle(path, ctx, l.top, l.up, Feed::rapid());
     return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/cycles/contour/contour_train.h"
+#include "core/cycles/contour/sl_end_position.h"
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/sl_parameters.h"
 #include "core/cycles/contour/train_rest.h"
@@ -125,7 +126,7 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, 
             }
         }
     }
-    path.rapidW(clearance);
+    finishSlCycle(path, ctx, clearance, up, Feed::rapid());
     return std::nullopt;
 }
 

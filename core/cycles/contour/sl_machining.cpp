@@ -7,6 +7,7 @@
 
 #include "core/base/translate.h"
 #include "core/cycles/drilling/hole_levels.h"
+#include "core/geometry/segment_intersection.h"
 
 namespace kerf::cycles::contour {
 
@@ -319,21 +320,120 @@ void followPath(CyclePath& path, const ClosedContour& contour, const Feed& feed)
     followSegments(path, contour.segments, feed);
 }
 
-void linkAlongContour(std::vector<ClearingPass>& passes, const Region& region) {
+std::vector<size_t> areasOfPasses(const std::vector<ClearingPass>& passes, const Region& region) {
+    const size_t none = region.boundaries.size();
+    std::vector<size_t> areas;
+    for (const ClearingPass& pass : passes) {
+        const Vec2 p = pass.path.segments.front().start;
+        size_t best = none;
+        double bestArea = 0.0;
+        for (size_t i = 0; i < region.boundaries.size(); ++i) {
+            const double a = region.boundaries[i].signedArea();
+            if (a <= 0.0 || (best != none && a >= bestArea)) continue;
+            if (Region{{region.boundaries[i]}}.contains(p)) {
+                best = i;
+                bestArea = a;
+            }
+        }
+        areas.push_back(best);
+    }
+    return areas;
+}
+
+namespace {
+
+// The point at the fraction `t` of a segment's length.
+Vec2 pointAlong(const PlanarSegment& s, double t) {
+    if (s.kind == PlanarSegment::Kind::Line) return s.start + t * (s.end - s.start);
+    const Vec2 r = s.start - s.center;
+    const double a = t * s.sweep;
+    return s.center + Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
+                           std::sin(a) * r.x() + std::cos(a) * r.y());
+}
+
+// The fraction of a segment's length at `p` on it.
+double fractionAt(const PlanarSegment& s, const Vec2& p) {
+    if (s.kind == PlanarSegment::Kind::Line) {
+        const Vec2 d = s.end - s.start;
+        return (p - s.start).dot(d) / d.squaredNorm();
+    }
+    return segmentUpTo(s, p).sweep / s.sweep;
+}
+
+// Whether some stretch of `path` lies in `area` (its boundary counts: the tool centre there
+// cuts the area's material). The path is cut where it meets the area's boundaries and at
+// their corners on it; a stretch between cuts lies wholly in or out, so its middle decides.
+bool entersArea(const std::vector<PlanarSegment>& path, const Region& area) {
+    for (const PlanarSegment& s : path) {
+        if (s.length() <= 1e-9) continue;
+        std::vector<double> cuts{0.0, 1.0};
+        for (const ClosedContour& c : area.boundaries) {
+            for (const PlanarSegment& b : c.segments) {
+                for (const Vec2& p : carrierIntersections(s, b)) {
+                    if (s.distanceTo(p) <= 1e-9 && b.distanceTo(p) <= 1e-9)
+                        cuts.push_back(fractionAt(s, p));
+                }
+                if (s.distanceTo(b.start) <= 1e-9) cuts.push_back(fractionAt(s, b.start));
+            }
+        }
+        std::sort(cuts.begin(), cuts.end());
+        for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+            if (cuts[i + 1] - cuts[i] > 1e-9 &&
+                area.contains(pointAlong(s, 0.5 * (cuts[i] + cuts[i + 1])))) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// The rest area `index` of `rest`: its outer boundary with the holes inside it.
+Region restArea(const Region& rest, size_t index) {
+    Region area{{rest.boundaries[index]}};
+    const Region outer = area;
+    for (const ClosedContour& c : rest.boundaries) {
+        if (c.signedArea() < 0.0 && outer.contains(c.segments.front().start))
+            area.boundaries.push_back(c);
+    }
+    return area;
+}
+
+}  // namespace
+
+void linkAlongContour(std::vector<ClearingPass>& passes, const Region& room, const Region& rest) {
+    const std::vector<size_t> areas = areasOfPasses(passes, rest);
+    std::vector<size_t> lastPass(rest.boundaries.size() + 1, 0);
+    for (size_t i = 0; i < passes.size(); ++i)
+        lastPass[areas[i]] = i;
     for (size_t i = 1; i < passes.size(); ++i) {
         ClearingPass& pass = passes[i];
         if (pass.straightLink) continue;
         const Vec2 from = passes[i - 1].path.segments.front().start;
         const Vec2 to = pass.path.segments.front().start;
-        for (const ClosedContour& boundary : region.boundaries) {
+        // Areas with passes still to come, other than the one the link leads into.
+        std::vector<Region> pending;
+        for (size_t a = 0; a < rest.boundaries.size(); ++a) {
+            if (rest.boundaries[a].signedArea() > 0.0 && a != areas[i] && lastPass[a] >= i)
+                pending.push_back(restArea(rest, a));
+        }
+        auto clear = [&](const std::vector<PlanarSegment>& way) {
+            return std::none_of(pending.begin(), pending.end(),
+                                [&](const Region& area) { return entersArea(way, area); });
+        };
+        for (const ClosedContour& boundary : room.boundaries) {
             if (boundary.distanceTo(from) > 1e-6 || boundary.distanceTo(to) > 1e-6) continue;
             const ClosedContour ring = startingNearest(boundary, from);
             double forward = 0.0;
             double backward = 0.0;
             std::vector<PlanarSegment> ahead = pathTo(ring, to, forward);
             std::vector<PlanarSegment> behind = pathTo(ring.reversed(), to, backward);
-            pass.contourLink = forward <= backward ? std::move(ahead) : std::move(behind);
-            pass.straightLink = true;
+            if (backward < forward) std::swap(ahead, behind);
+            for (std::vector<PlanarSegment>* way : {&ahead, &behind}) {
+                if (!clear(*way)) continue;
+                pass.contourLink = std::move(*way);
+                pass.straightLink = true;
+                break;
+            }
             break;
         }
     }
@@ -433,15 +533,15 @@ void reciprocateDown(CyclePath& path, const ClosedContour& contour, double lengt
     if (!forward) stroke(path, piece, false, toW, feed);
 }
 
-// Over the point `approachRadius` back along the pass's start tangent, down to the arc's top (at
-// rapid as far as the re-entry height), then the quarter arc about the point that high above the
-// start, ending on the start tangent to the floor and to the pass.
+// Over the point `approachRadius` back along u from the pass's start, down to the arc's top (at
+// rapid as far as the re-entry height), then the quarter arc in the plane of u and the tool axis
+// about the point that high above the start, ending on the start tangent to the floor.
 void approachOnArc(CyclePath& path, const ClearingPass& pass, const ContourData& data, double w,
                    double reentryW, const Feed& feed) {
     const Vec2 start = pass.path.segments.front().start;
-    const Vec2 tangent = pass.path.segments.front().startTangent();
+    const Vec2 along(pass.approachDirection, 0.0);
     const double top = w + data.up * pass.approachRadius;
-    path.rapidUv(start - pass.approachRadius * tangent);
+    path.rapidUv(start - pass.approachRadius * along);
     path.rapidW((reentryW - top) * data.up > 0.0 ? reentryW : top);
     path.moveW(top, feed);
     path.spatialArc({start.x(), start.y(), w}, {start.x(), start.y(), top}, feed);
@@ -488,11 +588,19 @@ void placeApproachArcs(std::vector<ClearingPass>& passes, const Region& region, 
     for (ClearingPass& pass : passes) {
         if (pass.straightLink) continue;
         const Vec2 start = pass.path.segments.front().start;
-        const Vec2 back = -pass.path.segments.front().startTangent();
-        for (double r = radius; r >= radius / 4.0 - 1e-12; r /= 2.0) {
-            if (containsLine(region, start + r * back, start)) {
-                pass.approachRadius = r;
-                break;
+        // Never against the pass: either way only when it starts across u.
+        const double along = pass.path.segments.front().startTangent().x();
+        std::vector<double> directions{along < -1e-9 ? -1.0 : 1.0};
+        if (std::fabs(along) <= 1e-9) directions.push_back(-1.0);
+        bool placed = false;
+        for (double r = radius; r >= radius / 4.0 - 1e-12 && !placed; r /= 2.0) {
+            for (double direction : directions) {
+                if (containsLine(region, start - Vec2(r * direction, 0.0), start)) {
+                    pass.approachRadius = r;
+                    pass.approachDirection = direction;
+                    placed = true;
+                    break;
+                }
             }
         }
     }

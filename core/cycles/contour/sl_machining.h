@@ -77,8 +77,10 @@ struct ClearingPass {
     // before (cycle 22 Q404 = 0 between rest areas) instead of straight.
     std::vector<PlanarSegment> contourLink;
     // Cycle 23: the radius of the vertical quarter arc that brings the tool down onto the start,
-    // tangent to the floor and to the pass (0: straight down).
+    // tangent to the floor (0: straight down), and the direction along the main axis u (+-1) in
+    // which it meets the floor: the arc lies in the plane of the tool axis and u (Z/X).
     double approachRadius = 0.0;
+    double approachDirection = 1.0;
 };
 
 // Places a helix of at most `radius` (and at least a quarter of it) for every pass reached by a
@@ -89,14 +91,24 @@ struct ClearingPass {
 bool placeHelices(std::vector<ClearingPass>& passes, const Region& region, double radius,
                   double strokeLength = 0.0);
 
-// Cycle 22 Q404 = 0: a pass that would be reached from above is reached at the depth along the
-// boundary of `region` (the tool-centre region, the contour for the tool) when it and the pass
-// before start on that same boundary: the shorter way round from one start to the other.
-void linkAlongContour(std::vector<ClearingPass>& passes, const Region& region);
+// The rest area (the index of the smallest outer boundary of `region` enclosing its start) of
+// each pass; region.boundaries.size() for a pass outside all of them.
+std::vector<size_t> areasOfPasses(const std::vector<ClearingPass>& passes, const Region& region);
 
-// Cycle 23's vertical tangential approach (spec: "if there is room"): for every pass reached from
-// above, a quarter arc of `radius`, else R/2 or R/4, whose path in the plane (the line of that
-// length back along the pass's start tangent) lies inside `region`; none fits: straight down.
+// Cycle 22 Q404 = 0: a pass that would be reached from above is reached at the depth along the
+// boundary of `room` (the tool-centre region, the contour for the tool) when it and the pass
+// before start on that same boundary: the shorter way round from one start to the other, or the
+// longer one when the shorter passes through a rest area of `rest` (the region the passes clear)
+// whose passes have not all run yet, other than the pass's own area: the tool would cut that
+// area's material at the link. Both ways through such an area: the tool lifts.
+void linkAlongContour(std::vector<ClearingPass>& passes, const Region& room, const Region& rest);
+
+// Cycle 23's vertical tangential approach (spec: "if there is room"; seed: for tool axis Z in the
+// Z/X plane): for every pass reached from above, a quarter arc of `radius`, else R/2 or R/4, in
+// the plane of the tool axis and the main axis u, whose path in the plane (the line of that
+// length along u ending at the pass's start) lies inside `region`. It meets the floor moving the
+// way the pass starts along u; a pass starting across u takes +u, else -u. None fits: straight
+// down.
 void placeApproachArcs(std::vector<ClearingPass>& passes, const Region& region, double radius);
 
 // How many strokes the reciprocating plunge of `pass` makes over `drop` (0: it has none).

@@ -204,6 +204,7 @@ bool KlartextInterpreter::runMachiningCycle(const cycles::CycleValues& values) {
     ctx.spindle = m_spindle;
     ctx.spindleRpm = m_spindleSpeed;
     ctx.positiveDepthIsError = m_settings.positiveDepthIsError;
+    ctx.slReturnToStart = m_settings.slReturnToStart;
     ctx.clearingCache = &m_clearingCache;
     if (d.number == 225) {  // only engraving reads the clock
         ctx.now = m_settings.engravingTime ? *m_settings.engravingTime : localNow();

@@ -69,6 +69,9 @@ struct KlartextSettings {
     const tables::PresetTable* presets = nullptr;
     // Machine parameter displayDepthErr: a positive cycle depth is an error.
     bool positiveDepthIsError = true;
+    // Machine parameter posAfterContPocket: true (PosBeforeMachining) ends the SL cycles back at
+    // the position before the cycle; false (ToolAxClearanceHeight) at Q7, the tool axis only.
+    bool slReturnToStart = false;
     // Cycle 225: the date and time %time engraves (a fixed one for tests; unset: the local
     // time of the computer) and the MOD counter %count engraves (0 in test run).
     std::optional<cycles::DateTime> engravingTime;

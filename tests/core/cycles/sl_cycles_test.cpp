@@ -489,60 +489,69 @@ TEST(SlCycles, PlungeReciprocatingWhereNoHelixFits) {
 // along the wall. For the fine R2 (room |u| <= 8, |v| <= 4) the rest grown by 2 keeps them
 // apart ((-8, 0) is sqrt 5 > 2 from the rest's nearest point (-10, 1)): four areas, each
 // plunged into from Q6 above the surface, one in each corner, the tool never below the
-// surface between them.
+// surface between them. R2 is less than half of R5, where Q404 does not apply (spec: only for
+// a fine tool of at least half the coarse one's radius): Q404 = 0 lifts the same way.
 TEST(SlCycles, FineRoughingStrategyLiftsBetweenRestAreas) {
-    const CycleValues data = contourData(-4.0, 0.0, 0.0);
-    CycleContext ctx;
-    ctx.start = {0.0, 0.0, 100.0};
-    ctx.tool.radius = 2.0;
-    ctx.contours.push_back({rectangle(-10, -6, 10, 6), false, 1});
-    ctx.contourData = &data;
-    ctx.toolByNumber = [](int) {
-        ToolInfo coarse;
-        coarse.radius = 5.0;
-        return std::optional<ToolInfo>(coarse);
-    };
-    CycleValues v = roughOut(0.0);
-    v.set(18, 7.0);
-    v.set(404, 1.0);
-    Recorder out;
-    ASSERT_FALSE(run(22, v, ctx, out));
-    // Plunges: a feed move straight down to the depth right after a rapid to Z2.
-    std::set<std::pair<bool, bool>> corners;
-    size_t plunges = 0;
-    for (size_t i = 1; i < out.moves.size(); ++i) {
-        const Move& before = out.moves[i - 1];
-        const Move& m = out.moves[i];
-        if (before.kind != Move::Rapid || std::fabs(before.target.z() - 2.0) > 1e-9 ||
-            m.kind == Move::Rapid) {
-            continue;
+    for (double strategy : {1.0, 0.0}) {
+        SCOPED_TRACE(strategy);
+        const CycleValues data = contourData(-4.0, 0.0, 0.0);
+        CycleContext ctx;
+        ctx.start = {0.0, 0.0, 100.0};
+        ctx.tool.radius = 2.0;
+        ctx.contours.push_back({rectangle(-10, -6, 10, 6), false, 1});
+        ctx.contourData = &data;
+        ctx.toolByNumber = [](int) {
+            ToolInfo coarse;
+            coarse.radius = 5.0;
+            return std::optional<ToolInfo>(coarse);
+        };
+        CycleValues v = roughOut(0.0);
+        v.set(18, 7.0);
+        v.set(404, strategy);
+        Recorder out;
+        ASSERT_FALSE(run(22, v, ctx, out));
+        // Plunges: a feed move straight down to the depth right after a rapid to Z2.
+        std::set<std::pair<bool, bool>> corners;
+        size_t plunges = 0;
+        for (size_t i = 1; i < out.moves.size(); ++i) {
+            const Move& before = out.moves[i - 1];
+            const Move& m = out.moves[i];
+            if (before.kind != Move::Rapid || std::fabs(before.target.z() - 2.0) > 1e-9 ||
+                m.kind == Move::Rapid) {
+                continue;
+            }
+            ASSERT_EQ(m.kind, Move::Line);
+            EXPECT_NEAR(m.target.z(), -4.0, 1e-9);
+            EXPECT_NEAR(
+                (Vec2(m.target.x(), m.target.y()) - Vec2(before.target.x(), before.target.y()))
+                    .norm(),
+                0.0, 1e-9);
+            ++plunges;
+            corners.insert({m.target.x() > 0.0, m.target.y() > 0.0});
         }
-        ASSERT_EQ(m.kind, Move::Line);
-        EXPECT_NEAR(m.target.z(), -4.0, 1e-9);
-        EXPECT_NEAR(
-            (Vec2(m.target.x(), m.target.y()) - Vec2(before.target.x(), before.target.y())).norm(),
-            0.0, 1e-9);
-        ++plunges;
-        corners.insert({m.target.x() > 0.0, m.target.y() > 0.0});
-    }
-    EXPECT_EQ(plunges, 4u);
-    EXPECT_EQ(corners.size(), 4u) << "one area in each corner";
-    // Every cut stays in the fine tool's room and beside the coarse reach: |u| >= 5 - 1e-6.
-    for (const Move& m : out.moves) {
-        if (m.kind == Move::Rapid || m.target.z() > 0.0) continue;
-        EXPECT_LE(std::fabs(m.target.x()), 8.0 + 1e-6);
-        EXPECT_LE(std::fabs(m.target.y()), 4.0 + 1e-6);
-        EXPECT_GE(std::fabs(m.target.x()), 5.0 - 1e-6);
+        EXPECT_EQ(plunges, 4u);
+        EXPECT_EQ(corners.size(), 4u) << "one area in each corner";
+        // Every cut stays in the fine tool's room and beside the coarse reach: |u| >= 5 - 1e-6.
+        for (const Move& m : out.moves) {
+            if (m.kind == Move::Rapid || m.target.z() > 0.0) continue;
+            EXPECT_LE(std::fabs(m.target.x()), 8.0 + 1e-6);
+            EXPECT_LE(std::fabs(m.target.y()), 4.0 + 1e-6);
+            EXPECT_GE(std::fabs(m.target.x()), 5.0 - 1e-6);
+        }
     }
 }
 
 // Q404 = 0: between the rest areas the tool stays at the depth and runs along the contour (the
-// fine tool's tool-centre path |u| <= 8, |v| <= 4). Same pocket as above: one ring per corner
-// area (shrunk by the step 2 nothing is left), each starting where it is nearest the end of the
-// one before: (-8, -4) (nearest the contour's start (-10, -6)), then (-8, 1) (the area at
-// (-8, 4), 5 away), then (5, 4) (the area at (8, 4), on its wall), then (8, -1). The links run up
-// the wall u = -8 from v = -4 to 1; from (-8, 1) up to (-8, 4) and along v = 4 to (5, 4); from
-// (5, 4) to (8, 4) and down to (8, -1). One plunge only.
+// fine tool's tool-centre path |u| <= 8, |v| <= 4). The 20 x 12 pocket after a coarse R4 (half
+// of it is the fine R2: Q404 applies): its centre reached |u| <= 6, |v| <= 2, leaving each
+// corner of the pocket outside the arc of radius 4 about (+-6, +-2). The fine tool's part of
+// the lower left one: the square [-8, -6] x [-4, -2] outside the circle of radius 2 about
+// (-6, -2) (its points within 2 of the rest), the others mirrored. One ring per area (shrunk by
+// the step 2 nothing is left), each starting where it is nearest the start of the one before:
+// (-8, -4) (nearest the contour's start (-10, -6)), then (-8, 2) (6 away), then (6, 4) (14
+// away), then (8, -2) (sqrt 40 away). The links run up the wall u = -8 from v = -4 to 2; from
+// (-8, 2) up to (-8, 4) and along v = 4 to (6, 4); from (6, 4) to (8, 4) and down to (8, -2).
+// One plunge only.
 TEST(SlCycles, FineRoughingAlongTheContourBetweenRestAreas) {
     const CycleValues data = contourData(-4.0, 0.0, 0.0);
     CycleContext ctx;
@@ -552,7 +561,7 @@ TEST(SlCycles, FineRoughingAlongTheContourBetweenRestAreas) {
     ctx.contourData = &data;
     ctx.toolByNumber = [](int) {
         ToolInfo coarse;
-        coarse.radius = 5.0;
+        coarse.radius = 4.0;
         return std::optional<ToolInfo>(coarse);
     };
     CycleValues v = roughOut(0.0);
@@ -578,12 +587,69 @@ TEST(SlCycles, FineRoughingAlongTheContourBetweenRestAreas) {
     }
     EXPECT_EQ(plunges, 1u);
     // The link ends and the room's corners it turns round, in this order.
-    const Vec2 expected[] = {{-8, 1}, {-8, 4}, {5, 4}, {8, 4}, {8, -1}};
+    const Vec2 expected[] = {{-8, 2}, {-8, 4}, {6, 4}, {8, 4}, {8, -2}};
     size_t found = 0;
     for (const Vec2& p : wallPoints) {
         if (found < std::size(expected) && (p - expected[found]).norm() < 1e-6) ++found;
     }
     EXPECT_EQ(found, std::size(expected));
+}
+
+// A link along the contour never runs through a rest area whose passes are still to come (its
+// material would be cut at the link). Room |u| <= 8, |v| <= 4; three areas, squares on the
+// bottom wall: A [-8, -7] x [-4, -3], B [7, 8] x [-4, -3], C [-1, 1] x [-4, -3], passes in the
+// order A, B, C, each ring from its lower left corner ((-8, -4), (7, -4), (-1, -4)). A to B:
+// the shorter way is along v = -4 (15) through C, still to come, so the link goes round the
+// other way (up to (-8, 4), along the top to (8, 4), down to (8, -4), back to (7, -4): 8 + 16 +
+// 8 + 1 = 33). B to C: along v = -4 to (-1, -4) (8; C is its own area). With a fourth area D
+// [-1, 1] x [3, 4] on the top wall after C, A to B is blocked both ways: the tool lifts.
+TEST(SlCycles, LinkAlongTheContourAvoidsRestAreasStillToCome) {
+    const Region room = regionOf(rectangle(-8, -4, 8, 4));
+    const auto passesOf = [](const std::vector<ClosedContour>& rings) {
+        std::vector<contour::ClearingPass> passes;
+        for (const ClosedContour& ring : rings) {
+            contour::ClearingPass p;
+            p.path = ring;
+            passes.push_back(p);
+        }
+        return passes;
+    };
+    const ClosedContour a = rectangle(-8, -4, -7, -3);
+    const ClosedContour b = rectangle(7, -4, 8, -3);
+    const ClosedContour c = rectangle(-1, -4, 1, -3);
+    std::vector<contour::ClearingPass> passes = passesOf({a, b, c});
+    Region rest;
+    rest.boundaries = {a, b, c};
+    contour::linkAlongContour(passes, room, rest);
+    ASSERT_TRUE(passes[1].straightLink);
+    std::vector<Vec2> ends;
+    double length = 0.0;
+    for (const PlanarSegment& s : passes[1].contourLink) {
+        ends.push_back(s.end);
+        length += s.length();
+    }
+    EXPECT_NEAR(length + (ends.back() - Vec2(7, -4)).norm(), 33.0, 1e-9);
+    const Vec2 corners[] = {{-8, 4}, {8, 4}, {8, -4}};
+    size_t found = 0;
+    for (const Vec2& p : ends) {
+        if (found < std::size(corners) && (p - corners[found]).norm() < 1e-9) ++found;
+    }
+    EXPECT_EQ(found, std::size(corners));
+    ASSERT_TRUE(passes[2].straightLink);
+    double toC = 0.0;
+    for (const PlanarSegment& s : passes[2].contourLink) {
+        EXPECT_NEAR(s.end.y(), -4.0, 1e-9);
+        toC += s.length();
+    }
+    EXPECT_NEAR(toC, 8.0, 1e-9);
+
+    const ClosedContour d = rectangle(-1, 3, 1, 4);
+    passes = passesOf({a, b, c, d});
+    rest.boundaries = {a, b, c, d};
+    contour::linkAlongContour(passes, room, rest);
+    EXPECT_FALSE(passes[1].straightLink);
+    EXPECT_TRUE(passes[1].contourLink.empty());
+    EXPECT_TRUE(passes[2].straightLink);
 }
 
 // The clearing cache hands back a plan only for exactly the same region, step, direction and
@@ -613,6 +679,51 @@ TEST(SlCycles, ClearingCacheReusesOnlyAnIdenticalPlan) {
     }
     EXPECT_TRUE(fresh.front().fullWidth);  // the innermost ring first
     EXPECT_FALSE(fresh.back().fullWidth);
+}
+
+// posAfterContPocket (spec §1.6): ToolAxClearanceHeight ends at Q7 = 50 straight above the
+// last cut (Q208 = 0: at Q12); PosBeforeMachining goes on from there back to where the tool was
+// before the cycle: from (7, -3, 100) (above Q7) up to 100 first, then over (7, -3); from
+// (7, -3, 30) (below Q7) over (7, -3) at 50, then down to 30, at rapid.
+TEST(SlCycles, EndPositionFollowsPosAfterContPocket) {
+    const CycleValues data = contourData(-10.0, 0.5, 0.5);
+    CycleContext ctx = pocketWithIsland(data);
+    ctx.start = {7.0, -3.0, 100.0};
+    Recorder axisOnly;
+    ASSERT_FALSE(run(22, roughOut(5.0), ctx, axisOnly));
+    ASSERT_GE(axisOnly.moves.size(), 2u);
+    const Move& lastCut = axisOnly.moves[axisOnly.moves.size() - 2];
+    const Move& up = axisOnly.moves.back();
+    EXPECT_EQ(up.kind, Move::Line);
+    EXPECT_DOUBLE_EQ(up.feed.value, 350.0);
+    EXPECT_NEAR((up.target - Vec3(lastCut.target.x(), lastCut.target.y(), 50.0)).norm(), 0.0, 1e-9);
+
+    ctx.slReturnToStart = true;
+    Recorder back;
+    ASSERT_FALSE(run(22, roughOut(5.0), ctx, back));
+    ASSERT_EQ(back.moves.size(), axisOnly.moves.size() + 2);
+    const Move& higher = back.moves[back.moves.size() - 2];
+    EXPECT_EQ(higher.kind, Move::Rapid);
+    EXPECT_NEAR((higher.target - Vec3(up.target.x(), up.target.y(), 100.0)).norm(), 0.0, 1e-9);
+    EXPECT_EQ(back.moves.back().kind, Move::Rapid);
+    EXPECT_NEAR((back.moves.back().target - Vec3(7.0, -3.0, 100.0)).norm(), 0.0, 1e-9);
+
+    ctx.start = {7.0, -3.0, 30.0};
+    ctx.roughingRadius = 5.0;
+    CycleValues side;
+    const std::pair<uint16_t, double> sideValues[] = {
+        {9, 1.0}, {10, 5.0}, {11, 100.0}, {12, 400.0}, {14, 0.0}};
+    for (auto [q, value] : sideValues)
+        side.set(q, value);
+    Recorder below;
+    ASSERT_FALSE(run(24, side, ctx, below));
+    ASSERT_GE(below.moves.size(), 3u);
+    const Move* tail = &below.moves[below.moves.size() - 3];
+    EXPECT_NEAR(tail[0].target.z(), 50.0, 1e-9);
+    EXPECT_EQ(tail[1].kind, Move::Rapid);
+    EXPECT_NEAR((tail[1].target - Vec3(7.0, -3.0, 50.0)).norm(), 0.0, 1e-9);
+    EXPECT_EQ(tail[2].kind, Move::Rapid);
+    EXPECT_NEAR((tail[2].target - Vec3(7.0, -3.0, 30.0)).norm(), 0.0, 1e-9);
 }
 
 CycleValues floorFinishing() {
@@ -705,6 +816,45 @@ TEST(SlCycles, FloorFinishingArcHalvedOrStraightDownWithoutRoom) {
     ASSERT_EQ(plunge.size(), 2u);
     EXPECT_NEAR((plunge[0] - Vec3(-3.0, -1.0, -8.0)).norm(), 0.0, 1e-9);
     EXPECT_NEAR((plunge[1] - Vec3(-3.0, -1.0, -10.0)).norm(), 0.0, 1e-9);
+}
+
+// The approach arc lies in the Z/X plane (seed 000, chapter 7's overview: "spindle axis Z:
+// circular path in the Z/X plane"), also where the pass starts across X. A circular pocket of
+// radius 30 from (30, 0), R5, Q2 = 1: rings of radius 25, 20, 15, 10, 5; the innermost starts
+// nearest (30, 0), at (5, 0), going +Y. The arc meets the floor going +X: from 5 back along X
+// and 5 above the floor, (0, 0, -5), about (5, 0, -5) to (5, 0, -10); Y stays 0 (plane Z/X).
+// A circle of radius 10 from (-10, 0) leaves one ring of radius 5, starting at (-5, 0) going
+// -Y: +X would come from (-10, 0), outside the ring, so it comes along -X from (0, 0, -5) about
+// (-5, 0, -5) to (-5, 0, -10).
+TEST(SlCycles, FloorFinishingApproachArcLiesInTheZxPlane) {
+    const CycleValues data = contourData(-10.0, 0.0, 0.5);
+    CycleContext ctx;
+    ctx.start = {0.0, 0.0, 100.0};
+    ctx.tool.radius = 5.0;
+    const auto arcsOf = [&](const ClosedContour& pocket) {
+        ctx.contours = {{pocket, false, 1}};
+        ctx.contourData = &data;
+        Recorder out;
+        EXPECT_FALSE(run(23, floorFinishing(), ctx, out));
+        std::vector<Move> arcs;
+        for (const Move& m : out.moves) {
+            if (m.kind == Move::SpatialArc) arcs.push_back(m);
+        }
+        return arcs;
+    };
+    const std::vector<Move> inner = arcsOf(circleContour(30.0));
+    ASSERT_EQ(inner.size(), 1u);
+    EXPECT_NEAR((inner[0].from - Vec3(0.0, 0.0, -5.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((inner[0].centre3 - Vec3(5.0, 0.0, -5.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((inner[0].target - Vec3(5.0, 0.0, -10.0)).norm(), 0.0, 1e-9);
+
+    ClosedContour fromLeft;
+    fromLeft.segments.push_back(PlanarSegment::arc({-10.0, 0.0}, {0.0, 0.0}, 2.0 * kPi));
+    const std::vector<Move> single = arcsOf(fromLeft);
+    ASSERT_EQ(single.size(), 1u);
+    EXPECT_NEAR((single[0].from - Vec3(0.0, 0.0, -5.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((single[0].centre3 - Vec3(-5.0, 0.0, -5.0)).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((single[0].target - Vec3(-5.0, 0.0, -10.0)).norm(), 0.0, 1e-9);
 }
 
 }  // namespace
