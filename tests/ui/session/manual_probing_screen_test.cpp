@@ -8,7 +8,9 @@
 #include <QTimer>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <numbers>
 #include <thread>
 
@@ -226,7 +228,42 @@ TEST_F(ManualProbingScreen, ProbingPFindsTheCornerOfTheTwoTurnedEdges) {
     EXPECT_NEAR(session->presetInMachine()[Axis::Y], file[Axis::Y] + y, 1e-9);
     EXPECT_TRUE(
         answers.labels[0].startsWith(QStringLiteral("Probed X = ") + QString::number(x, 'f', 4)))
-        << answers.labels[0].toStdString();
+        << answers.labels[0].toStdString();  // The completed function's log in the NC root.
+    std::ifstream in(dir / "TCHPRMAN.html");
+    const std::string log{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(log.find("<h2>PROBING P</h2>"), std::string::npos) << log;
+    EXPECT_NE(
+        log.find("<tr><td>X</td><td>" + QString::number(x, 'f', 4).toStdString() + "</td></tr>"),
+        std::string::npos)
+        << log;
+    EXPECT_NE(log.find("<tr><td>Basic rotation</td><td>0.7000</td></tr>"), std::string::npos);
+}
+
+TEST_F(ManualProbingScreen, UnderTheBasicRotationTheTouchesGoSquareToTheTurnedEdges) {
+    // Row 0's SPC already holds the part's 0.7 degrees: Y+ and X+ go along the turned axes,
+    // square to the front and left faces, so each surface point lies on its face and the
+    // corner found is the real one, (1.5, -0.8), with no r_b (1 - cos a) error; the first
+    // edge's misalignment is the whole 0.7.
+    ASSERT_TRUE(session->setBasicRotation(0.7));
+    press("probeCorner");
+    chooseDirection(QStringLiteral("Y+"));
+    moveTo(20, -10, -5);
+    touch();
+    moveTo(80, -10, -5);
+    touch();
+    chooseDirection(QStringLiteral("X+"));
+    moveTo(-10, 15, -5);
+    touch();
+    moveTo(-10, 45, -5);
+    DialogAnswers answers({0.0, 0.0});
+    touch();
+    ASSERT_TRUE(processUntil([&] { return answers.answered() == 2; }, 5s));
+    const auto result = session->manualProbingResult();
+    ASSERT_TRUE(result);
+    EXPECT_NEAR(*result->basicRotationDeg, 0.7, 1e-9);
+    const Pose file = machineFilePreset(machine);
+    EXPECT_NEAR(session->presetInMachine()[Axis::X], file[Axis::X] + 1.5, 1e-9);
+    EXPECT_NEAR(session->presetInMachine()[Axis::Y], file[Axis::Y] - 0.8, 1e-9);
 }
 
 TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouched) {
