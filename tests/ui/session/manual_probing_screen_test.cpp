@@ -239,33 +239,6 @@ TEST_F(ManualProbingScreen, ProbingPFindsTheCornerOfTheTwoTurnedEdges) {
     EXPECT_NE(log.find("<tr><td>Basic rotation</td><td>0.7000</td></tr>"), std::string::npos);
 }
 
-TEST_F(ManualProbingScreen, UnderTheBasicRotationTheTouchesGoSquareToTheTurnedEdges) {
-    // Row 0's SPC already holds the part's 0.7 degrees: Y+ and X+ go along the turned axes,
-    // square to the front and left faces, so each surface point lies on its face and the
-    // corner found is the real one, (1.5, -0.8), with no r_b (1 - cos a) error; the first
-    // edge's misalignment is the whole 0.7.
-    ASSERT_TRUE(session->setBasicRotation(0.7));
-    press("probeCorner");
-    chooseDirection(QStringLiteral("Y+"));
-    moveTo(20, -10, -5);
-    touch();
-    moveTo(80, -10, -5);
-    touch();
-    chooseDirection(QStringLiteral("X+"));
-    moveTo(-10, 15, -5);
-    touch();
-    moveTo(-10, 45, -5);
-    DialogAnswers answers({0.0, 0.0});
-    touch();
-    ASSERT_TRUE(processUntil([&] { return answers.answered() == 2; }, 5s));
-    const auto result = session->manualProbingResult();
-    ASSERT_TRUE(result);
-    EXPECT_NEAR(*result->basicRotationDeg, 0.7, 1e-9);
-    const Pose file = machineFilePreset(machine);
-    EXPECT_NEAR(session->presetInMachine()[Axis::X], file[Axis::X] + 1.5, 1e-9);
-    EXPECT_NEAR(session->presetInMachine()[Axis::Y], file[Axis::Y] - 0.8, 1e-9);
-}
-
 TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouched) {
     // A session whose machine never saw a BLK FORM touches [simulation.blank]: the default box
     // 0..100 x 0..60 x -40..0 at the machine file's preset, placed with the same setup error,
