@@ -301,6 +301,10 @@
         <source>Tool %1: L = %2 mm</source>
         <translation>Werkzeug %1: L = %2 mm</translation>
     </message>
+    <message>
+        <source>The probing log TCHPRMAN.html could not be written: %1</source>
+        <translation>Das Antastprotokoll TCHPRMAN.html konnte nicht geschrieben werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -7998,10 +8002,6 @@ wählen</translation>
         <translation>IR-TT KALIBRIEREN</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
-        <translation>Tastsystemzyklus {1}: die Bezugspunkt-Tabelle hat keine Spalte SPC für die Grunddrehung der Zeile {2}</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
         <translation>Tastsystemzyklus {1}: Q303 = 0 schreibt in die aktive Nullpunkt-Tabelle: zuerst eine mit SEL TABLE wählen</translation>
     </message>
@@ -8330,10 +8330,6 @@ wählen</translation>
         <translation>manuelles Antasten: Tastsystem {1} steht nicht in tchprobe.tp</translation>
     </message>
     <message>
-        <source>{1} has no SPC column for the basic rotation</source>
-        <translation>{1} hat keine Spalte SPC für die Grunddrehung</translation>
-    </message>
-    <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>In ISO-Programmen nimmt Zyklus %1 nur %2 auf: die übrigen Felder leer lassen</translation>
     </message>
@@ -8604,6 +8600,26 @@ wählen</translation>
     <message>
         <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
         <translation>Gewindebohren und Gewindeschneiden folgen der Spindel entlang der Werkzeugachse: zuerst TCPM ausschalten (M129 oder FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
+        <source>cannot write the calibration log {1}: {2}</source>
+        <translation>das Kalibrierprotokoll {1} kann nicht geschrieben werden: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the touch-probe table: {2}</source>
+        <translation>Tastsystemzyklus {1}: die Tastsystemtabelle kann nicht geschrieben werden: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be an array of two numbers [x, y] within +-10 mm, not {2}</source>
+        <translation>{1} muss ein Feld aus zwei Zahlen [x, y] innerhalb von +-10 mm sein, nicht {2}</translation>
+    </message>
+    <message>
+        <source>probe {1} is not in the touch-probe table</source>
+        <translation>Tastsystem {1} ist nicht in der Tastsystemtabelle</translation>
+    </message>
+    <message>
+        <source>cannot add a column &quot;{1}&quot;</source>
+        <translation>die Spalte &quot;{1}&quot; kann nicht hinzugefügt werden</translation>
     </message>
     <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>

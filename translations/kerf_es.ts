@@ -301,6 +301,10 @@
         <source>Tool %1: L = %2 mm</source>
         <translation>Herramienta %1: L = %2 mm</translation>
     </message>
+    <message>
+        <source>The probing log TCHPRMAN.html could not be written: %1</source>
+        <translation>No se pudo escribir el protocolo de palpación TCHPRMAN.html: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -7998,10 +8002,6 @@ solución</translation>
         <translation>CALIBRAR TT IR</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
-        <translation>ciclo de palpación {1}: la tabla de puntos de referencia no tiene columna SPC para el giro básico de la fila {2}</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
         <translation>ciclo de palpación {1}: Q303 = 0 escribe en la tabla de puntos cero activa: seleccione una antes con SEL TABLE</translation>
     </message>
@@ -8330,10 +8330,6 @@ solución</translation>
         <translation>palpación manual: el palpador {1} no está en tchprobe.tp</translation>
     </message>
     <message>
-        <source>{1} has no SPC column for the basic rotation</source>
-        <translation>{1} no tiene columna SPC para el giro básico</translation>
-    </message>
-    <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>En programas ISO el ciclo %1 solo admite %2: deje vacíos los demás campos</translation>
     </message>
@@ -8604,6 +8600,26 @@ solución</translation>
     <message>
         <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
         <translation>el roscado con macho y el roscado siguen al cabezal a lo largo del eje de la herramienta: desactive primero TCPM (M129 o FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
+        <source>cannot write the calibration log {1}: {2}</source>
+        <translation>no se puede escribir el protocolo de calibración {1}: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the touch-probe table: {2}</source>
+        <translation>ciclo de palpación {1}: no se puede escribir la tabla de palpadores: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be an array of two numbers [x, y] within +-10 mm, not {2}</source>
+        <translation>{1} debe ser una lista de dos números [x, y] dentro de +-10 mm, no {2}</translation>
+    </message>
+    <message>
+        <source>probe {1} is not in the touch-probe table</source>
+        <translation>el palpador {1} no está en la tabla de palpadores</translation>
+    </message>
+    <message>
+        <source>cannot add a column &quot;{1}&quot;</source>
+        <translation>no se puede añadir la columna &quot;{1}&quot;</translation>
     </message>
     <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>

@@ -302,6 +302,10 @@
         <source>Tool %1: L = %2 mm</source>
         <translation>Narzędzie %1: L = %2 mm</translation>
     </message>
+    <message>
+        <source>The probing log TCHPRMAN.html could not be written: %1</source>
+        <translation>Nie można zapisać protokołu pomiaru TCHPRMAN.html: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -8001,10 +8005,6 @@ rozwiązanie</translation>
         <translation>KALIBROWANIE TT IR</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
-        <translation>cykl sondy {1}: tabela punktów bazowych nie ma kolumny SPC dla obrotu podstawowego wiersza {2}</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
         <translation>cykl sondy {1}: Q303 = 0 zapisuje aktywną tabelę punktów zerowych: najpierw wybrać ją przez SEL TABLE</translation>
     </message>
@@ -8333,10 +8333,6 @@ rozwiązanie</translation>
         <translation>pomiar ręczny: sondy {1} nie ma w tchprobe.tp</translation>
     </message>
     <message>
-        <source>{1} has no SPC column for the basic rotation</source>
-        <translation>{1} nie ma kolumny SPC dla obrotu podstawowego</translation>
-    </message>
-    <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>W programach ISO cykl %1 przyjmuje tylko %2: pozostałe pola zostaw puste</translation>
     </message>
@@ -8607,6 +8603,26 @@ rozwiązanie</translation>
     <message>
         <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
         <translation>gwintowanie gwintownikiem i nacinanie gwintu podążają za wrzecionem wzdłuż osi narzędzia: najpierw wyłącz TCPM (M129 lub FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
+        <source>cannot write the calibration log {1}: {2}</source>
+        <translation>nie można zapisać protokołu kalibracji {1}: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the touch-probe table: {2}</source>
+        <translation>cykl sondy {1}: nie można zapisać tabeli sond: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be an array of two numbers [x, y] within +-10 mm, not {2}</source>
+        <translation>{1} musi być tablicą dwóch liczb [x, y] w zakresie +-10 mm, a nie {2}</translation>
+    </message>
+    <message>
+        <source>probe {1} is not in the touch-probe table</source>
+        <translation>sondy {1} nie ma w tabeli sond</translation>
+    </message>
+    <message>
+        <source>cannot add a column &quot;{1}&quot;</source>
+        <translation>nie można dodać kolumny &quot;{1}&quot;</translation>
     </message>
     <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>

@@ -301,6 +301,10 @@
         <source>Tool %1: L = %2 mm</source>
         <translation>Ferramenta %1: L = %2 mm</translation>
     </message>
+    <message>
+        <source>The probing log TCHPRMAN.html could not be written: %1</source>
+        <translation>Não foi possível escrever o protocolo de apalpação TCHPRMAN.html: %1</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::MainWindow</name>
@@ -7998,10 +8002,6 @@ solução</translation>
         <translation>CALIBRAR TT IR</translation>
     </message>
     <message>
-        <source>touch probe cycle {1}: the preset table has no SPC column for the basic rotation of row {2}</source>
-        <translation>ciclo de apalpação {1}: a tabela de pontos de referência não tem coluna SPC para a rotação básica da linha {2}</translation>
-    </message>
-    <message>
         <source>touch probe cycle {1}: Q303 = 0 writes the active datum table: select one with SEL TABLE first</source>
         <translation>ciclo de apalpação {1}: Q303 = 0 escreve na tabela de pontos zero ativa: selecione uma antes com SEL TABLE</translation>
     </message>
@@ -8330,10 +8330,6 @@ solução</translation>
         <translation>apalpação manual: o apalpador {1} não está em tchprobe.tp</translation>
     </message>
     <message>
-        <source>{1} has no SPC column for the basic rotation</source>
-        <translation>{1} não tem coluna SPC para a rotação básica</translation>
-    </message>
-    <message>
         <source>In ISO programs cycle %1 takes only %2: leave the other fields empty</source>
         <translation>Em programas ISO o ciclo %1 aceita apenas %2: deixe os outros campos vazios</translation>
     </message>
@@ -8604,6 +8600,26 @@ solução</translation>
     <message>
         <source>tapping and thread cutting follow the spindle along the tool axis: switch TCPM off first (M129 or FUNCTION RESET TCPM)</source>
         <translation>a roscagem com macho e o corte de rosca seguem a árvore ao longo do eixo da ferramenta: desligue primeiro o TCPM (M129 ou FUNCTION RESET TCPM)</translation>
+    </message>
+    <message>
+        <source>cannot write the calibration log {1}: {2}</source>
+        <translation>não é possível escrever o protocolo de calibração {1}: {2}</translation>
+    </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the touch-probe table: {2}</source>
+        <translation>ciclo de apalpação {1}: não é possível escrever a tabela de apalpadores: {2}</translation>
+    </message>
+    <message>
+        <source>{1} must be an array of two numbers [x, y] within +-10 mm, not {2}</source>
+        <translation>{1} deve ser uma lista de dois números [x, y] dentro de +-10 mm, não {2}</translation>
+    </message>
+    <message>
+        <source>probe {1} is not in the touch-probe table</source>
+        <translation>o apalpador {1} não está na tabela de apalpadores</translation>
+    </message>
+    <message>
+        <source>cannot add a column &quot;{1}&quot;</source>
+        <translation>não é possível adicionar a coluna &quot;{1}&quot;</translation>
     </message>
     <message>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>

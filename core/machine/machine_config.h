@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -138,6 +139,9 @@ struct ToolErrorConfig {
     int tool = 0;
     double lengthMm = 0.0;
     double radiusMm = 0.0;
+    // A touch probe's stylus: its ball centre's offset from the spindle axis (X, Y) with the
+    // spindle oriented at 0 degrees; it turns with the spindle (what CAL_OF1/CAL_OF2 calibrate).
+    std::array<double, 2> centreOffsetMm{0.0, 0.0};
 
     friend bool operator==(const ToolErrorConfig&, const ToolErrorConfig&) = default;
 };

@@ -190,8 +190,10 @@ private:
                                                           ? value.as_floating_point()->get()
                                                           : static_cast<double>(integer->get()))
                                       : std::nullopt;
-                if (key.str() == "tool" && integer && integer->get() >= 0 &&
-                    integer->get() <= 32767) {
+                if (key.str() == "centre_offset") {
+                    ok = readCentreOffset(fullKey, value, error) && ok;
+                } else if (key.str() == "tool" && integer && integer->get() >= 0 &&
+                           integer->get() <= 32767) {
                     error.tool = static_cast<int>(integer->get());
                 } else if ((key.str() == "length" || key.str() == "radius") && number &&
                            std::abs(*number) <= 10.0) {
@@ -218,6 +220,30 @@ private:
             }
             if (ok) m_config.toolErrors.push_back(error);
         }
+    }
+
+    // centre_offset = [x, y]: a probe stylus's ball centre off the spindle axis, within +-10 mm.
+    bool readCentreOffset(const std::string& fullKey, const toml::node& value,
+                          ToolErrorConfig& error) {
+        const toml::array* array = value.as_array();
+        bool ok = array != nullptr && array->size() == 2;
+        for (size_t i = 0; ok && i < 2; ++i) {
+            const toml::node& component = *array->get(i);
+            const std::optional<double> number =
+                component.as_floating_point() ? std::optional(component.as_floating_point()->get())
+                : component.as_integer()
+                    ? std::optional(static_cast<double>(component.as_integer()->get()))
+                    : std::nullopt;
+            ok = number && std::abs(*number) <= 10.0;
+            if (ok) error.centreOffsetMm[i] = *number;
+        }
+        if (!ok) {
+            report(positionOf(value.source()),
+                   KERF_TR_NOOP("{1} must be an array of two numbers [x, y] within +-10 mm, not "
+                                "{2}"),
+                   fullKey, nodeText(value));
+        }
+        return ok;
     }
 
     // A table of x, y and z (simulation.setup.shift) may be written as an array [x, y, z].

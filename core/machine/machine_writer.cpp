@@ -65,6 +65,10 @@ std::string toToml(const MachineConfig& config) {
         writeLine(out, "tool", int64_t{error.tool}, "");
         writeLine(out, "length", error.lengthMm, "mm");
         writeLine(out, "radius", error.radiusMm, "mm");
+        if (error.centreOffsetMm != std::array<double, 2>{0.0, 0.0}) {
+            out += "centre_offset = [" + tomlValue(error.centreOffsetMm[0]) + ", " +
+                   tomlValue(error.centreOffsetMm[1]) + "]  # mm\n";
+        }
     }
     for (const AxisConfig& axis : config.axes) {
         out += "\n[axes.";

@@ -9,6 +9,7 @@ namespace kerf::tables {
 namespace {
 
 constexpr std::string_view kKey = "NR";
+constexpr std::string_view kBasicRotation = "SPC";
 constexpr const char* kMissing = KERF_TR_NOOP("preset {1} is not in the preset table");
 
 const std::vector<detail::ColumnSpec>& presetColumns() {
@@ -17,10 +18,23 @@ const std::vector<detail::ColumnSpec>& presetColumns() {
                                                  detail::textColumn("DOC", 17)};
         detail::appendAxisColumns(specs, "XYZABC");
         // The basic rotation of the preset (404 and 400-402, 414 with Q305 > 0 write it).
-        specs.push_back(detail::numberColumn("SPC", detail::kAxisColumnWidth, true, "+0"));
+        specs.push_back(detail::numberColumn(std::string(kBasicRotation), detail::kAxisColumnWidth,
+                                             true, "+0"));
         return specs;
     }();
     return columns;
+}
+
+// The table with `name` appended if it lacks it, as a new table would have it (an axis letter
+// of any axis the machines know, or SPC).
+MaybeError appendMissingColumn(TncTable& table, std::string_view name) {
+    if (table.findColumn(name)) return std::nullopt;
+    std::vector<detail::ColumnSpec> known = presetColumns();
+    detail::appendAxisColumns(known, "UVW");
+    for (const detail::ColumnSpec& spec : known) {
+        if (spec.name == name) return table.appendColumn(spec.name, spec.width, spec.format);
+    }
+    return table.headerError(KERF_TR_NOOP("the table has no column {1}"), {std::string(name)});
 }
 
 }  // namespace
@@ -71,9 +85,14 @@ const PresetData* PresetTable::byNumber(int number) const {
     return nullptr;
 }
 
+std::optional<size_t> PresetTable::basicRotationColumn() const {
+    if (auto column = m_table.findColumn(kBasicRotation)) return column;
+    return m_table.findColumn("ROT");
+}
+
 double PresetTable::basicRotationDeg(int number) const {
     const PresetData* preset = byNumber(number);
-    const auto column = m_table.findColumn("SPC");
+    const auto column = basicRotationColumn();
     if (preset == nullptr || !column) return 0.0;
     return m_table.number(preset->row, *column).value_or(0.0);
 }
@@ -81,8 +100,26 @@ double PresetTable::basicRotationDeg(int number) const {
 MaybeError PresetTable::setAxis(int number, char axis, std::optional<double> value) {
     auto row = detail::rowOfKey(m_keys, m_table, number, kMissing);
     if (!row) return row.error();
-    return detail::editTyped(
-        *this, [&](TncTable& table) { return detail::setAxisCell(table, *row, axis, value); });
+    return detail::editTyped(*this, [&](TncTable& table) -> MaybeError {
+        const std::string_view name(&axis, 1);
+        // Emptying a cell the table does not have leaves it as it is.
+        if (!value && !table.findColumn(name)) return std::nullopt;
+        if (MaybeError failed = appendMissingColumn(table, name)) return failed;
+        return detail::setAxisCell(table, *row, axis, value);
+    });
+}
+
+MaybeError PresetTable::setBasicRotation(int number, double degrees) {
+    auto row = detail::rowOfKey(m_keys, m_table, number, kMissing);
+    if (!row) return row.error();
+    const std::optional<size_t> existing = basicRotationColumn();
+    return detail::editTyped(*this, [&](TncTable& table) -> MaybeError {
+        if (!existing) {
+            if (MaybeError failed = appendMissingColumn(table, kBasicRotation)) return failed;
+        }
+        return table.setNumber(*row, existing ? *existing : *table.findColumn(kBasicRotation),
+                               degrees);
+    });
 }
 
 MaybeError PresetTable::addPreset(int number) {

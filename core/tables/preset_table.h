@@ -41,12 +41,18 @@ public:
     const TncTable& table() const { return m_table; }
     const std::vector<PresetData>& presets() const { return m_presets; }
     const PresetData* byNumber(int number) const;
-    // The basic rotation of preset `number` (its SPC column, degrees); 0 when the row, the
-    // column or the value is missing.
+    // The column that holds the basic rotation: SPC, or in an older table without it (iTNC 530)
+    // ROT; nothing when the table has neither.
+    std::optional<size_t> basicRotationColumn() const;
+    // The basic rotation of preset `number` (degrees); 0 when the row, the column or the value
+    // is missing.
     double basicRotationDeg(int number) const;
 
-    // No value empties the cell. Each edit leaves the table unchanged if it fails.
+    // No value empties the cell. Each edit leaves the table unchanged if it fails. A table
+    // written by an older control may lack columns: a value for an axis or a basic rotation the
+    // table has no column for adds that column at the end (empty in the other rows).
     MaybeError setAxis(int number, char axis, std::optional<double> value);
+    MaybeError setBasicRotation(int number, double degrees);
     MaybeError addPreset(int number);
     MaybeError removePreset(int number);
 

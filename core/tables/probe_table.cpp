@@ -140,4 +140,29 @@ const ProbeData* ProbeTable::byNumber(int number) const {
     return nullptr;
 }
 
+MaybeError ProbeTable::setCentreOffset(int number, double main, double secondary) {
+    const ProbeData* probe = byNumber(number);
+    if (probe == nullptr) {
+        return Diagnostic::make(Severity::Error, "table", m_table.fileName(), 0, 0,
+                                KERF_TR_NOOP("probe {1} is not in the touch-probe table"),
+                                std::to_string(number));
+    }
+    const size_t row = probe->row;
+    return detail::editTyped(*this, [&](TncTable& table) -> MaybeError {
+        const std::pair<const char*, double> cells[] = {{"CAL_OF1", main}, {"CAL_OF2", secondary}};
+        for (const auto& [name, value] : cells) {
+            if (!table.findColumn(name)) {
+                for (const detail::ColumnSpec& spec : probeColumns()) {
+                    if (spec.name != name) continue;
+                    if (MaybeError failed = table.appendColumn(name, spec.width, spec.format))
+                        return failed;
+                }
+            }
+            if (MaybeError failed = table.setNumber(row, *table.findColumn(name), value))
+                return failed;
+        }
+        return std::nullopt;
+    });
+}
+
 }  // namespace kerf::tables

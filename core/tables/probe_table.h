@@ -50,6 +50,10 @@ public:
     const std::vector<ProbeData>& probes() const { return m_probes; }
     const ProbeData* byNumber(int number) const;
 
+    // Writes what calibration found (spec 6): CAL_OF1 and CAL_OF2 of probe `number`. A table
+    // without those columns gets them at the end. The table is unchanged if it fails.
+    MaybeError setCentreOffset(int number, double main, double secondary);
+
 private:
     explicit ProbeTable(TncTable table) : m_table(std::move(table)) {}
 

@@ -375,4 +375,36 @@ MaybeError TncTable::removeRow(size_t row) {
     return std::nullopt;
 }
 
+MaybeError TncTable::appendColumn(std::string_view name, size_t width, ColumnFormat format) {
+    if (name.empty() || name.find_first_of(" \r\n") != std::string_view::npos || findColumn(name)) {
+        return headerError(KERF_TR_NOOP("cannot add a column \"{1}\""), {std::string(name)});
+    }
+    TableColumn& last = m_columns.back();
+    size_t start = last.start + last.width;
+    // Keep a space after the widest cell (or name) of the column that was open-ended so far.
+    auto reaches = [&](const TableLine& line) {
+        return line.text.size() >= start && line.text[start - 1] != ' ';
+    };
+    bool touching = reaches(m_lines[m_headerLine]);
+    for (size_t lineIndex : m_rowLines)
+        touching = touching || reaches(m_lines[lineIndex]);
+    // Rows padded to the full width end in spaces; a row that ends in its last value is not.
+    const bool padded = rowsArePadded() && !touching;
+    if (touching) ++start;
+    last.width = start - last.start;
+    width = std::max(width, name.size() + 1);
+
+    std::string& header = m_lines[m_headerLine].text;
+    header.resize(start, ' ');
+    header += name;
+    if (padded) {
+        header.resize(start + width, ' ');
+        for (size_t lineIndex : m_rowLines)
+            m_lines[lineIndex].text.resize(start + width, ' ');
+    }
+    m_columns.push_back(TableColumn{std::string(name), start, width});
+    m_formats.push_back(std::move(format));
+    return std::nullopt;
+}
+
 }  // namespace kerf::tables

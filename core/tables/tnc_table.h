@@ -77,6 +77,10 @@ public:
     Expected<size_t> insertRow(size_t index, std::string_view key);
     Expected<size_t> appendRow(std::string_view key) { return insertRow(rowCount(), key); }
     MaybeError removeRow(size_t row);
+    // Adds a column after the last one, `width` bytes wide (at least its name and a space):
+    // the header names it and every row gets an empty cell (rows padded to the full width stay
+    // padded). The last column so far gets a fixed width, one space clear of its widest cell.
+    MaybeError appendColumn(std::string_view name, size_t width, ColumnFormat format);
 
     // A diagnostic pointing at a cell / at the header line.
     Diagnostic cellError(size_t row, size_t column, const char* messageTemplate,

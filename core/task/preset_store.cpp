@@ -3,7 +3,6 @@
 #include <string>
 #include <system_error>
 
-#include "core/base/translate.h"
 #include "core/tables/preset_table.h"
 
 namespace kerf::task {
@@ -56,10 +55,8 @@ MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
     if (!table) return table.error();
     for (int i = 0; i < kAxisCount; ++i) {
         const auto axis = static_cast<Axis>(i);
-        const char letter = axisLetter(axis);
-        if ((axes & axisBit(axis)) == 0 || !table->table().findColumn(std::string(1, letter)))
-            continue;
-        if (MaybeError failed = table->setAxis(0, letter, origin[axis])) return failed;
+        if ((axes & axisBit(axis)) == 0) continue;
+        if (MaybeError failed = table->setAxis(0, axisLetter(axis), origin[axis])) return failed;
     }
     return m_root.replace(m_file, table->serialize());
 }
@@ -67,18 +64,8 @@ MaybeError PresetStore::write(const Pose& origin, AxisMask axes) const {
 MaybeError PresetStore::writeBasicRotation(double degrees) const {
     auto table = tableWithRowZero(m_root, m_file);
     if (!table) return table.error();
-    const auto column = table->table().findColumn("SPC");
-    if (!column) {
-        return Diagnostic::make(Severity::Error, "PRB-004", m_file.string(), 0, 0,
-                                KERF_TR_NOOP("{1} has no SPC column for the basic rotation"),
-                                m_file.filename().string());
-    }
-    tables::TncTable edited = table->table();
-    if (MaybeError failed = edited.setNumber(table->byNumber(0)->row, *column, degrees))
-        return failed;
-    auto rewritten = tables::PresetTable::fromTable(std::move(edited));
-    if (!rewritten) return rewritten.error();
-    return m_root.replace(m_file, rewritten->serialize());
+    if (MaybeError failed = table->setBasicRotation(0, degrees)) return failed;
+    return m_root.replace(m_file, table->serialize());
 }
 
 }  // namespace kerf::task

@@ -24,11 +24,11 @@ public:
     std::array<std::optional<double>, kAxisCount> read() const;
     // Row 0's basic rotation (SPC, degrees) that programs start with; 0 without one.
     double basicRotationDeg() const;
-    // Writes the origin of the given axes into row 0 atomically (axes the table has no column
-    // for are left out), creating the table with the standard columns if it is missing.
+    // Writes the origin of the given axes into row 0 atomically (a column the table lacks is
+    // added), creating the table with the standard columns if it is missing.
     MaybeError write(const Pose& origin, AxisMask axes) const;
-    // Writes the basic rotation into row 0's SPC column (where the probing cycles keep it), in
-    // degrees; a table without that column is an error.
+    // Writes the basic rotation into row 0 (SPC, where the probing cycles keep it; ROT in an
+    // older table without SPC; a table with neither gets an SPC column), in degrees.
     MaybeError writeBasicRotation(double degrees) const;
 
     const std::filesystem::path& file() const { return m_file; }

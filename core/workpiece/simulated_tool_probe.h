@@ -20,6 +20,9 @@ struct ToolProbeStylus {
 struct RealTool {
     double length = 0.0;
     double radius = 0.0;
+    // A touch probe's ball centre off the spindle axis at spindle angle 0 (x, y); it turns with
+    // the spindle. The TT's tools run true.
+    Vec2 centreOffset{0.0, 0.0};
 };
 
 // A simulated TT in machine coordinates: where the real tool touches the stylus. Qt- and VTK-free.

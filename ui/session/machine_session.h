@@ -117,15 +117,15 @@ public:
     // the NC root's PRESET.PR. False (and a message) while the machine moves.
     bool setPresetByEntry(Axis axis, double shownValue);
     // Manual probing (mill, Manual operation): choose a function (which clears its touches), then
-    // touch from where the probe stands along an axis direction. The touch is decided on the
-    // simulated part (the last BLK FORM, else [simulation.blank], placed with
-    // [simulation.setup]) and the probe moves to
-    // the trigger at the probe table's F and back. False (and a message) on a miss within DIST,
-    // a deflected stylus, no probe in the spindle, or while the machine moves.
+    // touch from where the probe stands along an axis direction, turned by the active basic
+    // rotation (row 0's SPC) as the TNC does. The touch is decided on the simulated part (the
+    // last BLK FORM, else [simulation.blank], placed with [simulation.setup]) and the probe
+    // moves to the trigger at the probe table's F and back. False (and a message) on a miss within
+    // DIST, a deflected stylus, no probe in the spindle, or while the machine moves.
     void startManualProbing(cycles::probing::ManualProbingFunction function);
     cycles::probing::ManualProbingFunction manualProbingFunction() const { return m_probing; }
     int manualTouchesDone() const { return static_cast<int>(m_touches.size()); }
-    bool probeTouch(const Vec3& direction);
+    bool probeTouch(const Vec3& axisDirection);
     // The direction the panel's touch key probes in (the operator's choice, kept while the
     // softkey rows are rebuilt).
     void setProbeDirection(const Vec3& direction) { m_probeDirection = direction; }
@@ -213,6 +213,8 @@ private:
     // The origin moves so that `axis`, now at `current`, shows `value` (workpiece coordinates).
     bool movePreset(Axis axis, double current, double value);
     bool runGeneratedProgram(const std::string& text);
+    // Manual probing: the completed function's touches and result to TCHPRMAN.html.
+    void writeManualProbingLog();
 
     machine::MachineConfig m_machine;
     std::unique_ptr<task::ShiftedMotionPort> m_motion;

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/cycles/probing/probing_log_html.h"
+#include "core/program/nc_root.h"
 #include "core/task/manual_probe.h"
 #include "core/task/program_loader.h"
 #include "core/task/shifted_motion_port.h"
@@ -29,8 +31,11 @@ void MachineSession::startManualProbing(cycles::probing::ManualProbingFunction f
     emit manualProbingChanged();
 }
 
-bool MachineSession::probeTouch(const Vec3& direction) {
+bool MachineSession::probeTouch(const Vec3& axisDirection) {
     if (refuseWhenBusy() || refuseWhenNotReferenced()) return false;
+    // Under a basic rotation the touch goes along the turned axis, as on the TNC.
+    const double rotation = basicRotationDeg();
+    const Vec3 direction = cycles::probing::turnedProbingDirection(axisDirection, rotation);
     const auto probe = task::manualProbe(m_ncRoot, m_status.toolNumber);
     if (!probe) {
         report({probe.error()});
@@ -66,9 +71,24 @@ bool MachineSession::probeTouch(const Vec3& direction) {
                              "\n2 L " + klartextPoint(tip) + " FMAX\n3 END PGM PROBE MM\n";
     if (!runGeneratedProgram(text)) return false;
     m_probeBallRadius = probe->ballRadius;
-    m_touches.push_back({*hit - partOffset, direction});
+    m_touches.push_back({*hit - partOffset, direction, rotation});
+    if (static_cast<int>(m_touches.size()) == cycles::probing::manualTouchCount(m_probing))
+        writeManualProbingLog();
     emit manualProbingChanged();
     return true;
+}
+
+void MachineSession::writeManualProbingLog() {
+    // TCHPRMAN.html in the NC root (the TNC's TNC:\), replaced by each completed function.
+    const program::NcRoot root(m_ncRoot);
+    const std::string text = cycles::probing::manualProbingLogHtml(
+        m_probing, m_touches, m_probeBallRadius, manualProbingResult());
+    if (const MaybeError failed = root.replace(root.path() / "TCHPRMAN.html", text)) {
+        emit message(Severity::Warning,
+                     tr("The probing log TCHPRMAN.html could not be written: %1")
+                         .arg(translatedMessage(*failed)),
+                     0);
+    }
 }
 
 bool MachineSession::touchOffToolLength(double knownZ) {

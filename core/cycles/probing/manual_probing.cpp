@@ -16,12 +16,14 @@ Vec3 surfacePoint(const ManualTouch& touch, double ballRadius) {
     return touch.ball + ballRadius * touch.direction;
 }
 
-// The misalignment of the edge through a and b that was probed along `direction`: its angle to
-// the axis square to the probing direction, folded to (-90, 90] (which point came first does
+// The misalignment of the edge through a and b that was probed by `touch`: its angle to the
+// axis square to the operator's probing axis, folded to (-90, 90] (which point came first does
 // not count).
-std::optional<double> edgeRotation(const Vec2& a, const Vec2& b, const Vec3& direction) {
+std::optional<double> edgeRotation(const Vec2& a, const Vec2& b, const ManualTouch& touch) {
     if ((b - a).norm() < 1e-9) return std::nullopt;
-    const double probing = std::atan2(direction.y(), direction.x()) * 180.0 / std::numbers::pi;
+    const Vec3& direction = touch.direction;
+    const double probing = std::atan2(direction.y(), direction.x()) * 180.0 / std::numbers::pi -
+                           touch.basicRotationDeg;
     double angle = normalizedDeg(lineAngleDeg(a, b) - probing - 90.0);
     if (angle > 90.0) angle -= 180.0;
     if (angle <= -90.0) angle += 180.0;
@@ -29,6 +31,12 @@ std::optional<double> edgeRotation(const Vec2& a, const Vec2& b, const Vec3& dir
 }
 
 }  // namespace
+
+Vec3 turnedProbingDirection(const Vec3& axisDirection, double basicRotationDeg) {
+    const double a = basicRotationDeg * std::numbers::pi / 180.0;
+    return {std::cos(a) * axisDirection.x() - std::sin(a) * axisDirection.y(),
+            std::sin(a) * axisDirection.x() + std::cos(a) * axisDirection.y(), axisDirection.z()};
+}
 
 int manualTouchCount(ManualProbingFunction function) {
     switch (function) {
@@ -55,24 +63,25 @@ std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction f
     ManualProbingResult result;
     switch (function) {
         case ManualProbingFunction::Position: {
-            // The axis the touch went along.
+            // The axis the operator chose.
+            const Vec3 chosen =
+                turnedProbingDirection(touches[0].direction, -touches[0].basicRotationDeg);
             int axis = 0;
             for (int i = 1; i < 3; ++i)
-                if (std::fabs(touches[0].direction[i]) > std::fabs(touches[0].direction[axis]))
-                    axis = i;
+                if (std::fabs(chosen[i]) > std::fabs(chosen[axis])) axis = i;
             result.point[static_cast<size_t>(axis)] = surface[0][axis];
             return result;
         }
         case ManualProbingFunction::Rotation:
             result.basicRotationDeg =
-                edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0].direction);
+                edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0]);
             if (!result.basicRotationDeg) return std::nullopt;
             return result;
         case ManualProbingFunction::Corner: {
             const auto corner = intersect(surface[0].head<2>(), surface[1].head<2>(),
                                           surface[2].head<2>(), surface[3].head<2>());
             result.basicRotationDeg =
-                edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0].direction);
+                edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0]);
             if (!corner || !result.basicRotationDeg) return std::nullopt;
             result.point[0] = corner->x();
             result.point[1] = corner->y();

@@ -22,17 +22,25 @@ enum class ManualProbingFunction : uint8_t {
 // How many touches the function needs.
 int manualTouchCount(ManualProbingFunction function);
 
-// One touch: the ball centre when the stylus triggered, and the unit probing direction.
+// One touch: the ball centre when the stylus triggered, and the unit probing direction: the
+// operator's axis direction turned by the basic rotation that was active (as the TNC probes
+// obliquely in Manual operation, spec 1.5).
 struct ManualTouch {
     Vec3 ball{0.0, 0.0, 0.0};
     Vec3 direction{1.0, 0.0, 0.0};
+    double basicRotationDeg = 0.0;
 };
+
+// The direction a manual touch goes: the axis direction the operator chose (X+ ... Z-) turned
+// in the plane by the active basic rotation; Z stays.
+Vec3 turnedProbingDirection(const Vec3& axisDirection, double basicRotationDeg);
 
 struct ManualProbingResult {
     // The surface point (Position: its axis only; Corner: the intersection; Circle: the centre).
     std::array<std::optional<double>, 3> point;
     // Rotation, Corner (from the first edge): the edge's angle to the axis at right angles to
-    // the probing direction, (-90, 90] degrees.
+    // the probing axis (the operator's, not turned), (-90, 90] degrees: the whole misalignment
+    // also when the touches were made under a basic rotation.
     std::optional<double> basicRotationDeg;
     std::optional<double> diameter;  // Circle
     // Plane: the spatial angles (R = Ry(B) Rx(A), C = 0) that turn the tool axis onto the face's

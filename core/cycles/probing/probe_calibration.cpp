@@ -1,7 +1,7 @@
 // Calibration of the workpiece probe (spec 6): 460 its ball radius (and length) on a sphere, 461
-// its length on a ring's top face, 462 its ball radius inside a ring, 463 on a stud. The
-// simulated probe runs true and cannot be turned for a reversal measurement, so the centre
-// offsets CAL_OF1/CAL_OF2 are not determined.
+// its length on a ring's top face, 462 its ball radius inside a ring, 463 on a stud. 460, 462
+// and 463 also find the centre offset CAL_OF1/CAL_OF2 by a reversal measurement: the same
+// circle once more with the probe turned by 180 degrees.
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -43,6 +43,37 @@ std::optional<CycleError> fitted(int cycle, const std::vector<Vec2>& balls, Fitt
     return std::nullopt;
 }
 
+// A circle of touches: `pass` fits the ball centres of `count` touches about `centre`.
+using CirclePass = std::optional<CycleError> (*)(const CycleValues&, const ProbeData&,
+                                                 ProbingMachine&, ProbeSequence&, int count,
+                                                 const Vec2& centre, double height,
+                                                 FittedCircle& circle);
+
+// The reversal (spec 6, 460/462 impl. notes): with the probe at CAL_ANG its ball lies off the
+// spindle by CAL_OF; what CAL_OF misses, e, moves every ball centre the control computes by -e,
+// and by +e with the probe turned by 180 degrees. So the circle about the same feature, fitted
+// once each way (c_0 at CAL_ANG, c_180 turned), gives e = (c_180 - c_0) / 2 and the new CAL_OF
+// = CAL_OF + e. With TRACK the probe faces each probing direction, so the offset is part of the
+// effective radius and there is nothing to reverse. The probe ends at CAL_ANG again.
+std::optional<CycleError> reversal(CirclePass pass, const CycleValues& v, const ProbeData& probe,
+                                   ProbingMachine& machine, ProbeSequence& sequence,
+                                   const FittedCircle& atCalibrationAngle, double height,
+                                   ProbingResults& results) {
+    if (probe.track) return std::nullopt;
+    machine.orient(probe.calibrationAngleDeg + 180.0);
+    FittedCircle turned;
+    if (auto e = pass(v, probe, machine, sequence, 4, atCalibrationAngle.centre, height, turned))
+        return e;
+    machine.orient(probe.calibrationAngleDeg);
+    const Vec2 missed = (turned.centre - atCalibrationAngle.centre) / 2.0;
+    results.calibration->centreOffset = probe.centreOffset + missed;
+    return std::nullopt;
+}
+
+int fineCount(const CycleValues& v) {
+    return v.integer(423) < 3 ? 4 : v.integer(423);
+}
+
 constexpr ParameterDescriptor k461Parameters[] = {
     length(434, KERF_TR_NOOP("Datum for the length: height of the ring's top face"))};
 
@@ -54,70 +85,95 @@ std::optional<CycleError> run461(const CycleValues& v, const ProbeData& probe,
     Vec3 ball;
     if (auto e = sequence.touchFrom(Vec3(0.0, 0.0, -1.0), ball)) return e;
     const double gauge = ball.z() - probe.ballRadius + probe.length;
-    results.calibration = ProbeCalibration{gauge - v.number(434), std::nullopt};
+    results.calibration = ProbeCalibration{gauge - v.number(434), std::nullopt, std::nullopt};
     return std::nullopt;
 }
 
 constexpr ParameterDescriptor k462Parameters[] = {kRingRadius, kSetUpClearance, kPointCount,
                                                   kReferenceAngle};
 
+// 462: `count` touches from the ring's centre at the measuring height, the probe then at the
+// fitted centre.
+std::optional<CycleError> ringPass(const CycleValues& v, const ProbeData&, ProbingMachine& machine,
+                                   ProbeSequence& sequence, int count, const Vec2& centre,
+                                   double height, FittedCircle& circle) {
+    machine.moveTo(Vec3(centre.x(), centre.y(), height));
+    std::vector<Vec2> balls;
+    for (int k = 0; k < count; ++k) {
+        const Vec2 d = unit(v.number(380) + 360.0 * k / count);
+        Vec3 ball;
+        if (auto e = sequence.touchFrom(Vec3(d.x(), d.y(), 0.0), ball)) return e;
+        balls.emplace_back(ball.x(), ball.y());
+    }
+    if (auto e = fitted(462, balls, circle)) return e;
+    machine.moveTo(Vec3(circle.centre.x(), circle.centre.y(), height));
+    return std::nullopt;
+}
+
 // 462: from the ring's centre at the measuring height, a coarse pass of four touches finds the
-// centre, a fine pass of Q423 touches from there the ball centres' circle: r_b = Q407 - rho.
+// centre, a fine pass of Q423 touches from there the ball centres' circle: r_b = Q407 - rho;
+// then the reversal.
 std::optional<CycleError> run462(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
-    const int fine = v.integer(423) < 3 ? 4 : v.integer(423);
     ProbeSequence sequence(462, v, probe, machine);
-    Vec3 centre = machine.ballCentre();
-    FittedCircle circle;
-    for (int count : {4, fine}) {
-        std::vector<Vec2> balls;
-        for (int k = 0; k < count; ++k) {
-            const Vec2 d = unit(v.number(380) + 360.0 * k / count);
-            Vec3 ball;
-            if (auto e = sequence.touchFrom(Vec3(d.x(), d.y(), 0.0), ball)) return e;
-            balls.emplace_back(ball.x(), ball.y());
-        }
-        if (auto e = fitted(462, balls, circle)) return e;
-        centre = Vec3(circle.centre.x(), circle.centre.y(), centre.z());
-        machine.moveTo(centre);
+    const Vec3 start = machine.ballCentre();
+    FittedCircle coarse;
+    if (auto e = ringPass(v, probe, machine, sequence, 4, start.head<2>(), start.z(), coarse))
+        return e;
+    FittedCircle fine;
+    if (auto e =
+            ringPass(v, probe, machine, sequence, fineCount(v), coarse.centre, start.z(), fine)) {
+        return e;
     }
-    results.calibration = ProbeCalibration{std::nullopt, v.number(407) - circle.radius};
+    results.calibration = ProbeCalibration{std::nullopt, v.number(407) - fine.radius, {}};
+    if (auto e = reversal(ringPass, v, probe, machine, sequence, fine, start.z(), results))
+        return e;
+    machine.moveTo(Vec3(fine.centre.x(), fine.centre.y(), start.z()));
     return std::nullopt;
 }
 
 constexpr ParameterDescriptor k463Parameters[] = {kRingRadius, kSetUpClearance, kMoveToClearance,
                                                   kPointCount, kReferenceAngle};
 
+// 463: `count` touches round the stud about `centre`, each from outside at r_b + SET_UP +
+// Q320 from the nominal radius at ball-centre height `height`, between them back at the start
+// height (also with Q301 = 0: the path round the stud is not known before the coarse pass).
+std::optional<CycleError> studPass(const CycleValues& v, const ProbeData& probe,
+                                   ProbingMachine& machine, ProbeSequence& sequence, int count,
+                                   const Vec2& centre, double height, FittedCircle& circle) {
+    const double clearance = probe.setUp + v.number(320);
+    const double startHeight = height + clearance + 2.0 * probe.ballRadius;
+    std::vector<Vec2> balls;
+    for (int k = 0; k < count; ++k) {
+        const Vec2 d = unit(v.number(380) + 360.0 * k / count);
+        const Vec2 from = centre + (v.number(407) + probe.ballRadius + clearance) * d;
+        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
+        machine.moveTo(Vec3(from.x(), from.y(), height));
+        Vec3 ball;
+        if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
+        balls.emplace_back(ball.x(), ball.y());
+        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
+    }
+    return fitted(463, balls, circle);
+}
+
 // 463: from above the stud's centre (the ball's south pole about SET_UP + Q320 above its top),
-// each touch comes from outside at the height where the ball lies r_b below the top; between
-// the touches the probe returns to the start height (also with Q301 = 0: the path round the
-// stud is not known before the coarse pass). r_b = rho - Q407.
+// touches at the height where the ball lies r_b below the top: a coarse pass, a fine one
+// (r_b = rho - Q407), then the reversal.
 std::optional<CycleError> run463(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
-    const int fine = v.integer(423) < 3 ? 4 : v.integer(423);
     ProbeSequence sequence(463, v, probe, machine);
-    const double clearance = probe.setUp + v.number(320);
     const Vec3 start = machine.ballCentre();
-    const double height = start.z() - clearance - 2.0 * probe.ballRadius;
-    Vec2 centre(start.x(), start.y());
-    FittedCircle circle;
-    for (int count : {4, fine}) {
-        std::vector<Vec2> balls;
-        for (int k = 0; k < count; ++k) {
-            const Vec2 d = unit(v.number(380) + 360.0 * k / count);
-            const Vec2 from = centre + (v.number(407) + probe.ballRadius + clearance) * d;
-            machine.moveTo(Vec3(from.x(), from.y(), start.z()));
-            machine.moveTo(Vec3(from.x(), from.y(), height));
-            Vec3 ball;
-            if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
-            balls.emplace_back(ball.x(), ball.y());
-            machine.moveTo(Vec3(from.x(), from.y(), start.z()));
-        }
-        if (auto e = fitted(463, balls, circle)) return e;
-        centre = circle.centre;
-    }
-    machine.moveTo(Vec3(centre.x(), centre.y(), start.z()));
-    results.calibration = ProbeCalibration{std::nullopt, circle.radius - v.number(407)};
+    const double height = start.z() - probe.setUp - v.number(320) - 2.0 * probe.ballRadius;
+    FittedCircle coarse;
+    if (auto e = studPass(v, probe, machine, sequence, 4, start.head<2>(), height, coarse))
+        return e;
+    FittedCircle fine;
+    if (auto e = studPass(v, probe, machine, sequence, fineCount(v), coarse.centre, height, fine))
+        return e;
+    results.calibration = ProbeCalibration{std::nullopt, fine.radius - v.number(407), {}};
+    if (auto e = reversal(studPass, v, probe, machine, sequence, fine, height, results)) return e;
+    machine.moveTo(Vec3(fine.centre.x(), fine.centre.y(), start.z()));
     return std::nullopt;
 }
 
@@ -135,15 +191,15 @@ constexpr ParameterDescriptor k460Parameters[] = {
     length(434, KERF_TR_NOOP("Datum for the length: height of the sphere's centre")),
     choice(455, KERF_TR_NOOP("Number of points for the 3D calibration (0: none)"), 0, 30, 0)};
 
-// Q423 touches round the sphere at ball-centre height `height`, each from outside at r_b +
-// SET_UP + Q320 from the nominal radius about `centre`, between them back at the start height
-// (the path round the sphere is not known before the first ring): the ball centres' circle.
-std::optional<CycleError> sphereRing(const CycleValues& v, const ProbeData& probe,
-                                     ProbingMachine& machine, ProbeSequence& sequence,
-                                     const Vec2& centre, double height, double startHeight,
-                                     FittedCircle& circle) {
-    const int count = v.integer(423) < 3 ? 4 : v.integer(423);
+// `count` touches round the sphere at ball-centre height `height`, each from outside at r_b +
+// SET_UP + Q320 from the nominal radius about `centre`, between them back at the height the
+// probe started from (the path round the sphere is not known before the first ring): the ball
+// centres' circle.
+std::optional<CycleError> spherePass(const CycleValues& v, const ProbeData& probe,
+                                     ProbingMachine& machine, ProbeSequence& sequence, int count,
+                                     const Vec2& centre, double height, FittedCircle& circle) {
     const double standOff = v.number(407) + probe.ballRadius + probe.setUp + v.number(320);
+    const double startHeight = machine.ballCentre().z();
     std::vector<Vec2> balls;
     for (int k = 0; k < count; ++k) {
         const Vec2 d = unit(v.number(380) + 360.0 * k / count);
@@ -163,8 +219,9 @@ std::optional<CycleError> sphereRing(const CycleValues& v, const ProbeData& prob
 // centre in the plane (the circle of a ring is centred over the sphere's centre at any height);
 // a touch down over that centre gives the north pole. The ring's radius rho_1 at d below the
 // pole's ball centre then gives the ball-centre sphere's radius s = (rho_1^2 + d^2) / (2 d), so
-// the equator lies s below the pole, and a fine ring there gives r_b = rho - Q407. Q433 = 1:
-// the ball's south pole rested on the sphere's north pole, Q434 + Q407: L = gauge point - that.
+// the equator lies s below the pole, and a fine ring there gives r_b = rho - Q407, then the
+// reversal at the equator. Q433 = 1: the ball's south pole rested on the sphere's north pole,
+// Q434 + Q407: L = gauge point - that.
 std::optional<CycleError> run460(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
     if (v.integer(455) > 0) {
@@ -179,8 +236,8 @@ std::optional<CycleError> run460(const CycleValues& v, const ProbeData& probe,
     if (auto e = sequence.touchFrom(down, top)) return e;
     const double rough = top.z() - v.number(407) - probe.ballRadius;
     FittedCircle ring;
-    if (auto e = sphereRing(v, probe, machine, sequence, Vec2(start.x(), start.y()), rough,
-                            start.z(), ring)) {
+    if (auto e =
+            spherePass(v, probe, machine, sequence, fineCount(v), start.head<2>(), rough, ring)) {
         return e;
     }
     const Vec2 centre = ring.centre;
@@ -193,18 +250,23 @@ std::optional<CycleError> run460(const CycleValues& v, const ProbeData& probe,
                             KERF_TR_NOOP("cycle {1}: the touch points give no circle"));
     }
     const double ballSphere = (ring.radius * ring.radius + d * d) / (2.0 * d);
+    const double equatorHeight = pole.z() - ballSphere;
     FittedCircle equator;
-    if (auto e = sphereRing(v, probe, machine, sequence, centre, pole.z() - ballSphere, start.z(),
-                            equator)) {
+    if (auto e =
+            spherePass(v, probe, machine, sequence, fineCount(v), centre, equatorHeight, equator)) {
         return e;
     }
-    machine.moveTo(Vec3(equator.centre.x(), equator.centre.y(), start.z()));
     std::optional<double> length;
     if (v.integer(433) == 1) {
         const double gauge = pole.z() - probe.ballRadius + probe.length;
         length = gauge - (v.number(434) + v.number(407));
     }
-    results.calibration = ProbeCalibration{length, equator.radius - v.number(407)};
+    results.calibration = ProbeCalibration{length, equator.radius - v.number(407), {}};
+    if (auto e =
+            reversal(spherePass, v, probe, machine, sequence, equator, equatorHeight, results)) {
+        return e;
+    }
+    machine.moveTo(Vec3(equator.centre.x(), equator.centre.y(), start.z()));
     return std::nullopt;
 }
 

@@ -18,6 +18,7 @@ namespace kerf::cycles::probing {
 
 // The active touch probe: tool-table R (ball radius) and the linked touch-probe table row.
 struct ProbeData {
+    int number = 1;                // NO: its row of the touch-probe table
     double ballRadius = 0.0;       // r_b
     double probingFeed = 0.0;      // F, mm/min
     double positioningFeed = 0.0;  // FMAX (F_PREPOS = FMAX_PROBE); 0: rapid traverse
@@ -25,6 +26,10 @@ struct ProbeData {
     double setUp = 0.0;            // SET_UP
     bool track = false;            // TRACK ON or 441 Q399 = 1: orient the probe before each touch
     double length = 0.0;           // L_p: the probe's effective length (461 calibrates it)
+    // CAL_OF1/CAL_OF2: the ball centre's offset from the spindle axis (main, secondary axis)
+    // with the probe oriented at CAL_ANG; at another orientation it turns with the spindle.
+    Vec2 centreOffset{0.0, 0.0};
+    double calibrationAngleDeg = 0.0;  // CAL_ANG
     // The machine's rotary table axes, nearest to the workpiece first ("CB" on a B/C trunnion
     // with C on B, "A" with one A table, empty without): 403 and 405 turn one of them.
     std::string tableAxes;
@@ -50,6 +55,10 @@ public:
     }
     // True when the stylus is deflected before a touch starts (PRB-002).
     virtual bool deflected() const { return false; }
+    // Orients the spindle, and so the probe, to `angleDeg` in the plane (the calibration's
+    // 180-degree reversal). The ball centre then lies where the new orientation puts it. A
+    // machine whose probe cannot be oriented ignores it.
+    virtual void orient(double angleDeg) { (void)angleDeg; }
 };
 
 // Where a datum cycle puts the datum: the measured feature (local program coordinates, per local
@@ -86,10 +95,12 @@ struct FastProbing {
     bool interrupt = true;                    // Q400
 };
 
-// 460-463: the probe's calibrated length and ball radius, for its row of the tool table.
+// 460-463: the probe's calibrated length and ball radius, for its row of the tool table, and
+// its centre offset (CAL_OF1, CAL_OF2 at CAL_ANG) for its row of the touch-probe table.
 struct ProbeCalibration {
     std::optional<double> length;
     std::optional<double> radius;
+    std::optional<Vec2> centreOffset;
 };
 
 struct ProbingResults {

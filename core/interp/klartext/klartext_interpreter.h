@@ -15,6 +15,7 @@
 #include "core/cycles/cycle_values.h"
 #include "core/cycles/pattern/pattern_plan.h"
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/cycles/probing/probing_log_html.h"
 #include "core/cycles/probing/single_touch.h"
 #include "core/cycles/probing/tool_measurement.h"
 #include "core/cycles/transform/coordinate_frame.h"
@@ -391,6 +392,12 @@ private:
     // PRESET.PR of the NC root, or the default table when there is none; nullopt after a failure.
     std::optional<tables::PresetTable> presetTableToEdit(const std::filesystem::path& file);
     bool writePreset(int cycle, int row, const Pose& offset);
+    // 460/462/463: the calibrated CAL_OF1/CAL_OF2 into the probe's row of tchprobe.tp.
+    bool writeProbeCentreOffset(int cycle, int probe, const Vec2& offset);
+    // 460-463: adds the calibration to TCHPRAUTO.html (the run's calibrations so far).
+    bool logCalibration(int cycle, const char* name, const tables::ToolData& before,
+                        const cycles::probing::ProbeData& probe,
+                        const cycles::probing::ProbeCalibration& calibration);
     bool applyBasicRotation(int cycle, const cycles::probing::ProbingResults& results);
     // klartext_probe_writes.cpp: 403/405's table turn, SPC of a preset row, the datum table.
     std::string tableAxisLetters() const;
@@ -686,7 +693,8 @@ private:
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;  // the preset's, or set by 400-404 (kept in m_frame)
-    std::optional<cycles::probing::FastProbing> m_fastProbing;  // cycle 441, until the end
+    std::optional<cycles::probing::FastProbing> m_fastProbing;           // cycle 441, until the end
+    std::vector<cycles::probing::CalibrationLogEntry> m_calibrationLog;  // TCHPRAUTO.html
     cycles::CoordinateFrame m_frame;
     // Rotary tables of the machine, the tilted plane, the tables' turn in m_frame, and M126.
     std::optional<machine::TableKinematics> m_kinematics;

@@ -63,32 +63,17 @@ bool KlartextInterpreter::writePresetRotation(int cycle, int row, double degrees
     const std::filesystem::path file = m_root.path() / "PRESET.PR";
     std::optional<tables::PresetTable> table = presetTableToEdit(file);
     if (!table) return false;
-    auto column = table->table().findColumn("SPC");
-    if (!column) {
-        fail("PRB-004",
-             KERF_TR_NOOP("touch probe cycle {1}: the preset table has no SPC column for the "
-                          "basic rotation of row {2}"),
-             {std::to_string(cycle), std::to_string(row)});
-        return false;
-    }
     if (table->byNumber(row) == nullptr) (void)table->addPreset(row);
-    tables::TncTable edited = table->table();
-    if (auto error = edited.setNumber(table->byNumber(row)->row, *column, degrees)) {
+    if (auto error = table->setBasicRotation(row, degrees)) {
         failCycle({error->code, error->messageTemplate, error->args});
         return false;
     }
-    auto rewritten = tables::PresetTable::fromTable(std::move(edited));
-    if (!rewritten) {
-        failCycle(
-            {rewritten.error().code, rewritten.error().messageTemplate, rewritten.error().args});
-        return false;
-    }
-    if (auto error = replaceFile(file, rewritten->serialize())) {
+    if (auto error = replaceFile(file, table->serialize())) {
         fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the preset table: {2}"),
              {std::to_string(cycle), error->format()});
         return false;
     }
-    m_presetFile = std::move(*rewritten);
+    m_presetFile = std::move(*table);
     return true;
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/base/translate.h"
 #include "core/cycles/probing/probing_cycle.h"
+#include "core/cycles/probing/probing_log_html.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/probe_table.h"
 #include "core/workpiece/blank_solids.h"
@@ -41,22 +42,25 @@ std::string upperName(std::string_view text) {
 class KlartextInterpreter::ProbeAdapter final : public cycles::probing::ProbingMachine {
 public:
     // `real`: the stylus as it really is ([[simulation.tool_error]] of the probe), what the
-    // calibration cycles find; the control computes with the table's values.
+    // calibration cycles find; the control computes with the table's values (R, L, CAL_OF).
     ProbeAdapter(KlartextInterpreter& interpreter, const cycles::probing::ProbeData& probe,
                  const workpiece::SimulatedWorkpiece& part, workpiece::RealTool real)
         : m_k(interpreter),
           m_probe(probe),
           m_part(part),
           m_realRadius(real.radius),
-          m_realOffset(0.0, 0.0,
-                       real.radius - probe.ballRadius -
-                           (real.length - interpreter.m_tool.effectiveLength())) {}
+          m_realCentreOffset(real.centreOffset),
+          m_realHeight(real.radius - probe.ballRadius -
+                       (real.length - interpreter.m_tool.effectiveLength())),
+          m_orientationDeg(probe.calibrationAngleDeg) {}
 
-    Vec3 ballCentre() const override { return tipToBall(m_k.toLocal(m_k.m_programmed)); }
+    // The control's ball centre: the spindle position, its CAL_OF turned with the spindle and
+    // r_b above the tip.
+    Vec3 ballCentre() const override { return m_k.toLocal(m_k.m_programmed) + controlOffset(); }
 
     void moveTo(const Vec3& ballCentre) override {
         const bool rapid = m_probe.positioningFeed <= 0.0;
-        m_k.moveProgrammed(m_k.fromLocal(ballToTip(ballCentre)), rapid, m_probe.positioningFeed);
+        m_k.moveProgrammed(m_k.fromLocal(spindleOf(ballCentre)), rapid, m_probe.positioningFeed);
     }
 
     std::optional<Vec3> touch(const Vec3& direction, double maxPath) override {
@@ -67,34 +71,56 @@ public:
     }
 
     bool deflected() const override {
-        return m_part.touches(toPart(ballCentre() + m_realOffset), m_realRadius);
+        return m_part.touches(toPart(ballCentre() + realError()), m_realRadius);
+    }
+
+    void orient(double angleDeg) override {
+        m_k.emit(canon::SpindleOrient{angleDeg});
+        m_orientationDeg = angleDeg;
     }
 
 private:
     std::optional<Vec3> probe(const Vec3& direction, double maxPath, bool backToStart) {
-        const Vec3 start = ballCentre();
         if (m_probe.track && direction.head<2>().norm() > 1e-9) {
             // Angle tracking: the stylus faces the probing direction in the plane.
             double angle = std::atan2(direction.y(), direction.x()) * 180.0 / std::numbers::pi;
             if (angle <= -180.0) angle += 360.0;  // -0 in y: (-180, 180]
-            m_k.emit(canon::SpindleOrient{angle});
+            orient(angle);
         }
-        const Vec3 real = start + m_realOffset;
+        const Vec3 start = ballCentre();
+        const Vec3 real = start + realError();
         auto hit = m_part.touch(toPart(real), toPart(real + direction) - toPart(real), maxPath,
                                 m_realRadius);
         const Vec3 end =
-            hit ? Vec3(fromPart(*hit) - m_realOffset) : Vec3(start + maxPath * direction);
+            hit ? Vec3(fromPart(*hit) - realError()) : Vec3(start + maxPath * direction);
         interp::ProgramStatus::Probe status;
         status.triggered = hit.has_value();
-        status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(ballToTip(end)));
+        status.position = m_k.m_frame.toWorkpiece(m_k.fromLocal(spindleOf(end)));
         m_k.m_lastProbe = status;
-        m_k.moveProgrammed(m_k.fromLocal(ballToTip(end)), false, m_probe.probingFeed);
-        if (backToStart) m_k.moveProgrammed(m_k.fromLocal(ballToTip(start)), true, 0.0);
+        m_k.moveProgrammed(m_k.fromLocal(spindleOf(end)), false, m_probe.probingFeed);
+        if (backToStart) m_k.moveProgrammed(m_k.fromLocal(spindleOf(start)), true, 0.0);
         if (!hit) return std::nullopt;
         return end;
     }
-    Vec3 tipToBall(const Vec3& tip) const { return tip + Vec3(0.0, 0.0, m_probe.ballRadius); }
-    Vec3 ballToTip(const Vec3& ball) const { return ball - Vec3(0.0, 0.0, m_probe.ballRadius); }
+    static Vec2 turned(const Vec2& v, double degrees) {
+        const double a = degrees * std::numbers::pi / 180.0;
+        return {std::cos(a) * v.x() - std::sin(a) * v.y(),
+                std::sin(a) * v.x() + std::cos(a) * v.y()};
+    }
+    // Tool tip -> the control's ball centre: CAL_OF (measured at CAL_ANG) turned by the
+    // orientation since, and r_b up.
+    Vec3 controlOffset() const {
+        const Vec2 plane =
+            turned(m_probe.centreOffset, m_orientationDeg - m_probe.calibrationAngleDeg);
+        return {plane.x(), plane.y(), m_probe.ballRadius};
+    }
+    Vec3 spindleOf(const Vec3& ball) const { return ball - controlOffset(); }
+    // The control's ball centre -> the real one: the stylus's true offset (at spindle angle 0,
+    // turned with the spindle) less what CAL_OF corrects, and the true length and radius.
+    Vec3 realError() const {
+        const Vec2 plane = turned(m_realCentreOffset, m_orientationDeg) - controlOffset().head<2>();
+        return {plane.x(), plane.y(), m_realHeight};
+    }
     // Local program coordinates <-> the workpiece frame of the start preset, where the part is
     // when the rotary tables stand at 0; the tables carry it round as they stand now.
     Vec3 toPart(const Vec3& local) const {
@@ -120,7 +146,9 @@ private:
     const cycles::probing::ProbeData& m_probe;
     const workpiece::SimulatedWorkpiece& m_part;
     double m_realRadius;
-    Vec3 m_realOffset;  // control's ball centre -> the real one
+    Vec2 m_realCentreOffset;  // at spindle angle 0
+    double m_realHeight;      // real ball centre above the control's
+    double m_orientationDeg;  // the spindle's orientation in the plane
 };
 
 std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int cycle) {
@@ -161,6 +189,7 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
         return std::nullopt;
     }
     cycles::probing::ProbeData probe;
+    probe.number = row;
     probe.ballRadius = m_tool.effectiveRadius();
     probe.probingFeed = data->probingFeed;
     probe.positioningFeed = data->prepositionAtMachineRapid ? 0.0 : data->rapidFeed;
@@ -169,6 +198,8 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     probe.tableAxes = tableAxisLetters();
     probe.length = m_tool.effectiveLength();
     probe.track = data->track;
+    probe.centreOffset = Vec2(data->centreOffsetMain, data->centreOffsetSecondary);
+    probe.calibrationAngleDeg = data->calibrationAngle;
     if (m_fastProbing) {
         const cycles::Feed& feed = m_fastProbing->positioning;
         const bool rapid = m_fastProbing->machineRapid || feed.kind == cycles::Feed::Kind::Rapid;
@@ -284,10 +315,16 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         ToolTableEdit edit;
         edit.length = results.calibration->length;
         edit.radius = results.calibration->radius;
-        const tables::ToolData& row = *toolTable()->byNumber(m_tool.number);
+        const tables::ToolData row = *toolTable()->byNumber(m_tool.number);
         if (edit.length && row.deltaLength != 0.0) edit.deltaLength = 0.0;
         if (edit.radius && row.deltaRadius != 0.0) edit.deltaRadius = 0.0;
         if (!writeToolTable(def.number, m_tool.number, 0, edit)) return;
+        if (results.calibration->centreOffset &&
+            !writeProbeCentreOffset(def.number, probe->number,
+                                    *results.calibration->centreOffset)) {
+            return;
+        }
+        if (!logCalibration(def.number, cycle->name, row, *probe, *results.calibration)) return;
     }
     if (results.toleranceStop) {
         failCycle(*results.toleranceStop);
@@ -397,6 +434,50 @@ bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingRe
         m_programmed = m_frame.toProgram(at);
         updatePathSpace();
     }
+    return true;
+}
+
+bool KlartextInterpreter::logCalibration(int cycle, const char* name,
+                                         const tables::ToolData& before,
+                                         const cycles::probing::ProbeData& probe,
+                                         const cycles::probing::ProbeCalibration& calibration) {
+    cycles::probing::CalibrationLogEntry entry{
+        cycle, upperName(name), m_tool.number, probe.number, {}};
+    if (calibration.radius)
+        entry.values.push_back({"R", before.radius + before.deltaRadius, *calibration.radius});
+    if (calibration.length)
+        entry.values.push_back({"L", before.length + before.deltaLength, *calibration.length});
+    if (calibration.centreOffset) {
+        entry.values.push_back({"CAL_OF1", probe.centreOffset.x(), calibration.centreOffset->x()});
+        entry.values.push_back({"CAL_OF2", probe.centreOffset.y(), calibration.centreOffset->y()});
+    }
+    m_calibrationLog.push_back(std::move(entry));
+    // All calibrations of the run in one file, in the main program's folder (spec 1.15).
+    const ProgramFile& program = *m_levels.front().program;
+    const std::filesystem::path file = program.folder / "TCHPRAUTO.html";
+    const std::string text = cycles::probing::calibrationLogHtml(
+        m_sources.displayName(program.fileId), m_calibrationLog);
+    if (auto error = replaceFile(file, text)) {
+        fail("io", KERF_TR_NOOP("cannot write the calibration log {1}: {2}"),
+             {file.filename().string(), error->format()});
+        return false;
+    }
+    return true;
+}
+
+bool KlartextInterpreter::writeProbeCentreOffset(int cycle, int probe, const Vec2& offset) {
+    if (!waitForCheck()) return false;
+    tables::ProbeTable table = *m_probeTable;
+    if (auto error = table.setCentreOffset(probe, offset.x(), offset.y())) {
+        failCycle({error->code, error->messageTemplate, error->args});
+        return false;
+    }
+    if (auto error = replaceFile(m_root.path() / "tchprobe.tp", table.serialize())) {
+        fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the touch-probe table: {2}"),
+             {std::to_string(cycle), error->format()});
+        return false;
+    }
+    m_probeTable = std::move(table);
     return true;
 }
 

@@ -83,6 +83,7 @@ workpiece::RealTool KlartextInterpreter::realTool(const tables::ToolData& row) c
     if (error != nullptr) {
         real.length += error->lengthMm;
         real.radius += error->radiusMm;
+        real.centreOffset = Vec2(error->centreOffsetMm[0], error->centreOffsetMm[1]);
     }
     return real;
 }

@@ -68,6 +68,32 @@ TEST(ManualProbing, RotationIsTheEdgesAngleWhicheverPointCameFirst) {
     EXPECT_NEAR(*r->basicRotationDeg, -2.0, 1e-9);
 }
 
+TEST(ManualProbing, UnderABasicRotationTheTouchesGoAlongTheTurnedAxes) {
+    EXPECT_TRUE(
+        turnedProbingDirection(Vec3(1.0, 0.0, 0.0), 90.0).isApprox(Vec3(0.0, 1.0, 0.0), 1e-12));
+    EXPECT_TRUE(
+        turnedProbingDirection(Vec3(0.0, 0.0, -1.0), 30.0).isApprox(Vec3(0.0, 0.0, -1.0), 1e-12));
+    // An edge through the origin turned by 3 degrees, probed along +Y turned by the active basic
+    // rotation b: each touch stops where the ball meets the face along that direction. The
+    // result is the edge's whole misalignment, 3, not what is left after b.
+    const double t = 3.0 * std::numbers::pi / 180.0;
+    const Vec2 edge(std::cos(t), std::sin(t));
+    const Vec2 normal(-std::sin(t), std::cos(t));  // into the material
+    for (double b : {3.0, 1.0}) {
+        const Vec3 d = turnedProbingDirection(Vec3(0.0, 1.0, 0.0), b);
+        // Ball centre c = s edge - k d with c . normal = -r_b: k = r_b / (d . normal).
+        const double k = kBall / d.head<2>().dot(normal);
+        std::vector<ManualTouch> touches;
+        for (double s : {10.0, 60.0}) {
+            const Vec2 ball = s * edge - k * d.head<2>();
+            touches.push_back({Vec3(ball.x(), ball.y(), -5.0), d, b});
+        }
+        const auto r = evaluateManualProbing(ManualProbingFunction::Rotation, touches, kBall);
+        ASSERT_TRUE(r);
+        EXPECT_NEAR(*r->basicRotationDeg, 3.0, 1e-9) << b;
+    }
+}
+
 TEST(ManualProbing, PositionGivesTheSurfaceInTheProbingAxisOnly) {
     const std::vector<ManualTouch> down{{Vec3(3.0, 4.0, 2.5), Vec3(0.0, 0.0, -1.0)}};
     const auto r = evaluateManualProbing(ManualProbingFunction::Position, down, kBall);

@@ -262,16 +262,18 @@ TEST(MachineLoader, ToolTouchProbeAndToolErrors) {
         "base = \"mill\"\n[simulation.tool_probe]\nenabled = true\n"
         "centre = [-200.0, 50.0, -300.0]\ndiameter = 30.0\ntype = \"cube\"\n"
         "[[simulation.tool_error]]\ntool = 3\nlength = -0.05\nradius = -0.012\n"
-        "[[simulation.tool_error]]\ntool = 7\nlength = 0.1\n");
+        "[[simulation.tool_error]]\ntool = 7\nlength = 0.1\n"
+        "[[simulation.tool_error]]\ntool = 1\ncentre_offset = [0.03, -2]\n");
     EXPECT_TRUE(config.toolProbe.enabled);
     EXPECT_EQ(config.toolProbe.centreXMm, -200.0);
     EXPECT_EQ(config.toolProbe.centreYMm, 50.0);
     EXPECT_EQ(config.toolProbe.centreZMm, -300.0);
     EXPECT_EQ(config.toolProbe.diameterMm, 30.0);
     EXPECT_EQ(config.toolProbe.shape, ToolProbeShape::Cube);
-    ASSERT_EQ(config.toolErrors.size(), 2u);
+    ASSERT_EQ(config.toolErrors.size(), 3u);
     EXPECT_EQ(config.toolErrors[0], (ToolErrorConfig{3, -0.05, -0.012}));
     EXPECT_EQ(config.toolErrors[1], (ToolErrorConfig{7, 0.1, 0.0}));
+    EXPECT_EQ(config.toolErrors[2], (ToolErrorConfig{1, 0.0, 0.0, {0.03, -2.0}}));
     ASSERT_NE(config.toolError(7), nullptr);
     EXPECT_EQ(config.toolError(7)->lengthMm, 0.1);
     EXPECT_EQ(config.toolError(4), nullptr);
@@ -290,6 +292,14 @@ TEST(MachineLoaderErrors, ToolErrorsNeedAToolOnceAndSmallLengths) {
     EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 3\n"
                          "[[simulation.tool_error]]\ntool = 3\n"),
               Lines{"mymill.toml:4:1: error: simulation.tool_error: tool 3 is given twice"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 1\n"
+                         "centre_offset = [1, 12]\n"),
+              Lines{"mymill.toml:4:17: error: simulation.tool_error.centre_offset must be an "
+                    "array of two numbers [x, y] within +-10 mm, not [ 1, 12 ]"});
+    EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 1\n"
+                         "centre_offset = 0.1\n"),
+              Lines{"mymill.toml:4:17: error: simulation.tool_error.centre_offset must be an "
+                    "array of two numbers [x, y] within +-10 mm, not 0.1"});
     EXPECT_EQ(problemsOf("base = \"mill\"\n[[simulation.tool_error]]\ntool = 3\nlenght = 1\n"),
               Lines{"mymill.toml:4:1: error: unknown key simulation.tool_error.lenght"});
     EXPECT_EQ(problemsOf("base = \"mill\"\n[simulation]\ntool_error = 3\n"),

@@ -67,9 +67,53 @@ TEST(PresetTable, DefaultTableAndEdits) {
 
     EXPECT_TRUE(presets->addPreset(3));
     EXPECT_TRUE(presets->setAxis(7, 'X', 1.0));
-    EXPECT_TRUE(presets->setAxis(3, 'W', 1.0));  // no W column
+    EXPECT_TRUE(presets->setAxis(3, 'Q', 1.0));  // no axis Q
     ASSERT_FALSE(presets->removePreset(3));
     EXPECT_EQ(presets->serialize(), text);
+}
+
+TEST(PresetTable, OlderTableGetsTheColumnsItLacksWhenWritten) {
+    // An older control's table: X Y Z only, no basic rotation column, CRLF, unpadded rows.
+    const std::string text =
+        "BEGIN PRESET.PR MM\r\n"
+        "NR   DOC          X          Y          Z\r\n"
+        "0                 +0         +0         -400\r\n"
+        "1    vice         +120.5     -35.125    +200\r\n"
+        "[END]\r\n";
+    auto presets = PresetTable::parse(text, "PRESET.PR");
+    ASSERT_TRUE(presets.ok()) << presets.error().format();
+    EXPECT_FALSE(presets->basicRotationColumn());
+    EXPECT_EQ(presets->basicRotationDeg(1), 0.0);
+    ASSERT_FALSE(presets->setBasicRotation(1, 0.7));
+    ASSERT_FALSE(presets->setAxis(0, 'C', 12.5));
+    // Z's widest cell ends at byte 44: SPC starts one space later, C 14 bytes after SPC.
+    EXPECT_EQ(presets->serialize(),
+              "BEGIN PRESET.PR MM\r\n" + pad("NR   DOC          X          Y          Z", 45) +
+                  pad("SPC", 14) + "C\r\n" +
+                  pad("0                 +0         +0         -400", 59) + "+12.5\r\n" +
+                  pad("1    vice         +120.5     -35.125    +200", 45) + "+0.7\r\n" +
+                  "[END]\r\n");
+    EXPECT_EQ(presets->basicRotationDeg(1), 0.7);
+    EXPECT_EQ(presets->byNumber(1)->axis('Y'), -35.125);
+    EXPECT_EQ(presets->byNumber(0)->axis('C'), 12.5);
+    // Emptying an axis the table lacks adds nothing; a column no preset table has is refused.
+    ASSERT_FALSE(presets->setAxis(0, 'W', std::nullopt));
+    EXPECT_FALSE(presets->table().findColumn("W"));
+}
+
+TEST(PresetTable, BasicRotationGoesToRotInATableWithoutSpc) {
+    // iTNC 530 tables keep the basic rotation in ROT.
+    const std::string text =
+        "BEGIN PRESET.PR MM\n"
+        "NR   DOC   ROT      X        Y        Z\n"
+        "0          +1.5     +0       +0       +0\n"
+        "[END]\n";
+    auto presets = PresetTable::parse(text, "PRESET.PR");
+    ASSERT_TRUE(presets.ok()) << presets.error().format();
+    EXPECT_EQ(presets->basicRotationDeg(0), 1.5);
+    ASSERT_FALSE(presets->setBasicRotation(0, -0.25));
+    EXPECT_EQ(presets->basicRotationDeg(0), -0.25);
+    EXPECT_FALSE(presets->table().findColumn("SPC"));
 }
 
 TEST(DatumTable, EmptyCellMeansNoShift) {

@@ -76,5 +76,22 @@ TEST(ProbeTable, RefusesBadValuesAtTheirCell) {
     EXPECT_FALSE(duplicate.ok());
 }
 
+TEST(ProbeTable, CalibrationWritesTheCentreOffsetAddingMissingColumns) {
+    // A table without CAL_OF1/CAL_OF2 (an older control's): calibration adds them at the end,
+    // CAL_OF1 one space after DIST's widest cell, CAL_OF2 11 bytes later.
+    auto probes = ProbeTable::parse(
+        "BEGIN TCHPROBE.TP MM\nNO   TYPE   F     DIST\n1    TS460  1000  20\n"
+        "2    TS260  500   10\n[END]\n");
+    ASSERT_TRUE(probes.ok()) << probes.error().format();
+    ASSERT_FALSE(probes->setCentreOffset(2, 0.03, -0.0215));
+    EXPECT_EQ(probes->serialize(),
+              "BEGIN TCHPROBE.TP MM\nNO   TYPE   F     DIST CAL_OF1    CAL_OF2\n"
+              "1    TS460  1000  20\n2    TS260  500   10   +0.03      -0.0215\n[END]\n");
+    EXPECT_EQ(probes->byNumber(2)->centreOffsetMain, 0.03);
+    EXPECT_EQ(probes->byNumber(2)->centreOffsetSecondary, -0.0215);
+    EXPECT_EQ(probes->byNumber(1)->centreOffsetMain, 0.0);
+    EXPECT_TRUE(probes->setCentreOffset(3, 0.0, 0.0));  // no probe 3
+}
+
 }  // namespace
 }  // namespace kerf::tables

@@ -192,6 +192,38 @@ TEST(TncTable, PadsNewRowsWhenTheTableDoes) {
                                      std::string(15, ' ') + "\n[END]\n");
 }
 
+TEST(TncTable, AppendsAColumnToAPaddedTable) {
+    // Y ends at byte 16 with a space before it: the new column starts there, and the padded
+    // header and rows are padded to its width too.
+    TncTable table = parseOrDie("BEGIN P.TAB MM\nNR  X     Y     \n0   +1    +2    \n[END]\n");
+    ASSERT_FALSE(table.appendColumn("Z", 6, ColumnFormat{}));
+    EXPECT_EQ(table.serialize(), "BEGIN P.TAB MM\nNR  X     Y     Z     \n0   +1    +2    " +
+                                     std::string(6, ' ') + "\n[END]\n");
+    ASSERT_FALSE(table.setCell(0, 3, "+3"));
+    EXPECT_EQ(table.serialize(),
+              "BEGIN P.TAB MM\nNR  X     Y     Z     \n0   +1    +2    +3    \n[END]\n");
+    EXPECT_EQ(table.cell(0, 2), "+2");
+}
+
+TEST(TncTable, AppendsAColumnOneSpaceAfterTheWidestCellOfAnUnpaddedTable) {
+    // DOC (byte 23) is open-ended and "first" fills it up to byte 28: SPC starts at 29. The
+    // rows end after their last value and stay so; the CRLF endings are kept.
+    TncTable table = parseOrDie(kCommaTable);
+    ASSERT_FALSE(table.appendColumn("SPC", 8, ColumnFormat{}));
+    ASSERT_EQ(table.columns().back().start, 29u);
+    EXPECT_EQ(table.columns()[3].width, 6u);
+    ASSERT_FALSE(table.setCell(0, 4, "7"));
+    EXPECT_EQ(table.serialize(),
+              "BEGIN TEST   .TAB     MM\r\n"
+              "NR   X        Y        DOC   SPC\r\n"
+              "0    +1,500   -2,000   first 7\r\n"
+              "1    +0,000   +3,250\r\n"
+              "[END]\r\n");
+    EXPECT_EQ(table.cell(0, 3), "first");
+    EXPECT_TRUE(table.appendColumn("SPC", 8, ColumnFormat{}));  // already there
+    EXPECT_TRUE(table.appendColumn("A B", 8, ColumnFormat{}));
+}
+
 TEST(TncTable, NewRowsTakeDeclaredDefaultsInTheColumnStyle) {
     TncTable table = parseOrDie("BEGIN P.TAB MM\nNR  X       NOTE\n0   +1,50   a\n[END]\n");
     ColumnFormat number;

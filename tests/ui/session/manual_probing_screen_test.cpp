@@ -8,7 +8,9 @@
 #include <QTimer>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <numbers>
 #include <thread>
 
@@ -226,7 +228,15 @@ TEST_F(ManualProbingScreen, ProbingPFindsTheCornerOfTheTwoTurnedEdges) {
     EXPECT_NEAR(session->presetInMachine()[Axis::Y], file[Axis::Y] + y, 1e-9);
     EXPECT_TRUE(
         answers.labels[0].startsWith(QStringLiteral("Probed X = ") + QString::number(x, 'f', 4)))
-        << answers.labels[0].toStdString();
+        << answers.labels[0].toStdString();  // The completed function's log in the NC root.
+    std::ifstream in(dir / "TCHPRMAN.html");
+    const std::string log{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(log.find("<h2>PROBING P</h2>"), std::string::npos) << log;
+    EXPECT_NE(
+        log.find("<tr><td>X</td><td>" + QString::number(x, 'f', 4).toStdString() + "</td></tr>"),
+        std::string::npos)
+        << log;
+    EXPECT_NE(log.find("<tr><td>Basic rotation</td><td>0.7000</td></tr>"), std::string::npos);
 }
 
 TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouched) {

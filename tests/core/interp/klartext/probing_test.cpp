@@ -2,6 +2,8 @@
 // placed with the machine file's setup error (shift 1.5 / -0.8 / -0.2 mm, 0.7 degrees).
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -12,6 +14,7 @@
 #include "core/machine/machine_loader.h"
 #include "core/tables/datum_table.h"
 #include "core/tables/preset_table.h"
+#include "core/tables/probe_table.h"
 #include "core/tables/tool_table.h"
 
 namespace kerf::klartext {
@@ -355,6 +358,38 @@ TEST_F(ProbingTest, FreshNcRootStoresTheBasicRotationInTheDefaultPresetTable) {
     EXPECT_NEAR(presets->table().number(row2->row, *spc).value_or(0.0), 0.7, 1e-4);
 }
 
+TEST_F(ProbingTest, OlderPresetTableWithoutSpcGetsTheColumn) {
+    // A preset table from an older control: X Y Z only, CRLF, a second preset. 400 with
+    // Q305 = 0 keeps the part's real 0.7 degrees in row 0: the table gets an SPC column for it
+    // and keeps everything else.
+    const std::string older =
+        "BEGIN PRESET.PR MM\r\n"
+        "NR   DOC          X          Y          Z\r\n"
+        "0                 +0         +0         -400\r\n"
+        "1    vice         +120.5     -35.125    +200\r\n"
+        "[END]\r\n";
+    writeFileAtomically(dir / "PRESET.PR", older);
+    ASSERT_EQ(run("1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                  "3 TOOL CALL 1 Z\n4 L X-10 Y-10 Z+50 R0 FMAX\n"
+                  "5 TCH PROBE 400 BASIC ROTATION\n  Q263=+10\n  Q264=+0\n  Q265=+60\n"
+                  "  Q266=+0\n  Q272=2\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n"
+                  "  Q301=1\n  Q307=0\n  Q305=0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    auto presets = tables::PresetTable::load(dir / "PRESET.PR");
+    ASSERT_TRUE(presets.ok()) << presets.error().format();
+    EXPECT_NEAR(presets->basicRotationDeg(0), 0.7, 1e-4);
+    EXPECT_EQ(presets->basicRotationDeg(1), 0.0);
+    const std::string written = presets->serialize();
+    // The old header and rows stay as they were up to the new column, line endings included.
+    EXPECT_EQ(
+        written.rfind("BEGIN PRESET.PR MM\r\nNR   DOC          X          Y          Z    SPC", 0),
+        0u);
+    EXPECT_NE(written.find("\r\n1    vice         +120.5     -35.125    +200\r\n[END]\r\n"),
+              std::string::npos);
+    EXPECT_EQ(*presets->byNumber(0)->axis('Z'), -400.0);
+}
+
 TEST_F(ProbingTest, DatumCycleWritesTheDatumTableWithQ303Zero) {
     // 413 with Q303 = 0, Q305 = 2: row 2 of the datum table selected with SEL TABLE gets the
     // shift that gives the real stud centre (1.5, -0.8) and its top (-0.2) the nominal 0.
@@ -472,6 +507,17 @@ TEST_F(ProbingTest, Cycle461CalibratesTheProbeLengthOnTheTopFace) {
     EXPECT_NEAR(written->byNumber(1)->length, 0.1, 1e-4);
 }
 
+// The tube's bore of radius 5 as a calibration ring, the probe in it at Z-5.
+const char* kRingProgram =
+    "1 BLK FORM CYLINDER Z R20 RI5 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+    "3 L X+0 Y+0 Z+10 R0 FMAX\n4 L Z-5 FMAX\n";
+const char* kCalibrateInRing =
+    "5 TCH PROBE 462 CALIBRATE TS IN RING\n  Q407=+5\n  Q320=+0\n  Q423=+8\n  Q380=+0\n";
+const char* kMeasureRing =
+    "6 TCH PROBE 421 MEASURE HOLE\n  Q273=+0\n  Q274=+0\n  Q262=10\n  Q325=+0\n"
+    "  Q247=+90\n  Q261=-5\n  Q320=0\n  Q260=+20\n  Q301=1\n  Q275=0\n  Q276=0\n"
+    "  Q279=0\n  Q280=0\n  Q281=0\n  Q309=0\n  Q330=0\n  Q423=4\n  Q365=1\n";
+
 TEST_F(ProbingTest, Cycle462CalibratesTheBallRadiusInARing) {
     // A ring of radius 5 (the tube's bore), really 0.58 mm off where the probe starts: the
     // coarse pass centres the probe, the fine pass finds ball centres on a circle of 5 - 1.98.
@@ -500,6 +546,102 @@ TEST_F(ProbingTest, Cycle463CalibratesTheBallRadiusOnAStud) {
     auto written = tables::ToolTable::load(dir / "TOOL.T");
     ASSERT_TRUE(written.ok());
     EXPECT_NEAR(written->byNumber(1)->radius, 1.98, 1e-4);
+}
+
+// kProbeError's stylus, its ball centre also 0.03 mm off the spindle axis along +X and 0.02
+// along -Y (spindle at 0 degrees, CAL_ANG 0 in the default tchprobe.tp).
+const std::string kMisalignedProbe = std::string(kProbeError) + "centre_offset = [0.03, -0.02]\n";
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+double centreOffset(const fs::path& file, const char* column) {
+    auto table = tables::ProbeTable::load(file);
+    EXPECT_TRUE(table.ok());
+    if (!table.ok()) return 0.0;
+    auto index = table->table().findColumn(column);
+    return index ? table->table().number(table->byNumber(1)->row, *index).value_or(0.0) : 0.0;
+}
+
+TEST_F(ProbingTest, UncalibratedCentreOffsetMovesTheMeasuredCentre) {
+    // The ring (bore radius 5) really at (0.5, -0.3). The control takes the ball centre for the
+    // spindle's, which is 0.03 / -0.02 off: every ball centre it computes lies by that much the
+    // other way, so 421 finds the centre at (0.47, -0.28). The ball centres lie 5 - 1.98 from
+    // the real centre; with the table's r_b 2 the diameter is 2 (3.02 + 2) = 10.04.
+    useMachine(kMisalignedProbe);
+    ASSERT_EQ(run(std::string(kRingProgram) + kMeasureRing), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(151), 0.47, 1e-9);
+    EXPECT_NEAR(q(152), -0.28, 1e-9);
+    EXPECT_NEAR(q(153), 10.04, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycle462FindsTheCentreOffsetAndLaterCyclesUseIt) {
+    // 462 at CAL_ANG 0 fits the ball centres about C - e (e the offset CAL_OF misses), turned
+    // by 180 degrees about C + e: e = (0.03, -0.02) goes to tchprobe.tp, R = 1.98 to TOOL.T.
+    // 421 then finds the real ring: centre (0.5, -0.3), diameter 10.
+    useMachine(kMisalignedProbe);
+    ASSERT_EQ(run(std::string(kRingProgram) + kCalibrateInRing + kMeasureRing),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    EXPECT_NEAR(q(151), 0.5, 1e-9);
+    EXPECT_NEAR(q(152), -0.3, 1e-9);
+    EXPECT_NEAR(q(153), 10.0, 1e-9);
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF1"), 0.03, 1e-4);
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF2"), -0.02, 1e-4);
+    // The reversal turned the spindle by 180 degrees and back to CAL_ANG.
+    std::vector<double> orientations;
+    for (const canon::Command& c : out.commands) {
+        if (const auto* o = std::get_if<canon::SpindleOrient>(&c.body))
+            orientations.push_back(o->angleDeg);
+    }
+    EXPECT_EQ(orientations, (std::vector<double>{180.0, 0.0}));
+    // TCHPRAUTO.html in the program's folder logs the calibration with the values before.
+    const std::string log = readText(dir / "TCHPRAUTO.html");
+    EXPECT_NE(log.find("<h2>Cycle 462 CALIBRATE TS IN RING</h2>"), std::string::npos) << log;
+    EXPECT_NE(log.find("<tr><td>R</td><td>2.0000</td><td>1.9800</td></tr>"), std::string::npos);
+    EXPECT_NE(log.find("<tr><td>CAL_OF1</td><td>0.0000</td><td>0.0300</td></tr>"),
+              std::string::npos);
+    EXPECT_NE(log.find("<tr><td>CAL_OF2</td><td>0.0000</td><td>-0.0200</td></tr>"),
+              std::string::npos);
+    // A second run reads the calibrated offset from the table: 421 alone finds the real ring.
+    ASSERT_EQ(run(std::string(kRingProgram) + kMeasureRing), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(151), 0.5, 1e-9);
+    EXPECT_NEAR(q(152), -0.3, 1e-9);
+    // Calibrating twice in one run: both go into the log, the second finds what the first set.
+    std::string twice = std::string(kRingProgram) + kCalibrateInRing + kCalibrateInRing;
+    twice.replace(twice.rfind("5 TCH"), 1, "6");
+    ASSERT_EQ(run(twice), interp::RunStatus::Finished) << firstError();
+    const std::string both = readText(dir / "TCHPRAUTO.html");
+    const size_t second = both.rfind("<h2>Cycle 462");
+    ASSERT_NE(second, both.find("<h2>Cycle 462"));
+    EXPECT_NE(both.find("<tr><td>CAL_OF1</td><td>0.0300</td><td>0.0300</td></tr>", second),
+              std::string::npos)
+        << both;
+}
+
+TEST_F(ProbingTest, CentreOffsetAtAnotherCalibrationAngleTurnsWithTheSpindle) {
+    // CAL_ANG 90: the probe stands turned by 90 degrees, so the stylus's offset (0.03, -0.02)
+    // at spindle angle 0 lies at (0.02, 0.03). 463 on the stud (radius 10, really at
+    // (0.5, -0.3)) writes that as CAL_OF1/CAL_OF2.
+    useMachine(kMisalignedProbe);
+    writeFileAtomically(dir / "tchprobe.tp",
+                        "BEGIN TCHPROBE.TP MM\nNO   TYPE   CAL_ANG  F     DIST  SET_UP\n"
+                        "1    TS460  +90      1000  20    2\n[END]\n");
+    ASSERT_EQ(run("1 BLK FORM CYLINDER Z R10 L30 DIST+0\n2 TOOL CALL 1 Z\n"
+                  "3 L X+0 Y+0 Z+2 R0 FMAX\n"
+                  "4 TCH PROBE 463 CALIBRATE TS ON STUD\n  Q407=+10\n  Q320=+0\n  Q301=+1\n"
+                  "  Q423=+8\n  Q380=+0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    // The old table had no CAL_OF columns: they are added.
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF1"), 0.02, 1e-4);
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF2"), 0.03, 1e-4);
 }
 
 // The old single-touch cycles on the plate 100 x 60 x 40 placed with the fixture's setup error:
@@ -646,8 +788,24 @@ TEST_F(ProbingTest, Cycle460CalibratesRadiusAndLengthOnASphere) {
     EXPECT_NEAR(end[Axis::X], 0.5, 1e-6);
     EXPECT_NEAR(end[Axis::Y], -0.3, 1e-6);
     EXPECT_NEAR(end[Axis::Z], 10.0, 1e-6);
+    // The stylus runs true: the reversal finds no centre offset.
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF1"), 0.0, 1e-9);
     // The 3D calibration (option 92) is not available.
     fs::remove(dir / "TOOL.T");
+    fs::remove(dir / "tchprobe.tp");
+    // With the stylus 0.03 / -0.02 off the spindle, the reversal at the equator finds it; the
+    // probe ends with the (uncalibrated) control's ball centre over the sphere's, the spindle
+    // by that offset beside it.
+    useMachine(kMisalignedProbe +
+               "[simulation.calibration_sphere]\ncentre = [0.0, 0.0, -20.0]\nradius = 12.5\n"
+               "[simulation.blank]\nmin = [100.0, 100.0, -40.0]\nmax = [200.0, 160.0, 0.0]\n");
+    ASSERT_EQ(run(program + "0\n"), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-6);
+    EXPECT_NEAR(q(114), 0.1, 1e-6);
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF1"), 0.03, 1e-4);
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF2"), -0.02, 1e-4);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::X], 0.47, 1e-6);
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::Y], -0.28, 1e-6);
     ASSERT_EQ(run(program + "15\n"), interp::RunStatus::Failed);
     EXPECT_NE(firstError().find("Q455"), std::string::npos) << firstError();
 }
