@@ -135,6 +135,32 @@ std::optional<CycleError> run462(const CycleValues& v, const ProbeData& probe,
 constexpr ParameterDescriptor k463Parameters[] = {kRingRadius, kSetUpClearance, kMoveToClearance,
                                                   kPointCount, kReferenceAngle};
 
+// A ring of `count` touches towards `centre` at ball-centre height `height`, each from
+// `standOff` outside it, the probe going up to `travelHeight` between them: the ball centres'
+// circle.
+struct OutsideRing {
+    int cycle;
+    double standOff;
+    double travelHeight;
+};
+std::optional<CycleError> touchRingFromOutside(const OutsideRing& ring, const CycleValues& v,
+                                               ProbingMachine& machine, ProbeSequence& sequence,
+                                               int count, const Vec2& centre, double height,
+                                               FittedCircle& circle) {
+    std::vector<Vec2> balls;
+    for (int k = 0; k < count; ++k) {
+        const Vec2 d = unit(v.number(380) + 360.0 * k / count);
+        const Vec2 from = centre + ring.standOff * d;
+        machine.moveTo(Vec3(from.x(), from.y(), ring.travelHeight));
+        machine.moveTo(Vec3(from.x(), from.y(), height));
+        Vec3 ball;
+        if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
+        balls.emplace_back(ball.x(), ball.y());
+        machine.moveTo(Vec3(from.x(), from.y(), ring.travelHeight));
+    }
+    return fitted(ring.cycle, balls, circle);
+}
+
 // 463: `count` touches round the stud about `centre`, each from outside at r_b + SET_UP +
 // Q320 from the nominal radius at ball-centre height `height`, between them back at the start
 // height (also with Q301 = 0: the path round the stud is not known before the coarse pass).
@@ -142,19 +168,9 @@ std::optional<CycleError> studPass(const CycleValues& v, const ProbeData& probe,
                                    ProbingMachine& machine, ProbeSequence& sequence, int count,
                                    const Vec2& centre, double height, FittedCircle& circle) {
     const double clearance = probe.setUp + v.number(320);
-    const double startHeight = height + clearance + 2.0 * probe.ballRadius;
-    std::vector<Vec2> balls;
-    for (int k = 0; k < count; ++k) {
-        const Vec2 d = unit(v.number(380) + 360.0 * k / count);
-        const Vec2 from = centre + (v.number(407) + probe.ballRadius + clearance) * d;
-        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
-        machine.moveTo(Vec3(from.x(), from.y(), height));
-        Vec3 ball;
-        if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
-        balls.emplace_back(ball.x(), ball.y());
-        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
-    }
-    return fitted(463, balls, circle);
+    const OutsideRing ring{463, v.number(407) + probe.ballRadius + clearance,
+                           height + clearance + 2.0 * probe.ballRadius};
+    return touchRingFromOutside(ring, v, machine, sequence, count, centre, height, circle);
 }
 
 // 463: from above the stud's centre (the ball's south pole about SET_UP + Q320 above its top),
@@ -198,20 +214,9 @@ constexpr ParameterDescriptor k460Parameters[] = {
 std::optional<CycleError> spherePass(const CycleValues& v, const ProbeData& probe,
                                      ProbingMachine& machine, ProbeSequence& sequence, int count,
                                      const Vec2& centre, double height, FittedCircle& circle) {
-    const double standOff = v.number(407) + probe.ballRadius + probe.setUp + v.number(320);
-    const double startHeight = machine.ballCentre().z();
-    std::vector<Vec2> balls;
-    for (int k = 0; k < count; ++k) {
-        const Vec2 d = unit(v.number(380) + 360.0 * k / count);
-        const Vec2 from = centre + standOff * d;
-        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
-        machine.moveTo(Vec3(from.x(), from.y(), height));
-        Vec3 ball;
-        if (auto e = sequence.touchFrom(Vec3(-d.x(), -d.y(), 0.0), ball)) return e;
-        balls.emplace_back(ball.x(), ball.y());
-        machine.moveTo(Vec3(from.x(), from.y(), startHeight));
-    }
-    return fitted(460, balls, circle);
+    const OutsideRing ring{460, v.number(407) + probe.ballRadius + probe.setUp + v.number(320),
+                           machine.ballCentre().z()};
+    return touchRingFromOutside(ring, v, machine, sequence, count, centre, height, circle);
 }
 
 // 460 (spec 6, impl. note): from above the sphere, roughly over its centre, a touch along -T
