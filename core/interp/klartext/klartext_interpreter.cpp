@@ -4,7 +4,6 @@
 #include <set>
 
 #include "core/base/translate.h"
-#include "core/interp/klartext/program_check.h"
 #include "core/interp/klartext/statement_axes.h"
 
 namespace kerf::klartext {
@@ -58,12 +57,17 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
     }
 }
 
-KlartextInterpreter::~KlartextInterpreter() = default;
+KlartextInterpreter::~KlartextInterpreter() {
+    if (m_checkThread.joinable()) {
+        m_checking->executionOffset.store(SIZE_MAX);
+        m_checkThread.join();
+    }
+}
 
 bool KlartextInterpreter::waitForCheck() {
-    if (!m_check) return !m_checkFailed;
-    m_check->finish();
-    m_check.reset();
+    if (!m_checkThread.joinable()) return !m_checkFailed;
+    m_checking->executionOffset.store(SIZE_MAX);
+    m_checkThread.join();
     DiagnosticList found = m_checking->diagnostics;
     checkCalledPrograms(*m_checking, found);
     if (hasErrors(found)) {
@@ -118,7 +122,9 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
     if (mode == CheckMode::Background) {
         program->inch = programUsesInch(*program);
         m_checking = program;
-        m_check = std::make_unique<ProgramCheck>(*program);
+        program->followExecution = true;
+        program->executionOffset.store(0);
+        m_checkThread = std::thread([program] { checkProgram(*program); });
     } else {
         DiagnosticList found = program->diagnostics;
         checkCalledPrograms(*program, found);
@@ -185,6 +191,7 @@ void KlartextInterpreter::startLevel(ProgramFile* program, size_t returnOffset,
     m_levels.push_back(level);
     m_inch = program->inch;
     selectProgram(*program);
+    m_releasedBefore = 0;
 }
 
 // ---- diagnostics -----------------------------------------------------------------------------
@@ -261,6 +268,13 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
         m_blockOffset = m_reader->offset();
+        if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
+            m_releasedBefore = m_blockOffset;
+            ProgramFile& program = *m_levels.back().program;
+            if (&program == m_checking && m_checkThread.joinable()) {
+                program.executionOffset.store(m_blockOffset);
+            }
+        }
         if (!m_reader->next(m_line)) {
             endOfProgram(false);
             outputValuesOk();
@@ -279,8 +293,6 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
             fail(p.code.c_str(), p.messageTemplate.c_str(), p.args);
             break;
         }
-        // The check follows the run through the main program and takes the block as parsed.
-        if (m_check && &program == m_checking) m_check->take(m_line, m_block);
         m_at.blockNumber = m_block.blockNumber;
         m_currentM = MWords{};
         if (m_block.hidden && m_settings.blockSkip) continue;
@@ -351,6 +363,7 @@ bool KlartextInterpreter::endOfProgram(bool explicitEnd) {
         const Level& caller = m_levels.back();
         m_inch = caller.inch;
         selectProgram(*caller.program);
+        m_releasedBefore = 0;
         m_reader->seek(finished.returnOffset, finished.returnLine);
         if (!m_pointRuns.empty() && m_pointRuns.back().callerLevel == m_levels.size()) {
             returnFromPointProgram();

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "core/cycles/contour/sl_machining.h"
@@ -46,8 +47,6 @@ struct LegacyCycle;
 }
 
 namespace kerf::klartext {
-
-class ProgramCheck;
 
 struct KlartextSettings {
     const machine::MachineConfig* machine = nullptr;  // required
@@ -92,9 +91,8 @@ public:
     KlartextInterpreter(program::SourceRegistry& sources, KlartextSettings settings);
     ~KlartextInterpreter() override;
 
-    // Inline: the program is checked before load() returns. Background: execution starts at
-    // once and the check follows it, taking the blocks the run has parsed (a plain program is
-    // parsed once); jumps, calls, writes and the program end first complete the check, and if it
+    // Inline: the program is checked before load() returns. Background: the check runs in a
+    // second thread while execution starts; jumps and the program end wait for it, and if it
     // finds errors checkFailed() becomes true and the run stops.
     enum class CheckMode : uint8_t { Inline, Background };
 
@@ -176,8 +174,7 @@ private:
         int id = 0, nr = 0, idx = 0;
     };
 
-    // Program flow (klartext_interpreter.cpp). Completes the check that follows the run before
-    // what it must not do unchecked; false when the check failed.
+    // Program flow (klartext_interpreter.cpp).
     bool waitForCheck();
     // The main program is the operator's choice; called programs are opened through the NC root.
     enum class Origin : uint8_t { Main, Called };
@@ -606,8 +603,8 @@ private:
     QParameters m_q;
 
     std::vector<std::unique_ptr<ProgramFile>> m_programs;
-    std::unique_ptr<ProgramCheck> m_check;  // the check that follows the run (Background)
-    ProgramFile* m_checking = nullptr;      // the program it checks
+    std::thread m_checkThread;
+    ProgramFile* m_checking = nullptr;  // program the background check works on
     bool m_checkFailed = false;
     size_t m_diagnosticsAtLoad = 0;
     std::vector<Level> m_levels;
@@ -616,6 +613,8 @@ private:
     program::LogicalLine m_line;
     ParsedBlock m_block;
     size_t m_blockOffset = 0;
+    static constexpr size_t kReleaseStep = 8u << 20;  // tell the check every 8 MiB read
+    size_t m_releasedBefore = 0;
     SourceLocation m_at;
 
     DiagnosticList m_diagnostics;

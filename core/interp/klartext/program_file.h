@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -56,6 +57,11 @@ struct ProgramFile {
     AxisMask machineAxes =
         kAllAxesMask;  // the axes the machine has; every axis when there is no machine
 
+    // For a check running alongside execution: how far execution has read. The check stays
+    // within a window ahead of it so the text between them is all that is resident; SIZE_MAX lets
+    // it run freely (execution waits for it).
+    std::atomic<size_t> executionOffset{SIZE_MAX};
+    bool followExecution = false;
     // The program the run starts with (not one it calls): only its flow is known from its start.
     bool mainProgram = false;
 
