@@ -112,8 +112,11 @@ Vec3 normalOf(Plane plane) {
 
 bool CoordinateFrame::flipsOrientation(Plane plane) const {
     // A spatial turn that lays the plane upside down reverses its arcs too.
-    const Vec3 n = normalOf(plane);
-    const bool turned = (m_tilted || m_tabled) && (spatialTurn() * n).dot(n) < 0.0;
+    bool turned = false;
+    if (m_tilted || m_tabled) {  // every block asks: the normal only when there is a turn
+        const Vec3 n = normalOf(plane);
+        turned = (spatialTurn() * n).dot(n) < 0.0;
+    }
     return flipsOrientationInTiltedPlane(plane) != turned;
 }
 
