@@ -8625,6 +8625,10 @@ wählen</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} ist neben den Polarkoordinaten PR/PA nicht erlaubt (nur die Werkzeugachse darf programmiert werden)</translation>
     </message>
+    <message>
+        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
+        <translation>SL-Zyklen (21-25, 275, 276) enden wieder an der Position vor dem Zyklus (posAfterContPocket = PosBeforeMachining der TNC); false: auf der sicheren Höhe Q7, nur in der Werkzeugachse (ToolAxClearanceHeight)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8625,6 +8625,10 @@ solución</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} no está permitido junto a las coordenadas polares PR/PA (solo se puede programar el eje de la herramienta)</translation>
     </message>
+    <message>
+        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
+        <translation>Los ciclos SL (21-25, 275, 276) terminan de nuevo en la posición anterior al ciclo (posAfterContPocket = PosBeforeMachining del TNC); false: en la altura de seguridad Q7, solo en el eje de la herramienta (ToolAxClearanceHeight)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

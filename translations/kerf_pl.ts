@@ -8628,6 +8628,10 @@ rozwiązanie</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} nie jest dozwolone obok współrzędnych biegunowych PR/PA (można programować tylko oś narzędzia)</translation>
     </message>
+    <message>
+        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
+        <translation>Cykle SL (21-25, 275, 276) kończą się z powrotem w pozycji sprzed cyklu (posAfterContPocket = PosBeforeMachining sterowania TNC); false: na bezpiecznej wysokości Q7, tylko w osi narzędzia (ToolAxClearanceHeight)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8625,6 +8625,10 @@ solução</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} não é permitido junto às coordenadas polares PR/PA (só o eixo da ferramenta pode ser programado)</translation>
     </message>
+    <message>
+        <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
+        <translation>Os ciclos SL (21-25, 275, 276) terminam de novo na posição anterior ao ciclo (posAfterContPocket = PosBeforeMachining do TNC); false: na altura segura Q7, apenas no eixo da ferramenta (ToolAxClearanceHeight)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -188,6 +188,9 @@ struct MachineConfig {
     // Code number the HMI asks before machine parameters may be edited (the TNC's user
     // parameters open with 123); viewing needs none.
     int parameterCode = 123;
+    // The TNC's posAfterContPocket: the SL cycles end back at the position before the cycle
+    // (PosBeforeMachining); false: at the clearance height, the tool axis only.
+    bool slReturnToStart = false;
     DrivesConfig drives;
     KinematicsConfig kinematics;
     BarConfig bar;                              // lathe only

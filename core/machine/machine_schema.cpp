@@ -57,6 +57,12 @@ const std::vector<FieldBinding<MachineConfig>>& machineBindings() {
                        .description = KERF_TR_NOOP(
                            "Programs and MDI run only after the axes are homed (Home all); false "
                            "lets a machine without reference switches run from power-on")}),
+        bindField<&MachineConfig::slReturnToStart>(
+            kMachine, {.key = "sl_return_to_start",
+                       .description = KERF_TR_NOOP(
+                           "SL cycles (21-25, 275, 276) end back at the position before the "
+                           "cycle (the TNC's posAfterContPocket = PosBeforeMachining); false: at "
+                           "the clearance height Q7, the tool axis only (ToolAxClearanceHeight)")}),
         bindField<&MachineConfig::parameterCode>(
             kMachine, {.key = "parameter_code",
                        .unit = "code",

@@ -96,6 +96,7 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.basicRotationDeg = request.basicRotationDeg;
     settings.remanentFile = request.remanentFile;
     settings.writeFiles = request.writeFiles;
+    settings.slReturnToStart = machine.slReturnToStart;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
     loaded.ready =
         load(*interpreter, request,

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "core/machine/machine_loader.h"
+#include "core/task/dry_run.h"
 
 // The one loader of kerf run/check, the HMI and the editor's check: the same program gives the
 // same verdict whether it comes from the file or from an editor's text.
@@ -147,6 +148,43 @@ TEST_F(ProgramLoaderTest, ALatheProgramStartsWhereThePanelSaysTheToolStands) {
     // Without a start (kerf run) the program starts at its origin.
     request.startPosition.reset();
     EXPECT_DOUBLE_EQ(loadProgram(lathe, request).interpreter->nominalPosition().values[2], 0.0);
+}
+
+// The machine file's sl_return_to_start (the TNC's posAfterContPocket) reaches the SL cycles:
+// false ends cycle 22 at the clearance height Q7 = 80 above its last cut, true goes on back to
+// where the tool stood before the cycle, X+7 Y-3 Z+120.
+TEST_F(ProgramLoaderTest, SlReturnToStartEndsTheSlCyclesWhereTheyStarted) {
+    const std::string text =
+        "0 BEGIN PGM S MM\n1 TOOL CALL 1 Z S2000\n2 L X+7 Y-3 Z+120 R0 FMAX M3\n"
+        "3 CYCL DEF 14.0 CONTOUR\n4 CYCL DEF 14.1 CONTOUR LABEL 1\n"
+        "5 CYCL DEF 20 CONTOUR DATA Q1=-5 Q2=1 Q3=+0 Q4=+0 Q5=+0 Q6=2 Q7=+80 Q8=0 Q9=-1\n"
+        "6 CYCL DEF 22 ROUGH-OUT Q10=5 Q11=100 Q12=350 Q18=0 Q19=150 Q208=0\n"
+        "7 CYCL CALL\n8 LBL 1\n9 L X+10 Y+10 RL\n10 L X+60\n11 L Y+50\n"
+        "12 L X+10\n13 L Y+10\n14 LBL 0\n15 END PGM S MM\n";
+    auto endOfCycle = [&](bool returnToStart) {
+        mill.slReturnToStart = returnToStart;
+        ProgramRequest request;
+        request.path = root / "S.H";
+        request.text = text;
+        request.ncRoot = root;
+        LoadedProgram loaded = loadProgram(mill, request);
+        EXPECT_TRUE(loaded.ready) << (loaded.diagnostics().empty()
+                                          ? ""
+                                          : loaded.diagnostics()[0].format());
+        if (!loaded.ready) return Pose{};
+        EXPECT_EQ(runDry(*loaded.interpreter, {}), DryRunEnd::Finished);
+        EXPECT_FALSE(loaded.interpreter->checkFailed());
+        return loaded.interpreter->nominalPosition();
+    };
+    const Pose atClearance = endOfCycle(false);
+    EXPECT_NEAR(atClearance.values[2], 80.0, 1e-9);
+    // Above the last cut, inside the pocket (tool radius 4: X 14..56, Y 14..46).
+    EXPECT_GT(atClearance.values[0], 13.9);
+    EXPECT_LT(atClearance.values[0], 56.1);
+    const Pose back = endOfCycle(true);
+    EXPECT_NEAR(back.values[0], 7.0, 1e-9);
+    EXPECT_NEAR(back.values[1], -3.0, 1e-9);
+    EXPECT_NEAR(back.values[2], 120.0, 1e-9);
 }
 
 }  // namespace
