@@ -17,8 +17,8 @@ constexpr double kMaxShareStepDown = 2.5;
 // Elements up to this long keep the share of the element before whatever their length needs
 // (vertex noise, blends, halved fitted spans).
 constexpr double kKeepShareMaxLengthMm = 0.6;
-// Below its feed, an element keeps the higher share of the one before when that lowers its own
-// velocity limit by no more than this factor.
+// An element keeps the share of the one before when that lowers its own-sweep velocity limit by
+// no more than this factor.
 constexpr double kKeptShareCapFraction = 0.96;
 // A share above the summed choice is taken where its own-sweep limit reaches this part of the feed.
 constexpr double kRaisedShareFeedFraction = 0.98;
@@ -212,9 +212,9 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
             entry.limits = chosen;
         }
     }
-    // Keep the limits of the element before when they let this one run at its feed too (or,
-    // below its feed, when they lower its own-sweep limit by at most 4 %: braking into the crest
-    // of a sine at 30 % instead of 10 %): where
+    // Keep the limits of the element before when they let this one run at its feed too (or
+    // lower its own-sweep limit by at most 4 %: braking into the crest of a sine at 30 % instead
+    // of dropping to 10 %): where
     // they change the motion must pass with a = 0, and on a polyline the radius noise would
     // otherwise flip the share from one vertex to the next. A long element that would reach its
     // feed at the kept share only beyond its own end takes its own share instead: one point with
