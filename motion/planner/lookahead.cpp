@@ -17,8 +17,8 @@ constexpr double kMaxShareStepDown = 2.5;
 // Elements up to this long keep the share of the element before whatever their length needs
 // (vertex noise, blends, halved fitted spans).
 constexpr double kKeepShareMaxLengthMm = 0.6;
-// An element keeps the share of the one before when that lowers its own-sweep velocity limit by
-// no more than this factor.
+// Below its feed, an element keeps the share of the one before when that lowers its own-sweep
+// velocity limit by no more than this factor.
 constexpr double kKeptShareCapFraction = 0.96;
 // A share above the summed choice is taken where its own-sweep limit reaches this part of the feed.
 constexpr double kRaisedShareFeedFraction = 0.98;
@@ -212,9 +212,9 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
             entry.limits = chosen;
         }
     }
-    // Keep the limits of the element before when they let this one run at its feed too (or
-    // lower its own-sweep limit by at most 4 %: braking into the crest of a sine at 30 % instead
-    // of dropping to 10 %): where
+    // Keep the limits of the element before when they let this one run at its feed too (or,
+    // below its feed, lower its own-sweep limit by at most 4 %: braking into the crest of a sine
+    // at 30 % instead of dropping to 10 %): where
     // they change the motion must pass with a = 0, and on a polyline the radius noise would
     // otherwise flip the share from one vertex to the next. A long element that would reach its
     // feed at the kept share only beyond its own end takes its own share instead: one point with
@@ -224,6 +224,12 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
     const bool keepingIsCheap =
         previous && (e.geometry.length <= kKeepShareMaxLengthMm ||
                      runVelocity * runVelocity <= 2.0 * previous->limits.accel * e.geometry.length);
+    // Below its feed, the kept share may lower the element's own-sweep limit a little.
+    auto keptCapFits = [&](double keptCap) {
+        const double ownCap = elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits,
+                                                 entry.contourBudget);
+        return ownCap < nominal && keptCap >= kKeptShareCapFraction * ownCap;
+    };
     if (keepingIsCheap && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
         Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
         const Limits& kept = previous->limits;
@@ -232,9 +238,8 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
             kept.accel * kMaxShareStepDown >= entry.limits.accel &&
             (summedPeaksVelocityCap(m_model, e.geometry, entry.bounds, kept, entry.contourBudget) >=
                  std::min(0.95 * nominal, bestCap) ||
-             elementVelocityCap(m_model, e.geometry, entry.bounds, kept, entry.contourBudget) >=
-                 kKeptShareCapFraction * elementVelocityCap(m_model, e.geometry, entry.bounds,
-                                                            entry.limits, entry.contourBudget))) {
+             keptCapFits(elementVelocityCap(m_model, e.geometry, entry.bounds, kept,
+                                            entry.contourBudget)))) {
             entry.limits = kept;
         }
     }
