@@ -17,10 +17,11 @@ constexpr double kMaxShareStepDown = 2.5;
 // Elements up to this long keep the share of the element before whatever their length needs
 // (vertex noise, blends, halved fitted spans).
 constexpr double kKeepShareMaxLengthMm = 0.6;
+// Below its feed, an element keeps the share of the one before when that lowers its own-sweep
+// velocity limit by no more than this factor.
+constexpr double kKeptShareCapFraction = 0.96;
 // A share above the summed choice is taken where its own-sweep limit reaches this part of the feed.
 constexpr double kRaisedShareFeedFraction = 0.98;
-// The crossing-time choice of a share needs a crossing at least this many jerk ramps (A/J) long.
-constexpr double kCrossingInJerkRamps = 2.5;
 // Points of a curvature-step window kept beyond the reach (rounding of the distances).
 constexpr double kReachMarginMm = 1e-6;
 
@@ -31,6 +32,28 @@ double crossingTime(double vIn, double cap, double accel, double length) {
     if (rampLength >= length)
         return 2.0 * length / (v0 + std::sqrt(v0 * v0 + 2.0 * accel * length));
     return (cap - v0) / accel + (length - rampLength) / cap;
+}
+
+// The same from a = 0, with the jerk ramps of an S-curve: the velocity change dv takes
+// dv / A + A / J (2 sqrt(dv / J) when A is not reached) and covers its mean velocity times that.
+// Where the element ends before the cap, the velocity reached there is found by bisection.
+double crossingTimeFromRest(double vIn, double cap, const Limits& limits, double length) {
+    const double v0 = std::min(vIn, cap);
+    auto rampTime = [&](double dv) {
+        return dv * limits.jerk >= limits.accel * limits.accel
+                   ? dv / limits.accel + limits.accel / limits.jerk
+                   : 2.0 * std::sqrt(dv / limits.jerk);
+    };
+    const double full = rampTime(cap - v0);
+    const double fullLength = (v0 + cap) / 2.0 * full;
+    if (fullLength <= length) return full + (length - fullLength) / cap;
+    double lo = v0;
+    double hi = cap;
+    for (int k = 0; k < 40; ++k) {
+        const double mid = (lo + hi) / 2.0;
+        ((v0 + mid) / 2.0 * rampTime(mid - v0) <= length ? lo : hi) = mid;
+    }
+    return 2.0 * length / (v0 + lo);
 }
 
 bool sameLimits(const Limits& a, const Limits& b) {
@@ -152,26 +175,35 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
         }
     }
     // Below its feed (near the crest of a curve) the summed choice gives the highest velocity,
-    // but the element is entered no faster than the cap of the one before: where that is lower,
-    // a higher share may cross it sooner. The share with the shortest crossing (accelerate from
-    // the entry velocity up to the share's own cap, then cruise) is taken, only where the
-    // crossing lasts at least 2.5 jerk ramps (the estimate has none, and a change of share costs
-    // a point with a = 0).
+    // but the element is entered no faster than the motion gets there: the lower of the cap of
+    // the one before and its estimated exit velocity (accelerating all along from the one
+    // before it, `exitEstimate`). Where that is lower than this element's cap, a higher share may
+    // cross it sooner. The share with the shortest crossing (accelerate from the entry velocity
+    // up to the share's own cap, or the feed, then cruise) is taken. Keeping the share of the
+    // element before goes on accelerating; a change of share is a point with a = 0, so there the
+    // crossing starts from a = 0 with the share's jerk ramps (2026-11-28: leaving the crests of
+    // a sine as 0.5 mm lines, runs of 0.25 mm arcs each too short for a change without them
+    // stayed at 10 % all the way up from the crest's 71 mm/s).
     if (!ownShare && e.limits.accel <= 0.0 && previous) {
         const double chosenCap = elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits,
                                                     entry.contourBudget);
-        const double entryVelocity = std::min(previous->localCap, nominal);
+        const double entryVelocity =
+            std::min({previous->exitEstimate, previous->localCap, nominal});
         const double length = e.geometry.length;
-        if (chosenCap < 0.95 * nominal && entryVelocity < chosenCap &&
-            length >= kCrossingInJerkRamps * chosenCap * entry.limits.accel / entry.limits.jerk) {
-            double fastest = crossingTime(entryVelocity, chosenCap, entry.limits.accel, length);
+        if (entryVelocity < std::min(chosenCap, nominal)) {
+            auto timeWith = [&](const Limits& limits, double cap) {
+                return sameLimits(limits, previous->limits)
+                           ? crossingTime(entryVelocity, cap, limits.accel, length)
+                           : crossingTimeFromRest(entryVelocity, cap, limits, length);
+            };
+            double fastest = timeWith(entry.limits, std::min(chosenCap, nominal));
             Limits chosen = entry.limits;
             for (double share : kTangentialShares) {
                 Limits limits = tangentialLimits(m_model, entry.bounds, share);
                 if (limits.accel <= entry.limits.accel) break;
                 const double cap = elementVelocityCap(m_model, e.geometry, entry.bounds, limits,
                                                       entry.contourBudget);
-                const double time = crossingTime(entryVelocity, cap, limits.accel, length);
+                const double time = timeWith(limits, std::min(cap, nominal));
                 if (time < fastest) {
                     fastest = time;
                     chosen = limits;
@@ -180,7 +212,9 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
             entry.limits = chosen;
         }
     }
-    // Keep the limits of the element before when they let this one run at its feed too: where
+    // Keep the limits of the element before when they let this one run at its feed too (or,
+    // below its feed, lower its own-sweep limit by at most 4 %: braking into the crest of a sine
+    // at 30 % instead of dropping to 10 %): where
     // they change the motion must pass with a = 0, and on a polyline the radius noise would
     // otherwise flip the share from one vertex to the next. A long element that would reach its
     // feed at the kept share only beyond its own end takes its own share instead: one point with
@@ -190,14 +224,22 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
     const bool keepingIsCheap =
         previous && (e.geometry.length <= kKeepShareMaxLengthMm ||
                      runVelocity * runVelocity <= 2.0 * previous->limits.accel * e.geometry.length);
+    // Below its feed, the kept share may lower the element's own-sweep limit a little.
+    auto keptCapFits = [&](double keptCap) {
+        const double ownCap = elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits,
+                                                 entry.contourBudget);
+        return ownCap < nominal && keptCap >= kKeptShareCapFraction * ownCap;
+    };
     if (keepingIsCheap && e.limits.accel <= 0.0 && !sameLimits(previous->limits, entry.limits)) {
         Limits widest = tangentialLimits(m_model, entry.bounds, kTangentialShares[0]);
         const Limits& kept = previous->limits;
         // Only from a neighbouring share down (a row after a tight U-turn keeps its own).
         if (kept.accel <= widest.accel && kept.jerk <= widest.jerk &&
             kept.accel * kMaxShareStepDown >= entry.limits.accel &&
-            summedPeaksVelocityCap(m_model, e.geometry, entry.bounds, kept, entry.contourBudget) >=
-                std::min(0.95 * nominal, bestCap)) {
+            (summedPeaksVelocityCap(m_model, e.geometry, entry.bounds, kept, entry.contourBudget) >=
+                 std::min(0.95 * nominal, bestCap) ||
+             keptCapFits(elementVelocityCap(m_model, e.geometry, entry.bounds, kept,
+                                            entry.contourBudget)))) {
             entry.limits = kept;
         }
     }
@@ -222,6 +264,10 @@ void Lookahead::prepare(Entry& entry, const Entry* previous) {
         elementVelocityCap(m_model, e.geometry, entry.bounds, entry.limits, entry.contourBudget);
     if (e.capVelocity > 0.0) entry.localCap = std::min(entry.localCap, e.capVelocity);
     entry.cap = entry.localCap;
+    const double entryEstimate = previous ? std::min(previous->exitEstimate, entry.localCap) : 0.0;
+    entry.exitEstimate = std::min(
+        entry.localCap,
+        std::sqrt(entryEstimate * entryEstimate + 2.0 * entry.limits.accel * e.geometry.length));
     entry.nStart = pointAt(e.geometry, 0.0).curvature;
     entry.nEnd = pointAt(e.geometry, e.geometry.length).curvature;
     entry.prepared = true;

@@ -57,7 +57,9 @@ private:
         Limits limits;
         double cap = 0.0;       // final machine velocity limit
         double localCap = 0.0;  // before curvature steps
-        AxisVector nStart{};    // curvature vector at the ends
+        // Estimated velocity at its end accelerating from the one before (prepare's share choice).
+        double exitEstimate = 0.0;
+        AxisVector nStart{};  // curvature vector at the ends
         AxisVector nEnd{};
         double stepCap = 1e300;     // velocity limit of the curvature step at the start
         bool stepCapFinal = false;  // no point still to come is within the step's reach
