@@ -51,7 +51,7 @@ for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q
     else
       python3 "$root/scripts/bench/rs274_loops.py" "$blocks" -o "$work/p.ngc"
     fi
-    read -r rt rr < <(measure rs274 -g "$work/p.ngc")
+    read -r rt rr < <(measure rs274 -g "$work/p.ngc" "$work/r.txt")  # canonical text to a file
     line+=$(printf ' %12.0f  (rs274 %ss, kerf %ss, ratio %.1f)' "$(echo "$blocks / $rt" | bc -l)" "$rt" "$kt" "$(echo "$rt / $kt" | bc -l)")
   fi
   echo "$line"
