@@ -24,8 +24,8 @@ measure() {
   printf '%s %s\n' "$(printf '%s\n' "${times[@]}" | sort -n | sed -n "$(((runs + 1) / 2))p")" "$rss"
 }
 
-# Kerf is measured twice: trace to a file, and trace to standard output sent to /dev/null, which is
-# how rs274's canonical text is measured (FIGURES.md); the ratio uses the second.
+# Kerf is measured twice: trace to a file, and trace to standard output sent to /dev/null. The
+# ratio uses the first: rs274 writes its canonical text to a file too (FIGURES.md's side-by-side run).
 printf '%-22s %10s %14s %14s %10s %12s\n' program blocks "kerf blk/s" "kerf>null" "kerf RSS" "rs274 blk/s"
 # ONLY="klartext tnciso" measures those dialects only (first word of each row).
 for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q 1000000" \
@@ -51,8 +51,8 @@ for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q
     else
       python3 "$root/scripts/bench/rs274_loops.py" "$blocks" -o "$work/p.ngc"
     fi
-    read -r rt rr < <(measure rs274 -g "$work/p.ngc")
-    line+=$(printf ' %12.0f  (rs274 %ss, kerf %ss, ratio %.1f)' "$(echo "$blocks / $rt" | bc -l)" "$rt" "$kt" "$(echo "$rt / $kt" | bc -l)")
+    read -r rt rr < <(measure rs274 -g "$work/p.ngc" "$work/r.txt")  # canonical text to a file
+    line+=$(printf ' %12.0f  (rs274 %ss, kerf %ss, ratio %.1f)' "$(echo "$blocks / $rt" | bc -l)" "$rt" "$kf" "$(echo "$rt / $kf" | bc -l)")
   fi
   echo "$line"
 done

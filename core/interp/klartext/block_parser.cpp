@@ -440,7 +440,7 @@ bool BlockParser::parseStatement(Context& c, const program::LogicalLine& line, P
         return true;
     };
 
-    if (head == "L") {
+    if (head.size() == 1 && head[0] == 'L') {
         // Parsed in place: this is the block CAM programs consist of.
         LinearBlock& b = out.statement.emplace<LinearBlock>();
         PolarWords polar;

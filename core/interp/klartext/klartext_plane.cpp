@@ -18,6 +18,14 @@ namespace {
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kDegenerate = 1e-9;
 
+// An enabled rotary axis that is not endless: only those have soft limits to keep.
+bool hasLimitedRotaryAxis(const machine::MachineConfig& machine) {
+    for (const machine::AxisConfig& axis : machine.axes) {
+        if (axis.type == machine::AxisType::Rotary && !axis.endless && axis.enabled) return true;
+    }
+    return false;
+}
+
 using machine::principalRotation;
 
 // The rotation whose columns are the tilted X, Y and Z axes: X along `x`, Z along `z`.
@@ -378,6 +386,8 @@ double KlartextInterpreter::rotaryTarget(Axis axis, double current, double progr
 
 bool KlartextInterpreter::rotaryWithinLimits(const Pose& programTarget) {
     if (m_settings.machine == nullptr) return true;
+    // Most machines have no rotary axis with soft limits: then nothing needs transforming.
+    if (!hasLimitedRotaryAxis(*m_settings.machine)) return true;
     return checkPathError(rotaryLimitError(m_frame.toWorkpiece(programTarget), m_at));
 }
 
