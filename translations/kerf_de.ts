@@ -8625,6 +8625,14 @@ wählen</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} ist neben den Polarkoordinaten PR/PA nicht erlaubt (nur die Werkzeugachse darf programmiert werden)</translation>
     </message>
+    <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>Spalte {1} braucht eine ganze Zahl von 0 bis {2}, nicht &quot;{3}&quot;</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8625,6 +8625,14 @@ solución</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} no está permitido junto a las coordenadas polares PR/PA (solo se puede programar el eje de la herramienta)</translation>
     </message>
+    <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; no es un número finito</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>la columna {1} necesita un número entero de 0 a {2}, no &quot;{3}&quot;</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

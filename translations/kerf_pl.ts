@@ -8628,6 +8628,14 @@ rozwiązanie</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} nie jest dozwolone obok współrzędnych biegunowych PR/PA (można programować tylko oś narzędzia)</translation>
     </message>
+    <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; nie jest liczbą skończoną</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>kolumna {1} wymaga liczby całkowitej od 0 do {2}, nie &quot;{3}&quot;</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

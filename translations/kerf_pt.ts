@@ -8625,6 +8625,14 @@ solução</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} não é permitido junto às coordenadas polares PR/PA (só o eixo da ferramenta pode ser programado)</translation>
     </message>
+    <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; não é um número finito</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>a coluna {1} precisa de um número inteiro de 0 a {2}, não &quot;{3}&quot;</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
