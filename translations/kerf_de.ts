@@ -8626,6 +8626,14 @@ wählen</translation>
         <translation>{1} ist neben den Polarkoordinaten PR/PA nicht erlaubt (nur die Werkzeugachse darf programmiert werden)</translation>
     </message>
     <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>Spalte {1} braucht eine ganze Zahl von 0 bis {2}, nicht &quot;{3}&quot;</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>SL-Zyklen (21-25, 275, 276) enden wieder an der Position vor dem Zyklus (posAfterContPocket = PosBeforeMachining der TNC); false: auf der sicheren Höhe Q7, nur in der Werkzeugachse (ToolAxClearanceHeight)</translation>
     </message>

@@ -8626,6 +8626,14 @@ solución</translation>
         <translation>{1} no está permitido junto a las coordenadas polares PR/PA (solo se puede programar el eje de la herramienta)</translation>
     </message>
     <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; no es un número finito</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>la columna {1} necesita un número entero de 0 a {2}, no &quot;{3}&quot;</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Los ciclos SL (21-25, 275, 276) terminan de nuevo en la posición anterior al ciclo (posAfterContPocket = PosBeforeMachining del TNC); false: en la altura de seguridad Q7, solo en el eje de la herramienta (ToolAxClearanceHeight)</translation>
     </message>

@@ -8629,6 +8629,14 @@ rozwiązanie</translation>
         <translation>{1} nie jest dozwolone obok współrzędnych biegunowych PR/PA (można programować tylko oś narzędzia)</translation>
     </message>
     <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; nie jest liczbą skończoną</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>kolumna {1} wymaga liczby całkowitej od 0 do {2}, nie &quot;{3}&quot;</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Cykle SL (21-25, 275, 276) kończą się z powrotem w pozycji sprzed cyklu (posAfterContPocket = PosBeforeMachining sterowania TNC); false: na bezpiecznej wysokości Q7, tylko w osi narzędzia (ToolAxClearanceHeight)</translation>
     </message>

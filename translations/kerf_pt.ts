@@ -8626,6 +8626,14 @@ solução</translation>
         <translation>{1} não é permitido junto às coordenadas polares PR/PA (só o eixo da ferramenta pode ser programado)</translation>
     </message>
     <message>
+        <source>QR{1} = &apos;{2}&apos; is not a finite number</source>
+        <translation>QR{1} = &apos;{2}&apos; não é um número finito</translation>
+    </message>
+    <message>
+        <source>column {1} needs a whole number from 0 to {2}, not &quot;{3}&quot;</source>
+        <translation>a coluna {1} precisa de um número inteiro de 0 a {2}, não &quot;{3}&quot;</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Os ciclos SL (21-25, 275, 276) terminam de novo na posição anterior ao ciclo (posAfterContPocket = PosBeforeMachining do TNC); false: na altura segura Q7, apenas no eixo da ferramenta (ToolAxClearanceHeight)</translation>
     </message>

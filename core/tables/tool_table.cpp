@@ -26,7 +26,7 @@ std::string textOr(const TncTable& table, size_t row, std::optional<size_t> colu
 struct ToolColumns {
     std::optional<size_t> name, length, radius, radius2, deltaLength, deltaRadius, deltaRadius2,
         locked, cutterCount, plungeAngle, cuttingLength, pointAngle, pitch, time1, time2,
-        currentTime, replacement, comment;
+        currentTime, replacement, comment, probeNumber;
 
     explicit ToolColumns(const TncTable& table)
         : name(table.findColumn("NAME")),
@@ -46,10 +46,29 @@ struct ToolColumns {
           time2(table.findColumn("TIME2")),
           currentTime(table.findColumn("CUR_TIME")),
           replacement(table.findColumn("RT")),
-          comment(table.findColumn("DOC")) {
+          comment(table.findColumn("DOC")),
+          probeNumber(table.findColumn("TP_NO")) {
         if (!currentTime) currentTime = table.findColumn("CUR.TIME");
     }
 };
+
+// A whole number within [0, max] in `column` (checked before it is converted to int: a value
+// beyond int is undefined behaviour), or an error at the cell. Empty cells are fine.
+void checkWholeNumbers(const TncTable& table, std::optional<size_t> column, double max,
+                       DiagnosticList& errors) {
+    if (!column) return;
+    for (size_t row = 0; row < table.rowCount(); ++row) {
+        const std::string_view text = table.cell(row, *column);
+        if (text.empty()) continue;
+        const std::optional<double> value = table.number(row, *column);
+        if (value && *value >= 0.0 && *value <= max && std::floor(*value) == *value) continue;
+        errors.push_back(table.cellError(
+            row, *column,
+            KERF_TR_NOOP("column {1} needs a whole number from 0 to {2}, not \"{3}\""),
+            {table.columns()[*column].name, std::to_string(static_cast<int>(max)),
+             std::string(text)}));
+    }
+}
 
 // TL: empty or "0" free, "L" or "1" locked; anything else is reported.
 std::optional<bool> parseLock(std::string_view text) {
@@ -92,6 +111,9 @@ Expected<ToolTable> ToolTable::fromTable(TncTable table) {
     DiagnosticList errors = checkNumericCells(table);
     auto keys = readRowKeys(table, *table.findColumn("T"), true, errors);
     ToolColumns columns(table);
+    // CUT: the TNC allows 99 teeth; TP_NO: a row of the touch-probe table.
+    checkWholeNumbers(table, columns.cutterCount, 99.0, errors);
+    checkWholeNumbers(table, columns.probeNumber, 99999.0, errors);
     if (columns.locked) {
         for (size_t row = 0; row < table.rowCount(); ++row) {
             std::string_view text = table.cell(row, *columns.locked);

@@ -1,6 +1,5 @@
 #include "core/task/manual_probe.h"
 
-#include <cstdlib>
 #include <string>
 
 #include "core/base/translate.h"
@@ -13,6 +12,14 @@
 namespace kerf::task {
 
 namespace {
+
+// Something under that name, a dangling link too: a table that may be missing is read whenever
+// this is true, so a link out of the NC root, a FIFO or a folder in its place is an error
+// rather than "no table, use the defaults".
+bool isThere(const std::filesystem::path& file) {
+    std::error_code ignored;
+    return std::filesystem::exists(std::filesystem::symlink_status(file, ignored));
+}
 
 Diagnostic probingError(std::string messageTemplate, std::vector<std::string> args = {}) {
     Diagnostic d;
@@ -40,14 +47,16 @@ Expected<ManualProbe> manualProbe(const std::filesystem::path& ncRoot, int toolN
         return probingError(KERF_TR_NOOP("manual probing: tool {1} is not in TOOL.T"),
                             {std::to_string(toolNumber)});
     int row = 1;
+    // The table's check made a TP_NO that is not empty a whole number 0-99999.
     if (auto column = tools->table().findColumn("TP_NO")) {
-        const std::string_view cell = tools->table().cell(tool->row, *column);
-        if (!cell.empty()) row = std::atoi(std::string(cell).c_str());
+        if (auto number = tools->table().number(tool->row, *column))
+            row = static_cast<int>(*number);
     }
     const std::filesystem::path probeFile = root.path() / "tchprobe.tp";
-    auto probeBytes = root.read(probeFile);
+    auto probeBytes =
+        isThere(probeFile) ? root.read(probeFile) : tables::ProbeTable::createDefault();
     auto probes = probeBytes ? tables::ProbeTable::parse(*probeBytes, probeFile.string())
-                             : tables::ProbeTable::parse(tables::ProbeTable::createDefault());
+                             : probeBytes.error();
     if (!probes) return probes.error();
     const tables::ProbeData* probe = probes->byNumber(row);
     if (probe == nullptr)

@@ -341,4 +341,38 @@ TEST_F(KerfFileAccess, FifosAreRefusedWithoutBlocking) {
     EXPECT_EQ(plain.exitCode, 0) << plain.errors;
 }
 
+// Adversarial pass 2026-11-28: the touch-probe table was read as "no table, use the defaults"
+// whenever reading failed, so a TCHPROBE.TP that is a link out of the root (or a FIFO) was
+// silently replaced by default feeds and paths and the probing program ran to its end.
+TEST_F(KerfFileAccess, AProbeTableThatCannotBeReadIsAnErrorNotTheDefaults) {
+    fs::copy(fs::path(KERF_SOURCE_DIR) / "examples/probing", root());
+    const std::string table = readFile(root() / "tchprobe.tp");
+    fs::rename(root() / "tchprobe.tp", outside() / "tchprobe.tp");
+    fs::create_symlink("../outside/tchprobe.tp", root() / "tchprobe.tp");
+    const std::string preset = readFile(root() / "PRESET.PR");
+    Result linked = kerf("run root/SETUP.H --machine root/machine.toml");
+    EXPECT_EQ(linked.exitCode, 1) << linked.errors;
+    // At the first probing cycle (block 5, line 6), naming the table.
+    EXPECT_NE(linked.errors.find("SETUP.H:6:1: error: "), std::string::npos) << linked.errors;
+    EXPECT_NE(linked.errors.find("tchprobe.tp' is outside the NC root"), std::string::npos)
+        << linked.errors;
+    EXPECT_EQ(readFile(root() / "PRESET.PR"), preset);  // the cycle wrote nothing
+    EXPECT_EQ(readFile(outside() / "tchprobe.tp"), table);
+
+    fs::remove(root() / "tchprobe.tp");
+    ASSERT_EQ(::mkfifo((root() / "tchprobe.tp").c_str(), 0600), 0);
+    Result fifo = kerf("run root/SETUP.H --machine root/machine.toml");
+    EXPECT_EQ(fifo.exitCode, 1) << fifo.errors;
+    EXPECT_NE(fifo.errors.find("not a regular file"), std::string::npos) << fifo.errors;
+
+    // No table at all is the defaults of a new row, and the table itself is read as before.
+    fs::remove(root() / "tchprobe.tp");
+    Result none = kerf("run root/SETUP.H --machine root/machine.toml");
+    EXPECT_EQ(none.exitCode, 0) << none.errors;
+    writeFile(root() / "tchprobe.tp", table);
+    Result plain = kerf("run root/SETUP.H --machine root/machine.toml");
+    EXPECT_EQ(plain.exitCode, 0) << plain.errors;
+    EXPECT_NE(readFile(root() / "PRESET.PR"), preset);  // the probed preset was written
+}
+
 }  // namespace

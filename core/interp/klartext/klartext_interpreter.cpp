@@ -53,6 +53,9 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
     if (!m_settings.remanentFile.empty()) {
         if (auto error = m_q.loadRemanent(m_settings.remanentFile)) {
             appendDiagnostic(m_diagnostics, *error);
+            // Nothing runs (load() refuses) and nothing is written: the file stays for the
+            // operator to repair.
+            m_checkFailed = true;
         }
     }
 }
@@ -110,6 +113,7 @@ ProgramFile* KlartextInterpreter::loadProgram(const std::filesystem::path& path,
 }
 
 bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode) {
+    if (m_checkFailed) return false;  // the QR file could not be read
     std::string error;
     ProgramFile* program = loadProgram(path, &error, Origin::Main, mode == CheckMode::Inline);
     if (program == nullptr) {
@@ -137,6 +141,7 @@ bool KlartextInterpreter::load(const std::filesystem::path& path, CheckMode mode
 }
 
 bool KlartextInterpreter::loadText(std::string text, const std::string& path) {
+    if (m_checkFailed) return false;  // the QR file could not be read
     auto program = std::make_unique<ProgramFile>();
     program->source = program::SourceText::fromString(std::move(text), path);
     program->fileId = m_sources.add(path);

@@ -19,6 +19,14 @@ namespace kerf::klartext {
 
 namespace {
 
+// Something under that name, a dangling link too: a table that may be missing is read whenever
+// this is true, so a link out of the NC root, a FIFO or a folder in its place is an error
+// rather than "no table, use the defaults".
+bool isThere(const std::filesystem::path& file) {
+    std::error_code ignored;
+    return std::filesystem::exists(std::filesystem::symlink_status(file, ignored));
+}
+
 // Result parameters that are not lengths: angles and status flags keep their value in INCH
 // programs.
 bool isLengthResult(uint16_t q) {
@@ -165,16 +173,17 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     if (const tables::ToolTable* tools = toolTable()) {
         const tables::ToolData* data = tools->byNumber(m_tool.number);
         auto column = tools->table().findColumn("TP_NO");
+        // The table's check made a TP_NO that is not empty a whole number 0-99999.
         if (data != nullptr && column) {
-            const std::string_view cell = tools->table().cell(data->row, *column);
-            if (!cell.empty()) row = std::atoi(std::string(cell).c_str());
+            if (auto number = tools->table().number(data->row, *column))
+                row = static_cast<int>(*number);
         }
     }
     if (!m_probeTable) {
+        // No table: the defaults of a new row; a table that cannot be read is an error.
         const std::filesystem::path file = m_root.path() / "tchprobe.tp";
-        auto bytes = m_root.read(file);
-        auto table = bytes ? tables::ProbeTable::parse(*bytes, file.string())
-                           : tables::ProbeTable::parse(tables::ProbeTable::createDefault());
+        auto bytes = isThere(file) ? m_root.read(file) : tables::ProbeTable::createDefault();
+        auto table = bytes ? tables::ProbeTable::parse(*bytes, file.string()) : bytes.error();
         if (!table) {
             fail(table.error().code.c_str(), table.error().messageTemplate.c_str(),
                  table.error().args);
@@ -483,9 +492,8 @@ bool KlartextInterpreter::writeProbeCentreOffset(int cycle, int probe, const Vec
 
 std::optional<tables::PresetTable> KlartextInterpreter::presetTableToEdit(
     const std::filesystem::path& file) {
-    auto bytes = m_root.read(file);
-    auto table = bytes ? tables::PresetTable::parse(*bytes, file.string())
-                       : tables::PresetTable::parse(tables::PresetTable::createDefault());
+    auto bytes = isThere(file) ? m_root.read(file) : tables::PresetTable::createDefault();
+    auto table = bytes ? tables::PresetTable::parse(*bytes, file.string()) : bytes.error();
     if (!table) {
         failCycle({table.error().code, table.error().messageTemplate, table.error().args});
         return std::nullopt;

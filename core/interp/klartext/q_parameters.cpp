@@ -1,6 +1,7 @@
 #include "core/interp/klartext/q_parameters.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 
 #include "core/base/atomic_file.h"
@@ -129,9 +130,18 @@ MaybeError QParameters::loadRemanent(const std::filesystem::path& file) {
         size_t eq = line.find('=');
         bool ok = line.substr(0, 2) == "QR" && eq != std::string_view::npos;
         if (ok) {
+            const char* lineEnd = line.data() + line.size();
             auto r1 = std::from_chars(line.data() + 2, line.data() + eq, index);
-            auto r2 = std::from_chars(line.data() + eq + 1, line.data() + line.size(), value);
-            ok = r1.ec == std::errc() && r2.ec == std::errc() && index < kQrCount;
+            auto r2 = std::from_chars(line.data() + eq + 1, lineEnd, value);
+            ok = r1.ec == std::errc() && r1.ptr == line.data() + eq && index < kQrCount;
+            // The whole rest is one finite number: "nan", "inf" or "5xyz" is a damaged file,
+            // not a value (saveRemanent writes only finite numbers).
+            if (ok && (r2.ec != std::errc() || r2.ptr != lineEnd || !std::isfinite(value))) {
+                return Diagnostic::make(Severity::Error, "qr-file", file.string(), lineNumber,
+                                        static_cast<uint32_t>(eq + 2),
+                                        KERF_TR_NOOP("QR{1} = '{2}' is not a finite number"),
+                                        std::to_string(index), std::string(line.substr(eq + 1)));
+            }
         }
         if (!ok) {
             return Diagnostic::make(Severity::Error, "qr-file", file.string(), lineNumber, 1,

@@ -250,5 +250,37 @@ TEST(ToolTable, DefaultTableHasTheTnc320Columns) {
     EXPECT_EQ(ToolTable::createDefault(TableUnit::Inch).substr(0, 18), "BEGIN TOOL.T INCH\n");
 }
 
+// CUT and TP_NO are read as int: a number beyond int (a last column may be as long as the line)
+// was undefined behaviour (1e20 teeth became -2147483648), and TP_NO went through atoi. Now both
+// are checked at their cell; empty cells keep the defaults.
+TEST(ToolTable, CutAndProbeNumberMustBeWholeNumbersInRange) {
+    const std::string head = "BEGIN TOOL.T MM\nT    NAME   L      TP_NO  CUT\n";
+    auto table = [&](const std::string& probe, const std::string& cut) {
+        return head + "1    MILL   +50    " + probe + "  " + cut + "\n[END]\n";
+    };
+    struct Bad {
+        std::string probe, cut;
+        uint32_t column;
+    };
+    for (const Bad& bad :
+         {Bad{"1    ", "99999999999999999999", 27}, Bad{"1    ", "100", 27}, Bad{"1    ", "-4", 27},
+          Bad{"1.5  ", "4", 20}, Bad{"-1   ", "4", 20}, Bad{"100000", "4", 20}}) {
+        auto tools = ToolTable::parse(table(bad.probe, bad.cut), "TOOL.T");
+        ASSERT_FALSE(tools.ok()) << bad.probe << " " << bad.cut;
+        EXPECT_EQ(tools.error().line, 3u);
+        EXPECT_EQ(tools.error().column, bad.column) << bad.probe << " " << bad.cut;
+        EXPECT_NE(tools.error().message().find("needs a whole number from 0 to"), std::string::npos)
+            << tools.error().message();
+    }
+    auto good = ToolTable::parse(table("7    ", "99"), "TOOL.T");
+    ASSERT_TRUE(good.ok()) << good.error().format();
+    EXPECT_EQ(good->byNumber(1)->cutterCount, 99);
+    EXPECT_EQ(good->numberCell(1, "TP_NO"), 7.0);
+    auto empty = ToolTable::parse(table("     ", ""), "TOOL.T");
+    ASSERT_TRUE(empty.ok()) << empty.error().format();
+    EXPECT_EQ(empty->byNumber(1)->cutterCount, 0);
+    EXPECT_FALSE(empty->numberCell(1, "TP_NO"));
+}
+
 }  // namespace
 }  // namespace kerf::tables

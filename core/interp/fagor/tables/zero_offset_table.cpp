@@ -1,5 +1,7 @@
 #include "core/interp/fagor/tables/zero_offset_table.h"
 
+#include <cmath>
+
 #include "core/base/translate.h"
 
 namespace kerf::fagor {
@@ -18,6 +20,13 @@ bool isAxisField(const TableField& f) {
     return f.name.size() == 1 && axisFromLetter(f.name[0]).has_value();
 }
 
+// A field value as a whole G or N number, -1 when it is none: a value beyond int (G99999999999) may
+// not be converted (undefined behaviour).
+int asSmallWhole(double value) {
+    return value >= 0.0 && value <= 9999.0 && value == std::floor(value) ? static_cast<int>(value)
+                                                                         : -1;
+}
+
 }  // namespace
 
 std::string ZeroOffsetTable::keyFor(int index) {
@@ -32,7 +41,7 @@ Expected<ZeroOffsetTable> ZeroOffsetTable::fromText(TableText text) {
             ZeroOffsetSelection s;
             for (size_t i = 0; i < row.fields.size(); ++i) {
                 const TableField& f = row.fields[i];
-                const int g = static_cast<int>(f.value);
+                const int g = asSmallWhole(f.value);
                 if (f.name == "G" && g >= 54 && g <= 57 && s.absolute == 0 && !s.preset) {
                     s.absolute = g - 53;
                 } else if (f.name == "G" && (g == 58 || g == 59) && s.additive == 0 && !s.byG159 &&
@@ -40,7 +49,7 @@ Expected<ZeroOffsetTable> ZeroOffsetTable::fromText(TableText text) {
                     s.additive = g - 53;
                 } else if (f.name == "G" && g == 159 && i + 1 < row.fields.size() &&
                            row.fields[i + 1].name == "N" && s.absolute == 0) {
-                    s.absolute = static_cast<int>(row.fields[++i].value);
+                    s.absolute = asSmallWhole(row.fields[++i].value);
                     s.byG159 = true;
                     if (s.absolute < 1 || s.absolute > kCount) {
                         return text.error(row.line, row.fields[i].offset,

@@ -140,6 +140,25 @@ TEST(FagorZeroOffsetTable, PresetSelectionRoundTrips) {
     EXPECT_FALSE(ZeroOffsetTable::parse("G54 Q1\n").ok());
 }
 
+// Adversarial pass 2026-11-28: the ACTIVE row's G and N values were converted to int unchecked
+// (G99999999999 is undefined behaviour; G54.5 was read as G54). Each is an error at its field.
+TEST(FagorZeroOffsetTable, ActiveNumbersBeyondIntOrWithDecimalsAreErrors) {
+    struct Bad {
+        const char* text;
+        uint32_t column;
+    };
+    for (const Bad& bad : {Bad{"ACTIVE G99999999999\n", 8}, Bad{"ACTIVE G54.5\n", 8},
+                           Bad{"ACTIVE G159 N99999999999\n", 13}, Bad{"ACTIVE G159 N7.5\n", 13}}) {
+        auto table = ZeroOffsetTable::parse(bad.text, "z.tab");
+        ASSERT_FALSE(table.ok()) << bad.text;
+        EXPECT_EQ(table.error().line, 1u) << bad.text;
+        EXPECT_EQ(table.error().column, bad.column) << bad.text;
+    }
+    auto good = ZeroOffsetTable::parse("G159N7 X5\nACTIVE G159 N7\n", "z.tab");
+    ASSERT_TRUE(good.ok()) << good.error().message();
+    EXPECT_EQ(good->selection().absolute, 7);
+}
+
 TEST(FagorToolTable, OffsetOfAToolDefaultsToItsNumber) {
     auto table = ToolTable::parse("T3 D17 FAM201 NOSEA35 NOSEW3 CUTA60\n");
     ASSERT_TRUE(table.ok());

@@ -79,6 +79,32 @@ TEST_F(InterpreterTest, RemanentParametersSurviveARun) {
     EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 42);
 }
 
+// A damaged QR file ("nan", "inf", "5xyz" after the '=') was read as NaN or 5 and rewritten at the
+// end of the run without the damage: now it is an error at its line and column, nothing runs and
+// the file stays as it is.
+TEST_F(InterpreterTest, ADamagedRemanentFileIsAnErrorAndStaysAsItIs) {
+    const std::string program = "0 BEGIN PGM A MM\n1 QR5 = 1\n2 END PGM A MM\n";
+    for (const std::string bad : {"nan", "inf", "-inf", "5xyz", "1e999", ""}) {
+        const std::string damaged = "QR1=2\nQR3=" + bad + "\n";
+        writeFileAtomically(dir / "qr.txt", damaged);
+        auto k = make();
+        EXPECT_EQ(runText(*k, program), interp::RunStatus::Failed) << bad;
+        ASSERT_FALSE(k->diagnostics().empty()) << bad;
+        const Diagnostic& d = k->diagnostics().front();
+        EXPECT_EQ(d.file, (dir / "qr.txt").string());
+        EXPECT_EQ(d.line, 2u) << bad;
+        EXPECT_EQ(d.column, 5u) << bad;  // the first character after "QR3="
+        EXPECT_EQ(d.severity, Severity::Error);
+        EXPECT_TRUE(out.commands.empty()) << bad;
+        EXPECT_EQ(*readWholeFile(dir / "qr.txt"), damaged) << bad;
+    }
+    // The same file with a number there is read and written back with QR5.
+    writeFileAtomically(dir / "qr.txt", "QR1=2\nQR3=-0.5\n");
+    auto k = make();
+    EXPECT_EQ(runText(*k, program), interp::RunStatus::Finished);
+    EXPECT_EQ(*readWholeFile(dir / "qr.txt"), "QR1=2\nQR3=-0.5\nQR5=1\n");
+}
+
 TEST_F(InterpreterTest, FPrintWritesInsideTheNcRoot) {
     writeFileAtomically(dir / "MASK.A", "\"R = %5.2F\", Q1;\n");
     auto k = make();
