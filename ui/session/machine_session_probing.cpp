@@ -137,6 +137,7 @@ bool MachineSession::setBasicRotation(double degrees) {
                      0);
         return false;
     }
+    showBasicRotation();
     return true;
 }
 
