@@ -8625,6 +8625,18 @@ wählen</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} ist neben den Polarkoordinaten PR/PA nicht erlaubt (nur die Werkzeugachse darf programmiert werden)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>Tastsystemzyklus {1}: das Tastsystem {2} kann nicht in jede Antastrichtung gedreht werden (Winkelnachführung von Zyklus 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>Spalte TYPE: unbekanntes Tastsystem &quot;{1}&quot; (bekannt: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON braucht ein Tastsystem, das die Spindel in jeden Winkel drehen kann; {1} kann das nicht</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8625,6 +8625,18 @@ solución</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} no está permitido junto a las coordenadas polares PR/PA (solo se puede programar el eje de la herramienta)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>ciclo de palpación {1}: el palpador {2} no se puede girar a cada dirección de palpación (seguimiento angular del ciclo 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>columna TYPE: palpador desconocido &quot;{1}&quot; (conocidos: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON necesita un palpador que el cabezal pueda girar a cualquier ángulo; {1} no puede</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

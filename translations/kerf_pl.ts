@@ -8628,6 +8628,18 @@ rozwiązanie</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} nie jest dozwolone obok współrzędnych biegunowych PR/PA (można programować tylko oś narzędzia)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>cykl sondy {1}: sondy {2} nie można obrócić w każdym kierunku próbkowania (nadążanie kątowe cyklu 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>kolumna TYPE: nieznana sonda &quot;{1}&quot; (znane: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON wymaga sondy, którą wrzeciono może obrócić o dowolny kąt; {1} tego nie umożliwia</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

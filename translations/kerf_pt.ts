@@ -8625,6 +8625,18 @@ solução</translation>
         <source>{1} is not allowed beside the polar coordinates PR/PA (only the tool axis may be programmed)</source>
         <translation>{1} não é permitido junto às coordenadas polares PR/PA (só o eixo da ferramenta pode ser programado)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>ciclo de apalpação {1}: o apalpador {2} não pode ser orientado para cada direção de apalpação (seguimento angular do ciclo 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>coluna TYPE: apalpador desconhecido &quot;{1}&quot; (conhecidos: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON precisa de um apalpador que a árvore possa orientar em qualquer ângulo; {1} não pode</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
