@@ -290,10 +290,14 @@ TEST_F(ManualProbingScreen, UnderABasicRotationProbingPSetsTheRealCornerInTheTur
     ASSERT_TRUE(result && result->basicRotationDeg);
     EXPECT_NEAR(*result->basicRotationDeg, 0.7, 1e-9);
     // The corner reads 0 now: the probe, back at turned (-10, 45) from the old origin, shows
-    // that less the corner's turned coordinates.
-    processUntil([] { return false; }, 50ms);
-    EXPECT_EQ(display.axisText(Axis::X), QString::number(-10.0 - x, 'f', 3));
-    EXPECT_EQ(display.axisText(Axis::Y), QStringLiteral("+") + QString::number(45.0 - y, 'f', 3));
+    // that less the corner's turned coordinates, once the drives have settled (ACTL).
+    const QString shownX = QString::number(-10.0 - x, 'f', 3);
+    const QString shownY = QStringLiteral("+") + QString::number(45.0 - y, 'f', 3);
+    EXPECT_TRUE(processUntil(
+        [&] { return display.axisText(Axis::X) == shownX && display.axisText(Axis::Y) == shownY; },
+        5s))
+        << display.axisText(Axis::X).toStdString() << " "
+        << display.axisText(Axis::Y).toStdString();
 }
 
 TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouched) {
