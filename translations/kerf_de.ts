@@ -8634,6 +8634,18 @@ wählen</translation>
         <translation>Spalte {1} braucht eine ganze Zahl von 0 bis {2}, nicht &quot;{3}&quot;</translation>
     </message>
     <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>Tastsystemzyklus {1}: das Tastsystem {2} kann nicht in jede Antastrichtung gedreht werden (Winkelnachführung von Zyklus 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>Spalte TYPE: unbekanntes Tastsystem &quot;{1}&quot; (bekannt: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON braucht ein Tastsystem, das die Spindel in jeden Winkel drehen kann; {1} kann das nicht</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>SL-Zyklen (21-25, 275, 276) enden wieder an der Position vor dem Zyklus (posAfterContPocket = PosBeforeMachining der TNC); false: auf der sicheren Höhe Q7, nur in der Werkzeugachse (ToolAxClearanceHeight)</translation>
     </message>

@@ -8634,6 +8634,18 @@ solución</translation>
         <translation>la columna {1} necesita un número entero de 0 a {2}, no &quot;{3}&quot;</translation>
     </message>
     <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>ciclo de palpación {1}: el palpador {2} no se puede girar a cada dirección de palpación (seguimiento angular del ciclo 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>columna TYPE: palpador desconocido &quot;{1}&quot; (conocidos: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON necesita un palpador que el cabezal pueda girar a cualquier ángulo; {1} no puede</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Los ciclos SL (21-25, 275, 276) terminan de nuevo en la posición anterior al ciclo (posAfterContPocket = PosBeforeMachining del TNC); false: en la altura de seguridad Q7, solo en el eje de la herramienta (ToolAxClearanceHeight)</translation>
     </message>

@@ -8637,6 +8637,18 @@ rozwiązanie</translation>
         <translation>kolumna {1} wymaga liczby całkowitej od 0 do {2}, nie &quot;{3}&quot;</translation>
     </message>
     <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>cykl sondy {1}: sondy {2} nie można obrócić w każdym kierunku próbkowania (nadążanie kątowe cyklu 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>kolumna TYPE: nieznana sonda &quot;{1}&quot; (znane: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON wymaga sondy, którą wrzeciono może obrócić o dowolny kąt; {1} tego nie umożliwia</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Cykle SL (21-25, 275, 276) kończą się z powrotem w pozycji sprzed cyklu (posAfterContPocket = PosBeforeMachining sterowania TNC); false: na bezpiecznej wysokości Q7, tylko w osi narzędzia (ToolAxClearanceHeight)</translation>
     </message>

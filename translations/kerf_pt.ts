@@ -8634,6 +8634,18 @@ solução</translation>
         <translation>a coluna {1} precisa de um número inteiro de 0 a {2}, não &quot;{3}&quot;</translation>
     </message>
     <message>
+        <source>touch probe cycle {1}: the probe {2} cannot be turned to each probing direction (angle tracking of cycle 441, Q399 = 1)</source>
+        <translation>ciclo de apalpação {1}: o apalpador {2} não pode ser orientado para cada direção de apalpação (seguimento angular do ciclo 441, Q399 = 1)</translation>
+    </message>
+    <message>
+        <source>column TYPE: unknown probe &quot;{1}&quot; (known: {2})</source>
+        <translation>coluna TYPE: apalpador desconhecido &quot;{1}&quot; (conhecidos: {2})</translation>
+    </message>
+    <message>
+        <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
+        <translation>TRACK ON precisa de um apalpador que a árvore possa orientar em qualquer ângulo; {1} não pode</translation>
+    </message>
+    <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Os ciclos SL (21-25, 275, 276) terminam de novo na posição anterior ao ciclo (posAfterContPocket = PosBeforeMachining do TNC); false: na altura segura Q7, apenas no eixo da ferramenta (ToolAxClearanceHeight)</translation>
     </message>

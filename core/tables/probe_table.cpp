@@ -85,6 +85,21 @@ std::string text(const TncTable& table, size_t row, std::string_view name) {
     return column ? std::string(table.cell(row, *column)) : std::string();
 }
 
+// TYPE: a model of the catalogue; an empty cell (or no column) is the default row's TS460.
+const ProbeType* readType(const TncTable& table, size_t row, DiagnosticList& errors) {
+    auto column = table.findColumn("TYPE");
+    const std::string_view cell = column ? table.cell(row, *column) : std::string_view();
+    if (cell.empty()) return findProbeType("TS460");
+    if (const ProbeType* type = findProbeType(cell)) return type;
+    std::string known;
+    for (const ProbeType& type : probeTypes())
+        known += (known.empty() ? "" : ", ") + std::string(type.name);
+    errors.push_back(table.cellError(
+        row, *column, KERF_TR_NOOP("column TYPE: unknown probe \"{1}\" (known: {2})"),
+        {std::string(cell), known}));
+    return nullptr;
+}
+
 }  // namespace
 
 Expected<ProbeTable> ProbeTable::fromTable(TncTable table) {
@@ -97,6 +112,7 @@ Expected<ProbeTable> ProbeTable::fromTable(TncTable table) {
         ProbeData probe;
         probe.number = keys[row] ? keys[row]->number : 0;
         probe.type = text(table, row, "TYPE");
+        probe.model = readType(table, row, errors);
         probe.centreOffsetMain = optionalNumber(table, row, "CAL_OF1");
         probe.centreOffsetSecondary = optionalNumber(table, row, "CAL_OF2");
         probe.calibrationAngle = optionalNumber(table, row, "CAL_ANG");
@@ -107,6 +123,15 @@ Expected<ProbeTable> ProbeTable::fromTable(TncTable table) {
         probe.prepositionAtMachineRapid =
             readChoice(table, row, "F_PREPOS", "FMAX_PROBE", "FMAX_MACHINE", errors);
         probe.track = readChoice(table, row, "TRACK", "OFF", "ON", errors);
+        if (probe.track && probe.model != nullptr &&
+            probe.model->orientation != ProbeOrientation::Any) {
+            const auto column = table.findColumn("TRACK");
+            errors.push_back(table.cellError(
+                row, *column,
+                KERF_TR_NOOP("TRACK ON needs a probe the spindle can turn to any angle; {1} "
+                             "cannot be"),
+                {std::string(probe.model->name)}));
+        }
         probe.serial = text(table, row, "SERIAL");
         probe.row = row;
         probes.push_back(std::move(probe));

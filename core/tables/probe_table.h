@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/base/expected.h"
+#include "core/tables/probe_type.h"
 #include "core/tables/table_unit.h"
 #include "core/tables/table_validation.h"
 #include "core/tables/tnc_table.h"
@@ -17,7 +18,8 @@ namespace kerf::tables {
 // to it through column TP_NO. Lengths in the table's unit, feeds in mm/min (inch/min).
 struct ProbeData {
     int number = 0;                          // NO
-    std::string type;                        // TYPE: probe model, e.g. "TS 460"
+    std::string type;                        // TYPE: probe model, e.g. "TS460"
+    const ProbeType* model = nullptr;        // what TYPE names (an empty cell: TS460)
     double centreOffsetMain = 0.0;           // CAL_OF1: probe axis to spindle axis, main axis
     double centreOffsetSecondary = 0.0;      // CAL_OF2: the same along the secondary axis
     double calibrationAngle = 0.0;           // CAL_ANG: spindle angle for calibrating and probing
@@ -33,7 +35,8 @@ struct ProbeData {
 
 // Typed view of the touch-probe table (.TP), keyed by NO (spec tnc-probing-cycles.md 1.3).
 // Feeds, path and clearance must not be negative, F and DIST must be positive, F_PREPOS is
-// FMAX_PROBE or FMAX_MACHINE, TRACK is ON or OFF; empty cells take the defaults of a new row.
+// FMAX_PROBE or FMAX_MACHINE, TRACK is ON or OFF (ON only for a probe that can be oriented to
+// any angle), TYPE names a model of probeTypes(); empty cells take the defaults of a new row.
 class ProbeTable {
 public:
     static Expected<ProbeTable> fromTable(TncTable table);

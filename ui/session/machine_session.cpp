@@ -3,6 +3,7 @@
 #include <QTimer>
 #include <algorithm>
 
+#include "core/cycles/probing/manual_probing.h"
 #include "core/interp/fagor/tables/tool_touch_off.h"
 #include "core/program/nc_root.h"
 #include "core/task/program_loader.h"
@@ -243,15 +244,34 @@ bool MachineSession::setPresetByEntry(Axis axis, double shownValue) {
     for (const machine::AxisConfig& config : m_machine.axes) {
         if (axisFromLetter(config.letter) == axis && config.diameterMode) value /= 2.0;
     }
-    return movePreset(axis, m_motion->status().axes[static_cast<size_t>(axisIndex(axis))].actual,
-                      value);
+    return movePreset(axis, shownActual(axis), value);
+}
+
+double MachineSession::shownActual(Axis axis) const {
+    const task::MachineStatus now = m_motion->status();
+    const double b = basicRotationDeg();
+    if (b == 0.0 || (axis != Axis::X && axis != Axis::Y))
+        return now.axes[static_cast<size_t>(axisIndex(axis))].actual;
+    // X and Y of the system turned by the basic rotation, as the position display shows them.
+    const Vec3 shown = cycles::probing::turnedProbingDirection(
+        Vec3(now.axes[0].actual, now.axes[1].actual, 0.0), -b);
+    return axis == Axis::X ? shown.x() : shown.y();
 }
 
 bool MachineSession::movePreset(Axis axis, double current, double value) {
     if (refuseWhenBusy()) return false;
-    // The origin moves by what the axis shows now minus what it should show.
+    // The origin moves by what the axis shows now minus what it should show, along the axis
+    // turned by the basic rotation for X and Y (the display's axes).
     Pose shift = m_motion->shift();
-    shift[axis] += current - value;
+    const double b = basicRotationDeg();
+    if (b != 0.0 && (axis == Axis::X || axis == Axis::Y)) {
+        const Vec3 along = cycles::probing::turnedProbingDirection(
+            axis == Axis::X ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0), b);
+        shift[Axis::X] += (current - value) * along.x();
+        shift[Axis::Y] += (current - value) * along.y();
+    } else {
+        shift[axis] += current - value;
+    }
     m_motion->setShift(shift);
     m_status = m_motion->status();
     emit statusChanged(m_status);
@@ -331,6 +351,14 @@ void MachineSession::applyPresetTable() {
     for (size_t i = 0; i < shift.values.size(); ++i)
         shift.values[i] = origin.values[i] - own.values[i];
     m_motion->setShift(shift);
+    showBasicRotation();
+}
+
+void MachineSession::showBasicRotation() {
+    const double b = basicRotationDeg();
+    if (b == m_shownBasicRotationDeg) return;
+    m_shownBasicRotationDeg = b;
+    emit basicRotationChanged(b);
 }
 
 Pose MachineSession::presetInMachine() const {
@@ -412,6 +440,8 @@ void MachineSession::service() {
         m_activeLatheOffset = status.tool.lathe;
         emit programStatusChanged(status);
     }
+    // A probing cycle may have written row 0's basic rotation.
+    if (state != task::RunState::Running) showBasicRotation();
     if (state == task::RunState::Failed) report(m_run->diagnostics());
     if (state == task::RunState::Finished) emit message(Severity::Note, tr("Program finished"), 0);
     if (state == task::RunState::Aborted) emit message(Severity::Warning, tr("Program stopped"), 0);

@@ -199,6 +199,9 @@ signals:
     // Manual probing chose a function or made a touch (manualProbingResult once complete).
     void manualProbingChanged();
     void toolLengthTouchedOff(int tool, double lengthMm);
+    // Row 0's basic rotation changed (probing, a program, the table before a program): the
+    // position display turns X and Y by it.
+    void basicRotationChanged(double degrees);
 
 private:
     bool start(task::LoadedProgram loaded, std::optional<uint32_t> startLine);
@@ -209,6 +212,11 @@ private:
     // Mill: the workpiece origin follows row 0 of PRESET.PR (read at start and before every
     // program, so edits in the table editor count from the next program on).
     void applyPresetTable();
+    // Emits basicRotationChanged when row 0's basic rotation is not the one last shown.
+    void showBasicRotation();
+    // The actual position of `axis` as the display shows it (X and Y turned by the basic
+    // rotation).
+    double shownActual(Axis axis) const;
     void report(const DiagnosticList& diagnostics);
     // The origin moves so that `axis`, now at `current`, shows `value` (workpiece coordinates).
     bool movePreset(Axis axis, double current, double value);
@@ -230,6 +238,7 @@ private:
     QTimer* m_timer = nullptr;
     task::MachineStatus m_status;
     task::RunState m_lastState = task::RunState::Idle;
+    double m_shownBasicRotationDeg = 0.0;
     static constexpr int kProgramStatusEvery = 10;  // services (200 ms)
     int m_servicesSinceProgramStatus = 0;
     double m_incrementMm = 1.0;

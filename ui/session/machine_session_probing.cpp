@@ -130,13 +130,23 @@ bool MachineSession::setPresetFromProbing(Axis axis, double measured, double val
 
 bool MachineSession::setBasicRotation(double degrees) {
     if (refuseWhenBusy()) return false;
-    if (const MaybeError failed = m_presets.writeBasicRotation(degrees)) {
+    // Row 0 is the whole active preset: a table created for the rotation alone would give its
+    // axes 0 (machine zero), and the next program or touch would run from there. So the
+    // origin goes in with it.
+    AxisMask axes = 0;
+    for (const machine::AxisConfig& config : m_machine.axes) {
+        if (const auto a = axisFromLetter(config.letter)) axes |= axisBit(*a);
+    }
+    MaybeError failed = m_presets.write(presetInMachine(), axes);
+    if (!failed) failed = m_presets.writeBasicRotation(degrees);
+    if (failed) {
         emit message(Severity::Error,
                      tr("The basic rotation could not be saved in PRESET.PR: %1")
                          .arg(translatedMessage(*failed)),
                      0);
         return false;
     }
+    showBasicRotation();
     return true;
 }
 

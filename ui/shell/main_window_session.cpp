@@ -41,6 +41,9 @@ void MainWindow::connectSession() {
     m_session = new MachineSession(m_context.machine, m_context.motion(), m_context.ncRoot, this);
     m_modes->setMovingQuery([this] { return m_session->busy(); });
     connect(m_session, &MachineSession::statusChanged, m_positions, &PositionDisplay::setStatus);
+    connect(m_session, &MachineSession::basicRotationChanged, m_positions,
+            &PositionDisplay::setBasicRotation);
+    m_positions->setBasicRotation(m_session->basicRotationDeg());
     // The machine's state from the start, not only after the first service (a screenshot may come
     // first).
     m_positions->setStatus(m_session->status());

@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QVBoxLayout>
 #include <cmath>
+#include <numbers>
 
 #include "core/task/working_plane_position.h"
 #include "ui/common/block_name.h"
@@ -130,11 +131,21 @@ double PositionDisplay::shownValue(const task::AxisStatus& axis, PositionKind ki
 
 std::array<double, kAxisCount> PositionDisplay::kindValues(
     const task::MachineStatus& status, PositionKind kind, const std::optional<WorkingPlane>& plane,
-    const std::optional<machine::TableKinematics>& kinematics) {
+    const std::optional<machine::TableKinematics>& kinematics, double basicRotationDeg) {
     std::array<double, kAxisCount> values = kindValuesOf(status, kind);
     const bool reference =
         kind == PositionKind::ReferenceActual || kind == PositionKind::ReferenceNominal;
-    if (!plane || reference) return values;
+    if (reference) return values;
+    if (!plane) {
+        // Positions are relative to the preset, about which the basic rotation turns; lag and
+        // distance to go turn alike.
+        const double a = -basicRotationDeg * std::numbers::pi / 180.0;
+        const double x = values[0];
+        const double y = values[1];
+        values[0] = std::cos(a) * x - std::sin(a) * y;
+        values[1] = std::sin(a) * x + std::cos(a) * y;
+        return values;
+    }
     // Positions map with the origin (and, under TCPM, the tables' turn where they stand); lag and
     // distance to go are differences: they only turn, at the nominal pose.
     const bool position = kind == PositionKind::Actual || kind == PositionKind::Nominal;
@@ -185,6 +196,12 @@ void PositionDisplay::setWorkingPlane(const std::optional<WorkingPlane>& plane) 
     refresh();
 }
 
+void PositionDisplay::setBasicRotation(double degrees) {
+    if (degrees == m_basicRotationDeg) return;
+    m_basicRotationDeg = degrees;
+    refresh();
+}
+
 void PositionDisplay::setProgrammedFeed(std::optional<ProgrammedFeed> feed) {
     if (feed == m_programmedFeed) return;
     m_programmedFeed = feed;
@@ -228,8 +245,8 @@ QString PositionDisplay::spindleText() const {
 
 void PositionDisplay::refresh() {
     const bool inch = m_settings.inch;
-    const std::array<double, kAxisCount> values =
-        kindValues(m_status, m_settings.positionKind, m_workingPlane, m_kinematics);
+    const std::array<double, kAxisCount> values = kindValues(
+        m_status, m_settings.positionKind, m_workingPlane, m_kinematics, m_basicRotationDeg);
     for (size_t i = 0; i < m_axes.size(); ++i) {
         const AxisRow& r = m_axes[i];
         if (!r.present) continue;
@@ -252,9 +269,14 @@ void PositionDisplay::refresh() {
     const bool tilted = m_workingPlane &&
                         m_settings.positionKind != PositionKind::ReferenceActual &&
                         m_settings.positionKind != PositionKind::ReferenceNominal;
+    // "ROT": the basic rotation turns X and Y (an NC word as well).
+    const bool turned = !m_workingPlane && m_basicRotationDeg != 0.0 &&
+                        m_settings.positionKind != PositionKind::ReferenceActual &&
+                        m_settings.positionKind != PositionKind::ReferenceNominal;
     m_kind->setText(kindText(m_settings.positionKind) +
                     (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")) +
-                    (tilted ? QStringLiteral("  3D ROT") : QString()));
+                    (tilted ? QStringLiteral("  3D ROT") : QString()) +
+                    (turned ? QStringLiteral("  ROT") : QString()));
     QString state = coreText(task::machineStateName(m_status.state));
     if (!m_runState.isEmpty()) state = tr("Program: %1   Machine: %2").arg(m_runState, state);
     if (m_status.block.line > 0) {

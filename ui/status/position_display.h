@@ -45,6 +45,10 @@ public:
     using WorkingPlane = interp::ProgramStatus::Transformations::WorkingPlane;
     // The tilted plane of the program the machine runs (its status), or none.
     void setWorkingPlane(const std::optional<WorkingPlane>& plane);
+    // The active preset's basic rotation (degrees): while no plane is tilted, X and Y of every
+    // kind but REF are shown in the system it turns (about the preset), as a TNC shows them
+    // ("ROT" beside the kind). A tilted plane's map already holds it.
+    void setBasicRotation(double degrees);
     // While a program runs: its feed at the block the machine executes (inside a cycle the
     // cycle's move), shown instead of the machine's; the actual feed is then shown in the same
     // unit. None: the machine's feed in mm/min.
@@ -69,11 +73,12 @@ public:
                              bool inch, bool rotary);
     // Every axis's value of the kind in mm and degrees; X, Y and Z in the tilted plane's
     // coordinates when a plane is given and the kind is not REF (under TCPM the tool tip through
-    // the machine's `kinematics` at the rotary axes' angles).
+    // the machine's `kinematics` at the rotary axes' angles); without a plane X and Y turned by
+    // -basicRotationDeg (not for REF).
     static std::array<double, kAxisCount> kindValues(
         const task::MachineStatus& status, PositionKind kind,
         const std::optional<WorkingPlane>& plane,
-        const std::optional<machine::TableKinematics>& kinematics);
+        const std::optional<machine::TableKinematics>& kinematics, double basicRotationDeg = 0.0);
     static QString kindText(PositionKind kind);
 
 protected:
@@ -97,6 +102,7 @@ private:
     std::optional<machine::TableKinematics> m_kinematics;
     task::MachineStatus m_status;
     std::optional<WorkingPlane> m_workingPlane;
+    double m_basicRotationDeg = 0.0;
     std::optional<ProgrammedFeed> m_programmedFeed;
     QString m_runState;
     std::array<AxisRow, kAxisCount> m_axes{};

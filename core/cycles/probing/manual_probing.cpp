@@ -30,6 +30,12 @@ std::optional<double> edgeRotation(const Vec2& a, const Vec2& b, const ManualTou
     return angle;
 }
 
+// A point of the untilted workpiece axes in the system turned by the basic rotation (about
+// the origin), where the position display shows it.
+Vec3 inTurnedSystem(const Vec3& point, double basicRotationDeg) {
+    return turnedProbingDirection(point, -basicRotationDeg);
+}
+
 }  // namespace
 
 Vec3 turnedProbingDirection(const Vec3& axisDirection, double basicRotationDeg) {
@@ -69,7 +75,8 @@ std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction f
             int axis = 0;
             for (int i = 1; i < 3; ++i)
                 if (std::fabs(chosen[i]) > std::fabs(chosen[axis])) axis = i;
-            result.point[static_cast<size_t>(axis)] = surface[0][axis];
+            result.point[static_cast<size_t>(axis)] =
+                inTurnedSystem(surface[0], touches[0].basicRotationDeg)[axis];
             return result;
         }
         case ManualProbingFunction::Rotation:
@@ -83,8 +90,10 @@ std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction f
             result.basicRotationDeg =
                 edgeRotation(surface[0].head<2>(), surface[1].head<2>(), touches[0]);
             if (!corner || !result.basicRotationDeg) return std::nullopt;
-            result.point[0] = corner->x();
-            result.point[1] = corner->y();
+            const Vec3 shown =
+                inTurnedSystem(Vec3(corner->x(), corner->y(), 0.0), touches[0].basicRotationDeg);
+            result.point[0] = shown.x();
+            result.point[1] = shown.y();
             return result;
         }
         case ManualProbingFunction::Circle: {
@@ -97,8 +106,10 @@ std::optional<ManualProbingResult> evaluateManualProbing(ManualProbingFunction f
             // Touches away from the centre found a hole's wall, towards it a stud's.
             const Vec2 outward = balls[0] - circle->centre;
             const bool hole = outward.dot(touches[0].direction.head<2>()) > 0.0;
-            result.point[0] = circle->centre.x();
-            result.point[1] = circle->centre.y();
+            const Vec3 shown = inTurnedSystem(Vec3(circle->centre.x(), circle->centre.y(), 0.0),
+                                              touches[0].basicRotationDeg);
+            result.point[0] = shown.x();
+            result.point[1] = shown.y();
             result.diameter =
                 2.0 * (hole ? circle->radius + ballRadius : circle->radius - ballRadius);
             return result;

@@ -36,7 +36,9 @@ struct ManualTouch {
 Vec3 turnedProbingDirection(const Vec3& axisDirection, double basicRotationDeg);
 
 struct ManualProbingResult {
-    // The surface point (Position: its axis only; Corner: the intersection; Circle: the centre).
+    // The surface point (Position: its axis only; Corner: the intersection; Circle: the centre)
+    // in the system the position display shows: turned by the basic rotation the touches were
+    // made under (about the origin), as the TNC shows and sets it.
     std::array<std::optional<double>, 3> point;
     // Rotation, Corner (from the first edge): the edge's angle to the axis at right angles to
     // the probing axis (the operator's, not turned), (-90, 90] degrees: the whole misalignment

@@ -54,12 +54,13 @@ using CirclePass = std::optional<CycleError> (*)(const CycleValues&, const Probe
 // and by +e with the probe turned by 180 degrees. So the circle about the same feature, fitted
 // once each way (c_0 at CAL_ANG, c_180 turned), gives e = (c_180 - c_0) / 2 and the new CAL_OF
 // = CAL_OF + e. With TRACK the probe faces each probing direction, so the offset is part of the
-// effective radius and there is nothing to reverse. The probe ends at CAL_ANG again.
+// effective radius and there is nothing to reverse; a probe that cannot be turned by half a
+// turn (its TYPE) gives the radius alone (spec 6, 462). The probe ends at CAL_ANG again.
 std::optional<CycleError> reversal(CirclePass pass, const CycleValues& v, const ProbeData& probe,
                                    ProbingMachine& machine, ProbeSequence& sequence,
                                    const FittedCircle& atCalibrationAngle, double height,
                                    ProbingResults& results) {
-    if (probe.track) return std::nullopt;
+    if (probe.track || !probe.reversible) return std::nullopt;
     machine.orient(probe.calibrationAngleDeg + 180.0);
     FittedCircle turned;
     if (auto e = pass(v, probe, machine, sequence, 4, atCalibrationAngle.centre, height, turned))

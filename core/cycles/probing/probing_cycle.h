@@ -30,6 +30,9 @@ struct ProbeData {
     // with the probe oriented at CAL_ANG; at another orientation it turns with the spindle.
     Vec2 centreOffset{0.0, 0.0};
     double calibrationAngleDeg = 0.0;  // CAL_ANG
+    // The probe's TYPE allows a reversal (turned by half a turn): 460, 462 and 463 then also
+    // measure the centre offset.
+    bool reversible = true;
     // The machine's rotary table axes, nearest to the workpiece first ("CB" on a B/C trunnion
     // with C on B, "A" with one A table, empty without): 403 and 405 turn one of them.
     std::string tableAxes;
@@ -59,6 +62,10 @@ public:
     // 180-degree reversal). The ball centre then lies where the new orientation puts it. A
     // machine whose probe cannot be oriented ignores it.
     virtual void orient(double angleDeg) { (void)angleDeg; }
+    // What the control adds to the spindle position for the ball centre at the probe's current
+    // orientation: CAL_OF1/CAL_OF2 turned with the spindle (main, secondary axis). Cycles 0, 1
+    // and 3 report positions without it (spec 1.5).
+    virtual Vec2 centreOffsetApplied() const { return {0.0, 0.0}; }
 };
 
 // Where a datum cycle puts the datum: the measured feature (local program coordinates, per local

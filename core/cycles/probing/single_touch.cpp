@@ -21,6 +21,19 @@ Vec3 polarDirection(int axis, double angleDeg) {
     return d;
 }
 
+namespace {
+
+void keep(const std::optional<Vec3>& hit, const ProbingMachine& machine,
+          SingleTouchResult& result) {
+    result.valid = hit.has_value();
+    if (!hit) return;
+    result.ball = *hit;
+    const Vec2 offset = machine.centreOffsetApplied();
+    result.uncorrectedBall = *hit - Vec3(offset.x(), offset.y(), 0.0);
+}
+
+}  // namespace
+
 std::optional<CycleError> runSingleTouch(int cycle, const SingleTouch& touch,
                                          const ProbeData& probe, ProbingMachine& machine,
                                          SingleTouchResult& result) {
@@ -47,8 +60,7 @@ std::optional<CycleError> runSingleTouch(int cycle, const SingleTouch& touch,
                                              "measuring path DIST = {2} mm"),
                                 {std::to_string(path)});
         }
-        result.valid = hit.has_value();
-        if (hit) result.ball = *hit;
+        keep(hit, machine, result);
         return std::nullopt;
     }
     auto hit = machine.touchAndStay(touch.direction, path);
@@ -56,8 +68,7 @@ std::optional<CycleError> runSingleTouch(int cycle, const SingleTouch& touch,
     // Back by MB, never beyond the start of the measurement.
     const double back = std::min(*touch.retract, (end - start).norm());
     if (back > 0.0) machine.moveTo(end - back * touch.direction);
-    result.valid = hit.has_value();
-    if (hit) result.ball = *hit;
+    keep(hit, machine, result);
     return std::nullopt;
 }
 

@@ -28,8 +28,11 @@ struct SingleTouch {
 };
 
 struct SingleTouchResult {
-    bool valid = false;  // false: no touch (3, 4: status -1)
-    Vec3 ball{0.0, 0.0, 0.0};
+    bool valid = false;        // false: no touch (3, 4: status -1)
+    Vec3 ball{0.0, 0.0, 0.0};  // the ball centre as the control computes it, CAL_OF included
+    // The same without the centre offset (the spindle axis at the ball's height): what 0, 1
+    // and 3 report (spec 1.5, 4: "uncorrected").
+    Vec3 uncorrectedBall{0.0, 0.0, 0.0};
 };
 
 std::optional<CycleError> runSingleTouch(int cycle, const SingleTouch& touch,

@@ -298,9 +298,12 @@ void KlartextInterpreter::runOldProbe() {
         probeOnce(n, touch, ownMeasuring ? std::optional<double>(p.feed) : std::nullopt, probe);
     if (!result) return;
     const double scale = lengthScale();
+    // 4 reports the ball centre with the calibrated centre offset, 0, 1 and 3 without it
+    // (spec 1.5).
+    const Vec3& touched = n == 4 ? result->ball : result->uncorrectedBall;
     if (ownMeasuring) {
         // Qn..Qn+2 the ball centre, Qn+3 the status (0 valid, -1 none).
-        Vec3 ball = result->ball;
+        Vec3 ball = touched;
         if (p.machineSystem) {
             ball = m_frame.toWorkpiece(fromLocal(ball)).xyz() + m_settings.presetInMachine.xyz();
         }
@@ -314,7 +317,7 @@ void KlartextInterpreter::runOldProbe() {
     // 0 and 1: Q115-Q119 the trigger position without the stylus's length and radius (the
     // spindle's gauge point), the 4th and 5th axis where they stand; 0 also the touched surface
     // coordinate in its parameter.
-    const Vec3 gauge = result->ball + Vec3(0.0, 0.0, probe.length - probe.ballRadius);
+    const Vec3 gauge = touched + Vec3(0.0, 0.0, probe.length - probe.ballRadius);
     for (uint16_t i = 0; i < 3; ++i)
         m_q.set({QKind::Q, static_cast<uint16_t>(115 + i)}, gauge[i] / scale);
     uint16_t extra = 118;
@@ -329,7 +332,7 @@ void KlartextInterpreter::runOldProbe() {
     for (; extra <= 119; ++extra)
         m_q.set({QKind::Q, extra}, 0.0);
     if (n == 0) {
-        const double surface = result->ball[p.axis] + p.sign * probe.ballRadius;
+        const double surface = touched[p.axis] + p.sign * probe.ballRadius;
         m_q.set({QKind::Q, *p.result}, surface / scale);
     }
 }

@@ -87,6 +87,8 @@ public:
         m_orientationDeg = angleDeg;
     }
 
+    Vec2 centreOffsetApplied() const override { return controlOffset().head<2>(); }
+
 private:
     std::optional<Vec3> probe(const Vec3& direction, double maxPath, bool backToStart) {
         if (m_probe.track && direction.head<2>().norm() > 1e-9) {
@@ -207,13 +209,23 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
     probe.tableAxes = tableAxisLetters();
     probe.length = m_tool.effectiveLength();
     probe.track = data->track;
-    probe.centreOffset = Vec2(data->centreOffsetMain, data->centreOffsetSecondary);
+    // A probe whose TYPE cannot carry a centre offset is taken as running true.
+    if (data->model->supportsCentreOffset)
+        probe.centreOffset = Vec2(data->centreOffsetMain, data->centreOffsetSecondary);
     probe.calibrationAngleDeg = data->calibrationAngle;
+    probe.reversible = tables::canReverse(*data->model);
     if (m_fastProbing) {
         const cycles::Feed& feed = m_fastProbing->positioning;
         const bool rapid = m_fastProbing->machineRapid || feed.kind == cycles::Feed::Kind::Rapid;
         probe.positioningFeed = rapid ? 0.0 : feed.value;
         probe.track = m_fastProbing->tracking;
+        if (probe.track && data->model->orientation != tables::ProbeOrientation::Any) {
+            fail("PRB-024",
+                 KERF_TR_NOOP("touch probe cycle {1}: the probe {2} cannot be turned to each "
+                              "probing direction (angle tracking of cycle 441, Q399 = 1)"),
+                 {std::to_string(cycle), std::string(data->model->name)});
+            return std::nullopt;
+        }
     }
     return probe;
 }

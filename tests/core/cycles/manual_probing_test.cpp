@@ -94,6 +94,32 @@ TEST(ManualProbing, UnderABasicRotationTheTouchesGoAlongTheTurnedAxes) {
     }
 }
 
+TEST(ManualProbing, UnderABasicRotationPointsAreInTheTurnedSystem) {
+    // POS along X+ turned by b = 30 degrees from the ball at (10, 5): the surface point
+    // (10, 5) + 2 (cos b, sin b) lies at x' = 10 cos b + 5 sin b + 2 along the turned X axis,
+    // the coordinate the display shows there.
+    const double b = 30.0 * std::numbers::pi / 180.0;
+    const Vec3 d = turnedProbingDirection(Vec3(1.0, 0.0, 0.0), 30.0);
+    const std::vector<ManualTouch> pos{{Vec3(10.0, 5.0, -5.0), d, 30.0}};
+    const auto r = evaluateManualProbing(ManualProbingFunction::Position, pos, kBall);
+    ASSERT_TRUE(r && r->point[0]);
+    EXPECT_FALSE(r->point[1]);
+    EXPECT_NEAR(*r->point[0], 10.0 * std::cos(b) + 5.0 * std::sin(b) + 2.0, 1e-12);
+    // CC about (3, 4) under a basic rotation of 90 degrees: the turned X axis is the old Y,
+    // the turned Y the old -X, so the centre shows at (4, -3).
+    std::vector<ManualTouch> hole;
+    for (int k = 0; k < 4; ++k) {
+        const double a = k * std::numbers::pi / 2.0;
+        const Vec3 out(std::cos(a), std::sin(a), 0.0);
+        hole.push_back({Vec3(3.0, 4.0, -5.0) + 5.0 * out, out, 90.0});
+    }
+    const auto cc = evaluateManualProbing(ManualProbingFunction::Circle, hole, kBall);
+    ASSERT_TRUE(cc);
+    EXPECT_NEAR(*cc->point[0], 4.0, 1e-9);
+    EXPECT_NEAR(*cc->point[1], -3.0, 1e-9);
+    EXPECT_NEAR(*cc->diameter, 14.0, 1e-9);
+}
+
 TEST(ManualProbing, PositionGivesTheSurfaceInTheProbingAxisOnly) {
     const std::vector<ManualTouch> down{{Vec3(3.0, 4.0, 2.5), Vec3(0.0, 0.0, -1.0)}};
     const auto r = evaluateManualProbing(ManualProbingFunction::Position, down, kBall);

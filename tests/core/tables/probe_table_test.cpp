@@ -76,6 +76,40 @@ TEST(ProbeTable, RefusesBadValuesAtTheirCell) {
     EXPECT_FALSE(duplicate.ok());
 }
 
+TEST(ProbeTable, TypeNamesAModelThatDecidesOrientation) {
+    // Spec 1.3: TYPE says how the probe can be oriented. HEIDENHAIN's cable probes turn to two
+    // directions (a reversal is possible, tracking is not), the infrared ones to any.
+    auto probes = ProbeTable::parse(
+        "BEGIN TCHPROBE.TP MM\nNO TYPE     F    TRACK\n1  TS 260   500  OFF\n"
+        "2  ts642    500  ON\n3           500  OFF\n4  FIXED    500  OFF\n[END]\n",
+        "tchprobe.tp");
+    ASSERT_TRUE(probes.ok()) << probes.error().format();
+    const ProbeType& cable = *probes->byNumber(1)->model;
+    EXPECT_EQ(cable.name, "TS260");
+    EXPECT_EQ(cable.orientation, ProbeOrientation::TwoDirections);
+    EXPECT_EQ(cable.signal, SignalTransmission::Cable);
+    EXPECT_TRUE(canReverse(cable));
+    EXPECT_EQ(probes->byNumber(2)->model->orientation, ProbeOrientation::Any);
+    EXPECT_EQ(probes->byNumber(2)->model->signal, SignalTransmission::Infrared);
+    EXPECT_EQ(probes->byNumber(3)->model->name, "TS460");  // empty: the new row's default
+    EXPECT_FALSE(canReverse(*probes->byNumber(4)->model));
+    // An unknown model and tracking with a probe that cannot follow are errors at their cell.
+    auto unknown = ProbeTable::parse(
+        "BEGIN TCHPROBE.TP MM\nNO TYPE     F\n1  OMP40    500\n[END]\n", "tchprobe.tp");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_EQ(unknown.error().line, 3u);
+    EXPECT_EQ(unknown.error().column, 4u);
+    EXPECT_NE(unknown.error().format().find("unknown probe \"OMP40\""), std::string::npos)
+        << unknown.error().format();
+    auto track = ProbeTable::parse(
+        "BEGIN TCHPROBE.TP MM\nNO TYPE     F    TRACK\n1  TS260    500  ON\n[END]\n",
+        "tchprobe.tp");
+    ASSERT_FALSE(track.ok());
+    EXPECT_EQ(track.error().column, 18u);
+    EXPECT_NE(track.error().format().find("TS260 cannot be"), std::string::npos)
+        << track.error().format();
+}
+
 TEST(ProbeTable, CalibrationWritesTheCentreOffsetAddingMissingColumns) {
     // A table without CAL_OF1/CAL_OF2 (an older control's): calibration adds them at the end,
     // CAL_OF1 one space after DIST's widest cell, CAL_OF2 11 bytes later.

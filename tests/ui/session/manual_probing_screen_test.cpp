@@ -27,6 +27,7 @@
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
+#include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
 
 namespace kerf::ui {
@@ -237,6 +238,66 @@ TEST_F(ManualProbingScreen, ProbingPFindsTheCornerOfTheTwoTurnedEdges) {
         std::string::npos)
         << log;
     EXPECT_NE(log.find("<tr><td>Basic rotation</td><td>0.7000</td></tr>"), std::string::npos);
+}
+
+TEST_F(ManualProbingScreen, UnderABasicRotationProbingPSetsTheRealCornerInTheTurnedSystem) {
+    // Row 0 holds the part's misalignment, 0.7 degrees, as Probing ROT wrote it: the display
+    // and MDI work in the turned system, the touches go along the turned axes and so meet the
+    // turned faces squarely; each surface point lies on its face, and their intersection is the
+    // real corner (1.5, -0.8). In the turned system that reads (1.5 cos a - 0.8 sin a,
+    // -1.5 sin a - 0.8 cos a); entering 0 for both moves the origin there: R(a) of it is
+    // (1.5, -0.8) in the machine's axes.
+    ASSERT_TRUE(session->setBasicRotation(0.7));
+    const PositionDisplay& display = *window->positions();
+    EXPECT_TRUE(display.kindLabel().endsWith(QStringLiteral("  ROT")))
+        << display.kindLabel().toStdString();
+    press("probeCorner");
+    chooseDirection(QStringLiteral("Y+"));
+    moveTo(20, -10, -5);
+    // The display shows the MDI's target in the turned system (ACTL, three decimals).
+    ASSERT_TRUE(processUntil([&] {
+        return std::fabs(session->status().axes[0].actual - session->status().axes[0].nominal) <
+               1e-6;
+    }));
+    processUntil([] { return false; }, 50ms);
+    EXPECT_EQ(display.axisText(Axis::X), QStringLiteral("+20.000"));
+    EXPECT_EQ(display.axisText(Axis::Y), QStringLiteral("-10.000"));
+    touch();
+    EXPECT_EQ(session->manualTouchesDone(), 1);
+    moveTo(80, -10, -5);
+    touch();
+    chooseDirection(QStringLiteral("X+"));
+    moveTo(-10, 15, -5);
+    touch();
+    moveTo(-10, 45, -5);
+    DialogAnswers answers({0.0, 0.0});
+    touch();
+    ASSERT_EQ(session->manualTouchesDone(), 4);
+    ASSERT_TRUE(processUntil([&] { return answers.answered() == 2; }, 5s));
+    const double x = 1.5 * std::cos(kAngle) - 0.8 * std::sin(kAngle);
+    const double y = -1.5 * std::sin(kAngle) - 0.8 * std::cos(kAngle);
+    EXPECT_TRUE(
+        answers.labels[0].startsWith(QStringLiteral("Probed X = ") + QString::number(x, 'f', 4)))
+        << answers.labels[0].toStdString();
+    EXPECT_TRUE(
+        answers.labels[1].startsWith(QStringLiteral("Probed Y = ") + QString::number(y, 'f', 4)))
+        << answers.labels[1].toStdString();
+    const Pose file = machineFilePreset(machine);
+    EXPECT_NEAR(session->presetInMachine()[Axis::X], file[Axis::X] + 1.5, 1e-9);
+    EXPECT_NEAR(session->presetInMachine()[Axis::Y], file[Axis::Y] - 0.8, 1e-9);
+    // The first edge is the front face: its whole misalignment.
+    const auto result = session->manualProbingResult();
+    ASSERT_TRUE(result && result->basicRotationDeg);
+    EXPECT_NEAR(*result->basicRotationDeg, 0.7, 1e-9);
+    // The corner reads 0 now: the probe, back at turned (-10, 45) from the old origin, shows
+    // that less the corner's turned coordinates, once the drives have settled (ACTL).
+    const QString shownX = QString::number(-10.0 - x, 'f', 3);
+    const QString shownY = QStringLiteral("+") + QString::number(45.0 - y, 'f', 3);
+    EXPECT_TRUE(processUntil(
+        [&] { return display.axisText(Axis::X) == shownX && display.axisText(Axis::Y) == shownY; },
+        5s))
+        << display.axisText(Axis::X).toStdString() << " "
+        << display.axisText(Axis::Y).toStdString();
 }
 
 TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouched) {

@@ -74,6 +74,42 @@ TEST(PositionDisplay, ShowsTheLatheXAsDiameterAndFollowsTheSettings) {
     EXPECT_EQ(display.toolText(), "T 7");
 }
 
+TEST(PositionDisplay, TheBasicRotationTurnsXAndYExceptInRef) {
+    // A basic rotation of 90 degrees: the turned X axis is the machine's Y, the turned Y the
+    // machine's -X. The tip at (10, 20) from the preset shows X +20, Y -10; REF keeps the
+    // machine's axes (preset at 100 in both).
+    test::testApp();
+    auto mill = machine::loadMachine("mill");
+    ASSERT_TRUE(mill.ok());
+    PositionDisplay display(*mill);
+    task::MachineStatus status;
+    status.axes[0] = axisAt(10.0, 10.0, 100.0, 3.0);
+    status.axes[1] = axisAt(20.0, 20.0, 100.0, 4.0);
+    status.axes[2] = axisAt(-5.0, -5.0, 0.0, 0.0);
+    display.setStatus(status);
+    display.setBasicRotation(90.0);
+    EXPECT_EQ(display.axisText(Axis::X), "+20.000");
+    EXPECT_EQ(display.axisText(Axis::Y), "-10.000");
+    EXPECT_EQ(display.axisText(Axis::Z), "-5.000");
+    EXPECT_TRUE(display.kindLabel().endsWith("  ROT")) << display.kindLabel().toStdString();
+    DisplaySettings settings;
+    settings.positionKind = PositionKind::DistanceToGo;  // (3, 4) turns to (4, -3)
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "+4.000");
+    EXPECT_EQ(display.axisText(Axis::Y), "-3.000");
+    settings.positionKind = PositionKind::ReferenceActual;
+    display.setDisplaySettings(settings);
+    EXPECT_EQ(display.axisText(Axis::X), "+110.000");
+    EXPECT_EQ(display.axisText(Axis::Y), "+120.000");
+    EXPECT_FALSE(display.kindLabel().contains("ROT"));
+    // Without a basic rotation nothing turns.
+    settings.positionKind = PositionKind::Actual;
+    display.setDisplaySettings(settings);
+    display.setBasicRotation(0.0);
+    EXPECT_EQ(display.axisText(Axis::X), "+10.000");
+    EXPECT_FALSE(display.kindLabel().contains("ROT"));
+}
+
 TEST(PositionDisplay, AValueThatRoundsToZeroHasNoMinusSign) {
     test::testApp();
     auto mill = machine::loadMachine("mill");

@@ -624,6 +624,41 @@ TEST_F(ProbingTest, Cycle462FindsTheCentreOffsetAndLaterCyclesUseIt) {
         << both;
 }
 
+TEST_F(ProbingTest, AProbeThatCannotBeTurnedCalibratesItsRadiusWithoutReversal) {
+    // TYPE FIXED: the spindle cannot turn the probe, so 462 runs its coarse and fine passes
+    // only (spec 6, 462: "None, or in one direction only"). The fine circle's radius does not
+    // depend on the stylus's offset: R = 5 - (5 - 1.98) = 1.98; nothing is oriented and
+    // CAL_OF is not written.
+    useMachine(kMisalignedProbe);
+    writeFileAtomically(dir / "tchprobe.tp",
+                        "BEGIN TCHPROBE.TP MM\nNO   TYPE   F     DIST  SET_UP\n"
+                        "1    FIXED  1000  20    2\n[END]\n");
+    ASSERT_EQ(run(std::string(kRingProgram) + kCalibrateInRing), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(108), 1.98, 1e-9);
+    for (const canon::Command& c : out.commands)
+        EXPECT_FALSE(std::holds_alternative<canon::SpindleOrient>(c.body));
+    const auto table = tables::ProbeTable::load(dir / "tchprobe.tp");
+    ASSERT_TRUE(table.ok());
+    EXPECT_FALSE(table->table().findColumn("CAL_OF1").has_value());
+    // A cable probe (two directions) is reversed as before and finds the offset.
+    writeFileAtomically(dir / "tchprobe.tp",
+                        "BEGIN TCHPROBE.TP MM\nNO   TYPE   F     DIST  SET_UP\n"
+                        "1    TS260  1000  20    2\n[END]\n");
+    ASSERT_EQ(run(std::string(kRingProgram) + kCalibrateInRing), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF1"), 0.03, 1e-4);
+    EXPECT_NEAR(centreOffset(dir / "tchprobe.tp", "CAL_OF2"), -0.02, 1e-4);
+    // It cannot follow each probing direction: 441's angle tracking stops the next cycle.
+    const std::string tracking = std::string(kRingProgram) +
+                                 "5 TCH PROBE 441 FAST PROBING\n  Q396=1234\n  Q397=0\n"
+                                 "  Q399=1\n  Q400=0\n" +
+                                 kMeasureRing;
+    ASSERT_EQ(run(tracking), interp::RunStatus::Failed);
+    EXPECT_NE(firstError().find("PRB-024"), std::string::npos) << firstError();
+    EXPECT_NE(firstError().find("TS260"), std::string::npos) << firstError();
+}
+
 TEST_F(ProbingTest, CentreOffsetAtAnotherCalibrationAngleTurnsWithTheSpindle) {
     // CAL_ANG 90: the probe stands turned by 90 degrees, so the stylus's offset (0.03, -0.02)
     // at spindle angle 0 lies at (0.02, 0.03). 463 on the stud (radius 10, really at
@@ -761,6 +796,62 @@ TEST_F(ProbingTest, Cycle4ProbesAlongAVector) {
     ASSERT_EQ(run(program + "1\n"), interp::RunStatus::Finished) << firstError();
     EXPECT_NEAR(q(1), 60.2, 1e-9);
     EXPECT_NEAR(q(3), -398.2, 1e-9);
+}
+
+TEST_F(ProbingTest, Cycles013ReportWithoutTheCentreOffsetAnd4WithIt) {
+    // The stylus's ball lies 0.03 / -0.02 off the spindle axis and tchprobe.tp holds exactly
+    // that (calibrated): the control's ball centre is the real one. Cycles 0, 1 and 3 report
+    // positions without CAL_OF (the spindle axis), 4 with it (spec 1.5, 4, 5).
+    useMachine(
+        "base = \"mill\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n"
+        "[[simulation.tool_error]]\ntool = 1\ncentre_offset = [0.03, -0.02]\n");
+    writeFileAtomically(dir / "tchprobe.tp",
+                        "BEGIN TCHPROBE.TP MM\nNO   TYPE   CAL_OF1  CAL_OF2  F     DIST  SET_UP\n"
+                        "1    TS460  +0.03    -0.02    1000  20    2\n[END]\n");
+    // 0: the control's ball centre pre-positioned at (-5, 30, -5) touches the left face where
+    // leftFaceTouchX(30) says; the spindle axis lies 0.03 / -0.02 away from it.
+    ASSERT_EQ(run(std::string(kPlate) + "4 L X-5 Y+30 Z+20 R0 FMAX\n"
+                                        "5 TCH PROBE 0.0 REF. PLANE Q5 X+\n"
+                                        "6 TCH PROBE 0.1 X-5 Y+30 Z-5\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    const double x = leftFaceTouchX(30.0);
+    EXPECT_NEAR(q(5), x - 0.03 + 2.0, 1e-9);
+    EXPECT_NEAR(q(115), x - 0.03, 1e-9);
+    EXPECT_NEAR(q(116), 30.0 + 0.02, 1e-9);
+    EXPECT_NEAR(q(117), -7.0, 1e-9);
+    // 1: the same pre-position, along 0 degrees from X: the same touch, Q115-Q117 alike.
+    ASSERT_EQ(run(std::string(kPlate) + "4 TCH PROBE 1.0 POLAR DATUM PLANE\n"
+                                        "5 TCH PROBE 1.1 X ANGLE: +0\n"
+                                        "6 TCH PROBE 1.2 X-5 Y+30 Z-5\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(115), x - 0.03, 1e-9);
+    EXPECT_NEAR(q(116), 30.02, 1e-9);
+    // 3: the spindle at (-5, 30) puts the ball at y 29.98; it touches there, and reports the
+    // spindle axis: x - 0.03 and y 30.
+    ASSERT_EQ(run(std::string(kPlate) + "4 L X-5 Y+30 Z-7 R0 FMAX\n"
+                                        "5 TCH PROBE 3.0 MEASURING\n6 TCH PROBE 3.1 Q1\n"
+                                        "7 TCH PROBE 3.2 X ANGLE: +0\n"
+                                        "8 TCH PROBE 3.3 DIST +10 F100 MB1 REFERENCE SYSTEM: 0\n"
+                                        "9 Q10 = Q4\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(1), leftFaceTouchX(29.98) - 0.03, 1e-9);
+    EXPECT_NEAR(q(2), 30.0, 1e-9);
+    EXPECT_NEAR(q(3), -5.0, 1e-9);
+    EXPECT_EQ(q(10), 0.0);
+    // 4: the ball at (50.03, 29.98, 12) along (1, 0, -1) onto the top at -0.2 stops 10.2
+    // further along X, and 4 reports the corrected ball centre.
+    ASSERT_EQ(run(std::string(kPlate) + "4 L X+50 Y+30 Z+10 R0 FMAX\n"
+                                        "5 TCH PROBE 4.0 MEASURING IN 3-D\n6 TCH PROBE 4.1 Q1\n"
+                                        "7 TCH PROBE 4.2 IX+1 IY+0 IZ-1\n"
+                                        "8 TCH PROBE 4.3 ABST+45 F100 MB2 REFERENCE SYSTEM:0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(q(1), 60.23, 1e-9);
+    EXPECT_NEAR(q(2), 29.98, 1e-9);
+    EXPECT_NEAR(q(3), 1.8, 1e-9);
 }
 
 TEST_F(ProbingTest, Cycle460CalibratesRadiusAndLengthOnASphere) {
