@@ -130,6 +130,7 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         fs::create_directories(stateDir, ignored);
         request.remanentFile = stateDir / "qr_parameters.txt";
     }
+    session->ncRoot = request.ncRoot;
     session->setupFiles.push_back(request.path);
     for (const char* table : {"TOOL.T", "PRESET.PR", "fagor_tool_offsets.tab",
                               "fagor_zero_offsets.tab", "fagor_tools.tab"}) {

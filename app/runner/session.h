@@ -29,6 +29,7 @@ struct Session {
     // (machine file presets, --work-offset) or, for FAGOR, the zero offset active at the start.
     Pose workOffset{};
     std::vector<std::filesystem::path> setupFiles;  // the program and the tables, by fixed name
+    std::filesystem::path ncRoot;                   // where the program's tables are read
 };
 
 // With `backgroundCheck` the program's check runs alongside execution (see

@@ -147,11 +147,20 @@ bool LatheInsert::groovesAlongZ() const {
 
 std::vector<std::pair<double, double>> LatheInsert::outline(int arcPoints, double bodyMm) const {
     if (kind != LatheToolKind::Turning) {
-        // Rectangles, counter-clockwise in (X, Z): a drill on its axis, its body along +Z (it
-        // enters the part's face from the turret side); a blade across its width, its body
-        // behind the edge, the programmed point at the corner or middle the code names.
+        // Counter-clockwise in (X, Z): a drill on its axis, the tip of its point at the
+        // programmed point and its body along +Z (it enters the part's face from the turret
+        // side); a blade's rectangle across its width, its body behind the edge, the programmed
+        // point at the corner or middle the code names.
         const double w = std::isfinite(widthMm) ? std::max(0.0, widthMm) : 0.0;
         const double body = bodyMm > 0.0 ? bodyMm : 4.0 * w;
+        if (kind == LatheToolKind::Drill) {
+            const bool pointed =
+                std::isfinite(pointAngleDeg) && pointAngleDeg > 0.0 && pointAngleDeg < 180.0;
+            const double half = 0.5 * w;
+            const double cone =
+                pointed ? std::min(half / std::tan(degToRad(pointAngleDeg) * 0.5), body) : 0.0;
+            return {{0.0, 0.0}, {half, cone}, {half, body}, {-half, body}, {-half, cone}};
+        }
         const auto [ux, uz] = tipDirection(locationCode);
         double x0 = -0.5 * w;
         double x1 = 0.5 * w;

@@ -42,7 +42,8 @@ enum class LatheToolKind : uint8_t { Turning, Grooving, Drill };
 // centre itself). The code table is the provisional variant "A" of shared/spec/fagor-8035t-part1.md
 // §11.3 (X up, Z right, F3 the standard external turning tool), kept here until the Fagor tool
 // offsets are wired in.
-// A grooving tool is a blade of the cutting width and a drill a cylinder of that diameter.
+// A grooving tool is a blade of the cutting width and a drill a cylinder of that diameter ending
+// in its point, the programmed point at the point's tip.
 struct LatheInsert {
     LatheToolKind kind = LatheToolKind::Turning;
     double noseRadiusMm = 0.4;
@@ -50,10 +51,12 @@ struct LatheInsert {
     double includedAngleDeg = 0.0;  // rhombic body angle; 0: the nose circle alone
     double edgeLengthMm = 0.0;      // body edge length; 0: the nose circle alone
     double widthMm = 0.0;           // grooving: the cutting edge's width; drill: the diameter
+    double pointAngleDeg = 118.0;   // drill: the point's included angle (twist drill default)
 
     // The tool of a canonical lathe offset: a cutting width (NOSEW) makes a centre code (F0, F9:
     // the programmed point on the tool's axis) a drill of that diameter and a corner or face
-    // code a grooving tool of that width; anything else is a turning insert of nose R.
+    // code a grooving tool of that width; anything else is a turning insert of nose R. A drill
+    // gets the default point (the tool table's NOSEA: latheInsertWithPointAngles).
     static LatheInsert fromGeometry(const canon::ToolGeometry& geometry);
 
     // Unit tip-offset vector u = (uX, uZ) of a code: P = C + R * u.

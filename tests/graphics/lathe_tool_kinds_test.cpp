@@ -1,14 +1,16 @@
 // Drills and grooving tools in the lathe stock: the material they remove is their own shape, not
-// a turning insert with a solid holder beside it. Volumes are those of the cylinders and rings the
-// tools sweep, computed by hand; the grid (cells of 0.05 mm, rings of 2 pi r dr dz) is exact for
-// them because every edge lies on a cell border.
+// a turning insert with a solid holder beside it. Volumes are those of the cylinders, cones and
+// rings the tools sweep, computed by hand; the grid (cells of 0.05 mm, rings of 2 pi r dr dz) is
+// exact where an edge lies on a cell border and within 0.2 % along a drill's point.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "core/geometry/arc_math.h"
+#include "core/interp/fagor/tables/tool_table.h"
 #include "graphics/stock/cutter.h"
 #include "graphics/stock/lathe_stock.h"
+#include "graphics/stock/machine_stock_options.h"
 
 namespace kerf::graphics {
 namespace {
@@ -62,28 +64,69 @@ TEST(LatheToolKinds, TheOffsetAndTheCuttingWidthNameTheTool) {
     EXPECT_EQ(LatheInsert::fromGeometry(g).kind, LatheToolKind::Turning);
 }
 
-TEST(LatheToolKinds, ADrillOnTheAxisBoresAHoleOfItsDiameter) {
-    // A D8 drill from Z2 to Z-25 and back at X0: the hole r 0..4, z -25..0, pi 4^2 25.
+// Length of a drill point of included angle `angleDeg` on a drill of radius r.
+double pointLength(double r, double angleDeg) {
+    return r / std::tan(angleDeg * kPi / 360.0);
+}
+
+TEST(LatheToolKinds, ADrillOnTheAxisBoresAHoleWithTheConeOfItsPoint) {
+    // A D8 drill (118 degree point, no NOSEA) from Z2 to Z-25 and back at X0: the point's tip
+    // reaches Z-25, the full diameter Z-25 + h, h = 4 / tan 59 = 2.4034. The hole is the
+    // cylinder r 0..4 down to Z-25 + h and the cone below it: pi 4^2 (25 - h) + pi 4^2 h / 3.
     LatheStock stock(barR25(), kCell, 50'000'000);
     const LatheInsert drill = tool(LatheToolKind::Drill, 0, 8.0);
+    EXPECT_DOUBLE_EQ(drill.pointAngleDeg, 118.0);
     EXPECT_TRUE(stock.cut(0, 2, 0, -25, drill));
     stock.cut(0, -25, 0, 2, drill);
-    const double hole = kPi * 4 * 4 * 25;
-    EXPECT_NEAR(stock.removedVolumeMm3(), hole, 1e-6 * hole);
+    const double h = pointLength(4, 118);
+    const double hole = kPi * 16 * (25 - h) + kPi * 16 * h / 3;
+    EXPECT_NEAR(stock.removedVolumeMm3(), hole, 2e-3 * hole);
     EXPECT_FALSE(materialAt(stock, 3.9, -10));
     EXPECT_TRUE(materialAt(stock, 4.1, -10));    // the wall of the hole
     EXPECT_TRUE(materialAt(stock, 24.9, -1));    // the bar around it
-    EXPECT_TRUE(materialAt(stock, 1.0, -25.1));  // the bottom
+    EXPECT_TRUE(materialAt(stock, 0.1, -25.1));  // below the tip
+    // Half way up the point (1.2 above the tip) the cone's radius is 1.2 tan 59 = 1.997.
+    EXPECT_FALSE(materialAt(stock, 1.8, -23.8));
+    EXPECT_TRUE(materialAt(stock, 2.2, -23.8));
+    EXPECT_TRUE(materialAt(stock, 3.9, -25 + h - 0.2));  // the corner a flat drill would cut
+}
+
+TEST(LatheToolKinds, TheDrillPointTakesTheToolTablesNoseAngle) {
+    // T5 with NOSEA 90 and a centre offset: the point is as long as the drill's radius, h = 4,
+    // and the hole to Z-20 holds pi 4^2 (20 - 4) + pi 4^2 4 / 3. T6 has no NOSEA: 118.
+    auto table = fagor::ToolTable::parse("T5 D5 NOSEW8 NOSEA90\nT6 D6 NOSEW8\n");
+    ASSERT_TRUE(table);
+    const auto insertOf = latheInsertWithPointAngles(&*table);
+    canon::ToolChange change;
+    change.number = 5;
+    change.geometry.locationCode = 0;
+    change.geometry.cuttingWidthMm = 8;
+    const LatheInsert drill = insertOf(change);
+    EXPECT_DOUBLE_EQ(drill.pointAngleDeg, 90.0);
+    LatheStock stock(barR25(), kCell, 50'000'000);
+    stock.cut(0, 2, 0, -20, drill);
+    const double hole = kPi * 16 * (20 - 4) + kPi * 16 * 4.0 / 3;
+    EXPECT_NEAR(stock.removedVolumeMm3(), hole, 2e-3 * hole);
+    EXPECT_TRUE(materialAt(stock, 3.1, -17.1));  // 2.9 above the tip the cone is 2.9 wide
+    EXPECT_FALSE(materialAt(stock, 2.7, -17.1));
+    change.number = 6;
+    EXPECT_DOUBLE_EQ(insertOf(change).pointAngleDeg, 118.0);
+    EXPECT_DOUBLE_EQ(latheInsertWithPointAngles(nullptr)(change).pointAngleDeg, 118.0);
 }
 
 TEST(LatheToolKinds, ADrillOffTheAxisCutsTheRingItSweepsAsThePartTurns) {
-    // A D6 drill at X10 to Z-5: the part turns, so it clears r 7..13 to Z-5:
-    // pi (13^2 - 7^2) 5 = 600 pi.
+    // A D6 drill at X10 to Z-5: the part turns, so it clears r 7..13, the point's cone
+    // (h = 3 / tan 59) at the bottom. The section is symmetric about r 10, so the volume is
+    // 2 pi 10 times its area 6 (5 - h) + 6 h / 2.
     LatheStock stock(barR25(), kCell, 50'000'000);
     stock.cut(10, 2, 10, -5, tool(LatheToolKind::Drill, 9, 6.0));
-    EXPECT_NEAR(stock.removedVolumeMm3(), 600 * kPi, 1e-6 * 600 * kPi);
+    const double h = pointLength(3, 118);
+    const double ring = 2 * kPi * 10 * (6 * (5 - h) + 3 * h);
+    EXPECT_NEAR(stock.removedVolumeMm3(), ring, 2e-3 * ring);
     EXPECT_TRUE(materialAt(stock, 6.9, -1));
     EXPECT_TRUE(materialAt(stock, 13.1, -1));
+    EXPECT_FALSE(materialAt(stock, 10, -4.9));
+    EXPECT_TRUE(materialAt(stock, 7.1, -4.9));
 }
 
 TEST(LatheToolKinds, AGroovingBladeCutsItsWidth) {

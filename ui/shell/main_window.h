@@ -172,6 +172,11 @@ private:
     TestRunController* m_testRun = nullptr;
     TestRunController* m_liveRun = nullptr;
     StatusTabs* m_status = nullptr;
+    // The last status of the machine's run (or MDI block) and of the test run: the tabs show the
+    // one of the screen on view, also after the other screen was shown.
+    interp::ProgramStatus m_machineProgramStatus;
+    interp::ProgramStatus m_testRunProgramStatus;
+    bool m_showsTestRunStatus = false;
     PositionDisplay* m_positions = nullptr;
     MachineSession* m_session = nullptr;
     MachineKeys* m_machineKeys = nullptr;

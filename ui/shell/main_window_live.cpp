@@ -56,6 +56,7 @@ void MainWindow::connectLiveRun() {
             [this](const interp::ProgramStatus& status) {
                 // The positions follow the block the machine executes, in its tilted plane.
                 m_positions->setWorkingPlane(status.transformations.workingPlane);
+                m_machineProgramStatus = status;
                 if (!testRunOnScreen()) m_status->setProgramStatus(status);
             });
     // The machine screen shows the machine's run, the programming screen the test run.

@@ -60,6 +60,7 @@ void MainWindow::connectSession() {
                 // the interpreter's own is read ahead. An MDI block is the one executed.
                 if (!m_session->runningProgramName().empty()) return;
                 m_positions->setWorkingPlane(status.transformations.workingPlane);
+                m_machineProgramStatus = status;
                 if (!testRunOnScreen()) m_status->setProgramStatus(status);
             });
     connect(m_session, &MachineSession::manualProbingChanged, m_status, [this] {

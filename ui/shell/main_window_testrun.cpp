@@ -67,6 +67,7 @@ void MainWindow::createGraphics(QWidget* parent) {
     connect(m_testRun, &TestRunController::programStatusChanged, this,
             [this](const interp::ProgramStatus& status) {
                 // The status tabs follow the test run while it is on the screen.
+                m_testRunProgramStatus = status;
                 if (m_status != nullptr && testRunOnScreen()) m_status->setProgramStatus(status);
             });
     connect(m_graphics, &GraphicsPanel::blockPicked, this,
@@ -76,7 +77,15 @@ void MainWindow::createGraphics(QWidget* parent) {
         if (m_graphics->isVisible()) m_graphics->highlightLine(editor->currentLine());
     });
     connect(m_modes, &ModeController::modesChanged, this, [this] {
-        if (!testRunOnScreen()) return;
+        // The tabs show the run of the screen on view: a test run's last cycle, M functions and
+        // parameters are not the machine's (nor the other way round).
+        const bool testRunShown = testRunOnScreen();
+        if (m_status != nullptr && m_showsTestRunStatus != testRunShown) {
+            m_status->setProgramStatus(testRunShown ? m_testRunProgramStatus
+                                                    : m_machineProgramStatus);
+        }
+        m_showsTestRunStatus = testRunShown;
+        if (!testRunShown) return;
         // Test run shows the program beside its graphics, also when a machine mode's positions
         // were on the screen before (whichever handler of this signal runs first).
         if (m_workspace->layoutKind() != WorkspaceLayout::ProgramGraphics)

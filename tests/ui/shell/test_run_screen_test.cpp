@@ -22,6 +22,7 @@
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/workspace.h"
+#include "ui/status/status_tabs.h"
 #include "ui/testrun/test_run_controller.h"
 #include "ui/viewport/graphics_panel.h"
 
@@ -194,6 +195,43 @@ TEST(TestRunScreen, ACycleWrittenThroughTheDialogRunsInTestRun) {
         dir / "run" / "DRILL.H", editor->toPlainText().toStdString(), "mill");
     EXPECT_NEAR(run->machiningTimeS(), programRunS, 0.01 * programRunS);
     EXPECT_GT(run->machiningTimeS(), 5.6);
+}
+
+// The status tabs belong to the screen on view: after a test run of a G81 on the lathe, Automatic
+// execution shows the machine's (nothing run yet), not the test run's cycle and M functions, and
+// Simulation shows the test run's again (the machine screen showed "G81 ..." and "M3 M41").
+TEST(TestRunScreen, TheMachineScreenDoesNotShowTheTestRunsStatus) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_testrun_status");
+    ASSERT_FALSE(writeFileAtomically(dir / "TURN.PIM",
+                                     "%TURN,MX,\nN10 G90 G95 G97 F0.2 S800 M41 M3\n"
+                                     "N20 G00 X64 Z2\nN30 G81 X50 Z0 Q50 R-20 C2.5\nN40 M30\n")
+                     .has_value());
+    HmiContext context = contextIn(dir);
+    context.machine = *machine::loadMachine("lathe");
+    MainWindow window(context);
+    window.resize(1280, 800);
+    window.show();
+    ASSERT_TRUE(window.openProgram(dir / "TURN.PIM"));
+    window.modes().requestProgrammingMode(task::ProgrammingMode::TestRun);
+    TestRunController* run = window.testRun();
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testSpeed")));
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testSpeed")));
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("testStart")));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [run] { return run->state() == TestRunController::State::Finished; }, 20000));
+    const StatusTabs& tabs = *window.findChild<StatusTabs*>();
+    const QString cycle = tabs.valueOf(StatusTabs::Tab::Program, QStringLiteral("Cycle"));
+    EXPECT_TRUE(cycle.startsWith(QStringLiteral("G81"))) << cycle.toStdString();
+
+    ASSERT_TRUE(window.modes().requestMachineMode(task::MachineMode::FullSequence));
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Program, QStringLiteral("Cycle")),
+              QStringLiteral("none"));
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Program, QStringLiteral("M functions")),
+              QStringLiteral("none"));
+
+    window.modes().requestProgrammingMode(task::ProgrammingMode::TestRun);
+    EXPECT_EQ(tabs.valueOf(StatusTabs::Tab::Program, QStringLiteral("Cycle")), cycle);
 }
 
 }  // namespace
