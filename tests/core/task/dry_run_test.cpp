@@ -67,7 +67,7 @@ TEST(DryRun, AnEndlessLoopStopsAtTheBlockLimit) {
 
     LoadedProgram program = loadProgram(mill, requestFor(kEndless));
     ASSERT_TRUE(program.ready);
-    EXPECT_EQ(runDry(*program.interpreter, options), DryRunEnd::BlockLimit);
+    EXPECT_EQ(runDry(*program.interpreter, options).end, DryRunEnd::BlockLimit);
     EXPECT_EQ(program.interpreter->blocksExecuted(), 1000u);
 }
 
@@ -78,7 +78,7 @@ TEST(DryRun, ACancelledRunStopsBeforeItsNextSlice) {
     options.cancel = &cancel;
     LoadedProgram program = loadProgram(mill, requestFor(kEndless));
     ASSERT_TRUE(program.ready);
-    EXPECT_EQ(runDry(*program.interpreter, options), DryRunEnd::Cancelled);
+    EXPECT_EQ(runDry(*program.interpreter, options).end, DryRunEnd::Cancelled);
     EXPECT_EQ(program.interpreter->blocksExecuted(), 0u);
     EXPECT_TRUE(checkByRunning(mill, requestFor(kEndless), options).cancelled);
 }
