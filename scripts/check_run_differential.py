@@ -148,6 +148,13 @@ VARIANTS = [
     ("arc_radius_mismatch", "fagor", ("lathe",), "G1 X20 Z10 F100\nG02 X40 Z0 I50 K0\n"),
 ]
 
+# Programs whose --motion run depends on what the simulated machine measures, which the check
+# (like `kerf run` without --motion) takes as touching at the programmed end point
+# (docs/headless.md, "What the check runs"): listed apart, not judged.
+MACHINE_DEPENDENT = {
+    "golden/fagor/probe_g75_g76": "G75 probes towards the machine file's probe box, which it misses",
+}
+
 EXTRA_FILES = {
     "klartext": {"BAD.H": "0 BEGIN PGM BAD MM\n1 L X+10 FMAX\n2 LL X+5\n3 END PGM BAD MM\n"},
 }
@@ -327,7 +334,7 @@ def main():
 
     counts = {"programs": 0, "variants": 0}
     findings = {"check passes, run fails": [], "check fails, run passes": [],
-                "variant runs": [], "slow": []}
+                "variant runs": [], "slow": [], "depends on the simulated machine": []}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         for case, results in pool.map(lambda c: judge(kerf, c, scratch, args.timeout), cases):
             counts["variants" if case.variant else "programs"] += 1
@@ -339,7 +346,9 @@ def main():
                 findings["slow"].append((case, summary, results))
                 continue
             runs_fail = codes["run"] != 0 or codes["motion"] != 0
-            if codes["check"] == 0 and runs_fail:
+            if case.name in MACHINE_DEPENDENT and codes["run"] == 0:
+                findings["depends on the simulated machine"].append((case, summary, results))
+            elif codes["check"] == 0 and runs_fail:
                 findings["check passes, run fails"].append((case, summary, results))
             elif codes["check"] != 0 and codes["run"] == 0 and codes["motion"] == 0:
                 findings["check fails, run passes"].append((case, summary, results))
