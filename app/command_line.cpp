@@ -26,13 +26,29 @@ void addProgramOptions(CLI::App& command, RunOptions& options) {
                     "FAGOR: run the program as the user customisation program of this mode "
                     "(execution, edit, manual, diagnosis)")
         ->check(CLI::IsMember({"execution", "edit", "manual", "diagnosis"}));
+    // What the run does depends on these, so the check (which runs the program) takes them too.
+    command.add_option("--state-dir", options.stateDir, "folder for remanent QR parameters");
+    command.add_option("--max-blocks", options.maxBlocks, "stop after this many blocks");
+    command.add_option("--work-offset", options.workOffset,
+                       "machine coordinates of the workpiece origin on the axes named, e.g. "
+                       "Z-300 (default: the machine file's presets)");
+    command
+        .add_option("--preset", options.preset,
+                    "the active preset: row N of PRESET.PR in the NC root, its axes and basic "
+                    "rotation (SPC); --work-offset still replaces the axes it names")
+        ->check(CLI::NonNegativeNumber);
+    command
+        .add_option(
+            "--operator-input", options.operatorInput,
+            "the operator's inputs: IBn=value for the IB variables any FAGOR program "
+            "reads (e.g. IB3=40,IB1=6.25); with --user-screen also its answers in order, "
+            "e.g. F1,2.5,-3 (a key F1-F7, $FC00 or one character for WKEY, a number for IB)")
+        ->allow_extra_args(false);
 }
 
 void addRunOptions(CLI::App& run, RunOptions& options) {
     run.add_option("--report", options.reportFile, "write a JSON report");
     run.add_option("--trace", options.traceFile, "write the canonical trace ('-' for stdout)");
-    run.add_option("--state-dir", options.stateDir, "folder for remanent QR parameters");
-    run.add_option("--max-blocks", options.maxBlocks, "stop after this many blocks");
     run.add_option("--png", options.png, "write a picture of the toolpath (and stock) as PNG");
     run.add_option("--view", options.view, "view of the picture: 3d, top, front, side, section")
         ->check(CLI::IsMember({"3d", "top", "front", "side", "section"}));
@@ -52,18 +68,6 @@ void addRunOptions(CLI::App& run, RunOptions& options) {
                    "with --motion: press the simulated emergency-stop button at this simulated "
                    "time (s since the program started)")
         ->check(CLI::NonNegativeNumber);
-    run.add_option("--work-offset", options.workOffset,
-                   "machine coordinates of the workpiece origin on the axes named, e.g. "
-                   "Z-300 (default: the machine file's presets)");
-    run.add_option("--preset", options.preset,
-                   "the active preset: row N of PRESET.PR in the NC root, its axes and basic "
-                   "rotation (SPC); --work-offset still replaces the axes it names")
-        ->check(CLI::NonNegativeNumber);
-    run.add_option("--operator-input", options.operatorInput,
-                   "the operator's inputs: IBn=value for the IB variables any FAGOR program "
-                   "reads (e.g. IB3=40,IB1=6.25); with --user-screen also its answers in order, "
-                   "e.g. F1,2.5,-3 (a key F1-F7, $FC00 or one character for WKEY, a number for IB)")
-        ->allow_extra_args(false);
     run.add_option("--inject-fault", options.injectFaults,
                    "NODE:KIND@SECONDS, e.g. 2:heartbeat@1.5 (repeatable; see docs/drives.md)");
 }
@@ -109,13 +113,14 @@ std::optional<int> CommandLine::parse(int argc, char** argv) {
 }
 
 int CommandLine::runHeadless(PictureOutputFactory makePicture) const {
+    const RunOptions& options = *m_check ? m_checkOptions : m_runOptions;
+    if (options.workOffset && !parseWorkOffset(*options.workOffset)) {
+        std::cerr << "kerf: --work-offset must be axis letters with values, e.g. X10,Z-300\n";
+        return 2;
+    }
     if (*m_check) return checkProgramCommand(m_checkOptions, std::cerr);
     if (m_runOptions.size && !parsePictureSize(*m_runOptions.size)) {
         std::cerr << "kerf: --size must be WIDTHxHEIGHT (16..8192 each)\n";
-        return 2;
-    }
-    if (m_runOptions.workOffset && !parseWorkOffset(*m_runOptions.workOffset)) {
-        std::cerr << "kerf: --work-offset must be axis letters with values, e.g. X10,Z-300\n";
         return 2;
     }
     if (m_runOptions.emergencyStopAtS && !m_runOptions.motion && !m_runOptions.samples) {

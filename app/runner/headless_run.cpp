@@ -14,11 +14,13 @@
 #include "app/runner/picture_output.h"
 #include "app/runner/run_report.h"
 #include "app/runner/session.h"
+#include "app/runner/soft_limit_gate.h"
 #include "app/runner/stock_output.h"
 #include "core/base/atomic_file.h"
 #include "core/canon/tee_sink.h"
 #include "core/canon/trace_printer.h"
 #include "core/task/dry_run.h"
+#include "motion/runtime/work_area_check.h"
 #include "motion/sim/simulated_clock.h"
 
 namespace kerf::app {
@@ -59,19 +61,31 @@ int checkProgramCommand(const RunOptions& options, std::ostream& diagnostics) {
         diagnostics << refused->format() << '\n';
         return 1;
     }
-    // The run of the check is task::runDry, the one the HMI's "Check program" makes.
+    // The run of the check is task::runDry, the one the HMI's "Check program" makes, with the
+    // work-area check `kerf run --motion` makes before anything moves.
     DiagnosticList runProblems;
     if (session->ready()) {
+        const std::unique_ptr<task::MoveCheck> moves =
+            motion::makeWorkAreaCheck(session->machine, session->workOffset);
         task::DryRunOptions dry;
         dry.maxBlocks = options.maxBlocks;
         dry.atSync = [&] {
             return !screenOperator.waiting() || screenOperator.answer(runProblems);
         };
-        if (task::runDry(*session->program.interpreter, dry) == task::DryRunEnd::BlockLimit) {
+        dry.moves = moves.get();
+        const task::DryRunResult end = task::runDry(*session->program.interpreter, dry);
+        if (end.end == task::DryRunEnd::BlockLimit) {
             if (screenOperator.active())
                 screenOperator.noteBlockLimit(runProblems, options.maxBlocks);
             else
                 runProblems.push_back(blockLimitError(options));
+        }
+        if (end.end == task::DryRunEnd::Refused) {
+            const bool atMachineOrigin = session->workOffset.values == Pose{}.values;
+            appendDiagnostics(
+                runProblems,
+                withWorkOffsetHint(task::moveRefusal(*moves, end.refusedAt, session->sources()),
+                                   atMachineOrigin));
         }
     }
     DiagnosticList all = session->allDiagnostics();

@@ -37,10 +37,16 @@ void SoftLimitGate::resumeAt(const motion::AxisVector& tip) {
 }
 
 DiagnosticList SoftLimitGate::refusal(const std::string& file, bool originAtMachineOrigin) const {
-    DiagnosticList list;
-    if (!m_refusedAt) return list;
-    for (Diagnostic d : m_checker.refusal()) {
+    if (!m_refusedAt) return {};
+    DiagnosticList refusal = m_checker.refusal();
+    for (Diagnostic& d : refusal)
         d.file = file;
+    return withWorkOffsetHint(std::move(refusal), originAtMachineOrigin);
+}
+
+DiagnosticList withWorkOffsetHint(DiagnosticList refusal, bool originAtMachineOrigin) {
+    DiagnosticList list;
+    for (Diagnostic& d : refusal) {
         const bool softLimit = d.code == "motion.soft-limit";
         Diagnostic hint = Diagnostic::make(
             Severity::Note, "motion.work-offset", d.file, d.line, d.column,

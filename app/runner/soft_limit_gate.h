@@ -48,4 +48,8 @@ private:
     std::optional<SourceLocation> m_refusedAt;
 };
 
+// A refusal of the work-area check with a hint after each soft-limit error to give the work
+// offset when the workpiece origin is the machine's (`kerf run --motion` and `kerf check`).
+DiagnosticList withWorkOffsetHint(DiagnosticList refusal, bool originAtMachineOrigin);
+
 }  // namespace kerf::app

@@ -8,6 +8,7 @@
 #include "core/base/diagnostic.h"
 #include "core/interp/interpreter.h"
 #include "core/machine/machine_config.h"
+#include "core/task/move_check.h"
 #include "core/task/program_loader.h"
 
 // The check that runs the program: after the static check, the program runs to its end as
@@ -15,14 +16,16 @@
 // at the end of its move), writing no file. What stops the run on the same data and tables — a
 // division by zero, a tool the table lacks, a cycle the tool cannot machine, a called program
 // that is missing — is then the check's error at its block. `kerf check` and the HMI's "Check
-// program" run this same code (docs/headless.md, "What the check runs"). Qt-free; any thread,
-// one interpreter per call.
+// program" run this same code (docs/headless.md, "What the check runs"). Given a MoveCheck, the
+// run also judges every command as the machine would before it moves (soft limits, an axis the
+// machine lacks, the planner's rules), as `kerf run --motion` does. Qt-free; any thread, one
+// interpreter per call.
 namespace kerf::task {
 
 // About two seconds of a tight loop; `kerf check --max-blocks` changes it (the HMI keeps it).
 inline constexpr uint64_t kDefaultMaxBlocks = 10'000'000;
 
-enum class DryRunEnd { Finished, BlockLimit, Stopped, Cancelled };
+enum class DryRunEnd { Finished, BlockLimit, Stopped, Cancelled, Refused };
 
 struct DryRunOptions {
     uint64_t maxBlocks = kDefaultMaxBlocks;
@@ -30,11 +33,23 @@ struct DryRunOptions {
     // Called at each sync point before the machine's answer; false ends the run (a FAGOR user
     // screen's operator who has no more input). Unset: every sync point is answered.
     std::function<bool()> atSync;
+    // Judges every command before it would move; the run ends at the first one it refuses.
+    // Unset: what the machine would do is not judged.
+    MoveCheck* moves = nullptr;
+};
+
+struct DryRunResult {
+    DryRunEnd end = DryRunEnd::Finished;
+    SourceLocation refusedAt;  // Refused: the command `moves` refused
 };
 
 // Runs the loaded, checked interpreter to its end (Finished also when it failed: its
 // diagnostics() say why).
-DryRunEnd runDry(interp::Interpreter& interpreter, const DryRunOptions& options);
+DryRunResult runDry(interp::Interpreter& interpreter, const DryRunOptions& options);
+
+// Why `moves` refused the command at `at` (the refusal of a Refused run), in the file of `at`.
+DiagnosticList moveRefusal(const MoveCheck& moves, const SourceLocation& at,
+                           const program::SourceRegistry& sources);
 
 // Who meets the block limit decides what the message says about raising it: `kerf check` and
 // `kerf run` name their option; the HMI's Check program has no such setting, so its message only

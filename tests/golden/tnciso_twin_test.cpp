@@ -51,7 +51,9 @@ RunResult runIn(const fs::path& dir, const fs::path& program, const fs::path& ou
         std::istringstream words(line);
         std::string key, value;
         words >> key >> value;
-        if (key == "--machine") options.machine = value;
+        if (key == "--machine")
+            options.machine = value.find('.') != std::string::npos ? (dir / value).string() : value;
+        if (key == "--work-offset") options.workOffset = value;
         if (key == "--tool-table") options.toolTable = dir / value;
         if (key == "--max-blocks") options.maxBlocks = std::stoull(value);
     }

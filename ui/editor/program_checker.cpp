@@ -22,14 +22,23 @@ ProgramChecker::~ProgramChecker() {
     m_worker.join();
 }
 
+void ProgramChecker::setWorkAreaCheck(task::MoveCheckFactory checkMoves,
+                                      std::function<Pose()> origin) {
+    std::lock_guard lock(m_mutex);
+    m_checkMoves = std::move(checkMoves);
+    m_origin = std::move(origin);
+}
+
 uint64_t ProgramChecker::check(const QString& text, const std::filesystem::path& path,
                                program::Dialect dialect, Depth depth) {
     uint64_t request = 0;
+    std::optional<Pose> origin;
+    if (depth == Depth::Run && m_checkMoves && m_origin) origin = m_origin();
     {
         std::lock_guard lock(m_mutex);
         request = ++m_generation;
         // A shallow copy: the UTF-8 conversion of a large program is done by the worker.
-        m_pending = Request{text, path, dialect, depth, request};
+        m_pending = Request{text, path, dialect, depth, request, origin};
         m_cancel.store(true);
     }
     m_wake.notify_one();
@@ -74,6 +83,11 @@ task::ProgramSketch ProgramChecker::checkText(std::string text, const Request& r
         return sketch;
     task::DryRunOptions dry;
     dry.cancel = &m_cancel;
+    std::unique_ptr<task::MoveCheck> moves;
+    if (request.origin) {
+        moves = m_checkMoves(*request.origin);
+        dry.moves = moves.get();
+    }
     task::RunCheck run = task::checkByRunning(m_machine, std::move(load), dry);
     sketch.cancelled = run.cancelled;
     sketch.diagnostics = std::move(run.diagnostics);

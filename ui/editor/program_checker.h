@@ -5,6 +5,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "core/base/diagnostic.h"
 #include "core/machine/machine_config.h"
 #include "core/program/dialect.h"
+#include "core/task/move_check.h"
 #include "core/task/program_sketch.h"
 
 namespace kerf::ui {
@@ -37,6 +39,12 @@ public:
 
     enum class Depth { Static, Run };
 
+    // With a work-area check, the check that runs the program also judges every command as
+    // Program run would before it moves (soft limits, axes, the planner's rules), with the
+    // workpiece origin `origin()` gives when the check is asked for (`kerf check` does the
+    // same). Call before the first check.
+    void setWorkAreaCheck(task::MoveCheckFactory checkMoves, std::function<Pose()> origin);
+
     // Returns the request's number (1, 2, ...), which checked() echoes.
     uint64_t check(const QString& text, const std::filesystem::path& path, program::Dialect dialect,
                    Depth depth = Depth::Static);
@@ -53,12 +61,15 @@ private:
         program::Dialect dialect = program::Dialect::Klartext;
         Depth depth = Depth::Static;
         uint64_t generation = 0;
+        std::optional<Pose> origin;  // Run with a work-area check: the workpiece origin
     };
     void work();
     task::ProgramSketch checkText(std::string text, const Request& request) const;
 
     machine::MachineConfig m_machine;
     std::filesystem::path m_ncRoot;
+    task::MoveCheckFactory m_checkMoves;  // set before the worker reads it
+    std::function<Pose()> m_origin;
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;
     std::optional<Request> m_pending;

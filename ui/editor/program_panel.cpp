@@ -268,6 +268,11 @@ void ProgramPanel::checkNow() {
         m_awaitedCheck = m_checker->check(m_editor->toPlainText(), m_path, m_editor->dialect());
 }
 
+void ProgramPanel::setWorkAreaCheck(task::MoveCheckFactory checkMoves,
+                                    std::function<Pose()> origin) {
+    m_checker->setWorkAreaCheck(std::move(checkMoves), std::move(origin));
+}
+
 void ProgramPanel::checkProgram() {
     m_checkTimer->stop();
     if (m_path.empty() || loading()) return;

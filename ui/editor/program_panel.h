@@ -3,11 +3,13 @@
 #include <QString>
 #include <QWidget>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
 #include "core/base/diagnostic.h"
 #include "core/machine/machine_config.h"
+#include "core/task/move_check.h"
 #include "core/task/program_sketch.h"
 #include "ui/editor/program_file.h"
 #include "ui/editor/recovery_store.h"
@@ -47,6 +49,10 @@ public:
 
     ProgramPanel(Settings settings, QWidget* parent = nullptr);
     ~ProgramPanel() override;
+
+    // The machine's work-area check for "Check program", and where the workpiece origin is
+    // (ProgramChecker::setWorkAreaCheck). Before the first check.
+    void setWorkAreaCheck(task::MoveCheckFactory checkMoves, std::function<Pose()> origin);
 
     // False (and message()) if the file cannot be read; false too while the current program is
     // still being loaded or renumbered. While it is being saved, the file opens once the save

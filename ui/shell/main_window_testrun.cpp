@@ -52,10 +52,13 @@ void MainWindow::createGraphics(QWidget* parent) {
     m_testRun->setMachiningClock(m_context.machiningClock);
     // The work area and the origin of Program run: with a machine the session's, without one
     // the machine file's preset and PRESET.PR.
-    m_testRun->setWorkAreaCheck(m_context.checkMoves, [this] {
+    auto origin = [this] {
         if (m_session != nullptr) return m_session->nextProgramOrigin();
         return programOrigin(m_context.machine, task::PresetStore(m_context.ncRoot));
-    });
+    };
+    m_testRun->setWorkAreaCheck(m_context.checkMoves, origin);
+    // "Check program" judges the moves as Program run would, as `kerf check` does.
+    m_program->setWorkAreaCheck(m_context.checkMoves, origin);
     m_graphics = new GraphicsPanel(*m_testRun, m_context.machine, parent);
     connect(m_testRun, &TestRunController::diagnostic, m_messages,
             [this](Severity severity, const QString& text, int line) {

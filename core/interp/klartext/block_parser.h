@@ -28,7 +28,10 @@ private:
     // `probe`: TCH PROBE n, whose sub-blocks stay text (31.1 CHECK: 1 Q5).
     bool parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out,
                        bool probe = false);
-    bool parseCycleParameters(const program::LogicalLine& line, std::vector<CycleParameter>& out);
+    // The parameters on the lines after the header, and from `headerFrom` on the header line.
+    bool parseCycleParameters(const program::LogicalLine& line, std::vector<CycleParameter>& out,
+                              size_t headerFrom = std::string_view::npos);
+    bool parseCycleParameter(std::string_view text, size_t at, std::vector<CycleParameter>& out);
     bool parseCycleWords(std::string_view text, size_t from, cycles::CycleWords& out);
     bool parseGlobalDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);
     bool parsePatternDef(const program::LogicalLine& line, size_t at, ParsedBlock& out);

@@ -5,6 +5,7 @@
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/block_parser.h"
+#include "core/interp/klartext/cycle_parameter_spans.h"
 
 namespace kerf::klartext {
 
@@ -104,7 +105,13 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
     }
     // Only the first segment is the header; further segments are "Qnnn=value ;comment".
     const size_t headerEnd = line.segments.size() > 1 ? line.segments[1].joinedOffset : text.size();
-    Cursor hc(text.substr(0, std::max(headerEnd, cur.position())), cur.position());
+    const size_t headerTextEnd = std::max(headerEnd, cur.position());
+    // Parameters may follow the name on the header line (new-style cycles only).
+    const CycleParameterSpans onHeader = cycleParameterSpans(text, cur.position(), headerTextEnd);
+    const size_t parametersAt = b.subNumber < 0 && !onHeader.starts.empty()
+                                    ? onHeader.starts.front()
+                                    : std::string_view::npos;
+    Cursor hc(text.substr(0, std::min(headerTextEnd, parametersAt)), cur.position());
     const size_t restAt = hc.position();
     std::string header(hc.restUntilComment());
     if (b.subNumber >= 0) {
@@ -129,49 +136,68 @@ bool BlockParser::parseCycleDef(const program::LogicalLine& line, size_t at, Par
     } else {
         b.name = std::move(header);
     }
-    if (!parseCycleParameters(line, b.parameters)) return false;
+    if (!parseCycleParameters(line, b.parameters, parametersAt)) return false;
     out.statement = std::move(b);
     return true;
 }
 
 bool BlockParser::parseCycleParameters(const program::LogicalLine& line,
-                                       std::vector<CycleParameter>& out) {
+                                       std::vector<CycleParameter>& out, size_t headerFrom) {
     const std::string_view text = line.text;
-    for (size_t s = 1; s < line.segments.size(); ++s) {
-        Cursor sc(text.substr(0, segmentEnd(line, s)), line.segments[s].joinedOffset);
-        if (sc.atEnd()) continue;
-        CycleParameter p;
-        p.offset = sc.position();
-        if (!sc.acceptPrefix("Q")) {
-            return failAt(sc.position(), "syntax", KERF_TR_NOOP("cycle parameter Qnnn= expected"));
+    for (size_t s = 0; s < line.segments.size(); ++s) {
+        if (s == 0 && headerFrom == std::string_view::npos) continue;
+        const size_t from = s == 0 ? headerFrom : line.segments[s].joinedOffset;
+        const size_t to = segmentEnd(line, s);
+        Cursor first(text.substr(0, to), from);
+        if (first.atEnd()) continue;
+        // Several parameters side by side: each ends where the next one starts.
+        const CycleParameterSpans spans = cycleParameterSpans(text, first.position(), to);
+        if (spans.starts.empty() || spans.starts.front() != first.position()) {
+            if (!parseCycleParameter(text.substr(0, to), first.position(), out)) return false;
+            continue;
         }
-        if (sc.acceptPrefix("S")) p.isString = true;
-        auto q = sc.unsignedInteger();
-        if (!q || *q >= kQCount) {
-            return failAt(sc.position(), "syntax", KERF_TR_NOOP("cycle parameter number expected"));
+        for (size_t k = 0; k < spans.starts.size(); ++k) {
+            const size_t end = k + 1 < spans.starts.size() ? spans.starts[k + 1] : to;
+            if (!parseCycleParameter(text.substr(0, end), spans.starts[k], out)) return false;
         }
-        p.q = static_cast<uint16_t>(*q);
-        if (!sc.acceptChar('='))
-            return failAt(sc.position(), "syntax", KERF_TR_NOOP("'=' expected"));
-        p.raw = std::string(sc.restUntilComment());
-        p.comment = std::string(sc.comment());
-        if (!p.isString) {
-            // Plain numbers and Q references are evaluated now (the TNC captures cycle
-            // parameters at definition); keywords such as PREDEF stay in `raw`.
-            Cursor vc(p.raw);
-            FormulaParser fp(vc, m_env);
-            const char lead = upper(vc.peek());
-            if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
-                lead == '.') {
-                auto v = fp.wordValue();
-                if (v && vc.atEnd()) {
-                    p.value = *v;
-                    p.literal = p.raw.find_first_of("Qq") == std::string::npos;
-                }
+    }
+    return true;
+}
+
+// One "Qnnn=value ;comment" of text[at, end).
+bool BlockParser::parseCycleParameter(std::string_view text, size_t at,
+                                      std::vector<CycleParameter>& out) {
+    Cursor sc(text, at);
+    CycleParameter p;
+    p.offset = sc.position();
+    if (!sc.acceptPrefix("Q")) {
+        return failAt(sc.position(), "syntax", KERF_TR_NOOP("cycle parameter Qnnn= expected"));
+    }
+    if (sc.acceptPrefix("S")) p.isString = true;
+    auto q = sc.unsignedInteger();
+    if (!q || *q >= kQCount) {
+        return failAt(sc.position(), "syntax", KERF_TR_NOOP("cycle parameter number expected"));
+    }
+    p.q = static_cast<uint16_t>(*q);
+    if (!sc.acceptChar('=')) return failAt(sc.position(), "syntax", KERF_TR_NOOP("'=' expected"));
+    p.raw = std::string(sc.restUntilComment());
+    p.comment = std::string(sc.comment());
+    if (!p.isString) {
+        // Plain numbers and Q references are evaluated now (the TNC captures cycle
+        // parameters at definition); keywords such as PREDEF stay in `raw`.
+        Cursor vc(p.raw);
+        FormulaParser fp(vc, m_env);
+        const char lead = upper(vc.peek());
+        if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
+            lead == '.') {
+            auto v = fp.wordValue();
+            if (v && vc.atEnd()) {
+                p.value = *v;
+                p.literal = p.raw.find_first_of("Qq") == std::string::npos;
             }
         }
-        out.push_back(std::move(p));
     }
+    out.push_back(std::move(p));
     return true;
 }
 
@@ -239,7 +265,11 @@ bool BlockParser::parseGlobalDef(const program::LogicalLine& line, size_t at, Pa
     }
     GlobalDefinition b;
     b.group = static_cast<int>(*number);
-    if (!parseCycleParameters(line, b.parameters)) return false;
+    const size_t headerEnd = segmentEnd(line, 0);
+    const CycleParameterSpans onHeader = cycleParameterSpans(line.text, cur.position(), headerEnd);
+    const size_t parametersAt =
+        onHeader.starts.empty() ? std::string_view::npos : onHeader.starts.front();
+    if (!parseCycleParameters(line, b.parameters, parametersAt)) return false;
     out.statement = std::move(b);
     return true;
 }

@@ -269,6 +269,10 @@ bool IsoTranslator::translateDFunction(Context& c, size_t at) {
         if (p == 3) {
             b.add("GOTO LBL", i, 3);
             size_t end = valueAt;
+            if (end < text.size() && text[end] == '"') {  // a named label: P03 "NAME"
+                const size_t close = text.find('"', end + 1);
+                end = close == std::string_view::npos ? end : close + 1;
+            }
             while (end < text.size() && (isDigit(text[end]) || isLetter(text[end])))
                 ++end;
             if (end == valueAt) return fail(valueAt, KERF_TR_NOOP("label number expected"));

@@ -6,6 +6,7 @@
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/cursor.h"
+#include "core/interp/klartext/cycle_parameter_spans.h"
 #include "core/interp/tnciso/detail/translation_context.h"
 
 namespace kerf::tnciso {
@@ -14,21 +15,6 @@ using klartext::isDigit;
 using klartext::upper;
 
 namespace {
-
-// "Q200=" or "QS500 =" at `at`, at the line start or after a blank.
-bool parameterAt(std::string_view text, size_t at, size_t lineStart) {
-    if (at >= text.size() || upper(text[at]) != 'Q') return false;
-    if (at > lineStart && text[at - 1] != ' ' && text[at - 1] != '\t') return false;
-    size_t i = at + 1;
-    if (i < text.size() && upper(text[i]) == 'S') ++i;
-    const size_t digits = i;
-    while (i < text.size() && isDigit(text[i]))
-        ++i;
-    if (i == digits) return false;
-    while (i < text.size() && (text[i] == ' ' || text[i] == '\t'))
-        ++i;
-    return i < text.size() && text[i] == '=';
-}
 
 std::string_view trimmed(std::string_view text) {
     while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '*'))
@@ -54,12 +40,10 @@ bool IsoTranslator::translateCycle(Context& c, const IsoWord& g) {
         const size_t segStart = s == 0 ? g.valueOffset : c.line.segments[s].joinedOffset;
         const size_t segEnd =
             s + 1 < c.line.segments.size() ? c.line.segments[s + 1].joinedOffset : text.size();
-        size_t comment = text.find(';', segStart);
-        if (comment == std::string_view::npos || comment > segEnd) comment = segEnd;
-        std::vector<size_t> starts;
-        for (size_t i = segStart; i < comment; ++i) {
-            if (parameterAt(text, i, segStart)) starts.push_back(i);
-        }
+        const klartext::CycleParameterSpans spans =
+            klartext::cycleParameterSpans(text, segStart, segEnd);
+        const std::vector<size_t>& starts = spans.starts;
+        const size_t comment = spans.commentAt;
         const size_t firstParameter = starts.empty() ? comment : starts.front();
         const std::string_view before = trimmed(text.substr(segStart, firstParameter - segStart));
         if (!before.empty()) {

@@ -67,7 +67,7 @@ TEST(DryRun, AnEndlessLoopStopsAtTheBlockLimit) {
 
     LoadedProgram program = loadProgram(mill, requestFor(kEndless));
     ASSERT_TRUE(program.ready);
-    EXPECT_EQ(runDry(*program.interpreter, options), DryRunEnd::BlockLimit);
+    EXPECT_EQ(runDry(*program.interpreter, options).end, DryRunEnd::BlockLimit);
     EXPECT_EQ(program.interpreter->blocksExecuted(), 1000u);
 }
 
@@ -78,9 +78,54 @@ TEST(DryRun, ACancelledRunStopsBeforeItsNextSlice) {
     options.cancel = &cancel;
     LoadedProgram program = loadProgram(mill, requestFor(kEndless));
     ASSERT_TRUE(program.ready);
-    EXPECT_EQ(runDry(*program.interpreter, options), DryRunEnd::Cancelled);
+    EXPECT_EQ(runDry(*program.interpreter, options).end, DryRunEnd::Cancelled);
     EXPECT_EQ(program.interpreter->blocksExecuted(), 0u);
     EXPECT_TRUE(checkByRunning(mill, requestFor(kEndless), options).cancelled);
+}
+
+// A machine whose X travel ends at +100 (workpiece coordinates).
+class ShortX final : public MoveCheck {
+public:
+    void start(const Pose& tip) override { m_at = tip; }
+    bool accept(const canon::Command& command) override {
+        if (const auto* rapid = std::get_if<canon::RapidMove>(&command.body)) {
+            if (rapid->target[Axis::X] > 100.0) m_refusal = command.location;
+        }
+        return !m_refusal;
+    }
+    void resumeAt(const Pose& tip) override { m_at = tip; }
+    Pose position() const override { return m_at; }
+    bool refused() const override { return m_refusal.has_value(); }
+    DiagnosticList refusal() const override {
+        return {Diagnostic::make(Severity::Error, "motion.soft-limit", "", m_refusal->line,
+                                 m_refusal->column, "beyond X")};
+    }
+
+private:
+    Pose m_at;
+    std::optional<SourceLocation> m_refusal;
+};
+
+// `kerf check` judges the run's commands as the machine would: the first one refused ends the
+// run, and its refusal names the block in its file.
+TEST(DryRun, AMoveTheMachineRefusesEndsTheRunAtItsBlock) {
+    const auto mill = *machine::loadMachine("mill");
+    ShortX shortX;
+    DryRunOptions options;
+    options.moves = &shortX;
+    const ProgramRequest request = requestFor(
+        "0 BEGIN PGM P MM\n1 L X+50 R0 FMAX\n2 L X+150 R0 FMAX\n3 L X+0 R0 FMAX\n"
+        "4 END PGM P MM\n");
+    const RunCheck check = checkByRunning(mill, request, options);
+    ASSERT_EQ(check.diagnostics.size(), 1u);
+    EXPECT_EQ(check.diagnostics[0].format(), request.path.string() + ":3:1: error: beyond X");
+
+    LoadedProgram program = loadProgram(mill, request);
+    ShortX again;
+    options.moves = &again;
+    const DryRunResult end = runDry(*program.interpreter, options);
+    EXPECT_EQ(end.end, DryRunEnd::Refused);
+    EXPECT_EQ(end.refusedAt.line, 3u);
 }
 
 }  // namespace

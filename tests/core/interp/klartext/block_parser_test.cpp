@@ -152,6 +152,45 @@ TEST(BlockParser, CycleDefinitionsInBothLayouts) {
     EXPECT_EQ(old.rest, "X+10");
 }
 
+// CAM post-processors write the parameters on the CYCL DEF line, or several on one line: the same
+// block as one parameter per line (docs/klartext.md, "Program text").
+TEST(BlockParser, CycleParametersOnTheHeaderLineAndSideBySide) {
+    const auto a = first<CycleDefinition>(
+        "7 CYCL DEF 200 DRILLING Q200=2 Q201=-20 Q206=FAUTO Q202 = 5 ;DEPTH\n8 L X+0");
+    EXPECT_EQ(a.number, 200);
+    EXPECT_EQ(a.name, "DRILLING");
+    ASSERT_EQ(a.parameters.size(), 4u);
+    EXPECT_EQ(a.parameters[0].q, 200);
+    EXPECT_DOUBLE_EQ(*a.parameters[0].value, 2.0);
+    EXPECT_EQ(a.parameters[0].offset, 24u);  // "Q200" after "7 CYCL DEF 200 DRILLING "
+    EXPECT_DOUBLE_EQ(*a.parameters[1].value, -20.0);
+    EXPECT_EQ(a.parameters[2].raw, "FAUTO");
+    EXPECT_EQ(a.parameters[3].q, 202);
+    EXPECT_DOUBLE_EQ(*a.parameters[3].value, 5.0);
+    EXPECT_EQ(a.parameters[3].comment, "DEPTH");  // the line's comment: its last parameter's
+    // Without a name, and followed by parameter lines that hold two each.
+    const auto b = first<CycleDefinition>(
+        "7 CYCL DEF 200 Q200=2\n  Q201=-3 Q206=150 ;PROFUNDIDADE\n  Q202=3\n8 L");
+    EXPECT_EQ(b.name, "");
+    ASSERT_EQ(b.parameters.size(), 4u);
+    EXPECT_EQ(b.parameters[1].q, 201);
+    EXPECT_EQ(b.parameters[1].comment, "");
+    EXPECT_EQ(b.parameters[2].q, 206);
+    EXPECT_EQ(b.parameters[2].comment, "PROFUNDIDADE");
+    EXPECT_EQ(b.parameters[3].q, 202);
+    // A string parameter with a blank and "Q5=" inside its quotes is one parameter.
+    const auto c = first<CycleDefinition>("7 CYCL DEF 225 ENGRAVING QS500=\"A Q5=1\" Q513=10");
+    ASSERT_EQ(c.parameters.size(), 2u);
+    EXPECT_EQ(c.parameters[0].raw, "\"A Q5=1\"");
+    EXPECT_EQ(c.parameters[1].q, 513);
+    // GLOBAL DEF alike.
+    const auto g = first<GlobalDefinition>("7 GLOBAL DEF 100 GENERAL Q200=2 Q204=50");
+    ASSERT_EQ(g.parameters.size(), 2u);
+    EXPECT_EQ(g.parameters[1].q, 204);
+    // A name word that is not "Qnnn=" stays in the name.
+    EXPECT_EQ(first<CycleDefinition>("7 CYCL DEF 200 Q5 DRILLING").name, "Q5 DRILLING");
+}
+
 // Real files written "CYCL DEF9 .0" with a blank before the sub-number (issue 16 item 6).
 TEST(BlockParser, OldStyleSubNumberAfterABlank) {
     const auto dwell = first<CycleDefinition>("CYCL DEF9 .0 DWELL TIME");
