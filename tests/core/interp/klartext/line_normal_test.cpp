@@ -4,6 +4,7 @@
 // forbid positive oversizes, TCPM turns the tool to TX TY TZ or to the normal.
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -42,7 +43,7 @@ protected:
         dir = fs::temp_directory_path() / ("kerf_ln_" + std::to_string(::getpid()));
         fs::remove_all(dir);
         fs::create_directories(dir);
-        tools = *tables::ToolTable::parse(kTools);
+        tools.emplace(*tables::ToolTable::parse(kTools));
     }
     void TearDown() override { fs::remove_all(dir); }
 
@@ -51,7 +52,7 @@ protected:
         KlartextSettings settings;
         settings.machine = &machine;
         settings.ncRoot = dir;
-        settings.tools = &tools;
+        settings.tools = &*tools;
         for (const machine::AxisConfig& axis : machine.axes)
             settings.presetInMachine[*axisFromLetter(axis.letter)] = axis.presetPosition;
         k = std::make_unique<KlartextInterpreter>(sources, settings);
@@ -94,7 +95,7 @@ protected:
 
     fs::path dir;
     machine::MachineConfig machine;
-    tables::ToolTable tools;
+    std::optional<tables::ToolTable> tools;  // no default constructor
     program::SourceRegistry sources;
     std::unique_ptr<KlartextInterpreter> k;
 };
