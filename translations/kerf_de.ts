@@ -8526,10 +8526,6 @@ wählen</translation>
         <translation>LN: ein Vektor NX NY NZ oder TX TY TZ hat keine Länge</translation>
     </message>
     <message>
-        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
-        <translation>LN: die Werkzeugrichtung TX TY TZ braucht M128 oder FUNCTION TCPM</translation>
-    </message>
-    <message>
         <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
         <translation>LN: die Drehachsen dieser Maschine können das Werkzeug nicht entlang TX TY TZ drehen</translation>
     </message>
@@ -8644,6 +8640,26 @@ wählen</translation>
     <message>
         <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
         <translation>TRACK ON braucht ein Tastsystem, das die Spindel in jeden Winkel drehen kann; {1} kann das nicht</translation>
+    </message>
+    <message>
+        <source>LN: the tool is larger than the CAM system&apos;s (DR {1}, DR2 {2} from the tool table and TOOL CALL): program M107 to permit positive oversizes</source>
+        <translation>LN: Das Werkzeug ist größer als das des CAM-Systems (DR {1}, DR2 {2} aus Werkzeugtabelle und TOOL CALL): M107 programmieren, um positive Aufmaße zuzulassen</translation>
+    </message>
+    <message>
+        <source>LN: the corner radius R2+DR2 {1} must lie between 0 (end mill) and the radius R+DR {2} (ball cutter)</source>
+        <translation>LN: Der Eckenradius R2+DR2 {1} muss zwischen 0 (Schaftfräser) und dem Radius R+DR {2} (Radiusfräser) liegen</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along the surface normal NX NY NZ</source>
+        <translation>LN: Die Drehachsen dieser Maschine können das Werkzeug nicht entlang der Flächennormalen NX NY NZ drehen</translation>
+    </message>
+    <message>
+        <source>LN is the conversational straight line with 3D tool compensation; in ISO write G01 X Y Z NX NY NZ [TX TY TZ]</source>
+        <translation>LN ist die Klartext-Gerade mit 3D-Werkzeugkorrektur; in ISO G01 X Y Z NX NY NZ [TX TY TZ] schreiben</translation>
+    </message>
+    <message>
+        <source>surface vectors NX NY NZ TX TY TZ belong to a straight line G00/G01</source>
+        <translation>Flächenvektoren NX NY NZ TX TY TZ gehören zu einer Geraden G00/G01</translation>
     </message>
     <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>

@@ -8526,10 +8526,6 @@ solución</translation>
         <translation>LN: un vector NX NY NZ o TX TY TZ no tiene longitud</translation>
     </message>
     <message>
-        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
-        <translation>LN: la dirección de la herramienta TX TY TZ necesita M128 o FUNCTION TCPM</translation>
-    </message>
-    <message>
         <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
         <translation>LN: los ejes giratorios de esta máquina no pueden girar la herramienta según TX TY TZ</translation>
     </message>
@@ -8644,6 +8640,26 @@ solución</translation>
     <message>
         <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
         <translation>TRACK ON necesita un palpador que el cabezal pueda girar a cualquier ángulo; {1} no puede</translation>
+    </message>
+    <message>
+        <source>LN: the tool is larger than the CAM system&apos;s (DR {1}, DR2 {2} from the tool table and TOOL CALL): program M107 to permit positive oversizes</source>
+        <translation>LN: la herramienta es mayor que la del sistema CAM (DR {1}, DR2 {2} de la tabla de herramientas y TOOL CALL): programe M107 para permitir sobremedidas positivas</translation>
+    </message>
+    <message>
+        <source>LN: the corner radius R2+DR2 {1} must lie between 0 (end mill) and the radius R+DR {2} (ball cutter)</source>
+        <translation>LN: el radio de esquina R2+DR2 {1} debe estar entre 0 (fresa cilíndrica) y el radio R+DR {2} (fresa esférica)</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along the surface normal NX NY NZ</source>
+        <translation>LN: los ejes giratorios de esta máquina no pueden orientar la herramienta según la normal de superficie NX NY NZ</translation>
+    </message>
+    <message>
+        <source>LN is the conversational straight line with 3D tool compensation; in ISO write G01 X Y Z NX NY NZ [TX TY TZ]</source>
+        <translation>LN es la recta en lenguaje conversacional con corrección 3D de herramienta; en ISO escriba G01 X Y Z NX NY NZ [TX TY TZ]</translation>
+    </message>
+    <message>
+        <source>surface vectors NX NY NZ TX TY TZ belong to a straight line G00/G01</source>
+        <translation>los vectores de superficie NX NY NZ TX TY TZ pertenecen a una recta G00/G01</translation>
     </message>
     <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>

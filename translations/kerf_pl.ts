@@ -8529,10 +8529,6 @@ rozwiązanie</translation>
         <translation>LN: wektor NX NY NZ lub TX TY TZ ma zerową długość</translation>
     </message>
     <message>
-        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
-        <translation>LN: kierunek narzędzia TX TY TZ wymaga M128 lub FUNCTION TCPM</translation>
-    </message>
-    <message>
         <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
         <translation>LN: osie obrotowe tej maszyny nie mogą obrócić narzędzia wzdłuż TX TY TZ</translation>
     </message>
@@ -8647,6 +8643,26 @@ rozwiązanie</translation>
     <message>
         <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
         <translation>TRACK ON wymaga sondy, którą wrzeciono może obrócić o dowolny kąt; {1} tego nie umożliwia</translation>
+    </message>
+    <message>
+        <source>LN: the tool is larger than the CAM system&apos;s (DR {1}, DR2 {2} from the tool table and TOOL CALL): program M107 to permit positive oversizes</source>
+        <translation>LN: narzędzie jest większe niż narzędzie systemu CAM (DR {1}, DR2 {2} z tabeli narzędzi i TOOL CALL): zaprogramuj M107, aby dopuścić dodatnie naddatki</translation>
+    </message>
+    <message>
+        <source>LN: the corner radius R2+DR2 {1} must lie between 0 (end mill) and the radius R+DR {2} (ball cutter)</source>
+        <translation>LN: promień naroża R2+DR2 {1} musi leżeć między 0 (frez walcowy) a promieniem R+DR {2} (frez kulisty)</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along the surface normal NX NY NZ</source>
+        <translation>LN: osie obrotowe tej maszyny nie mogą obrócić narzędzia wzdłuż wektora normalnego powierzchni NX NY NZ</translation>
+    </message>
+    <message>
+        <source>LN is the conversational straight line with 3D tool compensation; in ISO write G01 X Y Z NX NY NZ [TX TY TZ]</source>
+        <translation>LN to prosta z korekcją 3D narzędzia w języku dialogowym; w ISO należy zapisać G01 X Y Z NX NY NZ [TX TY TZ]</translation>
+    </message>
+    <message>
+        <source>surface vectors NX NY NZ TX TY TZ belong to a straight line G00/G01</source>
+        <translation>wektory powierzchni NX NY NZ TX TY TZ należą do prostej G00/G01</translation>
     </message>
     <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>

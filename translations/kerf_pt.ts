@@ -8526,10 +8526,6 @@ solução</translation>
         <translation>LN: um vetor NX NY NZ ou TX TY TZ não tem comprimento</translation>
     </message>
     <message>
-        <source>LN: the tool direction TX TY TZ needs M128 or FUNCTION TCPM</source>
-        <translation>LN: a direção da ferramenta TX TY TZ precisa de M128 ou FUNCTION TCPM</translation>
-    </message>
-    <message>
         <source>LN: the rotary axes of this machine cannot turn the tool along TX TY TZ</source>
         <translation>LN: os eixos rotativos desta máquina não conseguem rodar a ferramenta segundo TX TY TZ</translation>
     </message>
@@ -8644,6 +8640,26 @@ solução</translation>
     <message>
         <source>TRACK ON needs a probe the spindle can turn to any angle; {1} cannot be</source>
         <translation>TRACK ON precisa de um apalpador que a árvore possa orientar em qualquer ângulo; {1} não pode</translation>
+    </message>
+    <message>
+        <source>LN: the tool is larger than the CAM system&apos;s (DR {1}, DR2 {2} from the tool table and TOOL CALL): program M107 to permit positive oversizes</source>
+        <translation>LN: a ferramenta é maior do que a do sistema CAM (DR {1}, DR2 {2} da tabela de ferramentas e TOOL CALL): programe M107 para permitir sobremedidas positivas</translation>
+    </message>
+    <message>
+        <source>LN: the corner radius R2+DR2 {1} must lie between 0 (end mill) and the radius R+DR {2} (ball cutter)</source>
+        <translation>LN: o raio de canto R2+DR2 {1} deve estar entre 0 (fresa de topo) e o raio R+DR {2} (fresa esférica)</translation>
+    </message>
+    <message>
+        <source>LN: the rotary axes of this machine cannot turn the tool along the surface normal NX NY NZ</source>
+        <translation>LN: os eixos rotativos desta máquina não conseguem orientar a ferramenta segundo a normal de superfície NX NY NZ</translation>
+    </message>
+    <message>
+        <source>LN is the conversational straight line with 3D tool compensation; in ISO write G01 X Y Z NX NY NZ [TX TY TZ]</source>
+        <translation>LN é a reta em diálogo conversacional com correção 3D da ferramenta; em ISO escreva G01 X Y Z NX NY NZ [TX TY TZ]</translation>
+    </message>
+    <message>
+        <source>surface vectors NX NY NZ TX TY TZ belong to a straight line G00/G01</source>
+        <translation>os vetores de superfície NX NY NZ TX TY TZ pertencem a uma reta G00/G01</translation>
     </message>
     <message>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>

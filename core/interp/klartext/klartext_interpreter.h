@@ -208,6 +208,11 @@ private:
     // Motion and machine functions (klartext_motion.cpp).
     void executeLinear(const LinearBlock& block);
     void executeLineNormal(const LineNormalBlock& block);  // klartext_line_normal.cpp
+    // LN: false (failed) for an oversize M107 does not permit or a corner radius R2 + DR2
+    // outside 0 ... R + DR.
+    bool cutterFitsLineNormal();
+    // A direction on the part (workpiece coordinates) in the program's coordinates at `at`.
+    Vec3 programDirectionOf(const Vec3& onPart, const Pose& at) const;
     void executeCircle(const Coordinates& coords, Direction direction, const CommonWords& words,
                        std::optional<double> radius);
     void executeTangentCircle(const Coordinates& coords, const PolarWords* polar,
@@ -702,6 +707,7 @@ private:
     Vec3 m_tableOffset = Vec3::Zero();
     machine::RotaryAngles m_tiltAngles;  // the active plane's solved angles
     bool m_shortestRotary = false;
+    bool m_permitOversize = false;                // M107 (until M108): LN takes DR, DR2 > 0
     bool m_tcpm = false;                          // M128 / FUNCTION TCPM
     bool m_tcpmSpatial = false;                   // AXIS SPAT
     std::array<double, 3> m_spatialDeg{0, 0, 0};  // its tool angles A, B, C (modal)

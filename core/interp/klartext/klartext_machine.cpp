@@ -70,8 +70,9 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
     for (uint8_t i = 0; i < m.count && m_status != interp::RunStatus::Failed; ++i) {
         const MWord& word = m.list[i];
         const int n = word.number;
-        // TNC: M3 M4 M8 M13 M14 and M120 LA act at the start of the block, the others at its end.
-        const bool startFunction = n == 3 || n == 4 || n == 8 || n == 13 || n == 14 ||
+        // TNC: M3 M4 M8 M13 M14 M107 and M120 LA act at the start of the block, the others at
+        // its end.
+        const bool startFunction = n == 3 || n == 4 || n == 8 || n == 13 || n == 14 || n == 107 ||
                                    (n == 120 && word.parameter.has_value());
         if (startFunction != atStart) continue;
         switch (n) {
@@ -120,6 +121,13 @@ void KlartextInterpreter::applyMFunctions(const MWords& m, bool atStart) {
                 break;
             case 94:
                 reduceRotaryDisplay(word.axes);
+                break;
+            case 107:
+            case 108:
+                // LN blocks with a tool larger than the CAM system's: permitted from M107 until
+                // M108 (klartext_line_normal.cpp). M108's check of a replacement tool's radius
+                // has nothing to check: Kerf does not replace tools (M101).
+                m_permitOversize = n == 107;
                 break;
             case 128:
             case 129:

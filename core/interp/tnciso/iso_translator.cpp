@@ -462,6 +462,11 @@ bool IsoTranslator::translateWords(Context& c) {
         b.add("CALL LBL", l->offset, 1);
         if (const IsoWord* name = l->value.empty() ? c.take("\"") : nullptr) {
             b.add("\"" + std::string(name->value) + "\"", name->offset, name->value.size() + 2);
+        } else if (l->value.empty() && l->valueOffset < c.text.size() &&
+                   upper(c.text[l->valueOffset]) == 'N') {
+            return fail(l->offset,
+                        KERF_TR_NOOP("LN is the conversational straight line with 3D tool "
+                                     "compensation; in ISO write G01 X Y Z NX NY NZ [TX TY TZ]"));
         } else if (l->value.empty()) {
             return fail(l->valueOffset, KERF_TR_NOOP("label number expected"));
         } else {
@@ -523,6 +528,7 @@ bool IsoTranslator::translateWords(Context& c) {
         ConversationalBlock& b = c.out.lastBlock();
         addComp(b);
         if (!addAxes(b, m_incremental)) return false;
+        if (!addSurfaceVectors(c, b)) return false;
         c.addFeedAndM(b);
         return true;
     }
@@ -544,6 +550,31 @@ bool IsoTranslator::translateWords(Context& c) {
     return true;
 }
 
+bool IsoTranslator::addSurfaceVectors(Context& c, ConversationalBlock& b) {
+    const IsoWord* vectors[6];
+    bool any = false;
+    static const char* const kKeys[] = {"NX", "NY", "NZ", "TX", "TY", "TZ"};
+    for (int k = 0; k < 6; ++k) {
+        vectors[k] = c.take(kKeys[k]);
+        any = any || vectors[k] != nullptr;
+        if (vectors[k] != nullptr && vectors[k]->value.empty()) {
+            return fail(vectors[k]->valueOffset, KERF_TR_NOOP("value expected after '{1}'"),
+                        {kKeys[k]});
+        }
+    }
+    if (!any) return true;
+    if (m_motion != 0 && m_motion != 1) {
+        const IsoWord* first = *std::find_if(std::begin(vectors), std::end(vectors),
+                                             [](const IsoWord* w) { return w != nullptr; });
+        return fail(first->offset, KERF_TR_NOOP("surface vectors NX NY NZ TX TY TZ belong to a "
+                                                "straight line G00/G01"));
+    }
+    for (int k = 0; k < 6; ++k) {
+        if (vectors[k] != nullptr) c.addWord(b, *vectors[k], kKeys[k]);
+    }
+    return true;
+}
+
 bool IsoTranslator::translateMotion(Context& c, int motion) {
     ConversationalBlock& b = c.newBlock();
     const IsoWord* g = c.words.findG(motion);
@@ -558,7 +589,8 @@ bool IsoTranslator::translateMotion(Context& c, int motion) {
     switch (motion) {
         case 0:
         case 1:
-            b.add("L", at, length);
+            // With a surface normal NX NY NZ the straight line is 3D-compensated: LN.
+            b.add(c.has("NX") || c.has("NY") || c.has("NZ") ? "LN" : "L", at, length);
             break;
         case 2:
         case 3:

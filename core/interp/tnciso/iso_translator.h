@@ -76,6 +76,8 @@ private:
     bool translateProgramWord(Context& c, size_t at);
     bool translateDFunction(Context& c, size_t at);
     bool translateMotion(Context& c, int motion);
+    // NX NY NZ [TX TY TZ] of a G00/G01 block: the words of the LN block it becomes.
+    bool addSurfaceVectors(Context& c, ConversationalBlock& b);
     bool translateCycle(Context& c, const IsoWord& g);  // iso_translator_cycles.cpp
     bool translateOldCycle(Context& c, const IsoWord& g,
                            bool& handled);                       // iso_translator_cycles.cpp

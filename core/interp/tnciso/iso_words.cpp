@@ -136,8 +136,11 @@ bool scanWords(std::string_view text, size_t from, IsoWords& out, klartext::Pars
             i = keyEnd;
             continue;
         }
+        // FU, FZ, DL, DR, DR2 and the vectors of a 3D-compensated straight NX NY NZ TX TY TZ.
+        const bool surfaceVector =
+            (letter == 'N' || letter == 'T') && (next == 'X' || next == 'Y' || next == 'Z');
         if ((letter == 'F' && (next == 'U' || next == 'Z')) ||
-            (letter == 'D' && (next == 'L' || next == 'R'))) {
+            (letter == 'D' && (next == 'L' || next == 'R')) || surfaceVector) {
             keyEnd = i + 2;
             if (letter == 'D' && next == 'R' && keyEnd < text.size() && text[keyEnd] == '2') {
                 ++keyEnd;

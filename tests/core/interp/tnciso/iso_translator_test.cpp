@@ -199,6 +199,23 @@ TEST(IsoTranslator, G18WithItsParametersIsThreadCutting) {
                   "error at 1: G17/G18/G19 belong to a tool call (T) or a blank (G30)"}));
 }
 
+// The straight line with 3D tool compensation: a G01 (or G00) with the surface normal NX NY NZ
+// and the tool direction TX TY TZ is the conversational LN; LN itself is no ISO word.
+TEST(IsoTranslator, StraightWithSurfaceNormalIsLn) {
+    EXPECT_EQ(translate("N10 G01 X+10 Y+0 Z+0 NX+0.6 NY+0 NZ+0.8 F100 *\n"
+                        "N20 X+0 Y+0 Z+50 NX+0 NY+0 NZ+1 TX+0.5 TY+0 TZ+0.866 M128 *\n"
+                        "N30 X+5 *\n"
+                        "N40 LN X+10 Y+0 Z+0 NX+0 NY+0 NZ+1 *\n"
+                        "N50 G02 X+10 Y+0 R+5 NX+0 NY+0 NZ+1 *\n"),
+              (std::vector<std::string>{
+                  "LN X+10 Y+0 Z+0 NX+0.6 NY+0 NZ+0.8 F100",
+                  "LN X+0 Y+0 Z+50 NX+0 NY+0 NZ+1 TX+0.5 TY+0 TZ+0.866 M128", "L X+5",
+                  "error at 5: LN is the conversational straight line with 3D tool compensation; "
+                  "in ISO write G01 X Y Z NX NY NZ [TX TY TZ]",
+                  "error at 22: surface vectors NX NY NZ TX TY TZ belong to a straight line "
+                  "G00/G01"}));
+}
+
 TEST(IsoTranslator, ErrorsPointAtTheWord) {
     EXPECT_EQ(translate("N10 X+10 *\n"
                         "N20 G01 X+1 G77 *\n"
