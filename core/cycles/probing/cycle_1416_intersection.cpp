@@ -79,12 +79,12 @@ std::optional<Tolerance> parseTolerance(const std::string& text) {
     if (text.empty()) return Tolerance{};
     char* end = nullptr;
     const double upper = std::strtod(text.c_str(), &end);
-    if (end == text.c_str()) return std::nullopt;
+    if (end == text.c_str() || !std::isfinite(upper)) return std::nullopt;
     if (*end == '\0') return Tolerance{upper, upper, true};
     if (*end != '-') return std::nullopt;
     const char* rest = end + 1;
     const double lower = std::strtod(rest, &end);
-    if (end == rest || *end != '\0') return std::nullopt;
+    if (end == rest || *end != '\0' || !std::isfinite(lower)) return std::nullopt;
     return Tolerance{upper, lower, true};
 }
 

@@ -59,8 +59,8 @@ constexpr ParameterDescriptor k444Parameters[] = {
 
 constexpr uint16_t k444Results[] = {151, 152, 153, 161, 162, 163, 164, 183};
 
-// QS400 (spec 5, 444): "[+]upper[-lower]" or "-lower"; anything else, or all zero, is no
-// tolerance. Limits are signed deviations along the normal.
+// QS400 (spec 5, 444): "[+]upper[-lower]" or "-lower"; anything else (also "nan", "inf"), or
+// all zero, is no tolerance. Limits are signed deviations along the normal.
 struct NormalTolerance {
     double upper = 0.0;
     double lower = 0.0;
@@ -75,7 +75,7 @@ NormalTolerance parseNormalTolerance(const std::string& text) {
     auto number = [](const char* from, const char** end) {
         char* e = nullptr;
         const double value = std::strtod(from, &e);
-        *end = e;
+        *end = std::isfinite(value) ? e : from;  // not finite: as if nothing was read
         return value;
     };
     NormalTolerance t;

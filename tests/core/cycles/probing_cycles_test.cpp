@@ -607,6 +607,13 @@ TEST(ProbingCycles, Intersection1416FindsTheCornerOfTheTurnedBlank) {
     EXPECT_EQ(run(1416, v, part).error->code, "PRB-010");
     v.set(1126, 0), v.setText(400, "abc");
     EXPECT_EQ(run(1416, v, part).error->code, "cycle-parameter");
+    // strtod reads these as numbers; a tolerance that no deviation can exceed is refused too.
+    for (const char* notFinite : {"nan", "inf", "1-inf", "1e999"}) {
+        v.setText(400, notFinite);
+        const CycleRun refused = run(1416, v, part);
+        ASSERT_TRUE(refused.error) << notFinite;
+        EXPECT_EQ(refused.error->code, "cycle-parameter") << notFinite;
+    }
 }
 
 TEST(ProbingCycles, MeasureAngle420RectanglesAndCoordinate427) {
