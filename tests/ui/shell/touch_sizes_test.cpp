@@ -5,6 +5,7 @@
 #include <QDialog>
 #include <QLayout>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QTableView>
 #include <QTimer>
 #include <QTreeView>
@@ -25,6 +26,7 @@
 #include "ui/files/file_manager.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/message_panel.h"
+#include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
 #include "ui/tables/table_editor.h"
 
@@ -114,7 +116,9 @@ TEST(TouchSizes, EveryPromptsButtonsAndFieldsAreFingerSized) {
     // Programming: Edit cycle away from a cycle explains why; another program with unsaved
     // edits asks Save / Discard / Cancel.
     ASSERT_TRUE(window.openProgram(dir / "A.H"));
-    expectTouchSized(walkPrompt([&] { window.softkeys()->pressId("editCycle"); }), "Edit cycle");
+    window.modes().requestProgrammingMode(task::ProgrammingMode::Programming);
+    expectTouchSized(walkPrompt([&] { EXPECT_TRUE(window.softkeys()->pressId("editCycle")); }),
+                     "Edit cycle");
     window.program()->editor()->appendPlainText(QStringLiteral("2 L X+1 FMAX"));
     expectTouchSized(walkPrompt([&] { window.openProgram(dir / "B.H"); }), "Unsaved edits");
     EXPECT_EQ(window.program()->path(), dir / "A.H");  // Cancel kept it
