@@ -333,13 +333,28 @@ void ServoCycle::chooseSingleBlockStop() noexcept {
     for (size_t i = 0; i < scan; ++i) {
         const MotionItem& item = m_items.peek(i);
         if (item.kind != MotionItem::Kind::Element) return;
-        if (!item.element.blockEnd || item.sequence == m_singleBlockDone) continue;
+        if (!endsSingleBlockStep(i)) continue;
         // The first block end the motion can still stop at.
         if (canMeet(m_gen.state(), {item.element.sEnd(), 0.0}, item.element.limits)) {
             m_singleBlockS = item.element.sEnd();
             return;
         }
     }
+}
+
+bool ServoCycle::endsSingleBlockStep(size_t index) const noexcept {
+    const MotionItem& item = m_items.peek(index);
+    if (!item.element.blockEnd || item.sequence == m_singleBlockDone) return false;
+    // A called cycle is one block: its moves and dwells carry the calling block's place and run
+    // without a stop between them, as on a TNC 320 (docs/hmi.md). The next move decides; the
+    // actions before it (a dwell, the spindle) are passed over.
+    const size_t end = std::min(m_items.size(), index + 1 + kSingleBlockScan);
+    for (size_t i = index + 1; i < end; ++i) {
+        const MotionItem& next = m_items.peek(i);
+        if (next.kind != MotionItem::Kind::Element) continue;
+        return next.source.fileId != item.source.fileId || next.source.line != item.source.line;
+    }
+    return true;  // no move queued after it yet: the motion comes to rest here anyway
 }
 
 double ServoCycle::targetVelocity(const PathElement& e) const noexcept {
@@ -576,7 +591,7 @@ void ServoCycle::runProgram() noexcept {
             m_probeArmed = false;
             emit(MotionEventKind::ProbeMissed, -1, 0.0, actualTip());
         }
-        if (m_singleBlock && e.blockEnd && m_gen.atRest() && item.sequence != m_singleBlockDone) {
+        if (m_singleBlock && m_gen.atRest() && endsSingleBlockStep(0)) {
             m_singleBlockDone = item.sequence;
             m_singleBlockS = -1.0;
             m_waitingStart = true;
@@ -584,6 +599,8 @@ void ServoCycle::runProgram() noexcept {
             emit(MotionEventKind::ProgramStopped, -1, 0.0, actualTip());
             return;
         }
+        // A stop chosen here before the rest of its block was queued is not one.
+        if (m_singleBlockS >= 0.0 && m_singleBlockS <= e.sEnd() + 1e-9) m_singleBlockS = -1.0;
         m_items.pop();
         m_elementEntered = false;
         if (!nextIsElement) m_onFeedMove = false;

@@ -68,6 +68,9 @@ private:
     bool runAction(const MotionItem& item) noexcept;
     void stepPath() noexcept;
     void chooseSingleBlockStop() noexcept;
+    // Whether single block stops at the end of queued element `index`: where its programmed
+    // block ends and the next item queued (if any) belongs to another block.
+    bool endsSingleBlockStep(size_t index) const noexcept;
     size_t collectConstraints(size_t first, std::span<Constraint> out) const noexcept;
     void enterElement(const PathElement& element) noexcept;
     void runManual() noexcept;

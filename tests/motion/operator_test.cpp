@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -474,6 +475,46 @@ TEST(SingleBlock, StopsAtTheEndOfEveryBlock) {
                     });
     EXPECT_EQ(stops, 5);
     EXPECT_NEAR(run.report.finalPosition[0], 50.0, 1e-6);
+}
+
+// A called cycle is one block (its moves carry the CYCL CALL's place): single block stops
+// after the whole cycle, not after each of its moves (TNC 320; docs/hmi.md, "Single block").
+TEST(SingleBlock, RunsACalledCycleAsOneBlock) {
+    const std::vector<canon::Command> program = {
+        cmd(canon::RapidMove{at(10, 0, 50)}, 1),
+        // Block 2 "CYCL CALL": drilling at X10 down to Z-10, a dwell, back up.
+        cmd(canon::RapidMove{at(10, 0, 2)}, 2),
+        cmd(canon::LinearMove{at(10, 0, -10), 300.0}, 2),
+        cmd(canon::Dwell{0.1}, 2),
+        cmd(canon::RapidMove{at(10, 0, 2)}, 2),
+        cmd(canon::RapidMove{at(10, 0, 50)}, 2),
+        cmd(canon::RapidMove{at(30, 0, 50)}, 3),
+    };
+    std::vector<std::array<double, 3>> stops;
+    bool armed = false;
+    MotionMode last = MotionMode::Idle;
+    TestRun run =
+        runCommands(millConfig(), program, Pose{}, {},
+                    [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                        if (!armed) {
+                            sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
+                            armed = true;
+                        }
+                        if (s.mode == MotionMode::Stopped && last != MotionMode::Stopped)
+                            stops.push_back({s.commandedPosition[0], s.commandedPosition[1],
+                                             s.commandedPosition[2]});
+                        last = s.mode;
+                    });
+    // Three blocks, three stops: at the end of block 1, of the cycle (back at Z50), of block 3.
+    ASSERT_EQ(stops.size(), 3u);
+    const std::array<std::array<double, 3>, 3> expected = {
+        {{10.0, 0.0, 50.0}, {10.0, 0.0, 50.0}, {30.0, 0.0, 50.0}}};
+    for (size_t i = 0; i < 3; ++i)
+        for (size_t a = 0; a < 3; ++a)
+            // The setpoints lag the path by the setpoint filter (17 ms) when it stops there and
+            // the simulation starts again at once: within 0.5 mm, far from the hole (Z-10, Z2).
+            EXPECT_NEAR(stops[i][a], expected[i][a], 0.5) << "stop " << i << " axis " << a;
+    EXPECT_NEAR(run.report.finalPosition[0], 30.0, 1e-6);
 }
 
 TEST(ToolChange, JointsStayAndTheTipMovesByTheLengthChange) {

@@ -2,6 +2,8 @@
 
 #include <QCoreApplication>
 
+#include "ui/common/message_cause.h"
+
 namespace kerf::ui {
 
 QString translatedMessage(const Diagnostic& diagnostic) {
@@ -15,6 +17,7 @@ void registerDiagnosticMetaTypes() {
     qRegisterMetaType<kerf::Severity>();
     qRegisterMetaType<kerf::Diagnostic>();
     qRegisterMetaType<kerf::DiagnosticList>();
+    qRegisterMetaType<kerf::ui::MessageCause>();
 }
 
 QString severityText(Severity severity) {

@@ -9,14 +9,9 @@
 #include <QVBoxLayout>
 
 #include "core/cycles/cycle_registry.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
-
-namespace {
-
-constexpr int kTouchHeight = 48;
-
-}  // namespace
 
 CycleCatalogueDialog::CycleCatalogueDialog(QWidget* parent)
     : QDialog(parent), m_sections(cycleCatalogue()) {

@@ -18,8 +18,6 @@ namespace kerf::ui {
 
 namespace {
 
-constexpr int kTouchHeight = kDialogTouchHeight;
-
 QString rangeText(const CycleField& field, bool inch) {
     const cycles::ParameterDescriptor& p = *field.parameter;
     if (p.unit == cycles::Unit::Text || field.style == WordStyle::Bare) return {};

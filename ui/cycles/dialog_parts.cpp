@@ -23,7 +23,7 @@ void addOkCancel(QDialog& dialog, QBoxLayout& layout, QPushButton*& ok, QPushBut
     for (QPushButton* button : {ok, cancel}) {
         button->setAutoDefault(false);
         button->setDefault(false);
-        button->setMinimumHeight(kDialogTouchHeight);
+        button->setMinimumHeight(kTouchHeight);
         button->setMinimumWidth(120);
         buttons->addWidget(button);
     }

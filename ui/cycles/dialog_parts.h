@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ui/touch/touch_size.h"
+
 class QBoxLayout;
 class QDialog;
 class QLabel;
@@ -8,9 +10,6 @@ class QPushButton;
 namespace kerf::ui {
 
 // Parts the cycle and path-function dialogs share.
-
-// Touch targets of the dialogs (fields, keys, buttons).
-inline constexpr int kDialogTouchHeight = 48;
 
 // The red line under the fields that says why a value is refused; added to `layout`.
 QLabel* addRefusalLine(QDialog& dialog, QBoxLayout& layout, const char* objectName);

@@ -41,7 +41,7 @@ FagorCycleDialog::FagorCycleDialog(int g, QWidget* parent)
         description->setWordWrap(true);
         auto* input = new QLineEdit(rows);
         input->setObjectName(QStringLiteral("field_%1").arg(field.label()));
-        input->setMinimumHeight(kDialogTouchHeight);
+        input->setMinimumHeight(kTouchHeight);
         input->setMinimumWidth(120);
         input->installEventFilter(this);
         connect(input, &QLineEdit::returnPressed, this, [this, row] { enterPressed(row); });

@@ -1,11 +1,11 @@
 #include "ui/cycles/fagor_softkeys.h"
 
 #include <QCoreApplication>
-#include <QMessageBox>
 
 #include "ui/cycles/fagor_cycle_fields.h"
 #include "ui/cycles/fagor_program_entry.h"
 #include "ui/editor/program_editor.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -40,11 +40,10 @@ std::vector<SoftkeyRow> fagorProgrammingRows(ProgramEditor* editor, QWidget* par
         {"editCycle", QCoreApplication::translate("kerf", "Edit\ncycle"),
          [editor, parent] {
              if (!editFagorCycleAtCursor(*editor, parent))
-                 QMessageBox::information(
-                     parent, QCoreApplication::translate("kerf", "Programming"),
-                     QCoreApplication::translate("kerf",
-                                                 "Put the cursor on a canned cycle block "
-                                                 "(G66-G89) to edit it."));
+                 informTouch(parent, QCoreApplication::translate("kerf", "Programming"),
+                             QCoreApplication::translate("kerf",
+                                                         "Put the cursor on a canned cycle block "
+                                                         "(G66-G89) to edit it."));
              editor->setFocus();
          }},
     }};

@@ -1,7 +1,6 @@
 #include "ui/cycles/program_entry.h"
 
 #include <QCoreApplication>
-#include <QMessageBox>
 #include <QPlainTextEdit>
 
 #include "core/cycles/cycle_registry.h"
@@ -12,6 +11,7 @@
 #include "ui/cycles/path_function_dialog.h"
 #include "ui/cycles/program_blocks.h"
 #include "ui/cycles/special_function_dialog.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -20,7 +20,7 @@ ProgramEntry::ProgramEntry(QPlainTextEdit& editor, QWidget* dialogParent, progra
     : m_editor(editor), m_parent(dialogParent), m_dialect(dialect), m_place(std::move(place)) {}
 
 bool ProgramEntry::explain(const QString& why) {
-    QMessageBox::information(m_parent, QCoreApplication::translate("kerf", "Programming"), why);
+    informTouch(m_parent, QCoreApplication::translate("kerf", "Programming"), why);
     return false;
 }
 

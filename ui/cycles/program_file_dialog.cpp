@@ -44,7 +44,7 @@ ProgramFileDialog::ProgramFileDialog(const fs::path& ncRoot, const fs::path& fol
     m_view->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_view->setUniformRowHeights(true);
     m_view->setStyleSheet(
-        QStringLiteral("QTreeView::item { min-height: %1px; }").arg(kDialogTouchHeight));
+        QStringLiteral("QTreeView::item { min-height: %1px; }").arg(kTouchHeight));
     m_view->setMinimumSize(560, 360);
     connect(m_view, &QTreeView::activated, this, [this](const QModelIndex& index) {
         if (!m_model->isDir(index)) accept();

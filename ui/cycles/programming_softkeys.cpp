@@ -1,13 +1,13 @@
 #include "ui/cycles/programming_softkeys.h"
 
 #include <QCoreApplication>
-#include <QMessageBox>
 
 #include "ui/cycles/cycle_catalogue.h"
 #include "ui/cycles/fagor_softkeys.h"
 #include "ui/cycles/program_entry.h"
 #include "ui/cycles/special_function.h"
 #include "ui/editor/program_editor.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -171,7 +171,7 @@ std::vector<SoftkeyRow> programmingEntryRows(ProgramEditor* editor, QWidget* par
              entryAction(editor, parent,
                          [parent](ProgramEntry& e) {
                              if (!e.editCycleAtCursor())
-                                 QMessageBox::information(
+                                 informTouch(
                                      parent, QCoreApplication::translate("kerf", "Programming"),
                                      QCoreApplication::translate(
                                          "kerf", "Put the cursor on a CYCL DEF block to edit it."));

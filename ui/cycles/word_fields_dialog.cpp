@@ -39,7 +39,7 @@ void WordFieldsDialog::build(const QString& title, const std::vector<WordRow>& r
         } else {
             input = new QLineEdit(this);
         }
-        input->setMinimumHeight(kDialogTouchHeight);
+        input->setMinimumHeight(kTouchHeight);
         input->setMinimumWidth(inputWidth);
         input->installEventFilter(this);
         auto* description = new QLabel(this);
@@ -81,7 +81,7 @@ QStringList WordFieldsDialog::values() const {
 }
 
 void WordFieldsDialog::addToRow(int field, QWidget* widget) {
-    widget->setMinimumHeight(kDialogTouchHeight);
+    widget->setMinimumHeight(kTouchHeight);
     m_grid->addWidget(widget, field, 2);
 }
 

@@ -49,6 +49,9 @@ void ProgramEditor::adoptDocument(QTextDocument* document) {
     // Underlines and marks are cursors into the document being replaced: QPlainTextEdit keeps
     // them across setDocument() and would later measure them against the new one.
     setExtraSelections({});
+    // The editor's font, as for a program typed or opened here (ProgramLoader lays the document
+    // out in it already; setting it again would lay out every block once more).
+    if (document->defaultFont() != font()) document->setDefaultFont(font());
     setDocument(document);
     if (adoptedBefore) previous->deleteLater();
     document->setParent(this);

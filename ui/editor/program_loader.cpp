@@ -1,5 +1,6 @@
 #include "ui/editor/program_loader.h"
 
+#include <QFont>
 #include <QMetaObject>
 #include <QPlainTextDocumentLayout>
 #include <QTextBlock>
@@ -25,11 +26,11 @@ ProgramLoader::~ProgramLoader() {
     if (m_worker.joinable()) m_worker.join();
 }
 
-void ProgramLoader::load(const std::filesystem::path& path) {
+void ProgramLoader::load(const std::filesystem::path& path, const QFont& font) {
     if (m_worker.joinable()) m_worker.join();
     m_busy = true;
     QThread* uiThread = thread();
-    m_worker = std::thread([this, path, uiThread] {
+    m_worker = std::thread([this, path, uiThread, font] {
         auto file = readProgramFile(path);
         if (!file) {
             QMetaObject::invokeMethod(
@@ -46,6 +47,7 @@ void ProgramLoader::load(const std::filesystem::path& path) {
         // The editor's layout, set before the text so that its per-block bookkeeping is done
         // here too; QPlainTextEdit refuses documents with another layout.
         pending->document->setDocumentLayout(new QPlainTextDocumentLayout(pending->document));
+        pending->document->setDefaultFont(font);
         pending->document->setUndoRedoEnabled(false);  // loading is not an edit to undo
         pending->document->setPlainText(file->text);
         pending->document->setUndoRedoEnabled(true);

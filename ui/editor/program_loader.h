@@ -8,6 +8,7 @@
 #include "core/base/diagnostic.h"
 #include "ui/editor/program_file.h"
 
+class QFont;
 class QTextDocument;
 
 namespace kerf::ui {
@@ -22,8 +23,9 @@ public:
     explicit ProgramLoader(QObject* parent = nullptr);
     ~ProgramLoader() override;
 
-    // One load at a time; a new one waits for the previous to finish.
-    void load(const std::filesystem::path& path);
+    // One load at a time; a new one waits for the previous to finish. The document is laid out
+    // in `font`, the editor's (a document's own default is the application's smaller font).
+    void load(const std::filesystem::path& path, const QFont& font);
     bool busy() const { return m_busy; }
 
 signals:

@@ -149,7 +149,7 @@ bool ProgramPanel::open(const std::filesystem::path& path) {
         // The diagnostics are about the text being replaced.
         forgetDiagnostics();
         m_title->setText(tr("Loading %1 ...").arg(fileText(path.filename())));
-        m_loader->load(path);
+        m_loader->load(path, m_editor->font());
         return true;
     }
     auto file = readProgramFile(path);

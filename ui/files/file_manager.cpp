@@ -5,14 +5,13 @@
 #include <QFileSystemModel>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
 #include <QListWidget>
-#include <QMessageBox>
 #include <QTreeView>
 #include <QVBoxLayout>
 
 #include "ui/common/diagnostic_text.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -46,19 +45,21 @@ FileManager::FileManager(fs::path root, QWidget* parent)
     m_view->setRootIndex(m_model->index(rootPath));
     m_view->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_view->setUniformRowHeights(true);
-    m_view->setStyleSheet(QStringLiteral("QTreeView::item { min-height: 36px; }"));
+    makeTouchSizedRows(*m_view);
     connect(m_view, &QTreeView::activated, this, [this] { openSelected(); });
 
     m_filter = new QComboBox(this);
     m_filter->setObjectName("fileFilter");
-    m_filter->setMinimumHeight(40);
+    m_filter->setMinimumHeight(kTouchHeight);
     m_filter->addItems({QString(), QString(), QString()});
+    makeTouchSizedRows(*m_filter);
     connect(m_filter, qOverload<int>(&QComboBox::currentIndexChanged), this,
             [this](int index) { setFilter(static_cast<Filter>(index)); });
 
     m_recentList = new QListWidget(this);
     m_recentList->setObjectName("recentFiles");
     m_recentList->setMaximumWidth(320);
+    makeTouchSizedRows(*m_recentList);
     connect(m_recentList, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         emit openRequested(fs::path(item->data(Qt::UserRole).toString().toStdString()));
     });
@@ -128,11 +129,7 @@ bool FileManager::report(const MaybeError& error) {
 
 std::optional<QString> FileManager::ask(const QString& question, const QString& initial) const {
     if (m_prompts.askText) return m_prompts.askText(question, initial);
-    bool ok = false;
-    const QString answer = QInputDialog::getText(const_cast<FileManager*>(this), tr("File manager"),
-                                                 question, QLineEdit::Normal, initial, &ok);
-    if (!ok) return std::nullopt;
-    return answer;
+    return askTextTouch(const_cast<FileManager*>(this), tr("File manager"), question, initial);
 }
 
 fs::path FileManager::resolveAnswer(const QString& answer, const fs::path& folder) const {
@@ -191,8 +188,7 @@ bool FileManager::deleteSelected() {
     if (!path) return false;
     const QString question = tr("Delete %1?").arg(pathText(path->filename()));
     const bool confirmed = m_prompts.confirm ? m_prompts.confirm(question)
-                                             : QMessageBox::question(this, tr("File manager"),
-                                                                     question) == QMessageBox::Yes;
+                                             : confirmTouch(this, tr("File manager"), question);
     if (!confirmed) return false;
     return report(m_operations.remove(*path));
 }

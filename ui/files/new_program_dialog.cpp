@@ -9,13 +9,9 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "ui/touch/touch_size.h"
+
 namespace kerf::ui {
-
-namespace {
-
-constexpr int kTouchHeight = 48;
-
-}  // namespace
 
 NewProgramDialog::NewProgramDialog(const machine::MachineConfig& machine, QWidget* parent)
     : QDialog(parent) {

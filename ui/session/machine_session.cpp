@@ -50,7 +50,8 @@ bool MachineSession::refuseWhenBusy() {
     if (!busy() && m_status.state == task::MachineState::Idle) return false;
     if (m_emergencyStopPressed) {
         emit message(Severity::Error,
-                     tr("The emergency stop button is pressed: release it, then Machine on"), 0);
+                     tr("The emergency stop button is pressed: release it, then Machine on"), 0,
+                     MessageCause::EmergencyStop);
         return true;
     }
     if (m_status.state == task::MachineState::EmergencyStop ||
@@ -58,11 +59,12 @@ bool MachineSession::refuseWhenBusy() {
         emit message(Severity::Error,
                      tr("The machine is off (emergency stop or drive fault): switch it on with "
                         "Machine on"),
-                     0);
+                     0, MessageCause::MachineOff);
         return true;
     }
     emit message(Severity::Error,
-                 tr("The machine is busy: stop the program or wait until the axes stand still"), 0);
+                 tr("The machine is busy: stop the program or wait until the axes stand still"), 0,
+                 MessageCause::Busy);
     return true;
 }
 
@@ -77,10 +79,30 @@ bool MachineSession::referenced() const {
     return anyAxis;
 }
 
+bool MachineSession::causeHolds(MessageCause cause) const {
+    switch (cause) {
+        case MessageCause::None:
+            return true;
+        case MessageCause::NotReferenced:
+            return m_machine.referenceRequired && !referenced();
+        case MessageCause::EmergencyStop:
+            return m_emergencyStopPressed;
+        case MessageCause::MachineOff:
+            return m_status.state == task::MachineState::EmergencyStop ||
+                   m_status.state == task::MachineState::Fault;
+        case MessageCause::Busy:
+            return busy() || m_status.state != task::MachineState::Idle;
+        case MessageCause::ProgramRefused:
+            return m_lastStartRefused;
+    }
+    return true;
+}
+
 bool MachineSession::refuseWhenNotReferenced() {
     if (!m_machine.referenceRequired || referenced()) return false;
     emit message(Severity::Error,
-                 tr("The axes are not referenced: run Home all in Manual operation first"), 0);
+                 tr("The axes are not referenced: run Home all in Manual operation first"), 0,
+                 MessageCause::NotReferenced);
     return true;
 }
 
@@ -127,9 +149,13 @@ bool MachineSession::executeMdi(const QString& block) {
 }
 
 bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> startLine) {
+    m_lastStartRefused = !loaded.ready;
     if (!loaded.ready) {
-        report(loaded.diagnostics());
-        emit message(Severity::Error, tr("The program has errors and cannot be started"), 0);
+        for (const Diagnostic& d : loaded.diagnostics())
+            emit message(d.severity, translatedMessage(d), static_cast<int>(d.line),
+                         MessageCause::ProgramRefused);
+        emit message(Severity::Error, tr("The program has errors and cannot be started"), 0,
+                     MessageCause::ProgramRefused);
         return false;
     }
     task::StartOptions options;
@@ -183,13 +209,15 @@ void MachineSession::releaseEmergencyStop() {
 
 bool MachineSession::machineOn() {
     if (m_emergencyStopPressed) {
-        emit message(Severity::Warning, tr("Release the emergency stop button first"), 0);
+        emit message(Severity::Warning, tr("Release the emergency stop button first"), 0,
+                     MessageCause::EmergencyStop);
         return false;
     }
     if (m_motion->machineOn()) return true;
     // The servo cycle may not have seen the released button yet: one cycle later it has.
     if (m_motion->status().emergencyStopOpen) {
-        emit message(Severity::Warning, tr("The emergency stop chain is still open"), 0);
+        emit message(Severity::Warning, tr("The emergency stop chain is still open"), 0,
+                     MessageCause::MachineOff);
         return false;
     }
     emit message(Severity::Warning, tr("The machine is on already"), 0);

@@ -18,6 +18,7 @@
 #include "core/task/motion_port.h"
 #include "core/task/preset_store.h"
 #include "core/task/program_run.h"
+#include "ui/common/message_cause.h"
 
 class QTimer;
 
@@ -176,6 +177,8 @@ public:
     // Every axis has been homed since power-on (or the machine counts as referenced from the
     // start: reference_required = false).
     bool referenced() const;
+    // Whether the cause of a message still holds (None: an event, never "gone").
+    bool causeHolds(MessageCause cause) const;
     const task::ProgramRun& run() const { return *m_run; }
     // The line of the main program whose block is executing, while a program runs (none in a
     // called program's file or in MDI).
@@ -195,7 +198,9 @@ signals:
     // The running program's interpreter state, for the status tabs: a few times a second while
     // it runs, and once when it ends (an MDI block ends before the next picture).
     void programStatusChanged(const kerf::interp::ProgramStatus& status);
-    void message(kerf::Severity severity, const QString& text, int line);
+    // `cause`: the message leaves the message line once causeHolds(cause) is false.
+    void message(kerf::Severity severity, const QString& text, int line,
+                 kerf::ui::MessageCause cause = kerf::ui::MessageCause::None);
     // Manual probing chose a function or made a touch (manualProbingResult once complete).
     void manualProbingChanged();
     void toolLengthTouchedOff(int tool, double lengthMm);
@@ -230,6 +235,7 @@ private:
     task::PresetStore m_presets;
     std::string m_programName;            // the running program's name in m_sources; empty: MDI
     bool m_emergencyStopPressed = false;  // the simulated machine's button latched
+    bool m_lastStartRefused = false;      // the last NC start or MDI block had errors
     Pose m_programStart{};
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;

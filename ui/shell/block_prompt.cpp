@@ -8,7 +8,7 @@
 #include "ui/editor/block_numbers.h"
 #include "ui/editor/program_editor.h"
 #include "ui/shell/message_panel.h"
-#include "ui/shell/touch_dialog.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 

@@ -105,7 +105,10 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
         showPanels();
     });
     connect(m_modes, &ModeController::refused, this,
-            [this](const QString& text) { m_messages->addMessage(Severity::Error, text); });
+            [this](const QString& text) {
+                // Refused while the machine moves: gone once it stands.
+                m_messages->addMessage(Severity::Error, text, 0, MessageCause::Busy);
+            });
     connect(m_messages, &MessagePanel::lineActivated, this, [this](int line) {
         showPanels();
         m_program->editor()->goToLine(line);

@@ -2,7 +2,6 @@
 // program, and the questions before quitting. Kept apart from main_window.cpp so the window
 // stays a shell.
 #include <QCloseEvent>
-#include <QMessageBox>
 #include <cmath>
 
 #include "ui/common/diagnostic_text.h"
@@ -14,6 +13,7 @@
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/tables/table_editor.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -44,7 +44,7 @@ bool MainWindow::settle(const QString& name, const std::function<bool()>& save,
     if (m_prompts.unsavedEdits) {
         choice = m_prompts.unsavedEdits(name);
     } else {
-        const auto answer = QMessageBox::question(
+        const auto answer = askTouch(
             this, tr("Unsaved changes"), tr("%1 has unsaved changes. Save them?").arg(name),
             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
         choice = answer == QMessageBox::Save      ? UnsavedChoice::Save
@@ -115,10 +115,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
             const QString question = m_session->busy()
                                          ? tr("A program is running. Stop it and quit?")
                                          : tr("The spindle turns. Stop it and quit?");
-            const bool quit =
-                m_prompts.confirm
-                    ? m_prompts.confirm(question)
-                    : QMessageBox::question(this, tr("Quit"), question) == QMessageBox::Yes;
+            const bool quit = m_prompts.confirm ? m_prompts.confirm(question)
+                                                : confirmTouch(this, tr("Quit"), question);
             if (!quit) return event->ignore();
             m_session->stop();
         }

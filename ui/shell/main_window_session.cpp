@@ -51,9 +51,14 @@ void MainWindow::connectSession() {
         m_positions->setRunState(QCoreApplication::translate("kerf", task::runStateName(state)));
     });
     connect(m_session, &MachineSession::message, m_messages,
-            [this](Severity severity, const QString& text, int line) {
-                m_messages->addMessage(severity, text, line);
+            [this](Severity severity, const QString& text, int line, MessageCause cause) {
+                m_messages->addMessage(severity, text, line, cause);
             });
+    // A message whose cause is gone (the axes referenced, the machine switched on ...) leaves
+    // the message line.
+    connect(m_session, &MachineSession::statusChanged, m_messages, [this] {
+        m_messages->resolve([this](MessageCause cause) { return m_session->causeHolds(cause); });
+    });
     connect(m_session, &MachineSession::programStatusChanged, m_status,
             [this](const interp::ProgramStatus& status) {
                 // A program's status comes from the block the machine executes (connectLiveRun);

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "ui/session/machine_session.h"
-#include "ui/shell/touch_dialog.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 

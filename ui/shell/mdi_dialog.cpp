@@ -7,7 +7,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "ui/shell/touch_dialog.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 

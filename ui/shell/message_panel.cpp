@@ -1,6 +1,7 @@
 #include "ui/shell/message_panel.h"
 
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QPushButton>
 #include <QTreeWidget>
@@ -9,6 +10,7 @@
 #include "ui/common/block_name.h"
 #include "ui/common/diagnostic_text.h"
 #include "ui/shell/softkey_bar.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -19,6 +21,8 @@ constexpr int kLineRole = Qt::UserRole + 1;
 constexpr int kFromCheckRole = Qt::UserRole + 2;
 constexpr int kBlockNumberRole = Qt::UserRole + 3;
 constexpr int kDialectRole = Qt::UserRole + 4;
+constexpr int kCauseRole = Qt::UserRole + 5;
+constexpr int kStandingRole = Qt::UserRole + 6;
 
 // Run messages kept; the oldest beyond this go (the check's findings are replaced by each check).
 constexpr int kMaxRunMessages = 200;
@@ -48,7 +52,17 @@ MessagePanel::MessagePanel(QWidget* parent) : QWidget(parent) {
     m_line->setFocusPolicy(Qt::NoFocus);
     m_line->setStyleSheet(QStringLiteral("text-align: left; padding-left: 8px;"));
     connect(m_line, &QPushButton::clicked, this, [this] { setListVisible(m_list->isHidden()); });
-    layout->addWidget(m_line);
+    // The TNC's CE key for the message line.
+    m_clearKey = new QPushButton(QStringLiteral("CE"), this);
+    m_clearKey->setObjectName("messageClear");
+    m_clearKey->setFixedSize(2 * kTouchHeight, kTouchHeight);
+    m_clearKey->setFocusPolicy(Qt::NoFocus);
+    connect(m_clearKey, &QPushButton::clicked, this, &MessagePanel::acknowledge);
+    auto* lineRow = new QHBoxLayout();
+    lineRow->setContentsMargins(0, 0, 0, 0);
+    lineRow->addWidget(m_line, 1);
+    lineRow->addWidget(m_clearKey);
+    layout->addLayout(lineRow);
 
     m_list = new QTreeWidget(this);
     m_list->setObjectName("messageList");
@@ -57,7 +71,9 @@ MessagePanel::MessagePanel(QWidget* parent) : QWidget(parent) {
     m_list->setHeaderLabels({tr("Severity"), tr("Message"), tr("Block")});
     m_list->header()->setSectionResizeMode(1, QHeaderView::Stretch);
     m_list->header()->setStretchLastSection(false);
-    m_list->setMaximumHeight(180);
+    makeTouchSizedRows(*m_list);
+    // The header and four rows.
+    m_list->setMaximumHeight(5 * kTouchHeight + 8);
     m_list->hide();
     connect(m_list, &QTreeWidget::itemActivated, this,
             [this](QTreeWidgetItem* item) { activate(m_list->indexOfTopLevelItem(item)); });
@@ -72,7 +88,7 @@ void MessagePanel::setPlaceOfLine(std::function<Place(int line)> placeOfLine) {
 }
 
 QTreeWidgetItem* MessagePanel::makeItem(Severity severity, const QString& text, int line,
-                                        bool fromCheck) {
+                                        bool fromCheck, MessageCause cause) {
     const Place place = line > 0 && m_placeOfLine ? m_placeOfLine(line) : Place{};
     auto* item = new QTreeWidgetItem(
         {severityText(severity), text,
@@ -82,8 +98,48 @@ QTreeWidgetItem* MessagePanel::makeItem(Severity severity, const QString& text, 
     item->setData(0, kSeverityRole, static_cast<int>(severity));
     item->setData(0, kLineRole, line);
     item->setData(0, kFromCheckRole, fromCheck);
+    item->setData(0, kCauseRole, static_cast<int>(cause));
+    item->setData(0, kStandingRole, true);
     item->setForeground(0, severityColor(severity));
     return item;
+}
+
+void MessagePanel::setStanding(QTreeWidgetItem* item, bool standing) {
+    item->setData(0, kStandingRole, standing);
+    const QColor text = standing ? m_list->palette().color(QPalette::Text)
+                                 : m_list->palette().color(QPalette::Disabled, QPalette::Text);
+    for (int column = 0; column < item->columnCount(); ++column)
+        item->setForeground(column, text);
+    if (standing)
+        item->setForeground(
+            0, severityColor(static_cast<Severity>(item->data(0, kSeverityRole).toInt())));
+}
+
+void MessagePanel::resolve(const std::function<bool(MessageCause)>& holds) {
+    bool changed = false;
+    for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = m_list->topLevelItem(i);
+        const auto cause = static_cast<MessageCause>(item->data(0, kCauseRole).toInt());
+        if (cause == MessageCause::None || !item->data(0, kStandingRole).toBool() || holds(cause))
+            continue;
+        setStanding(item, false);
+        changed = true;
+    }
+    if (changed) refreshLine();
+}
+
+void MessagePanel::acknowledge() {
+    if (QTreeWidgetItem* shown = shownItem()) {
+        setStanding(shown, false);
+        refreshLine();
+    }
+}
+
+int MessagePanel::standingCount() const {
+    int count = 0;
+    for (int i = 0; i < m_list->topLevelItemCount(); ++i)
+        if (m_list->topLevelItem(i)->data(0, kStandingRole).toBool()) ++count;
+    return count;
 }
 
 void MessagePanel::setCheckDiagnostics(const DiagnosticList& diagnostics) {
@@ -92,15 +148,16 @@ void MessagePanel::setCheckDiagnostics(const DiagnosticList& diagnostics) {
             delete m_list->takeTopLevelItem(i);
     }
     for (const Diagnostic& d : diagnostics) {
-        m_list->addTopLevelItem(
-            makeItem(d.severity, translatedMessage(d), static_cast<int>(d.line), true));
+        m_list->addTopLevelItem(makeItem(d.severity, translatedMessage(d), static_cast<int>(d.line),
+                                         true, MessageCause::None));
     }
     refreshLine();
 }
 
-void MessagePanel::addMessage(Severity severity, const QString& text, int line) {
+void MessagePanel::addMessage(Severity severity, const QString& text, int line,
+                              MessageCause cause) {
     // Newest first: the run's messages sit above the check's findings, the latest at the top.
-    m_list->insertTopLevelItem(0, makeItem(severity, text, line, false));
+    m_list->insertTopLevelItem(0, makeItem(severity, text, line, false, cause));
     int runMessages = 0;
     for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
         if (!m_list->topLevelItem(i)->data(0, kFromCheckRole).toBool()) ++runMessages;
@@ -150,19 +207,26 @@ void MessagePanel::setListVisible(bool visible) {
     m_list->setVisible(visible);
 }
 
-void MessagePanel::refreshLine() {
-    // The line shows the most severe message (the newest of them: the list is newest first) and
-    // how many there are.
+QTreeWidgetItem* MessagePanel::shownItem() const {
+    // The most severe message that stands, the newest of them (the list is newest first).
     QTreeWidgetItem* worst = nullptr;
     int worstSeverity = -1;
     for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
         QTreeWidgetItem* item = m_list->topLevelItem(i);
+        if (!item->data(0, kStandingRole).toBool()) continue;
         const int severity = item->data(0, kSeverityRole).toInt();
         if (severity > worstSeverity) {
             worst = item;
             worstSeverity = severity;
         }
     }
+    return worst;
+}
+
+void MessagePanel::refreshLine() {
+    // The line shows the message that stands out and how many others stand.
+    QTreeWidgetItem* worst = shownItem();
+    m_clearKey->setEnabled(worst != nullptr);
     if (worst == nullptr) {
         m_line->setText(tr("No messages"));
         m_line->setStyleSheet(QStringLiteral("text-align: left; padding-left: 8px;"));
@@ -174,7 +238,8 @@ void MessagePanel::refreshLine() {
                   : tr("%1: ").arg(blockName(
                         worst->data(0, kBlockNumberRole).toLongLong(), line,
                         static_cast<program::Dialect>(worst->data(0, kDialectRole).toInt())));
-    const int others = m_list->topLevelItemCount() - 1;
+    const int worstSeverity = worst->data(0, kSeverityRole).toInt();
+    const int others = standingCount() - 1;
     QString text = tr("%1 - %2%3").arg(worst->text(0), block, worst->text(1));
     if (others > 0) text += tr(" (%n more)", nullptr, others);
     m_line->setText(text);

@@ -5,6 +5,8 @@
 #include <functional>
 #include <vector>
 
+#include "ui/touch/touch_size.h"
+
 class QPushButton;
 
 namespace kerf::ui {
@@ -25,7 +27,7 @@ class SoftkeyBar : public QWidget {
 
 public:
     static constexpr int kKeys = 8;
-    static constexpr int kMinimumKeyHeight = 48;
+    static constexpr int kMinimumKeyHeight = kTouchHeight;
 
     explicit SoftkeyBar(QWidget* parent = nullptr);
 

@@ -2,10 +2,8 @@
 
 #include <QEvent>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMessageBox>
 #include <QTableView>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -18,6 +16,7 @@
 #include "ui/tables/fagor_table_model.h"
 #include "ui/tables/table_kinds.h"
 #include "ui/tables/tnc_table_model.h"
+#include "ui/touch/touch_size.h"
 
 namespace kerf::ui {
 
@@ -30,14 +29,14 @@ TableEditor::TableEditor(std::filesystem::path ncRoot, QWidget* parent)
     auto* top = new QHBoxLayout();
     m_title = new QLabel(this);
     m_search = new QLineEdit(this);
-    m_search->setMinimumHeight(40);
+    m_search->setMinimumHeight(kTouchHeight);
     connect(m_search, &QLineEdit::returnPressed, this, [this] { find(m_search->text()); });
     top->addWidget(m_title, 1);
     top->addWidget(m_search);
     layout->addLayout(top);
     m_view = new QTableView(this);
     m_view->setObjectName("tableView");
-    m_view->verticalHeader()->setDefaultSectionSize(36);
+    makeTouchSizedRows(*m_view);
     m_view->setSelectionBehavior(QAbstractItemView::SelectItems);
     layout->addWidget(m_view, 1);
     m_diskCheck = new QTimer(this);
@@ -160,8 +159,7 @@ bool TableEditor::save() {
                "Overwrite it with the table shown?")
                 .arg(QString::fromStdString(m_path.filename().string()));
         const bool confirmed =
-            m_confirm ? m_confirm(question)
-                      : QMessageBox::question(this, tr("Table"), question) == QMessageBox::Yes;
+            m_confirm ? m_confirm(question) : confirmTouch(this, tr("Table"), question);
         if (!confirmed) {
             emit message(Severity::Warning, tr("Not saved: the file on disk is kept"));
             return false;
@@ -196,8 +194,7 @@ bool TableEditor::deleteRow() {
     const QString key = m_model->data(m_model->index(row, 0), Qt::DisplayRole).toString();
     const QString question = tr("Delete row %1 (%2)?").arg(row + 1).arg(key);
     const bool confirmed =
-        m_confirm ? m_confirm(question)
-                  : QMessageBox::question(this, tr("Table"), question) == QMessageBox::Yes;
+        m_confirm ? m_confirm(question) : confirmTouch(this, tr("Table"), question);
     return confirmed && m_model->removeTableRow(row);
 }
 

@@ -1,5 +1,6 @@
 #include "ui/editor/program_panel.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
@@ -250,6 +251,35 @@ TEST(ProgramPanel, LargeFilesLoadInTheBackground) {
     panel.editor()->undo();
     EXPECT_EQ(panel.editor()->document()->findBlockByNumber(2).text(),
               QStringLiteral("2 END PGM F MM"));
+}
+
+// A program loaded in the background showed in the application's font (smaller than the
+// editor's 13 pt): QPlainTextEdit::setDocument keeps a document's own default font.
+TEST(ProgramPanel, ABackgroundLoadShowsTheProgramInTheEditorsFont) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_background_font");
+    writeFile(dir / "F.H", "0 BEGIN PGM F MM\n1 L Z+50 R0 FMAX\n2 END PGM F MM\n");
+    ProgramPanel typed(settingsIn(dir));
+    ASSERT_TRUE(typed.open(dir / "F.H"));
+    ASSERT_FALSE(typed.loading());
+    auto settings = settingsIn(dir);
+    settings.backgroundLoadBytes = 0;  // every file counts as large
+    ProgramPanel background(settings);
+    QSignalSpy opened(&background, &ProgramPanel::fileChanged);
+    ASSERT_TRUE(background.open(dir / "F.H"));
+    ASSERT_TRUE(opened.wait(10000));
+    // Both show the text in the editor's font, the 13 pt set for programs.
+    for (ProgramPanel* panel : {&typed, &background}) {
+        const QFont shown = panel->editor()->document()->defaultFont();
+        EXPECT_EQ(shown.pointSize(), 13);
+        EXPECT_EQ(shown, panel->editor()->font());
+    }
+    // And the lines are laid out alike: the same height.
+    const auto lineHeight = [](ProgramPanel& panel) {
+        QTextDocument* document = panel.editor()->document();
+        return document->documentLayout()->blockBoundingRect(document->firstBlock()).height();
+    };
+    EXPECT_DOUBLE_EQ(lineHeight(background), lineHeight(typed));
 }
 
 // "Save" before opening another program: a long program is written by a worker, and the other

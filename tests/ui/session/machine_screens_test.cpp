@@ -30,6 +30,7 @@
 #include "ui/shell/machine_keys.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/mdi_dialog.h"
+#include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
 #include "ui/shell/workspace.h"
@@ -64,7 +65,7 @@ std::optional<int> highlightedLine(const ProgramEditor& editor) {
 class MachineScreens : public testing::Test {
 protected:
     MachineScreens() { openWindow(true); }
-    void openWindow(bool referenceRequired) {
+    void openWindow(bool referenceRequired, test::Reference reference = test::Reference::Done) {
         test::testApp();
         window.reset();
         dir = kerf::test::uniqueTempDir("hmi_machine_screens");
@@ -73,8 +74,8 @@ protected:
         context.machine.referenceRequired = referenceRequired;
         context.ncRoot = dir;
         context.recoveryFolder = dir / "recovery";
-        context.motion = [config = context.machine] {
-            return test::connectSimulatedMachine(config);
+        context.motion = [config = context.machine, reference] {
+            return test::connectSimulatedMachine(config, reference);
         };
         window = std::make_unique<MainWindow>(std::move(context));
         window->resize(1280, 800);
@@ -127,6 +128,43 @@ TEST_F(MachineScreens, AProgramRunShowsTheProgramFollowingTheExecutingBlock) {
     EXPECT_TRUE(window->grab().save("manual_screen.png"));
     window->modes().requestProgrammingMode(task::ProgrammingMode::Programming);
     EXPECT_EQ(window->workspace()->layoutKind(), WorkspaceLayout::Program);
+}
+
+// A message whose cause is gone leaves the message line, as a TNC clears an error when its
+// cause is removed; CE clears the one shown; newer errors are not hidden by older ones.
+TEST_F(MachineScreens, AMessageLeavesTheLineWhenItsCauseIsGone) {
+    openWindow(true, test::Reference::Required);
+    std::ofstream(dir / "F.H") << "0 BEGIN PGM F MM\n"
+                                  "1 L X+0 Y+0 Z+250 R0 FMAX\n"
+                                  "2 END PGM F MM\n";
+    ASSERT_TRUE(window->openProgram(dir / "F.H"));
+    MessagePanel* messages = window->messages();
+    messages->clearMessages();
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    const QString notReferenced = QStringLiteral("not referenced");
+    EXPECT_TRUE(messages->line()->text().contains(notReferenced))
+        << messages->line()->text().toStdString();
+
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    ASSERT_TRUE(window->softkeys()->pressId("homeAll"));
+    ASSERT_TRUE(processUntil([&] { return window->session()->referenced(); }, 30s));
+    ASSERT_TRUE(processUntil([&] { return !window->session()->busy(); }));
+    // The axes are referenced: the error has left the line (it stays in the list, greyed).
+    EXPECT_FALSE(messages->line()->text().contains(notReferenced))
+        << messages->line()->text().toStdString();
+    EXPECT_EQ(messages->standingCount(), 0);
+    EXPECT_GE(messages->messageCount(), 1);
+
+    // An event has no cause that goes: CE clears it from the line, and the one before shows.
+    messages->addMessage(Severity::Error, QStringLiteral("older event"), 0);
+    messages->addMessage(Severity::Error, QStringLiteral("newer event"), 0);
+    EXPECT_TRUE(messages->line()->text().contains(QStringLiteral("newer event")));
+    messages->clearKey()->click();
+    EXPECT_TRUE(messages->line()->text().contains(QStringLiteral("older event")));
+    messages->clearKey()->click();
+    EXPECT_EQ(messages->standingCount(), 0);
+    EXPECT_FALSE(messages->clearKey()->isEnabled());
 }
 
 TEST_F(MachineScreens, TheHandwheelKeysChooseTheAxisAndTheStep) {
