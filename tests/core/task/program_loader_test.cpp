@@ -172,7 +172,7 @@ TEST_F(ProgramLoaderTest, SlReturnToStartEndsTheSlCyclesWhereTheyStarted) {
                                           ? ""
                                           : loaded.diagnostics()[0].format());
         if (!loaded.ready) return Pose{};
-        EXPECT_EQ(runDry(*loaded.interpreter, {}), DryRunEnd::Finished);
+        EXPECT_EQ(runDry(*loaded.interpreter, {}).end, DryRunEnd::Finished);
         EXPECT_FALSE(loaded.interpreter->checkFailed());
         return loaded.interpreter->nominalPosition();
     };
