@@ -158,9 +158,9 @@ TEST_F(ProgramLoaderTest, SlReturnToStartEndsTheSlCyclesWhereTheyStarted) {
         "0 BEGIN PGM S MM\n1 TOOL CALL 1 Z S2000\n2 L X+7 Y-3 Z+120 R0 FMAX M3\n"
         "3 CYCL DEF 14.0 CONTOUR\n4 CYCL DEF 14.1 CONTOUR LABEL 1\n"
         "5 CYCL DEF 20 CONTOUR DATA Q1=-5 Q2=1 Q3=+0 Q4=+0 Q5=+0 Q6=2 Q7=+80 Q8=0 Q9=-1\n"
-        "6 CYCL DEF 22 ROUGH-OUT Q10=5 Q11=100 Q12=350 Q18=0 Q19=150 Q208=0\n"
-        "7 CYCL CALL\n8 LBL 1\n9 L X+10 Y+10 RL\n10 L X+60\n11 L Y+50\n"
-        "12 L X+10\n13 L Y+10\n14 LBL 0\n15 END PGM S MM\n";
+        "6 CYCL DEF 22 ROUGH-OUT Q10=5 Q11=100 Q12=350 Q18=0 Q19=0 Q208=0\n"
+        "7 CYCL CALL\n8 M30\n9 LBL 1\n10 L X+10 Y+10 RL\n11 L X+60\n12 L Y+50\n"
+        "13 L X+10\n14 L Y+10\n15 LBL 0\n16 END PGM S MM\n";
     auto endOfCycle = [&](bool returnToStart) {
         mill.slReturnToStart = returnToStart;
         ProgramRequest request;
@@ -173,7 +173,8 @@ TEST_F(ProgramLoaderTest, SlReturnToStartEndsTheSlCyclesWhereTheyStarted) {
                                           : loaded.diagnostics()[0].format());
         if (!loaded.ready) return Pose{};
         EXPECT_EQ(runDry(*loaded.interpreter, {}).end, DryRunEnd::Finished);
-        EXPECT_FALSE(loaded.interpreter->checkFailed());
+        for (const Diagnostic& d : loaded.interpreter->diagnostics())
+            EXPECT_NE(d.severity, Severity::Error) << d.format();
         return loaded.interpreter->nominalPosition();
     };
     const Pose atClearance = endOfCycle(false);
