@@ -15,6 +15,8 @@ enum class MessageCause : uint8_t {
     MachineOff,      // the drives are off (emergency stop, drive fault)
     Busy,            // a program, an MDI block, a jog or a reference run moves the machine
     ProgramRefused,  // the last NC start was refused (its program's errors): until one starts
+    Moment,          // an information on the key just pressed (Machine on when it is on): a
+                     // few seconds, as nothing the operator could remove causes it
 };
 
 }  // namespace kerf::ui

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 
+#include "ui/common/fagor_mode_names.h"
 #include "ui/cycles/fagor_cycle_fields.h"
 #include "ui/cycles/fagor_program_entry.h"
 #include "ui/editor/program_editor.h"
@@ -40,10 +41,13 @@ std::vector<SoftkeyRow> fagorProgrammingRows(ProgramEditor* editor, QWidget* par
         {"editCycle", QCoreApplication::translate("kerf", "Edit\ncycle"),
          [editor, parent] {
              if (!editFagorCycleAtCursor(*editor, parent))
-                 informTouch(parent, QCoreApplication::translate("kerf", "Programming"),
-                             QCoreApplication::translate("kerf",
-                                                         "Put the cursor on a canned cycle block "
-                                                         "(G66-G89) to edit it."));
+                 informTouch(
+                     parent,
+                     QCoreApplication::translate(
+                         "kerf", fagorProgrammingModeName(task::ProgrammingMode::Programming)),
+                     QCoreApplication::translate("kerf",
+                                                 "Put the cursor on a canned cycle block "
+                                                 "(G66-G89) to edit it."));
              editor->setFocus();
          }},
     }};

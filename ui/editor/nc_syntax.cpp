@@ -2,6 +2,8 @@
 
 #include <QString>
 
+#include "core/interp/fagor/cycle_syntax.h"
+
 namespace kerf::ui {
 
 namespace {
@@ -86,7 +88,9 @@ private:
         const QChar next = m_pos < m_line.size() ? m_line[m_pos] : QChar();
         const bool valueFollows =
             isNumberChar(next) || next == QLatin1Char('+') || next == QLatin1Char('-');
-        if (isParameter(word) && isDigit(next)) {
+        if (word.size() == 1 && m_cycle != nullptr && m_cycle->find(word[0].toLatin1())) {
+            add(start, 1, NcToken::Parameter);
+        } else if (isParameter(word) && isDigit(next)) {
             while (m_pos < m_line.size() && isDigit(m_line[m_pos]))
                 ++m_pos;
             add(start, m_pos - start, NcToken::Parameter);
@@ -94,6 +98,8 @@ private:
                    (valueFollows || is(word, "F"))) {
             takeValue();
             add(start, m_pos - start, NcToken::Function);
+            if (m_dialect == program::Dialect::Fagor && is(word, "G"))
+                m_cycle = fagor::cycleSyntax(m_line.mid(start + 1, m_pos - start - 1).toInt());
         } else if (word.size() == 1 && isAxisLetter(word[0]) &&
                    (valueFollows || next == QLatin1Char('Q'))) {
             add(start, 1, NcToken::Address);
@@ -129,6 +135,9 @@ private:
     QStringView m_line;
     program::Dialect m_dialect;
     qsizetype m_pos = 0;
+    // After a FAGOR canned cycle G66-G89 the block's letters are that cycle's parameters, as
+    // the block parser reads them (an X is still the cycle's X, an M no M function).
+    const fagor::CycleSyntax* m_cycle = nullptr;
     std::vector<NcSpan> m_spans;
 };
 

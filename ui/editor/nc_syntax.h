@@ -30,7 +30,8 @@ struct NcSpan {
 // line can be coloured without looking at its neighbours: this is what lets the editor colour
 // only the lines on screen of a million-line program.
 //   Klartext: "12 L X+10 Y-5 R0 FMAX M3 ; comment", Q/QL/QR/QS parameters, FN, CYCL DEF ...
-//   ISO (TNC and Fagor): "N10 G01 X10 F200 M3 ; comment"; Fagor arithmetic parameters P.
+//   ISO (TNC and Fagor): "N10 G01 X10 F200 M3 ; comment"; Fagor arithmetic parameters P;
+//   after a Fagor canned cycle (G66-G89) its parameter letters are parameters, not functions.
 std::vector<NcSpan> scanNcLine(QStringView line, program::Dialect dialect);
 
 }  // namespace kerf::ui

@@ -13,6 +13,13 @@
 
 namespace kerf::ui {
 
+namespace {
+
+// How long an information on a key press (MessageCause::Moment) stays on the message line.
+constexpr std::chrono::seconds kMomentShown{3};
+
+}  // namespace
+
 MachineSession::MachineSession(machine::MachineConfig machine,
                                std::unique_ptr<task::MotionPort> motion,
                                std::filesystem::path ncRoot, QObject* parent)
@@ -94,6 +101,8 @@ bool MachineSession::causeHolds(MessageCause cause) const {
             return busy() || m_status.state != task::MachineState::Idle;
         case MessageCause::ProgramRefused:
             return m_lastStartRefused;
+        case MessageCause::Moment:
+            return std::chrono::steady_clock::now() < m_momentEnds;
     }
     return true;
 }
@@ -220,7 +229,9 @@ bool MachineSession::machineOn() {
                      MessageCause::MachineOff);
         return false;
     }
-    emit message(Severity::Warning, tr("The machine is on already"), 0);
+    // Nothing is wrong: an information, read at a glance, that does not stick to the line.
+    m_momentEnds = std::chrono::steady_clock::now() + kMomentShown;
+    emit message(Severity::Note, tr("The machine is on already"), 0, MessageCause::Moment);
     return false;
 }
 

@@ -3,6 +3,7 @@
 #include <QObject>
 #include <QString>
 #include <QStringList>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -81,7 +82,8 @@ public:
     void releaseEmergencyStop();
     bool emergencyStopPressed() const { return m_emergencyStopPressed; }
     // Switches the machine on again after an emergency stop or a drive fault; false (and a
-    // message) when it is on already or the emergency stop button is still pressed.
+    // message) when it is on already (an information that stands a few seconds) or the
+    // emergency stop button is still pressed.
     bool machineOn();
     void setSingleBlock(bool on);
     bool singleBlock() const { return m_singleBlock; }
@@ -236,6 +238,8 @@ private:
     std::string m_programName;            // the running program's name in m_sources; empty: MDI
     bool m_emergencyStopPressed = false;  // the simulated machine's button latched
     bool m_lastStartRefused = false;      // the last NC start or MDI block had errors
+    // Until when the latest MessageCause::Moment information stands.
+    std::chrono::steady_clock::time_point m_momentEnds{};
     Pose m_programStart{};
     // The interpreter refers to these: they live as long as the run that uses them.
     std::unique_ptr<program::SourceRegistry> m_sources;

@@ -2,7 +2,7 @@
 
 #include <QCoreApplication>
 
-#include "ui/shell/fagor_mode_names.h"
+#include "ui/common/fagor_mode_names.h"
 
 namespace kerf::ui {
 

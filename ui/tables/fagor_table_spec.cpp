@@ -50,8 +50,9 @@ FagorTableSpec fagorTableSpec(TableKind kind, std::string_view axisLetters) {
         }
         spec.validate = reparse<fagor::ZeroOffsetTable>;
     } else if (kind == TableKind::FagorTools) {
+        // T0 is "no tool" on the 8035: new tools start at T1 (firstKey's default), as D0 is no
+        // offset and the offsets start at D1.
         spec.keyPrefix = "T";
-        spec.firstKey = 0;
         spec.lastKey = 9999;  // the longest key the table reads, "T9999"
         // Tool life is in minutes or in pieces, as the machine is set up: no unit.
         spec.columns = {whole("D", 0, 255),

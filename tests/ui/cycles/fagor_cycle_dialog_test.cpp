@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QTest>
 #include <QTextBlock>
 #include <QTimer>
@@ -323,6 +324,30 @@ TEST(FagorProgrammingSoftkeys, EditCycleRewritesTheCycleUnderTheCursor) {
     // Not a cycle block: nothing opens.
     editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(0)));
     EXPECT_FALSE(editFagorCycleAtCursor(editor, nullptr));
+}
+
+// "Edit cycle" away from a cycle block explains why in a box titled with the FAGOR's name of
+// the mode (Editing, spec part 2 §5.15 OPMODE), not the TNC's "Programming".
+TEST(FagorProgrammingSoftkeys, EditCycleHintSpeaksOfTheEditingMode) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(program::Dialect::Fagor);
+    editor.setPlainText("N2 G00 X70 Z5\nN4 M30");
+    const SoftkeyPaging paging{[](std::vector<SoftkeyRow>) {}, [] {}};
+    const std::vector<SoftkeyRow> rows = programmingEntryRows(&editor, nullptr, paging);
+    ASSERT_EQ(rows[0][1].id, "editCycle");
+    QString title;
+    QString text;
+    QTimer::singleShot(0, [&title, &text] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        ASSERT_NE(box, nullptr);
+        title = box->windowTitle();
+        text = box->text();
+        box->accept();
+    });
+    rows[0][1].action();
+    EXPECT_EQ(title, QStringLiteral("Editing"));
+    EXPECT_TRUE(text.contains("G66-G89")) << text.toStdString();
 }
 
 }  // namespace

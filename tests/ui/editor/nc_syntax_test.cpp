@@ -60,6 +60,36 @@ TEST(NcSyntax, FagorIsoBlock) {
     EXPECT_EQ(spans[9], (NcSpan{28, 7, NcToken::Comment}));
 }
 
+// After a canned cycle the letters are the cycle's parameters (spec part 2 §2, G81: X Z Q R C
+// [D] [L] [M] [F] [H]): M is the finishing allowance along Z, F the feed of the last roughing
+// pass, D the retract distance — no M function, feed or tool offset. Before the cycle, and in a
+// block without one, they are.
+TEST(NcSyntax, FagorCannedCycleLettersAreParameters) {
+    const QString line = QStringLiteral("N3 G81 X20 Z0 Q10 R-30 C2 D1 L0.5 M0.2 F0.1 H0");
+    const auto spans = scanNcLine(line, Dialect::Fagor);
+    ASSERT_EQ(spans.size(), 22u);
+    EXPECT_EQ(spans[1], spanOf(line, "G81", NcToken::Function));
+    const char* letters = "XZQRCDLMFH";
+    for (size_t i = 0; i < 10; ++i) {
+        const QString word = QStringLiteral(" ") + QLatin1Char(letters[i]);
+        EXPECT_EQ(spans[2 + 2 * i],
+                  (NcSpan{static_cast<int>(line.indexOf(word)) + 1, 1, NcToken::Parameter}))
+            << letters[i];
+        EXPECT_EQ(spans[3 + 2 * i].token, NcToken::Number) << letters[i];
+    }
+    // G66's S and E are the profile's first and last block numbers.
+    const QString g66 = QStringLiteral("G66 X60 Z0 I2 C1 S30 E40");
+    EXPECT_EQ(scanNcLine(g66, Dialect::Fagor)[9], spanOf(g66, "S", NcToken::Parameter));
+    // Without a cycle the same letters are functions.
+    const QString plain = QStringLiteral("N4 G01 X20 F0.1 S800 M3 D1");
+    const auto words = scanNcLine(plain, Dialect::Fagor);
+    ASSERT_EQ(words.size(), 8u);
+    EXPECT_EQ(words[4], spanOf(plain, "F0.1", NcToken::Function));
+    EXPECT_EQ(words[5], spanOf(plain, "S800", NcToken::Function));
+    EXPECT_EQ(words[6], spanOf(plain, "M3", NcToken::Function));
+    EXPECT_EQ(words[7], spanOf(plain, "D1", NcToken::Function));
+}
+
 TEST(NcSyntax, FagorWithoutBlockNumberHasNone) {
     const auto spans = scanNcLine(QStringLiteral("G00 X0"), Dialect::Fagor);
     ASSERT_FALSE(spans.empty());

@@ -374,6 +374,18 @@ TEST_F(MachineScreens, TheEmergencyStopKeyStopsAProgramAndMachineOnSwitchesTheMa
     keys->machineOnKey()->click();
     ASSERT_TRUE(
         processUntil([&] { return session->status().state == task::MachineState::Idle; }, 2s));
+    // Machine on again: an information, not a fault, that leaves the line by itself (the 3 s of
+    // docs/hmi.md) without CE.
+    MessagePanel* messages = window->messages();
+    messages->clearMessages();
+    keys->machineOnKey()->click();
+    const QString onAlready = QStringLiteral("on already");
+    EXPECT_TRUE(messages->line()->text().contains(onAlready));
+    EXPECT_EQ(messages->standingCount(), 1);
+    processUntil([] { return false; }, 1s);
+    EXPECT_TRUE(messages->line()->text().contains(onAlready)) << "gone before it can be read";
+    EXPECT_TRUE(processUntil([&] { return messages->standingCount() == 0; }, 4s));
+    EXPECT_FALSE(messages->line()->text().contains(onAlready));
 }
 
 }  // namespace

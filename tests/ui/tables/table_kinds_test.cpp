@@ -250,6 +250,28 @@ TEST(TableKinds, FagorToolTableNewToolUsesItsOwnOffset) {
     EXPECT_EQ(fileText(file), "T1 D1 FAM3\nT2 D2 FAM0 NLIFE0 RLIFE0 NOSEA0 NOSEW0 CUTA0\n");
 }
 
+// T0 is "no tool" and D0 "no offset" on the 8035 (spec part 1, tool offsets): the first row
+// inserted in an empty table is tool 1 with its offset 1, offset 1.
+TEST(TableKinds, FagorEmptyTablesStartAtToolAndOffsetOne) {
+    test::testApp();
+    const fs::path dir = kerf::test::uniqueTempDir("hmi_kinds_fagor_empty");
+    const fs::path tools = standardTablePath(dir, TableKind::FagorTools);
+    const fs::path offsets = standardTablePath(dir, TableKind::FagorToolOffsets);
+    ASSERT_FALSE(writeFileAtomically(tools, "").has_value());
+    ASSERT_FALSE(writeFileAtomically(offsets, "%TOOL OFFSETS,MX,\n").has_value());
+    TableEditor editor(dir);
+    ASSERT_TRUE(editor.open(tools));
+    ASSERT_TRUE(editor.insertRow());
+    EXPECT_EQ(editor.tableModel()->data(editor.tableModel()->index(0, 0), Qt::DisplayRole),
+              QStringLiteral("T1"));
+    ASSERT_TRUE(editor.save());
+    EXPECT_EQ(fileText(tools), "T1 D1 FAM0 NLIFE0 RLIFE0 NOSEA0 NOSEW0 CUTA0\n");
+    ASSERT_TRUE(editor.open(offsets));
+    ASSERT_TRUE(editor.insertRow());
+    ASSERT_TRUE(editor.save());
+    EXPECT_EQ(fileText(offsets), "%TOOL OFFSETS,MX,\nD1 X0 Z0 R0 F0 I0 K0\n");
+}
+
 TEST(TableKinds, KindsFollowTheFileAndNewTablesTheirName) {
     EXPECT_EQ(tableKindOf("/nc/fix.d"), TableKind::Datum);
     EXPECT_EQ(tableKindOf("/nc/TCHPROBE.TP"), TableKind::Probe);

@@ -1,4 +1,4 @@
-#include "ui/shell/fagor_mode_names.h"
+#include "ui/common/fagor_mode_names.h"
 
 #include <QtGlobal>
 
