@@ -1,8 +1,8 @@
 // Every case under tests/golden/tnciso/<case>/ with a `twin` file (naming a conversational golden
-// case) or a `twin.H` (a conversational program next to it) is a DIN/ISO program written by hand
-// from the manuals as the twin of a conversational one: both must give the same canonical trace.
-// The ISO program runs in a copy of the conversational case's folder (its tables and called
-// programs) with the same options.
+// case, or a program of the source tree such as examples/probing/SETUP.H) or a `twin.H` (a
+// conversational program next to it) is a DIN/ISO program written by hand from the manuals as the
+// twin of a conversational one: both must give the same canonical trace. The ISO program runs in a
+// copy of the conversational case's folder (its tables and called programs) with the same options.
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -79,8 +79,13 @@ TEST_P(IsoTwin, GivesTheSameCanonicalTraceAsItsConversationalTwin) {
     if (fs::exists(iso / "twin")) {
         std::string name = readText(iso / "twin");
         name.erase(name.find_last_not_of(" \n") + 1);
-        fs::copy(kGoldenRoot / "klartext" / name, dir, fs::copy_options::recursive);
-        conversational = dir / "program.H";
+        if (name.ends_with(".H")) {
+            // A program of the source tree (examples/...): the case holds its tables.
+            fs::copy(fs::path(KERF_SOURCE_DIR) / name, conversational);
+        } else {
+            fs::copy(kGoldenRoot / "klartext" / name, dir, fs::copy_options::recursive);
+            conversational = dir / "program.H";
+        }
     }
     fs::copy(iso, dir, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
     const RunResult expected = runIn(dir, conversational, out);
