@@ -37,6 +37,7 @@ struct CanBusConfig {
     std::chrono::milliseconds heartbeatPeriod{10};
     std::chrono::milliseconds heartbeatTimeout{30};
     int pdoLossCycles = 3;
+    std::chrono::milliseconds sdoTimeout{200};
     std::optional<uint32_t> vendorId;
     std::optional<uint32_t> productCode;
     std::vector<CanJoint> joints;

@@ -121,6 +121,7 @@ canopen::MasterConfig makeMasterConfig(const CanBusConfig& c) {
     m.heartbeatTimeout = c.heartbeatTimeout;
     m.cyclePeriod = c.cyclePeriod;
     m.pdoLossCycles = c.pdoLossCycles;
+    m.sdoTimeout = c.sdoTimeout;
     for (const CanJoint& j : c.joints) {
         if (j.node == 0) continue;
         canopen::MasterNodeConfig node;

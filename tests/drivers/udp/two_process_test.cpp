@@ -68,6 +68,7 @@ TEST(TwoProcesses, MasterDrivesTheSimulatorOverUdp) {
     config.drives.heartbeatTimeoutMs = 2000;
     config.drives.pdoLossCycles = 50;
     CanBusConfig bus = makeCanBusConfig(config).value();
+    bus.sdoTimeout = std::chrono::seconds(2);  // a loaded host may not run the simulator for 200 ms
 
     can::UdpChannel channel;
     ASSERT_FALSE(channel.open(0));
