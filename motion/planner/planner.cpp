@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "core/base/fixed_format.h"
@@ -11,6 +12,7 @@
 #include "motion/planner/corner_blend.h"
 #include "motion/planner/share_ladder.h"
 #include "motion/planner/soft_limits.h"
+#include "motion/planner/velocity_limits.h"
 
 namespace kerf::motion {
 
@@ -92,6 +94,8 @@ void Planner::reset(const AxisVector& tip) {
     m_short.reset();
     m_run.clear();
     m_sinceStop = 0.0;
+    m_sinceBlend = 0.0;
+    m_blendVelocity = kNoSlowPoint;
     m_synchronised = false;
     m_refused = false;
     setPosition(tip);
@@ -490,10 +494,7 @@ bool Planner::blendAcrossShort(Move& move) {
     if (before.firstIndex > 0) corner.firstIndex = before.firstIndex;
     corner.feed = std::min({before.feed, middle.feed, move.feed});
     corner.feedMove = before.feedMove || middle.feedMove || move.feedMove;
-    emitPending(blend.trimBefore);  // ends `before`
-    for (int i = 0; i < blend.arcCount; ++i) {
-        emitElement(corner, blend.arcs[static_cast<size_t>(i)], tolerance - blend.deviation, false);
-    }
+    emitBlend(corner, blend, tolerance - blend.deviation);
     move.trimStart = blend.trimAfter;
     return true;
 }
@@ -547,42 +548,67 @@ void Planner::cornerTo(Move& move) {
     if (before.firstIndex > 0) corner.firstIndex = before.firstIndex;
     corner.feed = std::min(before.feed, move.feed);
     corner.feedMove = before.feedMove || move.feedMove;
-    emitPending(blend.trimBefore);  // ends `before`
-    for (int i = 0; i < blend.arcCount; ++i) {
-        emitElement(corner, blend.arcs[static_cast<size_t>(i)],
-                    move.tolerance - fitted - blend.deviation, false);
-    }
+    emitBlend(corner, blend, move.tolerance - fitted - blend.deviation);
     move.trimStart = blend.trimAfter;
 }
 
-void Planner::emitPending(double trimEnd, bool stopFollows) {
+void Planner::emitBlend(const Move& corner, const CornerBlend& blend, double contourBudget) {
+    const double velocity = blendVelocity(blend, contourBudget);
+    emitPending(blend.trimBefore, velocity);  // ends the move before the corner
+    for (int i = 0; i < blend.arcCount; ++i) {
+        emitElement(corner, blend.arcs[static_cast<size_t>(i)], contourBudget, false);
+    }
+    m_sinceBlend = 0.0;
+    m_blendVelocity = velocity;
+}
+
+double Planner::blendVelocity(const CornerBlend& blend, double contourBudget) const {
+    // At the lowest share, which leaves the most of each axis's acceleration to the curvature.
+    constexpr double lowest = kTangentialShares[std::size(kTangentialShares) - 1];
+    double velocity = kNoSlowPoint;
+    for (int i = 0; i < blend.arcCount; ++i) {
+        const PathGeometry& arc = blend.arcs[static_cast<size_t>(i)];
+        const AxisBounds bounds = axisBounds(arc);
+        velocity = std::min(
+            velocity, elementVelocityCap(m_model, arc, bounds,
+                                         tangentialLimits(m_model, bounds, lowest), contourBudget));
+    }
+    return velocity;
+}
+
+void Planner::emitPending(double trimEnd, double exitVelocity) {
     if (!m_pending) return;
     const Move& move = *m_pending;
     double end = move.geometry.length - trimEnd;
     if (end - move.trimStart > 1e-9) {
         emitElement(move, trimmed(move.geometry, move.trimStart, end),
-                    move.tolerance - move.fitDeviation, move.endsBlock, stopFollows);
+                    move.tolerance - move.fitDeviation, move.endsBlock, exitVelocity);
     }
     m_pending.reset();
 }
 
 void Planner::emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
-                          bool blockEnd, bool stopFollows) {
+                          bool blockEnd, double exitVelocity) {
     std::array<ShareStage, 4> stages;
     size_t count = 0;
     if (geometry.curved() && geometry.length >= kMinLadderElementMm &&
         move.feedKind == FeedKind::PerMinute && move.blendable &&
-        (m_sinceStop < kFarFromStop || stopFollows)) {
+        (std::min(m_sinceStop, m_sinceBlend) < kFarFromStop || exitVelocity < kNoSlowPoint)) {
         count = shareLadder(m_model, geometry, contourBudget, move.feed, stages);
     }
-    if (count == 0) {
+    // A blend slower than the first stage's cap is braked into and left as a stop is: near it
+    // the lowest share (R2.4 at F6000: 10 %, 200 mm/s^2) would brake and accelerate all along
+    // the curve (2026-11-28: the quarter circles of cycle 24's approach took twice their bound).
+    const bool stopFollows = count > 0 && exitVelocity < stages[0].cap;
+    double sinceStop = m_sinceStop;  // at the start of the element (pushElement adds)
+    if (count > 0 && m_blendVelocity < stages[0].cap) sinceStop = std::min(sinceStop, m_sinceBlend);
+    if (count == 0 || (sinceStop >= kFarFromStop && !stopFollows)) {
         pushElement(move, geometry, contourBudget, blockEnd, nullptr);
         return;
     }
     // Stage k holds where the distance from the stop before (or, when one follows, to the stop
     // after) is below the stages' lengths up to k: pieces between those breakpoints.
     const double length = geometry.length;
-    const double sinceStop = m_sinceStop;  // at the start of the element (pushElement adds)
     std::array<double, 10> cuts{};
     size_t cutCount = 0;
     double reach = 0.0;
@@ -648,6 +674,7 @@ void Planner::pushElement(const Move& move, const PathGeometry& geometry, double
     }
     m_pathS += geometry.length;
     m_sinceStop += geometry.length;
+    m_sinceBlend += geometry.length;
     m_lookahead.push(item, contourBudget);
 }
 
@@ -658,7 +685,7 @@ void Planner::exactStop() {
 
 void Planner::stopAfterPending() {
     settleShort();
-    emitPending(0.0, true);
+    emitPending(0.0, 0.0);
     m_lookahead.stopHere();
     m_sinceStop = 0.0;
 }

@@ -21,6 +21,11 @@
 // as much path as the braking distance needs. Planner (task) thread only.
 namespace kerf::motion {
 
+struct CornerBlend;
+
+// No slow point: the motion may keep its velocity there.
+inline constexpr double kNoSlowPoint = 1e300;
+
 class Planner {
 public:
     explicit Planner(const MachineModel& model);
@@ -96,18 +101,23 @@ private:
     void releaseRun(bool final);
     void endRun();
     bool acceptGeometry(const PathGeometry& geometry, const SourceLocation& source);
-    // `stopFollows`: the motion stops at the end of the pending move.
-    void emitPending(double trimEnd, bool stopFollows = false);
+    // `exitVelocity`: the highest velocity at the end of the pending move (0: it stops there).
+    void emitPending(double trimEnd, double exitVelocity = kNoSlowPoint);
     void cornerTo(Move& move);
+    // Ends the pending move where the blend starts and emits the blend.
+    void emitBlend(const Move& corner, const CornerBlend& blend, double contourBudget);
+    // The highest velocity on a corner blend (at the lowest tangential share).
+    double blendVelocity(const CornerBlend& blend, double contourBudget) const;
     // A short line whose corner with the pending move would need more than half of it is held
     // back, so that the next move can blend across it (blendAcrossShort) instead of turning twice
     // within its length; otherwise settleShort turns its corners as usual.
     bool worthHolding(const Move& move) const;
     bool blendAcrossShort(Move& move);
     void settleShort();
-    // A curve near a stop is cut where the tangential share may change (shareLadder).
+    // A curve near a stop, or near a corner whose blend is slower than the curve's first share
+    // stage, is cut where the tangential share may change (shareLadder).
     void emitElement(const Move& move, const PathGeometry& geometry, double contourBudget,
-                     bool blockEnd, bool stopFollows = false);
+                     bool blockEnd, double exitVelocity = kNoSlowPoint);
     void pushElement(const Move& move, const PathGeometry& geometry, double contourBudget,
                      bool blockEnd, const ShareStage* stage);
     // Ends any run being smoothed, then stops after the pending move.
@@ -124,6 +134,9 @@ private:
     AxisVector m_position{};
     double m_pathS = 0.0;
     double m_sinceStop = 0.0;  // path length since the motion last stopped
+    // Path length since the last corner blend and the highest velocity on that blend.
+    double m_sinceBlend = 0.0;
+    double m_blendVelocity = kNoSlowPoint;
     uint64_t m_sequence = 0;
     std::optional<Move> m_pending;
     std::optional<Move> m_short;  // held between m_pending and the next move

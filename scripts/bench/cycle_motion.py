@@ -17,8 +17,9 @@ table and called programs are found), then prints:
   error, and ratio(free) <= 1.10 proves the target);
 - the N runs with the largest ratio to their band bound (where the time goes);
 - needless stops: junctions of two programmed moves where the path velocity falls below 10 % of
-  the lower feed of the two although the direction turns by less than 15 degrees, counted by the
-  kinds of the two moves (RAPID then LINE: a rapid approach followed by a feed plunge along the
+  the lower feed of the two although the direction turns by less than 15 degrees (within 20
+  servo cycles; not counted between two feed moves of a run when that window reaches the run's
+  own start or end at rest), counted by the kinds of the two moves (RAPID then LINE: a rapid approach followed by a feed plunge along the
   same line, a stop the planner makes on purpose).
 A feed per revolution (FAGOR G95) is F x the spindle speed at the point: S, or with constant
 surface speed (G96) 1000 CSS / (2 pi X), X the radius, at most its MAX and the machine's max_rpm.
@@ -50,10 +51,12 @@ FEED_Q = re.compile(r"(Q(?:11|12|206|207|385)=)\+?[0-9.]+")
 def machine_limits(name):
     with open(os.path.join(ROOT, "core/machine/presets", name + ".toml"), "rb") as f:
         m = tomllib.load(f)
-    axes = [m["axes"].get(a, {}) for a in "XYZ"]
-    limits = path_bound.Limits(tuple(a.get("max_velocity", 1e9) for a in axes),
-                               tuple(a.get("max_acceleration", 1e9) for a in axes),
-                               tuple(a.get("max_jerk", 1e12) for a in axes), m["path_tolerance"])
+    # An axis the machine lacks (Y on the lathe) never moves: its limits stay out of the way.
+    present = [m["axes"][a] for a in "XYZ" if a in m["axes"]]
+    missing = {"max_velocity": 1e9, "max_acceleration": max(a["max_acceleration"] for a in present),
+               "max_jerk": max(a["max_jerk"] for a in present)}
+    axes = [m["axes"].get(a, missing) for a in "XYZ"]
+    limits = path_bound.Limits(*(tuple(a[key] for a in axes) for key in missing), m["path_tolerance"])
     # The planner's servo filter (motion/kinematics/machine_model.cpp): a moving average of
     # cbrt(24 tolerance / J) whose setpoint arrives (taps - 1) periods after the interpolator.
     period = m["servo_period"] / 1000.0
@@ -134,7 +137,8 @@ def _feed_cap(feed, per_rev, spindle, max_feed, max_rpm):
     return cap
 
 
-def needless_stops(rows, moves):
+def needless_stops(rows, moves, runs):
+    run_of = {i + 1: k for k, run in enumerate(runs) for i in run}
     axes = [a for a in ("X", "Y", "Z") if a in rows[0]]
     p = [[float(r[a]) for a in axes] for r in rows]
     v = [float(r["path_velocity"]) for r in rows]
@@ -156,7 +160,10 @@ def needless_stops(rows, moves):
         cos = sum(x * y for x, y in zip(u, w)) / (nu * nw)
         turn = math.degrees(math.acos(max(-1.0, min(1.0, cos))))
         caps = [moves[k - 1].feed for k in (n[i - 1], n[i]) if moves[k - 1].feed]
-        if turn < 15 and caps and min(v[max(0, i - 20) : i + 20]) < 0.1 * min(caps):
+        window = range(max(0, i - 20), min(len(rows), i + 20))
+        if n[i - 1] in run_of and n[i] in run_of and any(run_of.get(n[j]) != run_of[n[i]] for j in window):
+            continue  # the run's own start or end (from or to rest) is within the window
+        if turn < 15 and caps and min(v[j] for j in window) < 0.1 * min(caps):
             key = f"{moves[n[i - 1] - 1].kind} then {moves[n[i] - 1].kind}"
             found[key] = found.get(key, 0) + 1
     return found
@@ -218,7 +225,7 @@ def main():
     print(f"{os.path.basename(args.program)}: {sum(len(r) for r in runs)} feed moves in "
           f"{len(runs)} runs, feed time {actual:.3f} s, bound {band:.3f} s (band) / {free:.3f} s "
           f"(free), ratio {actual / band:.3f} (band) / {actual / free:.3f} (free); "
-          f"needless stops {needless_stops(rows, moves) or 'none'}")
+          f"needless stops {needless_stops(rows, moves, runs) or 'none'}")
     for ratio, t, b, first, last, length in sorted(per_run, reverse=True)[: args.runs]:
         print(f"  moves {first}-{last} ({length:.1f} mm): {t:.3f} s / {b:.3f} s = {ratio:.3f}")
 
