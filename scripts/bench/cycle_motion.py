@@ -39,8 +39,8 @@ import tomllib
 import path_bound
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-MOVE = re.compile(r"\S+ N\d+ (RAPID|LINE|ARC) (.*)")
-COMMAND = re.compile(r"\S+ N\d+ (\S+)")
+MOVE = re.compile(r"\S+(?: N\d+)? (RAPID|LINE|ARC) (.*)")
+COMMAND = re.compile(r"\S+(?: N\d+)? ([A-Z-]+)")
 # Trace lines that change a setting without stopping the axes; every other command stops them.
 SETTINGS = {"FEEDMODE", "XMODE", "TOOLDATA", "STOCK", "END"}
 CENTER = re.compile(r"CENTER ([XYZ])(-?[\d.]+) ([XYZ])(-?[\d.]+)")
