@@ -6,10 +6,10 @@ Usage: scripts/bench/cycle_motion.py PROGRAM [--kerf build/ci/app/kerf] [--machi
 Runs `kerf run --motion` with samples and a trace (in the program's folder, so that its tool
 table and called programs are found), then prints:
 - the feed time of the feed moves (samples whose move number, the interpolator's, is a feed
-  move, plus the servo filter's delay at the end of each run, when the setpoint comes to rest) over the
-  time-optimal bound of the same moves (path_bound.py): each run of feed moves between two stops
-  the program commands (a rapid, a spindle, coolant, dwell, tool or M function) from rest to
-  rest, along the exact lines, arcs and helices, within the feed and the machine's axis
+  move, plus the servo filter's delay at the end of each run, until the setpoint is at rest)
+  over the time-optimal bound of the same moves (path_bound.py): each run of feed moves between
+  two stops the program commands (a rapid, a spindle, coolant, dwell, tool or M function) from
+  rest to rest, along the exact lines, arcs and helices, within the feed and the machine's axis
   velocities, accelerations and jerks (core/machine/presets/MACHINE.toml), the corners within
   its path_tolerance: "band" lets each corner pass at the speed of a turn that fits in the whole
   band on both sides of the path (a generous model of the optimum), "free" lets it pass at any
@@ -19,8 +19,8 @@ table and called programs are found), then prints:
 - needless stops: junctions of two programmed moves where the path velocity falls below 10 % of
   the lower feed of the two although the direction turns by less than 15 degrees (within 20
   servo cycles; not counted between two feed moves of a run when that window reaches the run's
-  own start or end at rest), counted by the kinds of the two moves (RAPID then LINE: a rapid approach followed by a feed plunge along the
-  same line, a stop the planner makes on purpose).
+  own start or end at rest), counted by the kinds of the two moves (RAPID then LINE: a rapid
+  approach followed by a feed plunge along the same line, a stop the planner makes on purpose).
 A feed per revolution (FAGOR G95) is F x the spindle speed at the point: S, or with constant
 surface speed (G96) 1000 CSS / (2 pi X), X the radius, at most its MAX and the machine's max_rpm.
 --feed F (mill) first writes a copy of the program with every cycle feed (Q11, Q12, Q206, Q207,
@@ -56,7 +56,8 @@ def machine_limits(name):
     missing = {"max_velocity": 1e9, "max_acceleration": max(a["max_acceleration"] for a in present),
                "max_jerk": max(a["max_jerk"] for a in present)}
     axes = [m["axes"].get(a, missing) for a in "XYZ"]
-    limits = path_bound.Limits(*(tuple(a[key] for a in axes) for key in missing), m["path_tolerance"])
+    limits = path_bound.Limits(*(tuple(a[key] for a in axes) for key in missing),
+                               m["path_tolerance"])
     # The planner's servo filter (motion/kinematics/machine_model.cpp): a moving average of
     # cbrt(24 tolerance / J) whose setpoint arrives (taps - 1) periods after the interpolator.
     period = m["servo_period"] / 1000.0
@@ -161,7 +162,8 @@ def needless_stops(rows, moves, runs):
         turn = math.degrees(math.acos(max(-1.0, min(1.0, cos))))
         caps = [moves[k - 1].feed for k in (n[i - 1], n[i]) if moves[k - 1].feed]
         window = range(max(0, i - 20), min(len(rows), i + 20))
-        if n[i - 1] in run_of and n[i] in run_of and any(run_of.get(n[j]) != run_of[n[i]] for j in window):
+        same_run = n[i - 1] in run_of and n[i] in run_of
+        if same_run and any(run_of.get(n[j]) != run_of[n[i]] for j in window):
             continue  # the run's own start or end (from or to rest) is within the window
         if turn < 15 and caps and min(v[j] for j in window) < 0.1 * min(caps):
             key = f"{moves[n[i - 1] - 1].kind} then {moves[n[i] - 1].kind}"

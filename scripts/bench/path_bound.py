@@ -63,7 +63,8 @@ class Element:
         if not self.arc:
             if self.length <= 0.0:
                 return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
-            return tuple((e - b) / self.length for e, b in zip(self.end, self.start)), (0.0, 0.0, 0.0)
+            u = tuple((e - b) / self.length for e, b in zip(self.end, self.start))
+            return u, (0.0, 0.0, 0.0)
         k = self.sweep / self.length  # radians per mm of path
         phi = self.phi0 + k * s
         u, n = [0.0] * 3, [0.0] * 3
@@ -233,10 +234,8 @@ def element_times(elements, lim, corners=True, step=0.05):
         # The fastest way from x0 to x1 within the step: change the speed at the largest s''
         # the two ends allow, and run the rest of the step at the higher speed (a step that
         # reaches the feed after 0.001 mm of 0.05 mm is not an acceleration along all of it).
-        if x1 >= x0:
-            a = max(_sdd_range(us[k], ns[k], x0, lim)[1], _sdd_range(us[k + 1], ns[k + 1], x1, lim)[1])
-        else:
-            a = -min(_sdd_range(us[k], ns[k], x0, lim)[0], _sdd_range(us[k + 1], ns[k + 1], x1, lim)[0])
+        here, there = _sdd_range(us[k], ns[k], x0, lim), _sdd_range(us[k + 1], ns[k + 1], x1, lim)
+        a = max(here[1], there[1]) if x1 >= x0 else -min(here[0], there[0])
         v0, v1 = math.sqrt(x0), math.sqrt(x1)
         ramp = abs(x1 - x0) / (2.0 * a) if a > 0.0 else h
         if ramp < h:
