@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -49,7 +50,7 @@ double distance(const Point& p, const Point& q) {
 
 double toSegment(const Point& p, const Point& a, const Point& b) {
     double t = 0.0, len2 = 0.0;
-    for (int i = 0; i < 3; ++i) {
+    for (size_t i = 0; i < 3; ++i) {
         t += (b[i] - a[i]) * (p[i] - a[i]);
         len2 += (b[i] - a[i]) * (b[i] - a[i]);
     }
@@ -59,7 +60,7 @@ double toSegment(const Point& p, const Point& a, const Point& b) {
 }
 
 void expectNear(const Point& actual, const Point& expected, const char* what) {
-    for (int i = 0; i < 3; ++i)
+    for (size_t i = 0; i < 3; ++i)
         EXPECT_NEAR(actual[i], expected[i], 1e-3) << what << " coordinate " << i;
 }
 
@@ -213,7 +214,8 @@ TEST_F(FiveAxisExamples, Face32DrillsWhereTheTiltedPlanesPutTheHoles) {
 // Ry(-45) Rz(90) (30, -40, -3) = Ry(-45) (40, 30, -3) = (40 cos 45 + 3 sin 45, 30,
 // 40 sin 45 - 3 cos 45) = (30.4056, 30, 26.1630); at the end of block 13, tip (40, -30, -3) with
 // C0: Ry(-45) (40, -30, -3) = (30.4056, -30, 26.1630) - the same X and Z, Y turned over. Every
-// servo cycle from reaching (-30, -40, -3) until the lift lies on the edges within the path
+// servo cycle from (-30, -40, 20), where the rapid ends, until the lift lies on the plunge, the
+// edges or the lift within the path
 // tolerance (0.01 mm).
 TEST_F(FiveAxisExamples, TcpmChamferKeepsTheTipOnTheEdges) {
     const nlohmann::json report = run("TCPM5X");
@@ -222,23 +224,27 @@ TEST_F(FiveAxisExamples, TcpmChamferKeepsTheTipOnTheEdges) {
     ASSERT_TRUE(front && corner);
     const Axes frontAxes{30.4056, 30.0, 26.1630, 45.0, -90.0};
     const Axes cornerAxes{30.4056, -30.0, 26.1630, 45.0, 0.0};
-    for (int i = 0; i < 5; ++i) {
+    for (size_t i = 0; i < 5; ++i) {
         EXPECT_NEAR((*front)[i], frontAxes[i], 1e-4) << i;
         EXPECT_NEAR((*corner)[i], cornerAxes[i], 1e-4) << i;
     }
-    const Point path[] = {{-30, -40, -3}, {30, -40, -3}, {40, -30, -3}, {40, 30, -3}};
-    bool reached = false;
+    // The path from the end of the TCPM rapid on: the plunge, the edges and the lift (its blended
+    // corners stay within the tolerance of the lines they join).
+    const Point path[] = {{-30, -40, 20}, {-30, -40, -3}, {30, -40, -3},
+                          {40, -30, -3},  {40, 30, -3},   {40, 30, 50}};
+    bool reached = false, down = false;
     double worst = 0.0, highestC = -1e9;
     int rows = 0;
     for (const Axes& a : samples()) {
         const Point tip = tipOnThePart(a);
-        if (!reached) {  // the plunge's corner into the edge is blended within the tolerance
-            reached = distance(tip, path[0]) < 0.01;
+        if (!reached) {
+            reached = distance(tip, path[0]) < 1e-6;
             continue;
         }
-        if (tip[2] > -3.0 + 0.02) break;  // block 15 lifts the tool
+        down = down || tip[2] < -3.0 + 1e-3;
+        if (down && tip[2] > 0.0) break;  // lifted: the feed moves are behind
         double d = 1e9;
-        for (int i = 0; i < 3; ++i)
+        for (size_t i = 0; i + 1 < std::size(path); ++i)
             d = std::min(d, toSegment(tip, path[i], path[i + 1]));
         worst = std::max(worst, d);
         highestC = std::max(highestC, a[4]);
@@ -271,7 +277,7 @@ TEST_F(FiveAxisExamples, M128SidesFaceEverySideAndIndexTheShortWay) {
     for (const Expected& e : expected) {
         const std::optional<Axes> end = endOfBlock(e.block);
         ASSERT_TRUE(end) << e.block;
-        for (int i = 0; i < 5; ++i)
+        for (size_t i = 0; i < 5; ++i)
             EXPECT_NEAR((*end)[i], e.axes[i], 1e-4) << "block " << e.block << " axis " << i;
         expectNear(tipOnThePart(*end), e.tip, "tip");
     }
