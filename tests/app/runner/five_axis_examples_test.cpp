@@ -159,25 +159,33 @@ TEST_F(FiveAxisExamples, AllRunOnMill5WithinEveryJointLimit) {
     }
 }
 
-// FACE32, 3+2. Frame 1: SPB+30 tilts the tool to (sin 30, 0, cos 30); SEQ+ takes B+30, C0. The
-// tables turn the part by exactly the plane's rotation, so the axes are the plane's coordinates:
-// the first hole's bottom (X20 Y0 Z-10 in the plane) is at the axes (20, 0, -10), on the part
-// Ry(30) (20, 0, -10) = (20 cos 30 - 10 sin 30, 0, -20 sin 30 - 10 cos 30) = (12.3205, 0,
-// -18.6603); the second (Y15) at (12.3205, 15, -18.6603). MB MAX retracted to the nose's upper
-// limit first: tip Z 50 + 400 - 60 = 390. Frame 2: SPB+45 SPC+90 puts the tool along
-// Rz(90) Ry(45) Z = (0, 0.7071, 0.7071): B+45 C+90 (SEQ+), positioned by L B+Q121 C+Q122; the hole
-// at X20 Y0 has its bottom at Rz(90) Ry(45) (20, 0, -10) = Rz(90) (7.0711, 0, -21.2132) =
-// (0, 7.0711, -21.2132). PLANE RESET STAY and L B+0 C+0 leave the linear axes where they are.
+// FACE32, 3+2. Frame 1: the datum shifted to X+20 on the top, SPB+30 tilts the tool to
+// (sin 30, 0, cos 30); SEQ+ takes B+30, C0. The first hole's bottom (X0 Y0 Z-10 in the plane)
+// lies on the part at (20, 0, 0) + Ry(30) (0, 0, -10) = (20 - 10 sin 30, 0, -10 cos 30) =
+// (15, 0, -8.6603), the second (Y15) at (15, 15, -8.6603). MB MAX retracted to the nose's upper
+// limit first: tip Z 50 + 400 - 60 = 390. Frame 2: the datum at X-20 Y+20, SPB+45 SPC+90 puts
+// the tool along Rz(90) Ry(45) Z = (0, 0.7071, 0.7071): B+45 C+90 (SEQ+), positioned by
+// L B+Q121 C+Q122; the hole's bottom at (-20, 20, 0) + Rz(90) Ry(45) (0, 0, -10) =
+// (-20, 20, 0) + Rz(90) (-7.0711, 0, -7.0711) = (-20, 12.9289, -7.0711). Frame 2's L Z+100 puts
+// the tip at (-20, 20 + 70.7107, 70.7107); the axes there are Ry(-45) Rz(-90) of it: Rz(-90)
+// gives (90.7107, 20, 70.7107), Ry(-45) ((90.7107 - 70.7107) cos 45, 20, (90.7107 + 70.7107)
+// cos 45) = (14.1421, 20, 114.1421); PLANE RESET STAY and L B+0 C+0 leave them there: machine
+// Z 114.1421 - 400. Each hole removes the tilted cylinder of radius 4 between the top and its
+// flat bottom 10 down the axis: pi 4^2 10 = 502.65 mm^3 (the top cuts it obliquely through the
+// axis, which changes nothing), 1507.96 for the three (the voxels within 1 %), and no rapid cuts:
+// the set-up clearance Q200=5 keeps the tilted tool's lowest edge (4 sin 45 = 2.83 below its
+// centre) above the top.
 TEST_F(FiveAxisExamples, Face32DrillsWhereTheTiltedPlanesPutTheHoles) {
     const nlohmann::json report = run("FACE32");
     ASSERT_TRUE(report["ok"].get<bool>());
-    const std::optional<Axes> retract = endOfBlock(11);
+    const std::optional<Axes> retract = endOfBlock(15);
     ASSERT_TRUE(retract);
     EXPECT_NEAR((*retract)[2], 390.0, 1e-6);
     EXPECT_NEAR((*retract)[3], 30.0, 1e-6);
     EXPECT_NEAR((*retract)[4], 0.0, 1e-6);
 
-    // The deepest point of each hole: the drilling cycle's lowest feed move of its block.
+    // The deepest point of each hole: the drilling cycle's lowest feed move of its block (the
+    // lowest axis Z is the lowest along the tool, which stands along the axes' Z).
     auto bottom = [&](int block) {
         std::istringstream trace(readText(dir / "trace"));
         const std::string tag = " N" + std::to_string(block) + " LINE ";
@@ -194,17 +202,28 @@ TEST_F(FiveAxisExamples, Face32DrillsWhereTheTiltedPlanesPutTheHoles) {
         }
         return lowest;
     };
-    expectNear(tipOnThePart(bottom(13)), {12.3205, 0.0, -18.6603}, "frame 1, hole 1");
-    expectNear(tipOnThePart(bottom(14)), {12.3205, 15.0, -18.6603}, "frame 1, hole 2");
-    const std::optional<Axes> tables = endOfBlock(19);
+    expectNear(tipOnThePart(bottom(17)), {15.0, 0.0, -8.6603}, "frame 1, hole 1");
+    expectNear(tipOnThePart(bottom(18)), {15.0, 15.0, -8.6603}, "frame 1, hole 2");
+    const std::optional<Axes> tables = endOfBlock(27);
     ASSERT_TRUE(tables);
     EXPECT_NEAR((*tables)[3], 45.0, 1e-6);
     EXPECT_NEAR((*tables)[4], 90.0, 1e-6);
-    expectNear(tipOnThePart(bottom(21)), {0.0, 7.0711, -21.2132}, "frame 2");
-    // The end: the axes of frame 2's L Z+100 (20, 0, 100), the tables at 0: machine Z -300.
-    EXPECT_NEAR(report["final_machine_position"]["X"].get<double>(), 20.0, 1e-6);
-    EXPECT_NEAR(report["final_machine_position"]["Z"].get<double>(), -300.0, 1e-6);
-    EXPECT_NEAR(report["final_machine_position"]["B"].get<double>(), 0.0, 1e-6);
+    expectNear(tipOnThePart(bottom(29)), {-20.0, 12.9289, -7.0711}, "frame 2");
+    const nlohmann::json& end = report["final_machine_position"];
+    EXPECT_NEAR(end["X"].get<double>(), 14.1421, 1e-4);
+    EXPECT_NEAR(end["Y"].get<double>(), 20.0, 1e-6);
+    EXPECT_NEAR(end["Z"].get<double>(), 114.1421 - 400.0, 1e-4);
+    EXPECT_NEAR(end["B"].get<double>(), 0.0, 1e-6);
+    EXPECT_NEAR(end["C"].get<double>(), 0.0, 1e-6);
+
+    const std::string stock =
+        std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
+        (dir / "TOOL.T").string() + "\" --stock --report \"" + (dir / "stock.json").string() +
+        "\" \"" + (dir / "FACE32.H").string() + "\" 2> \"" + (dir / "notes").string() + "\"";
+    ASSERT_EQ(std::system(stock.c_str()), 0) << readText(dir / "notes");
+    const nlohmann::json removed = nlohmann::json::parse(readText(dir / "stock.json"))["stock"];
+    EXPECT_NEAR(removed["removed_volume_mm3"].get<double>(), 3 * M_PI * 16 * 10, 15.0);
+    EXPECT_EQ(removed["rapid_cuts"].get<int>(), 0);
 }
 
 // TCPM5X, FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS: the tip runs along the front edge at
