@@ -2,13 +2,16 @@
 // the development of the cylinder (core/cycles/cylinder), and each point becomes an angle of the
 // table that carries the workpiece and a position of the linear axes, written straight into the
 // canonical stream (machine axes, like the moves of PLANE ... TURN).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/base/fixed_format.h"
 #include "core/base/translate.h"
 #include "core/cycles/cylinder/cylinder_surface.h"
 #include "core/interp/klartext/klartext_interpreter.h"
+#include "core/workpiece/blank_solids.h"
 
 namespace kerf::klartext {
 
@@ -16,6 +19,29 @@ namespace {
 
 constexpr double kChordToleranceMm = 0.001;  // arcs of the development become chords
 constexpr int kMaxChordsPerArc = 100000;
+constexpr double kBlankMarginMm = 10.0;  // a derived blank reaches this far past the contour
+
+// The blank a program without BLK FORM gets from its first cylinder-surface cycle [choice]: the
+// cylinder of radius Q16 along the workpiece's Z, over the development's v range (the contour
+// plus the tool, the slot's or ridge's half width and a margin), so that the test run draws and
+// cuts a cylinder instead of a box derived from the feed path.
+canon::StockCylinder derivedBlank(const cycles::ContourTrain& train, double radiusMm,
+                                  double besideMm) {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const PlanarSegment& s : train.segments) {
+        const double bulge = s.kind == PlanarSegment::Kind::Arc ? s.radius() : 0.0;
+        for (const double v : {s.start.y(), s.end.y()}) {
+            low = std::min(low, v - bulge);
+            high = std::max(high, v + bulge);
+        }
+    }
+    canon::StockCylinder blank;
+    blank.axis = Axis::Z;
+    blank.radiusMm = radiusMm;
+    blank.distanceMm = high + besideMm + kBlankMarginMm;
+    blank.lengthMm = high - low + 2.0 * (besideMm + kBlankMarginMm);
+    return blank;
+}
 
 }  // namespace
 
@@ -149,6 +175,17 @@ std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
                                                    values.integer(17) == 0, tolerance);
     }
     const Axis table = *axisFromLetter(m_kinematics->innerTable());
+    // Only a C table turns the cylinder about the workpiece's Z; its development's v is then the
+    // workpiece's Z when the preset lies on the table's axis.
+    const Vec3 offAxis = preset - pivot;
+    if (!m_blank && table == Axis::C && std::hypot(offAxis.x(), offAxis.y()) < 1e-6 &&
+        placement.radiusMm > 0.0 && !ctx.train.segments.empty()) {
+        const double slot = d.number == 28 || d.number == 29 ? std::fabs(values.number(20)) : 0.0;
+        const canon::StockDefinition blank{derivedBlank(
+            ctx.train, placement.radiusMm, 2.0 * m_tool.effectiveRadius() + slot / 2.0)};
+        emit(blank);
+        m_blank = workpiece::blankSolids(blank);
+    }
     const Pose at = m_frame.toWorkpiece(m_programmed);
     const Vec3 fromAxis = at.xyz() - headOffset - placement.origin;
     const double angle = at[table] + m_settings.presetInMachine[table];
