@@ -47,11 +47,59 @@ double SimulatedWorkpiece::distance(const Vec3& real) const {
         double& target = solid.material ? material : cavity;
         target = std::min(target, solidDistance(solid, p));
     }
+    if (m_removed) cavity = std::min(cavity, -m_removed->depth(real));
     return std::max(material, -cavity);
 }
 
+bool SimulatedWorkpiece::nearestMaterialFound(const Vec3& centre, double radius) const {
+    const double d = distance(centre);
+    if (d <= 0.0) return true;
+    // The bound's gradient points away from the nearest material; step just past it.
+    constexpr double kStep = 1e-6;
+    Vec3 gradient;
+    for (int i = 0; i < 3; ++i) {
+        Vec3 e = Vec3::Zero();
+        e[i] = kStep;
+        gradient[i] = (distance(centre + e) - distance(centre - e)) / (2.0 * kStep);
+    }
+    if (gradient.norm() < 0.5) return false;
+    const Vec3 beyond = centre - (d + 1e-7) * gradient.normalized();
+    return (beyond - centre).norm() <= radius + 1e-6 && distance(beyond) <= 0.0;
+}
+
+bool SimulatedWorkpiece::cellFree(const Vec3& centre, double radius, const Vec3& cell,
+                                  double half) const {
+    const double reach = half * std::sqrt(3.0);
+    const double fromCentre = (cell - centre).norm();
+    if (fromCentre > radius + reach) return true;  // beside the ball
+    // The bound changes by at most the distance moved: no material in the cell.
+    const double d = distance(cell);
+    if (d >= reach) return true;
+    if (d <= 0.0 && fromCentre <= radius) return false;  // material in the ball
+    if (half < kCoverageResolution) return false;
+    const double h = half / 2.0;
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 offset((i & 1) ? h : -h, (i & 2) ? h : -h, (i & 4) ? h : -h);
+        if (!cellFree(centre, radius, cell + offset, h)) return false;
+    }
+    return true;
+}
+
+bool SimulatedWorkpiece::provenFree(const Vec3& centre, double radius) const {
+    return cellFree(centre, radius, centre, radius);
+}
+
+double SimulatedWorkpiece::provenClearance(const Vec3& centre, double radius) const {
+    for (double margin = radius; margin >= kCoverageResolution; margin /= 2.0) {
+        if (provenFree(centre, radius + margin)) return margin;
+    }
+    return 0.0;
+}
+
 bool SimulatedWorkpiece::touches(const Vec3& centre, double radius) const {
-    return !m_solids.empty() && distance(centre) <= radius;
+    if (m_solids.empty() || distance(centre) > radius) return false;
+    if (!hasCuts()) return true;
+    return nearestMaterialFound(centre, radius) || !provenFree(centre, radius);
 }
 
 std::optional<Vec3> SimulatedWorkpiece::touch(const Vec3& start, const Vec3& direction,
@@ -65,8 +113,15 @@ std::optional<Vec3> SimulatedWorkpiece::touch(const Vec3& start, const Vec3& dir
     for (int step = 0; step < kMaxSteps && travelled <= maxPath; ++step) {
         const Vec3 centre = start + travelled * direction;
         const double gap = distance(centre) - radius;
-        if (gap <= kContact) return centre;
-        travelled += gap;
+        if (gap > kContact) {
+            travelled += gap;
+            continue;
+        }
+        if (!hasCuts() || nearestMaterialFound(centre, radius + kContact)) return centre;
+        // Inside several sweeps the bound is low: move on by what is proven free.
+        const double clearance = provenClearance(centre, radius);
+        if (clearance <= 0.0) return centre;
+        travelled += clearance;
     }
     return std::nullopt;
 }
