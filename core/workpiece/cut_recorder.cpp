@@ -25,14 +25,24 @@ void CutRecorder::activeToolIsProbe() {
 
 void CutRecorder::setTool(const canon::ToolGeometry& geometry, Axis toolAxis) {
     m_cutter = Cutter{};
+    m_tipOffset = Vec3::Zero();
     if (toolAxis != Axis::Z || m_probeTools.contains(m_toolNumber)) return;
-    m_cutter.radius = geometry.radiusMm;
-    m_cutter.cornerRadius = std::clamp(geometry.radius2Mm, 0.0, std::max(geometry.radiusMm, 0.0));
-    m_cutter.length = geometry.lengthMm > 0.0 ? geometry.lengthMm : kLengthWithoutTable;
+    double radius = geometry.radiusMm;
+    double length = geometry.lengthMm;
+    if (auto real = m_realTools.find(m_toolNumber); real != m_realTools.end()) {
+        radius = real->second.radius;
+        length = real->second.length;
+        m_tipOffset.z() = geometry.lengthMm - length;
+    }
+    m_cutter.radius = radius;
+    m_cutter.cornerRadius = std::clamp(geometry.radius2Mm, 0.0, std::max(radius, 0.0));
+    m_cutter.length = length > 0.0 ? length : kLengthWithoutTable;
 }
 
 void CutRecorder::moveTo(const Pose& target) {
-    if (m_at && rotaryAtZero(target)) m_removed->addLine(m_cutter, *m_at, target.xyz());
+    if (m_at && rotaryAtZero(target)) {
+        m_removed->addLine(m_cutter, *m_at + m_tipOffset, target.xyz() + m_tipOffset);
+    }
     m_at = target.xyz();
 }
 
@@ -46,8 +56,9 @@ void CutRecorder::consume(const canon::Command& command) {
                 moveTo(body.target);
             } else if constexpr (std::is_same_v<T, canon::ArcMove>) {
                 if (m_at && rotaryAtZero(body.target)) {
-                    m_removed->addArc(m_cutter, *m_at, body.target.xyz(), body.center, body.plane,
-                                      body.sweepRad);
+                    m_removed->addArc(m_cutter, *m_at + m_tipOffset,
+                                      body.target.xyz() + m_tipOffset, body.center + m_tipOffset,
+                                      body.plane, body.sweepRad);
                 }
                 m_at = body.target.xyz();
             } else if constexpr (std::is_same_v<T, canon::ProbeMove>) {

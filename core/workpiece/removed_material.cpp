@@ -23,6 +23,10 @@ uint64_t RemovedMaterial::key(int64_t ix, int64_t iy) {
 }
 
 void RemovedMaterial::add(const Sweep& sweep) {
+    if (m_sweeps.size() >= kMaxSweeps) {
+        m_overflowed = true;
+        return;
+    }
     const auto index = static_cast<uint32_t>(m_sweeps.size());
     m_sweeps.push_back(sweep);
     const int64_t x0 = cellOf(sweep.boxMin.x());

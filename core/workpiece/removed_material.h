@@ -26,6 +26,11 @@ public:
     void addArc(const Cutter& cutter, const Vec3& from, const Vec3& to, const Vec3& centre,
                 Plane plane, double sweepRad);
 
+    // [choice] At most this many sweeps are kept (about 30 MB): a test run of a million
+    // blocks must not hold them all. Later moves remove nothing; overflowed() says so.
+    static constexpr size_t kMaxSweeps = 100000;
+    bool overflowed() const { return m_overflowed; }
+
     bool empty() const { return m_sweeps.empty(); }
     size_t size() const { return m_sweeps.size(); }
 
@@ -34,7 +39,7 @@ public:
     double depth(const Vec3& p) const;
 
 private:
-    static constexpr double kCell = 5.0;            // mm
+    static constexpr double kCell = 5.0;               // mm
     static constexpr size_t kMaxCellsPerSweep = 4096;  // larger sweeps are looked at always
 
     void add(const Sweep& sweep);
@@ -44,6 +49,7 @@ private:
     std::vector<Sweep> m_sweeps;
     std::unordered_map<uint64_t, std::vector<uint32_t>> m_cells;
     std::vector<uint32_t> m_large;
+    bool m_overflowed = false;
 };
 
 }  // namespace kerf::workpiece

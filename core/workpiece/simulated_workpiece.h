@@ -46,8 +46,8 @@ struct Placement {
 
 // The part a simulated touch probe touches: solids combined as (union of material) minus (union
 // of cavities), placed with a setup error the program does not know, minus what the program's
-// tools removed (in the coordinates of the touches: the tools cut the part where it really is). Qt- and VTK-free, so the
-// headless run, the simulated machine and the graphics can share it.
+// tools removed (in the coordinates of the touches: the tools cut the part where it really is). Qt-
+// and VTK-free, so the headless run, the simulated machine and the graphics can share it.
 class SimulatedWorkpiece {
 public:
     SimulatedWorkpiece() = default;

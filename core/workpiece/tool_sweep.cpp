@@ -50,7 +50,8 @@ double arcDistance(const ArcSweep& arc, const Vec2& p) {
     if (phi < 0.0) phi += kTwoPi;
     if (phi <= std::abs(arc.sweepRad)) return std::abs(rho - arc.radius);
     const double end = arc.startRad + arc.sweepRad;
-    const Vec2 first = arc.centre + arc.radius * Vec2(std::cos(arc.startRad), std::sin(arc.startRad));
+    const Vec2 first =
+        arc.centre + arc.radius * Vec2(std::cos(arc.startRad), std::sin(arc.startRad));
     const Vec2 last = arc.centre + arc.radius * Vec2(std::cos(end), std::sin(end));
     return std::min((p - first).norm(), (p - last).norm());
 }
@@ -121,8 +122,7 @@ Sweep sweepAlongArc(const Cutter& cutter, const ArcSweep& arc) {
     Sweep sweep{arc, cutter, {}, {}};
     const double reach = arc.radius + cutter.radius;
     sweep.boxMin = Vec3(arc.centre.x() - reach, arc.centre.y() - reach, arc.z);
-    sweep.boxMax =
-        Vec3(arc.centre.x() + reach, arc.centre.y() + reach, arc.z + height(cutter));
+    sweep.boxMax = Vec3(arc.centre.x() + reach, arc.centre.y() + reach, arc.z + height(cutter));
     return sweep;
 }
 

@@ -63,6 +63,12 @@ public:
           m_orientationDeg(probe.calibrationAngleDeg) {
         // The tool probing is a touch probe: its moves remove no material.
         m_k.m_cuts.activeToolIsProbe();
+        if (m_k.m_cuts.takeOverflowNotice()) {
+            m_k.warn("probe",
+                     KERF_TR_NOOP("the simulated part holds the cuts of the first {1} tool "
+                                  "moves only: later moves removed no material"),
+                     {std::to_string(workpiece::RemovedMaterial::kMaxSweeps)});
+        }
     }
 
     // The control's ball centre: the spindle position, its CAL_OF turned with the spindle and

@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -55,7 +56,8 @@ TEST(ToolSweep, SlopedLineIsTheUnionOfTheCutterOnIt) {
 
 TEST(ToolSweep, ArcIsAnAnnularSector) {
     // A quarter from angle 0 to 90 degrees about the origin, radius 20, at z -5.
-    const Sweep s = sweepAlongArc(kD10, ArcSweep{Vec2(0, 0), -5.0, 20.0, 0.0, std::numbers::pi / 2});
+    const Sweep s =
+        sweepAlongArc(kD10, ArcSweep{Vec2(0, 0), -5.0, 20.0, 0.0, std::numbers::pi / 2});
     EXPECT_NEAR(sweepDistance(s, Vec3(30 / std::sqrt(2.0), 30 / std::sqrt(2.0), 0)), 5.0, 1e-12);
     EXPECT_NEAR(sweepDistance(s, Vec3(10 / std::sqrt(2.0), 10 / std::sqrt(2.0), 0)), 5.0, 1e-12);
     // Past the end at (20, 0): beside the end point, in -y.
@@ -215,6 +217,18 @@ TEST(MaterialRemoval, ThousandsOfSweepsStayFast) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_LT(seconds, 2.0);  // a thousand touches among 4000 sweeps
+}
+
+TEST(MaterialRemoval, KeepsABoundedNumberOfSweepsAndSaysSo) {
+    RemovedMaterial removed;
+    const Cutter d2{1.0, 0.0, 30.0};
+    for (size_t i = 0; i < RemovedMaterial::kMaxSweeps; ++i)
+        removed.addLine(d2, Vec3(0, 0, -1), Vec3(1, 0, -1));
+    EXPECT_FALSE(removed.overflowed());
+    removed.addLine(d2, Vec3(50, 30, -1), Vec3(51, 30, -1));
+    EXPECT_TRUE(removed.overflowed());
+    EXPECT_EQ(removed.size(), RemovedMaterial::kMaxSweeps);
+    EXPECT_EQ(removed.depth(Vec3(50.5, 30, -0.5)), -std::numeric_limits<double>::infinity());
 }
 
 }  // namespace

@@ -38,8 +38,8 @@ protected:
         settings.ncRoot = dir;
         settings.presetInMachine = Pose{{0.0, 0.0, -400.0}};
         interpreter = std::make_unique<KlartextInterpreter>(sources, settings);
-        writeFileAtomically(dir / "P.H", "0 BEGIN PGM P MM\n" + std::string(kBlank) + body +
-                                             "99 END PGM P MM\n");
+        writeFileAtomically(
+            dir / "P.H", "0 BEGIN PGM P MM\n" + std::string(kBlank) + body + "99 END PGM P MM\n");
         if (!interpreter->load(dir / "P.H")) return interp::RunStatus::Failed;
         for (;;) {
             auto status = interpreter->run(out, 1000);
