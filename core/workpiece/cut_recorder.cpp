@@ -50,9 +50,12 @@ void CutRecorder::consume(const canon::Command& command) {
     std::visit(
         [&](const auto& body) {
             using T = std::decay_t<decltype(body)>;
-            if constexpr (std::is_same_v<T, canon::RapidMove> ||
-                          std::is_same_v<T, canon::LinearMove> ||
-                          std::is_same_v<T, canon::SpindleSyncedMove>) {
+            if constexpr (std::is_same_v<T, canon::RapidMove>) {
+                // [choice] A rapid cuts nothing: into material it is a collision (the graphics
+                // shows it), and a probe positioned into the part must stay deflected.
+                m_at = body.target.xyz();
+            } else if constexpr (std::is_same_v<T, canon::LinearMove> ||
+                                 std::is_same_v<T, canon::SpindleSyncedMove>) {
                 moveTo(body.target);
             } else if constexpr (std::is_same_v<T, canon::ArcMove>) {
                 if (m_at && rotaryAtZero(body.target)) {
