@@ -12,8 +12,8 @@
 namespace kerf::workpiece {
 
 // Follows the canonical stream on its way out of an interpreter and records the volume each
-// move's cutter sweeps (feed moves and rapids alike), so the simulated part the probe touches is
-// the blank as machined so far. The tool comes from ToolChange / ToolUpdate (radius, R2, length,
+// feed move's cutter sweeps (rapids cut nothing), so the simulated part the probe touches is the
+// blank as machined so far. The tool comes from ToolChange / ToolUpdate (radius, R2, length,
 // tool axis z); a touch probe removes nothing. Qt- and VTK-free.
 class CutRecorder final : public canon::Sink {
 public:

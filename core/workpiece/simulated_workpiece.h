@@ -77,12 +77,14 @@ private:
     // The bound says the ball touches: true when a material point within `radius` lies just
     // past the nearest surface point the bound's gradient points to.
     bool nearestMaterialFound(const Vec3& centre, double radius) const;
-    // True when no material lies within `radius` of `centre`, decided on an octree of cells
-    // (a cell down to kCoverageResolution that cannot be decided counts as material).
-    bool provenFree(const Vec3& centre, double radius) const;
-    bool cellFree(const Vec3& centre, double radius, const Vec3& cell, double half) const;
-    // How far the ball may move in any direction, proven cell by cell; 0 when it touches.
-    double provenClearance(const Vec3& centre, double radius) const;
+    // True when no material lies within `radius` of the segment from `a` to `b` (of `a` when they
+    // are the same), proven on an octree of cells down to kCoverageResolution; a cell that
+    // cannot be decided there, or a proof of more than 200 000 cells, counts as material.
+    bool provenFree(const Vec3& a, const Vec3& b, double radius) const;
+    // How far the ball may move along `direction`, at most `limit`, proven free; 0 when it
+    // cannot move.
+    double provenClearance(const Vec3& centre, const Vec3& direction, double radius,
+                           double limit) const;
     bool hasCuts() const { return m_removed && !m_removed->empty(); }
 
     // A lower bound of the distance from `p` to the material, negative inside; exact at faces

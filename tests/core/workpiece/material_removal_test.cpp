@@ -130,7 +130,7 @@ TEST(MaterialRemoval, BallWiderThanEachSweepIsNotStoppedWhereTheyMeet) {
     EXPECT_FALSE(part.touches(Vec3(50, 33, -3), 6.0));
     auto hit = part.touch(Vec3(50, 33, -3), Vec3(0, 1, 0), 20.0, 6.0);
     ASSERT_TRUE(hit);
-    EXPECT_NEAR(hit->y(), 35.0, 5 * SimulatedWorkpiece::kCoverageResolution);
+    EXPECT_NEAR(hit->y(), 35.0, 0.002);  // the bound; 0.0011 short here
     EXPECT_TRUE(part.touches(Vec3(50, 33, -3), 8.5));
 }
 
