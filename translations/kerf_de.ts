@@ -8665,6 +8665,10 @@ wählen</translation>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>SL-Zyklen (21-25, 275, 276) enden wieder an der Position vor dem Zyklus (posAfterContPocket = PosBeforeMachining der TNC); false: auf der sicheren Höhe Q7, nur in der Werkzeugachse (ToolAxClearanceHeight)</translation>
     </message>
+    <message>
+        <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
+        <translation>das simulierte Werkstück enthält nur die Schnitte der ersten {1} Werkzeugbewegungen: spätere Bewegungen haben kein Material abgetragen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

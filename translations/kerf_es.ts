@@ -8665,6 +8665,10 @@ solución</translation>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Los ciclos SL (21-25, 275, 276) terminan de nuevo en la posición anterior al ciclo (posAfterContPocket = PosBeforeMachining del TNC); false: en la altura de seguridad Q7, solo en el eje de la herramienta (ToolAxClearanceHeight)</translation>
     </message>
+    <message>
+        <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
+        <translation>la pieza simulada solo contiene los cortes de los primeros {1} movimientos de herramienta: los movimientos posteriores no han arrancado material</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

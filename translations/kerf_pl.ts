@@ -8668,6 +8668,10 @@ rozwiązanie</translation>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Cykle SL (21-25, 275, 276) kończą się z powrotem w pozycji sprzed cyklu (posAfterContPocket = PosBeforeMachining sterowania TNC); false: na bezpiecznej wysokości Q7, tylko w osi narzędzia (ToolAxClearanceHeight)</translation>
     </message>
+    <message>
+        <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
+        <translation>symulowany przedmiot zawiera tylko skrawanie pierwszych {1} ruchów narzędzia: późniejsze ruchy nie usunęły materiału</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8665,6 +8665,10 @@ solução</translation>
         <source>SL cycles (21-25, 275, 276) end back at the position before the cycle (the TNC&apos;s posAfterContPocket = PosBeforeMachining); false: at the clearance height Q7, the tool axis only (ToolAxClearanceHeight)</source>
         <translation>Os ciclos SL (21-25, 275, 276) terminam de novo na posição anterior ao ciclo (posAfterContPocket = PosBeforeMachining do TNC); false: na altura segura Q7, apenas no eixo da ferramenta (ToolAxClearanceHeight)</translation>
     </message>
+    <message>
+        <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
+        <translation>a peça simulada contém apenas os cortes dos primeiros {1} movimentos da ferramenta: os movimentos seguintes não removeram material</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

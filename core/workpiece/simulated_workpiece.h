@@ -1,10 +1,12 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <variant>
 #include <vector>
 
 #include "core/geometry/axes.h"
+#include "core/workpiece/removed_material.h"
 
 namespace kerf::workpiece {
 
@@ -43,14 +45,18 @@ struct Placement {
 };
 
 // The part a simulated touch probe touches: solids combined as (union of material) minus (union
-// of cavities), placed with a setup error the program does not know. Qt- and VTK-free, so the
-// headless run, the simulated machine and the graphics can share it.
+// of cavities), placed with a setup error the program does not know, minus what the program's
+// tools removed (in the coordinates of the touches: the tools cut the part where it really is). Qt-
+// and VTK-free, so the headless run, the simulated machine and the graphics can share it.
 class SimulatedWorkpiece {
 public:
     SimulatedWorkpiece() = default;
     explicit SimulatedWorkpiece(Placement placement) : m_placement(placement) {}
 
     void add(const Solid& solid) { m_solids.push_back(solid); }
+    void setRemoved(std::shared_ptr<const RemovedMaterial> removed) {
+        m_removed = std::move(removed);
+    }
     bool empty() const { return m_solids.empty(); }
     const Placement& placement() const { return m_placement; }
 
@@ -62,13 +68,32 @@ public:
     // True when the ball already touches or penetrates material (a deflected stylus).
     bool touches(const Vec3& centre, double radius) const;
 
+    // Where the free space is the union of several tool sweeps and the ball is wider than the
+    // depth of any single one, the distance bound says "contact" too early; the ball is then
+    // looked at on cells down to this size (mm), which bounds the error of such a contact.
+    static constexpr double kCoverageResolution = 1e-4;
+
 private:
+    // The bound says the ball touches: true when a material point within `radius` lies just
+    // past the nearest surface point the bound's gradient points to.
+    bool nearestMaterialFound(const Vec3& centre, double radius) const;
+    // True when no material lies within `radius` of the segment from `a` to `b` (of `a` when they
+    // are the same), proven on an octree of cells down to kCoverageResolution; a cell that
+    // cannot be decided there, or a proof of more than 200 000 cells, counts as material.
+    bool provenFree(const Vec3& a, const Vec3& b, double radius) const;
+    // How far the ball may move along `direction`, at most `limit`, proven free; 0 when it
+    // cannot move.
+    double provenClearance(const Vec3& centre, const Vec3& direction, double radius,
+                           double limit) const;
+    bool hasCuts() const { return m_removed && !m_removed->empty(); }
+
     // A lower bound of the distance from `p` to the material, negative inside; exact at faces
     // away from the edges where two solids meet.
     double distance(const Vec3& p) const;
 
     Placement m_placement;
     std::vector<Solid> m_solids;
+    std::shared_ptr<const RemovedMaterial> m_removed;
 };
 
 }  // namespace kerf::workpiece

@@ -68,9 +68,10 @@ constexpr ParameterDescriptor kFourHolesParameters[] = {
 
 constexpr uint16_t kFourHolesResults[] = {151, 152};
 
-// Q402 = 1 turns a rotary table; no machine has one yet (as 1416's table rotations).
-std::optional<CycleError> checkCompensation(int cycle, const CycleValues& v) {
-    if (v.integer(402) == 1) {
+// Q402 = 1 turns the rotary table about the tool axis (C for Z), which the machine must have.
+std::optional<CycleError> checkCompensation(int cycle, const CycleValues& v,
+                                            const ProbeData& probe) {
+    if (v.integer(402) == 1 && probe.tableAxes.find('C') == std::string::npos) {
         return probingError(cycle, "PRB-011",
                             KERF_TR_NOOP("cycle {1}: this machine has no rotary table axis to "
                                          "correct the rotation with"));
@@ -78,12 +79,24 @@ std::optional<CycleError> checkCompensation(int cycle, const CycleValues& v) {
     return std::nullopt;
 }
 
-// The basic rotation of the line from centre 1 to centre 2 (G2), less Q307.
+// The line from centre 1 to centre 2 (G2) less Q307: Q402 = 0 a basic rotation; Q402 = 1 the C
+// table turns by it (as 403: a table at angle t turns the part by -t), Q337 = 1 then zeroes
+// the C display in row Q305, Q337 = 0 leaves the display (the preset active at the call).
 void setRotation(const CycleValues& v, const Vec2& first, const Vec2& second,
                  ProbingResults& results) {
-    results.basicRotationDeg = normalizedDeg(lineAngleDeg(first, second) - v.number(307));
-    results.tableRow = v.integer(305);
+    const double rotation = normalizedDeg(lineAngleDeg(first, second) - v.number(307));
     results.transfer = 1;
+    if (v.integer(402) == 1) {
+        RotaryCompensation rotary;
+        rotary.axis = 'C';
+        rotary.turnDeg = rotation;
+        rotary.zeroDisplay = v.integer(337) == 1;
+        results.rotary = rotary;
+        results.tableRow = rotary.zeroDisplay ? v.integer(305) : -1;
+        return;
+    }
+    results.basicRotationDeg = rotation;
+    results.tableRow = v.integer(305);
 }
 
 // The hole touches start at each hole's centre and rise between the holes; 401 and 418 have
@@ -97,7 +110,7 @@ CycleValues holeValues(const CycleValues& v) {
 
 std::optional<CycleError> run401(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
-    if (auto e = checkCompensation(401, v)) return e;
+    if (auto e = checkCompensation(401, v, probe)) return e;
     const CycleValues holes = holeValues(v);
     ProbeSequence sequence(401, holes, probe, machine);
     Vec2 first, second;
@@ -117,7 +130,7 @@ std::optional<CycleError> run401(const CycleValues& v, const ProbeData& probe,
 // at its own measuring height Q315.
 std::optional<CycleError> run402(const CycleValues& v, const ProbeData& probe,
                                  ProbingMachine& machine, ProbingResults& results) {
-    if (auto e = checkCompensation(402, v)) return e;
+    if (auto e = checkCompensation(402, v, probe)) return e;
     ProbeSequence sequence1(402, v, probe, machine);
     FittedCircle stud1, stud2;
     const CircleTouches touches1{

@@ -265,11 +265,13 @@ void KlartextInterpreter::emit(canon::CommandBody body) {
 // ---- the run loop ----------------------------------------------------------------------------
 
 interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudget) {
-    m_out.setTarget(&sink);
+    m_out.setTarget(&m_cuts);
+    m_cuts.setTarget(&sink);
     if (m_status != interp::RunStatus::BudgetUsed) return m_status;
     if (!m_started) {
         m_started = true;
         m_path.reset(m_frame.toWorkpiece(m_programmed));
+        m_cuts.setPosition(m_frame.toWorkpiece(m_programmed).xyz());
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
         m_blockOffset = m_reader->offset();
@@ -316,6 +318,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
     }
     outputValuesOk();
     m_out.setTarget(nullptr);
+    m_cuts.setTarget(nullptr);
     return m_status;
 }
 
@@ -327,6 +330,7 @@ void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
     if ((world.position.xyz() - m_path.machinePosition().xyz()).norm() > 1e-6) {
         m_path.resetToMachine(world.position);
         m_programmed = programOfPath(m_path.toolPosition());
+        m_cuts.setPosition(std::nullopt);
     }
     if (pending.id == 0) {
         m_status = interp::RunStatus::BudgetUsed;

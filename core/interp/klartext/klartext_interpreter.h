@@ -39,6 +39,7 @@
 #include "core/tables/preset_table.h"
 #include "core/tables/probe_table.h"
 #include "core/tables/tool_table.h"
+#include "core/workpiece/cut_recorder.h"
 #include "core/workpiece/simulated_tool_probe.h"
 #include "core/workpiece/simulated_workpiece.h"
 
@@ -389,6 +390,8 @@ private:
     void executeProbeCycle(const CycleDefinition& def);
     std::optional<cycles::probing::ProbeData> activeProbe(int cycle);
     workpiece::SimulatedWorkpiece simulatedPart() const;
+    // The tool table names the tool a touch probe (a TP_NO): it removes no material.
+    bool isTouchProbe(int toolNumber) const;
     bool writeProtocol(int cycle, const char* name, const std::vector<std::string>& lines);
     bool applyDatum(int cycle, const cycles::probing::ProbingResults& results);
     // PRESET.PR of the NC root, or the default table when there is none; nullopt after a failure.
@@ -604,6 +607,7 @@ private:
     std::unique_ptr<BlockSyntax> m_isoParser;  // made when the first ISO program runs
     BlockSyntax* m_activeParser = &m_parser;   // the syntax of the program running
     interp::ValueGuard m_out;                  // every command leaves through it
+    workpiece::CutRecorder m_cuts;             // then this: the material the tools removed
     interp::PathBuilder m_path;
     QParameters m_q;
 

@@ -298,6 +298,11 @@ void KlartextInterpreter::executeToolCall(const ToolCall& call) {
     if (call.axis) m_toolAxis = *call.axis;
     if (call.feed) m_toolCallFeed = *call.feed * scale;
     if (changed) {
+        if (isTouchProbe(m_tool.number)) m_cuts.addProbeTool(m_tool.number);
+        if (toolTable() != nullptr) {
+            if (const tables::ToolData* row = toolTable()->byNumber(m_tool.number))
+                m_cuts.setRealTool(m_tool.number, realTool(*row));
+        }
         emit(canon::ToolChange{m_tool.number, m_tool.name, m_tool.geometry(), m_toolAxis});
     } else {
         emit(canon::ToolUpdate{m_tool.geometry(), m_toolAxis});

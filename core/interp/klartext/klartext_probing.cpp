@@ -60,7 +60,16 @@ public:
           m_realCentreOffset(real.centreOffset),
           m_realHeight(real.radius - probe.ballRadius -
                        (real.length - interpreter.m_tool.effectiveLength())),
-          m_orientationDeg(probe.calibrationAngleDeg) {}
+          m_orientationDeg(probe.calibrationAngleDeg) {
+        // The tool probing is a touch probe: its moves remove no material.
+        m_k.m_cuts.activeToolIsProbe();
+        if (m_k.m_cuts.takeOverflowNotice()) {
+            m_k.warn("probe",
+                     KERF_TR_NOOP("the simulated part holds the cuts of the first {1} tool "
+                                  "moves only: later moves removed no material"),
+                     {std::to_string(workpiece::RemovedMaterial::kMaxSweeps)});
+        }
+    }
 
     // The control's ball centre: the spindle position, its CAL_OF turned with the spindle and
     // r_b above the tip.
@@ -231,14 +240,30 @@ std::optional<cycles::probing::ProbeData> KlartextInterpreter::activeProbe(int c
 }
 
 workpiece::SimulatedWorkpiece KlartextInterpreter::simulatedPart() const {
-    if (m_blank) return workpiece::simulatedPart(m_settings.machine, *m_blank, Vec3::Zero());
-    // A program that only probes (a setup program): the machine's simulated blank, clamped at
-    // the machine file's preset, so it stays put when probing moves the preset.
-    static const machine::MachineConfig kDefaults;
-    const machine::MachineConfig& machine = m_settings.machine ? *m_settings.machine : kDefaults;
-    return workpiece::simulatedPart(
-        m_settings.machine, workpiece::blankSolids(workpiece::simulationBlank(machine)),
-        workpiece::machineFilePresetIn(machine, m_settings.presetInMachine));
+    workpiece::SimulatedWorkpiece part;
+    if (m_blank) {
+        part = workpiece::simulatedPart(m_settings.machine, *m_blank, Vec3::Zero());
+    } else {
+        // A program that only probes (a setup program): the machine's simulated blank, clamped
+        // at the machine file's preset, so it stays put when probing moves the preset.
+        static const machine::MachineConfig kDefaults;
+        const machine::MachineConfig& machine =
+            m_settings.machine ? *m_settings.machine : kDefaults;
+        part = workpiece::simulatedPart(
+            m_settings.machine, workpiece::blankSolids(workpiece::simulationBlank(machine)),
+            workpiece::machineFilePresetIn(machine, m_settings.presetInMachine));
+    }
+    // What the program's tools cut so far (the path was flushed before the cycle).
+    part.setRemoved(m_cuts.removed());
+    return part;
+}
+
+bool KlartextInterpreter::isTouchProbe(int toolNumber) const {
+    const tables::ToolTable* tools = toolTable();
+    if (tools == nullptr) return false;
+    const tables::ToolData* data = tools->byNumber(toolNumber);
+    auto column = tools->table().findColumn("TP_NO");
+    return data != nullptr && column && tools->table().number(data->row, *column).has_value();
 }
 
 void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
