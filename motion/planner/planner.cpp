@@ -94,6 +94,7 @@ void Planner::reset(const AxisVector& tip) {
     m_sinceStop = 0.0;
     m_synchronised = false;
     m_refused = false;
+    m_joinedGroup = 0;  // a reset ends ESBLK (spec part 2 §6.3)
     setPosition(tip);
 }
 

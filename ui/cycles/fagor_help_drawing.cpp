@@ -136,7 +136,7 @@ HelpDrawing faceThread() {
         d.lines.lineTo(88, x + 10);
     }
     const QPointF tip(94, 30);
-    d.lines.addPath(polygon({tip, tip + QPointF(8, -3), tip + QPointF(8, 3)}));
+    d.lines.addPath(polygon({tip, tip + QPointF(6, -3), tip + QPointF(6, 3)}));
     d.lines.addPath(ring({88, 30}, 1.5));
     d.lines.addPath(ring({88, 70}, 1.5));
     d.dimensions = {
