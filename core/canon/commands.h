@@ -82,9 +82,6 @@ struct ToolGeometry {
     // The cutting edge's width of a grooving or parting tool, or a drill's diameter (Fagor NOSEW
     // of the tool table); 0: none given.
     double cuttingWidthMm = 0.0;
-    // The insert's nose angle, or a drill's point angle (Fagor NOSEA of the tool table);
-    // 0: none given.
-    double noseAngleDeg = 0.0;
     friend bool operator==(const ToolGeometry&, const ToolGeometry&) = default;
 };
 

@@ -149,7 +149,6 @@ void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
         out += " LOC ";
         out.integer(g.locationCode);
         if (g.cuttingWidthMm > 0.0) appendWord(out, "W=", g.cuttingWidthMm, kLengthDecimals);
-        if (g.noseAngleDeg > 0.0) appendWord(out, "NOSEA=", g.noseAngleDeg, kLengthDecimals);
     }
 }
 

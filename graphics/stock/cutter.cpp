@@ -138,10 +138,6 @@ LatheInsert LatheInsert::fromGeometry(const canon::ToolGeometry& geometry) {
         insert.kind = centre ? LatheToolKind::Drill : LatheToolKind::Grooving;
         insert.widthMm = geometry.cuttingWidthMm;
     }
-    const double point = geometry.noseAngleDeg;
-    if (insert.kind == LatheToolKind::Drill && point > 0.0 && point < 180.0) {
-        insert.pointAngleDeg = point;
-    }
     return insert;
 }
 

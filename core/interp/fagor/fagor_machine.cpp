@@ -109,11 +109,7 @@ void FagorInterpreter::emitToolData(bool change) {
     g.tipZMm = m_tool.data.z + m_tool.data.wearZ;
     g.offsetNumber = m_tool.offset;
     g.locationCode = m_tool.data.location;
-    if (m_toolTable) {
-        const ToolEntry entry = m_toolTable->get(m_tool.tool);
-        g.cuttingWidthMm = entry.noseWidth;
-        g.noseAngleDeg = entry.noseAngle;
-    }
+    if (m_toolTable) g.cuttingWidthMm = m_toolTable->get(m_tool.tool).noseWidth;
     if (change) {
         emit(canon::ToolChange{m_tool.tool, {}, g, Axis::Z});
     } else {

@@ -240,28 +240,6 @@ TEST_F(FagorRun, TablesAreSavedWhenTheProgramChangesThem) {
     EXPECT_EQ(readFile(root / "fagor_zero_offsets.tab"), "G54 X0 Z100\nG55 Z240\nACTIVE G55\n");
 }
 
-// The tool's NOSEA (a drill's point) travels with its tool data as NOSEW does; a NOSEA or NOSEW
-// the program writes for the tool in use goes out at once, for another tool it waits for its
-// tool change.
-TEST_F(FagorRun, ToolDataCarryTheNoseAngleAndTheValuesTheProgramWrites) {
-    write("fagor_tool_offsets.tab", "D5 F0 R0 X0 Z0\nD6 F3 R0.4 X0 Z0\n");
-    write("fagor_tools.tab", "T5 D5 NOSEW8 NOSEA118\nT6 D6 NOSEA55\n");
-    ASSERT_EQ(run("T5 D5\n(NOSEA5 = 90)\n(NOSEA6 = 35)\n(NOSEW5 = 6)\nT6 D6\nM30\n"),
-              interp::RunStatus::Finished)
-        << diagnostics();
-    std::vector<std::string> tools;
-    for (const std::string& line : out.lines)
-        if (line.find("TOOL") != std::string::npos) tools.push_back(line);
-    ASSERT_EQ(tools.size(), 4u);
-    EXPECT_NE(tools[0].find("TOOL T5 "), std::string::npos) << tools[0];
-    EXPECT_NE(tools[0].find(" W=8.0000 NOSEA=118.0000"), std::string::npos) << tools[0];
-    EXPECT_NE(tools[1].find("TOOLDATA "), std::string::npos) << tools[1];
-    EXPECT_NE(tools[1].find(" W=8.0000 NOSEA=90.0000"), std::string::npos) << tools[1];
-    EXPECT_NE(tools[2].find(" W=6.0000 NOSEA=90.0000"), std::string::npos) << tools[2];
-    EXPECT_NE(tools[3].find("TOOL T6 "), std::string::npos) << tools[3];
-    EXPECT_NE(tools[3].find(" NOSEA=35.0000"), std::string::npos) << tools[3];
-}
-
 TEST_F(FagorRun, ActiveZeroOffsetOfTheTableIsTheStreamFrame) {
     // The offset active at the start is the stream's frame: X10 Z0 is (X5, Z0) in the stream
     // even though G54 is Z100 in machine coordinates; G55 (Z240) is 140 further.
