@@ -289,7 +289,7 @@ TEST(MachineSessionLathe, SingleBlockRunsAFagorCannedCycleAsOneBlock) {
     // Call point X40 Z5 (radius 20); A X30 Z0, B X30 Z-10: 5 mm in ceil(5 / 2) = 3 passes down
     // to radius 15 along Z0 .. Z-10, the cycle ending at the call point.
     ASSERT_TRUE(
-        session.startProgram("N1 G90 G94 F3000 G00 X40 Z5\n"
+        session.startProgram("N1 G90 G94 G00 X40 Z5 F3000\n"
                              "N2 G81 X30 Z0 Q30 R-10 C2\n"
                              "N3 G00 X60 Z20\n"
                              "N4 M30\n",
