@@ -98,6 +98,7 @@ void Planner::reset(const AxisVector& tip) {
     m_blendVelocity = kNoSlowPoint;
     m_synchronised = false;
     m_refused = false;
+    m_joinedGroup = 0;  // a reset ends ESBLK (spec part 2 §6.3)
     setPosition(tip);
 }
 
@@ -324,6 +325,12 @@ bool Planner::add(const canon::Command& command) {
         emitAction({ActionKind::MachineFunction, 0.0, 0.0, 0.0, function->number}, source);
     } else if (const auto* tolerance = std::get_if<canon::PathTolerance>(&body)) {
         m_tolerance = tolerance->toleranceMm > 0.0 ? tolerance->toleranceMm : m_model.toleranceMm;
+    } else if (const auto* locks = std::get_if<canon::ControlLocks>(&body)) {
+        if (!locks->joinBlocks) {
+            m_joinedGroup = 0;
+        } else if (m_joinedGroup == 0) {
+            m_joinedGroup = ++m_joinedGroups;
+        }
     }
     return !m_refused;
 }
@@ -331,6 +338,7 @@ bool Planner::add(const canon::Command& command) {
 void Planner::addMove(Move move, const AxisVector& target, const SourceLocation& source) {
     move.source = source;
     move.tolerance = m_tolerance;
+    move.joinedGroup = m_joinedGroup;
     if (move.geometry.length <= 1e-9) {
         m_position = target;
         return;
@@ -656,6 +664,7 @@ void Planner::pushElement(const Move& move, const PathGeometry& geometry, double
     e.feedMove = move.feedMove;
     e.probe = move.probe;
     e.blockEnd = blockEnd;
+    e.joinedGroup = move.joinedGroup;
     e.spindleDegPerUnit = move.spindleDegPerUnit;
     e.moveIndex = move.index;
     e.firstMoveIndex = move.firstIndex;

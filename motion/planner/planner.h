@@ -77,6 +77,7 @@ private:
         uint32_t index = 0;
         SourceLocation source;
         bool endsBlock = true;      // the programmed block ends where this move ends
+        uint32_t joinedGroup = 0;   // PathElement::joinedGroup
         bool tangentJoin = false;   // starts with the end tangent of the move before (smoothing)
         double fitDeviation = 0.0;  // of a fitted curve from the programmed polyline
         uint32_t firstIndex = 0;    // of a fitted curve: the first programmed move it replaces
@@ -145,6 +146,8 @@ private:
     size_t m_runFirst = 1;   // the smoother's segment number of m_run.front()
     std::vector<SmoothPiece> m_pieces;
     double m_tolerance = 0.0;
+    uint32_t m_joinedGroup = 0;   // the group of the blocks a ControlLocks joins now, 0: none
+    uint32_t m_joinedGroups = 0;  // groups numbered so far
     double m_toolLength = 0.0;
     canon::FeedMode m_feedMode = canon::FeedMode::PerMinute;
     canon::SpindleDirection m_spindleDirection = canon::SpindleDirection::Stopped;

@@ -34,9 +34,12 @@ struct PathElement {
     FeedKind bindFeedKind = FeedKind::PerMinute;
     // Spindle-synchronised elements: spindle degrees per unit s (signed).
     double spindleDegPerUnit = 0.0;
-    bool feedMove = false;   // counts for feed time (not rapid)
-    bool probe = false;      // stop when the probe triggers
-    bool blockEnd = false;   // the programmed block ends at the end of this element
+    bool feedMove = false;  // counts for feed time (not rapid)
+    bool probe = false;     // stop when the probe triggers
+    bool blockEnd = false;  // the programmed block ends at the end of this element
+    // Blocks a program joined (Fagor ESBLK .. DSBLK) share a group number and run as one block
+    // in single block; 0: not joined.
+    uint32_t joinedGroup = 0;
     uint32_t moveIndex = 0;  // programmed move it belongs to (a blend: the move after it)
     // First programmed move it stands for when it replaces several (a curve fitted to a
     // polyline, moveIndex being the last); 0: moveIndex alone.

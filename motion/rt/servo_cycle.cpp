@@ -345,13 +345,16 @@ void ServoCycle::chooseSingleBlockStop() noexcept {
 bool ServoCycle::endsSingleBlockStep(size_t index) const noexcept {
     const MotionItem& item = m_items.peek(index);
     if (!item.element.blockEnd || item.sequence == m_singleBlockDone) return false;
-    // A called cycle is one block: its moves and dwells carry the calling block's place and run
-    // without a stop between them, as on a TNC 320 (docs/hmi.md). The next move decides; the
-    // actions before it (a dwell, the spindle) are passed over.
+    // A called cycle (TNC CYCL CALL, a Fagor canned cycle) is one block: its moves and dwells
+    // carry the calling block's place and run without a stop between them (docs/hmi.md). Blocks
+    // a program joined (Fagor ESBLK) are one block too. The next move decides; the actions
+    // before it (a dwell, the spindle) are passed over.
     const size_t end = std::min(m_items.size(), index + 1 + kSingleBlockScan);
     for (size_t i = index + 1; i < end; ++i) {
         const MotionItem& next = m_items.peek(i);
         if (next.kind != MotionItem::Kind::Element) continue;
+        const uint32_t group = item.element.joinedGroup;
+        if (group != 0 && next.element.joinedGroup == group) return false;
         return next.source.fileId != item.source.fileId || next.source.line != item.source.line;
     }
     return true;  // no move queued after it yet: the motion comes to rest here anyway

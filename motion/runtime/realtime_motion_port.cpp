@@ -111,8 +111,11 @@ bool RealtimeMotionPort::submit(const canon::Command& command) {
         m_feedPerRevolution = mode->mode == canon::FeedMode::PerRevolution;
     if (const auto* spindle = std::get_if<canon::SpindleControl>(&command.body))
         m_submittedRpm = spindle->speedRpm;
-    // A feed per revolution (G95) shows as the path feed it gives at the programmed speed.
+    // A feed per revolution (G95) shows as the path feed it gives at the programmed speed, and so
+    // does a thread's lead (it was shown as F 0).
     s.feedMmPerMin = moveFeed(command.body) * (m_feedPerRevolution ? m_submittedRpm : 1.0);
+    if (const auto* thread = std::get_if<canon::SpindleSyncedMove>(&command.body))
+        s.feedMmPerMin = thread->leadMmPerRev * m_submittedRpm;
     if (const auto* tool = std::get_if<canon::ToolChange>(&command.body)) {
         s.tool = tool->number;
         s.toolLength = tool->geometry.lengthMm;

@@ -517,6 +517,43 @@ TEST(SingleBlock, RunsACalledCycleAsOneBlock) {
     EXPECT_NEAR(run.report.finalPosition[0], 30.0, 1e-6);
 }
 
+// Fagor ESBLK .. DSBLK: the blocks between run as one block in single block, without a stop at
+// the end of each (seed 002 §12.3); the blocks before and after stop as usual.
+TEST(SingleBlock, BlocksAProgramJoinedRunAsOneBlock) {
+    canon::ControlLocks join;
+    join.joinBlocks = true;
+    const std::vector<canon::Command> program = {
+        cmd(canon::LinearMove{at(10, 0, 0), 3000.0}, 1),
+        cmd(join, 2),  // (ESBLK)
+        cmd(canon::LinearMove{at(20, 0, 0), 3000.0}, 3),
+        cmd(canon::LinearMove{at(20, 10, 0), 3000.0}, 4),
+        cmd(canon::LinearMove{at(30, 10, 0), 3000.0}, 5),
+        cmd(canon::ControlLocks{}, 6),  // (DSBLK)
+        cmd(canon::LinearMove{at(30, 20, 0), 3000.0}, 7),
+    };
+    std::vector<std::array<double, 2>> stops;
+    bool armed = false;
+    MotionMode last = MotionMode::Idle;
+    TestRun run =
+        runCommands(millConfig(), program, Pose{}, {},
+                    [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                        if (!armed) {
+                            sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
+                            armed = true;
+                        }
+                        if (s.mode == MotionMode::Stopped && last != MotionMode::Stopped)
+                            stops.push_back({s.commandedPosition[0], s.commandedPosition[1]});
+                        last = s.mode;
+                    });
+    // Block 1, the joined blocks 3-5 (at X30 Y10), block 7.
+    ASSERT_EQ(stops.size(), 3u);
+    const std::array<std::array<double, 2>, 3> expected = {{{10, 0}, {30, 10}, {30, 20}}};
+    for (size_t i = 0; i < 3; ++i)
+        for (size_t a = 0; a < 2; ++a)
+            EXPECT_NEAR(stops[i][a], expected[i][a], 0.5) << "stop " << i << " axis " << a;
+    EXPECT_NEAR(run.report.finalPosition[1], 20.0, 1e-6);
+}
+
 TEST(ToolChange, JointsStayAndTheTipMovesByTheLengthChange) {
     canon::ToolChange tool;
     tool.number = 3;

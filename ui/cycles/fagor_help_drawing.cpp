@@ -35,62 +35,67 @@ QPainterPath insert(QPointF tip) {
     return polygon({tip, tip + QPointF(6, -3), tip + QPointF(2, -8)});
 }
 
-// The stepped shaft of the turning cycles, the raw stock above it, the finishing allowance
-// (dashed, 4 over the profile) and two roughing passes from the start point.
+// The stepped shaft of the turning cycles as the passes meet it: the call point and the tool at
+// the upper right, the start point (X, Z) at the right end of the low step, the profile rising
+// away from the call point to the high step on the chuck side. The raw stock above it, the
+// finishing allowance (dashed, 4 outside the profile) and two roughing passes that stop at it.
 HelpDrawing turningProfile(bool patternRepeat, bool curved, bool facing) {
     HelpDrawing d;
-    d.solid = polygon({{kZero, kAxis}, {kZero, 55}, {40, 55}, {40, 38}, {88, 38}, {88, kAxis}});
+    d.solid = polygon({{kZero, kAxis}, {kZero, 38}, {52, 38}, {52, 55}, {88, 55}, {88, kAxis}});
     axisAndZero(d);
     d.lines.addPath(dashes({kZero, 20}, {88, 20}));
-    d.lines.addPath(dashes({88, 20}, {88, 38}));
-    d.lines.addPath(dashes({kZero, 51}, {36, 51}));
-    d.lines.addPath(dashes({36, 51}, {36, 34}));
-    d.lines.addPath(dashes({36, 34}, {88, 34}));
+    d.lines.addPath(dashes({88, 20}, {88, 55}));
+    d.lines.addPath(dashes({88, 51}, {48, 51}));
+    d.lines.addPath(dashes({48, 51}, {48, 34}));
+    d.lines.addPath(dashes({48, 34}, {kZero, 34}));
+    d.lines.addPath(ring({88, 55}, 1.5));
     // G69, G82 and G85 face: their passes go down along X and step along Z.
     if (facing) {
-        d.lines.addPath(polyline({{62, 14}, {62, 34}}));
-        d.lines.addPath(polyline({{69, 14}, {69, 34}}));
+        d.lines.addPath(polyline({{69, 14}, {69, 51}}));
+        d.lines.addPath(polyline({{62, 14}, {62, 51}}));
     } else {
-        d.lines.addPath(polyline({{93, 24}, {36, 24}}));
-        d.lines.addPath(polyline({{93, 31}, {36, 31}}));
+        d.lines.addPath(polyline({{93, 40}, {48, 40}}));
+        d.lines.addPath(polyline({{93, 47}, {48, 47}}));
     }
-    d.lines.addPath(insert({93, 20}));
-    d.lines.addPath(ring({93, 20}, 1.5));
+    d.lines.addPath(insert({93, 16}));
+    d.lines.addPath(ring({93, 16}, 1.5));
     d.dimensions = {
-        {{"X"}, arrow({96, kAxis}, {96, 20}), {97, 60}},
-        {{"Z"}, arrow({kZero, 10}, {93, 10}), {50, 8}},
-        {{"L"}, arrow({24, 55}, {24, 51}), {25, 49}},
-        {{"M"}, arrow({40, 45}, {36, 45}), {30, 44}},
+        {{"X"}, arrow({96, kAxis}, {96, 55}), {97, 72}},
+        {{"Z"}, arrow({kZero, 8}, {88, 8}), {48, 6}},
+        {{"L"}, arrow({76, 55}, {76, 51}), {73, 50}},
+        {{"M"}, arrow({48, 44}, {52, 44}), {53, 44}},
     };
     if (facing) {
         d.dimensions.push_back({{"C"}, arrow({62, 17}, {69, 17}), {64, 15}});
-        d.dimensions.push_back({{"D"}, arrow({62, 34}, {58, 30}, true), {53, 30}});
+        d.dimensions.push_back({{"D"}, arrow({62, 51}, {66, 47}, true), {66, 45}});
     } else {
-        d.dimensions.push_back({{"C"}, arrow({70, 24}, {70, 31}), {71, 23}});
-        d.dimensions.push_back({{"D"}, arrow({36, 24}, {32, 20}, true), {27, 20}});
+        d.dimensions.push_back({{"C"}, arrow({84, 40}, {84, 47}), {85, 39}});
+        d.dimensions.push_back({{"D"}, arrow({48, 40}, {52, 36}, true), {53, 35}});
     }
     if (patternRepeat) {
-        d.dimensions.push_back({{"I"}, arrow({80, 20}, {80, 34}), {81, 32}});
+        d.dimensions.push_back({{"I"}, arrow({30, 20}, {30, 34}), {31, 27}});
     } else {
-        d.dimensions.push_back({{"Q"}, arrow({44, kAxis}, {44, 55}), {45, 72}});
-        d.dimensions.push_back({{"R"}, arrow({kZero, 62}, {40, 62}), {22, 61}});
+        d.dimensions.push_back({{"Q"}, arrow({56, kAxis}, {56, 55}), {57, 72}});
+        d.dimensions.push_back({{"R"}, arrow({kZero, 62}, {52, 62}), {28, 61}});
     }
     if (curved) {
-        d.lines.addPath(ring({64, 70}, 1.5));
-        d.dimensions.push_back({{"I"}, arrow({88, 38}, {88, 70}), {89, 56}});
-        d.dimensions.push_back({{"K"}, arrow({88, 74}, {64, 74}), {74, 80}});
+        d.lines.addPath(ring({64, 72}, 1.5));
+        d.dimensions.push_back({{"I"}, arrow({84, 55}, {84, 72}), {85, 66}});
+        d.dimensions.push_back({{"K"}, arrow({84, 76}, {64, 76}), {72, 82}});
     }
     return d;
 }
 
-// Profile cycles G66, G68 and G69 name the profile by the labels of its first and last block.
+// Profile cycles G66, G68 and G69 name the profile by the labels of its first block (from the
+// start point) and its last block (to the end on the high step).
 void profileLabels(HelpDrawing& d) {
-    d.dimensions.push_back({{"S"}, ring({kZero, 55}, 2.5), {10, 52}});
-    d.dimensions.push_back({{"E"}, ring({88, 38}, 2.5), {82, 44}});
+    d.dimensions.push_back({{"S"}, ring({66, 55}, 2.5), {64, 61}});
+    d.dimensions.push_back({{"E"}, ring({26, 38}, 2.5), {24, 44}});
 }
 
-// A thread on the shaft from the start point (right) to the end point (left): depth I, the
-// first pass B, pitch C, infeed angle A, the approach D and the run-out J.
+// A thread on the shaft from the start point (X, Z, right) to the end point (Q, R, left): depth
+// I, the first pass B, pitch C, infeed angle A, the approach D above the start point and the
+// run-out J.
 HelpDrawing thread() {
     HelpDrawing d;
     d.solid = polygon({{kZero, kAxis}, {kZero, 40}, {88, 40}, {88, kAxis}});
@@ -100,12 +105,12 @@ HelpDrawing thread() {
         d.lines.lineTo(z + 5, 50);
         d.lines.lineTo(z + 10, 40);
     }
-    d.lines.addPath(insert({84, 34}));
-    d.lines.addPath(ring({92, 34}, 1.5));
+    d.lines.addPath(insert({88, 34}));
+    d.lines.addPath(ring({88, 40}, 1.5));
     d.lines.addPath(ring({24, 40}, 1.5));
     d.dimensions = {
-        {{"X"}, arrow({96, kAxis}, {96, 34}), {97, 60}},
-        {{"Z"}, arrow({kZero, 10}, {92, 10}), {50, 8}},
+        {{"X"}, arrow({96, kAxis}, {96, 40}), {97, 64}},
+        {{"Z"}, arrow({kZero, 10}, {88, 10}), {50, 8}},
         {{"Q"}, arrow({16, kAxis}, {16, 40}), {17, 66}},
         {{"R"}, arrow({kZero, 16}, {24, 16}), {12, 14}},
         {{"I"}, arrow({49, 40}, {49, 50}), {42, 56}},
@@ -114,6 +119,37 @@ HelpDrawing thread() {
         {{"D"}, arrow({92, 40}, {92, 34}), {86, 30}},
         {{"J"}, arrow({24, 24}, {34, 24}), {27, 22}},
         {{"A"}, angleArc({69, 50}, 8, 90, -27), {72, 38}},
+    };
+    return d;
+}
+
+// A thread on the face from the start point (X, Z) at its outer edge down to the end point (Q,
+// R): depth I and the first pass B along -Z, pitch C along X, the approach D in front of the
+// face, the run-out J and the infeed angle A from Z.
+HelpDrawing faceThread() {
+    HelpDrawing d;
+    d.solid = polygon({{kZero, kAxis}, {kZero, 30}, {88, 30}, {88, kAxis}});
+    axisAndZero(d);
+    for (double x = 30; x < 70; x += 10) {
+        d.lines.moveTo(88, x);
+        d.lines.lineTo(78, x + 5);
+        d.lines.lineTo(88, x + 10);
+    }
+    const QPointF tip(94, 30);
+    d.lines.addPath(polygon({tip, tip + QPointF(6, -3), tip + QPointF(6, 3)}));
+    d.lines.addPath(ring({88, 30}, 1.5));
+    d.lines.addPath(ring({88, 70}, 1.5));
+    d.dimensions = {
+        {{"X"}, arrow({4, kAxis}, {4, 30}), {1, 60}},
+        {{"Z"}, arrow({kZero, 10}, {88, 10}), {50, 8}},
+        {{"Q"}, arrow({60, kAxis}, {60, 70}), {61, 80}},
+        {{"R"}, arrow({kZero, 18}, {88, 18}), {30, 16}},
+        {{"I"}, arrow({78, 45}, {88, 45}), {71, 44}},
+        {{"B"}, arrow({83, 55}, {88, 55}), {77, 58}},
+        {{"C"}, arrow({94, 40}, {94, 50}), {95, 46}},
+        {{"D"}, arrow({88, 26}, {94, 26}), {90, 23}},
+        {{"J"}, arrow({92, 70}, {92, 60}), {94, 66}},
+        {{"A"}, angleArc({78, 65}, 8, 0, 27), {87, 62}},
     };
     return d;
 }
@@ -194,8 +230,9 @@ HelpDrawing fagorHelpDrawing(int g) {
         case 83:
             return hole();
         case 86:
-        case 87:
             return thread();
+        case 87:
+            return faceThread();
         case 88:
         case 89:
             return groove();

@@ -32,10 +32,15 @@ bool defineFagorCycle(QPlainTextEdit& editor, QWidget* dialogParent, int g) {
     if (dialog.exec() != QDialog::Accepted) return false;
     QTextCursor cursor = editor.textCursor();
     const QTextBlock block = cursor.block();
+    const auto label = readBlockNumber(block.text(), program::Dialect::Fagor);
+    const int labelLength = label ? label->length : 0;
     cursor.beginEditBlock();
-    if (block.text().trimmed().isEmpty()) {
-        cursor.select(QTextCursor::LineUnderCursor);
-        cursor.insertText(dialog.block());
+    if (block.text().mid(labelLength).trimmed().isEmpty()) {
+        // An empty line, or one that holds only its label ("N60 ", as the editor numbers a new
+        // line): the cycle goes into it, after the label.
+        cursor.setPosition(block.position() + labelLength);
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        cursor.insertText((labelLength > 0 ? QStringLiteral(" ") : QString()) + dialog.block());
     } else {
         cursor.movePosition(QTextCursor::EndOfBlock);
         cursor.insertText(QStringLiteral("\n") + freeNumberAfter(block) + dialog.block());

@@ -71,9 +71,13 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
         return MessagePanel::Place{blockNumberOfLine(*editor->document(), line, editor->dialect()),
                                    editor->dialect()};
     });
+    // Before a run reports one, the tabs name the parameters of the machine's language (the
+    // lathe's FAGOR P) also on the screen that has not run a program yet.
+    const char parameterLetter = m_context.machine.kind == machine::MachineKind::Lathe ? 'P' : 'Q';
+    m_machineProgramStatus.parameterLetter = parameterLetter;
+    m_testRunProgramStatus.parameterLetter = parameterLetter;
     createGraphics(central);
-    m_status =
-        new StatusTabs(m_context.machine.kind == machine::MachineKind::Lathe ? 'P' : 'Q', central);
+    m_status = new StatusTabs(parameterLetter, central);
     m_positions = new PositionDisplay(m_context.machine, central);
     m_workspace = new Workspace(m_program, m_graphics, m_status, m_positions, central);
 
@@ -104,11 +108,10 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
         refreshHeader();
         showPanels();
     });
-    connect(m_modes, &ModeController::refused, this,
-            [this](const QString& text) {
-                // Refused while the machine moves: gone once it stands.
-                m_messages->addMessage(Severity::Error, text, 0, MessageCause::Busy);
-            });
+    connect(m_modes, &ModeController::refused, this, [this](const QString& text) {
+        // Refused while the machine moves: gone once it stands.
+        m_messages->addMessage(Severity::Error, text, 0, MessageCause::Busy);
+    });
     connect(m_messages, &MessagePanel::lineActivated, this, [this](int line) {
         showPanels();
         m_program->editor()->goToLine(line);

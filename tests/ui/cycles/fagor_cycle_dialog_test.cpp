@@ -297,6 +297,30 @@ TEST(FagorProgrammingSoftkeys, CannedCycleKeyWritesTheBlockAndTheProgramChecksCl
     EXPECT_EQ(editor.toPlainText(), kProgram);
 }
 
+// The editor numbers a new line of a numbered program ("N60 "): a cycle written there goes into
+// that line after its label, not onto a new unnumbered line below an empty block.
+TEST(FagorProgrammingSoftkeys, ACycleGoesIntoALineThatHoldsOnlyItsLabel) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(program::Dialect::Fagor);
+    editor.setPlainText("N50 G00 X44 Z-30\nN60 \nN70 M30");
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(1)));
+    answerNextDialog([](FagorCycleDialog& dialog) {
+        typeValues(dialog, {{'X', "40"}, {'Z', "-38"}, {'Q', "34"}, {'R', "-44"}, {'C', "2"}});
+    });
+    ASSERT_TRUE(defineFagorCycle(editor, nullptr, 88));
+    EXPECT_EQ(editor.toPlainText(), "N50 G00 X44 Z-30\nN60 G88 X40 Z-38 Q34 R-44 C2\nN70 M30");
+    EXPECT_EQ(editor.textCursor().blockNumber(), 1);
+    // A line with a block after its label keeps it: the cycle goes below.
+    editor.setPlainText("N50 G00 X44 Z-30\nN70 M30");
+    editor.setTextCursor(QTextCursor(editor.document()->findBlockByNumber(0)));
+    answerNextDialog([](FagorCycleDialog& dialog) {
+        typeValues(dialog, {{'X', "40"}, {'Z', "-38"}, {'Q', "34"}, {'R', "-44"}, {'C', "2"}});
+    });
+    ASSERT_TRUE(defineFagorCycle(editor, nullptr, 88));
+    EXPECT_EQ(editor.toPlainText(), "N50 G00 X44 Z-30\nN60 G88 X40 Z-38 Q34 R-44 C2\nN70 M30");
+}
+
 // "Edit cycle" on a cycle block: the dialog shows its values; the words are replaced, the label
 // and the comment stay.
 TEST(FagorProgrammingSoftkeys, EditCycleRewritesTheCycleUnderTheCursor) {

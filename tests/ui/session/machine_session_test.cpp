@@ -1,10 +1,12 @@
 #include "ui/session/machine_session.h"
 
 #include <QSignalSpy>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -275,6 +277,60 @@ TEST(MachineSessionLathe, RunsAFagorProgramWithXInDiameter) {
     EXPECT_NEAR(session.status().axes[2].nominal, 10.0, 1e-6);
 }
 
+// Single block on a FAGOR canned cycle (seed 002 has single block stop at the end of each block
+// and a canned cycle is one block; docs/fagor.md): the G81's three passes run without a stop
+// and the machine stops back at the call point, then after the next block.
+TEST(MachineSessionLathe, SingleBlockRunsAFagorCannedCycleAsOneBlock) {
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    session.setSingleBlock(true);
+    // Call point X40 Z5 (radius 20); A X30 Z0, B X30 Z-10: 5 mm in ceil(5 / 2) = 3 passes down
+    // to radius 15 along Z0 .. Z-10, the cycle ending at the call point.
+    ASSERT_TRUE(
+        session.startProgram("N1 G90 G94 G00 X40 Z5 F3000\n"
+                             "N2 G81 X30 Z0 Q30 R-10 C2\n"
+                             "N3 G00 X60 Z20\n"
+                             "N4 M30\n",
+                             "SBLK.PIM"));
+    struct Stop {
+        double x, z, lowestX, lowestZ;
+    };
+    std::vector<Stop> stops;
+    double lowestX = 1e9;
+    double lowestZ = 1e9;
+    bool wasStopped = false;
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while ((session.runState() == RunState::Running || session.runState() == RunState::Stopped) &&
+           std::chrono::steady_clock::now() < deadline) {
+        session.service();
+        const double x = session.status().axes[0].nominal;
+        const double z = session.status().axes[2].nominal;
+        lowestX = std::min(lowestX, x);
+        lowestZ = std::min(lowestZ, z);
+        const bool stopped = session.runState() == RunState::Stopped;
+        if (stopped && !wasStopped) {
+            stops.push_back({x, z, lowestX, lowestZ});
+            lowestX = lowestZ = 1e9;
+            session.cycleStart();
+        }
+        wasStopped = stopped;
+        std::this_thread::sleep_for(2ms);
+    }
+    ASSERT_EQ(session.runState(), RunState::Finished);
+    ASSERT_EQ(stops.size(), 3u) << "single block stopped inside the canned cycle";
+    // The setpoints lag the path by the setpoint filter: within 0.5 mm.
+    EXPECT_NEAR(stops[0].x, 20.0, 0.5);
+    EXPECT_NEAR(stops[0].z, 5.0, 0.5);
+    EXPECT_NEAR(stops[1].x, 20.0, 0.5);  // back at the call point
+    EXPECT_NEAR(stops[1].z, 5.0, 0.5);
+    EXPECT_NEAR(stops[1].lowestX, 15.0, 0.01);  // every pass ran before the stop
+    EXPECT_NEAR(stops[1].lowestZ, -10.0, 0.01);
+    EXPECT_NEAR(stops[2].x, 30.0, 0.5);
+    EXPECT_NEAR(stops[2].z, 20.0, 0.5);
+}
+
 // G95: F is mm per revolution; the feed shown while a block runs is the path feed it gives at
 // the programmed speed, 0.2 mm x 1000 rpm = 200 mm/min (it used to show 0.2 as mm/min).
 TEST(MachineSessionLathe, AFeedPerRevolutionShowsAsThePathFeedAtTheProgrammedSpeed) {
@@ -293,6 +349,27 @@ TEST(MachineSessionLathe, AFeedPerRevolutionShowsAsThePathFeedAtTheProgrammedSpe
         std::this_thread::sleep_for(2ms);
     }
     EXPECT_NEAR(shown, 200.0, 1e-9);
+    session.stop();
+}
+
+// A thread's lead shows as its path feed too: G33 with the lead 1.5 at 800 rpm is 1200 mm/min
+// (1.5 mm/rev under G95; it showed F 0 while the thread was cut).
+TEST(MachineSessionLathe, AThreadShowsItsLeadAsThePathFeed) {
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    ASSERT_TRUE(session.startProgram(
+        "N1 G90 G00 X30 Z5\nN2 G95 S800 M3\nN3 G33 Z-30 L1.5\nN4 M30\n", "THREAD.PIT"));
+    double shown = 0.0;
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    while (session.runState() == RunState::Running && std::chrono::steady_clock::now() < deadline) {
+        session.service();
+        if (session.status().block.line == 3) shown = session.status().programmedFeedMmPerMin;
+        if (shown > 0.0) break;
+        std::this_thread::sleep_for(2ms);
+    }
+    EXPECT_NEAR(shown, 1200.0, 1e-9);
     session.stop();
 }
 

@@ -21,6 +21,7 @@
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/ui_language.h"
 #include "ui/shell/workspace.h"
+#include "ui/status/status_tabs.h"
 #include "ui/tables/table_editor.h"
 
 namespace kerf::ui {
@@ -82,6 +83,32 @@ TEST(MainWindow, LatheNamesTheModesAsTheFagorDoes) {
     EXPECT_EQ(keyText(MachineMode::FullSequence), QStringLiteral("Ejecución automática"));
     EXPECT_EQ(labelText(window, "programmingMode"), QStringLiteral("Edición"));
     ASSERT_TRUE(window.setLanguage(QStringLiteral("en")));
+}
+
+// The lathe's parameters are FAGOR's P also on a screen that has not run a program yet: from
+// Simulation to Automatic execution before any run the tab said QPARA (the TNC's name).
+TEST(MainWindow, LatheParameterTabSaysPBeforeAnyRun) {
+    test::testApp();
+    HmiContext context = contextIn(kerf::test::uniqueTempDir("hmi_window_fagor_para"));
+    context.machine = *machine::loadMachine("lathe");
+    MainWindow window(std::move(context));
+    window.show();
+    auto* tabs = window.findChild<StatusTabs*>();
+    ASSERT_NE(tabs, nullptr);
+    const auto parameterTab = [tabs] {
+        for (int i = 0; i < tabs->count(); ++i)
+            if (tabs->tabText(i).endsWith(QStringLiteral("PARA"))) return tabs->tabText(i);
+        return QString();
+    };
+    EXPECT_EQ(parameterTab(), QStringLiteral("PPARA"));
+    QTest::mouseClick(window.machineKeys()->programmingKey(ProgrammingMode::TestRun),
+                      Qt::LeftButton);
+    EXPECT_EQ(parameterTab(), QStringLiteral("PPARA"));
+    QTest::mouseClick(window.machineKeys()->machineKey(MachineMode::FullSequence), Qt::LeftButton);
+    EXPECT_EQ(parameterTab(), QStringLiteral("PPARA"));
+    QTest::mouseClick(window.machineKeys()->programmingKey(ProgrammingMode::TestRun),
+                      Qt::LeftButton);
+    EXPECT_EQ(parameterTab(), QStringLiteral("PPARA"));
 }
 
 TEST(MainWindow, HeaderFollowsModeKeys) {
