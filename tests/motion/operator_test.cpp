@@ -511,9 +511,8 @@ TEST(SingleBlock, RunsACalledCycleAsOneBlock) {
         {{10.0, 0.0, 50.0}, {10.0, 0.0, 50.0}, {30.0, 0.0, 50.0}}};
     for (size_t i = 0; i < 3; ++i)
         for (size_t a = 0; a < 3; ++a)
-            // The setpoints lag the path by the setpoint filter (17 ms) when it stops there and
-            // the simulation starts again at once: within 0.5 mm, far from the hole (Z-10, Z2).
-            EXPECT_NEAR(stops[i][a], expected[i][a], 0.5) << "stop " << i << " axis " << a;
+            // The stop waits for the setpoint filter (17 ms) to settle: exactly there.
+            EXPECT_NEAR(stops[i][a], expected[i][a], 1e-6) << "stop " << i << " axis " << a;
     EXPECT_NEAR(run.report.finalPosition[0], 30.0, 1e-6);
 }
 
