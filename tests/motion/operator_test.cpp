@@ -511,8 +511,10 @@ TEST(SingleBlock, RunsACalledCycleAsOneBlock) {
         {{10.0, 0.0, 50.0}, {10.0, 0.0, 50.0}, {30.0, 0.0, 50.0}}};
     for (size_t i = 0; i < 3; ++i)
         for (size_t a = 0; a < 3; ++a)
-            // The stop waits for the setpoint filter (17 ms) to settle: exactly there.
-            EXPECT_NEAR(stops[i][a], expected[i][a], 1e-6) << "stop " << i << " axis " << a;
+            // Single block is switched on in the servo cycle only, after all was planned: the
+            // corners keep their blends and the stops are where those begin, within the path
+            // tolerance (docs/motion.md), far from the hole (Z-10, Z2).
+            EXPECT_NEAR(stops[i][a], expected[i][a], 0.1) << "stop " << i << " axis " << a;
     EXPECT_NEAR(run.report.finalPosition[0], 30.0, 1e-6);
 }
 
