@@ -347,7 +347,7 @@ void Planner::addMove(Move move, const AxisVector& target, const SourceLocation&
     move.index = ++m_moveCount;
     m_lastMoveGeometry = move.geometry;
     move.blendable = !move.probe && move.feedKind != FeedKind::SpindleSynced &&
-                     movesOnlyXyz(move.geometry) && !m_exactStop;
+                     movesOnlyXyz(move.geometry) && !exactStops();
     if (smoothable(move)) {
         if (!m_run.empty() && !continuesRun(move)) endRun();
         if (m_run.empty()) {
@@ -458,7 +458,7 @@ bool Planner::worthHolding(const Move& move) const {
     // Feeds per revolution are not in mm/s here: those corners stay as they are.
     bool perSecond = move.feedKind == FeedKind::PerMinute || move.feedKind == FeedKind::Rapid;
     if (!before.blendable || !move.blendable || move.geometry.curved() || !perSecond ||
-        before.feedKind != move.feedKind || move.tolerance <= 0.0 || m_exactStop)
+        before.feedKind != move.feedKind || move.tolerance <= 0.0 || exactStops())
         return false;
     double theta = cornerAngle(before.geometry, move.geometry);
     if (theta < 1e-9 || theta > kMaxBlendAngle) return false;
@@ -475,7 +475,7 @@ bool Planner::worthHolding(const Move& move) const {
 bool Planner::blendAcrossShort(Move& move) {
     const Move& before = *m_pending;
     const Move& middle = *m_short;
-    if (!move.blendable || middle.feedKind != move.feedKind || m_exactStop ||
+    if (!move.blendable || middle.feedKind != move.feedKind || exactStops() ||
         cornerAngle(before.geometry, move.geometry) > kMaxBlendAngle)
         return false;
     // A fitted curve has used part of the tolerance already.
@@ -523,7 +523,7 @@ void Planner::cornerTo(Move& move) {
     }
     double theta = cornerAngle(before.geometry, move.geometry);
     bool sameRegime = before.feedKind == move.feedKind;
-    if (theta < 1e-9 && sameRegime && !m_exactStop) {
+    if (theta < 1e-9 && sameRegime && !exactStops()) {
         emitPending(0.0);
         return;
     }

@@ -62,6 +62,9 @@ public:
 
     // Exact stop after every block (Fagor G07). Not in the canonical stream yet: set by the task.
     void setExactStopMode(bool on) { m_exactStop = on; }
+    // Single block stops at each block's programmed end point: the moves planned while it is on
+    // are neither blended nor fitted into curves across their ends.
+    void setSingleBlock(bool on) { m_singleBlock = on; }
 
 private:
     struct Move {
@@ -156,6 +159,8 @@ private:
     Vec3Array m_syncDirection{};
     double m_syncSign = 1.0;
     bool m_exactStop = false;
+    bool m_singleBlock = false;
+    bool exactStops() const { return m_exactStop || m_singleBlock; }
     uint32_t m_moveCount = 0;
     PathGeometry m_lastMoveGeometry;
     bool m_refused = false;

@@ -11,6 +11,12 @@ constexpr double kFarVelocity = 1e11;
 constexpr size_t kSingleBlockScan = 8;
 constexpr size_t kLookItems = 8;
 
+// One single-block step: a programmed block (a called cycle's moves carry the calling block's
+// place).
+bool sameStep(const SourceLocation& a, const SourceLocation& b) noexcept {
+    return a.fileId == b.fileId && a.line == b.line;
+}
+
 }  // namespace
 
 ServoCycle::ServoCycle(const MachineModel& model, DriveBus& bus, ItemRing& items,
@@ -120,6 +126,7 @@ void ServoCycle::abortProgram() noexcept {
     stopSpindleAndCoolant();
     m_items.clear();
     m_hold = m_stopping = m_waitingStart = false;
+    m_stepEndPending = false;
     m_elementEntered = m_actionStarted = false;
     m_onFeedMove = false;
     if (m_probeArmed) m_bus.armProbe(false);
@@ -344,7 +351,7 @@ void ServoCycle::chooseSingleBlockStop() noexcept {
 
 bool ServoCycle::endsSingleBlockStep(size_t index) const noexcept {
     const MotionItem& item = m_items.peek(index);
-    if (!item.element.blockEnd || item.sequence == m_singleBlockDone) return false;
+    if (!item.element.blockEnd) return false;
     // A called cycle (TNC CYCL CALL, a Fagor canned cycle) is one block: its moves and dwells
     // carry the calling block's place and run without a stop between them (docs/hmi.md). Blocks
     // a program joined (Fagor ESBLK) are one block too. The next move decides; the actions
@@ -355,9 +362,20 @@ bool ServoCycle::endsSingleBlockStep(size_t index) const noexcept {
         if (next.kind != MotionItem::Kind::Element) continue;
         const uint32_t group = item.element.joinedGroup;
         if (group != 0 && next.element.joinedGroup == group) return false;
-        return next.source.fileId != item.source.fileId || next.source.line != item.source.line;
+        return !sameStep(next.source, item.source);
     }
     return true;  // no move queued after it yet: the motion comes to rest here anyway
+}
+
+bool ServoCycle::continuesStep(const MotionItem& item) const noexcept {
+    return item.kind == MotionItem::Kind::Action && sameStep(item.source, m_stepEnd);
+}
+
+void ServoCycle::stopAfterStep() noexcept {
+    m_stepEndPending = false;
+    m_waitingStart = true;
+    m_mode = MotionMode::Stopped;
+    emit(MotionEventKind::ProgramStopped, -1, 0.0, actualTip());
 }
 
 double ServoCycle::targetVelocity(const PathElement& e) const noexcept {
@@ -435,11 +453,13 @@ bool ServoCycle::runAction(const MotionItem& item) noexcept {
         case ActionKind::ProgramStop:
             if (a.number == 2) {
                 if (!filterSettled()) return false;
+                m_stepEndPending = false;  // the end needs no single-block stop after it
                 emit(MotionEventKind::ProgramEnd, -1, 0.0, actualTip());
                 return true;
             }
             if (a.number == 1 && !m_optionalStop) return true;
             if (first) {
+                m_stepEndPending = false;  // this stop is the step's
                 m_waitingStart = true;
                 m_mode = MotionMode::Stopped;
                 emit(MotionEventKind::ProgramStopped, -1, 0.0, actualTip());
@@ -489,10 +509,18 @@ void ServoCycle::runProgram() noexcept {
     bool stepped = false;
     m_currentMove = 0;
     m_currentFirstMove = 0;
+    if (!m_singleBlock) m_stepEndPending = false;
     // Every pass but the last pops an item: at most the queue, whatever the path passed.
     for (size_t guard = 0; guard <= kItemRingCapacity; ++guard) {
         if (m_items.empty()) {
             m_onFeedMove = false;
+            if (m_stepEndPending && !m_stopping) {
+                // The step's moves and actions are done and nothing else is queued yet: wait
+                // here, as the machine would stop before the next block anyway.
+                if (filterSettled()) stopAfterStep();
+                return;
+            }
+            m_stepEndPending = false;
             if (m_gen.atRest() && !m_hold) m_mode = MotionMode::Idle;
             if (m_stopping) {
                 m_stopping = false;
@@ -501,6 +529,13 @@ void ServoCycle::runProgram() noexcept {
             return;
         }
         const MotionItem& item = m_items.front();
+        if (m_stepEndPending && !m_stopping && !continuesStep(item)) {
+            // Stopped where the axes stand still, setpoints too (the position shown is final).
+            if (filterSettled()) stopAfterStep();
+            return;
+        }
+        // At a single-block stop nothing of the next step starts before NC start.
+        if (m_waitingStart && !m_actionStarted) return;
         if (item.kind == MotionItem::Kind::Action) {
             if (m_stopping) {
                 abortProgram();
@@ -520,7 +555,6 @@ void ServoCycle::runProgram() noexcept {
         m_status.itemSequence = item.sequence;
         m_status.source = item.source;
         if (!stepped) {
-            if (m_waitingStart) return;
             stepPath();
             stepped = true;
         }
@@ -595,12 +629,14 @@ void ServoCycle::runProgram() noexcept {
             emit(MotionEventKind::ProbeMissed, -1, 0.0, actualTip());
         }
         if (m_singleBlock && m_gen.atRest() && endsSingleBlockStep(0)) {
-            m_singleBlockDone = item.sequence;
+            // The move is done; the block's own actions after it run before the stop.
+            m_stepEnd = item.source;
+            m_stepEndPending = true;
             m_singleBlockS = -1.0;
-            m_waitingStart = true;
-            m_mode = MotionMode::Stopped;
-            emit(MotionEventKind::ProgramStopped, -1, 0.0, actualTip());
-            return;
+            m_items.pop();
+            m_elementEntered = false;
+            m_onFeedMove = false;
+            continue;
         }
         // A stop chosen here before the rest of its block was queued is not one.
         if (m_singleBlockS >= 0.0 && m_singleBlockS <= e.sEnd() + 1e-9) m_singleBlockS = -1.0;

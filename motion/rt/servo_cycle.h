@@ -69,8 +69,13 @@ private:
     void stepPath() noexcept;
     void chooseSingleBlockStop() noexcept;
     // Whether single block stops at the end of queued element `index`: where its programmed
-    // block ends and the next item queued (if any) belongs to another block.
+    // block ends and the next move queued (if any) belongs to another.
     bool endsSingleBlockStep(size_t index) const noexcept;
+    // After the last move of a single-block step: whether `item` still belongs to the step (an
+    // action of the same block that acts at the end of the block, M5, M9, M30 ...).
+    bool continuesStep(const MotionItem& item) const noexcept;
+    // The single-block stop once the step's moves and actions are done.
+    void stopAfterStep() noexcept;
     size_t collectConstraints(size_t first, std::span<Constraint> out) const noexcept;
     void enterElement(const PathElement& element) noexcept;
     void runManual() noexcept;
@@ -130,8 +135,11 @@ private:
     double m_syncAngleStart = 0.0;
     bool m_probeArmed = false;
     bool m_probeTriggered = false;
-    uint64_t m_singleBlockDone = 0;  // sequence of the element a single-block stop ended
-    double m_singleBlockS = -1.0;    // path position of the single-block stop ahead
+    double m_singleBlockS = -1.0;  // path position of the single-block stop ahead
+    // The last move of a single-block step has ended: the block's remaining actions run, then
+    // the stop (stopAfterStep). m_stepEnd is the step's place.
+    bool m_stepEndPending = false;
+    SourceLocation m_stepEnd;
 
     // Homing: joints in the model's homing order, one at a time.
     enum class HomingPhase : uint8_t { Off, LeaveSwitch, Search, Brake, Return };

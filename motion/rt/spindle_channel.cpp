@@ -26,6 +26,7 @@ void SpindleChannel::command(int direction, double rpm, double surfaceSpeedMPerM
     m_rpm = rpm;
     m_surfaceSpeed = surfaceSpeedMPerMin;
     m_cssMaxRpm = maxRpm > 0.0 ? maxRpm : m_maxRpm;
+    m_commandApplied = false;
     if (m_mode == Mode::Orient) m_mode = Mode::Speed;
 }
 
@@ -53,7 +54,7 @@ bool SpindleChannel::settled() const noexcept {
         case Mode::Orient:
             return m_orientPlaced && m_gen.atRest() && std::fabs(m_angle - m_orientGoal) < 1e-6;
         case Mode::Speed:
-            return std::fabs(m_velocity - m_targetVelocity) < 1e-6 &&
+            return m_commandApplied && std::fabs(m_velocity - m_targetVelocity) < 1e-6 &&
                    std::fabs(m_gen.state().a) < 1e-6;
     }
     return true;
@@ -91,6 +92,7 @@ void SpindleChannel::update(double dt, double radiusMm) noexcept {
     }
     rpm = std::min(rpm * m_override, m_maxRpm);
     m_targetVelocity = m_direction * rpm * 6.0;
+    m_commandApplied = true;
     m_gen.step(dt, m_targetVelocity, m_limits, {});
     m_velocity = m_gen.state().v;
     m_angle = m_gen.state().s;

@@ -48,6 +48,9 @@ private:
     double m_angle = 0.0;
     double m_velocity = 0.0;  // deg/s
     double m_targetVelocity = 0.0;
+    // A new speed command counts from the next update(), which turns it into the target: until
+    // then the spindle is not at the commanded speed, whatever the old target.
+    bool m_commandApplied = true;
     double m_orientTarget = 0.0;
     double m_orientGoal = 0.0;
     bool m_orientPlaced = false;

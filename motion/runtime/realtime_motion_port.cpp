@@ -320,6 +320,9 @@ bool RealtimeMotionPort::machineOn() {
 
 void RealtimeMotionPort::setSingleBlock(bool on) {
     m_singleBlock = on;
+    // Single block stops at the programmed end of each block: no corner blend or fitted curve
+    // may cut it short (moves planned before the switch keep theirs).
+    m_machine->planner().setSingleBlock(on);
     OperatorCommand c{OperatorCommandKind::SingleBlock};
     c.flag = on;
     m_machine->command(c);

@@ -94,9 +94,10 @@ TEST(ServoCycleAllocation, NoHeapAllocationAfterStart) {
     for (int i = 0; i < 20000; ++i) {
         if (i == 3000) commands.push({OperatorCommandKind::FeedOverride, -1, 1.4});
         if (i == 4000) commands.push({OperatorCommandKind::FeedHold});
-        // Hold, jog away (the program runs about 1 s); the cycle start at 800 returns to the path.
-        if (i == 500) commands.push({OperatorCommandKind::FeedHold});
-        if (i == 650) commands.push({OperatorCommandKind::JogIncrement, 1, 1.0});
+        // Hold, jog away (the program moves about 1 s once the spindle is at speed, after 1 s);
+        // the cycle start at 1600 returns to the path.
+        if (i == 1300) commands.push({OperatorCommandKind::FeedHold});
+        if (i == 1450) commands.push({OperatorCommandKind::JogIncrement, 1, 1.0});
         if (i == 4500) commands.push({OperatorCommandKind::CycleStart});
         if (i == 5000) commands.push({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
         if (i == 5200) commands.push({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, false});

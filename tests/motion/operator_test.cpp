@@ -511,9 +511,10 @@ TEST(SingleBlock, RunsACalledCycleAsOneBlock) {
         {{10.0, 0.0, 50.0}, {10.0, 0.0, 50.0}, {30.0, 0.0, 50.0}}};
     for (size_t i = 0; i < 3; ++i)
         for (size_t a = 0; a < 3; ++a)
-            // The setpoints lag the path by the setpoint filter (17 ms) when it stops there and
-            // the simulation starts again at once: within 0.5 mm, far from the hole (Z-10, Z2).
-            EXPECT_NEAR(stops[i][a], expected[i][a], 0.5) << "stop " << i << " axis " << a;
+            // Single block is switched on in the servo cycle only, after all was planned: the
+            // corners keep their blends and the stops are where those begin, within the path
+            // tolerance (docs/motion.md), far from the hole (Z-10, Z2).
+            EXPECT_NEAR(stops[i][a], expected[i][a], 0.1) << "stop " << i << " axis " << a;
     EXPECT_NEAR(run.report.finalPosition[0], 30.0, 1e-6);
 }
 
@@ -552,6 +553,70 @@ TEST(SingleBlock, BlocksAProgramJoinedRunAsOneBlock) {
         for (size_t a = 0; a < 2; ++a)
             EXPECT_NEAR(stops[i][a], expected[i][a], 0.5) << "stop " << i << " axis " << a;
     EXPECT_NEAR(run.report.finalPosition[1], 20.0, 1e-6);
+}
+
+// What the machine shows at each single-block stop; NC start is pressed at each.
+struct StepStop {
+    double x = 0.0;
+    double spindleRpm = 0.0;
+    uint8_t coolant = 0;
+};
+
+std::vector<StepStop> singleBlockStops(const std::vector<canon::Command>& program) {
+    SimulationOptions options;
+    options.autoCycleStart = false;
+    options.maxSimulatedS = 60.0;
+    std::vector<StepStop> stops;
+    bool armed = false;
+    MotionMode last = MotionMode::Idle;
+    runCommands(millConfig(), program, Pose{}, options,
+                [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+                    if (!armed) {
+                        sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
+                        armed = true;
+                    }
+                    if (s.mode == MotionMode::Stopped && last != MotionMode::Stopped) {
+                        stops.push_back({s.commandedPosition[0], s.spindleRpm, s.coolant});
+                        sim.command({OperatorCommandKind::CycleStart});
+                    }
+                    last = s.mode;
+                });
+    return stops;
+}
+
+canon::SpindleControl spindleAt(double rpm) {
+    canon::SpindleControl spindle;
+    spindle.direction =
+        rpm > 0.0 ? canon::SpindleDirection::Clockwise : canon::SpindleDirection::Stopped;
+    spindle.speedRpm = rpm;
+    return spindle;
+}
+
+// One NC start runs one block completely: the M functions that act at the end of a block (M5,
+// M9 after `L X+20 FMAX M5 M9`) run before its single-block stop, not at the next NC start.
+TEST(SingleBlock, RunsTheBlocksEndFunctionsBeforeItsStop) {
+    canon::CoolantControl flood;
+    flood.flood = true;
+    const std::vector<canon::Command> program = {
+        // Block 1 "L X+10 F3000 M3 M8": spindle and coolant on before the move.
+        cmd(spindleAt(2000.0), 1), cmd(flood, 1), cmd(canon::LinearMove{at(10, 0, 0), 3000.0}, 1),
+        // Block 2 "L X+20 FMAX M5 M9": the move, then spindle and coolant off.
+        cmd(canon::RapidMove{at(20, 0, 0)}, 2), cmd(spindleAt(0.0), 2),
+        cmd(canon::CoolantControl{}, 2),
+        // Block 3 "L X+30 F3000".
+        cmd(canon::LinearMove{at(30, 0, 0), 3000.0}, 3)};
+    const std::vector<StepStop> stops = singleBlockStops(program);
+    ASSERT_EQ(stops.size(), 3u);
+    EXPECT_NEAR(stops[0].x, 10.0, 1e-6);
+    // M3 lets the move start once the spindle runs at its speed.
+    EXPECT_NEAR(stops[0].spindleRpm, 2000.0, 1e-6);
+    EXPECT_EQ(stops[0].coolant, 1u);
+    // The stop after block 2: its M5 has stopped the spindle (the action waits for it), M9 the
+    // coolant.
+    EXPECT_NEAR(stops[1].x, 20.0, 1e-6);
+    EXPECT_NEAR(stops[1].spindleRpm, 0.0, 1e-3);
+    EXPECT_EQ(stops[1].coolant, 0u);
+    EXPECT_NEAR(stops[2].x, 30.0, 1e-6);
 }
 
 TEST(ToolChange, JointsStayAndTheTipMovesByTheLengthChange) {

@@ -2,6 +2,7 @@
 // read-ahead: the status tabs, and the programmed feed inside a cycle and per revolution; the
 // TOOL tab after an MDI TOOL CALL.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -94,6 +95,54 @@ TEST_F(LiveStatus, TheToolTabShowsTheToolOfTheBlockTheMachineCutsNotOfTheReadAhe
     ASSERT_TRUE(
         processUntil([&] { return tabs().valueOf(StatusTabs::Tab::Tool, "Tool") == "2"; }, 5s));
     EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "Spindle"), "S 2000 rpm");
+}
+
+// Program run single block: at each stop every display shows the block just executed, with
+// its M functions done (the M5 M9 of `L Z+40 R0 FMAX M5 M9` before the stop), not the tool
+// and spindle the interpreter has read ahead (TOOL CALL 2 S3000).
+TEST_F(LiveStatus, AtASingleBlockStopTheDisplaysShowTheBlockJustExecuted) {
+    open("mill", "STEP.H",
+         "0 BEGIN PGM STEP MM\n"
+         "1 TOOL CALL 1 Z S2000\n"
+         "2 L X+0 Y+0 Z+10 R0 F3000 M3 M8\n"
+         "3 L Z+40 R0 FMAX M5 M9\n"
+         "4 TOOL CALL 2 Z S3000\n"
+         "5 L X+20 R0 F600 M3\n"
+         "6 END PGM STEP MM\n");
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::SingleBlock));
+    PositionDisplay& positions = *window->positions();
+    auto stoppedAt = [&](double z) {
+        return processUntil([&] {
+            return status().state == task::MachineState::Stopped &&
+                   std::fabs(status().axes[2].nominal - z) < 1e-6;
+        });
+    };
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    ASSERT_TRUE(stoppedAt(10.0));
+    // The spindle reaches 2000 rpm while the machine waits (3000 rpm/s).
+    ASSERT_TRUE(
+        processUntil([&] { return positions.spindleText() == "S 2000 (actual 2000) rpm"; }, 5s))
+        << positions.spindleText().toStdString();
+    EXPECT_EQ(positions.coolantText(), "Coolant on");
+    EXPECT_EQ(positions.toolText(), "T 1");
+    ASSERT_TRUE(
+        processUntil([&] { return tabs().valueOf(StatusTabs::Tab::Program, "Block") == "2"; }, 5s));
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "M functions"), "M3 M8");
+
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    ASSERT_TRUE(stoppedAt(40.0));
+    EXPECT_EQ(positions.spindleText(), "S 0 (actual 0) rpm");
+    EXPECT_EQ(positions.coolantText(), "Coolant off");
+    EXPECT_EQ(positions.toolText(), "T 1");
+    ASSERT_TRUE(
+        processUntil([&] { return tabs().valueOf(StatusTabs::Tab::Program, "Block") == "3"; }, 5s));
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Program, "M functions"), "M5 M9");
+    EXPECT_EQ(tabs().valueOf(StatusTabs::Tab::Tool, "Tool"), "1");
+    // It waits there: nothing of blocks 4 and 5 has run.
+    processUntil([] { return false; }, 300ms);
+    EXPECT_EQ(status().state, task::MachineState::Stopped);
+    EXPECT_EQ(positions.toolText(), "T 1");
+    EXPECT_EQ(positions.spindleText(), "S 0 (actual 0) rpm");
 }
 
 // Cycle 200 plunges at its own feed Q206 = 150 (the program's F is 900).

@@ -2,6 +2,7 @@
 
 #include <QSignalSpy>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -230,6 +231,76 @@ TEST_F(MachineSessionTest, SingleBlockStopsAtTheEndOfEachBlock) {
     session->cycleStart();
     ASSERT_TRUE(runToEnd());
     EXPECT_EQ(session->runState(), RunState::Finished);
+}
+
+// One NC start runs one block completely: `L Z+40 R0 FMAX M5 M9` stops the spindle and the
+// coolant before its single-block stop (they went on turning until the next NC start), and the
+// status shows what the machine did, S 0 with the spindle at rest.
+TEST_F(MachineSessionTest, SingleBlockRunsTheBlocksMFunctionsBeforeItStops) {
+    session->setSingleBlock(true);
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM E MM\n"
+                              "1 TOOL CALL 3 Z S2000\n"
+                              "2 L X+0 Y+0 Z+10 R0 FMAX M3 M8\n"
+                              "3 L Z+40 R0 FMAX M5 M9\n"
+                              "4 L X+10 R0 FMAX\n"
+                              "5 END PGM E MM\n",
+                              "E.H"));
+    const task::MachineStatus& status = session->status();
+    auto stoppedAt = [&](double z) {
+        return serviceUntil([&] {
+            return status.state == task::MachineState::Stopped &&
+                   std::fabs(status.axes[2].nominal - z) < 1e-6;
+        });
+    };
+    ASSERT_TRUE(stoppedAt(10.0));
+    EXPECT_TRUE(status.coolant);
+    EXPECT_EQ(status.programmedSpindleRpm, 2000.0);
+    session->cycleStart();
+    ASSERT_TRUE(stoppedAt(40.0));
+    // M5 waits for the spindle to stand (3000 rpm/s ramp); the stop comes after it.
+    EXPECT_LT(std::fabs(status.actualSpindleRpm), 1e-3);
+    EXPECT_EQ(status.programmedSpindleRpm, 0.0);
+    EXPECT_FALSE(status.coolant);
+    EXPECT_EQ(status.block.line, 4u);  // block 3 of the file
+    // Still waiting: block 4 has not moved.
+    serviceUntil([] { return false; }, 200ms);
+    EXPECT_EQ(status.state, task::MachineState::Stopped);
+    EXPECT_NEAR(status.axes[0].nominal, 0.0, 1e-6);
+    session->cycleStart();
+    ASSERT_TRUE(serviceUntil([&] {
+        return status.state == task::MachineState::Stopped &&
+               std::fabs(status.axes[0].nominal - 10.0) < 1e-6;
+    }));
+    session->cycleStart();  // END PGM
+    ASSERT_TRUE(runToEnd());
+    EXPECT_EQ(session->runState(), RunState::Finished);
+}
+
+// At a corner the planner blends the end of a block into the next one within the path
+// tolerance; single block must stop at the programmed point all the same (it stopped where the
+// blend began, Z+9.983 for Z+10), with the setpoints and the drives settled there.
+TEST_F(MachineSessionTest, SingleBlockStopsAtTheProgrammedPointOfACorner) {
+    session->setSingleBlock(true);
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM K MM\n"
+                              "1 L X+0 Y+0 Z+10 R0 F3000\n"
+                              "2 L X+20 R0 F3000\n"
+                              "3 L Y+20 R0 F3000\n"
+                              "4 END PGM K MM\n",
+                              "K.H"));
+    const task::MachineStatus& status = session->status();
+    const std::array<std::array<double, 3>, 2> corners = {{{0.0, 0.0, 10.0}, {20.0, 0.0, 10.0}}};
+    for (const auto& corner : corners) {
+        ASSERT_TRUE(serviceUntil([&] { return status.state == task::MachineState::Stopped; }));
+        settle();
+        for (size_t a = 0; a < 3; ++a) {
+            EXPECT_NEAR(status.axes[a].nominal, corner[a], 1e-6) << "axis " << a;
+            EXPECT_NEAR(status.axes[a].actual, corner[a], 1e-3) << "axis " << a;
+        }
+        session->cycleStart();
+        ASSERT_TRUE(serviceUntil([&] { return status.state != task::MachineState::Stopped; }, 2s));
+    }
 }
 
 TEST_F(MachineSessionTest, ContinuousJogRunsUntilStopped) {

@@ -116,6 +116,76 @@ TEST_F(MachineStopTest, StopInsideACycleReturnsToReady) {
     EXPECT_TRUE(spindleAndCoolantOff());
 }
 
+struct DwellProgram {
+    const char* machine;
+    const char* file;
+    QString text;
+    bool singleBlock = false;
+};
+
+// A 3 s dwell after a move to X5 (lathe: a diameter of 10) with the spindle and the coolant on,
+// in each dialect, and cycle 200's Q211 in single block (the whole cycle is one step).
+std::vector<DwellProgram> dwellPrograms() {
+    const QString cycle200 =
+        "0 BEGIN PGM Q MM\n"
+        "1 TOOL CALL 3 Z S1000\n"
+        "2 L X+5 Y+0 Z+10 R0 FMAX M3 M8\n"
+        "3 CYCL DEF 200 DRILLING\n"
+        "  Q200=2\n  Q201=-3\n  Q206=600\n  Q202=5\n  Q210=0\n"
+        "  Q203=+0\n  Q204=10\n  Q211=3\n  Q395=0\n"
+        "4 CYCL CALL\n"
+        "5 END PGM Q MM\n";
+    return {
+        {"mill", "D.H",
+         "0 BEGIN PGM D MM\n1 TOOL CALL 3 Z S1000\n2 L X+5 Y+0 Z+0 R0 F6000 M3 M8\n"
+         "3 CYCL DEF 9.0 DWELL TIME\n4 CYCL DEF 9.1 DWELL 3\n5 L X+10 R0 F6000\n"
+         "6 END PGM D MM\n"},
+        {"mill", "D.I",
+         "%D G71 *\nN10 T3 G17 S1000 *\nN20 G01 G90 X+5 Y+0 Z+0 F6000 M3 M8 *\n"
+         "N30 G04 F3 *\nN40 G01 X+10 *\nN99999999 %D G71 *\n"},
+        {"lathe", "D.PIT",
+         "N10 G90 G01 X10 Z0 F3000\nN20 S1000 M3 M8\nN30 G04 K300\n"
+         "N40 G01 X20\nN50 M30\n"},
+        {"mill", "Q.H", cycle200, true},
+    };
+}
+
+// Stop in a dwell ends the program at once, in every dialect and in single block: ready, not
+// "stopping" until the dwell has run out, nor for ever. An attempt to set a preset meanwhile is
+// refused (a program runs) and changes nothing.
+TEST_F(MachineStopTest, StopInADwellReturnsToReady) {
+    for (const DwellProgram& p : dwellPrograms()) {
+        SCOPED_TRACE(p.file);
+        config = *machine::loadMachine(p.machine);
+        session =
+            std::make_unique<MachineSession>(config, test::connectSimulatedMachine(config), "");
+        session->setSingleBlock(p.singleBlock);
+        ASSERT_TRUE(session->startProgram(p.text, p.file)) << "refused";
+        // In the dwell: at X5 (cycle 200: at the bottom of the hole), the spindle at speed.
+        ASSERT_TRUE(serviceUntil([this, &p] {
+            // Single block: NC start at the stop after the positioning block.
+            if (status().state == MachineState::Stopped) session->cycleStart();
+            const bool inHole = p.file != std::string("Q.H") || nominal(Axis::Z) < -3.0 + 1e-6;
+            return std::fabs(nominal(Axis::X) - 5.0) < 1e-6 && inHole &&
+                   std::fabs(status().actualSpindleRpm - 1000.0) < 1e-6;
+        }));
+        serviceUntil([] { return false; }, 200ms);
+        ASSERT_EQ(session->runState(), RunState::Running);
+        const double origin = status().axes[0].nominal;
+        EXPECT_FALSE(session->setPresetByEntry(Axis::X, 0.0));
+        EXPECT_EQ(status().axes[0].nominal, origin);
+        ASSERT_EQ(session->runState(), RunState::Running);
+        ASSERT_TRUE(stopsToReady(500ms));  // well inside the 3 s dwell
+        EXPECT_EQ(session->runState(), RunState::Aborted);
+        EXPECT_NEAR(nominal(Axis::X), 5.0, 1e-6) << "the program went on after the stop";
+        EXPECT_TRUE(spindleAndCoolantOff());
+        session->setSingleBlock(false);
+        EXPECT_TRUE(
+            session->executeMdi(p.machine == std::string("lathe") ? "G00 X10" : "L X+0 FMAX"));
+        ASSERT_TRUE(serviceUntil([this] { return ready(); }));
+    }
+}
+
 TEST_F(MachineStopTest, StopWithoutAProgramTurnsSpindleAndCoolantOff) {
     ASSERT_TRUE(session->spindle(true, 1200.0));
     ASSERT_TRUE(serviceUntil([this] { return status().actualSpindleRpm > 1199.0 && ready(); }));
