@@ -80,8 +80,8 @@ std::string mm(double value) {
 
 }  // namespace
 
-Planner::Planner(const MachineModel& model)
-    : m_model(model), m_lookahead(model), m_tolerance(model.toleranceMm) {}
+Planner::Planner(const MachineModel& model, PlannerRole role)
+    : m_model(model), m_role(role), m_lookahead(model), m_tolerance(model.toleranceMm) {}
 
 void Planner::setPosition(const AxisVector& tip) {
     m_position = tip;
@@ -346,6 +346,10 @@ void Planner::addMove(Move move, const AxisVector& target, const SourceLocation&
     if (!acceptGeometry(move.geometry, source)) return;
     move.index = ++m_moveCount;
     m_lastMoveGeometry = move.geometry;
+    if (m_role == PlannerRole::JudgeOnly) {
+        m_position = target;
+        return;
+    }
     move.blendable = !move.probe && move.feedKind != FeedKind::SpindleSynced &&
                      movesOnlyXyz(move.geometry) && !exactStops();
     if (smoothable(move)) {
@@ -700,6 +704,7 @@ void Planner::stopAfterPending() {
 }
 
 void Planner::emitAction(const Action& action, const SourceLocation& source) {
+    if (m_role == PlannerRole::JudgeOnly) return;
     // Every action happens with the axes at rest.
     exactStop();
     MotionItem item;

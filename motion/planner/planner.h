@@ -26,9 +26,15 @@ struct CornerBlend;
 // No slow point: the motion may keep its velocity there.
 inline constexpr double kNoSlowPoint = 1e300;
 
+// What a planner is for. Every refusal (soft limits, a missing axis, no feed, an arc whose end is
+// off its circle, ...) is decided in add() on the programmed move itself, before any smoothing,
+// corner blending or look-ahead; so a planner that only judges (WorkAreaCheck) skips those and
+// refuses exactly what a planning one refuses, at the same block, with the same message.
+enum class PlannerRole { Plan, JudgeOnly };
+
 class Planner {
 public:
-    explicit Planner(const MachineModel& model);
+    explicit Planner(const MachineModel& model, PlannerRole role = PlannerRole::Plan);
 
     // Where the tool tip is (workpiece coordinates) before the next move: at start, after a probe
     // move or after an abort.
@@ -44,7 +50,8 @@ public:
     bool add(const canon::Command& command);
     // The stream pauses here (end, sync point, drain): the motion stops after what was added.
     void flush();
-    // Next planned item, or nothing until more of the stream is known.
+    // Next planned item, or nothing until more of the stream is known (always nothing when the
+    // planner only judges).
     std::optional<MotionItem> next();
 
     bool refused() const { return m_refused; }
@@ -134,6 +141,7 @@ private:
                                  const SourceLocation& source);
 
     const MachineModel& m_model;
+    PlannerRole m_role;
     Lookahead m_lookahead;
     AxisVector m_position{};
     double m_pathS = 0.0;

@@ -4,7 +4,8 @@
 
 namespace kerf::motion {
 
-WorkAreaCheck::WorkAreaCheck(const MachineModel& model) : m_model(model), m_planner(m_model) {}
+WorkAreaCheck::WorkAreaCheck(const MachineModel& model)
+    : m_model(model), m_planner(m_model, PlannerRole::JudgeOnly) {}
 
 void WorkAreaCheck::start(const Pose& tip) {
     m_planner.setPosition(tip.values);

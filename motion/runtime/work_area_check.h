@@ -9,9 +9,10 @@
 
 namespace kerf::motion {
 
-// task::MoveCheck over a planner of its own that executes nothing: every command is planned as
-// the machine's planner would plan it, so a move beyond a soft limit, an axis the machine lacks,
-// a feed move without feed ... are refused with the planner's own message naming the block.
+// task::MoveCheck over a planner of its own that executes nothing: every command is judged as
+// the machine's planner judges it (PlannerRole::JudgeOnly: the same checks, without the smoothing
+// and look-ahead that never refuse anything), so a move beyond a soft limit, an axis the machine
+// lacks, a feed move without feed ... are refused with the planner's own message naming the block.
 // `kerf run --motion/--drives` (app/runner/SoftLimitGate) and the HMI's test run use it.
 // One thread.
 class WorkAreaCheck final : public task::MoveCheck {

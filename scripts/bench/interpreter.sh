@@ -12,16 +12,21 @@ gen="$root/../shared/tools/gen_nc.py"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# median TIME and max RSS of a command over $runs runs: prints "seconds rss_kb"
+# median wall time, max RSS and median CPU time (user + sys, every thread) of a command over
+# $runs runs: prints "seconds rss_kb cpu_seconds". On a loaded machine wall time measures the
+# scheduler more than the program: compare CPU times then (docs/benchmarks.md).
 measure() {
-  local times=() rss=0 t r
+  local times=() cpus=() rss=0 t r u s
   for ((i = 0; i < runs; i++)); do
-    /usr/bin/time -o "$work/time.txt" -f "%e %M" "$@" >/dev/null 2>&1 || true
-    read -r t r < <(tail -1 "$work/time.txt")
+    /usr/bin/time -o "$work/time.txt" -f "%e %M %U %S" "$@" >/dev/null 2>&1 || true
+    read -r t r u s < <(tail -1 "$work/time.txt")
     times+=("$t")
+    cpus+=("$(echo "$u + $s" | bc -l)")
     ((r > rss)) && rss=$r
   done
-  printf '%s %s\n' "$(printf '%s\n' "${times[@]}" | sort -n | sed -n "$(((runs + 1) / 2))p")" "$rss"
+  local middle=$(((runs + 1) / 2))
+  printf '%s %s %s\n' "$(printf '%s\n' "${times[@]}" | sort -n | sed -n "${middle}p")" "$rss" \
+    "$(printf '%s\n' "${cpus[@]}" | sort -n | sed -n "${middle}p")"
 }
 
 # Kerf is measured twice: trace to a file, and trace to standard output sent to /dev/null. The
@@ -41,7 +46,7 @@ for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q
   else
     python3 "$gen" "$blocks" --dialect "$dialect" -o "$work/p.$ext"
   fi
-  read -r kf kr < <(measure "$kerf" run "$work/p.$ext" "${args[@]}" --trace "$work/t.txt" --state-dir "$work")
+  read -r kf kr kc < <(measure "$kerf" run "$work/p.$ext" "${args[@]}" --trace "$work/t.txt" --state-dir "$work")
   read -r kt _ < <(measure "$kerf" run "$work/p.$ext" "${args[@]}" --trace - --state-dir "$work")
   line=$(printf '%-22s %10s %14.0f %14.0f %9sK' "$dialect $blocks" "$blocks" "$(echo "$blocks / $kf" | bc -l)" \
     "$(echo "$blocks / $kt" | bc -l)" "$kr")
@@ -51,8 +56,10 @@ for spec in "klartext 200000" "klartext 1000000" "klartext-q 200000" "klartext-q
     else
       python3 "$root/scripts/bench/rs274_loops.py" "$blocks" -o "$work/p.ngc"
     fi
-    read -r rt rr < <(measure rs274 -g "$work/p.ngc" "$work/r.txt")  # canonical text to a file
-    line+=$(printf ' %12.0f  (rs274 %ss, kerf %ss, ratio %.1f)' "$(echo "$blocks / $rt" | bc -l)" "$rt" "$kf" "$(echo "$rt / $kf" | bc -l)")
+    read -r rt rr rc < <(measure rs274 -g "$work/p.ngc" "$work/r.txt")  # canonical text to a file
+    line+=$(printf ' %12.0f  (wall: rs274 %ss, kerf %ss, ratio %.1f; CPU: rs274 %ss, kerf %ss, ratio %.1f; rs274 RSS %sK)' \
+      "$(echo "$blocks / $rt" | bc -l)" "$rt" "$kf" "$(echo "$rt / $kf" | bc -l)" \
+      "$rc" "$kc" "$(echo "$rc / $kc" | bc -l)" "$rr")
   fi
   echo "$line"
 done

@@ -1,5 +1,6 @@
 #include "core/interp/klartext/cursor.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <limits>
@@ -106,6 +107,12 @@ std::optional<long long> Cursor::unsignedInteger() {
     skipBlanks();
     size_t i = m_pos;
     long long value = 0;
+    // Eighteen digits cannot overflow: check only beyond them (block numbers have up to seven).
+    const size_t unchecked = std::min(m_text.size(), m_pos + 18);
+    while (i < unchecked && isDigit(m_text[i])) {
+        value = value * 10 + (m_text[i] - '0');
+        ++i;
+    }
     while (i < m_text.size() && isDigit(m_text[i])) {
         if (value > (std::numeric_limits<long long>::max() - 9) / 10) return std::nullopt;
         value = value * 10 + (m_text[i] - '0');

@@ -1,4 +1,5 @@
 // Path functions: L, C, CR, CT, LP, CP, CTP, CC, RND, CHF, APPR and DEP.
+#include <bit>
 #include <cmath>
 
 #include "core/base/fixed_format.h"
@@ -79,9 +80,10 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
     const bool machine = hasM(m_currentM, 91) || hasM(m_currentM, 92);
     // Machine coordinates bypass the coordinate transformations: set them in the preset frame.
     Pose work = machine ? m_frame.toWorkpiece(m_programmed) : Pose{};
-    for (int i = 0; i < kAxisCount; ++i) {
+    // Only the axes the block names (usually two or three of nine).
+    for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
         const AxisWord& word = coords.axes[static_cast<size_t>(i)];
-        if (!word.present) continue;
         auto axis = static_cast<Axis>(i);
         const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
         const double value = rotary ? word.value : word.value * scale;
