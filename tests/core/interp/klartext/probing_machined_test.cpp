@@ -63,12 +63,12 @@ protected:
         "base = \"mill\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n",
         "test.toml");
     // The probe (TP_NO: a touch probe, it cuts nothing) with a ball of radius 2, a D10 end mill,
-    // a D10 ball-nose end mill.
+    // a D10 ball-nose end mill (plunge angle 30 degrees for the helical plunge of 252).
     tables::ToolTable tools = *tables::ToolTable::parse(
-        "BEGIN TOOL.T MM\nT    NAME   L      R      R2     TP_NO\n"
-        "1    TS     +50    +2     +0     1\n"
-        "5    D10    +80    +5     +0\n"
-        "6    BALL10 +80    +5     +5\n[END]\n");
+        "BEGIN TOOL.T MM\nT    NAME   L      R      R2     ANGLE  TP_NO\n"
+        "1    TS     +50    +2     +0     +0     1\n"
+        "5    D10    +80    +5     +0     +30\n"
+        "6    BALL10 +80    +5     +5     +30\n[END]\n");
     program::SourceRegistry sources;
     Discard out;
     std::unique_ptr<KlartextInterpreter> interpreter;
