@@ -2,7 +2,9 @@
 // file's setup error (shift 1.5 / -0.8 / -0.2 mm, 0.7 degrees) less what the tools removed. A
 // feature the program cut lies where the tool went, whatever the setup error: the values below
 // are the programmed geometry.
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -63,12 +65,12 @@ protected:
         "base = \"mill\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n",
         "test.toml");
     // The probe (TP_NO: a touch probe, it cuts nothing) with a ball of radius 2, a D10 end mill,
-    // a D10 ball-nose end mill.
+    // a D10 ball-nose end mill (plunge angle 30 degrees for the helical plunge of 252).
     tables::ToolTable tools = *tables::ToolTable::parse(
-        "BEGIN TOOL.T MM\nT    NAME   L      R      R2     TP_NO\n"
-        "1    TS     +50    +2     +0     1\n"
-        "5    D10    +80    +5     +0\n"
-        "6    BALL10 +80    +5     +5\n[END]\n");
+        "BEGIN TOOL.T MM\nT    NAME   L      R      R2     ANGLE  TP_NO\n"
+        "1    TS     +50    +2     +0     +0     1\n"
+        "5    D10    +80    +5     +0     +30\n"
+        "6    BALL10 +80    +5     +5     +30\n[END]\n");
     program::SourceRegistry sources;
     Discard out;
     std::unique_ptr<KlartextInterpreter> interpreter;
@@ -175,6 +177,27 @@ TEST_F(ProbingMachinedTest, Slot253IsMeasuredBy425AndItsFloorBy417) {
     EXPECT_NEAR(q(156), 16.0, 0.002);  // the width
     EXPECT_NEAR(q(157), 30.0, 0.002);  // its centre line
     EXPECT_NEAR(q(160), -10.0, 0.002);
+}
+
+TEST_F(ProbingMachinedTest, TwoDrilledHolesTurnTheCTableWith401) {
+    // Seed example 13.8 after drilling its holes: (25, 15) and (80, 35) where the tool went,
+    // so the line between them lies at atan2(20, 55) whatever the setup error; Q402 = 1 turns
+    // the C table of mill5 by that (Q307 = 0), Q337 = 0 leaves its display.
+    machine = *machine::parseMachine(
+        "base = \"mill5\"\n[simulation.setup]\nshift = [1.5, -0.8, -0.2]\nrotation = 0.7\n",
+        "test.toml");
+    ASSERT_EQ(run("5 L C+0 R0 FMAX\n"
+                  "6 CYCL DEF 200 DRILLING\n  Q200=2\n  Q201=-15\n  Q206=250\n  Q202=5\n"
+                  "  Q210=0\n  Q203=+0\n  Q204=20\n  Q211=0\n  Q395=0\n"
+                  "7 L X+25 Y+15 R0 FMAX M99\n8 L X+80 Y+35 R0 FMAX M99\n9 L Z+100 R0 FMAX\n"
+                  "10 TOOL CALL 1 Z\n"
+                  "11 TCH PROBE 401 ROT OF 2 HOLES\n  Q268=+25\n  Q269=+15\n  Q270=+80\n"
+                  "  Q271=+35\n  Q261=-5\n  Q260=+20\n  Q307=+0\n  Q305=0\n  Q402=1\n"
+                  "  Q337=0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_NEAR(interpreter->nominalPosition()[Axis::C],
+                std::atan2(20.0, 55.0) * 180.0 / std::numbers::pi, 0.002);
 }
 
 }  // namespace
