@@ -4,6 +4,12 @@
 other than 0/1. Used for docs/fuzzing.md, "Adversarial pass, 2026-11-28".
 
   scripts/mutate_run.py KERF OUT_DIR [--seconds N] [--jobs N] [--per-program N] [--seed N]
+                        [--tables]
+
+With --tables the programs stay as they are and the tables and machine files beside them are
+mutated instead (TOOL.T, PRESET.PR, TCHPROBE.TP, point and datum tables, FAGOR tables, machine
+TOML files), with byte-level damage (NUL bytes, a 100,000-character cell, bytes that are not
+UTF-8) besides the line and number mutations.
 
 Inputs: the golden cases (tests/golden/<dialect>/<case>/, with their `args`), the corpus
 (../shared/corpus/heidenhain) and the example programs under examples/. Every run happens in a
@@ -25,6 +31,7 @@ ROOT = Path(__file__).resolve().parent.parent
 SANITIZER_MARKS = ("runtime error", "AddressSanitizer", "LeakSanitizer", "UndefinedBehavior")
 HUGE = ["99999999999", "0", "-0", "-99999", "999999999999999999999999999999999999999", "1E300",
         "0.0000000001", "-1", "1E-300", "65536", "2147483648", "-2147483649", "4294967296"]
+TABLE_SUFFIXES = (".t", ".pr", ".tp", ".tab", ".toml", ".d", ".pnt", ".txt")
 NUMBER = re.compile(rb"(?<![A-Za-z_])[+-]?\d+(?:[.,]\d+)?")
 
 
@@ -82,6 +89,24 @@ def mutations(text, rng, count):
     return out
 
 
+def table_mutations(text, rng, count):
+    """Like mutations(), plus damage that only a file written by hand or broken on disk has."""
+    out = []
+    for label, new in mutations(text, rng, count):
+        kind = rng.choice(["as is", "nul", "long", "bytes", "crlf"])
+        at = rng.randrange(len(new) + 1)
+        if kind == "nul":
+            new = new[:at] + b"\0" + new[at:]
+        elif kind == "long":
+            new = new[:at] + b"9" * 100000 + new[at:]
+        elif kind == "bytes":
+            new = new[:at] + bytes(rng.randrange(256) for _ in range(8)) + new[at:]
+        elif kind == "crlf":
+            new = new.replace(b"\n", b"\r")
+        out.append((label + ("" if kind == "as is" else f", {kind} at byte {at}"), new))
+    return out
+
+
 def check_args(args):
     out, i = [], 0
     while i < len(args):
@@ -93,12 +118,12 @@ def check_args(args):
     return out
 
 
-def run_one(kerf, folder, name, args, content, label, timeout):
+def run_one(kerf, folder, name, args, content, label, timeout, target=None):
     with tempfile.TemporaryDirectory(prefix="kerf_mut_") as tmp:
         work = Path(tmp) / "case"
         shutil.copytree(folder, work, symlinks=True,
                         ignore=shutil.ignore_patterns("expected.*", "README*"))
-        (work / name).write_bytes(content)
+        (work / (target or name)).write_bytes(content)
         state = Path(tmp) / "state"
         state.mkdir()
         findings = []
@@ -137,6 +162,7 @@ def main():
     p.add_argument("--per-program", type=int, default=6)
     p.add_argument("--seed", type=int, default=20261128)
     p.add_argument("--timeout", type=float, default=20)
+    p.add_argument("--tables", action="store_true")
     a = p.parse_args()
     a.kerf = str(Path(a.kerf).resolve())
     rng = random.Random(a.seed)
@@ -144,10 +170,22 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     jobs = []
     for folder, name, args in cases():
+        if a.tables:
+            tables = sorted(f for f in folder.iterdir()
+                            if f.is_file() and f.suffix.lower() in TABLE_SUFFIXES)
+            if not tables or folder.parent.name == "heidenhain":
+                continue
+            jobs.append((folder, name, args, (folder / name).read_bytes(),
+                         f"{folder.name}/{name} original", name))
+            for table in tables:
+                for label, content in table_mutations(table.read_bytes(), rng, a.per_program):
+                    jobs.append((folder, name, args, content,
+                                 f"{folder.name}/{table.name} {label}", table.name))
+            continue
         text = (folder / name).read_bytes()
-        jobs.append((folder, name, args, text, f"{folder.name}/{name} original"))
+        jobs.append((folder, name, args, text, f"{folder.name}/{name} original", name))
         for label, content in mutations(text, rng, a.per_program):
-            jobs.append((folder, name, args, content, f"{folder.name}/{name} {label}"))
+            jobs.append((folder, name, args, content, f"{folder.name}/{name} {label}", name))
     originals = [j for j in jobs if j[4].endswith(" original")]
     mutated = [j for j in jobs if not j[4].endswith(" original")]
     rng.shuffle(mutated)
@@ -162,7 +200,9 @@ def main():
                 job = next(it, None)
                 if job is None:
                     break
-                pending.add(pool.submit(run_one, a.kerf, *job, a.timeout))
+                folder, name, args, content, label, target = job
+                pending.add(pool.submit(run_one, a.kerf, folder, name, args, content, label,
+                                        a.timeout, target))
             if not pending:
                 break
             finished, pending = concurrent.futures.wait(

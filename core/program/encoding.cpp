@@ -16,10 +16,20 @@ const char* iconvName(Encoding encoding) {
             return "CP1252";
         case Encoding::Gbk:
             return "GBK";
+        case Encoding::Utf16Le:
+            return "UTF-16LE";
+        case Encoding::Utf16Be:
+            return "UTF-16BE";
         case Encoding::Utf8:
             break;
     }
     return "UTF-8";
+}
+
+std::string_view byteOrderMark(Encoding encoding) {
+    if (encoding == Encoding::Utf16Le) return "\xFF\xFE";
+    if (encoding == Encoding::Utf16Be) return "\xFE\xFF";
+    return {};
 }
 
 // Runs iconv over the whole input; an unconvertible byte sequence is replaced by `replacement` and
@@ -76,6 +86,10 @@ const char* encodingName(Encoding encoding) {
             return "cp1252";
         case Encoding::Gbk:
             return "gbk";
+        case Encoding::Utf16Le:
+            return "utf-16le";
+        case Encoding::Utf16Be:
+            return "utf-16be";
         case Encoding::Utf8:
             break;
     }
@@ -133,6 +147,8 @@ bool isValidUtf8(std::string_view bytes) {
 }
 
 Encoding detectEncoding(std::string_view bytes) {
+    if (bytes.starts_with(byteOrderMark(Encoding::Utf16Le))) return Encoding::Utf16Le;
+    if (bytes.starts_with(byteOrderMark(Encoding::Utf16Be))) return Encoding::Utf16Be;
     if (isValidUtf8(bytes)) return Encoding::Utf8;
     size_t pairedHigh = 0;
     size_t isolatedHigh = 0;
@@ -151,12 +167,15 @@ Encoding detectEncoding(std::string_view bytes) {
 
 std::string toUtf8(std::string_view bytes, Encoding encoding) {
     if (encoding == Encoding::Utf8) return std::string(bytes);
+    const std::string_view mark = byteOrderMark(encoding);
+    if (!mark.empty() && bytes.starts_with(mark)) bytes.remove_prefix(mark.size());
     return convert(bytes, "UTF-8", iconvName(encoding), "\xEF\xBF\xBD", false);
 }
 
 std::string fromUtf8(std::string_view text, Encoding encoding) {
     if (encoding == Encoding::Utf8) return std::string(text);
-    return convert(text, iconvName(encoding), "UTF-8", "?", true);
+    return std::string(byteOrderMark(encoding)) +
+           convert(text, iconvName(encoding), "UTF-8", "?", true);
 }
 
 }  // namespace kerf::program

@@ -226,6 +226,15 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
             double hi = homed ? axisFromJoint(m_model, axis, a.maxLimit, m_toolLength) : 1e9;
             double position = m_interpolated[static_cast<size_t>(axis)];
             if (m_mover.active() && m_mover.axis() != axis) break;
+            // An axis beyond a limit (limits changed, the machine moved while off) may only go
+            // back: further on is refused where it stands, never clamped back to the limit (a
+            // jump of the setpoint, or a move against the operator's direction).
+            const double outward = command.value;
+            if ((outward > 0.0 && position >= hi) || (outward < 0.0 && position <= lo)) {
+                emit(MotionEventKind::Error, joint, static_cast<double>(MotionError::SoftLimit),
+                     m_setpoint);
+                break;
+            }
             if (command.kind == OperatorCommandKind::JogContinuous) {
                 double velocity = std::clamp(command.value, -a.velocity, a.velocity);
                 m_mover.jog(axis, position, velocity, lo, hi);
@@ -234,10 +243,14 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
                                   ? m_mover.target()
                                   : position;
                 double target = base + command.value;
-                if (target < lo || target > hi) {
+                // Clamped to the limit ahead; a target still beyond the limit behind (the way
+                // back from outside) is where the operator asked to go.
+                const double upper = std::max(hi, position);
+                const double lower = std::min(lo, position);
+                if (target < lower || target > upper) {
                     emit(MotionEventKind::Error, joint, static_cast<double>(MotionError::SoftLimit),
                          m_setpoint);
-                    target = std::clamp(target, lo, hi);
+                    target = std::clamp(target, lower, upper);
                 }
                 double velocity =
                     command.kind == OperatorCommandKind::JogIncrement && command.value2 > 0.0

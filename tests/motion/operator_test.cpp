@@ -669,6 +669,50 @@ TEST(Jog, ContinuousIncrementalAndHandwheel) {
     EXPECT_NEAR(sim.status().commandedPosition[0], 400.0, 1e-9);
 }
 
+// An axis can stand beyond its soft limit (the limit was changed in the machine file, the
+// machine was pushed there while switched off): a jog may only bring it back. A jog that would
+// go further is refused where it stands; before, the setpoint jumped back to the limit at once
+// (50 mm here: 8.3 mm in one period after the servo filter, 17 times the axis velocity).
+TEST(Jog, BeyondTheSoftLimitOnlyTheWayBackMoves) {
+    TestRun run = runCommands(millConfig(), {}, at(450.0, 0.0, 0.0), {});
+    SimulatedMachine& sim = *run.sim;
+    const double period = sim.model().periodS;
+    const double fastest = sim.model().axes[0].velocity;  // mm/s
+    double largestStep = 0.0;
+    double last = sim.status().commandedPosition[0];
+    auto watch = [&](double seconds) {
+        for (double t = 0.0; t < seconds; t += period) {
+            sim.runFor(period);
+            largestStep =
+                std::max(largestStep, std::fabs(sim.status().commandedPosition[0] - last));
+            last = sim.status().commandedPosition[0];
+        }
+    };
+    ASSERT_NEAR(last, 450.0, 1e-9);
+    sim.command({OperatorCommandKind::JogContinuous, 0, 50.0});
+    watch(0.3);
+    sim.command({OperatorCommandKind::JogStop, 0});
+    watch(0.1);
+    EXPECT_NEAR(sim.status().commandedPosition[0], 450.0, 1e-9);
+    sim.command({OperatorCommandKind::JogIncrement, 0, 5.0, 100.0});
+    watch(0.3);
+    EXPECT_NEAR(sim.status().commandedPosition[0], 450.0, 1e-9);
+    sim.command({OperatorCommandKind::Handwheel, 0, 0.5});
+    watch(0.3);
+    EXPECT_NEAR(sim.status().commandedPosition[0], 450.0, 1e-9);
+    EXPECT_LE(largestStep, fastest * period + 1e-9);
+    // Back towards the work area: 10 mm as asked, then on to the limit and no further.
+    sim.command({OperatorCommandKind::JogIncrement, 0, -10.0, 100.0});
+    watch(0.5);
+    EXPECT_NEAR(sim.status().commandedPosition[0], 440.0, 1e-9);
+    sim.command({OperatorCommandKind::JogContinuous, 0, -100.0});
+    watch(0.2);
+    EXPECT_LT(sim.status().commandedPosition[0], 440.0 - 10.0);
+    sim.command({OperatorCommandKind::JogStop, 0});
+    watch(0.2);
+    EXPECT_LE(largestStep, fastest * period + 1e-9);
+}
+
 TEST(Homing, FindsTheSwitchAndEndsAtHome) {
     SimulationOptions options;
     options.motion.startHomed = false;

@@ -9,10 +9,12 @@ Expected<ProgramText> readProgramFile(const std::filesystem::path& path) {
     if (!bytes) return bytes.error();
     ProgramText program;
     program.encoding = program::detectEncoding(*bytes);
-    const size_t firstBreak = bytes->find('\n');
+    // Line ends are looked for in the converted text: in UTF-16 a CR is not the byte before LF.
+    const std::string utf8 = program::toUtf8(*bytes, program.encoding);
+    const size_t firstBreak = utf8.find('\n');
     program.crlf =
-        firstBreak != std::string::npos && firstBreak > 0 && (*bytes)[firstBreak - 1] == '\r';
-    QString text = QString::fromStdString(program::toUtf8(*bytes, program.encoding));
+        firstBreak != std::string::npos && firstBreak > 0 && utf8[firstBreak - 1] == '\r';
+    QString text = QString::fromStdString(utf8);
     if (program.crlf) text.remove(QLatin1Char('\r'));
     program.text = std::move(text);
     return program;

@@ -1,5 +1,7 @@
 #include "core/interp/fagor/variables.h"
 
+#include <unordered_map>
+
 namespace kerf::fagor {
 
 namespace {
@@ -201,8 +203,18 @@ constexpr VariableInfo kVariables[] = {
 }  // namespace
 
 const VariableInfo* findVariable(std::string_view name, VarShape shape) {
-    for (const VariableInfo& v : kVariables) {
-        if (v.shape == shape && v.name == name) return &v;
+    // Asked for every word of every expression, mostly for names that are none (P1, a label):
+    // a hash lookup instead of comparing with every entry made an endless GOTO loop take a
+    // minute to reach the default block guard.
+    static const std::unordered_multimap<std::string_view, const VariableInfo*> byName = [] {
+        std::unordered_multimap<std::string_view, const VariableInfo*> index;
+        for (const VariableInfo& v : kVariables)
+            index.emplace(v.name, &v);
+        return index;
+    }();
+    auto [first, last] = byName.equal_range(name);
+    for (; first != last; ++first) {
+        if (first->second->shape == shape) return first->second;
     }
     return nullptr;
 }

@@ -21,6 +21,9 @@ public:
     virtual const ParseProblem& problem() const = 0;
     // Whether the indented "Qnnn=value" lines below this block (first line) belong to it.
     virtual bool takesParameterLines(std::string_view text) const = 0;
+    // The reader starts a program at its beginning (the main program or a called one): its
+    // first block is its header even while a program of the same name is open (a self call).
+    virtual void startProgram() {}
 };
 
 // Makes a syntax that evaluates through `environment` (nullptr: syntax check only).

@@ -196,6 +196,7 @@ void KlartextInterpreter::startLevel(ProgramFile* program, size_t returnOffset,
     m_levels.push_back(level);
     m_inch = program->inch;
     selectProgram(*program);
+    m_activeParser->startProgram();
     m_releasedBefore = 0;
 }
 

@@ -16,6 +16,7 @@ public:
     const klartext::ParseProblem& problem() const override { return m_problem; }
     // A cycle block ("N10 G200 ...", "G251") takes the indented parameter lines below it.
     bool takesParameterLines(std::string_view text) const override;
+    void startProgram() override { m_translator.startProgram(); }
 
 private:
     // Parses one conversational block into `out` (its statement; number and skip mark are the

@@ -1,6 +1,7 @@
 #include "core/interp/tnciso/iso_translator.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/cursor.h"
@@ -124,8 +125,9 @@ bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out
         i = skipBlanks(text, i);
     }
     if (i >= text.size() || text[i] == ';' || text[i] == '*') return true;
+    const bool programStart = std::exchange(m_atProgramStart, false);
     Context c{line, text, out, m_words, m_used};
-    if (text[i] == '%') return translateProgramWord(c, i);
+    if (text[i] == '%') return translateProgramWord(c, i, programStart);
     if (upper(text[i]) == 'D' && i + 1 < text.size() && isDigit(text[i + 1])) {
         return translateDFunction(c, i);
     }
@@ -179,7 +181,7 @@ bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out
     return true;
 }
 
-bool IsoTranslator::translateProgramWord(Context& c, size_t at) {
+bool IsoTranslator::translateProgramWord(Context& c, size_t at, bool programStart) {
     std::string_view text = c.text;
     size_t end = at + 1;
     while (end < text.size() && text[end] != ' ' && text[end] != '\t' && text[end] != ';' &&
@@ -205,8 +207,9 @@ bool IsoTranslator::translateProgramWord(Context& c, size_t at) {
         return true;
     }
     // "%NAME G71" opens the program; "N99999999 %NAME G71" (or any later block with the name of
-    // the open program) ends it.
-    const bool ending = c.out.blockNumber == 99999999 || (!m_open.empty() && m_open.back() == name);
+    // the open program) ends it; the first block of a program opens it.
+    const bool ending = !programStart && (c.out.blockNumber == 99999999 ||
+                                          (!m_open.empty() && m_open.back() == name));
     b.add(ending ? "END PGM" : "BEGIN PGM", at, 1);
     b.add(name, at + 1, name.size());
     b.add(*inch ? "INCH" : "MM", at, 1);

@@ -69,11 +69,14 @@ class IsoTranslator {
 public:
     bool translate(const program::LogicalLine& line, Translation& out);
     const klartext::ParseProblem& problem() const { return m_problem; }
+    // The next block is the first of a program: a "%NAME G71" there opens it, even when NAME is
+    // the open program (a program that calls itself), instead of ending it.
+    void startProgram() { m_atProgramStart = true; }
 
 private:
     struct Context;
     bool translateWords(Context& c);
-    bool translateProgramWord(Context& c, size_t at);
+    bool translateProgramWord(Context& c, size_t at, bool programStart);
     bool translateDFunction(Context& c, size_t at);
     bool translateMotion(Context& c, int motion);
     // NX NY NZ [TX TY TZ] of a G00/G01 block: the words of the LN block it becomes.
@@ -92,6 +95,7 @@ private:
     std::vector<std::string> m_open;  // names of the programs whose header "%NAME G71" was read
     int m_motion = -1;                // modal path function: 0, 1, 2, 3, 5, 6, 10 ... 16
     bool m_incremental = false;       // G91
+    bool m_atProgramStart = false;    // no block of the program read yet (startProgram)
 };
 
 }  // namespace kerf::tnciso

@@ -32,6 +32,29 @@ TEST(Encoding, RejectsBrokenUtf8) {
     EXPECT_TRUE(isValidUtf8("plain ascii text that is longer than eight bytes"));
 }
 
+// Windows editors save "Unicode" text as UTF-16 with a byte order mark. It was read byte by
+// byte: every other byte a NUL, and an error "unexpected '\0'" on every line.
+TEST(Encoding, Utf16WithAByteOrderMarkIsReadAndSavedAsIt) {
+    using namespace std::string_literals;
+    const std::string little =
+        "\xFF\xFE"
+        "L\0 \0X\0+\0"
+        "1\0\xFC\0\n\0"s;  // "L X+1ü\n"
+    const std::string big =
+        "\xFE\xFF"
+        "\0L\0 \0X\0+\0"
+        "1\0\xFC\0\n"s;
+    EXPECT_EQ(detectEncoding(little), Encoding::Utf16Le);
+    EXPECT_EQ(detectEncoding(big), Encoding::Utf16Be);
+    EXPECT_EQ(toUtf8(little, Encoding::Utf16Le), "L X+1\xC3\xBC\n");
+    EXPECT_EQ(toUtf8(big, Encoding::Utf16Be), "L X+1\xC3\xBC\n");
+    EXPECT_EQ(fromUtf8("L X+1\xC3\xBC\n", Encoding::Utf16Le), little);
+    EXPECT_EQ(fromUtf8("L X+1\xC3\xBC\n", Encoding::Utf16Be), big);
+    auto source = SourceText::fromString(little, "u.H");
+    EXPECT_EQ(source->encoding(), Encoding::Utf16Le);
+    EXPECT_EQ(source->text(), "L X+1\xC3\xBC\n");
+}
+
 TEST(SourceText, ConvertsOnLoadAndStripsBom) {
     auto cp = SourceText::fromString("; \xFC\n", "a.H");
     EXPECT_EQ(cp->encoding(), Encoding::Cp1252);

@@ -55,6 +55,32 @@ TEST(ProgramPanel, SaveKeepsLineEndsAndEncoding) {
               "0 BEGIN PGM A MM\r\n1 L Z+50 R0 FMAX ; caf\xE9!\r\n2 END PGM A MM\r\n");
 }
 
+// A program saved as "Unicode" by a Windows editor: UTF-16 little endian with a byte order mark
+// and CRLF. It was shown as bytes (a NUL between the letters, an error on every line).
+TEST(ProgramPanel, AUtf16ProgramIsShownAsTextAndSavedAsItWas) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_utf16");
+    auto utf16 = [](std::string_view ascii) {
+        std::string bytes = "\xFF\xFE";
+        for (char c : ascii) {
+            bytes += c;
+            bytes += '\0';
+        }
+        return bytes;
+    };
+    writeFile(dir / "U.H", utf16("0 BEGIN PGM U MM\r\n1 L Z+50 R0 FMAX\r\n2 END PGM U MM\r\n"));
+    ProgramPanel panel(settingsIn(dir));
+    ASSERT_TRUE(panel.open(dir / "U.H"));
+    EXPECT_EQ(panel.editor()->document()->findBlockByNumber(1).text(),
+              QStringLiteral("1 L Z+50 R0 FMAX"));
+    QTextCursor cursor(panel.editor()->document()->findBlockByNumber(1));
+    cursor.movePosition(QTextCursor::EndOfBlock);
+    cursor.insertText(" M3");
+    ASSERT_TRUE(panel.save());
+    EXPECT_EQ(readFile(dir / "U.H"),
+              utf16("0 BEGIN PGM U MM\r\n1 L Z+50 R0 FMAX M3\r\n2 END PGM U MM\r\n"));
+}
+
 TEST(ProgramPanel, AutosaveSurvivesACrashAndIsOfferedOnReopen) {
     test::testApp();
     const auto dir = kerf::test::uniqueTempDir("hmi_panel_recovery");

@@ -136,8 +136,11 @@ TEST(TouchSizes, FileManagerAndMessageListRowsAreFingerSized) {
     ASSERT_TRUE(window.files()->selectPath(dir / "A.H"));
     auto* tree = window.files()->findChild<QTreeView*>("fileTree");
     ASSERT_NE(tree, nullptr);
-    // The file system model lists the folder in the background.
-    for (int i = 0; i < 400 && !tree->visualRect(tree->currentIndex()).isValid(); ++i) {
+    // The file system model lists the folder in the background (a thread: seconds on a loaded
+    // host, so a deadline rather than a count of short sleeps).
+    const auto listed = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!tree->visualRect(tree->currentIndex()).isValid() &&
+           std::chrono::steady_clock::now() < listed) {
         QApplication::processEvents();
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }

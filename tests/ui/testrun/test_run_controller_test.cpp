@@ -1,5 +1,6 @@
 #include "ui/testrun/test_run_controller.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
 #include <cmath>
@@ -133,13 +134,17 @@ TEST(TestRun, SpeedSetsHowFastMachiningTimePassesAndTheToolFollowsThePath) {
     EXPECT_EQ(f.controller.playbackTimeS(), 0.0);
     EXPECT_EQ(f.controller.state(), TestRunController::State::Ready);
 
-    // With the timer, real time passes: a few ticks at x1 move the playback on by about as much.
+    // With the timer, real time passes: a few ticks at x1 move the playback on by as much as
+    // the clock, never more (measured, not assumed: a loaded host stretches the 300 ms wait).
     f.controller.setTickMs(20);
     f.controller.setSpeed(TestRunSpeed::Real);
+    QElapsedTimer clock;
+    clock.start();
     f.controller.play();
     QTest::qWait(300);
+    const double elapsedS = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
     EXPECT_GT(f.controller.playbackTimeS(), 0.1);
-    EXPECT_LT(f.controller.playbackTimeS(), 5.0);
+    EXPECT_LE(f.controller.playbackTimeS(), elapsedS);
     f.controller.setSpeed(TestRunSpeed::Max);
     EXPECT_EQ(f.controller.state(), TestRunController::State::Finished);
 }

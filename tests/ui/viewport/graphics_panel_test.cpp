@@ -11,25 +11,13 @@
 #include <gtest/gtest.h>
 
 #include "core/machine/machine_loader.h"
-#include "graphics/headless/virtual_display.h"
 #include "motion/sim/simulated_clock.h"
 #include "test_paths.h"
+#include "tests/ui/viewport/viewport_test_app.h"
 #include "ui/viewport/viewport_widget.h"
 
 namespace kerf::ui {
 namespace {
-
-QApplication& application() {
-    static std::shared_ptr<graphics::VirtualDisplay> display = [] {
-        auto ensured = graphics::VirtualDisplay::ensure();
-        return ensured ? *ensured : nullptr;
-    }();
-    static int argc = 1;
-    static char name[] = "test_ui_viewport";
-    static char* argv[] = {name, nullptr};
-    static QApplication app(argc, argv);
-    return app;
-}
 
 // Two drilled holes, then a slot; line n of the file is block n - 1. Line 9 is the only move
 // between X+15 and X+30 (a rapid at Z+5 along Y+20).
@@ -59,7 +47,7 @@ TEST(GraphicsPanel, FormatsDurationsAsHoursMinutesSeconds) {
 }
 
 TEST(GraphicsPanel, ShowsTheTestRunPicksBlocksAndLightsUpTheCursorBlock) {
-    application();
+    test::viewportTestApp();
     const auto root = kerf::test::uniqueTempDir("graphics_panel");
     std::filesystem::copy_file(
         std::filesystem::path(KERF_SOURCE_DIR) / "tests/graphics/programs/TOOL.T", root / "TOOL.T");

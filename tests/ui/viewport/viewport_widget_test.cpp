@@ -12,28 +12,16 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <gtest/gtest.h>
 
-#include "graphics/headless/virtual_display.h"
 #include "graphics/stock/progressive_stock.h"
 #include "graphics/toolpath/toolpath_data.h"
 #include "graphics/toolpath/toolpath_lod.h"
 #include "tests/graphics/canon_builder.h"
+#include "tests/ui/viewport/viewport_test_app.h"
 
 namespace kerf::ui {
 namespace {
 
 using graphics::test::CanonBuilder;
-
-QApplication& application() {
-    static std::shared_ptr<graphics::VirtualDisplay> display = [] {
-        auto ensured = graphics::VirtualDisplay::ensure();
-        return ensured ? *ensured : nullptr;
-    }();
-    static int argc = 1;
-    static char name[] = "test_ui_viewport";
-    static char* argv[] = {name, nullptr};
-    static QApplication app(argc, argv);
-    return app;
-}
 
 struct Fixture {
     graphics::Scene scene;
@@ -61,7 +49,7 @@ CanonBuilder square() {
 }
 
 TEST(ViewportWidget, ShowsTheToolpathAndPicksTheClickedBlock) {
-    application();
+    test::viewportTestApp();
     Fixture f(square());
     f.widget.viewButton(graphics::View::Top)->click();
     QApplication::processEvents();
@@ -99,7 +87,7 @@ TEST(ViewportWidget, ShowsTheToolpathAndPicksTheClickedBlock) {
 }
 
 TEST(ViewportWidget, HighlightsAndZoomsAndFollowsTheStock) {
-    application();
+    test::viewportTestApp();
     CanonBuilder b = square();
     b.box(Vec3(-10, -10, -10), Vec3(110, 110, 0)).tool(1, 4.0).rapid(50, 50, 5).line(50, 50, -3);
     Fixture f(b);
