@@ -374,5 +374,120 @@ TEST(PocketCycles, PolygonStudWithNegativeSideAllowanceIsMadeSmaller) {
     EXPECT_NEAR(nearest, 23.5, 1e-9);
 }
 
+// Obsolete finishing cycles 212-215 (docs/cycles.md): centre Q216/Q217 = (50, 40), surface 0,
+// set-up clearance 2, 2nd set-up clearance 20, depth -10 in Q202 = 5 mm infeeds, plunge F150,
+// milling F500; tool R4 starting at (0, 0, 50).
+CycleValues obsoleteFinishing(std::initializer_list<std::pair<uint16_t, double>> shape) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{200, 2},  {201, -10}, {206, 150},
+                                                  {202, 5},  {207, 500}, {203, 0},
+                                                  {204, 20}, {216, 50},  {217, 40}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    for (auto [q, value] : shape)
+        v.set(q, value);
+    return v;
+}
+
+// Signed distance of p from the rounded rectangle with half sides a x b and corner radius r
+// centred on (50, 40): negative inside.
+double fromRoundedRectangle(const Vec3& p, double a, double b, double r) {
+    const double qx = std::fabs(p.x() - 50.0) - (a - r);
+    const double qy = std::fabs(p.y() - 40.0) - (b - r);
+    return std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - r;
+}
+
+// What every finishing cycle shows: first up to nothing (the start is above the 2nd set-up
+// clearance) and over to the centre at rapid; the walls at -5 and -10 only (two infeeds), each
+// reached at the plunge feed; the end at the centre at surface + 2nd set-up clearance = 20.
+// Returns the endpoints of the feed moves at -10.
+std::vector<Vec3> checkFinishing(int cycle, const CycleValues& v) {
+    Recorder out;
+    EXPECT_FALSE(run(cycle, v, toolR4(), out));
+    std::vector<Vec3> atFloor;
+    if (out.moves.size() < 4) {
+        ADD_FAILURE() << cycle << ": " << out.moves.size() << " moves";
+        return atFloor;
+    }
+    EXPECT_EQ(out.moves[0].kind, Move::Rapid);
+    EXPECT_TRUE(out.moves[0].target.isApprox(Vec3(50, 40, 50))) << out.moves[0].target.transpose();
+    EXPECT_TRUE(out.moves.back().target.isApprox(Vec3(50, 40, 20)))
+        << out.moves.back().target.transpose();
+    EXPECT_NEAR(out.lowest(), -10.0, 1e-9);
+    std::vector<double> plunges;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Rapid) continue;
+        const double w = m.target.z();
+        EXPECT_TRUE(std::fabs(w + 5.0) < 1e-9 || std::fabs(w + 10.0) < 1e-9) << w;
+        if (m.feed.value == 150.0)
+            plunges.push_back(w);
+        else
+            EXPECT_EQ(m.feed.value, 500.0);
+        if (std::fabs(w + 10.0) < 1e-9) atFloor.push_back(m.target);
+    }
+    EXPECT_EQ(plunges, (std::vector<double>{-5.0, -10.0}));
+    return atFloor;
+}
+
+// 212: pocket 60 x 40, R5, allowance 0.5: the tool centre stays R4 inside the wall and touches
+// it (distance -4 from the finished rounded rectangle).
+TEST(ObsoleteCycles, PocketFinishing212FinishesTheWallsAtSize) {
+    const auto floor =
+        checkFinishing(212, obsoleteFinishing({{218, 60}, {219, 40}, {220, 5}, {221, 0.5}}));
+    ASSERT_FALSE(floor.empty());
+    double outermost = -1e9;
+    for (const Vec3& p : floor)
+        outermost = std::max(outermost, fromRoundedRectangle(p, 30, 20, 5));
+    EXPECT_NEAR(outermost, -4.0, 1e-6);
+}
+
+// An allowance of 0 still finishes the walls (the old cycle does).
+TEST(ObsoleteCycles, PocketFinishingWithoutAllowanceStillFinishes) {
+    const auto floor =
+        checkFinishing(212, obsoleteFinishing({{218, 60}, {219, 40}, {220, 5}, {221, 0}}));
+    EXPECT_FALSE(floor.empty());
+}
+
+// 213: stud 60 x 40, R5, blank allowance 2: the tool centre stays R4 outside the stud and
+// touches it.
+TEST(ObsoleteCycles, StudFinishing213FinishesTheWallsAtSize) {
+    const auto floor =
+        checkFinishing(213, obsoleteFinishing({{218, 60}, {219, 40}, {220, 5}, {221, 2}}));
+    ASSERT_FALSE(floor.empty());
+    double innermost = 1e9;
+    for (const Vec3& p : floor)
+        innermost = std::min(innermost, fromRoundedRectangle(p, 30, 20, 5));
+    EXPECT_NEAR(innermost, 4.0, 1e-6);
+}
+
+// 214: pocket from the blank diameter 46 to 50: the tool centre on radius 25 - 4 = 21 at most.
+TEST(ObsoleteCycles, CircularPocketFinishing214FinishesTheWallAtSize) {
+    const auto floor = checkFinishing(214, obsoleteFinishing({{222, 46}, {223, 50}}));
+    ASSERT_FALSE(floor.empty());
+    double outermost = 0.0;
+    for (const Vec3& p : floor)
+        outermost = std::max(outermost, std::hypot(p.x() - 50, p.y() - 40));
+    EXPECT_NEAR(outermost, 21.0, 1e-6);
+}
+
+// 215: stud from the blank diameter 54 to 50: the tool centre on radius 25 + 4 = 29 at least.
+TEST(ObsoleteCycles, CircularStudFinishing215FinishesTheWallAtSize) {
+    const auto floor = checkFinishing(215, obsoleteFinishing({{222, 54}, {223, 50}}));
+    ASSERT_FALSE(floor.empty());
+    double innermost = 1e9;
+    for (const Vec3& p : floor)
+        innermost = std::min(innermost, std::hypot(p.x() - 50, p.y() - 40));
+    EXPECT_NEAR(innermost, 29.0, 1e-6);
+}
+
+// The obsolete cycles run but the menus do not offer them.
+TEST(ObsoleteCycles, FoundButNotListed) {
+    for (int n : {212, 213, 214, 215}) {
+        ASSERT_NE(findCycle(n), nullptr) << n;
+        for (const CycleDescriptor* c : allCycles())
+            EXPECT_NE(c->number, n);
+    }
+}
+
 }  // namespace
 }  // namespace kerf::cycles
