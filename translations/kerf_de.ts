@@ -8669,6 +8669,26 @@ wählen</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>das simulierte Werkstück enthält nur die Schnitte der ersten {1} Werkzeugbewegungen: spätere Bewegungen haben kein Material abgetragen</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Aufmaß in der 1. Achse, vom Schruppen gelassen</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>TASCHE SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>ZAPFEN SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>KREISTASCHE SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>KREISZAPFEN SCHLICHTEN</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

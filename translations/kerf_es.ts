@@ -8669,6 +8669,26 @@ solución</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>la pieza simulada solo contiene los cortes de los primeros {1} movimientos de herramienta: los movimientos posteriores no han arrancado material</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Sobremedida en el 1er eje dejada por el desbaste</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>ACABADO CAJERA</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>ACABADO ISLA</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>ACABADO CAJERA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>ACABADO ISLA CIRCULAR</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

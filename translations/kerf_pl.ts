@@ -8672,6 +8672,26 @@ rozwiązanie</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>symulowany przedmiot zawiera tylko skrawanie pierwszych {1} ruchów narzędzia: późniejsze ruchy nie usunęły materiału</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Naddatek w 1. osi pozostawiony przez obróbkę zgrubną</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>WYKAŃCZANIE KIESZENI</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>WYKAŃCZANIE CZOPU</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>WYKAŃCZANIE KIESZENI OKRĄGŁEJ</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>WYKAŃCZANIE CZOPU OKRĄGŁEGO</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8669,6 +8669,26 @@ solução</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>a peça simulada contém apenas os cortes dos primeiros {1} movimentos da ferramenta: os movimentos seguintes não removeram material</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Sobremetal no 1.º eixo deixado pelo desbaste</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>ACABAMENTO DE CAIXA</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>ACABAMENTO DE ILHA</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>ACABAMENTO DE CAIXA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>ACABAMENTO DE ILHA CIRCULAR</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
