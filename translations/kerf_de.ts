@@ -8689,6 +8689,22 @@ wählen</translation>
         <source>CIRCULAR STUD FINISHING</source>
         <translation>KREISZAPFEN SCHLICHTEN</translation>
     </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Anzahl Schnitte</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Vorschub zum Startpunkt in der Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Vorschub für den Querversatz (FMAX: Eilgang)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>ABZEILEN</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8689,6 +8689,22 @@ solución</translation>
         <source>CIRCULAR STUD FINISHING</source>
         <translation>ACABADO ISLA CIRCULAR</translation>
     </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Número de cortes</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Avance hasta el punto inicial en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Avance para el desplazamiento lateral (FMAX: rápido)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>FRESADO PLANO POR LÍNEAS</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8692,6 +8692,22 @@ rozwiązanie</translation>
         <source>CIRCULAR STUD FINISHING</source>
         <translation>WYKAŃCZANIE CZOPU OKRĄGŁEGO</translation>
     </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Liczba przejść</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Posuw do punktu startu w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Posuw dla przesunięcia bocznego (FMAX: bieg szybki)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>FREZOWANIE WIELOPRZEJŚCIOWE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

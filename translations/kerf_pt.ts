@@ -8689,6 +8689,22 @@ solução</translation>
         <source>CIRCULAR STUD FINISHING</source>
         <translation>ACABAMENTO DE ILHA CIRCULAR</translation>
     </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Número de cortes</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Avanço até ao ponto inicial no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Avanço para o deslocamento lateral (FMAX: rápido)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>FRESAGEM EM VÁRIAS PASSAGENS</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -482,11 +482,52 @@ TEST(ObsoleteCycles, CircularStudFinishing215FinishesTheWallAtSize) {
 
 // The obsolete cycles run but the menus do not offer them.
 TEST(ObsoleteCycles, FoundButNotListed) {
-    for (int n : {212, 213, 214, 215}) {
+    for (int n : {212, 213, 214, 215, 230}) {
         ASSERT_NE(findCycle(n), nullptr) << n;
         for (const CycleDescriptor* c : allCycles())
             EXPECT_NE(c->number, n);
     }
+}
+
+// 230: start (10, 20) at Z-2, 60 x 30 in 4 cuts (stepover 30 / 3 = 10), tool R4 from (0, 0, 50):
+// in the plane to R before the start edge (6, 20), down to the set-up clearance -2 + 2 = 0, at
+// Q206 to -2; cuts from X6 to 10 + 60 + 4 = 74 and back at Q207, stepovers at Q209; up to 0.
+TEST(ObsoleteCycles, MultipassMilling230CutsToAndFro) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{225, 10},  {226, 20}, {227, -2},  {218, 60},
+                                                  {219, 30},  {240, 4},  {206, 100}, {207, 400},
+                                                  {209, 300}, {200, 2}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(230, v, toolR4(), out));
+    const std::vector<std::pair<Vec3, double>> expected = {
+        {{6, 20, 50}, 0},    {{6, 20, 0}, 0},    {{6, 20, -2}, 100}, {{74, 20, -2}, 400},
+        {{74, 30, -2}, 300}, {{6, 30, -2}, 400}, {{6, 40, -2}, 300}, {{74, 40, -2}, 400},
+        {{74, 50, -2}, 300}, {{6, 50, -2}, 400}, {{6, 50, 0}, 0}};
+    ASSERT_EQ(out.moves.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_LT((out.moves[i].target - expected[i].first).norm(), 1e-9)
+            << i << ": " << out.moves[i].target.transpose();
+        EXPECT_EQ(out.moves[i].kind == Move::Rapid, expected[i].second == 0.0) << i;
+        if (expected[i].second != 0.0) {
+            EXPECT_EQ(out.moves[i].feed.value, expected[i].second) << i;
+        }
+    }
+}
+
+// One cut: no stepover, the single cut on the starting line.
+TEST(ObsoleteCycles, MultipassMillingWithOneCut) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{225, 0},   {226, 0}, {227, 0},   {218, 20},
+                                                  {219, 30},  {240, 1}, {206, 100}, {207, 400},
+                                                  {209, 300}, {200, 2}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(230, v, toolR4(), out));
+    ASSERT_EQ(out.moves.size(), 5u);
+    EXPECT_TRUE((out.moves[3].target - Vec3(24, 0, 0)).norm() < 1e-9);
 }
 
 }  // namespace
