@@ -8705,6 +8705,10 @@ wählen</translation>
         <source>MULTIPASS MILLING</source>
         <translation>ABZEILEN</translation>
     </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>NUT PENDELND</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

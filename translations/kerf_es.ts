@@ -8705,6 +8705,10 @@ solución</translation>
         <source>MULTIPASS MILLING</source>
         <translation>FRESADO PLANO POR LÍNEAS</translation>
     </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>RANURA PENDULAR</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

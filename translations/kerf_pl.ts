@@ -8708,6 +8708,10 @@ rozwiązanie</translation>
         <source>MULTIPASS MILLING</source>
         <translation>FREZOWANIE WIELOPRZEJŚCIOWE</translation>
     </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>ROWEK RUCHEM WAHADŁOWYM</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

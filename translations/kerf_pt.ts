@@ -8705,6 +8705,10 @@ solução</translation>
         <source>MULTIPASS MILLING</source>
         <translation>FRESAGEM EM VÁRIAS PASSAGENS</translation>
     </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>RANHURA PENDULAR</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

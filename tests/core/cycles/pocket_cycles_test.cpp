@@ -482,7 +482,7 @@ TEST(ObsoleteCycles, CircularStudFinishing215FinishesTheWallAtSize) {
 
 // The obsolete cycles run but the menus do not offer them.
 TEST(ObsoleteCycles, FoundButNotListed) {
-    for (int n : {212, 213, 214, 215, 230}) {
+    for (int n : {210, 211, 212, 213, 214, 215, 230}) {
         ASSERT_NE(findCycle(n), nullptr) << n;
         for (const CycleDescriptor* c : allCycles())
             EXPECT_NE(c->number, n);
@@ -528,6 +528,110 @@ TEST(ObsoleteCycles, MultipassMillingWithOneCut) {
     ASSERT_FALSE(run(230, v, toolR4(), out));
     ASSERT_EQ(out.moves.size(), 5u);
     EXPECT_TRUE((out.moves[3].target - Vec3(24, 0, 0)).norm() < 1e-9);
+}
+
+// 210: slot 60 x 10 centred on (50, 40) along X, depth -6 from Z0, Q202 = 4 per to-and-fro
+// (2 per stroke), roughing only (Q215 = 1), tool R4 from (0, 0, 50). The end circles' centres
+// are 60 / 2 - 10 / 2 = 25 from the centre: X25 and X75. Over X25 at rapid, down to the set-up
+// clearance Z2, at Q206 F150 to Z0; strokes to X75 Z-2, X25 Z-4, X75 Z-6, one at the depth back
+// to X25; at Q207 F500 to the centre; up to the 2nd set-up clearance Z20.
+CycleValues slot210(int operation) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {200, 2},  {201, -6}, {207, 500}, {202, 4},  {215, operation}, {203, 0}, {204, 20},
+        {216, 50}, {217, 40}, {218, 60},  {219, 10}, {224, 0},         {338, 0}, {206, 150}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    return v;
+}
+
+void expectMoves(const Recorder& out, const std::vector<std::pair<Vec3, double>>& expected) {
+    ASSERT_EQ(out.moves.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_LT((out.moves[i].target - expected[i].first).norm(), 1e-9)
+            << i << ": " << out.moves[i].target.transpose();
+        EXPECT_EQ(out.moves[i].kind == Move::Rapid, expected[i].second == 0.0) << i;
+        if (expected[i].second != 0.0) {
+            EXPECT_EQ(out.moves[i].feed.value, expected[i].second) << i;
+        }
+    }
+}
+
+TEST(ObsoleteCycles, SlotRoughing210ReciprocatesAlongTheCentreLine) {
+    Recorder out;
+    ASSERT_FALSE(run(210, slot210(1), toolR4(), out));
+    expectMoves(out, {{{25, 40, 50}, 0},
+                      {{25, 40, 2}, 0},
+                      {{25, 40, 0}, 150},
+                      {{75, 40, -2}, 150},
+                      {{25, 40, -4}, 150},
+                      {{75, 40, -6}, 150},
+                      {{25, 40, -6}, 150},
+                      {{50, 40, -6}, 500},
+                      {{50, 40, 20}, 0}});
+}
+
+// Roughing and finishing: the walls are finished, the tool centre reaching 30 - 4 = 26 from the
+// centre along the slot (the roughing only 25) and 5 - 4 = 1 across it.
+TEST(ObsoleteCycles, Slot210FinishesTheWallsAtSize) {
+    Recorder out;
+    ASSERT_FALSE(run(210, slot210(0), toolR4(), out));
+    double along = 0.0;
+    double across = 0.0;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Rapid || std::fabs(m.target.z() + 6.0) > 1e-9) continue;
+        along = std::max(along, std::fabs(m.target.x() - 50.0));
+        across = std::max(across, std::fabs(m.target.y() - 40.0));
+    }
+    EXPECT_NEAR(along, 26.0, 1e-6);
+    EXPECT_NEAR(across, 1.0, 1e-6);
+    EXPECT_NEAR(out.lowest(), -6.0, 1e-9);
+}
+
+// A tool wider than the slot is refused.
+TEST(ObsoleteCycles, Slot210RefusesAToolWiderThanTheSlot) {
+    CycleValues v = slot210(1);
+    v.set(219, 7.0);
+    Recorder out;
+    const auto error = run(210, v, toolR4(), out);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->args.at(0), "210");
+}
+
+// 211: pitch circle 100 about (50, 40), from 0 deg over 90 deg, width 10, roughing only: the
+// strokes are quarter arcs between (100, 40) and (50, 90), dropping 2 each, as in 210.
+TEST(ObsoleteCycles, CircularSlotRoughing211ReciprocatesAlongThePitchCircle) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {200, 2},  {201, -6},  {207, 500}, {202, 4}, {215, 1},  {203, 0}, {204, 20}, {216, 50},
+        {217, 40}, {244, 100}, {219, 10},  {245, 0}, {248, 90}, {338, 0}, {206, 150}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(211, v, toolR4(), out));
+    expectMoves(out, {{{100, 40, 50}, 0},
+                      {{100, 40, 2}, 0},
+                      {{100, 40, 0}, 150},
+                      {{50, 90, -2}, 150},
+                      {{100, 40, -4}, 150},
+                      {{50, 90, -6}, 150},
+                      {{100, 40, -6}, 150},
+                      {{100, 40, 20}, 0}});
+    for (size_t i = 3; i < 7; ++i) {
+        EXPECT_EQ(out.moves[i].kind, Move::Arc) << i;
+        EXPECT_LT((out.moves[i].centre - Vec2(50, 40)).norm(), 1e-9) << i;
+    }
+}
+
+// Without Q206 (older software; the interpreter passes its default 0) the plunge runs at Q207.
+TEST(ObsoleteCycles, SlotWithoutQ206PlungesAtTheMillingFeed) {
+    CycleValues v = slot210(1);
+    v.set(206, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(210, v, toolR4(), out));
+    ASSERT_GE(out.moves.size(), 4u);
+    EXPECT_EQ(out.moves[2].feed.value, 500.0);
+    EXPECT_EQ(out.moves[3].feed.value, 500.0);
 }
 
 }  // namespace
