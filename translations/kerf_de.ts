@@ -8709,6 +8709,50 @@ wählen</translation>
         <source>SLOT RECIP. PLNG.</source>
         <translation>NUT PENDELND</translation>
     </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Startpunkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2. Punkt in der 1. Achse</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2. Punkt in der 2. Achse</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2. Punkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3. Punkt in der 1. Achse</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3. Punkt in der 2. Achse</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3. Punkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4. Punkt in der 1. Achse</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4. Punkt in der 2. Achse</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4. Punkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>REGELFLÄCHE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8709,6 +8709,50 @@ solución</translation>
         <source>SLOT RECIP. PLNG.</source>
         <translation>RANURA PENDULAR</translation>
     </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Punto inicial en el 3er eje</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2º punto en el 1er eje</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2º punto en el 2º eje</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2º punto en el 3er eje</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3er punto en el 1er eje</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3er punto en el 2º eje</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3er punto en el 3er eje</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4º punto en el 1er eje</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4º punto en el 2º eje</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4º punto en el 3er eje</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>SUPERFICIE REGLADA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8712,6 +8712,50 @@ rozwiązanie</translation>
         <source>SLOT RECIP. PLNG.</source>
         <translation>ROWEK RUCHEM WAHADŁOWYM</translation>
     </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Punkt startu w 3. osi</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2. punkt w 1. osi</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2. punkt w 2. osi</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2. punkt w 3. osi</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3. punkt w 1. osi</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3. punkt w 2. osi</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3. punkt w 3. osi</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4. punkt w 1. osi</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4. punkt w 2. osi</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4. punkt w 3. osi</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>POWIERZCHNIA PROSTOKREŚLNA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8709,6 +8709,50 @@ solução</translation>
         <source>SLOT RECIP. PLNG.</source>
         <translation>RANHURA PENDULAR</translation>
     </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Ponto inicial no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2.º ponto no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2.º ponto no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2.º ponto no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3.º ponto no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3.º ponto no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3.º ponto no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4.º ponto no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4.º ponto no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4.º ponto no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>SUPERFÍCIE REGRADA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

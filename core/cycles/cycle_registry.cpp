@@ -23,8 +23,8 @@ const std::array<const CycleDescriptor*, 55> kCycles = {
     &kCycle275, &kCycle233, &kCycle276, &kCycle27,  &kCycle28,  &kCycle29,  &kCycle39};
 
 // Run for old programs, not offered in the menus.
-const std::array<const CycleDescriptor*, 7> kObsoleteCycles = {
-    &kCycle210, &kCycle211, &kCycle212, &kCycle213, &kCycle214, &kCycle215, &kCycle230};
+const std::array<const CycleDescriptor*, 8> kObsoleteCycles = {
+    &kCycle210, &kCycle211, &kCycle212, &kCycle213, &kCycle214, &kCycle215, &kCycle230, &kCycle231};
 
 }  // namespace
 

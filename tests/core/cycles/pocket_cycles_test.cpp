@@ -482,7 +482,7 @@ TEST(ObsoleteCycles, CircularStudFinishing215FinishesTheWallAtSize) {
 
 // The obsolete cycles run but the menus do not offer them.
 TEST(ObsoleteCycles, FoundButNotListed) {
-    for (int n : {210, 211, 212, 213, 214, 215, 230}) {
+    for (int n : {210, 211, 212, 213, 214, 215, 230, 231}) {
         ASSERT_NE(findCycle(n), nullptr) << n;
         for (const CycleDescriptor* c : allCycles())
             EXPECT_NE(c->number, n);
@@ -632,6 +632,30 @@ TEST(ObsoleteCycles, SlotWithoutQ206PlungesAtTheMillingFeed) {
     ASSERT_GE(out.moves.size(), 4u);
     EXPECT_EQ(out.moves[2].feed.value, 500.0);
     EXPECT_EQ(out.moves[3].feed.value, 500.0);
+}
+
+// 231: points 1 (10, 5, 0), 2 (110, 5, -10), 3 (110, 55, -10), 4 (10, 55, 0), 3 cuts at the
+// fractions 0, 1/2, 1 of the edges 1-4 and 2-3: (10, 5, 0)-(110, 5, -10), (110, 30, -10)-
+// (10, 30, 0), (10, 55, 0)-(110, 55, -10), joined along the edges; before: over point 1, down to
+// 0 + 2 at rapid, at F400 onto it; after: up to the highest point + 2 = Z2.
+TEST(ObsoleteCycles, RuledSurface231CutsBetweenTheEdges) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {225, 10},  {226, 5},  {227, 0},  {228, 110}, {229, 5}, {230, -10}, {231, 110}, {232, 55},
+        {233, -10}, {234, 10}, {235, 55}, {236, 0},   {240, 3}, {207, 400}, {200, 2}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(231, v, toolR4(), out));
+    expectMoves(out, {{{10, 5, 50}, 0},
+                      {{10, 5, 2}, 0},
+                      {{10, 5, 0}, 400},
+                      {{110, 5, -10}, 400},
+                      {{110, 30, -10}, 400},
+                      {{10, 30, 0}, 400},
+                      {{10, 55, 0}, 400},
+                      {{110, 55, -10}, 400},
+                      {{110, 55, 2}, 0}});
 }
 
 }  // namespace
