@@ -87,6 +87,7 @@ const CycleDescriptor kCycle230{.number = 230,
                                 .name = KERF_TR_NOOP("MULTIPASS MILLING"),
                                 .group = CycleGroup::Special,
                                 .parameters = kParameters,
-                                .expand = expand};
+                                .expand = expand,
+                                .obsolete = true};
 
 }  // namespace kerf::cycles

@@ -82,6 +82,7 @@ const CycleDescriptor kCycle231{.number = 231,
                                 .name = KERF_TR_NOOP("RULED SURFACE"),
                                 .group = CycleGroup::Special,
                                 .parameters = kParameters,
-                                .expand = expand};
+                                .expand = expand,
+                                .obsolete = true};
 
 }  // namespace kerf::cycles

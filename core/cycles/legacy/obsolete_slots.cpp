@@ -209,12 +209,12 @@ const CycleDescriptor kCycle210{.number = 210,
                                 .group = CycleGroup::PocketsStudsSlots,
                                 .parameters = kSlotParameters,
                                 .expand = expand210,
-                                .takesPatternClearances = true};
+                                .obsolete = true};
 const CycleDescriptor kCycle211{.number = 211,
                                 .name = KERF_TR_NOOP("CIRCULAR SLOT"),
                                 .group = CycleGroup::PocketsStudsSlots,
                                 .parameters = kCircularSlotParameters,
                                 .expand = expand211,
-                                .takesPatternClearances = true};
+                                .obsolete = true};
 
 }  // namespace kerf::cycles

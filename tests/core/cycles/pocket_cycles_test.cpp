@@ -482,8 +482,11 @@ TEST(ObsoleteCycles, CircularStudFinishing215FinishesTheWallAtSize) {
 
 // The obsolete cycles run but the menus do not offer them.
 TEST(ObsoleteCycles, FoundButNotListed) {
+    for (const CycleDescriptor* c : allCycles())
+        EXPECT_FALSE(c->obsolete) << c->number;
     for (int n : {210, 211, 212, 213, 214, 215, 230, 231}) {
         ASSERT_NE(findCycle(n), nullptr) << n;
+        EXPECT_TRUE(findCycle(n)->obsolete) << n;
         for (const CycleDescriptor* c : allCycles())
             EXPECT_NE(c->number, n);
     }
