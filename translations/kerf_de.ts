@@ -8669,6 +8669,90 @@ wählen</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>das simulierte Werkstück enthält nur die Schnitte der ersten {1} Werkzeugbewegungen: spätere Bewegungen haben kein Material abgetragen</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Aufmaß in der 1. Achse, vom Schruppen gelassen</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>TASCHE SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>ZAPFEN SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>KREISTASCHE SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>KREISZAPFEN SCHLICHTEN</translation>
+    </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Anzahl Schnitte</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Vorschub zum Startpunkt in der Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Vorschub für den Querversatz (FMAX: Eilgang)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>ABZEILEN</translation>
+    </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>NUT PENDELND</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Startpunkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2. Punkt in der 1. Achse</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2. Punkt in der 2. Achse</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2. Punkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3. Punkt in der 1. Achse</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3. Punkt in der 2. Achse</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3. Punkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4. Punkt in der 1. Achse</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4. Punkt in der 2. Achse</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4. Punkt in der 3. Achse</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>REGELFLÄCHE</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

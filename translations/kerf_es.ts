@@ -8669,6 +8669,90 @@ solución</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>la pieza simulada solo contiene los cortes de los primeros {1} movimientos de herramienta: los movimientos posteriores no han arrancado material</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Sobremedida en el 1er eje dejada por el desbaste</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>ACABADO CAJERA</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>ACABADO ISLA</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>ACABADO CAJERA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>ACABADO ISLA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Número de cortes</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Avance hasta el punto inicial en el eje de la herramienta</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Avance para el desplazamiento lateral (FMAX: rápido)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>FRESADO PLANO POR LÍNEAS</translation>
+    </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>RANURA PENDULAR</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Punto inicial en el 3er eje</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2º punto en el 1er eje</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2º punto en el 2º eje</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2º punto en el 3er eje</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3er punto en el 1er eje</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3er punto en el 2º eje</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3er punto en el 3er eje</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4º punto en el 1er eje</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4º punto en el 2º eje</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4º punto en el 3er eje</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>SUPERFICIE REGLADA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

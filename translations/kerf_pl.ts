@@ -8672,6 +8672,90 @@ rozwiązanie</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>symulowany przedmiot zawiera tylko skrawanie pierwszych {1} ruchów narzędzia: późniejsze ruchy nie usunęły materiału</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Naddatek w 1. osi pozostawiony przez obróbkę zgrubną</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>WYKAŃCZANIE KIESZENI</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>WYKAŃCZANIE CZOPU</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>WYKAŃCZANIE KIESZENI OKRĄGŁEJ</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>WYKAŃCZANIE CZOPU OKRĄGŁEGO</translation>
+    </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Liczba przejść</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Posuw do punktu startu w osi narzędzia</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Posuw dla przesunięcia bocznego (FMAX: bieg szybki)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>FREZOWANIE WIELOPRZEJŚCIOWE</translation>
+    </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>ROWEK RUCHEM WAHADŁOWYM</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Punkt startu w 3. osi</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2. punkt w 1. osi</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2. punkt w 2. osi</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2. punkt w 3. osi</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3. punkt w 1. osi</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3. punkt w 2. osi</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3. punkt w 3. osi</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4. punkt w 1. osi</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4. punkt w 2. osi</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4. punkt w 3. osi</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>POWIERZCHNIA PROSTOKREŚLNA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

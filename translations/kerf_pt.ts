@@ -8669,6 +8669,90 @@ solução</translation>
         <source>the simulated part holds the cuts of the first {1} tool moves only: later moves removed no material</source>
         <translation>a peça simulada contém apenas os cortes dos primeiros {1} movimentos da ferramenta: os movimentos seguintes não removeram material</translation>
     </message>
+    <message>
+        <source>Allowance in the 1st axis left by roughing</source>
+        <translation>Sobremetal no 1.º eixo deixado pelo desbaste</translation>
+    </message>
+    <message>
+        <source>POCKET FINISHING</source>
+        <translation>ACABAMENTO DE CAIXA</translation>
+    </message>
+    <message>
+        <source>STUD FINISHING</source>
+        <translation>ACABAMENTO DE ILHA</translation>
+    </message>
+    <message>
+        <source>CIRCULAR POCKET FINISHING</source>
+        <translation>ACABAMENTO DE CAIXA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>CIRCULAR STUD FINISHING</source>
+        <translation>ACABAMENTO DE ILHA CIRCULAR</translation>
+    </message>
+    <message>
+        <source>Number of cuts</source>
+        <translation>Número de cortes</translation>
+    </message>
+    <message>
+        <source>Feed rate to the starting point in the tool axis</source>
+        <translation>Avanço até ao ponto inicial no eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Feed rate for stepover (FMAX: rapid)</source>
+        <translation>Avanço para o deslocamento lateral (FMAX: rápido)</translation>
+    </message>
+    <message>
+        <source>MULTIPASS MILLING</source>
+        <translation>FRESAGEM EM VÁRIAS PASSAGENS</translation>
+    </message>
+    <message>
+        <source>SLOT RECIP. PLNG.</source>
+        <translation>RANHURA PENDULAR</translation>
+    </message>
+    <message>
+        <source>Starting point in the 3rd axis</source>
+        <translation>Ponto inicial no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>2nd point in the 1st axis</source>
+        <translation>2.º ponto no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>2nd point in the 2nd axis</source>
+        <translation>2.º ponto no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>2nd point in the 3rd axis</source>
+        <translation>2.º ponto no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>3rd point in the 1st axis</source>
+        <translation>3.º ponto no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>3rd point in the 2nd axis</source>
+        <translation>3.º ponto no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>3rd point in the 3rd axis</source>
+        <translation>3.º ponto no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>4th point in the 1st axis</source>
+        <translation>4.º ponto no 1.º eixo</translation>
+    </message>
+    <message>
+        <source>4th point in the 2nd axis</source>
+        <translation>4.º ponto no 2.º eixo</translation>
+    </message>
+    <message>
+        <source>4th point in the 3rd axis</source>
+        <translation>4.º ponto no 3.º eixo</translation>
+    </message>
+    <message>
+        <source>RULED SURFACE</source>
+        <translation>SUPERFÍCIE REGRADA</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -44,6 +44,8 @@ struct CycleDescriptor {
     PatternFunction pattern = nullptr;
     // Pattern cycles 220/221 overwrite Q200, Q203 and Q204 of machining cycles that have them.
     bool takesPatternClearances = false;
+    // Obsolete cycles (210-215, 230, 231) run in old programs but can no longer be inserted.
+    bool obsolete = false;
 
     const ParameterDescriptor* parameter(uint16_t q) const;
 };

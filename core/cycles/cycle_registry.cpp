@@ -22,6 +22,10 @@ const std::array<const CycleDescriptor*, 55> kCycles = {
     &kCycle258, &kCycle262, &kCycle263, &kCycle264, &kCycle265, &kCycle267, &kCycle25,  &kCycle270,
     &kCycle275, &kCycle233, &kCycle276, &kCycle27,  &kCycle28,  &kCycle29,  &kCycle39};
 
+// Run for old programs, not offered in the menus.
+const std::array<const CycleDescriptor*, 8> kObsoleteCycles = {
+    &kCycle210, &kCycle211, &kCycle212, &kCycle213, &kCycle214, &kCycle215, &kCycle230, &kCycle231};
+
 }  // namespace
 
 const ParameterDescriptor* CycleDescriptor::parameter(uint16_t q) const {
@@ -36,9 +40,11 @@ std::span<const CycleDescriptor* const> allCycles() {
 }
 
 const CycleDescriptor* findCycle(int number) {
-    auto it = std::find_if(kCycles.begin(), kCycles.end(),
-                           [number](const CycleDescriptor* c) { return c->number == number; });
-    return it == kCycles.end() ? nullptr : *it;
+    const auto numbered = [number](const CycleDescriptor* c) { return c->number == number; };
+    auto it = std::find_if(kCycles.begin(), kCycles.end(), numbered);
+    if (it != kCycles.end()) return *it;
+    auto old = std::find_if(kObsoleteCycles.begin(), kObsoleteCycles.end(), numbered);
+    return old == kObsoleteCycles.end() ? nullptr : *old;
 }
 
 std::optional<CycleError> checkParameter(const CycleDescriptor& cycle, const ParameterDescriptor& p,

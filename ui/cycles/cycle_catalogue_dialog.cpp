@@ -79,7 +79,8 @@ void CycleCatalogueDialog::chooseNumber() {
     bool ok = false;
     const int number = m_number->text().trimmed().toInt(&ok);
     const cycles::CycleDescriptor* cycle = ok ? cycles::findCycle(number) : nullptr;
-    if (!cycle) {
+    // Obsolete cycles run in old programs, but a TNC 320 no longer inserts them.
+    if (!cycle || cycle->obsolete) {
         m_message->setText(tr("There is no cycle %1").arg(m_number->text().trimmed()));
         return;
     }

@@ -17,5 +17,9 @@ extern const CycleDescriptor kCycle25, kCycle270, kCycle275,
     kCycle276;                           // contour train, trochoidal slot
 extern const CycleDescriptor kCycle233;  // face milling with side walls
 extern const CycleDescriptor kCycle27, kCycle28, kCycle29, kCycle39;  // cylinder surface
+// Obsolete cycles that old programs still contain (core/cycles/legacy): they run, but the
+// cycle menus (allCycles) do not offer them.
+extern const CycleDescriptor kCycle210, kCycle211, kCycle212, kCycle213, kCycle214, kCycle215,
+    kCycle230, kCycle231;
 
 }  // namespace kerf::cycles

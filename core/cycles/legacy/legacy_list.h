@@ -10,7 +10,8 @@ namespace kerf::cycles {
 
 extern const CycleDescriptor kCycle1, kCycle2, kCycle3, kCycle4, kCycle5, kCycle17;
 // The modern cycles they run as.
-extern const CycleDescriptor kCycle206, kCycle207, kCycle251, kCycle252;
+extern const CycleDescriptor kCycle206, kCycle207, kCycle251, kCycle252, kCycle253, kCycle254,
+    kCycle256, kCycle257;
 
 namespace legacy {
 
@@ -34,6 +35,21 @@ inline constexpr ParameterDescriptor kPeckingDepth{
     .unit = Unit::Millimetre,
     .min = -kMaxLength,
     .max = kMaxLength};
+// The centre of the obsolete Q-parameter cycles 210-215 (as in cycle 254).
+inline constexpr ParameterDescriptor kCentreFirstAxis{
+    .q = 216,
+    .description = KERF_TR_NOOP("Centre in the 1st axis"),
+    .unit = Unit::Millimetre,
+    .min = -kMaxLength,
+    .max = kMaxLength,
+    .defaultValue = 50.0};
+inline constexpr ParameterDescriptor kCentreSecondAxis{
+    .q = 217,
+    .description = KERF_TR_NOOP("Centre in the 2nd axis"),
+    .unit = Unit::Millimetre,
+    .min = -kMaxLength,
+    .max = kMaxLength,
+    .defaultValue = 50.0};
 inline constexpr ParameterDescriptor kFeed{.word = "F",
                                            .description = KERF_TR_NOOP("Feed rate"),
                                            .unit = Unit::FeedPerMinute,

@@ -374,5 +374,292 @@ TEST(PocketCycles, PolygonStudWithNegativeSideAllowanceIsMadeSmaller) {
     EXPECT_NEAR(nearest, 23.5, 1e-9);
 }
 
+// Obsolete finishing cycles 212-215 (docs/cycles.md): centre Q216/Q217 = (50, 40), surface 0,
+// set-up clearance 2, 2nd set-up clearance 20, depth -10 in Q202 = 5 mm infeeds, plunge F150,
+// milling F500; tool R4 starting at (0, 0, 50).
+CycleValues obsoleteFinishing(std::initializer_list<std::pair<uint16_t, double>> shape) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{200, 2},  {201, -10}, {206, 150},
+                                                  {202, 5},  {207, 500}, {203, 0},
+                                                  {204, 20}, {216, 50},  {217, 40}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    for (auto [q, value] : shape)
+        v.set(q, value);
+    return v;
+}
+
+// Signed distance of p from the rounded rectangle with half sides a x b and corner radius r
+// centred on (50, 40): negative inside.
+double fromRoundedRectangle(const Vec3& p, double a, double b, double r) {
+    const double qx = std::fabs(p.x() - 50.0) - (a - r);
+    const double qy = std::fabs(p.y() - 40.0) - (b - r);
+    return std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - r;
+}
+
+// What every finishing cycle shows: first up to nothing (the start is above the 2nd set-up
+// clearance) and over to the centre at rapid; the walls at -5 and -10 only (two infeeds), each
+// reached at the plunge feed; the end at the centre at surface + 2nd set-up clearance = 20.
+// Returns the endpoints of the feed moves at -10.
+std::vector<Vec3> checkFinishing(int cycle, const CycleValues& v) {
+    Recorder out;
+    EXPECT_FALSE(run(cycle, v, toolR4(), out));
+    std::vector<Vec3> atFloor;
+    if (out.moves.size() < 4) {
+        ADD_FAILURE() << cycle << ": " << out.moves.size() << " moves";
+        return atFloor;
+    }
+    EXPECT_EQ(out.moves[0].kind, Move::Rapid);
+    EXPECT_TRUE(out.moves[0].target.isApprox(Vec3(50, 40, 50))) << out.moves[0].target.transpose();
+    EXPECT_TRUE(out.moves.back().target.isApprox(Vec3(50, 40, 20)))
+        << out.moves.back().target.transpose();
+    EXPECT_NEAR(out.lowest(), -10.0, 1e-9);
+    std::vector<double> plunges;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Rapid) continue;
+        const double w = m.target.z();
+        EXPECT_TRUE(std::fabs(w + 5.0) < 1e-9 || std::fabs(w + 10.0) < 1e-9) << w;
+        if (m.feed.value == 150.0)
+            plunges.push_back(w);
+        else
+            EXPECT_EQ(m.feed.value, 500.0);
+        if (std::fabs(w + 10.0) < 1e-9) atFloor.push_back(m.target);
+    }
+    EXPECT_EQ(plunges, (std::vector<double>{-5.0, -10.0}));
+    return atFloor;
+}
+
+// 212: pocket 60 x 40, R5, allowance 0.5: the tool centre stays R4 inside the wall and touches
+// it (distance -4 from the finished rounded rectangle).
+TEST(ObsoleteCycles, PocketFinishing212FinishesTheWallsAtSize) {
+    const auto floor =
+        checkFinishing(212, obsoleteFinishing({{218, 60}, {219, 40}, {220, 5}, {221, 0.5}}));
+    ASSERT_FALSE(floor.empty());
+    double outermost = -1e9;
+    for (const Vec3& p : floor)
+        outermost = std::max(outermost, fromRoundedRectangle(p, 30, 20, 5));
+    EXPECT_NEAR(outermost, -4.0, 1e-6);
+}
+
+// An allowance of 0 still finishes the walls (the old cycle does).
+TEST(ObsoleteCycles, PocketFinishingWithoutAllowanceStillFinishes) {
+    const auto floor =
+        checkFinishing(212, obsoleteFinishing({{218, 60}, {219, 40}, {220, 5}, {221, 0}}));
+    EXPECT_FALSE(floor.empty());
+}
+
+// 213: stud 60 x 40, R5, blank allowance 2: the tool centre stays R4 outside the stud and
+// touches it.
+TEST(ObsoleteCycles, StudFinishing213FinishesTheWallsAtSize) {
+    const auto floor =
+        checkFinishing(213, obsoleteFinishing({{218, 60}, {219, 40}, {220, 5}, {221, 2}}));
+    ASSERT_FALSE(floor.empty());
+    double innermost = 1e9;
+    for (const Vec3& p : floor)
+        innermost = std::min(innermost, fromRoundedRectangle(p, 30, 20, 5));
+    EXPECT_NEAR(innermost, 4.0, 1e-6);
+}
+
+// 214: pocket from the blank diameter 46 to 50: the tool centre on radius 25 - 4 = 21 at most.
+TEST(ObsoleteCycles, CircularPocketFinishing214FinishesTheWallAtSize) {
+    const auto floor = checkFinishing(214, obsoleteFinishing({{222, 46}, {223, 50}}));
+    ASSERT_FALSE(floor.empty());
+    double outermost = 0.0;
+    for (const Vec3& p : floor)
+        outermost = std::max(outermost, std::hypot(p.x() - 50, p.y() - 40));
+    EXPECT_NEAR(outermost, 21.0, 1e-6);
+}
+
+// 215: stud from the blank diameter 54 to 50: the tool centre on radius 25 + 4 = 29 at least.
+TEST(ObsoleteCycles, CircularStudFinishing215FinishesTheWallAtSize) {
+    const auto floor = checkFinishing(215, obsoleteFinishing({{222, 54}, {223, 50}}));
+    ASSERT_FALSE(floor.empty());
+    double innermost = 1e9;
+    for (const Vec3& p : floor)
+        innermost = std::min(innermost, std::hypot(p.x() - 50, p.y() - 40));
+    EXPECT_NEAR(innermost, 29.0, 1e-6);
+}
+
+// The obsolete cycles run but the menus do not offer them.
+TEST(ObsoleteCycles, FoundButNotListed) {
+    for (const CycleDescriptor* c : allCycles())
+        EXPECT_FALSE(c->obsolete) << c->number;
+    for (int n : {210, 211, 212, 213, 214, 215, 230, 231}) {
+        ASSERT_NE(findCycle(n), nullptr) << n;
+        EXPECT_TRUE(findCycle(n)->obsolete) << n;
+        for (const CycleDescriptor* c : allCycles())
+            EXPECT_NE(c->number, n);
+    }
+}
+
+// 230: start (10, 20) at Z-2, 60 x 30 in 4 cuts (stepover 30 / 3 = 10), tool R4 from (0, 0, 50):
+// in the plane to R before the start edge (6, 20), down to the set-up clearance -2 + 2 = 0, at
+// Q206 to -2; cuts from X6 to 10 + 60 + 4 = 74 and back at Q207, stepovers at Q209; up to 0.
+TEST(ObsoleteCycles, MultipassMilling230CutsToAndFro) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{225, 10},  {226, 20}, {227, -2},  {218, 60},
+                                                  {219, 30},  {240, 4},  {206, 100}, {207, 400},
+                                                  {209, 300}, {200, 2}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(230, v, toolR4(), out));
+    const std::vector<std::pair<Vec3, double>> expected = {
+        {{6, 20, 50}, 0},    {{6, 20, 0}, 0},    {{6, 20, -2}, 100}, {{74, 20, -2}, 400},
+        {{74, 30, -2}, 300}, {{6, 30, -2}, 400}, {{6, 40, -2}, 300}, {{74, 40, -2}, 400},
+        {{74, 50, -2}, 300}, {{6, 50, -2}, 400}, {{6, 50, 0}, 0}};
+    ASSERT_EQ(out.moves.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_LT((out.moves[i].target - expected[i].first).norm(), 1e-9)
+            << i << ": " << out.moves[i].target.transpose();
+        EXPECT_EQ(out.moves[i].kind == Move::Rapid, expected[i].second == 0.0) << i;
+        if (expected[i].second != 0.0) {
+            EXPECT_EQ(out.moves[i].feed.value, expected[i].second) << i;
+        }
+    }
+}
+
+// One cut: no stepover, the single cut on the starting line.
+TEST(ObsoleteCycles, MultipassMillingWithOneCut) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {{225, 0},   {226, 0}, {227, 0},   {218, 20},
+                                                  {219, 30},  {240, 1}, {206, 100}, {207, 400},
+                                                  {209, 300}, {200, 2}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(230, v, toolR4(), out));
+    ASSERT_EQ(out.moves.size(), 5u);
+    EXPECT_TRUE((out.moves[3].target - Vec3(24, 0, 0)).norm() < 1e-9);
+}
+
+// 210: slot 60 x 10 centred on (50, 40) along X, depth -6 from Z0, Q202 = 4 per to-and-fro
+// (2 per stroke), roughing only (Q215 = 1), tool R4 from (0, 0, 50). The end circles' centres
+// are 60 / 2 - 10 / 2 = 25 from the centre: X25 and X75. Over X25 at rapid, down to the set-up
+// clearance Z2, at Q206 F150 to Z0; strokes to X75 Z-2, X25 Z-4, X75 Z-6, one at the depth back
+// to X25; at Q207 F500 to the centre; up to the 2nd set-up clearance Z20.
+CycleValues slot210(int operation) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {200, 2},  {201, -6}, {207, 500}, {202, 4},  {215, operation}, {203, 0}, {204, 20},
+        {216, 50}, {217, 40}, {218, 60},  {219, 10}, {224, 0},         {338, 0}, {206, 150}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    return v;
+}
+
+void expectMoves(const Recorder& out, const std::vector<std::pair<Vec3, double>>& expected) {
+    ASSERT_EQ(out.moves.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_LT((out.moves[i].target - expected[i].first).norm(), 1e-9)
+            << i << ": " << out.moves[i].target.transpose();
+        EXPECT_EQ(out.moves[i].kind == Move::Rapid, expected[i].second == 0.0) << i;
+        if (expected[i].second != 0.0) {
+            EXPECT_EQ(out.moves[i].feed.value, expected[i].second) << i;
+        }
+    }
+}
+
+TEST(ObsoleteCycles, SlotRoughing210ReciprocatesAlongTheCentreLine) {
+    Recorder out;
+    ASSERT_FALSE(run(210, slot210(1), toolR4(), out));
+    expectMoves(out, {{{25, 40, 50}, 0},
+                      {{25, 40, 2}, 0},
+                      {{25, 40, 0}, 150},
+                      {{75, 40, -2}, 150},
+                      {{25, 40, -4}, 150},
+                      {{75, 40, -6}, 150},
+                      {{25, 40, -6}, 150},
+                      {{50, 40, -6}, 500},
+                      {{50, 40, 20}, 0}});
+}
+
+// Roughing and finishing: the walls are finished, the tool centre reaching 30 - 4 = 26 from the
+// centre along the slot (the roughing only 25) and 5 - 4 = 1 across it.
+TEST(ObsoleteCycles, Slot210FinishesTheWallsAtSize) {
+    Recorder out;
+    ASSERT_FALSE(run(210, slot210(0), toolR4(), out));
+    double along = 0.0;
+    double across = 0.0;
+    for (const Move& m : out.moves) {
+        if (m.kind == Move::Rapid || std::fabs(m.target.z() + 6.0) > 1e-9) continue;
+        along = std::max(along, std::fabs(m.target.x() - 50.0));
+        across = std::max(across, std::fabs(m.target.y() - 40.0));
+    }
+    EXPECT_NEAR(along, 26.0, 1e-6);
+    EXPECT_NEAR(across, 1.0, 1e-6);
+    EXPECT_NEAR(out.lowest(), -6.0, 1e-9);
+}
+
+// A tool wider than the slot is refused.
+TEST(ObsoleteCycles, Slot210RefusesAToolWiderThanTheSlot) {
+    CycleValues v = slot210(1);
+    v.set(219, 7.0);
+    Recorder out;
+    const auto error = run(210, v, toolR4(), out);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->args.at(0), "210");
+}
+
+// 211: pitch circle 100 about (50, 40), from 0 deg over 90 deg, width 10, roughing only: the
+// strokes are quarter arcs between (100, 40) and (50, 90), dropping 2 each, as in 210.
+TEST(ObsoleteCycles, CircularSlotRoughing211ReciprocatesAlongThePitchCircle) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {200, 2},  {201, -6},  {207, 500}, {202, 4}, {215, 1},  {203, 0}, {204, 20}, {216, 50},
+        {217, 40}, {244, 100}, {219, 10},  {245, 0}, {248, 90}, {338, 0}, {206, 150}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(211, v, toolR4(), out));
+    expectMoves(out, {{{100, 40, 50}, 0},
+                      {{100, 40, 2}, 0},
+                      {{100, 40, 0}, 150},
+                      {{50, 90, -2}, 150},
+                      {{100, 40, -4}, 150},
+                      {{50, 90, -6}, 150},
+                      {{100, 40, -6}, 150},
+                      {{100, 40, 20}, 0}});
+    for (size_t i = 3; i < 7; ++i) {
+        EXPECT_EQ(out.moves[i].kind, Move::Arc) << i;
+        EXPECT_LT((out.moves[i].centre - Vec2(50, 40)).norm(), 1e-9) << i;
+    }
+}
+
+// Without Q206 (older software; the interpreter passes its default 0) the plunge runs at Q207.
+TEST(ObsoleteCycles, SlotWithoutQ206PlungesAtTheMillingFeed) {
+    CycleValues v = slot210(1);
+    v.set(206, 0.0);
+    Recorder out;
+    ASSERT_FALSE(run(210, v, toolR4(), out));
+    ASSERT_GE(out.moves.size(), 4u);
+    EXPECT_EQ(out.moves[2].feed.value, 500.0);
+    EXPECT_EQ(out.moves[3].feed.value, 500.0);
+}
+
+// 231: points 1 (10, 5, 0), 2 (110, 5, -10), 3 (110, 55, -10), 4 (10, 55, 0), 3 cuts at the
+// fractions 0, 1/2, 1 of the edges 1-4 and 2-3: (10, 5, 0)-(110, 5, -10), (110, 30, -10)-
+// (10, 30, 0), (10, 55, 0)-(110, 55, -10), joined along the edges; before: over point 1, down to
+// 0 + 2 at rapid, at F400 onto it; after: up to the highest point + 2 = Z2.
+TEST(ObsoleteCycles, RuledSurface231CutsBetweenTheEdges) {
+    CycleValues v;
+    const std::pair<uint16_t, double> values[] = {
+        {225, 10},  {226, 5},  {227, 0},  {228, 110}, {229, 5}, {230, -10}, {231, 110}, {232, 55},
+        {233, -10}, {234, 10}, {235, 55}, {236, 0},   {240, 3}, {207, 400}, {200, 2}};
+    for (auto [q, value] : values)
+        v.set(q, value);
+    Recorder out;
+    ASSERT_FALSE(run(231, v, toolR4(), out));
+    expectMoves(out, {{{10, 5, 50}, 0},
+                      {{10, 5, 2}, 0},
+                      {{10, 5, 0}, 400},
+                      {{110, 5, -10}, 400},
+                      {{110, 30, -10}, 400},
+                      {{10, 30, 0}, 400},
+                      {{10, 55, 0}, 400},
+                      {{110, 55, -10}, 400},
+                      {{110, 55, 2}, 0}});
+}
+
 }  // namespace
 }  // namespace kerf::cycles
