@@ -27,6 +27,31 @@ bool isThere(const std::filesystem::path& file) {
     return std::filesystem::exists(std::filesystem::symlink_status(file, ignored));
 }
 
+// A datum cycle writes only the axes it measured into a preset row that already exists (the
+// seed's example 14.15: 417 writes Z, then 416 X and Y, of the same row). `offset` is relative
+// to the active preset `presetInMachine`; the other columns get the row's own values.
+void keepUnmeasuredColumns(const program::NcRoot& root, const std::string& rotaryLetters,
+                           const Pose& presetInMachine, int row, const std::array<bool, 3>& written,
+                           Pose& offset) {
+    const std::filesystem::path file = root.path() / "PRESET.PR";
+    if (!isThere(file)) return;
+    auto bytes = root.read(file);
+    if (!bytes) return;
+    auto table = tables::PresetTable::parse(*bytes, file.string());
+    if (!table) return;
+    const tables::PresetData* existing = table->byNumber(row);
+    if (existing == nullptr) return;
+    std::vector<Axis> axes{Axis::X, Axis::Y, Axis::Z};
+    for (char letter : rotaryLetters)
+        axes.push_back(*axisFromLetter(letter));
+    for (Axis axis : axes) {
+        const auto i = static_cast<size_t>(axis);
+        if (i < 3 && written[i]) continue;
+        if (const std::optional<double> value = existing->axis(axisLetter(axis)))
+            offset[axis] = *value - presetInMachine[axis];
+    }
+}
+
 // Result parameters that are not lengths: angles and status flags keep their value in INCH
 // programs.
 bool isLengthResult(uint16_t q) {
@@ -470,6 +495,19 @@ bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingRe
     Pose offset = m_frame.preset();
     offset.setXyz(offset.xyz() + moved);
     const int row = results.tableRow;
+    if (row > 0) {
+        // Columns the measurement moves: the measured axes, and any the frame's turn involves.
+        const PlaneAxes a = planeAxes(workingPlane());
+        const Axis programAxes[] = {a.first, a.second, a.normal};
+        std::array<bool, 3> written{};
+        for (size_t i = 0; i < 3; ++i) {
+            const auto xyz = static_cast<size_t>(programAxes[i]);
+            if (xyz < 3 && results.datum->measured[i]) written[xyz] = true;
+            if (moved[static_cast<int>(i)] != 0.0) written[i] = true;
+        }
+        keepUnmeasuredColumns(m_root, tableAxisLetters(), m_settings.presetInMachine, row, written,
+                              offset);
+    }
     if (!writePreset(cycle, row, offset)) return false;
     if (row == 0) {
         const Pose at = m_frame.toWorkpiece(m_programmed);

@@ -106,6 +106,50 @@ TEST_F(ProbingExamples, Rotation403TurnsTheCTableOfMill5) {
     }
 }
 
+TEST_F(ProbingExamples, Seed14_14DatumOnAStudTurnedInTheSameProgram) {
+    // 257 turns a stud of diameter 30 at (25, 25) out of the blank with tool 5, really 0.012
+    // thinner and 0.05 longer than TOOL.T says (machine.toml): the stud stays 30.024 thick, its
+    // centre where the tool went (the setup error moves the blank, not the cut). Its top is the
+    // blank's, really at 25 - 0.2. 413 sets X 0 at the centre, Y +10 there, Z 0 on the top, so
+    // L X+0 Y+0 Z+50 ends at (25, 15, 24.8 + 50) of the start preset.
+    for (const char* options : {"", "--motion"}) {
+        const nlohmann::json report = run("CYC413", options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 25.0, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(), 15.0, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 74.8, 0.002) << options;
+    }
+}
+
+TEST_F(ProbingExamples, Seed14_15DatumAtABoltCircleDrilledInTheSameProgram) {
+    // Three holes drilled on a circle of diameter 50 about (35, 35); 417 writes the real top
+    // (25 - 0.2) into preset row 1 and 416 then the circle's centre into the same row, leaving
+    // its Z (machine coordinates: the built-in mill's origin at Z -400); 247 activates the row:
+    // L X+0 Y+0 Z+50 ends at (35, 35, 24.8 + 50) of the start preset.
+    for (const char* options : {"", "--motion"}) {
+        fs::remove(dir / "PRESET.PR");
+        const nlohmann::json report = run("CYC416", options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 35.0, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(), 35.0, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 74.8, 0.002) << options;
+        std::istringstream presets(read(dir / "PRESET.PR"));
+        std::string line;
+        bool found = false;
+        while (std::getline(presets, line)) {
+            std::istringstream fields(line);
+            std::string number;
+            double x = 0.0, y = 0.0, z = 0.0;
+            if (!(fields >> number) || number != "1" || !(fields >> x >> y >> z)) continue;
+            found = true;
+            EXPECT_NEAR(x, 35.0, 0.002) << options;
+            EXPECT_NEAR(y, 35.0, 0.002) << options;
+            EXPECT_NEAR(z, -375.2, 0.002) << options;
+        }
+        EXPECT_TRUE(found) << options;
+    }
+}
+
 TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
     EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
 }
