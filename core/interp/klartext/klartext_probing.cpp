@@ -30,16 +30,10 @@ bool isThere(const std::filesystem::path& file) {
 // A datum cycle writes only the axes it measured into a preset row that already exists (the
 // seed's example 14.15: 417 writes Z, then 416 X and Y, of the same row). `offset` is relative
 // to the active preset `presetInMachine`; the other columns get the row's own values.
-void keepUnmeasuredColumns(const program::NcRoot& root, const std::string& rotaryLetters,
+void keepUnmeasuredColumns(const tables::PresetTable& table, const std::string& rotaryLetters,
                            const Pose& presetInMachine, int row, const std::array<bool, 3>& written,
                            Pose& offset) {
-    const std::filesystem::path file = root.path() / "PRESET.PR";
-    if (!isThere(file)) return;
-    auto bytes = root.read(file);
-    if (!bytes) return;
-    auto table = tables::PresetTable::parse(*bytes, file.string());
-    if (!table) return;
-    const tables::PresetData* existing = table->byNumber(row);
+    const tables::PresetData* existing = table.byNumber(row);
     if (existing == nullptr) return;
     std::vector<Axis> axes{Axis::X, Axis::Y, Axis::Z};
     for (char letter : rotaryLetters)
@@ -505,7 +499,10 @@ bool KlartextInterpreter::applyDatum(int cycle, const cycles::probing::ProbingRe
             if (xyz < 3 && results.datum->measured[i]) written[xyz] = true;
             if (moved[static_cast<int>(i)] != 0.0) written[i] = true;
         }
-        keepUnmeasuredColumns(m_root, tableAxisLetters(), m_settings.presetInMachine, row, written,
+        const std::optional<tables::PresetTable> table =
+            presetTableToEdit(m_root.path() / "PRESET.PR");
+        if (!table) return false;
+        keepUnmeasuredColumns(*table, tableAxisLetters(), m_settings.presetInMachine, row, written,
                               offset);
     }
     if (!writePreset(cycle, row, offset)) return false;
