@@ -1,6 +1,7 @@
 // Obsolete cycle 231 RULED SURFACE (docs/cycles.md, "Obsolete Q-parameter cycles"): the surface
 // spanned by four points milled in Q240 straight cuts from the edge 1-2 to the edge 4-3, to and
-// fro, each cut joining the points at the same fraction of the edges 1-4 and 2-3.
+// fro, each cut joining the points at the same fraction of the edges 1-4 and 2-3. The cycle has
+// no set-up clearance parameter: the tool clears the surface by its diameter.
 #include <algorithm>
 #include <array>
 #include <string>
@@ -44,7 +45,6 @@ constexpr ParameterDescriptor kParameters[] = {
      .defaultValue = 5.0,
      .integer = true},
     kMillingFeed,
-    common::kSetUpClearance,
 };
 
 Vec3 point(const CycleValues& v, uint16_t first) {
@@ -52,15 +52,27 @@ Vec3 point(const CycleValues& v, uint16_t first) {
             v.number(static_cast<uint16_t>(first + 2))};
 }
 
-std::optional<CycleError> expand(const CycleValues& v, const CycleContext&, CyclePath& path) {
+// Half a feed (rapid stays rapid).
+Feed half(Feed f) {
+    if (!f.isRapid()) f.value /= 2.0;
+    return f;
+}
+
+std::optional<CycleError> expand(const CycleValues& v, const CycleContext& ctx, CyclePath& path) {
     const std::array<Vec3, 4> p = {point(v, 225), point(v, 228), point(v, 231), point(v, 234)};
-    const double clearance = v.number(200);
+    const double clearance = 2.0 * ctx.tool.radius;
+    const double top = std::max({p[0].z(), p[1].z(), p[2].z(), p[3].z()}) + clearance;
     const int cuts = v.integer(240);
     const Feed feed = v.feed(207);
-    // Over point 1 in the plane, at rapid to the set-up clearance above it, at Q207 onto it.
+    // The old manuals: the first step at half the milling feed (the tool cuts with its whole
+    // width); here the move onto point 1 and the first cut.
+    const Feed firstFeed = half(feed);
+    // Up to the tool diameter above the highest point, over point 1, down to the tool diameter
+    // above it at rapid and onto it.
+    if (path.w() < top) path.rapidW(top);
     path.rapidUv({p[0].x(), p[0].y()});
     path.rapidW(p[0].z() + clearance);
-    path.move(p[0], feed);
+    path.move(p[0], firstFeed);
     for (int k = 0; k < cuts; ++k) {
         if (path.limitReached()) return tooManyMoves(231);
         const double t = cuts > 1 ? static_cast<double>(k) / (cuts - 1) : 0.0;
@@ -68,11 +80,9 @@ std::optional<CycleError> expand(const CycleValues& v, const CycleContext&, Cycl
         const Vec3 b = p[1] + t * (p[2] - p[1]);
         const bool forward = k % 2 == 0;
         path.move(forward ? a : b, feed);  // the stepover along the edge (none for the first)
-        path.move(forward ? b : a, feed);
+        path.move(forward ? b : a, k == 0 ? firstFeed : feed);
     }
-    // Up to the set-up clearance above the highest of the four points.
-    const double top = std::max({p[0].z(), p[1].z(), p[2].z(), p[3].z()}) + clearance;
-    if (path.w() < top) path.rapidW(top);
+    path.rapidW(top);
     return std::nullopt;
 }
 

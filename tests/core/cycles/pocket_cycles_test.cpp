@@ -637,28 +637,48 @@ TEST(ObsoleteCycles, SlotWithoutQ206PlungesAtTheMillingFeed) {
     EXPECT_EQ(out.moves[3].feed.value, 500.0);
 }
 
-// 231: points 1 (10, 5, 0), 2 (110, 5, -10), 3 (110, 55, -10), 4 (10, 55, 0), 3 cuts at the
-// fractions 0, 1/2, 1 of the edges 1-4 and 2-3: (10, 5, 0)-(110, 5, -10), (110, 30, -10)-
-// (10, 30, 0), (10, 55, 0)-(110, 55, -10), joined along the edges; before: over point 1, down to
-// 0 + 2 at rapid, at F400 onto it; after: up to the highest point + 2 = Z2.
-TEST(ObsoleteCycles, RuledSurface231CutsBetweenTheEdges) {
+// 231 (no set-up clearance parameter: the tool clears the surface by its diameter 8): points
+// 1 (10, 5, 0), 2 (110, 5, -10), 3 (110, 55, -10), 4 (10, 55, 0), 3 cuts at the fractions 0,
+// 1/2, 1 of the edges 1-4 and 2-3: (10, 5, 0)-(110, 5, -10), (110, 30, -10)-(10, 30, 0),
+// (10, 55, 0)-(110, 55, -10), joined along the edges; before: over point 1, down to 0 + 8 at
+// rapid, at Q207 / 2 = F200 onto it and along the first cut (the old manual's first step at
+// half the feed); after: up to the highest point + 8 = Z8.
+CycleValues ruledSurface231(int cuts) {
     CycleValues v;
     const std::pair<uint16_t, double> values[] = {
-        {225, 10},  {226, 5},  {227, 0},  {228, 110}, {229, 5}, {230, -10}, {231, 110}, {232, 55},
-        {233, -10}, {234, 10}, {235, 55}, {236, 0},   {240, 3}, {207, 400}, {200, 2}};
+        {225, 10}, {226, 5},   {227, 0},  {228, 110}, {229, 5}, {230, -10},  {231, 110},
+        {232, 55}, {233, -10}, {234, 10}, {235, 55},  {236, 0}, {240, cuts}, {207, 400}};
     for (auto [q, value] : values)
         v.set(q, value);
+    return v;
+}
+
+TEST(ObsoleteCycles, RuledSurface231CutsBetweenTheEdges) {
     Recorder out;
-    ASSERT_FALSE(run(231, v, toolR4(), out));
+    ASSERT_FALSE(run(231, ruledSurface231(3), toolR4(), out));
     expectMoves(out, {{{10, 5, 50}, 0},
-                      {{10, 5, 2}, 0},
-                      {{10, 5, 0}, 400},
-                      {{110, 5, -10}, 400},
+                      {{10, 5, 8}, 0},
+                      {{10, 5, 0}, 200},
+                      {{110, 5, -10}, 200},
                       {{110, 30, -10}, 400},
                       {{10, 30, 0}, 400},
                       {{10, 55, 0}, 400},
                       {{110, 55, -10}, 400},
-                      {{110, 55, 2}, 0}});
+                      {{110, 55, 8}, 0}});
+}
+
+// A tool below the clearance (Z3 < 0 + 8) rises to it before moving over point 1; one cut runs
+// from point 1 to point 2 only, at half the feed.
+TEST(ObsoleteCycles, RuledSurface231RisesBeforeMovingOverPoint1) {
+    CycleContext ctx = toolR4();
+    ctx.start = {0.0, 0.0, 3.0};
+    Recorder out;
+    ASSERT_FALSE(run(231, ruledSurface231(1), ctx, out));
+    expectMoves(out, {{{0, 0, 8}, 0},
+                      {{10, 5, 8}, 0},
+                      {{10, 5, 0}, 200},
+                      {{110, 5, -10}, 200},
+                      {{110, 5, 8}, 0}});
 }
 
 }  // namespace
