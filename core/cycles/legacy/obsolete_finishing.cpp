@@ -100,7 +100,8 @@ CycleValues finishingOnly(const CycleDescriptor& modern, const CycleValues& v, d
     return m;
 }
 
-// From the 2nd set-up clearance to the centre, the modern cycle from there, back to the centre.
+// To the 2nd set-up clearance (from above too, as the old manuals say), over the centre, the
+// modern cycle from there, back over the centre.
 std::optional<CycleError> finishAtCentre(int number, const CycleDescriptor& modern,
                                          const CycleValues& v, const CycleValues& m,
                                          const CycleContext& ctx, CyclePath& path) {
@@ -108,7 +109,7 @@ std::optional<CycleError> finishAtCentre(int number, const CycleDescriptor& mode
     if (auto e = checkDepthSign(number, 201, v.number(201), ctx)) return e;
     const HoleLevels levels = holeLevels(v, v.number(201));
     const Vec2 centre(v.number(216), v.number(217));
-    if ((path.w() - levels.top) * levels.up < 0.0) path.rapidW(levels.top);
+    path.rapidW(levels.top);
     path.rapidUv(centre);
     if (auto e = expandAs(number, modern, m, ctx, path)) return e;
     path.rapidUv(centre);

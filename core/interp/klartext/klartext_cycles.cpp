@@ -248,7 +248,7 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
                            [&](const Entry& e) { return e.number == def.number; });
     const cycles::LegacyCycle* legacy = cycles::findLegacyCycle(def.number);
     if (it == kHandlers.end() && legacy == nullptr) {
-        // Obsolete cycles Kerf does not run (210-215, 230, 231): the header stops.
+        // Cycles in the old block format that Kerf does not run: the header stops.
         if (def.subNumber == 0) {
             fail("not-supported", KERF_TR_NOOP("cycle {1} is not supported yet"),
                  {std::to_string(def.number)});

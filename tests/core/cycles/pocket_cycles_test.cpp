@@ -397,10 +397,10 @@ double fromRoundedRectangle(const Vec3& p, double a, double b, double r) {
     return std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - r;
 }
 
-// What every finishing cycle shows: first up to nothing (the start is above the 2nd set-up
-// clearance) and over to the centre at rapid; the walls at -5 and -10 only (two infeeds), each
-// reached at the plunge feed; the end at the centre at surface + 2nd set-up clearance = 20.
-// Returns the endpoints of the feed moves at -10.
+// What every finishing cycle shows (the old manuals' sequence of 213 and 215): first at rapid to
+// the 2nd set-up clearance 0 + 20 (down from the start at Z50) and over the centre; the walls at
+// -5 and -10 only (two infeeds), each reached at the plunge feed; the end over the centre at the
+// 2nd set-up clearance 20. Returns the endpoints of the feed moves at -10.
 std::vector<Vec3> checkFinishing(int cycle, const CycleValues& v) {
     Recorder out;
     EXPECT_FALSE(run(cycle, v, toolR4(), out));
@@ -410,7 +410,9 @@ std::vector<Vec3> checkFinishing(int cycle, const CycleValues& v) {
         return atFloor;
     }
     EXPECT_EQ(out.moves[0].kind, Move::Rapid);
-    EXPECT_TRUE(out.moves[0].target.isApprox(Vec3(50, 40, 50))) << out.moves[0].target.transpose();
+    EXPECT_TRUE(out.moves[0].target.isApprox(Vec3(0, 0, 20))) << out.moves[0].target.transpose();
+    EXPECT_EQ(out.moves[1].kind, Move::Rapid);
+    EXPECT_TRUE(out.moves[1].target.isApprox(Vec3(50, 40, 20))) << out.moves[1].target.transpose();
     EXPECT_TRUE(out.moves.back().target.isApprox(Vec3(50, 40, 20)))
         << out.moves.back().target.transpose();
     EXPECT_NEAR(out.lowest(), -10.0, 1e-9);
