@@ -374,7 +374,6 @@ std::string_view BlockParser::headWord(std::string_view text) {
 }
 
 bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
-    out.statement = Empty{};
     out.blockNumber = -1;
     out.hidden = false;
     Context c(line.text, m_env, m_formulas, m_problem);
@@ -386,6 +385,7 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
         char after = cur.peekRaw();
         if (!number || (after != ' ' && after != '\t' && after != '\0' && after != ';')) {
             cur.setPosition(at);
+            out.statement = Empty{};
             return c.unexpected();
         }
         out.blockNumber = *number;
@@ -395,6 +395,14 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
         cur.unsignedInteger();
         out.hidden = true;
     }
+    cur.skipBlanks();
+    const size_t head = cur.position();
+    if (head + 1 < line.text.size() && line.text[head] == 'L' &&
+        (line.text[head + 1] == ' ' || line.text[head + 1] == '\t') &&
+        parseLiteralLine(line.text, head + 1, out)) {
+        return true;
+    }
+    out.statement = Empty{};
     if (cur.atEnd() || cur.peek() == '*') return true;
     return parseStatement(c, line, out);
 }
