@@ -374,8 +374,21 @@ std::string_view BlockParser::headWord(std::string_view text) {
 }
 
 bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
-    out.blockNumber = -1;
     out.hidden = false;
+    // "123 L ...", most blocks of a CAM program: the number read here, the line in one pass.
+    const std::string_view text = line.text;
+    size_t digits = 0;
+    int64_t leadingNumber = 0;
+    while (digits < text.size() && digits < 18 && isDigit(text[digits]))
+        leadingNumber = leadingNumber * 10 + (text[digits++] - '0');
+    const bool literalLine = digits > 0 && digits < 18 && digits + 2 < text.size() &&
+                             text[digits] == ' ' && text[digits + 1] == 'L' &&
+                             (text[digits + 2] == ' ' || text[digits + 2] == '\t');
+    if (literalLine && parseLiteralLine(text, digits + 2, out)) {
+        out.blockNumber = leadingNumber;
+        return true;
+    }
+    out.blockNumber = -1;
     Context c(line.text, m_env, m_formulas, m_problem);
     Cursor& cur = c.cursor;
     cur.skipBlanks();
@@ -397,7 +410,7 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
     }
     cur.skipBlanks();
     const size_t head = cur.position();
-    if (head + 1 < line.text.size() && line.text[head] == 'L' &&
+    if (!literalLine && head + 1 < line.text.size() && line.text[head] == 'L' &&
         (line.text[head + 1] == ' ' || line.text[head + 1] == '\t') &&
         parseLiteralLine(line.text, head + 1, out)) {
         return true;

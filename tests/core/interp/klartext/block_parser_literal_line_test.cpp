@@ -41,11 +41,12 @@ void expectSameLine(const LinearBlock& a, const LinearBlock& b, std::string_view
     }
 }
 
-// `rest` after "7 L" and after "7 l": the same block number, statement and outcome.
-void expectSameAsGeneralParser(const std::string& rest) {
+// `rest` after "7 L" and after "7 l" (or another number and blanks before the head): the same
+// block number, block skip, statement and outcome.
+void expectSameAsGeneralParser(const std::string& rest, const std::string& number = "7 ") {
     BlockParser fast(nullptr), general(nullptr);
     ParsedBlock a, b;
-    const std::string upperHead = "7 L" + rest, lowerHead = "7 l" + rest;
+    const std::string upperHead = number + "L" + rest, lowerHead = number + "l" + rest;
     const bool okA = parseInto(fast, upperHead, a);
     const bool okB = parseInto(general, lowerHead, b);
     ASSERT_EQ(okA, okB) << upperHead;
@@ -55,6 +56,7 @@ void expectSameAsGeneralParser(const std::string& rest) {
         return;
     }
     EXPECT_EQ(a.blockNumber, b.blockNumber);
+    EXPECT_EQ(a.hidden, b.hidden);
     ASSERT_EQ(a.statement.index(), b.statement.index()) << upperHead;
     if (const auto* line = std::get_if<LinearBlock>(&a.statement))
         expectSameLine(*line, std::get<LinearBlock>(b.statement), upperHead);
@@ -133,6 +135,14 @@ TEST(LiteralLine, GivesWhatTheGeneralParserGives) {
              " X+1 RL R0",
          }) {
         expectSameAsGeneralParser(rest);
+    }
+}
+
+TEST(LiteralLine, ReadsTheBlockNumberAsTheGeneralParserDoes) {
+    for (const char* number :
+         {"", "0012 ", "12  ", "12\t", " 12 ", "12 /1 ", "/ ", "12/ ", "123456789012345678 ",
+          "12345678901234567 ", "99999999999999999999 ", "12;", "12X "}) {
+        expectSameAsGeneralParser(" X+1 Y-2", number);
     }
 }
 
