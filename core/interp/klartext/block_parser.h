@@ -55,6 +55,8 @@ private:
                 std::vector<std::string> args = {});
 
     FormulaEnvironment* m_env;
+    // The text of the last line parseLiteralLine gave up on (compared by address and length).
+    std::string_view m_generalLine;
     FormulaCache m_formulas;  // Q formulas of loops and subprograms, compiled
     ParseProblem m_problem;
 };

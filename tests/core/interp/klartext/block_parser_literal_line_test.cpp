@@ -161,6 +161,14 @@ TEST(LiteralLine, ABlockAfterAnotherLineKeepsNothingOfIt) {
     ASSERT_TRUE(parseInto(general, "3 l X+1 Y+Q1", fresh));
     expectSameLine(std::get<LinearBlock>(reused.statement), std::get<LinearBlock>(fresh.statement),
                    "3 L X+1 Y+Q1");
+    // The same text again, as a loop runs it: given up on once, parsed by the general parser.
+    const std::string loopLine = "3 L X+1 Y+Q1";
+    for (int pass = 0; pass < 2; ++pass) {
+        ASSERT_TRUE(parseInto(parser, loopLine, reused));
+        expectSameLine(std::get<LinearBlock>(reused.statement),
+                       std::get<LinearBlock>(fresh.statement), loopLine);
+        EXPECT_EQ(reused.blockNumber, 3);
+    }
     // Another statement after a line.
     ASSERT_TRUE(parseInto(parser, "4 LBL 1", reused));
     EXPECT_TRUE(std::holds_alternative<Label>(reused.statement));
