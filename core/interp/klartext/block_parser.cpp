@@ -374,18 +374,42 @@ std::string_view BlockParser::headWord(std::string_view text) {
 }
 
 bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
-    out.statement = Empty{};
-    out.blockNumber = -1;
     out.hidden = false;
+    // "123 L ...", most blocks of a CAM program: the number read here, the line in one pass.
+    const std::string_view text = line.text;
+    size_t digits = 0;
+    int64_t leadingNumber = 0;
+    while (digits < text.size() && digits < 18 && isDigit(text[digits]))
+        leadingNumber = leadingNumber * 10 + (text[digits++] - '0');
+    const bool numbered = digits > 0 && digits < 18 && digits < text.size() &&
+                          (text[digits] == ' ' || text[digits] == '\t');
+    // A loop runs the same text again: a line the one pass gave up on is not tried again.
+    const bool general = text.data() == m_generalLine.data() && text.size() == m_generalLine.size();
+    const bool literalLine = numbered && !general && digits + 2 < text.size() &&
+                             text[digits] == ' ' && text[digits + 1] == 'L' &&
+                             (text[digits + 2] == ' ' || text[digits + 2] == '\t');
+    if (literalLine) {
+        if (parseLiteralLine(text, digits + 2, out)) {
+            out.blockNumber = leadingNumber;
+            return true;
+        }
+        m_generalLine = text;
+    }
+    out.blockNumber = -1;
     Context c(line.text, m_env, m_formulas, m_problem);
     Cursor& cur = c.cursor;
+    if (numbered) {
+        out.blockNumber = leadingNumber;
+        cur.setPosition(digits);
+    }
     cur.skipBlanks();
-    if (isDigit(cur.peekRaw())) {
+    if (!numbered && isDigit(cur.peekRaw())) {
         size_t at = cur.position();
         auto number = cur.unsignedInteger();
         char after = cur.peekRaw();
         if (!number || (after != ' ' && after != '\t' && after != '\0' && after != ';')) {
             cur.setPosition(at);
+            out.statement = Empty{};
             return c.unexpected();
         }
         out.blockNumber = *number;
@@ -395,6 +419,14 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
         cur.unsignedInteger();
         out.hidden = true;
     }
+    cur.skipBlanks();
+    const size_t head = cur.position();
+    if (!literalLine && !general && head + 1 < line.text.size() && line.text[head] == 'L' &&
+        (line.text[head + 1] == ' ' || line.text[head + 1] == '\t') &&
+        parseLiteralLine(line.text, head + 1, out)) {
+        return true;
+    }
+    out.statement = Empty{};
     if (cur.atEnd() || cur.peek() == '*') return true;
     return parseStatement(c, line, out);
 }

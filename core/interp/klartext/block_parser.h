@@ -24,6 +24,9 @@ public:
 
 private:
     bool parseStatement(Context& c, const program::LogicalLine& line, ParsedBlock& out);
+    // A literal L block read in one pass (block_parser_literal_line.cpp); false leaves the block
+    // to parseStatement, with `out` to be overwritten.
+    bool parseLiteralLine(std::string_view text, size_t at, ParsedBlock& out);
     // Cycle blocks (block_parser_cycles.cpp). Each reports a problem in m_problem.
     // `probe`: TCH PROBE n, whose sub-blocks stay text (31.1 CHECK: 1 Q5).
     bool parseCycleDef(const program::LogicalLine& line, size_t at, ParsedBlock& out,
@@ -52,6 +55,8 @@ private:
                 std::vector<std::string> args = {});
 
     FormulaEnvironment* m_env;
+    // The text of the last line parseLiteralLine gave up on (compared by address and length).
+    std::string_view m_generalLine;
     FormulaCache m_formulas;  // Q formulas of loops and subprograms, compiled
     ParseProblem m_problem;
 };
