@@ -200,6 +200,20 @@ TEST_F(ProbingExamples, Seed15_14StudMeasuredBy424IsFinishedToSize) {
     }
 }
 
+TEST_F(ProbingExamples, RemovalBenchmarkMeasuresThePocketItsThousandMovesCleared) {
+    // The tool's centre covers X 25..75, Y 15..45 down to Z-25; tool 5 is really 4.988 in
+    // radius and 0.05 longer (machine.toml): the pocket is 59.976 x 39.976 about (50, 30), its
+    // floor at -25.05. 417 makes that floor Z 0, so L X+0 Y+0 Z+10 ends at Z -15.05.
+    const nlohmann::json report = run("REMOVAL");
+    EXPECT_TRUE(report["ok"].get<bool>());
+    EXPECT_NEAR(report["final_position"]["Z"].get<double>(), -15.05, 0.002);
+    const std::string log = read(dir / "TCHPR423.TXT");
+    const size_t actual = log.find("Actual values:");
+    ASSERT_NE(actual, std::string::npos) << log;
+    EXPECT_NE(log.find("  side length main axis     +59.9760\n", actual), std::string::npos) << log;
+    EXPECT_NE(log.find("  side length secondary     +39.9760\n", actual), std::string::npos) << log;
+}
+
 TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
     EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
 }
