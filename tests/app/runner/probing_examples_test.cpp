@@ -150,6 +150,70 @@ TEST_F(ProbingExamples, Seed14_15DatumAtABoltCircleDrilledInTheSameProgram) {
     }
 }
 
+TEST_F(ProbingExamples, Seed13_8TwoDrilledHolesTurnTheCTableAndZeroItsDisplay) {
+    // The holes are drilled where the tool went, (25, 15) and (80, 35): the line between them
+    // lies at atan2(20, 55) = 19.98311 degrees whatever the setup error, and Q307 = 0. 401 with
+    // Q402 = 1 turns mill5's C table by that; Q337 = 1 zeroes its display through C of preset
+    // row 0 (Q305 = 0), so the program's L C+0 afterwards leaves the table standing there.
+    const double line = std::atan2(20.0, 55.0) * 180.0 / std::numbers::pi;
+    for (const char* options : {"", "--motion"}) {
+        fs::remove(dir / "PRESET.PR");
+        const nlohmann::json report = run("CYC401", options, "machine5.toml");
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_machine_position"]["C"].get<double>(), line, 1e-5) << options;
+        std::istringstream presets(read(dir / "PRESET.PR"));
+        std::string line0;
+        bool found = false;
+        while (std::getline(presets, line0)) {
+            std::istringstream fields(line0);
+            std::string number;
+            double x = 0.0, y = 0.0, z = 0.0, a = 0.0, b = 0.0, c = 0.0;
+            if (!(fields >> number) || number != "0" || !(fields >> x >> y >> z >> a >> b >> c))
+                continue;
+            found = true;
+            EXPECT_NEAR(c, line, 1e-5) << options;
+        }
+        EXPECT_TRUE(found) << options << read(dir / "PRESET.PR");
+    }
+}
+
+TEST_F(ProbingExamples, Seed15_14StudMeasuredBy424IsFinishedToSize) {
+    // 213 mills the stud 81 x 61 about (50, 50) with tool 5, really 0.012 thinner than TOOL.T
+    // says (machine.toml): it stands 81.024 x 61.024. 424 measures that against 80 x 60:
+    // Q164 = Q165 = 1.024, so the finishing pass is programmed 79.976 x 59.976 and, with the
+    // same thin tool, leaves exactly 80 x 60, which the second 424 logs.
+    for (const char* options : {"", "--motion"}) {
+        fs::remove(dir / "TCHPR424.TXT");
+        const nlohmann::json report = run("BEAMS", options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 79.976, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(), 59.976, 0.002) << options;
+        const std::string log = read(dir / "TCHPR424.TXT");
+        const size_t actual = log.find("Actual values:");
+        ASSERT_NE(actual, std::string::npos) << log;
+        EXPECT_NE(log.find("  side length main axis     +80.0000\n", actual), std::string::npos)
+            << log;
+        EXPECT_NE(log.find("  side length secondary     +60.0000\n", actual), std::string::npos)
+            << log;
+        EXPECT_NE(log.find("  centre main axis          +50.0000\n", actual), std::string::npos)
+            << log;
+    }
+}
+
+TEST_F(ProbingExamples, RemovalBenchmarkMeasuresThePocketItsThousandMovesCleared) {
+    // The tool's centre covers X 25..75, Y 15..45 down to Z-25; tool 5 is really 4.988 in
+    // radius and 0.05 longer (machine.toml): the pocket is 59.976 x 39.976 about (50, 30), its
+    // floor at -25.05. 417 makes that floor Z 0, so L X+0 Y+0 Z+10 ends at Z -15.05.
+    const nlohmann::json report = run("REMOVAL");
+    EXPECT_TRUE(report["ok"].get<bool>());
+    EXPECT_NEAR(report["final_position"]["Z"].get<double>(), -15.05, 0.002);
+    const std::string log = read(dir / "TCHPR423.TXT");
+    const size_t actual = log.find("Actual values:");
+    ASSERT_NE(actual, std::string::npos) << log;
+    EXPECT_NE(log.find("  side length main axis     +59.9760\n", actual), std::string::npos) << log;
+    EXPECT_NE(log.find("  side length secondary     +39.9760\n", actual), std::string::npos) << log;
+}
+
 TEST_F(ProbingExamples, BasicRotationFromTheManualsExampleRuns) {
     EXPECT_TRUE(run("ROT400")["ok"].get<bool>());
 }
