@@ -377,6 +377,10 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
     out.statement = Empty{};
     out.blockNumber = -1;
     out.hidden = false;
+    if (line.text.size() > program::kMaxBlockCharacters) {
+        return failAt(program::kMaxBlockCharacters, "syntax",
+                      KERF_TR_NOOP("the block is longer than 60000 characters"));
+    }
     Context c(line.text, m_env, m_formulas, m_problem);
     Cursor& cur = c.cursor;
     cur.skipBlanks();
