@@ -3,10 +3,13 @@
 TCH PROBE, ISO G2xx/G4xx words `Qnnn=`) in the golden cycle, SL, probing and rotary programs and
 in examples/ is replaced, one at a time, by extreme values (0, negatives, tiny, huge, and 1e300 or
 1e-300 through a Q parameter set at the top of the program), and each copy goes through
-`kerf check` and `kerf run` (interpreter only; with --motion also `kerf run --motion`). Lists every crash, hang (timeout), memory blow-up (the
-address-space limit) and exit code other than 0/1. Used for docs/fuzzing.md, "Third adversarial pass".
+`kerf check` and `kerf run` (the interpreter only; with --motion also `kerf run --motion`, with
+--check-only only `kerf check`). Lists every crash, hang (timeout), memory blow-up (the
+address-space limit) and exit code other than 0/1. Used for docs/fuzzing.md, "Third adversarial
+pass".
 
-  scripts/cycle_params_run.py KERF OUT_DIR [--seconds N] [--jobs N] [--per-parameter N] [--seed N]
+  scripts/cycle_params_run.py KERF OUT_DIR [--seconds N] [--jobs N] [--per-parameter N]
+      [--seed N] [--timeout S] [--filter REGEX] [--values V1,V2] [--check-only] [--motion]
 """
 import argparse
 import concurrent.futures
@@ -134,7 +137,8 @@ def main():
             continue
         iso = name.upper().endswith(".I")
         text = with_setup((folder / name).read_bytes(), iso)
-        for label, content in variants(text, rng, a.per_parameter, a.values.split(",") if a.values else VALUES):
+        values = a.values.split(",") if a.values else VALUES
+        for label, content in variants(text, rng, a.per_parameter, values):
             jobs.append((folder, name, args, content, f"{folder.name}/{name} {label}"))
     rng.shuffle(jobs)
     print(f"{len(jobs)} variants", flush=True)
@@ -148,8 +152,8 @@ def main():
                 job = next(it, None)
                 if job is None:
                     break
-                pending.add(pool.submit(run_one, kerf, *job, a.timeout,
-                                        None if a.check_only else a.motion))
+                motion = None if a.check_only else a.motion
+                pending.add(pool.submit(run_one, kerf, *job, a.timeout, motion))
             if not pending:
                 break
             finished, pending = concurrent.futures.wait(
