@@ -8753,6 +8753,10 @@ wählen</translation>
         <source>RULED SURFACE</source>
         <translation>REGELFLÄCHE</translation>
     </message>
+    <message>
+        <source>cycle {1}: the two points of a measured line coincide</source>
+        <translation>Zyklus {1}: die beiden Punkte einer gemessenen Geraden fallen zusammen</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

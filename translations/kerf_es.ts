@@ -8753,6 +8753,10 @@ solución</translation>
         <source>RULED SURFACE</source>
         <translation>SUPERFICIE REGLADA</translation>
     </message>
+    <message>
+        <source>cycle {1}: the two points of a measured line coincide</source>
+        <translation>ciclo {1}: los dos puntos de una recta medida coinciden</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

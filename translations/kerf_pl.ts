@@ -8756,6 +8756,10 @@ rozwiązanie</translation>
         <source>RULED SURFACE</source>
         <translation>POWIERZCHNIA PROSTOKREŚLNA</translation>
     </message>
+    <message>
+        <source>cycle {1}: the two points of a measured line coincide</source>
+        <translation>cykl {1}: oba punkty mierzonej prostej pokrywają się</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

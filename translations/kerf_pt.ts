@@ -8753,6 +8753,10 @@ solução</translation>
         <source>RULED SURFACE</source>
         <translation>SUPERFÍCIE REGRADA</translation>
     </message>
+    <message>
+        <source>cycle {1}: the two points of a measured line coincide</source>
+        <translation>ciclo {1}: os dois pontos de uma reta medida coincidem</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

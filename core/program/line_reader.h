@@ -7,6 +7,11 @@
 
 namespace kerf::program {
 
+// The most characters one block may hold (its lines joined), in every dialect: parsing costs
+// tens of bytes a character, so an unbounded line of a damaged or generated file could exhaust
+// memory. Real blocks hold a few hundred at most.
+inline constexpr size_t kMaxBlockCharacters = 60000;
+
 // One physical line of a logical block, with the continuation mark removed.
 struct LineSegment {
     std::string_view text;

@@ -17,6 +17,7 @@ struct ProgramText {
     bool crlf = false;
 };
 
+// An error for a file with a line longer than a block may be (program::kMaxBlockCharacters).
 Expected<ProgramText> readProgramFile(const std::filesystem::path& path);
 // Through the NC root's checks (docs/files.md): refused outside the root, through a link or onto
 // something that is not a regular file. Atomic: a crash leaves the old file or the new one.

@@ -11,6 +11,7 @@
 #include "core/cycles/contour/sl_machining.h"
 #include "core/cycles/contour/trochoid.h"
 #include "core/cycles/detail/cycle_list.h"
+#include "core/cycles/drilling/hole_levels.h"
 #include "core/cycles/pocket/milling_setup.h"
 #include "core/cycles/pocket/pocket_parameters.h"
 #include "core/geometry/arc_math.h"
@@ -134,6 +135,11 @@ std::optional<CycleError> expand(const CycleValues& given, const CycleContext& c
     loops.counterClockwise = climb;
     loops.edgeOffset = s.feedReference == 3 ? radius : 0.0;
     const Chain& line = train.segments;
+    // Each loop is two moves; a tiny pitch (Q436 = 1e-300 is in range) would list endless loops.
+    if (loops.loopRadius > 1e-9 &&
+        2.0 * chainLength(line) / loops.pitch >= static_cast<double>(CyclePath::kMoveLimit)) {
+        return tooManyMoves(275);
+    }
     const Vec2 start = line.front().start;
     const HoleLevels& l = s.levels;
 

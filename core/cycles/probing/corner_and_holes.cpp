@@ -90,6 +90,9 @@ double sign(double value) {
 std::optional<CycleError> cornerResults(int cycle, const CycleValues& v,
                                         const std::array<Vec2, 4>& touched, ProbeSequence& sequence,
                                         ProbingResults& results) {
+    if (!lineAngleDeg(touched[0], touched[1]) || !lineAngleDeg(touched[2], touched[3])) {
+        return coincidentTouches(cycle);
+    }
     auto corner = intersect(touched[0], touched[1], touched[2], touched[3]);
     if (!corner) {
         return probingError(cycle, "PRB-019",
@@ -99,7 +102,7 @@ std::optional<CycleError> cornerResults(int cycle, const CycleValues& v,
     results.set(152, corner->y());
     if (v.integer(304) == 1) {
         // Line 1 runs along the main axis: its angle is the misalignment (either direction).
-        double angle = lineAngleDeg(touched[0], touched[1]);
+        double angle = *lineAngleDeg(touched[0], touched[1]);  // apart: checked above
         if (angle > 90.0) angle -= 180.0;
         if (angle <= -90.0) angle += 180.0;
         results.basicRotationDeg = angle;

@@ -140,6 +140,9 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         if (v.integer(1125) == 1) sequence.retract();
     }
     if (v.integer(1125) != -1) sequence.retract();
+    if (!lineAngleDeg(touched[0], touched[1]) || !lineAngleDeg(touched[2], touched[3])) {
+        return coincidentTouches(1416);
+    }
     auto corner = intersect(touched[0], touched[1], touched[2], touched[3]);
     if (!corner) {
         return probingError(1416, "PRB-019", KERF_TR_NOOP("cycle {1}: the two edges are parallel"));
@@ -162,7 +165,7 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     std::array<double, 2> misalignment;
     for (size_t edge = 0; edge < 2; ++edge) {
         double delta =
-            normalizedDeg(lineAngleDeg(touched[2 * edge], touched[2 * edge + 1]) - angles[edge]);
+            normalizedDeg(*lineAngleDeg(touched[2 * edge], touched[2 * edge + 1]) - angles[edge]);
         if (delta > 90.0) delta -= 180.0;
         if (delta <= -90.0) delta += 180.0;
         misalignment[edge] = delta;

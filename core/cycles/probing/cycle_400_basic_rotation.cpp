@@ -38,7 +38,9 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         return e;
     }
     sequence.retract();
-    results.basicRotationDeg = normalizedDeg(lineAngleDeg(p1, p2) - v.number(307));
+    const std::optional<double> angle = lineAngleDeg(p1, p2);
+    if (!angle) return coincidentTouches(400);
+    results.basicRotationDeg = normalizedDeg(*angle - v.number(307));
     results.tableRow = v.integer(305);
     results.transfer = 1;
     return std::nullopt;

@@ -82,9 +82,11 @@ std::optional<CycleError> checkCompensation(int cycle, const CycleValues& v,
 // The line from centre 1 to centre 2 (G2) less Q307: Q402 = 0 a basic rotation; Q402 = 1 the C
 // table turns by it (as 403: a table at angle t turns the part by -t), Q337 = 1 then zeroes
 // the C display in row Q305, Q337 = 0 leaves the display (the preset active at the call).
-void setRotation(const CycleValues& v, const Vec2& first, const Vec2& second,
-                 ProbingResults& results) {
-    const double rotation = normalizedDeg(lineAngleDeg(first, second) - v.number(307));
+std::optional<CycleError> setRotation(int cycle, const CycleValues& v, const Vec2& first,
+                                      const Vec2& second, ProbingResults& results) {
+    const std::optional<double> line = lineAngleDeg(first, second);
+    if (!line) return coincidentTouches(cycle);
+    const double rotation = normalizedDeg(*line - v.number(307));
     results.transfer = 1;
     if (v.integer(402) == 1) {
         RotaryCompensation rotary;
@@ -93,10 +95,11 @@ void setRotation(const CycleValues& v, const Vec2& first, const Vec2& second,
         rotary.zeroDisplay = v.integer(337) == 1;
         results.rotary = rotary;
         results.tableRow = rotary.zeroDisplay ? v.integer(305) : -1;
-        return;
+        return std::nullopt;
     }
     results.basicRotationDeg = rotation;
     results.tableRow = v.integer(305);
+    return std::nullopt;
 }
 
 // The hole touches start at each hole's centre and rise between the holes; 401 and 418 have
@@ -122,8 +125,7 @@ std::optional<CycleError> run401(const CycleValues& v, const ProbeData& probe,
         return e;
     }
     sequence.retract();
-    setRotation(v, first, second, results);
-    return std::nullopt;
+    return setRotation(401, v, first, second, results);
 }
 
 // 402: four touches at 0, 90, 180 and 270 degrees inward on each stud (spec impl. note), stud 2
@@ -144,8 +146,7 @@ std::optional<CycleError> run402(const CycleValues& v, const ProbeData& probe,
         Vec2(v.number(270), v.number(271)), v.number(314), 0.0, 90.0, 4, false};
     if (auto e = probeCircle(402, sequence2, touches2, stud2)) return e;
     sequence2.retract();
-    setRotation(v, stud1.centre, stud2.centre, results);
-    return std::nullopt;
+    return setRotation(402, v, stud1.centre, stud2.centre, results);
 }
 
 // 418: the datum is where the line from hole 1 to hole 3 crosses the line from hole 2 to hole 4.

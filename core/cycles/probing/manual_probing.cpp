@@ -20,11 +20,11 @@ Vec3 surfacePoint(const ManualTouch& touch, double ballRadius) {
 // axis square to the operator's probing axis, folded to (-90, 90] (which point came first does
 // not count).
 std::optional<double> edgeRotation(const Vec2& a, const Vec2& b, const ManualTouch& touch) {
-    if ((b - a).norm() < 1e-9) return std::nullopt;
+    if (!lineAngleDeg(a, b)) return std::nullopt;
     const Vec3& direction = touch.direction;
     const double probing = std::atan2(direction.y(), direction.x()) * 180.0 / std::numbers::pi -
                            touch.basicRotationDeg;
-    double angle = normalizedDeg(lineAngleDeg(a, b) - probing - 90.0);
+    double angle = normalizedDeg(*lineAngleDeg(a, b) - probing - 90.0);
     if (angle > 90.0) angle -= 180.0;
     if (angle <= -90.0) angle += 180.0;
     return angle;

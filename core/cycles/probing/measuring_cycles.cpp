@@ -237,7 +237,9 @@ std::optional<CycleError> run420(const CycleValues& v, const ProbeData& probe,
         return e;
     }
     sequence.retract();
-    const double angle = lineAngleDeg(p1, p2);
+    const std::optional<double> measured = lineAngleDeg(p1, p2);
+    if (!measured) return coincidentTouches(420);
+    const double angle = *measured;
     results.set(150, angle);
     if (v.integer(281) != 0) {
         results.protocol = std::vector<std::string>{

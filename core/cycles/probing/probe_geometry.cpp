@@ -42,14 +42,16 @@ double normalizedDeg(double degrees) {
     return a;
 }
 
-double lineAngleDeg(const Vec2& a, const Vec2& b) {
+std::optional<double> lineAngleDeg(const Vec2& a, const Vec2& b) {
     const Vec2 u = b - a;
+    if (u.norm() < kMinTouchDistanceMm) return std::nullopt;
     return normalizedDeg(std::atan2(u.y(), u.x()) * 180.0 / std::numbers::pi);
 }
 
 std::optional<Vec2> intersect(const Vec2& a1, const Vec2& a2, const Vec2& b1, const Vec2& b2) {
     const Vec2 u = a2 - a1;
     const Vec2 v = b2 - b1;
+    if (u.norm() < kMinTouchDistanceMm || v.norm() < kMinTouchDistanceMm) return std::nullopt;
     const double den = u.x() * v.y() - u.y() * v.x();
     if (std::fabs(den) < 1e-9 * u.norm() * v.norm()) return std::nullopt;
     const Vec2 w = b1 - a1;

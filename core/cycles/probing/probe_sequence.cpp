@@ -10,6 +10,11 @@ CycleError probingError(int cycle, const char* code, const char* messageTemplate
     return CycleError{code, messageTemplate, std::move(args)};
 }
 
+CycleError coincidentTouches(int cycle) {
+    return probingError(cycle, "cycle-parameter",
+                        KERF_TR_NOOP("cycle {1}: the two points of a measured line coincide"));
+}
+
 ProbeSequence::ProbeSequence(int cycle, const CycleValues& values, const ProbeData& probe,
                              ProbingMachine& machine)
     : m_cycle(cycle), m_values(values), m_probe(probe), m_machine(machine) {}

@@ -50,5 +50,7 @@ private:
 // The error of a probing cycle with code `code` (PRB-nnn of spec 1.16).
 CycleError probingError(int cycle, const char* code, const char* messageTemplate,
                         std::vector<std::string> args = {});
+// Two touches (or measured centres) at one spot: the cycle's parameters give no line.
+CycleError coincidentTouches(int cycle);
 
 }  // namespace kerf::cycles::probing

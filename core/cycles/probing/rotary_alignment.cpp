@@ -53,7 +53,9 @@ std::optional<CycleError> measure403(const CycleValues& v, ProbeSequence& sequen
         Vec2 p1, p2;
         if (auto e = sequence.touchInPlane(a, direction, p1)) return e;
         if (auto e = sequence.touchInPlane(b, direction, p2)) return e;
-        turn = {'C', lineAngleDeg(p1, p2)};
+        const std::optional<double> angle = lineAngleDeg(p1, p2);
+        if (!angle) return coincidentTouches(403);
+        turn = {'C', *angle};
         return std::nullopt;
     }
     // Touches along -T: the slope of the surface between the points turns it about the plane

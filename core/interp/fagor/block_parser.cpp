@@ -5,6 +5,7 @@
 
 #include "core/base/translate.h"
 #include "core/interp/fagor/cycle_syntax.h"
+#include "core/program/line_reader.h"
 
 namespace kerf::fagor {
 
@@ -63,8 +64,9 @@ bool BlockParser::parse(std::string_view text, bool firstLine, ParsedBlock& out)
             break;
         }
     }
-    if (text.size() > 60000) {
-        return fail(0, "syntax", KERF_TR_NOOP("the block is longer than 60000 characters"));
+    if (text.size() > program::kMaxBlockCharacters) {
+        return fail(program::kMaxBlockCharacters, "syntax",
+                    KERF_TR_NOOP("the block is longer than 60000 characters"));
     }
     Scanner s(text);
     const char first = s.peek();

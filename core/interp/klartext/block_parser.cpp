@@ -375,6 +375,10 @@ std::string_view BlockParser::headWord(std::string_view text) {
 
 bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
     out.hidden = false;
+    if (line.text.size() > program::kMaxBlockCharacters) {
+        return failAt(program::kMaxBlockCharacters, "syntax",
+                      KERF_TR_NOOP("the block is longer than 60000 characters"));
+    }
     // "123 L ...", most blocks of a CAM program: the number read here, the line in one pass.
     const std::string_view text = line.text;
     size_t digits = 0;

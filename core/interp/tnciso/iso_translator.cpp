@@ -6,6 +6,7 @@
 #include "core/base/translate.h"
 #include "core/interp/klartext/cursor.h"
 #include "core/interp/tnciso/detail/translation_context.h"
+#include "core/program/line_reader.h"
 
 namespace kerf::tnciso {
 
@@ -108,6 +109,10 @@ bool IsoTranslator::fail(size_t offset, const char* messageTemplate,
 bool IsoTranslator::translate(const program::LogicalLine& line, Translation& out) {
     out.clear();
     const std::string_view text = line.text;
+    if (text.size() > program::kMaxBlockCharacters) {
+        return fail(program::kMaxBlockCharacters,
+                    KERF_TR_NOOP("the block is longer than 60000 characters"));
+    }
     size_t i = skipBlanks(text, 0);
     if (i < text.size() && text[i] == '/') {
         out.hidden = true;

@@ -54,11 +54,14 @@ protected:
         return seconds(usage.ru_utime) + seconds(usage.ru_stime);
     }
     // kerf <arguments>, killed after `limitSeconds` of wall time (only a guard against a hang:
-    // generous, as a loaded host stretches wall time many times).
-    Result kerf(const std::string& arguments, int limitSeconds = 300) {
+    // generous, as a loaded host stretches wall time many times); `addressSpaceKb` > 0 limits
+    // its memory (ulimit -v), so a blow-up ends in std::bad_alloc instead of passing unseen.
+    Result kerf(const std::string& arguments, int limitSeconds = 300, long addressSpaceKb = 0) {
         const fs::path errors = dir / "stderr.txt";
-        const std::string command = "timeout -s KILL " + std::to_string(limitSeconds) + " \"" +
-                                    KERF_BINARY + "\" " + arguments + " > /dev/null 2> \"" +
+        const std::string limit =
+            addressSpaceKb > 0 ? "ulimit -v " + std::to_string(addressSpaceKb) + "; " : "";
+        const std::string command = limit + "timeout -s KILL " + std::to_string(limitSeconds) +
+                                    " \"" + KERF_BINARY + "\" " + arguments + " > /dev/null 2> \"" +
                                     errors.string() + "\"";
         const double cpuBefore = childrenCpuSeconds();
         const int status = std::system(command.c_str());
@@ -165,6 +168,62 @@ TEST_F(KerfLimits, CrOnlyLineEndsReadInLinearTime) {
     Result r = kerf("check " + quoted(program));
     EXPECT_EQ(r.exitCode, 0) << r.errors.substr(0, 500);
     EXPECT_LT(r.cpuSeconds, 5.0);
+}
+
+// A 10 MB Klartext line of `Q1 = 1+1+...` took 400 MB (about 40 bytes a character) and 3.5 s,
+// and under `ulimit -v 600000` ended in an uncaught std::bad_alloc: a block holds at most 60,000
+// characters in every dialect (FAGOR had its limit), the first one beyond is the error's column.
+TEST_F(KerfLimits, ABlockHoldsAtMost60000CharactersInEveryDialect) {
+    std::string terms = "1";
+    while (terms.size() < 10000000)
+        terms += "+1";
+    const long kLimitKb = 400000;  // `kerf check` of a small program needs about 200 MB of it
+    const fs::path tnc =
+        write("long.H", "0 BEGIN PGM A MM\n1 Q1 = " + terms + "\n2 END PGM A MM\n");
+    Result r = kerf("check " + quoted(tnc), 300, kLimitKb);
+    EXPECT_EQ(r.exitCode, 1) << r.errors.substr(0, 500);
+    EXPECT_NE(r.errors.find("long.H:2:60001: error: the block is longer than 60000 characters"),
+              std::string::npos)
+        << r.errors.substr(0, 500);
+    r = kerf("run " + quoted(tnc) + " --motion", 300, kLimitKb);
+    EXPECT_EQ(r.exitCode, 1) << r.errors.substr(0, 500);
+    EXPECT_NE(r.errors.find("long.H:2:60001: error: the block is longer"), std::string::npos)
+        << r.errors.substr(0, 500);
+
+    // A block of a cycle's parameter lines counts all its lines: character 60,001 is on one of
+    // the 3,000 lines of 27 characters below line 2 (the joined block counts each line once).
+    std::string cycle = "0 BEGIN PGM C MM\n1 CYCL DEF 200 DRILLING\n";
+    for (int i = 0; i < 3000; ++i)
+        cycle += "  Q200=2 ;SET-UP CLEARANCE\n";
+    const fs::path lines = write("cycle.H", cycle + "2 END PGM C MM\n");
+    r = kerf("check " + quoted(lines), 300, kLimitKb);
+    EXPECT_EQ(r.exitCode, 1) << r.errors.substr(0, 500);
+    EXPECT_NE(r.errors.find(": error: the block is longer than 60000 characters"),
+              std::string::npos)
+        << r.errors.substr(0, 500);
+
+    // Exactly 60,000 characters is still a block.
+    std::string fits = "1 Q1 = 1";
+    while (fits.size() < 60000)
+        fits += "+1";
+    ASSERT_EQ(fits.size(), 60000u);
+    const fs::path exact = write("fits.H", "0 BEGIN PGM A MM\n" + fits + "\n2 END PGM A MM\n");
+    r = kerf("check " + quoted(exact), 300, kLimitKb);
+    EXPECT_EQ(r.exitCode, 0) << r.errors.substr(0, 500);
+
+    const fs::path iso = write("long.I", "%A G71 *\nN10 Q1 = " + terms + " *\nN20 %A G71 *\n");
+    r = kerf("check " + quoted(iso), 300, kLimitKb);
+    EXPECT_EQ(r.exitCode, 1) << r.errors.substr(0, 500);
+    EXPECT_NE(r.errors.find("long.I:2:60001: error: the block is longer than 60000 characters"),
+              std::string::npos)
+        << r.errors.substr(0, 500);
+
+    const fs::path lathe = write("long.pim", "(P1=" + terms + ")\nM30\n");
+    r = kerf("check " + quoted(lathe) + " --machine lathe", 300, kLimitKb);
+    EXPECT_EQ(r.exitCode, 1) << r.errors.substr(0, 500);
+    EXPECT_NE(r.errors.find("long.pim:1:60001: error: the block is longer than 60000 characters"),
+              std::string::npos)
+        << r.errors.substr(0, 500);
 }
 
 // report_utf8_abort.sh: a byte that is not UTF-8 in a message or a file name aborted --report.

@@ -170,6 +170,28 @@ TEST(TrochoidalSlot, RefusesWhatTheSeedForbids) {
     EXPECT_TRUE(run(275, noInfeed, trainContext(line), out));
 }
 
+// Q436 = 1e-300 (Q436 = Q1 with Q1 = 10 ^ -300 passes the range check 0 < Q436): the loop
+// centres were listed before any move limit, 1e302 of them; `kerf check` ended in std::bad_alloc
+// after 1 GB. A pitch that needs more loops than a cycle may have moves is refused first.
+TEST(TrochoidalSlot, APitchThatNeedsMoreLoopsThanACycleMayHaveIsAnError) {
+    const std::vector<PlanarSegment> line{PlanarSegment::line({0.0, 0.0}, {5.0, 0.0})};
+    for (double pitch : {1e-300, 1e-4}) {
+        CycleValues v = slot(10.0, 0.0, -3.0);
+        v.set(436, pitch);
+        Recorder out;
+        auto e = run(275, v, trainContext(line), out);
+        ASSERT_TRUE(e) << pitch;
+        EXPECT_EQ(e->code, "cycle-limit") << pitch;
+        EXPECT_TRUE(out.moves.empty()) << pitch;
+    }
+    // 5 mm at 0.0001 mm need 50,000 loops of two moves each: 100,000, the limit; 0.0002 fits.
+    CycleValues fits = slot(10.0, 0.0, -3.0);
+    fits.set(436, 2e-4);
+    Recorder out;
+    EXPECT_FALSE(run(275, fits, trainContext(line), out));
+    EXPECT_EQ(out.fullCircles().size(), 25001u);  // centres at 0, 0.0002 ... 5
+}
+
 CycleValues train(double allowance, int direction) {
     CycleValues v;
     const std::pair<uint16_t, double> values[] = {

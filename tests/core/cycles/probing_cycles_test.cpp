@@ -686,6 +686,45 @@ TEST(ProbingCycles, ErrorsOfTheManual) {
     EXPECT_EQ(findProbingCycle(999), nullptr);
 }
 
+// Two touches at one spot give no line: atan2(0, 0) made it a basic rotation of 0 degrees
+// (cycles 400, 420, 401 ran with exit code 0), and 1416 computed an infinite corner that only the
+// preset table refused ("column X cannot hold an infinite number").
+TEST(ProbingCycles, TouchPointsThatCoincideDefineNoLine) {
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = defaults(400);
+    v.set(263, 10), v.set(264, 0), v.set(265, 10), v.set(266, 0), v.set(272, 2), v.set(267, 1);
+    CycleRun r = run(400, v, part);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "cycle-parameter");
+    EXPECT_FALSE(r.results.basicRotationDeg);
+    // 420: the same two points on the front face.
+    CycleValues a = defaults(420);
+    a.set(263, 30), a.set(264, 0), a.set(265, 30), a.set(266, 0), a.set(272, 2), a.set(267, 1);
+    r = run(420, a, part);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "cycle-parameter");
+    // 1416: both touches of the first edge 40 mm from the nominal corner.
+    CycleValues i = defaults(1416);
+    i.set(1100, 0), i.set(1101, 0), i.set(1102, -5);
+    i.set(1130, 0), i.set(1131, 1), i.set(1132, 40), i.set(1133, 40);
+    i.set(1134, 90), i.set(1135, -1), i.set(1136, 10), i.set(1137, 40);
+    i.set(1120, 1), i.set(1121, 5);
+    i.setText(400, "2"), i.setText(401, "2");
+    r = run(1416, i, part);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "cycle-parameter");
+    EXPECT_FALSE(r.results.datum);
+    // 401: both holes programmed at one place (the same hole measured twice).
+    part.add({Cylinder{Vec2(20, 15), 5.0, -20, 1}, false});
+    CycleValues h = defaults(401);
+    h.set(268, 20), h.set(269, 15), h.set(270, 20), h.set(271, 15);
+    r = run(401, h, part);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "cycle-parameter");
+    EXPECT_FALSE(r.results.basicRotationDeg);
+}
+
 TEST(ProbingCycles, PolarDirectionTurnsFromTheAxisTowardsTheNextOfItsPlane) {
     // Cycles 1 and 3 (spec 4): X turns towards Y, Y towards Z, Z towards X.
     const double c = std::cos(std::numbers::pi / 6.0);

@@ -15,6 +15,7 @@
 #include "ui/common/diagnostic_text.h"
 #include "ui/editor/program_checker.h"
 #include "ui/editor/program_editor.h"
+#include "ui/editor/program_file.h"
 
 namespace kerf::ui {
 namespace {
@@ -277,6 +278,50 @@ TEST(ProgramPanel, LargeFilesLoadInTheBackground) {
     panel.editor()->undo();
     EXPECT_EQ(panel.editor()->document()->findBlockByNumber(2).text(),
               QStringLiteral("2 END PGM F MM"));
+}
+
+// A 10 MB line kept the panel busy for minutes (Qt lays out and shapes a line as a whole; `kerf
+// --program` with a 10 MB formula line had not drawn after 180 s). No dialect runs a block that
+// long, so the editor does not open it: an error names the line, the program shown stays.
+TEST(ProgramPanel, AFileWithALineLongerThanABlockIsNotOpened) {
+    test::testApp();
+    const auto dir = kerf::test::uniqueTempDir("hmi_panel_long_line");
+    writeFile(dir / "A.H", "0 BEGIN PGM A MM\n1 L Z+50 R0 FMAX\n2 END PGM A MM\n");
+    const std::string fits = "1 ; " + std::string(60000 - 4, 'x');
+    writeFile(dir / "FITS.H", "0 BEGIN PGM FITS MM\r\n" + fits + "\r\n2 END PGM FITS MM\r\n");
+    writeFile(dir / "LONG.H", "0 BEGIN PGM LONG MM\n" + fits + "x\n2 END PGM LONG MM\n");
+    // CR-only line ends: the third line is too long.
+    writeFile(dir / "CR.H", "0 BEGIN PGM CR MM\r1 L Z+50 R0 FMAX\r" + fits + "x\r");
+    ProgramPanel panel(settingsIn(dir));
+    ASSERT_TRUE(panel.open(dir / "A.H"));
+    ASSERT_TRUE(panel.open(dir / "FITS.H"));
+    EXPECT_EQ(panel.editor()->document()->findBlockByNumber(1).text().size(), 60000);
+    ASSERT_TRUE(panel.open(dir / "A.H"));
+    QSignalSpy messages(&panel, &ProgramPanel::message);
+    EXPECT_FALSE(panel.open(dir / "LONG.H"));
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_EQ(messages.at(0).at(0).value<Severity>(), Severity::Error);
+    EXPECT_TRUE(messages.at(0).at(1).toString().startsWith(
+        QStringLiteral("the block is longer than 60000 characters")))
+        << messages.at(0).at(1).toString().toStdString();
+    EXPECT_EQ(panel.path(), dir / "A.H");
+    EXPECT_EQ(panel.editor()->document()->blockCount(), 4);  // A.H and the empty last line
+    const auto error = readProgramFile(dir / "CR.H");
+    ASSERT_FALSE(error);
+    EXPECT_EQ(error.error().line, 3u);
+    EXPECT_EQ(error.error().column, 60001u);
+    EXPECT_TRUE(readProgramFile(dir / "FITS.H"));
+    // The same through the background loader of large files.
+    auto settings = settingsIn(dir);
+    settings.backgroundLoadBytes = 0;
+    ProgramPanel background(settings);
+    QSignalSpy failed(&background, &ProgramPanel::message);
+    ASSERT_TRUE(background.open(dir / "LONG.H"));
+    ASSERT_TRUE(failed.wait(10000));
+    EXPECT_EQ(failed.at(0).at(0).value<Severity>(), Severity::Error);
+    EXPECT_TRUE(failed.at(0).at(1).toString().startsWith(
+        QStringLiteral("the block is longer than 60000 characters")));
+    EXPECT_FALSE(background.loading());
 }
 
 // A program loaded in the background showed in the application's font (smaller than the
