@@ -61,19 +61,30 @@ void StockSimulation::createStock(const canon::StockDefinition& definition,
     if (const auto* box = std::get_if<canon::StockBox>(&definition.shape)) {
         m_mill = std::make_unique<HeightFieldStock>(box->min, box->max, cell, m_options.maxCells);
     } else if (const auto* cylinder = std::get_if<canon::StockCylinder>(&definition.shape)) {
-        if (cylinder->axis != Axis::Z) {
-            note("stock: only cylinders along Z are simulated on the mill");
+        const double top = cylinder->distanceMm;
+        const double bottom = top - cylinder->lengthMm;
+        if (cylinder->axis == Axis::Z) {
+            m_mill = std::make_unique<HeightFieldStock>(
+                HeightFieldStock::cylinder(0.0, 0.0, cylinder->radiusMm, cylinder->innerRadiusMm,
+                                           bottom, top, cell, m_options.maxCells));
+        } else if (cylinder->axis == Axis::X || cylinder->axis == Axis::Y) {
+            // Lying on a rotary table (A about X, B about Y): no height field holds it.
+            m_voxels = std::make_unique<VoxelStock>(VoxelStock::cylinder(
+                axisIndex(cylinder->axis), cylinder->radiusMm, cylinder->innerRadiusMm, bottom, top,
+                cell, m_options.maxVoxels));
+            m_initialVolumeMm3 = m_voxels->volumeMm3();
+            m_voxelBaselineMm3 = m_initialVolumeMm3;
+            m_removedBeforeVoxels = 0.0;
+        } else {
+            note("stock: only cylinders along X, Y or Z are simulated on the mill");
             return;
         }
-        const double top = cylinder->distanceMm;
-        m_mill = std::make_unique<HeightFieldStock>(
-            HeightFieldStock::cylinder(0.0, 0.0, cylinder->radiusMm, cylinder->innerRadiusMm,
-                                       top - cylinder->lengthMm, top, cell, m_options.maxCells));
     }
-    if (m_mill) {
+    const double simulatedCell = m_mill ? m_mill->cellMm() : (m_voxels ? m_voxels->cellMm() : 0.0);
+    if (m_mill || m_voxels) {
         m_source = source;
-        if (m_mill->cellMm() > cell * 1.0001) {
-            note("stock: resolution coarsened to " + std::to_string(m_mill->cellMm()) +
+        if (simulatedCell > cell * 1.0001) {
+            note("stock: resolution coarsened to " + std::to_string(simulatedCell) +
                  " mm to stay within the cell budget");
         }
     }
