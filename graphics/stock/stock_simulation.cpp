@@ -72,19 +72,22 @@ void StockSimulation::createStock(const canon::StockDefinition& definition,
             m_voxels = std::make_unique<VoxelStock>(VoxelStock::cylinder(
                 axisIndex(cylinder->axis), cylinder->radiusMm, cylinder->innerRadiusMm, bottom, top,
                 cell, m_options.maxVoxels));
+            m_lyingCylinderAxis = axisIndex(cylinder->axis);
             m_initialVolumeMm3 = m_voxels->volumeMm3();
             m_voxelBaselineMm3 = m_initialVolumeMm3;
             m_removedBeforeVoxels = 0.0;
+            m_source = source;
+            note(std::string("stock: a cylinder lying along ") + axisLetter(cylinder->axis) +
+                 ": simulated in voxels of " + std::to_string(m_voxels->cellMm()) + " mm");
         } else {
             note("stock: only cylinders along X, Y or Z are simulated on the mill");
             return;
         }
     }
-    const double simulatedCell = m_mill ? m_mill->cellMm() : (m_voxels ? m_voxels->cellMm() : 0.0);
-    if (m_mill || m_voxels) {
+    if (m_mill) {
         m_source = source;
-        if (simulatedCell > cell * 1.0001) {
-            note("stock: resolution coarsened to " + std::to_string(simulatedCell) +
+        if (m_mill->cellMm() > cell * 1.0001) {
+            note("stock: resolution coarsened to " + std::to_string(m_mill->cellMm()) +
                  " mm to stay within the cell budget");
         }
     }
@@ -316,7 +319,11 @@ double StockSimulation::resolutionMm() const {
 
 Mesh StockSimulation::mesh(int maxSide) const {
     if (m_mill) return m_mill->mesh(maxSide);
-    if (m_voxels) return m_voxels->mesh(std::min(maxSide, kMaxVoxelMeshSide));
+    if (m_voxels) {
+        Mesh mesh = m_voxels->mesh(std::min(maxSide, kMaxVoxelMeshSide));
+        mesh.shadeAboutAxis = m_lyingCylinderAxis;
+        return mesh;
+    }
     if (m_lathe) return m_lathe->mesh(180.0, 48, maxSide);
     return {};
 }

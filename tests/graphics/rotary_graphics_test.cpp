@@ -87,6 +87,7 @@ TEST(RotaryGraphics, HolesDrilledInATiltedPlaneAreOnTheSideFace) {
     const double expected = 2.0 * kPi * 2.5 * 2.5 * 8.0;
     EXPECT_NEAR(drawn.stock->removedVolumeMm3(), expected, 0.01 * expected);
     EXPECT_EQ(drawn.stock->rapidCuts(), 0u);
+    EXPECT_EQ(drawn.stock->mesh(60).shadeAboutAxis, -1);  // a box: shaded by height
 }
 
 TEST(RotaryGraphics, ToolpathIsDrawnOnTheTurnedPartWithTheToolsDirection) {
@@ -193,7 +194,18 @@ void expectCylinderAlongXWithTheSeedsGroove(const Drawn& drawn, size_t rapidCuts
     EXPECT_FALSE(voxels->solidAt({40.0, 0.0, 25.5}));
     EXPECT_FALSE(voxels->solidAt({85.5, 0.0, 0.0}));
     EXPECT_TRUE(voxels->solidAt({84.0, 0.0, 0.0}));
+    // The groove's area on the development is its centre line times the tool's width, 85.1327 x 7
+    // (corners of radius 4 > 3.5 do not overlap); across the circumference its depth 25 - 18
+    // counts as (25^2 - 18^2) / (2 x 25) = 6.02 mm of shell, along the axis the flat tool leaves
+    // the chord segment 7 x 7 less the surface's sag, 48.43 mm^2 over the width 7: 6.92 mm.
+    // A rapid cut from the start on the axis up through the blank adds the column pi 3.5^2 25.
+    const double area = 85.1327 * 7.0;
+    const double bore = static_cast<double>(rapidCuts) * kPi * 3.5 * 3.5 * 25.0;
+    EXPECT_GT(drawn.stock->removedVolumeMm3(), 0.98 * (area * 6.02 + bore));
+    EXPECT_LT(drawn.stock->removedVolumeMm3(), 1.02 * (area * 6.92 + bore));
     EXPECT_EQ(drawn.stock->rapidCuts(), rapidCuts);
+    // Drawn shaded by the distance from the A axis, as a turned part.
+    EXPECT_EQ(drawn.stock->mesh(60).shadeAboutAxis, 0);
 }
 
 TEST(RotaryGraphics, CylinderSurfaceCycleOnTheATableCutsACylinderAlongX) {
