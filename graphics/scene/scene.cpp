@@ -412,19 +412,27 @@ void Scene::setStockMesh(std::shared_ptr<const Mesh> mesh) {
     vtkNew<vtkFloatArray> depth;
     depth->SetName("height");
     depth->SetNumberOfTuples(static_cast<vtkIdType>(d.stock->vertexCount()));
-    const size_t heightAxis = d.options.lathe ? 0 : 2;
+    // A turned part (lathe about Z, a cylinder lying on a rotary table about X or Y) is shaded by
+    // the distance from its axis.
+    const int about = d.options.lathe ? 2 : d.stock->shadeAboutAxis;
     for (size_t i = 0; i < d.stock->vertexCount(); ++i) {
-        float value = d.stock->points[3 * i + heightAxis];
-        if (d.options.lathe) value = std::hypot(value, d.stock->points[3 * i + 1]);
+        const float* p = &d.stock->points[3 * i];
+        const float value = about >= 0 ? std::hypot(p[(about + 1) % 3], p[(about + 2) % 3]) : p[2];
         depth->SetValue(static_cast<vtkIdType>(i), value);
     }
     polyData->GetPointData()->SetScalars(depth);
     // Colour range: mill from the deepest upward-facing surface (the lowest floor) to the top,
-    // so cuts stand out whatever the blank's height; lathe from half the radius outwards.
+    // so cuts stand out whatever the blank's height; a turned part from half the radius outwards.
     double low = 0.0;
     double high = 1.0;
     if (d.options.lathe) {
         high = std::max(std::fabs(d.stock->bounds.min.x()), d.stock->bounds.max.x());
+        low = 0.5 * high;
+    } else if (about >= 0) {
+        const Bounds3& b = d.stock->bounds;
+        high = 0.0;
+        for (const int axis : {(about + 1) % 3, (about + 2) % 3})
+            high = std::max({high, std::fabs(b.min[axis]), std::fabs(b.max[axis])});
         low = 0.5 * high;
     } else {
         high = d.stock->bounds.max.z();

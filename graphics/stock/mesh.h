@@ -14,6 +14,9 @@ struct Mesh {
     std::vector<float> normals;       // xyz per vertex (unit), may be empty
     std::vector<uint32_t> triangles;  // 3 vertex indices per triangle
     Bounds3 bounds;
+    // A stock lying along X (0) or Y (1) about the origin (a part on a rotary table) is shaded
+    // by the distance from that axis, as a lathe's is from Z; -1: by height.
+    int shadeAboutAxis = -1;
 
     size_t vertexCount() const { return points.size() / 3; }
     size_t triangleCount() const { return triangles.size() / 3; }

@@ -61,14 +61,28 @@ void StockSimulation::createStock(const canon::StockDefinition& definition,
     if (const auto* box = std::get_if<canon::StockBox>(&definition.shape)) {
         m_mill = std::make_unique<HeightFieldStock>(box->min, box->max, cell, m_options.maxCells);
     } else if (const auto* cylinder = std::get_if<canon::StockCylinder>(&definition.shape)) {
-        if (cylinder->axis != Axis::Z) {
-            note("stock: only cylinders along Z are simulated on the mill");
+        const double top = cylinder->distanceMm;
+        const double bottom = top - cylinder->lengthMm;
+        if (cylinder->axis == Axis::Z) {
+            m_mill = std::make_unique<HeightFieldStock>(
+                HeightFieldStock::cylinder(0.0, 0.0, cylinder->radiusMm, cylinder->innerRadiusMm,
+                                           bottom, top, cell, m_options.maxCells));
+        } else if (cylinder->axis == Axis::X || cylinder->axis == Axis::Y) {
+            // Lying on a rotary table (A about X, B about Y): no height field holds it.
+            m_voxels = std::make_unique<VoxelStock>(VoxelStock::cylinder(
+                axisIndex(cylinder->axis), cylinder->radiusMm, cylinder->innerRadiusMm, bottom, top,
+                cell, m_options.maxVoxels));
+            m_lyingCylinderAxis = axisIndex(cylinder->axis);
+            m_initialVolumeMm3 = m_voxels->volumeMm3();
+            m_voxelBaselineMm3 = m_initialVolumeMm3;
+            m_removedBeforeVoxels = 0.0;
+            m_source = source;
+            note(std::string("stock: a cylinder lying along ") + axisLetter(cylinder->axis) +
+                 ": simulated in voxels of " + std::to_string(m_voxels->cellMm()) + " mm");
+        } else {
+            note("stock: only cylinders along X, Y or Z are simulated on the mill");
             return;
         }
-        const double top = cylinder->distanceMm;
-        m_mill = std::make_unique<HeightFieldStock>(
-            HeightFieldStock::cylinder(0.0, 0.0, cylinder->radiusMm, cylinder->innerRadiusMm,
-                                       top - cylinder->lengthMm, top, cell, m_options.maxCells));
     }
     if (m_mill) {
         m_source = source;
@@ -305,7 +319,11 @@ double StockSimulation::resolutionMm() const {
 
 Mesh StockSimulation::mesh(int maxSide) const {
     if (m_mill) return m_mill->mesh(maxSide);
-    if (m_voxels) return m_voxels->mesh(std::min(maxSide, kMaxVoxelMeshSide));
+    if (m_voxels) {
+        Mesh mesh = m_voxels->mesh(std::min(maxSide, kMaxVoxelMeshSide));
+        mesh.shadeAboutAxis = m_lyingCylinderAxis;
+        return mesh;
+    }
     if (m_lathe) return m_lathe->mesh(180.0, 48, maxSide);
     return {};
 }

@@ -105,6 +105,7 @@ private:
     double m_removedBeforeVoxels = 0.0;  // by the height field before the switch
     double m_voxelBaselineMm3 = 0.0;     // voxel volume at the switch
     double m_initialVolumeMm3 = 0.0;
+    int m_lyingCylinderAxis = -1;  // a cylinder blank along X (0) or Y (1)
     std::unique_ptr<LatheStock> m_lathe;
     std::vector<MillCutter> m_cutters{MillCutter{}};
     std::vector<LatheInsert> m_inserts{LatheInsert{}};

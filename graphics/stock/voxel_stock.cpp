@@ -151,6 +151,32 @@ VoxelStock VoxelStock::fromHeightField(const HeightFieldStock& field, size_t max
     return stock;
 }
 
+VoxelStock VoxelStock::cylinder(int along, double radiusMm, double innerRadiusMm, double lowMm,
+                                double highMm, double cellMm, size_t maxVoxels) {
+    VoxelStock stock;
+    Vec3 min = Vec3::Constant(-radiusMm);
+    Vec3 max = Vec3::Constant(radiusMm);
+    min[along] = lowMm;
+    max[along] = highMm;
+    stock.allocate(min, max, cellMm, maxVoxels);
+    const int u = (along + 1) % 3;
+    const int v = (along + 2) % 3;
+    const double outer = radiusMm * radiusMm;
+    const double inner = innerRadiusMm * innerRadiusMm;
+    for (int k = 0; k < stock.m_nz; ++k) {
+        for (int j = 0; j < stock.m_ny; ++j) {
+            uint64_t* words = &stock.m_bits[stock.row(j, k)];
+            for (int i = 0; i < stock.m_nx; ++i) {
+                const Vec3 centre = stock.m_origin + stock.m_cell * Vec3(i + 0.5, j + 0.5, k + 0.5);
+                const double r2 = centre[u] * centre[u] + centre[v] * centre[v];
+                if (r2 <= outer && r2 >= inner && centre[along] <= highMm)
+                    words[i >> 6] |= uint64_t{1} << (i & 63);
+            }
+        }
+    }
+    return stock;
+}
+
 double VoxelStock::cuttingLengthMm(const MillCutter& cutter) {
     // Long enough for the shank to clear what a deep plunge leaves above the flutes.
     return std::max({cutter.lengthMm, 10.0 * cutter.radiusMm, 30.0});

@@ -20,6 +20,11 @@ public:
     // The material of a height field (tool axis Z so far), at the height field's cell size or
     // coarser when the box it spans would exceed `maxVoxels`.
     static VoxelStock fromHeightField(const HeightFieldStock& field, size_t maxVoxels);
+    // A cylinder lying along the workpiece's X (`along` 0) or Y (1), or standing along Z (2), its
+    // axis through the origin, from `lowMm` to `highMm` along it, bored to `innerRadiusMm`: the
+    // blank of a part clamped on a rotary table, which the height field cannot hold.
+    static VoxelStock cylinder(int along, double radiusMm, double innerRadiusMm, double lowMm,
+                               double highMm, double cellMm, size_t maxVoxels);
 
     // Removes what the cutter sweeps while its tip moves in a straight line from a to b, its
     // axis (unit, from the tip up the tool) along `axis` all the way. The tool is taken as long as

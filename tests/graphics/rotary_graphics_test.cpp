@@ -29,11 +29,11 @@ struct Drawn {
     graphics::ToolpathData path;
 };
 
-Drawn run(const std::string& program) {
+Drawn run(const std::string& program, const std::string& machine = "mill5") {
     app::RunOptions options;
     options.program = kPrograms / program;
     options.toolTable = kPrograms / "TOOL.T";
-    options.machine = "mill5";
+    options.machine = machine;
     auto session = app::openSession(options);
     Drawn out;
     EXPECT_TRUE(session && session->ready());
@@ -87,6 +87,7 @@ TEST(RotaryGraphics, HolesDrilledInATiltedPlaneAreOnTheSideFace) {
     const double expected = 2.0 * kPi * 2.5 * 2.5 * 8.0;
     EXPECT_NEAR(drawn.stock->removedVolumeMm3(), expected, 0.01 * expected);
     EXPECT_EQ(drawn.stock->rapidCuts(), 0u);
+    EXPECT_EQ(drawn.stock->mesh(60).shadeAboutAxis, -1);  // a box: shaded by height
 }
 
 TEST(RotaryGraphics, ToolpathIsDrawnOnTheTurnedPartWithTheToolsDirection) {
@@ -147,6 +148,76 @@ TEST(RotaryGraphics, SimultaneousMoveIsDrawnAndCutOnThePart) {
         EXPECT_TRUE(voxels->solidAt({x, 3.0, -4.0})) << "X" << x;
         EXPECT_TRUE(voxels->solidAt({x, 0.0, -7.2})) << "X" << x;
     }
+}
+
+// The seed's cycle 27 example (chapter 8) on mill4, whose A table lies along X through the
+// workpiece origin (rotary/c27_mill4.H: the seed's program without PLANE, L A+0 for L C+0). The
+// development's v (the contour's Y) runs along the A axis, the part's X; u = 25 a turns the
+// table by a, and the tool, along machine +Z, meets the part at (v, -r sin a, r cos a): the
+// table turns the part by Rot(X, -a). Without BLK FORM the cycle defines the blank along X:
+// radius Q16 = 25 over v 20 - 7.5 (the corner arcs' reach) - 7 (two tool radii) - 10 = -4.5 to
+// 60 + 7.5 + 7 + 10 = 84.5, pi 25^2 89 = 174751 mm^3. The D7 tool's centre runs round u
+// 33.5..46.5 by v 23.5..56.5 down to r 18, so the contour's band u 30..37 is cut, the island
+// u 37..43 inside it and everything outside u 30..50 stays.
+struct OnTheCylinder {
+    double u;
+    double v;
+    double r;
+    Vec3 point() const {
+        const double a = u / 25.0;
+        return {v, -r * std::sin(a), r * std::cos(a)};
+    }
+};
+
+void expectCylinderAlongXWithTheSeedsGroove(const Drawn& drawn, size_t rapidCuts) {
+    ASSERT_TRUE(drawn.stock);
+    const graphics::VoxelStock* voxels = drawn.stock->voxelStock();
+    ASSERT_NE(voxels, nullptr) << "a cylinder lying along X needs the 3D stock";
+    EXPECT_EQ(drawn.stock->millStock(), nullptr);
+    const double blank = kPi * 25.0 * 25.0 * 89.0;
+    EXPECT_NEAR(drawn.stock->initialVolumeMm3(), blank, 0.01 * blank);
+    EXPECT_NEAR(voxels->minCorner().x(), -4.5, voxels->cellMm());
+    EXPECT_NEAR(voxels->maxCorner().x(), 84.5, voxels->cellMm());
+    // The groove (tool centre at u 33.5, the side v 23.5..56.5; the end u 30..50 at v 23.5).
+    for (const OnTheCylinder air :
+         {OnTheCylinder{33.5, 40.0, 19.0}, OnTheCylinder{31.0, 40.0, 24.5},
+          OnTheCylinder{46.5, 30.0, 19.0}, OnTheCylinder{40.0, 23.5, 19.0}})
+        EXPECT_FALSE(voxels->solidAt(air.point())) << "u " << air.u << " v " << air.v;
+    // Below the floor, the island, outside the contour, beyond its ends along the axis, and the
+    // other side of the cylinder: material.
+    for (const OnTheCylinder solid :
+         {OnTheCylinder{33.5, 40.0, 17.0}, OnTheCylinder{40.0, 40.0, 24.5},
+          OnTheCylinder{28.0, 40.0, 24.5}, OnTheCylinder{40.0, 17.0, 24.5},
+          OnTheCylinder{40.0, 63.0, 24.5}, OnTheCylinder{33.5 + 25.0 * kPi, 40.0, 24.5}})
+        EXPECT_TRUE(voxels->solidAt(solid.point())) << "u " << solid.u << " v " << solid.v;
+    // Material outside the blank's radius is not made up: nothing beyond r 25 or past its ends.
+    EXPECT_FALSE(voxels->solidAt({40.0, 0.0, 25.5}));
+    EXPECT_FALSE(voxels->solidAt({85.5, 0.0, 0.0}));
+    EXPECT_TRUE(voxels->solidAt({84.0, 0.0, 0.0}));
+    // The groove's area on the development is its centre line times the tool's width, 85.1327 x 7
+    // (corners of radius 4 > 3.5 do not overlap); across the circumference its depth 25 - 18
+    // counts as (25^2 - 18^2) / (2 x 25) = 6.02 mm of shell, along the axis the flat tool leaves
+    // the chord segment 7 x 7 less the surface's sag, 48.43 mm^2 over the width 7: 6.92 mm.
+    // A rapid cut from the start on the axis up through the blank adds the column pi 3.5^2 25.
+    const double area = 85.1327 * 7.0;
+    const double bore = static_cast<double>(rapidCuts) * kPi * 3.5 * 3.5 * 25.0;
+    EXPECT_GT(drawn.stock->removedVolumeMm3(), 0.98 * (area * 6.02 + bore));
+    EXPECT_LT(drawn.stock->removedVolumeMm3(), 1.02 * (area * 6.92 + bore));
+    EXPECT_EQ(drawn.stock->rapidCuts(), rapidCuts);
+    // Drawn shaded by the distance from the A axis, as a turned part.
+    EXPECT_EQ(drawn.stock->mesh(60).shadeAboutAxis, 0);
+}
+
+TEST(RotaryGraphics, CylinderSurfaceCycleOnTheATableCutsACylinderAlongX) {
+    expectCylinderAlongXWithTheSeedsGroove(run("c27_mill4.H", "mill4"), 0);
+}
+
+// The same blank written by hand: BLK FORM CYLINDER X R25 L89 DIST+84.5. It is there from the
+// start, which the interpreter takes at the workpiece origin, on the A axis inside the blank:
+// block 2's L Z+250 leaves it by one rapid cut (docs/klartext.md), along the axis at v 0, away
+// from the groove.
+TEST(RotaryGraphics, BlkFormCylinderAlongXIsTheATablesBlank) {
+    expectCylinderAlongXWithTheSeedsGroove(run("c27_blk_mill4.H", "mill4"), 1);
 }
 
 }  // namespace

@@ -262,8 +262,10 @@ void KlartextInterpreter::executeOldCycle(const CycleDefinition& def) {
              {std::to_string(def.number), std::to_string(def.subNumber)});
         return;
     }
-    // A transformation changes coordinates, not where the tool is: keep its position.
     if (legacy != nullptr) return legacyCycle(def, *legacy);
+    // Cycle 19 with F moves the rotary axes and keeps the position it reached itself.
+    if (def.number == 19) return workingPlane(def);
+    // A transformation changes coordinates, not where the tool is: keep its position.
     const Pose at = m_frame.toWorkpiece(m_programmed);
     (this->*(it->handler))(def);
     m_programmed = m_frame.toProgram(at);

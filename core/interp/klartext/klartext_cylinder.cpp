@@ -22,10 +22,11 @@ constexpr int kMaxChordsPerArc = 100000;
 constexpr double kBlankMarginMm = 10.0;  // a derived blank reaches this far past the contour
 
 // The blank a program without BLK FORM gets from its first cylinder-surface cycle [choice]: the
-// cylinder of radius Q16 along the workpiece's Z, over the development's v range (the contour
-// plus the tool, the slot's or ridge's half width and a margin), so that the test run draws and
-// cuts a cylinder instead of a box derived from the feed path.
-canon::StockCylinder derivedBlank(const cycles::ContourTrain& train, double radiusMm,
+// cylinder of radius Q16 along the table's axis (the workpiece's X for an A table, Z for a C
+// table), over the development's v range (the contour plus the tool, the slot's or ridge's half
+// width and a margin), so that the test run draws and cuts a cylinder instead of a box derived
+// from the feed path.
+canon::StockCylinder derivedBlank(Axis along, const cycles::ContourTrain& train, double radiusMm,
                                   double besideMm) {
     double low = std::numeric_limits<double>::infinity(), high = -low;
     for (const PlanarSegment& s : train.segments) {
@@ -36,7 +37,7 @@ canon::StockCylinder derivedBlank(const cycles::ContourTrain& train, double radi
         }
     }
     canon::StockCylinder blank;
-    blank.axis = Axis::Z;
+    blank.axis = along;
     blank.radiusMm = radiusMm;
     blank.distanceMm = high + besideMm + kBlankMarginMm;
     blank.lengthMm = high - low + 2.0 * (besideMm + kBlankMarginMm);
@@ -175,14 +176,17 @@ std::unique_ptr<cycles::CycleEmitter> KlartextInterpreter::cylinderOutput(
                                                    values.integer(17) == 0, tolerance);
     }
     const Axis table = *axisFromLetter(m_kinematics->innerTable());
-    // Only a C table turns the cylinder about the workpiece's Z; its development's v is then the
-    // workpiece's Z when the preset lies on the table's axis.
-    const Vec3 offAxis = preset - pivot;
-    if (!m_blank && table == Axis::C && std::hypot(offAxis.x(), offAxis.y()) < 1e-6 &&
-        placement.radiusMm > 0.0 && !ctx.train.segments.empty()) {
+    // An A, B or C table turns the cylinder about the workpiece's X, Y or Z; the development's v
+    // is then the workpiece's coordinate along it when the preset lies on the table's axis.
+    const int along = axisIndex(table) - axisIndex(Axis::A);
+    Vec3 offAxis = preset - pivot;
+    offAxis[along] = 0.0;
+    if (!m_blank && offAxis.norm() < 1e-6 && placement.radiusMm > 0.0 &&
+        !ctx.train.segments.empty()) {
         const double slot = d.number == 28 || d.number == 29 ? std::fabs(values.number(20)) : 0.0;
-        const canon::StockDefinition blank{derivedBlank(
-            ctx.train, placement.radiusMm, 2.0 * m_tool.effectiveRadius() + slot / 2.0)};
+        const canon::StockDefinition blank{
+            derivedBlank(static_cast<Axis>(along), ctx.train, placement.radiusMm,
+                         2.0 * m_tool.effectiveRadius() + slot / 2.0)};
         emit(blank);
         m_blank = workpiece::blankSolids(blank);
     }

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 namespace {
@@ -177,6 +178,30 @@ TEST_F(CylinderSeedExamples, Cycle28MillsBothWallsOfTheFiguresSlot) {
         EXPECT_NEAR(p.uMax, 61.5, 1e-3) << floor;
         EXPECT_NEAR(p.vMin, -71.5, 1e-3) << floor;
         EXPECT_NEAR(p.vMax, 1.5, 1e-3) << floor;
+    }
+}
+
+// Both programs on mill5h, the B head and C table they were written for, through planner and
+// servo cycle. Block 9's L Z+250 in the plane tilted to B+90 puts the tip 250 mm from the C axis
+// along +X with the tool lying along +X, so the axes stand the head pivot (200) and the tool
+// (60) further out: X = 510, inside mill5h's travel of +-600 (mill's +-400 refused it). PLANE
+// RESET TURN then turns the head back without moving X: the run ends at machine X 510, B 0.
+TEST_F(CylinderSeedExamples, BothRunWithMotionOnTheSwivelHeadMachine) {
+    for (const std::string program : {"C27.H", "C28.H"}) {
+        const fs::path report = dir / "report.json";
+        const std::string command =
+            std::string("\"") + KERF_BINARY + "\" run --machine mill5h --motion --tool-table \"" +
+            (dir / "TOOL.T").string() + "\" --report \"" + report.string() + "\" \"" +
+            (dir / program).string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+        EXPECT_EQ(std::system(command.c_str()), 0) << program << readText(dir / "errors");
+        const nlohmann::json r = nlohmann::json::parse(readText(report));
+        ASSERT_TRUE(r["ok"].get<bool>()) << program;
+        EXPECT_NEAR(r["feed_bounds"]["max"]["X"].get<double>(), 25.0 + 2.0 + 200.0 + 60.0, 1e-6)
+            << program;  // clearance Q6 = 2 above the surface
+        EXPECT_NEAR(r["final_machine_position"]["X"].get<double>(), 250.0 + 200.0 + 60.0, 1e-6)
+            << program;
+        EXPECT_NEAR(r["final_machine_position"]["B"].get<double>(), 0.0, 1e-9) << program;
+        EXPECT_FALSE(r["motion"]["refused"].get<bool>()) << program;
     }
 }
 

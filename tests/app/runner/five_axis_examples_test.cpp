@@ -73,10 +73,10 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir); }
 
-    // kerf run --motion on mill5 with the report, the trace and the servo cycles' samples.
-    nlohmann::json run(const std::string& program) {
+    // kerf run --motion (on mill5) with the report, the trace and the servo cycles' samples.
+    nlohmann::json run(const std::string& program, const std::string& machine = "mill5") {
         const std::string command =
-            std::string("\"") + KERF_BINARY + "\" run --machine mill5 --tool-table \"" +
+            std::string("\"") + KERF_BINARY + "\" run --machine " + machine + " --tool-table \"" +
             (dir / "TOOL.T").string() + "\" --motion --samples \"" +
             (dir / "samples.csv").string() + "\" --trace \"" + (dir / "trace").string() +
             "\" --report \"" + (dir / "report.json").string() + "\" \"" +
@@ -155,6 +155,38 @@ TEST_F(FiveAxisExamples, AllRunOnMill5WithinEveryJointLimit) {
             ASSERT_GE(a[2] + 60.0 - 400.0, -500.0);
             ASSERT_LE(a[2] + 60.0 - 400.0, 50.0 + 1e-6);
             ASSERT_LE(std::fabs(a[3]), 110.0);
+        }
+    }
+}
+
+// The same programs on the swivel heads: mill5h (B head, C table) and mill5hh (C/B fork head),
+// whose linear axes also make up for the head's pivot 200 mm above the nose. Their soft limits
+// (X +-600; Y +-300 on mill5h, +-500 on mill5hh; the nose's Z within -750 .. 50; B +-110) and
+// mill5's joint limits hold at every servo cycle.
+TEST_F(FiveAxisExamples, AllRunOnTheSwivelHeadMachinesWithinEveryJointLimit) {
+    for (const auto& [machine, yLimit] :
+         {std::pair{"mill5h", 300.0}, std::pair{"mill5hh", 500.0}}) {
+        for (const char* program : {"FACE32", "TCPM5X", "M128SIDES"}) {
+            SCOPED_TRACE(std::string(machine) + " " + program);
+            const nlohmann::json report = run(program, machine);
+            ASSERT_TRUE(report["ok"].get<bool>());
+            EXPECT_FALSE(report["motion"]["refused"].get<bool>());
+            for (const char* axis : {"X", "Y", "Z"}) {
+                const nlohmann::json& a = report["motion"]["axes"][axis];
+                EXPECT_LE(a["max_velocity"].get<double>(), 500.0 * 1.01) << axis;
+                EXPECT_LE(a["max_accel"].get<double>(), 2000.0 * 1.01) << axis;
+            }
+            EXPECT_LE(report["motion"]["axes"]["B"]["max_velocity"].get<double>(), 90.0 * 1.01);
+            EXPECT_LE(report["motion"]["axes"]["C"]["max_velocity"].get<double>(), 180.0 * 1.01);
+            const std::vector<Axes> rows = samples();
+            ASSERT_GT(rows.size(), 1000u);
+            for (const Axes& a : rows) {
+                ASSERT_LE(std::fabs(a[0]), 600.0);
+                ASSERT_LE(std::fabs(a[1]), yLimit);
+                ASSERT_GE(a[2] + 60.0 - 400.0, -750.0);
+                ASSERT_LE(a[2] + 60.0 - 400.0, 50.0 + 1e-6);
+                ASSERT_LE(std::fabs(a[3]), 110.0);
+            }
         }
     }
 }

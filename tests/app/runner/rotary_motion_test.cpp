@@ -154,8 +154,8 @@ TEST_F(RotaryMotion, TcpmTableTurnBeyondAnAxisLimitInMidBlockIsRefused) {
 }
 
 // mill5h (B head, pivot 200 mm above the spindle nose), tool 1 of length 80: PLANE ... B+90 MOVE
-// keeps the tip, so the axes make up for the head by (200 + 80)(+1, 0, -1): from X+100 the X axis
-// goes to 380 (inside its +400), from X+150 to 430, which the soft limit refuses, naming the
+// keeps the tip, so the axes make up for the head by (200 + 80)(+1, 0, -1): from X+300 the X axis
+// goes to 580 (inside its +600), from X+350 to 630, which the soft limit refuses, naming the
 // PLANE block (block 3, line 4), although the programmed X never leaves the work area.
 TEST_F(RotaryMotion, HeadPivotBeyondTheXLimitIsRefused) {
     auto program = [](int x) {
@@ -163,16 +163,16 @@ TEST_F(RotaryMotion, HeadPivotBeyondTheXLimitIsRefused) {
                " Y+0 Z+50 R0 FMAX\n3 PLANE SPATIAL SPA+0 SPB+90 SPC+0 MOVE FMAX SEQ+\n"
                "4 L Z+10 R0 F500\n5 PLANE RESET MOVE FMAX\n6 END PGM HEADLIM MM\n";
     };
-    std::ofstream(dir / "INSIDE.H") << program(100);
+    std::ofstream(dir / "INSIDE.H") << program(300);
     nlohmann::json report;
     ASSERT_EQ(run("INSIDE.H", report, "mill5h"), 0) << readText(dir / "errors");
-    EXPECT_NEAR(report["feed_bounds"]["max"]["X"].get<double>(), 380.0, 1e-6);
-    std::ofstream(dir / "HEADLIM.H") << program(150);
+    EXPECT_NEAR(report["feed_bounds"]["max"]["X"].get<double>(), 580.0, 1e-6);
+    std::ofstream(dir / "HEADLIM.H") << program(350);
     EXPECT_NE(run("HEADLIM.H", report, "mill5h"), 0);
     EXPECT_FALSE(report["ok"].get<bool>());
     const std::string errors = readText(dir / "errors");
-    EXPECT_NE(errors.find("HEADLIM.H:4:1: error: Block 3: the move would take axis X to 430.000 "
-                          "(machine coordinates), beyond its soft limit 400.000"),
+    EXPECT_NE(errors.find("HEADLIM.H:4:1: error: Block 3: the move would take axis X to 630.000 "
+                          "(machine coordinates), beyond its soft limit 600.000"),
               std::string::npos)
         << errors;
 }

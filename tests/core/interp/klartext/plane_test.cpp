@@ -367,6 +367,36 @@ TEST_F(PlaneTest, MoveKeepsThePointAtDistOnThePart) {
 
 // A shift after the tilt acts in the tilted system, a rotation (cycle 10) innermost; PLANE RESET
 // turns the tilted shift back into the untilted one: tilted X+5 under B+90 is the part's Z-5.
+// The seed's cycle 19 example with F (chapter 10: 19.1 A+0 B+45 C+0 F5000 DIST50, then L Z+80
+// and L Y-10) on mill5h: the head stays at B+45 for the moves after the cycle. Tool L 60:
+// the head adds (Ry(45) - I)(0, 0, 260) = (183.848, 0, -76.152); the tilted point (-8.5, -10, 80)
+// is Ry(45) (-8.5, -10, 80) = (50.558, -10, 62.579) on the part, so the axes stand at
+// (234.406, -10, -13.573).
+TEST_F(PlaneTest, Cycle19WithFeedKeepsTheHeadTurnedForTheNextMoves) {
+    ASSERT_EQ(run("mill5h",
+                  "1 TOOL DEF 1 L+60 R+3.5\n"
+                  "1 TOOL CALL 1 Z S2000\n"
+                  "2 L Z+100 R0 FMAX\n"
+                  "3 L X+25 Y+10 R0 FMAX\n"
+                  "4 CYCL DEF 19.0 WORKING PLANE\n"
+                  "5 CYCL DEF 19.1 A+0 B+45 C+0 F5000 DIST50\n"
+                  "6 L Z+80 R0 FMAX\n"
+                  "7 L X-8.5 Y-10 R0 FMAX\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    ASSERT_EQ(movesOf(5).size(), 1u);
+    EXPECT_NEAR(movesOf(5)[0][Axis::B], 45.0, 1e-9);
+    for (const int64_t block : {6, 7}) {
+        ASSERT_EQ(movesOf(block).size(), 1u) << block;
+        EXPECT_NEAR(movesOf(block)[0][Axis::B], 45.0, 1e-9) << block;
+    }
+    const double s = std::sqrt(0.5);
+    const Pose end = movesOf(7)[0];
+    EXPECT_NEAR(end[Axis::X], -8.5 * s + 80.0 * s + 260.0 * s, 1e-6);
+    EXPECT_NEAR(end[Axis::Y], -10.0, 1e-9);
+    EXPECT_NEAR(end[Axis::Z], 8.5 * s + 80.0 * s + 260.0 * s - 260.0, 1e-6);
+}
+
 TEST_F(PlaneTest, ShiftAndRotationComposeWithTheTilt) {
     ASSERT_EQ(run("mill5",
                   "1 PLANE SPATIAL SPA+0 SPB+90 SPC+0 STAY\n"
