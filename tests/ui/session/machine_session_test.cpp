@@ -426,18 +426,19 @@ TEST(MachineSessionLathe, SingleBlockStopsAfterAFagorBlockWithoutAMove) {
         bool coolant;
     };
     std::vector<Stop> stops;
-    bool wasStopped = false;
+    uint32_t stoppedAt = 0;  // the block of the stop NC start was pressed at
     const auto deadline = std::chrono::steady_clock::now() + 60s;
     while ((session.runState() == RunState::Running || session.runState() == RunState::Stopped) &&
            std::chrono::steady_clock::now() < deadline) {
         session.service();
-        const bool stopped = session.runState() == RunState::Stopped;
-        if (stopped && !wasStopped) {
-            stops.push_back({session.status().block.line, session.status().axes[0].nominal,
-                             session.status().coolant});
+        // A block without a move runs and stops within a servo cycle or two: between two looks
+        // here the state may stay Stopped, at the next block.
+        const uint32_t line = session.status().block.line;
+        if (session.runState() == RunState::Stopped && line != stoppedAt) {
+            stops.push_back({line, session.status().axes[0].nominal, session.status().coolant});
+            stoppedAt = line;
             session.cycleStart();
         }
-        wasStopped = stopped;
         std::this_thread::sleep_for(2ms);
     }
     ASSERT_EQ(session.runState(), RunState::Finished);
