@@ -9036,4 +9036,31 @@ PL</source>
 PL</translation>
     </message>
 </context>
+<context>
+    <name>kerf::ui::RenumberPrompt</name>
+    <message>
+        <source>Renumber blocks</source>
+        <translation>Sätze neu nummerieren</translation>
+    </message>
+    <message>
+        <source>First block number N</source>
+        <translation>Erste Satznummer N</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schrittweite</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 names a label through a parameter, which could not follow it</source>
+        <translation>Sätze nicht neu nummeriert: Zeile %1 nennt ein Label über einen Parameter, der ihm nicht folgen könnte</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: the profile of the cycle in line %1 would start or end at N%2; G66, G68 and G69 take labels of 4 digits</source>
+        <translation>Sätze nicht neu nummeriert: die Kontur des Zyklus in Zeile %1 würde bei N%2 beginnen oder enden; G66, G68 und G69 nehmen 4-stellige Labels</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
+        <translation>Sätze nicht neu nummeriert: Zeile %1 bekäme N%2, über N99999999 hinaus</translation>
+    </message>
+</context>
 </TS>

@@ -9037,4 +9037,31 @@ PL</source>
 PL</translation>
     </message>
 </context>
+<context>
+    <name>kerf::ui::RenumberPrompt</name>
+    <message>
+        <source>Renumber blocks</source>
+        <translation>Renumerar bloques</translation>
+    </message>
+    <message>
+        <source>First block number N</source>
+        <translation>Primer número de bloque N</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 names a label through a parameter, which could not follow it</source>
+        <translation>Bloques no renumerados: la línea %1 nombra una etiqueta mediante un parámetro, que no podría seguirla</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: the profile of the cycle in line %1 would start or end at N%2; G66, G68 and G69 take labels of 4 digits</source>
+        <translation>Bloques no renumerados: el perfil del ciclo de la línea %1 empezaría o acabaría en N%2; G66, G68 y G69 admiten etiquetas de 4 dígitos</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
+        <translation>Bloques no renumerados: la línea %1 obtendría N%2, más allá de N99999999</translation>
+    </message>
+</context>
 </TS>

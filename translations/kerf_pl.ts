@@ -9040,4 +9040,31 @@ PL</source>
 PL</translation>
     </message>
 </context>
+<context>
+    <name>kerf::ui::RenumberPrompt</name>
+    <message>
+        <source>Renumber blocks</source>
+        <translation>Przenumeruj bloki</translation>
+    </message>
+    <message>
+        <source>First block number N</source>
+        <translation>Pierwszy numer bloku N</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Krok</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 names a label through a parameter, which could not follow it</source>
+        <translation>Bloki nie zostały przenumerowane: wiersz %1 wskazuje etykietę przez parametr, który nie mógłby za nią podążyć</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: the profile of the cycle in line %1 would start or end at N%2; G66, G68 and G69 take labels of 4 digits</source>
+        <translation>Bloki nie zostały przenumerowane: kontur cyklu w wierszu %1 zaczynałby się lub kończył na N%2; G66, G68 i G69 przyjmują etykiety 4-cyfrowe</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
+        <translation>Bloki nie zostały przenumerowane: wiersz %1 otrzymałby N%2, powyżej N99999999</translation>
+    </message>
+</context>
 </TS>

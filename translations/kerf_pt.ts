@@ -9037,4 +9037,31 @@ PL</source>
 PL</translation>
     </message>
 </context>
+<context>
+    <name>kerf::ui::RenumberPrompt</name>
+    <message>
+        <source>Renumber blocks</source>
+        <translation>Renumerar blocos</translation>
+    </message>
+    <message>
+        <source>First block number N</source>
+        <translation>Primeiro número de bloco N</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Passo</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 names a label through a parameter, which could not follow it</source>
+        <translation>Blocos não renumerados: a linha %1 indica uma etiqueta por meio de um parâmetro, que não poderia segui-la</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: the profile of the cycle in line %1 would start or end at N%2; G66, G68 and G69 take labels of 4 digits</source>
+        <translation>Blocos não renumerados: o perfil do ciclo na linha %1 começaria ou terminaria em N%2; G66, G68 e G69 admitem etiquetas de 4 dígitos</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
+        <translation>Blocos não renumerados: a linha %1 receberia N%2, além de N99999999</translation>
+    </message>
+</context>
 </TS>

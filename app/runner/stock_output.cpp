@@ -24,9 +24,9 @@ StockOutput::StockOutput(const RunOptions& options, const Session& session)
     : m_program(options.program) {
     if (!options.stock) return;
     // A machine with rotary tables: the stock on the part the tables turn.
-    graphics::StockOptions stockOptions = graphics::stockOptionsFor(
-        session.machine, session.program.tools.get(),
-        machine::WorkpieceFrame::of(session.machine, session.workOffset), session.ncRoot);
+    graphics::StockOptions stockOptions =
+        graphics::stockOptionsFor(session.machine, session.program.tools.get(),
+                                  machine::WorkpieceFrame::of(session.machine, session.workOffset));
     m_stock = std::make_unique<graphics::StockSimulation>(std::move(stockOptions));
 }
 

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/base/fixed_format.h"
+#include "core/canon/lathe_tool_angle.h"
 #include "core/geometry/arc_math.h"
 
 namespace kerf::canon {
@@ -138,10 +139,11 @@ const char* syncName(SyncReason reason) {
 void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
     appendWord(out, "L=", g.lengthMm, kLengthDecimals);
     appendWord(out, "R=", g.radiusMm, kLengthDecimals);
-    appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);
+    const bool lathe = g.locationCode >= 0;
+    if (!lathe) appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);  // a lathe's: its NOSEA
     out += " AXIS ";
     out += axisLetter(toolAxis);
-    if (g.locationCode >= 0) {
+    if (lathe) {
         out += " D";
         out.integer(g.offsetNumber);
         appendWord(out, "TIPX=", g.tipXMm, kLengthDecimals);
@@ -149,6 +151,8 @@ void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
         out += " LOC ";
         out.integer(g.locationCode);
         if (g.cuttingWidthMm > 0.0) appendWord(out, "W=", g.cuttingWidthMm, kLengthDecimals);
+        const double noseAngle = latheNoseAngleDeg(g);
+        if (noseAngle > 0.0) appendWord(out, "NOSEA=", noseAngle, kLengthDecimals);
     }
 }
 

@@ -51,6 +51,9 @@ public:
     // simulated button (real drives: their chain is wired, not simulated).
     virtual bool setEmergencyStopButton(bool /*pressed*/) { return false; }
     virtual void setSingleBlock(bool on) = 0;
+    // Whether single block also stops after a block without a move (a dwell, an M, S or T
+    // function alone), as the FAGOR 8035 does; otherwise such a block runs with the next one.
+    virtual void setSingleBlockEveryBlock(bool /*on*/) {}
 
     // What the HMI needs beyond a program run. The defaults suit a port without a machine
     // (test run, tests): overrides are ignored, manual motion is refused (false), and the status

@@ -43,6 +43,7 @@ public:
         return m_machine->setEmergencyStopButton(pressed);
     }
     void setSingleBlock(bool on) override { m_machine->setSingleBlock(on); }
+    void setSingleBlockEveryBlock(bool on) override { m_machine->setSingleBlockEveryBlock(on); }
 
     void setFeedOverride(double fraction) override { m_machine->setFeedOverride(fraction); }
     void setRapidOverride(double fraction) override { m_machine->setRapidOverride(fraction); }

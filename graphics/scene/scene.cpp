@@ -31,6 +31,7 @@
 #include <vtkTypeInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 
+#include "core/canon/lathe_tool_angle.h"
 #include "graphics/scene/detail/scene_impl.h"
 #include "graphics/scene/detail/tool_axis_lines.h"
 #include "graphics/scene/scene_vtk.h"
@@ -361,10 +362,13 @@ void Scene::setToolpath(std::shared_ptr<const ToolpathData> data,
             if (d.options.lathe) {
                 LatheInsert insert = LatheInsert::fromGeometry(last.geometry);
                 if (insert.kind == LatheToolKind::Turning) {
-                    // The tool table gives the nose and the tip code; drawn as the common 80
-                    // degree rhombic insert so that it shows which way it cuts.
+                    // The tool table gives the nose and the tip code; drawn as a rhombic insert
+                    // of its NOSEA, or the common 80 degree one, so that it shows which way it
+                    // cuts.
+                    const double noseAngle = canon::latheNoseAngleDeg(last.geometry);
                     insert.noseRadiusMm = std::max(0.4, last.geometry.radiusMm);
-                    insert.includedAngleDeg = 80.0;
+                    insert.includedAngleDeg =
+                        noseAngle > 0.0 && noseAngle < 180.0 ? noseAngle : 80.0;
                     insert.edgeLengthMm = 8.0;
                 }
                 glyph.shape = insert;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/canon/lathe_tool_angle.h"
 #include "core/geometry/arc_math.h"
 
 namespace kerf::graphics {
@@ -137,6 +138,10 @@ LatheInsert LatheInsert::fromGeometry(const canon::ToolGeometry& geometry) {
         const bool centre = geometry.locationCode == 0 || geometry.locationCode == 9;
         insert.kind = centre ? LatheToolKind::Drill : LatheToolKind::Grooving;
         insert.widthMm = geometry.cuttingWidthMm;
+    }
+    const double point = canon::latheNoseAngleDeg(geometry);
+    if (insert.kind == LatheToolKind::Drill && point > 0.0 && point < 180.0) {
+        insert.pointAngleDeg = point;
     }
     return insert;
 }

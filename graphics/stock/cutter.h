@@ -55,8 +55,8 @@ struct LatheInsert {
 
     // The tool of a canonical lathe offset: a cutting width (NOSEW) makes a centre code (F0, F9:
     // the programmed point on the tool's axis) a drill of that diameter and a corner or face
-    // code a grooving tool of that width; anything else is a turning insert of nose R. A drill
-    // gets the default point (the tool table's NOSEA: latheInsertWithPointAngles).
+    // code a grooving tool of that width; anything else is a turning insert of nose R. A drill's
+    // point is the tool's nose angle (NOSEA), the default point without one.
     static LatheInsert fromGeometry(const canon::ToolGeometry& geometry);
 
     // Unit tip-offset vector u = (uX, uZ) of a code: P = C + R * u.

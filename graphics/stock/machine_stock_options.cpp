@@ -2,8 +2,6 @@
 
 #include <map>
 
-#include "core/interp/fagor/tables/tool_table.h"
-#include "core/program/nc_root.h"
 #include "core/tables/tool_table.h"
 
 namespace kerf::graphics {
@@ -23,23 +21,8 @@ std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
     };
 }
 
-std::function<LatheInsert(const canon::ToolChange&)> latheInsertWithPointAngles(
-    const fagor::ToolTable* tools) {
-    std::optional<fagor::ToolTable> table;
-    if (tools != nullptr) table = *tools;
-    return [table](const canon::ToolChange& tool) {
-        LatheInsert insert = LatheInsert::fromGeometry(tool.geometry);
-        const double angle = table ? table->get(tool.number).noseAngle : 0.0;
-        if (insert.kind == LatheToolKind::Drill && angle > 0.0 && angle < 180.0) {
-            insert.pointAngleDeg = angle;
-        }
-        return insert;
-    };
-}
-
 StockOptions stockOptionsFor(const machine::MachineConfig& machine, const tables::ToolTable* tools,
-                             std::optional<machine::WorkpieceFrame> workpieceFrame,
-                             const std::filesystem::path& ncRoot) {
+                             std::optional<machine::WorkpieceFrame> workpieceFrame) {
     StockOptions options;
     options.workpieceFrame = std::move(workpieceFrame);
     const bool lathe = machine.kind == machine::MachineKind::Lathe;
@@ -53,18 +36,6 @@ StockOptions stockOptionsFor(const machine::MachineConfig& machine, const tables
         blank.zMax = bar.faceZMm;
         blank.zMin = bar.faceZMm - bar.lengthMm;
         options.bar = blank;
-    }
-    if (lathe) {
-        // The table the FAGOR interpreter reads (docs/fagor.md, "Tables"); unreadable: no
-        // NOSEA, the interpreter reports the table.
-        std::optional<fagor::ToolTable> latheTools;
-        if (!ncRoot.empty()) {
-            const program::NcRoot root(ncRoot);
-            if (auto bytes = root.read(ncRoot / "fagor_tools.tab")) {
-                if (auto parsed = fagor::ToolTable::parse(*bytes)) latheTools = std::move(*parsed);
-            }
-        }
-        options.latheInsert = latheInsertWithPointAngles(latheTools ? &*latheTools : nullptr);
     }
     options.millCutter = millCutterWithPointAngles(tools);
     return options;

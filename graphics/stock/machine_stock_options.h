@@ -1,6 +1,5 @@
 #pragma once
 
-#include <filesystem>
 #include <functional>
 #include <optional>
 
@@ -14,10 +13,6 @@ namespace kerf::tables {
 class ToolTable;
 }
 
-namespace kerf::fagor {
-class ToolTable;
-}
-
 namespace kerf::graphics {
 
 // The mill cutter of a tool change: R and R2 of the canonical tool, the point angle (T-ANGLE)
@@ -26,18 +21,11 @@ namespace kerf::graphics {
 std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
     const tables::ToolTable* tools);
 
-// The lathe tool of a tool change (LatheInsert::fromGeometry), a drill's point angle from NOSEA
-// of the FAGOR tool table `tools` (the canonical tool change carries NOSEW, not NOSEA). The
-// angles are copied. No table or no NOSEA: the insert's default point.
-std::function<LatheInsert(const canon::ToolChange&)> latheInsertWithPointAngles(
-    const fagor::ToolTable* tools);
-
 // The stock simulation of a program on `machine`, the same for `kerf run --stock` and the test
 // run: the machine's bar on a lathe, a blank derived from the path when the program has none,
-// T-ANGLE from the tool table for drills (lathe: NOSEA of `fagor_tools.tab` in `ncRoot`), the
-// turned workpiece of a machine with rotary tables.
+// T-ANGLE from the tool table for a mill's drills (a lathe drill's point angle comes with its tool
+// change), the turned workpiece of a machine with rotary tables.
 StockOptions stockOptionsFor(const machine::MachineConfig& machine, const tables::ToolTable* tools,
-                             std::optional<machine::WorkpieceFrame> workpieceFrame,
-                             const std::filesystem::path& ncRoot = {});
+                             std::optional<machine::WorkpieceFrame> workpieceFrame);
 
 }  // namespace kerf::graphics

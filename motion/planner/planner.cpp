@@ -711,6 +711,7 @@ void Planner::emitAction(const Action& action, const SourceLocation& source) {
     item.kind = MotionItem::Kind::Action;
     item.sequence = ++m_sequence;
     item.action = action;
+    item.action.joinedGroup = m_joinedGroup;
     item.source = source;
     m_lookahead.push(item);
 }

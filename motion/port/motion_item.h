@@ -69,6 +69,7 @@ struct Action {
     double value2 = 0.0;
     double aux = 0.0;
     int32_t number = 0;
+    uint32_t joinedGroup = 0;  // as PathElement::joinedGroup
 };
 
 struct MotionItem {

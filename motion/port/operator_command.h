@@ -6,21 +6,22 @@
 namespace kerf::motion {
 
 enum class OperatorCommandKind : uint8_t {
-    CycleStart,       // start or resume: program run, after a stop, hold or single block
-    FeedHold,         // decelerate along the path and wait (resume with CycleStart)
-    QuickStop,        // controlled stop along the path, then abort the program
-    EmergencyStop,    // drives quick-stop and disable at once; the program is aborted
-    Reset,            // leave the emergency stop / fault state and enable the drives
-    FeedOverride,     // value = 0 .. 1.5
-    RapidOverride,    // value = 0 .. 1
-    SpindleOverride,  // value = 0.5 .. 1.2
-    SingleBlock,      // flag
-    OptionalStop,     // flag: M1 stops
-    JogContinuous,    // joint, value = signed velocity (units/s); JogStop ends it
-    JogStop,          // joint
-    JogIncrement,     // joint, value = signed distance, value2 = velocity
-    Handwheel,        // joint, value = signed distance of the counts since the last command
-    Home,             // joint = -1: all joints in order; else one joint
+    CycleStart,             // start or resume: program run, after a stop, hold or single block
+    FeedHold,               // decelerate along the path and wait (resume with CycleStart)
+    QuickStop,              // controlled stop along the path, then abort the program
+    EmergencyStop,          // drives quick-stop and disable at once; the program is aborted
+    Reset,                  // leave the emergency stop / fault state and enable the drives
+    FeedOverride,           // value = 0 .. 1.5
+    RapidOverride,          // value = 0 .. 1
+    SpindleOverride,        // value = 0.5 .. 1.2
+    SingleBlock,            // flag
+    SingleBlockEveryBlock,  // flag: single block stops after a block without a move too (FAGOR)
+    OptionalStop,           // flag: M1 stops
+    JogContinuous,          // joint, value = signed velocity (units/s); JogStop ends it
+    JogStop,                // joint
+    JogIncrement,           // joint, value = signed distance, value2 = velocity
+    Handwheel,              // joint, value = signed distance of the counts since the last command
+    Home,                   // joint = -1: all joints in order; else one joint
 };
 
 struct OperatorCommand {

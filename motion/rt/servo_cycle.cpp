@@ -206,6 +206,9 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
         case OperatorCommandKind::SingleBlock:
             m_singleBlock = command.flag;
             break;
+        case OperatorCommandKind::SingleBlockEveryBlock:
+            m_everyBlockSteps = command.flag;
+            break;
         case OperatorCommandKind::OptionalStop:
             m_optionalStop = command.flag;
             break;
@@ -381,7 +384,26 @@ bool ServoCycle::endsSingleBlockStep(size_t index) const noexcept {
 }
 
 bool ServoCycle::continuesStep(const MotionItem& item) const noexcept {
-    return item.kind == MotionItem::Kind::Action && sameStep(item.source, m_stepEnd);
+    return sameStep(item.source, m_stepEnd);
+}
+
+bool ServoCycle::endsStepAlone(const Action& action) noexcept {
+    if (action.joinedGroup != 0) return false;  // ESBLK: the blocks run as one
+    switch (action.kind) {
+        case ActionKind::Dwell:
+        case ActionKind::ToolChange:
+        case ActionKind::Spindle:
+        case ActionKind::SpindleOrient:
+        case ActionKind::Coolant:
+        case ActionKind::MachineFunction:
+            return true;
+        case ActionKind::ProgramStop:  // stops (M0, M1) or ends the program itself
+        case ActionKind::SyncStart:    // part of a threading move
+        case ActionKind::SyncEnd:
+        case ActionKind::SyncPoint:  // the task waits for the machine, then goes on
+            return false;
+    }
+    return false;
 }
 
 void ServoCycle::stopAfterStep() noexcept {
@@ -542,10 +564,15 @@ void ServoCycle::runProgram() noexcept {
             return;
         }
         const MotionItem& item = m_items.front();
-        if (m_stepEndPending && !m_stopping && !continuesStep(item)) {
-            // Stopped where the axes stand still, setpoints too (the position shown is final).
-            if (filterSettled()) stopAfterStep();
-            return;
+        if (m_stepEndPending && !m_stopping) {
+            if (!continuesStep(item)) {
+                // Stopped where the axes stand still, setpoints too (the position shown is
+                // final).
+                if (filterSettled()) stopAfterStep();
+                return;
+            }
+            // The move of a block whose actions came first: the step ends where it ends.
+            if (item.kind == MotionItem::Kind::Element) m_stepEndPending = false;
         }
         // At a single-block stop nothing of the next step starts before NC start.
         if (m_waitingStart && !m_actionStarted) return;
@@ -557,8 +584,18 @@ void ServoCycle::runProgram() noexcept {
                 return;
             }
             if (!runAction(item)) return;
+            const bool stepEnds = m_singleBlock && m_everyBlockSteps && endsStepAlone(item.action);
+            if (stepEnds) {
+                // A block without a move is a step too: the stop comes before the next item of
+                // another block (as after a move).
+                m_stepEnd = item.source;
+                m_stepEndPending = true;
+            }
             m_items.pop();
             m_actionStarted = false;
+            // The block ran in this cycle; whether it stops is seen in the next, so the status
+            // shows it running for a cycle at least (an NC start is always answered).
+            if (stepEnds) return;
             continue;
         }
         const PathElement& e = item.element;

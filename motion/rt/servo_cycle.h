@@ -71,9 +71,13 @@ private:
     // Whether single block stops at the end of queued element `index`: where its programmed
     // block ends and the next move queued (if any) belongs to another.
     bool endsSingleBlockStep(size_t index) const noexcept;
-    // After the last move of a single-block step: whether `item` still belongs to the step (an
-    // action of the same block that acts at the end of the block, M5, M9, M30 ...).
+    // After the last move or action of a single-block step: whether `item` still belongs to the
+    // step (an action of the same block that acts at the end of the block, M5, M9, M30 ...; the
+    // move of a block whose actions act before it).
     bool continuesStep(const MotionItem& item) const noexcept;
+    // Whether a block whose last item is `action` ends a single-block step there when every
+    // block is a step (FAGOR): a dwell, a tool, spindle, coolant or M function block.
+    static bool endsStepAlone(const Action& action) noexcept;
     // The single-block stop once the step's moves and actions are done.
     void stopAfterStep() noexcept;
     size_t collectConstraints(size_t first, std::span<Constraint> out) const noexcept;
@@ -122,6 +126,7 @@ private:
     double m_feedOverride = 1.0;
     double m_rapidOverride = 1.0;
     bool m_singleBlock = false;
+    bool m_everyBlockSteps = false;  // single block stops after blocks without a move too
     bool m_optionalStop = false;
     bool m_hold = false;
     bool m_stopping = false;

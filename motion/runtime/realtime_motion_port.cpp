@@ -328,6 +328,12 @@ void RealtimeMotionPort::setSingleBlock(bool on) {
     m_machine->command(c);
 }
 
+void RealtimeMotionPort::setSingleBlockEveryBlock(bool on) {
+    OperatorCommand c{OperatorCommandKind::SingleBlockEveryBlock};
+    c.flag = on;
+    m_machine->command(c);
+}
+
 void RealtimeMotionPort::setFeedOverride(double fraction) {
     m_feedOverride = fraction;
     m_machine->command({OperatorCommandKind::FeedOverride, -1, fraction});

@@ -39,6 +39,7 @@ public:
     bool machineOn() override;
     bool setEmergencyStopButton(bool pressed) override;
     void setSingleBlock(bool on) override;
+    void setSingleBlockEveryBlock(bool on) override;
 
     void setFeedOverride(double fraction) override;
     void setRapidOverride(double fraction) override;

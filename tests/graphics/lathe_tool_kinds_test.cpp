@@ -6,11 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "core/canon/lathe_tool_angle.h"
 #include "core/geometry/arc_math.h"
-#include "core/interp/fagor/tables/tool_table.h"
 #include "graphics/stock/cutter.h"
 #include "graphics/stock/lathe_stock.h"
-#include "graphics/stock/machine_stock_options.h"
 
 namespace kerf::graphics {
 namespace {
@@ -91,17 +90,15 @@ TEST(LatheToolKinds, ADrillOnTheAxisBoresAHoleWithTheConeOfItsPoint) {
     EXPECT_TRUE(materialAt(stock, 3.9, -25 + h - 0.2));  // the corner a flat drill would cut
 }
 
-TEST(LatheToolKinds, TheDrillPointTakesTheToolTablesNoseAngle) {
-    // T5 with NOSEA 90 and a centre offset: the point is as long as the drill's radius, h = 4,
-    // and the hole to Z-20 holds pi 4^2 (20 - 4) + pi 4^2 4 / 3. T6 has no NOSEA: 118.
-    auto table = fagor::ToolTable::parse("T5 D5 NOSEW8 NOSEA90\nT6 D6 NOSEW8\n");
-    ASSERT_TRUE(table);
-    const auto insertOf = latheInsertWithPointAngles(&*table);
-    canon::ToolChange change;
-    change.number = 5;
-    change.geometry.locationCode = 0;
-    change.geometry.cuttingWidthMm = 8;
-    const LatheInsert drill = insertOf(change);
+TEST(LatheToolKinds, TheDrillPointIsTheNoseAngleOfItsToolChange) {
+    // A drill (centre code, NOSEW8) whose tool change carries NOSEA 90: the point is as long as
+    // the drill's radius, h = 4, and the hole to Z-20 holds pi 4^2 (20 - 4) + pi 4^2 4 / 3.
+    // Without a nose angle: 118.
+    canon::ToolGeometry g;
+    g.locationCode = 0;
+    g.cuttingWidthMm = 8;
+    canon::setLatheNoseAngle(g, 90);
+    const LatheInsert drill = LatheInsert::fromGeometry(g);
     EXPECT_DOUBLE_EQ(drill.pointAngleDeg, 90.0);
     LatheStock stock(barR25(), kCell, 50'000'000);
     stock.cut(0, 2, 0, -20, drill);
@@ -109,9 +106,13 @@ TEST(LatheToolKinds, TheDrillPointTakesTheToolTablesNoseAngle) {
     EXPECT_NEAR(stock.removedVolumeMm3(), hole, 2e-3 * hole);
     EXPECT_TRUE(materialAt(stock, 3.1, -17.1));  // 2.9 above the tip the cone is 2.9 wide
     EXPECT_FALSE(materialAt(stock, 2.7, -17.1));
-    change.number = 6;
-    EXPECT_DOUBLE_EQ(insertOf(change).pointAngleDeg, 118.0);
-    EXPECT_DOUBLE_EQ(latheInsertWithPointAngles(nullptr)(change).pointAngleDeg, 118.0);
+    canon::setLatheNoseAngle(g, 0);
+    EXPECT_DOUBLE_EQ(LatheInsert::fromGeometry(g).pointAngleDeg, 118.0);
+    // A turning insert keeps its nose angle to itself: it has no point.
+    g.cuttingWidthMm = 0;
+    g.locationCode = 3;
+    canon::setLatheNoseAngle(g, 55);
+    EXPECT_EQ(LatheInsert::fromGeometry(g).kind, LatheToolKind::Turning);
 }
 
 TEST(LatheToolKinds, ADrillOffTheAxisCutsTheRingItSweepsAsThePartTurns) {

@@ -560,27 +560,32 @@ struct StepStop {
     double x = 0.0;
     double spindleRpm = 0.0;
     uint8_t coolant = 0;
+    uint32_t line = 0;
 };
 
-std::vector<StepStop> singleBlockStops(const std::vector<canon::Command>& program) {
+// `everyBlock`: blocks without a move are steps too (FAGOR).
+std::vector<StepStop> singleBlockStops(const std::vector<canon::Command>& program,
+                                       bool everyBlock = false) {
     SimulationOptions options;
     options.autoCycleStart = false;
     options.maxSimulatedS = 60.0;
     std::vector<StepStop> stops;
     bool armed = false;
     MotionMode last = MotionMode::Idle;
-    runCommands(millConfig(), program, Pose{}, options,
-                [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
-                    if (!armed) {
-                        sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
-                        armed = true;
-                    }
-                    if (s.mode == MotionMode::Stopped && last != MotionMode::Stopped) {
-                        stops.push_back({s.commandedPosition[0], s.spindleRpm, s.coolant});
-                        sim.command({OperatorCommandKind::CycleStart});
-                    }
-                    last = s.mode;
-                });
+    runCommands(
+        millConfig(), program, Pose{}, options,
+        [&](SimulatedMachine& sim, const Sample&, const MotionStatus& s) {
+            if (!armed) {
+                sim.command({OperatorCommandKind::SingleBlock, -1, 0.0, 0.0, true});
+                sim.command({OperatorCommandKind::SingleBlockEveryBlock, -1, 0.0, 0.0, everyBlock});
+                armed = true;
+            }
+            if (s.mode == MotionMode::Stopped && last != MotionMode::Stopped) {
+                stops.push_back({s.commandedPosition[0], s.spindleRpm, s.coolant, s.source.line});
+                sim.command({OperatorCommandKind::CycleStart});
+            }
+            last = s.mode;
+        });
     return stops;
 }
 
@@ -617,6 +622,61 @@ TEST(SingleBlock, RunsTheBlocksEndFunctionsBeforeItsStop) {
     EXPECT_NEAR(stops[1].spindleRpm, 0.0, 1e-3);
     EXPECT_EQ(stops[1].coolant, 0u);
     EXPECT_NEAR(stops[2].x, 30.0, 1e-6);
+}
+
+// FAGOR single block stops after every block: an M8 alone, a G4 dwell, an M function, an S with
+// M3 each get their stop, where the axes stand (they act at rest). Without every block (the
+// TNC), the same blocks run with the next move and only the three moves stop.
+TEST(SingleBlock, EveryBlockStopsAfterTheBlocksWithoutAMove) {
+    canon::CoolantControl flood;
+    flood.flood = true;
+    canon::ToolChange tool;
+    tool.number = 2;
+    const std::vector<canon::Command> program = {
+        cmd(canon::LinearMove{at(10, 0, 0), 3000.0}, 1),
+        cmd(flood, 2),               // N2 M8
+        cmd(canon::Dwell{0.05}, 3),  // N3 G4 K5
+        cmd(canon::LinearMove{at(20, 0, 0), 3000.0}, 4),
+        cmd(canon::MachineFunction{20}, 5),  // N5 M20
+        cmd(spindleAt(1000.0), 6),           // N6 S1000 M3
+        cmd(tool, 7),                        // N7 T2: its move follows in the same block
+        cmd(canon::LinearMove{at(30, 0, 0), 3000.0}, 7)};
+    const std::vector<StepStop> stops = singleBlockStops(program, true);
+    const std::vector<uint32_t> lines = {1, 2, 3, 4, 5, 6, 7};
+    const std::vector<double> xs = {10, 10, 10, 20, 20, 20, 30};
+    ASSERT_EQ(stops.size(), lines.size());
+    for (size_t i = 0; i < lines.size(); ++i) {
+        EXPECT_EQ(stops[i].line, lines[i]) << "stop " << i;
+        EXPECT_NEAR(stops[i].x, xs[i], 1e-6) << "stop " << i;
+    }
+    EXPECT_EQ(stops[0].coolant, 0u);  // M8 waits for its own NC start
+    EXPECT_EQ(stops[1].coolant, 1u);
+    EXPECT_NEAR(stops[4].spindleRpm, 0.0, 1e-6);
+    EXPECT_NEAR(stops[5].spindleRpm, 1000.0, 1e-3);  // M3 waits for the speed
+    const std::vector<StepStop> moveStops = singleBlockStops(program, false);
+    ASSERT_EQ(moveStops.size(), 3u);
+    EXPECT_EQ(moveStops[0].line, 1u);
+    EXPECT_EQ(moveStops[1].line, 4u);
+    EXPECT_EQ(moveStops[2].line, 7u);
+}
+
+// Between ESBLK and DSBLK a block without a move is part of the one joined block: no stop.
+TEST(SingleBlock, EveryBlockKeepsTheBlocksAProgramJoined) {
+    canon::ControlLocks join;
+    join.joinBlocks = true;
+    canon::CoolantControl flood;
+    flood.flood = true;
+    const std::vector<canon::Command> program = {
+        cmd(canon::LinearMove{at(10, 0, 0), 3000.0}, 1), cmd(join, 2),                   // (ESBLK)
+        cmd(canon::LinearMove{at(20, 0, 0), 3000.0}, 3), cmd(flood, 4),                  // M8
+        cmd(canon::LinearMove{at(30, 0, 0), 3000.0}, 5), cmd(canon::ControlLocks{}, 6),  // (DSBLK)
+        cmd(canon::LinearMove{at(40, 0, 0), 3000.0}, 7)};
+    const std::vector<StepStop> stops = singleBlockStops(program, true);
+    ASSERT_EQ(stops.size(), 3u);
+    EXPECT_NEAR(stops[0].x, 10.0, 1e-6);
+    EXPECT_NEAR(stops[1].x, 30.0, 1e-6);
+    EXPECT_EQ(stops[1].coolant, 1u);
+    EXPECT_NEAR(stops[2].x, 40.0, 1e-6);
 }
 
 TEST(ToolChange, JointsStayAndTheTipMovesByTheLengthChange) {

@@ -41,7 +41,8 @@ std::optional<BlockCounter::Numbered> BlockCounter::next(QStringView line) {
     if (klartext) {
         m_last += 1;
     } else {
-        m_last = m_last < 0 ? current->number : m_last + 10;
+        m_last =
+            m_last < 0 ? m_numbering.first.value_or(current->number) : m_last + m_numbering.step;
     }
     return Numbered{*current, m_last};
 }

@@ -25,14 +25,22 @@ std::optional<BlockNumber> readBlockNumber(QStringView line, program::Dialect di
 // True if a Klartext line ends with the continuation mark '~' (blanks after it allowed).
 bool continuesOnNextLine(QStringView line);
 
+// How ISO (TNC DIN/ISO, FAGOR) blocks are numbered: from `first` (nullopt: the program's own
+// first number) in steps of `step`. Klartext counts by one from 0 whatever this says.
+struct BlockNumbering {
+    std::optional<long long> first;
+    long long step = 10;
+};
+
 // Reads a program's lines in order and says which number each numbered line should carry:
-// Klartext the previous block's number + 1 (the first block 0); ISO the first number, then steps
-// of 10. Lines continuing a Klartext block carry none, even if they start with digits.
+// Klartext the previous block's number + 1 (the first block 0); ISO as `numbering` says. Lines
+// continuing a Klartext block carry none, even if they start with digits.
 class BlockCounter {
 public:
     // `last`: the number of the block before the first line read; -1 at the start of a program.
-    explicit BlockCounter(program::Dialect dialect, long long last = -1)
-        : m_dialect(dialect), m_last(last) {}
+    explicit BlockCounter(program::Dialect dialect, long long last = -1,
+                          BlockNumbering numbering = {})
+        : m_dialect(dialect), m_last(last), m_numbering(numbering) {}
 
     struct Numbered {
         BlockNumber current;
@@ -46,6 +54,7 @@ public:
 private:
     program::Dialect m_dialect;
     long long m_last;
+    BlockNumbering m_numbering;
     bool m_continued = false;  // the previous line ended with '~'
 };
 

@@ -4,6 +4,7 @@
 #include <QTextBlock>
 #include <QTextCursor>
 #include <QTextDocument>
+#include <vector>
 
 namespace kerf::ui {
 
@@ -32,19 +33,78 @@ void renameIn(QString& text, int end, const QRegularExpression& pattern, int gro
     text = out;
 }
 
+// The code of a line, without its comment.
+QStringView codeOf(QStringView line) {
+    const qsizetype comment = line.indexOf(QLatin1Char(';'));
+    return comment < 0 ? line : line.left(comment);
+}
+
+const QRegularExpression& profileCycle() {
+    static const QRegularExpression pattern(QStringLiteral("(?<![A-Za-z0-9.])G0*6[689](?![0-9.])"),
+                                            QRegularExpression::CaseInsensitiveOption);
+    return pattern;
+}
+
+const QRegularExpression& otherProgramProfile() {
+    static const QRegularExpression pattern(QStringLiteral("(?<![A-Za-z])Q\\s*\\d"),
+                                            QRegularExpression::CaseInsensitiveOption);
+    return pattern;
+}
+
+// A profile cycle of this program: its S and E name labels here.
+bool namesProfileHere(QStringView code) {
+    const QString text = code.toString();
+    return text.contains(profileCycle()) && !text.contains(otherProgramProfile());
+}
+
+// Whether the line jumps to or repeats a label, or names a profile's, through a parameter or an
+// expression (N P1, N(P1+10), S P3): a renumbering cannot know where it points.
+bool hasComputedReference(QStringView code) {
+    static const QRegularExpression kGoto(QStringLiteral("\\(\\s*GOTO\\b"),
+                                          QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression kLiteralGoto(QStringLiteral("\\(\\s*GOTO\\s*N\\d+\\s*\\)"),
+                                                 QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression kRepeat(QStringLiteral("\\(\\s*RPT\\b([^)]*)\\)"),
+                                            QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression kLiteralRepeat(
+        QStringLiteral("^\\s*N\\d+\\s*,\\s*N\\d+\\s*(,\\s*P.*)?$"),
+        QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression kComputedFirstLast(
+        QStringLiteral("(?<![A-Za-z])[SE]\\s*(?=[^\\d\\s])"),
+        QRegularExpression::CaseInsensitiveOption);
+    const QString text = code.toString();
+    if (text.contains(kGoto) && !text.contains(kLiteralGoto)) return true;
+    for (auto it = kRepeat.globalMatch(text); it.hasNext();) {
+        if (!kLiteralRepeat.match(it.next().captured(1)).hasMatch()) return true;
+    }
+    if (namesProfileHere(code)) {
+        // The cycle's own word (G66 ...) is no label; only S and E are looked at.
+        if (text.contains(kComputedFirstLast)) return true;
+    }
+    return false;
+}
+
+// The profile labels (S, E) a cycle of this program names.
+std::vector<long long> profileLabels(QStringView code) {
+    static const QRegularExpression kFirstLast(QStringLiteral("(?<![A-Za-z])[SE]\\s*(\\d+)"),
+                                               QRegularExpression::CaseInsensitiveOption);
+    std::vector<long long> labels;
+    if (!namesProfileHere(code)) return labels;
+    for (auto it = kFirstLast.globalMatch(code.toString()); it.hasNext();)
+        labels.push_back(it.next().captured(1).toLongLong());
+    return labels;
+}
+
 }  // namespace
 
 QString withRenamedLabels(QStringView line, const RenamedLabels& renamed) {
     static const QRegularExpression kGoto(QStringLiteral("\\(\\s*GOTO\\s*N(\\d+)"),
                                           QRegularExpression::CaseInsensitiveOption);
-    // RPT's third value is a count, not a label.
-    static const QRegularExpression kRepeat(QStringLiteral("\\(\\s*RPT\\s*N(\\d+)\\s*,\\s*N(\\d+)"),
-                                            QRegularExpression::CaseInsensitiveOption);
-    static const QRegularExpression kProfileCycle(
-        QStringLiteral("(?<![A-Za-z0-9.])G0*6[689](?![0-9.])"),
+    // The count after RPT's parenthesis (N3) is no label; with a P the labels are another
+    // program's.
+    static const QRegularExpression kRepeat(
+        QStringLiteral("\\(\\s*RPT\\s*N(\\d+)\\s*,\\s*N(\\d+)\\s*\\)"),
         QRegularExpression::CaseInsensitiveOption);
-    static const QRegularExpression kOtherProgram(QStringLiteral("(?<![A-Za-z])Q\\s*\\d"),
-                                                  QRegularExpression::CaseInsensitiveOption);
     static const QRegularExpression kFirstLast(QStringLiteral("(?<![A-Za-z])[SE]\\s*(\\d+)"),
                                                QRegularExpression::CaseInsensitiveOption);
     QString text = line.toString();
@@ -52,11 +112,34 @@ QString withRenamedLabels(QStringView line, const RenamedLabels& renamed) {
     const int end = comment < 0 ? text.size() : comment;
     renameIn(text, end, kGoto, 1, renamed);
     renameIn(text, end, kRepeat, 2, renamed);
-    const QString code = text.left(end);
-    if (code.contains(kProfileCycle) && !code.contains(kOtherProgram)) {
-        renameIn(text, end, kFirstLast, 1, renamed);
-    }
+    if (namesProfileHere(QStringView(text).left(end))) renameIn(text, end, kFirstLast, 1, renamed);
     return text;
+}
+
+std::optional<RenumberProblem> fagorRenumberProblem(const QTextDocument& document,
+                                                    BlockNumbering numbering) {
+    using Kind = RenumberProblem::Kind;
+    BlockCounter counter(program::Dialect::Fagor, -1, numbering);
+    RenamedLabels renamed;
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        const auto numbered = counter.next(block.text());
+        if (!numbered) continue;
+        if (numbered->wanted > kFagorMaxLabel)
+            return RenumberProblem{Kind::LabelTooLong, block.blockNumber() + 1, numbered->wanted};
+        renamed.emplace(numbered->current.number, numbered->wanted);  // the first one counts
+    }
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        const QStringView code = codeOf(block.text());
+        const int line = block.blockNumber() + 1;
+        if (hasComputedReference(code)) return RenumberProblem{Kind::ComputedReference, line, 0};
+        for (const long long label : profileLabels(code)) {
+            const auto found = renamed.find(label);
+            const long long after = found == renamed.end() ? label : found->second;
+            if (after > kFagorMaxProfileLabel)
+                return RenumberProblem{Kind::ProfileLabelTooLong, line, after};
+        }
+    }
+    return std::nullopt;
 }
 
 bool renameLabelReferences(QTextDocument& document, QTextCursor& edit,

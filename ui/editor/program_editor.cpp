@@ -119,16 +119,22 @@ void ProgramEditor::insertBlock() {
     }
 }
 
-void ProgramEditor::renumber() {
-    if (renumbering()) return;
+std::optional<RenumberProblem> ProgramEditor::renumber(BlockNumbering numbering) {
+    if (renumbering()) return std::nullopt;
+    if (dialect() == program::Dialect::Fagor) {
+        if (auto problem = fagorRenumberProblem(*document(), numbering)) {
+            emit renumbered(false);
+            return problem;
+        }
+    }
     if (document()->blockCount() <= kLiveRenumberLimit) {
-        emit renumbered(renumberNow());
-        return;
+        emit renumbered(renumberNow(numbering));
+        return std::nullopt;
     }
     m_numbersStale = false;
     m_readOnlyBeforeRenumber = isReadOnly();
     setReadOnly(true);  // the slices form one undo step only if nothing else edits in between
-    m_renumberJob = new RenumberJob(document(), dialect(), this);
+    m_renumberJob = new RenumberJob(document(), dialect(), numbering, this);
     connect(m_renumberJob, &RenumberJob::finished, this, [this](bool changed) {
         m_renumberJob->deleteLater();
         m_renumberJob = nullptr;
@@ -136,12 +142,13 @@ void ProgramEditor::renumber() {
         emit renumbered(changed);
     });
     m_renumberJob->start();
+    return std::nullopt;
 }
 
-bool ProgramEditor::renumberNow() {
+bool ProgramEditor::renumberNow(BlockNumbering numbering) {
     m_numbersStale = false;
     bool changed = false;
-    RenumberJob job(document(), dialect());
+    RenumberJob job(document(), dialect(), numbering);
     job.setSliceMs(std::numeric_limits<int>::max());
     connect(&job, &RenumberJob::finished, this, [&changed](bool result) { changed = result; });
     job.start();

@@ -1,9 +1,12 @@
 #pragma once
 
 #include <QPlainTextEdit>
+#include <optional>
 
 #include "core/base/diagnostic.h"
 #include "core/program/dialect.h"
+#include "ui/editor/block_numbers.h"
+#include "ui/editor/label_references.h"
 
 namespace kerf::ui {
 
@@ -31,13 +34,16 @@ public:
     // Inserts a line break with the next block number, as Enter does.
     void insertBlock();
     // Gives every block its number (Klartext: the previous block's + 1, BEGIN PGM 0, lines that
-    // continue a block unnumbered; ISO: the first number then steps of 10). Only changed numbers
-    // are rewritten, as one undo step. Up to kLiveRenumberLimit lines this happens at once;
-    // longer programs are renumbered in slices between events (the editor read-only meanwhile),
-    // so that the UI stays responsive. renumbered() tells when it is done.
-    void renumber();
+    // continue a block unnumbered; ISO: as `numbering` says, by default the first number then
+    // steps of 10). Only changed numbers are rewritten, as one undo step. Up to
+    // kLiveRenumberLimit lines this happens at once; longer programs are renumbered in slices
+    // between events (the editor read-only meanwhile), so that the UI stays responsive.
+    // renumbered() tells when it is done. A FAGOR program whose labels could not keep their
+    // references (fagorRenumberProblem) is left as it is: the problem is returned and
+    // renumbered(false) emitted at once.
+    std::optional<RenumberProblem> renumber(BlockNumbering numbering = {});
     // The same at once, whatever the length; false if all numbers were already right.
-    bool renumberNow();
+    bool renumberNow(BlockNumbering numbering = {});
     bool renumbering() const;
     bool numbersStale() const { return m_numbersStale; }
 

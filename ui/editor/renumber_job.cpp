@@ -22,8 +22,9 @@ void writeBlockNumber(QTextCursor& edit, const QTextBlock& block, const BlockNum
                                                           : QStringLiteral("N%1").arg(number));
 }
 
-RenumberJob::RenumberJob(QTextDocument* document, program::Dialect dialect, QObject* parent)
-    : QObject(parent), m_document(document), m_edit(document), m_counter(dialect) {}
+RenumberJob::RenumberJob(QTextDocument* document, program::Dialect dialect,
+                         BlockNumbering numbering, QObject* parent)
+    : QObject(parent), m_document(document), m_edit(document), m_counter(dialect, -1, numbering) {}
 
 void RenumberJob::start() {
     m_running = true;

@@ -26,7 +26,8 @@ class RenumberJob : public QObject {
     Q_OBJECT
 
 public:
-    RenumberJob(QTextDocument* document, program::Dialect dialect, QObject* parent = nullptr);
+    RenumberJob(QTextDocument* document, program::Dialect dialect, BlockNumbering numbering = {},
+                QObject* parent = nullptr);
 
     // Runs the first slice at once and the others from the event loop.
     void start();

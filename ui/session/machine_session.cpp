@@ -179,6 +179,8 @@ bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> s
         m_motion->setShift(shift);
     }
     m_motion->setSingleBlock(m_singleBlock);
+    // FAGOR 8035: single block stops after every block, one without a move too.
+    m_motion->setSingleBlockEveryBlock(loaded.dialect == program::Dialect::Fagor);
     m_run->start(std::move(loaded.interpreter), options);
     // The previous run's interpreter is gone: its sources and tools may go too.
     m_sources = std::move(loaded.sources);

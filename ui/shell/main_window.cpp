@@ -21,6 +21,7 @@
 #include "ui/shell/machine_keys.h"
 #include "ui/shell/message_panel.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/shell/renumber_prompt.h"
 #include "ui/shell/ui_language.h"
 #include "ui/shell/workspace.h"
 #include "ui/status/position_display.h"
@@ -292,7 +293,8 @@ void MainWindow::refreshSoftkeys() {
                          askForBlockLine(this, tr("Go to block"), *editor, *m_messages))
                      editor->goToLine(*line);
              }},
-            {"renumber", tr("Renumber\nblocks"), [editor] { editor->renumber(); }},
+            {"renumber", tr("Renumber\nblocks"),
+             [this, editor] { renumberBlocks(this, *editor, *m_messages); }},
             {"check", tr("Check\nprogram"), [this] { m_program->checkProgram(); }},
             {"restore", tr("Restore\nautosave"), [this] { m_program->restoreRecovery(); }},
         });

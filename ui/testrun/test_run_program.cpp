@@ -217,8 +217,7 @@ TestRunProgram interpretForTestRun(const TestRunInput& input, const std::atomic<
     // A machine with rotary tables: the path and the stock on the part the tables turn.
     const std::optional<machine::WorkpieceFrame> frame = machine::WorkpieceFrame::of(
         input.machine, program.streamOrigin.value_or(input.presetInMachine));
-    out.stockOptions =
-        graphics::stockOptionsFor(input.machine, program.tools.get(), frame, input.ncRoot);
+    out.stockOptions = graphics::stockOptionsFor(input.machine, program.tools.get(), frame);
     out.diagnostics = program.diagnostics();
     const size_t checkDiagnostics =
         program.interpreter ? program.interpreter->diagnostics().size() : 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/base/translate.h"
+#include "core/canon/lathe_tool_angle.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
 namespace kerf::fagor {
@@ -109,7 +110,11 @@ void FagorInterpreter::emitToolData(bool change) {
     g.tipZMm = m_tool.data.z + m_tool.data.wearZ;
     g.offsetNumber = m_tool.offset;
     g.locationCode = m_tool.data.location;
-    if (m_toolTable) g.cuttingWidthMm = m_toolTable->get(m_tool.tool).noseWidth;
+    if (m_toolTable) {
+        const ToolEntry entry = m_toolTable->get(m_tool.tool);
+        g.cuttingWidthMm = entry.noseWidth;
+        canon::setLatheNoseAngle(g, entry.noseAngle);
+    }
     if (change) {
         emit(canon::ToolChange{m_tool.tool, {}, g, Axis::Z});
     } else {

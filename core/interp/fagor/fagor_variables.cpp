@@ -711,6 +711,9 @@ bool FagorInterpreter::writeToolVariable(const VariableRef& ref, double value, P
             return problemOf(problem, "variable", KERF_TR_NOOP("{1}: value out of range"),
                              {nameOf(ref)});
         }
+        // The tool in use carries NOSEA and NOSEW in the stream: a new value goes out with it.
+        const bool carried = id == VarId::NoseA || id == VarId::NoseW;
+        if (carried && ref.index == m_tool.tool && m_tool.tool > 0) emitToolData(false);
         return true;
     }
     return notAvailable(ref, problem);

@@ -85,14 +85,14 @@ TEST(ProgramEditor, FagorReferencesFollowTheirLabelsWhenABlockIsInserted) {
 
 TEST(ProgramEditor, RenumberingAFagorProgramKeepsItsJumpsAndProfilesOnTheirLabels) {
     // From N1 in steps of 10 the profile's N30 and N40 become N71 and N81: the G69's S and E, the
-    // GOTO and the first two values of RPT follow (its third is a count); a comment, and a G68
+    // GOTO and the labels of RPT follow (the count after it, N3, does not); a comment, and a G68
     // whose profile is in program Q5, do not change.
     test::testApp();
     ProgramEditor editor;
     editor.setDialect(Dialect::Fagor);
     editor.setPlainText(lines({"N1 G90 G95 F0.2 S800 M3", "N2 G00 X70 Z5",
                                "N3 G69 X60 Z-10 C2.5 D1 H0.1 S30 E40 ; S30 E40", "N4 (GOTO N30)",
-                               "N5 (RPT N30, N40, N3)", "N6 G68 X0 Z0 C2 S30 E40 Q5", "N7 M30",
+                               "N5 (RPT N30, N40) N3", "N6 G68 X0 Z0 C2 S30 E40 Q5", "N7 M30",
                                "N30 G01 X40 Z-10", "G01 Z-4", "N40 G01 X20 Z0"}));
     QSignalSpy done(&editor, &ProgramEditor::renumbered);
     editor.renumber();
@@ -100,11 +100,69 @@ TEST(ProgramEditor, RenumberingAFagorProgramKeepsItsJumpsAndProfilesOnTheirLabel
     EXPECT_EQ(editor.toPlainText(),
               lines({"N1 G90 G95 F0.2 S800 M3", "N11 G00 X70 Z5",
                      "N21 G69 X60 Z-10 C2.5 D1 H0.1 S71 E81 ; S30 E40", "N31 (GOTO N71)",
-                     "N41 (RPT N71, N81, N3)", "N51 G68 X0 Z0 C2 S30 E40 Q5", "N61 M30",
+                     "N41 (RPT N71, N81) N3", "N51 G68 X0 Z0 C2 S30 E40 Q5", "N61 M30",
                      "N71 G01 X40 Z-10", "G01 Z-4", "N81 G01 X20 Z0"}));
     editor.undo();  // one step restores numbers and references
     EXPECT_EQ(editor.document()->findBlockByNumber(3).text(), QStringLiteral("N4 (GOTO N30)"));
     EXPECT_EQ(editor.document()->findBlockByNumber(7).text(), QStringLiteral("N30 G01 X40 Z-10"));
+}
+
+TEST(ProgramEditor, AFagorProgramIsRenumberedFromTheFirstLabelAndStepChosen) {
+    // From N100 in steps of 5: N30 and N40 become N120 and N125; the RPT of program P12 names
+    // that program's labels and the SUB and CALL numbers are subroutines, not labels: they stay.
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    editor.setPlainText(lines({"N1 G90 G95 F0.2 S800 M3", "N2 (CALL 7)", "N3 (RPT N30, N40) N2",
+                               "N4 (RPT N30, N40, P12)", "N30 G01 X40 Z-10", "N40 G01 X20 Z0",
+                               "N5 (GOTO N40)", "N6 (SUB 7)"}));
+    QSignalSpy done(&editor, &ProgramEditor::renumbered);
+    EXPECT_FALSE(editor.renumber(BlockNumbering{100, 5}));
+    ASSERT_EQ(done.size(), 1);
+    EXPECT_EQ(editor.toPlainText(),
+              lines({"N100 G90 G95 F0.2 S800 M3", "N105 (CALL 7)", "N110 (RPT N120, N125) N2",
+                     "N115 (RPT N30, N40, P12)", "N120 G01 X40 Z-10", "N125 G01 X20 Z0",
+                     "N130 (GOTO N125)", "N135 (SUB 7)"}));
+}
+
+TEST(ProgramEditor, AFagorProgramThatARenumberingWouldBreakStaysAsItIs) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    // A jump through a parameter: no renumbering knows where it lands.
+    const QString computed = lines({"N1 (P1 = 30)", "N2 (GOTO N P1)", "N30 M30"});
+    editor.setPlainText(computed);
+    QSignalSpy done(&editor, &ProgramEditor::renumbered);
+    auto problem = editor.renumber();
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, RenumberProblem::Kind::ComputedReference);
+    EXPECT_EQ(problem->line, 2);
+    EXPECT_EQ(editor.toPlainText(), computed);
+    ASSERT_EQ(done.size(), 1);
+    EXPECT_FALSE(done.takeFirst().at(0).toBool());
+    // From N9990 the profile's first block, the third, would be N9990 + 2 * 10 = N10010: G69
+    // takes labels of 4 digits.
+    const QString profile =
+        lines({"N1 G69 X60 Z-10 C2.5 D1 S3 E4", "N2 M30", "N3 G01 X40 Z-10", "N4 G01 X20 Z0"});
+    editor.setPlainText(profile);
+    problem = editor.renumber(BlockNumbering{9990, 10});
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, RenumberProblem::Kind::ProfileLabelTooLong);
+    EXPECT_EQ(problem->line, 1);
+    EXPECT_EQ(problem->label, 10010);
+    EXPECT_EQ(editor.toPlainText(), profile);
+    EXPECT_FALSE(editor.renumber(BlockNumbering{9960, 10}));  // N9990 is the last: fine
+    EXPECT_EQ(editor.document()->firstBlock().text(),
+              QStringLiteral("N9960 G69 X60 Z-10 C2.5 D1 S9980 E9990"));
+    // Labels end at N99999999: from N99999980 the third block would get N100000000.
+    const QString many = lines({"N1 G00 X0", "N2 G00 X1", "N3 M30"});
+    editor.setPlainText(many);
+    problem = editor.renumber(BlockNumbering{99'999'980, 10});
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, RenumberProblem::Kind::LabelTooLong);
+    EXPECT_EQ(problem->line, 3);
+    EXPECT_EQ(problem->label, 100'000'000);
+    EXPECT_EQ(editor.toPlainText(), many);
 }
 
 TEST(ProgramEditor, LongProgramsAreRenumberedInSlicesOnRequest) {

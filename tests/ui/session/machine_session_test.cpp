@@ -402,6 +402,58 @@ TEST(MachineSessionLathe, SingleBlockRunsAFagorCannedCycleAsOneBlock) {
     EXPECT_NEAR(stops[2].z, 20.0, 0.5);
 }
 
+// The FAGOR 8035 stops after every block in single block: M8 alone, the G4 dwell and T2 D2 get
+// their own stops, where the axes stand. A parameter assignment gives the machine nothing: it
+// runs with the next block (docs/hmi.md).
+TEST(MachineSessionLathe, SingleBlockStopsAfterAFagorBlockWithoutAMove) {
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    session.setSingleBlock(true);
+    ASSERT_TRUE(
+        session.startProgram("N1 G90 G94 G00 X40 Z5 F3000\n"
+                             "N2 M8\n"
+                             "N3 (P1 = 5)\n"
+                             "N4 G04 K10\n"
+                             "N5 G01 X30\n"
+                             "N6 T2 D2\n"
+                             "N7 M30\n",
+                             "SBLKM.PIM"));
+    struct Stop {
+        uint32_t line;
+        double x;
+        bool coolant;
+    };
+    std::vector<Stop> stops;
+    uint32_t stoppedAt = 0;  // the block of the stop NC start was pressed at
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while ((session.runState() == RunState::Running || session.runState() == RunState::Stopped) &&
+           std::chrono::steady_clock::now() < deadline) {
+        session.service();
+        // A block without a move runs and stops within a servo cycle or two: between two looks
+        // here the state may stay Stopped, at the next block.
+        const uint32_t line = session.status().block.line;
+        if (session.runState() == RunState::Stopped && line != stoppedAt) {
+            stops.push_back({line, session.status().axes[0].nominal, session.status().coolant});
+            stoppedAt = line;
+            session.cycleStart();
+        }
+        std::this_thread::sleep_for(2ms);
+    }
+    ASSERT_EQ(session.runState(), RunState::Finished);
+    const std::vector<uint32_t> lines = {1, 2, 4, 5, 6};
+    ASSERT_EQ(stops.size(), lines.size());
+    for (size_t i = 0; i < lines.size(); ++i)
+        EXPECT_EQ(stops[i].line, lines[i]) << "stop " << i;
+    EXPECT_FALSE(stops[0].coolant);  // M8 waits for the next NC start
+    EXPECT_TRUE(stops[1].coolant);
+    EXPECT_NEAR(stops[1].x, 20.0, 0.5);  // M8 and G4 stop where N1 left the axes (radius 20)
+    EXPECT_NEAR(stops[2].x, 20.0, 0.5);
+    EXPECT_NEAR(stops[3].x, 15.0, 0.5);
+    EXPECT_NEAR(stops[4].x, 15.0, 0.5);
+}
+
 // G95: F is mm per revolution; the feed shown while a block runs is the path feed it gives at
 // the programmed speed, 0.2 mm x 1000 rpm = 200 mm/min (it used to show 0.2 as mm/min).
 TEST(MachineSessionLathe, AFeedPerRevolutionShowsAsThePathFeedAtTheProgrammedSpeed) {

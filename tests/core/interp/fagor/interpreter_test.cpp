@@ -192,10 +192,9 @@ TEST_F(FagorRun, ToolChangeSubroutineSeesNbtool) {
     ASSERT_EQ(status, interp::RunStatus::Finished) << diagnostics();
     const std::vector<std::string> expected{
         "8:1 MSG INFO \"SELECIONAR T1 E PRESSIONAR SOFTKEY MARCHA\"",
-        "2:1 TOOL T1 L=0.0000 R=0.0000 R2=0.0000 AXIS Z D1 TIPX=0.0000 TIPZ=0.0000 LOC 0",
+        "2:1 TOOL T1 L=0.0000 R=0.0000 AXIS Z D1 TIPX=0.0000 TIPZ=0.0000 LOC 0",
         "8:1 MSG INFO \"SELECIONAR T5 E PRESSIONAR SOFTKEY MARCHA\"",
-        "4:1 TOOL T5 L=0.0000 R=0.8000 R2=0.0000 AXIS Z D5 TIPX=3.0000 TIPZ=4.0000 LOC 3",
-        "5:1 END M30"};
+        "4:1 TOOL T5 L=0.0000 R=0.8000 AXIS Z D5 TIPX=3.0000 TIPZ=4.0000 LOC 3", "5:1 END M30"};
     EXPECT_EQ(out.lines, expected);
 }
 
@@ -238,6 +237,28 @@ TEST_F(FagorRun, TablesAreSavedWhenTheProgramChangesThem) {
     // Only the fields written change; comments stay; the selection is kept for the next run.
     EXPECT_EQ(readFile(root / "fagor_tool_offsets.tab"), "; offsets\nD1 X1.5 Z2 F5 R0.4\n");
     EXPECT_EQ(readFile(root / "fagor_zero_offsets.tab"), "G54 X0 Z100\nG55 Z240\nACTIVE G55\n");
+}
+
+// The tool's NOSEA (a drill's point) travels with its tool data as NOSEW does; a NOSEA or NOSEW
+// the program writes for the tool in use goes out at once, for another tool it waits for its
+// tool change.
+TEST_F(FagorRun, ToolDataCarryTheNoseAngleAndTheValuesTheProgramWrites) {
+    write("fagor_tool_offsets.tab", "D5 F0 R0 X0 Z0\nD6 F3 R0.4 X0 Z0\n");
+    write("fagor_tools.tab", "T5 D5 NOSEW8 NOSEA118\nT6 D6 NOSEA55\n");
+    ASSERT_EQ(run("T5 D5\n(NOSEA5 = 90)\n(NOSEA6 = 35)\n(NOSEW5 = 6)\nT6 D6\nM30\n"),
+              interp::RunStatus::Finished)
+        << diagnostics();
+    std::vector<std::string> tools;
+    for (const std::string& line : out.lines)
+        if (line.find("TOOL") != std::string::npos) tools.push_back(line);
+    ASSERT_EQ(tools.size(), 4u);
+    EXPECT_NE(tools[0].find("TOOL T5 "), std::string::npos) << tools[0];
+    EXPECT_NE(tools[0].find(" W=8.0000 NOSEA=118.0000"), std::string::npos) << tools[0];
+    EXPECT_NE(tools[1].find("TOOLDATA "), std::string::npos) << tools[1];
+    EXPECT_NE(tools[1].find(" W=8.0000 NOSEA=90.0000"), std::string::npos) << tools[1];
+    EXPECT_NE(tools[2].find(" W=6.0000 NOSEA=90.0000"), std::string::npos) << tools[2];
+    EXPECT_NE(tools[3].find("TOOL T6 "), std::string::npos) << tools[3];
+    EXPECT_NE(tools[3].find(" NOSEA=35.0000"), std::string::npos) << tools[3];
 }
 
 TEST_F(FagorRun, ActiveZeroOffsetOfTheTableIsTheStreamFrame) {
