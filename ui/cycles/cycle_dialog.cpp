@@ -30,7 +30,9 @@ QString rangeText(const CycleField& field, bool inch) {
     if (p.keywords & cycles::kFeedMax) keywords << QStringLiteral("FMAX");
     if (p.keywords & cycles::kFeedPerRev) keywords << QStringLiteral("FU");
     if (p.keywords & cycles::kFeedPerTooth) keywords << QStringLiteral("FZ");
-    if (!keywords.isEmpty()) text += QStringLiteral(", ") + keywords.join(QLatin1Char(' '));
+    // The keywords on a line of their own: the column stays as narrow as the numbers and the
+    // descriptions get the rest of the row.
+    if (!keywords.isEmpty()) text += QLatin1Char('\n') + keywords.join(QLatin1Char(' '));
     return text;
 }
 
@@ -68,7 +70,6 @@ CycleDialog::CycleDialog(const cycles::CycleDescriptor& cycle, bool inch, QWidge
         auto* range = new QLabel(rows);
         range->setObjectName(QStringLiteral("range_%1").arg(m_fields[i].label));
         range->setStyleSheet(QStringLiteral("color: #606060;"));
-        range->setWordWrap(true);  // "-99999.9999 … 99999.9999, PREDEF" breaks after the comma
         grid->addWidget(label, row, 0);
         grid->addWidget(description, row, 1);
         grid->addWidget(input, row, 2);

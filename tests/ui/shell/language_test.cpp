@@ -2,7 +2,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QToolButton>
 
 #include <gtest/gtest.h>
 
@@ -16,8 +15,6 @@
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
 #include "ui/shell/ui_language.h"
-#include "ui/viewport/graphics_panel.h"
-#include "ui/viewport/viewport_widget.h"
 
 // German and Spanish: the window's texts and core's diagnostics change with the language. The
 // expected words are the TNC's own terms (HEIDENHAIN's German and Spanish manuals).
@@ -74,27 +71,6 @@ TEST(Language, GermanAndSpanishTranslateTheWindow) {
     EXPECT_EQ(labelText(window, "machineMode"), QStringLiteral("Manual operation"));
     EXPECT_EQ(translatedMessage(pitchIsZero()),
               QStringLiteral("cycle 262: the thread pitch Q239 is 0"));
-}
-
-// The graphics' view buttons were made before the language chosen at start (--language) or in
-// the settings, and stayed English ("Top", "Fit" in the Polish test run).
-TEST(Language, TheGraphicsViewButtonsFollowTheLanguage) {
-    test::testApp();
-    MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_language_view_buttons")));
-    window.show();
-    ViewportWidget* viewport = window.graphics()->viewport();
-    ASSERT_NE(viewport, nullptr) << "no 3D graphics (needs a display: xvfb-run)";
-    ASSERT_TRUE(window.setLanguage("pl"));
-    QCoreApplication::processEvents();
-    EXPECT_EQ(viewport->viewButton(graphics::View::Top)->text(), QStringLiteral("Z g\u00f3ry"));
-    ASSERT_TRUE(window.setLanguage("de"));
-    QCoreApplication::processEvents();
-    EXPECT_EQ(viewport->viewButton(graphics::View::Top)->text(), QStringLiteral("Draufsicht"));
-    EXPECT_EQ(viewport->findChild<QToolButton*>(QStringLiteral("fitView"))->text(),
-              QStringLiteral("Einpassen"));
-    ASSERT_TRUE(window.setLanguage("en"));
-    QCoreApplication::processEvents();
-    EXPECT_EQ(viewport->viewButton(graphics::View::Top)->text(), QStringLiteral("Top"));
 }
 
 TEST(Language, QtsOwnDialogButtonsSpeakTheLanguage) {

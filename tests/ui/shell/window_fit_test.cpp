@@ -119,7 +119,8 @@ TEST(CycleDialogFit, EveryCycleDialogShowsItsTextsWithinTheWindow) {
                 const int lines = description->heightForWidth(description->width()) /
                                   description->fontMetrics().lineSpacing();
                 EXPECT_LE(lines, 4) << where << " " << description->objectName().toStdString()
-                                    << ": " << description->text().toStdString();
+                                    << " (" << description->width() << " of " << dialog.width()
+                                    << " px): " << description->text().toStdString();
             }
         }
     }
