@@ -200,8 +200,8 @@
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <source>Machining time %1 / %2</source>
-        <translation>Bearbeitungszeit %1 / %2</translation>
+        <source>Machining time %1</source>
+        <translation>Bearbeitungszeit %1</translation>
     </message>
     <message>
         <source>%1   %2 % done   %3 remaining</source>

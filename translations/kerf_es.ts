@@ -200,8 +200,8 @@
         <translation>Velocidad</translation>
     </message>
     <message>
-        <source>Machining time %1 / %2</source>
-        <translation>Tiempo de mecanizado %1 / %2</translation>
+        <source>Machining time %1</source>
+        <translation>Tiempo de mecanizado %1</translation>
     </message>
     <message>
         <source>%1   %2 % done   %3 remaining</source>

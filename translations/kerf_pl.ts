@@ -201,8 +201,8 @@
         <translation>Prędkość</translation>
     </message>
     <message>
-        <source>Machining time %1 / %2</source>
-        <translation>Czas obróbki %1 / %2</translation>
+        <source>Machining time %1</source>
+        <translation>Czas obróbki %1</translation>
     </message>
     <message>
         <source>%1   %2 % done   %3 remaining</source>

@@ -200,8 +200,8 @@
         <translation>Velocidade</translation>
     </message>
     <message>
-        <source>Machining time %1 / %2</source>
-        <translation>Tempo de maquinagem %1 / %2</translation>
+        <source>Machining time %1</source>
+        <translation>Tempo de maquinagem %1</translation>
     </message>
     <message>
         <source>%1   %2 % done   %3 remaining</source>

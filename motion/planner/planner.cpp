@@ -102,6 +102,11 @@ void Planner::reset(const AxisVector& tip) {
     setPosition(tip);
 }
 
+void Planner::setSpindle(canon::SpindleDirection direction, double rpm) {
+    m_spindleDirection = direction;
+    m_spindleRpm = rpm;
+}
+
 double Planner::pendingLength() const {
     double pending = m_pending ? m_pending->geometry.length - m_pending->trimStart : 0.0;
     if (m_short) pending += m_short->geometry.length;

@@ -44,6 +44,8 @@ public:
     // Forgets everything planned and not yet taken (after a quick stop or an emergency stop);
     // the next move starts at `tip`.
     void reset(const AxisVector& tip);
+    // The spindle as manual operation set it, outside the stream.
+    void setSpindle(canon::SpindleDirection direction, double rpm);
 
     // Adds one command. False when it is refused (diagnostics() says why, naming the block);
     // after a refusal every further command is ignored.

@@ -22,6 +22,9 @@ enum class OperatorCommandKind : uint8_t {
     JogIncrement,           // joint, value = signed distance, value2 = velocity
     Handwheel,              // joint, value = signed distance of the counts since the last command
     Home,                   // joint = -1: all joints in order; else one joint
+    // Manual operation without a program: at once, also while the spindle still ramps.
+    ManualSpindle,  // joint = direction (0 stop, 1 cw, -1 ccw), value = rpm
+    ManualCoolant,  // joint = bit 0 flood, bit 1 mist
 };
 
 struct OperatorCommand {

@@ -282,7 +282,21 @@ void ServoCycle::handle(const OperatorCommand& command) noexcept {
             m_homingPhase = HomingPhase::LeaveSwitch;
             m_mode = MotionMode::Homing;
             break;
+        case OperatorCommandKind::ManualSpindle:
+            // A new speed or a stop takes over from where the spindle is, mid-ramp too; the
+            // machine stays ready meanwhile (a program's spindle is the program's).
+            if (!manualFunctionsAllowed()) break;
+            m_spindle.command(command.joint, command.value, 0.0, 0.0);
+            break;
+        case OperatorCommandKind::ManualCoolant:
+            if (!manualFunctionsAllowed()) break;
+            m_status.coolant = static_cast<uint8_t>(command.joint);
+            break;
     }
+}
+
+bool ServoCycle::manualFunctionsAllowed() const noexcept {
+    return (m_mode == MotionMode::Idle || m_mode == MotionMode::Jog) && m_items.empty();
 }
 
 void ServoCycle::processCommands() noexcept {

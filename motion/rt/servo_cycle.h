@@ -92,6 +92,7 @@ private:
     void abortProgram() noexcept;
     void enterEmergencyStop() noexcept;  // quick stop, program aborted, drives off until Reset
     void stopSpindleAndCoolant() noexcept;
+    bool manualFunctionsAllowed() const noexcept;  // no program queued, running or waiting
     double liveFeed(FeedKind kind, double feed) const noexcept;
     // What the interpolator moves towards on element e: its cap and live feed, 0 when stopping.
     double targetVelocity(const PathElement& e) const noexcept;

@@ -400,6 +400,30 @@ bool RealtimeMotionPort::home(std::optional<Axis> axis) {
     return m_machine->command({OperatorCommandKind::Home, joint});
 }
 
+bool RealtimeMotionPort::withoutProgram() const {
+    return m_submitted.empty() && m_machine->drained();
+}
+
+bool RealtimeMotionPort::manualSpindle(const canon::SpindleControl& spindle) {
+    if (!withoutProgram()) return false;
+    const int direction = spindle.direction == canon::SpindleDirection::Clockwise          ? 1
+                          : spindle.direction == canon::SpindleDirection::CounterClockwise ? -1
+                                                                                           : 0;
+    const double rpm = direction != 0 ? spindle.speedRpm : 0.0;
+    if (!m_machine->command({OperatorCommandKind::ManualSpindle, direction, rpm})) return false;
+    // The next program plans with the spindle the operator left (feed per revolution).
+    m_machine->planner().setSpindle(spindle.direction, rpm);
+    m_programmedRpm = m_submittedRpm = rpm;
+    m_programmedSurfaceSpeed = 0.0;
+    return true;
+}
+
+bool RealtimeMotionPort::manualCoolant(const canon::CoolantControl& coolant) {
+    if (!withoutProgram()) return false;
+    const int bits = (coolant.flood ? 1 : 0) | (coolant.mist ? 2 : 0);
+    return m_machine->command({OperatorCommandKind::ManualCoolant, bits});
+}
+
 task::MachineStatus RealtimeMotionPort::status() const {
     const MotionStatus now = m_machine->status();
     const MachineModel& model = m_machine->model();

@@ -48,6 +48,9 @@ public:
     bool jogStop(Axis axis) override;
     bool jogIncrement(Axis axis, double distance) override;
     bool home(std::optional<Axis> axis) override;
+    // At once in the servo cycle (not queued): Spindle off stops a spindle that still ramps.
+    bool manualSpindle(const canon::SpindleControl& spindle) override;
+    bool manualCoolant(const canon::CoolantControl& coolant) override;
     task::MachineStatus status() const override;
 
     RealtimeMachine& machine() { return *m_machine; }
@@ -67,6 +70,7 @@ private:
 
     int jointOf(Axis axis) const;
     bool manualAllowed() const;
+    bool withoutProgram() const;      // nothing planned, queued or executing, the axes at rest
     bool programInterrupted() const;  // held or stopped, or jogged away from there
     void handle(const MotionEvent& event);
     void prepareForCommands();

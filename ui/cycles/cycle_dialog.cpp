@@ -30,7 +30,9 @@ QString rangeText(const CycleField& field, bool inch) {
     if (p.keywords & cycles::kFeedMax) keywords << QStringLiteral("FMAX");
     if (p.keywords & cycles::kFeedPerRev) keywords << QStringLiteral("FU");
     if (p.keywords & cycles::kFeedPerTooth) keywords << QStringLiteral("FZ");
-    if (!keywords.isEmpty()) text += QStringLiteral(", ") + keywords.join(QLatin1Char(' '));
+    // The keywords on a line of their own: the column stays as narrow as the numbers and the
+    // descriptions get the rest of the row.
+    if (!keywords.isEmpty()) text += QLatin1Char('\n') + keywords.join(QLatin1Char(' '));
     return text;
 }
 
@@ -56,6 +58,7 @@ CycleDialog::CycleDialog(const cycles::CycleDescriptor& cycle, bool inch, QWidge
         auto* label = new QLabel(m_fields[i].label, rows);
         label->setStyleSheet(QStringLiteral("font-weight: bold;"));
         auto* description = new QLabel(rows);
+        description->setObjectName(QStringLiteral("description_%1").arg(m_fields[i].label));
         description->setWordWrap(true);
         auto* input = new QLineEdit(defaultText(m_fields[i], inch), rows);
         input->setObjectName(QStringLiteral("field_%1").arg(m_fields[i].label));
@@ -65,6 +68,7 @@ CycleDialog::CycleDialog(const cycles::CycleDescriptor& cycle, bool inch, QWidge
         connect(input, &QLineEdit::returnPressed, this, [this, row] { enterPressed(row); });
         auto* unit = new QLabel(unitText(m_fields[i].parameter->unit, inch), rows);
         auto* range = new QLabel(rows);
+        range->setObjectName(QStringLiteral("range_%1").arg(m_fields[i].label));
         range->setStyleSheet(QStringLiteral("color: #606060;"));
         grid->addWidget(label, row, 0);
         grid->addWidget(description, row, 1);
@@ -76,6 +80,7 @@ CycleDialog::CycleDialog(const cycles::CycleDescriptor& cycle, bool inch, QWidge
         m_ranges.push_back(range);
     }
     auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("cycleFields"));
     scroll->setWidget(rows);
     scroll->setWidgetResizable(true);
     left->addWidget(scroll, 1);
@@ -94,6 +99,7 @@ CycleDialog::CycleDialog(const cycles::CycleDescriptor& cycle, bool inch, QWidge
     outer->addLayout(right, 2);
 
     retranslate();
+    sizeToWindow(*this);
     if (!m_inputs.empty()) {
         setCurrentField(0);
         m_inputs.front()->setFocus();

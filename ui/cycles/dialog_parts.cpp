@@ -33,4 +33,9 @@ void addOkCancel(QDialog& dialog, QBoxLayout& layout, QPushButton*& ok, QPushBut
     layout.addLayout(buttons);
 }
 
+void sizeToWindow(QDialog& dialog) {
+    const QWidget* parent = dialog.parentWidget();
+    if (parent != nullptr) dialog.resize(parent->window()->size() * 0.9);
+}
+
 }  // namespace kerf::ui

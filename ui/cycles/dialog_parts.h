@@ -18,4 +18,8 @@ QLabel* addRefusalLine(QDialog& dialog, QBoxLayout& layout, const char* objectNa
 // a default button: Enter belongs to the fields (next parameter).
 void addOkCancel(QDialog& dialog, QBoxLayout& layout, QPushButton*& ok, QPushButton*& cancel);
 
+// Most of the window the dialog opens over: at its own size hint the descriptions of the long
+// languages (Portuguese, Polish) got a column a word wide and the ranges were cut off.
+void sizeToWindow(QDialog& dialog);
+
 }  // namespace kerf::ui

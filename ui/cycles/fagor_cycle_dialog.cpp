@@ -76,6 +76,7 @@ FagorCycleDialog::FagorCycleDialog(int g, QWidget* parent)
     outer->addLayout(right, 2);
 
     retranslate();
+    sizeToWindow(*this);
     if (!m_inputs.empty()) {
         setCurrentField(0);
         m_inputs.front()->setFocus();

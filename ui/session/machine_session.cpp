@@ -135,7 +135,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     request.basicRotationDeg = basicRotationDeg();
     request.operatorInputs = operatorInputs;
     m_programName = task::programName(path);
-    return start(task::loadProgram(m_machine, request), startLine);
+    return start(task::loadProgram(m_machine, request), startLine, m_singleBlock);
 }
 
 bool MachineSession::executeMdi(const QString& block) {
@@ -149,7 +149,7 @@ bool MachineSession::executeMdi(const QString& block) {
     request.presetInMachine = presetInMachine();
     request.basicRotationDeg = basicRotationDeg();
     m_programName.clear();
-    if (!start(task::loadProgram(m_machine, request), std::nullopt)) return false;
+    if (!start(task::loadProgram(m_machine, request), std::nullopt, false)) return false;
     constexpr qsizetype kMaxMdiHistory = 50;
     m_mdiHistory.removeAll(block.trimmed());
     m_mdiHistory.prepend(block.trimmed());
@@ -157,7 +157,8 @@ bool MachineSession::executeMdi(const QString& block) {
     return true;
 }
 
-bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> startLine) {
+bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> startLine,
+                           bool singleBlock) {
     m_lastStartRefused = !loaded.ready;
     if (!loaded.ready) {
         for (const Diagnostic& d : loaded.diagnostics())
@@ -178,7 +179,7 @@ bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> s
             shift.values[i] += m_motion->shift().values[i] - own.values[i];
         m_motion->setShift(shift);
     }
-    m_motion->setSingleBlock(m_singleBlock);
+    m_motion->setSingleBlock(singleBlock);
     // FAGOR 8035: single block stops after every block, one without a move too.
     m_motion->setSingleBlockEveryBlock(loaded.dialect == program::Dialect::Fagor);
     m_run->start(std::move(loaded.interpreter), options);

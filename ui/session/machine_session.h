@@ -211,7 +211,9 @@ signals:
     void basicRotationChanged(double degrees);
 
 private:
-    bool start(task::LoadedProgram loaded, std::optional<uint32_t> startLine);
+    // Program run honours the single-block key; MDI and generated programs (probing) run their
+    // blocks to the end.
+    bool start(task::LoadedProgram loaded, std::optional<uint32_t> startLine, bool singleBlock);
     bool refuseWhenBusy();
     // Programs and MDI wait for the reference run unless the machine file needs none.
     bool refuseWhenNotReferenced();

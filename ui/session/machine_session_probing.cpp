@@ -117,7 +117,7 @@ bool MachineSession::runGeneratedProgram(const std::string& text) {
     request.startPosition->values = m_motion->world().position.values;
     request.presetInMachine = presetInMachine();
     m_programName.clear();
-    return start(task::loadProgram(m_machine, request), std::nullopt);
+    return start(task::loadProgram(m_machine, request), std::nullopt, false);
 }
 
 std::optional<cycles::probing::ManualProbingResult> MachineSession::manualProbingResult() const {

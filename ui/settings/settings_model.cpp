@@ -67,16 +67,22 @@ void SettingsModel::buildRows() {
         const std::string keyGroup = groupOf(key);
         if (keyGroup != group) {
             group = keyGroup;
-            QString heading = tr("Machine");
-            if (group.rfind("axes.", 0) == 0) {
-                heading = tr("Axis %1").arg(QString::fromStdString(group.substr(5)));
-            } else if (!group.empty()) {
-                heading = QString::fromStdString(group);
-            }
-            m_rows.push_back(Row{{}, heading});
+            m_rows.push_back(Row{{}, group});
         }
         m_rows.push_back(Row{key, {}});
     }
+}
+
+QString SettingsModel::headingText(const std::string& group) {
+    if (group.empty()) return tr("Machine");
+    if (group.rfind("axes.", 0) == 0)
+        return tr("Axis %1").arg(QString::fromStdString(group.substr(5)));
+    return QString::fromStdString(group);
+}
+
+void SettingsModel::retranslate() {
+    if (!m_rows.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+    emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
 }
 
 const std::string& SettingsModel::keyOf(int row) const {
@@ -109,7 +115,7 @@ QVariant SettingsModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid()) return {};
     const Row& row = m_rows.at(static_cast<size_t>(index.row()));
     if (row.key.empty()) {
-        if (role == Qt::DisplayRole && index.column() == Name) return row.heading;
+        if (role == Qt::DisplayRole && index.column() == Name) return headingText(row.group);
         if (role == Qt::FontRole) {
             QFont bold;
             bold.setBold(true);

@@ -43,16 +43,20 @@ public:
     void setLocked(bool locked);
     bool locked() const { return m_locked; }
     void setSaved() { m_modified = false; }
+    // The language changed: the views fetch the headings and descriptions again.
+    void retranslate();
 
 signals:
     void refused(const kerf::Diagnostic& reason);
 
 private:
     struct Row {
-        std::string key;  // empty: heading
-        QString heading;  // heading rows only
+        std::string key;    // empty: heading
+        std::string group;  // heading rows only: "" (top level), "spindle", "axes.X" ...
     };
     void buildRows();
+    // In the language shown now (the rows are made before the language is chosen).
+    static QString headingText(const std::string& group);
     QString valueText(const std::string& key) const;
 
     machine::MachineConfig m_config;

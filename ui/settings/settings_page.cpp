@@ -128,6 +128,7 @@ void SettingsPage::retranslate() {
     m_title->setText(tr("Machine parameters"));
     m_codeLabel->setText(tr("Code number for editing"));
     m_unlockButton->setText(tr("Unlock"));
+    m_model->retranslate();
     const QString file = QString::fromStdString(m_file.string());
     m_note->setText(
         m_builtIn

@@ -71,6 +71,8 @@ GraphicsPanel::GraphicsPanel(TestRunController& testRun, const machine::MachineC
     m_time = new QLabel(this);
     m_time->setObjectName(QStringLiteral("machiningTime"));
     m_time->setMinimumHeight(48);
+    // Two lines rather than clipped (or a panel pushed wider) where the language is long.
+    m_time->setWordWrap(true);
     strip->addWidget(m_time, 1);
     m_speedTitle = new QLabel(this);
     strip->addWidget(m_speedTitle);
@@ -236,9 +238,11 @@ void GraphicsPanel::retranslate() {
     for (QToolButton* button : m_speedButtons)
         button->setVisible(!machine);
     if (!machine) {
-        m_time->setText(tr("Machining time %1 / %2")
-                            .arg(formatDuration(m_playback->playbackTimeS()),
-                                 formatDuration(m_playback->machiningTimeS())));
+        // The two times stay together on one line when the text wraps.
+        m_time->setText(tr("Machining time %1")
+                            .arg(QStringLiteral("%1\u00a0/\u00a0%2")
+                                     .arg(formatDuration(m_playback->playbackTimeS()),
+                                          formatDuration(m_playback->machiningTimeS()))));
         return;
     }
     if (!m_playback->program()) return m_time->clear();

@@ -61,7 +61,6 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent), m_vtk(std::ma
     buttons->setContentsMargins(4, 4, 4, 0);
     for (size_t i = 0; i < kViews.size(); ++i) {
         auto* button = new QToolButton(this);
-        button->setText(viewLabel(kViews[i]));
         button->setMinimumSize(56, 40);  // finger-sized
         const graphics::View view = kViews[i];
         connect(button, &QToolButton::clicked, this, [this, view] { setView(view); });
@@ -69,8 +68,9 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent), m_vtk(std::ma
         m_vtk->buttons[i] = button;
     }
     auto* fit = new QToolButton(this);
-    fit->setText(tr("Fit"));
     fit->setMinimumSize(56, 40);
+    fit->setObjectName(QStringLiteral("fitView"));
+    m_fitButton = fit;
     connect(fit, &QToolButton::clicked, this, [this] {
         if (m_scene != nullptr) m_scene->fit();
         render();
@@ -78,6 +78,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent), m_vtk(std::ma
     buttons->addWidget(fit);
     buttons->addStretch(1);
     layout->addLayout(buttons);
+    retranslate();
 
     m_renderWidget = new QVTKOpenGLNativeWidget(this);
     m_renderWidget->setRenderWindow(m_vtk->window);
@@ -196,6 +197,18 @@ void ViewportWidget::updateViewportSize() {
 void ViewportWidget::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     updateViewportSize();
+}
+
+void ViewportWidget::changeEvent(QEvent* event) {
+    // The language chosen at start or in the settings comes after the buttons were made.
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ViewportWidget::retranslate() {
+    for (size_t i = 0; i < kViews.size(); ++i)
+        m_vtk->buttons[i]->setText(viewLabel(kViews[i]));
+    m_fitButton->setText(tr("Fit"));
 }
 
 bool ViewportWidget::eventFilter(QObject* watched, QEvent* event) {

@@ -54,8 +54,10 @@ signals:
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
+    void retranslate();
     void pollStock();
     void updateViewportSize();
 
@@ -66,6 +68,7 @@ private:
     const graphics::ProgressiveStock* m_stock = nullptr;
     uint64_t m_stockSequence = 0;
     QTimer* m_stockTimer = nullptr;
+    QToolButton* m_fitButton = nullptr;
     QPoint m_pressPosition;
     bool m_pressed = false;
 };

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
 #include <QTreeView>
@@ -276,12 +277,44 @@ TEST_F(MachineScreens, ManualSpindleStartsAtTheEnteredSpeedWithinTheMachinesMaxi
     ASSERT_NE(status, nullptr);
     EXPECT_TRUE(status->text().startsWith(QStringLiteral("S 1500 ")))
         << status->text().toStdString();
-    // The spindle command ends when the spindle runs at its speed; until then the machine is
-    // busy with it (docs/hmi.md).
-    ASSERT_TRUE(
-        processUntil([&] { return session->status().state == task::MachineState::Idle; }, 5s));
     ASSERT_TRUE(bar.pressId("spindleOff"));
     EXPECT_TRUE(processUntil([&] { return session->status().actualSpindleRpm == 0.0; }, 5s));
+}
+
+// A real control stops the spindle when Spindle off is pressed while it still speeds up, and
+// switches the coolant meanwhile (they were refused as "busy" until the speed was reached).
+TEST_F(MachineScreens, SpindleOffAndCoolantKeysActWhileTheSpindleStillRampsUp) {
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    MachineSession* session = window->session();
+    const task::MachineStatus& status = session->status();
+    SoftkeyBar& bar = *window->softkeys();
+    // 12000 rpm at 3000 rpm/s (presets/mill.toml): 4 s of ramp.
+    keyText(bar, "spindleSpeed");
+    answerNumberDialog(12000);
+    ASSERT_TRUE(bar.pressId("spindleSpeed"));
+    ASSERT_TRUE(bar.pressId("spindleOn"));
+    ASSERT_TRUE(processUntil([&] { return status.actualSpindleRpm > 1000.0; }, 5s));
+    ASSERT_TRUE(bar.pressId("coolantOn"));
+    ASSERT_TRUE(processUntil([&] { return status.coolant; }, 1s));
+    const double atPress = status.actualSpindleRpm;
+    EXPECT_LT(atPress, 10000.0) << "the ramp is over already";
+    const QSignalSpy refusals(session, &MachineSession::message);
+    ASSERT_TRUE(bar.pressId("spindleOff"));
+    EXPECT_EQ(refusals.count(), 0) << "Spindle off refused while the spindle ramps";
+    EXPECT_TRUE(processUntil([&] { return status.programmedSpindleRpm == 0.0; }, 1s));
+    // It slows down from where it was and stands. Turning the ramp round (3000 rpm/s at 60000
+    // rpm/s² of jerk) adds 75 rpm; a status period or two of latency adds at most some 300.
+    double fastest = 0.0;
+    ASSERT_TRUE(processUntil(
+        [&] {
+            fastest = std::max(fastest, status.actualSpindleRpm);
+            return status.actualSpindleRpm == 0.0;
+        },
+        6s));
+    EXPECT_LT(fastest, atPress + 600.0);
+    EXPECT_TRUE(status.coolant) << "Spindle off switched the coolant off";
+    ASSERT_TRUE(bar.pressId("coolantOff"));
+    EXPECT_TRUE(processUntil([&] { return !status.coolant; }, 1s));
 }
 
 // Runs one MDI block through the MDI dialog; `choose` fills in the dialog as the operator would.
@@ -332,6 +365,30 @@ TEST_F(MachineScreens, MdiKeepsTheBlocksRunAndTheArrowKeysPickOneToRunAgain) {
     EXPECT_NEAR(x(), 5.0, 1e-6);
     // Run again, it moves to the top and is kept once.
     EXPECT_EQ(window->session()->mdiHistory(), QStringList({first, second}));
+}
+
+// Single block belongs to Program run: an MDI block after it runs to its end without NC start,
+// and Program run single block stops after each block again afterwards.
+TEST_F(MachineScreens, MdiAfterProgramRunSingleBlockRunsItsBlockToTheEnd) {
+    openWindow(false);
+    MachineSession* session = window->session();
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::SingleBlock));
+    ASSERT_TRUE(session->singleBlock());
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Mdi));
+    runMdi(*window, [](MdiDialog& dialog) { dialog.blockField()->setEditText("L X+7 FMAX"); });
+    EXPECT_EQ(session->runState(), task::RunState::Finished);
+    EXPECT_NEAR(x(), 7.0, 1e-6);
+
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::SingleBlock));
+    ASSERT_TRUE(
+        session->startProgram("0 BEGIN PGM S MM\n1 L X+2 FMAX\n2 L X+4 FMAX\n"
+                              "3 END PGM S MM\n",
+                              "S.H"));
+    ASSERT_TRUE(
+        processUntil([&] { return session->status().state == task::MachineState::Stopped; }, 5s));
+    EXPECT_NEAR(x(), 2.0, 1e-6);
+    session->stop();
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
 }
 
 TEST(MachineScreensFiles, TheTablesFilterIncludesTouchProbeTables) {

@@ -3,6 +3,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTranslator>
 
 #include <gtest/gtest.h>
 
@@ -53,6 +54,43 @@ TEST(SettingsPage, RowsComeFromTheSchemaByGroup) {
     ASSERT_GT(xVelocity, 0);
     EXPECT_EQ(model.data(model.index(xVelocity, SettingsModel::Name), Qt::DisplayRole),
               QStringLiteral("max_velocity"));
+}
+
+// Translates the first heading the way kerf_pt.ts does.
+class PortugueseHeadings : public QTranslator {
+public:
+    QString translate(const char* context, const char* source, const char* disambiguation,
+                      int n) const override {
+        (void)disambiguation;
+        (void)n;
+        if (QString::fromUtf8(context) == QLatin1String("kerf::ui::SettingsModel") &&
+            QString::fromUtf8(source) == QLatin1String("Machine"))
+            return QStringLiteral("M\u00e1quina");
+        return {};
+    }
+    bool isEmpty() const override { return false; }
+};
+
+// The language is chosen after the page was made (at start, or in MOD): the first heading
+// stayed "Machine" in Portuguese.
+TEST(SettingsPage, HeadingsFollowTheLanguageChosenAfterThePageWasMade) {
+    test::testApp();
+    const fs::path file = kerf::test::uniqueTempDir("settings_language") / "mill.toml";
+    SettingsPage page(*machine::loadMachine("mill"), file, false);
+    SettingsModel& model = *page.model();
+    const QSignalSpy refreshed(&model, &QAbstractItemModel::dataChanged);
+    PortugueseHeadings portuguese;
+    QCoreApplication::installTranslator(&portuguese);
+    QCoreApplication::processEvents();  // LanguageChange reaches the page
+    const QString heading =
+        model.data(model.index(0, SettingsModel::Name), Qt::DisplayRole).toString();
+    const int refreshes = refreshed.count();
+    QCoreApplication::removeTranslator(&portuguese);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(heading, QStringLiteral("M\u00e1quina"));
+    EXPECT_GE(refreshes, 1) << "the views were not told to fetch the texts again";
+    EXPECT_EQ(model.data(model.index(0, SettingsModel::Name), Qt::DisplayRole),
+              QStringLiteral("Machine"));
 }
 
 TEST(SettingsPage, OutOfRangeIsRefusedNamingTheKeyAndAValidValueIsSavedAndReloads) {

@@ -5,6 +5,7 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
+#include <QTranslator>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -46,6 +47,40 @@ CanonBuilder square() {
     CanonBuilder b;
     b.rapid(0, 0, 0).line(100, 0, 0).line(100, 100, 0).line(0, 100, 0).line(0, 0, 0);
     return b;
+}
+
+// Translates the view buttons the way kerf_de.ts does.
+class GermanViews : public QTranslator {
+public:
+    QString translate(const char* context, const char* source, const char* disambiguation,
+                      int n) const override {
+        (void)disambiguation;
+        (void)n;
+        if (QString::fromUtf8(context) != QLatin1String("kerf::ui::ViewportWidget")) return {};
+        const QString text = QString::fromUtf8(source);
+        if (text == QLatin1String("Top")) return QStringLiteral("Draufsicht");
+        if (text == QLatin1String("Fit")) return QStringLiteral("Einpassen");
+        return {};
+    }
+    bool isEmpty() const override { return false; }
+};
+
+// The buttons are made before the language is chosen (--language, the Language key, MOD): they
+// stayed "Top", "Fit" in every language.
+TEST(ViewportWidget, TheViewButtonsFollowTheLanguageChosenAfterwards) {
+    test::viewportTestApp();
+    ViewportWidget widget;
+    GermanViews german;
+    QCoreApplication::installTranslator(&german);
+    QApplication::processEvents();  // LanguageChange reaches the widget
+    const QString top = widget.viewButton(graphics::View::Top)->text();
+    const auto* fit = widget.findChild<QToolButton*>(QStringLiteral("fitView"));
+    const QString fitText = fit != nullptr ? fit->text() : QString();
+    QCoreApplication::removeTranslator(&german);
+    QApplication::processEvents();
+    EXPECT_EQ(top, QStringLiteral("Draufsicht"));
+    EXPECT_EQ(fitText, QStringLiteral("Einpassen"));
+    EXPECT_EQ(widget.viewButton(graphics::View::Top)->text(), QStringLiteral("Top"));
 }
 
 TEST(ViewportWidget, ShowsTheToolpathAndPicksTheClickedBlock) {
