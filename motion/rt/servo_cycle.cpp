@@ -12,9 +12,9 @@ constexpr size_t kSingleBlockScan = 8;
 constexpr size_t kLookItems = 8;
 
 // One single-block step: a programmed block (a called cycle's moves carry the calling block's
-// place).
+// place), or one point of a pattern the block machines.
 bool sameStep(const SourceLocation& a, const SourceLocation& b) noexcept {
-    return a.fileId == b.fileId && a.line == b.line;
+    return a.fileId == b.fileId && a.line == b.line && a.step == b.step;
 }
 
 }  // namespace

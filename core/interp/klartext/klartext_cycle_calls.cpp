@@ -339,7 +339,10 @@ void KlartextInterpreter::callCyclePattern(const CycleCall& call) {
     const bool secondClearance =
         std::find(m_globalSet.begin(), m_globalSet.end(), 345) != m_globalSet.end() &&
         m_globals.integer(345) == 1;
+    // Each point is a single-block step of its own; the call's M functions run in the last.
+    uint32_t step = 0;
     for (const cycles::PatternPoint& point : *m_pattern) {
+        m_at.step = ++step;
         cycles::CycleValues values = callValues();
         values.set(203, point.surface ? *point.surface : values.number(203) + point.surfaceOffset);
         const double second = values.number(203) + values.number(204);
@@ -354,6 +357,7 @@ void KlartextInterpreter::callCyclePattern(const CycleCall& call) {
         if (m_status == interp::RunStatus::Failed || !runMachiningCycle(values)) return;
     }
     applyMFunctions(call.words.m, false);
+    m_at.step = 0;
 }
 
 void KlartextInterpreter::callCyclePosition(const CycleCall& call) {
@@ -437,10 +441,13 @@ void KlartextInterpreter::runPatternCycle(const cycles::CycleDescriptor& pattern
     }
     const cycles::CycleValues callWith = callValues();
     const canon::FeedMode mode = m_feedMode;
+    // Each point is a single-block step of its own (the TNC stops between the points).
     for (size_t i = 0; i < plan.points.size(); ++i) {
+        m_at.step = static_cast<uint32_t>(i + 1);
         approachPatternPoint(plan, i);
         if (m_status == interp::RunStatus::Failed || !runMachiningCycle(callWith)) return;
     }
+    m_at.step = 0;
     restoreFeedMode(mode);
 }
 

@@ -303,6 +303,86 @@ TEST_F(MachineSessionTest, SingleBlockStopsAtTheProgrammedPointOfACorner) {
     }
 }
 
+// Cycle 200 on the points of cycle 220 (Q216/Q217 centre X50 Y50, Q244 diameter 40, from 0 to
+// 270 degrees in 4 points: X70 Y50, X50 Y70, X30 Y50, X50 Y30) and of a PATTERN DEF called with
+// M9 (X10 Y10, X30 Y10).
+const char* const kPatternProgram =
+    "0 BEGIN PGM PAT MM\n"
+    "1 TOOL CALL 3 Z S2000\n"
+    "2 L X+0 Y+0 Z+30 R0 FMAX M3 M8\n"
+    "3 CYCL DEF 200 DRILLING\n"
+    "  Q200=2 Q201=-3 Q206=300 Q202=3 Q210=0\n"
+    "  Q203=+0 Q204=20 Q211=0 Q395=0\n"
+    "4 CYCL DEF 220 POLAR PATTERN\n"
+    "  Q216=+50 Q217=+50 Q244=40 Q245=+0 Q246=+270\n"
+    "  Q247=+0 Q241=4 Q200=2 Q203=+0 Q204=20 Q301=1 Q365=0\n"
+    "5 PATTERN DEF\n"
+    "  POS1 (X+10 Y+10 Z+0)\n"
+    "  POS2 (X+30 Y+10 Z+0)\n"
+    "6 CYCL CALL PAT M9\n"
+    "7 L Z+30 R0 FMAX\n"
+    "8 END PGM PAT MM\n";
+
+// Single block stops between the points of a pattern (TNC 320 cycle manuals, cycles 220 and 221:
+// the control stops between the points; [choice] CYCL CALL PAT the same way): one NC start
+// machines one point, and the calling block's M functions run after its last point, before the
+// stop (docs/hmi.md, "Program run").
+TEST_F(MachineSessionTest, SingleBlockStopsBetweenThePointsOfAPattern) {
+    session->setSingleBlock(true);
+    ASSERT_TRUE(session->startProgram(kPatternProgram, "PAT.H"));
+    const task::MachineStatus& status = session->status();
+    struct Stop {
+        double x, y, z;
+        bool coolant;
+    };
+    std::vector<Stop> stops;
+    for (int start = 0; start < 12; ++start) {
+        ASSERT_TRUE(serviceUntil([&] {
+            return status.state == task::MachineState::Stopped ||
+                   session->runState() == RunState::Finished;
+        }));
+        if (session->runState() == RunState::Finished) break;
+        settle();
+        stops.push_back({status.axes[0].nominal, status.axes[1].nominal, status.axes[2].nominal,
+                         status.coolant});
+        session->cycleStart();
+        ASSERT_TRUE(serviceUntil([&] { return status.state != task::MachineState::Stopped; }));
+    }
+    ASSERT_EQ(session->runState(), RunState::Finished);
+    // Block 2, four points of 220, two of the pattern, block 7; END PGM takes the last start.
+    const std::vector<std::array<double, 2>> expected = {{0, 0},   {70, 50}, {50, 70}, {30, 50},
+                                                         {50, 30}, {10, 10}, {30, 10}, {30, 10}};
+    ASSERT_EQ(stops.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_NEAR(stops[i].x, expected[i][0], 1e-6) << "stop " << i;
+        EXPECT_NEAR(stops[i].y, expected[i][1], 1e-6) << "stop " << i;
+        // Blocks 2 and 7 at Z+30; at a point the cycle ended at the 2nd set-up clearance.
+        const bool block = i == 0 || i + 1 == expected.size();
+        EXPECT_NEAR(stops[i].z, block ? 30.0 : 20.0, 1e-6) << "stop " << i;
+    }
+    // M9 of CYCL CALL PAT: on until the last point, off at the stop after it.
+    for (size_t i = 0; i < 6; ++i)
+        EXPECT_TRUE(stops[i].coolant) << "stop " << i;
+    EXPECT_FALSE(stops[6].coolant);
+}
+
+TEST_F(MachineSessionTest, FullSequenceRunsAPatternWithoutAStop) {
+    session->setSingleBlock(false);
+    ASSERT_TRUE(session->startProgram(kPatternProgram, "PAT.H"));
+    bool stopped = false;
+    ASSERT_TRUE(serviceUntil([&] {
+        stopped = stopped || session->status().state == task::MachineState::Stopped;
+        return session->runState() == RunState::Finished || session->runState() == RunState::Failed;
+    }));
+    EXPECT_EQ(session->runState(), RunState::Finished);
+    EXPECT_FALSE(stopped);
+    settle();
+    EXPECT_NEAR(session->status().axes[0].nominal, 30.0, 1e-6);
+    EXPECT_NEAR(session->status().axes[1].nominal, 10.0, 1e-6);
+    EXPECT_NEAR(session->status().axes[2].nominal, 30.0, 1e-6);
+    EXPECT_FALSE(session->status().coolant);
+}
+
 TEST_F(MachineSessionTest, ContinuousJogRunsUntilStopped) {
     ASSERT_TRUE(session->jog(Axis::X, 1));
     ASSERT_TRUE(serviceUntil([this] { return x() > 5.0; }, 5s));
