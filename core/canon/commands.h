@@ -82,6 +82,8 @@ struct ToolGeometry {
     // The cutting edge's width of a grooving or parting tool, or a drill's diameter (Fagor NOSEW
     // of the tool table); 0: none given.
     double cuttingWidthMm = 0.0;
+    // The nose angle of an insert or the point angle of a drill (Fagor NOSEA); 0: none given.
+    double noseAngleDeg = 0.0;
     friend bool operator==(const ToolGeometry&, const ToolGeometry&) = default;
 };
 

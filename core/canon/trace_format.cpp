@@ -6,7 +6,6 @@
 #include <string_view>
 
 #include "core/base/fixed_format.h"
-#include "core/canon/lathe_tool_angle.h"
 #include "core/geometry/arc_math.h"
 
 namespace kerf::canon {
@@ -140,7 +139,7 @@ void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
     appendWord(out, "L=", g.lengthMm, kLengthDecimals);
     appendWord(out, "R=", g.radiusMm, kLengthDecimals);
     const bool lathe = g.locationCode >= 0;
-    if (!lathe) appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);  // a lathe's: its NOSEA
+    if (!lathe) appendWord(out, "R2=", g.radius2Mm, kLengthDecimals);  // a mill cutter's only
     out += " AXIS ";
     out += axisLetter(toolAxis);
     if (lathe) {
@@ -151,8 +150,7 @@ void appendGeometry(LineWriter& out, const ToolGeometry& g, Axis toolAxis) {
         out += " LOC ";
         out.integer(g.locationCode);
         if (g.cuttingWidthMm > 0.0) appendWord(out, "W=", g.cuttingWidthMm, kLengthDecimals);
-        const double noseAngle = latheNoseAngleDeg(g);
-        if (noseAngle > 0.0) appendWord(out, "NOSEA=", noseAngle, kLengthDecimals);
+        if (g.noseAngleDeg > 0.0) appendWord(out, "NOSEA=", g.noseAngleDeg, kLengthDecimals);
     }
 }
 

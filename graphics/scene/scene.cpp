@@ -31,7 +31,6 @@
 #include <vtkTypeInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 
-#include "core/canon/lathe_tool_angle.h"
 #include "graphics/scene/detail/scene_impl.h"
 #include "graphics/scene/detail/tool_axis_lines.h"
 #include "graphics/scene/scene_vtk.h"
@@ -365,7 +364,7 @@ void Scene::setToolpath(std::shared_ptr<const ToolpathData> data,
                     // The tool table gives the nose and the tip code; drawn as a rhombic insert
                     // of its NOSEA, or the common 80 degree one, so that it shows which way it
                     // cuts.
-                    const double noseAngle = canon::latheNoseAngleDeg(last.geometry);
+                    const double noseAngle = last.geometry.noseAngleDeg;
                     insert.noseRadiusMm = std::max(0.4, last.geometry.radiusMm);
                     insert.includedAngleDeg =
                         noseAngle > 0.0 && noseAngle < 180.0 ? noseAngle : 80.0;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/canon/lathe_tool_angle.h"
 #include "core/geometry/arc_math.h"
 
 namespace kerf::graphics {
@@ -139,7 +138,7 @@ LatheInsert LatheInsert::fromGeometry(const canon::ToolGeometry& geometry) {
         insert.kind = centre ? LatheToolKind::Drill : LatheToolKind::Grooving;
         insert.widthMm = geometry.cuttingWidthMm;
     }
-    const double point = canon::latheNoseAngleDeg(geometry);
+    const double point = geometry.noseAngleDeg;
     if (insert.kind == LatheToolKind::Drill && point > 0.0 && point < 180.0) {
         insert.pointAngleDeg = point;
     }

@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include "core/canon/lathe_tool_angle.h"
 #include "core/geometry/arc_math.h"
 #include "graphics/stock/cutter.h"
 #include "graphics/stock/lathe_stock.h"
@@ -97,7 +96,7 @@ TEST(LatheToolKinds, TheDrillPointIsTheNoseAngleOfItsToolChange) {
     canon::ToolGeometry g;
     g.locationCode = 0;
     g.cuttingWidthMm = 8;
-    canon::setLatheNoseAngle(g, 90);
+    g.noseAngleDeg = 90;
     const LatheInsert drill = LatheInsert::fromGeometry(g);
     EXPECT_DOUBLE_EQ(drill.pointAngleDeg, 90.0);
     LatheStock stock(barR25(), kCell, 50'000'000);
@@ -106,12 +105,12 @@ TEST(LatheToolKinds, TheDrillPointIsTheNoseAngleOfItsToolChange) {
     EXPECT_NEAR(stock.removedVolumeMm3(), hole, 2e-3 * hole);
     EXPECT_TRUE(materialAt(stock, 3.1, -17.1));  // 2.9 above the tip the cone is 2.9 wide
     EXPECT_FALSE(materialAt(stock, 2.7, -17.1));
-    canon::setLatheNoseAngle(g, 0);
+    g.noseAngleDeg = 0;
     EXPECT_DOUBLE_EQ(LatheInsert::fromGeometry(g).pointAngleDeg, 118.0);
     // A turning insert keeps its nose angle to itself: it has no point.
     g.cuttingWidthMm = 0;
     g.locationCode = 3;
-    canon::setLatheNoseAngle(g, 55);
+    g.noseAngleDeg = 55;
     EXPECT_EQ(LatheInsert::fromGeometry(g).kind, LatheToolKind::Turning);
 }
 

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "core/base/translate.h"
-#include "core/canon/lathe_tool_angle.h"
 #include "core/interp/fagor/fagor_interpreter.h"
 
 namespace kerf::fagor {
@@ -113,7 +112,7 @@ void FagorInterpreter::emitToolData(bool change) {
     if (m_toolTable) {
         const ToolEntry entry = m_toolTable->get(m_tool.tool);
         g.cuttingWidthMm = entry.noseWidth;
-        canon::setLatheNoseAngle(g, entry.noseAngle);
+        g.noseAngleDeg = entry.noseAngle;
     }
     if (change) {
         emit(canon::ToolChange{m_tool.tool, {}, g, Axis::Z});
