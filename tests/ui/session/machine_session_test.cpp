@@ -370,10 +370,13 @@ TEST_F(MachineSessionTest, FullSequenceRunsAPatternWithoutAStop) {
     session->setSingleBlock(false);
     ASSERT_TRUE(session->startProgram(kPatternProgram, "PAT.H"));
     bool stopped = false;
-    ASSERT_TRUE(serviceUntil([&] {
-        stopped = stopped || session->status().state == task::MachineState::Stopped;
-        return session->runState() == RunState::Finished || session->runState() == RunState::Failed;
-    }));
+    ASSERT_TRUE(serviceUntil(
+        [&] {
+            stopped = stopped || session->status().state == task::MachineState::Stopped;
+            return session->runState() == RunState::Finished ||
+                   session->runState() == RunState::Failed;
+        },
+        60s));  // six holes in real time: about as long as the single-block run
     EXPECT_EQ(session->runState(), RunState::Finished);
     EXPECT_FALSE(stopped);
     settle();
