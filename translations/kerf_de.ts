@@ -6352,10 +6352,6 @@ editieren</translation>
         <translation>Drehung übernehmen: 0 nein, 1/3/5 Grunddrehung aus Kante 1/2/Mittelwert</translation>
     </message>
     <message>
-        <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation>Zyklus {1}: bisher nur die XY-Ebene (Q1139 = 3)</translation>
-    </message>
-    <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
         <translation>Zyklus {1}: das Ausrichten der Drehachsen (Q1126) setzt die Übernahme der Drehung (Q1121) voraus</translation>
     </message>
@@ -8756,6 +8752,10 @@ wählen</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>Zyklus {1}: die beiden Punkte einer gemessenen Geraden fallen zusammen</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
+        <translation>Zyklus {1}: eine in der Ebene ZX oder YZ gemessene Drehung (Q1139 = {2}) dreht um X oder Y; übernommen werden kann nur eine Grunddrehung um die Werkzeugachse (Q1121 = 0)</translation>
     </message>
 </context>
 <context>

@@ -6352,10 +6352,6 @@ ciclo</translation>
         <translation>Aceptar el giro: 0 no, 1/3/5 giro básico de la arista 1/2/media</translation>
     </message>
     <message>
-        <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation>ciclo {1}: por ahora solo el plano XY (Q1139 = 3)</translation>
-    </message>
-    <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
         <translation>ciclo {1}: alinear los ejes giratorios (Q1126) requiere aceptar el giro (Q1121)</translation>
     </message>
@@ -8756,6 +8752,10 @@ solución</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: los dos puntos de una recta medida coinciden</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
+        <translation>ciclo {1}: un giro medido en el plano ZX o YZ (Q1139 = {2}) gira alrededor de X o Y; solo se puede aceptar un giro básico alrededor del eje de la herramienta (Q1121 = 0)</translation>
     </message>
 </context>
 <context>

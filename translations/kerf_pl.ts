@@ -6355,10 +6355,6 @@ cykl</translation>
         <translation>Przejęcie obrotu: 0 nie, 1/3/5 obrót podstawowy z krawędzi 1/2/średniej</translation>
     </message>
     <message>
-        <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation>cykl {1}: na razie tylko płaszczyzna XY (Q1139 = 3)</translation>
-    </message>
-    <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
         <translation>cykl {1}: ustawienie osi obrotowych (Q1126) wymaga przejęcia obrotu (Q1121)</translation>
     </message>
@@ -8759,6 +8755,10 @@ rozwiązanie</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>cykl {1}: oba punkty mierzonej prostej pokrywają się</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
+        <translation>cykl {1}: obrót zmierzony w płaszczyźnie ZX lub YZ (Q1139 = {2}) jest obrotem wokół X lub Y; przejąć można tylko obrót podstawowy wokół osi narzędzia (Q1121 = 0)</translation>
     </message>
 </context>
 <context>

@@ -6352,10 +6352,6 @@ ciclo</translation>
         <translation>Aceitar a rotação: 0 não, 1/3/5 rotação básica da aresta 1/2/média</translation>
     </message>
     <message>
-        <source>cycle {1}: only the XY plane (Q1139 = 3) so far</source>
-        <translation>ciclo {1}: por enquanto só o plano XY (Q1139 = 3)</translation>
-    </message>
-    <message>
         <source>cycle {1}: aligning the rotary axes (Q1126) needs the rotation accepted (Q1121)</source>
         <translation>ciclo {1}: alinhar os eixos rotativos (Q1126) requer aceitar a rotação (Q1121)</translation>
     </message>
@@ -8756,6 +8752,10 @@ solução</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: os dois pontos de uma reta medida coincidem</translation>
+    </message>
+    <message>
+        <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
+        <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 // Cycle 1416 PROBING INTERSECTION (spec 8): two touches on each of two edges; the intersection of
-// the measured edges, their misalignment and the deviations along the surface normals. Working
-// plane XY (Q1139 = 3) only; no semi-automatic mode ("?", "@") and no extrusion (1493) yet.
+// the measured edges, their misalignment and the deviations along the surface normals, in the
+// plane Q1139 chooses (seed 004: XY, ZX and YZ). No semi-automatic mode ("?", "@") and no
+// extrusion (1493): the seed cuts their syntax off.
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -93,21 +94,44 @@ Vec2 unit(double degrees) {
     return {std::cos(a), std::sin(a)};
 }
 
+// The plane of Q1139 (spec 8.4): its axes (a, b) in which the angles turn from a towards b, and
+// the third axis c that Q1102 sets. Points are kept as (a, b, c).
+struct Plane {
+    int a, b, c;  // local axis index 0 X, 1 Y, 2 Z
+    Vec3 local(const Vec2& ab, double c3) const {
+        Vec3 out;
+        out[a] = ab.x(), out[b] = ab.y(), out[c] = c3;
+        return out;
+    }
+    Vec2 inPlane(const Vec3& local) const { return {local[a], local[b]}; }
+};
+Plane planeOf(int q1139) {
+    if (q1139 == 1) return {1, 2, 0};  // YZ, third axis X
+    if (q1139 == 2) return {2, 0, 1};  // ZX, third axis Y
+    return {0, 1, 2};                  // XY, third axis Z
+}
+
 std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, ProbingMachine& machine,
                               ProbingResults& results) {
-    if (v.integer(1139) != 3) {
-        return probingError(1416, "not-supported",
-                            KERF_TR_NOOP("cycle {1}: only the XY plane (Q1139 = 3) so far"));
-    }
-    if (v.integer(1126) != 0 && v.integer(1121) == 0) {
+    const int accept = v.integer(1121);
+    if (v.integer(1126) != 0 && accept == 0) {
         return probingError(1416, "PRB-010",
                             KERF_TR_NOOP("cycle {1}: aligning the rotary axes (Q1126) needs the "
                                          "rotation accepted (Q1121)"));
     }
-    if (v.integer(1126) != 0 || (v.integer(1121) % 2 == 0 && v.integer(1121) != 0)) {
+    if (v.integer(1126) != 0 || (accept % 2 == 0 && accept != 0)) {
         return probingError(1416, "PRB-011",
                             KERF_TR_NOOP("cycle {1}: this machine has no rotary table axis to "
                                          "correct the rotation with"));
+    }
+    if (accept != 0 && v.integer(1139) != 3) {
+        // [choice] An edge's misalignment in ZX or YZ is a turn about Y or X, a 3D basic
+        // rotation, which Kerf's presets do not hold (only the turn about the tool axis).
+        return probingError(1416, "cycle-parameter",
+                            KERF_TR_NOOP("cycle {1}: a rotation measured in the ZX or YZ plane "
+                                         "(Q1139 = {2}) turns about X or Y; only a basic rotation "
+                                         "about the tool axis can be accepted (Q1121 = 0)"),
+                            {std::to_string(v.integer(1139))});
     }
     std::array<std::optional<Tolerance>, 2> tolerance = {parseTolerance(v.text(400)),
                                                          parseTolerance(v.text(401))};
@@ -121,9 +145,10 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     }
     // Q1125: 2 rises between touch points, 1 between the edges, 0 and -1 stay at the height.
     CycleValues moves = v;
-    moves.set(261, v.number(1102));
     moves.set(301, v.integer(1125) == 2 ? 1.0 : 0.0);
     ProbeSequence sequence(1416, moves, probe, machine);
+    const Plane plane = planeOf(v.integer(1139));
+    const double height = v.number(1102);
     const Vec2 nominal(v.number(1100), v.number(1101));
     const std::array<double, 2> angles = {v.number(1130), v.number(1134)};
     std::array<Vec2, 4> points, touched;
@@ -132,10 +157,15 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         const auto q = static_cast<uint16_t>(1130 + 4 * edge);
         const Vec2 along = unit(angles[edge]);
         directions[edge] = unit(angles[edge] + v.integer(q + 1) * 90.0);
+        const Vec3 direction = plane.local(directions[edge], 0.0);
         for (size_t k = 0; k < 2; ++k) {
             const size_t i = 2 * edge + k;
             points[i] = nominal + v.number(static_cast<uint16_t>(q + 2 + k)) * along;
-            if (auto e = sequence.touchInPlane(points[i], directions[edge], touched[i])) return e;
+            const Vec2 start = points[i] - sequence.standOff() * directions[edge];
+            Vec3 ball;
+            if (auto e = sequence.touchFromPoint(plane.local(start, height), direction, ball))
+                return e;
+            touched[i] = plane.inPlane(ball + probe.ballRadius * direction);
         }
         if (v.integer(1125) == 1) sequence.retract();
     }
@@ -147,12 +177,13 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     if (!corner) {
         return probingError(1416, "PRB-019", KERF_TR_NOOP("cycle {1}: the two edges are parallel"));
     }
-    // Three measured points and their deviations (the fourth is not exported, spec 8.3).
+    // Three measured points and their deviations in (a, b, c) (the fourth is not exported,
+    // spec 8.3); the touches run at the height Q1102, so c deviates by 0.
     for (size_t i = 0; i < 3; ++i) {
         const auto at = static_cast<uint16_t>(3 * i);
         results.set(static_cast<uint16_t>(950 + at), touched[i].x());
         results.set(static_cast<uint16_t>(951 + at), touched[i].y());
-        results.set(static_cast<uint16_t>(952 + at), v.number(1102));
+        results.set(static_cast<uint16_t>(952 + at), height);
         results.set(static_cast<uint16_t>(980 + at), touched[i].x() - points[i].x());
         results.set(static_cast<uint16_t>(981 + at), touched[i].y() - points[i].y());
         results.set(static_cast<uint16_t>(982 + at), 0.0);
@@ -170,7 +201,6 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         if (delta <= -90.0) delta += 180.0;
         misalignment[edge] = delta;
     }
-    const int accept = v.integer(1121);
     const double rotation = accept >= 5   ? (misalignment[0] + misalignment[1]) / 2.0
                             : accept >= 3 ? misalignment[1]
                                           : misalignment[0];
@@ -194,9 +224,13 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
                          {status == 2 ? "scrap" : "rework"});
     }
     if (v.integer(1120) == 1) {
+        // The intersection's a and b move onto the nominal ones; the third axis keeps its datum.
         DatumResult datum;
-        datum.measured = {corner->x(), corner->y(), std::nullopt};
-        datum.nominal = {nominal.x(), nominal.y(), 0.0};
+        const auto a = static_cast<size_t>(plane.a), b = static_cast<size_t>(plane.b);
+        datum.measured[a] = corner->x();
+        datum.measured[b] = corner->y();
+        datum.nominal[a] = nominal.x();
+        datum.nominal[b] = nominal.y();
         results.datum = datum;
         results.transfer = 1;
     }

@@ -616,6 +616,73 @@ TEST(ProbingCycles, Intersection1416FindsTheCornerOfTheTurnedBlank) {
     }
 }
 
+TEST(ProbingCycles, Intersection1416InTheYzPlaneFindsTheTopFrontEdge) {
+    // Q1139 = 1: angles from Y towards Z, Q1102 the X of the touches. Edge 1 the top face
+    // (0 degrees, probed at -90: along -Z), edge 2 the front face (90 degrees, probed at 0:
+    // along +Y). The blank turned by 0.7 about Z keeps its top at Z -0.2; at X 50 its front face
+    // lies at Y = (50 - 1.5) tan a - 0.8, and the ball stops the cosine error short of it.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = defaults(1416);
+    v.set(1139, 1), v.set(1100, 0), v.set(1101, 0), v.set(1102, 50);
+    v.set(1130, 0), v.set(1131, -1), v.set(1132, 10), v.set(1133, 40);
+    v.set(1134, 90), v.set(1135, -1), v.set(1136, -10), v.set(1137, -30);
+    v.set(1120, 1);
+    CycleRun r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const double front = 48.5 * std::tan(kAngle) - 0.8 - kCosineError;
+    EXPECT_NEAR(result(r.results, 959), front, kTolerance);
+    EXPECT_NEAR(result(r.results, 960), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 989), front, kTolerance);
+    EXPECT_NEAR(result(r.results, 990), -0.2, kTolerance);
+    // Point 1 (Y 10, Z 0) is found 0.2 lower; point 3 (Y 0, Z -10) at the front face.
+    EXPECT_NEAR(result(r.results, 950), 10.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 951), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 952), 50.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 981), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 986), front, kTolerance);
+    EXPECT_NEAR(result(r.results, 987), 0.0, kTolerance);
+    // Both edges lie parallel to their nominal lines.
+    EXPECT_NEAR(result(r.results, 964), 0.0, 1e-7);
+    // The preset moves in Y and Z; X is not measured.
+    ASSERT_TRUE(r.results.datum);
+    EXPECT_FALSE(r.results.datum->measured[0]);
+    EXPECT_NEAR(r.results.datum->measured[1].value_or(1e9), front, kTolerance);
+    EXPECT_NEAR(r.results.datum->measured[2].value_or(1e9), -0.2, kTolerance);
+    EXPECT_EQ(r.touches, 4);
+    // A turn about X is no basic rotation about the tool axis: refused.
+    v.set(1121, 1);
+    ASSERT_TRUE(run(1416, v, part).error);
+    EXPECT_EQ(run(1416, v, part).error->code, "cycle-parameter");
+}
+
+TEST(ProbingCycles, Intersection1416InTheZxPlaneFindsTheTopRightEdge) {
+    // Q1139 = 2: angles from Z towards X, Q1102 the Y of the touches. Edge 1 the top face
+    // (90 degrees: along X, probed at 180: along -Z), edge 2 the right face (0 degrees: along
+    // Z, probed at -90: along -X), nominal corner Z 0, X 100, at Y 30. The right face turned by
+    // a about Z passes Y 30 at X = 100 cos a - y sin a + 1.5 with y = (30.8 - 100 sin a) / cos a;
+    // the ball touching it along -X stops the cosine error beyond it.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = defaults(1416);
+    v.set(1139, 2), v.set(1100, 0), v.set(1101, 100), v.set(1102, 30);
+    v.set(1130, 90), v.set(1131, 1), v.set(1132, -10), v.set(1133, -40);
+    v.set(1134, 0), v.set(1135, -1), v.set(1136, -10), v.set(1137, -30);
+    CycleRun r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    const double s = std::sin(kAngle), c = std::cos(kAngle);
+    const double y = (30.8 - 100.0 * s) / c;
+    const double right = 100.0 * c - y * s + 1.5 + kCosineError;
+    EXPECT_NEAR(result(r.results, 959), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 960), right, kTolerance);
+    EXPECT_NEAR(result(r.results, 990), right - 100.0, kTolerance);
+    // Point 1 (Z 0, X 90) on the top face.
+    EXPECT_NEAR(result(r.results, 950), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 951), 90.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 952), 30.0, kTolerance);
+    EXPECT_EQ(r.touches, 4);
+}
+
 TEST(ProbingCycles, MeasureAngle420RectanglesAndCoordinate427) {
     SimulatedWorkpiece part = misplaced();
     part.add({Box{Vec3(-10, -10, -40), Vec3(110, 70, 0)}, true});
