@@ -39,6 +39,12 @@ MillCutter MillCutter::fromGeometry(double radiusMm, double radius2Mm, double po
     return cutter;
 }
 
+MillCutter MillCutter::touchProbeStylus(double ballRadiusMm) {
+    MillCutter stylus = fromGeometry(ballRadiusMm, ballRadiusMm);
+    stylus.touchProbe = true;
+    return stylus;
+}
+
 double MillCutter::heightAt(double rho) const {
     if (rho > radiusMm) return std::numeric_limits<double>::infinity();
     switch (kind) {

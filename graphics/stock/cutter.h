@@ -20,8 +20,11 @@ struct MillCutter {
     double cornerRadiusMm = 0.0;  // bull-nose and ball
     double pointAngleDeg = 0.0;   // drill
     double lengthMm = 0.0;        // shown length of the tool (0: a default from the radius)
+    bool touchProbe = false;      // a touch probe's stylus: drawn as a ball, removes nothing
 
     static MillCutter fromGeometry(double radiusMm, double radius2Mm, double pointAngleDeg = 0.0);
+    // A touch probe (a tool with TP_NO in the tool table): its ball of the tool's radius.
+    static MillCutter touchProbeStylus(double ballRadiusMm);
     // Height of the cutting surface above the tip at a distance rho from the axis (rho <= R);
     // +infinity beyond the radius.
     double heightAt(double rhoMm) const;
@@ -30,7 +33,7 @@ struct MillCutter {
     // Volume of the tool below height h above its tip, for checks: the analytic volume a plunge
     // of depth h removes.
     double volumeBelow(double heightMm) const;
-    bool cuts() const { return radiusMm > 0.0; }
+    bool cuts() const { return radiusMm > 0.0 && !touchProbe; }
 };
 
 // What a lathe tool is, for the material it removes (docs/graphics.md, "Lathe tools").

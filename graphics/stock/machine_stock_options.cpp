@@ -1,6 +1,7 @@
 #include "graphics/stock/machine_stock_options.h"
 
 #include <map>
+#include <set>
 
 #include "core/tables/tool_table.h"
 
@@ -9,12 +10,21 @@ namespace kerf::graphics {
 std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
     const tables::ToolTable* tools) {
     std::map<int, double> pointAngles;
+    std::set<int> probes;
     if (tools != nullptr) {
+        const auto probeNumber = tools->table().findColumn("TP_NO");
         for (const tables::ToolData& row : tools->tools()) {
-            if (row.index == 0) pointAngles[row.number] = row.pointAngle;
+            if (row.index != 0) continue;
+            pointAngles[row.number] = row.pointAngle;
+            if (probeNumber && tools->table().number(row.row, *probeNumber)) {
+                probes.insert(row.number);
+            }
         }
     }
-    return [pointAngles](const canon::ToolChange& tool) {
+    return [pointAngles, probes](const canon::ToolChange& tool) {
+        if (probes.contains(tool.number)) {
+            return MillCutter::touchProbeStylus(tool.geometry.radiusMm);
+        }
         const auto it = pointAngles.find(tool.number);
         return MillCutter::fromGeometry(tool.geometry.radiusMm, tool.geometry.radius2Mm,
                                         it != pointAngles.end() ? it->second : 0.0);

@@ -16,8 +16,9 @@ class ToolTable;
 namespace kerf::graphics {
 
 // The mill cutter of a tool change: R and R2 of the canonical tool, the point angle (T-ANGLE)
-// from `tools` (the canonical tool change does not carry it). The angles are copied: the cutter
-// may outlive the table. No table: flat or ball cutters only.
+// from `tools` (the canonical tool change does not carry it), and a touch probe's stylus, which
+// removes nothing, for a tool with a TP_NO. The table's values are copied: the cutter may
+// outlive the table. No table: flat or ball cutters only.
 std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
     const tables::ToolTable* tools);
 

@@ -141,6 +141,7 @@ void StockSimulation::cutWithTool(const Vec3& from, const Vec3& to, const Vec3& 
                                   size_t tool) {
     bool removed = false;
     if (m_mill || m_voxels) {
+        if (!m_cutters[tool].cuts()) return;
         if (m_toolAxes[tool] != Axis::Z) {
             note("stock: only tool axis Z is simulated on the mill");
             return;
@@ -251,6 +252,7 @@ void StockSimulation::consume(const canon::Command& command) {
             cutter.kind = CutterKind::Drill;
             cutter.pointAngleDeg = m_cutters[m_tool].pointAngleDeg;
         }
+        if (m_cutters[m_tool].touchProbe) cutter = MillCutter::touchProbeStylus(cutter.radiusMm);
         m_cutters.push_back(cutter);
         m_inserts.push_back(m_options.latheInsert(changed));
         m_toolAxes.push_back(update->toolAxis);

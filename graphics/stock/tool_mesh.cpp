@@ -11,7 +11,7 @@ namespace kerf::graphics {
 
 Mesh millToolMesh(const MillCutter& cutter, Axis axis, int segments) {
     Mesh mesh;
-    if (!cutter.cuts() || !std::isfinite(cutter.radiusMm)) return mesh;
+    if (!(cutter.radiusMm > 0.0) || !std::isfinite(cutter.radiusMm)) return mesh;
     const double r = cutter.radiusMm;
     const double length = cutter.lengthMm > 0.0 ? cutter.lengthMm : std::max(10.0, 4.0 * r);
     // Profile (rho, height) from the tip up the side to the top.

@@ -7,9 +7,11 @@
 
 #include "canon_builder.h"
 #include "core/geometry/arc_math.h"
+#include "core/tables/tool_table.h"
 #include "graphics/stock/cutter.h"
 #include "graphics/stock/height_field_stock.h"
 #include "graphics/stock/lathe_stock.h"
+#include "graphics/stock/machine_stock_options.h"
 #include "graphics/stock/progressive_stock.h"
 #include "graphics/stock/stock_simulation.h"
 #include "graphics/stock/tool_mesh.h"
@@ -104,6 +106,38 @@ TEST(HeightField, ThreeDrilledHolesRemoveTheirAnalyticVolume) {
     EXPECT_EQ(simulation.rapidCuts(), 0u);  // retracting through the hole removes nothing
     EXPECT_DOUBLE_EQ(simulation.initialVolumeMm3(), 60 * 40 * 20);
     EXPECT_EQ(simulation.stockSource(), "program");
+}
+
+TEST(HeightField, ATouchProbeRemovesNothingAndAMillWithTheSameMovesDoes) {
+    // Tool 1 has a TP_NO in TOOL.T (a touch probe, ball R2), tool 2 none: the same moves 1 mm
+    // into the blank's top, a plunge and 20 mm along X. The probe's stylus touches; only the
+    // flat D4 mill cuts: a stadium of 2 r L + pi r^2 by 1 mm.
+    auto tools = tables::ToolTable::parse(
+        "BEGIN TOOL.T MM\n"
+        "T    NAME     L        R        TP_NO\n"
+        "1    PROBE    +50      +2       1\n"
+        "2    MILL     +60      +2\n"
+        "[END]\n",
+        "TOOL.T");
+    ASSERT_TRUE(tools.ok()) << tools.error().format();
+    StockOptions options;
+    options.millCutter = millCutterWithPointAngles(&*tools);
+    for (int tool : {1, 2}) {
+        StockSimulation simulation(options);
+        CanonBuilder b;
+        b.box(Vec3(0, 0, -20), Vec3(60, 40, 0)).tool(tool, 2.0).rapid(20, 20, 5);
+        b.line(20, 20, -1).line(40, 20, -1).rapid(40, 20, 5);
+        b.feed(simulation);
+        simulation.finish();
+        const double expected = tool == 1 ? 0.0 : (2 * 2 * 20 + kPi * 4) * 1;
+        EXPECT_NEAR(simulation.removedVolumeMm3(), expected, 0.02 * expected + 1e-9) << tool;
+    }
+    // The stylus is drawn, as a ball.
+    const MillCutter stylus = options.millCutter(canon::ToolChange{1, "PROBE", {50, 2}});
+    EXPECT_TRUE(stylus.touchProbe);
+    EXPECT_FALSE(stylus.cuts());
+    EXPECT_EQ(stylus.kind, CutterKind::Ball);
+    EXPECT_GT(millToolMesh(stylus).triangleCount(), 100u);
 }
 
 TEST(HeightField, FlatPocketAndBallSlotMatchAnalyticVolumes) {
