@@ -82,6 +82,22 @@ TEST_F(ProbingExamples, Intersection1416OfSeed004MakesTheRealCornerTheDatum) {
     EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 10.0, 1e-9);
 }
 
+TEST_F(ProbingExamples, Intersection1416InTheYzPlaneMakesTheTopFrontEdgeTheDatum) {
+    // Q1139 = 1 at X 50: the top face (found at Z -0.2) and the front face, which the 0.7 degree
+    // turn about the programmed origin puts at Y = 48.5 tan 0.7deg - 0.8 there; the ball stops
+    // 2 (1 / cos 0.7deg - 1) in front of it. Q1120 = 1 makes that edge Y 0 Z 0; X keeps its
+    // datum. L X+50 Y+0 Z+10 then stands 10 mm above the real edge.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double front = 48.5 * std::tan(a) - 0.8 - 2.0 * (1.0 / std::cos(a) - 1.0);
+    for (const char* options : {"", "--motion"}) {
+        const nlohmann::json report = run("EDGEYZ", options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 50.0, 1e-6) << options;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(), front, 1e-6) << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 9.8, 1e-6) << options;
+    }
+}
+
 TEST_F(ProbingExamples, ToolMeasurementWritesTheRealToolsDeltasIntoTheToolTable) {
     // The machine file makes tool 5 really 0.05 longer and 0.012 thinner than TOOL.T says; 483
     // with Q340 = 1 writes exactly that into DL and DR, plain and under --motion.
