@@ -294,16 +294,20 @@
         <translation>A calibração de ferramentas atua só em X e Z</translation>
     </message>
     <message>
-        <source>Tool offset D%1: %2 = %3 mm</source>
-        <translation>Corretor D%1: %2 = %3 mm</translation>
-    </message>
-    <message>
         <source>Tool %1: L = %2 mm</source>
         <translation>Ferramenta %1: L = %2 mm</translation>
     </message>
     <message>
         <source>The probing log TCHPRMAN.html could not be written: %1</source>
         <translation>Não foi possível escrever o protocolo de apalpação TCHPRMAN.html: %1</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: X = %2 mm (radius)</source>
+        <translation>Corretor D%1: X = %2 mm (raio)</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: Z = %2 mm</source>
+        <translation>Corretor D%1: Z = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -8757,6 +8761,10 @@ solução</translation>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: os dois pontos de uma reta medida coincidem</translation>
     </message>
+    <message>
+        <source>mm (radius)</source>
+        <translation>mm (raio)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
@@ -9036,6 +9044,14 @@ PL</source>
         <translation>Apalpação
 PL</translation>
     </message>
+    <message>
+        <source>Diameter %1 at the current point</source>
+        <translation>Diâmetro %1 no ponto atual</translation>
+    </message>
+    <message>
+        <source>Diameter %1 where the tool touches</source>
+        <translation>Diâmetro %1 onde a ferramenta toca</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::RenumberPrompt</name>
@@ -9062,6 +9078,10 @@ PL</translation>
     <message>
         <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
         <translation>Blocos não renumerados: a linha %1 receberia N%2, além de N99999999</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, which line %3 carries already; the new line has no block number</source>
+        <translation>Blocos não renumerados: a linha %1 receberia N%2, que a linha %3 já tem; a nova linha não tem número de bloco</translation>
     </message>
 </context>
 </TS>
