@@ -66,6 +66,22 @@ TEST(FagorHelpDrawing, PatternRepeatPassesFollowTheProfile) {
     EXPECT_NE(d.find(QStringLiteral("I")), nullptr);
 }
 
+// The allowance, the passes and the raw outline lie outside the finished part: a line through
+// the part would be a cut into it (the allowance's wall was drawn inside the high step).
+TEST(FagorHelpDrawing, NoStrokeRunsThroughThePart) {
+    for (const int g : {66, 68, 69, 81, 82, 84, 85}) {
+        const HelpDrawing d = fagorHelpDrawing(g);
+        for (int i = 1; i < d.lines.elementCount(); ++i) {
+            const QPainterPath::Element a = d.lines.elementAt(i - 1);
+            const QPainterPath::Element b = d.lines.elementAt(i);
+            if (!b.isLineTo()) continue;
+            const QPointF mid((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
+            EXPECT_FALSE(d.solid.contains(QRectF(mid.x() - 0.5, mid.y() - 0.5, 1.0, 1.0)))
+                << "G" << g << ": stroke through the part at " << mid.x() << ", " << mid.y();
+        }
+    }
+}
+
 TEST(FagorHelpDrawing, TurningProfilesGrowAwayFromTheCallPointAndStartAtItsSide) {
     for (const int g : {66, 68, 69, 81, 82, 84, 85}) {
         const HelpDrawing d = fagorHelpDrawing(g);
