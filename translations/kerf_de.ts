@@ -294,16 +294,20 @@
         <translation>Die Werkzeugkalibrierung gilt nur für X und Z</translation>
     </message>
     <message>
-        <source>Tool offset D%1: %2 = %3 mm</source>
-        <translation>Werkzeugkorrektur D%1: %2 = %3 mm</translation>
-    </message>
-    <message>
         <source>Tool %1: L = %2 mm</source>
         <translation>Werkzeug %1: L = %2 mm</translation>
     </message>
     <message>
         <source>The probing log TCHPRMAN.html could not be written: %1</source>
         <translation>Das Antastprotokoll TCHPRMAN.html konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: X = %2 mm (radius)</source>
+        <translation>Werkzeugkorrektur D%1: X = %2 mm (Radius)</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: Z = %2 mm</source>
+        <translation>Werkzeugkorrektur D%1: Z = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -8754,6 +8758,10 @@ wählen</translation>
         <translation>Zyklus {1}: die beiden Punkte einer gemessenen Geraden fallen zusammen</translation>
     </message>
     <message>
+        <source>mm (radius)</source>
+        <translation>mm (Radius)</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>Zyklus {1}: eine in der Ebene ZX oder YZ gemessene Drehung (Q1139 = {2}) dreht um X oder Y; übernommen werden kann nur eine Grunddrehung um die Werkzeugachse (Q1121 = 0)</translation>
     </message>
@@ -9035,6 +9043,14 @@ PL</source>
         <translation>Antasten
 PL</translation>
     </message>
+    <message>
+        <source>Diameter %1 at the current point</source>
+        <translation>Durchmesser %1 am aktuellen Punkt</translation>
+    </message>
+    <message>
+        <source>Diameter %1 where the tool touches</source>
+        <translation>Durchmesser %1 an der Berührstelle des Werkzeugs</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::RenumberPrompt</name>
@@ -9061,6 +9077,10 @@ PL</translation>
     <message>
         <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
         <translation>Sätze nicht neu nummeriert: Zeile %1 bekäme N%2, über N99999999 hinaus</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, which line %3 carries already; the new line has no block number</source>
+        <translation>Sätze nicht neu nummeriert: Zeile %1 bekäme N%2, das Zeile %3 schon trägt; die neue Zeile hat keine Satznummer</translation>
     </message>
 </context>
 </TS>

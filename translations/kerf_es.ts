@@ -294,16 +294,20 @@
         <translation>La calibración de herramientas solo actúa en X y Z</translation>
     </message>
     <message>
-        <source>Tool offset D%1: %2 = %3 mm</source>
-        <translation>Corrector D%1: %2 = %3 mm</translation>
-    </message>
-    <message>
         <source>Tool %1: L = %2 mm</source>
         <translation>Herramienta %1: L = %2 mm</translation>
     </message>
     <message>
         <source>The probing log TCHPRMAN.html could not be written: %1</source>
         <translation>No se pudo escribir el protocolo de palpación TCHPRMAN.html: %1</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: X = %2 mm (radius)</source>
+        <translation>Corrector D%1: X = %2 mm (radio)</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: Z = %2 mm</source>
+        <translation>Corrector D%1: Z = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -8754,6 +8758,10 @@ solución</translation>
         <translation>ciclo {1}: los dos puntos de una recta medida coinciden</translation>
     </message>
     <message>
+        <source>mm (radius)</source>
+        <translation>mm (radio)</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: un giro medido en el plano ZX o YZ (Q1139 = {2}) gira alrededor de X o Y; solo se puede aceptar un giro básico alrededor del eje de la herramienta (Q1121 = 0)</translation>
     </message>
@@ -9036,6 +9044,14 @@ PL</source>
         <translation>Palpación
 PL</translation>
     </message>
+    <message>
+        <source>Diameter %1 at the current point</source>
+        <translation>Diámetro %1 en el punto actual</translation>
+    </message>
+    <message>
+        <source>Diameter %1 where the tool touches</source>
+        <translation>Diámetro %1 donde toca la herramienta</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::RenumberPrompt</name>
@@ -9062,6 +9078,10 @@ PL</translation>
     <message>
         <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
         <translation>Bloques no renumerados: la línea %1 obtendría N%2, más allá de N99999999</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, which line %3 carries already; the new line has no block number</source>
+        <translation>Bloques no renumerados: la línea %1 obtendría N%2, que ya lleva la línea %3; la nueva línea no tiene número de bloque</translation>
     </message>
 </context>
 </TS>

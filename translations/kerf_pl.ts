@@ -295,16 +295,20 @@
         <translation>Kalibracja narzędzia działa tylko dla X i Z</translation>
     </message>
     <message>
-        <source>Tool offset D%1: %2 = %3 mm</source>
-        <translation>Korekcja narzędzia D%1: %2 = %3 mm</translation>
-    </message>
-    <message>
         <source>Tool %1: L = %2 mm</source>
         <translation>Narzędzie %1: L = %2 mm</translation>
     </message>
     <message>
         <source>The probing log TCHPRMAN.html could not be written: %1</source>
         <translation>Nie można zapisać protokołu pomiaru TCHPRMAN.html: %1</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: X = %2 mm (radius)</source>
+        <translation>Korekcja narzędzia D%1: X = %2 mm (promień)</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: Z = %2 mm</source>
+        <translation>Korekcja narzędzia D%1: Z = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -8757,6 +8761,10 @@ rozwiązanie</translation>
         <translation>cykl {1}: oba punkty mierzonej prostej pokrywają się</translation>
     </message>
     <message>
+        <source>mm (radius)</source>
+        <translation>mm (promień)</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>cykl {1}: obrót zmierzony w płaszczyźnie ZX lub YZ (Q1139 = {2}) jest obrotem wokół X lub Y; przejąć można tylko obrót podstawowy wokół osi narzędzia (Q1121 = 0)</translation>
     </message>
@@ -9039,6 +9047,14 @@ PL</source>
         <translation>Pomiar
 PL</translation>
     </message>
+    <message>
+        <source>Diameter %1 at the current point</source>
+        <translation>Średnica %1 w bieżącym punkcie</translation>
+    </message>
+    <message>
+        <source>Diameter %1 where the tool touches</source>
+        <translation>Średnica %1 w miejscu styku narzędzia</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::RenumberPrompt</name>
@@ -9065,6 +9081,10 @@ PL</translation>
     <message>
         <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
         <translation>Bloki nie zostały przenumerowane: wiersz %1 otrzymałby N%2, powyżej N99999999</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, which line %3 carries already; the new line has no block number</source>
+        <translation>Bloki nie zostały przenumerowane: wiersz %1 otrzymałby N%2, który ma już wiersz %3; nowy wiersz nie ma numeru bloku</translation>
     </message>
 </context>
 </TS>

@@ -294,16 +294,20 @@
         <translation>A calibração de ferramentas atua só em X e Z</translation>
     </message>
     <message>
-        <source>Tool offset D%1: %2 = %3 mm</source>
-        <translation>Corretor D%1: %2 = %3 mm</translation>
-    </message>
-    <message>
         <source>Tool %1: L = %2 mm</source>
         <translation>Ferramenta %1: L = %2 mm</translation>
     </message>
     <message>
         <source>The probing log TCHPRMAN.html could not be written: %1</source>
         <translation>Não foi possível escrever o protocolo de apalpação TCHPRMAN.html: %1</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: X = %2 mm (radius)</source>
+        <translation>Corretor D%1: X = %2 mm (raio)</translation>
+    </message>
+    <message>
+        <source>Tool offset D%1: Z = %2 mm</source>
+        <translation>Corretor D%1: Z = %2 mm</translation>
     </message>
 </context>
 <context>
@@ -8754,6 +8758,10 @@ solução</translation>
         <translation>ciclo {1}: os dois pontos de uma reta medida coincidem</translation>
     </message>
     <message>
+        <source>mm (radius)</source>
+        <translation>mm (raio)</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>
@@ -9036,6 +9044,14 @@ PL</source>
         <translation>Apalpação
 PL</translation>
     </message>
+    <message>
+        <source>Diameter %1 at the current point</source>
+        <translation>Diâmetro %1 no ponto atual</translation>
+    </message>
+    <message>
+        <source>Diameter %1 where the tool touches</source>
+        <translation>Diâmetro %1 onde a ferramenta toca</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::RenumberPrompt</name>
@@ -9062,6 +9078,10 @@ PL</translation>
     <message>
         <source>Blocks not renumbered: line %1 would get N%2, beyond N99999999</source>
         <translation>Blocos não renumerados: a linha %1 receberia N%2, além de N99999999</translation>
+    </message>
+    <message>
+        <source>Blocks not renumbered: line %1 would get N%2, which line %3 carries already; the new line has no block number</source>
+        <translation>Blocos não renumerados: a linha %1 receberia N%2, que a linha %3 já tem; a nova linha não tem número de bloco</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "core/base/diagnostic.h"
@@ -123,6 +124,41 @@ Meaning meaningOf(Family family, char letter) {
     }
 }
 
+// The lengths of cycle G<g> that the manual gives in radius (spec part 2 §2), though X is
+// programmed as a diameter: G68's pass step C2 takes 4 mm off the diameter.
+bool inRadius(int g, char letter) {
+    const char* letters = "";
+    switch (g) {
+        case 66:
+            letters = "ICL";
+            break;
+        case 68:
+        case 81:
+            letters = "CL";
+            break;
+        case 69:
+        case 82:
+        case 85:
+            letters = "L";
+            break;
+        case 84:
+            letters = "CLI";
+            break;
+        case 86:
+            letters = "IBDL";
+            break;
+        case 88:
+            letters = "D";
+            break;
+        case 89:
+            letters = "C";
+            break;
+        default:
+            break;
+    }
+    return std::strchr(letters, letter) != nullptr;
+}
+
 QString translated(const fagor::Problem& problem) {
     const QString text = QCoreApplication::translate("kerf", problem.messageTemplate.c_str());
     return QString::fromStdString(substituteArgs(text.toStdString(), problem.args));
@@ -166,7 +202,8 @@ std::vector<FagorField> fagorCycleFields(int g) {
     if (!syntax) return fields;
     for (const fagor::CycleParameter& p : syntax->parameters) {
         const Meaning meaning = meaningOf(familyOf(g), p.letter);
-        fields.push_back({&p, meaning.text, meaning.unit});
+        const bool radius = meaning.unit == FagorUnit::Length && inRadius(g, p.letter);
+        fields.push_back({&p, meaning.text, radius ? FagorUnit::RadiusLength : meaning.unit});
     }
     return fields;
 }
@@ -175,6 +212,8 @@ QString fagorUnitText(FagorUnit unit) {
     switch (unit) {
         case FagorUnit::Length:
             return QStringLiteral("mm");
+        case FagorUnit::RadiusLength:
+            return QCoreApplication::translate("kerf", "mm (radius)");
         case FagorUnit::Feed:
             return QStringLiteral("mm/rev (G95)");
         case FagorUnit::Degrees:

@@ -18,8 +18,9 @@ const std::vector<int>& fagorCycleNumbers();
 // "stock removal cycle along X", in the UI language.
 QString fagorCycleName(int g);
 
-// What a parameter means for its cycle (spec part 2 §2) and its unit.
-enum class FagorUnit { None, Length, Feed, Degrees, Hundredths };
+// What a parameter means for its cycle (spec part 2 §2) and its unit. RadiusLength: a length the
+// manual gives in radius whatever the diameter mode of X (allowances, pass steps, depths).
+enum class FagorUnit { None, Length, RadiusLength, Feed, Degrees, Hundredths };
 struct FagorField {
     const fagor::CycleParameter* parameter = nullptr;
     const char* meaning = "";  // English, translated in the "kerf" context

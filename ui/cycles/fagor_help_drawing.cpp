@@ -39,23 +39,23 @@ QPainterPath insert(QPointF tip) {
 // the upper right, the start point (X, Z) at the right end of the low step, the profile rising
 // away from the call point to the high step on the chuck side. The raw stock above it, the
 // finishing allowance (dashed, 4 outside the profile) and two roughing passes that stop at it.
-HelpDrawing turningProfile(bool patternRepeat, bool curved, bool facing) {
+HelpDrawing turningProfile(bool curved, bool facing) {
     HelpDrawing d;
     d.solid = polygon({{kZero, kAxis}, {kZero, 38}, {52, 38}, {52, 55}, {88, 55}, {88, kAxis}});
     axisAndZero(d);
     d.lines.addPath(dashes({kZero, 20}, {88, 20}));
     d.lines.addPath(dashes({88, 20}, {88, 55}));
-    d.lines.addPath(dashes({88, 51}, {48, 51}));
-    d.lines.addPath(dashes({48, 51}, {48, 34}));
-    d.lines.addPath(dashes({48, 34}, {kZero, 34}));
+    d.lines.addPath(dashes({88, 51}, {56, 51}));
+    d.lines.addPath(dashes({56, 51}, {56, 34}));
+    d.lines.addPath(dashes({56, 34}, {kZero, 34}));
     d.lines.addPath(ring({88, 55}, 1.5));
     // G69, G82 and G85 face: their passes go down along X and step along Z.
     if (facing) {
         d.lines.addPath(polyline({{69, 14}, {69, 51}}));
         d.lines.addPath(polyline({{62, 14}, {62, 51}}));
     } else {
-        d.lines.addPath(polyline({{93, 40}, {48, 40}}));
-        d.lines.addPath(polyline({{93, 47}, {48, 47}}));
+        d.lines.addPath(polyline({{93, 40}, {56, 40}}));
+        d.lines.addPath(polyline({{93, 47}, {56, 47}}));
     }
     d.lines.addPath(insert({93, 16}));
     d.lines.addPath(ring({93, 16}, 1.5));
@@ -63,26 +63,53 @@ HelpDrawing turningProfile(bool patternRepeat, bool curved, bool facing) {
         {{"X"}, arrow({96, kAxis}, {96, 55}), {97, 72}},
         {{"Z"}, arrow({kZero, 8}, {88, 8}), {48, 6}},
         {{"L"}, arrow({76, 55}, {76, 51}), {73, 50}},
-        {{"M"}, arrow({48, 44}, {52, 44}), {53, 44}},
+        {{"M"}, arrow({52, 49}, {56, 49}), {50, 47}},
     };
     if (facing) {
         d.dimensions.push_back({{"C"}, arrow({62, 17}, {69, 17}), {64, 15}});
         d.dimensions.push_back({{"D"}, arrow({62, 51}, {66, 47}, true), {66, 45}});
     } else {
         d.dimensions.push_back({{"C"}, arrow({84, 40}, {84, 47}), {85, 39}});
-        d.dimensions.push_back({{"D"}, arrow({48, 40}, {52, 36}, true), {53, 35}});
+        d.dimensions.push_back({{"D"}, arrow({56, 40}, {60, 36}, true), {61, 35}});
     }
-    if (patternRepeat) {
-        d.dimensions.push_back({{"I"}, arrow({30, 20}, {30, 34}), {31, 27}});
-    } else {
-        d.dimensions.push_back({{"Q"}, arrow({56, kAxis}, {56, 55}), {57, 72}});
-        d.dimensions.push_back({{"R"}, arrow({kZero, 62}, {52, 62}), {28, 61}});
-    }
+    d.dimensions.push_back({{"Q"}, arrow({56, kAxis}, {56, 55}), {57, 72}});
+    d.dimensions.push_back({{"R"}, arrow({kZero, 62}, {52, 62}), {28, 61}});
     if (curved) {
         d.lines.addPath(ring({64, 72}, 1.5));
         d.dimensions.push_back({{"I"}, arrow({84, 55}, {84, 72}), {85, 66}});
         d.dimensions.push_back({{"K"}, arrow({84, 76}, {64, 76}), {72, 82}});
     }
+    return d;
+}
+
+// G66 follows the profile: a forged or cast part whose raw outline is the profile I further out,
+// every pass a copy of the profile C closer to it, down to the allowance L/M (no retract D: each
+// pass returns to the call point).
+HelpDrawing patternRepeatProfile() {
+    HelpDrawing d;
+    d.solid = polygon({{kZero, kAxis}, {kZero, 38}, {52, 38}, {52, 55}, {88, 55}, {88, kAxis}});
+    axisAndZero(d);
+    // Copies of the profile 16 (raw part), 12 and 8 (passes) and 4 (allowance) further out: the
+    // shoulder moves towards the call point, the steps up.
+    d.lines.addPath(dashes({88, 39}, {68, 39}));
+    d.lines.addPath(dashes({68, 39}, {68, 22}));
+    d.lines.addPath(dashes({68, 22}, {kZero, 22}));
+    d.lines.addPath(dashes({88, 51}, {56, 51}));
+    d.lines.addPath(dashes({56, 51}, {56, 34}));
+    d.lines.addPath(dashes({56, 34}, {kZero, 34}));
+    d.lines.addPath(ring({88, 55}, 1.5));
+    d.lines.addPath(polyline({{93, 43}, {64, 43}, {64, 26}, {kZero, 26}}));
+    d.lines.addPath(polyline({{93, 47}, {60, 47}, {60, 30}, {kZero, 30}}));
+    d.lines.addPath(insert({93, 16}));
+    d.lines.addPath(ring({93, 16}, 1.5));
+    d.dimensions = {
+        {{"X"}, arrow({96, kAxis}, {96, 55}), {97, 72}},
+        {{"Z"}, arrow({kZero, 8}, {88, 8}), {48, 6}},
+        {{"I"}, arrow({30, 22}, {30, 38}), {26, 20}},
+        {{"C"}, arrow({84, 43}, {84, 47}), {85, 41}},
+        {{"L"}, arrow({76, 55}, {76, 51}), {73, 50}},
+        {{"M"}, arrow({52, 49}, {56, 49}), {50, 47}},
+    };
     return d;
 }
 
@@ -208,13 +235,13 @@ HelpDrawing hole() {
 HelpDrawing fagorHelpDrawing(int g) {
     switch (g) {
         case 66: {
-            HelpDrawing d = turningProfile(true, false, false);
+            HelpDrawing d = patternRepeatProfile();
             profileLabels(d);
             return d;
         }
         case 68:
         case 69: {
-            HelpDrawing d = turningProfile(false, false, g == 69);
+            HelpDrawing d = turningProfile(false, g == 69);
             std::erase_if(d.dimensions, [](const HelpDimension& dim) {
                 return dim.keys.contains("Q") || dim.keys.contains("R");
             });
@@ -223,10 +250,10 @@ HelpDrawing fagorHelpDrawing(int g) {
         }
         case 81:
         case 82:
-            return turningProfile(false, false, g == 82);
+            return turningProfile(false, g == 82);
         case 84:
         case 85:
-            return turningProfile(false, true, g == 85);
+            return turningProfile(true, g == 85);
         case 83:
             return hole();
         case 86:

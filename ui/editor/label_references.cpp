@@ -128,6 +128,12 @@ std::optional<RenumberProblem> fagorRenumberProblem(const QTextDocument& documen
             return RenumberProblem{Kind::LabelTooLong, block.blockNumber() + 1, numbered->wanted};
         renamed.emplace(numbered->current.number, numbered->wanted);  // the first one counts
     }
+    return fagorReferenceProblem(document, renamed);
+}
+
+std::optional<RenumberProblem> fagorReferenceProblem(const QTextDocument& document,
+                                                     const RenamedLabels& renamed) {
+    using Kind = RenumberProblem::Kind;
     for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
         const QStringView code = codeOf(block.text());
         const int line = block.blockNumber() + 1;

@@ -33,13 +33,21 @@ struct RenumberProblem {
         ComputedReference,    // a GOTO, RPT or profile cycle names its label by a parameter
         ProfileLabelTooLong,  // a profile's label would get more than 4 digits
         LabelTooLong,         // a block number would pass N99999999
+        LabelInUse,           // a block would get the label another block carries
     };
     Kind kind = Kind::ComputedReference;
     int line = 0;         // 1-based
-    long long label = 0;  // the number that would be too long
+    long long label = 0;  // the number that would be too long or is in use
+    int otherLine = 0;    // LabelInUse: the line that carries the label (1-based)
 };
 std::optional<RenumberProblem> fagorRenumberProblem(const QTextDocument& document,
                                                     BlockNumbering numbering);
+
+// Why moving labels as `renamed` says would break what refers to them: a jump, repetition or
+// profile naming its label through a parameter anywhere in the program (no one knows where it
+// lands), or a profile label that would get more than 4 digits. Lines are the document's.
+std::optional<RenumberProblem> fagorReferenceProblem(const QTextDocument& document,
+                                                     const RenamedLabels& renamed);
 
 // Rewrites the references of every line of `document` through `edit` (inside the caller's edit
 // block); true if any line changed.

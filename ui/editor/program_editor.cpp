@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "ui/common/diagnostic_text.h"
+#include "ui/editor/block_insertion.h"
 #include "ui/editor/block_numbers.h"
 #include "ui/editor/label_references.h"
 #include "ui/editor/renumber_job.h"
@@ -85,38 +86,34 @@ void ProgramEditor::keyPressEvent(QKeyEvent* event) {
 void ProgramEditor::insertBlock() {
     if (renumbering()) return;
     QTextCursor cursor = textCursor();
-    const QTextBlock block = cursor.block();
-    const QString prefix = nextBlockPrefix(block.text(), block.previous().text(), dialect());
+    const bool live = document()->blockCount() <= kLiveRenumberLimit;
+    const BlockInsertion plan = planBlockInsertion(*document(), cursor, dialect(), live);
     cursor.beginEditBlock();
-    cursor.insertText(QStringLiteral("\n") + prefix);
+    if (plan.before) {
+        cursor.movePosition(QTextCursor::StartOfBlock);
+        cursor.insertText(plan.prefix + QStringLiteral("\n"));
+        cursor.movePosition(QTextCursor::PreviousBlock);
+        cursor.movePosition(QTextCursor::EndOfBlock);
+    } else {
+        cursor.insertText(QStringLiteral("\n") + plan.prefix);
+    }
     cursor.endEditBlock();
     setTextCursor(cursor);
-    if (prefix.isEmpty()) return;
-    if (document()->blockCount() <= kLiveRenumberLimit) {
-        // The following blocks move down by one: renumber them in the same undo step.
-        QTextCursor edit(document());
-        edit.joinPreviousEditBlock();
-        const long long inserted =
-            readBlockNumber(cursor.block().text(), dialect()).value_or(BlockNumber{}).number;
-        BlockCounter counter(dialect(), inserted);
-        RenamedLabels renamed;
-        for (QTextBlock next = cursor.block().next(); next.isValid(); next = next.next()) {
-            const long long previous = counter.last();
-            const auto numbered = counter.next(next.text());
-            if (!numbered) continue;
-            // ISO numbers only need to keep ascending.
-            if (dialect() != program::Dialect::Klartext && numbered->current.number > previous)
-                break;
-            if (numbered->current.number == numbered->wanted) continue;
-            writeBlockNumber(edit, next, numbered->current, numbered->wanted, dialect());
-            renamed.emplace(numbered->current.number, numbered->wanted);
-        }
-        // FAGOR block numbers are labels: what jumps to them or names them follows them.
-        if (dialect() == program::Dialect::Fagor) renameLabelReferences(*document(), edit, renamed);
-        edit.endEditBlock();
-    } else {
+    if (plan.problem) emit labelsKept(*plan.problem);
+    if (plan.prefix.isEmpty()) return;
+    if (!live) {
         m_numbersStale = true;
+        return;
     }
+    // The following blocks move down by one: renumber them in the same undo step.
+    QTextCursor edit(document());
+    edit.joinPreviousEditBlock();
+    for (const BlockInsertion::Move& move : plan.moves)
+        writeBlockNumber(edit, document()->findBlockByNumber(move.line + 1), move.current,
+                         move.wanted, dialect());
+    // FAGOR block numbers are labels: what jumps to them or names them follows them.
+    renameLabelReferences(*document(), edit, plan.renamed);
+    edit.endEditBlock();
 }
 
 std::optional<RenumberProblem> ProgramEditor::renumber(BlockNumbering numbering) {

@@ -31,7 +31,9 @@ public:
     program::Dialect dialect() const;
     VisibleHighlighter& highlighter() const { return *m_highlighter; }
 
-    // Inserts a line break with the next block number, as Enter does.
+    // Inserts a line break with the next block number, as Enter does (planBlockInsertion: the
+    // blocks after it renumbered; a FAGOR program's references follow their labels, and when they
+    // could not, no number changes, the new line gets none and labelsKept() says why).
     void insertBlock();
     // Gives every block its number (Klartext: the previous block's + 1, BEGIN PGM 0, lines that
     // continue a block unnumbered; ISO: as `numbering` says, by default the first number then
@@ -55,6 +57,8 @@ public:
 signals:
     // `changed`: some number was rewritten.
     void renumbered(bool changed);
+    // Enter left the numbers of a FAGOR program as they were: renumbering would have broken it.
+    void labelsKept(const kerf::ui::RenumberProblem& problem);
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;

@@ -41,6 +41,9 @@ ProgramPanel::ProgramPanel(Settings settings, QWidget* parent)
     m_title->setObjectName("programTitle");
     auto* split = new QSplitter(Qt::Horizontal, this);
     m_editor = new ProgramEditor(split);
+    // Before a program is opened the lathe's editor speaks FAGOR: its rows offer the canned
+    // cycles G66-G89, not the TNC's CYCL DEF and path keys.
+    if (isLathe(m_settings.machine)) m_editor->setDialect(program::Dialect::Fagor);
     m_sketchView = new FkSketchView(split);
     m_sketchView->hide();  // until the program has FK blocks
     split->addWidget(m_editor);

@@ -49,7 +49,9 @@ std::string isoProgramText(const machine::MachineConfig& machine, const NewProgr
 
 }  // namespace
 
-std::string newProgramFileName(const machine::MachineConfig& machine, const std::string& name) {
+std::string newProgramFileName(const machine::MachineConfig& machine, const std::string& given) {
+    // A FAGOR programmer writes the name as the header has it, "%PART": the % is no part of it.
+    const std::string name = isLathe(machine) && given.starts_with('%') ? given.substr(1) : given;
     if (std::filesystem::path(name).has_extension()) return name;
     return name + (isLathe(machine) ? ".PIM" : ".H");
 }

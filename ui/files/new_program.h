@@ -18,7 +18,8 @@ struct NewProgramSpec {
 };
 
 // The file name of the new program: `name` with `.H` (mill, Klartext) or `.PIM` (lathe, FAGOR)
-// when it has no extension of its own.
+// when it has no extension of its own. On a lathe a leading `%` (the FAGOR header's mark, typed
+// as "%PART") is dropped.
 std::string newProgramFileName(const machine::MachineConfig& machine, const std::string& name);
 
 // The new program's text. Mill (Klartext, as the TNC writes it):

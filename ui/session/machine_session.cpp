@@ -377,12 +377,11 @@ bool MachineSession::touchOffTool(int offset, Axis axis, double knownValue) {
         return false;
     }
     const fagor::ToolOffset written = table.get(offset);
+    // The table holds X as a radius, whatever the display shows.
+    const QString text = axis == Axis::X ? tr("Tool offset D%1: X = %2 mm (radius)")
+                                         : tr("Tool offset D%1: Z = %2 mm");
     emit message(Severity::Note,
-                 tr("Tool offset D%1: %2 = %3 mm")
-                     .arg(offset)
-                     .arg(QLatin1Char(axisLetter(axis)))
-                     .arg(axis == Axis::X ? written.x : written.z, 0, 'f', 4),
-                 0);
+                 text.arg(offset).arg(axis == Axis::X ? written.x : written.z, 0, 'f', 4), 0);
     return true;
 }
 

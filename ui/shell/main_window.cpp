@@ -72,6 +72,12 @@ MainWindow::MainWindow(HmiContext context, QWidget* parent)
         return MessagePanel::Place{blockNumberOfLine(*editor->document(), line, editor->dialect()),
                                    editor->dialect()};
     });
+    // Enter in a FAGOR program that could not renumber its labels safely says why.
+    connect(m_program->editor(), &ProgramEditor::labelsKept, this,
+            [this](const RenumberProblem& problem) {
+                m_messages->addMessage(Severity::Warning, renumberProblemText(problem),
+                                       problem.line);
+            });
     // Before a run reports one, the tabs name the parameters of the machine's language (the
     // lathe's FAGOR P) also on the screen that has not run a program yet.
     const char parameterLetter = m_context.machine.kind == machine::MachineKind::Lathe ? 'P' : 'Q';

@@ -55,6 +55,15 @@ std::optional<double> askPosition(QWidget* parent, const char* objectName, const
     return dialog.doubleValue();
 }
 
+// Whether the position display shows `axis` as a diameter (a lathe's X in diameter mode): the
+// value asked for is then a diameter too.
+bool shownAsDiameter(const MachineSession& session, const QString& axis) {
+    for (const machine::AxisConfig& config : session.machine().axes) {
+        if (QChar(config.letter) == axis.at(0) && config.diameterMode) return true;
+    }
+    return false;
+}
+
 // Asks for the axis and the value its position should show now, in touch-sized dialogs.
 void askPreset(MachineSession* session, QWidget* parent) {
     QStringList axes;
@@ -64,9 +73,10 @@ void askPreset(MachineSession* session, QWidget* parent) {
     const QString title = MachineRows::tr("Set preset");
     const QString axis = askAxis(parent, "presetAxisPrompt", title, MachineRows::tr("Axis"), axes);
     if (axis.isEmpty()) return;
-    const auto value =
-        askPosition(parent, "presetValuePrompt", title,
-                    MachineRows::tr("Position of %1 at the current point").arg(axis));
+    const QString question = shownAsDiameter(*session, axis)
+                                 ? MachineRows::tr("Diameter %1 at the current point").arg(axis)
+                                 : MachineRows::tr("Position of %1 at the current point").arg(axis);
+    const auto value = askPosition(parent, "presetValuePrompt", title, question);
     const auto a = axisFromLetter(axis.at(0).toLatin1());
     if (value && a) session->setPresetByEntry(*a, *value);
 }
@@ -89,9 +99,11 @@ void askToolCalibration(MachineSession* session, QWidget* parent) {
         askAxis(parent, "touchOffAxisPrompt", title, MachineRows::tr("Axis touched"),
                 {QStringLiteral("X"), QStringLiteral("Z")});
     if (axis.isEmpty()) return;
-    const auto value =
-        askPosition(parent, "touchOffValuePrompt", title,
-                    MachineRows::tr("Position of %1 where the tool touches").arg(axis));
+    const QString question =
+        shownAsDiameter(*session, axis)
+            ? MachineRows::tr("Diameter %1 where the tool touches").arg(axis)
+            : MachineRows::tr("Position of %1 where the tool touches").arg(axis);
+    const auto value = askPosition(parent, "touchOffValuePrompt", title, question);
     const auto a = axisFromLetter(axis.at(0).toLatin1());
     if (value && a) session->touchOffTool(offsetDialog.intValue(), *a, *value);
 }

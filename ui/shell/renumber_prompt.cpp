@@ -55,7 +55,9 @@ std::optional<BlockNumbering> askForNumbering(QWidget* parent, const ProgramEdit
     return BlockNumbering{first->value(), step->value()};
 }
 
-QString problemText(const RenumberProblem& problem) {
+}  // namespace
+
+QString renumberProblemText(const RenumberProblem& problem) {
     switch (problem.kind) {
         case RenumberProblem::Kind::ComputedReference:
             return RenumberPrompt::tr(
@@ -75,11 +77,16 @@ QString problemText(const RenumberProblem& problem) {
                        "N99999999")
                 .arg(problem.line)
                 .arg(problem.label);
+        case RenumberProblem::Kind::LabelInUse:
+            return RenumberPrompt::tr(
+                       "Blocks not renumbered: line %1 would get N%2, which line %3 "
+                       "carries already; the new line has no block number")
+                .arg(problem.line)
+                .arg(problem.label)
+                .arg(problem.otherLine);
     }
     return {};
 }
-
-}  // namespace
 
 void renumberBlocks(QWidget* parent, ProgramEditor& editor, MessagePanel& messages) {
     if (editor.dialect() != program::Dialect::Fagor) {
@@ -89,7 +96,7 @@ void renumberBlocks(QWidget* parent, ProgramEditor& editor, MessagePanel& messag
     const auto numbering = askForNumbering(parent, editor);
     if (!numbering) return;
     if (const auto problem = editor.renumber(*numbering))
-        messages.addMessage(Severity::Error, problemText(*problem), problem->line);
+        messages.addMessage(Severity::Error, renumberProblemText(*problem), problem->line);
 }
 
 }  // namespace kerf::ui

@@ -66,6 +66,35 @@ TEST(FagorCycleDialog, HasOneFieldPerParameterOfTheCycle) {
     }
 }
 
+// The manual gives allowances, pass steps and thread depths in radius though X is a diameter:
+// the unit says so where it does (spec part 2 §2), and only there.
+TEST(FagorCycleDialog, LengthsTheManualGivesInRadiusSaySo) {
+    test::testApp();
+    auto unitOf = [](int g, char letter) {
+        for (const FagorField& field : fagorCycleFields(g)) {
+            if (field.parameter->letter == letter) return fagorUnitText(field.unit);
+        }
+        return QStringLiteral("none");
+    };
+    const QString radius = QStringLiteral("mm (radius)");
+    for (const char letter : {'C', 'L'})
+        EXPECT_EQ(unitOf(68, letter), radius) << letter;
+    for (const char letter : {'I', 'C', 'L'})
+        EXPECT_EQ(unitOf(66, letter), radius) << letter;
+    for (const char letter : {'I', 'B', 'D', 'L'})
+        EXPECT_EQ(unitOf(86, letter), radius) << letter;
+    EXPECT_EQ(unitOf(88, 'D'), radius);
+    EXPECT_EQ(unitOf(89, 'C'), radius);
+    // X, Z, the Z allowance M, G88's step along Z, G69's step along Z, G87's depth along Z, the
+    // pitch: plain lengths.
+    EXPECT_EQ(unitOf(68, 'X'), QStringLiteral("mm"));
+    EXPECT_EQ(unitOf(68, 'M'), QStringLiteral("mm"));
+    EXPECT_EQ(unitOf(88, 'C'), QStringLiteral("mm"));
+    EXPECT_EQ(unitOf(69, 'C'), QStringLiteral("mm"));
+    EXPECT_EQ(unitOf(87, 'I'), QStringLiteral("mm"));
+    EXPECT_EQ(unitOf(86, 'C'), QStringLiteral("mm"));
+}
+
 struct Filled {
     int g;
     std::map<char, QString> values;

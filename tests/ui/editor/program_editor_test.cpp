@@ -7,6 +7,7 @@
 #include <QTest>
 #include <QTextBlock>
 #include <QTextLayout>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -81,6 +82,128 @@ TEST(ProgramEditor, FagorReferencesFollowTheirLabelsWhenABlockIsInserted) {
     EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 (GOTO N40)", "N30 ", "N40 M30"}));
     editor.undo();
     EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 (GOTO N30)", "N30 M30"}));
+}
+
+void placeCursor(ProgramEditor& editor, int line, int column) {
+    QTextCursor cursor(editor.document()->findBlockByNumber(line - 1));
+    cursor.setPosition(cursor.position() + column);
+    editor.setTextCursor(cursor);
+}
+
+// Enter in a FAGOR program; the problem it reported, if any.
+std::optional<RenumberProblem> pressEnter(ProgramEditor& editor) {
+    std::optional<RenumberProblem> reported;
+    const auto connection =
+        QObject::connect(&editor, &ProgramEditor::labelsKept,
+                         [&reported](const RenumberProblem& problem) { reported = problem; });
+    QTest::keyClick(&editor, Qt::Key_Return);
+    QObject::disconnect(connection);
+    return reported;
+}
+
+TEST(ProgramEditor, EnterOnAFagorLabelOpensABlockBeforeItsLine) {
+    // With the cursor on N30 (before it, inside it, or between it and its words) the new block
+    // goes before the line, which keeps its words and moves down as N40 with the jump to it. A
+    // split there would have left "N3" and a line "N40 0 M30".
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    const QString program = lines({"N10 G90", "N20 (GOTO N30)", "N30 M30"});
+    for (const int column : {0, 2, 3, 4}) {
+        SCOPED_TRACE(column);
+        editor.setPlainText(program);
+        placeCursor(editor, 3, column);
+        EXPECT_FALSE(pressEnter(editor));
+        EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 (GOTO N40)", "N30 ", "N40 M30"}));
+        QTest::keyClicks(&editor, "G00 X10");
+        EXPECT_EQ(editor.document()->findBlockByNumber(2).text(), QStringLiteral("N30 G00 X10"));
+    }
+    // A line that holds only its label: Enter at its end opens the next block as before.
+    editor.setPlainText(lines({"N10 G90", "N20", "N30 M30"}));
+    placeCursorAtEndOfLine(editor, 2);
+    EXPECT_FALSE(pressEnter(editor));
+    EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20", "N30 ", "N40 M30"}));
+}
+
+TEST(ProgramEditor, EnterOnAKlartextBlockNumberOpensABlockBeforeIt) {
+    test::testApp();
+    ProgramEditor editor;
+    editor.setPlainText(lines({"0 BEGIN PGM A MM", "1 L Z+50 R0 FMAX", "2 END PGM A MM"}));
+    placeCursor(editor, 2, 0);
+    QTest::keyClick(&editor, Qt::Key_Return);
+    QTest::keyClicks(&editor, "TOOL CALL 1 Z S2000");
+    EXPECT_EQ(editor.toPlainText(), lines({"0 BEGIN PGM A MM", "1 TOOL CALL 1 Z S2000",
+                                           "2 L Z+50 R0 FMAX", "3 END PGM A MM"}));
+}
+
+TEST(ProgramEditor, EnterThatWouldBreakAFagorReferenceLeavesTheLabelsAsTheyAre) {
+    using Kind = RenumberProblem::Kind;
+    test::testApp();
+    ProgramEditor editor;
+    editor.setDialect(Dialect::Fagor);
+    // A jump through a parameter: N30 must stay N30, so the new line after N10 gets no label.
+    editor.setPlainText(lines({"N10 (P1 = 30)", "N20 (GOTO N P1)", "N30 M30"}));
+    placeCursorAtEndOfLine(editor, 1);
+    auto problem = pressEnter(editor);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, Kind::ComputedReference);
+    EXPECT_EQ(problem->line, 3);  // the GOTO, one line down now
+    EXPECT_EQ(editor.toPlainText(), lines({"N10 (P1 = 30)", "", "N20 (GOTO N P1)", "N30 M30"}));
+    // After the last label nothing moves: the new line is numbered.
+    placeCursorAtEndOfLine(editor, 4);
+    EXPECT_FALSE(pressEnter(editor));
+    EXPECT_EQ(editor.document()->lastBlock().text(), QStringLiteral("N40 "));
+
+    // The profile's last label would go from N9990 to N10000; G68 takes 4 digits.
+    const QString profile = lines({"N9960 G90", "N9970 G68 X0 Z0 C2 D1 S9980 E9990",
+                                   "N9980 G01 X20 Z0", "N9990 G01 X40 Z-10"});
+    editor.setPlainText(profile);
+    placeCursorAtEndOfLine(editor, 1);
+    problem = pressEnter(editor);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, Kind::ProfileLabelTooLong);
+    EXPECT_EQ(problem->line, 3);
+    EXPECT_EQ(problem->label, 10000);
+    EXPECT_EQ(editor.toPlainText(), lines({"N9960 G90", "", "N9970 G68 X0 Z0 C2 D1 S9980 E9990",
+                                           "N9980 G01 X20 Z0", "N9990 G01 X40 Z-10"}));
+
+    // After N20 comes N100: the new N30 would be the second N30, and the jump would land on
+    // whichever came first.
+    editor.setPlainText(
+        lines({"N10 G90", "N20 (GOTO N30)", "N100 M30", "N30 G00 X10", "N40 (GOTO N100)"}));
+    placeCursorAtEndOfLine(editor, 2);
+    problem = pressEnter(editor);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, Kind::LabelInUse);
+    EXPECT_EQ(problem->line, 3);
+    EXPECT_EQ(problem->label, 30);
+    EXPECT_EQ(problem->otherLine, 5);
+    EXPECT_EQ(editor.toPlainText(), lines({"N10 G90", "N20 (GOTO N30)", "", "N100 M30",
+                                           "N30 G00 X10", "N40 (GOTO N100)"}));
+    // The same when a renumbered label would meet one that stays.
+    editor.setPlainText(lines({"N10 G90", "N20 G00 X0", "N30 M30", "N40 (RET)"}));
+    placeCursorAtEndOfLine(editor, 2);
+    EXPECT_FALSE(pressEnter(editor));  // N30 -> N40, N40 -> N50: they all move
+    EXPECT_EQ(editor.toPlainText(),
+              lines({"N10 G90", "N20 G00 X0", "N30 ", "N40 M30", "N50 (RET)"}));
+    editor.setPlainText(lines({"N10 G90", "N20 G00 X0", "N30 M30", "N100 (SUB 1)", "N40 (RET)"}));
+    placeCursorAtEndOfLine(editor, 2);
+    problem = pressEnter(editor);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, Kind::LabelInUse);
+    EXPECT_EQ(problem->line, 4);  // the old N30, which would become N40
+    EXPECT_EQ(problem->label, 40);
+    EXPECT_EQ(problem->otherLine, 6);
+
+    // Labels end at N99999999.
+    editor.setPlainText(lines({"N99999990 G00 X0"}));
+    placeCursorAtEndOfLine(editor, 1);
+    problem = pressEnter(editor);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->kind, Kind::LabelTooLong);
+    EXPECT_EQ(problem->line, 2);
+    EXPECT_EQ(problem->label, 100'000'000);
+    EXPECT_EQ(editor.toPlainText(), lines({"N99999990 G00 X0", ""}));
 }
 
 TEST(ProgramEditor, RenumberingAFagorProgramKeepsItsJumpsAndProfilesOnTheirLabels) {

@@ -56,6 +56,8 @@ void answerCalibration(int offeredOffset, int offset, const QString& axis, doubl
                 auto* v = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
                 ASSERT_NE(v, nullptr);
                 EXPECT_EQ(v->objectName(), QStringLiteral("touchOffValuePrompt"));
+                // X is shown, and asked for, as a diameter; Z as a position.
+                EXPECT_EQ(v->labelText().startsWith(QStringLiteral("Diameter X")), axis == "X");
                 v->setDoubleValue(value);
                 answered = true;
                 v->accept();

@@ -111,6 +111,21 @@ TEST(MainWindow, LatheParameterTabSaysPBeforeAnyRun) {
     EXPECT_EQ(parameterTab(), QStringLiteral("PPARA"));
 }
 
+// With no program open the lathe's programming rows are FAGOR's: the canned cycles, not the
+// TNC's CYCL DEF, TOOL CALL and path keys.
+TEST(MainWindow, TheLatheProgramsInFagorBeforeAProgramIsOpen) {
+    test::testApp();
+    HmiContext context = contextIn(kerf::test::uniqueTempDir("hmi_window_fagor_rows"));
+    context.machine = *machine::loadMachine("lathe");
+    MainWindow window(std::move(context));
+    window.show();
+    window.modes().requestProgrammingMode(ProgrammingMode::Programming);
+    EXPECT_EQ(window.program()->editor()->dialect(), program::Dialect::Fagor);
+    EXPECT_FALSE(window.softkeys()->pressId(QStringLiteral("cyclDef")));
+    EXPECT_FALSE(window.softkeys()->pressId(QStringLiteral("pathL")));
+    EXPECT_TRUE(window.softkeys()->pressId(QStringLiteral("fagorCycles")));
+}
+
 TEST(MainWindow, HeaderFollowsModeKeys) {
     test::testApp();
     MainWindow window(contextIn(kerf::test::uniqueTempDir("hmi_window_modes")));

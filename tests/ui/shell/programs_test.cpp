@@ -121,6 +121,13 @@ TEST(NewProgram, InchAndALatheProgramWithItsPercentHeader) {
     ASSERT_TRUE(window.newProgram());
     EXPECT_EQ(fileText(dir / "SHAFT.PIM"), "%SHAFT,MX,\nN10 G70\nN20 M30\n");
     EXPECT_EQ(window.program()->editor()->dialect(), program::Dialect::Fagor);
+    // The name typed as the header writes it, with its %: the file and the header have one %.
+    spec.name = "%PART";
+    spec.inch = false;
+    window.setPrompts(answeringNewProgram(spec));
+    ASSERT_TRUE(window.newProgram());
+    EXPECT_EQ(fileText(dir / "PART.PIM"), "%PART,MX,\nN10 G71\nN20 M30\n");
+    EXPECT_FALSE(fs::exists(dir / "%PART.PIM"));
 }
 
 TEST(NewProgram, TheDialogAsksForTheBlankOnAMillAndRefusesAnEmptyName) {
