@@ -9,6 +9,7 @@
 #include "core/interp/fagor/g_rules.h"
 #include "core/interp/fagor/statement_runner.h"
 #include "core/program/line_reader.h"
+#include "core/program/mapped_copy.h"
 
 namespace kerf::fagor {
 
@@ -268,13 +269,20 @@ void Checker::run() {
     StatementRunner runner(nullptr);
     ParsedBlock block;
     bool first = true;
-    constexpr size_t kWindow = 16u << 20;
+    // Beside a run, the check keeps at most this far ahead of it, so that only the text between
+    // them is resident (a long program's mapped copy, mapped_copy.h); alone, it lets the text
+    // behind it go.
+    constexpr size_t kWindow = 4 * program::kTextReleaseStep;
+    size_t releasedBefore = 0;
     while (reader.next(line, false)) {
         if (m_program.followExecution) {
             while (line.offset > kWindow &&
                    line.offset - kWindow > m_program.executionOffset.load()) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
+        } else if (line.offset >= releasedBefore + program::kTextReleaseStep) {
+            releasedBefore = line.offset;
+            program::releasePagesBefore(text, line.offset);
         }
         const bool firstLine = first;
         first = false;

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace kerf::program {
+
+// A large program's text kept out of the process's memory: an unnamed copy of the file, mapped
+// read-only. The kernel drops its pages behind the reader and reads them again from the copy when
+// a jump goes back, so a long program runs in a window of memory, not in a copy of its size. The
+// copy has no name, so no other process can truncate or change it (a mapping of the file itself
+// would die with SIGBUS when the file is truncated: docs/files.md).
+
+// Files from this size on are copied and mapped; smaller ones are read into memory.
+inline constexpr size_t kMappedCopyMinBytes = 4u << 20;
+// How far a program's reader moves between two releases of the pages behind it.
+inline constexpr size_t kTextReleaseStep = 1u << 20;
+
+// Copies the regular file open as `fd` (from its start, whatever its file position) into an
+// unnamed file in `folder` and maps the copy. Nothing when the folder's file system cannot hold
+// one or the copy fails: the caller reads the file into memory instead.
+std::optional<std::string_view> mapUnnamedCopy(int fd, const std::filesystem::path& folder);
+void unmapCopy(std::string_view mapped);
+
+// Lets the kernel drop the resident pages of `text` before `offset`; reading them again reads the
+// copy. Does nothing when `text` is not in a mapped copy (a program read into memory).
+void releasePagesBefore(std::string_view text, size_t offset);
+
+}  // namespace kerf::program
