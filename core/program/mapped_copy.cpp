@@ -35,10 +35,18 @@ bool copyAll(int from, int to) {
 
 }  // namespace
 
-std::optional<std::string_view> mapUnnamedCopy(int fd, const std::filesystem::path& folder) {
+std::optional<std::string_view> mapUnnamedCopy(const std::filesystem::path& file) {
+    // O_NONBLOCK: a FIFO must not block the open; it is not regular and is left to the caller.
+    FileDescriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
+    struct stat original {};
+    if (fd.get() < 0 || ::fstat(fd.get(), &original) != 0 || !S_ISREG(original.st_mode) ||
+        static_cast<size_t>(original.st_size) < kMappedCopyMinBytes) {
+        return std::nullopt;
+    }
+    const std::filesystem::path folder = file.parent_path();
     const std::filesystem::path where = folder.empty() ? std::filesystem::path(".") : folder;
     FileDescriptor copy(::open(where.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600));
-    if (copy.get() < 0 || !copyAll(fd, copy.get())) return std::nullopt;
+    if (copy.get() < 0 || !copyAll(fd.get(), copy.get())) return std::nullopt;
     struct stat info {};
     if (::fstat(copy.get(), &info) != 0 || info.st_size == 0) return std::nullopt;
     const auto size = static_cast<size_t>(info.st_size);

@@ -18,10 +18,11 @@ inline constexpr size_t kMappedCopyMinBytes = 4u << 20;
 // How far a program's reader moves between two releases of the pages behind it.
 inline constexpr size_t kTextReleaseStep = 1u << 20;
 
-// Copies the regular file open as `fd` (from its start, whatever its file position) into an
-// unnamed file in `folder` and maps the copy. Nothing when the folder's file system cannot hold
-// one or the copy fails: the caller reads the file into memory instead.
-std::optional<std::string_view> mapUnnamedCopy(int fd, const std::filesystem::path& folder);
+// Copies the regular file `file`, when it has kMappedCopyMinBytes or more, into an unnamed file
+// in its folder and maps the copy. Nothing for a shorter file, one that is not regular, or when
+// the folder's file system cannot hold an unnamed file or the copy fails: the caller reads the
+// file into memory instead (part of the file-access layer, docs/files.md).
+std::optional<std::string_view> mapUnnamedCopy(const std::filesystem::path& file);
 void unmapCopy(std::string_view mapped);
 
 // Lets the kernel drop the resident pages of `text` before `offset`; reading them again reads the

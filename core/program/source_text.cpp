@@ -3,11 +3,7 @@
 #include <algorithm>
 #include <optional>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-
 #include "core/base/atomic_file.h"
-#include "core/base/open_beneath.h"
 #include "core/program/mapped_copy.h"
 
 namespace kerf::program {
@@ -43,13 +39,8 @@ bool holdsUtf8(std::string_view mapped) {
 
 // A long UTF-8 program as a mapped unnamed copy of the file (mapped_copy.h); nothing when it is
 // short, not UTF-8 or cannot be copied.
-std::optional<std::string_view> mappedCopyOf(int fd, const std::filesystem::path& path) {
-    struct stat info {};
-    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) ||
-        static_cast<size_t>(info.st_size) < kMappedCopyMinBytes) {
-        return std::nullopt;
-    }
-    const auto mapped = mapUnnamedCopy(fd, path.parent_path());
+std::optional<std::string_view> mappedCopyOf(const std::filesystem::path& path) {
+    const auto mapped = mapUnnamedCopy(path);
     if (mapped && !holdsUtf8(*mapped)) {
         unmapCopy(*mapped);
         return std::nullopt;
@@ -63,13 +54,7 @@ Expected<std::shared_ptr<const SourceText>> SourceText::load(const std::filesyst
     // A copy, never a mapping of the file: another process that truncates or replaces the file
     // while it runs cannot take the text away (a mapped page past the new end is SIGBUS). A long
     // program is copied to an unnamed file and that copy mapped, so that it is not all resident.
-    FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
-    if (fd.get() < 0) {
-        auto error = readWholeFile(path);  // says why the file cannot be opened
-        if (!error) return error.error();
-        return std::shared_ptr<const SourceText>(fromString(std::move(*error), path.string()));
-    }
-    if (const auto mapped = mappedCopyOf(fd.get(), path)) {
+    if (const auto mapped = mappedCopyOf(path)) {
         std::shared_ptr<SourceText> source(new SourceText(), [mapped = *mapped](SourceText* text) {
             delete text;
             unmapCopy(mapped);
@@ -78,7 +63,7 @@ Expected<std::shared_ptr<const SourceText>> SourceText::load(const std::filesyst
         source->m_view = withoutBom(*mapped);
         return std::shared_ptr<const SourceText>(std::move(source));
     }
-    auto bytes = readOpenFile(fd.get(), path);
+    auto bytes = readWholeFile(path);
     if (!bytes) return bytes.error();
     return std::shared_ptr<const SourceText>(fromString(std::move(*bytes), path.string()));
 }
