@@ -10,9 +10,9 @@
 
 namespace kerf::program {
 
-// The text of one program file, as UTF-8, held in memory (other encodings are converted once). It
-// is a copy, never a mapping of the file, so a file truncated or replaced while it runs changes
-// nothing (docs/files.md).
+// The text of one program file, as UTF-8: in memory, or for a long one a mapped unnamed copy
+// (mapped_copy.h); never a mapping of the file, so a file truncated or replaced while it runs
+// changes nothing (docs/files.md). Other encodings are converted once, into memory.
 class SourceText {
 public:
     static Expected<std::shared_ptr<const SourceText>> load(const std::filesystem::path& path);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/base/translate.h"
+#include "core/program/mapped_copy.h"
 
 namespace kerf::fagor {
 
@@ -320,11 +321,14 @@ interp::RunStatus FagorInterpreter::run(canon::Sink& sink, uint64_t blockBudget)
         } else {
             if (m_pendingInterrupt != 0) startPendingInterrupt();
             m_blockOffset = m_reader->offset();
-            if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
+            if (m_blockOffset >= m_releasedBefore + program::kTextReleaseStep) {
+                // Every MiB read: tell the check how far the run is, and let the kernel drop
+                // the text behind (a long program's mapped copy; a jump back reads it again).
                 m_releasedBefore = m_blockOffset;
                 if (m_program == m_checking && m_checkThread.joinable()) {
                     m_program->executionOffset.store(m_blockOffset);
                 }
+                program::releasePagesBefore(m_program->source->text(), m_blockOffset);
             }
             if (!m_reader->next(m_line, false)) {
                 endOfText();

@@ -342,7 +342,6 @@ private:
     ParsedBlock m_block;
     size_t m_blockOffset = 0;
     size_t m_releasedBefore = 0;
-    static constexpr size_t kReleaseStep = 8u << 20;
     SourceLocation m_at;
     bool m_firstLine = true;
     std::vector<Frame> m_frames;

@@ -9,6 +9,7 @@
 #include "core/interp/fagor/g_rules.h"
 #include "core/interp/fagor/statement_runner.h"
 #include "core/program/line_reader.h"
+#include "core/program/mapped_copy.h"
 
 namespace kerf::fagor {
 
@@ -63,6 +64,7 @@ private:
     void highLevel(const StatementInfo& info, const program::LogicalLine& line,
                    const BlockPosition& next);
     void finish();
+    void indexLabelsBefore(size_t until);
 
     FagorProgram& m_program;
     std::string m_file;
@@ -75,6 +77,12 @@ private:
     std::vector<OpenSub> m_openSubs;
     bool m_warnedOrder = false;
     bool m_flow = false;
+    // Labels are indexed only once the program needs them (a jump, a profile, keepLabels) or
+    // one comes out of ascending order (it may repeat one: finish() warns), from the line at this
+    // offset on; finish() indexes the lines before (SIZE_MAX: none indexed).
+    size_t m_indexedFrom = SIZE_MAX;
+    int64_t m_lastLabel = -1;
+    bool m_labelsAscending = true;
 };
 
 void Checker::header(std::string_view text, uint32_t line) {
@@ -221,7 +229,40 @@ void Checker::highLevel(const StatementInfo& info, const program::LogicalLine& l
     }
 }
 
+// The labels of the lines before `until`, which the first pass read before it knew that the
+// program needs them: parsed again and put ahead of those indexed since, so in file order.
+void Checker::indexLabelsBefore(size_t until) {
+    const std::string_view text = m_program.source->text();
+    program::LineReader reader(text);
+    program::LogicalLine line;
+    BlockParser parser(nullptr);
+    ParsedBlock block;
+    std::vector<std::pair<uint32_t, BlockPosition>> earlier;
+    bool first = true;
+    size_t releasedBefore = 0;
+    while (reader.offset() < until && reader.next(line, false)) {
+        if (line.offset >= releasedBefore + program::kTextReleaseStep) {
+            releasedBefore = line.offset;
+            program::releasePagesBefore(text, line.offset);
+        }
+        const bool firstLine = first;
+        first = false;
+        if (!parser.parse(line.text, firstLine, block)) continue;
+        if (block.label >= 0) {
+            earlier.push_back(
+                {static_cast<uint32_t>(block.label), BlockPosition{line.offset, line.firstLine}});
+        }
+        if (block.endOfFile) break;
+    }
+    m_program.labels.insert(m_program.labels.begin(), earlier.begin(), earlier.end());
+}
+
 void Checker::finish() {
+    // Labels in ascending order repeat none, so a long numbered program without jumps is never
+    // indexed, not even while it is checked.
+    if ((m_flow || m_program.keepLabels || !m_labelsAscending) && m_indexedFrom > 0) {
+        indexLabelsBefore(m_indexedFrom);
+    }
     auto& labels = m_program.labels;
     const auto byNumber = [](const auto& a, const auto& b) { return a.first < b.first; };
     // Numbered programs are usually in order already: no sort (and no merge buffer) then.
@@ -254,8 +295,7 @@ void Checker::finish() {
         m_program.subroutines.begin(), m_program.subroutines.end(),
         [](const SubroutineEntry& a, const SubroutineEntry& b) { return a.number < b.number; });
     if (!m_flow && !m_program.keepLabels) {
-        // Only jumps need the label index; a large program without them should not keep it.
-        // Another program's RPT into this one loads it again.
+        // Only jumps need the label index. Another program's RPT into this one loads it again.
         std::vector<std::pair<uint32_t, BlockPosition>>().swap(labels);
     }
 }
@@ -268,13 +308,20 @@ void Checker::run() {
     StatementRunner runner(nullptr);
     ParsedBlock block;
     bool first = true;
-    constexpr size_t kWindow = 16u << 20;
+    // Beside a run, the check keeps at most this far ahead of it, so that only the text between
+    // them is resident (a long program's mapped copy, mapped_copy.h); alone, it lets the text
+    // behind it go.
+    constexpr size_t kWindow = 4 * program::kTextReleaseStep;
+    size_t releasedBefore = 0;
     while (reader.next(line, false)) {
         if (m_program.followExecution) {
             while (line.offset > kWindow &&
                    line.offset - kWindow > m_program.executionOffset.load()) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
+        } else if (line.offset >= releasedBefore + program::kTextReleaseStep) {
+            releasedBefore = line.offset;
+            program::releasePagesBefore(text, line.offset);
         }
         const bool firstLine = first;
         first = false;
@@ -285,8 +332,13 @@ void Checker::run() {
             continue;
         }
         if (block.label >= 0) {
-            m_program.labels.push_back(
-                {static_cast<uint32_t>(block.label), BlockPosition{line.offset, line.firstLine}});
+            m_labelsAscending = m_labelsAscending && block.label > m_lastLabel;
+            m_lastLabel = block.label;
+            if (m_flow || m_program.keepLabels || !m_labelsAscending) {
+                if (m_indexedFrom == SIZE_MAX) m_indexedFrom = line.offset;
+                m_program.labels.push_back({static_cast<uint32_t>(block.label),
+                                            BlockPosition{line.offset, line.firstLine}});
+            }
         }
         switch (block.kind) {
             case ParsedBlock::Kind::Header:

@@ -5,6 +5,7 @@
 
 #include "core/base/translate.h"
 #include "core/interp/klartext/statement_axes.h"
+#include "core/program/mapped_copy.h"
 
 namespace kerf::klartext {
 
@@ -276,12 +277,15 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
         m_blockOffset = m_reader->offset();
-        if (m_blockOffset >= m_releasedBefore + kReleaseStep) {
+        if (m_blockOffset >= m_releasedBefore + program::kTextReleaseStep) {
+            // Every MiB read: tell the check how far the run is, and let the kernel drop the
+            // text behind (a long program's mapped copy; a jump back reads it again).
             m_releasedBefore = m_blockOffset;
             ProgramFile& program = *m_levels.back().program;
             if (&program == m_checking && m_checkThread.joinable()) {
                 program.executionOffset.store(m_blockOffset);
             }
+            program::releasePagesBefore(program.source->text(), m_blockOffset);
         }
         if (!m_reader->next(m_line)) {
             endOfProgram(false);

@@ -16,6 +16,7 @@
 #include "core/interp/klartext/cursor.h"
 #include "core/interp/klartext/cycle_definition_check.h"
 #include "core/interp/klartext/statement_axes.h"
+#include "core/program/mapped_copy.h"
 
 namespace kerf::klartext {
 
@@ -138,13 +139,20 @@ void checkProgram(ProgramFile& program) {
         followFeed = false;  // one report; the run stops here
     };
 
-    constexpr size_t kWindow = 16u << 20;
+    // Beside a run, the check keeps at most this far ahead of it, so that only the text between
+    // them is resident (a long program's mapped copy, mapped_copy.h); alone, it lets the text
+    // behind it go.
+    constexpr size_t kWindow = 4 * program::kTextReleaseStep;
+    size_t releasedBefore = 0;
     while (reader.next(line)) {
         if (program.followExecution) {
             while (line.offset > kWindow &&
                    line.offset - kWindow > program.executionOffset.load()) {
                 std::this_thread::sleep_for(std::chrono::microseconds(200));
             }
+        } else if (line.offset >= releasedBefore + program::kTextReleaseStep) {
+            releasedBefore = line.offset;
+            program::releasePagesBefore(program.source->text(), line.offset);
         }
         if (!parser->parse(line, block)) {
             const ParseProblem& p = parser->problem();

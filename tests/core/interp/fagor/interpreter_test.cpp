@@ -293,6 +293,30 @@ TEST_F(FagorRun, BackgroundCheckFailureIsReported) {
     EXPECT_TRUE(in.checkFailed());
 }
 
+TEST_F(FagorRun, AJumpBackFindsALabelReadBeforeTheFirstJump) {
+    // The check indexes labels only from the first jump on; N20 comes before it and is found.
+    const auto status =
+        run("N10 G0 X10 Z5\nN20 (P100=P100+1)\nN30 G0 X20\nN35 G0 X10\n"
+            "N40 (IF (P100 LT 3) GOTO N20)\nN50 M30\n");
+    EXPECT_EQ(status, interp::RunStatus::Finished) << diagnostics();
+    int third = 0;
+    int fourth = 0;
+    for (const std::string& line : out.lines) {
+        third += line.starts_with("3:");
+        fourth += line.starts_with("4:");
+    }
+    EXPECT_EQ(third, 3);  // P100 = 1, 2, 3
+    EXPECT_EQ(fourth, 3);
+}
+
+TEST_F(FagorRun, ARepeatedLabelWarnsInAProgramWithoutJumps) {
+    const auto status = run("N10 G0 X10 Z5\nN20 G0 X20\nN10 G0 X30\nN30 M30\n");
+    EXPECT_EQ(status, interp::RunStatus::Finished) << diagnostics();
+    EXPECT_NE(diagnostics().find(":3:1: warning: label N10 is used more than once"),
+              std::string::npos)
+        << diagnostics();
+}
+
 }  // namespace
 }  // namespace kerf::fagor
 

@@ -6,6 +6,7 @@
 #include "core/base/atomic_file.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/machine/machine_loader.h"
+#include "core/program/mapped_copy.h"
 
 namespace kerf::klartext {
 namespace {
@@ -181,6 +182,38 @@ TEST_F(InterpreterTest, BackgroundCheckGivesTheSameResult) {
     EXPECT_TRUE(bad->checkFailed());
     ASSERT_FALSE(bad->diagnostics().empty());
     EXPECT_EQ(bad->diagnostics().front().line, 3u);
+}
+
+// A program longer than kMappedCopyMinBytes runs from a mapped copy whose pages are dropped
+// behind the run: calling a subroutine at its start from its end reads those pages again.
+TEST_F(InterpreterTest, ALongProgramCallsASubroutineItsRunHasLeftFarBehind) {
+    std::string text =
+        "0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 FN 9: IF +0 EQU +0 GOTO LBL 2\n"
+        "3 LBL 1\n4 L IX+1 F100\n5 LBL 0\n6 LBL 2\n";
+    int fillers = 0;
+    while (text.size() < 6 * program::kTextReleaseStep) {
+        text += "L Y+" + std::to_string(fillers % 7 + 1) + " F100\n";
+        ++fillers;
+    }
+    text += "CALL LBL 1\nCALL LBL 1\nEND PGM A MM\n";
+    writeFileAtomically(dir / "LONG.H", text);
+    ASSERT_GE(text.size(), program::kMappedCopyMinBytes);
+
+    class MoveCounter : public canon::Sink {
+    public:
+        void consume(const canon::Command& c) override {
+            moves += std::holds_alternative<canon::LinearMove>(c.body);
+        }
+        int moves = 0;
+    } counter;
+    auto k = make();
+    ASSERT_TRUE(k->load(dir / "LONG.H", KlartextInterpreter::CheckMode::Background));
+    while (k->run(counter, 10000) == interp::RunStatus::BudgetUsed) {
+    }
+    EXPECT_FALSE(k->checkFailed());
+    EXPECT_EQ(counter.moves, fillers + 2);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::X], 2);
+    EXPECT_DOUBLE_EQ(k->nominalPosition()[Axis::Y], (fillers - 1) % 7 + 1);
 }
 
 TEST_F(InterpreterTest, TheCheckFollowsProgramCalls) {
