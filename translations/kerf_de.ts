@@ -8757,6 +8757,10 @@ wählen</translation>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>Zyklus {1}: die beiden Punkte einer gemessenen Geraden fallen zusammen</translation>
     </message>
+    <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>Kollision: eine Eilgangbewegung fährt in das Material des Rohteils</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

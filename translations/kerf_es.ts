@@ -8757,6 +8757,10 @@ solución</translation>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: los dos puntos de una recta medida coinciden</translation>
     </message>
+    <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>colisión: un movimiento en marcha rápida entra en el material de la pieza en bruto</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

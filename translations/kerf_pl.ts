@@ -8760,6 +8760,10 @@ rozwiązanie</translation>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>cykl {1}: oba punkty mierzonej prostej pokrywają się</translation>
     </message>
+    <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>kolizja: ruch szybki wjeżdża w materiał półfabrykatu</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

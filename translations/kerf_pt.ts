@@ -8757,6 +8757,10 @@ solução</translation>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: os dois pontos de uma reta medida coincidem</translation>
     </message>
+    <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>colisão: um movimento em marcha rápida entra no material do bloco</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>
