@@ -69,6 +69,36 @@ TEST(RapidCollision, BallNoseTipCountsFromItsPoint) {
     EXPECT_FALSE(part.rapidTakesMaterial(ball, Vec3(50, 30, 10), Vec3(50, 30, -0.005)));
 }
 
+TEST(RapidCollision, AboveTheRealTopIsFreeBelowItIsNot) {
+    // The blank really lies 0.2 lower (top at -0.2): across the whole block with the tip at
+    // -0.15 the face (0.01 above it) stays 0.06 above the material; at -0.25 it is 0.04 in.
+    Placement placement;
+    placement.shift = Vec3(0.0, 0.0, -0.2);
+    const SimulatedWorkpiece part = block(nullptr, placement);
+    EXPECT_FALSE(part.rapidTakesMaterial(kD10, Vec3(-20, 30, -0.15), Vec3(120, 30, -0.15)));
+    EXPECT_TRUE(part.rapidTakesMaterial(kD10, Vec3(-20, 30, -0.25), Vec3(120, 30, -0.25)));
+}
+
+TEST(RemovedMaterialDisc, ADiscInsideOneDrilledHoleAllTheWay) {
+    // D10 drilled from z 2 to -15 at (30, 20): the hole is the cylinder of radius 5 about that
+    // axis from -15 up (the cutter is 60 long).
+    RemovedMaterial removed;
+    removed.addLine(kD10, Vec3(30, 20, 2), Vec3(30, 20, -15));
+    // A disc of 4.99 on the axis, from the floor to 40 above it: inside.
+    EXPECT_TRUE(removed.containsMovingDisc(Vec3(30, 20, -15), Vec3(30, 20, 40), 4.99));
+    // 0.02 off the axis its rim reaches 5.01 from it: out of the hole.
+    EXPECT_FALSE(removed.containsMovingDisc(Vec3(30.02, 20, -15), Vec3(30.02, 20, 40), 4.99));
+    // Wider than the hole, or reaching below its floor: not inside.
+    EXPECT_FALSE(removed.containsMovingDisc(Vec3(30, 20, -10), Vec3(30, 20, 0), 5.01));
+    EXPECT_FALSE(removed.containsMovingDisc(Vec3(30, 20, -15.1), Vec3(30, 20, 0), 1.0));
+    // A ball-nose sweep (corner 5): thinned by 1 its core would need a corner wider than the
+    // cutter, so it proves nothing (the disc may still be inside: the answer is "not proven").
+    RemovedMaterial ball;
+    ball.addLine(Cutter{5.0, 5.0, 60.0}, Vec3(30, 20, 2), Vec3(30, 20, -15));
+    EXPECT_FALSE(ball.containsMovingDisc(Vec3(30, 20, -5), Vec3(30, 20, 0), 1.0));
+    EXPECT_TRUE(ball.containsMovingDisc(Vec3(30, 20, -5), Vec3(30, 20, 0), 0.0));
+}
+
 TEST(RapidCollision, PeckDrillingRetractsAmongFourHundredHolesStayFast) {
     // Cycle 200's moves at 400 holes 10 apart (D10, pecks of 7 to 20 deep): each rapid retraces
     // a feed move of the same tool, its rim 0.01 inside that hole's wall all the way.
