@@ -8762,6 +8762,10 @@ wählen</translation>
         <translation>mm (Radius)</translation>
     </message>
     <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>Kollision: eine Eilgangbewegung fährt in das Material des Rohteils</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>Zyklus {1}: eine in der Ebene ZX oder YZ gemessene Drehung (Q1139 = {2}) dreht um X oder Y; übernommen werden kann nur eine Grunddrehung um die Werkzeugachse (Q1121 = 0)</translation>
     </message>

@@ -8762,6 +8762,10 @@ solución</translation>
         <translation>mm (radio)</translation>
     </message>
     <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>colisión: un movimiento en marcha rápida entra en el material de la pieza en bruto</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: un giro medido en el plano ZX o YZ (Q1139 = {2}) gira alrededor de X o Y; solo se puede aceptar un giro básico alrededor del eje de la herramienta (Q1121 = 0)</translation>
     </message>

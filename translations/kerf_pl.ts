@@ -8765,6 +8765,10 @@ rozwiązanie</translation>
         <translation>mm (promień)</translation>
     </message>
     <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>kolizja: ruch szybki wjeżdża w materiał półfabrykatu</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>cykl {1}: obrót zmierzony w płaszczyźnie ZX lub YZ (Q1139 = {2}) jest obrotem wokół X lub Y; przejąć można tylko obrót podstawowy wokół osi narzędzia (Q1121 = 0)</translation>
     </message>

@@ -8762,6 +8762,10 @@ solução</translation>
         <translation>mm (raio)</translation>
     </message>
     <message>
+        <source>collision: a rapid move runs into the material of the blank</source>
+        <translation>colisão: um movimento em marcha rápida entra no material do bloco</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>

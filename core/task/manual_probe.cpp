@@ -65,9 +65,13 @@ Expected<ManualProbe> manualProbe(const std::filesystem::path& ncRoot, int toolN
     return ManualProbe{tool->radius + tool->deltaRadius, probe->probingFeed, probe->maxProbingPath};
 }
 
-workpiece::SimulatedWorkpiece manualProbingPart(const machine::MachineConfig& machine,
-                                                const canon::StockDefinition& blank) {
-    return workpiece::simulatedPart(&machine, workpiece::blankSolids(blank), Vec3::Zero());
+workpiece::SimulatedWorkpiece manualProbingPart(
+    const machine::MachineConfig& machine, const canon::StockDefinition& blank,
+    std::shared_ptr<const workpiece::RemovedMaterial> removed) {
+    workpiece::SimulatedWorkpiece part =
+        workpiece::simulatedPart(&machine, workpiece::blankSolids(blank), Vec3::Zero());
+    part.setRemoved(std::move(removed));
+    return part;
 }
 
 }  // namespace kerf::task

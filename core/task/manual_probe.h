@@ -23,8 +23,10 @@ struct ManualProbe {
 Expected<ManualProbe> manualProbe(const std::filesystem::path& ncRoot, int toolNumber);
 
 // The part clamped for a program: its blank (BLK FORM) and the calibration sphere, placed with
-// [simulation.setup], in the blank's programmed frame (as the probing cycles of a run see it).
-workpiece::SimulatedWorkpiece manualProbingPart(const machine::MachineConfig& machine,
-                                                const canon::StockDefinition& blank);
+// [simulation.setup], less what the program cut (`removed`, may be null), in the blank's
+// programmed frame: the part the probing cycles of that run touched.
+workpiece::SimulatedWorkpiece manualProbingPart(
+    const machine::MachineConfig& machine, const canon::StockDefinition& blank,
+    std::shared_ptr<const workpiece::RemovedMaterial> removed);
 
 }  // namespace kerf::task

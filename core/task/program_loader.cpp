@@ -92,12 +92,14 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.runOutputs = request.runOutputs;
     settings.blockSkip = request.blockSkip;
     settings.startPosition = request.startPosition.value_or(Pose{});
+    settings.startPositionKnown = request.startPosition.has_value();
     settings.presetInMachine = request.presetInMachine;
     settings.basicRotationDeg = request.basicRotationDeg;
     settings.remanentFile = request.remanentFile;
     settings.writeFiles = request.writeFiles;
     settings.slReturnToStart = machine.slReturnToStart;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
+    loaded.removedMaterial = interpreter->removedMaterial();
     loaded.ready =
         load(*interpreter, request,
              request.backgroundCheck ? klartext::KlartextInterpreter::CheckMode::Background

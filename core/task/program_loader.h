@@ -22,6 +22,10 @@ namespace kerf::fagor {
 class UserScreen;
 }
 
+namespace kerf::workpiece {
+class RemovedMaterial;
+}
+
 namespace kerf::task {
 
 struct ProgramRequest {
@@ -62,6 +66,9 @@ struct LoadedProgram {
     // FAGOR: the origin the program's coordinates start from (zero offset table or the preset),
     // machine coordinates; motion must use it.
     std::optional<Pose> streamOrigin;
+    // TNC: what the program cuts out of its blank as it runs (the part its probing cycles touch,
+    // core/workpiece); nothing for FAGOR.
+    std::shared_ptr<const workpiece::RemovedMaterial> removedMaterial;
     DiagnosticList setupDiagnostics;  // tables that could not be read
     bool ready = false;               // loaded and checked without errors: it may run
 

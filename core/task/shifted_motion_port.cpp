@@ -25,7 +25,7 @@ ShiftedMotionPort::ShiftedMotionPort(std::unique_ptr<MotionPort> machine)
 
 bool ShiftedMotionPort::submit(const canon::Command& command) {
     if (const auto* stock = std::get_if<canon::StockDefinition>(&command.body))
-        m_lastBlank = PassedBlank{*stock, m_shift};
+        m_lastBlank = PassedBlank{*stock, m_shift, m_programCuts};
     if (m_shift == Pose{}) return m_machine->submit(command);
     canon::Command shifted = command;
     // Every position in the stream: move targets, the arc centre and the blank.

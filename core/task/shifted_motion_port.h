@@ -4,6 +4,10 @@
 
 #include "core/task/motion_port.h"
 
+namespace kerf::workpiece {
+class RemovedMaterial;
+}
+
 namespace kerf::task {
 
 // The machine seen from a workpiece origin moved by `shift` (workpiece coordinates of the
@@ -18,13 +22,20 @@ public:
     const Pose& shift() const { return m_shift; }
     void setShift(const Pose& shift) { m_shift = shift; }
 
-    // The blank (BLK FORM) the last program defined, as programmed, and the shift it was
-    // passed on with: where the part clamped for it lies (manual probing touches it).
+    // The blank (BLK FORM) the last program defined, as programmed, the shift it was passed on
+    // with (where the part clamped for it lies) and what that program cut out of it (in the
+    // same coordinates): manual probing touches it.
     struct PassedBlank {
         canon::StockDefinition stock;
         Pose shift;
+        std::shared_ptr<const workpiece::RemovedMaterial> removed;
     };
     const std::optional<PassedBlank>& lastBlank() const { return m_lastBlank; }
+    // The cuts of the program whose stream comes next (Interpreter::removedMaterial): a blank
+    // it passes on keeps them.
+    void setProgramCuts(std::shared_ptr<const workpiece::RemovedMaterial> removed) {
+        m_programCuts = std::move(removed);
+    }
 
     bool submit(const canon::Command& command) override;
     bool hasRoom() const override { return m_machine->hasRoom(); }
@@ -68,6 +79,7 @@ private:
     std::unique_ptr<MotionPort> m_machine;
     Pose m_shift{};
     std::optional<PassedBlank> m_lastBlank;
+    std::shared_ptr<const workpiece::RemovedMaterial> m_programCuts;
 };
 
 }  // namespace kerf::task

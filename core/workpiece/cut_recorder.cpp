@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "core/workpiece/blank_solids.h"
+#include "core/workpiece/simulated_part.h"
+
 namespace kerf::workpiece {
 
 namespace {
@@ -46,13 +49,24 @@ void CutRecorder::moveTo(const Pose& target) {
     m_at = target.xyz();
 }
 
+void CutRecorder::checkRapid(const canon::Command& command, const Pose& target) {
+    if (!m_part || !m_at || !rotaryAtZero(target) || m_cutter.radius <= 0.0) return;
+    if (!m_part->rapidTakesMaterial(m_cutter, *m_at + m_tipOffset, target.xyz() + m_tipOffset))
+        return;
+    const SourceLocation& at = command.location;
+    const bool sameLine = !m_collisions.empty() && m_collisions.back().fileId == at.fileId &&
+                          m_collisions.back().line == at.line;
+    if (!sameLine) m_collisions.push_back(at);
+}
+
 void CutRecorder::consume(const canon::Command& command) {
     std::visit(
         [&](const auto& body) {
             using T = std::decay_t<decltype(body)>;
             if constexpr (std::is_same_v<T, canon::RapidMove>) {
-                // [choice] A rapid cuts nothing: into material it is a collision (the graphics
-                // shows it), and a probe positioned into the part must stay deflected.
+                // [choice] A rapid cuts nothing: into material it is a collision (reported),
+                // and a probe positioned into the part must stay deflected.
+                checkRapid(command, body.target);
                 m_at = body.target.xyz();
             } else if constexpr (std::is_same_v<T, canon::LinearMove> ||
                                  std::is_same_v<T, canon::SpindleSyncedMove>) {
@@ -66,6 +80,9 @@ void CutRecorder::consume(const canon::Command& command) {
                 m_at = body.target.xyz();
             } else if constexpr (std::is_same_v<T, canon::ProbeMove>) {
                 m_at.reset();  // the machine decides where it ends
+            } else if constexpr (std::is_same_v<T, canon::StockDefinition>) {
+                m_part = simulatedPart(m_machine, blankSolids(body), Vec3::Zero());
+                m_part->setRemoved(m_removed);
             } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
                 m_toolNumber = body.number;
                 setTool(body.geometry, body.toolAxis);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 namespace kerf::workpiece {
 
@@ -79,6 +80,27 @@ void RemovedMaterial::addArc(const Cutter& cutter, const Vec3& from, const Vec3&
         add(sweepAlongLine(cutter, previous, next));
         previous = next;
     }
+}
+
+bool RemovedMaterial::containsMovingDisc(const Vec3& a, const Vec3& b, double radius) const {
+    auto holds = [&](uint32_t index) {
+        const Sweep& sweep = m_sweeps[index];
+        if (!std::holds_alternative<LineSweep>(sweep.path) || !inBox(sweep, a) || !inBox(sweep, b))
+            return false;
+        // The thinner cutter dilated by the disc is the real one while its corner keeps its
+        // radius; its box lies within the real one's.
+        Sweep thinner = sweep;
+        thinner.cutter.radius -= radius;
+        if (thinner.cutter.radius < thinner.cutter.cornerRadius) return false;
+        return sweepDistance(thinner, a) <= 0.0 && sweepDistance(thinner, b) <= 0.0;
+    };
+    if (auto cell = m_cells.find(key(cellOf(a.x()), cellOf(a.y()))); cell != m_cells.end()) {
+        for (uint32_t index : cell->second)
+            if (holds(index)) return true;
+    }
+    for (uint32_t index : m_large)
+        if (holds(index)) return true;
+    return false;
 }
 
 double RemovedMaterial::depth(const Vec3& p) const {

@@ -37,6 +37,12 @@ public:
     // How deep `p` lies in the removed volume: the largest depth within one sweep (a lower bound
     // of the depth in their union), negative or -infinity outside every sweep.
     double depth(const Vec3& p) const;
+    // True when a disc of `radius` square to z, its centre moving from `a` to `b`, stays in one
+    // sweep along a line all the way, so in the removed volume (0: the segment itself). Both
+    // centres lie in that sweep made by a cutter `radius` thinner, which the disc dilates back
+    // to the real one, and a line sweep is convex. A rapid retracing a feed move (a retract out
+    // of a drilled hole) is proven free in one look.
+    bool containsMovingDisc(const Vec3& a, const Vec3& b, double radius) const;
 
 private:
     static constexpr double kCell = 5.0;               // mm

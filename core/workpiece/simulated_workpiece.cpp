@@ -33,22 +33,47 @@ double solidDistance(const Solid& solid, const Vec3& p) {
     return cylinderDistance(std::get<Cylinder>(solid.shape), p);
 }
 
+double solidTop(const Solid& solid) {
+    if (const auto* box = std::get_if<Box>(&solid.shape)) return box->max.z();
+    if (const auto* sphere = std::get_if<Sphere>(&solid.shape))
+        return sphere->centre.z() + sphere->radius;
+    return std::get<Cylinder>(solid.shape).zMax;
+}
+
 }  // namespace
 
-double SimulatedWorkpiece::distance(const Vec3& real) const {
+SimulatedWorkpiece::SimulatedWorkpiece(Placement placement)
+    : m_placement(placement),
+      m_cosBack(std::cos(placement.rotationDeg * std::numbers::pi / 180.0)),
+      m_sinBack(-std::sin(placement.rotationDeg * std::numbers::pi / 180.0)) {}
+
+void SimulatedWorkpiece::add(const Solid& solid) {
+    m_solids.push_back(solid);
+    // The rotation is about the tool axis: it leaves z alone.
+    if (solid.material) {
+        const double top = solidTop(solid) + m_placement.origin.z() + m_placement.shift.z();
+        m_materialTop = std::max(m_materialTop, top);
+    }
+}
+
+double SimulatedWorkpiece::blankDistance(const Vec3& real) const {
     // Back into the programmed position: undo the shift, then the rotation.
-    const double a = -m_placement.rotationDeg * std::numbers::pi / 180.0;
     const Vec3 d = real - m_placement.origin - m_placement.shift;
-    const Vec3 p(d.x() * std::cos(a) - d.y() * std::sin(a),
-                 d.x() * std::sin(a) + d.y() * std::cos(a), d.z());
+    const Vec3 p(d.x() * m_cosBack - d.y() * m_sinBack, d.x() * m_sinBack + d.y() * m_cosBack,
+                 d.z());
     double material = std::numeric_limits<double>::infinity();
     double cavity = std::numeric_limits<double>::infinity();
     for (const Solid& solid : m_solids) {
         double& target = solid.material ? material : cavity;
         target = std::min(target, solidDistance(solid, p));
     }
-    if (m_removed) cavity = std::min(cavity, -m_removed->depth(real));
     return std::max(material, -cavity);
+}
+
+double SimulatedWorkpiece::distance(const Vec3& real) const {
+    const double blank = blankDistance(real);
+    if (!m_removed) return blank;
+    return std::max(blank, m_removed->depth(real));
 }
 
 bool SimulatedWorkpiece::nearestMaterialFound(const Vec3& centre, double radius) const {

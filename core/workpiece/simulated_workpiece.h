@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <variant>
@@ -7,6 +8,7 @@
 
 #include "core/geometry/axes.h"
 #include "core/workpiece/removed_material.h"
+#include "core/workpiece/tool_sweep.h"
 
 namespace kerf::workpiece {
 
@@ -51,9 +53,9 @@ struct Placement {
 class SimulatedWorkpiece {
 public:
     SimulatedWorkpiece() = default;
-    explicit SimulatedWorkpiece(Placement placement) : m_placement(placement) {}
+    explicit SimulatedWorkpiece(Placement placement);
 
-    void add(const Solid& solid) { m_solids.push_back(solid); }
+    void add(const Solid& solid);
     void setRemoved(std::shared_ptr<const RemovedMaterial> removed) {
         m_removed = std::move(removed);
     }
@@ -67,6 +69,17 @@ public:
                               double radius) const;
     // True when the ball already touches or penetrates material (a deflected stylus).
     bool touches(const Vec3& centre, double radius) const;
+
+    // A cutter moving at rapid from tip `from` to tip `to` (the coordinates of touches) takes
+    // material: a point of its end face that lies kCollisionDepth inside the cutter (the face
+    // kCollisionDepth above the tip, shrunk by as much, sampled at its centre and at most
+    // kCollisionSpacing apart on its rim) passes through material. Rims, not the body above:
+    // a rapid meets material with its end first.
+    bool rapidTakesMaterial(const Cutter& cutter, const Vec3& from, const Vec3& to) const;
+    // [choice] Less than this (mm) into the material is grazing, not a collision: a rapid
+    // retract along a wall the same tool finished touches it exactly.
+    static constexpr double kCollisionDepth = 0.01;
+    static constexpr double kCollisionSpacing = 1.0;
 
     // Where the free space is the union of several tool sweeps and the ball is wider than the
     // depth of any single one, the distance bound says "contact" too early; the ball is then
@@ -90,9 +103,21 @@ private:
     // A lower bound of the distance from `p` to the material, negative inside; exact at faces
     // away from the edges where two solids meet.
     double distance(const Vec3& p) const;
+    // The same for the blank before any cut (the material lies within it): cheaper.
+    double blankDistance(const Vec3& p) const;
+    // True when the segment from `a` to `b` passes through material.
+    bool segmentInMaterial(const Vec3& a, const Vec3& b) const;
+    // True when the disc of radius `rim` square to z, its centre moving from `a` to `b`, passes
+    // through material: its centre or a point of its rim (at most kCollisionSpacing apart).
+    bool faceInMaterial(const Vec3& a, const Vec3& b, double rim) const;
 
     Placement m_placement;
+    // The placement's rotation undone (blankDistance runs for every point a query looks at).
+    double m_cosBack = 1.0;
+    double m_sinBack = 0.0;
     std::vector<Solid> m_solids;
+    // The highest z of the material solids where the part really lies: a rapid above it is free.
+    double m_materialTop = -std::numeric_limits<double>::infinity();
     std::shared_ptr<const RemovedMaterial> m_removed;
 };
 

@@ -115,6 +115,18 @@ bool MachineSession::refuseWhenNotReferenced() {
     return true;
 }
 
+void MachineSession::showRunWarnings() {
+    // Warnings of the running program as it finds them (a rapid into the blank: a collision).
+    const interp::Interpreter* interpreter = m_run->interpreter();
+    if (interpreter == nullptr) return;
+    const DiagnosticList& all = interpreter->diagnostics();
+    for (; m_runDiagnosticsShown < all.size(); ++m_runDiagnosticsShown) {
+        const Diagnostic& d = all[m_runDiagnosticsShown];
+        if (d.severity == Severity::Warning)
+            emit message(d.severity, translatedMessage(d), static_cast<int>(d.line));
+    }
+}
+
 void MachineSession::report(const DiagnosticList& diagnostics) {
     for (const Diagnostic& d : diagnostics)
         emit message(d.severity, translatedMessage(d), static_cast<int>(d.line));
@@ -182,6 +194,9 @@ bool MachineSession::start(task::LoadedProgram loaded, std::optional<uint32_t> s
     m_motion->setSingleBlock(singleBlock);
     // FAGOR 8035: single block stops after every block, one without a move too.
     m_motion->setSingleBlockEveryBlock(loaded.dialect == program::Dialect::Fagor);
+    m_motion->setProgramCuts(loaded.removedMaterial);
+    m_runDiagnosticsShown = loaded.interpreter->diagnostics().size();
+    m_runDiagnosticsStart = m_runDiagnosticsShown;
     m_run->start(std::move(loaded.interpreter), options);
     // The previous run's interpreter is gone: its sources and tools may go too.
     m_sources = std::move(loaded.sources);
@@ -462,6 +477,7 @@ void MachineSession::setSpindleOverride(double fraction) {
 
 void MachineSession::service() {
     m_run->service();
+    showRunWarnings();
     m_status = m_motion->status();
     emit statusChanged(m_status);
     const task::RunState state = m_run->state();
@@ -483,7 +499,15 @@ void MachineSession::service() {
     }
     // A probing cycle may have written row 0's basic rotation.
     if (state != task::RunState::Running) showBasicRotation();
-    if (state == task::RunState::Failed) report(m_run->diagnostics());
+    if (state == task::RunState::Failed) {
+        // All but the warnings shown while it ran.
+        const DiagnosticList& all = m_run->diagnostics();
+        for (size_t i = 0; i < all.size(); ++i) {
+            const bool shown = all[i].severity == Severity::Warning && i >= m_runDiagnosticsStart &&
+                               i < m_runDiagnosticsShown;
+            if (!shown) report({all[i]});
+        }
+    }
     if (state == task::RunState::Finished) emit message(Severity::Note, tr("Program finished"), 0);
     if (state == task::RunState::Aborted) emit message(Severity::Warning, tr("Program stopped"), 0);
     emit runStateChanged(state);

@@ -227,6 +227,7 @@ private:
     // rotation).
     double shownActual(Axis axis) const;
     void report(const DiagnosticList& diagnostics);
+    void showRunWarnings();
     // The origin moves so that `axis`, now at `current`, shows `value` (workpiece coordinates).
     bool movePreset(Axis axis, double current, double value);
     bool runGeneratedProgram(const std::string& text);
@@ -250,6 +251,10 @@ private:
     QTimer* m_timer = nullptr;
     task::MachineStatus m_status;
     task::RunState m_lastState = task::RunState::Idle;
+    // The running program's diagnostics: those it had on start, and how many the messages have
+    // shown (showRunWarnings).
+    size_t m_runDiagnosticsStart = 0;
+    size_t m_runDiagnosticsShown = 0;
     double m_shownBasicRotationDeg = 0.0;
     static constexpr int kProgramStatusEvery = 10;  // services (200 ms)
     int m_servicesSinceProgramStatus = 0;

@@ -43,18 +43,20 @@ bool MachineSession::probeTouch(const Vec3& axisDirection) {
     }
     if (static_cast<int>(m_touches.size()) >= cycles::probing::manualTouchCount(m_probing))
         m_touches.clear();  // a new measurement of the same function
-    // The part lies where the last program's blank was clamped, in that program's frame; the
-    // axes show the tip from the operator's origin now. Before any BLK FORM: the machine's
-    // simulated blank at the machine file's preset (no shift).
-    const task::ShiftedMotionPort::PassedBlank blank = m_motion->lastBlank().value_or(
-        task::ShiftedMotionPort::PassedBlank{workpiece::simulationBlank(m_machine), Pose{}});
+    // The part lies where the last program's blank was clamped, in that program's frame, as
+    // that program machined it; the axes show the tip from the operator's origin now. Before
+    // any BLK FORM: the machine's simulated blank at the machine file's preset (no shift).
+    const task::ShiftedMotionPort::PassedBlank blank =
+        m_motion->lastBlank().value_or(task::ShiftedMotionPort::PassedBlank{
+            workpiece::simulationBlank(m_machine), Pose{}, nullptr});
     const Vec3 partOffset = m_motion->shift().xyz() - blank.shift.xyz();
     const Vec3 up(0.0, 0.0, probe->ballRadius);
     // Where the probe was sent: the drives may still be settling into it.
     const task::MachineStatus now = m_motion->status();
     const Vec3 tip(now.axes[0].nominal, now.axes[1].nominal, now.axes[2].nominal);
     const Vec3 ball = tip + partOffset + up;
-    const workpiece::SimulatedWorkpiece part = task::manualProbingPart(m_machine, blank.stock);
+    const workpiece::SimulatedWorkpiece part =
+        task::manualProbingPart(m_machine, blank.stock, blank.removed);
     if (part.touches(ball, probe->ballRadius)) {
         emit message(Severity::Error, tr("Probing: the stylus is deflected already"), 0);
         return false;

@@ -43,6 +43,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
         if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;
         m_kinematics = machine::TableKinematics::of(*m_settings.machine);
     }
+    m_cuts.setMachine(m_settings.machine);
     m_programmed = m_settings.startPosition;
     if (m_settings.basicRotationDeg != 0.0) {
         // The preset's basic rotation turns the working plane from the first block on.
@@ -252,7 +253,22 @@ bool KlartextInterpreter::checkPathError(const std::optional<interp::PathError>&
     return false;
 }
 
+void KlartextInterpreter::reportCollisions() {
+    for (const SourceLocation& at : m_cuts.takeCollisions()) {
+        Diagnostic d;
+        d.severity = Severity::Warning;
+        d.code = "collision";
+        d.messageTemplate =
+            KERF_TR_NOOP("collision: a rapid move runs into the material of the blank");
+        d.file = m_sources.path(at.fileId);
+        d.line = at.line;
+        d.column = at.column;
+        appendDiagnostic(m_diagnostics, std::move(d));
+    }
+}
+
 bool KlartextInterpreter::outputValuesOk() {
+    reportCollisions();
     auto error = m_out.takeError();
     if (!error) error = m_path.takeSpaceError();
     if (!error) return true;
@@ -273,7 +289,8 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
     if (!m_started) {
         m_started = true;
         m_path.reset(m_frame.toWorkpiece(m_programmed));
-        m_cuts.setPosition(m_frame.toWorkpiece(m_programmed).xyz());
+        if (m_settings.startPositionKnown)
+            m_cuts.setPosition(m_frame.toWorkpiece(m_programmed).xyz());
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
         m_blockOffset = m_reader->offset();

@@ -64,7 +64,10 @@ struct KlartextSettings {
     // The active preset's basic rotation (its SPC column: a probed misalignment), degrees about
     // the tool axis: the program starts in the working plane turned by it.
     double basicRotationDeg = 0.0;
-    Pose startPosition{};    // tool tip at the start, workpiece coordinates
+    Pose startPosition{};  // tool tip at the start, workpiece coordinates
+    // False: startPosition is a stand-in (a headless run that starts "at the origin"); the
+    // simulated part then takes no cut and sees no collision on the way from it.
+    bool startPositionKnown = true;
     bool blockSkip = false;  // skip blocks marked with '/'
     // Cycle 247 reads presets from this table (PRESET.PR in the NC root when not given).
     const tables::PresetTable* presets = nullptr;
@@ -109,6 +112,11 @@ public:
     Pose nominalPosition() const override { return m_frame.toWorkpiece(m_programmed); }
     bool checkFailed() const override { return m_checkFailed; }
     interp::ProgramStatus programStatus() const override;  // klartext_status.cpp
+    // The material the program's tools removed from its blank so far, in stream coordinates
+    // (the part its probing cycles touch); it keeps growing while the program runs.
+    std::shared_ptr<const workpiece::RemovedMaterial> removedMaterial() const {
+        return m_cuts.removed();
+    }
 
     const QParameters& parameters() const { return m_q; }
     // Records what the FK solver does into `trace` (nullptr: nothing), for the programming
@@ -595,6 +603,8 @@ private:
     // LP/CP: fails when a working-plane axis stands beside PR/PA.
     bool polarWithoutPlaneAxes(const Coordinates& coords);
     void warn(const char* code, const char* messageTemplate, std::vector<std::string> args = {});
+    // Rapids the cut recorder found taking material of the blank, as warnings at their blocks.
+    void reportCollisions();
     Diagnostic diagnosticAt(Severity severity, const char* code, const char* messageTemplate,
                             std::vector<std::string> args) const;
 

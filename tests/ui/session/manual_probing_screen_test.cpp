@@ -379,5 +379,65 @@ TEST_F(ManualProbingScreen, AMissStopsWithAMessageAndCountsNoTouch) {
     EXPECT_FALSE(session->busy());
 }
 
+TEST_F(ManualProbingScreen, TheProbeTouchesThePartAsTheLastProgramMachinedIt) {
+    // The program drills at (30, 20) with tool 5, really 0.012 thinner than TOOL.T says
+    // (machine.toml): the hole's wall is 4.988 from (30, 20), where the tool went, whatever the
+    // setup error. The probe in it, 5 deep, touching towards +X: the ball's centre stops 2
+    // short of the wall, the probed point is the wall at x 34.988. Without the program's cuts
+    // the stylus would stand in material.
+    EXPECT_TRUE(session->startProgram(QStringLiteral("0 BEGIN PGM HOLE MM\n"
+                                                     "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n"
+                                                     "2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                                                     "3 TOOL CALL 5 Z S3000\n"
+                                                     "4 L X+30 Y+20 Z+10 R0 FMAX M3\n"
+                                                     "5 L Z-15 F200\n"
+                                                     "6 L Z+50 R0 FMAX M5\n"
+                                                     "7 TOOL CALL 1 Z\n"
+                                                     "8 END PGM HOLE MM\n"),
+                                      dir / "HOLE.H"));
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    moveTo(30, 20, -5);
+    session->startManualProbing(cycles::probing::ManualProbingFunction::Position);
+    ASSERT_TRUE(session->probeTouch(Vec3(1.0, 0.0, 0.0)));
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    const auto result = session->manualProbingResult();
+    ASSERT_TRUE(result && result->point[0]);
+    EXPECT_NEAR(*result->point[0], 30.0 + 4.988, 1e-6);
+    // Below the hole's floor (15.05 deep: the tool is 0.05 longer) the stylus stands in material.
+    moveTo(30, 20, -20);
+    EXPECT_FALSE(session->probeTouch(Vec3(1.0, 0.0, 0.0)));
+}
+
+TEST_F(ManualProbingScreen, ARapidIntoTheBlankIsReportedAsACollision) {
+    // Tool 5 at FMAX from 10 above the top to 3 into it (block 5, line 6 of the file); the
+    // retract at FMAX out of the uncut material (line 7) is one too. Both run: a warning.
+    std::vector<std::pair<Severity, int>> messages;
+    std::vector<QString> texts;
+    QObject::connect(session, &MachineSession::message,
+                     [&](Severity severity, const QString& text, int line) {
+                         messages.emplace_back(severity, line);
+                         texts.push_back(text);
+                     });
+    EXPECT_TRUE(session->startProgram(QStringLiteral("0 BEGIN PGM CRASH MM\n"
+                                                     "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n"
+                                                     "2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+                                                     "3 TOOL CALL 5 Z S3000\n"
+                                                     "4 L X+50 Y+30 Z+10 R0 FMAX M3\n"
+                                                     "5 L Z-3 R0 FMAX\n"
+                                                     "6 L Z+50 R0 FMAX M5\n"
+                                                     "7 END PGM CRASH MM\n"),
+                                      dir / "CRASH.H"));
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }));
+    std::vector<int> collisionLines;
+    for (size_t i = 0; i < messages.size(); ++i) {
+        if (texts[i].contains(QStringLiteral("collision"))) {
+            EXPECT_EQ(messages[i].first, Severity::Warning);
+            collisionLines.push_back(messages[i].second);
+        }
+    }
+    EXPECT_EQ(collisionLines, (std::vector<int>{6, 7}));
+    EXPECT_EQ(session->runState(), task::RunState::Finished);
+}
+
 }  // namespace
 }  // namespace kerf::ui
