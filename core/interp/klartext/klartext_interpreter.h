@@ -632,7 +632,6 @@ private:
     program::LogicalLine m_line;
     ParsedBlock m_block;
     size_t m_blockOffset = 0;
-    static constexpr size_t kReleaseStep = 8u << 20;  // tell the check every 8 MiB read
     size_t m_releasedBefore = 0;
     SourceLocation m_at;
 
