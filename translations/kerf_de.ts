@@ -952,10 +952,6 @@ Maschine: %3</translation>
         <translation>Filter, z. B. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Programm</translation>
     </message>
@@ -1202,6 +1198,41 @@ Maschine: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>folgt, sobald das Programm vorbereitet ist</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>keiner</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>keine</translation>
     </message>
 </context>
 <context>
@@ -4954,34 +4985,6 @@ Status</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>Spalte {1} braucht {2} oder {3}, nicht &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>bereit</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>Tippbetrieb</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>Referenzfahren</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>wird angehalten</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>Not-Aus</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>Störung</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>keine Maschine</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8756,6 +8759,56 @@ wählen</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>Zyklus {1}: die beiden Punkte einer gemessenen Geraden fallen zusammen</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>bereit</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>Vorschub-Halt</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>Tippbetrieb</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>Referenzfahren</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>wird angehalten</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>Not-Aus</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>keine Maschine</translation>
     </message>
 </context>
 <context>

@@ -952,10 +952,6 @@ Máquina: %3</translation>
         <translation>Filtro, p. ej. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>ninguno</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Programa</translation>
     </message>
@@ -1202,6 +1198,41 @@ Máquina: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>se muestra cuando el programa esté preparado</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>ninguno</translation>
     </message>
 </context>
 <context>
@@ -4954,34 +4985,6 @@ estado</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>la columna {1} necesita {2} o {3}, no &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>preparado</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>desplazamiento manual</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>búsqueda de referencia</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>parando</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>parada de emergencia</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>fallo</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>sin máquina</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8756,6 +8759,56 @@ solución</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: los dos puntos de una recta medida coinciden</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>preparada</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>en ejecución</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>parada de avance</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>parada</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>desplazamiento manual</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>búsqueda de referencia</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>parando</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>parada de emergencia</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>fallo</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>sin máquina</translation>
     </message>
 </context>
 <context>

@@ -955,10 +955,6 @@ Maszyna: %3</translation>
         <translation>Filtr, np. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>brak</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Program</translation>
     </message>
@@ -1205,6 +1201,41 @@ Maszyna: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>pojawi się po przygotowaniu programu</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>brak</translation>
     </message>
 </context>
 <context>
@@ -4957,34 +4988,6 @@ status</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>kolumna {1} wymaga {2} lub {3}, nie &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>gotowy</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>przesuw ręczny</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>bazowanie</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>zatrzymywanie</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>wyłączenie awaryjne</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>usterka</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>brak maszyny</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8759,6 +8762,56 @@ rozwiązanie</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>cykl {1}: oba punkty mierzonej prostej pokrywają się</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>gotowa</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>w toku</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>zatrzymanie posuwu</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>zatrzymana</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>przesuw ręczny</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>bazowanie</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>zatrzymywanie</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>wyłączenie awaryjne</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>usterka</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>brak maszyny</translation>
     </message>
 </context>
 <context>

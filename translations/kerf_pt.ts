@@ -953,10 +953,6 @@ Máquina: %3</translation>
         <translation>Filtro, p. ex. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>nenhum</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Programa</translation>
     </message>
@@ -1203,6 +1199,41 @@ Máquina: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>segue quando o programa estiver preparado</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>nenhuma</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>nenhuma</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>nenhum</translation>
     </message>
 </context>
 <context>
@@ -4954,34 +4985,6 @@ estado</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>a coluna {1} precisa de {2} ou {3}, não &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>pronto</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>em deslocação manual</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>a referenciar</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>a parar</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>paragem de emergência</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>avaria</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>sem máquina</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8756,6 +8759,56 @@ solução</translation>
     <message>
         <source>cycle {1}: the two points of a measured line coincide</source>
         <translation>ciclo {1}: os dois pontos de uma reta medida coincidem</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>pronta</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>em execução</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>paragem do avanço</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>parada</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>em deslocação manual</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>a referenciar</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>a parar</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>paragem de emergência</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>avaria</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>sem máquina</translation>
     </message>
 </context>
 <context>
