@@ -84,8 +84,10 @@ void MainWindow::createGraphics(QWidget* parent) {
         // parameters are not the machine's (nor the other way round).
         const bool testRunShown = testRunOnScreen();
         if (m_status != nullptr && m_showsTestRunStatus != testRunShown) {
-            m_status->setProgramStatus(testRunShown ? m_testRunProgramStatus
-                                                    : m_machineProgramStatus);
+            if (testRunShown)
+                m_status->setProgramStatus(m_testRunProgramStatus);
+            else
+                showMachineProgramStatus();
         }
         m_showsTestRunStatus = testRunShown;
         if (!testRunShown) return;
