@@ -8810,6 +8810,54 @@ wählen</translation>
         <comment>machine state</comment>
         <translation>keine Maschine</translation>
     </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Satz {1}: die Maschine hat keine Achse {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Satz {1}: die Bewegung würde die Achse {2} auf {3} (Maschinenkoordinaten) fahren, jenseits ihres Software-Endschalters {4}; das Programm läuft nicht über diesen Satz hinaus.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Satz {1}: Vorschub pro Umdrehung bei stehender Spindel.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Satz {1}: Vorschubbewegung ohne Vorschub.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Satz {1}: {2} = {3} liegt außerhalb des Bereichs der Steuerung; das Programm läuft nicht über diesen Satz hinaus.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Satz {1}: der Endpunkt des Kreises liegt {2} mm neben seiner Kreisbahn.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Satz {1}: Gewinde mit veränderlicher Steigung (G34) können noch nicht ausgeführt werden.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Satz {1}: spindelsynchrone Bewegung ohne Steigung oder Spindeldrehzahl.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>Die Abtastdatei {1} kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Bewegungsfehler {1} in Zeile {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Not-Aus {1} s nach dem Start (die Taste wurde gedrückt): alle Achsen und die Spindel wurden angehalten und das Programm abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>Die Simulation hat ihre Grenze von {1} s simulierter Zeit erreicht, bevor die Bewegung des Programms endete: der Lauf endet hier.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8810,6 +8810,54 @@ solución</translation>
         <comment>machine state</comment>
         <translation>sin máquina</translation>
     </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Bloque {1}: la máquina no tiene eje {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Bloque {1}: el movimiento llevaría el eje {2} a {3} (coordenadas de máquina), más allá de su límite de software {4}; el programa no se ejecuta más allá de este bloque.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Bloque {1}: avance por revolución con el cabezal parado.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Bloque {1}: movimiento de avance sin velocidad de avance.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Bloque {1}: {2} = {3} está fuera del rango del control; el programa no se ejecuta más allá de este bloque.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Bloque {1}: el punto final del arco está a {2} mm de su círculo.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Bloque {1}: las roscas de paso variable (G34) aún no se pueden ejecutar.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Bloque {1}: movimiento sincronizado con el cabezal sin paso ni velocidad del cabezal.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>No se puede escribir el fichero de muestras {1}.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Error de movimiento {1} en la línea {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Parada de emergencia {1} s después del inicio (se pulsó el botón): se pararon todos los ejes y el cabezal y se interrumpió el programa.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>La simulación alcanzó su límite de {1} s de tiempo simulado antes de que terminara el movimiento del programa: la ejecución termina aquí.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8813,6 +8813,54 @@ rozwiązanie</translation>
         <comment>machine state</comment>
         <translation>brak maszyny</translation>
     </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Blok {1}: maszyna nie ma osi {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Blok {1}: ruch przesunąłby oś {2} do {3} (współrzędne maszynowe), poza jej programowy wyłącznik krańcowy {4}; program nie jest wykonywany poza ten blok.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Blok {1}: posuw na obrót przy zatrzymanym wrzecionie.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Blok {1}: ruch roboczy bez prędkości posuwu.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Blok {1}: {2} = {3} jest poza zakresem sterowania; program nie jest wykonywany poza ten blok.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Blok {1}: punkt końcowy łuku leży {2} mm od jego okręgu.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Blok {1}: gwintów o zmiennym skoku (G34) nie można jeszcze wykonać.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Blok {1}: ruch zsynchronizowany z wrzecionem bez skoku lub prędkości wrzeciona.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>Nie można zapisać pliku próbek {1}.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Błąd ruchu {1} w wierszu {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Wyłączenie awaryjne {1} s po starcie (naciśnięto przycisk): wszystkie osie i wrzeciono zostały zatrzymane, a program przerwany.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>Symulacja osiągnęła swój limit {1} s czasu symulowanego, zanim ruch programu się zakończył: przebieg kończy się tutaj.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

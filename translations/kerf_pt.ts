@@ -8810,6 +8810,54 @@ solução</translation>
         <comment>machine state</comment>
         <translation>sem máquina</translation>
     </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Bloco {1}: a máquina não tem eixo {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Bloco {1}: o movimento levaria o eixo {2} a {3} (coordenadas da máquina), além do seu limite de software {4}; o programa não é executado para além deste bloco.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Bloco {1}: avanço por rotação com o fuso parado.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Bloco {1}: movimento de avanço sem velocidade de avanço.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Bloco {1}: {2} = {3} está fora da gama do comando; o programa não é executado para além deste bloco.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Bloco {1}: o ponto final do arco fica a {2} mm do seu círculo.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Bloco {1}: as roscas de passo variável (G34) ainda não podem ser executadas.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Bloco {1}: movimento sincronizado com o fuso sem passo nem velocidade do fuso.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>Não é possível escrever o ficheiro de amostras {1}.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Erro de movimento {1} na linha {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Paragem de emergência {1} s após o início (o botão foi premido): todos os eixos e o fuso foram parados e o programa foi interrompido.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>A simulação atingiu o seu limite de {1} s de tempo simulado antes de o movimento do programa terminar: a execução termina aqui.</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

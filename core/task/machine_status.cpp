@@ -1,6 +1,7 @@
 #include "core/task/machine_status.h"
 
-#include "core/base/translate.h"
+#include "core/base/translate_disambiguated.h"
+#include "core/task/machine_state_name.h"
 
 namespace kerf::task {
 

@@ -23,10 +23,7 @@ enum class MachineState : uint8_t {
     Offline,  // no machine (programming station, test run)
 };
 
-// The state's English name, marked for translation with the disambiguation below: the
-// machine's words agree with "machine", which is feminine in Portuguese, Spanish and Polish.
 const char* machineStateName(MachineState state);
-inline constexpr const char* kMachineStateDisambiguation = "machine state";
 
 struct AxisStatus {
     bool enabled = false;

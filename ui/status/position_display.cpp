@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/task/machine_state_name.h"
 #include "core/task/working_plane_position.h"
 #include "ui/common/block_name.h"
 #include "ui/status/override_controls.h"

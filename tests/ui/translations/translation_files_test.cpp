@@ -110,17 +110,21 @@ QString unescaped(const QString& body) {
 }
 
 // C++ string literals of KERF_TR_NOOP("..." "...") and KERF_TR_NOOP3("...", "disambiguation")
-// in core, read independently of lupdate: the text, a tab and the disambiguation (if any).
+// in core and motion, read independently of lupdate: the text, a tab and the disambiguation (if
+// any).
 QSet<QString> coreMessageTemplates() {
     static const QRegularExpression call(QStringLiteral(
         R"re(KERF_TR_NOOP(3?)\(\s*((?:"(?:[^"\\]|\\.)*"\s*)+)(?:,\s*"((?:[^"\\]|\\.)*)"\s*)?\))re"));
     static const QRegularExpression literal(QStringLiteral(R"re("((?:[^"\\]|\\.)*)")re"));
     QSet<QString> templates;
     QStringList files;
-    QDirIterator it(QStringLiteral(KERF_SOURCE_DIR "/core"), {"*.h", "*.cpp"}, QDir::Files,
-                    QDirIterator::Subdirectories);
-    while (it.hasNext())
-        files << it.next();
+    // motion/ too: the planner's refusals reach the operator (they were never translated).
+    for (const char* folder : {"/core", "/motion"}) {
+        QDirIterator it(QStringLiteral(KERF_SOURCE_DIR) + QLatin1String(folder), {"*.h", "*.cpp"},
+                        QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext())
+            files << it.next();
+    }
     for (const QString& path : files) {
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly)) continue;
