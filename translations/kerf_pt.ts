@@ -525,7 +525,7 @@ bloco</translation>
     </message>
     <message>
         <source>The spindle turns. Stop it and quit?</source>
-        <translation>O fuso está a rodar. Pará-lo e sair?</translation>
+        <translation>O mandril está a rodar. Pará-lo e sair?</translation>
     </message>
     <message>
         <source>Quit</source>
@@ -8162,15 +8162,15 @@ solução</translation>
     </message>
     <message>
         <source>Head: X of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
-        <translation>Cabeça: X do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+        <translation>Cabeça: X do pivô da cabeça a partir do nariz do mandril, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
     </message>
     <message>
         <source>Head: Y of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
-        <translation>Cabeça: Y do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+        <translation>Cabeça: Y do pivô da cabeça a partir do nariz do mandril, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
     </message>
     <message>
         <source>Head: Z of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
-        <translation>Cabeça: Z do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+        <translation>Cabeça: Z do pivô da cabeça a partir do nariz do mandril, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
     </message>
     <message>
         <source>kinematics.primary is the tilting axis: A or B, not C</source>
@@ -8370,7 +8370,7 @@ solução</translation>
     </message>
     <message>
         <source>tool length touch-off: no tool in the spindle</source>
-        <translation>Medição do comprimento por toque: nenhuma ferramenta no fuso</translation>
+        <translation>Medição do comprimento por toque: nenhuma ferramenta no mandril</translation>
     </message>
     <message>
         <source>tool length touch-off: tool {1} is not in TOOL.T</source>
@@ -8820,7 +8820,7 @@ solução</translation>
     </message>
     <message>
         <source>Block {1}: feed per revolution with the spindle stopped.</source>
-        <translation>Bloco {1}: avanço por rotação com o fuso parado.</translation>
+        <translation>Bloco {1}: avanço por rotação com o mandril parado.</translation>
     </message>
     <message>
         <source>Block {1}: feed move without a feed rate.</source>
@@ -8840,7 +8840,7 @@ solução</translation>
     </message>
     <message>
         <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
-        <translation>Bloco {1}: movimento sincronizado com o fuso sem passo nem velocidade do fuso.</translation>
+        <translation>Bloco {1}: movimento sincronizado com o mandril sem passo nem velocidade do mandril.</translation>
     </message>
     <message>
         <source>Cannot write the samples file {1}.</source>
@@ -8852,7 +8852,7 @@ solução</translation>
     </message>
     <message>
         <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
-        <translation>Paragem de emergência {1} s após o início (o botão foi premido): todos os eixos e o fuso foram parados e o programa foi interrompido.</translation>
+        <translation>Paragem de emergência {1} s após o início (o botão foi premido): todos os eixos e o mandril foram parados e o programa foi interrompido.</translation>
     </message>
     <message>
         <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
@@ -9025,7 +9025,7 @@ ponto ref.</translation>
     </message>
     <message>
         <source>Spindle speed</source>
-        <translation>Rotação do fuso</translation>
+        <translation>Rotação do mandril</translation>
     </message>
     <message>
         <source>S in rpm (%1 to %2)</source>
