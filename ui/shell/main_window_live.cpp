@@ -71,10 +71,12 @@ void MainWindow::connectLiveRun() {
 
 void MainWindow::showMachineProgramStatus() {
     if (m_status == nullptr || testRunOnScreen()) return;
+    if (m_session == nullptr || m_session->busy()) {
+        m_status->setProgramStatus(m_machineProgramStatus);
+        return;
+    }
     const interp::ProgramStatus shown =
-        m_session != nullptr && !m_session->busy()
-            ? withMachineSpindleAndCoolant(m_machineProgramStatus, m_session->status())
-            : m_machineProgramStatus;
+        withMachineSpindleAndCoolant(m_machineProgramStatus, m_session->status());
     // The machine's status comes every 20 ms: the tabs are filled again only when it changes.
     if (shown != m_status->programStatus()) m_status->setProgramStatus(shown);
 }
