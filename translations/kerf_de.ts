@@ -956,10 +956,6 @@ Maschine: %3</translation>
         <translation>Filter, z. B. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Programm</translation>
     </message>
@@ -1206,6 +1202,41 @@ Maschine: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>folgt, sobald das Programm vorbereitet ist</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>keiner</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>keine</translation>
     </message>
 </context>
 <context>
@@ -4958,34 +4989,6 @@ Status</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>Spalte {1} braucht {2} oder {3}, nicht &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>bereit</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>Tippbetrieb</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>Referenzfahren</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>wird angehalten</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>Not-Aus</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>Störung</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>keine Maschine</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8764,6 +8767,104 @@ wählen</translation>
     <message>
         <source>collision: a rapid move runs into the material of the blank</source>
         <translation>Kollision: eine Eilgangbewegung fährt in das Material des Rohteils</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>bereit</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>Vorschub-Halt</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>Tippbetrieb</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>Referenzfahren</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>wird angehalten</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>Not-Aus</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>keine Maschine</translation>
+    </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Satz {1}: die Maschine hat keine Achse {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Satz {1}: die Bewegung würde die Achse {2} auf {3} (Maschinenkoordinaten) fahren, jenseits ihres Software-Endschalters {4}; das Programm läuft nicht über diesen Satz hinaus.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Satz {1}: Vorschub pro Umdrehung bei stehender Spindel.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Satz {1}: Vorschubbewegung ohne Vorschub.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Satz {1}: {2} = {3} liegt außerhalb des Bereichs der Steuerung; das Programm läuft nicht über diesen Satz hinaus.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Satz {1}: der Endpunkt des Kreises liegt {2} mm neben seiner Kreisbahn.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Satz {1}: Gewinde mit veränderlicher Steigung (G34) können noch nicht ausgeführt werden.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Satz {1}: spindelsynchrone Bewegung ohne Steigung oder Spindeldrehzahl.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>Die Abtastdatei {1} kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Bewegungsfehler {1} in Zeile {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Not-Aus {1} s nach dem Start (die Taste wurde gedrückt): alle Achsen und die Spindel wurden angehalten und das Programm abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>Die Simulation hat ihre Grenze von {1} s simulierter Zeit erreicht, bevor die Bewegung des Programms endete: der Lauf endet hier.</translation>
     </message>
     <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>

@@ -956,10 +956,6 @@ Máquina: %3</translation>
         <translation>Filtro, p. ej. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>ninguno</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Programa</translation>
     </message>
@@ -1206,6 +1202,41 @@ Máquina: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>se muestra cuando el programa esté preparado</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>ninguno</translation>
     </message>
 </context>
 <context>
@@ -4958,34 +4989,6 @@ estado</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>la columna {1} necesita {2} o {3}, no &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>preparado</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>desplazamiento manual</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>búsqueda de referencia</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>parando</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>parada de emergencia</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>fallo</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>sin máquina</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8764,6 +8767,104 @@ solución</translation>
     <message>
         <source>collision: a rapid move runs into the material of the blank</source>
         <translation>colisión: un movimiento en marcha rápida entra en el material de la pieza en bruto</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>preparada</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>en ejecución</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>parada de avance</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>parada</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>desplazamiento manual</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>búsqueda de referencia</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>parando</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>parada de emergencia</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>fallo</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>sin máquina</translation>
+    </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Bloque {1}: la máquina no tiene eje {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Bloque {1}: el movimiento llevaría el eje {2} a {3} (coordenadas de máquina), más allá de su límite de software {4}; el programa no se ejecuta más allá de este bloque.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Bloque {1}: avance por revolución con el cabezal parado.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Bloque {1}: movimiento de avance sin velocidad de avance.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Bloque {1}: {2} = {3} está fuera del rango del control; el programa no se ejecuta más allá de este bloque.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Bloque {1}: el punto final del arco está a {2} mm de su círculo.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Bloque {1}: las roscas de paso variable (G34) aún no se pueden ejecutar.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Bloque {1}: movimiento sincronizado con el cabezal sin paso ni velocidad del cabezal.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>No se puede escribir el fichero de muestras {1}.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Error de movimiento {1} en la línea {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Parada de emergencia {1} s después del inicio (se pulsó el botón): se pararon todos los ejes y el cabezal y se interrumpió el programa.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>La simulación alcanzó su límite de {1} s de tiempo simulado antes de que terminara el movimiento del programa: la ejecución termina aquí.</translation>
     </message>
     <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>

@@ -959,10 +959,6 @@ Maszyna: %3</translation>
         <translation>Filtr, np. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>brak</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Program</translation>
     </message>
@@ -1209,6 +1205,41 @@ Maszyna: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>pojawi się po przygotowaniu programu</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>brak</translation>
     </message>
 </context>
 <context>
@@ -4961,34 +4992,6 @@ status</translation>
     <message>
         <source>column {1} needs {2} or {3}, not &quot;{4}&quot;</source>
         <translation>kolumna {1} wymaga {2} lub {3}, nie &quot;{4}&quot;</translation>
-    </message>
-    <message>
-        <source>ready</source>
-        <translation>gotowy</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>przesuw ręczny</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>bazowanie</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>zatrzymywanie</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>wyłączenie awaryjne</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>usterka</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>brak maszyny</translation>
     </message>
     <message>
         <source>{1} needs the coordinates of its end point</source>
@@ -8767,6 +8770,104 @@ rozwiązanie</translation>
     <message>
         <source>collision: a rapid move runs into the material of the blank</source>
         <translation>kolizja: ruch szybki wjeżdża w materiał półfabrykatu</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>gotowa</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>w toku</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>zatrzymanie posuwu</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>zatrzymana</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>przesuw ręczny</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>bazowanie</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>zatrzymywanie</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>wyłączenie awaryjne</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>usterka</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>brak maszyny</translation>
+    </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Blok {1}: maszyna nie ma osi {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Blok {1}: ruch przesunąłby oś {2} do {3} (współrzędne maszynowe), poza jej programowy wyłącznik krańcowy {4}; program nie jest wykonywany poza ten blok.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Blok {1}: posuw na obrót przy zatrzymanym wrzecionie.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Blok {1}: ruch roboczy bez prędkości posuwu.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Blok {1}: {2} = {3} jest poza zakresem sterowania; program nie jest wykonywany poza ten blok.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Blok {1}: punkt końcowy łuku leży {2} mm od jego okręgu.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Blok {1}: gwintów o zmiennym skoku (G34) nie można jeszcze wykonać.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Blok {1}: ruch zsynchronizowany z wrzecionem bez skoku lub prędkości wrzeciona.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>Nie można zapisać pliku próbek {1}.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Błąd ruchu {1} w wierszu {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Wyłączenie awaryjne {1} s po starcie (naciśnięto przycisk): wszystkie osie i wrzeciono zostały zatrzymane, a program przerwany.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>Symulacja osiągnęła swój limit {1} s czasu symulowanego, zanim ruch programu się zakończył: przebieg kończy się tutaj.</translation>
     </message>
     <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>

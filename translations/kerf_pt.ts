@@ -529,7 +529,7 @@ bloco</translation>
     </message>
     <message>
         <source>The spindle turns. Stop it and quit?</source>
-        <translation>O fuso está a rodar. Pará-lo e sair?</translation>
+        <translation>O mandril está a rodar. Pará-lo e sair?</translation>
     </message>
     <message>
         <source>Quit</source>
@@ -957,10 +957,6 @@ Máquina: %3</translation>
         <translation>Filtro, p. ex. %1</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>nenhum</translation>
-    </message>
-    <message>
         <source>Program</source>
         <translation>Programa</translation>
     </message>
@@ -1207,6 +1203,41 @@ Máquina: %3</translation>
     <message>
         <source>follows when the program is prepared</source>
         <translation>segue quando o programa estiver preparado</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>cycle</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>program</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>called program</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>label</comment>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>M functions</comment>
+        <translation>nenhuma</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>tool</comment>
+        <translation>nenhuma</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <comment>mirrored axes</comment>
+        <translation>nenhum</translation>
     </message>
 </context>
 <context>
@@ -4960,34 +4991,6 @@ estado</translation>
         <translation>a coluna {1} precisa de {2} ou {3}, não &quot;{4}&quot;</translation>
     </message>
     <message>
-        <source>ready</source>
-        <translation>pronto</translation>
-    </message>
-    <message>
-        <source>jogging</source>
-        <translation>em deslocação manual</translation>
-    </message>
-    <message>
-        <source>homing</source>
-        <translation>a referenciar</translation>
-    </message>
-    <message>
-        <source>stopping</source>
-        <translation>a parar</translation>
-    </message>
-    <message>
-        <source>emergency stop</source>
-        <translation>paragem de emergência</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>avaria</translation>
-    </message>
-    <message>
-        <source>no machine</source>
-        <translation>sem máquina</translation>
-    </message>
-    <message>
         <source>{1} needs the coordinates of its end point</source>
         <translation>{1} precisa das coordenadas do seu ponto final</translation>
     </message>
@@ -8159,15 +8162,15 @@ solução</translation>
     </message>
     <message>
         <source>Head: X of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
-        <translation>Cabeça: X do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+        <translation>Cabeça: X do pivô da cabeça a partir do nariz do mandril, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
     </message>
     <message>
         <source>Head: Y of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
-        <translation>Cabeça: Y do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+        <translation>Cabeça: Y do pivô da cabeça a partir do nariz do mandril, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
     </message>
     <message>
         <source>Head: Z of the head&apos;s pivot from the spindle nose, head at 0; write head_pivot = [x, y, z]</source>
-        <translation>Cabeça: Z do pivô da cabeça a partir do nariz do fuso, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
+        <translation>Cabeça: Z do pivô da cabeça a partir do nariz do mandril, cabeça em 0; escreva head_pivot = [x, y, z]</translation>
     </message>
     <message>
         <source>kinematics.primary is the tilting axis: A or B, not C</source>
@@ -8367,7 +8370,7 @@ solução</translation>
     </message>
     <message>
         <source>tool length touch-off: no tool in the spindle</source>
-        <translation>Medição do comprimento por toque: nenhuma ferramenta no fuso</translation>
+        <translation>Medição do comprimento por toque: nenhuma ferramenta no mandril</translation>
     </message>
     <message>
         <source>tool length touch-off: tool {1} is not in TOOL.T</source>
@@ -8766,6 +8769,104 @@ solução</translation>
         <translation>colisão: um movimento em marcha rápida entra no material do bloco</translation>
     </message>
     <message>
+        <source>ready</source>
+        <comment>machine state</comment>
+        <translation>pronta</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>machine state</comment>
+        <translation>em execução</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <comment>machine state</comment>
+        <translation>paragem do avanço</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>machine state</comment>
+        <translation>parada</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <comment>machine state</comment>
+        <translation>em deslocação manual</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <comment>machine state</comment>
+        <translation>a referenciar</translation>
+    </message>
+    <message>
+        <source>stopping</source>
+        <comment>machine state</comment>
+        <translation>a parar</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <comment>machine state</comment>
+        <translation>paragem de emergência</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>machine state</comment>
+        <translation>avaria</translation>
+    </message>
+    <message>
+        <source>no machine</source>
+        <comment>machine state</comment>
+        <translation>sem máquina</translation>
+    </message>
+    <message>
+        <source>Block {1}: the machine has no axis {2}.</source>
+        <translation>Bloco {1}: a máquina não tem eixo {2}.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the move would take axis {2} to {3} (machine coordinates), beyond its soft limit {4}; the program is not run past this block.</source>
+        <translation>Bloco {1}: o movimento levaria o eixo {2} a {3} (coordenadas da máquina), além do seu limite de software {4}; o programa não é executado para além deste bloco.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed per revolution with the spindle stopped.</source>
+        <translation>Bloco {1}: avanço por rotação com o mandril parado.</translation>
+    </message>
+    <message>
+        <source>Block {1}: feed move without a feed rate.</source>
+        <translation>Bloco {1}: movimento de avanço sem velocidade de avanço.</translation>
+    </message>
+    <message>
+        <source>Block {1}: {2} = {3} is outside the range of the control; the program is not run past this block.</source>
+        <translation>Bloco {1}: {2} = {3} está fora da gama do comando; o programa não é executado para além deste bloco.</translation>
+    </message>
+    <message>
+        <source>Block {1}: the arc&apos;s end point is {2} mm off its circle.</source>
+        <translation>Bloco {1}: o ponto final do arco fica a {2} mm do seu círculo.</translation>
+    </message>
+    <message>
+        <source>Block {1}: threads with a variable lead (G34) cannot be executed yet.</source>
+        <translation>Bloco {1}: as roscas de passo variável (G34) ainda não podem ser executadas.</translation>
+    </message>
+    <message>
+        <source>Block {1}: spindle-synchronised move without a lead or a spindle speed.</source>
+        <translation>Bloco {1}: movimento sincronizado com o mandril sem passo nem velocidade do mandril.</translation>
+    </message>
+    <message>
+        <source>Cannot write the samples file {1}.</source>
+        <translation>Não é possível escrever o ficheiro de amostras {1}.</translation>
+    </message>
+    <message>
+        <source>Motion error {1} at line {2}.</source>
+        <translation>Erro de movimento {1} na linha {2}.</translation>
+    </message>
+    <message>
+        <source>Emergency stop at {1} s after the start (the button was pressed): every axis and the spindle were stopped and the program was aborted.</source>
+        <translation>Paragem de emergência {1} s após o início (o botão foi premido): todos os eixos e o mandril foram parados e o programa foi interrompido.</translation>
+    </message>
+    <message>
+        <source>The simulation reached its limit of {1} s of simulated time before the program&apos;s motion ended: the run stops here.</source>
+        <translation>A simulação atingiu o seu limite de {1} s de tempo simulado antes de o movimento do programa terminar: a execução termina aqui.</translation>
+    </message>
+    <message>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>
@@ -8936,7 +9037,7 @@ ponto ref.</translation>
     </message>
     <message>
         <source>Spindle speed</source>
-        <translation>Rotação do fuso</translation>
+        <translation>Rotação do mandril</translation>
     </message>
     <message>
         <source>S in rpm (%1 to %2)</source>

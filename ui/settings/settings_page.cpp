@@ -61,7 +61,11 @@ SettingsPage::SettingsPage(machine::MachineConfig config, std::filesystem::path 
     m_view->setObjectName("settingsView");
     m_view->setModel(m_model);
     m_view->verticalHeader()->hide();
-    m_view->verticalHeader()->setDefaultSectionSize(36);
+    // Descriptions wrap onto as many lines as they need, never cut with "...": each row is as
+    // high as its text at the description column's width (at least a finger's target).
+    m_view->setWordWrap(true);
+    m_view->verticalHeader()->setMinimumSectionSize(36);
+    m_view->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_view->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(m_view, 1);
     retranslate();

@@ -142,6 +142,10 @@ private:
     void startEditorProgram(std::optional<uint32_t> startLine);
     // Program run's graphics and status tabs follow the machine (main_window_live.cpp).
     void connectLiveRun();
+    // The status tabs at the machine's program status, with the machine's spindle and coolant
+    // once no program moves it (the manual keys and a Stop change them); not while the test run
+    // is on the screen.
+    void showMachineProgramStatus();
     // The graphics panel and the test run (main_window_testrun.cpp).
     void createGraphics(QWidget* parent);
     bool testRunOnScreen() const;

@@ -4,6 +4,7 @@
 #include "ui/session/machine_session.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
+#include "ui/status/machine_functions.h"
 #include "ui/status/position_display.h"
 #include "ui/status/status_tabs.h"
 #include "ui/testrun/test_run_controller.h"
@@ -57,7 +58,7 @@ void MainWindow::connectLiveRun() {
                 // The positions follow the block the machine executes, in its tilted plane.
                 m_positions->setWorkingPlane(status.transformations.workingPlane);
                 m_machineProgramStatus = status;
-                if (!testRunOnScreen()) m_status->setProgramStatus(status);
+                showMachineProgramStatus();
             });
     // The machine screen shows the machine's run, the programming screen the test run.
     auto showPlayback = [this] {
@@ -66,6 +67,18 @@ void MainWindow::connectLiveRun() {
     };
     connect(m_modes, &ModeController::modesChanged, this, showPlayback);
     showPlayback();
+}
+
+void MainWindow::showMachineProgramStatus() {
+    if (m_status == nullptr || testRunOnScreen()) return;
+    if (m_session == nullptr || m_session->busy()) {
+        m_status->setProgramStatus(m_machineProgramStatus);
+        return;
+    }
+    const interp::ProgramStatus shown =
+        withMachineSpindleAndCoolant(m_machineProgramStatus, m_session->status());
+    // The machine's status comes every 20 ms: the tabs are filled again only when it changes.
+    if (shown != m_status->programStatus()) m_status->setProgramStatus(shown);
 }
 
 }  // namespace kerf::ui

@@ -2,9 +2,12 @@
 // program, and the questions before quitting. Kept apart from main_window.cpp so the window
 // stays a shell.
 #include <QCloseEvent>
+#include <QTextBlock>
+#include <QTextCursor>
 #include <cmath>
 
 #include "ui/common/diagnostic_text.h"
+#include "ui/editor/program_editor.h"
 #include "ui/editor/program_panel.h"
 #include "ui/files/file_manager.h"
 #include "ui/files/nc_file_operations.h"
@@ -102,6 +105,17 @@ bool MainWindow::newProgram() {
     }
     if (!showProgram(*made)) return false;
     m_modes->requestProgrammingMode(task::ProgrammingMode::Programming);
+    // The next block goes before END PGM (FAGOR: M30), as on the control: the cursor at the end
+    // of the block above it (it stood before BEGIN PGM, where typing wrote into the header).
+    ProgramEditor* editor = m_program->editor();
+    QTextBlock last = editor->document()->lastBlock();
+    while (last.isValid() && last.text().trimmed().isEmpty())
+        last = last.previous();
+    if (last.isValid() && last.previous().isValid()) {
+        QTextCursor cursor(last.previous());
+        cursor.movePosition(QTextCursor::EndOfBlock);
+        editor->setTextCursor(cursor);
+    }
     return true;
 }
 

@@ -66,8 +66,13 @@ void MainWindow::connectSession() {
                 if (!m_session->runningProgramName().empty()) return;
                 m_positions->setWorkingPlane(status.transformations.workingPlane);
                 m_machineProgramStatus = status;
-                if (!testRunOnScreen()) m_status->setProgramStatus(status);
+                showMachineProgramStatus();
             });
+    // The spindle and coolant keys (and a Stop) change the machine's M functions; while a program
+    // moves the machine its blocks do (and set the tabs themselves).
+    connect(m_session, &MachineSession::statusChanged, this, [this] {
+        if (!m_session->busy()) showMachineProgramStatus();
+    });
     connect(m_session, &MachineSession::manualProbingChanged, m_status, [this] {
         m_status->setManualProbing(m_session->manualProbingFunction(),
                                    m_session->manualTouchesDone(),

@@ -2,8 +2,8 @@
 // message list, and the Test run softkeys. Kept apart from main_window.cpp so the window stays
 // a shell.
 #include <QCoreApplication>
-#include <QElapsedTimer>
-#include <QThread>
+#include <QEventLoop>
+#include <QTimer>
 
 #include "graphics/stock/progressive_stock.h"
 #include "ui/editor/program_editor.h"
@@ -84,8 +84,10 @@ void MainWindow::createGraphics(QWidget* parent) {
         // parameters are not the machine's (nor the other way round).
         const bool testRunShown = testRunOnScreen();
         if (m_status != nullptr && m_showsTestRunStatus != testRunShown) {
-            m_status->setProgramStatus(testRunShown ? m_testRunProgramStatus
-                                                    : m_machineProgramStatus);
+            if (testRunShown)
+                m_status->setProgramStatus(m_testRunProgramStatus);
+            else
+                showMachineProgramStatus();
         }
         m_showsTestRunStatus = testRunShown;
         if (!testRunShown) return;
@@ -156,32 +158,35 @@ std::vector<SoftkeyRow> MainWindow::testRunRows() {
 
 bool finishTestRunForPicture(MainWindow& window, int timeoutMs) {
     TestRunController* run = window.testRun();
-    QElapsedTimer clock;
-    clock.start();
-    auto waitFor = [&](const auto& done) {
-        while (!done()) {
-            if (clock.elapsed() > timeoutMs) return false;
-            QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-            QThread::msleep(5);
-        }
-        return true;
+    GraphicsPanel* graphics = window.graphics();
+    // Done when the run has ended, the final stock is in the scene and the view is fitted to it:
+    // checked again whenever one of them may have changed, never after a guessed delay.
+    auto pictureReady = [run, graphics] {
+        using State = TestRunController::State;
+        if (run->state() == State::Failed) return true;
+        if (run->state() != State::Finished) return false;
+        if (graphics->fitPending()) return false;
+        if (run->stock() == nullptr || graphics->viewport() == nullptr) return true;
+        // The finished stock itself, not the blank or a mesh of halfway still in the scene.
+        const auto latest = run->stock()->latest();
+        return latest->finished && graphics->viewport()->shownStockSequence() == latest->sequence;
     };
+    QEventLoop loop;
+    const auto check = [&] {
+        if (pictureReady()) loop.quit();
+    };
+    QObject::connect(run, &TestRunController::stateChanged, &loop, check);
+    QObject::connect(graphics, &GraphicsPanel::viewFitted, &loop, check);
+    if (graphics->viewport() != nullptr)
+        QObject::connect(graphics->viewport(), &ViewportWidget::stockShown, &loop, check);
+    QTimer timeout;
+    timeout.setSingleShot(true);
+    QObject::connect(&timeout, &QTimer::timeout, &loop, [&loop] { loop.exit(1); });
     run->setSpeed(TestRunSpeed::Max);
     window.startTestRun();
-    using State = TestRunController::State;
-    if (!waitFor(
-            [run] { return run->state() == State::Finished || run->state() == State::Failed; }))
-        return false;
-    if (run->state() == State::Failed || run->stock() == nullptr) return true;
-    // The viewport polls the stock worker: wait for the final mesh to be in the scene.
-    GraphicsPanel* graphics = window.graphics();
-    return waitFor([run, graphics] {
-        const auto latest = run->stock()->latest();
-        if (!latest->finished) return false;
-        const bool nothingToShow =
-            graphics->viewport() == nullptr || !latest->mesh || latest->mesh->triangleCount() == 0;
-        return nothingToShow || graphics->scene().stats().stockTriangles > 0;
-    });
+    if (pictureReady()) return true;
+    timeout.start(timeoutMs);
+    return loop.exec() == 0;
 }
 
 }  // namespace kerf::ui

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/task/machine_state_name.h"
 #include "core/task/working_plane_position.h"
 #include "ui/common/block_name.h"
 #include "ui/status/override_controls.h"
@@ -35,11 +36,6 @@ double pick(const task::AxisStatus& axis, PositionKind kind) {
             return axis.distanceToGo;
     }
     return 0.0;
-}
-
-// Core's KERF_TR_NOOP texts are translated in the "kerf" context.
-QString coreText(const char* text) {
-    return QCoreApplication::translate("kerf", text);
 }
 
 std::array<double, kAxisCount> kindValuesOf(const task::MachineStatus& status, PositionKind kind) {
@@ -277,7 +273,8 @@ void PositionDisplay::refresh() {
                     (inch ? QStringLiteral("  inch") : QStringLiteral("  mm")) +
                     (tilted ? QStringLiteral("  3D ROT") : QString()) +
                     (turned ? QStringLiteral("  ROT") : QString()));
-    QString state = coreText(task::machineStateName(m_status.state));
+    QString state = QCoreApplication::translate("kerf", task::machineStateName(m_status.state),
+                                                task::kMachineStateDisambiguation);
     if (!m_runState.isEmpty()) state = tr("Program: %1   Machine: %2").arg(m_runState, state);
     if (m_status.block.line > 0) {
         state +=

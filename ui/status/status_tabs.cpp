@@ -184,8 +184,8 @@ void StatusTabs::refresh() {
 
 void StatusTabs::fillProgram() {
     const auto& s = m_status;
-    const QString none = tr("none");
-    QString cycle = none;
+    // "none" agrees with its row's noun in Portuguese, Spanish, German: one text per row.
+    QString cycle = tr("none", "cycle");
     if (s.cycle) {
         // FAGOR's cycles are G functions (G68), the TNC's numbers (CYCL DEF 200).
         cycle = (s.parameterLetter == 'P' ? QStringLiteral("G") : QString()) +
@@ -200,12 +200,13 @@ void StatusTabs::fillProgram() {
     const QString active = QString::fromStdString(s.activeProgram);
     const QString main = QString::fromStdString(s.mainProgram);
     fill(m_program,
-         {{tr("Program"), main.isEmpty() ? none : main},
-          {tr("Called program"),
-           s.activeProgram == s.mainProgram || active.isEmpty() ? none : active},
-          {tr("Label"), s.label.empty() ? none : QString::fromStdString(s.label)},
+         {{tr("Program"), main.isEmpty() ? tr("none", "program") : main},
+          {tr("Called program"), s.activeProgram == s.mainProgram || active.isEmpty()
+                                     ? tr("none", "called program")
+                                     : active},
+          {tr("Label"), s.label.empty() ? tr("none", "label") : QString::fromStdString(s.label)},
           {tr("Cycle"), cycle},
-          {tr("M functions"), m.isEmpty() ? none : m.join(' ')},
+          {tr("M functions"), m.isEmpty() ? tr("none", "M functions") : m.join(' ')},
           {tr("Spindle"), spindleText(s.motion, s.inch)},
           {tr("Feed"), feedText(s.motion, s.inch)},
           {tr("Block"),
@@ -243,7 +244,7 @@ void StatusTabs::fillTool() {
     const auto& t = m_status.tool;
     const bool inch = m_status.inch;
     if (t.number < 0) {
-        fill(m_tool, {{tr("Tool"), tr("none")}});
+        fill(m_tool, {{tr("Tool"), tr("none", "tool")}});
         return;
     }
     std::vector<Row> rows{{tr("Tool"), QString::number(t.number)}};
@@ -283,7 +284,8 @@ void StatusTabs::fillTransformations() {
     for (int i = 0; i < kAxisCount; ++i) {
         if ((t.mirrored & axisBit(static_cast<Axis>(i))) != 0) mirrored << axisName(i);
     }
-    rows.push_back({tr("Mirrored axes"), mirrored.isEmpty() ? tr("none") : mirrored.join(' ')});
+    rows.push_back({tr("Mirrored axes"),
+                    mirrored.isEmpty() ? tr("none", "mirrored axes") : mirrored.join(' ')});
     rows.push_back({tr("Rotation"), angleText(t.rotationDeg)});
     // One factor when X, Y, Z (and other linear axes that are scaled) share it, as with cycle 11
     // or G72 S; else each of them.

@@ -182,6 +182,10 @@ void GraphicsPanel::scheduleFit() {
     m_fitTimer->start();
 }
 
+bool GraphicsPanel::fitPending() const {
+    return m_fitTimer != nullptr && m_fitTimer->isActive();
+}
+
 void GraphicsPanel::fitWhenStockShown() {
     // The blank comes from the stock worker a moment after the program: fit once it is drawn,
     // or when there is none to draw (no blank, or one derived only at the end), or after 2 s.
@@ -194,6 +198,7 @@ void GraphicsPanel::fitWhenStockShown() {
     m_fitTimer->stop();
     m_fitWaits = 0;
     m_viewport->setView(m_scene->view());  // fits with the viewport's current size
+    emit viewFitted();
 }
 
 void GraphicsPanel::resizeEvent(QResizeEvent* event) {

@@ -43,6 +43,9 @@ public:
     void showPlayback(TestRunController& playback);
     TestRunController& playback() const { return *m_playback; }
 
+    // A fit of the view is waiting for the blank or for the viewport's size (see scheduleFit).
+    bool fitPending() const;
+
     // "0:01:05": hours, minutes, seconds (rounded up, so a started second counts).
     static QString formatDuration(double seconds);
 
@@ -53,6 +56,8 @@ public slots:
 signals:
     // A click on the toolpath picked a segment of this line of the main program.
     void blockPicked(int line);
+    // The view was fitted to the content; fitPending() is false now.
+    void viewFitted();
 
 protected:
     void changeEvent(QEvent* event) override;

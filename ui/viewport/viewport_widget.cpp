@@ -144,6 +144,7 @@ void ViewportWidget::pollStock() {
     m_scene->setStockMesh(snapshot->mesh);
     render();
     if (snapshot->finished) m_stockTimer->stop();
+    emit stockShown();
 }
 
 void ViewportWidget::setView(graphics::View view) {

@@ -34,6 +34,8 @@ public:
     graphics::Scene* scene() const { return m_scene; }
     // Follows a running simulation's stock (not owned); null stops following.
     void followStock(const graphics::ProgressiveStock* stock);
+    // The sequence number of the followed stock's mesh in the scene (0: none of it yet).
+    uint64_t shownStockSequence() const { return m_stockSequence; }
 
     void setView(graphics::View view);
     void zoomBy(double factor);
@@ -50,6 +52,8 @@ public slots:
 signals:
     // A click picked a segment of the toolpath.
     void segmentPicked(quint32 fileId, quint32 line, quint32 column, qint64 blockNumber);
+    // A newer mesh of the followed stock is in the scene.
+    void stockShown();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

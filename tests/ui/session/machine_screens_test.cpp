@@ -449,5 +449,43 @@ TEST_F(MachineScreens, TheEmergencyStopKeyStopsAProgramAndMachineOnSwitchesTheMa
     EXPECT_FALSE(messages->line()->text().contains(onAlready));
 }
 
+// The PGM tab's M functions and spindle speed follow the machine once no program moves it: a
+// Stop turns the program's spindle and coolant off (docs/hmi.md, Stop), and the manual keys turn
+// them on and off again. They showed the program's M3 M8 and its S after all of that.
+TEST_F(MachineScreens, ThePgmTabFollowsTheSpindleAndCoolantAfterAProgramAndTheManualKeys) {
+    std::ofstream(dir / "S.H") << "0 BEGIN PGM S MM\n"
+                                  "1 TOOL CALL 0 Z S2000\n"
+                                  "2 L X+0 Y+0 Z+0 R0 FMAX M3 M8\n"
+                                  "3 L X+50 F100\n"
+                                  "4 END PGM S MM\n";
+    ASSERT_TRUE(window->openProgram(dir / "S.H"));
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::FullSequence));
+    auto* tabs = window->findChild<StatusTabs*>();
+    auto pgm = [tabs](const char* row) { return tabs->valueOf(StatusTabs::Tab::Program, row); };
+    ASSERT_TRUE(window->softkeys()->pressId("ncStart"));
+    // Block 3 cuts (30 s at F100): the program's spindle and coolant.
+    ASSERT_TRUE(processUntil([&] { return x() > 1.0 && pgm("M functions") == "M3 M8"; }));
+    EXPECT_EQ(pgm("Spindle"), "S 2000 rpm");
+    ASSERT_TRUE(window->softkeys()->pressId("abort"));
+    ASSERT_TRUE(processUntil([&] { return !window->session()->busy(); }));
+    EXPECT_TRUE(processUntil([&] { return pgm("M functions") == "M5 M9"; }, 2s))
+        << pgm("M functions").toStdString();
+    EXPECT_EQ(pgm("Spindle"), "S 2000 rpm");  // the S programmed stays, the spindle is off (M5)
+
+    ASSERT_TRUE(window->modes().requestMachineMode(task::MachineMode::Manual));
+    ASSERT_TRUE(window->softkeys()->pressId("spindleOn"));  // at the manual speed, 1000 rpm
+    EXPECT_TRUE(processUntil([&] { return pgm("M functions") == "M3 M9"; }, 2s))
+        << pgm("M functions").toStdString();
+    EXPECT_EQ(pgm("Spindle"), "S 1000 rpm");
+    ASSERT_TRUE(window->softkeys()->pressId("coolantOn"));
+    EXPECT_TRUE(processUntil([&] { return pgm("M functions") == "M3 M8"; }, 2s))
+        << pgm("M functions").toStdString();
+    ASSERT_TRUE(window->softkeys()->pressId("spindleOff"));
+    EXPECT_TRUE(processUntil([&] { return pgm("M functions") == "M5 M8"; }, 2s))
+        << pgm("M functions").toStdString();
+    // The rest of the tab is still the program's.
+    EXPECT_EQ(pgm("Program"), "S.H");
+}
+
 }  // namespace
 }  // namespace kerf::ui

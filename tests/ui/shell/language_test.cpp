@@ -15,6 +15,8 @@
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
 #include "ui/shell/ui_language.h"
+#include "ui/status/position_display.h"
+#include "ui/status/status_tabs.h"
 
 // German and Spanish: the window's texts and core's diagnostics change with the language. The
 // expected words are the TNC's own terms (HEIDENHAIN's German and Spanish manuals).
@@ -102,6 +104,56 @@ TEST(Language, CoreDiagnosticsAreTranslatedInPortugueseAndPolish) {
     EXPECT_EQ(translatedMessage(pitchIsZero()),
               QStringLiteral("cykl 262: skok gwintu Q239 wynosi 0"));
     ASSERT_TRUE(switchLanguage("en"));
+}
+
+// "None" agrees with the noun of its row: Portuguese and Spanish "Ferramenta"/"Herramienta" and
+// "Funções M"/"Funciones M" are feminine, "Ciclo" and "Programa" masculine; German "Werkzeug"
+// is neuter, "Zyklus" masculine. The machine's state agrees with "Máquina" (feminine) while
+// the program's agrees with "Programa" (masculine). Expected words from each grammar.
+TEST(Language, NoneAndStatesAgreeWithTheirLabel) {
+    test::testApp();
+    StatusTabs tabs('Q');
+    interp::ProgramStatus nothing;  // no program, cycle, M function, tool, mirroring
+    nothing.tool.number = -1;
+    tabs.setProgramStatus(nothing);
+    PositionDisplay positions(*machine::loadMachine("mill"));
+    task::MachineStatus stopped;
+    stopped.state = task::MachineState::Stopped;
+    positions.setStatus(stopped);
+    auto value = [&](StatusTabs::Tab tab, const char* english) {
+        return tabs.valueOf(tab, QCoreApplication::translate("kerf::ui::StatusTabs", english));
+    };
+    auto machineState = [&] {
+        positions.setRunState(QCoreApplication::translate("kerf", "stopped"));
+        return positions.findChild<QLabel*>("runState")->text();
+    };
+    using Tab = StatusTabs::Tab;
+    ASSERT_TRUE(switchLanguage("pt"));
+    QCoreApplication::processEvents();  // LanguageChange is posted to each widget
+    EXPECT_EQ(value(Tab::Program, "Program"), QStringLiteral("nenhum"));
+    EXPECT_EQ(value(Tab::Program, "Cycle"), QStringLiteral("nenhum"));
+    EXPECT_EQ(value(Tab::Program, "M functions"), QStringLiteral("nenhuma"));
+    EXPECT_EQ(value(Tab::Tool, "Tool"), QStringLiteral("nenhuma"));
+    EXPECT_EQ(value(Tab::Transformations, "Mirrored axes"), QStringLiteral("nenhum"));
+    EXPECT_EQ(machineState(), QStringLiteral("Programa: parado   M\u00e1quina: parada"));
+    ASSERT_TRUE(switchLanguage("es"));
+    QCoreApplication::processEvents();  // LanguageChange is posted to each widget
+    EXPECT_EQ(value(Tab::Program, "Cycle"), QStringLiteral("ninguno"));
+    EXPECT_EQ(value(Tab::Program, "M functions"), QStringLiteral("ninguna"));
+    EXPECT_EQ(value(Tab::Tool, "Tool"), QStringLiteral("ninguna"));
+    EXPECT_EQ(machineState(), QStringLiteral("Programa: parado   M\u00e1quina: parada"));
+    ASSERT_TRUE(switchLanguage("de"));
+    QCoreApplication::processEvents();  // LanguageChange is posted to each widget
+    EXPECT_EQ(value(Tab::Program, "Cycle"), QStringLiteral("keiner"));
+    EXPECT_EQ(value(Tab::Program, "M functions"), QStringLiteral("keine"));
+    EXPECT_EQ(value(Tab::Tool, "Tool"), QStringLiteral("keines"));
+    ASSERT_TRUE(switchLanguage("pl"));
+    QCoreApplication::processEvents();  // LanguageChange is posted to each widget
+    EXPECT_EQ(value(Tab::Tool, "Tool"), QStringLiteral("brak"));
+    EXPECT_EQ(machineState(), QStringLiteral("Program: zatrzymany   Maszyna: zatrzymana"));
+    ASSERT_TRUE(switchLanguage("en"));
+    QCoreApplication::processEvents();  // LanguageChange is posted to each widget
+    EXPECT_EQ(value(Tab::Tool, "Tool"), QStringLiteral("none"));
 }
 
 }  // namespace

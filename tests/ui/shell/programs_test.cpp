@@ -71,6 +71,11 @@ TEST(NewProgram, TheMillWritesBeginPgmTheBlankAndEndPgmAndOpensIt) {
               "3 END PGM PLATE MM\n");
     EXPECT_EQ(window.program()->path(), dir / "PLATE.H");
     EXPECT_EQ(window.modes().programmingMode(), task::ProgrammingMode::Programming);
+    // The cursor waits at the end of the second BLK FORM, where the first block follows (it
+    // stood before BEGIN PGM: a block typed went into the header line).
+    const QTextCursor cursor = window.program()->editor()->textCursor();
+    EXPECT_EQ(cursor.blockNumber(), 2);
+    EXPECT_TRUE(cursor.atBlockEnd());
     // The new program passes the check.
     window.program()->checkNow();
     QSignalSpy checked(window.program(), &ProgramPanel::diagnosticsChanged);
@@ -120,6 +125,9 @@ TEST(NewProgram, InchAndALatheProgramWithItsPercentHeader) {
     window.setPrompts(answeringNewProgram(spec));
     ASSERT_TRUE(window.newProgram());
     EXPECT_EQ(fileText(dir / "SHAFT.PIM"), "%SHAFT,MX,\nN10 G70\nN20 M30\n");
+    // The cursor after G70, before M30.
+    EXPECT_EQ(window.program()->editor()->textCursor().blockNumber(), 1);
+    EXPECT_TRUE(window.program()->editor()->textCursor().atBlockEnd());
     EXPECT_EQ(window.program()->editor()->dialect(), program::Dialect::Fagor);
     // The name typed as the header writes it, with its %: the file and the header have one %.
     spec.name = "%PART";

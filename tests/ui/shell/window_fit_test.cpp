@@ -1,5 +1,8 @@
 #include <QCoreApplication>
+#include <QFontMetrics>
 #include <QPushButton>
+#include <QStyle>
+#include <QTableView>
 #include <fstream>
 #include <string>
 
@@ -12,6 +15,8 @@
 #include "ui/cycles/cycle_dialog.h"
 #include "ui/cycles/fagor_cycle_dialog.h"
 #include "ui/cycles/fagor_cycle_fields.h"
+#include "ui/settings/settings_model.h"
+#include "ui/settings/settings_page.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/mode_controller.h"
 #include "ui/shell/softkey_bar.h"
@@ -91,6 +96,49 @@ TEST_P(WindowFit, EveryScreenFits1280x800) {
         expectFits(window, QStringLiteral("FAGOR canned cycles"));
         ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("back")));
     }
+    ASSERT_TRUE(window.setLanguage(QStringLiteral("en")));
+}
+
+// The machine parameters' descriptions are read whole at 1280x800: each row is as high as its
+// description needs at the width of its column (they were cut after two lines with "...").
+TEST_P(WindowFit, MachineParameterDescriptionsAreReadWhole) {
+    test::testApp();
+    const Fit fit = GetParam();
+    HmiContext context;
+    context.machine = *machine::loadMachine(fit.machine);
+    const auto dir = kerf::test::uniqueTempDir("hmi_fit_settings");
+    context.ncRoot = dir;
+    context.recoveryFolder = dir / "recovery";
+    MainWindow window(std::move(context));
+    ASSERT_TRUE(window.setLanguage(fit.language));
+    window.resize(1280, 800);
+    window.show();
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("mod")));
+    ASSERT_TRUE(window.softkeys()->pressId(QStringLiteral("modSettings")));
+    QCoreApplication::processEvents();
+    auto* page = window.findChild<SettingsPage*>();
+    ASSERT_NE(page, nullptr);
+    ASSERT_TRUE(page->isVisible());
+    QTableView* view = page->view();
+    const SettingsModel* model = page->model();
+    const int column = SettingsModel::Description;
+    // The whole description column is on screen, without scrolling sideways.
+    EXPECT_LE(view->columnViewportPosition(column) + view->columnWidth(column),
+              view->viewport()->width());
+    // The item's text is inset by the focus frame's margin (plus one pixel) on each side.
+    const int margin = view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, view) + 1;
+    const QFontMetrics metrics(view->font());
+    int rows = 0;
+    for (int row = 0; row < model->rowCount(); ++row) {
+        if (model->isHeading(row)) continue;
+        const QString text = model->data(model->index(row, column), Qt::DisplayRole).toString();
+        const QRect needed = metrics.boundingRect(
+            QRect(0, 0, view->columnWidth(column) - 2 * margin, 100000), Qt::TextWordWrap, text);
+        EXPECT_LE(needed.height(), view->rowHeight(row))
+            << fit.language.toStdString() << " " << model->keyOf(row) << ": " << text.toStdString();
+        ++rows;
+    }
+    EXPECT_GT(rows, 20);
     ASSERT_TRUE(window.setLanguage(QStringLiteral("en")));
 }
 

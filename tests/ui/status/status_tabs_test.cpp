@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "qt_test_app.h"
+#include "ui/status/machine_functions.h"
 
 namespace kerf::ui {
 namespace {
@@ -280,6 +281,28 @@ TEST(StatusTabs, RowsAndTabsAreTallEnoughForTouch) {
         EXPECT_GE(t->rowHeight(0), 48);
     }
     EXPECT_GE(tabs.parameterFilter()->height(), 48);
+}
+
+// The machine's spindle and coolant replace the program's in the M functions: M4 from a spindle
+// turning backwards (negative speed), the program's M7 (mist) kept while a coolant is on, other
+// M functions (M91 is not modal, M41 a FAGOR gear range) left as they are.
+TEST(MachineFunctions, TheMachinesSpindleAndCoolantReplaceTheProgramsOnes) {
+    Status program;
+    program.activeM = {3, 7, 41};
+    program.motion.spindleRpm = 800.0;
+    task::MachineStatus machine;
+    machine.programmedSpindleRpm = 1200.0;
+    machine.actualSpindleRpm = -1150.0;  // ramping up counter-clockwise
+    machine.coolant = true;
+    Status shown = withMachineSpindleAndCoolant(program, machine);
+    EXPECT_EQ(shown.activeM, (std::vector<int>{4, 7, 41}));
+    EXPECT_EQ(shown.motion.spindleRpm, 1200.0);
+    machine.programmedSpindleRpm = 0.0;
+    machine.actualSpindleRpm = 0.0;
+    machine.coolant = false;
+    shown = withMachineSpindleAndCoolant(program, machine);
+    EXPECT_EQ(shown.activeM, (std::vector<int>{5, 9, 41}));
+    EXPECT_EQ(shown.motion.spindleRpm, 800.0);  // the S programmed stays while the spindle stands
 }
 
 }  // namespace

@@ -86,7 +86,8 @@ TEST(TranslationFiles, AllLanguagesListTheSameTexts) {
     for (const QString& name : tsFileNames()) {
         QSet<QString> texts;
         for (const TsMessage& message : readTsFileNamed(name).messages)
-            texts.insert(message.context + QLatin1Char('\t') + message.source);
+            texts.insert(message.context + QLatin1Char('\t') + message.source + QLatin1Char('\t') +
+                         message.disambiguation);
         if (first.isEmpty())
             first = texts;
         else
@@ -108,28 +109,34 @@ QString unescaped(const QString& body) {
     return text;
 }
 
-// C++ string literals of KERF_TR_NOOP("..." "...") in core, read independently of lupdate.
+// C++ string literals of KERF_TR_NOOP("..." "...") and KERF_TR_NOOP3("...", "disambiguation")
+// in core and motion, read independently of lupdate: the text, a tab and the disambiguation (if
+// any).
 QSet<QString> coreMessageTemplates() {
-    static const QRegularExpression call(
-        QStringLiteral(R"re(KERF_TR_NOOP\(\s*((?:"(?:[^"\\]|\\.)*"\s*)+)\))re"));
+    static const QRegularExpression call(QStringLiteral(
+        R"re(KERF_TR_NOOP(3?)\(\s*((?:"(?:[^"\\]|\\.)*"\s*)+)(?:,\s*"((?:[^"\\]|\\.)*)"\s*)?\))re"));
     static const QRegularExpression literal(QStringLiteral(R"re("((?:[^"\\]|\\.)*)")re"));
     QSet<QString> templates;
     QStringList files;
-    QDirIterator it(QStringLiteral(KERF_SOURCE_DIR "/core"), {"*.h", "*.cpp"}, QDir::Files,
-                    QDirIterator::Subdirectories);
-    while (it.hasNext())
-        files << it.next();
+    // motion/ too: the planner's refusals reach the operator (they were never translated).
+    for (const char* folder : {"/core", "/motion"}) {
+        QDirIterator it(QStringLiteral(KERF_SOURCE_DIR) + QLatin1String(folder), {"*.h", "*.cpp"},
+                        QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext())
+            files << it.next();
+    }
     for (const QString& path : files) {
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly)) continue;
         const QString code = QString::fromUtf8(file.readAll());
         auto calls = call.globalMatch(code);
         while (calls.hasNext()) {
+            const auto match = calls.next();
             QString text;
-            auto parts = literal.globalMatch(calls.next().captured(1));
+            auto parts = literal.globalMatch(match.captured(2));
             while (parts.hasNext())
                 text += unescaped(parts.next().captured(1));
-            templates.insert(text);
+            templates.insert(text + QLatin1Char('\t') + unescaped(match.captured(3)));
         }
     }
     return templates;
@@ -141,11 +148,12 @@ TEST(TranslationFiles, HoldEveryCoreMessageInTheKerfContext) {
     for (const QString& name : tsFileNames()) {
         QSet<QString> kerfContext;
         for (const TsMessage& message : readTsFileNamed(name).messages)
-            if (message.context == QLatin1String("kerf")) kerfContext.insert(message.source);
+            if (message.context == QLatin1String("kerf"))
+                kerfContext.insert(message.source + QLatin1Char('\t') + message.disambiguation);
         for (const QString& text : templates)
             EXPECT_TRUE(kerfContext.contains(text))
                 << name.toStdString() << " lacks \"" << text.toStdString()
-                << "\": run translations/update_ts.sh";
+                << "\" (text, tab, disambiguation): run translations/update_ts.sh";
     }
 }
 
@@ -154,7 +162,8 @@ TEST(TranslationChecks, FindADroppedPlaceholderCodeOrKeyword) {
                       QStringLiteral("cycle {1}: Q{2} = {3} is too large"),
                       {QStringLiteral("Zyklus {1}: Q{2} = {3} ist zu groß")},
                       false,
-                      true};
+                      true,
+                      {}};
     EXPECT_TRUE(translationProblems(message).isEmpty());
     message.translations = QStringList{QStringLiteral("Zyklus {1}: Q{2} ist zu groß")};
     EXPECT_EQ(translationProblems(message).size(), 1);
@@ -165,19 +174,22 @@ TEST(TranslationChecks, FindADroppedPlaceholderCodeOrKeyword) {
                          QStringLiteral("G37 needs G01"),
                          {QStringLiteral("G37 braucht eine Gerade")},
                          false,
-                         true};
+                         true,
+                         {}};
     EXPECT_EQ(translationProblems(code).size(), 1);
     const TsMessage keyword{QStringLiteral("kerf"),
                             QStringLiteral("no CYCL DEF before"),
                             {QStringLiteral("keine Zyklusdefinition davor")},
                             false,
-                            true};
+                            true,
+                            {}};
     EXPECT_EQ(translationProblems(keyword).size(), 2);  // CYCL and DEF
     const TsMessage qtStyle{QStringLiteral("MainWindow"),
                             QStringLiteral("Copy %1 to:"),
                             {QStringLiteral("Kopieren nach:")},
                             false,
-                            true};
+                            true,
+                            {}};
     EXPECT_EQ(translationProblems(qtStyle).size(), 1);
 }
 

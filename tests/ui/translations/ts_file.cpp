@@ -66,6 +66,8 @@ TsMessage readMessage(QXmlStreamReader& xml, const QString& context) {
     while (xml.readNextStartElement()) {
         if (xml.name() == QLatin1String("source"))
             message.source = xml.readElementText();
+        else if (xml.name() == QLatin1String("comment"))
+            message.disambiguation = xml.readElementText();
         else if (xml.name() == QLatin1String("translation"))
             readTranslation(xml, message);
         else

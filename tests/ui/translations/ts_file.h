@@ -13,7 +13,8 @@ struct TsMessage {
     QString source;
     QStringList translations;  // one text, or one per plural form of a numerus message
     bool numerus = false;
-    bool finished = false;  // no type="unfinished" (or obsolete, vanished) and no empty text
+    bool finished = false;   // no type="unfinished" (or obsolete, vanished) and no empty text
+    QString disambiguation;  // the <comment>: tells apart one source text's translations
 };
 
 struct TsFile {
