@@ -98,6 +98,8 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.remanentFile = request.remanentFile;
     settings.writeFiles = request.writeFiles;
     settings.slReturnToStart = machine.slReturnToStart;
+    settings.mdi = request.mdi;
+    settings.startSpindleRpm = request.spindleRpm;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
     loaded.removedMaterial = interpreter->removedMaterial();
     loaded.ready =

@@ -54,6 +54,9 @@ struct ProgramRequest {
     fagor::UserScreen* userScreen = nullptr;
     // FAGOR: the values of the IBn variables the operator gave for this run (n, value).
     std::vector<std::pair<int, double>> operatorInputs;
+    // An MDI block (TNC): starts with this spindle speed and leaves spindle and coolant running.
+    bool mdi = false;
+    double spindleRpm = 0.0;
 };
 
 struct LoadedProgram {

@@ -160,6 +160,9 @@ bool MachineSession::executeMdi(const QString& block) {
     request.startPosition->values = m_motion->world().position.values;
     request.presetInMachine = presetInMachine();
     request.basicRotationDeg = basicRotationDeg();
+    // A TNC's MDI keeps S, the spindle and the coolant from one block to the next.
+    request.mdi = true;
+    request.spindleRpm = m_modalSpindleRpm;
     m_programName.clear();
     if (!start(task::loadProgram(m_machine, request), std::nullopt, false)) return false;
     constexpr qsizetype kMaxMdiHistory = 50;
@@ -460,7 +463,9 @@ bool MachineSession::spindle(bool on, std::optional<double> rpm) {
     canon::SpindleControl control;
     control.direction = on ? canon::SpindleDirection::Clockwise : canon::SpindleDirection::Stopped;
     control.speedRpm = on ? rpm.value_or(m_manualSpindleRpm) : 0.0;
-    return m_motion->manualSpindle(control);
+    if (!m_motion->manualSpindle(control)) return false;
+    if (on) m_modalSpindleRpm = control.speedRpm;
+    return true;
 }
 
 void MachineSession::setFeedOverride(double fraction) {
@@ -495,6 +500,7 @@ void MachineSession::service() {
         interpreter && (state == task::RunState::Finished || state == task::RunState::Failed)) {
         const interp::ProgramStatus status = interpreter->programStatus();
         m_activeLatheOffset = status.tool.lathe;
+        if (status.motion.spindleRpm > 0.0) m_modalSpindleRpm = status.motion.spindleRpm;
         emit programStatusChanged(status);
     }
     // A probing cycle may have written row 0's basic rotation.

@@ -260,6 +260,9 @@ private:
     int m_servicesSinceProgramStatus = 0;
     double m_incrementMm = 1.0;
     double m_manualSpindleRpm = 1000.0;  // until the operator enters S
+    // The modal S an MDI block starts with: the last program's or MDI block's, or the speed the
+    // operator started the spindle at (0: none yet).
+    double m_modalSpindleRpm = 0.0;
     QStringList m_mdiHistory;
     Axis m_handwheelAxis = Axis::X;
     int m_handwheelFactor = 1;

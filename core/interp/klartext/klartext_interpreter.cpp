@@ -38,6 +38,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
       m_environment(std::make_unique<Environment>(*this)),
       m_parser(m_environment.get()),
       m_path(m_out) {
+    m_spindleSpeed = m_settings.startSpindleRpm;
     if (m_settings.machine != nullptr) {
         m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
         if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;
@@ -412,11 +413,11 @@ void KlartextInterpreter::finish(bool emitEnd, int mCode) {
     if (!waitForCheck()) return;
     if (!checkPathError(m_path.flush()) || !checkPathError(m_path.setLookAhead(0))) return;
     if (emitEnd && !m_endEmitted) {
-        if (m_spindle != canon::SpindleDirection::Stopped) {
+        if (m_spindle != canon::SpindleDirection::Stopped && !m_settings.mdi) {
             emit(canon::SpindleControl{canon::SpindleDirection::Stopped, m_spindleSpeed});
             m_spindle = canon::SpindleDirection::Stopped;
         }
-        if (m_coolant) {
+        if (m_coolant && !m_settings.mdi) {
             emit(canon::CoolantControl{false, false});
             m_coolant = false;
         }

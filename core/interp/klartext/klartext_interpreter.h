@@ -86,6 +86,11 @@ struct KlartextSettings {
     // the main program too when `mainProgramIso` is set. Unset: conversational only.
     SyntaxMaker isoSyntax;
     bool mainProgramIso = false;
+    // An MDI block run as a program of its own: it starts with the spindle speed S the machine
+    // was left with, and its end leaves the spindle and coolant as they are (a TNC's MDI keeps
+    // them between blocks; a program's END PGM switches them off).
+    bool mdi = false;
+    double startSpindleRpm = 0.0;
 };
 
 // The TNC 320 engine: runs conversational ("Klartext") programs, and DIN/ISO programs through the

@@ -146,6 +146,32 @@ TEST_F(MachineSessionTest, HalfFeedOverrideDoublesTheFeedTime) {
     EXPECT_NEAR(half, 1.5, 1.5 * 0.02);
 }
 
+TEST_F(MachineSessionTest, MdiKeepsSpindleCoolantAndSFromOneBlockToTheNext) {
+    // Each MDI block runs as a program of its own; as on a TNC, the S of an MDI TOOL CALL stays
+    // for the next block's M3, and the spindle and coolant stay on after each block (a
+    // program's END PGM switches them off; an MDI block's end does not).
+    auto mdi = [&](const char* block) {
+        ASSERT_TRUE(session->executeMdi(block)) << block;
+        ASSERT_TRUE(runToEnd()) << block;
+        EXPECT_EQ(session->runState(), RunState::Finished) << block;
+    };
+    mdi("TOOL CALL 1 Z S2000");
+    mdi("M3");
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 2000.0);
+    mdi("M8");
+    mdi("L X+5 FMAX");
+    settle();
+    EXPECT_NEAR(x(), 5.0, 1e-6);
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 2000.0);
+    EXPECT_GT(session->status().actualSpindleRpm, 1000.0);
+    EXPECT_TRUE(session->status().coolant);
+    mdi("M5");
+    mdi("M9");
+    settle();
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 0.0);
+    EXPECT_FALSE(session->status().coolant);
+}
+
 TEST_F(MachineSessionTest, StartAtBlockSkipsTheBlocksBeforeItWithTheStateRestored) {
     // Line 5 is block 4: the scan passes TOOL CALL 3 and blocks 2 and 3 without moving, then
     // approaches the end point of block 3 (X20 Y10 Z0) and runs block 4 to X40.
