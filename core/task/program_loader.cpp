@@ -67,6 +67,7 @@ void loadFagor(const machine::MachineConfig& machine, const ProgramRequest& requ
     }
     settings.userScreen = request.userScreen;
     settings.writeFiles = request.writeFiles;
+    settings.startSpindleRpm = request.spindleRpm;
     for (const auto& [n, value] : request.operatorInputs) {
         if (n >= 0 && n < static_cast<int>(settings.inputValues.size()))
             settings.inputValues[static_cast<size_t>(n)] = value;

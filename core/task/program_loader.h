@@ -54,7 +54,8 @@ struct ProgramRequest {
     fagor::UserScreen* userScreen = nullptr;
     // FAGOR: the values of the IBn variables the operator gave for this run (n, value).
     std::vector<std::pair<int, double>> operatorInputs;
-    // An MDI block (TNC): starts with this spindle speed and leaves spindle and coolant running.
+    // An MDI block: starts with this spindle speed S, and (TNC) its end leaves the spindle and
+    // the coolant running (a FAGOR block without M30 does anyway).
     bool mdi = false;
     double spindleRpm = 0.0;
 };

@@ -72,6 +72,7 @@ FagorInterpreter::FagorInterpreter(program::SourceRegistry& sources, FagorSettin
     m_output.setMachineOffset(m_startOffset);
     m_compensation.setCompMode(m_settings.compMode);
     resetModal();
+    m_spindle.rpm = m_settings.startSpindleRpm;
     if (m_settings.machine != nullptr) {
         m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
     }

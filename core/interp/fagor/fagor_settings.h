@@ -31,6 +31,9 @@ struct FagorSettings {
     // Where the tool stands when the program starts, machine coordinates (the panel knows it;
     // kerf run starts at the program's origin): the first move is drawn from there.
     std::optional<Pose> startInMachine;
+    // The spindle speed S the program starts with: an MDI block keeps the S the machine was left
+    // with (0: none programmed yet).
+    double startSpindleRpm = 0.0;
     // The user channel (spec part 2 §6.8): with a screen the program runs as the user
     // customisation program of its mode, drawing on it and reading the operator's keys and input.
     UserScreen* userScreen = nullptr;

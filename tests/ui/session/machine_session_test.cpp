@@ -514,6 +514,26 @@ TEST(MachineSessionLathe, SingleBlockRunsAFagorCannedCycleAsOneBlock) {
 // The FAGOR 8035 stops after every block in single block: M8 alone, the G4 dwell and T2 D2 get
 // their own stops, where the axes stand. A parameter assignment gives the machine nothing: it
 // runs with the next block (docs/hmi.md).
+TEST(MachineSessionLathe, MdiKeepsTheSpindleSpeedFromOneBlockToTheNext) {
+    // S1000 as one MDI block, M3 as the next: the spindle turns at 1000 rpm (it ran at S0).
+    test::testApp();
+    auto lathe = machine::loadMachine("lathe");
+    ASSERT_TRUE(lathe.ok());
+    MachineSession session(*lathe, test::connectSimulatedMachine(*lathe), "");
+    for (const char* block : {"G97 S1000", "M3"}) {
+        ASSERT_TRUE(session.executeMdi(block)) << block;
+        ASSERT_TRUE(test::serviceUntil(
+            session,
+            [&] {
+                return session.runState() == RunState::Finished ||
+                       session.runState() == RunState::Failed;
+            },
+            10s));
+        EXPECT_EQ(session.runState(), RunState::Finished) << block;
+    }
+    EXPECT_DOUBLE_EQ(session.status().programmedSpindleRpm, 1000.0);
+}
+
 TEST(MachineSessionLathe, SingleBlockStopsAfterAFagorBlockWithoutAMove) {
     test::testApp();
     auto lathe = machine::loadMachine("lathe");
