@@ -413,11 +413,14 @@ void KlartextInterpreter::finish(bool emitEnd, int mCode) {
     if (!waitForCheck()) return;
     if (!checkPathError(m_path.flush()) || !checkPathError(m_path.setLookAhead(0))) return;
     if (emitEnd && !m_endEmitted) {
-        if (m_spindle != canon::SpindleDirection::Stopped && !m_settings.mdi) {
+        // An MDI block's end leaves the machine as it is, unless the block is M2/M30, which
+        // switch off what may have run before it (the block's own program does not know that).
+        const bool mdiEnd = m_settings.mdi && mCode != 2 && mCode != 30;
+        if (!mdiEnd && (m_spindle != canon::SpindleDirection::Stopped || m_settings.mdi)) {
             emit(canon::SpindleControl{canon::SpindleDirection::Stopped, m_spindleSpeed});
             m_spindle = canon::SpindleDirection::Stopped;
         }
-        if (m_coolant && !m_settings.mdi) {
+        if (!mdiEnd && (m_coolant || m_settings.mdi)) {
             emit(canon::CoolantControl{false, false});
             m_coolant = false;
         }

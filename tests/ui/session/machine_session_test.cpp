@@ -170,6 +170,14 @@ TEST_F(MachineSessionTest, MdiKeepsSpindleCoolantAndSFromOneBlockToTheNext) {
     settle();
     EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 0.0);
     EXPECT_FALSE(session->status().coolant);
+    // M30 as an MDI block switches off what earlier blocks switched on.
+    mdi("M13");
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 2000.0);
+    EXPECT_TRUE(session->status().coolant);
+    mdi("M30");
+    settle();
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 0.0);
+    EXPECT_FALSE(session->status().coolant);
 }
 
 TEST_F(MachineSessionTest, StartAtBlockSkipsTheBlocksBeforeItWithTheStateRestored) {
