@@ -101,6 +101,7 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.slReturnToStart = machine.slReturnToStart;
     settings.mdi = request.mdi;
     settings.startSpindleRpm = request.spindleRpm;
+    settings.startSpindle = request.spindle;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
     loaded.removedMaterial = interpreter->removedMaterial();
     loaded.ready =

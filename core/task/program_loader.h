@@ -58,6 +58,8 @@ struct ProgramRequest {
     // the coolant running (a FAGOR block without M30 does anyway).
     bool mdi = false;
     double spindleRpm = 0.0;
+    // TNC: how the spindle turns when the block starts (a TOOL CALL S then changes its speed).
+    canon::SpindleDirection spindle = canon::SpindleDirection::Stopped;
 };
 
 struct LoadedProgram {

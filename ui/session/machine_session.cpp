@@ -163,6 +163,11 @@ bool MachineSession::executeMdi(const QString& block) {
     // A TNC's MDI keeps S, the spindle and the coolant from one block to the next.
     request.mdi = true;
     request.spindleRpm = m_modalSpindleRpm;
+    if (m_status.programmedSpindleRpm > 0.0) {
+        request.spindle = m_status.actualSpindleRpm < 0.0
+                              ? canon::SpindleDirection::CounterClockwise
+                              : canon::SpindleDirection::Clockwise;
+    }
     m_programName.clear();
     if (!start(task::loadProgram(m_machine, request), std::nullopt, false)) return false;
     constexpr qsizetype kMaxMdiHistory = 50;

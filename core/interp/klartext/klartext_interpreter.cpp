@@ -39,6 +39,7 @@ KlartextInterpreter::KlartextInterpreter(program::SourceRegistry& sources,
       m_parser(m_environment.get()),
       m_path(m_out) {
     m_spindleSpeed = m_settings.startSpindleRpm;
+    m_spindle = m_settings.startSpindle;
     if (m_settings.machine != nullptr) {
         m_machineAxes = axisMaskOf(m_settings.machine->enabledAxisLetters());
         if (auto axis = axisFromLetter(m_settings.machine->toolAxis)) m_toolAxis = *axis;

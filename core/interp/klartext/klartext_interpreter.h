@@ -91,6 +91,7 @@ struct KlartextSettings {
     // them between blocks; a program's END PGM switches them off).
     bool mdi = false;
     double startSpindleRpm = 0.0;
+    canon::SpindleDirection startSpindle = canon::SpindleDirection::Stopped;  // as it turns
 };
 
 // The TNC 320 engine: runs conversational ("Klartext") programs, and DIN/ISO programs through the

@@ -165,6 +165,9 @@ TEST_F(MachineSessionTest, MdiKeepsSpindleCoolantAndSFromOneBlockToTheNext) {
     EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 2000.0);
     EXPECT_GT(session->status().actualSpindleRpm, 1000.0);
     EXPECT_TRUE(session->status().coolant);
+    // A TOOL CALL with a new S changes the speed of the spindle an earlier block started.
+    mdi("TOOL CALL 1 Z S3000");
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 3000.0);
     mdi("M5");
     mdi("M9");
     settle();
@@ -172,7 +175,7 @@ TEST_F(MachineSessionTest, MdiKeepsSpindleCoolantAndSFromOneBlockToTheNext) {
     EXPECT_FALSE(session->status().coolant);
     // M30 as an MDI block switches off what earlier blocks switched on.
     mdi("M13");
-    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 2000.0);
+    EXPECT_DOUBLE_EQ(session->status().programmedSpindleRpm, 3000.0);
     EXPECT_TRUE(session->status().coolant);
     mdi("M30");
     settle();
