@@ -25,7 +25,7 @@ class PngPicture final : public PictureOutput {
 public:
     PngPicture(const RunOptions& options, const Session& session)
         : m_file(options.png->string()),
-          m_millCutter(graphics::millCutterWithPointAngles(session.program.tools.get())) {
+          m_millCutter(graphics::millCutterFromToolTable(session.program.tools.get())) {
         const graphics::SceneOptions machineScene = graphics::sceneOptionsFor(session.machine);
         m_lathe = machineScene.lathe;
         m_limits = machineScene.limits;

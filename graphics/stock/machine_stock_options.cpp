@@ -7,7 +7,7 @@
 
 namespace kerf::graphics {
 
-std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
+std::function<MillCutter(const canon::ToolChange&)> millCutterFromToolTable(
     const tables::ToolTable* tools) {
     std::map<int, double> pointAngles;
     std::set<int> probes;
@@ -47,7 +47,7 @@ StockOptions stockOptionsFor(const machine::MachineConfig& machine, const tables
         blank.zMin = bar.faceZMm - bar.lengthMm;
         options.bar = blank;
     }
-    options.millCutter = millCutterWithPointAngles(tools);
+    options.millCutter = millCutterFromToolTable(tools);
     return options;
 }
 

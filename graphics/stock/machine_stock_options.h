@@ -19,7 +19,7 @@ namespace kerf::graphics {
 // from `tools` (the canonical tool change does not carry it), and a touch probe's stylus, which
 // removes nothing, for a tool with a TP_NO. The table's values are copied: the cutter may
 // outlive the table. No table: flat or ball cutters only.
-std::function<MillCutter(const canon::ToolChange&)> millCutterWithPointAngles(
+std::function<MillCutter(const canon::ToolChange&)> millCutterFromToolTable(
     const tables::ToolTable* tools);
 
 // The stock simulation of a program on `machine`, the same for `kerf run --stock` and the test

@@ -121,7 +121,7 @@ TEST(HeightField, ATouchProbeRemovesNothingAndAMillWithTheSameMovesDoes) {
         "TOOL.T");
     ASSERT_TRUE(tools.ok()) << tools.error().format();
     StockOptions options;
-    options.millCutter = millCutterWithPointAngles(&*tools);
+    options.millCutter = millCutterFromToolTable(&*tools);
     for (int tool : {1, 2}) {
         StockSimulation simulation(options);
         CanonBuilder b;
