@@ -8870,6 +8870,10 @@ wählen</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>Zyklus {1}: eine in der Ebene ZX oder YZ gemessene Drehung (Q1139 = {2}) dreht um X oder Y; übernommen werden kann nur eine Grunddrehung um die Werkzeugachse (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
+        <translation>Tastsystemzyklus {1}: die simulierten Werkzeuge können nicht geschrieben werden: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8870,6 +8870,10 @@ solución</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: un giro medido en el plano ZX o YZ (Q1139 = {2}) gira alrededor de X o Y; solo se puede aceptar un giro básico alrededor del eje de la herramienta (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
+        <translation>ciclo de palpación {1}: no se pueden escribir las herramientas simuladas: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

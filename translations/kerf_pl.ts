@@ -8873,6 +8873,10 @@ rozwiązanie</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>cykl {1}: obrót zmierzony w płaszczyźnie ZX lub YZ (Q1139 = {2}) jest obrotem wokół X lub Y; przejąć można tylko obrót podstawowy wokół osi narzędzia (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
+        <translation>cykl sondy {1}: nie można zapisać symulowanych narzędzi: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8870,6 +8870,10 @@ solução</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
+        <translation>ciclo de apalpação {1}: não é possível escrever as ferramentas simuladas: {2}</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -443,6 +443,8 @@ private:
                                 uint16_t statusParameter);
     std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
     workpiece::RealTool realTool(const tables::ToolData& row) const;
+    const workpiece::RealTool* recordedRealTool(int tool) const;
+    bool recordRealTool(int cycle, int tool);
     void writeToolProbeCalibration(int cycle, const cycles::probing::ToolProbeData& tt);
     void readToolProbeCalibration(cycles::probing::ToolProbeData& tt);
     struct ToolTableEdit {  // what a probing cycle writes into a tool's row
@@ -691,6 +693,12 @@ private:
     std::optional<double> m_orientAngle;           // cycle 13
     std::optional<tables::ToolTable> m_toolTable;  // TOOL.T once a TT cycle has written it
     std::optional<cycles::probing::ToolProbeData> m_ttCalibration;  // cycle 30/480 of this run
+    // SIMTOOLS.TXT of the NC root, read when first needed.
+    struct RecordedRealTool {
+        workpiece::RealTool real;
+        double errorLength = 0.0, errorRadius = 0.0;  // the machine file's when it was recorded
+    };
+    mutable std::optional<std::map<int, RecordedRealTool>> m_recordedRealTools;
     // An old-format TT cycle (TCH PROBE 31.0 ...) collecting its sub-blocks.
     struct OldToolProbe {
         int number = -1;

@@ -72,7 +72,14 @@ private:
     double m_rpm;
 };
 
-// The real tool: as the table held it when the run started, plus the machine file's error.
+namespace {
+// The simulated machine's real tools, kept from run to run: "T length radius" lines, mm, each
+// followed by the machine file's error it was made with.
+constexpr const char* kRealToolsFile = "SIMTOOLS.TXT";
+}  // namespace
+
+// The real tool: as recorded in SIMTOOLS.TXT, else as the table held it when the run started plus
+// the machine file's error.
 workpiece::RealTool KlartextInterpreter::realTool(const tables::ToolData& row) const {
     const tables::ToolData* original =
         m_settings.tools != nullptr ? m_settings.tools->byNumber(row.number) : nullptr;
@@ -80,12 +87,67 @@ workpiece::RealTool KlartextInterpreter::realTool(const tables::ToolData& row) c
     workpiece::RealTool real{start.length + start.deltaLength, start.radius + start.deltaRadius};
     const machine::ToolErrorConfig* error =
         m_settings.machine != nullptr ? m_settings.machine->toolError(row.number) : nullptr;
-    if (error != nullptr) {
+    if (error == nullptr) return real;
+    real.centreOffset = Vec2(error->centreOffsetMm[0], error->centreOffsetMm[1]);
+    if (const workpiece::RealTool* recorded = recordedRealTool(row.number)) {
+        real.length = recorded->length;
+        real.radius = recorded->radius;
+    } else {
         real.length += error->lengthMm;
         real.radius += error->radiusMm;
-        real.centreOffset = Vec2(error->centreOffsetMm[0], error->centreOffsetMm[1]);
     }
     return real;
+}
+
+// The recorded real tool, unless the machine file's error changed since (another real tool).
+const workpiece::RealTool* KlartextInterpreter::recordedRealTool(int tool) const {
+    if (!m_recordedRealTools) {
+        m_recordedRealTools.emplace();
+        if (auto bytes = m_root.read(m_root.path() / kRealToolsFile)) {
+            std::istringstream in{std::string(*bytes)};
+            int number = 0;
+            RecordedRealTool record;
+            while (in >> number >> record.real.length >> record.real.radius >> record.errorLength >>
+                   record.errorRadius) {
+                if (std::isfinite(record.real.length) && std::isfinite(record.real.radius))
+                    (*m_recordedRealTools)[number] = record;
+            }
+        }
+    }
+    auto found = m_recordedRealTools->find(tool);
+    const machine::ToolErrorConfig* error =
+        m_settings.machine != nullptr ? m_settings.machine->toolError(tool) : nullptr;
+    if (found == m_recordedRealTools->end() || error == nullptr ||
+        found->second.errorLength != error->lengthMm ||
+        found->second.errorRadius != error->radiusMm) {
+        return nullptr;
+    }
+    return &found->second.real;
+}
+
+// A real tool does not change when a measurement corrects its table row: before the first
+// correction of a tool with a [[simulation.tool_error]], its real size is written down, and later
+// runs take it from there instead of adding the error to the corrected row again.
+bool KlartextInterpreter::recordRealTool(int cycle, int tool) {
+    const tables::ToolData* row = toolTable() != nullptr ? toolTable()->byNumber(tool) : nullptr;
+    if (row == nullptr || m_settings.machine == nullptr ||
+        m_settings.machine->toolError(tool) == nullptr || recordedRealTool(tool) != nullptr) {
+        return true;
+    }
+    const machine::ToolErrorConfig& toolError = *m_settings.machine->toolError(tool);
+    (*m_recordedRealTools)[tool] = {realTool(*row), toolError.lengthMm, toolError.radiusMm};
+    std::string text;
+    for (const auto& [number, record] : *m_recordedRealTools) {
+        text += std::to_string(number) + " " + formatFixed(record.real.length, 6) + " " +
+                formatFixed(record.real.radius, 6) + " " + formatFixed(record.errorLength, 6) +
+                " " + formatFixed(record.errorRadius, 6) + "\n";
+    }
+    if (auto error = replaceFile(m_root.path() / kRealToolsFile, text)) {
+        fail("io", KERF_TR_NOOP("touch probe cycle {1}: cannot write the simulated tools: {2}"),
+             {std::to_string(cycle), error->format()});
+        return false;
+    }
+    return true;
 }
 
 namespace {
@@ -334,6 +396,7 @@ void KlartextInterpreter::executeToolMeasurement(
 bool KlartextInterpreter::writeToolTable(int cycle, int tool, int index,
                                          const ToolTableEdit& edit) {
     if (!waitForCheck()) return false;
+    if (!recordRealTool(cycle, tool)) return false;
     tables::ToolTable table = *toolTable();
     auto set = [&](const char* column, const std::optional<double>& value) -> bool {
         if (!value) return true;

@@ -322,6 +322,36 @@ TEST_F(ToolMeasurementTest, CalibrationSurvivesTheRun) {
     EXPECT_NEAR(q(116), 0.008, 1e-9);
 }
 
+TEST_F(ToolMeasurementTest, TheRealToolStaysTheSameFromRunToRun) {
+    // Tool 3 is really 100.05 long and 4.988 in radius (L 100, R 5 in its row). Each run starts
+    // from the table the run before wrote, as `kerf run` and the panel do.
+    useMachine("[[simulation.tool_error]]\ntool = 3\nlength = 0.05\nradius = -0.012\n");
+    const std::string check =
+        "1 TOOL CALL 3 Z\n2 TCH PROBE 483 MEASURE TOOL\n  Q340=1\n"
+        "  Q260=+200\n  Q341=0\n";
+    for (int pass = 0; pass < 2; ++pass) {
+        ASSERT_EQ(run(check), interp::RunStatus::Finished) << firstError();
+        tools = written();
+        // The same deviations from L and R each time, not the error added to the corrected row.
+        EXPECT_NEAR(q(115), 0.05, 1e-9) << "pass " << pass;
+        EXPECT_NEAR(q(116), -0.012, 1e-9) << "pass " << pass;
+        EXPECT_NEAR(tools.byNumber(3)->deltaLength, 0.05, 1e-9);
+        EXPECT_FALSE(tools.byNumber(3)->locked);
+    }
+    // Measured anew (Q340=0: L and R written, DL = DR = 0), the next check finds nothing to
+    // correct.
+    ASSERT_EQ(run("1 TOOL CALL 3 Z\n2 TCH PROBE 483 MEASURE TOOL\n  Q340=0\n  Q260=+200\n"
+                  "  Q341=0\n"),
+              interp::RunStatus::Finished)
+        << firstError();
+    tools = written();
+    EXPECT_NEAR(tools.byNumber(3)->length, 100.05, 1e-9);
+    EXPECT_NEAR(tools.byNumber(3)->radius, 4.988, 1e-9);
+    ASSERT_EQ(run(check), interp::RunStatus::Finished) << firstError();
+    EXPECT_NEAR(q(115), 0.0, 1e-9);
+    EXPECT_NEAR(q(116), 0.0, 1e-9);
+}
+
 TEST_F(ToolMeasurementTest, OldCalibrationCycle30) {
     useMachine("");
     ASSERT_EQ(run("1 TOOL CALL 9 Z\n2 TCH PROBE 30.0 CALIBRATE TT\n3 TCH PROBE 30.1 HEIGHT: +90\n"
