@@ -8871,6 +8871,34 @@ wählen</translation>
         <translation>Zyklus {1}: eine in der Ebene ZX oder YZ gemessene Drehung (Q1139 = {2}) dreht um X oder Y; übernommen werden kann nur eine Grunddrehung um die Werkzeugachse (Q1121 = 0)</translation>
     </message>
     <message>
+        <source>cycle {1}: Q{2} is given as an actual position, but neither edge is probed along that axis</source>
+        <translation>Zyklus {1}: Q{2} ist als Istposition angegeben, aber keine der beiden Kanten wird entlang dieser Achse angetastet</translation>
+    </message>
+    <message>
+        <source>Direction of the extrusion: 1 main axis, 2 secondary, 3 tool axis</source>
+        <translation>Richtung der Extrusion: 1 Hauptachse, 2 Nebenachse, 3 Werkzeugachse</translation>
+    </message>
+    <message>
+        <source>Length of the extrusion (incremental, the sign gives the way)</source>
+        <translation>Länge der Extrusion (inkremental, das Vorzeichen gibt die Richtung)</translation>
+    </message>
+    <message>
+        <source>Number of further touch points along the extrusion</source>
+        <translation>Anzahl weiterer Antastpunkte entlang der Extrusion</translation>
+    </message>
+    <message>
+        <source>Extrusion active for: 0 the next 14xx cycle, 1 all following</source>
+        <translation>Extrusion wirksam für: 0 den nächsten 14xx-Zyklus, 1 alle folgenden</translation>
+    </message>
+    <message>
+        <source>PROBING EXTRUSION</source>
+        <translation>ANTASTEN EXTRUSION</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) takes no actual position (nominal@actual is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: Parameter {2} ({3}) nimmt keine Istposition an (Soll@Ist gilt für die Sollpositionen eines 14xx-Zyklus)</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>Tastsystemzyklus {1}: die simulierten Werkzeuge können nicht geschrieben werden: {2}</translation>
     </message>

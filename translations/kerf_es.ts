@@ -8871,6 +8871,34 @@ solución</translation>
         <translation>ciclo {1}: un giro medido en el plano ZX o YZ (Q1139 = {2}) gira alrededor de X o Y; solo se puede aceptar un giro básico alrededor del eje de la herramienta (Q1121 = 0)</translation>
     </message>
     <message>
+        <source>cycle {1}: Q{2} is given as an actual position, but neither edge is probed along that axis</source>
+        <translation>ciclo {1}: Q{2} se ha indicado como posición real, pero ninguna de las dos aristas se palpa a lo largo de ese eje</translation>
+    </message>
+    <message>
+        <source>Direction of the extrusion: 1 main axis, 2 secondary, 3 tool axis</source>
+        <translation>Dirección de la extrusión: 1 eje principal, 2 eje secundario, 3 eje de herramienta</translation>
+    </message>
+    <message>
+        <source>Length of the extrusion (incremental, the sign gives the way)</source>
+        <translation>Longitud de la extrusión (incremental, el signo indica el sentido)</translation>
+    </message>
+    <message>
+        <source>Number of further touch points along the extrusion</source>
+        <translation>Número de puntos de palpación adicionales a lo largo de la extrusión</translation>
+    </message>
+    <message>
+        <source>Extrusion active for: 0 the next 14xx cycle, 1 all following</source>
+        <translation>Extrusión activa para: 0 el siguiente ciclo 14xx, 1 todos los siguientes</translation>
+    </message>
+    <message>
+        <source>PROBING EXTRUSION</source>
+        <translation>PALPAR EXTRUSIÓN</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) takes no actual position (nominal@actual is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: el parámetro {2} ({3}) no admite posición real (nominal@real es para las posiciones nominales de un ciclo 14xx)</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>ciclo de palpación {1}: no se pueden escribir las herramientas simuladas: {2}</translation>
     </message>

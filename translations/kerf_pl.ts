@@ -8874,6 +8874,34 @@ rozwiązanie</translation>
         <translation>cykl {1}: obrót zmierzony w płaszczyźnie ZX lub YZ (Q1139 = {2}) jest obrotem wokół X lub Y; przejąć można tylko obrót podstawowy wokół osi narzędzia (Q1121 = 0)</translation>
     </message>
     <message>
+        <source>cycle {1}: Q{2} is given as an actual position, but neither edge is probed along that axis</source>
+        <translation>cykl {1}: Q{2} podano jako pozycję rzeczywistą, ale żadna z krawędzi nie jest próbkowana wzdłuż tej osi</translation>
+    </message>
+    <message>
+        <source>Direction of the extrusion: 1 main axis, 2 secondary, 3 tool axis</source>
+        <translation>Kierunek wyciągnięcia: 1 oś główna, 2 oś pomocnicza, 3 oś narzędzia</translation>
+    </message>
+    <message>
+        <source>Length of the extrusion (incremental, the sign gives the way)</source>
+        <translation>Długość wyciągnięcia (przyrostowo, znak określa kierunek)</translation>
+    </message>
+    <message>
+        <source>Number of further touch points along the extrusion</source>
+        <translation>Liczba dalszych punktów próbkowania wzdłuż wyciągnięcia</translation>
+    </message>
+    <message>
+        <source>Extrusion active for: 0 the next 14xx cycle, 1 all following</source>
+        <translation>Wyciągnięcie aktywne dla: 0 następnego cyklu 14xx, 1 wszystkich następnych</translation>
+    </message>
+    <message>
+        <source>PROBING EXTRUSION</source>
+        <translation>PRÓBKOWANIE WYCIĄGNIĘCIA</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) takes no actual position (nominal@actual is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: parametr {2} ({3}) nie przyjmuje pozycji rzeczywistej (zadana@rzeczywista dotyczy pozycji zadanych cyklu 14xx)</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>cykl sondy {1}: nie można zapisać symulowanych narzędzi: {2}</translation>
     </message>

@@ -8871,6 +8871,34 @@ solução</translation>
         <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>
     <message>
+        <source>cycle {1}: Q{2} is given as an actual position, but neither edge is probed along that axis</source>
+        <translation>ciclo {1}: Q{2} foi indicado como posição real, mas nenhuma das arestas é apalpada ao longo desse eixo</translation>
+    </message>
+    <message>
+        <source>Direction of the extrusion: 1 main axis, 2 secondary, 3 tool axis</source>
+        <translation>Direção da extrusão: 1 eixo principal, 2 eixo secundário, 3 eixo da ferramenta</translation>
+    </message>
+    <message>
+        <source>Length of the extrusion (incremental, the sign gives the way)</source>
+        <translation>Comprimento da extrusão (incremental, o sinal indica o sentido)</translation>
+    </message>
+    <message>
+        <source>Number of further touch points along the extrusion</source>
+        <translation>Número de pontos de apalpação adicionais ao longo da extrusão</translation>
+    </message>
+    <message>
+        <source>Extrusion active for: 0 the next 14xx cycle, 1 all following</source>
+        <translation>Extrusão ativa para: 0 o ciclo 14xx seguinte, 1 todos os seguintes</translation>
+    </message>
+    <message>
+        <source>PROBING EXTRUSION</source>
+        <translation>APALPAR EXTRUSÃO</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) takes no actual position (nominal@actual is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: o parâmetro {2} ({3}) não aceita posição real (nominal@real é para as posições nominais de um ciclo 14xx)</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>ciclo de apalpação {1}: não é possível escrever as ferramentas simuladas: {2}</translation>
     </message>

@@ -18,9 +18,27 @@ double boxDistance(const Box& box, const Vec3& p) {
     return outside + inside;
 }
 
+// `p` split into its coordinate along the cylinder's axis and the other two (Cylinder's order).
+struct AxialSplit {
+    double along;
+    Vec2 across;
+};
+
+AxialSplit splitAlong(Axis axis, const Vec3& p) {
+    switch (axis) {
+        case Axis::X:
+            return {p.x(), Vec2(p.y(), p.z())};
+        case Axis::Y:
+            return {p.y(), Vec2(p.x(), p.z())};
+        default:
+            return {p.z(), Vec2(p.x(), p.y())};
+    }
+}
+
 double cylinderDistance(const Cylinder& c, const Vec3& p) {
-    const double radial = (Vec2(p.x(), p.y()) - c.centre).norm() - c.radius;
-    const double axial = std::max(c.zMin - p.z(), p.z() - c.zMax);
+    const AxialSplit s = splitAlong(c.axis, p);
+    const double radial = (s.across - c.centre).norm() - c.radius;
+    const double axial = std::max(c.axialMin - s.along, s.along - c.axialMax);
     const Vec2 q(radial, axial);
     return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
 }
@@ -37,7 +55,10 @@ double solidTop(const Solid& solid) {
     if (const auto* box = std::get_if<Box>(&solid.shape)) return box->max.z();
     if (const auto* sphere = std::get_if<Sphere>(&solid.shape))
         return sphere->centre.z() + sphere->radius;
-    return std::get<Cylinder>(solid.shape).zMax;
+    const auto& cylinder = std::get<Cylinder>(solid.shape);
+    // A lying cylinder's centre has z second (y z, x z).
+    if (cylinder.axis != Axis::Z) return cylinder.centre.y() + cylinder.radius;
+    return cylinder.axialMax;
 }
 
 }  // namespace

@@ -18,12 +18,15 @@ struct Box {
     Vec3 min{0.0, 0.0, 0.0};
     Vec3 max{0.0, 0.0, 0.0};
 };
-// A cylinder about the tool axis from zMin to zMax.
+// A cylinder about a line parallel to `axis` (the tool axis unless told), from `axialMin` to
+// `axialMax` along it. `centre` places the line in the other two axes, in the order x, y, z
+// leaves them (Z: x y, X: y z, Y: x z): a blank lying on an A or B table.
 struct Cylinder {
     Vec2 centre{0.0, 0.0};
     double radius = 0.0;
-    double zMin = 0.0;
-    double zMax = 0.0;
+    double axialMin = 0.0;
+    double axialMax = 0.0;
+    Axis axis = Axis::Z;
 };
 
 struct Sphere {

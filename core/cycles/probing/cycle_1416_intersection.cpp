@@ -1,7 +1,8 @@
 // Cycle 1416 PROBING INTERSECTION (spec 8): two touches on each of two edges; the intersection of
 // the measured edges, their misalignment and the deviations along the surface normals, in the
-// plane Q1139 chooses (seed 004: XY, ZX and YZ). No semi-automatic mode ("?", "@") and no
-// extrusion (1493): the seed cuts their syntax off.
+// plane Q1139 chooses (seed 004: XY, ZX and YZ). Nominal positions written "nominal@actual" are
+// not probed (docs/probing.md says which touches that leaves out); a 1493 before it repeats the
+// touch points along a line (Q970-Q972). No semi-automatic mode ("?").
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 
 #include "core/cycles/probing/probe_geometry.h"
 #include "core/cycles/probing/probe_sequence.h"
+#include "core/cycles/probing/probing_14xx.h"
 #include "core/cycles/probing/probing_parameters.h"
 #include "core/cycles/probing/probing_registry_entries.h"
 
@@ -67,8 +69,9 @@ constexpr ParameterDescriptor kParameters[] = {
     choice(1121, KERF_TR_NOOP("Accept rotation: 0 no, 1/3/5 basic rotation from edge 1/2/mean"), 0,
            6, 0)};
 
-constexpr uint16_t kResults[] = {950, 951, 952, 953, 954, 955, 956, 957, 958, 959, 960, 964, 965,
-                                 980, 981, 982, 983, 984, 985, 986, 987, 988, 989, 990, 994, 995};
+constexpr uint16_t kResults[] = {950, 951, 952, 953, 954, 955, 956, 957, 958, 959,
+                                 960, 964, 965, 970, 971, 972, 980, 981, 982, 983,
+                                 984, 985, 986, 987, 988, 989, 990, 994, 995};
 
 // A tolerance "upper-lower" (both magnitudes: +upper, -lower) or "t" (±t); empty: none.
 struct Tolerance {
@@ -111,6 +114,70 @@ Plane planeOf(int q1139) {
     return {0, 1, 2};                  // XY, third axis Z
 }
 
+// Which edges are not probed because a coordinate of the intersection is given as its actual
+// position: an edge probed along the main (secondary) axis measures only that coordinate, so
+// Q1100 (Q1101) written "nominal@actual" replaces its touches. An actual that no edge measures
+// alone (both edges oblique to that axis) is refused.
+std::optional<CycleError> edgesGivenAsActual(const CycleValues& v,
+                                             const std::array<Vec2, 2>& directions,
+                                             std::array<bool, 2>& given) {
+    given = {false, false};
+    for (int axis = 0; axis < 2; ++axis) {
+        const auto q = static_cast<uint16_t>(1100 + axis);
+        if (!actualPosition(v, q)) continue;
+        bool used = false;
+        for (size_t edge = 0; edge < 2; ++edge) {
+            if (std::abs(directions[edge][axis]) > 1.0 - 1e-9) given[edge] = used = true;
+        }
+        if (!used) {
+            return probingError(1416, "cycle-parameter",
+                                KERF_TR_NOOP("cycle {1}: Q{2} is given as an actual position, "
+                                             "but neither edge is probed along that axis"),
+                                {std::to_string(q)});
+        }
+    }
+    return std::nullopt;
+}
+
+// One touch point as measured: the surface point in the plane and its deviation along the
+// surface normal (against the probing direction); with an extrusion (1493) the largest change of
+// that deviation along it (Q970-Q972), signed, and the extremes over the point and its
+// repetitions (for the tolerance).
+struct MeasuredPoint {
+    Vec2 surface{0.0, 0.0};
+    double extruded = 0.0;
+    double highest = 0.0;
+    double lowest = 0.0;
+};
+
+// Touches the nominal point `nominal` (local coordinates) along `direction`, then again at each
+// step of the extrusion.
+std::optional<CycleError> touchPoint(ProbeSequence& sequence, const Plane& plane,
+                                     const Vec3& nominal, const Vec3& direction,
+                                     const std::optional<Extrusion>& extrusion,
+                                     MeasuredPoint& out) {
+    const int repeats = extrusion ? extrusion->repeats : 0;
+    const Vec3 step = extrusion ? extrusion->step : Vec3::Zero();
+    double first = 0.0;
+    for (int r = 0; r <= repeats; ++r) {
+        const Vec3 at = nominal + static_cast<double>(r) * step;
+        Vec3 ball;
+        if (auto e = sequence.touchFromPoint(at - sequence.standOff() * direction, direction, ball))
+            return e;
+        const Vec3 surface = ball + sequence.ballRadius() * direction;
+        const double deviation = (surface - at).dot(-direction);
+        if (r == 0) {
+            out.surface = plane.inPlane(surface);
+            first = out.highest = out.lowest = deviation;
+            continue;
+        }
+        if (std::abs(deviation - first) > std::abs(out.extruded)) out.extruded = deviation - first;
+        out.highest = std::max(out.highest, deviation);
+        out.lowest = std::min(out.lowest, deviation);
+    }
+    return std::nullopt;
+}
+
 std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, ProbingMachine& machine,
                               ProbingResults& results) {
     const int accept = v.integer(1121);
@@ -150,22 +217,37 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     const Plane plane = planeOf(v.integer(1139));
     const double height = v.number(1102);
     const Vec2 nominal(v.number(1100), v.number(1101));
+    const Vec2 actual(actualPosition(v, 1100).value_or(0.0), actualPosition(v, 1101).value_or(0.0));
     const std::array<double, 2> angles = {v.number(1130), v.number(1134)};
-    std::array<Vec2, 4> points, touched;
     std::array<Vec2, 2> directions;
+    for (size_t edge = 0; edge < 2; ++edge) {
+        directions[edge] =
+            unit(angles[edge] + v.integer(static_cast<uint16_t>(1131 + 4 * edge)) * 90.0);
+    }
+    std::array<bool, 2> given;
+    if (auto e = edgesGivenAsActual(v, directions, given)) return e;
+    const std::optional<Extrusion> extrusion = extrusionOf(v);
+    std::array<Vec2, 4> points, touched;
+    std::array<MeasuredPoint, 4> measured;
     for (size_t edge = 0; edge < 2; ++edge) {
         const auto q = static_cast<uint16_t>(1130 + 4 * edge);
         const Vec2 along = unit(angles[edge]);
-        directions[edge] = unit(angles[edge] + v.integer(q + 1) * 90.0);
         const Vec3 direction = plane.local(directions[edge], 0.0);
         for (size_t k = 0; k < 2; ++k) {
             const size_t i = 2 * edge + k;
             points[i] = nominal + v.number(static_cast<uint16_t>(q + 2 + k)) * along;
-            const Vec2 start = points[i] - sequence.standOff() * directions[edge];
-            Vec3 ball;
-            if (auto e = sequence.touchFromPoint(plane.local(start, height), direction, ball))
+            if (given[edge]) {
+                // Not probed: the nominal point moved onto the actual coordinate it measures.
+                const int axis = std::abs(directions[edge].x()) > 0.5 ? 0 : 1;
+                measured[i].surface = points[i];
+                measured[i].surface[axis] = actual[axis];
+                measured[i].highest = measured[i].lowest =
+                    (measured[i].surface - points[i]).dot(-directions[edge]);
+            } else if (auto e = touchPoint(sequence, plane, plane.local(points[i], height),
+                                           direction, extrusion, measured[i])) {
                 return e;
-            touched[i] = plane.inPlane(ball + probe.ballRadius * direction);
+            }
+            touched[i] = measured[i].surface;
         }
         if (v.integer(1125) == 1) sequence.retract();
     }
@@ -178,15 +260,18 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         return probingError(1416, "PRB-019", KERF_TR_NOOP("cycle {1}: the two edges are parallel"));
     }
     // Three measured points and their deviations in (a, b, c) (the fourth is not exported,
-    // spec 8.3); the touches run at the height Q1102, so c deviates by 0.
+    // spec 8.3); the touches run at the height Q1102, so c deviates by 0 unless Q1102 gives the
+    // actual height.
+    const double actualHeight = actualPosition(v, 1102).value_or(height);
     for (size_t i = 0; i < 3; ++i) {
         const auto at = static_cast<uint16_t>(3 * i);
         results.set(static_cast<uint16_t>(950 + at), touched[i].x());
         results.set(static_cast<uint16_t>(951 + at), touched[i].y());
-        results.set(static_cast<uint16_t>(952 + at), height);
+        results.set(static_cast<uint16_t>(952 + at), actualHeight);
         results.set(static_cast<uint16_t>(980 + at), touched[i].x() - points[i].x());
         results.set(static_cast<uint16_t>(981 + at), touched[i].y() - points[i].y());
-        results.set(static_cast<uint16_t>(982 + at), 0.0);
+        results.set(static_cast<uint16_t>(982 + at), actualHeight - height);
+        if (extrusion) results.set(static_cast<uint16_t>(970 + i), measured[i].extruded);
     }
     results.set(959, corner->x());
     results.set(960, corner->y());
@@ -212,9 +297,8 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     for (size_t i = 0; i < 4; ++i) {
         const size_t edge = i / 2;
         if (!tolerance[edge]->set) continue;
-        const double deviation = (touched[i] - points[i]).dot(-directions[edge]);
-        if (deviation > tolerance[edge]->upper) status = std::max(status, 1);
-        if (deviation < -tolerance[edge]->lower) status = 2;
+        if (measured[i].highest > tolerance[edge]->upper) status = std::max(status, 1);
+        if (measured[i].lowest < -tolerance[edge]->lower) status = 2;
     }
     results.set(183, status);
     const int reaction = v.integer(309);

@@ -32,6 +32,7 @@ extern const ProbingCycleDescriptor kProbe424;
 extern const ProbingCycleDescriptor kProbe426;
 extern const ProbingCycleDescriptor kProbe427;
 extern const ProbingCycleDescriptor kProbe1416;
+extern const ProbingCycleDescriptor kProbe1493;
 extern const ProbingCycleDescriptor kProbe430;
 extern const ProbingCycleDescriptor kProbe431;
 extern const ProbingCycleDescriptor kProbe441;

@@ -191,8 +191,16 @@ bool BlockParser::parseCycleParameter(std::string_view text, size_t at,
         if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
             lead == '.') {
             auto v = fp.wordValue();
+            std::optional<double> actual;
+            if (v && vc.acceptChar('@')) {
+                // "nominal@actual": a 14xx cycle's actual position; the check says where.
+                p.actualOffset = text.find('@', p.offset);
+                actual = fp.wordValue();
+                if (!actual) v.reset();
+            }
             if (v && vc.atEnd()) {
                 p.value = *v;
+                p.actual = actual;
                 p.literal = p.raw.find_first_of("Qq") == std::string::npos;
             }
         }

@@ -4,6 +4,7 @@
 
 #include "core/cycles/cycle_registry.h"
 #include "core/cycles/parameter_check.h"
+#include "core/cycles/probing/probing_14xx.h"
 #include "core/cycles/probing/probing_cycle.h"
 
 namespace kerf::klartext {
@@ -46,9 +47,19 @@ void checkCycleParameters(const CycleDefinition& def, const program::LogicalLine
             }
             continue;
         }
+        if (it->actual && !(def.probe && cycles::probing::takesActualPosition(def.number, d.q))) {
+            report(cycles::probing::actualPositionError(owner, d), file,
+                   line.lineAt(it->actualOffset), line.columnAt(it->actualOffset), out);
+            continue;
+        }
         if (it->isString || d.unit == cycles::Unit::Text || !it->literal) continue;
         if (auto outside = cycles::parameterValueError(owner, d, *it->value)) {
             report(*outside, file, line.lineAt(it->offset), line.columnAt(it->offset), out);
+        } else if (it->actual) {
+            if (auto actual = cycles::parameterValueError(owner, d, *it->actual)) {
+                report(*actual, file, line.lineAt(it->actualOffset),
+                       line.columnAt(it->actualOffset), out);
+            }
         }
     }
 }

@@ -8,6 +8,7 @@
 #include "core/cycles/global_def.h"
 #include "core/cycles/legacy/legacy_cycles.h"
 #include "core/cycles/parameter_check.h"
+#include "core/cycles/probing/probing_14xx.h"
 #include "core/geometry/plane.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/point_table.h"
@@ -73,7 +74,7 @@ void KlartextInterpreter::failCycle(const cycles::CycleError& error) {
 bool KlartextInterpreter::resolveParameters(
     const std::string& owner, std::span<const cycles::ParameterDescriptor> descriptors,
     const std::vector<CycleParameter>& written, cycles::CycleValues& values,
-    std::vector<uint16_t>* predef) {
+    std::vector<uint16_t>* predef, int probeCycle) {
     for (const CycleParameter& p : written) {
         const bool known = std::any_of(descriptors.begin(), descriptors.end(),
                                        [&](const auto& d) { return d.q == p.q; });
@@ -171,6 +172,18 @@ bool KlartextInterpreter::resolveParameters(
             return false;
         }
         values.set(d.q, value * (scalesWithUnit(d.unit) ? scale : 1.0));
+        if (!it->actual) continue;
+        // "nominal@actual": only a 14xx cycle's nominal positions (TCH PROBE `probeCycle`).
+        if (!cycles::probing::takesActualPosition(probeCycle, d.q)) {
+            failCycle(cycles::probing::actualPositionError(owner, d));
+            return false;
+        }
+        if (auto outside = cycles::parameterValueError(owner, d, *it->actual)) {
+            failCycle(*outside);
+            return false;
+        }
+        cycles::probing::setActualPosition(values, d.q,
+                                           *it->actual * (scalesWithUnit(d.unit) ? scale : 1.0));
     }
     return true;
 }

@@ -275,7 +275,7 @@ private:
     bool resolveParameters(const std::string& owner,
                            std::span<const cycles::ParameterDescriptor> descriptors,
                            const std::vector<CycleParameter>& written, cycles::CycleValues& values,
-                           std::vector<uint16_t>* predef);
+                           std::vector<uint16_t>* predef, int probeCycle = 0);
     void failCycle(const cycles::CycleError& error);
     std::optional<std::string> cycleText(std::string_view raw) const;
     // The table file `SEL TABLE`/`SEL PATTERN name` from `folder` opens (the extension may be
@@ -724,6 +724,7 @@ private:
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;  // the preset's, or set by 400-404 (kept in m_frame)
+    std::optional<cycles::CycleValues> m_extrusion;  // 1493's, for the next 14xx cycle(s)
     std::optional<cycles::probing::FastProbing> m_fastProbing;           // cycle 441, until the end
     std::vector<cycles::probing::CalibrationLogEntry> m_calibrationLog;  // TCHPRAUTO.html
     cycles::CoordinateFrame m_frame;

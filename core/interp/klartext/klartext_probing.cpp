@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/base/translate.h"
+#include "core/cycles/probing/probing_14xx.h"
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/cycles/probing/probing_log_html.h"
 #include "core/interp/klartext/klartext_interpreter.h"
@@ -303,7 +304,9 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     const std::string owner = "touch probe cycle " + std::to_string(def.number);
     cycles::CycleValues values;
     std::vector<uint16_t> predef;
-    if (!resolveParameters(owner, cycle->parameters, def.parameters, values, &predef)) return;
+    if (!resolveParameters(owner, cycle->parameters, def.parameters, values, &predef, def.number)) {
+        return;
+    }
     for (uint16_t q : predef) {
         if (std::find(m_globalSet.begin(), m_globalSet.end(), q) == m_globalSet.end()) {
             fail("PRB-013", KERF_TR_NOOP("{1}: Q{2} is PREDEF but GLOBAL DEF 120 gives no value"),
@@ -311,6 +314,16 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
             return;
         }
         values.set(q, m_globals.number(q));
+    }
+    if (def.number == cycles::probing::kExtrusionCycle) {
+        // It probes nothing: the next 14xx cycle repeats its touch points (Q1145 = 0: none).
+        m_extrusion = values;
+        if (!cycles::probing::extrusionOf(values)) m_extrusion.reset();
+        return;
+    }
+    if (def.number >= 1400 && m_extrusion) {
+        cycles::probing::addExtrusion(*m_extrusion, values);
+        if (!cycles::probing::extrusionStays(*m_extrusion)) m_extrusion.reset();
     }
     if (cycle->toolMeasurement != cycles::probing::ToolMeasurementKind::None) {
         if (def.number == 484) {

@@ -310,6 +310,8 @@ struct CycleParameter {
     bool isString = false;
     std::string raw;  // value text as written ("+5", "PREDEF", "FAUTO", "Q1")
     std::optional<double> value;
+    std::optional<double> actual;  // "nominal@actual" (14xx nominal positions): the actual
+    size_t actualOffset = 0;       // where its '@' is in the block text
     std::string comment;
     size_t offset = 0;     // where "Qnnn=" starts in the block text
     bool literal = false;  // `value` uses no Q parameter: known before the run

@@ -30,14 +30,16 @@ protected:
         text << std::ifstream(file, std::ios::binary).rdbuf();
         return text.str();
     }
-    // kerf run on the example with its machine file; the report as JSON.
+    // kerf run on the example with its machine file (`program` without an extension: .H); the
+    // report as JSON.
     nlohmann::json run(const std::string& program, const std::string& options = "",
                        const std::string& machine = "machine.toml") {
         const fs::path report = dir / (program + ".json");
-        const std::string command = std::string("\"") + KERF_BINARY + "\" run --machine \"" +
-                                    (dir / machine).string() + "\" " + options + " \"" +
-                                    (dir / (program + ".H")).string() + "\" --report \"" +
-                                    report.string() + "\" 2> \"" + (dir / "errors").string() + "\"";
+        const std::string command =
+            std::string("\"") + KERF_BINARY + "\" run --machine \"" + (dir / machine).string() +
+            "\" " + options + " \"" +
+            (dir / (program.find('.') == std::string::npos ? program + ".H" : program)).string() +
+            "\" --report \"" + report.string() + "\" 2> \"" + (dir / "errors").string() + "\"";
         EXPECT_EQ(std::system(command.c_str()), 0) << read(dir / "errors");
         EXPECT_EQ(read(dir / "errors"), "");
         return nlohmann::json::parse(read(report));
@@ -95,6 +97,53 @@ TEST_F(ProbingExamples, Intersection1416InTheYzPlaneMakesTheTopFrontEdgeTheDatum
         EXPECT_NEAR(report["final_position"]["X"].get<double>(), 50.0, 1e-6) << options;
         EXPECT_NEAR(report["final_position"]["Y"].get<double>(), front, 1e-6) << options;
         EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 9.8, 1e-6) << options;
+    }
+}
+
+TEST_F(ProbingExamples, Intersection1416TakesTheLeftFaceAsItsActualPosition) {
+    // ACTUAL.H: Q1100 = +0@+1.5, the left face is known to lie at X 1.5 and is not probed; the
+    // front face is, and meets X 1.5 at Y -0.8 less the ball's cosine error. Q1120 = 1 makes
+    // that point X 0 Y 0.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    // ACTISO.I is the same in TNC ISO (G1416), whose parameters reach the same parser.
+    for (const char* program : {"ACTUAL", "ACTISO.I"}) {
+        const nlohmann::json report = run(program);
+        EXPECT_TRUE(report["ok"].get<bool>()) << program;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 1.5, 1e-6) << program;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(),
+                    -0.8 - 2.0 * (1.0 / std::cos(a) - 1.0), 1e-6)
+            << program;
+    }
+}
+
+TEST_F(ProbingExamples, Extrusion1493FindsHowTheFrontFaceRunsAwayAlongTheEdge) {
+    // EXTRUDE.H: 1493 repeats 1416's touches on the top-front edge (YZ plane at X 50) at X 70 and
+    // X 90. The front face turned by 0.7 degrees runs 40 tan a further out at X 90 (Q972 =
+    // -40 tan a, along its normal), where it lies 0.8 - 88.5 tan a + e = -0.281 from nominal:
+    // below QS401's -0.25, scrap (Q183 = 2). The program moves to X Q972, Z Q183.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    for (const char* options : {"", "--motion"}) {
+        const nlohmann::json report = run("EXTRUDE", options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), -40.0 * std::tan(a), 1e-6)
+            << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 2.0, 1e-9) << options;
+    }
+}
+
+TEST_F(ProbingExamples, Datum417OnACylinderLyingOnTheATable) {
+    // CYLX.H on mill4: BLK FORM CYLINDER X R25 (the A table's part), 417 over X 30 Y 0. The axis
+    // really runs through (1.5, -0.8, -0.2) turned by 0.7 degrees about Z: at X 30 Y 0 it lies
+    // h = -28.5 sin a + 0.8 cos a to the side, so the ball (radius 2) stops where its centre is
+    // 27 from the axis, z = -0.2 + sqrt(27^2 - h^2), and the surface point is 2 below. Q333 =
+    // +25 makes that Z 25: L Z+35 ends 10 above it.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double h = -28.5 * std::sin(a) + 0.8 * std::cos(a);
+    const double top = -0.2 + std::sqrt(27.0 * 27.0 - h * h) - 2.0;
+    for (const char* options : {"", "--motion"}) {
+        const nlohmann::json report = run("CYLX", options, "machine4.toml");
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), top + 10.0, 1e-6) << options;
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/cycles/probing/probing_14xx.h"
 #include "core/cycles/probing/probing_cycle.h"
 #include "core/cycles/probing/single_touch.h"
 #include "core/workpiece/simulated_workpiece.h"
@@ -104,17 +105,18 @@ CycleRun run(int cycle, const CycleValues& v, const SimulatedWorkpiece& part) {
 }
 
 TEST(ProbingCycles, RegistryHoldsEachCycleOnceInNumberOrder) {
-    const int expected[] = {400, 401, 402, 403, 404, 405, 408, 409, 410, 411, 412, 413, 414, 415,
-                            416, 417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427, 430, 431,
-                            441, 444, 460, 461, 462, 463, 480, 481, 482, 483, 484, 1416};
+    const int expected[] = {400, 401, 402, 403, 404, 405, 408, 409, 410, 411, 412, 413,  414, 415,
+                            416, 417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427,  430, 431,
+                            441, 444, 460, 461, 462, 463, 480, 481, 482, 483, 484, 1416, 1493};
     auto all = allProbingCycles();
     ASSERT_EQ(all.size(), std::size(expected));
     for (size_t i = 0; i < all.size(); ++i) {
         EXPECT_EQ(all[i]->number, expected[i]);
         EXPECT_EQ(findProbingCycle(expected[i]), all[i]);
-        // The TT cycles run through their own interface (tool_measurement.h).
+        // The TT cycles run through their own interface (tool_measurement.h); 1493 probes nothing
+        // (the interpreter hands its parameters to the next 14xx cycle).
         const bool tt = all[i]->number >= 480 && all[i]->number <= 484;
-        EXPECT_EQ(all[i]->run == nullptr, tt) << all[i]->number;
+        EXPECT_EQ(all[i]->run == nullptr, tt || all[i]->number == 1493) << all[i]->number;
         EXPECT_EQ(all[i]->toolMeasurement != ToolMeasurementKind::None, tt) << all[i]->number;
     }
     // The old TT cycles 30-33 run as 480-483.
@@ -681,6 +683,113 @@ TEST(ProbingCycles, Intersection1416InTheZxPlaneFindsTheTopRightEdge) {
     EXPECT_NEAR(result(r.results, 951), 90.0, kTolerance);
     EXPECT_NEAR(result(r.results, 952), 30.0, kTolerance);
     EXPECT_EQ(r.touches, 4);
+}
+
+// The front-left corner of the turned blank as in Intersection1416FindsTheCornerOfTheTurnedBlank.
+CycleValues frontLeftCorner() {
+    CycleValues v = defaults(1416);
+    v.set(1100, 0), v.set(1101, 0), v.set(1102, -5);
+    v.set(1130, 0), v.set(1131, 1), v.set(1132, 10), v.set(1133, 40);
+    v.set(1134, 90), v.set(1135, -1), v.set(1136, 10), v.set(1137, 40);
+    return v;
+}
+
+TEST(ProbingCycles, Intersection1416TakesAnActualPositionInsteadOfProbingThatEdge) {
+    // Q1100 = 0@1.5: the left face (edge 2, probed along X) is known to lie at X 1.5 and is not
+    // probed; edge 1 (the front face, probed along Y) is. The measured front face at x runs at
+    // y = -0.8 + (x - 1.5) tan a less the cosine error, so it meets X 1.5 at Y -0.8 - e.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = frontLeftCorner();
+    setActualPosition(v, 1100, 1.5);
+    v.set(1121, 5);
+    CycleRun r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_EQ(r.touches, 2);
+    const double e = kCosineError;
+    EXPECT_NEAR(result(r.results, 959), 1.5, kTolerance);
+    EXPECT_NEAR(result(r.results, 960), -0.8 - e, kTolerance);
+    EXPECT_NEAR(result(r.results, 989), 1.5, kTolerance);
+    EXPECT_NEAR(result(r.results, 990), -0.8 - e, kTolerance);
+    // Point 3 (edge 2 at Y 10) is its nominal point moved onto X 1.5.
+    EXPECT_NEAR(result(r.results, 956), 1.5, kTolerance);
+    EXPECT_NEAR(result(r.results, 957), 10.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 986), 1.5, kTolerance);
+    EXPECT_NEAR(result(r.results, 987), 0.0, kTolerance);
+    // Edge 2 lies at its nominal angle, edge 1 turned by 0.7: their mean is 0.35.
+    EXPECT_NEAR(result(r.results, 964), 0.35, 1e-7);
+
+    // Both coordinates known: nothing is probed, the corner is the actual position.
+    setActualPosition(v, 1101, -0.8);
+    r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_EQ(r.touches, 0);
+    EXPECT_NEAR(result(r.results, 959), 1.5, kTolerance);
+    EXPECT_NEAR(result(r.results, 960), -0.8, kTolerance);
+    EXPECT_NEAR(result(r.results, 964), 0.0, 1e-9);
+}
+
+TEST(ProbingCycles, Intersection1416TakesTheActualHeightForItsResults) {
+    // Q1102 = -5@-5.2: the touches still run at Z -5, the results give the points at -5.2.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = frontLeftCorner();
+    setActualPosition(v, 1102, -5.2);
+    CycleRun r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_EQ(r.touches, 4);
+    for (const uint16_t q : {uint16_t{952}, uint16_t{955}, uint16_t{958}})
+        EXPECT_NEAR(result(r.results, q), -5.2, 1e-12) << q;
+    for (const uint16_t q : {uint16_t{982}, uint16_t{985}, uint16_t{988}})
+        EXPECT_NEAR(result(r.results, q), -0.2, 1e-12) << q;
+    EXPECT_NEAR(result(r.results, 951), -0.8 + 8.5 * std::tan(kAngle) - kCosineError, kTolerance);
+}
+
+TEST(ProbingCycles, Intersection1416RefusesAnActualNoEdgeMeasuresAlone) {
+    // Edges at 45 and 135 degrees are probed obliquely: neither gives X alone.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = frontLeftCorner();
+    v.set(1130, 45), v.set(1134, 135);
+    setActualPosition(v, 1100, 1.5);
+    const CycleRun r = run(1416, v, part);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error->code, "cycle-parameter");
+    EXPECT_EQ(r.touches, 0);
+}
+
+TEST(ProbingCycles, Extrusion1493RepeatsTheTouchesAlongTheTopFrontEdge) {
+    // In the YZ plane at X 50 (as Intersection1416InTheYzPlaneFindsTheTopFrontEdge) with the
+    // extrusion along the main axis X, +40 in 2 steps: each touch point again at X 70 and X 90.
+    // The top face stays at Z -0.2 (Q970 = Q971 = 0); the front face turned by 0.7 degrees lies
+    // at Y = (x - 1.5) tan a - 0.8, so its deviation along the surface normal (-Y) changes by
+    // -20 tan a per step: Q972 = -40 tan a at X 90.
+    SimulatedWorkpiece part = misplaced();
+    part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
+    CycleValues v = defaults(1416);
+    v.set(1139, 1), v.set(1100, 0), v.set(1101, 0), v.set(1102, 50);
+    v.set(1130, 0), v.set(1131, -1), v.set(1132, 10), v.set(1133, 40);
+    v.set(1134, 90), v.set(1135, -1), v.set(1136, -10), v.set(1137, -30);
+    // Within +0.5 / -0.25 at X 50: the front face's deviation there is 0.8 - 48.5 tan a + e.
+    v.setText(401, "0.5-0.25");
+    CycleRun r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_EQ(r.touches, 4);
+    EXPECT_EQ(result(r.results, 183), 0.0);
+
+    v.set(1140, 1), v.set(1145, 40), v.set(1146, 2);
+    r = run(1416, v, part);
+    ASSERT_FALSE(r.error) << r.error->code;
+    EXPECT_EQ(r.touches, 12);
+    const double t = std::tan(kAngle);
+    EXPECT_NEAR(result(r.results, 970), 0.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 971), 0.0, kTolerance);
+    EXPECT_NEAR(result(r.results, 972), -40.0 * t, kTolerance);
+    // The edge itself is still measured from the touches at X 50.
+    const double front = 48.5 * t - 0.8 - kCosineError;
+    EXPECT_NEAR(result(r.results, 959), front, kTolerance);
+    // At X 90 the deviation is 0.8 - 88.5 tan a + e = -0.281: below -0.25, scrap.
+    EXPECT_EQ(result(r.results, 183), 2.0);
 }
 
 TEST(ProbingCycles, MeasureAngle420RectanglesAndCoordinate427) {

@@ -128,6 +128,15 @@ TEST(IsoTranslator, ProgramHeaderEndAndCalls) {
                                         "BEGIN PGM INCHES INCH", "END PGM INCHES INCH"}));
 }
 
+TEST(IsoTranslator, ProbingCycles14xxKeepTheirActualPositions) {
+    // G1493 and G1416 become TCH PROBE blocks whose "nominal@actual" the Klartext parser reads.
+    EXPECT_EQ(
+        translate("G1493 Q1140=+1 Q1145=+40 Q1146=+2 Q1149=+0 *\n"
+                  "G1416 Q1100=+0@+1.5 Q1101=+0 *\n"),
+        (std::vector<std::string>{"TCH PROBE 1493 / Q1140=+1 / Q1145=+40 / Q1146=+2 / Q1149=+0",
+                                  "TCH PROBE 1416 / Q1100=+0@+1.5 / Q1101=+0"}));
+}
+
 TEST(IsoTranslator, CyclesKeepTheirConversationalParameters) {
     EXPECT_EQ(translate("N10 G200 DRILLING Q200=2 Q201=-5 ;DEPTH *\n"
                         "G251 Q215=0 Q218=30 ;LENGTH *\n"
