@@ -139,10 +139,10 @@ std::optional<CycleError> edgesGivenAsActual(const CycleValues& v,
     return std::nullopt;
 }
 
-// One touch point as measured: the surface point in the plane and its deviation along the
-// surface normal (against the probing direction); with an extrusion (1493) the largest change of
-// that deviation along it (Q970-Q972), signed, and the extremes over the point and its
-// repetitions (for the tolerance).
+// One touch point as measured: the surface point in the plane and its deviation from the nominal
+// point along the surface normal (against the probing direction); with an extrusion (1493) the
+// extremes of that deviation over the point and its repetitions, and the one of largest magnitude,
+// signed: the maximum deviation from the ideal line (Q970-Q972).
 struct MeasuredPoint {
     Vec2 surface{0.0, 0.0};
     double extruded = 0.0;
@@ -158,7 +158,6 @@ std::optional<CycleError> touchPoint(ProbeSequence& sequence, const Plane& plane
                                      MeasuredPoint& out) {
     const int repeats = extrusion ? extrusion->repeats : 0;
     const Vec3 step = extrusion ? extrusion->step : Vec3::Zero();
-    double first = 0.0;
     for (int r = 0; r <= repeats; ++r) {
         const Vec3 at = nominal + static_cast<double>(r) * step;
         Vec3 ball;
@@ -168,10 +167,10 @@ std::optional<CycleError> touchPoint(ProbeSequence& sequence, const Plane& plane
         const double deviation = (surface - at).dot(-direction);
         if (r == 0) {
             out.surface = plane.inPlane(surface);
-            first = out.highest = out.lowest = deviation;
+            out.extruded = out.highest = out.lowest = deviation;
             continue;
         }
-        if (std::abs(deviation - first) > std::abs(out.extruded)) out.extruded = deviation - first;
+        if (std::abs(deviation) > std::abs(out.extruded)) out.extruded = deviation;
         out.highest = std::max(out.highest, deviation);
         out.lowest = std::min(out.lowest, deviation);
     }
@@ -241,7 +240,7 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
                 const int axis = std::abs(directions[edge].x()) > 0.5 ? 0 : 1;
                 measured[i].surface = points[i];
                 measured[i].surface[axis] = actual[axis];
-                measured[i].highest = measured[i].lowest =
+                measured[i].extruded = measured[i].highest = measured[i].lowest =
                     (measured[i].surface - points[i]).dot(-directions[edge]);
             } else if (auto e = touchPoint(sequence, plane, plane.local(points[i], height),
                                            direction, extrusion, measured[i])) {

@@ -118,14 +118,15 @@ TEST_F(ProbingExamples, Intersection1416TakesTheLeftFaceAsItsActualPosition) {
 
 TEST_F(ProbingExamples, Extrusion1493FindsHowTheFrontFaceRunsAwayAlongTheEdge) {
     // EXTRUDE.H: 1493 repeats 1416's touches on the top-front edge (YZ plane at X 50) at X 70 and
-    // X 90. The front face turned by 0.7 degrees runs 40 tan a further out at X 90 (Q972 =
-    // -40 tan a, along its normal), where it lies 0.8 - 88.5 tan a + e = -0.281 from nominal:
-    // below QS401's -0.25, scrap (Q183 = 2). The program moves to X Q972, Z Q183.
+    // X 90. The front face turned by 0.7 degrees lies 0.8 - (x - 1.5) tan a + e from nominal
+    // along its normal (e: the ball's cosine error), largest at X 90: 0.8 - 88.5 tan a + e =
+    // -0.281 (Q972), below QS401's -0.25, scrap (Q183 = 2). The program moves to X Q972, Z Q183.
     const double a = 0.7 * std::numbers::pi / 180.0;
+    const double e = 2.0 * (1.0 / std::cos(a) - 1.0);
     for (const char* options : {"", "--motion"}) {
         const nlohmann::json report = run("EXTRUDE", options);
         EXPECT_TRUE(report["ok"].get<bool>()) << options;
-        EXPECT_NEAR(report["final_position"]["X"].get<double>(), -40.0 * std::tan(a), 1e-6)
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), 0.8 - 88.5 * std::tan(a) + e, 1e-6)
             << options;
         EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 2.0, 1e-9) << options;
     }

@@ -761,9 +761,11 @@ TEST(ProbingCycles, Intersection1416RefusesAnActualNoEdgeMeasuresAlone) {
 TEST(ProbingCycles, Extrusion1493RepeatsTheTouchesAlongTheTopFrontEdge) {
     // In the YZ plane at X 50 (as Intersection1416InTheYzPlaneFindsTheTopFrontEdge) with the
     // extrusion along the main axis X, +40 in 2 steps: each touch point again at X 70 and X 90.
-    // The top face stays at Z -0.2 (Q970 = Q971 = 0); the front face turned by 0.7 degrees lies
-    // at Y = (x - 1.5) tan a - 0.8, so its deviation along the surface normal (-Y) changes by
-    // -20 tan a per step: Q972 = -40 tan a at X 90.
+    // Q970-Q972 are each touch point's largest deviation from its ideal line (the nominal point
+    // moved along X). The top face lies at Z -0.2 everywhere (Q970 = Q971 = -0.2); the front face
+    // turned by 0.7 degrees lies at Y = (x - 1.5) tan a - 0.8, so its deviation along the surface
+    // normal (-Y) is 0.8 - (x - 1.5) tan a + e: +0.208 at X 50, -0.037 at X 70, -0.281 at X 90
+    // (Q972, the largest).
     SimulatedWorkpiece part = misplaced();
     part.add({Box{Vec3(0, 0, -40), Vec3(100, 60, 0)}, true});
     CycleValues v = defaults(1416);
@@ -782,9 +784,9 @@ TEST(ProbingCycles, Extrusion1493RepeatsTheTouchesAlongTheTopFrontEdge) {
     ASSERT_FALSE(r.error) << r.error->code;
     EXPECT_EQ(r.touches, 12);
     const double t = std::tan(kAngle);
-    EXPECT_NEAR(result(r.results, 970), 0.0, kTolerance);
-    EXPECT_NEAR(result(r.results, 971), 0.0, kTolerance);
-    EXPECT_NEAR(result(r.results, 972), -40.0 * t, kTolerance);
+    EXPECT_NEAR(result(r.results, 970), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 971), -0.2, kTolerance);
+    EXPECT_NEAR(result(r.results, 972), 0.8 - 88.5 * t + kCosineError, kTolerance);
     // The edge itself is still measured from the touches at X 50.
     const double front = 48.5 * t - 0.8 - kCosineError;
     EXPECT_NEAR(result(r.results, 959), front, kTolerance);

@@ -147,15 +147,16 @@ TEST_F(Probing14xxRun, TheLeftFaceGivenAsActualIsNotProbed) {
 
 TEST_F(Probing14xxRun, ExtrusionRepeatsTheTouchesOfTheNext14xxCycle) {
     // 1493 along X by 40 in 2 steps before 1416 on the top-front edge at X 50 (YZ plane): the
-    // front face's deviation along its normal changes by -40 tan a up to X 90 (Q972); the top
-    // face stays where it is (Q970, Q971). Q1149 = 0: the second 1416 runs without it.
-    const double change = -40.0 * std::tan(kAngle);
+    // front face's deviation along its normal is 0.8 - (x - 1.5) tan a + e, largest at X 90
+    // (Q972); the top face lies 0.2 low everywhere (Q970, Q971). Q1149 = 0: the second 1416 runs
+    // without it.
+    const double change = 0.8 - 88.5 * std::tan(kAngle) + kCosineError;
     ASSERT_EQ(run({extrusion(0), intersection("+0", true), intersection("+0", true)}),
               interp::RunStatus::Finished);
     EXPECT_NEAR(q(972), 0.0, 1e-12);
     ASSERT_EQ(run({extrusion(0), intersection("+0", true)}), interp::RunStatus::Finished);
-    EXPECT_NEAR(q(970), 0.0, 1e-6);
-    EXPECT_NEAR(q(971), 0.0, 1e-6);
+    EXPECT_NEAR(q(970), -0.2, 1e-6);
+    EXPECT_NEAR(q(971), -0.2, 1e-6);
     EXPECT_NEAR(q(972), change, 1e-6);
     // Q1149 = 1: every following 14xx cycle is extruded.
     ASSERT_EQ(run({extrusion(1), intersection("+0", true), intersection("+0", true)}),
