@@ -1,4 +1,5 @@
 // Path functions: L, C, CR, CT, LP, CP, CTP, CC, RND, CHF, APPR and DEP.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -77,7 +78,8 @@ bool KlartextInterpreter::polarWithoutPlaneAxes(const Coordinates& coords) {
 Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
     Pose target = m_programmed;
     const double scale = lengthScale();
-    const bool machine = hasM(m_currentM, 91) || hasM(m_currentM, 92);
+    const bool machine =
+        m_currentM.count != 0 && (hasM(m_currentM, 91) || hasM(m_currentM, 92));
     // Machine coordinates bypass the coordinate transformations: set them in the preset frame.
     Pose work = machine ? m_frame.toWorkpiece(m_programmed) : Pose{};
     // Only the axes the block names (usually two or three of nine).
@@ -107,10 +109,14 @@ Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
-    auto transformed = toPathSpace(element);
-    if (!transformed) return;
     interp::PathMove move;
-    move.geometry = *transformed;
+    if (!pathInTiltedPlane() && m_frame.identity()) {
+        move.geometry = element;  // what toPathSpace() would return, without its copy
+    } else {
+        auto transformed = toPathSpace(element);
+        if (!transformed) return;
+        move.geometry = *transformed;
+    }
     move.rapid = rapid;
     move.feed = feed;
     move.side = sideOf(m_comp);
@@ -135,7 +141,9 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
 void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     bool rapid = false;
     double feed = 0.0;
-    m_currentM = block.words.m;
+    // Only the functions up to the count are read (hasM): the rest is not copied.
+    m_currentM.count = block.words.m.count;
+    std::copy_n(block.words.m.list.begin(), block.words.m.count, m_currentM.list.begin());
     if (!resolveFeed(block.words.feed, rapid, feed)) return;
     if (block.words.comp != CompWord::None) m_comp = block.words.comp;
     applyMFunctions(block.words.m, true);
