@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/interp/klartext/block_parser.h"
+#include "core/interp/klartext/digit_run.h"
 
 namespace kerf::klartext {
 
@@ -16,24 +17,6 @@ namespace {
 
 bool endsWord(const char* p, const char* end) {
     return p == end || *p == ' ' || *p == '\t' || *p == ';';
-}
-
-// The high bit of every byte of `chunk` that is not an ASCII digit (bytes of 0x80 and above
-// included). No carry crosses into a lower byte, so the lowest set bit is exact.
-uint64_t notDigits(uint64_t chunk) {
-    constexpr uint64_t kHigh = 0x8080808080808080ull;
-    const uint64_t above = chunk + 0x4646464646464646ull;               // > '9'
-    const uint64_t below = ~((chunk | kHigh) - 0x3030303030303030ull);  // < '0'
-    return (above | below | chunk) & kHigh;
-}
-
-// The value of the `count` (1 to 8) ASCII digits in the low bytes of `chunk`, the first character
-// in the lowest byte: the digits moved to the top (zeros before them), then combined in pairs.
-uint64_t digitsValue(uint64_t chunk, int count) {
-    uint64_t v = (chunk - 0x3030303030303030ull) << (8 * (8 - count));
-    v = (v * 10 + (v >> 8)) & 0x00ff00ff00ff00ffull;
-    v = (v * 100 + (v >> 16)) & 0x0000ffff0000ffffull;
-    return (v * 10000 + (v >> 32)) & 0xffffffffull;
 }
 
 // A literal "ddd.dddd" that ends within the eight bytes at p, read at once: its digits as one

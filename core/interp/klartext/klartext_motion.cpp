@@ -76,41 +76,47 @@ bool KlartextInterpreter::polarWithoutPlaneAxes(const Coordinates& coords) {
 }
 
 Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
-    Pose target = m_programmed;
     const double scale = lengthScale();
-    const bool machine =
-        m_currentM.count != 0 && (hasM(m_currentM, 91) || hasM(m_currentM, 92));
-    // Machine coordinates bypass the coordinate transformations: set them in the preset frame.
-    Pose work = machine ? m_frame.toWorkpiece(m_programmed) : Pose{};
+    const bool machine = m_currentM.count != 0 && (hasM(m_currentM, 91) || hasM(m_currentM, 92));
     // Only the axes the block names (usually two or three of nine).
-    for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
-        const int i = std::countr_zero(bits);
-        const AxisWord& word = coords.axes[static_cast<size_t>(i)];
-        auto axis = static_cast<Axis>(i);
-        const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
-        const double value = rotary ? word.value : word.value * scale;
-        if (machine) {
-            // Machine coordinates of the spindle reference: the tool length is not compensated.
-            double& out = work.values[static_cast<size_t>(i)];
-            out = value - m_settings.presetInMachine.values[static_cast<size_t>(i)];
-            if (axis == m_toolAxis) out -= m_tool.effectiveLength();
-        } else {
+    if (!machine) {
+        Pose target = m_programmed;
+        for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
+            const int i = std::countr_zero(bits);
+            const AxisWord& word = coords.axes[static_cast<size_t>(i)];
+            const auto axis = static_cast<Axis>(i);
             double& out = target.values[static_cast<size_t>(i)];
-            if (rotary) {
-                out = rotaryTarget(axis, out, value, word.incremental);
+            if (axis == Axis::A || axis == Axis::B || axis == Axis::C) {
+                out = rotaryTarget(axis, out, word.value, word.incremental);
             } else {
+                const double value = word.value * scale;
                 out = word.incremental ? out + value : value;
             }
         }
+        return target;
     }
-    return machine ? m_frame.toProgram(work) : target;
+    // Machine coordinates bypass the coordinate transformations: set them in the preset frame,
+    // of the spindle reference (the tool length is not compensated).
+    Pose work = m_frame.toWorkpiece(m_programmed);
+    for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
+        const AxisWord& word = coords.axes[static_cast<size_t>(i)];
+        const auto axis = static_cast<Axis>(i);
+        const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
+        double& out = work.values[static_cast<size_t>(i)];
+        out = (rotary ? word.value : word.value * scale) -
+              m_settings.presetInMachine.values[static_cast<size_t>(i)];
+        if (axis == m_toolAxis) out -= m_tool.effectiveLength();
+    }
+    return m_frame.toProgram(work);
 }
 
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
     interp::PathMove move;
-    if (!pathInTiltedPlane() && m_frame.identity()) {
+    const bool direct = !pathInTiltedPlane() && m_frame.identity();
+    if (direct) {
         move.geometry = element;  // what toPathSpace() would return, without its copy
     } else {
         auto transformed = toPathSpace(element);
@@ -121,7 +127,7 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
     move.feed = feed;
     move.side = sideOf(m_comp);
     // A mirror image puts the tool on the other side of the mirrored contour.
-    if (pathFlipsOrientation(element.plane)) move.side = flipped(move.side);
+    if (!direct && pathFlipsOrientation(element.plane)) move.side = flipped(move.side);
     move.location = m_at;
     if (!checkPathError(activePath().addMove(move))) return;
     m_programmed = element.end;

@@ -167,6 +167,20 @@ TEST(LiteralLine, ReadsTheBlockNumberAsTheGeneralParserDoes) {
     }
 }
 
+TEST(LiteralLine, ReadsBlockNumbersOfEveryLength) {
+    // Fewer than eight digits are read at once, longer numbers digit by digit.
+    const std::string digits = "12345678901234567";
+    for (size_t length = 1; length <= digits.size(); ++length) {
+        for (const char* rest : {" L X+1", " l X+1", " L", " BEGIN PGM A MM"}) {
+            BlockParser parser(nullptr);
+            ParsedBlock block;
+            const std::string number = digits.substr(0, length);
+            ASSERT_TRUE(parseInto(parser, number + rest, block)) << number + rest;
+            EXPECT_EQ(block.blockNumber, std::stoll(number)) << number + rest;
+        }
+    }
+}
+
 TEST(LiteralLine, ABlockAfterAnotherLineKeepsNothingOfIt) {
     BlockParser parser(nullptr), general(nullptr);
     ParsedBlock reused, fresh;
