@@ -21,10 +21,9 @@ bool endsWord(const char* p, const char* end) {
 
 // A literal "ddd.dddd" that ends within the eight bytes at p, read at once: its digits as one
 // integer, how many of them are decimals, and where it ends (nullptr: it is no number). False
-// when it does not end there (or eight bytes cannot be read at p); the caller then reads it byte
-// by byte. The line `begin`
-// starts at least eight bytes before `end`, so its last eight bytes can be read: a literal at the
-// end of the line is read from them, with zeros after the end.
+// when it does not end there or eight bytes cannot be read; the caller then reads it byte by
+// byte. Near the end of a line of eight bytes or more, the line's last eight bytes are read and
+// shifted, so that zeros follow its end.
 bool shortLiteral(const char*& p, const char* begin, const char* end, uint64_t& mantissa,
                   int& decimals) {
     if constexpr (std::endian::native != std::endian::little) return false;
