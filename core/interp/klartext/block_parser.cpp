@@ -1,10 +1,12 @@
 #include "core/interp/klartext/block_parser.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "core/base/saturating.h"
 #include "core/base/translate.h"
+#include "core/interp/klartext/digit_run.h"
 
 namespace kerf::klartext {
 
@@ -383,8 +385,17 @@ bool BlockParser::parse(const program::LogicalLine& line, ParsedBlock& out) {
     const std::string_view text = line.text;
     size_t digits = 0;
     int64_t leadingNumber = 0;
-    while (digits < text.size() && digits < 18 && isDigit(text[digits]))
-        leadingNumber = leadingNumber * 10 + (text[digits++] - '0');
+    uint64_t chunk = 0;
+    const uint64_t stops = eightCharacters(text, 0, chunk) ? notDigits(chunk) : 0;
+    if (stops != 0) {
+        // Fewer than eight digits: all of them at once.
+        digits = static_cast<size_t>(std::countr_zero(stops) >> 3);
+        if (digits > 0)
+            leadingNumber = static_cast<int64_t>(digitsValue(chunk, static_cast<int>(digits)));
+    } else {
+        while (digits < text.size() && digits < 18 && isDigit(text[digits]))
+            leadingNumber = leadingNumber * 10 + (text[digits++] - '0');
+    }
     const bool numbered = digits > 0 && digits < 18 && digits < text.size() &&
                           (text[digits] == ' ' || text[digits] == '\t');
     // A loop runs the same text again: a line the one pass gave up on is not tried again.

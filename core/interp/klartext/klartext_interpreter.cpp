@@ -325,7 +325,7 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
             break;
         }
         m_at.blockNumber = m_block.blockNumber;
-        m_currentM = MWords{};
+        m_currentM.count = 0;  // M functions are only read up to the count (hasM)
         if (m_block.hidden && m_settings.blockSkip) continue;
         execute(m_block.statement);
         // The rest of a DIN/ISO block runs unless the first part stopped, jumped or called.

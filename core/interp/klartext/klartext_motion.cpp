@@ -1,4 +1,5 @@
 // Path functions: L, C, CR, CT, LP, CP, CTP, CC, RND, CHF, APPR and DEP.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -75,47 +76,58 @@ bool KlartextInterpreter::polarWithoutPlaneAxes(const Coordinates& coords) {
 }
 
 Pose KlartextInterpreter::targetOf(const Coordinates& coords) const {
-    Pose target = m_programmed;
     const double scale = lengthScale();
-    const bool machine = hasM(m_currentM, 91) || hasM(m_currentM, 92);
-    // Machine coordinates bypass the coordinate transformations: set them in the preset frame.
-    Pose work = machine ? m_frame.toWorkpiece(m_programmed) : Pose{};
+    const bool machine = m_currentM.count != 0 && (hasM(m_currentM, 91) || hasM(m_currentM, 92));
     // Only the axes the block names (usually two or three of nine).
-    for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
-        const int i = std::countr_zero(bits);
-        const AxisWord& word = coords.axes[static_cast<size_t>(i)];
-        auto axis = static_cast<Axis>(i);
-        const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
-        const double value = rotary ? word.value : word.value * scale;
-        if (machine) {
-            // Machine coordinates of the spindle reference: the tool length is not compensated.
-            double& out = work.values[static_cast<size_t>(i)];
-            out = value - m_settings.presetInMachine.values[static_cast<size_t>(i)];
-            if (axis == m_toolAxis) out -= m_tool.effectiveLength();
-        } else {
+    if (!machine) {
+        Pose target = m_programmed;
+        for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
+            const int i = std::countr_zero(bits);
+            const AxisWord& word = coords.axes[static_cast<size_t>(i)];
+            const auto axis = static_cast<Axis>(i);
             double& out = target.values[static_cast<size_t>(i)];
-            if (rotary) {
-                out = rotaryTarget(axis, out, value, word.incremental);
+            if (axis == Axis::A || axis == Axis::B || axis == Axis::C) {
+                out = rotaryTarget(axis, out, word.value, word.incremental);
             } else {
+                const double value = word.value * scale;
                 out = word.incremental ? out + value : value;
             }
         }
+        return target;
     }
-    return machine ? m_frame.toProgram(work) : target;
+    // Machine coordinates bypass the coordinate transformations: set them in the preset frame,
+    // of the spindle reference (the tool length is not compensated).
+    Pose work = m_frame.toWorkpiece(m_programmed);
+    for (auto bits = static_cast<unsigned>(coords.present); bits != 0; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
+        const AxisWord& word = coords.axes[static_cast<size_t>(i)];
+        const auto axis = static_cast<Axis>(i);
+        const bool rotary = axis == Axis::A || axis == Axis::B || axis == Axis::C;
+        double& out = work.values[static_cast<size_t>(i)];
+        out = (rotary ? word.value : word.value * scale) -
+              m_settings.presetInMachine.values[static_cast<size_t>(i)];
+        if (axis == m_toolAxis) out -= m_tool.effectiveLength();
+    }
+    return m_frame.toProgram(work);
 }
 
 void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, double feed,
                                      const CommonWords& words) {
     (void)words;
-    auto transformed = toPathSpace(element);
-    if (!transformed) return;
     interp::PathMove move;
-    move.geometry = *transformed;
+    const bool direct = !pathInTiltedPlane() && m_frame.identity();
+    if (direct) {
+        move.geometry = element;  // what toPathSpace() would return, without its copy
+    } else {
+        auto transformed = toPathSpace(element);
+        if (!transformed) return;
+        move.geometry = *transformed;
+    }
     move.rapid = rapid;
     move.feed = feed;
     move.side = sideOf(m_comp);
     // A mirror image puts the tool on the other side of the mirrored contour.
-    if (pathFlipsOrientation(element.plane)) move.side = flipped(move.side);
+    if (!direct && pathFlipsOrientation(element.plane)) move.side = flipped(move.side);
     move.location = m_at;
     if (!checkPathError(activePath().addMove(move))) return;
     m_programmed = element.end;
@@ -135,7 +147,9 @@ void KlartextInterpreter::submitMove(const ContourElement& element, bool rapid, 
 void KlartextInterpreter::executeLinear(const LinearBlock& block) {
     bool rapid = false;
     double feed = 0.0;
-    m_currentM = block.words.m;
+    // Only the functions up to the count are read (hasM): the rest is not copied.
+    m_currentM.count = block.words.m.count;
+    std::copy_n(block.words.m.list.begin(), block.words.m.count, m_currentM.list.begin());
     if (!resolveFeed(block.words.feed, rapid, feed)) return;
     if (block.words.comp != CompWord::None) m_comp = block.words.comp;
     applyMFunctions(block.words.m, true);

@@ -55,6 +55,7 @@ void PathBuilder::setSpace(const PathSpace* space, double toleranceMm) {
 }
 
 std::optional<PathError> PathBuilder::takeSpaceError() {
+    if (!m_spaceError) return std::nullopt;  // asked after every block
     auto e = std::move(m_spaceError);
     m_spaceError.reset();
     return e;
@@ -140,6 +141,12 @@ std::optional<PathError> PathBuilder::addMove(const PathMove& move) {
         m_held = move;
         return std::nullopt;
     }
+    if (!m_corner && passesStraightOn(*m_held)) {
+        // What forwardHeld() and compMove() do with it, without their copies and checks.
+        emitLine(m_held->geometry.end, m_held->rapid, m_held->feed, m_held->location);
+        *m_held = move;
+        return std::nullopt;
+    }
     if (!m_corner) {
         if (auto e = forwardHeld()) return e;
         m_held = move;
@@ -218,6 +225,12 @@ void PathBuilder::addCommand(canon::Command command) {
     } else {
         compCommand(std::move(command));
     }
+}
+
+bool PathBuilder::passesStraightOn(const PathMove& held) const {
+    return held.side == CompSide::None && m_side == CompSide::None &&
+           held.geometry.kind == ContourElement::Kind::Line && m_heldAfter.empty() && !m_comp &&
+           !m_approach && m_ahead.empty() && m_leftOutAtEnd.count == 0;
 }
 
 std::optional<PathError> PathBuilder::forwardHeld() {

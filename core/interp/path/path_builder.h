@@ -98,6 +98,9 @@ private:
         LeftOut leftOut;  // the elements left out just before it
     };
 
+    // A held straight move without compensation, with nothing pending in either stage: stage 2
+    // would emit it as it is.
+    bool passesStraightOn(const PathMove& held) const;
     // Stage 1 (corners) hands its output to stage 2 through these.
     std::optional<PathError> forwardHeld();
     std::optional<PathError> compMove(const PathMove& move);

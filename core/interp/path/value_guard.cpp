@@ -57,6 +57,7 @@ void ValueGuard::consume(const canon::Command& command) {
 }
 
 std::optional<PathError> ValueGuard::takeError() {
+    if (!m_error) return std::nullopt;  // asked after every block
     auto error = std::move(m_error);
     m_error.reset();
     return error;

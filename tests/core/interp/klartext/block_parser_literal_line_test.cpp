@@ -138,11 +138,46 @@ TEST(LiteralLine, GivesWhatTheGeneralParserGives) {
     }
 }
 
+TEST(LiteralLine, ReadsNumbersOfEveryLengthAsTheGeneralParserDoes) {
+    // Numbers are read eight bytes at a time where they end within them: every split of digits
+    // around the separator, at the end of the line (read from its last eight bytes) and before
+    // another word, on a line shorter than eight bytes too.
+    const std::string digits = "9876543210";
+    for (size_t integral = 0; integral <= digits.size(); ++integral) {
+        for (int decimals = -1; decimals <= 9; ++decimals) {
+            for (const char* separator : {".", ","}) {
+                std::string number = digits.substr(0, integral);
+                if (decimals >= 0)
+                    number += separator + digits.substr(0, static_cast<size_t>(decimals));
+                for (const char* after : {"", " Y+1", " F1500", "\xc3\xa4", "-", "X"}) {
+                    expectSameAsGeneralParser(" X+" + number + after);
+                    expectSameAsGeneralParser(" X+" + number + after, "");
+                    expectSameAsGeneralParser(" F" + number + after, "");
+                }
+            }
+        }
+    }
+}
+
 TEST(LiteralLine, ReadsTheBlockNumberAsTheGeneralParserDoes) {
     for (const char* number :
          {"", "0012 ", "12  ", "12\t", " 12 ", "12 /1 ", "/ ", "12/ ", "123456789012345678 ",
           "12345678901234567 ", "99999999999999999999 ", "12;", "12X "}) {
         expectSameAsGeneralParser(" X+1 Y-2", number);
+    }
+}
+
+TEST(LiteralLine, ReadsBlockNumbersOfEveryLength) {
+    // Fewer than eight digits are read at once, longer numbers digit by digit.
+    const std::string digits = "12345678901234567";
+    for (size_t length = 1; length <= digits.size(); ++length) {
+        for (const char* rest : {" L X+1", " l X+1", " L", " BEGIN PGM A MM"}) {
+            BlockParser parser(nullptr);
+            ParsedBlock block;
+            const std::string number = digits.substr(0, length);
+            ASSERT_TRUE(parseInto(parser, number + rest, block)) << number + rest;
+            EXPECT_EQ(block.blockNumber, std::stoll(number)) << number + rest;
+        }
     }
 }
 
