@@ -868,9 +868,6 @@ TEST(Dwell, WaitsTheProgrammedTime) {
     EXPECT_LT(run.report.durationS, 0.6);
 }
 
-}  // namespace
-}  // namespace kerf::motion::test
-
 // What a Klartext probing cycle hands over: a face the drives' tip reaches at X 7.5.
 class FaceAtX final : public canon::ProbeSurface {
 public:
@@ -903,3 +900,6 @@ TEST(Probing, AProbeMovesOwnSurfaceReplacesTheMachineFilesBoxForThatMove) {
     EXPECT_TRUE(box.probeTriggered);
     EXPECT_NEAR(box.probePosition[Axis::Z], -2.5, 1e-6);
 }
+
+}  // namespace
+}  // namespace kerf::motion::test

@@ -2,6 +2,7 @@
 // 0.7 degrees; the probing cycles find it (docs/probing.md).
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -158,9 +159,15 @@ TEST_F(ProbingExamples, LatchedSetUpAndMeasureFindTheRealPartAndThePocket) {
         EXPECT_NEAR(hole[0], px, 0.002) << options;
         EXPECT_NEAR(hole[1], py, 0.002) << options;
         EXPECT_NEAR(hole[2], 29.976, 0.002) << options;
-        // Preset row 0: the real centre in machine coordinates (Z at -400), SPC 0.7.
+        // Preset row 0: the real centre in machine coordinates (the built-in mill's workpiece
+        // origin is at machine X 0 Y 0 Z -400), SPC the basic rotation 0.7.
+        char row[160];
+        std::snprintf(row, sizeof row, "%+.5f     %+.5f     -400", cx, cy);
         const std::string presets = read(dir / "PRESET.PR");
-        EXPECT_NE(presets.find("+0.7"), std::string::npos) << options << presets;
+        EXPECT_NE(presets.find(row), std::string::npos) << options << "\n"
+                                                        << row << "\n"
+                                                        << presets;
+        EXPECT_NE(presets.find("+0.7  "), std::string::npos) << options << presets;
     }
 }
 
