@@ -8870,6 +8870,10 @@ wählen</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>Zyklus {1}: eine in der Ebene ZX oder YZ gemessene Drehung (Q1139 = {2}) dreht um X oder Y; übernommen werden kann nur eine Grunddrehung um die Werkzeugachse (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>der Taster hielt {1} mm hinter seinem Antastpunkt an, weiter als sein Taststift ausgelenkt werden kann ({2} mm): den Antastvorschub F in tchprobe.tp verringern</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

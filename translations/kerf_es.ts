@@ -8870,6 +8870,10 @@ solución</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: un giro medido en el plano ZX o YZ (Q1139 = {2}) gira alrededor de X o Y; solo se puede aceptar un giro básico alrededor del eje de la herramienta (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>el palpador se detuvo {1} mm más allá de su punto de palpación, más de lo que su vástago puede desviarse ({2} mm): reduzca el avance de palpación F en tchprobe.tp</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

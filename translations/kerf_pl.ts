@@ -8873,6 +8873,10 @@ rozwiązanie</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>cykl {1}: obrót zmierzony w płaszczyźnie ZX lub YZ (Q1139 = {2}) jest obrotem wokół X lub Y; przejąć można tylko obrót podstawowy wokół osi narzędzia (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>sonda zatrzymała się {1} mm za punktem próbkowania, dalej niż może się wychylić jej trzpień ({2} mm): zmniejsz posuw próbkowania F w tchprobe.tp</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8870,6 +8870,10 @@ solução</translation>
         <source>cycle {1}: a rotation measured in the ZX or YZ plane (Q1139 = {2}) turns about X or Y; only a basic rotation about the tool axis can be accepted (Q1121 = 0)</source>
         <translation>ciclo {1}: uma rotação medida no plano ZX ou YZ (Q1139 = {2}) gira em torno de X ou Y; só se pode aceitar uma rotação básica em torno do eixo da ferramenta (Q1121 = 0)</translation>
     </message>
+    <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>o apalpador parou {1} mm além do seu ponto de apalpação, mais do que a sua haste pode ser defletida ({2} mm): reduza o avanço de apalpação F em tchprobe.tp</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

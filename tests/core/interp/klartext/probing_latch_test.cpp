@@ -5,8 +5,10 @@
 // the move carries (the ball on the placed, machined part) or one the test moves elsewhere.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <numbers>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -26,7 +28,8 @@ class LatchingMachine : public canon::Sink {
 public:
     // What the drives' probe input sees for a tool tip, given the surface the move carries.
     using Surface = std::function<bool(const canon::ProbeSurface&, const Vec3& tip)>;
-    explicit LatchingMachine(Surface surface) : m_surface(std::move(surface)) {}
+    explicit LatchingMachine(Surface surface, double braking = 0.05)
+        : m_surface(std::move(surface)), m_braking(braking) {}
 
     void consume(const canon::Command& command) override {
         const canon::CommandBody& body = command.body;
@@ -45,7 +48,7 @@ public:
     }
 
     // The probe move's end: the first touch along it, found to far below a nanometre; the axes
-    // then stop `kBraking` further on. Without a touch they stop at its end point.
+    // then stop `braking` further on. Without a touch they stop at its end point.
     interp::WorldSnapshot latch() {
         interp::WorldSnapshot world;
         EXPECT_TRUE(m_probe.has_value());
@@ -69,7 +72,7 @@ public:
             world.probePosition = probe.target;
             world.probePosition.setXyz(from + hi * (to - from));
             world.position = world.probePosition;
-            world.position.setXyz(world.probePosition.xyz() + kBraking * (to - from) / length);
+            world.position.setXyz(world.probePosition.xyz() + m_braking * (to - from) / length);
             break;
         }
         m_tip = world.position;
@@ -79,12 +82,12 @@ public:
     void setTip(const Pose& tip) { m_tip = tip; }
 
     static constexpr double kProbingFeed = 1000.0;  // F of a new touch-probe table row
-    static constexpr double kBraking = 0.05;
     int probeMoves = 0;
     int probingFeedMoves = 0;
 
 private:
     Surface m_surface;
+    double m_braking;
     Pose m_tip;
     std::optional<canon::ProbeMove> m_probe;
 };
@@ -233,6 +236,31 @@ TEST_F(ProbingLatchTest, AProbeMoveWithoutATouchIsTheManualsError) {
     EXPECT_NE(latched.find("PRB-001"), std::string::npos) << latched;
     ASSERT_EQ(run(program, nullptr), interp::RunStatus::Failed);
     EXPECT_EQ(firstError(), latched);
+}
+
+TEST_F(ProbingLatchTest, AxesStoppingBeyondTheStylusOvertravelStopTheProgram) {
+    // The stand-in machine brakes 6 mm beyond the first touch of 400: more than the stylus's
+    // 5 mm. Within them (4.9 mm) the cycle goes on.
+    const std::string program =
+        "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+        "3 TOOL CALL 1 Z\n4 L X-20 Y-20 Z+50 R0 FMAX\n"
+        "5 TCH PROBE 400 BASIC ROTATION\n  Q263=+10\n  Q264=+0\n  Q265=+80\n  Q266=+0\n"
+        "  Q272=+2\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n  Q301=1\n  Q307=0\n"
+        "  Q305=0\n";
+    auto onThePart = [](const canon::ProbeSurface& surface, const Vec3& tip) {
+        return surface.touches(tip);
+    };
+    LatchingMachine far(onThePart, 6.0);
+    ASSERT_EQ(run(program, &far), interp::RunStatus::Failed);
+    EXPECT_EQ(far.probeMoves, 1);
+    EXPECT_NE(firstError().find("PRB-025"), std::string::npos) << firstError();
+    EXPECT_NE(firstError().find("6.000 mm beyond"), std::string::npos) << firstError();
+    LatchingMachine near(onThePart, 4.9);
+    EXPECT_EQ(run(program, &near), interp::RunStatus::Finished) << firstError();
+    // The front face's 0.7 degrees became row 0's basic rotation.
+    std::stringstream presets;
+    presets << std::ifstream(dir / "PRESET.PR").rdbuf();
+    EXPECT_NE(presets.str().find("+0.7  "), std::string::npos) << presets.str();
 }
 
 }  // namespace
