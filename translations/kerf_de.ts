@@ -8899,6 +8899,10 @@ wählen</translation>
         <translation>{1}: Parameter {2} ({3}) nimmt keine Istposition an (Soll@Ist gilt für die Sollpositionen eines 14xx-Zyklus)</translation>
     </message>
     <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>der Taster hielt {1} mm hinter seinem Antastpunkt an, weiter als sein Taststift ausgelenkt werden kann ({2} mm): den Antastvorschub F in tchprobe.tp verringern</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>Tastsystemzyklus {1}: die simulierten Werkzeuge können nicht geschrieben werden: {2}</translation>
     </message>

@@ -8899,6 +8899,10 @@ solución</translation>
         <translation>{1}: el parámetro {2} ({3}) no admite posición real (nominal@real es para las posiciones nominales de un ciclo 14xx)</translation>
     </message>
     <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>el palpador se detuvo {1} mm más allá de su punto de palpación, más de lo que su vástago puede desviarse ({2} mm): reduzca el avance de palpación F en tchprobe.tp</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>ciclo de palpación {1}: no se pueden escribir las herramientas simuladas: {2}</translation>
     </message>

@@ -8902,6 +8902,10 @@ rozwiązanie</translation>
         <translation>{1}: parametr {2} ({3}) nie przyjmuje pozycji rzeczywistej (zadana@rzeczywista dotyczy pozycji zadanych cyklu 14xx)</translation>
     </message>
     <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>sonda zatrzymała się {1} mm za punktem próbkowania, dalej niż może się wychylić jej trzpień ({2} mm): zmniejsz posuw próbkowania F w tchprobe.tp</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>cykl sondy {1}: nie można zapisać symulowanych narzędzi: {2}</translation>
     </message>

@@ -8899,6 +8899,10 @@ solução</translation>
         <translation>{1}: o parâmetro {2} ({3}) não aceita posição real (nominal@real é para as posições nominais de um ciclo 14xx)</translation>
     </message>
     <message>
+        <source>the probe stopped {1} mm beyond its touch point, more than its stylus can be deflected ({2} mm): lower the probing feed F in tchprobe.tp</source>
+        <translation>o apalpador parou {1} mm além do seu ponto de apalpação, mais do que a sua haste pode ser defletida ({2} mm): reduza o avanço de apalpação F em tchprobe.tp</translation>
+    </message>
+    <message>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>ciclo de apalpação {1}: não é possível escrever as ferramentas simuladas: {2}</translation>
     </message>

@@ -91,6 +91,8 @@ std::unique_ptr<Session> openSession(const RunOptions& options, bool backgroundC
         if (*output && **output != "-") request.runOutputs.push_back(fs::absolute(**output));
     }
     request.blockSkip = options.blockSkip;
+    // Motion in simulated time latches the probe; the drive chain's bus does not model one.
+    request.touchesFromMachine = (options.motion || options.samples) && !options.drives;
     std::optional<tables::PresetTable> presets;
     if (options.preset) {
         presets = presetTable(request.ncRoot, *options.preset, session->diagnostics);

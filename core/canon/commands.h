@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -106,12 +107,25 @@ struct SetFeedMode {
     FeedMode mode = FeedMode::PerMinute;
 };
 
+// What a simulated machine's probe input touches during one probe move, when the interpreter
+// knows the part (a TNC probing cycle's simulated workpiece, docs/probing.md): true when the
+// probe, the tool tip at `tip` (the stream's coordinates, X Y Z), touches. Called in the servo
+// cycle: it must neither allocate nor lock.
+class ProbeSurface {
+public:
+    virtual ~ProbeSurface() = default;
+    virtual bool touches(const Vec3& tip) const = 0;
+};
+
 // Feed move that ends when the probe touches (or, with untilRelease, stops touching: Fagor G76);
 // the machine decides where it ends, so a SyncPoint follows before the program reads positions.
+// `surface`: what a simulated machine's probe touches on this move; null: the machine file's
+// [simulation.probe] box. A real machine ignores it.
 struct ProbeMove {
     Pose target;
     double feed = 0.0;
     bool untilRelease = false;
+    std::shared_ptr<const ProbeSurface> surface = nullptr;
 };
 
 // Operator: a FAGOR customisation program waits for a key (WKEY) or an input (IB).

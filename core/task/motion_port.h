@@ -35,6 +35,9 @@ public:
     virtual bool drained() const = 0;
     virtual interp::WorldSnapshot world() const = 0;
     virtual Progress progress() const = 0;
+    // A probe move ends where the machine's probe input latched (world().probePosition), not at
+    // its programmed end point: the TNC probing cycles take their touches from it.
+    virtual bool latchesProbe() const { return false; }
 
     virtual void cycleStart() = 0;
     virtual void feedHold() = 0;

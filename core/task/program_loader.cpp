@@ -102,6 +102,7 @@ void loadTnc(const machine::MachineConfig& machine, const ProgramRequest& reques
     settings.mdi = request.mdi;
     settings.startSpindleRpm = request.spindleRpm;
     settings.startSpindle = request.spindle;
+    settings.touchesFromMachine = request.touchesFromMachine;
     auto interpreter = std::make_unique<klartext::KlartextInterpreter>(*loaded.sources, settings);
     loaded.removedMaterial = interpreter->removedMaterial();
     loaded.ready =

@@ -60,6 +60,10 @@ struct ProgramRequest {
     double spindleRpm = 0.0;
     // TNC: how the spindle turns when the block starts (a TOOL CALL S then changes its speed).
     canon::SpindleDirection spindle = canon::SpindleDirection::Stopped;
+    // TNC: the probing cycles' touches come from the machine's latch (the program runs on motion
+    // that latches: `kerf run --motion`, the panel's machine); false: the interpreter decides
+    // them on its simulated part.
+    bool touchesFromMachine = false;
 };
 
 struct LoadedProgram {

@@ -18,6 +18,19 @@ Pose minus(Pose pose, const Pose& shift) {
     return pose;
 }
 
+// The surface a probe move carries, seen from the machine's origin: the tips the machine tests
+// lose the shift before the surface (in the stream's coordinates) is asked.
+class ShiftedSurface final : public canon::ProbeSurface {
+public:
+    ShiftedSurface(std::shared_ptr<const canon::ProbeSurface> surface, const Vec3& shift)
+        : m_surface(std::move(surface)), m_shift(shift) {}
+    bool touches(const Vec3& tip) const override { return m_surface->touches(tip - m_shift); }
+
+private:
+    std::shared_ptr<const canon::ProbeSurface> m_surface;
+    Vec3 m_shift;
+};
+
 }  // namespace
 
 ShiftedMotionPort::ShiftedMotionPort(std::unique_ptr<MotionPort> machine)
@@ -37,6 +50,12 @@ bool ShiftedMotionPort::submit(const canon::Command& command) {
                           std::is_same_v<T, canon::SpindleSyncedMove> ||
                           std::is_same_v<T, canon::ProbeMove>) {
                 body.target = plus(body.target, m_shift);
+                if constexpr (std::is_same_v<T, canon::ProbeMove>) {
+                    if (body.surface) {
+                        body.surface =
+                            std::make_shared<ShiftedSurface>(body.surface, m_shift.xyz());
+                    }
+                }
             } else if constexpr (std::is_same_v<T, canon::ArcMove>) {
                 body.target = plus(body.target, m_shift);
                 body.center += m_shift.xyz();

@@ -44,6 +44,7 @@ public:
     bool drained() const override { return m_machine->drained(); }
     interp::WorldSnapshot world() const override;
     Progress progress() const override { return m_machine->progress(); }
+    bool latchesProbe() const override { return m_machine->latchesProbe(); }
 
     void cycleStart() override { m_machine->cycleStart(); }
     void feedHold() override { m_machine->feedHold(); }

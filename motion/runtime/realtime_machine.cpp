@@ -47,12 +47,14 @@ RealtimeMachine::RealtimeMachine(const machine::MachineConfig& config, RealtimeO
         m_simDrives->setTruePositions(joints);
         if (!m_options.probeSurface)
             m_options.probeSurface = probeWorkpiece(config, options.motion.workOffset);
-        if (m_options.probeSurface) {
-            // Called in the servo thread: the surface test and tipOf() do not allocate.
-            m_simDrives->setProbeSurface([this](const std::array<double, kMaxJoints>& j) {
-                return m_options.probeSurface(tipOf(j));
-            });
-        }
+        // Called in the servo thread: the surface tests and tipOf() do not allocate. The
+        // surface the current probe move carries, else the machine file's box.
+        m_simDrives->setProbeSurface([this](const std::array<double, kMaxJoints>& j) {
+            const AxisVector tip = tipOf(j);
+            if (const canon::ProbeSurface* target = m_probeTarget.load(std::memory_order_acquire))
+                return target->touches(Vec3(tip[0], tip[1], tip[2]));
+            return m_options.probeSurface && m_options.probeSurface(tip);
+        });
     }
     m_planner.setPosition(options.startPosition);
 }
@@ -134,6 +136,15 @@ void RealtimeMachine::run() {
 }
 
 bool RealtimeMachine::submit(const canon::Command& command) {
+    const auto* probe = std::get_if<canon::ProbeMove>(&command.body);
+    if (probe != nullptr && probe->surface != m_probeTargetOwner) {
+        // An interpreter waits for a probe move's result before it sends the next one, so the
+        // servo thread no longer tests the surface replaced here; it stays alive one more
+        // probe move all the same.
+        m_retiredProbeTarget = std::move(m_probeTargetOwner);
+        m_probeTargetOwner = probe->surface;
+        m_probeTarget.store(m_probeTargetOwner.get(), std::memory_order_release);
+    }
     bool accepted = m_planner.add(command);
     m_toolLength.store(m_planner.toolLength(), std::memory_order_relaxed);
     pump();

@@ -98,6 +98,11 @@ private:
     std::atomic<bool> m_locked{false};
     // The planned tool length, for the probe surface test in the servo thread.
     std::atomic<double> m_toolLength{0.0};
+    // What the probe touches on the current probe move (canon::ProbeMove::surface): owned by
+    // the task thread, tested by the servo thread through the pointer.
+    std::shared_ptr<const canon::ProbeSurface> m_probeTargetOwner;
+    std::shared_ptr<const canon::ProbeSurface> m_retiredProbeTarget;
+    std::atomic<const canon::ProbeSurface*> m_probeTarget{nullptr};
     std::string m_note;
 };
 

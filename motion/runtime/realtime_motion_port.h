@@ -31,6 +31,7 @@ public:
     bool drained() const override;
     interp::WorldSnapshot world() const override;
     Progress progress() const override;
+    bool latchesProbe() const override { return true; }
 
     void cycleStart() override;
     void feedHold() override;

@@ -30,11 +30,12 @@ struct SimulatedMachine::Impl {
         if (!options.probeSurface) {
             options.probeSurface = probeWorkpiece(config, options.motion.workOffset);
         }
-        if (options.probeSurface) {
-            drives.setProbeSurface([this](const std::array<double, kMaxJoints>& j) {
-                return options.probeSurface(tipOf(j));
-            });
-        }
+        // The surface the current probe move carries, else the machine file's box.
+        drives.setProbeSurface([this](const std::array<double, kMaxJoints>& j) {
+            const AxisVector tip = tipOf(j);
+            if (probeTarget) return probeTarget->touches(Vec3(tip[0], tip[1], tip[2]));
+            return options.probeSurface && options.probeSurface(tip);
+        });
         if (!options.samplesCsvPath.empty() && !recorder.writeCsv(options.samplesCsvPath)) {
             Diagnostic d;
             d.code = "motion.samples-file";
@@ -215,6 +216,8 @@ struct SimulatedMachine::Impl {
     Planner planner;
     MotionRecorder recorder;
     interp::WorldSnapshot world;
+    // What the probe touches on the current probe move (canon::ProbeMove::surface).
+    std::shared_ptr<const canon::ProbeSurface> probeTarget;
     DiagnosticList diagnostics;
     double startTimeS = 0.0;           // the drives enabled: the program may start
     double emergencyStopTimeS = -1.0;  // simulated time of the button press; negative: never
@@ -232,10 +235,12 @@ void SimulatedMachine::consume(const canon::Command& command) {
     if (const auto* probe = std::get_if<canon::ProbeMove>(&command.body)) {
         const auto event =
             probe->untilRelease ? SimDriveSet::ProbeEvent::Release : SimDriveSet::ProbeEvent::Touch;
-        if (event != m.drives.probeEvent()) {
-            // The drives arm for the event when the move starts: finish what is queued first.
+        if (event != m.drives.probeEvent() || probe->surface != m.probeTarget) {
+            // The drives arm for the event when the move starts, and test the surface while it
+            // runs: finish what is queued first.
             m.runToIdle();
             m.drives.setProbeEvent(event);
+            m.probeTarget = probe->surface;
         }
     }
     if (m.planner.needsPosition()) {

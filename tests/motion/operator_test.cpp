@@ -868,5 +868,38 @@ TEST(Dwell, WaitsTheProgrammedTime) {
     EXPECT_LT(run.report.durationS, 0.6);
 }
 
+// What a Klartext probing cycle hands over: a face the drives' tip reaches at X 7.5.
+class FaceAtX final : public canon::ProbeSurface {
+public:
+    bool touches(const Vec3& tip) const override { return tip.x() >= 7.5; }
+};
+
+TEST(Probing, AProbeMovesOwnSurfaceReplacesTheMachineFilesBoxForThatMove) {
+    // The box of [simulation.probe] (X 0..50, top at workpiece Z -2.5) stays for moves that
+    // carry no surface (FAGOR G75); a move with its own surface latches on that one.
+    machine::MachineConfig config = millConfig();
+    config.probeWorkpiece.enabled = true;
+    config.probeWorkpiece.xMinMm = 0.0;
+    config.probeWorkpiece.xMaxMm = 50.0;
+    config.probeWorkpiece.zMaxMm = -102.5;
+    SimulationOptions options;
+    options.motion.workOffset[2] = -100.0;
+    SimulatedMachine sim(config, options);
+    sim.consume(cmd(canon::RapidMove{at(-10, 10, 5)}, 1));
+    auto face = std::make_shared<FaceAtX>();
+    sim.consume(cmd(canon::ProbeMove{at(20, 10, 5), 300.0, false, face}, 2));
+    const interp::WorldSnapshot touch = sim.drain();
+    EXPECT_TRUE(touch.probeTriggered);
+    EXPECT_NEAR(touch.probePosition[Axis::X], 7.5, 1e-6);
+    EXPECT_GT(touch.position[Axis::X], 7.5);  // braked beyond the trigger
+    EXPECT_LT(touch.position[Axis::X], 8.0);
+    // Back at Z 5 over the box: without a surface the box is touched again.
+    sim.consume(cmd(canon::RapidMove{at(10, 10, 5)}, 3));
+    sim.consume(cmd(canon::ProbeMove{at(10, 10, -20), 300.0}, 4));
+    const interp::WorldSnapshot box = sim.drain();
+    EXPECT_TRUE(box.probeTriggered);
+    EXPECT_NEAR(box.probePosition[Axis::Z], -2.5, 1e-6);
+}
+
 }  // namespace
 }  // namespace kerf::motion::test

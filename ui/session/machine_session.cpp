@@ -146,6 +146,7 @@ bool MachineSession::startProgram(const QString& program, const std::filesystem:
     request.presetInMachine = presetInMachine();
     request.basicRotationDeg = basicRotationDeg();
     request.operatorInputs = operatorInputs;
+    request.touchesFromMachine = m_motion->latchesProbe();
     m_programName = task::programName(path);
     return start(task::loadProgram(m_machine, request), startLine, m_singleBlock);
 }
@@ -162,6 +163,7 @@ bool MachineSession::executeMdi(const QString& block) {
     request.basicRotationDeg = basicRotationDeg();
     // A TNC's MDI keeps S, the spindle and the coolant from one block to the next.
     request.mdi = true;
+    request.touchesFromMachine = m_motion->latchesProbe();
     request.spindleRpm = m_modalSpindleRpm;
     if (m_status.programmedSpindleRpm > 0.0) {
         request.spindle = m_status.actualSpindleRpm < 0.0

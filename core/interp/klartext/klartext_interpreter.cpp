@@ -295,6 +295,12 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
             m_cuts.setPosition(m_frame.toWorkpiece(m_programmed).xyz());
     }
     while (blockBudget-- > 0 && m_status == interp::RunStatus::BudgetUsed) {
+        if (m_touchReplay) {
+            // The probing block again, with one more latched touch; not counted again.
+            passTouching();
+            outputValuesOk();
+            continue;
+        }
         m_blockOffset = m_reader->offset();
         if (m_blockOffset >= m_releasedBefore + program::kTextReleaseStep) {
             // Every MiB read: tell the check how far the run is, and let the kernel drop the
@@ -347,6 +353,10 @@ interp::RunStatus KlartextInterpreter::run(canon::Sink& sink, uint64_t blockBudg
 }
 
 void KlartextInterpreter::resume(const interp::WorldSnapshot& world) {
+    if (m_status == interp::RunStatus::NeedsSync && touchHandedToMachine()) {
+        resumeTouch(world);
+        return;
+    }
     if (m_status != interp::RunStatus::NeedsSync || !m_pendingSync) return;
     PendingSync pending = *m_pendingSync;
     m_pendingSync.reset();

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -92,6 +93,10 @@ struct KlartextSettings {
     bool mdi = false;
     double startSpindleRpm = 0.0;
     canon::SpindleDirection startSpindle = canon::SpindleDirection::Stopped;  // as it turns
+    // The touch-probe cycles' touches come from the machine's latch (a probe move and a sync
+    // point per touch: `kerf run --motion`, the panel's simulated machine); false: the
+    // interpreter decides them on the simulated part (plain `kerf run`, the test run).
+    bool touchesFromMachine = false;
 };
 
 // The TNC 320 engine: runs conversational ("Klartext") programs, and DIN/ISO programs through the
@@ -436,6 +441,17 @@ private:
         cycles::probing::ProbeData& probe);
     // The probe as it really is ([[simulation.tool_error]]).
     workpiece::RealTool realProbe() const;
+    // A 4xx cycle's touches and results, after its checks (klartext_probing.cpp).
+    void probeAndApply(const cycles::probing::ProbingCycleDescriptor& cycle,
+                       const cycles::CycleValues& values, const cycles::probing::ProbeData& probe);
+    // A block's probing, from its first move, with touches from the machine's latch when the
+    // settings say so (klartext_probing_latch.cpp).
+    void runTouching(std::function<void()> block);
+    void passTouching();
+    void resumeTouch(const interp::WorldSnapshot& world);
+    // The current pass handed a touch to the machine: the rest of it moves nothing and its
+    // results do not count.
+    bool touchHandedToMachine() const { return m_touchReplay && m_touchReplay->waiting; }
     // The TT cycles 30-33 / 480-483 (klartext_tool_measurement.cpp).
     void executeOldToolProbeBlock(const CycleDefinition& def);
     void executeToolMeasurement(const cycles::probing::ProbingCycleDescriptor& cycle,
@@ -721,6 +737,25 @@ private:
         bool pending = false;        // 3: complete after 3.3, waits for an optional 3.4
     };
     OldProbe m_oldProbe;
+    void probeOld(const OldProbe& p);  // the collected cycle's touch and results
+    // A probing block whose touches the machine latches: after each latched touch the block runs
+    // again from its start, moving nothing up to the last latched touch (docs/probing.md, "How
+    // a cycle runs").
+    struct LatchedTouch {
+        bool triggered = false;
+        Pose tip;  // the tool tip at the trigger, stream coordinates
+    };
+    struct TouchReplay {
+        std::function<void()> block;  // the block's probing, from its first move
+        Pose start;                   // m_programmed when it began
+        std::vector<LatchedTouch> latched;
+        size_t next = 0;       // touches the current pass has reached
+        bool waiting = false;  // the current pass handed touch `latched.size()` to the machine
+        // Before the last latched touch's trigger, or after a touch was handed over: the pass
+        // only follows the cycle's positions.
+        bool quiet() const { return waiting || next < latched.size(); }
+    };
+    std::optional<TouchReplay> m_touchReplay;
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;  // the preset's, or set by 400-404 (kept in m_frame)

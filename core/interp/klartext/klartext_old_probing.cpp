@@ -268,8 +268,13 @@ void KlartextInterpreter::executeOldProbeBlock(const CycleDefinition& def) {
 }
 
 void KlartextInterpreter::runOldProbe() {
-    OldProbe p = m_oldProbe;
+    const OldProbe p = m_oldProbe;
     m_oldProbe = OldProbe{};
+    runTouching([this, p] { probeOld(p); });
+}
+
+void KlartextInterpreter::probeOld(const OldProbe& collected) {
+    OldProbe p = collected;
     const int n = p.number;
     cycles::probing::SingleTouch& touch = p.touch;
     if (n == 0) {

@@ -13,6 +13,7 @@
 #include "core/cycles/probing/probing_log_html.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/tables/probe_table.h"
+#include "core/workpiece/ball_probe_surface.h"
 #include "core/workpiece/blank_solids.h"
 #include "core/workpiece/simulated_part.h"
 
@@ -97,7 +98,7 @@ public:
 
     void moveTo(const Vec3& ballCentre) override {
         const bool rapid = m_probe.positioningFeed <= 0.0;
-        m_k.moveProgrammed(m_k.fromLocal(spindleOf(ballCentre)), rapid, m_probe.positioningFeed);
+        move(ballCentre, rapid, m_probe.positioningFeed);
     }
 
     std::optional<Vec3> touch(const Vec3& direction, double maxPath) override {
@@ -112,7 +113,7 @@ public:
     }
 
     void orient(double angleDeg) override {
-        m_k.emit(canon::SpindleOrient{angleDeg});
+        if (!quiet()) m_k.emit(canon::SpindleOrient{angleDeg});
         m_orientationDeg = angleDeg;
     }
 
@@ -127,6 +128,7 @@ private:
             orient(angle);
         }
         const Vec3 start = ballCentre();
+        if (m_k.m_touchReplay) return latched(start, direction, maxPath, backToStart);
         const Vec3 real = start + realError();
         auto hit = m_part.touch(toPart(real), toPart(real + direction) - toPart(real), maxPath,
                                 m_realRadius);
@@ -140,6 +142,69 @@ private:
         if (backToStart) m_k.moveProgrammed(m_k.fromLocal(spindleOf(start)), true, 0.0);
         if (!hit) return std::nullopt;
         return end;
+    }
+    // A touch whose trigger the machine latches. A pass of the block reaches its touches in
+    // order: one latched before gives its trigger, the first one not latched yet becomes a
+    // probe move to the end of DIST and a sync point, and the pass ends there.
+    std::optional<Vec3> latched(const Vec3& start, const Vec3& direction, double maxPath,
+                                bool backToStart) {
+        KlartextInterpreter::TouchReplay& replay = *m_k.m_touchReplay;
+        if (replay.waiting) return std::nullopt;
+        const size_t touch = replay.next++;
+        if (touch == replay.latched.size()) {
+            handToMachine(start + maxPath * direction);
+            return std::nullopt;
+        }
+        const LatchedTouch& latch = replay.latched[touch];
+        const Vec3 end = latch.triggered ? ballOf(latch.tip) : Vec3(start + maxPath * direction);
+        m_k.m_lastProbe = interp::ProgramStatus::Probe{latch.triggered, latch.tip};
+        if (replay.quiet()) {
+            m_k.m_programmed = m_k.fromLocal(spindleOf(end));
+        } else {
+            // The last latched touch: the moves after it start where the machine stopped.
+            m_k.m_programmed = m_k.programOfPath(m_k.m_path.toolPosition());
+        }
+        if (backToStart) move(start, true, 0.0);
+        if (!latch.triggered) return std::nullopt;
+        return end;
+    }
+    void handToMachine(const Vec3& farEnd) {
+        // The probe move starts where the moves before it end, and the sync point must reach
+        // the machine now.
+        if (!m_k.checkPathError(m_k.m_path.flush())) return;
+        const Pose target = m_k.m_frame.toWorkpiece(m_k.fromLocal(spindleOf(farEnd)));
+        m_k.emit(canon::ProbeMove{target, m_probe.probingFeed, false, surface()});
+        m_k.emit(canon::SyncPoint{canon::SyncReason::ProbeResult});
+        m_k.m_touchReplay->waiting = true;
+    }
+    // The part as the drives see it: a tool tip in the stream's coordinates -> the real ball
+    // centre in the part's, affine while the tables and the spindle stand still.
+    std::shared_ptr<const canon::ProbeSurface> surface() const {
+        auto realBall = [this](const Vec3& tip) {
+            Pose pose = m_k.m_frame.toWorkpiece(m_k.m_programmed);
+            pose.setXyz(tip);
+            return toPart(m_k.toLocal(m_k.m_frame.toProgram(pose)) + controlOffset() + realError());
+        };
+        const Vec3 at = m_k.m_frame.toWorkpiece(m_k.m_programmed).xyz();
+        Eigen::Affine3d map = Eigen::Affine3d::Identity();
+        for (int i = 0; i < 3; ++i)
+            map.linear().col(i) = realBall(at + Vec3::Unit(i)) - realBall(at);
+        map.translation() = realBall(at) - map.linear() * at;
+        return std::make_shared<workpiece::BallProbeSurface>(m_part, map, m_realRadius);
+    }
+    // The control's ball centre for a latched tool tip (stream coordinates).
+    Vec3 ballOf(const Pose& tip) const {
+        return m_k.toLocal(m_k.m_frame.toProgram(tip)) + controlOffset();
+    }
+    bool quiet() const { return m_k.m_touchReplay && m_k.m_touchReplay->quiet(); }
+    // A positioning move of the ball centre; a quiet pass only follows it.
+    void move(const Vec3& ballCentre, bool rapid, double feed) {
+        const Pose target = m_k.fromLocal(spindleOf(ballCentre));
+        if (quiet()) {
+            m_k.m_programmed = target;
+            return;
+        }
+        m_k.moveProgrammed(target, rapid, feed);
     }
     static Vec2 turned(const Vec2& v, double degrees) {
         const double a = degrees * std::numbers::pi / 180.0;
@@ -363,31 +428,39 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
     if (!checkPathError(m_path.flush())) return;
     for (uint16_t q : cycle->results)
         m_q.set(QRef{QKind::Q, q}, 0.0);
+    runTouching([this, cycle, values, probe = *probe] { probeAndApply(*cycle, values, probe); });
+}
+
+void KlartextInterpreter::probeAndApply(const cycles::probing::ProbingCycleDescriptor& cycle,
+                                        const cycles::CycleValues& values,
+                                        const cycles::probing::ProbeData& probe) {
     const workpiece::SimulatedWorkpiece part = simulatedPart();
-    ProbeAdapter machine(*this, *probe, part, realProbe());
+    ProbeAdapter machine(*this, probe, part, realProbe());
     cycles::probing::ProbingResults results;
-    if (auto error = cycle->run(values, *probe, machine, results)) {
+    const auto error = cycle.run(values, probe, machine, results);
+    if (touchHandedToMachine()) return;
+    if (error) {
         failCycle(*error);
         return;
     }
     for (const auto& [q, value] : results.parameters)
         m_q.set(QRef{QKind::Q, q}, isLengthResult(q) ? value / lengthScale() : value);
-    if (results.protocol && !writeProtocol(def.number, cycle->name, *results.protocol)) return;
+    if (results.protocol && !writeProtocol(cycle.number, cycle.name, *results.protocol)) return;
     const bool monitored = values.number(330) != 0.0 || !values.text(330).empty();
     if (results.toolCorrection && monitored &&
-        !applyToolMonitoring(def.number, values, *results.toolCorrection)) {
+        !applyToolMonitoring(cycle.number, values, *results.toolCorrection)) {
         return;
     }
-    if (results.datum && !applyDatum(def.number, results)) return;
-    if (results.basicRotationDeg && !applyBasicRotation(def.number, results)) return;
-    if (results.rotary && !applyRotaryCompensation(def.number, results)) return;
+    if (results.datum && !applyDatum(cycle.number, results)) return;
+    if (results.basicRotationDeg && !applyBasicRotation(cycle.number, results)) return;
+    if (results.rotary && !applyRotaryCompensation(cycle.number, results)) return;
     if (results.calibration) {
         // The probe's row: the calibrated L and R replace the table's, with no deltas.
         if (toolTable() == nullptr || toolTable()->byNumber(m_tool.number) == nullptr) {
             fail("PRB-015",
                  KERF_TR_NOOP("touch probe cycle {1}: calibration writes the probe's row of the "
                               "tool table TOOL.T: call the probe from it"),
-                 {std::to_string(def.number)});
+                 {std::to_string(cycle.number)});
             return;
         }
         ToolTableEdit edit;
@@ -396,13 +469,13 @@ void KlartextInterpreter::executeProbeCycle(const CycleDefinition& def) {
         const tables::ToolData row = *toolTable()->byNumber(m_tool.number);
         if (edit.length && row.deltaLength != 0.0) edit.deltaLength = 0.0;
         if (edit.radius && row.deltaRadius != 0.0) edit.deltaRadius = 0.0;
-        if (!writeToolTable(def.number, m_tool.number, 0, edit)) return;
+        if (!writeToolTable(cycle.number, m_tool.number, 0, edit)) return;
         if (results.calibration->centreOffset &&
-            !writeProbeCentreOffset(def.number, probe->number,
+            !writeProbeCentreOffset(cycle.number, probe.number,
                                     *results.calibration->centreOffset)) {
             return;
         }
-        if (!logCalibration(def.number, cycle->name, row, *probe, *results.calibration)) return;
+        if (!logCalibration(cycle.number, cycle.name, row, probe, *results.calibration)) return;
     }
     if (results.toleranceStop) {
         failCycle(*results.toleranceStop);
@@ -445,7 +518,9 @@ std::optional<cycles::probing::SingleTouchResult> KlartextInterpreter::probeOnce
     const workpiece::SimulatedWorkpiece part = simulatedPart();
     ProbeAdapter machine(*this, probe, part, realProbe());
     cycles::probing::SingleTouchResult result;
-    if (auto error = cycles::probing::runSingleTouch(cycle, touch, probe, machine, result)) {
+    const auto error = cycles::probing::runSingleTouch(cycle, touch, probe, machine, result);
+    if (touchHandedToMachine()) return std::nullopt;
+    if (error) {
         failCycle(*error);
         return std::nullopt;
     }

@@ -1,6 +1,8 @@
 // `kerf run` on examples/probing: the machine file misplaces the blank by 1.5 / -0.8 / -0.2 mm and
 // 0.7 degrees; the probing cycles find it (docs/probing.md).
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -169,6 +171,53 @@ TEST_F(ProbingExamples, Rotation403TurnsTheCTableOfMill5) {
         const nlohmann::json report = run("ROT403", options, "machine5.toml");
         EXPECT_TRUE(report["ok"].get<bool>()) << options;
         EXPECT_NEAR(report["final_position"]["C"].get<double>(), 0.7, 1e-6) << options;
+    }
+}
+
+// The three numbers after "Actual values:" in a measuring log (centre main, secondary, diameter).
+std::array<double, 3> actualValues(const std::string& log) {
+    std::array<double, 3> values{};
+    std::istringstream lines(log.substr(log.find("Actual values:")));
+    std::string line;
+    std::getline(lines, line);
+    for (double& value : values) {
+        std::getline(lines, line);
+        value = std::stod(line.substr(28));
+    }
+    return values;
+}
+
+TEST_F(ProbingExamples, LatchedSetUpAndMeasureFindTheRealPartAndThePocket) {
+    // LATCH.H: tool 5 (really 0.012 thinner) cuts a pocket of diameter 30 at (70, 30), so its
+    // wall has the diameter 29.976; 400 turns the system by the front face's 0.7 degrees, 411
+    // puts the origin on the real blank's centre R(0.7)(50, 30) + (1.5, -0.8), and 421 finds the
+    // pocket at R(-0.7)((70, 30) - that centre). The same plain and with the touches latched by
+    // the simulated servo cycle under --motion.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    const double cx = 50.0 * std::cos(a) - 30.0 * std::sin(a) + 1.5;
+    const double cy = 50.0 * std::sin(a) + 30.0 * std::cos(a) - 0.8;
+    const double px = std::cos(a) * (70.0 - cx) + std::sin(a) * (30.0 - cy);
+    const double py = -std::sin(a) * (70.0 - cx) + std::cos(a) * (30.0 - cy);
+    for (const char* options : {"", "--motion"}) {
+        fs::remove(dir / "PRESET.PR");
+        const nlohmann::json report = run("LATCH", options);
+        EXPECT_TRUE(report["ok"].get<bool>()) << options;
+        EXPECT_NEAR(report["final_position"]["X"].get<double>(), cx, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Y"].get<double>(), cy, 0.002) << options;
+        EXPECT_NEAR(report["final_position"]["Z"].get<double>(), 10.0, 1e-6) << options;
+        const std::array<double, 3> hole = actualValues(read(dir / "TCHPR421.TXT"));
+        EXPECT_NEAR(hole[0], px, 0.002) << options;
+        EXPECT_NEAR(hole[1], py, 0.002) << options;
+        EXPECT_NEAR(hole[2], 29.976, 0.002) << options;
+        // Preset row 0: the real centre in machine coordinates (the built-in mill's workpiece
+        // origin is at machine X 0 Y 0 Z -400), SPC the basic rotation 0.7.
+        char row[160];
+        std::snprintf(row, sizeof row, "%+.5f     %+.5f     -400", cx, cy);
+        const std::string presets = read(dir / "PRESET.PR");
+        EXPECT_NE(presets.find(row), std::string::npos) << options << "\n"
+                                                        << row << "\n"
+                                                        << presets;
+        EXPECT_NE(presets.find("+0.7  "), std::string::npos) << options << presets;
     }
 }
 

@@ -331,6 +331,21 @@ TEST_F(ManualProbingScreen, WithoutAProgramsBlankTheMachinesSimulatedBlankIsTouc
               StatusTabs::lengthText(ball + kBall, false));
 }
 
+TEST_F(ManualProbingScreen, ProgramRunTakesTheTouchesOfCycle400FromTheMachinesLatch) {
+    // Program run on the simulated machine: each touch of 400 is a probe move that the servo
+    // cycle stops at the latch, where the ball on the placed part triggers it. The front edge is
+    // turned by the setup's 0.7 degrees: row 0's SPC gets it, to the latch's bisection.
+    ASSERT_TRUE(session->startProgram(
+        QStringLiteral("0 BEGIN PGM ROT MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n"
+                       "2 BLK FORM 0.2 X+100 Y+60 Z+0\n3 TOOL CALL 1 Z\n"
+                       "4 TCH PROBE 400 BASIC ROTATION\n  Q263=+10\n  Q264=+0\n  Q265=+80\n"
+                       "  Q266=+0\n  Q272=+2\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n"
+                       "  Q301=1\n  Q307=0\n  Q305=0\n5 L Z+50 R0 FMAX\n6 END PGM ROT MM\n"),
+        dir / "ROT.H"));
+    ASSERT_TRUE(processUntil([&] { return !session->busy(); }, 60s));
+    EXPECT_NEAR(spc0(), 0.7, 1e-6);
+}
+
 TEST_F(ManualProbingScreen, ProbingPlOnTheTopGivesItsAnglesInTheProbeTab) {
     // The top is level (the setup turns the part about Z only): A = B = 0.
     press("probePlane");
