@@ -457,6 +457,13 @@ private:
     void executeToolMeasurement(const cycles::probing::ProbingCycleDescriptor& cycle,
                                 const cycles::CycleValues& values, bool oldFormat,
                                 uint16_t statusParameter);
+    // A TT cycle's touches and results, after its checks; `status`: the status parameter (0:
+    // none).
+    void measureToolAndApply(const cycles::probing::ProbingCycleDescriptor& cycle,
+                             const cycles::CycleValues& values, uint16_t status,
+                             const cycles::probing::ToolProbeData& tt,
+                             const cycles::probing::MeasuredToolData& tool,
+                             const workpiece::RealTool& real, double clearanceZ);
     std::optional<cycles::probing::ToolProbeData> toolProbeData(int cycle);
     workpiece::RealTool realTool(const tables::ToolData& row) const;
     const workpiece::RealTool* recordedRealTool(int tool) const;
@@ -756,6 +763,17 @@ private:
         bool quiet() const { return waiting || next < latched.size(); }
     };
     std::optional<TouchReplay> m_touchReplay;
+    // The next touch of a pass under the latch (both probes' adapters): the one latched before,
+    // or null when this pass hands it to the machine now (a probe move to `farEnd` at `feed`
+    // carrying `surface()`, then a sync point) or handed one over already.
+    const LatchedTouch* nextLatchedTouch(
+        const Pose& farEnd, double feed,
+        const std::function<std::shared_ptr<const canon::ProbeSurface>()>& surface);
+    // After a latched touch: the pass goes on from `end`, the trigger as the cycle computes it,
+    // or, after the last latched touch, from where the machine stopped.
+    void followLatchedTouch(const Pose& end);
+    // The pass only follows the cycle's positions and emits nothing.
+    bool touchPassQuiet() const { return m_touchReplay && m_touchReplay->quiet(); }
     std::optional<tables::ProbeTable> m_probeTable;  // tchprobe.tp, read at the first probing
     std::optional<interp::ProgramStatus::Probe> m_lastProbe;  // last touch, for the status
     double m_basicRotationDeg = 0.0;  // the preset's, or set by 400-404 (kept in m_frame)

@@ -148,34 +148,15 @@ private:
     // probe move to the end of DIST and a sync point, and the pass ends there.
     std::optional<Vec3> latched(const Vec3& start, const Vec3& direction, double maxPath,
                                 bool backToStart) {
-        KlartextInterpreter::TouchReplay& replay = *m_k.m_touchReplay;
-        if (replay.waiting) return std::nullopt;
-        const size_t touch = replay.next++;
-        if (touch == replay.latched.size()) {
-            handToMachine(start + maxPath * direction);
-            return std::nullopt;
-        }
-        const LatchedTouch& latch = replay.latched[touch];
-        const Vec3 end = latch.triggered ? ballOf(latch.tip) : Vec3(start + maxPath * direction);
-        m_k.m_lastProbe = interp::ProgramStatus::Probe{latch.triggered, latch.tip};
-        if (replay.quiet()) {
-            m_k.m_programmed = m_k.fromLocal(spindleOf(end));
-        } else {
-            // The last latched touch: the moves after it start where the machine stopped.
-            m_k.m_programmed = m_k.programOfPath(m_k.m_path.toolPosition());
-        }
+        const Vec3 farEnd = start + maxPath * direction;
+        const LatchedTouch* latch = m_k.nextLatchedTouch(
+            m_k.fromLocal(spindleOf(farEnd)), m_probe.probingFeed, [this] { return surface(); });
+        if (latch == nullptr) return std::nullopt;
+        const Vec3 end = latch->triggered ? ballOf(latch->tip) : farEnd;
+        m_k.followLatchedTouch(m_k.fromLocal(spindleOf(end)));
         if (backToStart) move(start, true, 0.0);
-        if (!latch.triggered) return std::nullopt;
+        if (!latch->triggered) return std::nullopt;
         return end;
-    }
-    void handToMachine(const Vec3& farEnd) {
-        // The probe move starts where the moves before it end, and the sync point must reach
-        // the machine now.
-        if (!m_k.checkPathError(m_k.m_path.flush())) return;
-        const Pose target = m_k.m_frame.toWorkpiece(m_k.fromLocal(spindleOf(farEnd)));
-        m_k.emit(canon::ProbeMove{target, m_probe.probingFeed, false, surface()});
-        m_k.emit(canon::SyncPoint{canon::SyncReason::ProbeResult});
-        m_k.m_touchReplay->waiting = true;
     }
     // The part as the drives see it: a tool tip in the stream's coordinates -> the real ball
     // centre in the part's, affine while the tables and the spindle stand still.
@@ -196,7 +177,7 @@ private:
     Vec3 ballOf(const Pose& tip) const {
         return m_k.toLocal(m_k.m_frame.toProgram(tip)) + controlOffset();
     }
-    bool quiet() const { return m_k.m_touchReplay && m_k.m_touchReplay->quiet(); }
+    bool quiet() const { return m_k.touchPassQuiet(); }
     // A positioning move of the ball centre; a quiet pass only follows it.
     void move(const Vec3& ballCentre, bool rapid, double feed) {
         const Pose target = m_k.fromLocal(spindleOf(ballCentre));

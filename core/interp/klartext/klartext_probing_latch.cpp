@@ -59,4 +59,29 @@ void KlartextInterpreter::resumeTouch(const interp::WorldSnapshot& world) {
     m_status = interp::RunStatus::BudgetUsed;
 }
 
+const KlartextInterpreter::LatchedTouch* KlartextInterpreter::nextLatchedTouch(
+    const Pose& farEnd, double feed,
+    const std::function<std::shared_ptr<const canon::ProbeSurface>()>& surface) {
+    TouchReplay& replay = *m_touchReplay;
+    if (replay.waiting) return nullptr;
+    const size_t touch = replay.next++;
+    if (touch == replay.latched.size()) {
+        // The probe move starts where the moves before it end, and the sync point must reach
+        // the machine now.
+        if (!checkPathError(m_path.flush())) return nullptr;
+        emit(canon::ProbeMove{m_frame.toWorkpiece(farEnd), feed, false, surface()});
+        emit(canon::SyncPoint{canon::SyncReason::ProbeResult});
+        replay.waiting = true;
+        return nullptr;
+    }
+    const LatchedTouch& latch = replay.latched[touch];
+    m_lastProbe = interp::ProgramStatus::Probe{latch.triggered, latch.tip};
+    return &latch;
+}
+
+void KlartextInterpreter::followLatchedTouch(const Pose& end) {
+    // The last latched touch: the moves after it start where the machine stopped.
+    m_programmed = m_touchReplay->quiet() ? end : programOfPath(m_path.toolPosition());
+}
+
 }  // namespace kerf::klartext

@@ -10,12 +10,14 @@
 #include "core/cycles/parameter_check.h"
 #include "core/interp/klartext/klartext_interpreter.h"
 #include "core/workpiece/simulated_tool_probe.h"
+#include "core/workpiece/tool_probe_surface.h"
 
 namespace kerf::klartext {
 
-// The machine of a TT cycle in plain runs: moves go into the canonical stream, touches are
-// decided on the simulated TT with the real tool. Positions are the spindle's gauge point in
-// machine coordinates; the interpreter positions the tool tip with the tool's current length.
+// The machine of a TT cycle: moves go into the canonical stream; touches are decided on the
+// simulated TT with the real tool in plain runs, and come from the machine's latch when the
+// settings say so. Positions are the spindle's gauge point in machine coordinates; the
+// interpreter positions the tool tip with the tool's current length.
 class KlartextInterpreter::ToolProbeAdapter final : public cycles::probing::ToolProbingMachine {
 public:
     ToolProbeAdapter(KlartextInterpreter& interpreter, const workpiece::SimulatedToolProbe& tt,
@@ -26,21 +28,21 @@ public:
           m_direction(interpreter.m_spindle),
           m_rpm(interpreter.m_spindleSpeed) {}
 
-    Vec3 gauge() const override {
-        return m_k.m_frame.toWorkpiece(m_k.m_programmed).xyz() + presetInMachine() +
-               Vec3(0.0, 0.0, m_k.m_tool.effectiveLength());
-    }
-    void moveTo(const Vec3& gauge) override { m_k.moveProgrammed(program(gauge), true, 0.0); }
+    Vec3 gauge() const override { return gaugeOf(m_k.m_frame.toWorkpiece(m_k.m_programmed)); }
+    void moveTo(const Vec3& gauge) override { move(program(gauge)); }
     void spindle(canon::SpindleDirection direction, double rpm) override {
         if (direction == m_direction && rpm == m_rpm) return;
         m_direction = direction;
         m_rpm = rpm;
-        m_k.emit(canon::SpindleControl{direction, rpm});
+        if (!m_k.touchPassQuiet()) m_k.emit(canon::SpindleControl{direction, rpm});
     }
-    void orientSpindle(double angleDeg) override { m_k.emit(canon::SpindleOrient{angleDeg}); }
+    void orientSpindle(double angleDeg) override {
+        if (!m_k.touchPassQuiet()) m_k.emit(canon::SpindleOrient{angleDeg});
+    }
 
     std::optional<Vec3> touch(const Vec3& direction, double maxPath, double feed) override {
         const Vec3 start = gauge();
+        if (m_k.m_touchReplay) return latched(start, direction, maxPath, feed);
         auto hit = m_tt.touch(start, direction, maxPath, m_tool);
         const Vec3 end = hit ? *hit : Vec3(start + maxPath * direction);
         interp::ProgramStatus::Probe status;
@@ -57,10 +59,41 @@ public:
     void restoreSpindle() { spindle(m_k.m_spindle, m_k.m_spindleSpeed); }
 
 private:
-    Vec3 presetInMachine() const { return m_k.m_settings.presetInMachine.xyz(); }
+    // A touch whose trigger the machine latches (as the workpiece probe's, klartext_probing.cpp).
+    std::optional<Vec3> latched(const Vec3& start, const Vec3& direction, double maxPath,
+                                double feed) {
+        const Vec3 farEnd = start + maxPath * direction;
+        const LatchedTouch* latch =
+            m_k.nextLatchedTouch(program(farEnd), feed, [this] { return surface(); });
+        if (latch == nullptr) return std::nullopt;
+        const Vec3 end = latch->triggered ? gaugeOf(latch->tip) : farEnd;
+        m_k.followLatchedTouch(program(end));
+        move(program(start));
+        if (!latch->triggered) return std::nullopt;
+        return end;
+    }
+    // The TT as the drives see it: the real tool on the stylus, its gauge point the tool tip
+    // (stream coordinates) shifted by the preset and the tool's current length.
+    std::shared_ptr<const canon::ProbeSurface> surface() const {
+        const Eigen::Affine3d map{Eigen::Translation3d(tipToGauge())};
+        return std::make_shared<workpiece::ToolProbeSurface>(m_tt, map, m_tool);
+    }
+    // A rapid positioning move; a quiet pass only follows it.
+    void move(const Pose& target) {
+        if (m_k.touchPassQuiet()) {
+            m_k.m_programmed = target;
+            return;
+        }
+        m_k.moveProgrammed(target, true, 0.0);
+    }
+    // Tool tip (the stream's coordinates) -> gauge point: the preset and the tool's length.
+    Vec3 tipToGauge() const {
+        return m_k.m_settings.presetInMachine.xyz() + Vec3(0.0, 0.0, m_k.m_tool.effectiveLength());
+    }
+    Vec3 gaugeOf(const Pose& tip) const { return tip.xyz() + tipToGauge(); }
     Pose program(const Vec3& gauge) const {
         Pose workpiece = m_k.m_frame.toWorkpiece(m_k.m_programmed);
-        workpiece.setXyz(gauge - presetInMachine() - Vec3(0.0, 0.0, m_k.m_tool.effectiveLength()));
+        workpiece.setXyz(gauge - tipToGauge());
         return m_k.m_frame.toProgram(workpiece);
     }
 
@@ -291,7 +324,6 @@ void KlartextInterpreter::readToolProbeCalibration(cycles::probing::ToolProbeDat
 void KlartextInterpreter::executeToolMeasurement(
     const cycles::probing::ProbingCycleDescriptor& cycle, const cycles::CycleValues& values,
     bool oldFormat, uint16_t statusParameter) {
-    using cycles::probing::ToolMeasurementKind;
     const std::string number = std::to_string(cycle.number);
     if (m_frame.mirror() != 0 || m_frame.scale() != 1.0) {
         fail("PRB-005",
@@ -342,23 +374,35 @@ void KlartextInterpreter::executeToolMeasurement(
     tool.cuttingDirection = table.numberCell(row->number, "DIRECT").value_or(-1.0);
 
     const workpiece::RealTool real = realTool(*row);
-    const machine::ToolProbeConfig& c = m_settings.machine->toolProbe;
-    const workpiece::SimulatedToolProbe simulated({Vec3(c.centreXMm, c.centreYMm, c.centreZMm),
-                                                   c.diameterMm,
-                                                   c.shape == machine::ToolProbeShape::Cube});
-    ToolProbeAdapter machine(*this, simulated, real);
-
     // Q260 is a tool-tip height of the active datum.
     Pose clearance = m_programmed;
     clearance[Axis::Z] = values.number(260);
     const double clearanceZ =
         m_frame.toWorkpiece(clearance)[Axis::Z] + m_settings.presetInMachine[Axis::Z];
+    runTouching([this, &cycle, values, status, tt = *tt, tool, real, clearanceZ] {
+        measureToolAndApply(cycle, values, status, tt, tool, real, clearanceZ);
+    });
+}
 
+void KlartextInterpreter::measureToolAndApply(const cycles::probing::ProbingCycleDescriptor& cycle,
+                                              const cycles::CycleValues& values, uint16_t status,
+                                              const cycles::probing::ToolProbeData& tt,
+                                              const cycles::probing::MeasuredToolData& tool,
+                                              const workpiece::RealTool& real, double clearanceZ) {
+    using cycles::probing::ToolMeasurementKind;
+    const machine::ToolProbeConfig& c = m_settings.machine->toolProbe;
+    const workpiece::SimulatedToolProbe simulated({Vec3(c.centreXMm, c.centreYMm, c.centreZMm),
+                                                   c.diameterMm,
+                                                   c.shape == machine::ToolProbeShape::Cube});
+    ToolProbeAdapter machine(*this, simulated, real);
+    // Results only from the pass that completes (a pass that handed a touch to the machine
+    // ends with its probe move): TTCALIB.TXT, the Q parameters, TOOL.T and SIMTOOLS.TXT.
     if (cycle.toolMeasurement == ToolMeasurementKind::Calibrate) {
         cycles::probing::ToolProbeData calibrated;
-        auto error = cycles::probing::calibrateToolProbe(cycle.number, clearanceZ, *tt, tool,
+        auto error = cycles::probing::calibrateToolProbe(cycle.number, clearanceZ, tt, tool,
                                                          machine, calibrated);
         machine.restoreSpindle();
+        if (touchHandedToMachine()) return;
         if (error) {
             failCycle(*error);
             return;
@@ -374,8 +418,9 @@ void KlartextInterpreter::executeToolMeasurement(
     request.clearanceZ = clearanceZ;
     request.teeth = values.integer(341) == 1;
     cycles::probing::ToolMeasurementResult result;
-    auto error = cycles::probing::measureTool(cycle.number, request, *tt, tool, machine, result);
+    auto error = cycles::probing::measureTool(cycle.number, request, tt, tool, machine, result);
     machine.restoreSpindle();
+    if (touchHandedToMachine()) return;
     if (error) {
         failCycle(*error);
         return;

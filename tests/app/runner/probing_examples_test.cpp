@@ -152,15 +152,24 @@ TEST_F(ProbingExamples, Datum417OnACylinderLyingOnTheATable) {
 
 TEST_F(ProbingExamples, ToolMeasurementWritesTheRealToolsDeltasIntoTheToolTable) {
     // The machine file makes tool 5 really 0.05 longer and 0.012 thinner than TOOL.T says; 483
-    // with Q340 = 1 writes exactly that into DL and DR, plain and under --motion.
-    for (const char* options : {"", "--motion"}) {
+    // with Q340 = 1 writes exactly that into DL and DR, plain and under --motion, where the
+    // simulated servo cycle latches both touches (a probe move each in the trace).
+    for (const bool motion : {false, true}) {
         fs::copy_file(fs::path(KERF_SOURCE_DIR) / "examples/probing/TOOL.T", dir / "TOOL.T",
                       fs::copy_options::overwrite_existing);
+        fs::remove(dir / "SIMTOOLS.TXT");
+        const std::string trace = (dir / "trace.txt").string();
+        const std::string options = (motion ? "--motion --trace \"" : "--trace \"") + trace + "\"";
         EXPECT_TRUE(run("TOOLMEAS", options)["ok"].get<bool>()) << options;
         const std::string tools = read(dir / "TOOL.T");
         EXPECT_NE(tools.find("MILL_D10    +80       +5        +0.05     -0.012"), std::string::npos)
             << options << "\n"
             << tools;
+        std::istringstream lines(read(trace));
+        int probeMoves = 0;
+        for (std::string line; std::getline(lines, line);)
+            probeMoves += line.find(" PROBE X") != std::string::npos;
+        EXPECT_EQ(probeMoves, motion ? 2 : 0) << options;
     }
 }
 

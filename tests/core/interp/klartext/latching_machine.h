@@ -1,0 +1,95 @@
+#pragma once
+
+// A stand-in for a machine whose probe input latches (settings.touchesFromMachine, docs/probing.md
+// "How a cycle runs"): it follows the tool tip through the stream, moves it along each probe move
+// and finds by bisection where its surface is first touched, the surface the move carries or
+// one a test moves elsewhere.
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/canon/commands.h"
+#include "core/interp/interpreter.h"
+
+namespace kerf::klartext {
+
+class LatchingMachine : public canon::Sink {
+public:
+    // What the drives' probe input sees for a tool tip, given the surface the move carries.
+    using Surface = std::function<bool(const canon::ProbeSurface&, const Vec3& tip)>;
+    static constexpr double kProbingFeed = 1000.0;  // F of a new touch-probe table row
+
+    // `probingFeed`: the feed every probe move must have (0: any).
+    explicit LatchingMachine(Surface surface, double braking = 0.05,
+                             double probingFeed = kProbingFeed)
+        : m_surface(std::move(surface)), m_braking(braking), m_probingFeed(probingFeed) {}
+
+    void consume(const canon::Command& command) override {
+        commands.push_back(command);
+        const canon::CommandBody& body = command.body;
+        if (const auto* rapid = std::get_if<canon::RapidMove>(&body)) m_tip = rapid->target;
+        if (const auto* line = std::get_if<canon::LinearMove>(&body)) {
+            m_tip = line->target;
+            if (m_probingFeed > 0.0 && line->feed == m_probingFeed) ++probingFeedMoves;
+        }
+        if (const auto* arc = std::get_if<canon::ArcMove>(&body)) m_tip = arc->target;
+        if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) {
+            ++probeMoves;
+            if (m_probingFeed > 0.0) {
+                EXPECT_NEAR(probe->feed, m_probingFeed, 1e-9);
+            }
+            EXPECT_FALSE(probe->untilRelease);
+            m_probe = *probe;
+        }
+    }
+
+    // The probe move's end: the first touch along it, found to far below a nanometre; the axes
+    // then stop `braking` further on. Without a touch they stop at its end point.
+    interp::WorldSnapshot latch() {
+        interp::WorldSnapshot world;
+        EXPECT_TRUE(m_probe.has_value());
+        if (!m_probe) return world;
+        const canon::ProbeMove probe = *m_probe;
+        m_probe.reset();
+        EXPECT_NE(probe.surface, nullptr);
+        const Vec3 from = m_tip.xyz();
+        const Vec3 to = probe.target.xyz();
+        auto touching = [&](double t) { return m_surface(*probe.surface, from + t * (to - from)); };
+        const double length = (to - from).norm();
+        const int steps = static_cast<int>(std::ceil(length / 0.01));
+        world.position = probe.target;
+        for (int i = 1; i <= steps; ++i) {
+            double hi = static_cast<double>(i) / steps;
+            if (!touching(hi)) continue;
+            double lo = static_cast<double>(i - 1) / steps;
+            for (int k = 0; k < 60; ++k)
+                (touching((lo + hi) / 2.0) ? hi : lo) = (lo + hi) / 2.0;
+            world.probeTriggered = true;
+            world.probePosition = probe.target;
+            world.probePosition.setXyz(from + hi * (to - from));
+            world.position = world.probePosition;
+            world.position.setXyz(world.probePosition.xyz() + m_braking * (to - from) / length);
+            break;
+        }
+        m_tip = world.position;
+        return world;
+    }
+
+    void setTip(const Pose& tip) { m_tip = tip; }
+
+    std::vector<canon::Command> commands;  // everything the interpreter sent
+    int probeMoves = 0;
+    int probingFeedMoves = 0;  // feed moves of the interpreter's own at the probing feed
+
+private:
+    Surface m_surface;
+    double m_braking;
+    double m_probingFeed;
+    Pose m_tip;
+    std::optional<canon::ProbeMove> m_probe;
+};
+
+}  // namespace kerf::klartext
