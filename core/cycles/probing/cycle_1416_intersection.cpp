@@ -170,7 +170,6 @@ std::optional<CycleError> touchPoint(ProbeSequence& sequence, const Plane& plane
         const double deviation = (surface - at).dot(-direction);
         if (r == 0) {
             out.surface = plane.inPlane(surface);
-            out.third = surface[plane.c];
             out.extruded = out.highest = out.lowest = deviation;
             continue;
         }
@@ -264,6 +263,9 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     }
     std::array<Vec2, 4> points, touched;
     std::array<MeasuredPoint, 4> measured;
+    // The touches' coordinate in the third axis: the height Q1102 or its actual value; in the
+    // semi-automatic mode the one the operator chose, nominal and actual.
+    const double actualHeight = actualPosition(v, 1102).value_or(height);
     std::array<double, 4> nominalThird = {height, height, height, height};
     for (size_t edge = 0; edge < 2; ++edge) {
         const auto q = static_cast<uint16_t>(1130 + 4 * edge);
@@ -272,12 +274,12 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         for (size_t k = 0; k < 2; ++k) {
             const size_t i = 2 * edge + k;
             points[i] = nominal + v.number(static_cast<uint16_t>(q + 2 + k)) * along;
+            measured[i].third = actualHeight;
             if (given[edge]) {
                 // Not probed: the nominal point moved onto the actual coordinate it measures.
                 const int axis = std::abs(directions[edge].x()) > 0.5 ? 0 : 1;
                 measured[i].surface = points[i];
                 measured[i].surface[axis] = actual[axis];
-                measured[i].third = actualPosition(v, 1102).value_or(height);
                 measured[i].extruded = measured[i].highest = measured[i].lowest =
                     (measured[i].surface - points[i]).dot(-directions[edge]);
             } else if (semiAutomatic) {
