@@ -55,7 +55,7 @@ void ProgramRun::start(std::unique_ptr<interp::Interpreter> interpreter, StartOp
     m_collector = std::make_unique<Collector>(*this);
     m_queue.clear();
     m_diagnostics.clear();
-    m_syncPending = m_syncAfterStop = false;
+    m_syncPending = false;
     m_interpreterStatus = interp::RunStatus::BudgetUsed;
     m_scan.reset();
     if (options.startLine) m_scan.emplace(0, *options.startLine);
@@ -129,10 +129,6 @@ void ProgramRun::service() {
         m_state = RunState::Running;
     }
     if (m_syncPending) {
-        // A sync behind a program stop waits for NC start: the operator may jog meanwhile (1416's
-        // semi-automatic mode), and the interpreter goes on from where the axes then stand.
-        if (m_state == RunState::Stopped) m_syncAfterStop = true;
-        if (m_syncAfterStop) return;
         if (!submitQueued()) return;
         m_motion.flush();
         if (!m_motion.drained()) {
@@ -163,7 +159,6 @@ void ProgramRun::service() {
 
 void ProgramRun::cycleStart() {
     if (m_state == RunState::Held || m_state == RunState::Stopped) {
-        m_syncAfterStop = false;
         m_motion.cycleStart();
         m_state = RunState::Running;
     }

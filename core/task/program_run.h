@@ -75,7 +75,6 @@ private:
     RunState m_state = RunState::Idle;
     interp::RunStatus m_interpreterStatus = interp::RunStatus::BudgetUsed;
     bool m_syncPending = false;
-    bool m_syncAfterStop = false;  // a stop came first: the sync waits for NC start
     DiagnosticList m_diagnostics;
 };
 
