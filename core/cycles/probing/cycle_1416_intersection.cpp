@@ -188,7 +188,7 @@ std::optional<CycleError> touchPlaced(ProbeSequence& sequence, ProbingMachine& m
                                       MeasuredPoint& out) {
     const Vec2 inPlane = plane.inPlane(direction);
     const double angle = std::atan2(inPlane.y(), inPlane.x()) * 180.0 / std::numbers::pi;
-    (void)machine.placedByOperator(
+    machine.waitForOperator(
         {KERF_TR_NOOP("cycle 1416 (semi-automatic mode): position the probe before touch point "
                       "{1} of edge {2}, within {3} mm of the edge, probing at {4} degrees in the "
                       "plane; then NC start"),

@@ -73,13 +73,9 @@ public:
     // and 3 report positions without it (spec 1.5).
     virtual Vec2 centreOffsetApplied() const { return {0.0, 0.0}; }
     // The semi-automatic mode (1416's "?"): the program stops with `prompt` and the operator
-    // positions the probe near the touch point; after NC start the cycle goes on from there.
-    // The ball centre where the probe then stands; a machine no operator moves leaves it where
-    // it is.
-    virtual Vec3 placedByOperator(const OperatorPrompt& prompt) {
-        (void)prompt;
-        return ballCentre();
-    }
+    // positions the probe near the touch point; after NC start ballCentre() is where it stands.
+    // A machine no operator moves leaves it where it is.
+    virtual void waitForOperator(const OperatorPrompt& prompt) { (void)prompt; }
 };
 
 // Where a datum cycle puts the datum: the measured feature (local program coordinates, per local

@@ -122,28 +122,27 @@ public:
     // The program stops with the prompt. With touches from the machine the stop is a sync
     // point too, and the pass continues from where the machine says the probe stands after NC
     // start; without a machine nobody moves it ([choice], docs/probing.md).
-    Vec3 placedByOperator(const cycles::probing::OperatorPrompt& prompt) override {
+    void waitForOperator(const cycles::probing::OperatorPrompt& prompt) override {
         if (!m_k.m_touchReplay) {
             stopForOperator(prompt);
-            return ballCentre();
+            return;
         }
         KlartextInterpreter::TouchReplay& replay = *m_k.m_touchReplay;
-        if (replay.waiting) return ballCentre();
+        if (replay.waiting) return;
         const size_t event = replay.next++;
         if (event == replay.latched.size()) {
-            if (!m_k.checkPathError(m_k.m_path.flush())) return ballCentre();
+            if (!m_k.checkPathError(m_k.m_path.flush())) return;
             stopForOperator(prompt);
             m_k.emit(canon::SyncPoint{canon::SyncReason::Operator});
             replay.waiting = replay.placing = true;
-            return ballCentre();
+            return;
         }
         if (replay.quiet()) {
-            m_k.m_programmed = m_k.fromLocal(spindleOf(ballOf(replay.latched[event].tip)));
+            m_k.m_programmed = m_k.m_frame.toProgram(replay.latched[event].tip);
         } else {
             // The last stop: the moves after it start where the operator left the probe.
             m_k.m_programmed = m_k.programOfPath(m_k.m_path.toolPosition());
         }
-        return ballCentre();
     }
 
 private:
