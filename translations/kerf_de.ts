@@ -8906,6 +8906,18 @@ wählen</translation>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>Tastsystemzyklus {1}: die simulierten Werkzeuge können nicht geschrieben werden: {2}</translation>
     </message>
+    <message>
+        <source>cycle 1416 (semi-automatic mode): position the probe before touch point {1} of edge {2}, within {3} mm of the edge, probing at {4} degrees in the plane; then NC start</source>
+        <translation>Zyklus 1416 (Halbautomatik): das Tastsystem vor Antastpunkt {1} der Kante {2} positionieren, höchstens {3} mm von der Kante, Antastrichtung {4} Grad in der Ebene; dann NC-Start</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the semi-automatic mode (&apos;?&apos;) cannot repeat its touches along an extrusion (cycle 1493)</source>
+        <translation>Zyklus {1}: der halbautomatische Modus (&apos;?&apos;) kann seine Antastungen nicht entlang einer Extrusion (Zyklus 1493) wiederholen</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) cannot be unknown (&apos;?&apos; is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: Parameter {2} ({3}) kann nicht unbekannt sein (&apos;?&apos; gilt für die Sollpositionen eines 14xx-Zyklus)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

@@ -8906,6 +8906,18 @@ solución</translation>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>ciclo de palpación {1}: no se pueden escribir las herramientas simuladas: {2}</translation>
     </message>
+    <message>
+        <source>cycle 1416 (semi-automatic mode): position the probe before touch point {1} of edge {2}, within {3} mm of the edge, probing at {4} degrees in the plane; then NC start</source>
+        <translation>ciclo 1416 (modo semiautomático): posicione el palpador delante del punto de palpación {1} de la arista {2}, a menos de {3} mm de la arista, palpando a {4} grados en el plano; luego Marcha NC</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the semi-automatic mode (&apos;?&apos;) cannot repeat its touches along an extrusion (cycle 1493)</source>
+        <translation>ciclo {1}: el modo semiautomático (&apos;?&apos;) no puede repetir sus palpaciones a lo largo de una extrusión (ciclo 1493)</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) cannot be unknown (&apos;?&apos; is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: el parámetro {2} ({3}) no puede ser desconocido (&apos;?&apos; es para las posiciones nominales de un ciclo 14xx)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

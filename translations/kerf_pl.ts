@@ -8909,6 +8909,18 @@ rozwiązanie</translation>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>cykl sondy {1}: nie można zapisać symulowanych narzędzi: {2}</translation>
     </message>
+    <message>
+        <source>cycle 1416 (semi-automatic mode): position the probe before touch point {1} of edge {2}, within {3} mm of the edge, probing at {4} degrees in the plane; then NC start</source>
+        <translation>cykl 1416 (tryb półautomatyczny): ustaw sondę przed punktem pomiarowym {1} krawędzi {2}, nie dalej niż {3} mm od krawędzi, kierunek próbkowania {4} stopni w płaszczyźnie; następnie NC-start</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the semi-automatic mode (&apos;?&apos;) cannot repeat its touches along an extrusion (cycle 1493)</source>
+        <translation>cykl {1}: tryb półautomatyczny (&apos;?&apos;) nie może powtarzać próbkowań wzdłuż ekstruzji (cykl 1493)</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) cannot be unknown (&apos;?&apos; is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: parametr {2} ({3}) nie może być nieznany (&apos;?&apos; jest dla pozycji nominalnych cyklu 14xx)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

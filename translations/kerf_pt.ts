@@ -8906,6 +8906,18 @@ solução</translation>
         <source>touch probe cycle {1}: cannot write the simulated tools: {2}</source>
         <translation>ciclo de apalpação {1}: não é possível escrever as ferramentas simuladas: {2}</translation>
     </message>
+    <message>
+        <source>cycle 1416 (semi-automatic mode): position the probe before touch point {1} of edge {2}, within {3} mm of the edge, probing at {4} degrees in the plane; then NC start</source>
+        <translation>ciclo 1416 (modo semiautomático): posicione o apalpador antes do ponto de apalpação {1} da aresta {2}, a no máximo {3} mm da aresta, apalpando a {4} graus no plano; depois Início NC</translation>
+    </message>
+    <message>
+        <source>cycle {1}: the semi-automatic mode (&apos;?&apos;) cannot repeat its touches along an extrusion (cycle 1493)</source>
+        <translation>ciclo {1}: o modo semiautomático (&apos;?&apos;) não pode repetir as apalpações ao longo de uma extrusão (ciclo 1493)</translation>
+    </message>
+    <message>
+        <source>{1}: parameter {2} ({3}) cannot be unknown (&apos;?&apos; is for the nominal positions of a 14xx cycle)</source>
+        <translation>{1}: o parâmetro {2} ({3}) não pode ser desconhecido (&apos;?&apos; é para as posições nominais de um ciclo 14xx)</translation>
+    </message>
 </context>
 <context>
     <name>kerf::ui::BlockName</name>

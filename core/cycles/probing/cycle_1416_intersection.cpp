@@ -2,12 +2,14 @@
 // the measured edges, their misalignment and the deviations along the surface normals, in the
 // plane Q1139 chooses (seed 004: XY, ZX and YZ). Nominal positions written "nominal@actual" are
 // not probed (docs/probing.md says which touches that leaves out); a 1493 before it repeats the
-// touch points along a line (Q970-Q972). No semi-automatic mode ("?").
+// touch points along a line (Q970-Q972). A nominal position written "?" (semi-automatic mode)
+// stops the program before each touch for the operator to position the probe.
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
 
+#include "core/base/fixed_format.h"
 #include "core/cycles/probing/probe_geometry.h"
 #include "core/cycles/probing/probe_sequence.h"
 #include "core/cycles/probing/probing_14xx.h"
@@ -145,6 +147,7 @@ std::optional<CycleError> edgesGivenAsActual(const CycleValues& v,
 // signed: the maximum deviation from the ideal line (Q970-Q972).
 struct MeasuredPoint {
     Vec2 surface{0.0, 0.0};
+    double third = 0.0;  // the touch's coordinate in the third axis c
     double extruded = 0.0;
     double highest = 0.0;
     double lowest = 0.0;
@@ -174,6 +177,28 @@ std::optional<CycleError> touchPoint(ProbeSequence& sequence, const Plane& plane
         out.highest = std::max(out.highest, deviation);
         out.lowest = std::min(out.lowest, deviation);
     }
+    return std::nullopt;
+}
+
+// The semi-automatic mode: the operator positions the probe before touch point `point` of edge
+// `edge`, and it probes from there along `direction` within DIST.
+std::optional<CycleError> touchPlaced(ProbeSequence& sequence, ProbingMachine& machine,
+                                      const ProbeData& probe, const Plane& plane,
+                                      const Vec3& direction, size_t edge, size_t point,
+                                      MeasuredPoint& out) {
+    const Vec2 inPlane = plane.inPlane(direction);
+    const double angle = std::atan2(inPlane.y(), inPlane.x()) * 180.0 / std::numbers::pi;
+    machine.waitForOperator(
+        {KERF_TR_NOOP("cycle 1416 (semi-automatic mode): position the probe before touch point "
+                      "{1} of edge {2}, within {3} mm of the edge, probing at {4} degrees in the "
+                      "plane; then NC start"),
+         {std::to_string(point + 1), std::to_string(edge + 1), formatForMessage(probe.maxPath, 3),
+          formatForMessage(angle, 3)}});
+    Vec3 ball;
+    if (auto e = sequence.touchFrom(direction, ball)) return e;
+    const Vec3 surface = ball + sequence.ballRadius() * direction;
+    out.surface = plane.inPlane(surface);
+    out.third = surface[plane.c];
     return std::nullopt;
 }
 
@@ -215,7 +240,7 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     ProbeSequence sequence(1416, moves, probe, machine);
     const Plane plane = planeOf(v.integer(1139));
     const double height = v.number(1102);
-    const Vec2 nominal(v.number(1100), v.number(1101));
+    Vec2 nominal(v.number(1100), v.number(1101));
     const Vec2 actual(actualPosition(v, 1100).value_or(0.0), actualPosition(v, 1101).value_or(0.0));
     const std::array<double, 2> angles = {v.number(1130), v.number(1134)};
     std::array<Vec2, 2> directions;
@@ -226,8 +251,22 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     std::array<bool, 2> given;
     if (auto e = edgesGivenAsActual(v, directions, given)) return e;
     const std::optional<Extrusion> extrusion = extrusionOf(v);
+    // "?": that coordinate of the nominal position is not known (a, b, c).
+    const std::array<bool, 3> unknown = {unknownPosition(v, 1100), unknownPosition(v, 1101),
+                                         unknownPosition(v, 1102)};
+    const bool semiAutomatic = unknown[0] || unknown[1] || unknown[2];
+    if (semiAutomatic && extrusion) {
+        // [choice] The repetitions of 1493 run from nominal points, which are not known.
+        return probingError(1416, "cycle-parameter",
+                            KERF_TR_NOOP("cycle {1}: the semi-automatic mode ('?') cannot repeat "
+                                         "its touches along an extrusion (cycle 1493)"));
+    }
     std::array<Vec2, 4> points, touched;
     std::array<MeasuredPoint, 4> measured;
+    // The touches' coordinate in the third axis: the height Q1102 or its actual value; in the
+    // semi-automatic mode the one the operator chose, nominal and actual.
+    const double actualHeight = actualPosition(v, 1102).value_or(height);
+    std::array<double, 4> nominalThird = {height, height, height, height};
     for (size_t edge = 0; edge < 2; ++edge) {
         const auto q = static_cast<uint16_t>(1130 + 4 * edge);
         const Vec2 along = unit(angles[edge]);
@@ -235,6 +274,7 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
         for (size_t k = 0; k < 2; ++k) {
             const size_t i = 2 * edge + k;
             points[i] = nominal + v.number(static_cast<uint16_t>(q + 2 + k)) * along;
+            measured[i].third = actualHeight;
             if (given[edge]) {
                 // Not probed: the nominal point moved onto the actual coordinate it measures.
                 const int axis = std::abs(directions[edge].x()) > 0.5 ? 0 : 1;
@@ -242,6 +282,14 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
                 measured[i].surface[axis] = actual[axis];
                 measured[i].extruded = measured[i].highest = measured[i].lowest =
                     (measured[i].surface - points[i]).dot(-directions[edge]);
+            } else if (semiAutomatic) {
+                if (auto e = touchPlaced(sequence, machine, probe, plane, direction, edge, k,
+                                         measured[i])) {
+                    return e;
+                }
+                // The touch point is where the operator chose it: nominal = actual.
+                points[i] = measured[i].surface;
+                nominalThird[i] = measured[i].third;
             } else if (auto e = touchPoint(sequence, plane, plane.local(points[i], height),
                                            direction, extrusion, measured[i])) {
                 return e;
@@ -261,17 +309,20 @@ std::optional<CycleError> run(const CycleValues& v, const ProbeData& probe, Prob
     // Three measured points and their deviations in (a, b, c) (the fourth is not exported,
     // spec 8.3); the touches run at the height Q1102, so c deviates by 0 unless Q1102 gives the
     // actual height.
-    const double actualHeight = actualPosition(v, 1102).value_or(height);
     for (size_t i = 0; i < 3; ++i) {
         const auto at = static_cast<uint16_t>(3 * i);
+        const double third = measured[i].third;
         results.set(static_cast<uint16_t>(950 + at), touched[i].x());
         results.set(static_cast<uint16_t>(951 + at), touched[i].y());
-        results.set(static_cast<uint16_t>(952 + at), actualHeight);
+        results.set(static_cast<uint16_t>(952 + at), third);
         results.set(static_cast<uint16_t>(980 + at), touched[i].x() - points[i].x());
         results.set(static_cast<uint16_t>(981 + at), touched[i].y() - points[i].y());
-        results.set(static_cast<uint16_t>(982 + at), actualHeight - height);
+        results.set(static_cast<uint16_t>(982 + at), third - nominalThird[i]);
         if (extrusion) results.set(static_cast<uint16_t>(970 + i), measured[i].extruded);
     }
+    // An unknown coordinate of the intersection is the measured one.
+    if (unknown[0]) nominal.x() = corner->x();
+    if (unknown[1]) nominal.y() = corner->y();
     results.set(959, corner->x());
     results.set(960, corner->y());
     results.set(989, corner->x() - nominal.x());

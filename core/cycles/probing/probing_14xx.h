@@ -9,7 +9,7 @@
 #include "core/geometry/axes.h"
 
 // What the 14xx probing cycles share beyond the 4xx cycles' parameters (spec 8.8): nominal
-// positions written "nominal@actual", and cycle 1493 PROBING EXTRUSION.
+// positions written "nominal@actual" or "?", and cycle 1493 PROBING EXTRUSION.
 namespace kerf::cycles::probing {
 
 // --- Actual positions -------------------------------------------------------------------------
@@ -21,6 +21,15 @@ CycleError actualPositionError(const std::string& owner, const ParameterDescript
 // The actual value travels with the cycle's values as an entry of its own.
 void setActualPosition(CycleValues& values, uint16_t q, double actual);
 std::optional<double> actualPosition(const CycleValues& values, uint16_t q);
+
+// --- Unknown positions (semi-automatic mode) -----------------------------------------------
+// A nominal position written "?" (Q1100=?) is not known: at each touch the program stops, the
+// operator positions the probe, and the touched coordinate counts as nominal and actual. The
+// same parameters as "nominal@actual" take it.
+// `d` was written "?" but cannot be unknown.
+CycleError unknownPositionError(const std::string& owner, const ParameterDescriptor& d);
+void setUnknownPosition(CycleValues& values, uint16_t q);
+bool unknownPosition(const CycleValues& values, uint16_t q);
 
 // --- Extrusion (cycle 1493) -------------------------------------------------------------------
 // 1493 probes nothing itself. The interpreter keeps its parameters and copies them into the next

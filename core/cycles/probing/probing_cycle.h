@@ -38,6 +38,12 @@ struct ProbeData {
     std::string tableAxes;
 };
 
+// What the control asks the operator to do at a stop of the semi-automatic mode.
+struct OperatorPrompt {
+    const char* messageTemplate = "";
+    std::vector<std::string> args;
+};
+
 class ProbingMachine {
 public:
     virtual ~ProbingMachine() = default;
@@ -66,6 +72,10 @@ public:
     // orientation: CAL_OF1/CAL_OF2 turned with the spindle (main, secondary axis). Cycles 0, 1
     // and 3 report positions without it (spec 1.5).
     virtual Vec2 centreOffsetApplied() const { return {0.0, 0.0}; }
+    // The semi-automatic mode (1416's "?"): the program stops with `prompt` and the operator
+    // positions the probe near the touch point; after NC start ballCentre() is where it stands.
+    // A machine no operator moves leaves it where it is.
+    virtual void waitForOperator(const OperatorPrompt& prompt) { (void)prompt; }
 };
 
 // Where a datum cycle puts the datum: the measured feature (local program coordinates, per local

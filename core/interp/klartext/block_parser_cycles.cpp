@@ -188,8 +188,12 @@ bool BlockParser::parseCycleParameter(std::string_view text, size_t at,
         Cursor vc(p.raw);
         FormulaParser fp(vc, m_env);
         const char lead = upper(vc.peek());
-        if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
-            lead == '.') {
+        if (p.raw == "?") {
+            // A nominal position not known (semi-automatic mode); the check says where.
+            p.unknown = true;
+            p.actualOffset = text.find('?', p.offset);
+        } else if (lead == '+' || lead == '-' || isDigit(lead) || lead == 'Q' || lead == '(' ||
+                   lead == '.') {
             auto v = fp.wordValue();
             std::optional<double> actual;
             if (v && vc.acceptChar('@')) {

@@ -47,11 +47,15 @@ void checkCycleParameters(const CycleDefinition& def, const program::LogicalLine
             }
             continue;
         }
-        if (it->actual && !(def.probe && cycles::probing::takesActualPosition(def.number, d.q))) {
-            report(cycles::probing::actualPositionError(owner, d), file,
-                   line.lineAt(it->actualOffset), line.columnAt(it->actualOffset), out);
+        const bool nominalPosition =
+            def.probe && cycles::probing::takesActualPosition(def.number, d.q);
+        if ((it->actual || it->unknown) && !nominalPosition) {
+            report(it->unknown ? cycles::probing::unknownPositionError(owner, d)
+                               : cycles::probing::actualPositionError(owner, d),
+                   file, line.lineAt(it->actualOffset), line.columnAt(it->actualOffset), out);
             continue;
         }
+        if (it->unknown) continue;
         if (it->isString || d.unit == cycles::Unit::Text || !it->literal) continue;
         if (auto outside = cycles::parameterValueError(owner, d, *it->value)) {
             report(*outside, file, line.lineAt(it->offset), line.columnAt(it->offset), out);

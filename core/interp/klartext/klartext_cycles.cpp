@@ -97,6 +97,16 @@ bool KlartextInterpreter::resolveParameters(
             values.set(d.q, d.defaultValue * (scalesWithUnit(d.unit) ? scale : 1.0));
             continue;
         }
+        if (it->unknown) {
+            // "?": a 14xx cycle's nominal position not known (semi-automatic mode).
+            if (!cycles::probing::takesActualPosition(probeCycle, d.q)) {
+                failCycle(cycles::probing::unknownPositionError(owner, d));
+                return false;
+            }
+            values.set(d.q, 0.0);
+            cycles::probing::setUnknownPosition(values, d.q);
+            continue;
+        }
         if (d.toolName && !it->value) {
             // Q330="MILL_D10": a tool name instead of a number.
             if (auto text = cycleText(it->raw)) {

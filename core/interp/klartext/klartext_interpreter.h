@@ -748,9 +748,10 @@ private:
     // A probing block whose touches the machine latches: after each latched touch the block runs
     // again from its start, moving nothing up to the last latched touch (docs/probing.md, "How
     // a cycle runs").
+    // A touch, or where the operator positioned the probe at a stop of the semi-automatic mode.
     struct LatchedTouch {
         bool triggered = false;
-        Pose tip;  // the tool tip at the trigger, stream coordinates
+        Pose tip;  // the tool tip at the trigger (or where it stood), stream coordinates
     };
     struct TouchReplay {
         std::function<void()> block;  // the block's probing, from its first move
@@ -758,6 +759,7 @@ private:
         std::vector<LatchedTouch> latched;
         size_t next = 0;       // touches the current pass has reached
         bool waiting = false;  // the current pass handed touch `latched.size()` to the machine
+        bool placing = false;  // ... or stopped for the operator to position the probe there
         // Before the last latched touch's trigger, or after a touch was handed over: the pass
         // only follows the cycle's positions.
         bool quiet() const { return waiting || next < latched.size(); }

@@ -119,7 +119,38 @@ public:
 
     Vec2 centreOffsetApplied() const override { return controlOffset().head<2>(); }
 
+    // The program stops with the prompt. With touches from the machine the stop is a sync
+    // point too, and the pass continues from where the machine says the probe stands after NC
+    // start; without a machine nobody moves it ([choice], docs/probing.md).
+    void waitForOperator(const cycles::probing::OperatorPrompt& prompt) override {
+        if (!m_k.m_touchReplay) {
+            stopForOperator(prompt);
+            return;
+        }
+        KlartextInterpreter::TouchReplay& replay = *m_k.m_touchReplay;
+        if (replay.waiting) return;
+        const size_t event = replay.next++;
+        if (event == replay.latched.size()) {
+            if (!m_k.checkPathError(m_k.m_path.flush())) return;
+            stopForOperator(prompt);
+            m_k.emit(canon::SyncPoint{canon::SyncReason::Operator});
+            replay.waiting = replay.placing = true;
+            return;
+        }
+        if (replay.quiet()) {
+            m_k.m_programmed = m_k.m_frame.toProgram(replay.latched[event].tip);
+        } else {
+            // The last stop: the moves after it start where the operator left the probe.
+            m_k.m_programmed = m_k.programOfPath(m_k.m_path.toolPosition());
+        }
+    }
+
 private:
+    void stopForOperator(const cycles::probing::OperatorPrompt& prompt) {
+        m_k.emit(canon::Message{canon::MessageKind::Info,
+                                substituteArgs(prompt.messageTemplate, prompt.args)});
+        m_k.emit(canon::ProgramStop{canon::StopKind::Program, -1});
+    }
     std::optional<Vec3> probe(const Vec3& direction, double maxPath, bool backToStart) {
         if (m_probe.track && direction.head<2>().norm() > 1e-9) {
             // Angle tracking: the stylus faces the probing direction in the plane.

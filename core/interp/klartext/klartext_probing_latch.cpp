@@ -40,7 +40,8 @@ void KlartextInterpreter::passTouching() {
 
 void KlartextInterpreter::resumeTouch(const interp::WorldSnapshot& world) {
     const double beyond = (world.position.xyz() - world.probePosition.xyz()).norm();
-    if (world.probeTriggered && beyond > kStylusOvertravelMm) {
+    const bool placed = m_touchReplay->placing;
+    if (!placed && world.probeTriggered && beyond > kStylusOvertravelMm) {
         m_touchReplay.reset();
         fail("PRB-025",
              KERF_TR_NOOP("the probe stopped {1} mm beyond its touch point, more than its stylus "
@@ -49,8 +50,10 @@ void KlartextInterpreter::resumeTouch(const interp::WorldSnapshot& world) {
         return;
     }
     TouchReplay& replay = *m_touchReplay;
-    replay.latched.push_back({world.probeTriggered, world.probePosition});
-    replay.waiting = false;
+    // A stop of the semi-automatic mode: where the operator left the probe.
+    replay.latched.push_back(placed ? LatchedTouch{false, world.position}
+                                    : LatchedTouch{world.probeTriggered, world.probePosition});
+    replay.waiting = replay.placing = false;
     // The probe stopped beyond the trigger (or at the end of DIST): the moves after the touch
     // start there.
     m_path.resetToMachine(world.position);

@@ -311,7 +311,8 @@ struct CycleParameter {
     std::string raw;  // value text as written ("+5", "PREDEF", "FAUTO", "Q1")
     std::optional<double> value;
     std::optional<double> actual;  // "nominal@actual" (14xx nominal positions): the actual
-    size_t actualOffset = 0;       // where its '@' is in the block text
+    size_t actualOffset = 0;       // where its '@' (or its '?') is in the block text
+    bool unknown = false;          // "?" (14xx nominal positions): semi-automatic mode
     std::string comment;
     size_t offset = 0;     // where "Qnnn=" starts in the block text
     bool literal = false;  // `value` uses no Q parameter: known before the run

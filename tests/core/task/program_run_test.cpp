@@ -137,6 +137,23 @@ TEST_F(ProgramRunTest, StopsAtM0AndContinuesOnCycleStart) {
     EXPECT_DOUBLE_EQ(xs(motion).back(), 2);
 }
 
+TEST_F(ProgramRunTest, ASyncBehindAStopReadsWhereTheOperatorJoggedTheAxes) {
+    // As 1416's semi-automatic mode: a stop, then a sync. Motion is not drained while stopped,
+    // so the sync waits for NC start and reads the axes where the operator jogged them.
+    ProgramRun run(motion);
+    run.start(
+        load("0 BEGIN PGM A MM\n1 L X+10 Y+0 Z+0 R0 FMAX\n2 STOP\n"
+             "3 FN 18: SYSREAD Q1 = ID270 NR1 IDX1\n4 L X+Q1 Y+1 FMAX\n5 END PGM A MM\n"));
+    serviceUntilDone(run);
+    ASSERT_EQ(run.state(), RunState::Stopped);
+    motion.position[Axis::X] = 13.0;
+    run.service();
+    run.cycleStart();
+    serviceUntilDone(run);
+    EXPECT_EQ(run.state(), RunState::Finished);
+    EXPECT_DOUBLE_EQ(xs(motion).back(), 13.0);
+}
+
 TEST_F(ProgramRunTest, FeedHoldAndFaults) {
     ProgramRun run(motion);
     run.start(

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -36,6 +37,12 @@ public:
             if (m_probingFeed > 0.0 && line->feed == m_probingFeed) ++probingFeedMoves;
         }
         if (const auto* arc = std::get_if<canon::ArcMove>(&body)) m_tip = arc->target;
+        if (const auto* message = std::get_if<canon::Message>(&body))
+            messages.push_back(message->text);
+        if (const auto* stop = std::get_if<canon::ProgramStop>(&body))
+            stops += stop->kind == canon::StopKind::Program ? 1 : 0;
+        if (const auto* sync = std::get_if<canon::SyncPoint>(&body))
+            m_operatorStop = sync->reason == canon::SyncReason::Operator;
         if (const auto* probe = std::get_if<canon::ProbeMove>(&body)) {
             ++probeMoves;
             if (m_probingFeed > 0.0) {
@@ -50,6 +57,14 @@ public:
     // then stop `braking` further on. Without a touch they stop at its end point.
     interp::WorldSnapshot latch() {
         interp::WorldSnapshot world;
+        if (m_operatorStop) {
+            // A stop for the operator: "the operator" jogs the tool tip to the next place.
+            m_operatorStop = false;
+            EXPECT_LT(placed, places.size());
+            if (placed < places.size()) m_tip.setXyz(places[placed++]);
+            world.position = m_tip;
+            return world;
+        }
         EXPECT_TRUE(m_probe.has_value());
         if (!m_probe) return world;
         const canon::ProbeMove probe = *m_probe;
@@ -83,8 +98,13 @@ public:
     std::vector<canon::Command> commands;  // everything the interpreter sent
     int probeMoves = 0;
     int probingFeedMoves = 0;  // feed moves of the interpreter's own at the probing feed
+    std::vector<Vec3> places;  // where the operator puts the tool tip at each stop
+    size_t placed = 0;
+    int stops = 0;
+    std::vector<std::string> messages;
 
 private:
+    bool m_operatorStop = false;
     Surface m_surface;
     double m_braking;
     double m_probingFeed;

@@ -89,6 +89,45 @@ TEST(Probing14xxCheck, AnActualOutsideTheRangeIsReportedAtItsAt) {
     EXPECT_EQ(d[0].column, 11u);
 }
 
+TEST(Probing14xxCheck, UnknownNominalPositionsAreClean) {
+    std::string block = intersection("?");
+    block.replace(block.find("Q1101=+0"), 8, "Q1101=?");
+    block.replace(block.find("Q1102=-5"), 8, "Q1102=?");
+    EXPECT_TRUE(check(block).empty());
+}
+
+TEST(Probing14xxCheck, AnUnknownWhereNoneIsAllowedIsAnErrorAtItsQuestionMark) {
+    // 1416's Q1130 (line 8: "  Q1130=? ~", the '?' in column 9).
+    std::string block = intersection("+0");
+    block.replace(block.find("Q1130=+0"), 8, "Q1130=?");
+    DiagnosticList d = check(block);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].code, "cycle-parameter");
+    EXPECT_EQ(d[0].line, 8u);
+    EXPECT_EQ(d[0].column, 9u);
+    EXPECT_EQ(d[0].message(),
+              "touch probe cycle 1416: parameter Q1130 (Nominal angle of the 1st line) cannot be "
+              "unknown ('?' is for the nominal positions of a 14xx cycle)");
+    // A 4xx cycle's touch point and a machining cycle's parameter: line 4, after "  Q263=" (or
+    // "  Q200=").
+    d = check(
+        "TCH PROBE 400 BASIC ROTATION\n  Q263=?\n  Q264=+0\n  Q265=+80\n  Q266=+0\n"
+        "  Q272=+2\n  Q267=+1\n  Q261=-5\n  Q320=0\n  Q260=+20\n  Q301=1\n  Q307=0\n"
+        "  Q305=0\n");
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].line, 4u);
+    EXPECT_EQ(d[0].column, 8u);
+    EXPECT_NE(d[0].message().find("Q263"), std::string::npos) << d[0].message();
+    d = check(
+        "CYCL DEF 200 DRILLING\n  Q200=? ;SET-UP CLEARANCE\n  Q201=-10\n  Q206=150\n"
+        "  Q202=5\n  Q210=0\n  Q203=+0\n  Q204=50\n  Q211=0\n");
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].line, 4u);
+    EXPECT_EQ(d[0].column, 8u);
+    EXPECT_EQ(d[0].message().rfind("cycle 200: parameter Q200 (", 0), 0u) << d[0].message();
+    EXPECT_NE(d[0].message().find(") cannot be unknown"), std::string::npos) << d[0].message();
+}
+
 class Probing14xxRun : public testing::Test {
 protected:
     void SetUp() override {

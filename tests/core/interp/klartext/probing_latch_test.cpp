@@ -195,5 +195,97 @@ TEST_F(ProbingLatchTest, AxesStoppingBeyondTheStylusOvertravelStopTheProgram) {
     EXPECT_NE(presets.str().find("+0.7  "), std::string::npos) << presets.str();
 }
 
+// Cycle 1416 on the front-left corner (edge 1 the front face probed along +Y, edge 2 the left
+// face along +X) with the nominal positions written as given.
+std::string semiAutomatic(const std::string& q1100, const std::string& q1101,
+                          const std::string& q1102) {
+    return "1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+60 Z+0\n"
+           "3 TOOL CALL 1 Z\n4 L X-20 Y-20 Z+50 R0 FMAX\n"
+           "5 TCH PROBE 1416 PROBING INTERSECTION ~\n  Q1100=" +
+           q1100 + " ~\n  Q1101=" + q1101 + " ~\n  Q1102=" + q1102 +
+           " ~\n  QS400=\"\" ~\n  Q1130=+0 ~\n  Q1131=+1 ~\n  Q1132=+10 ~\n  Q1133=+40 ~\n"
+           "  QS401=\"\" ~\n  Q1134=+90 ~\n  Q1135=-1 ~\n  Q1136=+10 ~\n  Q1137=+40 ~\n"
+           "  Q1139=+3 ~\n  Q320=+0 ~\n  Q260=+100 ~\n  Q1125=+2 ~\n  Q309=+0 ~\n  Q1126=+0 ~\n"
+           "  Q1120=+0 ~\n  Q1121=+0\n";
+}
+
+TEST_F(ProbingLatchTest, SemiAutomatic1416ProbesFromWhereTheOperatorPutTheProbe) {
+    // Every nominal position unknown: the program stops before each of the four touches, and
+    // the operator jogs the tool tip (ball centre 2 higher) in front of the faces.
+    LatchingMachine machine(
+        [](const canon::ProbeSurface& surface, const Vec3& tip) { return surface.touches(tip); });
+    machine.places = {
+        {20.0, -10.0, -7.0}, {60.0, -10.0, -7.0}, {-10.0, 15.0, -7.0}, {-10.0, 45.0, -7.0}};
+    ASSERT_EQ(run(semiAutomatic("?", "?", "?"), &machine), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_EQ(machine.placed, 4u);
+    EXPECT_EQ(machine.stops, 4);
+    EXPECT_EQ(machine.probeMoves, 4);
+    ASSERT_EQ(machine.messages.size(), 4u);
+    EXPECT_EQ(machine.messages[2],
+              "cycle 1416 (semi-automatic mode): position the probe before touch point 1 of "
+              "edge 2, within 20.000 mm of the edge, probing at 0.000 degrees in the plane; "
+              "then NC start");
+    // By hand: the blank's corner is at (1.5, -0.8), its faces turned by a = 0.7 degrees. A
+    // ball of radius 2 at x probing +Y touches the front face (inward normal (-sin a, cos a))
+    // with its centre at y = (-2 + sin a (x - 1.5)) / cos a - 0.8; the surface point is 2
+    // further. Likewise the left face (normal (cos a, sin a)) probed along +X at y.
+    const double a = 0.7 * std::numbers::pi / 180.0;
+    auto front = [&](double x) {
+        return (-2.0 + std::sin(a) * (x - 1.5)) / std::cos(a) - 0.8 + 2.0;
+    };
+    auto left = [&](double y) {
+        return (-2.0 - std::sin(a) * (y + 0.8)) / std::cos(a) + 1.5 + 2.0;
+    };
+    EXPECT_NEAR(q(950), 20.0, 1e-9);
+    EXPECT_NEAR(q(951), front(20.0), 0.002);
+    EXPECT_NEAR(q(952), -5.0, 1e-9);
+    EXPECT_NEAR(q(953), 60.0, 1e-9);
+    EXPECT_NEAR(q(954), front(60.0), 0.002);
+    EXPECT_NEAR(q(956), left(15.0), 0.002);
+    EXPECT_NEAR(q(957), 15.0, 1e-9);
+    // The two lines y = front(20) + t (x - 20) and x = left(15) - t (y - 15), t = tan a.
+    const double t = std::tan(a);
+    const double x = (left(15.0) - t * (front(20.0) - 15.0) + 20.0 * t * t) / (1.0 + t * t);
+    const double y = front(20.0) + t * (x - 20.0);
+    EXPECT_NEAR(q(959), x, 0.002);
+    EXPECT_NEAR(q(960), y, 0.002);
+    EXPECT_NEAR(q(994), 0.7, 0.002);
+    // Nominal = actual: no deviation anywhere, the part is good.
+    for (uint16_t d = 980; d <= 990; ++d)
+        EXPECT_NEAR(q(d), 0.0, 1e-9) << d;
+    EXPECT_EQ(q(183), 0.0);
+
+    // Q1101 known (0): only the intersection's Y is compared with it.
+    LatchingMachine again(
+        [](const canon::ProbeSurface& surface, const Vec3& tip) { return surface.touches(tip); });
+    again.places = machine.places;
+    ASSERT_EQ(run(semiAutomatic("?", "+0", "-5"), &again), interp::RunStatus::Finished)
+        << firstError();
+    EXPECT_EQ(again.stops, 4);
+    EXPECT_NEAR(q(959), x, 0.002);
+    EXPECT_NEAR(q(989), 0.0, 1e-9);
+    EXPECT_NEAR(q(990), y, 0.002);
+}
+
+TEST_F(ProbingLatchTest, SemiAutomatic1416WithoutAnOperatorProbesFromWhereTheProgramLeftIt) {
+    // Plain run: nobody moves the probe, so each touch starts where block 4 left it, in front of
+    // the front face: touches 1 and 2 find it, touch 3 probes along +X in front of the part and
+    // finds nothing within DIST.
+    std::string program = semiAutomatic("?", "+0", "-5");
+    program.replace(program.find("4 L X-20 Y-20 Z+50"), 18, "4 L X+20 Y-10 Z-7");
+    ASSERT_EQ(run(program, nullptr), interp::RunStatus::Failed);
+    const std::string plain = firstError();
+    EXPECT_NE(plain.find("PRB-001"), std::string::npos) << plain;
+    // A machine nobody jogs at the stops gives the same, after the third stop.
+    LatchingMachine machine(
+        [](const canon::ProbeSurface& surface, const Vec3& tip) { return surface.touches(tip); });
+    machine.places.assign(3, Vec3(20.0, -10.0, -7.0));
+    ASSERT_EQ(run(program, &machine), interp::RunStatus::Failed);
+    EXPECT_EQ(firstError(), plain);
+    EXPECT_EQ(machine.stops, 3);
+    EXPECT_EQ(machine.probeMoves, 3);
+}
+
 }  // namespace
 }  // namespace kerf::klartext

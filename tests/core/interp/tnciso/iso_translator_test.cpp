@@ -135,6 +135,9 @@ TEST(IsoTranslator, ProbingCycles14xxKeepTheirActualPositions) {
                   "G1416 Q1100=+0@+1.5 Q1101=+0 *\n"),
         (std::vector<std::string>{"TCH PROBE 1493 / Q1140=+1 / Q1145=+40 / Q1146=+2 / Q1149=+0",
                                   "TCH PROBE 1416 / Q1100=+0@+1.5 / Q1101=+0"}));
+    // "?" (semi-automatic mode) likewise.
+    EXPECT_EQ(translate("G1416 Q1100=? Q1101=+0 Q1102=? *\n"),
+              (std::vector<std::string>{"TCH PROBE 1416 / Q1100=? / Q1101=+0 / Q1102=?"}));
 }
 
 TEST(IsoTranslator, CyclesKeepTheirConversationalParameters) {
