@@ -14,6 +14,7 @@
 
 #include "core/canon/commands.h"
 #include "core/interp/interpreter.h"
+#include "core/interp/klartext/klartext_interpreter.h"
 
 namespace kerf::klartext {
 
@@ -111,5 +112,21 @@ private:
     Pose m_tip;
     std::optional<canon::ProbeMove> m_probe;
 };
+
+// Runs `interpreter` to its end, `machine` answering each sync point; `atSync` is called before
+// each answer.
+inline interp::RunStatus runLatched(KlartextInterpreter& interpreter, LatchingMachine& machine,
+                                    const std::function<void()>& atSync = {}) {
+    machine.setTip(interpreter.nominalPosition());
+    for (;;) {
+        const interp::RunStatus status = interpreter.run(machine, 1000);
+        if (status == interp::RunStatus::NeedsSync) {
+            if (atSync) atSync();
+            interpreter.resume(machine.latch());
+            continue;
+        }
+        if (status != interp::RunStatus::BudgetUsed) return status;
+    }
+}
 
 }  // namespace kerf::klartext

@@ -45,16 +45,7 @@ protected:
         writeFileAtomically(dir / "P.H", "0 BEGIN PGM P MM\n" + body + "99 END PGM P MM\n");
         if (!interpreter->load(dir / "P.H")) return interp::RunStatus::Failed;
         LatchingMachine plain([](const canon::ProbeSurface&, const Vec3&) { return false; });
-        LatchingMachine& out = latching != nullptr ? *latching : plain;
-        out.setTip(interpreter->nominalPosition());
-        for (;;) {
-            const interp::RunStatus status = interpreter->run(out, 1000);
-            if (status == interp::RunStatus::NeedsSync) {
-                interpreter->resume(out.latch());
-                continue;
-            }
-            if (status != interp::RunStatus::BudgetUsed) return status;
-        }
+        return runLatched(*interpreter, latching != nullptr ? *latching : plain);
     }
     double q(uint16_t index) const { return interpreter->parameters().get(QRef{QKind::Q, index}); }
     std::string firstError() const {

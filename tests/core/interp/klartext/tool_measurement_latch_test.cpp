@@ -59,21 +59,13 @@ protected:
         if (!interpreter->load(dir / "P.H")) return interp::RunStatus::Failed;
         LatchingMachine plain([](const canon::ProbeSurface&, const Vec3&) { return false; }, 0.05,
                               0.0);
-        LatchingMachine& out = latching != nullptr ? *latching : plain;
-        out.setTip(interpreter->nominalPosition());
         std::vector<std::string> absent;
         for (const char* file : {"TOOL.T", "SIMTOOLS.TXT", "TTCALIB.TXT"})
             if (!fs::exists(dir / file)) absent.push_back(file);
-        for (;;) {
-            const interp::RunStatus status = interpreter->run(out, 1000);
-            if (status == interp::RunStatus::NeedsSync) {
-                for (const std::string& file : absent)
-                    EXPECT_FALSE(fs::exists(dir / file)) << file << " before the last touch";
-                interpreter->resume(out.latch());
-                continue;
-            }
-            if (status != interp::RunStatus::BudgetUsed) return status;
-        }
+        return runLatched(*interpreter, latching != nullptr ? *latching : plain, [&] {
+            for (const std::string& file : absent)
+                EXPECT_FALSE(fs::exists(dir / file)) << file << " before the last touch";
+        });
     }
     // A fresh NC root: the next run starts from the machine file's TT and the table's tools.
     void forget() {
